@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs every dependency Insula needs on Debian 12: Debian packages with apt-get and the npm test
+# tools into tools/node_modules. Idempotent: a second run only checks.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  build-essential cmake ninja-build pkg-config clang-format
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libpolyclipping-dev nlohmann-json3-dev libtinygltf-dev libcli11-dev libfmt-dev libtbb-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libstb-dev
+  assimp-utils
+)
+# Node.js may come from elsewhere (NodeSource ships npm inside nodejs); take Debian's only if absent.
+command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+if [ ! -d tools/node_modules/gltf-validator ] || [ ! -d tools/node_modules/ajv ]; then
+  echo "setup: installing npm test tools (gltf-validator, ajv)" >&2
+  (cd tools && npm ci --no-audit --no-fund --silent 2>/dev/null || npm install --no-audit --no-fund --silent)
+fi

@@ -1,0 +1,114 @@
+#include "base/diagnostic.h"
+
+#include <algorithm>
+
+namespace insula::base {
+
+Source::Source(std::string name, std::string text)
+    : name_(std::move(name)), text_(std::move(text)) {
+  line_starts_.push_back(0);
+  for (std::size_t i = 0; i < text_.size(); ++i) {
+    if (text_[i] == '\n') line_starts_.push_back(i + 1);
+  }
+}
+
+std::pair<std::uint32_t, std::uint32_t> Source::locate(std::size_t offset) const {
+  offset = std::min(offset, text_.size());
+  auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+  const std::size_t index = static_cast<std::size_t>(it - line_starts_.begin()) - 1;
+  return {static_cast<std::uint32_t>(index + 1),
+          static_cast<std::uint32_t>(offset - line_starts_[index] + 1)};
+}
+
+std::string_view Source::line(std::uint32_t line) const {
+  if (line == 0 || line > line_starts_.size()) return {};
+  const std::size_t begin = line_starts_[line - 1];
+  std::size_t end = line < line_starts_.size() ? line_starts_[line] : text_.size();
+  while (end > begin && (text_[end - 1] == '\n' || text_[end - 1] == '\r')) --end;
+  return std::string_view(text_).substr(begin, end - begin);
+}
+
+Span Span::at(std::string file, std::uint32_t line, std::uint32_t column, std::uint32_t length) {
+  return Span{std::move(file), line, column, line, column + std::max<std::uint32_t>(length, 1)};
+}
+
+Diagnostic Diagnostic::error(std::string code, std::string message, Span span) {
+  return Diagnostic{Severity::kError, std::move(code), std::move(message), std::move(span), {}};
+}
+
+Diagnostic Diagnostic::warning(std::string code, std::string message, Span span) {
+  return Diagnostic{Severity::kWarning, std::move(code), std::move(message), std::move(span), {}};
+}
+
+std::string_view severity_name(Severity severity) {
+  switch (severity) {
+    case Severity::kError:
+      return "error";
+    case Severity::kWarning:
+      return "warning";
+    case Severity::kNote:
+      return "note";
+  }
+  return "error";
+}
+
+namespace {
+
+std::string location_prefix(const Span& span) {
+  std::string out = span.file.empty() ? std::string("<input>") : span.file;
+  if (span.line > 0) {
+    out += ':';
+    out += std::to_string(span.line);
+    out += ':';
+    out += std::to_string(std::max<std::uint32_t>(span.column, 1));
+  }
+  return out;
+}
+
+// The source line and a caret (with tildes across the span on that line).
+std::string caret_lines(const Span& span, const Source& source) {
+  const std::string_view text = source.line(span.line);
+  if (text.empty() && span.line > 1) return {};
+  const std::uint32_t column = std::max<std::uint32_t>(span.column, 1);
+  std::string marker(column - 1, ' ');
+  for (std::size_t i = 0; i + 1 < column && i < text.size(); ++i) {
+    if (text[i] == '\t') marker[i] = '\t';
+  }
+  marker += '^';
+  if (span.end_line == span.line && span.end_column > column + 1) {
+    const std::size_t limit = std::min<std::size_t>(span.end_column - 1, text.size());
+    for (std::size_t c = column; c < limit; ++c) marker += '~';
+  }
+  std::string out(1, '\n');
+  out.append(text);
+  out += '\n';
+  out += marker;
+  return out;
+}
+
+}  // namespace
+
+std::string render(const Diagnostic& diagnostic, const Source* source) {
+  std::string out = location_prefix(diagnostic.span) + ": ";
+  out += severity_name(diagnostic.severity);
+  if (!diagnostic.code.empty()) {
+    out += '[';
+    out += diagnostic.code;
+    out += ']';
+  }
+  out += ": ";
+  out += diagnostic.message;
+  if (source != nullptr && diagnostic.span.line > 0) out += caret_lines(diagnostic.span, *source);
+  for (const std::string& note : diagnostic.notes) {
+    out += "\nnote: ";
+    out += note;
+  }
+  return out;
+}
+
+bool has_errors(const std::vector<Diagnostic>& diagnostics) {
+  return std::any_of(diagnostics.begin(), diagnostics.end(),
+                     [](const Diagnostic& d) { return d.severity == Severity::kError; });
+}
+
+}  // namespace insula::base

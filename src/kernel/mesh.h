@@ -1,0 +1,95 @@
+// A polygon mesh with n-gon faces. Every face is one simple planar loop of vertex indices
+// (counter-clockwise seen from outside, so the right-hand normal points out) and carries a tag:
+// semantic class, material id and face id. A region with holes is stored as several hole-free faces
+// that share its face id (docs/kernel.md), so every consumer (OBJ, glTF, CityJSON, the renderer)
+// handles only simple loops. Storage is flat (one index array plus offsets) to keep meshes small.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "kernel/semantic.h"
+#include "kernel/vec.h"
+
+namespace insula::kernel {
+
+using MaterialId = std::uint16_t;  // index into the scene's material table; 0 = default by class
+
+struct FaceTag {
+  SemanticClass semantic = SemanticClass::kNone;
+  MaterialId material = 0;
+  std::uint32_t face_id = 0;  // the logical face this piece belongs to (seed 001, §3.1.1)
+};
+
+struct Bounds3 {
+  Vec3 min{1e300, 1e300, 1e300};
+  Vec3 max{-1e300, -1e300, -1e300};
+  void add(Vec3 p);
+  bool empty() const { return min.x > max.x; }
+  Vec3 size() const { return empty() ? Vec3{} : max - min; }
+};
+
+class Mesh {
+ public:
+  std::uint32_t add_vertex(Vec3 position);
+  // Adds a face over existing vertex indices (at least 3). Returns the face index.
+  std::uint32_t add_face(std::span<const std::uint32_t> loop, FaceTag tag);
+  std::uint32_t add_face(std::initializer_list<std::uint32_t> loop, FaceTag tag);
+  // Adds a face with its own new vertices.
+  std::uint32_t add_polygon(std::span<const Vec3> loop, FaceTag tag);
+  // Appends all of `other`'s vertices and faces.
+  void append(const Mesh& other);
+  void reserve(std::size_t vertices, std::size_t faces, std::size_t indices);
+
+  std::size_t vertex_count() const { return positions_.size(); }
+  std::size_t face_count() const { return tags_.size(); }
+  bool empty() const { return tags_.empty(); }
+
+  const std::vector<Vec3>& positions() const { return positions_; }
+  std::vector<Vec3>& positions() { return positions_; }
+  Vec3 position(std::uint32_t vertex) const { return positions_[vertex]; }
+  std::span<const std::uint32_t> face(std::size_t face) const {
+    return {indices_.data() + offsets_[face], offsets_[face + 1] - offsets_[face]};
+  }
+  const FaceTag& tag(std::size_t face) const { return tags_[face]; }
+  FaceTag& tag(std::size_t face) { return tags_[face]; }
+
+  // Reverses every face loop (turns the mesh inside out).
+  void flip();
+  Bounds3 bounds() const;
+  // Number of triangles a fan/ear triangulation of all faces produces (sum of n - 2).
+  std::size_t triangle_count() const;
+
+ private:
+  std::vector<Vec3> positions_;
+  std::vector<std::uint32_t> indices_;
+  std::vector<std::uint32_t> offsets_{0};
+  std::vector<FaceTag> tags_;
+};
+
+// Newell normal of a face (unit length; zero for a degenerate face).
+Vec3 face_normal(const Mesh& mesh, std::size_t face);
+double face_area(const Mesh& mesh, std::size_t face);
+double surface_area(const Mesh& mesh);
+// Signed volume by the divergence theorem; positive for a closed, outward-oriented mesh.
+double volume(const Mesh& mesh);
+
+// Merges vertices closer than `tolerance` (grid hashing), removes repeated indices inside loops and
+// faces left with fewer than 3 vertices.
+Mesh weld(const Mesh& mesh, double tolerance = 1e-7);
+
+struct MeshCheck {
+  bool closed = false;    // every directed edge has exactly one opposite partner
+  bool oriented = false;  // no directed edge is used twice (consistent orientation)
+  std::size_t boundary_edges = 0;
+  std::size_t non_manifold_edges = 0;
+  int euler_characteristic = 0;  // V - E + F over vertices used by faces
+  std::size_t components = 0;
+};
+// Topological check on vertex indices (weld first when faces do not share indices).
+MeshCheck check(const Mesh& mesh);
+// Closed, oriented, manifold and of positive volume after welding: a solid a validator accepts.
+bool is_watertight(const Mesh& mesh, double tolerance = 1e-7);
+
+}  // namespace insula::kernel

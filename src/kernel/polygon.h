@@ -1,0 +1,73 @@
+// Planar polygons with holes, in meters. Invariant after normalize(): the outer ring runs
+// counter-clockwise, every hole clockwise, no ring repeats its first vertex at the end.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "kernel/vec.h"
+
+namespace insula::kernel {
+
+using Ring = std::vector<Vec2>;
+
+struct Polygon {
+  Ring outer;
+  std::vector<Ring> holes;
+};
+
+// Twice-signed shoelace area / 2: positive for counter-clockwise rings.
+double signed_area(const Ring& ring);
+// Outer area minus hole areas, whatever the orientation.
+double area(const Polygon& polygon);
+double perimeter(const Polygon& polygon);
+// Area centroid of the region (holes subtracted).
+Vec2 centroid(const Polygon& polygon);
+// Outer counter-clockwise, holes clockwise; drops a closing vertex equal to the first.
+void normalize(Polygon& polygon);
+
+enum class PointLocation { kOutside, kBoundary, kInside };
+// `tolerance` is the distance within which a point counts as on the boundary.
+PointLocation locate(const Polygon& polygon, Vec2 point, double tolerance = 1e-9);
+
+struct Bounds2 {
+  Vec2 min{1e300, 1e300};
+  Vec2 max{-1e300, -1e300};
+  void add(Vec2 p);
+  bool empty() const { return min.x > max.x; }
+};
+Bounds2 bounds(const Polygon& polygon);
+
+// Validation and repair (polygon_repair.cc).
+enum class PolygonIssueKind {
+  kTooFewVertices,    // a ring with fewer than 3 distinct vertices (not repairable)
+  kNonFinite,         // NaN or infinite coordinate (not repairable)
+  kDuplicateVertex,   // consecutive equal vertices (repaired: removed)
+  kCollinearVertex,   // a vertex on the line through its neighbours (repaired: removed)
+  kZeroArea,          // a ring of (near) zero area (not repairable)
+  kSelfIntersection,  // edges of one ring cross (repaired only when unambiguous, see docs)
+  kRingsIntersect,    // a hole crosses the outer ring or another hole
+  kHoleOutside,       // a hole lies outside the outer ring
+  kWrongOrientation,  // repaired: reversed
+};
+
+struct PolygonIssue {
+  PolygonIssueKind kind;
+  int ring = 0;  // 0 = outer, i > 0 = hole i-1
+  int vertex = -1;
+  bool repaired = false;
+  std::string message;
+};
+
+struct RepairResult {
+  Polygon polygon;                   // the repaired polygon (valid only if ok)
+  std::vector<PolygonIssue> issues;  // everything found, repaired or not
+  bool ok = false;                   // true when the result is a valid polygon
+};
+
+// Removes duplicate and collinear vertices, fixes orientation, and reports self-intersections,
+// zero area and misplaced holes. `tolerance` in meters.
+RepairResult repair(const Polygon& polygon, double tolerance = 1e-7);
+std::vector<PolygonIssue> validate(const Polygon& polygon, double tolerance = 1e-7);
+
+}  // namespace insula::kernel

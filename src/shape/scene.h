@@ -1,0 +1,52 @@
+// The export model every writer consumes: buildings made of named parts, each a mesh in local
+// coordinates (meters, Z up) with tagged faces. `origin` is the offset that takes local coordinates
+// back to the input's coordinate reference system (world = local + origin), so far-from-origin
+// inputs such as UTM keep full precision in double arithmetic (design.md, "Coordinates and units").
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "kernel/mesh.h"
+#include "kernel/vec.h"
+#include "shape/value.h"
+
+namespace insula::shape {
+
+struct Material {
+  std::string name;
+  std::array<float, 4> rgba{0.8F, 0.8F, 0.8F, 1.0F};  // linear RGB + alpha
+};
+
+// A CityGML-like object type for a part.
+enum class PartKind { kBuildingPart, kStorey, kRoom, kInstallation, kOther };
+
+struct Part {
+  std::string name;
+  PartKind kind = PartKind::kBuildingPart;
+  AttributeMap attributes;
+  kernel::Mesh mesh;
+};
+
+struct Building {
+  std::string id;  // unique within the scene
+  AttributeMap attributes;
+  std::vector<Part> parts;
+};
+
+struct Scene {
+  kernel::Vec3 origin;              // world = local + origin
+  std::string crs;                  // e.g. "EPSG:32633"; empty when unknown
+  std::vector<Material> materials;  // indexed by kernel::MaterialId; index 0 = "default"
+  std::vector<Building> buildings;
+
+  Scene();
+  // The material a face shows: its own, or the default colour of its semantic class.
+  Material material_for(const kernel::FaceTag& tag) const;
+};
+
+// Default colours per semantic class (walls light plaster, roofs terracotta, ...).
+Material default_material(kernel::SemanticClass semantic);
+
+}  // namespace insula::shape
