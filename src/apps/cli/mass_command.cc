@@ -1,0 +1,281 @@
+#include "apps/cli/mass_command.h"
+
+#include <CLI/CLI.hpp>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include "apps/cli/exit_codes.h"
+#include "apps/cli/mass_report.h"
+#include "apps/cli/stopwatch.h"
+#include "base/diagnostic.h"
+#include "io/geojson_reader.h"
+#include "io/output.h"
+#include "kernel/mass.h"
+#include "shape/scene.h"
+
+namespace insula::cli {
+namespace {
+
+const std::map<std::string, kernel::RoofType>& roof_names() {
+  static const std::map<std::string, kernel::RoofType> names = {
+      {"flat", kernel::RoofType::kFlat},       {"shed", kernel::RoofType::kShed},
+      {"gable", kernel::RoofType::kGable},     {"hip", kernel::RoofType::kHip},
+      {"pyramid", kernel::RoofType::kPyramid}, {"mansard", kernel::RoofType::kMansard}};
+  return names;
+}
+
+std::optional<std::string> read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return buffer.str();
+}
+
+// What one footprint becomes, decided before the parallel build so warnings stay in input order.
+struct BuildingPlan {
+  kernel::MassSpec spec;
+};
+
+std::optional<double> number_property(const shape::AttributeMap& properties, const std::string& name) {
+  auto it = properties.find(name);
+  if (it == properties.end()) return std::nullopt;
+  if (const double* d = std::get_if<double>(&it->second)) return *d;
+  if (const std::string* s = std::get_if<std::string>(&it->second)) {
+    char* end = nullptr;
+    const double d = std::strtod(s->c_str(), &end);
+    if (end != s->c_str() && *end == '\0') return d;
+  }
+  return std::nullopt;
+}
+
+std::string feature_name(const io::Footprint& footprint) {
+  return "feature " + std::to_string(footprint.feature_index) + " (id \"" + footprint.id +
+         "\")";
+}
+
+double plan_height(const MassOptions& options, const io::Footprint& footprint,
+                   std::vector<std::string>& warnings) {
+  if (options.height) return *options.height;
+  const std::optional<double> h = number_property(footprint.properties, options.height_attr);
+  if (h && std::isfinite(*h) && *h > 0 && *h < 1000) return *h;
+  const bool present = footprint.properties.count(options.height_attr) > 0;
+  warnings.push_back(feature_name(footprint) + ": " +
+                     (present ? "property '" + options.height_attr + "' is not a height in (0, 1000) m"
+                              : "no '" + options.height_attr + "' property") +
+                     "; using " + shape::to_string(options.default_height) + " m");
+  return options.default_height;
+}
+
+kernel::RoofType plan_roof(const MassOptions& options, const io::Footprint& footprint,
+                           std::vector<std::string>& warnings) {
+  if (!options.roof_given) {
+    auto it = footprint.properties.find("roof");
+    if (it != footprint.properties.end()) {
+      const std::string name = shape::to_string(it->second);
+      auto known = roof_names().find(name);
+      if (known != roof_names().end()) return known->second;
+      warnings.push_back(feature_name(footprint) + ": unknown roof '" + name +
+                         "'; using " + options.roof);
+    }
+  }
+  return roof_names().at(options.roof);
+}
+
+double plan_pitch(const MassOptions& options, const io::Footprint& footprint) {
+  if (!options.pitch_given) {
+    const std::optional<double> p = number_property(footprint.properties, "pitch");
+    if (p && *p > 0 && *p < 89) return *p;
+  }
+  return options.pitch_deg;
+}
+
+std::vector<BuildingPlan> plan_buildings(const MassOptions& options, const io::FootprintSet& set,
+                                         std::vector<std::string>& warnings) {
+  std::vector<BuildingPlan> plans;
+  plans.reserve(set.footprints.size());
+  for (const io::Footprint& footprint : set.footprints) {
+    BuildingPlan plan;
+    plan.spec.wall_height = plan_height(options, footprint, warnings);
+    plan.spec.roof = plan_roof(options, footprint, warnings);
+    plan.spec.pitch_deg = plan_pitch(options, footprint);
+    plan.spec.overhang = options.overhang;
+    plans.push_back(plan);
+  }
+  return plans;
+}
+
+struct BuiltBuilding {
+  shape::Building building;
+  std::vector<std::string> messages;  // fallbacks and failures, reported in input order
+  bool watertight = true;
+};
+
+BuiltBuilding build_one(const io::Footprint& footprint, const BuildingPlan& plan) {
+  BuiltBuilding out;
+  out.building.id = footprint.id;
+  out.building.attributes = footprint.properties;
+  for (std::size_t i = 0; i < footprint.polygons.size(); ++i) {
+    kernel::MassResult mass = kernel::build_mass(footprint.polygons[i], plan.spec);
+    if (!mass.message.empty()) out.messages.push_back(mass.message);
+    shape::Part part;
+    part.name = footprint.polygons.size() == 1 ? footprint.id
+                                               : footprint.id + "-part-" + std::to_string(i);
+    part.kind = shape::PartKind::kBuildingPart;
+    part.mesh = std::move(mass.mesh);
+    out.watertight = out.watertight && !part.mesh.empty() && kernel::is_watertight(part.mesh);
+    out.building.parts.push_back(std::move(part));
+  }
+  return out;
+}
+
+// Builds every footprint in parallel; results land by index, so the output does not depend on the
+// thread count.
+std::vector<BuiltBuilding> build_all(const io::FootprintSet& set,
+                                     const std::vector<BuildingPlan>& plans, bool quiet) {
+  std::vector<BuiltBuilding> built(set.footprints.size());
+  std::atomic<std::size_t> done{0};
+  Stopwatch clock;
+  std::atomic<double> last_report{0};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, built.size(), 64),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        built[i] = build_one(set.footprints[i], plans[i]);
+                      }
+                      const std::size_t now = done += range.size();
+                      const double t = clock.seconds();
+                      double last = last_report.load();
+                      if (!quiet && t - last > 1.0 && last_report.compare_exchange_strong(last, t)) {
+                        std::fprintf(stderr, "insula: built %zu of %zu buildings\n", now, built.size());
+                      }
+                    });
+  return built;
+}
+
+void print_diagnostics(const std::vector<base::Diagnostic>& diagnostics, const base::Source& source) {
+  for (const base::Diagnostic& d : diagnostics) {
+    std::fprintf(stderr, "%s\n", base::render(d, &source).c_str());
+  }
+}
+
+}  // namespace
+
+void add_mass_command(CLI::App& app, MassOptions& options) {
+  CLI::App* mass = app.add_subcommand("mass", "LOD2 mass models: one closed roofed building per footprint");
+  mass->add_option("FOOTPRINTS", options.input, "GeoJSON file of Polygon/MultiPolygon footprints")
+      ->required();
+  mass->add_option("-o,--output", options.outputs,
+                   "output file, format by extension (.obj .glb .gltf .city.json .svg .png); repeatable")
+      ->required();
+  auto* roof = mass->add_option("--roof", options.roof,
+                                "roof type: flat, shed, gable, hip, pyramid, mansard (default hip; "
+                                "else the feature's 'roof' property)")
+                   ->check(CLI::IsMember({"flat", "shed", "gable", "hip", "pyramid", "mansard"}));
+  auto* pitch = mass->add_option("--pitch", options.pitch_deg,
+                                 "roof pitch in degrees (default 30; else the feature's 'pitch')")
+                    ->check(CLI::Range(1.0, 75.0));
+  mass->add_option("--overhang", options.overhang, "roof overhang in meters (default 0)")
+      ->check(CLI::Range(0.0, 5.0));
+  auto* height = mass->add_option("--height", options.height, "wall height in meters for every building")
+                     ->check(CLI::Range(0.5, 1000.0));
+  mass->add_option("--height-attr", options.height_attr,
+                   "feature property holding the wall height (default 'height')")
+      ->excludes(height);
+  mass->add_option("--default-height", options.default_height,
+                   "wall height when a feature has no usable height (default 10)")
+      ->check(CLI::Range(0.5, 1000.0));
+  mass->add_option("--report", options.report, "write a JSON report (counts, timings)");
+  mass->add_option("--threads", options.threads, "worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  mass->add_flag("-q,--quiet", options.quiet, "no progress or warnings on stderr");
+  mass->callback([&options, roof, pitch]() {
+    options.roof_given = roof->count() > 0;
+    options.pitch_given = pitch->count() > 0;
+  });
+}
+
+int run_mass(const MassOptions& options) {
+  Stopwatch total;
+  MassReport report;
+  for (const std::string& out : options.outputs) {
+    if (!io::is_supported_output(out)) {
+      std::fprintf(stderr, "insula: %s: unknown output format (use .obj .glb .gltf .city.json .svg .png)\n",
+                   out.c_str());
+      return kExitUsage;
+    }
+  }
+  const int threads = options.threads > 0 ? options.threads
+                                          : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  report.threads = threads;
+
+  Stopwatch read_clock;
+  const std::optional<std::string> text = read_text(options.input);
+  if (!text) {
+    std::fprintf(stderr, "%s: error: cannot read file\n", options.input.c_str());
+    return kExitInput;
+  }
+  const base::Source source(options.input, *text);
+  base::Result<io::FootprintSet> set = io::read_geojson(source.text(), options.input);
+  if (!options.quiet || !set.ok()) print_diagnostics(set.diagnostics(), source);
+  if (!set.ok()) return kExitInput;
+  report.stage("read", read_clock.seconds());
+
+  Stopwatch build_clock;
+  std::vector<std::string> warnings;
+  const std::vector<BuildingPlan> plans = plan_buildings(options, set.value(), warnings);
+  std::vector<BuiltBuilding> built = build_all(set.value(), plans, options.quiet);
+  shape::Scene scene;
+  scene.origin = set->origin;
+  scene.crs = set->crs;
+  scene.buildings.reserve(built.size());
+  for (BuiltBuilding& b : built) {
+    for (std::string& m : b.messages) warnings.push_back("building \"" + b.building.id + "\": " + m);
+    report.count_building(b.building, b.watertight);
+    scene.buildings.push_back(std::move(b.building));
+  }
+  report.stage("build", build_clock.seconds());
+  if (!options.quiet) {
+    for (const std::string& w : warnings) std::fprintf(stderr, "%s: warning: %s\n", options.input.c_str(), w.c_str());
+  }
+  report.warnings = warnings.size() + set.diagnostics().size();
+
+  std::vector<std::string> written;
+  for (const std::string& out : options.outputs) {
+    Stopwatch write_clock;
+    const std::string error = io::write_scene(scene, out);
+    if (!error.empty()) {
+      std::fprintf(stderr, "insula: error: %s\n", error.c_str());
+      io::remove_outputs(written);  // a failed run leaves nothing behind
+      return kExitInput;
+    }
+    written.push_back(out);
+    report.stage("write " + io::output_format_name(out), write_clock.seconds());
+  }
+  report.total_seconds = total.seconds();
+  if (!options.report.empty()) {
+    const std::string error = report.write(options.report);
+    if (!error.empty()) {
+      std::fprintf(stderr, "insula: error: %s\n", error.c_str());
+      io::remove_outputs(written);
+      return kExitInput;
+    }
+  }
+  if (!options.quiet) {
+    std::fprintf(stderr, "insula: %zu buildings in %.2f s\n", scene.buildings.size(), report.total_seconds);
+  }
+  for (const std::string& out : written) std::printf("%s\n", out.c_str());
+  return kExitDone;
+}
+
+}  // namespace insula::cli

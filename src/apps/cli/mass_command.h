@@ -1,0 +1,34 @@
+// `insula mass FOOTPRINTS.geojson -o OUT...`: one closed LOD2 building per footprint.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace insula::cli {
+
+struct MassOptions {
+  std::string input;
+  std::vector<std::string> outputs;
+  std::string roof = "hip";
+  double pitch_deg = 30;
+  double overhang = 0;
+  std::optional<double> height;
+  std::string height_attr = "height";
+  double default_height = 10;
+  std::string report;
+  int threads = 0;
+  bool quiet = false;
+  // Set when the flag was given on the command line; a given flag wins over feature properties.
+  bool roof_given = false;
+  bool pitch_given = false;
+};
+
+void add_mass_command(CLI::App& app, MassOptions& options);
+int run_mass(const MassOptions& options);
+
+}  // namespace insula::cli

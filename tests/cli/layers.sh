@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Dependencies point down only (design.md, "Layers"): base <- kernel <- shape <- io, lang <- apps.
+# Fails when a file includes a header of a layer above its own.
+set -u
+root=$2
+status=0
+check() {  # layer, forbidden include prefixes...
+  local layer=$1
+  shift
+  for forbidden in "$@"; do
+    hits=$(grep -rnE "#include \"${forbidden}/" "$root/src/$layer" 2>/dev/null)
+    if [ -n "$hits" ]; then
+      echo "layer '$layer' must not include '$forbidden/':"
+      echo "$hits"
+      status=1
+    fi
+  done
+}
+check base kernel shape io lang apps
+check kernel shape io lang apps
+check shape io lang apps
+check io lang apps
+check lang io apps
+# CGAL stays in at most two translation units, never in a header.
+cgal=$(grep -rlE '#include <CGAL/' "$root/src" | sort)
+count=$(echo "$cgal" | grep -c . || true)
+if [ "$count" -gt 2 ] || echo "$cgal" | grep -qE '\.h$'; then
+  echo "CGAL must stay in at most two .cc files, found:"
+  echo "$cgal"
+  status=1
+fi
+# kernel does no file I/O.
+if grep -rnE '#include <(fstream|cstdio)>' "$root/src/kernel"; then
+  echo "kernel must not do file I/O"
+  status=1
+fi
+exit $status

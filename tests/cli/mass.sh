@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# End-to-end test of `insula mass`: outputs on the bundled example, the report, third-party
+# validators, exit codes, determinism across thread counts, and no partial output on failure.
+set -u
+insula=$1
+root=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+expect_exit() {  # code, description, command...
+  local want=$1 what=$2
+  shift 2
+  "$@" >"$tmp/out.txt" 2>"$tmp/err.txt"
+  local got=$?
+  [ "$got" -eq "$want" ] || { fail "$what: exit $got, expected $want"; cat "$tmp/err.txt"; }
+}
+
+example=$root/examples/town.geojson
+expect_exit 0 "mass on the example" "$insula" mass "$example" -o "$tmp/t.glb" -o "$tmp/t.obj" \
+  -o "$tmp/t.city.json" -o "$tmp/t.svg" -o "$tmp/t.png" --report "$tmp/r.json" --quiet
+for f in t.glb t.obj t.mtl t.city.json t.svg t.png r.json; do
+  [ -s "$tmp/$f" ] || fail "missing output $f"
+done
+ls "$tmp" | grep -q tmp- && fail "temporary files left behind"
+
+# The report: six buildings, all watertight, counts and per-stage timings present.
+node -e '
+  const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  const ok = r.buildings === 6 && r.watertight === 6 && r.vertices > 0 && r.triangles > 0 &&
+             typeof r.seconds.total === "number" && typeof r.seconds.build === "number" &&
+             typeof r.seconds.read === "number" && typeof r.seconds["write glb"] === "number";
+  if (!ok) { console.log(JSON.stringify(r)); process.exit(1); }' "$tmp/r.json" || fail "report content"
+
+# Third-party validators.
+node "$root/tools/validate_gltf.mjs" "$tmp/t.glb" >"$tmp/v.txt" 2>&1 || { fail "glTF validator"; cat "$tmp/v.txt"; }
+node "$root/tools/validate_cityjson.mjs" "$tmp/t.city.json" >"$tmp/v.txt" 2>&1 || { fail "CityJSON schema"; cat "$tmp/v.txt"; }
+assimp info "$tmp/t.obj" >"$tmp/v.txt" 2>&1 || { fail "assimp info obj"; tail -5 "$tmp/v.txt"; }
+assimp info "$tmp/t.glb" >"$tmp/v.txt" 2>&1 || { fail "assimp info glb"; tail -5 "$tmp/v.txt"; }
+
+# Every roof type gives six watertight buildings.
+for roof in flat shed gable hip pyramid mansard; do
+  expect_exit 0 "roof $roof" "$insula" mass "$example" --roof "$roof" -o "$tmp/$roof.obj" \
+    --report "$tmp/$roof.json" --quiet
+  node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+           if (r.watertight !== 6) { console.log(JSON.stringify(r)); process.exit(1); }' \
+    "$tmp/$roof.json" || fail "roof $roof: not all buildings watertight"
+done
+expect_exit 0 "overhang" "$insula" mass "$example" --overhang 0.6 -o "$tmp/oh.city.json" --report "$tmp/oh.json" --quiet
+node "$root/tools/validate_cityjson.mjs" "$tmp/oh.city.json" >/dev/null 2>&1 || fail "CityJSON with overhang"
+
+# Same output whatever the thread count.
+"$insula" mass "$example" --threads 1 -o "$tmp/a.obj" -o "$tmp/a.glb" --quiet >/dev/null
+"$insula" mass "$example" --threads 2 -o "$tmp/b.obj" -o "$tmp/b.glb" --quiet >/dev/null
+cmp -s "$tmp/a.glb" "$tmp/b.glb" || fail "glb differs between 1 and 2 threads"
+sed 's/^mtllib .*//' "$tmp/a.obj" >"$tmp/a2" && sed 's/^mtllib .*//' "$tmp/b.obj" >"$tmp/b2"
+cmp -s "$tmp/a2" "$tmp/b2" || fail "obj differs between 1 and 2 threads"
+
+# Usage and input errors.
+expect_exit 0 "--help" "$insula" --help
+expect_exit 0 "--version" "$insula" --version
+grep -q "insula 0" "$tmp/out.txt" || fail "--version prints the version"
+expect_exit 2 "no verb" "$insula"
+expect_exit 2 "unknown flag" "$insula" mass "$example" -o "$tmp/x.obj" --no-such-flag
+expect_exit 2 "unknown output format" "$insula" mass "$example" -o "$tmp/x.dwg"
+expect_exit 2 "bad roof" "$insula" mass "$example" -o "$tmp/x.obj" --roof dome
+expect_exit 1 "missing input" "$insula" mass "$tmp/nope.geojson" -o "$tmp/x.obj"
+grep -q "nope.geojson" "$tmp/err.txt" || fail "missing input names the file"
+expect_exit 1 "output into a missing directory" "$insula" mass "$example" -o "$tmp/x.obj" \
+  -o "$tmp/no/such/dir/x.glb"
+[ -e "$tmp/x.obj" ] && fail "failed run left x.obj behind"
+[ -e "$tmp/x.mtl" ] && fail "failed run left x.mtl behind"
+printf '{"type":"FeatureCollection","features":[' >"$tmp/broken.geojson"
+expect_exit 1 "broken JSON" "$insula" mass "$tmp/broken.geojson" -o "$tmp/y.obj"
+grep -qE "broken.geojson:1:[0-9]+: error" "$tmp/err.txt" || { fail "broken JSON message"; cat "$tmp/err.txt"; }
+[ -e "$tmp/y.obj" ] && fail "failed parse left y.obj behind"
+
+# Every file of the bad-input catalog: exit 1 (error) or 0 (repaired with a warning), never a crash.
+for bad in "$root"/tests/data/bad/*.geojson; do
+  timeout 20 "$insula" mass "$bad" -o "$tmp/bad.obj" --quiet >/dev/null 2>"$tmp/err.txt"
+  code=$?
+  case $code in
+    0) ;;
+    1) grep -q "$(basename "$bad")" "$tmp/err.txt" || fail "$(basename "$bad"): message does not name the file" ;;
+    *) fail "$(basename "$bad"): exit $code" ;;
+  esac
+done
+
+[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
+echo "all mass checks passed"
