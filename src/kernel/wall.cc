@@ -1,0 +1,769 @@
+// Walls with openings (wall.h, docs/kernel-walls.md). Stages: validate the outline and the
+// openings, build the boundary rings (outline with door notches spliced in, one clockwise ring per
+// hole), cut the region into u-monotone pieces with diagonals between existing vertices
+// (MakeMonotone, de Berg et al., "Computational Geometry", 3rd ed., section 3.2), then emit front
+// and back pieces and one side quad per boundary edge. Because every piece boundary and every quad
+// use only ring vertices, the mesh has no T-junctions and is closed on shared indices.
+#include "kernel/wall.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace insula::kernel {
+namespace {
+
+// Absolute tolerance in meters: distances at or below it count as touching.
+constexpr double kEps = 1e-9;
+constexpr int kMaxArchSegments = 1024;
+
+// ---------------------------------------------------------------------------------------------
+// Small planar predicates.
+
+struct Box {
+  Vec2 min{1e300, 1e300};
+  Vec2 max{-1e300, -1e300};
+  void add(Vec2 p) {
+    min = {std::min(min.x, p.x), std::min(min.y, p.y)};
+    max = {std::max(max.x, p.x), std::max(max.y, p.y)};
+  }
+  bool overlaps(const Box& o, double pad) const {
+    return min.x <= o.max.x + pad && o.min.x <= max.x + pad && min.y <= o.max.y + pad &&
+           o.min.y <= max.y + pad;
+  }
+};
+
+Box ring_box(const Ring& ring) {
+  Box b;
+  for (Vec2 p : ring) b.add(p);
+  return b;
+}
+
+double twice_area(const Ring& ring) {
+  double a = 0;
+  const Vec2 o = ring.front();
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    a += cross(ring[i] - o, ring[(i + 1) % ring.size()] - o);
+  }
+  return a;
+}
+
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return length(p - (a + ab * t));
+}
+
+// Segments cross at a point interior to both (strict orientation tests).
+bool cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double o1 = cross(b - a, c - a);
+  const double o2 = cross(b - a, d - a);
+  const double o3 = cross(d - c, a - c);
+  const double o4 = cross(d - c, b - c);
+  return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
+}
+
+double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (cross_properly(a, b, c, d)) return 0;
+  return std::min(std::min(point_segment_distance(a, c, d), point_segment_distance(b, c, d)),
+                  std::min(point_segment_distance(c, a, b), point_segment_distance(d, a, b)));
+}
+
+// Crossing-number test; meaningful for points farther than kEps from the boundary.
+bool inside_ring(const Ring& ring, Vec2 p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Vec2 a = ring[i];
+    const Vec2 b = ring[j];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (p.x < x) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+double ring_distance(const Ring& ring, Vec2 p) {
+  double d = 1e300;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    d = std::min(d, point_segment_distance(p, ring[i], ring[(i + 1) % ring.size()]));
+  }
+  return d;
+}
+
+// Strictly inside a convex clockwise ring (by more than kEps).
+bool inside_convex_cw(const Ring& ring, Vec2 p) {
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 a = ring[i];
+    const Vec2 e = ring[(i + 1) % ring.size()] - a;
+    if (cross(e, p - a) > -kEps * length(e)) return false;
+  }
+  return true;
+}
+
+// Separating axis test for convex rings: interiors overlap by more than kEps on every edge normal.
+bool convex_interiors_overlap(const Ring& a, const Ring& b) {
+  for (const Ring* r : {&a, &b}) {
+    for (std::size_t i = 0; i < r->size(); ++i) {
+      const Vec2 axis = normalized(perp((*r)[(i + 1) % r->size()] - (*r)[i]));
+      double amin = 1e300, amax = -1e300, bmin = 1e300, bmax = -1e300;
+      for (Vec2 p : a) amin = std::min(amin, dot(p, axis)), amax = std::max(amax, dot(p, axis));
+      for (Vec2 p : b) bmin = std::min(bmin, dot(p, axis)), bmax = std::max(bmax, dot(p, axis));
+      if (amax <= bmin + kEps || bmax <= amin + kEps) return false;
+    }
+  }
+  return true;
+}
+
+std::string meters(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
+
+bool finite(Vec2 p) {
+  return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Outline validation. `ccw` is the outline turned counter-clockwise.
+
+std::string outline_problem(const Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n < 3) return "wall outline needs at least 3 vertices";
+  for (Vec2 p : ring) {
+    if (!finite(p)) return "wall outline has a non-finite coordinate";
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (length(ring[i] - ring[(i + n - 1) % n]) <= kEps) {
+      return "wall outline vertex " + std::to_string(i) + " repeats the previous vertex";
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
+    // Adjacent edges may only meet at their shared vertex: no spike folding back.
+    if (n > 3 &&
+        (point_segment_distance(c, a, b) <= kEps || point_segment_distance(a, b, c) <= kEps))
+      return "wall outline edges " + std::to_string(i) + " and " + std::to_string((i + 1) % n) +
+             " overlap";
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;
+      if (segment_distance(a, b, ring[j], ring[(j + 1) % n]) <= kEps) {
+        return "wall outline edges " + std::to_string(i) + " and " + std::to_string(j) +
+               " touch or cross";
+      }
+    }
+  }
+  if (std::abs(twice_area(ring)) <= kEps) return "wall outline has zero area";
+  return {};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Opening geometry.
+
+std::string parameter_problem(const Opening& o) {
+  if (!std::isfinite(o.u) || !std::isfinite(o.sill) || !std::isfinite(o.width) ||
+      !std::isfinite(o.height) || !std::isfinite(o.arch_rise)) {
+    return "position and size must be finite";
+  }
+  if (o.width <= kEps || o.height <= kEps) return "width and height must be positive";
+  if (o.arch_rise < 0 || o.arch_rise > o.width / 2 * (1 + 1e-12) || o.arch_rise >= o.height - kEps)
+    return "arch rise must be in [0, width / 2] and below the height";
+  if (o.arch_rise > 0 && (o.arch_segments < 1 || o.arch_segments > kMaxArchSegments))
+    return "arch segments must be in [1, 1024]";
+  return {};
+}
+
+// Appends the arch points strictly between the springing points, left to right.
+void append_arch(const Opening& o, Ring& ring) {
+  const double half = o.width / 2;
+  const double rise = std::min(o.arch_rise, half);
+  // Circle through both springing points and the apex: R = (half^2 + rise^2) / (2 rise).
+  const double radius = (half * half + rise * rise) / (2 * rise);
+  const double spring = o.sill + o.height - rise;
+  const Vec2 center{o.u + half, spring + rise - radius};
+  const double theta0 = std::atan2(radius - rise, half);  // angle of the right springing point
+  const double sweep = std::numbers::pi - 2 * theta0;
+  for (int k = 1; k < o.arch_segments; ++k) {
+    const double theta = std::numbers::pi - theta0 - sweep * k / o.arch_segments;
+    ring.push_back(center + Vec2{std::cos(theta), std::sin(theta)} * radius);
+  }
+}
+
+Ring make_ring(const Opening& o) {
+  const double u1 = o.u + o.width;
+  const double top = o.sill + o.height - (o.arch_rise > 0 ? o.arch_rise : 0);
+  Ring ring{{o.u, o.sill}, {o.u, top}};
+  if (o.arch_rise > 0) append_arch(o, ring);
+  ring.push_back({u1, top});
+  ring.push_back({u1, o.sill});
+  return ring;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Opening validation.
+
+struct Accepted {
+  std::size_t index = 0;
+  Opening opening;  // with the sill snapped onto the host edge for notches
+  Ring ring;        // clockwise; for a notch the last edge (the sill) lies on the host edge
+  Box box;
+  int host = -1;  // outline edge a notch opens through, or -1 for a hole
+};
+
+// The bottom outline edge (running +u at the sill's height) that contains the opening's width.
+int find_host(const Ring& outline, const Opening& o) {
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const Vec2 a = outline[i], b = outline[(i + 1) % outline.size()];
+    if (std::abs(a.y - b.y) <= kEps && b.x > a.x && std::abs(o.sill - a.y) <= kEps &&
+        a.x < o.u - kEps && o.u + o.width < b.x - kEps) {
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
+struct Finding {
+  OpeningProblem problem;
+  double distance = 0;
+};
+
+// Distance-based verdict shared by the outline and the opening-opening checks.
+std::optional<OpeningProblem> closeness(double distance, double margin, OpeningProblem touches,
+                                        OpeningProblem near) {
+  if (distance <= kEps) return touches;
+  if (distance < margin) return near;
+  return std::nullopt;
+}
+
+std::optional<Finding> against_outline(const Ring& outline, const Accepted& c, double margin) {
+  const std::size_t n = outline.size();
+  const std::size_t m = c.ring.size();
+  // A notch's sill edge (last) and its two bottom corners lie on the host edge by construction.
+  const std::size_t edges = c.host >= 0 ? m - 1 : m;
+  for (Vec2 p : outline) {
+    if (inside_convex_cw(c.ring, p)) return Finding{OpeningProblem::kOutsideOutline};
+  }
+  double distance = 1e300;
+  for (std::size_t i = 0; i < edges; ++i) {
+    const Vec2 a = c.ring[i], b = c.ring[(i + 1) % m];
+    // A notch's first corner sits on the host edge; its last corner ends edge `edges - 1`.
+    if ((c.host < 0 || i > 0) && !inside_ring(outline, a) && ring_distance(outline, a) > kEps) {
+      return Finding{OpeningProblem::kOutsideOutline};
+    }
+    for (std::size_t j = 0; j < n; ++j) {
+      if (static_cast<int>(j) == c.host) continue;
+      const Vec2 p = outline[j], q = outline[(j + 1) % n];
+      if (cross_properly(a, b, p, q)) return Finding{OpeningProblem::kOutsideOutline};
+      distance = std::min(distance, segment_distance(a, b, p, q));
+    }
+  }
+  const auto verdict =
+      closeness(distance, margin, OpeningProblem::kTouchesOutline, OpeningProblem::kNearOutline);
+  if (!verdict) return std::nullopt;
+  return Finding{*verdict, distance};
+}
+
+std::optional<Finding> against_opening(const Accepted& c, const Accepted& d, double margin) {
+  if (!c.box.overlaps(d.box, margin + kEps)) return std::nullopt;
+  if (convex_interiors_overlap(c.ring, d.ring)) return Finding{OpeningProblem::kOverlapsOpening};
+  double distance = 1e300;
+  for (std::size_t i = 0; i < c.ring.size(); ++i) {
+    const Vec2 a = c.ring[i], b = c.ring[(i + 1) % c.ring.size()];
+    for (std::size_t j = 0; j < d.ring.size(); ++j) {
+      distance =
+          std::min(distance, segment_distance(a, b, d.ring[j], d.ring[(j + 1) % d.ring.size()]));
+    }
+  }
+  const auto verdict =
+      closeness(distance, margin, OpeningProblem::kTouchesOpening, OpeningProblem::kNearOpening);
+  if (!verdict) return std::nullopt;
+  return Finding{*verdict, distance};
+}
+
+std::string describe(std::size_t index, const Finding& f, std::optional<std::size_t> other,
+                     double margin) {
+  const std::string self = "opening " + std::to_string(index);
+  const std::string them = other ? "opening " + std::to_string(*other) : "the wall outline";
+  switch (f.problem) {
+    case OpeningProblem::kOutsideOutline:
+      return self + " extends outside the wall outline";
+    case OpeningProblem::kOverlapsOpening:
+      return self + " overlaps " + them;
+    case OpeningProblem::kTouchesOutline:
+    case OpeningProblem::kTouchesOpening:
+      return self + " touches " + them;
+    case OpeningProblem::kNearOutline:
+    case OpeningProblem::kNearOpening:
+      return self + " is " + meters(f.distance) + " m from " + them + ", less than the margin " +
+             meters(margin) + " m";
+    case OpeningProblem::kBadParameters:
+      break;
+  }
+  return self;
+}
+
+// Greedy validation in input order against the outline and the earlier accepted openings.
+std::vector<OpeningIssue> validate(const Ring& outline, const WallSpec& spec,
+                                   std::vector<Accepted>& accepted) {
+  std::vector<OpeningIssue> issues;
+  const double margin = spec.min_margin;
+  for (std::size_t i = 0; i < spec.openings.size(); ++i) {
+    Accepted c;
+    c.index = i;
+    c.opening = spec.openings[i];
+    if (std::string why = parameter_problem(c.opening); !why.empty()) {
+      issues.push_back({i, OpeningProblem::kBadParameters, std::nullopt,
+                        "opening " + std::to_string(i) + ": " + why});
+      continue;
+    }
+    c.host = find_host(outline, c.opening);
+    if (c.host >= 0) c.opening.sill = outline[static_cast<std::size_t>(c.host)].y;
+    c.ring = make_ring(c.opening);
+    c.box = ring_box(c.ring);
+    std::optional<Finding> finding = against_outline(outline, c, margin);
+    std::optional<std::size_t> other;
+    for (std::size_t k = 0; !finding && k < accepted.size(); ++k) {
+      finding = against_opening(c, accepted[k], margin);
+      if (finding) other = accepted[k].index;
+    }
+    if (finding) {
+      issues.push_back({i, finding->problem, other, describe(i, *finding, other, margin)});
+    } else {
+      accepted.push_back(std::move(c));
+    }
+  }
+  return issues;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Boundary rings: every vertex starts one directed edge with the wall's material on its left.
+
+enum class EdgeKind : std::uint8_t { kTop, kBottom, kEnd, kJamb, kSill, kLintel };
+
+struct Boundary {
+  std::vector<Vec2> points;
+  std::vector<std::uint32_t> next;
+  std::vector<std::uint32_t> prev;
+  std::vector<EdgeKind> kind;         // of the edge leaving each vertex
+  std::vector<std::int32_t> opening;  // opening of that edge, or -1 for the rim
+  std::uint32_t ring_start = 0;
+
+  void add(Vec2 p, EdgeKind k, std::int32_t o) {
+    points.push_back(p);
+    kind.push_back(k);
+    opening.push_back(o);
+  }
+  // Links the vertices added since the last close() into a ring.
+  void close() {
+    const auto n = static_cast<std::uint32_t>(points.size());
+    for (std::uint32_t i = ring_start; i < n; ++i) {
+      next.push_back(i + 1 < n ? i + 1 : ring_start);
+      prev.push_back(i > ring_start ? i - 1 : n - 1);
+    }
+    ring_start = n;
+  }
+};
+
+EdgeKind rim_kind(Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  // The outward normal of a counter-clockwise edge is (d.y, -d.x) / |d|.
+  if (std::abs(d.x) <= 1e-9 * length(d)) return EdgeKind::kEnd;
+  return d.x < 0 ? EdgeKind::kTop : EdgeKind::kBottom;
+}
+
+// Adds an opening's ring as edges: left jamb, lintel pieces, right jamb, then the sill (holes
+// only).
+void add_opening_edges(Boundary& out, const Accepted& c, bool notch) {
+  const auto o = static_cast<std::int32_t>(c.index);
+  const std::size_t m = c.ring.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    EdgeKind k = EdgeKind::kLintel;
+    if (i == 0 || i == m - 2) k = EdgeKind::kJamb;
+    if (i == m - 1) {
+      if (notch) break;  // the sill corner continues along the host edge
+      k = EdgeKind::kSill;
+    }
+    out.add(c.ring[i], k, o);
+  }
+}
+
+void build_boundary(const Ring& outline, const std::vector<Accepted>& cut, Boundary& out) {
+  std::vector<const Accepted*> notches;
+  for (const Accepted& c : cut) {
+    if (c.host >= 0) notches.push_back(&c);
+  }
+  std::sort(notches.begin(), notches.end(), [](const Accepted* a, const Accepted* b) {
+    return a->host != b->host ? a->host < b->host : a->opening.u < b->opening.u;
+  });
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const EdgeKind rim = rim_kind(outline[i], outline[(i + 1) % outline.size()]);
+    out.add(outline[i], rim, -1);
+    for (; k < notches.size() && notches[k]->host == static_cast<int>(i); ++k) {
+      add_opening_edges(out, *notches[k], true);
+      out.add(notches[k]->ring.back(), rim, -1);
+    }
+  }
+  out.close();
+  for (const Accepted& c : cut) {
+    if (c.host >= 0) continue;
+    add_opening_edges(out, c, false);
+    out.close();
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Monotone partition (de Berg section 3.2). The book sweeps top to bottom; we sweep along +u by
+// working in the rotated frame x = v, y = -u (a rotation, so orientation and "interior on the
+// left" are preserved). Ties are broken as in the book: equal y, smaller x comes first.
+
+enum class VertexType : std::uint8_t { kStart, kSplit, kEnd, kMerge, kRegular };
+
+class MonotonePartition {
+ public:
+  explicit MonotonePartition(const Boundary& b) : b_(b) {
+    const std::size_t n = b.points.size();
+    q_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) q_[i] = {b.points[i].y, -b.points[i].x};
+  }
+
+  // Diagonals (vertex pairs) splitting the region into y-monotone pieces; false on a guard failure.
+  bool run(std::vector<std::array<std::uint32_t, 2>>& diagonals) {
+    const std::size_t n = q_.size();
+    order_.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) order_[i] = i;
+    std::sort(order_.begin(), order_.end(),
+              [this](std::uint32_t a, std::uint32_t c) { return below(c, a); });
+    type_.resize(n);
+    helper_.assign(n, 0);
+    for (std::uint32_t i = 0; i < n; ++i) type_[i] = classify(i);
+    for (std::uint32_t v : order_) {
+      if (!handle(v, diagonals)) return false;
+    }
+    return true;
+  }
+
+ private:
+  bool below(std::uint32_t a, std::uint32_t c) const {
+    return q_[a].y < q_[c].y || (q_[a].y == q_[c].y && q_[a].x > q_[c].x);
+  }
+
+  VertexType classify(std::uint32_t v) const {
+    const std::uint32_t p = b_.prev[v], n = b_.next[v];
+    const bool convex = cross(q_[v] - q_[p], q_[n] - q_[v]) > 0;
+    const bool p_below = below(p, v), n_below = below(n, v);
+    if (p_below && n_below) return convex ? VertexType::kStart : VertexType::kSplit;
+    if (!p_below && !n_below) return convex ? VertexType::kEnd : VertexType::kMerge;
+    return VertexType::kRegular;
+  }
+
+  // x of edge e (from e to next(e), going down) at height y.
+  double x_at(std::uint32_t e, double y) const {
+    const Vec2 a = q_[e], c = q_[b_.next[e]];
+    if (a.y == c.y) return std::max(a.x, c.x);
+    return a.x + (c.x - a.x) * (y - a.y) / (c.y - a.y);
+  }
+
+  // The status edge directly left of v, or -1.
+  std::int64_t left_of(std::uint32_t v) const {
+    std::int64_t best = -1;
+    double best_x = -1e300;
+    for (std::uint32_t e : status_) {
+      const double x = x_at(e, q_[v].y);
+      if (x < q_[v].x && x > best_x) best = e, best_x = x;
+    }
+    return best;
+  }
+
+  void erase(std::uint32_t e) {
+    auto it = std::find(status_.begin(), status_.end(), e);
+    if (it != status_.end()) {
+      *it = status_.back();
+      status_.pop_back();
+    }
+  }
+
+  // Connects v to the helper of e if that helper is a merge vertex.
+  void fix_up(std::uint32_t v, std::uint32_t e, std::vector<std::array<std::uint32_t, 2>>& d) {
+    if (type_[helper_[e]] == VertexType::kMerge) d.push_back({v, helper_[e]});
+  }
+
+  bool handle(std::uint32_t v, std::vector<std::array<std::uint32_t, 2>>& d) {
+    const std::uint32_t in = b_.prev[v];  // e_{i-1}
+    switch (type_[v]) {
+      case VertexType::kStart:
+        status_.push_back(v);
+        helper_[v] = v;
+        return true;
+      case VertexType::kEnd:
+        fix_up(v, in, d);
+        erase(in);
+        return true;
+      case VertexType::kSplit: {
+        const std::int64_t e = left_of(v);
+        if (e < 0) return false;
+        d.push_back({v, helper_[static_cast<std::uint32_t>(e)]});
+        helper_[static_cast<std::uint32_t>(e)] = v;
+        status_.push_back(v);
+        helper_[v] = v;
+        return true;
+      }
+      case VertexType::kMerge: {
+        fix_up(v, in, d);
+        erase(in);
+        return connect_left(v, d);
+      }
+      case VertexType::kRegular:
+        if (below(v, in)) {  // interior to the right: the chain runs downward
+          fix_up(v, in, d);
+          erase(in);
+          status_.push_back(v);
+          helper_[v] = v;
+          return true;
+        }
+        return connect_left(v, d);
+    }
+    return false;
+  }
+
+  bool connect_left(std::uint32_t v, std::vector<std::array<std::uint32_t, 2>>& d) {
+    const std::int64_t e = left_of(v);
+    if (e < 0) return false;
+    fix_up(v, static_cast<std::uint32_t>(e), d);
+    helper_[static_cast<std::uint32_t>(e)] = v;
+    return true;
+  }
+
+  const Boundary& b_;
+  std::vector<Vec2> q_;
+  std::vector<std::uint32_t> order_;
+  std::vector<VertexType> type_;
+  std::vector<std::uint32_t> helper_;
+  std::vector<std::uint32_t> status_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Faces of the subdivision: walk half-edges keeping the face on the left. At a vertex with
+// diagonals the next half-edge is the first one clockwise from the way back.
+
+class PieceWalker {
+ public:
+  PieceWalker(const Boundary& b, const std::vector<std::array<std::uint32_t, 2>>& diagonals)
+      : b_(b) {
+    const std::size_t n = b.points.size();
+    start_.assign(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) start_[i + 1] = 1;
+    for (const auto& d : diagonals) ++start_[d[0] + 1], ++start_[d[1] + 1];
+    for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
+    to_.resize(start_[n]);
+    used_.assign(start_[n], 0);
+    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+    for (std::uint32_t i = 0; i < n; ++i) to_[fill[i]++] = b.next[i];
+    for (const auto& d : diagonals) to_[fill[d[0]]++] = d[1], to_[fill[d[1]]++] = d[0];
+  }
+
+  // Appends each piece as a vertex loop (offsets into `loops`); false if a walk does not close
+  // into a simple loop.
+  bool run(std::vector<std::uint32_t>& loops, std::vector<std::uint32_t>& offsets) {
+    std::vector<std::uint32_t> stamp(b_.points.size(), 0);
+    std::uint32_t piece = 0;
+    for (std::uint32_t h = 0; h < to_.size(); ++h) {
+      if (used_[h]) continue;
+      ++piece;
+      std::uint32_t cur = h;
+      std::uint32_t from = from_of(h);
+      for (std::size_t steps = 0;; ++steps) {
+        if (steps > to_.size() || stamp[from] == piece) return false;
+        stamp[from] = piece;
+        used_[cur] = 1;
+        loops.push_back(from);
+        const std::uint32_t at = to_[cur];
+        cur = next_half_edge(from, at);
+        from = at;
+        if (cur == h) break;
+        if (used_[cur]) return false;
+      }
+      offsets.push_back(static_cast<std::uint32_t>(loops.size()));
+    }
+    return true;
+  }
+
+ private:
+  std::uint32_t from_of(std::uint32_t h) const {
+    return static_cast<std::uint32_t>(std::upper_bound(start_.begin(), start_.end(), h) -
+                                      start_.begin() - 1);
+  }
+
+  std::uint32_t next_half_edge(std::uint32_t from, std::uint32_t at) const {
+    const std::uint32_t first = start_[at], last = start_[at + 1];
+    if (last - first == 1) return first;
+    const Vec2 back = b_.points[from] - b_.points[at];
+    std::uint32_t best = first;
+    double best_angle = 1e300;
+    for (std::uint32_t h = first; h < last; ++h) {
+      const Vec2 d = b_.points[to_[h]] - b_.points[at];
+      double angle = std::atan2(cross(d, back), dot(d, back));  // clockwise from `back`
+      if (angle <= 0) angle += 2 * std::numbers::pi;
+      if (angle < best_angle) best = h, best_angle = angle;
+    }
+    return best;
+  }
+
+  const Boundary& b_;
+  std::vector<std::uint32_t> start_;  // outgoing half-edges of vertex v: [start_[v], start_[v+1])
+  std::vector<std::uint32_t> to_;
+  std::vector<std::uint8_t> used_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Mesh emission.
+
+const FaceTag& tag_for(const WallFaceTags& tags, EdgeKind kind) {
+  switch (kind) {
+    case EdgeKind::kTop:
+      return tags.top;
+    case EdgeKind::kBottom:
+      return tags.bottom;
+    case EdgeKind::kEnd:
+      return tags.end;
+    case EdgeKind::kJamb:
+      return tags.jamb;
+    case EdgeKind::kSill:
+      return tags.sill;
+    case EdgeKind::kLintel:
+      return tags.lintel;
+  }
+  return tags.end;
+}
+
+void emit(const Boundary& b, const std::vector<std::uint32_t>& loops,
+          const std::vector<std::uint32_t>& offsets, const WallSpec& spec, const WallFrame& frame,
+          WallResult& result) {
+  const auto n = static_cast<std::uint32_t>(b.points.size());
+  const std::size_t pieces = offsets.size() - 1;
+  Mesh& mesh = result.mesh;
+  mesh.reserve(2 * n, 2 * pieces + n, 2 * loops.size() + 4 * n);
+  for (Vec2 p : b.points) mesh.add_vertex(frame.map(p.x, p.y, spec.thickness));
+  for (Vec2 p : b.points) mesh.add_vertex(frame.map(p.x, p.y, 0));
+  std::vector<std::uint32_t> loop;
+  for (std::size_t f = 0; f < pieces; ++f) {
+    loop.assign(loops.begin() + offsets[f], loops.begin() + offsets[f + 1]);
+    mesh.add_face(loop, spec.tags.front);
+  }
+  for (std::size_t f = 0; f < pieces; ++f) {
+    loop.assign(loops.begin() + offsets[f], loops.begin() + offsets[f + 1]);
+    std::reverse(loop.begin(), loop.end());
+    for (std::uint32_t& v : loop) v += n;
+    mesh.add_face(loop, spec.tags.back);
+  }
+  result.face_opening.assign(2 * pieces, -1);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = b.next[i];
+    mesh.add_face({i, n + i, n + j, j}, tag_for(spec.tags, b.kind[i]));
+    result.face_opening.push_back(b.opening[i]);
+  }
+  if (dot(cross(frame.u_axis, frame.v_axis), frame.normal) < 0) mesh.flip();
+  result.front_pieces = pieces;
+}
+
+WallResult failure(WallStatus status, std::string message) {
+  WallResult r;
+  r.status = status;
+  r.message = std::move(message);
+  return r;
+}
+
+std::string wall_problem(const WallSpec& spec) {
+  if (!std::isfinite(spec.thickness) || spec.thickness <= 0)
+    return "wall thickness must be positive and finite";
+  if (!std::isfinite(spec.min_margin) || spec.min_margin < 0)
+    return "minimum margin must be non-negative and finite";
+  return outline_problem(spec.outline);
+}
+
+Ring counter_clockwise(const Ring& ring) {
+  Ring out = ring;
+  if (twice_area(out) < 0) std::reverse(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+Ring opening_ring(const Opening& opening) {
+  if (!parameter_problem(opening).empty()) return {};
+  return make_ring(opening);
+}
+
+double opening_area(const Opening& opening) {
+  const Ring ring = opening_ring(opening);
+  return ring.empty() ? 0 : std::abs(twice_area(ring)) / 2;
+}
+
+std::vector<OpeningIssue> check_openings(const WallSpec& spec, std::vector<std::size_t>* accepted) {
+  if (accepted) accepted->clear();
+  if (!wall_problem(spec).empty()) return {};
+  std::vector<Accepted> cut;
+  std::vector<OpeningIssue> issues = validate(counter_clockwise(spec.outline), spec, cut);
+  if (accepted) {
+    for (const Accepted& c : cut) accepted->push_back(c.index);
+  }
+  return issues;
+}
+
+WallResult build_wall(const WallSpec& spec, const WallFrame& frame) {
+  if (std::string why = wall_problem(spec); !why.empty()) {
+    return failure(WallStatus::kInvalidWall, std::move(why));
+  }
+  const Ring outline = counter_clockwise(spec.outline);
+  std::vector<Accepted> cut;
+  std::vector<OpeningIssue> issues = validate(outline, spec, cut);
+  if (!issues.empty() && spec.policy == OpeningPolicy::kFail) {
+    WallResult r = failure(WallStatus::kRejectedOpening, issues.front().message);
+    r.issues = std::move(issues);
+    return r;
+  }
+  Boundary boundary;
+  build_boundary(outline, cut, boundary);
+  std::vector<std::array<std::uint32_t, 2>> diagonals;
+  std::vector<std::uint32_t> loops, offsets{0};
+  if (!MonotonePartition(boundary).run(diagonals) ||
+      !PieceWalker(boundary, diagonals).run(loops, offsets)) {
+    return failure(WallStatus::kDecompositionFailed, "the planar partition of the wall failed");
+  }
+  WallResult result;
+  result.issues = std::move(issues);
+  for (const Accepted& c : cut) result.cut.push_back(c.index);
+  emit(boundary, loops, offsets, spec, frame, result);
+  return result;
+}
+
+std::optional<WallPlacement> place_wall(Vec3 base_start, Vec3 base_end, double height,
+                                        double thickness, WallAlignment alignment) {
+  const bool inputs_finite = std::isfinite(base_start.x) && std::isfinite(base_start.y) &&
+                             std::isfinite(base_start.z) && std::isfinite(base_end.x) &&
+                             std::isfinite(base_end.y) && std::isfinite(base_end.z) &&
+                             std::isfinite(height) && std::isfinite(thickness);
+  if (!inputs_finite || height <= 0 || thickness <= 0) return std::nullopt;
+  const Vec3 run{base_end.x - base_start.x, base_end.y - base_start.y, 0};
+  const double len = length(run);
+  if (len <= kEps) return std::nullopt;
+  WallPlacement w;
+  w.frame.u_axis = run / len;
+  w.frame.v_axis = {0, 0, 1};
+  w.frame.normal = cross(w.frame.u_axis, w.frame.v_axis);
+  const double shift = alignment == WallAlignment::kInside   ? thickness
+                       : alignment == WallAlignment::kCenter ? thickness / 2
+                                                             : 0;
+  w.frame.origin = base_start - w.frame.normal * shift;
+  w.outline = {{0, 0}, {len, 0}, {len, height}, {0, height}};
+  w.length = len;
+  w.height = height;
+  w.thickness = thickness;
+  return w;
+}
+
+}  // namespace insula::kernel
