@@ -1,0 +1,520 @@
+// io::read_geojson: accepted inputs, attributes, ids, origin shift and round trip, CRS, repair
+// policy, and the bad-input catalog in tests/data/bad (one file per case, exact first line).
+#include "io/geojson_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace insula::io {
+namespace {
+
+using base::Diagnostic;
+using base::Severity;
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+// The first line of the rendering: `file:line:col: severity[CODE]: message`.
+std::string headline(const Diagnostic& d) {
+  const std::string text = base::render(d);
+  return text.substr(0, text.find('\n'));
+}
+
+std::vector<std::string> headlines(const std::vector<Diagnostic>& diagnostics) {
+  std::vector<std::string> out;
+  for (const Diagnostic& d : diagnostics) out.push_back(headline(d));
+  return out;
+}
+
+std::size_t count_code(const std::vector<Diagnostic>& diagnostics, const std::string& code) {
+  return static_cast<std::size_t>(std::count_if(
+      diagnostics.begin(), diagnostics.end(), [&](const Diagnostic& d) { return d.code == code; }));
+}
+
+std::string square(double x, double y, double w, double h) {
+  std::ostringstream s;
+  s.precision(17);
+  const double xs[] = {x, x + w, x + w, x, x};
+  const double ys[] = {y, y, y + h, y + h, y};
+  s << '[';
+  for (int i = 0; i < 5; ++i) s << (i ? ", [" : "[") << xs[i] << ", " << ys[i] << ']';
+  s << ']';
+  return s.str();
+}
+
+std::string feature(const std::string& id_member, const std::string& properties,
+                    const std::string& geometry) {
+  return R"({"type": "Feature", )" + id_member + R"("properties": )" + properties +
+         R"(, "geometry": )" + geometry + "}";
+}
+
+std::string polygon(const std::string& rings) {
+  return R"({"type": "Polygon", "coordinates": [)" + rings + "]}";
+}
+
+std::string collection(const std::vector<std::string>& features, const std::string& extra = "") {
+  std::string out = R"({"type": "FeatureCollection", )" + extra + R"("features": [)";
+  for (std::size_t i = 0; i < features.size(); ++i) out += (i ? ",\n" : "\n") + features[i];
+  return out + "\n]}\n";
+}
+
+base::Result<FootprintSet> read(const std::string& text, const GeoJsonOptions& options = {}) {
+  return read_geojson(text, "test.geojson", options);
+}
+
+// ---- Accepted input ---------------------------------------------------------------------------
+
+TEST(GeoJsonReader, FeatureCollectionWithHoleGivesNormalizedPolygon) {
+  // Outer ring clockwise and hole counter-clockwise (GeoJSON 2008 files do this): both flipped.
+  const std::string text = collection({feature(
+      R"("id": "courtyard", )", R"({"height": 12})",
+      polygon("[[0, 0], [0, 20], [30, 20], [30, 0], [0, 0]], [[10, 5], [20, 5], [20, 15], [10, "
+              "15], [10, 5]]"))});
+  const auto result = read(text);
+  ASSERT_TRUE(result.ok()) << headlines(result.diagnostics()).front();
+  EXPECT_TRUE(result.diagnostics().empty());
+  ASSERT_EQ(result->footprints.size(), 1u);
+  const Footprint& f = result->footprints[0];
+  EXPECT_EQ(f.id, "courtyard");
+  ASSERT_EQ(f.polygons.size(), 1u);
+  const kernel::Polygon& p = f.polygons[0];
+  EXPECT_EQ(p.outer.size(), 4u);  // closing position dropped
+  ASSERT_EQ(p.holes.size(), 1u);
+  EXPECT_GT(kernel::signed_area(p.outer), 0);
+  EXPECT_LT(kernel::signed_area(p.holes[0]), 0);
+  EXPECT_DOUBLE_EQ(kernel::area(p), 600.0 - 100.0);
+  EXPECT_EQ(result->origin, (kernel::Vec3{0, 0, 0}));
+  EXPECT_EQ(result->crs, "");
+}
+
+TEST(GeoJsonReader, MultiPolygonBecomesOneFootprintWithSeveralPolygons) {
+  const std::string text = feature("", R"({"name": "twin"})",
+                                   R"({"type": "MultiPolygon", "coordinates": [[)" +
+                                       square(0, 0, 10, 10) + "], [" + square(20, 0, 5, 4) + "]]}");
+  const auto result = read(text);
+  ASSERT_TRUE(result.ok());
+  ASSERT_EQ(result->footprints.size(), 1u);
+  EXPECT_EQ(result->footprints[0].id, "twin");  // from properties.name
+  ASSERT_EQ(result->footprints[0].polygons.size(), 2u);
+  EXPECT_DOUBLE_EQ(kernel::area(result->footprints[0].polygons[0]), 100.0);
+  EXPECT_DOUBLE_EQ(kernel::area(result->footprints[0].polygons[1]), 20.0);
+}
+
+TEST(GeoJsonReader, BareGeometriesAreFeatureZero) {
+  const auto poly = read(polygon(square(0, 0, 3, 2)));
+  ASSERT_TRUE(poly.ok());
+  ASSERT_EQ(poly->footprints.size(), 1u);
+  EXPECT_EQ(poly->footprints[0].id, "feature-0");
+  EXPECT_TRUE(poly->footprints[0].properties.empty());
+  const auto multi =
+      read(R"({"type": "MultiPolygon", "coordinates": [[)" + square(0, 0, 3, 2) + "]]}");
+  ASSERT_TRUE(multi.ok());
+  EXPECT_DOUBLE_EQ(kernel::area(multi->footprints[0].polygons[0]), 6.0);
+}
+
+TEST(GeoJsonReader, PropertiesBecomeTypedAttributes) {
+  const std::string text =
+      feature(R"("id": 17, )",
+              R"({"height": 9.5, "levels": 3, "big": 12345678901234, "listed": true, "name": "Hall",
+          "note": null, "tags": {"a": [1, 2.5, "x"], "b": null}, "list": [true, false]})",
+              polygon(square(0, 0, 10, 10)));
+  const auto result = read(text);
+  ASSERT_TRUE(result.ok());
+  const Footprint& f = result->footprints.at(0);
+  EXPECT_EQ(f.id, "17");  // numeric id as text
+  const shape::AttributeMap& a = f.properties;
+  EXPECT_EQ(std::get<double>(a.at("height")), 9.5);
+  EXPECT_EQ(std::get<double>(a.at("levels")), 3.0);
+  EXPECT_EQ(std::get<double>(a.at("big")), 12345678901234.0);
+  EXPECT_EQ(std::get<bool>(a.at("listed")), true);
+  EXPECT_EQ(std::get<std::string>(a.at("name")), "Hall");
+  EXPECT_TRUE(shape::is_null(a.at("note")));
+  EXPECT_EQ(std::get<std::string>(a.at("tags")), R"({"a":[1,2.5,"x"],"b":null})");
+  EXPECT_EQ(std::get<std::string>(a.at("list")), "[true,false]");
+  EXPECT_EQ(a.size(), 8u);
+}
+
+TEST(GeoJsonReader, IdsComeFromIdMemberThenPropertiesThenIndex) {
+  const std::string text = collection({
+      feature(R"("id": "m", )", R"({"id": "ignored", "name": "ignored"})",
+              polygon(square(0, 0, 1, 1))),
+      feature("", R"({"id": 42, "name": "ignored"})", polygon(square(2, 0, 1, 1))),
+      feature("", R"({"name": "Tower"})", polygon(square(4, 0, 1, 1))),
+      feature("", "null", polygon(square(6, 0, 1, 1))),
+  });
+  const auto result = read(text);
+  ASSERT_TRUE(result.ok());
+  std::vector<std::string> ids;
+  for (const Footprint& f : result->footprints) ids.push_back(f.id);
+  EXPECT_EQ(ids, (std::vector<std::string>{"m", "42", "Tower", "feature-3"}));
+  EXPECT_EQ(result->footprints[3].feature_index, 3u);
+}
+
+TEST(GeoJsonReader, DuplicateIdsAreRenamedInFileOrderAvoidingLaterIds) {
+  const std::string text = collection({
+      feature(R"("id": "b7", )", "{}", polygon(square(0, 0, 1, 1))),
+      feature(R"("id": "b7", )", "{}", polygon(square(2, 0, 1, 1))),
+      feature(R"("id": "b7-2", )", "{}", polygon(square(4, 0, 1, 1))),
+      feature(R"("id": "b7", )", "{}", polygon(square(6, 0, 1, 1))),
+  });
+  const auto result = read(text);
+  ASSERT_TRUE(result.ok());
+  std::vector<std::string> ids;
+  for (const Footprint& f : result->footprints) ids.push_back(f.id);
+  // "b7-2" is taken by feature 2 itself, so feature 1 becomes "b7-3" and feature 3 "b7-4".
+  EXPECT_EQ(ids, (std::vector<std::string>{"b7", "b7-3", "b7-2", "b7-4"}));
+  EXPECT_EQ(count_code(result.diagnostics(), "GEO019"), 2u);
+  EXPECT_EQ(headline(result.diagnostics()[0]),
+            R"(test.geojson:3:27: warning[GEO019]: feature 1 (id "b7"): id "b7" is already used )"
+            R"(by feature 0; renamed to "b7-3")");
+}
+
+TEST(GeoJsonReader, NonPolygonFeaturesAreSkippedWithWarningsAndIndicesKept) {
+  const std::string text = collection({
+      feature(R"("id": "road", )", "{}",
+              R"({"type": "LineString", "coordinates": [[0, 0], [5, 5]]})"),
+      feature(R"("id": "hall", )", "{}", polygon(square(0, 0, 8, 6))),
+      feature("", "{}", "null"),
+  });
+  const auto result = read(text);
+  ASSERT_TRUE(result.ok());
+  ASSERT_EQ(result->footprints.size(), 1u);
+  EXPECT_EQ(result->footprints[0].id, "hall");
+  EXPECT_EQ(result->footprints[0].feature_index, 1u);
+  EXPECT_EQ(headlines(result.diagnostics()),
+            (std::vector<std::string>{
+                "test.geojson:2:74: warning[GEO017]: feature 0 (id \"road\"): geometry type "
+                "LineString is not a polygon; skipped",
+                "test.geojson:4:51: warning[GEO017]: feature 2: geometry is null; skipped"}));
+}
+
+TEST(GeoJsonReader, LocatesProblemsInMinifiedText) {
+  // Everything on one line: the column alone must find the offending coordinate.
+  const std::string text =
+      R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},"geometry":)"
+      R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]]}},{"type":"Feature","id":"x",)"
+      R"("properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[1,true],[1,1],[0,0]]]}}]})";
+  const auto result = read(text);
+  ASSERT_FALSE(result.ok());
+  const std::size_t column = text.find("true") + 1;
+  EXPECT_EQ(headline(result.diagnostics().at(0)),
+            "test.geojson:1:" + std::to_string(column) +
+                R"(: error[GEO012]: feature 1 (id "x"): polygon ring 0 position 1 coordinate 1 is )"
+                "a boolean; expected a number");
+}
+
+// ---- Origin shift and round trip --------------------------------------------------------------
+
+TEST(GeoJsonReader, UtmCoordinatesShiftToWholeMeterOriginAndRoundTrip) {
+  // ETRS89 / UTM 32N values with sub-millimetre digits.
+  const std::vector<kernel::Vec2> world = {{500123.456789, 5400987.654321},
+                                           {500163.456789, 5400987.654321},
+                                           {500163.456789, 5401017.654321},
+                                           {500123.456789, 5401017.654321}};
+  std::string ring = "[";
+  for (std::size_t i = 0; i <= world.size(); ++i) {
+    std::ostringstream s;
+    s.precision(17);
+    s << (i ? ", [" : "[") << world[i % world.size()].x << ", " << world[i % world.size()].y << "]";
+    ring += s.str();
+  }
+  ring += "]";
+  const auto result = read(collection({feature("", "{}", polygon(ring))},
+                                      R"("crs": {"type": "name", "properties": {"name": )"
+                                      R"("urn:ogc:def:crs:EPSG::25832"}}, )"));
+  ASSERT_TRUE(result.ok());
+  EXPECT_TRUE(result.diagnostics().empty());
+  EXPECT_EQ(result->crs, "EPSG:25832");
+  // Centre (500143.456789, 5401002.654321) rounded down.
+  EXPECT_EQ(result->origin, (kernel::Vec3{500143, 5401002, 0}));
+  const kernel::Ring& local = result->footprints[0].polygons[0].outer;
+  ASSERT_EQ(local.size(), 4u);
+  for (const kernel::Vec2& v : local) {
+    EXPECT_LT(std::abs(v.x), 25.0);
+    EXPECT_LT(std::abs(v.y), 20.0);
+    const kernel::Vec2 back{v.x + result->origin.x, v.y + result->origin.y};
+    const auto match = std::find_if(world.begin(), world.end(), [&](kernel::Vec2 w) {
+      return std::abs(back.x - w.x) <= 1e-9 * std::abs(w.x) &&
+             std::abs(back.y - w.y) <= 1e-9 * std::abs(w.y);
+    });
+    ASSERT_NE(match, world.end()) << back.x << ", " << back.y;
+    // Sterbenz: world - origin is exact here, so the round trip is bit-exact.
+    EXPECT_EQ(back, *match);
+  }
+}
+
+TEST(GeoJsonReader, SmallCoordinatesKeepZeroOriginAndGivenOriginIsUsed) {
+  const std::string text = polygon(square(9000, -9000, 10, 10));
+  const auto near = read(text);
+  ASSERT_TRUE(near.ok());
+  EXPECT_EQ(near->origin, (kernel::Vec3{0, 0, 0}));
+  EXPECT_EQ(near->footprints[0].polygons[0].outer[0], (kernel::Vec2{9000, -9000}));
+
+  GeoJsonOptions options;
+  options.origin = kernel::Vec2{9000, -9010};
+  const auto shifted = read(text, options);
+  ASSERT_TRUE(shifted.ok());
+  EXPECT_EQ(shifted->origin, (kernel::Vec3{9000, -9010, 0}));
+  EXPECT_EQ(shifted->footprints[0].polygons[0].outer[0], (kernel::Vec2{0, 10}));
+}
+
+// ---- CRS ----------------------------------------------------------------------------------------
+
+std::string crs_of(const std::string& crs_member, std::vector<std::string>* warnings = nullptr) {
+  const auto result = read(collection({feature("", "{}", polygon(square(500000, 5400000, 10, 10)))},
+                                      R"("crs": )" + crs_member + ", "));
+  EXPECT_TRUE(result.ok());
+  if (warnings != nullptr) *warnings = headlines(result.diagnostics());
+  return result.ok() ? result->crs : "?";
+}
+
+TEST(GeoJsonReader, CrsNamesAreReducedToEpsgCodes) {
+  EXPECT_EQ(crs_of(R"({"type": "name", "properties": {"name": "EPSG:25833"}})"), "EPSG:25833");
+  EXPECT_EQ(crs_of(R"({"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG:6.6:3857"}})"),
+            "EPSG:3857");
+  EXPECT_EQ(crs_of(R"({"type": "name", "properties": {"name": )"
+                   R"("http://www.opengis.net/def/crs/EPSG/0/2056"}})"),
+            "EPSG:2056");
+  EXPECT_EQ(crs_of(R"({"type": "EPSG", "properties": {"code": 27700}})"), "EPSG:27700");
+  EXPECT_EQ(crs_of("null"), "");
+  std::vector<std::string> warnings;
+  EXPECT_EQ(crs_of(R"({"type": "name", "properties": {"name": "local grid"}})", &warnings), "");
+  EXPECT_EQ(warnings, (std::vector<std::string>{
+                          R"(test.geojson:1:38: warning[GEO007]: crs "local grid" names no EPSG )"
+                          "code; ignored"}));
+  EXPECT_EQ(crs_of(R"({"type": "name", "properties": {"name": "urn:ogc:def:crs:OGC:1.3:CRS84"}})",
+                   &warnings),
+            "");
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("is geographic (degrees)"), std::string::npos);
+}
+
+// ---- Policies ----------------------------------------------------------------------------------
+
+TEST(GeoJsonReader, SkipInvalidDropsBadFeaturesAsWarnings) {
+  const std::string text = collection({
+      feature(R"("id": "good", )", "{}", polygon(square(0, 0, 5, 5))),
+      feature(R"("id": "bowtie", )", "{}", polygon("[[0, 0], [10, 10], [10, 0], [0, 10], [0, 0]]")),
+      feature(R"("id": "short", )", "{}", polygon("[[0, 0], [1, 0], [0, 0]]")),
+  });
+  EXPECT_FALSE(read(text).ok());
+  GeoJsonOptions options;
+  options.skip_invalid = true;
+  const auto result = read(text, options);
+  ASSERT_TRUE(result.ok());
+  ASSERT_EQ(result->footprints.size(), 1u);
+  EXPECT_EQ(result->footprints[0].id, "good");
+  EXPECT_FALSE(base::has_errors(result.diagnostics()));
+  EXPECT_EQ(count_code(result.diagnostics(), "GEO022"), 1u);
+  EXPECT_EQ(count_code(result.diagnostics(), "GEO010"), 1u);
+  for (const Diagnostic& d : result.diagnostics()) {
+    ASSERT_EQ(d.notes.size(), 1u) << headline(d);
+    EXPECT_EQ(d.notes[0], "feature skipped (GeoJsonOptions::skip_invalid)");
+  }
+}
+
+TEST(GeoJsonReader, ErrorsAreCappedAndWarningsCounted) {
+  std::vector<std::string> bad;
+  for (int i = 0; i < 30; ++i)
+    bad.push_back(feature("", "{}", polygon("[[0, 0], [1, 0], [0, 0]]")));
+  GeoJsonOptions options;
+  options.max_errors = 5;
+  const auto failed = read(collection(bad), options);
+  ASSERT_FALSE(failed.ok());
+  ASSERT_EQ(failed.diagnostics().size(), 5u);
+  EXPECT_EQ(failed.diagnostics().back().notes.back(),
+            "too many errors (GeoJsonOptions::max_errors = 5); stopped reading");
+
+  std::vector<std::string> open;
+  for (int i = 0; i < 30; ++i) {
+    open.push_back(feature("", "{}", polygon("[[0, 0], [1, 0], [1, 1], [0, 1]]")));
+  }
+  options.max_warnings = 10;
+  const auto warned = read(collection(open), options);
+  ASSERT_TRUE(warned.ok());
+  EXPECT_EQ(warned->footprints.size(), 30u);
+  ASSERT_EQ(warned.diagnostics().size(), 11u);
+  EXPECT_EQ(headline(warned.diagnostics().back()),
+            "test.geojson: warning: 20 more warnings not listed (GeoJsonOptions::max_warnings = "
+            "10)");
+}
+
+TEST(GeoJsonReader, DepthLimitIsAnOption) {
+  const std::string multi =
+      R"({"type": "Feature", "properties": {}, "geometry": {"type": "MultiPolygon", )"
+      R"("coordinates": [[)" +
+      square(0, 0, 1, 1) + "]]}}";
+  GeoJsonOptions options;
+  options.max_depth = 6;  // Feature, geometry, coordinates, polygon, ring, position
+  EXPECT_TRUE(read(multi, options).ok());
+  options.max_depth = 5;
+  const auto result = read(multi, options);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.diagnostics()[0].code, "GEO003");
+}
+
+TEST(GeoJsonReader, CoordinateLimitIsAnOption) {
+  GeoJsonOptions options;
+  options.max_abs_coordinate = 1000;
+  const auto result = read(polygon(square(995, 0, 10, 10)), options);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(headline(result.diagnostics()[0]),
+            "test.geojson:1:49: error[GEO013]: feature 0: polygon ring 0 position 1 coordinate "
+            "1005 is beyond +-1000 m (GeoJsonOptions::max_abs_coordinate)");
+}
+
+TEST(GeoJsonReader, ParseErrorGivesLineAndColumn) {
+  const auto result = read("{\"type\": \"Polygon\",\n \"coordinates\": [[[0, 0] [1, 0]]]}");
+  ASSERT_FALSE(result.ok());
+  ASSERT_EQ(result.diagnostics().size(), 1u);
+  EXPECT_EQ(headline(result.diagnostics()[0]),
+            "test.geojson:2:26: error[GEO001]: syntax error while parsing array - unexpected "
+            "'['; expected ']'");
+}
+
+// ---- The bad-input catalog ---------------------------------------------------------------------
+
+struct CatalogCase {
+  const char* file;
+  bool ok;            // true: read succeeds with warnings only
+  const char* first;  // the first error line (or, when ok, the first warning line)
+};
+
+const CatalogCase kCatalog[] = {
+    {"deep_nesting.geojson", false,
+     "deep_nesting.geojson:1:65: error[GEO003]: arrays and objects nest deeper than 64 levels "
+     "(GeoJsonOptions::max_depth)"},
+    {"deep_nesting_closed.geojson", false,
+     "deep_nesting_closed.geojson:1:103: error[GEO003]: arrays and objects nest deeper than 64 "
+     "levels (GeoJsonOptions::max_depth)"},
+    {"duplicate_ids.geojson", true,
+     "duplicate_ids.geojson:40:13: warning[GEO019]: feature 1 (id \"b7\"): id \"b7\" is already "
+     "used by feature 0; renamed to \"b7-2\""},
+    {"duplicate_vertices.geojson", true,
+     "duplicate_vertices.geojson:22:13: warning[GEO025]: feature 0 (id \"dv\"): polygon: outer "
+     "ring: vertex 2 repeats vertex 1 (removed) (and 1 more like it)"},
+    {"empty.geojson", false,
+     "empty.geojson: error[GEO002]: file is empty; expected a GeoJSON object"},
+    {"empty_collection.geojson", false,
+     "empty_collection.geojson: error[GEO006]: no polygon features"},
+    {"empty_polygon.geojson", false, "empty_polygon.geojson: error[GEO006]: no polygon features"},
+    {"feature_wrong_type.geojson", false,
+     "feature_wrong_type.geojson:39:15: error[GEO015]: feature 1: \"type\" is \"Featur\"; expected "
+     "\"Feature\""},
+    {"features_not_array.geojson", false,
+     "features_not_array.geojson:3:15: error[GEO005]: \"features\" is an object; expected an "
+     "array"},
+    {"geographic_crs.geojson", true,
+     "geographic_crs.geojson:3:10: warning[GEO007]: crs EPSG:4326 is geographic (degrees); "
+     "expected projected meters"},
+    {"hole_crosses_shell.geojson", false,
+     "hole_crosses_shell.geojson:40:13: error[GEO023]: feature 0 (id \"hx\"): polygon: hole 1 "
+     "crosses outer ring: edge 1-0 of hole 1 and edge 1-2 of outer ring cross at (10, 2)"},
+    {"hole_outside.geojson", false,
+     "hole_outside.geojson:35:11: error[GEO024]: feature 0 (id \"h\"): polygon: hole 1 lies "
+     "outside the outer ring"},
+    {"huge_coordinates.geojson", false,
+     "huge_coordinates.geojson:19:15: error[GEO013]: feature 0 (id \"far\"): polygon ring 0 "
+     "position 1 coordinate 1e+300 is beyond +-100000000 m (GeoJsonOptions::max_abs_coordinate)"},
+    {"infinity_literal.geojson", false,
+     "infinity_literal.geojson:2:74: error[GEO001]: NaN and Infinity are not valid JSON numbers"},
+    {"invalid_utf8.geojson", false,
+     "invalid_utf8.geojson:1:32: error[GEO001]: syntax error while parsing value - invalid string: "
+     "ill-formed UTF-8 byte; last read: '\"caf\\xe9\"'"},
+    {"lonlat_degrees.geojson", true,
+     "lonlat_degrees.geojson:12:24: warning[GEO008]: coordinates look like longitude/latitude "
+     "degrees; expected projected meters (no reprojection is done)"},
+    {"missing_coordinates.geojson", false,
+     "missing_coordinates.geojson:44:19: error[GEO014]: feature 1 (id \"nc\"): Polygon has no "
+     "\"coordinates\""},
+    {"nan_literal.geojson", false,
+     "nan_literal.geojson:5:64: error[GEO001]: NaN and Infinity are not valid JSON numbers"},
+    {"number_overflow.geojson", false,
+     "number_overflow.geojson:2:28: error[GEO001]: number overflow parsing '1e400'"},
+    {"position_too_short.geojson", false,
+     "position_too_short.geojson:18:13: error[GEO014]: feature 0 (id \"p\"): polygon ring 0 "
+     "position 1 is an array of 1; expected [x, y] or [x, y, z]"},
+    {"self_intersection.geojson", false,
+     "self_intersection.geojson:48:13: error[GEO022]: feature 1 (id \"bowtie\"): polygon: outer "
+     "ring: edges 0-1 and 2-3 cross at (5, 5)"},
+    {"string_numbers.geojson", false,
+     "string_numbers.geojson:53:15: error[GEO012]: feature 1 (id \"s1\"): polygon ring 0 position "
+     "1 coordinate 0 is a string (\"10.0\"); expected a number"},
+    {"too_few_points.geojson", false,
+     "too_few_points.geojson:47:11: error[GEO010]: feature 1 (id \"b12\"): polygon ring 0 has 3 "
+     "positions; a closed ring needs at least 4"},
+    {"top_level_array.geojson", false,
+     "top_level_array.geojson:1:1: error[GEO004]: the top-level value is an array; expected a "
+     "FeatureCollection, a Feature, a Polygon or a MultiPolygon"},
+    {"top_level_topology.geojson", false,
+     "top_level_topology.geojson:2:11: error[GEO004]: the top-level type is \"Topology\"; expected "
+     "a FeatureCollection, a Feature, a Polygon or a MultiPolygon"},
+    {"trailing_comma.geojson", false,
+     "trailing_comma.geojson:6:3: error[GEO001]: trailing comma before ']' is not allowed in JSON"},
+    {"truncated.geojson", false,
+     "truncated.geojson:42:14: error[GEO001]: syntax error while parsing object key - invalid "
+     "string: missing closing quote; last read: '\"heig'; expected string literal"},
+    {"unclosed_ring.geojson", true,
+     "unclosed_ring.geojson:13:11: warning[GEO011]: feature 0 (id \"open\"): polygon ring 0 is not "
+     "closed (its last position differs from the first); closed it"},
+    {"unknown_geometry_type.geojson", false,
+     "unknown_geometry_type.geojson:45:17: error[GEO016]: feature 1 (id \"typo\"): geometry type "
+     "\"Polygn\" is not a GeoJSON geometry type"},
+    {"unterminated_string.geojson", false,
+     "unterminated_string.geojson:1:74: error[GEO001]: syntax error while parsing value - invalid "
+     "string: missing closing quote; last read: '\"abc'"},
+    {"utm_bowtie.geojson", false,
+     "utm_bowtie.geojson:54:13: error[GEO022]: feature 1 (id \"u2\"): polygon: outer ring: edges "
+     "0-1 and 2-3 cross at (-10, -12)"},
+    {"whitespace_only.geojson", false,
+     "whitespace_only.geojson: error[GEO002]: file is empty; expected a GeoJSON object"},
+    {"wrong_geometry_type.geojson", false,
+     "wrong_geometry_type.geojson: error[GEO006]: no polygon features"},
+    {"z_coordinates.geojson", true,
+     "z_coordinates.geojson:17:15: warning[GEO009]: feature 0 (id \"z\"): polygon ring 0 position "
+     "0 has 3 numbers; only x and y are used (footprints lie at z = 0; reported once)"},
+    {"zero_area.geojson", false,
+     "zero_area.geojson:13:11: error[GEO021]: feature 0 (id \"flat\"): polygon: outer ring: zero "
+     "area (its positions lie on one line)"},
+};
+
+TEST(GeoJsonCatalog, EveryFileGivesItsExactFirstLine) {
+  const std::filesystem::path folder = std::filesystem::path(INSULA_TEST_DATA) / "bad";
+  std::set<std::string> listed;
+  for (const CatalogCase& c : kCatalog) {
+    SCOPED_TRACE(c.file);
+    listed.insert(c.file);
+    const std::string text = read_text(folder / c.file);
+    const auto result = read_geojson(text, c.file);
+    ASSERT_EQ(result.ok(), c.ok);
+    const auto& diagnostics = result.diagnostics();
+    ASSERT_FALSE(diagnostics.empty());
+    const auto first =
+        std::find_if(diagnostics.begin(), diagnostics.end(),
+                     [&](const Diagnostic& d) { return c.ok || d.severity == Severity::kError; });
+    ASSERT_NE(first, diagnostics.end());
+    EXPECT_EQ(headline(*first), c.first);
+    EXPECT_EQ(base::has_errors(diagnostics), !c.ok);
+  }
+  // Every file in the folder has a row, so a new case cannot go untested.
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() == ".geojson") {
+      EXPECT_EQ(listed.count(entry.path().filename().string()), 1u) << entry.path();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace insula::io
