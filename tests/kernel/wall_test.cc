@@ -424,3 +424,50 @@ TEST(Wall, RandomFacadesAreClosedSolids) {
 
 }  // namespace
 }  // namespace insula::kernel
+
+namespace insula::kernel {
+namespace {
+
+// Random star-shaped outlines with random, often conflicting openings: the skip policy keeps the
+// valid ones and the result is always a closed solid whose genus is the number of openings cut.
+TEST(Wall, RandomOutlinesWithSkippedOpenings) {
+  std::mt19937 rng(777);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::size_t total_cut = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    Ring outline;
+    const int n = 3 + static_cast<int>(unit(rng) * 14);
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * std::numbers::pi * (i + 0.8 * unit(rng)) / n;
+      const double radius = 4 + 4 * unit(rng);
+      outline.push_back({10 + radius * std::cos(angle), 8 + radius * std::sin(angle)});
+    }
+    WallSpec spec = wall(outline, {});
+    spec.policy = OpeningPolicy::kSkip;
+    for (int k = 0; k < 40; ++k) {
+      Opening o = window(2 + 16 * unit(rng), 1 + 14 * unit(rng), 0.2 + 1.5 * unit(rng),
+                         0.3 + 2 * unit(rng));
+      if (unit(rng) < 0.5) {
+        o.arch_rise = std::min(o.width / 2, o.height / 2) * unit(rng);
+        o.arch_segments = 1 + static_cast<int>(unit(rng) * 10);
+      }
+      spec.openings.push_back(o);
+    }
+    const WallResult r = build_wall(spec);
+    SCOPED_TRACE(trial);
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_EQ(r.cut.size() + r.issues.size(), spec.openings.size());
+    expect_solid(r, static_cast<int>(r.cut.size()));
+    double area = 0;
+    for (std::size_t i = 0; i < outline.size(); ++i) {
+      area += cross(outline[i], outline[(i + 1) % outline.size()]) / 2;
+    }
+    for (std::size_t i : r.cut) area -= opening_area(spec.openings[i]);
+    EXPECT_NEAR(volume(r.mesh), area * 0.3, 1e-9);
+    total_cut += r.cut.size();
+  }
+  EXPECT_GT(total_cut, 200U * 5);  // the property is exercised on many holes, not on empty walls
+}
+
+}  // namespace
+}  // namespace insula::kernel
