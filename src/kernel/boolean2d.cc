@@ -1,0 +1,271 @@
+// Clipper 1 wrapper (boolean2d.h). Clipper is confined to this file: it throws on coordinates
+// outside its range, so every call is guarded by an explicit range check and a catch, and nothing
+// crosses the module boundary but values.
+#include "kernel/boolean2d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <polyclipping/clipper.hpp>
+#include <tuple>
+
+namespace insula::kernel {
+namespace {
+
+using ClipperLib::IntPoint;
+using ClipperLib::Path;
+using ClipperLib::Paths;
+using ClipperLib::PolyNode;
+using ClipperLib::PolyTree;
+
+// The integer frame shared by all operands of one operation.
+struct Frame {
+  Vec2 origin;
+  BooleanStatus status = BooleanStatus::kOk;
+};
+
+Frame make_frame(const std::vector<const std::vector<Polygon>*>& inputs, double margin) {
+  Frame frame;
+  Bounds2 box;
+  for (const std::vector<Polygon>* input : inputs) {
+    for (const Polygon& p : *input) {
+      const Bounds2 b = bounds(p);
+      if (b.empty()) continue;
+      box.add(b.min);
+      box.add(b.max);
+    }
+  }
+  if (!std::isfinite(margin)) frame.status = BooleanStatus::kNonFinite;
+  if (box.empty()) return frame;
+  if (!std::isfinite(box.min.x) || !std::isfinite(box.min.y) || !std::isfinite(box.max.x) ||
+      !std::isfinite(box.max.y)) {
+    frame.status = BooleanStatus::kNonFinite;
+    return frame;
+  }
+  // NaN never wins a min/max comparison in Bounds2::add, so look for it explicitly.
+  for (const std::vector<Polygon>* input : inputs)
+    for (const Polygon& p : *input) {
+      auto bad = [](const Ring& r) {
+        return std::any_of(r.begin(), r.end(),
+                           [](Vec2 v) { return !std::isfinite(v.x) || !std::isfinite(v.y); });
+      };
+      if (bad(p.outer) || std::any_of(p.holes.begin(), p.holes.end(), bad))
+        frame.status = BooleanStatus::kNonFinite;
+    }
+  const double extent =
+      std::max(box.max.x - box.min.x, box.max.y - box.min.y) + 2 * std::abs(margin);
+  if (frame.status == BooleanStatus::kOk && !(extent <= kBooleanMaxExtent))
+    frame.status = BooleanStatus::kRangeTooLarge;
+  frame.origin = (box.min + box.max) * 0.5;
+  return frame;
+}
+
+IntPoint to_int(Vec2 p, Vec2 origin) {
+  return IntPoint(std::llround((p.x - origin.x) * kBooleanScale),
+                  std::llround((p.y - origin.y) * kBooleanScale));
+}
+
+Vec2 from_int(const IntPoint& q, Vec2 origin) {
+  return origin + Vec2{double(q.X) / kBooleanScale, double(q.Y) / kBooleanScale};
+}
+
+void add_ring(const Ring& ring, Vec2 origin, Paths& out) {
+  Path path;
+  path.reserve(ring.size());
+  for (const Vec2& v : ring) {
+    const IntPoint q = to_int(v, origin);
+    if (path.empty() || !(path.back() == q)) path.push_back(q);
+  }
+  while (path.size() > 1 && path.front() == path.back()) path.pop_back();
+  if (path.size() >= 3) out.push_back(std::move(path));
+}
+
+// Normalised rings, so that under the non-zero rule holes cancel their outer ring.
+Paths to_paths(const std::vector<Polygon>& polygons, Vec2 origin) {
+  Paths paths;
+  for (Polygon p : polygons) {
+    normalize(p);
+    add_ring(p.outer, origin, paths);
+    for (const Ring& hole : p.holes) add_ring(hole, origin, paths);
+  }
+  return paths;
+}
+
+// Is b within half a grid unit of the line through a and c? Clipper keeps such vertices where
+// input edges met (the ends of a shared wall after a union); they carry no shape.
+bool collinear(const IntPoint& a, const IntPoint& b, const IntPoint& c) {
+  const double ux = double(c.X - a.X), uy = double(c.Y - a.Y);
+  const double vx = double(b.X - a.X), vy = double(b.Y - a.Y);
+  const double base = std::hypot(ux, uy);
+  if (base == 0) return true;
+  return std::abs(ux * vy - uy * vx) <= 0.5 * base && ux * vx + uy * vy >= 0 &&
+         vx * vx + vy * vy <= base * base;
+}
+
+Ring to_ring(const Path& path, Vec2 origin) {
+  Path kept;
+  for (const IntPoint& q : path) {
+    while (kept.size() >= 2 && collinear(kept[kept.size() - 2], kept.back(), q)) kept.pop_back();
+    kept.push_back(q);
+  }
+  // Close the loop: the last and first kept vertices may be straight too.
+  std::size_t first = 0;
+  bool changed = true;
+  while (changed && kept.size() - first >= 3) {
+    changed = false;
+    if (collinear(kept[kept.size() - 2], kept.back(), kept[first])) {
+      kept.pop_back();
+      changed = true;
+    } else if (collinear(kept.back(), kept[first], kept[first + 1])) {
+      ++first;
+      changed = true;
+    }
+  }
+  Ring ring;
+  ring.reserve(kept.size() - first);
+  for (std::size_t i = first; i < kept.size(); ++i) ring.push_back(from_int(kept[i], origin));
+  return ring;
+}
+
+// Outer nodes become polygons, their children holes, and the holes' children (islands inside
+// holes) are outer nodes again.
+void collect(const PolyNode& outer, Vec2 origin, std::vector<Polygon>& out) {
+  Polygon polygon;
+  polygon.outer = to_ring(outer.Contour, origin);
+  for (const PolyNode* hole : outer.Childs) {
+    polygon.holes.push_back(to_ring(hole->Contour, origin));
+    for (const PolyNode* island : hole->Childs) collect(*island, origin, out);
+  }
+  normalize(polygon);
+  out.push_back(std::move(polygon));
+}
+
+Vec2 lowest_vertex(const Polygon& p) {
+  Vec2 best = p.outer.empty() ? Vec2{} : p.outer.front();
+  for (const Vec2& v : p.outer)
+    if (std::tie(v.y, v.x) < std::tie(best.y, best.x)) best = v;
+  return best;
+}
+
+std::vector<Polygon> from_tree(const PolyTree& tree, Vec2 origin) {
+  std::vector<Polygon> out;
+  for (const PolyNode* node : tree.Childs) collect(*node, origin, out);
+  std::vector<std::pair<double, Polygon>> keyed;
+  for (Polygon& p : out) keyed.emplace_back(area(p), std::move(p));
+  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+    if (a.first != b.first) return a.first > b.first;
+    const Vec2 la = lowest_vertex(a.second), lb = lowest_vertex(b.second);
+    return std::tie(la.y, la.x) < std::tie(lb.y, lb.x);
+  });
+  out.clear();
+  for (auto& [a, p] : keyed) out.push_back(std::move(p));
+  return out;
+}
+
+// Runs one Clipper boolean; the PolyTree keeps holes with their outer ring.
+bool execute(ClipperLib::ClipType type, const Paths& a, const Paths& b, PolyTree& tree) {
+  ClipperLib::Clipper clipper;
+  clipper.StrictlySimple(true);
+  clipper.AddPaths(a, ClipperLib::ptSubject, true);
+  clipper.AddPaths(b, ClipperLib::ptClip, true);
+  return clipper.Execute(type, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+}
+
+BooleanResult run(ClipperLib::ClipType type, const std::vector<Polygon>& a,
+                  const std::vector<Polygon>& b) {
+  BooleanResult result;
+  const Frame frame = make_frame({&a, &b}, 0);
+  result.status = frame.status;
+  if (!result.ok()) return result;
+  try {
+    PolyTree tree;
+    if (!execute(type, to_paths(a, frame.origin), to_paths(b, frame.origin), tree)) {
+      result.status = BooleanStatus::kClipperFailed;
+      return result;
+    }
+    result.polygons = from_tree(tree, frame.origin);
+  } catch (...) {  // ClipperLib::clipperException or std::bad_alloc: reported, never propagated
+    result.polygons.clear();
+    result.status = BooleanStatus::kClipperFailed;
+  }
+  return result;
+}
+
+ClipperLib::JoinType clipper_join(JoinType join) {
+  switch (join) {
+    case JoinType::kRound:
+      return ClipperLib::jtRound;
+    case JoinType::kSquare:
+      return ClipperLib::jtSquare;
+    case JoinType::kMiter:
+      break;
+  }
+  return ClipperLib::jtMiter;
+}
+
+}  // namespace
+
+std::string_view to_string(BooleanStatus status) {
+  switch (status) {
+    case BooleanStatus::kOk:
+      return "ok";
+    case BooleanStatus::kNonFinite:
+      return "a coordinate or parameter is NaN or infinite";
+    case BooleanStatus::kRangeTooLarge:
+      return "the input spans more than 1e12 m; it cannot be represented at 1e-6 m resolution";
+    case BooleanStatus::kClipperFailed:
+      return "the polygon clipper failed";
+  }
+  return "unknown";
+}
+
+BooleanResult unite(const std::vector<Polygon>& a, const std::vector<Polygon>& b) {
+  return run(ClipperLib::ctUnion, a, b);
+}
+
+BooleanResult intersect(const std::vector<Polygon>& a, const std::vector<Polygon>& b) {
+  return run(ClipperLib::ctIntersection, a, b);
+}
+
+BooleanResult subtract(const std::vector<Polygon>& a, const std::vector<Polygon>& b) {
+  return run(ClipperLib::ctDifference, a, b);
+}
+
+BooleanResult exclusive_or(const std::vector<Polygon>& a, const std::vector<Polygon>& b) {
+  return run(ClipperLib::ctXor, a, b);
+}
+
+std::vector<Polygon> union_all(const std::vector<Polygon>& polygons) {
+  return run(ClipperLib::ctUnion, polygons, {}).polygons;
+}
+
+BooleanResult offset(const std::vector<Polygon>& polygons, double delta, JoinType join,
+                     double miter_limit, double arc_tolerance) {
+  BooleanResult result;
+  const Frame frame = make_frame({&polygons}, delta);
+  result.status = frame.status;
+  if (!std::isfinite(miter_limit) || !std::isfinite(arc_tolerance))
+    result.status = BooleanStatus::kNonFinite;
+  if (!result.ok()) return result;
+  try {
+    // Unite first: offsetting overlapping polygons one by one would shrink each on its own.
+    PolyTree united;
+    if (!execute(ClipperLib::ctUnion, to_paths(polygons, frame.origin), {}, united)) {
+      result.status = BooleanStatus::kClipperFailed;
+      return result;
+    }
+    Paths paths;
+    ClipperLib::PolyTreeToPaths(united, paths);
+    ClipperLib::ClipperOffset offsetter(std::max(miter_limit, 1.0),
+                                        std::max(arc_tolerance, 1e-6) * kBooleanScale);
+    offsetter.AddPaths(paths, clipper_join(join), ClipperLib::etClosedPolygon);
+    PolyTree tree;
+    offsetter.Execute(tree, delta * kBooleanScale);
+    result.polygons = from_tree(tree, frame.origin);
+  } catch (...) {
+    result.polygons.clear();
+    result.status = BooleanStatus::kClipperFailed;
+  }
+  return result;
+}
+
+}  // namespace insula::kernel
