@@ -1,0 +1,219 @@
+#include "io/render_raster.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace insula::io::raster {
+namespace {
+
+constexpr float kShadowStrength = 0.72F;  // ground in shadow keeps this fraction of its light
+constexpr float kShadowAlpha = 0.28F;     // opacity of a shadow on a transparent background
+
+// Screen coordinates in 24.8 fixed point. Edge functions are then exact integers, so two triangles
+// sharing an edge agree on every pixel centre and inclusive tests leave no cracks between them.
+constexpr std::int64_t kSubpixel = 256;
+constexpr float kMaxCoordinate = 4.0e6F;  // pixels; keeps edge products inside int64
+
+struct Fixed {
+  std::int64_t x;
+  std::int64_t y;
+};
+
+Fixed to_fixed(const ScreenPoint& p) {
+  return {std::llround(p.x * kSubpixel), std::llround(p.y * kSubpixel)};
+}
+
+// Twice the signed area of (a, b, p); positive when p lies to the right of a->b on screen
+// (y down), i.e. inside a triangle wound clockwise on screen.
+std::int64_t edge(Fixed a, Fixed b, Fixed p) {
+  return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+bool usable(const ScreenPoint& p) {
+  return std::abs(p.x) < kMaxCoordinate && std::abs(p.y) < kMaxCoordinate && std::isfinite(p.z);
+}
+
+// Pixel range [lo, hi] whose centres (i + 0.5) can lie within [min, max].
+std::array<int, 2> pixel_span(float min, float max, int size) {
+  const int lo = std::max(0, static_cast<int>(std::ceil(min - 0.5F)));
+  const int hi = std::min(size - 1, static_cast<int>(std::floor(max - 0.5F)));
+  return {lo, hi};
+}
+
+// Standard sRGB transfer function (IEC 61966-2-1), tabulated for speed.
+class SrgbTable {
+ public:
+  SrgbTable() {
+    for (int i = 0; i < kSize; ++i) {
+      const double c = static_cast<double>(i) / (kSize - 1);
+      const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+      table_[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(std::lround(s * 255.0));
+    }
+  }
+  std::uint8_t operator()(float linear) const {
+    const float c = std::clamp(linear, 0.0F, 1.0F);
+    return table_[static_cast<std::size_t>(std::lround(c * (kSize - 1)))];
+  }
+
+ private:
+  static constexpr int kSize = 4096;
+  std::array<std::uint8_t, kSize> table_{};
+};
+
+}  // namespace
+
+Framebuffer::Framebuffer(int width, int height)
+    : width_(width),
+      height_(height),
+      depth_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), kEmpty),
+      shade_(depth_.size(), 0),
+      ink_(depth_.size(), Ink::kNone),
+      shadow_(depth_.size(), 0) {}
+
+std::uint32_t Framebuffer::add_shade(Rgb colour) {
+  shades_.push_back(colour);
+  return static_cast<std::uint32_t>(shades_.size());
+}
+
+template <typename Visit>
+void Framebuffer::scan(const ScreenPoint& a, const ScreenPoint& b0, const ScreenPoint& c0,
+                       Visit&& visit) const {
+  if (!usable(a) || !usable(b0) || !usable(c0)) return;
+  Fixed fa = to_fixed(a), fb = to_fixed(b0), fc = to_fixed(c0);
+  std::int64_t area = edge(fa, fb, fc);
+  if (area == 0) return;
+  const bool flip = area < 0;
+  if (flip) std::swap(fb, fc), area = -area;
+  const ScreenPoint& b = flip ? c0 : b0;
+  const ScreenPoint& c = flip ? b0 : c0;
+  const auto [x0, x1] = pixel_span(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), width_);
+  const auto [y0, y1] = pixel_span(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), height_);
+  // Edge functions are affine in x: step them along each row instead of re-evaluating.
+  const std::int64_t d0 = -(fc.y - fb.y) * kSubpixel, d1 = -(fa.y - fc.y) * kSubpixel,
+                     d2 = -(fb.y - fa.y) * kSubpixel;
+  const float inv_area = 1.0F / static_cast<float>(area);
+  for (int y = y0; y <= y1; ++y) {
+    const Fixed p{x0 * kSubpixel + kSubpixel / 2, y * kSubpixel + kSubpixel / 2};
+    std::int64_t w0 = edge(fb, fc, p), w1 = edge(fc, fa, p), w2 = edge(fa, fb, p);
+    std::size_t i = index(x0, y);
+    for (int x = x0; x <= x1; ++x, ++i, w0 += d0, w1 += d1, w2 += d2) {
+      if ((w0 | w1 | w2) < 0) continue;
+      const float z = (static_cast<float>(w0) * a.z + static_cast<float>(w1) * b.z +
+                       static_cast<float>(w2) * c.z) *
+                      inv_area;
+      visit(i, z);
+    }
+  }
+}
+
+void Framebuffer::fill_triangle(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c,
+                                std::uint32_t shade) {
+  scan(a, b, c, [&](std::size_t i, float z) {
+    if (z < depth_[i]) {
+      depth_[i] = z;
+      shade_[i] = shade;
+    }
+  });
+}
+
+void Framebuffer::fill_shadow(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c) {
+  scan(a, b, c, [&](std::size_t i, float) { shadow_[i] = 1; });
+}
+
+bool Framebuffer::visible(float x, float y, float depth) const {
+  const int cx = static_cast<int>(std::floor(x));
+  const int cy = static_cast<int>(std::floor(y));
+  float farthest = -kEmpty;
+  for (int yy = std::max(0, cy - 1); yy <= std::min(height_ - 1, cy + 1); ++yy) {
+    for (int xx = std::max(0, cx - 1); xx <= std::min(width_ - 1, cx + 1); ++xx) {
+      farthest = std::max(farthest, depth_[index(xx, yy)]);
+    }
+  }
+  return depth <= farthest;
+}
+
+void Framebuffer::stamp(float x, float y, float radius, Ink ink) {
+  const auto [x0, x1] = pixel_span(x - radius, x + radius, width_);
+  const auto [y0, y1] = pixel_span(y - radius, y + radius, height_);
+  const float r2 = radius * radius;
+  for (int py = y0; py <= y1; ++py) {
+    const float dy = static_cast<float>(py) + 0.5F - y;
+    for (int px = x0; px <= x1; ++px) {
+      const float dx = static_cast<float>(px) + 0.5F - x;
+      if (dx * dx + dy * dy > r2) continue;
+      Ink& cell = ink_[index(px, py)];
+      cell = std::max(cell, ink);
+    }
+  }
+}
+
+void Framebuffer::draw_stroke(const Stroke& stroke, float radius, float bias) {
+  const float dx = stroke.b.x - stroke.a.x;
+  const float dy = stroke.b.y - stroke.a.y;
+  const float length = std::hypot(dx, dy);
+  if (!std::isfinite(length)) return;
+  // Two samples per pixel along the centre line keep the stamped discs overlapping.
+  const int steps = std::max(1, static_cast<int>(std::ceil(length * 2.0F)));
+  const float margin = radius + 1.0F;
+  for (int s = 0; s <= steps; ++s) {
+    const float t = static_cast<float>(s) / static_cast<float>(steps);
+    const float x = stroke.a.x + t * dx;
+    const float y = stroke.a.y + t * dy;
+    if (x < -margin || y < -margin || x > static_cast<float>(width_) + margin ||
+        y > static_cast<float>(height_) + margin) {
+      continue;
+    }
+    const float z = stroke.a.z + t * (stroke.b.z - stroke.a.z);
+    if (visible(x, y, z - bias)) stamp(x, y, radius, stroke.ink);
+  }
+}
+
+Image Framebuffer::resolve(int factor, const RenderOptions& options) const {
+  static const SrgbTable srgb;
+  Image image;
+  image.width = width_ / factor;
+  image.height = height_ / factor;
+  image.pixels.resize(static_cast<std::size_t>(image.width) *
+                      static_cast<std::size_t>(image.height) * 4);
+  const Rgb& background = options.background;
+  const Rgb& outline = options.outline_color;
+  const bool transparent = options.transparent_background;
+  const float samples = static_cast<float>(factor * factor);
+  std::uint8_t* out = image.pixels.data();
+  for (int oy = 0; oy < image.height; ++oy) {
+    for (int ox = 0; ox < image.width; ++ox, out += 4) {
+      // Premultiplied accumulation so a transparent background blends correctly.
+      float r = 0, g = 0, b = 0, alpha = 0;
+      for (int sy = 0; sy < factor; ++sy) {
+        std::size_t i = index(ox * factor, oy * factor + sy);
+        for (int sx = 0; sx < factor; ++sx, ++i) {
+          const Rgb* colour = &background;
+          float a = transparent ? 0.0F : 1.0F;
+          float light = 1.0F;
+          if (ink_[i] != Ink::kNone) {
+            colour = &outline;
+            a = 1.0F;
+          } else if (shade_[i] != 0) {
+            colour = &shades_[shade_[i] - 1];
+            a = 1.0F;
+          } else if (shadow_[i] != 0) {
+            light = transparent ? 0.0F : kShadowStrength;
+            a = transparent ? kShadowAlpha : 1.0F;
+          }
+          r += (*colour)[0] * light * a;
+          g += (*colour)[1] * light * a;
+          b += (*colour)[2] * light * a;
+          alpha += a;
+        }
+      }
+      const float inv = alpha > 0 ? 1.0F / alpha : 0.0F;
+      out[0] = srgb(r * inv);
+      out[1] = srgb(g * inv);
+      out[2] = srgb(b * inv);
+      out[3] = static_cast<std::uint8_t>(std::lround(alpha / samples * 255.0F));
+    }
+  }
+  return image;
+}
+
+}  // namespace insula::io::raster

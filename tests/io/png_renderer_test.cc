@@ -1,0 +1,405 @@
+#include "io/png_renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <string>
+#include <vector>
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+#pragma GCC diagnostic ignored "-Wcast-align"
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wpedantic"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wunused-but-set-variable"
+#define STBI_ONLY_PNG
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
+#pragma GCC diagnostic pop
+
+namespace insula::io {
+namespace {
+
+using kernel::MaterialId;
+using kernel::Mesh;
+using kernel::SemanticClass;
+using kernel::Vec2;
+using Rgba = std::array<std::uint8_t, 4>;
+
+// A closed prism over a counter-clockwise ring: ground face, top face tagged as roof, walls.
+Mesh prism(const std::vector<Vec2>& ring, double z0, double z1, MaterialId wall = 0,
+           MaterialId roof = 0, SemanticClass wall_class = SemanticClass::kWallSurface) {
+  Mesh mesh;
+  const auto n = static_cast<std::uint32_t>(ring.size());
+  for (Vec2 p : ring) mesh.add_vertex({p.x, p.y, z0});
+  for (Vec2 p : ring) mesh.add_vertex({p.x, p.y, z1});
+  std::vector<std::uint32_t> bottom, top;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    bottom.push_back(n - 1 - i);
+    top.push_back(n + i);
+  }
+  mesh.add_face(bottom, {SemanticClass::kGroundSurface, 0, 0});
+  mesh.add_face(top, {SemanticClass::kRoofSurface, roof, 1});
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = (i + 1) % n;
+    mesh.add_face({i, j, n + j, n + i}, {wall_class, wall, 2 + i});
+  }
+  return mesh;
+}
+
+std::vector<Vec2> rect(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+void add_part(shape::Scene& scene, Mesh mesh,
+              shape::PartKind kind = shape::PartKind::kBuildingPart) {
+  if (scene.buildings.empty()) scene.buildings.push_back({"b0", {}, {}});
+  scene.buildings.back().parts.push_back({"part", kind, {}, std::move(mesh)});
+}
+
+shape::Scene unit_cube() {
+  shape::Scene scene;
+  add_part(scene, prism(rect(0, 0, 1, 1), 0, 1));
+  return scene;
+}
+
+// Vivid materials so tests can tell surfaces apart by colour: 1 red, 2 green, 3 blue, 4 grey.
+shape::Scene with_materials() {
+  shape::Scene scene;
+  scene.materials.push_back({"red", {0.9F, 0.0F, 0.0F, 1.0F}});
+  scene.materials.push_back({"green", {0.0F, 0.8F, 0.0F, 1.0F}});
+  scene.materials.push_back({"blue", {0.0F, 0.0F, 0.9F, 1.0F}});
+  scene.materials.push_back({"grey", {0.6F, 0.6F, 0.6F, 1.0F}});
+  return scene;
+}
+
+bool is_red(Rgba p) {
+  return p[0] > 90 && p[1] < 50 && p[2] < 50;
+}
+bool is_green(Rgba p) {
+  return p[1] > 90 && p[0] < 50 && p[2] < 50;
+}
+bool is_blue(Rgba p) {
+  return p[2] > 90 && p[0] < 50 && p[1] < 50;
+}
+bool is_ink(Rgba p) {
+  return p[0] < 60 && p[1] < 60 && p[2] < 60;
+}
+
+template <typename Predicate>
+int count(const Image& image, Predicate predicate) {
+  int n = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) n += predicate(image.pixel(x, y)) ? 1 : 0;
+  }
+  return n;
+}
+
+Rgba background_pixel(const RenderOptions& options) {
+  shape::Scene empty;
+  RenderOptions small = options;
+  small.width = small.height = 4;
+  return render(empty, small).pixel(0, 0);
+}
+
+// Options for an exact plan view: camera from the south looking straight down, so image x is
+// world x and image up is world y (docs/renderer.md, "Camera").
+RenderOptions plan_view(int size) {
+  RenderOptions options;
+  options.width = options.height = size;
+  options.azimuth_deg = 270;
+  options.elevation_deg = 90;
+  options.shadows = false;
+  return options;
+}
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(PngRenderer, CubeCornersShowTheBackground) {
+  const RenderOptions options;
+  const Image image = render(unit_cube(), options);
+  ASSERT_EQ(image.width, 1024);
+  ASSERT_EQ(image.height, 768);
+  const Rgba background = background_pixel(options);
+  EXPECT_EQ(background[3], 255);
+  for (auto [x, y] : {std::array{0, 0}, {1023, 0}, {0, 767}, {1023, 767}}) {
+    EXPECT_EQ(image.pixel(x, y), background) << x << "," << y;
+  }
+}
+
+TEST(PngRenderer, CubeCoversAPlausibleShareOfTheImage) {
+  RenderOptions options;
+  options.shadows = false;
+  const Image image = render(unit_cube(), options);
+  const Rgba background = background_pixel(options);
+  const double share = count(image, [&](Rgba p) { return p != background; }) / (1024.0 * 768.0);
+  // A cube seen from 35 degrees fitted to 90 % of the height covers about half of a 4:3 frame.
+  EXPECT_GT(share, 0.30);
+  EXPECT_LT(share, 0.70);
+}
+
+TEST(PngRenderer, CubeShowsThreeDistinctShades) {
+  RenderOptions options;
+  options.shadows = false;
+  options.outlines = false;
+  const Image image = render(unit_cube(), options);
+  const Rgba background = background_pixel(options);
+  std::map<Rgba, int> histogram;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      if (image.pixel(x, y) != background) ++histogram[image.pixel(x, y)];
+    }
+  }
+  std::vector<std::pair<int, Rgba>> by_count;
+  for (const auto& [colour, n] : histogram) by_count.push_back({n, colour});
+  std::sort(by_count.rbegin(), by_count.rend());
+  ASSERT_GE(by_count.size(), 3U);
+  // Three flat faces: three colours that each fill a large area, pairwise clearly different.
+  for (int i = 0; i < 3; ++i) EXPECT_GT(by_count[static_cast<std::size_t>(i)].first, 40000);
+  for (int i = 0; i < 3; ++i) {
+    for (int j = i + 1; j < 3; ++j) {
+      const Rgba a = by_count[static_cast<std::size_t>(i)].second;
+      const Rgba b = by_count[static_cast<std::size_t>(j)].second;
+      int difference = 0;
+      for (int k = 0; k < 3; ++k)
+        difference += std::abs(a[static_cast<std::size_t>(k)] - b[static_cast<std::size_t>(k)]);
+      EXPECT_GT(difference, 30) << i << " vs " << j;
+    }
+  }
+  // Exactly one of them is the terracotta roof (red dominant), the others plaster walls.
+  int reddish = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Rgba c = by_count[static_cast<std::size_t>(i)].second;
+    reddish += c[0] > c[1] + 40 ? 1 : 0;
+  }
+  EXPECT_EQ(reddish, 1);
+}
+
+TEST(PngRenderer, OutlinesAppearOnlyWhenAskedFor) {
+  RenderOptions options;
+  options.shadows = false;
+  // Darker than the darkest shaded face of the cube: outline pixels, anti-aliased or not.
+  auto dark = [](Rgba p) { return p[0] < 110 && p[1] < 110 && p[2] < 110; };
+  const int with = count(render(unit_cube(), options), dark);
+  options.outlines = false;
+  const int without = count(render(unit_cube(), options), dark);
+  // Nine visible edges of about 300 pixels each, one pixel wide.
+  EXPECT_GT(with, 1500);
+  EXPECT_EQ(without, 0);
+}
+
+TEST(PngRenderer, RenderingIsDeterministic) {
+  const std::string a = encode_png(render(unit_cube()));
+  const std::string b = encode_png(render(unit_cube()));
+  ASSERT_FALSE(a.empty());
+  EXPECT_EQ(a, b);
+}
+
+TEST(PngRenderer, WrittenFileDecodesToTheRenderedPixels) {
+  const auto path = std::filesystem::temp_directory_path() / "insula_png_renderer_cube.png";
+  std::filesystem::remove(path);
+  RenderOptions options;
+  options.width = 320;
+  options.height = 200;
+  ASSERT_EQ(write_png(unit_cube(), path, options), "");
+  const std::string bytes = read_bytes(path);
+  int width = 0, height = 0, channels = 0;
+  stbi_uc* decoded =
+      stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                            static_cast<int>(bytes.size()), &width, &height, &channels, 4);
+  ASSERT_NE(decoded, nullptr);
+  EXPECT_EQ(width, 320);
+  EXPECT_EQ(height, 200);
+  EXPECT_EQ(channels, 4);
+  const Image image = render(unit_cube(), options);
+  EXPECT_TRUE(std::equal(image.pixels.begin(), image.pixels.end(), decoded));
+  stbi_image_free(decoded);
+  // Same scene, same options: the same bytes on disk.
+  ASSERT_EQ(write_png(unit_cube(), path, options), "");
+  EXPECT_EQ(read_bytes(path), bytes);
+  std::filesystem::remove(path);
+}
+
+TEST(PngRenderer, FailedWriteReturnsAMessageAndLeavesNoFile) {
+  const auto dir = std::filesystem::temp_directory_path() / "insula_no_such_dir_for_png";
+  std::filesystem::remove_all(dir);
+  const auto path = dir / "cube.png";
+  const std::string error = write_png(unit_cube(), path);
+  EXPECT_NE(error.find(path.string()), std::string::npos) << error;
+  EXPECT_FALSE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+TEST(PngRenderer, BadOptionsAreRejectedWithTheirName) {
+  RenderOptions options;
+  options.width = 0;
+  EXPECT_EQ(validate(options), "width must be in 1..8192");
+  EXPECT_TRUE(render(unit_cube(), options).empty());
+  const auto path = std::filesystem::temp_directory_path() / "insula_bad_options.png";
+  const std::string error = write_png(unit_cube(), path, options);
+  EXPECT_EQ(error, path.string() + ": cannot render: width must be in 1..8192");
+  EXPECT_FALSE(std::filesystem::exists(path));
+  options = {};
+  options.supersample = 9;
+  EXPECT_EQ(validate(options), "supersample must be in 1..4");
+  options = {};
+  options.elevation_deg = std::nan("");
+  EXPECT_EQ(validate(options), "elevation must be a finite number of degrees");
+  EXPECT_EQ(validate(RenderOptions{}), "");
+}
+
+TEST(PngRenderer, EmptySceneIsAllBackground) {
+  const shape::Scene empty;
+  RenderOptions options;
+  options.width = 64;
+  options.height = 48;
+  const Image image = render(empty, options);
+  const Rgba background = image.pixel(0, 0);
+  EXPECT_EQ(count(image, [&](Rgba p) { return p == background; }), 64 * 48);
+}
+
+TEST(PngRenderer, TransparentBackgroundHasZeroAlpha) {
+  RenderOptions options;
+  options.transparent_background = true;
+  options.shadows = false;
+  const Image image = render(unit_cube(), options);
+  EXPECT_EQ(image.pixel(0, 0)[3], 0);
+  EXPECT_EQ(image.pixel(512, 384)[3], 255);
+}
+
+TEST(PngRenderer, NonFiniteFacesAreSkippedWithoutCrashing) {
+  shape::Scene scene = unit_cube();
+  Mesh bad;
+  const double nan = std::nan("");
+  bad.add_polygon(std::vector<kernel::Vec3>{{0, 0, 5}, {nan, 1, 5}, {1, 1, 5}},
+                  {SemanticClass::kRoofSurface, 0, 0});
+  add_part(scene, std::move(bad));
+  RenderOptions options;
+  options.shadows = false;
+  const Image image = render(scene, options);
+  // The NaN part neither crashes nor changes the fit: the picture equals the plain cube's.
+  EXPECT_EQ(image.pixels, render(unit_cube(), options).pixels);
+}
+
+// Plan view of two overlapping boxes: the taller one hides the lower one's top and its edges.
+TEST(PngRenderer, NearerSurfacesAndTheirEdgesHideFartherOnes) {
+  for (bool tall_first : {false, true}) {
+    shape::Scene scene = with_materials();
+    Mesh low = prism(rect(0, 0, 2, 2), 0, 1, 4, 1);   // red roof
+    Mesh tall = prism(rect(1, 1, 3, 3), 0, 2, 4, 3);  // blue roof
+    if (tall_first) std::swap(low, tall);
+    add_part(scene, std::move(low));
+    add_part(scene, std::move(tall));
+    RenderOptions options = plan_view(600);
+    options.outline_width = 3;  // so the ink fully covers the pixels along the edge
+    const Image image = render(scene, options);
+    // 3 m span in 540 pixels: 180 px/m, world (x, y) at pixel (30 + 180 x, 570 - 180 y).
+    auto at = [&](double x, double y) {
+      return image.pixel(static_cast<int>(30 + 180 * x), static_cast<int>(570 - 180 * y));
+    };
+    EXPECT_TRUE(is_red(at(0.5, 0.5)));
+    EXPECT_TRUE(is_blue(at(1.5, 1.5)));  // overlap: the taller roof is nearer
+    EXPECT_TRUE(is_blue(at(2.5, 2.5)));
+    // The low box's roof edge x = 2 is visible for y < 1 and hidden under the tall roof above.
+    EXPECT_TRUE(is_ink(at(2.0, 0.5)));
+    EXPECT_TRUE(is_blue(at(2.0, 1.5)));
+  }
+}
+
+// A concave (L-shaped) roof must not cover its notch: a fan from (10, 4) would.
+TEST(PngRenderer, ConcaveFacesAreTriangulatedCorrectly) {
+  shape::Scene scene = with_materials();
+  add_part(scene, prism({{10, 4}, {4, 4}, {4, 10}, {0, 10}, {0, 0}, {10, 0}}, 0, 3, 4, 1));
+  const Image image = render(scene, plan_view(1000));
+  // 10 m span in 900 pixels: world (x, y) at pixel (50 + 90 x, 950 - 90 y).
+  auto at = [&](double x, double y) {
+    return image.pixel(static_cast<int>(50 + 90 * x), static_cast<int>(950 - 90 * y));
+  };
+  EXPECT_TRUE(is_red(at(2, 2)));
+  EXPECT_TRUE(is_red(at(2, 8)));
+  EXPECT_TRUE(is_red(at(8, 2)));
+  EXPECT_EQ(at(7, 7), background_pixel(plan_view(1000)));  // the notch
+  // Roof pixels: the L's 64 m2 of the 100 m2 square, at 90 px/m.
+  const int red = count(image, is_red);
+  EXPECT_NEAR(red, 64 * 90 * 90, 64 * 90 * 90 * 0.03);
+}
+
+// A box house (roof red, outer walls grey) with green inner walls.
+shape::Scene box_with_inner_walls() {
+  shape::Scene scene = with_materials();
+  add_part(scene, prism(rect(0, 0, 10, 8), 0, 3, 4, 1));
+  add_part(scene, prism(rect(4.9, 0.1, 5.1, 7.9), 0, 3, 2, 2, SemanticClass::kInteriorWallSurface),
+           shape::PartKind::kOther);
+  add_part(scene, prism(rect(0.1, 3.9, 4.9, 4.1), 0, 3, 2, 2, SemanticClass::kInteriorWallSurface),
+           shape::PartKind::kOther);
+  return scene;
+}
+
+TEST(PngRenderer, CutawayRemovesTheRoofAndShowsInnerWalls) {
+  const shape::Scene scene = box_with_inner_walls();
+  RenderOptions options;
+  options.shadows = false;
+  const Image closed = render(scene, options);
+  EXPECT_GT(count(closed, is_red), 10000);
+  EXPECT_EQ(count(closed, is_green), 0);  // inner walls hidden inside the box
+  options.cutaway = true;
+  options.cut_height = 1.5;
+  const Image open = render(scene, options);
+  EXPECT_EQ(count(open, is_red), 0);
+  EXPECT_GT(count(open, is_green), 1000);
+  // Cutting above the roof changes nothing.
+  options.cut_height = 3.5;
+  EXPECT_GT(count(render(scene, options), is_red), 10000);
+}
+
+TEST(PngRenderer, CutawayDrawsSectionLinesAlongTheCut) {
+  const shape::Scene scene = box_with_inner_walls();
+  RenderOptions options;
+  options.shadows = false;
+  options.outlines = false;
+  options.cutaway = true;
+  // With outlines off, every dark pixel is a section line where walls meet the cut.
+  EXPECT_GT(count(render(scene, options), is_ink), 3000);
+  options.cut_height = 3.5;
+  EXPECT_EQ(count(render(scene, options), is_ink), 0);
+}
+
+TEST(PngRenderer, AutomaticCutHeight) {
+  // No storeys, no floors: eaves less 1.5 m, but at least min(1.2 m, half the height) up.
+  shape::Scene box = unit_cube();
+  EXPECT_DOUBLE_EQ(auto_cut_height(box.buildings[0]), 0.5);
+  shape::Scene tower;
+  add_part(tower, prism(rect(0, 0, 5, 5), 0, 30));
+  EXPECT_DOUBLE_EQ(auto_cut_height(tower.buildings[0]), 28.5);
+  // Storey parts: 1.2 m above the floor of the highest one.
+  shape::Scene storeys;
+  add_part(storeys, prism(rect(0, 0, 5, 5), 0, 3), shape::PartKind::kStorey);
+  add_part(storeys, prism(rect(0, 0, 5, 5), 3, 6), shape::PartKind::kStorey);
+  add_part(storeys, prism(rect(-1, -1, 6, 6), 6, 7));  // roof slab, not a storey
+  EXPECT_DOUBLE_EQ(auto_cut_height(storeys.buildings[0]), 4.2);
+  // Floor surfaces: 1.2 m above the highest floor below the eaves.
+  shape::Scene floors;
+  Mesh shell = prism(rect(0, 0, 8, 8), 0, 9);
+  const auto floor =
+      shell.add_polygon(std::vector<kernel::Vec3>{{0, 0, 6}, {8, 0, 6}, {8, 8, 6}, {0, 8, 6}}, {});
+  shell.tag(floor).semantic = SemanticClass::kFloorSurface;
+  add_part(floors, std::move(shell));
+  EXPECT_DOUBLE_EQ(auto_cut_height(floors.buildings[0]), 7.2);
+  EXPECT_TRUE(std::isnan(auto_cut_height(shape::Building{})));
+}
+
+}  // namespace
+}  // namespace insula::io
