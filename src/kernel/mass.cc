@@ -1,0 +1,118 @@
+#include "kernel/mass.h"
+
+#include <cmath>
+
+#include "kernel/roof_detail.h"
+#include "kernel/skeleton.h"
+
+namespace insula::kernel {
+namespace {
+
+RoofSpec roof_spec(const MassSpec& spec) {
+  RoofSpec r;
+  r.type = spec.roof;
+  r.pitch_deg = spec.pitch_deg;
+  r.overhang = spec.overhang;
+  r.mansard_pitch_deg = spec.mansard_pitch_deg;
+  r.mansard_break_height = spec.mansard_break_height;
+  r.shed_edge = spec.shed_edge;
+  r.fascia = spec.fascia;
+  return r;
+}
+
+// The footprint as the roof needs it: simple, outer counter-clockwise, holes clockwise. Cheap when
+// the input already is; otherwise repaired (duplicates, collinear vertices, orientation).
+bool prepare(const Polygon& in, Polygon& out, std::string& message) {
+  out = in;
+  normalize(out);
+  if (is_simple_polygon(out)) return true;
+  RepairResult repaired = repair(in);
+  if (!repaired.ok || !is_simple_polygon(repaired.polygon)) {
+    message = "footprint is not a valid polygon";
+    for (const PolygonIssue& issue : repaired.issues) {
+      if (!issue.repaired) {
+        message += ": " + issue.message;
+        break;
+      }
+    }
+    return false;
+  }
+  out = std::move(repaired.polygon);
+  return true;
+}
+
+bool walls_above_ground(const Mesh& mesh, const RoofBuild& build, double ground_z) {
+  for (std::uint32_t v : build.wall_top) {
+    if (!(mesh.position(v).z > ground_z + 1e-6)) return false;
+  }
+  return true;
+}
+
+void add_walls(const roof_detail::Contour& c, std::uint32_t first_ground, const RoofBuild& build,
+               Mesh& mesh, std::uint32_t face_id) {
+  std::vector<std::uint32_t> loop;
+  for (std::uint32_t e = 0; e < c.size(); ++e) {
+    const std::uint32_t j = c.next(e);
+    loop.assign({first_ground + e, first_ground + j, build.wall_top[j]});
+    loop.insert(loop.end(), build.cap_indices.begin() + build.cap_offsets[e],
+                build.cap_indices.begin() + build.cap_offsets[e + 1]);
+    loop.push_back(build.wall_top[e]);
+    mesh.add_face(loop, {SemanticClass::kWallSurface, 0, face_id++});
+  }
+}
+
+MassResult try_build(const Polygon& footprint, const MassSpec& spec, const RoofSpec& roof) {
+  MassResult result;
+  const roof_detail::Contour c = roof_detail::Contour::from(footprint);
+  Mesh& mesh = result.mesh;
+  const auto first_ground = static_cast<std::uint32_t>(mesh.vertex_count());
+  for (const Vec2& p : c.points) mesh.add_vertex(lift(p, spec.ground_z));
+  std::vector<std::uint32_t> ground(c.size());
+  for (std::uint32_t k = 0; k < c.size(); ++k) ground[k] = first_ground + k;
+  if (!roof_detail::add_region(c, ground, {SemanticClass::kGroundSurface, 0, 0}, true, mesh)) {
+    result.message = "ground face could not be triangulated";
+    result.mesh = Mesh();
+    return result;
+  }
+  const RoofBuild build = add_roof(footprint, roof, spec.ground_z + spec.wall_height, mesh, 1);
+  result.roof = build.built;
+  result.message = build.message;
+  if (build.status == RoofStatus::kFailed) {
+    result.mesh = Mesh();
+    return result;
+  }
+  if (!walls_above_ground(mesh, build, spec.ground_z)) {
+    result.message = "walls would end below the ground";
+    result.mesh = Mesh();
+    return result;
+  }
+  add_walls(c, first_ground, build, mesh, build.next_face_id);
+  result.status = build.status == RoofStatus::kOk ? MassStatus::kOk : MassStatus::kFallback;
+  return result;
+}
+
+}  // namespace
+
+MassResult build_mass(const Polygon& footprint, const MassSpec& spec) {
+  MassResult failed;
+  if (!(spec.wall_height > 0 && spec.wall_height < 1e4) || !std::isfinite(spec.ground_z)) {
+    failed.message = "wall height must be in (0, 10000) m and ground height finite";
+    return failed;
+  }
+  Polygon clean;
+  if (!prepare(footprint, clean, failed.message)) return failed;
+  const RoofSpec roof = roof_spec(spec);
+  MassResult result = try_build(clean, spec, roof);
+  if (result.status != MassStatus::kFailed || roof.overhang <= 0) return result;
+  // A large overhang on a steep roof can bring the soffit down to the ground: drop the overhang.
+  RoofSpec flush = roof;
+  flush.overhang = 0;
+  MassResult retry = try_build(clean, spec, flush);
+  if (retry.status == MassStatus::kFailed) return result;
+  retry.status = MassStatus::kFallback;
+  retry.message = result.message + "; built without overhang" +
+                  (retry.message.empty() ? "" : "; " + retry.message);
+  return retry;
+}
+
+}  // namespace insula::kernel

@@ -1,0 +1,76 @@
+// Private to roof*.cc and mass.cc: the roof plan shared by planning (roof.cc), emission
+// (roof_emit.cc) and the mansard split (roof_mansard.cc). Not part of the kernel's API.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "kernel/mesh.h"
+#include "kernel/polygon.h"
+#include "kernel/roof.h"
+#include "kernel/skeleton.h"
+
+namespace insula::kernel::roof_detail {
+
+// A polygon's rings flattened in ring order (outer, then holes), so vertex k of the footprint, of
+// its eave polygon and of its skeleton's contour are the same k.
+struct Contour {
+  std::vector<Vec2> points;
+  std::vector<std::uint32_t> ring_starts;  // first vertex of each ring, then the total
+
+  static Contour from(const Polygon& polygon);
+  Polygon polygon() const;
+  std::uint32_t size() const { return static_cast<std::uint32_t>(points.size()); }
+  std::uint32_t next(std::uint32_t k) const;
+  std::uint32_t prev(std::uint32_t k) const;
+};
+
+// A skeleton face turned into a vertical gable: its apex node moves to `apex` on the edge's line.
+struct GableEnd {
+  std::uint32_t edge = 0;
+  std::uint32_t node = 0;  // skeleton vertex id of the triangle's apex
+  Vec2 apex;
+  double time = 0;  // distance of `apex` from the neighbouring edges' lines
+};
+
+struct RoofPlan {
+  RoofType type = RoofType::kFlat;
+  RoofStatus status = RoofStatus::kOk;
+  std::string message;
+  Contour footprint;
+  Contour eave;                 // footprint offset by `offsets` (== footprint without overhang)
+  std::vector<double> offsets;  // per edge, meters
+  double overhang = 0;          // the overhang actually used
+  double slope = 0;             // tan(pitch): hip, gable, shed, pyramid
+  double eave_slope = 0;        // slope of the faces at the eave (mansard: the lower slope)
+  double upper_slope = 0;       // mansard top
+  double break_time = 0;        // mansard break, as skeleton time of the eave polygon
+  double fascia = 0;            // flat and shed with overhang
+  std::uint32_t shed_edge = 0;  // footprint edge the shed rises from
+  Vec2 apex;                    // pyramid
+  double apex_time = 0;
+  std::optional<Skeleton> skeleton;  // of the eave polygon
+  std::vector<GableEnd> gables;
+};
+
+bool plan_roof(const Polygon& footprint, const RoofSpec& spec, RoofPlan& plan);
+// Signed distance from the shed's low edge line, positive inside.
+double shed_distance(const RoofPlan& plan, Vec2 p);
+// Writes the planned roof into `mesh` (never fails once planned).
+void emit_roof(const RoofPlan& plan, double eave_z, Mesh& mesh, RoofBuild& build);
+
+// Mansard split of the skeleton faces at plan.break_time (roof_mansard.cc). `eave_ids` are the
+// mesh ids of the eave polygon's vertices at height z_eave.
+void emit_mansard(const RoofPlan& plan, double z_eave, double floor_z,
+                  std::span<const std::uint32_t> eave_ids, Mesh& mesh, std::uint32_t& face_id);
+
+// Adds the region bounded by `contour` over existing vertex ids `ids` (contour order) as faces:
+// one face without holes, triangles (k2d's triangulate) with holes; `downward` reverses them.
+// Returns false if the triangulation fails.
+bool add_region(const Contour& contour, std::span<const std::uint32_t> ids, FaceTag tag,
+                bool downward, Mesh& mesh);
+
+}  // namespace insula::kernel::roof_detail

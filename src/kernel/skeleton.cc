@@ -1,0 +1,438 @@
+// CGAL translation unit #1 (design.md: CGAL stays in at most two translation units). Wraps
+// create_interior_straight_skeleton_2 with Exact_predicates_inexact_constructions_kernel and
+// copies its half-edge structure into the plain Skeleton of skeleton.h. Strictly convex polygons
+// take a direct wavefront simulation instead (ConvexSkeleton below), which is exact for them and
+// far cheaper than CGAL's general builder.
+#include "kernel/skeleton.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/create_straight_skeleton_from_polygon_with_holes_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+
+namespace insula::kernel {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CgalPolygon = CGAL::Polygon_2<K>;
+using CgalPolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
+using CgalSkeleton = CGAL::Straight_skeleton_2<K>;
+
+constexpr std::uint32_t kUnset = 0xffffffffU;
+
+// Exact bit pattern of a point: CGAL's inexact constructions copy input doubles unchanged, so a
+// contour vertex is found again by its bits.
+struct PointKey {
+  std::uint64_t x = 0;
+  std::uint64_t y = 0;
+  friend bool operator==(PointKey, PointKey) = default;
+};
+struct PointKeyHash {
+  std::size_t operator()(PointKey k) const {
+    return k.x * 0x9E3779B97F4A7C15ULL ^ (k.y + 0x7F4A7C15);
+  }
+};
+PointKey key_of(double x, double y) {
+  PointKey k;
+  x += 0.0;  // -0.0 and 0.0 compare equal; give them one key
+  y += 0.0;
+  std::memcpy(&k.x, &x, sizeof x);
+  std::memcpy(&k.y, &y, sizeof y);
+  return k;
+}
+
+// Proper or touching intersection of closed segments ab and cd.
+bool segments_meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double d1 = cross(b - a, c - a);
+  const double d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c);
+  const double d4 = cross(d - c, b - c);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
+    return true;
+  }
+  auto on_segment = [](Vec2 p, Vec2 q, Vec2 r) {  // r collinear with pq: is it within pq?
+    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
+           r.y <= std::max(p.y, q.y);
+  };
+  return (d1 == 0 && on_segment(a, b, c)) || (d2 == 0 && on_segment(a, b, d)) ||
+         (d3 == 0 && on_segment(c, d, a)) || (d4 == 0 && on_segment(c, d, b));
+}
+
+struct Segment {
+  Vec2 a, b;
+  std::uint32_t ring, index, ring_size;
+};
+
+bool rings_valid(const Polygon& polygon) {
+  auto ring_ok = [](const Ring& ring) {
+    if (ring.size() < 3) return false;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Vec2 p = ring[i];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
+      if (p == ring[(i + 1) % ring.size()]) return false;
+    }
+    return true;
+  };
+  if (!ring_ok(polygon.outer) || signed_area(polygon.outer) <= 0) return false;
+  for (const Ring& hole : polygon.holes) {
+    if (!ring_ok(hole) || signed_area(hole) >= 0) return false;
+  }
+  return true;
+}
+
+bool boxes_apart(const Segment& s, const Segment& t) {
+  return std::max(s.a.x, s.b.x) < std::min(t.a.x, t.b.x) ||
+         std::max(t.a.x, t.b.x) < std::min(s.a.x, s.b.x) ||
+         std::max(s.a.y, s.b.y) < std::min(t.a.y, t.b.y) ||
+         std::max(t.a.y, t.b.y) < std::min(s.a.y, s.b.y);
+}
+
+bool segments_valid(const std::vector<Segment>& segments) {
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const Segment& s = segments[i];
+    for (std::size_t j = i + 1; j < segments.size(); ++j) {
+      const Segment& t = segments[j];
+      if (boxes_apart(s, t)) continue;
+      const bool t_after_s = s.ring == t.ring && t.index == (s.index + 1) % s.ring_size;
+      const bool s_after_t = s.ring == t.ring && s.index == (t.index + 1) % s.ring_size;
+      if (!t_after_s && !s_after_t) {
+        if (segments_meet(s.a, s.b, t.a, t.b)) return false;
+        continue;
+      }
+      // Consecutive edges share one vertex; they must not fold back onto each other.
+      const Vec2 shared = t_after_s ? s.b : s.a;
+      const Vec2 u = (t_after_s ? s.a : s.b) - shared;
+      const Vec2 v = (t_after_s ? t.b : t.a) - shared;
+      if (cross(u, v) == 0 && dot(u, v) > 0) return false;
+    }
+  }
+  return true;
+}
+
+CgalPolygon to_cgal(const Ring& ring) {
+  CgalPolygon out;
+  for (const Vec2& p : ring) out.push_back(K::Point_2(p.x, p.y));
+  return out;
+}
+
+void add_contour(const Polygon& polygon, Skeleton& out) {
+  std::uint32_t index = 0;
+  auto add_ring = [&](const Ring& ring) {
+    out.ring_starts.push_back(index);
+    for (const Vec2& p : ring) {
+      out.vertices.push_back({p, 0.0});
+      ++index;
+    }
+  };
+  add_ring(polygon.outer);
+  for (const Ring& hole : polygon.holes) add_ring(hole);
+  out.ring_starts.push_back(index);
+  out.contour_count = index;
+}
+
+bool store_faces(const std::vector<std::vector<std::uint32_t>>& loops, Skeleton& out) {
+  out.face_offsets.assign(1, 0);
+  for (const auto& loop : loops) {
+    if (loop.size() < 3) return false;
+    out.face_indices.insert(out.face_indices.end(), loop.begin(), loop.end());
+    out.face_offsets.push_back(static_cast<std::uint32_t>(out.face_indices.size()));
+  }
+  return true;
+}
+
+// Maps each CGAL vertex to a Skeleton vertex id: contour vertices to their ring-order index,
+// skeleton nodes to new ids in order of discovery.
+class Converter {
+ public:
+  explicit Converter(Skeleton& out) : out_(out) {
+    for (std::uint32_t k = 0; k < out_.contour_count; ++k) {
+      const Vec2 p = out_.vertices[k].position;
+      by_position_.emplace(key_of(p.x, p.y), k);
+    }
+  }
+
+  bool convert(const CgalSkeleton& ss) {
+    int max_id = 0;
+    for (auto v = ss.vertices_begin(); v != ss.vertices_end(); ++v)
+      max_id = std::max(max_id, v->id());
+    ids_.assign(static_cast<std::size_t>(max_id) + 1, kUnset);
+    std::vector<std::vector<std::uint32_t>> loops(out_.contour_count);
+    std::size_t faces = 0;
+    for (auto f = ss.faces_begin(); f != ss.faces_end(); ++f) {
+      if (!convert_face(f->halfedge(), loops)) return false;
+      ++faces;
+    }
+    return faces == out_.contour_count && store_faces(loops, out_);
+  }
+
+ private:
+  // The contour edge index whose start is at s and end at t, or kUnset.
+  std::uint32_t find_edge(K::Point_2 s, K::Point_2 t) const {
+    const auto range = by_position_.equal_range(key_of(s.x(), s.y()));
+    for (auto it = range.first; it != range.second; ++it) {
+      const Vec2 next = out_.vertices[out_.next_contour(it->second)].position;
+      if (next.x == t.x() && next.y == t.y()) return it->second;
+    }
+    return kUnset;
+  }
+
+  template <typename Halfedge>
+  bool convert_face(Halfedge start, std::vector<std::vector<std::uint32_t>>& loops) {
+    Halfedge contour = start;
+    do {
+      if (!contour->is_bisector()) break;
+      contour = contour->next();
+    } while (contour != start);
+    if (contour->is_bisector()) return false;
+    const std::uint32_t edge =
+        find_edge(contour->opposite()->vertex()->point(), contour->vertex()->point());
+    if (edge == kUnset || !loops[edge].empty()) return false;
+    ids_[static_cast<std::size_t>(contour->opposite()->vertex()->id())] = edge;
+    ids_[static_cast<std::size_t>(contour->vertex()->id())] = out_.next_contour(edge);
+    Halfedge h = contour;
+    std::size_t guard = 0;
+    do {
+      loops[edge].push_back(id_of(h->opposite()->vertex()));  // the source of h
+      h = h->next();
+      if (++guard > 1000000) return false;
+    } while (h != contour);
+    return true;
+  }
+
+  template <typename VertexHandle>
+  std::uint32_t id_of(VertexHandle v) {
+    std::uint32_t& id = ids_[static_cast<std::size_t>(v->id())];
+    if (id != kUnset) return id;
+    const double time = v->time();
+    id = static_cast<std::uint32_t>(out_.vertices.size());
+    out_.vertices.push_back({{v->point().x(), v->point().y()}, std::isfinite(time) ? time : -1.0});
+    return id;
+  }
+
+  Skeleton& out_;
+  std::unordered_multimap<PointKey, std::uint32_t, PointKeyHash> by_position_;
+  std::vector<std::uint32_t> ids_;
+};
+
+// Straight skeleton of a strictly convex polygon by direct wavefront simulation: only edge events
+// occur (Aichholzer et al. 1995), so each step collapses the edge that vanishes first. O(n^2); for
+// the small convex footprints that dominate city data it avoids CGAL's exact fallbacks, which the
+// simultaneous events of rectangles trigger.
+class ConvexSkeleton {
+ public:
+  explicit ConvexSkeleton(Skeleton& out) : out_(out) {}
+
+  bool run() {
+    const std::uint32_t n = out_.contour_count;
+    for (std::uint32_t k = 0; k < n; ++k) {
+      edges_.push_back({out_.vertices[k].position, out_.vertices[(k + 1) % n].position, {}, {}});
+    }
+    for (std::uint32_t k = 0; k < n; ++k) {
+      active_.push_back(make_vertex(out_.vertices[k].position, 0, (k + n - 1) % n, k));
+    }
+    faces_.assign(n, {});
+    double time = 0;
+    while (active_.size() > 3 && !frozen_) {
+      const auto [index, t] = next_event();
+      if (index == kUnset) return false;
+      time = t;
+      collapse(index, time);
+    }
+    if (!frozen_) {
+      const auto [index, t] = next_event();
+      if (index == kUnset) return false;
+      time = t;
+    }
+    finish(time);
+    return store_faces(faces_, out_);
+  }
+
+ private:
+  struct Edge {
+    Vec2 a, b;
+    std::vector<std::uint32_t> left_nodes, right_nodes;  // nodes its end points passed through
+  };
+  struct Active {
+    Vec2 origin;    // position extrapolated back to time 0
+    Vec2 velocity;  // moves both incident edges inward at unit speed
+    std::uint32_t left_edge, right_edge;
+  };
+
+  Vec2 inward_normal(std::uint32_t e) const { return perp(normalized(edges_[e].b - edges_[e].a)); }
+
+  Active make_vertex(Vec2 p, double time, std::uint32_t left, std::uint32_t right) {
+    const Vec2 n1 = inward_normal(left);
+    const Vec2 n2 = inward_normal(right);
+    const double c = 1 + dot(n1, n2);
+    if (c < 1e-12) {
+      // Antiparallel neighbours: what is left of the polygon has no width and ends now.
+      frozen_ = true;
+      return {p, {}, left, right};
+    }
+    const Vec2 v = (n1 + n2) / c;
+    return {p - v * time, v, left, right};
+  }
+
+  // Index i of the active vertex whose right edge vanishes first, and when.
+  std::pair<std::uint32_t, double> next_event() const {
+    std::uint32_t best = kUnset;
+    double best_time = 1e300;
+    for (std::uint32_t i = 0; i < active_.size(); ++i) {
+      const Active& a = active_[i];
+      const Active& b = active_[(i + 1) % active_.size()];
+      const Vec2 d = edges_[a.right_edge].b - edges_[a.right_edge].a;
+      const double rate = dot(b.velocity - a.velocity, d);
+      if (rate >= 0) continue;
+      const double t = -dot(b.origin - a.origin, d) / rate;
+      if (t < best_time) best_time = t, best = i;
+    }
+    return {best, best_time};
+  }
+
+  // A node at p and time, merged with an existing one at the same place (simultaneous events).
+  std::uint32_t node_at(Vec2 p, double time) {
+    const double tolerance = 1e-9 * (1 + time);
+    for (std::uint32_t v = out_.contour_count; v < out_.vertices.size(); ++v) {
+      const SkeletonVertex& s = out_.vertices[v];
+      if (std::abs(s.time - time) < tolerance && length(s.position - p) < tolerance) return v;
+    }
+    out_.vertices.push_back({p, time});
+    return static_cast<std::uint32_t>(out_.vertices.size() - 1);
+  }
+
+  // Face of edge e: the contour edge, the nodes its right end passed, `last_right` and `last_left`
+  // (where its ends stop), then the nodes its left end passed, backwards.
+  void close_face(std::uint32_t e, std::uint32_t last_right, std::uint32_t last_left) {
+    const std::uint32_t n = out_.contour_count;
+    std::vector<std::uint32_t>& f = faces_[e];
+    auto push = [&f](std::uint32_t v) {
+      if (f.empty() || (f.back() != v && f.front() != v)) f.push_back(v);
+    };
+    push(e);
+    push((e + 1) % n);
+    for (std::uint32_t v : edges_[e].right_nodes) push(v);
+    push(last_right);
+    push(last_left);
+    for (auto it = edges_[e].left_nodes.rbegin(); it != edges_[e].left_nodes.rend(); ++it)
+      push(*it);
+  }
+
+  void collapse(std::uint32_t i, double time) {
+    const std::uint32_t j = (i + 1) % static_cast<std::uint32_t>(active_.size());
+    const Active a = active_[i];
+    const Active b = active_[j];
+    const Vec2 p = (a.origin + a.velocity * time + b.origin + b.velocity * time) / 2;
+    const std::uint32_t node = node_at(p, time);
+    close_face(a.right_edge, node, node);
+    edges_[a.left_edge].right_nodes.push_back(node);
+    edges_[b.right_edge].left_nodes.push_back(node);
+    active_[i] = make_vertex(p, time, a.left_edge, b.right_edge);
+    active_.erase(active_.begin() + j);
+  }
+
+  // At `time` the rest collapses: a triangle to its incentre, a zero-width remainder to its
+  // segment. Each remaining edge ends at the nodes where its two end points stop.
+  void finish(double time) {
+    std::vector<std::uint32_t> nodes;
+    for (const Active& v : active_) nodes.push_back(node_at(v.origin + v.velocity * time, time));
+    for (std::size_t i = 0; i < active_.size(); ++i) {
+      close_face(active_[i].right_edge, nodes[(i + 1) % nodes.size()], nodes[i]);
+    }
+  }
+
+  Skeleton& out_;
+  std::vector<Edge> edges_;
+  std::vector<Active> active_;
+  std::vector<std::vector<std::uint32_t>> faces_;
+  bool frozen_ = false;
+};
+
+bool strictly_convex(const Polygon& polygon) {
+  if (!polygon.holes.empty() || polygon.outer.size() > 1024) return false;
+  const Ring& r = polygon.outer;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Vec2 u = r[(i + 1) % r.size()] - r[i];
+    const Vec2 v = r[(i + 2) % r.size()] - r[(i + 1) % r.size()];
+    if (!(cross(u, v) > 1e-9 * length(u) * length(v))) return false;
+  }
+  return true;
+}
+
+bool times_valid(const Skeleton& s) {
+  for (std::size_t i = s.contour_count; i < s.vertices.size(); ++i) {
+    const SkeletonVertex& v = s.vertices[i];
+    if (!std::isfinite(v.time) || !std::isfinite(v.position.x) || !std::isfinite(v.position.y) ||
+        v.time < 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::optional<Skeleton> cgal_skeleton(const Polygon& polygon) {
+  CgalPolygonWithHoles input(to_cgal(polygon.outer));
+  for (const Ring& hole : polygon.holes) input.add_hole(to_cgal(hole));
+  const auto ss = CGAL::create_interior_straight_skeleton_2(input, K());
+  if (!ss) return std::nullopt;
+  Skeleton out;
+  add_contour(polygon, out);
+  if (!Converter(out).convert(*ss) || !times_valid(out)) return std::nullopt;
+  return out;
+}
+
+}  // namespace
+
+std::uint32_t Skeleton::next_contour(std::uint32_t vertex) const {
+  const auto it = std::upper_bound(ring_starts.begin(), ring_starts.end(), vertex);
+  return vertex + 1 == *it ? *(it - 1) : vertex + 1;
+}
+
+std::uint32_t Skeleton::previous_contour(std::uint32_t vertex) const {
+  const auto it = std::upper_bound(ring_starts.begin(), ring_starts.end(), vertex);
+  return vertex == *(it - 1) ? *it - 1 : vertex - 1;
+}
+
+double Skeleton::max_time() const {
+  double t = 0;
+  for (const SkeletonVertex& v : vertices) t = std::max(t, v.time);
+  return t;
+}
+
+bool is_simple_polygon(const Polygon& polygon) {
+  if (!rings_valid(polygon)) return false;
+  std::vector<Segment> segments;
+  auto add = [&](const Ring& ring, std::uint32_t r) {
+    const auto n = static_cast<std::uint32_t>(ring.size());
+    for (std::uint32_t i = 0; i < n; ++i) segments.push_back({ring[i], ring[(i + 1) % n], r, i, n});
+  };
+  add(polygon.outer, 0);
+  for (std::size_t h = 0; h < polygon.holes.size(); ++h) {
+    add(polygon.holes[h], static_cast<std::uint32_t>(h + 1));
+  }
+  if (!segments_valid(segments)) return false;
+  // No crossings: one vertex of each hole decides whether it lies inside the outer ring.
+  for (const Ring& hole : polygon.holes) {
+    if (locate(Polygon{polygon.outer, {}}, hole[0], 0) != PointLocation::kInside) return false;
+  }
+  return true;
+}
+
+std::optional<Skeleton> interior_straight_skeleton(const Polygon& polygon) {
+  try {
+    if (!is_simple_polygon(polygon)) return std::nullopt;
+    if (strictly_convex(polygon)) {
+      Skeleton out;
+      add_contour(polygon, out);
+      if (ConvexSkeleton(out).run() && times_valid(out)) return out;
+    }
+    return cgal_skeleton(polygon);
+  } catch (...) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace insula::kernel

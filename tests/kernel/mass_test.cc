@@ -1,0 +1,299 @@
+#include "kernel/mass.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+
+namespace insula::kernel {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double tan_deg(double d) {
+  return std::tan(d * kPi / 180);
+}
+
+Polygon rectangle(double w, double l) {
+  return {{{0, 0}, {l, 0}, {l, w}, {0, w}}, {}};
+}
+Polygon l_shape() {
+  return {{{0, 0}, {14, 0}, {14, 6}, {6, 6}, {6, 12}, {0, 12}}, {}};
+}
+Polygon t_shape() {
+  return {{{0, 8}, {6, 8}, {6, 0}, {12, 0}, {12, 8}, {18, 8}, {18, 14}, {0, 14}}, {}};
+}
+Polygon u_shape() {
+  return {{{0, 0}, {18, 0}, {18, 14}, {12, 14}, {12, 6}, {6, 6}, {6, 14}, {0, 14}}, {}};
+}
+Polygon h_shape() {
+  return {{{0, 0},
+           {6, 0},
+           {6, 6},
+           {12, 6},
+           {12, 0},
+           {18, 0},
+           {18, 18},
+           {12, 18},
+           {12, 12},
+           {6, 12},
+           {6, 18},
+           {0, 18}},
+          {}};
+}
+Polygon courtyard() {
+  Polygon p = rectangle(20, 24);
+  p.holes.push_back({{7, 7}, {7, 13}, {17, 13}, {17, 7}});
+  return p;
+}
+Polygon irregular() {
+  return {{{0, 0}, {9, -1}, {14, 4}, {8, 6}, {9, 11}, {1, 9}, {3, 5}}, {}};
+}
+Polygon circle(int n, double r) {
+  Polygon p;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * kPi * i / n;
+    p.outer.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return p;
+}
+Polygon nearly_collinear() {
+  return {{{0, 0}, {5, 1e-6}, {10, 0}, {10, 6}, {5, 6.000001}, {0, 6}}, {}};
+}
+
+struct Expect {
+  int euler = 2;
+};
+
+// The shell contract of build_mass: closed, oriented, one component, Euler characteristic, positive
+// volume, and every face planar.
+void expect_shell(const MassResult& r, int euler, const std::string& what) {
+  SCOPED_TRACE(what);
+  ASSERT_NE(r.status, MassStatus::kFailed) << r.message;
+  const MeshCheck c = check(r.mesh);
+  EXPECT_TRUE(c.closed) << "boundary " << c.boundary_edges << " non-manifold "
+                        << c.non_manifold_edges;
+  EXPECT_TRUE(c.oriented);
+  EXPECT_EQ(c.components, 1U);
+  EXPECT_EQ(c.euler_characteristic, euler);
+  EXPECT_GT(volume(r.mesh), 0);
+  EXPECT_TRUE(is_watertight(r.mesh));
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    const Vec3 n = face_normal(r.mesh, f);
+    const Vec3 p0 = r.mesh.position(r.mesh.face(f)[0]);
+    for (std::uint32_t v : r.mesh.face(f)) {
+      ASSERT_NEAR(dot(r.mesh.position(v) - p0, n), 0, 1e-7) << "face " << f << " not planar";
+    }
+  }
+}
+
+std::map<SemanticClass, int> counts(const Mesh& m) {
+  std::map<SemanticClass, int> out;
+  for (std::size_t f = 0; f < m.face_count(); ++f) ++out[m.tag(f).semantic];
+  return out;
+}
+
+MassSpec spec(RoofType roof, double overhang = 0) {
+  MassSpec s;
+  s.wall_height = 6;
+  s.roof = roof;
+  s.pitch_deg = 35;
+  s.overhang = overhang;
+  return s;
+}
+
+constexpr std::array<RoofType, 7> kAllRoofs = {
+    RoofType::kFlat,    RoofType::kShed,    RoofType::kGable,       RoofType::kHip,
+    RoofType::kPyramid, RoofType::kMansard, RoofType::kHoledMansard};
+
+TEST(Mass, EveryRoofOnEveryFootprintIsOneClosedShell) {
+  const std::vector<std::pair<std::string, Polygon>> footprints = {
+      {"rectangle", rectangle(8, 14)},
+      {"L", l_shape()},
+      {"T", t_shape()},
+      {"U", u_shape()},
+      {"H", h_shape()},
+      {"courtyard", courtyard()},
+      {"irregular", irregular()},
+      {"circle", circle(256, 9)},
+      {"collinear", nearly_collinear()}};
+  for (const auto& [name, footprint] : footprints) {
+    const int euler = footprint.holes.empty() ? 2 : 0;
+    for (RoofType roof : kAllRoofs) {
+      for (double overhang : {0.0, 0.6}) {
+        const MassResult r = build_mass(footprint, spec(roof, overhang));
+        expect_shell(r, euler,
+                     name + " " + std::string(roof_type_name(roof)) + " overhang " +
+                         std::to_string(overhang) + " built " +
+                         std::string(roof_type_name(r.roof)) + " " + r.message);
+      }
+    }
+  }
+}
+
+TEST(Mass, HipOnRectangleHasAnalyticVolumeAndCounts) {
+  const double w = 8, l = 14, p = 35, H = 6;
+  const double h = w / 2 * tan_deg(p);
+  const MassResult r = build_mass(rectangle(w, l), spec(RoofType::kHip));
+  ASSERT_EQ(r.status, MassStatus::kOk) << r.message;
+  EXPECT_EQ(r.roof, RoofType::kHip);
+  EXPECT_NEAR(volume(r.mesh), w * l * H + w * h * (3 * l - w) / 6, 1e-9);
+  EXPECT_NEAR(r.mesh.bounds().max.z, H + h, 1e-9);
+  const auto c = counts(r.mesh);
+  EXPECT_EQ(c.at(SemanticClass::kGroundSurface), 1);
+  EXPECT_EQ(c.at(SemanticClass::kWallSurface), 4);
+  EXPECT_EQ(c.at(SemanticClass::kRoofSurface), 4);
+  EXPECT_EQ(r.mesh.vertex_count(), 10U);  // shared: 4 ground, 4 eave, 2 ridge
+}
+
+TEST(Mass, GableOnRectangleHasPentagonalEndWalls) {
+  const double w = 8, l = 14, p = 35, H = 6;
+  const double h = w / 2 * tan_deg(p);
+  const MassResult r = build_mass(rectangle(w, l), spec(RoofType::kGable));
+  ASSERT_EQ(r.status, MassStatus::kOk) << r.message;
+  EXPECT_NEAR(volume(r.mesh), w * l * H + w * h / 2 * l, 1e-9);
+  const auto c = counts(r.mesh);
+  EXPECT_EQ(c.at(SemanticClass::kRoofSurface), 2);
+  EXPECT_EQ(c.at(SemanticClass::kWallSurface), 4);
+  int pentagons = 0;
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    if (r.mesh.tag(f).semantic == SemanticClass::kWallSurface && r.mesh.face(f).size() == 5) {
+      ++pentagons;
+    }
+  }
+  EXPECT_EQ(pentagons, 2);
+  // The ridge runs the full length at (w/2) tan(pitch).
+  const Bounds3 b = r.mesh.bounds();
+  EXPECT_NEAR(b.max.z, H + h, 1e-9);
+  int ridge = 0;
+  for (const Vec3& v : r.mesh.positions()) {
+    if (std::abs(v.z - (H + h)) < 1e-9) {
+      EXPECT_NEAR(v.y, w / 2, 1e-9);
+      EXPECT_TRUE(std::abs(v.x) < 1e-9 || std::abs(v.x - l) < 1e-9);
+      ++ridge;
+    }
+  }
+  EXPECT_EQ(ridge, 2);
+}
+
+TEST(Mass, OverhangLowersEavesAndAddsSoffits) {
+  const double w = 8, l = 14, p = 35, H = 6, o = 0.6;
+  const double t = tan_deg(p);
+  const double ze = H - o * t;
+  const MassResult r = build_mass(rectangle(w, l), spec(RoofType::kHip, o));
+  ASSERT_EQ(r.status, MassStatus::kOk) << r.message;
+  const double we = w + 2 * o, le = l + 2 * o, h = we / 2 * t;
+  EXPECT_NEAR(volume(r.mesh), w * l * ze + we * h * (3 * le - we) / 6, 1e-9);
+  EXPECT_NEAR(r.mesh.bounds().max.z, H + w / 2 * t, 1e-9);  // same ridge as without overhang
+  EXPECT_NEAR(r.mesh.bounds().min.x, -o, 1e-12);
+  const auto c = counts(r.mesh);
+  EXPECT_EQ(c.at(SemanticClass::kOuterCeilingSurface), 4);
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    if (r.mesh.tag(f).semantic != SemanticClass::kOuterCeilingSurface) continue;
+    EXPECT_NEAR(face_normal(r.mesh, f).z, -1, 1e-12);
+    for (std::uint32_t v : r.mesh.face(f)) EXPECT_NEAR(r.mesh.position(v).z, ze, 1e-12);
+  }
+}
+
+TEST(Mass, GableOverhangKeepsGableWallsFlush) {
+  const double w = 8, l = 14, p = 35, H = 6, o = 0.5;
+  const double t = tan_deg(p);
+  const double ze = H - o * t;
+  const MassResult r = build_mass(rectangle(w, l), spec(RoofType::kGable, o));
+  ASSERT_EQ(r.status, MassStatus::kOk) << r.message;
+  const double we = w + 2 * o;
+  EXPECT_NEAR(volume(r.mesh), w * l * ze + we * (we / 2 * t) / 2 * l, 1e-9);
+  EXPECT_EQ(counts(r.mesh).at(SemanticClass::kOuterCeilingSurface), 2);
+  EXPECT_NEAR(r.mesh.bounds().min.x, 0, 1e-12);
+  EXPECT_NEAR(r.mesh.bounds().min.y, -o, 1e-12);
+}
+
+TEST(Mass, FlatAndShedVolumes) {
+  const double w = 8, l = 14, H = 6;
+  MassResult flat = build_mass(rectangle(w, l), spec(RoofType::kFlat));
+  EXPECT_NEAR(volume(flat.mesh), w * l * H, 1e-9);
+  EXPECT_EQ(flat.mesh.face_count(), 6U);
+  const double t = tan_deg(35);
+  MassResult shed = build_mass(rectangle(w, l), spec(RoofType::kShed));
+  EXPECT_NEAR(volume(shed.mesh), w * l * H + l * w * w * t / 2, 1e-9);
+  EXPECT_NEAR(shed.mesh.bounds().max.z, H + w * t, 1e-9);
+  // Flat with overhang: a cornice of fascia thickness.
+  MassSpec s = spec(RoofType::kFlat, 0.5);
+  const MassResult cornice = build_mass(rectangle(w, l), s);
+  EXPECT_NEAR(volume(cornice.mesh), w * l * (H - s.fascia) + (w + 1) * (l + 1) * s.fascia, 1e-9);
+}
+
+TEST(Mass, PyramidAndMansardVolumes) {
+  const double w = 8, l = 14, H = 6, t = tan_deg(35);
+  const MassResult pyramid = build_mass(rectangle(w, l), spec(RoofType::kPyramid));
+  ASSERT_EQ(pyramid.status, MassStatus::kOk);
+  EXPECT_NEAR(volume(pyramid.mesh), w * l * H + w * l * (w / 2 * t) / 3, 1e-9);
+
+  MassSpec m = spec(RoofType::kMansard);
+  m.mansard_break_height = 3;
+  const double tl = tan_deg(m.mansard_pitch_deg);
+  const double tb = 3 / tl;
+  const double band = tl * (w * l * tb - (w + l) * tb * tb + 4 * tb * tb * tb / 3);
+  const double wu = w - 2 * tb, lu = l - 2 * tb, hu = wu / 2 * t;
+  const MassResult mansard = build_mass(rectangle(w, l), m);
+  ASSERT_EQ(mansard.status, MassStatus::kOk);
+  EXPECT_NEAR(volume(mansard.mesh), w * l * H + band + wu * hu * (3 * lu - wu) / 6, 1e-9);
+  EXPECT_NEAR(mansard.mesh.bounds().max.z, H + 3 + hu, 1e-9);
+
+  m.roof = RoofType::kHoledMansard;
+  const MassResult holed = build_mass(rectangle(w, l), m);
+  ASSERT_EQ(holed.status, MassStatus::kOk);
+  EXPECT_NEAR(volume(holed.mesh), w * l * H + tl * ((w + l) * tb * tb - 8 * tb * tb * tb / 3),
+              1e-9);
+  EXPECT_NEAR(holed.mesh.bounds().max.z, H + 3, 1e-9);
+  const auto c = counts(holed.mesh);
+  EXPECT_EQ(c.at(SemanticClass::kOuterFloorSurface), 4);  // the opening's floor, per skeleton face
+  EXPECT_EQ(c.at(SemanticClass::kWallSurface), 4 + 4);    // outer walls + opening walls
+}
+
+TEST(Mass, SquareGableFallsBackToHip) {
+  const MassResult r = build_mass(rectangle(10, 10), spec(RoofType::kGable));
+  EXPECT_EQ(r.status, MassStatus::kFallback);
+  EXPECT_EQ(r.roof, RoofType::kHip);
+  EXPECT_EQ(r.message, "gable roof could not be built; hip roof instead");
+}
+
+TEST(Mass, ConcavePyramidFallsBackToHip) {
+  const MassResult r = build_mass(u_shape(), spec(RoofType::kPyramid));
+  EXPECT_EQ(r.status, MassStatus::kFallback);
+  EXPECT_EQ(r.roof, RoofType::kHip);
+  expect_shell(r, 2, "U pyramid");
+}
+
+TEST(Mass, ClockwiseInputIsNormalized) {
+  Polygon cw = rectangle(8, 14);
+  std::reverse(cw.outer.begin(), cw.outer.end());
+  const MassResult r = build_mass(cw, spec(RoofType::kHip));
+  EXPECT_EQ(r.status, MassStatus::kOk);
+  EXPECT_GT(volume(r.mesh), 0);
+}
+
+TEST(Mass, BadInputFailsWithAMessage) {
+  const MassResult bowtie =
+      build_mass({{{0, 0}, {4, 4}, {4, 0}, {0, 4}}, {}}, spec(RoofType::kHip));
+  EXPECT_EQ(bowtie.status, MassStatus::kFailed);
+  EXPECT_TRUE(bowtie.mesh.empty());
+  EXPECT_FALSE(bowtie.message.empty());
+  const MassResult line = build_mass({{{0, 0}, {4, 0}, {8, 0}}, {}}, spec(RoofType::kHip));
+  EXPECT_EQ(line.status, MassStatus::kFailed);
+  MassSpec s = spec(RoofType::kHip);
+  s.wall_height = -1;
+  EXPECT_EQ(build_mass(rectangle(4, 4), s).status, MassStatus::kFailed);
+}
+
+TEST(Mass, HugeOverhangIsDropped) {
+  MassSpec s = spec(RoofType::kHip, 50);  // the soffit would sink below the ground
+  const MassResult r = build_mass(rectangle(8, 14), s);
+  EXPECT_EQ(r.status, MassStatus::kFallback);
+  expect_shell(r, 2, "huge overhang");
+  EXPECT_NEAR(r.mesh.bounds().min.x, 0, 1e-12);
+}
+
+}  // namespace
+}  // namespace insula::kernel
