@@ -1,6 +1,6 @@
 // Openings per second for walls with 1, 10 and 100 openings, rectangular and arched (8 segments).
 // Each iteration builds the complete closed wall mesh (validation, partition, mesh emission).
-// Run: build/wall_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// Run: build/bench/wall_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
 #include "kernel/wall.h"
