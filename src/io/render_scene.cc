@@ -28,6 +28,9 @@ constexpr double kFillElevation = 10.0;
 constexpr float kAmbient = 0.30F;
 constexpr float kDiffuse = 0.72F;
 constexpr float kFill = 0.16F;
+// Buildings smaller than this on screen (output pixels) get no lines: at district scale their
+// outlines would merge into a dark mat, and shading alone reads better.
+constexpr double kMinOutlinedSize = 24.0;
 constexpr double kWeldQuantum = 1e-6;  // meters; vertices closer than this share outline edges
 
 Vec3 direction(double azimuth_deg, double elevation_deg) {
@@ -60,6 +63,7 @@ struct Context {
   Vec3 fill;
   double ground = 0;  // Z of the shadow-receiving ground plane
   double cos_crease = 1;
+  bool lines = true;  // whether the current building is large enough on screen for lines
   std::vector<Stroke> strokes;
 };
 
@@ -313,7 +317,9 @@ void draw_faces(Context& context, const Mesh& mesh, const PartData& data, double
         fill(context, clipped[0], clipped[static_cast<std::size_t>(i)],
              clipped[static_cast<std::size_t>(i + 1)], shade_id, cast);
       }
-      if (section.size() == 2) add_stroke(context, section[0], section[1], Ink::kSection);
+      if (section.size() == 2 && context.lines) {
+        add_stroke(context, section[0], section[1], Ink::kSection);
+      }
     }
   }
 }
@@ -337,7 +343,7 @@ void draw_part(Context& context, const Mesh& mesh, double cut) {
   const std::vector<EdgeUse> uses = edge_uses(mesh, data);
   data.closed = is_closed(uses, data);
   draw_faces(context, mesh, data, cut);
-  if (context.options.outlines) draw_edges(context, mesh, data, uses, cut);
+  if (context.options.outlines && context.lines) draw_edges(context, mesh, data, uses, cut);
 }
 
 double scene_ground(const shape::Scene& scene) {
@@ -352,6 +358,20 @@ double scene_ground(const shape::Scene& scene) {
     }
   }
   return ground;
+}
+
+// The larger side of the building's screen bounding box, in framebuffer pixels.
+double screen_size(const shape::Building& building, const Camera& camera) {
+  float x0 = 1e30F, x1 = -1e30F, y0 = 1e30F, y1 = -1e30F;
+  for (const shape::Part& part : building.parts) {
+    for (Vec3 p : part.mesh.positions()) {
+      if (!finite(p)) continue;
+      const ScreenPoint s = camera.project(p);
+      x0 = std::min(x0, s.x), x1 = std::max(x1, s.x), y0 = std::min(y0, s.y),
+      y1 = std::max(y1, s.y);
+    }
+  }
+  return x0 > x1 ? 0.0 : std::max(x1 - x0, y1 - y0);
 }
 
 }  // namespace
@@ -395,7 +415,7 @@ Camera fit_camera(const shape::Scene& scene, const RenderOptions& options, int w
 
 void draw_scene(const shape::Scene& scene, const RenderOptions& options, const Camera& camera,
                 Framebuffer& framebuffer) {
-  Context context{scene, options, camera, framebuffer, {}, {}, 0, 1, {}};
+  Context context{scene, options, camera, framebuffer, {}, {}, 0, 1, true, {}};
   context.sun = direction(options.azimuth_deg + kSunAzimuthOffset, kSunElevation);
   context.fill = direction(options.azimuth_deg + kFillAzimuthOffset, kFillElevation);
   context.ground = scene_ground(scene);
@@ -405,6 +425,7 @@ void draw_scene(const shape::Scene& scene, const RenderOptions& options, const C
     if (options.cutaway) {
       cut = std::isnan(options.cut_height) ? auto_cut_height(building) : options.cut_height;
     }
+    context.lines = screen_size(building, camera) >= kMinOutlinedSize * options.supersample;
     for (const shape::Part& part : building.parts) draw_part(context, part.mesh, cut);
   }
   // Strokes go last so their depth test sees every face. Section lines are drawn wider: they are

@@ -201,6 +201,15 @@ TEST(PngRenderer, OutlinesAppearOnlyWhenAskedFor) {
   EXPECT_EQ(without, 0);
 }
 
+TEST(PngRenderer, BuildingsTinyOnScreenGetNoOutlines) {
+  RenderOptions options;
+  options.shadows = false;
+  options.width = options.height = 20;  // the cube spans 18 pixels: below the 24-pixel minimum
+  EXPECT_EQ(count(render(unit_cube(), options), is_ink), 0);
+  options.width = options.height = 40;
+  EXPECT_GT(count(render(unit_cube(), options), is_ink), 0);
+}
+
 TEST(PngRenderer, RenderingIsDeterministic) {
   const std::string a = encode_png(render(unit_cube()));
   const std::string b = encode_png(render(unit_cube()));
