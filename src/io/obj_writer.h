@@ -1,0 +1,32 @@
+// Wavefront OBJ + MTL writer (docs/formats.md, "OBJ"). One `o` object per building; inside it one
+// `g` group per part and face class/material (`g <building>.<part>.<Class>`), each with `usemtl`.
+// Faces stay n-gons in their mesh orientation (counter-clockwise seen from outside). Vertices are
+// written in world coordinates (local + Scene::origin) with 6 decimals (1 µm, trailing zeros
+// trimmed), so projected coordinates such as UTM survive. Output is deterministic.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "shape/scene.h"
+
+namespace insula::io {
+
+struct ObjText {
+  std::string obj;
+  std::string mtl;
+};
+
+// The OBJ and MTL texts of `scene`; the OBJ refers to the MTL as `mtl_file_name`.
+ObjText obj_text(const shape::Scene& scene, std::string_view mtl_file_name);
+
+// Writes `obj_path` and the .mtl beside it (same stem), atomically: on failure neither file is
+// left. Returns an empty string on success, else a message naming the file.
+std::string write_obj(const shape::Scene& scene, const std::filesystem::path& obj_path);
+
+// `value` in fixed notation with at most `decimals` decimals, trailing zeros (and a trailing point)
+// removed, "-0" written as "0". Locale independent. Shared by the text writers.
+std::string format_decimal(double value, int decimals);
+
+}  // namespace insula::io

@@ -1,0 +1,430 @@
+#include "io/svg_writer.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <queue>
+
+#include "io/atomic_file.h"
+#include "io/obj_writer.h"
+#include "kernel/polygon.h"
+
+namespace insula::io {
+namespace {
+
+using kernel::Vec2;
+using kernel::Vec3;
+using Ring2 = std::vector<Vec2>;
+
+constexpr int kDecimals = 3;                  // 1 mm
+constexpr double kDefaultPictureSize = 1000;  // px, the longer side
+
+struct Segment {
+  Vec2 a;
+  Vec2 b;
+};
+
+// A building seen from above: its ground pieces and their outer outline.
+struct Footprint {
+  std::vector<Ring2> pieces;
+  std::vector<Segment> outline;
+};
+
+std::vector<Ring2> faces_from_above(const shape::Building& building, bool ground_only) {
+  std::vector<Ring2> rings;
+  for (const shape::Part& part : building.parts) {
+    for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
+      const bool ground = part.mesh.tag(f).semantic == kernel::SemanticClass::kGroundSurface;
+      if (ground_only ? !ground : kernel::face_normal(part.mesh, f).z > -0.5) continue;
+      Ring2 ring;
+      for (std::uint32_t v : part.mesh.face(f)) ring.push_back(kernel::drop(part.mesh.position(v)));
+      rings.push_back(std::move(ring));
+    }
+  }
+  return rings;
+}
+
+using EdgeKey = std::array<std::int64_t, 4>;
+
+EdgeKey edge_key(Vec2 a, Vec2 b) {
+  const auto q = [](double v) { return std::llround(v * 1e6); };  // 1 µm grid
+  return {q(a.x), q(a.y), q(b.x), q(b.y)};
+}
+
+// Edges of the pieces that no other piece shares (in the opposite direction): the outline.
+std::vector<Segment> outline_of(const std::vector<Ring2>& pieces) {
+  std::map<EdgeKey, int> directed;
+  for (const Ring2& ring : pieces) {
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      ++directed[edge_key(ring[i], ring[(i + 1) % ring.size()])];
+  }
+  std::vector<Segment> outline;
+  for (const Ring2& ring : pieces) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Vec2 a = ring[i];
+      const Vec2 b = ring[(i + 1) % ring.size()];
+      if (!directed.contains(edge_key(b, a))) outline.push_back({a, b});
+    }
+  }
+  return outline;
+}
+
+Footprint footprint_of(const shape::Building& building) {
+  Footprint footprint;
+  footprint.pieces = faces_from_above(building, true);
+  if (footprint.pieces.empty()) footprint.pieces = faces_from_above(building, false);
+  footprint.outline = outline_of(footprint.pieces);
+  return footprint;
+}
+
+// Even-odd crossing test of one ring.
+bool inside_ring(const Ring2& ring, Vec2 p) {
+  bool in = false;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Vec2 a = ring[i];
+    const Vec2 b = ring[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
+  }
+  return in;
+}
+
+double distance_to(Segment s, Vec2 p) {
+  const Vec2 d = s.b - s.a;
+  const double l2 = kernel::dot(d, d);
+  const double t = l2 > 0 ? std::clamp(kernel::dot(p - s.a, d) / l2, 0.0, 1.0) : 0.0;
+  return kernel::length(p - (s.a + d * t));
+}
+
+// Distance to the outline, negative outside every piece.
+double signed_distance(const Footprint& footprint, Vec2 p) {
+  double d = 1e300;
+  for (const Segment& s : footprint.outline) d = std::min(d, distance_to(s, p));
+  const bool in = std::any_of(footprint.pieces.begin(), footprint.pieces.end(),
+                              [&](const Ring2& ring) { return inside_ring(ring, p); });
+  return in ? d : -d;
+}
+
+struct Cell {
+  Vec2 centre;
+  double half = 0;
+  double distance = 0;
+  double potential = 0;  // the best distance any point of the cell can reach
+  bool operator<(const Cell& other) const { return potential < other.potential; }
+};
+
+Cell make_cell(const Footprint& footprint, Vec2 centre, double half) {
+  const double d = signed_distance(footprint, centre);
+  return {centre, half, d, d + half * std::sqrt(2.0)};
+}
+
+kernel::Bounds2 bounds_of(const std::vector<Ring2>& rings) {
+  kernel::Bounds2 b;
+  for (const Ring2& ring : rings) {
+    for (Vec2 p : ring) b.add(p);
+  }
+  return b;
+}
+
+// Pole of inaccessibility by best-first quadtree search (the "polylabel" idea, Garcia-Castellanos
+// & Lombardo 2007 grid search refined as a priority queue): cells are split while they could still
+// hold a point farther from the outline than the best found, within 1/200 of the footprint size.
+Vec2 visual_centre(const Footprint& footprint) {
+  const kernel::Bounds2 b = bounds_of(footprint.pieces);
+  const Vec2 size = b.max - b.min;
+  const double cell = std::min(size.x, size.y);
+  if (footprint.outline.empty() || cell <= 0) return (b.min + b.max) / 2;
+  const double precision = std::max(size.x, size.y) / 200;
+  std::priority_queue<Cell> queue;
+  for (double x = b.min.x; x < b.max.x; x += cell) {
+    for (double y = b.min.y; y < b.max.y; y += cell) {
+      queue.push(make_cell(footprint, {x + cell / 2, y + cell / 2}, cell / 2));
+    }
+  }
+  Cell best = make_cell(footprint, (b.min + b.max) / 2, 0);
+  for (int step = 0; !queue.empty() && step < 20000; ++step) {
+    const Cell c = queue.top();
+    queue.pop();
+    if (c.distance > best.distance) best = c;
+    if (c.potential - best.distance <= precision) continue;
+    const double h = c.half / 2;
+    for (const Vec2 offset : {Vec2{-h, -h}, Vec2{h, -h}, Vec2{-h, h}, Vec2{h, h}}) {
+      queue.push(make_cell(footprint, c.centre + offset, h));
+    }
+  }
+  return best.centre;
+}
+
+// Cut segments of a planar face with the plane z = height (vertices on the plane count as above).
+void section_face(const kernel::Mesh& mesh, std::size_t face, double height,
+                  std::vector<Segment>& out) {
+  const Vec3 direction = kernel::cross(kernel::face_normal(mesh, face), Vec3{0, 0, 1});
+  if (kernel::length(direction) < 1e-9) return;
+  const auto loop = mesh.face(face);
+  std::vector<Vec3> points;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Vec3 a = mesh.position(loop[i]);
+    const Vec3 b = mesh.position(loop[(i + 1) % loop.size()]);
+    if ((a.z >= height) == (b.z >= height)) continue;
+    points.push_back(a + (b - a) * ((height - a.z) / (b.z - a.z)));
+  }
+  std::sort(points.begin(), points.end(),
+            [&](Vec3 p, Vec3 q) { return kernel::dot(p, direction) < kernel::dot(q, direction); });
+  for (std::size_t i = 0; i + 1 < points.size(); i += 2) {
+    out.push_back({kernel::drop(points[i]), kernel::drop(points[i + 1])});
+  }
+}
+
+// Maps local meters to picture coordinates: south-west corner of the content at (0, 0), y down.
+struct Frame {
+  kernel::Bounds2 content;
+  double margin = 1;
+  Vec2 map(Vec2 p) const { return {p.x - content.min.x, content.max.y - p.y}; }
+  double width() const { return content.max.x - content.min.x; }
+  double height() const { return content.max.y - content.min.y; }
+};
+
+std::string number(double v) {
+  return format_decimal(v, kDecimals);
+}
+
+std::string point(Vec2 p) {
+  return number(p.x) + " " + number(p.y);
+}
+
+// Path data is built with append: GCC 12 reports a false -Wrestrict on `"M" + std::string`.
+void move_or_line(std::string& d, char command, Vec2 p) {
+  if (!d.empty()) d += ' ';
+  d += command;
+  d += point(p);
+}
+
+std::string path_of_rings(const std::vector<Ring2>& rings, const Frame& frame) {
+  std::string d;
+  for (const Ring2& ring : rings) {
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      move_or_line(d, i == 0 ? 'M' : 'L', frame.map(ring[i]));
+    d += " Z";
+  }
+  return d;
+}
+
+std::string path_of_segments(const std::vector<Segment>& segments, const Frame& frame) {
+  std::string d;
+  for (const Segment& s : segments) {
+    move_or_line(d, 'M', frame.map(s.a));
+    move_or_line(d, 'L', frame.map(s.b));
+  }
+  return d;
+}
+
+// The largest 1, 2 or 5 times a power of ten not above `limit` (meters).
+double nice_length(double limit) {
+  const double power = std::pow(10.0, std::floor(std::log10(limit)));
+  for (double m : {5.0, 2.0, 1.0}) {
+    if (m * power <= limit) return m * power;
+  }
+  return power;
+}
+
+struct Drawing {
+  std::vector<std::string> ids;
+  std::vector<Footprint> footprints;
+  std::vector<Segment> section;
+};
+
+Drawing collect(const shape::Scene& scene, const SvgOptions& options) {
+  Drawing drawing;
+  for (std::size_t b = 0; b < scene.buildings.size(); ++b) {
+    const shape::Building& building = scene.buildings[b];
+    drawing.ids.push_back(building.id.empty() ? "building" + std::to_string(b) : building.id);
+    drawing.footprints.push_back(footprint_of(building));
+    if (!options.section_height) continue;
+    for (const shape::Part& part : building.parts) {
+      for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
+        section_face(part.mesh, f, *options.section_height, drawing.section);
+      }
+    }
+  }
+  return drawing;
+}
+
+Frame frame_of(const Drawing& drawing) {
+  Frame frame;
+  for (const Footprint& footprint : drawing.footprints) {
+    for (const Ring2& ring : footprint.pieces) {
+      for (Vec2 p : ring) frame.content.add(p);
+    }
+  }
+  for (const Segment& s : drawing.section) {
+    frame.content.add(s.a);
+    frame.content.add(s.b);
+  }
+  if (frame.content.empty()) frame.content = {{0, 0}, {1, 1}};
+  frame.margin = std::max(1.0, 0.1 * std::max(frame.width(), frame.height()));
+  return frame;
+}
+
+std::string header(const shape::Scene& scene, const Frame& frame, const SvgOptions& options) {
+  const double m = frame.margin;
+  const double view_width = frame.width() + 2 * m;
+  const double view_height = frame.height() + 3 * m;  // one more margin below for the scale bar
+  const double ppm = options.pixels_per_meter > 0
+                         ? options.pixels_per_meter
+                         : kDefaultPictureSize / std::max(view_width, view_height);
+  const Vec3 corner =
+      scene.origin + kernel::lift(Vec2{frame.content.min.x, frame.content.max.y}, 0);
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(view_width * ppm) +
+         "\" height=\"" + number(view_height * ppm) + "\" viewBox=\"" + number(-m) + " " +
+         number(-m) + " " + number(view_width) + " " + number(view_height) + "\">\n";
+  out += "<title>Insula plan</title>\n";
+  out += "<desc>Units: meters, north up. Picture (0, 0) is world (" + format_decimal(corner.x, 6) +
+         ", " + format_decimal(corner.y, 6) + ")" +
+         (scene.crs.empty() ? "" : " in " + xml_escape(scene.crs)) +
+         "; picture y grows southwards.</desc>\n";
+  out += "<rect x=\"" + number(-m) + "\" y=\"" + number(-m) + "\" width=\"" + number(view_width) +
+         "\" height=\"" + number(view_height) + "\" fill=\"#ffffff\"/>\n";
+  return out;
+}
+
+std::string footprints_svg(const Drawing& drawing, const Frame& frame, bool section) {
+  std::string out = "<g id=\"footprints\" stroke-linejoin=\"round\">\n";
+  const char* fill = section ? "#eeeeee" : "#e8dcc4";
+  for (std::size_t b = 0; b < drawing.footprints.size(); ++b) {
+    const Footprint& footprint = drawing.footprints[b];
+    if (footprint.pieces.empty()) continue;
+    out += "<g class=\"building\" data-id=\"" + xml_escape(drawing.ids[b]) + "\">\n";
+    out += "<path d=\"" + path_of_rings(footprint.pieces, frame) + "\" fill=\"" + fill +
+           "\" stroke=\"none\"/>\n";
+    out += "<path d=\"" + path_of_segments(footprint.outline, frame) +
+           "\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1.5\" "
+           "vector-effect=\"non-scaling-stroke\"/>\n";
+    out += "</g>\n";
+  }
+  out += "</g>\n";
+  if (section && !drawing.section.empty()) {
+    out += "<g id=\"section\">\n<path d=\"" + path_of_segments(drawing.section, frame) +
+           "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"3\" stroke-linecap=\"round\" "
+           "vector-effect=\"non-scaling-stroke\"/>\n</g>\n";
+  }
+  return out;
+}
+
+std::string labels_svg(const Drawing& drawing, const Frame& frame) {
+  const double size = std::max(0.3, 0.03 * std::max(frame.width(), frame.height()));
+  std::string out = "<g id=\"labels\" font-family=\"sans-serif\" font-size=\"" + number(size) +
+                    "\" text-anchor=\"middle\" fill=\"#000000\">\n";
+  for (std::size_t b = 0; b < drawing.footprints.size(); ++b) {
+    if (drawing.footprints[b].pieces.empty()) continue;
+    const Vec2 at = frame.map(visual_centre(drawing.footprints[b]));
+    out += "<text x=\"" + number(at.x) + "\" y=\"" + number(at.y) +
+           "\" dominant-baseline=\"central\">" + xml_escape(drawing.ids[b]) + "</text>\n";
+  }
+  return out + "</g>\n";
+}
+
+std::string scale_bar_svg(const Frame& frame) {
+  const double m = frame.margin;
+  const double length = nice_length(std::max(frame.width(), 2 * m) / 4);
+  const double y = frame.height() + m;
+  const double tick = m / 5;
+  std::string out = "<g id=\"scale-bar\" stroke=\"#000000\" fill=\"none\">\n";
+  out += "<path d=\"M0 " + number(y - tick) + " L0 " + number(y) + " L" + number(length) + " " +
+         number(y) + " L" + number(length) + " " + number(y - tick) +
+         "\" stroke-width=\"1.5\" vector-effect=\"non-scaling-stroke\"/>\n";
+  out +=
+      "<text x=\"" + number(length / 2) + "\" y=\"" + number(y + 2 * tick) +
+      "\" font-family=\"sans-serif\" font-size=\"" + number(1.5 * tick) +
+      "\" text-anchor=\"middle\" dominant-baseline=\"central\" fill=\"#000000\" stroke=\"none\">" +
+      format_decimal(length, 3) + " m</text>\n";
+  return out + "</g>\n";
+}
+
+std::string north_arrow_svg(const Frame& frame) {
+  const double m = frame.margin;
+  const double x = frame.width() + m / 2;
+  const double top = m / 10;
+  const double h = m / 2;
+  std::string out = "<g id=\"north-arrow\">\n";
+  out += "<path d=\"M" + number(x) + " " + number(top) + " L" + number(x + h / 3) + " " +
+         number(top + h) + " L" + number(x) + " " + number(top + 0.75 * h) + " L" +
+         number(x - h / 3) + " " + number(top + h) + " Z\" fill=\"#000000\"/>\n";
+  out += "<text x=\"" + number(x) + "\" y=\"" + number(top + h + h / 3) +
+         "\" font-family=\"sans-serif\" font-size=\"" + number(h / 2) +
+         "\" text-anchor=\"middle\" dominant-baseline=\"central\">N</text>\n";
+  return out + "</g>\n";
+}
+
+// Length of the UTF-8 sequence starting at text[i], or 0 when it is not valid UTF-8.
+std::size_t utf8_length(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(i);
+  const std::size_t n = lead < 0x80           ? 1
+                        : (lead >> 5) == 0x6  ? 2
+                        : (lead >> 4) == 0xE  ? 3
+                        : (lead >> 3) == 0x1E ? 4
+                                              : 0;
+  if (n == 0 || i + n > text.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    if ((byte(i + k) & 0xC0) != 0x80) return 0;
+  }
+  return n;
+}
+
+}  // namespace
+
+std::string xml_escape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    const std::size_t n = utf8_length(text, i);
+    if (n > 1) {
+      out.append(text.substr(i, n));
+      i += n;
+      continue;
+    }
+    ++i;
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        const bool control = static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n';
+        out += (n == 0 || control || c == '\x7f') ? '?' : c;
+    }
+  }
+  return out;
+}
+
+std::string svg_text(const shape::Scene& scene, const SvgOptions& options) {
+  const Drawing drawing = collect(scene, options);
+  const Frame frame = frame_of(drawing);
+  std::string out = header(scene, frame, options);
+  out += footprints_svg(drawing, frame, options.section_height.has_value());
+  if (options.labels) out += labels_svg(drawing, frame);
+  out += scale_bar_svg(frame);
+  out += north_arrow_svg(frame);
+  return out + "</svg>\n";
+}
+
+std::string write_svg(const shape::Scene& scene, const std::filesystem::path& path,
+                      const SvgOptions& options) {
+  return write_file_atomically(path, svg_text(scene, options));
+}
+
+}  // namespace insula::io

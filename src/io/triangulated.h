@@ -1,0 +1,50 @@
+// Helpers shared by the mesh writers (OBJ, glTF, CityJSON, SVG): triangles of a planar n-gon face,
+// a deterministic material table, and names safe for formats that split names at whitespace.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kernel/mesh.h"
+#include "shape/scene.h"
+
+namespace insula::io {
+
+using CornerTriangle = std::array<std::uint32_t, 3>;
+
+// Appends the triangles of face `face` of `mesh` to `triangles`, as corner positions in the face's
+// loop (0 .. n-1), each counter-clockwise around the face's Newell normal. The face is projected to
+// its dominant coordinate plane and triangulated with kernel::triangulate, so concave faces come
+// out right; a convex face the triangulator rejects falls back to a fan. Returns false and appends
+// nothing for a degenerate face (zero normal, or non-convex and rejected by the triangulator).
+bool triangulate_face(const kernel::Mesh& mesh, std::size_t face,
+                      std::vector<CornerTriangle>& triangles);
+
+// `name` with every whitespace or control character replaced by '_' (OBJ splits names at blanks);
+// `fallback` when `name` is empty.
+std::string safe_name(std::string_view name, std::string_view fallback);
+
+// The materials faces of a scene show, in a fixed order: the scene's own materials used by some
+// face (by id), then the default colour of each semantic class used by faces without a material
+// (by class). Names are made safe and unique ("roof", "roof_2", ...).
+class MaterialTable {
+ public:
+  explicit MaterialTable(const shape::Scene& scene);
+
+  // Index into materials() of the material a face with `tag` shows.
+  std::uint32_t index(const kernel::FaceTag& tag) const;
+  const std::vector<shape::Material>& materials() const { return materials_; }
+
+ private:
+  std::uint32_t key(const kernel::FaceTag& tag) const;
+
+  std::size_t scene_material_count_ = 0;
+  std::map<std::uint32_t, std::uint32_t> index_by_key_;
+  std::vector<shape::Material> materials_;
+};
+
+}  // namespace insula::io

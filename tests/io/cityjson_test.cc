@@ -1,0 +1,183 @@
+// CityJSON writer: golden file, structure (transform, metadata, parents and children, Solid vs
+// MultiSurface, semantics), quantisation and deduplication of vertices, degenerate rings.
+#include <cmath>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "io/cityjson_writer.h"
+#include "writer_fixtures.h"
+
+namespace insula::io {
+namespace {
+
+using nlohmann::json;
+using testing::test_scene;
+
+json written(const shape::Scene& scene) {
+  return json::parse(cityjson_text(scene));
+}
+
+TEST(CityJsonWriter, MatchesGoldenFile) {
+  testing::expect_golden("scene.city.json", cityjson_text(test_scene()));
+}
+
+TEST(CityJsonWriter, HeaderTransformAndMetadata) {
+  const json city = written(test_scene());
+  EXPECT_EQ(city["type"], "CityJSON");
+  EXPECT_EQ(city["version"], "2.0");
+  EXPECT_EQ(city["transform"]["scale"], json::array({0.001, 0.001, 0.001}));
+  // The scene's local minimum corner is (0, 0, 0), so translate is the origin itself.
+  EXPECT_EQ(city["transform"]["translate"], json::array({500000.25, 5400000.5, 100.0}));
+  EXPECT_EQ(city["metadata"]["referenceSystem"], "https://www.opengis.net/def/crs/EPSG/0/32633");
+  EXPECT_EQ(city["metadata"]["geographicalExtent"],
+            json::array({500000.25, 5400000.5, 100.0, 500016.25, 5400005.5, 104.0}));
+}
+
+TEST(CityJsonWriter, BuildingsWithPartsStoreysAndAttributes) {
+  const json objects = written(test_scene())["CityObjects"];
+  ASSERT_EQ(objects.size(), 5U);
+  EXPECT_EQ(objects["b1"]["type"], "Building");
+  EXPECT_EQ(objects["b1"]["children"], json::array({"b1-main"}));
+  EXPECT_EQ(objects["b1"]["attributes"]["height"], 3.0);
+  EXPECT_EQ(objects["b1"]["attributes"]["listed"], true);
+  EXPECT_EQ(objects["b1"]["attributes"]["name"], "Box & <Co> \"1\"");
+  EXPECT_TRUE(objects["L-2"]["attributes"]["note"].is_null());
+  EXPECT_EQ(objects["b1-main"]["type"], "BuildingPart");
+  EXPECT_EQ(objects["b1-main"]["parents"], json::array({"b1"}));
+  EXPECT_EQ(objects["b1-main"]["attributes"]["levels"], 1.0);
+  EXPECT_EQ(objects["L-2"]["children"], json::array({"L-2-wing", "L-2-storey 0"}));
+  EXPECT_EQ(objects["L-2-storey 0"]["type"], "BuildingStorey");
+  EXPECT_FALSE(objects["b1"].contains("geometry"));
+}
+
+TEST(CityJsonWriter, ClosedPartsAreSolidsWithSemantics) {
+  const json objects = written(test_scene())["CityObjects"];
+  const json& box = objects["b1-main"]["geometry"][0];
+  EXPECT_EQ(box["type"], "Solid");
+  EXPECT_EQ(box["lod"], "2");
+  ASSERT_EQ(box["boundaries"].size(), 1U);                         // one shell
+  EXPECT_EQ(box["boundaries"][0].size(), 6U);                      // six surfaces of one ring each
+  EXPECT_EQ(box["boundaries"][0][0], json::parse("[[0,1,2,3]]"));  // numbered by first use
+  EXPECT_EQ(
+      box["semantics"]["surfaces"],
+      json::parse(R"([{"type":"GroundSurface"},{"type":"WallSurface"},{"type":"RoofSurface"}])"));
+  EXPECT_EQ(box["semantics"]["values"], json::parse("[[0,1,1,1,1,2]]"));
+  const json& wing = objects["L-2-wing"]["geometry"][0];
+  EXPECT_EQ(wing["type"], "Solid");
+  EXPECT_EQ(wing["boundaries"][0].size(), 8U);
+  EXPECT_EQ(wing["boundaries"][0][7][0].size(), 6U);  // the concave roof stays one hexagon
+}
+
+TEST(CityJsonWriter, OpenPartsAreMultiSurfaces) {
+  const json floor = written(test_scene())["CityObjects"]["L-2-storey 0"]["geometry"][0];
+  EXPECT_EQ(floor["type"], "MultiSurface");
+  EXPECT_EQ(floor["boundaries"].size(), 1U);
+  EXPECT_EQ(floor["semantics"]["surfaces"], json::parse(R"([{"type":"FloorSurface"}])"));
+  EXPECT_EQ(floor["semantics"]["values"], json::parse("[0]"));
+}
+
+TEST(CityJsonWriter, VerticesAreUniqueIntegersWithinHalfAMillimetre) {
+  const shape::Scene scene = test_scene();
+  const json city = written(scene);
+  const json& vertices = city["vertices"];
+  EXPECT_EQ(vertices.size(), 8U + 12U + 4U);
+  std::set<std::vector<std::int64_t>> unique;
+  for (const json& v : vertices) {
+    ASSERT_TRUE(v[0].is_number_integer() && v[1].is_number_integer() && v[2].is_number_integer());
+    unique.insert(v.get<std::vector<std::int64_t>>());
+  }
+  EXPECT_EQ(unique.size(), vertices.size());
+  // The floor's corner (10, 2, 0.1) local is vertex 23 (first use order).
+  const json& t = city["transform"]["translate"];
+  const json& v = vertices[23];
+  EXPECT_NEAR(t[0].get<double>() + v[0].get<double>() * 0.001, 500010.25, 5e-4);
+  EXPECT_NEAR(t[1].get<double>() + v[1].get<double>() * 0.001, 5400002.5, 5e-4);
+  EXPECT_NEAR(t[2].get<double>() + v[2].get<double>() * 0.001, 100.1, 5e-4);
+}
+
+TEST(CityJsonWriter, UnweldedFacesAreWeldedByQuantisationIntoASolid) {
+  // Every face with its own vertices, jittered by 0.1 mm: one Solid after quantisation.
+  const kernel::Mesh shared = testing::prism({{0, 0}, {4, 0}, {4, 3}, {0, 3}}, 0, 3);
+  kernel::Mesh loose;
+  for (std::size_t f = 0; f < shared.face_count(); ++f) {
+    std::vector<kernel::Vec3> loop;
+    for (std::uint32_t v : shared.face(f)) {
+      loop.push_back(shared.position(v) + kernel::Vec3{1e-4 * static_cast<double>(f % 2), 0, 0});
+    }
+    loose.add_polygon(loop, shared.tag(f));
+  }
+  shape::Scene scene;
+  scene.buildings.push_back({"b", {}, {{"p", shape::PartKind::kBuildingPart, {}, loose}}});
+  const json city = written(scene);
+  EXPECT_EQ(city["vertices"].size(), 8U);
+  EXPECT_EQ(city["CityObjects"]["b-p"]["geometry"][0]["type"], "Solid");
+  EXPECT_FALSE(city["metadata"].contains("referenceSystem"));
+}
+
+TEST(CityJsonWriter, DropsRingsThatCollapseAfterQuantisation) {
+  kernel::Mesh mesh;
+  // A sliver 0.2 mm wide collapses to a segment; a square with a doubled corner loses the repeat.
+  mesh.add_polygon(std::vector<kernel::Vec3>{{0, 0, 0}, {1, 0, 0}, {1, 0.0002, 0}},
+                   {kernel::SemanticClass::kRoofSurface, 0, 0});
+  mesh.add_polygon(
+      std::vector<kernel::Vec3>{{0, 0, 1}, {1, 0, 1}, {1, 0.0001, 1}, {1, 1, 1}, {0, 1, 1}},
+      {kernel::SemanticClass::kNone, 0, 1});
+  shape::Scene scene;
+  scene.buildings.push_back({"b", {}, {{"p", shape::PartKind::kBuildingPart, {}, mesh}}});
+  const json geometry = written(scene)["CityObjects"]["b-p"]["geometry"][0];
+  EXPECT_EQ(geometry["type"], "MultiSurface");
+  ASSERT_EQ(geometry["boundaries"].size(), 1U);
+  EXPECT_EQ(geometry["boundaries"][0][0].size(), 4U);
+  EXPECT_FALSE(geometry.contains("semantics"));  // the surviving face has no class
+}
+
+TEST(CityJsonWriter, NonFiniteFacesAreSkipped) {
+  kernel::Mesh mesh;
+  mesh.add_polygon(std::vector<kernel::Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {});
+  mesh.add_polygon(std::vector<kernel::Vec3>{{0, 0, NAN}, {1, 0, 0}, {0, 1, 0}}, {});
+  shape::Scene scene;
+  scene.buildings.push_back({"b", {}, {{"p", shape::PartKind::kRoom, {}, mesh}}});
+  const json city = written(scene);
+  EXPECT_EQ(city["CityObjects"]["b-p"]["type"], "BuildingRoom");
+  EXPECT_EQ(city["CityObjects"]["b-p"]["geometry"][0]["boundaries"].size(), 1U);
+}
+
+TEST(CityJsonWriter, IdsStayUnique) {
+  shape::Scene scene;
+  scene.buildings.push_back({"a",
+                             {},
+                             {{"x", shape::PartKind::kBuildingPart, {}, {}},
+                              {"x", shape::PartKind::kBuildingPart, {}, {}}}});
+  scene.buildings.push_back({"a", {}, {}});
+  const json objects = written(scene)["CityObjects"];
+  EXPECT_EQ(objects.size(), 4U);
+  EXPECT_EQ(objects["a"]["children"], json::array({"a-x", "a-x-2"}));
+  EXPECT_EQ(objects["a-2"]["type"], "Building");
+}
+
+TEST(CityJsonWriter, ReferenceSystems) {
+  EXPECT_EQ(cityjson_reference_system("EPSG:7415"), "https://www.opengis.net/def/crs/EPSG/0/7415");
+  EXPECT_EQ(cityjson_reference_system("epsg::2056"), "https://www.opengis.net/def/crs/EPSG/0/2056");
+  EXPECT_EQ(cityjson_reference_system("https://www.opengis.net/def/crs/EPSG/0/28992"),
+            "https://www.opengis.net/def/crs/EPSG/0/28992");
+  EXPECT_EQ(cityjson_reference_system("EPSG:"), "");
+  EXPECT_EQ(cityjson_reference_system("EPSG:12a"), "");
+  EXPECT_EQ(cityjson_reference_system("WGS84"), "");
+  EXPECT_EQ(cityjson_reference_system(""), "");
+}
+
+TEST(CityJsonWriter, WritesAtomically) {
+  const auto dir = testing::temp_dir("cityjson_write");
+  ASSERT_EQ(write_cityjson(test_scene(), dir / "city.city.json"), "");
+  EXPECT_EQ(testing::read_file(dir / "city.city.json"), cityjson_text(test_scene()));
+  const std::string error = write_cityjson(test_scene(), dir / "no" / "city.city.json");
+  EXPECT_NE(error.find("city.city.json"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "no"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace insula::io
