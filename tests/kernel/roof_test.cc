@@ -1,0 +1,182 @@
+#include "kernel/roof.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+namespace insula::kernel {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Polygon rectangle(double w, double l) {
+  return {{{0, 0}, {l, 0}, {l, w}, {0, w}}, {}};
+}
+Polygon u_shape() {
+  return {{{0, 0}, {18, 0}, {18, 14}, {12, 14}, {12, 6}, {6, 6}, {6, 14}, {0, 14}}, {}};
+}
+Polygon courtyard() {
+  Polygon p = rectangle(20, 24);
+  p.holes.push_back({{7, 7}, {7, 13}, {17, 13}, {17, 7}});
+  return p;
+}
+
+std::map<SemanticClass, int> counts(const Mesh& m) {
+  std::map<SemanticClass, int> out;
+  for (std::size_t f = 0; f < m.face_count(); ++f) ++out[m.tag(f).semantic];
+  return out;
+}
+
+// Every footprint edge appears, at eave height, as an edge of exactly one roof-part face.
+void expect_eaves_on_footprint(const RoofResult& r, const Polygon& footprint, double eave_z) {
+  const Mesh welded = weld(r.mesh);
+  auto find = [&](Vec2 p) {
+    for (std::uint32_t v = 0; v < welded.vertex_count(); ++v) {
+      if (length(welded.position(v) - lift(p, eave_z)) < 1e-9) return static_cast<int>(v);
+    }
+    return -1;
+  };
+  std::vector<Ring> rings{footprint.outer};
+  rings.insert(rings.end(), footprint.holes.begin(), footprint.holes.end());
+  for (const Ring& ring : rings) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const int a = find(ring[i]);
+      const int b = find(ring[(i + 1) % ring.size()]);
+      ASSERT_GE(a, 0);
+      ASSERT_GE(b, 0);
+      int uses = 0;
+      for (std::size_t f = 0; f < welded.face_count(); ++f) {
+        const auto loop = welded.face(f);
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+          if (static_cast<int>(loop[k]) == a &&
+              static_cast<int>(loop[(k + 1) % loop.size()]) == b) {
+            ++uses;
+          }
+        }
+      }
+      EXPECT_EQ(uses, 1) << "edge " << i;
+    }
+  }
+}
+
+TEST(Roof, NamesRoundTrip) {
+  for (RoofType t : {RoofType::kFlat, RoofType::kShed, RoofType::kGable, RoofType::kHip,
+                     RoofType::kPyramid, RoofType::kMansard, RoofType::kHoledMansard}) {
+    EXPECT_EQ(roof_type_from_name(roof_type_name(t)), t);
+  }
+  EXPECT_EQ(roof_type_from_name("Compluvium"), RoofType::kHoledMansard);
+  EXPECT_FALSE(roof_type_from_name("dome").has_value());
+}
+
+TEST(Roof, EavesAreTheFootprintEdgesForEveryType) {
+  for (RoofType t : {RoofType::kFlat, RoofType::kShed, RoofType::kGable, RoofType::kHip,
+                     RoofType::kPyramid, RoofType::kMansard, RoofType::kHoledMansard}) {
+    for (const Polygon& p : {rectangle(8, 14), u_shape(), courtyard()}) {
+      RoofSpec spec;
+      spec.type = t;
+      const RoofResult r = build_roof(p, spec, 5);
+      ASSERT_NE(r.status, RoofStatus::kFailed) << r.message;
+      if (t == RoofType::kShed) continue;  // a shed's eave is only its low edge
+      SCOPED_TRACE(std::string(roof_type_name(t)));
+      expect_eaves_on_footprint(r, p, 5);
+    }
+  }
+}
+
+TEST(Roof, HipRidgeHeightAndFaces) {
+  RoofSpec spec;
+  spec.pitch_deg = 40;
+  const RoofResult r = build_roof(rectangle(6, 10), spec, 3);
+  ASSERT_EQ(r.status, RoofStatus::kOk);
+  EXPECT_EQ(r.built, RoofType::kHip);
+  EXPECT_EQ(r.mesh.face_count(), 4U);
+  EXPECT_NEAR(r.mesh.bounds().max.z, 3 + 3 * std::tan(40 * kPi / 180), 1e-9);
+  // Every roof face slopes at the pitch.
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    EXPECT_NEAR(std::acos(face_normal(r.mesh, f).z) * 180 / kPi, 40, 1e-9);
+  }
+}
+
+TEST(Roof, GableOnUShapeEndsTheTwoArms) {
+  RoofSpec spec;
+  spec.type = RoofType::kGable;
+  const RoofResult r = build_roof(u_shape(), spec, 4);
+  ASSERT_EQ(r.status, RoofStatus::kOk) << r.message;
+  EXPECT_EQ(counts(r.mesh).at(SemanticClass::kWallSurface), 2);  // the arm ends (y = 14)
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    if (r.mesh.tag(f).semantic != SemanticClass::kWallSurface) continue;
+    EXPECT_NEAR(std::abs(face_normal(r.mesh, f).y), 1, 1e-12);
+    for (std::uint32_t v : r.mesh.face(f)) EXPECT_NEAR(r.mesh.position(v).y, 14, 1e-9);
+  }
+}
+
+TEST(Roof, OverhangAddsSoffitsAndLowersEaves) {
+  RoofSpec spec;
+  spec.overhang = 0.5;
+  spec.pitch_deg = 30;
+  const RoofResult r = build_roof(rectangle(6, 10), spec, 3);
+  ASSERT_EQ(r.status, RoofStatus::kOk);
+  EXPECT_EQ(counts(r.mesh).at(SemanticClass::kOuterCeilingSurface), 4);
+  EXPECT_NEAR(r.mesh.bounds().min.z, 3 - 0.5 * std::tan(30 * kPi / 180), 1e-12);
+  EXPECT_NEAR(r.mesh.bounds().min.x, -0.5, 1e-12);
+}
+
+TEST(Roof, PyramidRisesAboveTheCentroid) {
+  RoofSpec spec;
+  spec.type = RoofType::kPyramid;
+  spec.pitch_deg = 45;
+  const Polygon hexagon{{{0, 0}, {4, 0}, {6, 3}, {4, 6}, {0, 6}, {-2, 3}}, {}};
+  const RoofResult r = build_roof(hexagon, spec, 0);
+  ASSERT_EQ(r.status, RoofStatus::kOk);
+  EXPECT_EQ(r.mesh.face_count(), 6U);
+  const Vec3 top = r.mesh.position(static_cast<std::uint32_t>(r.mesh.vertex_count() - 1));
+  EXPECT_NEAR(top.x, 2, 1e-9);
+  EXPECT_NEAR(top.y, 3, 1e-9);
+}
+
+TEST(Roof, ShedRisesFromTheChosenEdge) {
+  RoofSpec spec;
+  spec.type = RoofType::kShed;
+  spec.pitch_deg = 45;
+  spec.shed_edge = 1;  // the short east edge x = 10
+  const RoofResult r = build_roof(rectangle(6, 10), spec, 2);
+  ASSERT_EQ(r.status, RoofStatus::kOk);
+  for (const Vec3& p : r.mesh.positions()) EXPECT_NEAR(p.z, 2 + (10 - p.x), 1e-9);
+}
+
+TEST(Roof, HoledMansardLeavesAnOpening) {
+  RoofSpec spec;
+  spec.type = RoofType::kHoledMansard;
+  spec.mansard_break_height = 2;
+  const RoofResult r = build_roof(rectangle(10, 16), spec, 4);
+  ASSERT_EQ(r.status, RoofStatus::kOk);
+  const auto c = counts(r.mesh);
+  EXPECT_EQ(c.at(SemanticClass::kRoofSurface), 4);
+  EXPECT_EQ(c.at(SemanticClass::kWallSurface), 4);
+  EXPECT_EQ(c.at(SemanticClass::kOuterFloorSurface), 4);
+  EXPECT_NEAR(r.mesh.bounds().max.z, 6, 1e-9);
+  // Opening floor area: the rectangle offset inward by the break time.
+  const double tb = 2 / std::tan(70 * kPi / 180);
+  double floor_area = 0;
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    if (r.mesh.tag(f).semantic == SemanticClass::kOuterFloorSurface) {
+      floor_area += face_area(r.mesh, f);
+    }
+  }
+  EXPECT_NEAR(floor_area, (10 - 2 * tb) * (16 - 2 * tb), 1e-9);
+}
+
+TEST(Roof, InvalidSpecAndFootprintFail) {
+  RoofSpec spec;
+  spec.pitch_deg = 95;
+  EXPECT_EQ(build_roof(rectangle(4, 4), spec, 0).status, RoofStatus::kFailed);
+  EXPECT_EQ(build_roof(rectangle(4, 4), spec, 0).message, "pitch must be in (0, 89] degrees");
+  const RoofResult bowtie = build_roof({{{0, 0}, {4, 4}, {4, 0}, {0, 4}}, {}}, RoofSpec{}, 0);
+  EXPECT_EQ(bowtie.status, RoofStatus::kFailed);
+  EXPECT_EQ(bowtie.message, "footprint is not a simple polygon with holes");
+  EXPECT_TRUE(bowtie.mesh.empty());
+}
+
+}  // namespace
+}  // namespace insula::kernel
