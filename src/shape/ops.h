@@ -1,0 +1,132 @@
+// The shape operations behind the registry, one file per family (ops_extrude.cc, ops_split.cc,
+// ops_comp.cc, ops_transform.cc, ops_offset.cc, ops_roof.cc, ops_insert.cc), callable directly with
+// typed arguments. Every operation creates children of `id` (their scopes and geometry in their own
+// scope space), marks `id` inactive on success, and creates nothing on failure. Conventions and
+// choices are in docs/shape-model.md; parameters in docs/operations.md.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "kernel/mesh.h"
+#include "kernel/roof.h"
+#include "shape/operation.h"
+#include "shape/shape_tree.h"
+
+namespace insula::shape {
+
+// Registry tables, one per family.
+std::vector<Operation> extrude_operations();
+std::vector<Operation> split_operations();
+std::vector<Operation> comp_operations();
+std::vector<Operation> transform_operations();
+std::vector<Operation> offset_operations();
+std::vector<Operation> roof_operations();
+std::vector<Operation> insert_operations();
+
+// --- extrude (ops_extrude.cc)
+// A flat shape (footprint or face) becomes a prism of `height` meters (> 0) along its normal. The
+// child's scope: x as before, y = the old normal (up for a footprint), z = x cross y, size (S.x,
+// height, S.y). Faces: bottom GroundSurface, top RoofSurface, sides WallSurface (kernel extrude.h).
+OpResult extrude(ShapeTree& tree, ShapeId id, double height);
+
+// --- split and repeat (ops_split.cc)
+struct Piece {
+  double start = 0;  // along the axis, scope space, meters
+  double size = 0;
+  std::uint32_t entry = 0;  // index into the size list
+};
+// CGA size resolution (seed 004 "Basic Split Rule"): absolute sizes are meters, relative ones a
+// fraction of `total`, floating ones share what absolute and relative sizes leave, in proportion
+// to their values (seed 001's weighted `rel` sizes are floating sizes). With a floating size the
+// pieces sum exactly to `total`; without, pieces past `total` are dropped and the last one that
+// crosses it is cut (CGA), and a shortfall stays empty. Zero-size pieces are left out.
+std::vector<Piece> resolve_sizes(double total, std::span<const SizeSpec> sizes);
+// Splits along `axis` into the resolved pieces; each child keeps the other two extents. Box
+// geometry is cut exactly; any other closed mesh with kernel split_into_slabs (closed pieces, cut
+// faces tagged FloorSurface / CeilingSurface for y cuts and InteriorWallSurface otherwise); a
+// flat shape's outline is clipped in its plane (x or y only).
+OpResult split(ShapeTree& tree, ShapeId id, Axis axis, std::span<const SizeSpec> sizes);
+// As many pieces of about `size` meters (> 0) as fit: n = max(1, floor(S / size)), each S / n.
+OpResult repeat(ShapeTree& tree, ShapeId id, Axis axis, double size);
+
+// --- comp (ops_comp.cc)
+enum class FaceSelector : std::uint8_t { kFront, kBack, kLeft, kRight, kTop, kBottom, kSide, kAll };
+// Whether a face with unit normal `n` (scope space) is selected: each face belongs to the scope
+// direction its normal is closest to (front +z, back -z, left -x, right +x, top +y, bottom -y;
+// ties prefer y, then z); side = front, back, left or right.
+bool face_matches(FaceSelector selector, kernel::Vec3 n);
+// One flat child per selected face: scope z = outward normal, x horizontal along the face (up
+// cross normal; the parent's x for faces facing up or down), y = z cross x; its outline is the face
+// loop. pieces[i] = face index.
+OpResult comp_faces(ShapeTree& tree, ShapeId id, FaceSelector selector);
+// One degenerate child per distinct edge: scope x along the edge, z the mean normal of the faces
+// meeting there, size (length, 0, 0), no geometry.
+OpResult comp_edges(ShapeTree& tree, ShapeId id);
+// One point child per distinct vertex: the parent's axes, size 0, no geometry.
+OpResult comp_vertices(ShapeTree& tree, ShapeId id);
+
+// --- transforms (ops_transform.cc); each makes one child sharing the geometry
+// Moves the scope by `offset` meters along its own axes (CGA T).
+OpResult translate(ShapeTree& tree, ShapeId id, kernel::Vec3 offset);
+enum class Pivot : std::uint8_t { kOrigin, kCenter };
+// Rotates the scope about its own x, then y, then z axis (degrees, right-hand rule; CGA R), about
+// the scope origin or centre. Geometry turns with the scope.
+OpResult rotate(ShapeTree& tree, ShapeId id, kernel::Vec3 degrees, Pivot pivot);
+// Sets the scope size (CGA S): absolute meters or relative to the current size; geometry is
+// stretched about the scope origin on axes whose old size is > 0.
+OpResult scale(ShapeTree& tree, ShapeId id, SizeSpec x, SizeSpec y, SizeSpec z);
+// Moves the scope along the chosen axes so its centre matches the parent shape's scope centre
+// (CGA center). `axes` holds 'x', 'y', 'z'.
+OpResult center(ShapeTree& tree, ShapeId id, std::string_view axes);
+
+// --- offset and setback (ops_offset.cc)
+enum class OffsetPart : std::uint8_t { kInside, kBorder, kAll };
+// Offsets a flat shape's outline by `distance` meters (negative shrinks: CGA offset). Children:
+// the inside part (piece 0) and/or the border between outline and inside (piece 1).
+OpResult offset(ShapeTree& tree, ShapeId id, double distance, OffsetPart part);
+enum class EdgeSelector : std::uint8_t { kFront, kBack, kLeft, kRight, kSide, kAll };
+// Cuts a strip `distance` meters (> 0) deep along the selected edges of a flat shape (edges whose
+// outward normal in the scope's xy plane is closest to -y front, +y back, -x left, +x right).
+// Children: the setback strip (piece 0) and the remainder (piece 1), each omitted when empty.
+OpResult setback(ShapeTree& tree, ShapeId id, double distance, EdgeSelector edges);
+
+// --- roof (ops_roof.cc)
+// A roof over a flat shape's outline (kernel roof.h), eave in the shape's plane. The child's scope
+// is oriented like an extrusion (y = the old normal) and fitted to the roof.
+OpResult roof(ShapeTree& tree, ShapeId id, const kernel::RoofSpec& spec);
+
+// --- insert (ops_insert.cc)
+// A child in the same scope whose geometry is `asset` (asset space = scope space: y up) with its
+// bounding box scaled to the scope size; an axis of size 0 takes the mean scale of the others, so
+// proportions are kept, and the child's scope size on that axis becomes the asset's scaled size.
+OpResult insert(ShapeTree& tree, ShapeId id, const kernel::Mesh& asset);
+
+// --- helpers shared by the families (ops_common.cc)
+// A closed box [0, size] in scope space, faces outward; `tags` per side in the order
+// -x, +x, -y, +y, -z, +z.
+std::shared_ptr<const kernel::Mesh> box_mesh(kernel::Vec3 size,
+                                             std::span<const kernel::FaceTag, 6> tags);
+// The default tags of a mass box: walls, ground at -y, roof at +y.
+std::array<kernel::FaceTag, 6> mass_box_tags();
+// Whether `mesh` is exactly the box [0, size] (6 axis-aligned rectangles), with the tag of each
+// side in the order of box_mesh.
+bool is_box(const kernel::Mesh& mesh, kernel::Vec3 size, std::array<kernel::FaceTag, 6>* tags,
+            double tolerance = 1e-9);
+// Whether `outline` is exactly the rectangle [0, w] x [0, h].
+bool is_rectangle(const kernel::Polygon& outline, double w, double h, double tolerance = 1e-9);
+// A new child of `parent` whose scope has the (parent scope space) axes `x`, `y`, `z`
+// (orthonormal, right-handed), fitted around `mesh` (given in parent scope space); the mesh is
+// stored in the child's space. Returns the child's scope and mesh without adding anything.
+struct Refit {
+  Scope scope;
+  kernel::Mesh mesh;
+};
+Refit refit(const Scope& parent, const kernel::Mesh& mesh, kernel::Vec3 x, kernel::Vec3 y,
+            kernel::Vec3 z);
+// Marks `id` inactive (it was replaced by its children) and returns `result`.
+OpResult finish(ShapeTree& tree, ShapeId id, OpResult result);
+
+}  // namespace insula::shape

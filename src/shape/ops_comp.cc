@@ -1,0 +1,173 @@
+// Component split (seed 004, "Component Split Rule": faces, edges, vertices, side faces): a shape
+// of lower dimension per face, edge or vertex of the parent's geometry.
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "shape/ops.h"
+
+namespace insula::shape {
+
+using kernel::Mesh;
+using kernel::Vec3;
+
+bool face_matches(FaceSelector selector, Vec3 n) {
+  if (selector == FaceSelector::kAll) return true;
+  const double ax = std::fabs(n.x);
+  const double ay = std::fabs(n.y);
+  const double az = std::fabs(n.z);
+  // The dominant direction decides; ties go to y (top/bottom), then z (front/back).
+  const bool vertical_axis = ay >= ax && ay >= az;
+  if (vertical_axis) {
+    return (selector == FaceSelector::kTop && n.y > 0) ||
+           (selector == FaceSelector::kBottom && n.y < 0);
+  }
+  if (selector == FaceSelector::kSide) return true;
+  if (az >= ax) {
+    return (selector == FaceSelector::kFront && n.z > 0) ||
+           (selector == FaceSelector::kBack && n.z < 0);
+  }
+  return (selector == FaceSelector::kRight && n.x > 0) ||
+         (selector == FaceSelector::kLeft && n.x < 0);
+}
+
+namespace {
+
+// Face `f` of `mesh` (parent scope space) as a flat child: scope fitted to the face with
+// z = normal, x horizontal (scope y is up), outline = the loop in the child's xy plane.
+bool face_child(const Scope& parent, const Mesh& mesh, std::size_t f, Refit& out,
+                kernel::Polygon& outline) {
+  Scope local;  // in parent scope space
+  if (!face_scope(mesh, f, {0, 1, 0}, {1, 0, 0}, local)) return false;
+  Mesh face;
+  std::vector<Vec3> loop;
+  for (std::uint32_t v : mesh.face(f)) loop.push_back(mesh.position(v));
+  face.add_polygon(loop, mesh.tag(f));
+  out = refit(parent, face, local.x, local.y, local.z);
+  out.scope.size.z = 0;
+  outline.outer.clear();
+  for (Vec3& p : out.mesh.positions()) {
+    p.z = 0;  // planar by construction; drop rounding
+    outline.outer.push_back(kernel::drop(p));
+  }
+  return true;
+}
+
+}  // namespace
+
+OpResult comp_faces(ShapeTree& tree, ShapeId id, FaceSelector selector) {
+  const Shape& s = tree[id];
+  if (!s.mesh) return OpResult::failure("the shape has no faces");
+  const std::shared_ptr<const Mesh> mesh = s.mesh;
+  const Scope scope = s.scope;
+  OpResult result;
+  for (std::size_t f = 0; f < mesh->face_count(); ++f) {
+    if (!face_matches(selector, kernel::face_normal(*mesh, f))) continue;
+    Refit child;
+    auto outline = std::make_shared<kernel::Polygon>();
+    if (!face_child(scope, *mesh, f, child, *outline)) continue;  // degenerate face
+    auto child_mesh = std::make_shared<Mesh>(std::move(child.mesh));
+    result.add(tree.add_child(id, child.scope, std::move(child_mesh), std::move(outline)),
+               static_cast<std::uint32_t>(f));
+  }
+  return finish(tree, id, std::move(result));
+}
+
+OpResult comp_edges(ShapeTree& tree, ShapeId id) {
+  const Shape& s = tree[id];
+  if (!s.mesh) return OpResult::failure("the shape has no edges");
+  const Mesh welded = kernel::weld(*s.mesh);
+  // Undirected edge -> sum of the normals of the faces meeting there (ordered map: stable order).
+  std::map<std::pair<std::uint32_t, std::uint32_t>, Vec3> edges;
+  for (std::size_t f = 0; f < welded.face_count(); ++f) {
+    const auto loop = welded.face(f);
+    const Vec3 n = kernel::face_normal(welded, f);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const std::uint32_t a = loop[i];
+      const std::uint32_t b = loop[(i + 1) % loop.size()];
+      edges[{std::min(a, b), std::max(a, b)}] += n;
+    }
+  }
+  const Scope scope = s.scope;
+  OpResult result;
+  std::uint32_t index = 0;
+  for (const auto& [edge, normal_sum] : edges) {
+    const Vec3 a = welded.position(edge.first);
+    const Vec3 b = welded.position(edge.second);
+    Scope local;
+    Vec3 n = normal_sum;
+    if (length(cross(n, b - a)) < 1e-12) n = cross(b - a, {0, 1, 0});  // no usable face normal
+    if (length(cross(n, b - a)) < 1e-12) n = cross(b - a, {1, 0, 0});
+    if (!make_frame(b - a, n, local.x, local.y, local.z)) continue;
+    Scope child = scope;
+    child.origin = scope.to_world(a);
+    child.x = scope.direction_to_world(local.x);
+    child.y = scope.direction_to_world(local.y);
+    child.z = scope.direction_to_world(local.z);
+    child.size = {length(b - a), 0, 0};
+    result.add(tree.add_child(id, child), index++);
+  }
+  return finish(tree, id, std::move(result));
+}
+
+OpResult comp_vertices(ShapeTree& tree, ShapeId id) {
+  const Shape& s = tree[id];
+  if (!s.mesh) return OpResult::failure("the shape has no vertices");
+  const Mesh welded = kernel::weld(*s.mesh);
+  std::vector<bool> used(welded.vertex_count(), false);
+  for (std::size_t f = 0; f < welded.face_count(); ++f) {
+    for (std::uint32_t v : welded.face(f)) used[v] = true;
+  }
+  const Scope scope = s.scope;
+  OpResult result;
+  for (std::uint32_t v = 0; v < welded.vertex_count(); ++v) {
+    if (!used[v]) continue;
+    result.add(tree.add_child(id, scope.sub(welded.position(v), {})), v);
+  }
+  return finish(tree, id, std::move(result));
+}
+
+std::vector<Operation> comp_operations() {
+  std::vector<Operation> ops;
+  ops.push_back(
+      {"comp",
+       "Splits a shape into its faces (by selector), edges or vertices (CGA comp); faces become "
+       "flat shapes with z = outward normal, edges line scopes, vertices point scopes.",
+       {{"type",
+         ParamType::kEnum,
+         "component kind",
+         ArgValue{std::string("faces")},
+         {"faces", "edges", "vertices"},
+         {},
+         {}},
+        {"select",
+         ParamType::kEnum,
+         "which faces (faces only)",
+         ArgValue{std::string("all")},
+         {"front", "back", "left", "right", "top", "bottom", "side", "all"},
+         {},
+         {}}},
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+         const std::string& type = a.string("type");
+         if (type == "edges") return comp_edges(t, id);
+         if (type == "vertices") return comp_vertices(t, id);
+         static constexpr std::array<std::pair<std::string_view, FaceSelector>, 8> kSelectors = {{
+             {"front", FaceSelector::kFront},
+             {"back", FaceSelector::kBack},
+             {"left", FaceSelector::kLeft},
+             {"right", FaceSelector::kRight},
+             {"top", FaceSelector::kTop},
+             {"bottom", FaceSelector::kBottom},
+             {"side", FaceSelector::kSide},
+             {"all", FaceSelector::kAll},
+         }};
+         FaceSelector selector = FaceSelector::kAll;
+         for (const auto& [name, value] : kSelectors) {
+           if (name == a.string("select")) selector = value;
+         }
+         return comp_faces(t, id, selector);
+       }});
+  return ops;
+}
+
+}  // namespace insula::shape

@@ -1,0 +1,228 @@
+// Split and repeat along a scope axis (seed 004, "Basic Split Rule" and "Repeat Rule"; seed 001
+// §3.4.3 "Splitting" and "Slicing"). Sizes resolve as in CGA (resolve_sizes); the geometry is cut
+// three ways: boxes exactly (the common case of façades and floors), other closed meshes with the
+// kernel's plane splitter, flat shapes in their plane.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "kernel/plane_split.h"
+#include "shape/ops.h"
+
+namespace insula::shape {
+
+using kernel::FaceTag;
+using kernel::Mesh;
+using kernel::SemanticClass;
+using kernel::Vec3;
+
+namespace {
+
+constexpr double kMinPiece = 1e-9;                 // meters: thinner pieces are left out
+constexpr std::uint32_t kCapMarker = 0xfffffffeU;  // face id marking cut faces until retagged
+
+// The tag of a face made by a cut, seen from the piece it bounds: floors and ceilings for
+// horizontal cuts (scope y is up), interior walls otherwise.
+FaceTag cut_tag(Axis axis, bool faces_up) {
+  if (axis != Axis::kY) return {SemanticClass::kInteriorWallSurface, 0, 0};
+  return {faces_up ? SemanticClass::kCeilingSurface : SemanticClass::kFloorSurface, 0, 0};
+}
+
+Vec3 unit(Axis axis) {
+  Vec3 v;
+  set_component(v, axis, 1);
+  return v;
+}
+
+Vec3 piece_size(Vec3 size, Axis axis, double extent) {
+  set_component(size, axis, extent);
+  return size;
+}
+
+void shift(Mesh& mesh, Axis axis, double by) {
+  for (Vec3& p : mesh.positions()) set_component(p, axis, component(p, axis) - by);
+}
+
+// Box geometry: each piece is a box; outer sides keep the parent's tags, cut sides get cut_tag.
+std::vector<std::shared_ptr<const Mesh>> split_box(const std::array<FaceTag, 6>& tags, Vec3 size,
+                                                   Axis axis, const std::vector<Piece>& pieces) {
+  const auto a = static_cast<std::size_t>(axis);
+  const double total = component(size, axis);
+  std::vector<std::shared_ptr<const Mesh>> out;
+  for (const Piece& p : pieces) {
+    std::array<FaceTag, 6> t = tags;
+    if (p.start > kMinPiece) t[2 * a] = cut_tag(axis, false);
+    if (p.start + p.size < total - kMinPiece) t[2 * a + 1] = cut_tag(axis, true);
+    out.push_back(box_mesh(piece_size(size, axis, p.size), t));
+  }
+  return out;
+}
+
+void retag_caps(Mesh& mesh, Axis axis) {
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.tag(f).face_id != kCapMarker) continue;
+    const double along = component(kernel::face_normal(mesh, f), axis);
+    mesh.tag(f) = cut_tag(axis, along > 0);
+  }
+}
+
+struct Cut {
+  std::vector<std::shared_ptr<const Mesh>> meshes;
+  std::string error;
+};
+
+// Any other mesh: kernel slabs, closed pieces for closed input (open ones for flat faces).
+Cut split_mesh(const Mesh& mesh, Axis axis, const std::vector<Piece>& pieces, bool cap) {
+  std::vector<double> positions{0.0};
+  for (const Piece& p : pieces) positions.push_back(p.start + p.size);
+  kernel::SplitOptions options;
+  options.cap = cap;
+  options.cap_tag = {SemanticClass::kNone, 0, kCapMarker};
+  kernel::SlabResult slabs = kernel::split_into_slabs(mesh, unit(axis), positions, options);
+  if (!slabs.ok()) return {{}, std::string(kernel::split_status_message(slabs.status))};
+  Cut cut;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    Mesh& m = slabs.pieces[i + 1];  // slab 0 lies below the first cut at 0
+    retag_caps(m, axis);
+    shift(m, axis, pieces[i].start);
+    cut.meshes.push_back(std::make_shared<Mesh>(std::move(m)));
+  }
+  return cut;
+}
+
+kernel::Polygon rectangle(double w, double h) {
+  return {{{0, 0}, {w, 0}, {w, h}, {0, h}}, {}};
+}
+
+// The outline of a flat piece: its single face as a polygon in the xy plane; null when the cut
+// left several faces (a concave outline cut into disjoint parts, or a holed one triangulated).
+std::shared_ptr<const kernel::Polygon> outline_of(const Mesh& mesh) {
+  if (mesh.face_count() != 1) return nullptr;
+  auto outline = std::make_shared<kernel::Polygon>();
+  for (std::uint32_t v : mesh.face(0)) outline->outer.push_back(kernel::drop(mesh.position(v)));
+  kernel::normalize(*outline);
+  return outline;
+}
+
+FaceTag first_tag(const Shape& s) {
+  return s.mesh && !s.mesh->empty() ? s.mesh->tag(0) : FaceTag{};
+}
+
+}  // namespace
+
+std::vector<Piece> resolve_sizes(double total, std::span<const SizeSpec> sizes) {
+  double fixed = 0;
+  double weights = 0;
+  for (const SizeSpec& s : sizes) {
+    const double v = std::max(0.0, s.value);
+    if (s.mode == SizeMode::kAbsolute) fixed += v;
+    if (s.mode == SizeMode::kRelative) fixed += v * total;
+    if (s.mode == SizeMode::kFloating) weights += v;
+  }
+  const double rest = std::max(0.0, total - fixed);
+  std::vector<Piece> out;
+  double at = 0;
+  for (std::uint32_t i = 0; i < sizes.size() && at < total - kMinPiece; ++i) {
+    const SizeSpec& s = sizes[i];
+    const double v = std::max(0.0, s.value);
+    double size = s.mode == SizeMode::kAbsolute   ? v
+                  : s.mode == SizeMode::kRelative ? v * total
+                  : weights > 0                   ? rest * v / weights
+                                                  : 0;
+    size = std::min(size, total - at);  // CGA: the piece crossing the end is cut there
+    if (size > kMinPiece) out.push_back({at, size, i});
+    at += size;
+  }
+  // Floating pieces fill exactly: snap the last piece's end onto the total against rounding.
+  if (weights > 0 && !out.empty() && std::fabs(at - total) < 1e-9 * std::max(1.0, total)) {
+    out.back().size = total - out.back().start;
+  }
+  return out;
+}
+
+OpResult split(ShapeTree& tree, ShapeId id, Axis axis, std::span<const SizeSpec> sizes) {
+  const Shape& s = tree[id];
+  const double total = component(s.scope.size, axis);
+  if (!(total > 0)) return OpResult::failure("the scope has size 0 along the split axis");
+  const std::vector<Piece> pieces = resolve_sizes(total, sizes);
+  std::vector<std::shared_ptr<const Mesh>> meshes(pieces.size());
+  std::vector<std::shared_ptr<const kernel::Polygon>> outlines(pieces.size());
+  std::array<FaceTag, 6> tags;
+  if (s.is_flat()) {
+    const bool rect = is_rectangle(*s.outline, s.scope.size.x, s.scope.size.y);
+    Cut cut;
+    if (!rect) cut = split_mesh(*s.mesh, axis, pieces, false);
+    if (!cut.error.empty()) return OpResult::failure(cut.error);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const Vec3 size = piece_size(s.scope.size, axis, pieces[i].size);
+      outlines[i] = rect ? std::make_shared<kernel::Polygon>(rectangle(size.x, size.y))
+                         : outline_of(*cut.meshes[i]);
+      meshes[i] = rect ? flat_mesh(*outlines[i], first_tag(s)) : cut.meshes[i];
+    }
+  } else if (s.mesh && is_box(*s.mesh, s.scope.size, &tags)) {
+    meshes = split_box(tags, s.scope.size, axis, pieces);
+  } else if (s.mesh) {
+    Cut cut = split_mesh(*s.mesh, axis, pieces, true);
+    if (!cut.error.empty()) return OpResult::failure(cut.error);
+    meshes = std::move(cut.meshes);
+  }
+  OpResult result;
+  const Scope scope = s.scope;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    Vec3 offset;
+    set_component(offset, axis, pieces[i].start);
+    const Scope child = scope.sub(offset, piece_size(scope.size, axis, pieces[i].size));
+    result.add(tree.add_child(id, child, meshes[i], outlines[i]), pieces[i].entry);
+  }
+  return finish(tree, id, std::move(result));
+}
+
+OpResult repeat(ShapeTree& tree, ShapeId id, Axis axis, double size) {
+  if (!(size > 0) || !std::isfinite(size)) return OpResult::failure("size must be > 0");
+  const double total = component(tree[id].scope.size, axis);
+  const double count = std::max(1.0, std::floor(total / size + 1e-9));
+  if (count > 1e6) return OpResult::failure("more than 1000000 pieces");
+  const std::vector<SizeSpec> sizes(static_cast<std::size_t>(count),
+                                    SizeSpec{1, SizeMode::kFloating});
+  OpResult result = split(tree, id, axis, sizes);
+  std::fill(result.pieces.begin(), result.pieces.end(), 0U);  // every piece is the one pattern
+  return result;
+}
+
+namespace {
+
+ParamDecl axis_param() {
+  return {"axis", ParamType::kEnum, "scope axis", std::nullopt, {"x", "y", "z"}, {}, {}};
+}
+
+Axis axis_of(const Arguments& a) {
+  const std::string& s = a.string("axis");
+  return s == "x" ? Axis::kX : s == "y" ? Axis::kY : Axis::kZ;
+}
+
+}  // namespace
+
+std::vector<Operation> split_operations() {
+  std::vector<Operation> ops;
+  ops.push_back(
+      {"split",
+       "Splits along a scope axis into pieces of absolute, relative ('r) and floating "
+       "(~) sizes (CGA split); piece i of the result is size entry pieces[i].",
+       {axis_param(),
+        {"sizes", ParamType::kSizeList, "piece sizes along the axis", std::nullopt, {}, 0.0, {}}},
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+         return split(t, id, axis_of(a), a.sizes("sizes"));
+       }});
+  ops.push_back(
+      {"repeat",
+       "Splits along a scope axis into as many equal pieces of about `size` as fit "
+       "(at least one; CGA repeat).",
+       {axis_param(),
+        {"size", ParamType::kNumber, "approximate piece size (meters)", std::nullopt, {}, 0.0, {}}},
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+         return repeat(t, id, axis_of(a), a.number("size"));
+       }});
+  return ops;
+}
+
+}  // namespace insula::shape
