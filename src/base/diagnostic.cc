@@ -66,20 +66,33 @@ std::string location_prefix(const Span& span) {
 }
 
 // The source line and a caret (with tildes across the span on that line).
+// Lines longer than this are shown as a window around the column (minified JSON is one long line).
+constexpr std::size_t kMaxShownLine = 160;
+constexpr std::size_t kContextBefore = 60;
+
+// The source line and a caret (with tildes across the span on that line).
 std::string caret_lines(const Span& span, const Source& source) {
-  const std::string_view text = source.line(span.line);
+  std::string_view text = source.line(span.line);
   if (text.empty() && span.line > 1) return {};
-  const std::uint32_t column = std::max<std::uint32_t>(span.column, 1);
+  std::size_t column = std::max<std::uint32_t>(span.column, 1);
+  std::size_t end_column = span.end_line == span.line ? span.end_column : 0;
+  std::string prefix;
+  if (text.size() > kMaxShownLine) {
+    const std::size_t first = column > kContextBefore ? column - 1 - kContextBefore : 0;
+    text = text.substr(first, kMaxShownLine);
+    if (first > 0) prefix = "...";
+    column = column - first + prefix.size();
+    end_column = end_column > first ? end_column - first + prefix.size() : 0;
+  }
   std::string marker(column - 1, ' ');
-  for (std::size_t i = 0; i + 1 < column && i < text.size(); ++i) {
-    if (text[i] == '\t') marker[i] = '\t';
+  for (std::size_t i = prefix.size(); i + 1 < column && i - prefix.size() < text.size(); ++i) {
+    if (text[i - prefix.size()] == '\t') marker[i] = '\t';
   }
   marker += '^';
-  if (span.end_line == span.line && span.end_column > column + 1) {
-    const std::size_t limit = std::min<std::size_t>(span.end_column - 1, text.size());
-    for (std::size_t c = column; c < limit; ++c) marker += '~';
-  }
+  const std::size_t shown = prefix.size() + text.size();
+  for (std::size_t c = column; c + 1 < std::min(end_column, shown + 1); ++c) marker += '~';
   std::string out(1, '\n');
+  out += prefix;
   out.append(text);
   out += '\n';
   out += marker;

@@ -18,7 +18,8 @@ TEST(Source, LocatesOffsetsAsOneBasedLineAndColumn) {
 
 TEST(Diagnostic, RendersFileLineColumnCodeAndCaret) {
   const Source source("house.cga", "Lot --> extrude(10)\nFacade --> splt(y)\n");
-  Diagnostic d = Diagnostic::error("CGA012", "unknown operation 'splt'", Span::at("house.cga", 2, 12, 4));
+  Diagnostic d =
+      Diagnostic::error("CGA012", "unknown operation 'splt'", Span::at("house.cga", 2, 12, 4));
   d.notes.push_back("did you mean 'split'?");
   EXPECT_EQ(render(d, &source),
             "house.cga:2:12: error[CGA012]: unknown operation 'splt'\n"
@@ -47,6 +48,22 @@ TEST(Result, CarriesValueOrDiagnostics) {
   auto failed = Result<int>::failure({Diagnostic::error("E", "bad", {})});
   EXPECT_FALSE(failed.ok());
   EXPECT_EQ(failed.diagnostics().size(), 1U);
+}
+
+}  // namespace
+}  // namespace insula::base
+
+namespace insula::base {
+namespace {
+
+TEST(Diagnostic, ClipsVeryLongLinesAroundTheColumn) {
+  const std::string line = std::string(500, '[') + "x" + std::string(500, ']');
+  const Source source("deep.json", line);
+  const std::string shown =
+      render(Diagnostic::error("E", "too deep", Span::at("deep.json", 1, 501)), &source);
+  const std::string expected_line = "..." + std::string(60, '[') + "x" + std::string(99, ']');
+  EXPECT_EQ(shown, "deep.json:1:501: error[E]: too deep\n" + expected_line + "\n" +
+                       std::string(63, ' ') + "^");
 }
 
 }  // namespace

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <map>
 #include <sstream>
 #include <thread>
 
@@ -25,13 +24,8 @@
 namespace insula::cli {
 namespace {
 
-const std::map<std::string, kernel::RoofType>& roof_names() {
-  static const std::map<std::string, kernel::RoofType> names = {
-      {"flat", kernel::RoofType::kFlat},       {"shed", kernel::RoofType::kShed},
-      {"gable", kernel::RoofType::kGable},     {"hip", kernel::RoofType::kHip},
-      {"pyramid", kernel::RoofType::kPyramid}, {"mansard", kernel::RoofType::kMansard}};
-  return names;
-}
+const std::vector<std::string> kRoofNames = {"flat",    "shed",    "gable",        "hip",
+                                             "pyramid", "mansard", "holed_mansard"};
 
 std::optional<std::string> read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -83,13 +77,12 @@ kernel::RoofType plan_roof(const MassOptions& options, const io::Footprint& foot
     auto it = footprint.properties.find("roof");
     if (it != footprint.properties.end()) {
       const std::string name = shape::to_string(it->second);
-      auto known = roof_names().find(name);
-      if (known != roof_names().end()) return known->second;
+      if (std::optional<kernel::RoofType> known = kernel::roof_type_from_name(name)) return *known;
       warnings.push_back(feature_name(footprint) + ": unknown roof '" + name +
                          "'; using " + options.roof);
     }
   }
-  return roof_names().at(options.roof);
+  return kernel::roof_type_from_name(options.roof).value_or(kernel::RoofType::kHip);
 }
 
 double plan_pitch(const MassOptions& options, const io::Footprint& footprint) {
@@ -178,9 +171,9 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
                    "output file, format by extension (.obj .glb .gltf .city.json .svg .png); repeatable")
       ->required();
   auto* roof = mass->add_option("--roof", options.roof,
-                                "roof type: flat, shed, gable, hip, pyramid, mansard (default hip; "
-                                "else the feature's 'roof' property)")
-                   ->check(CLI::IsMember({"flat", "shed", "gable", "hip", "pyramid", "mansard"}));
+                                "roof type: flat, shed, gable, hip, pyramid, mansard, holed_mansard "
+                                "(default hip; else the feature's 'roof' property)")
+                   ->check(CLI::IsMember(kRoofNames));
   auto* pitch = mass->add_option("--pitch", options.pitch_deg,
                                  "roof pitch in degrees (default 30; else the feature's 'pitch')")
                     ->check(CLI::Range(1.0, 75.0));
