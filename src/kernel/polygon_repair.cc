@@ -409,12 +409,56 @@ class FindingReporter {
                                        " and " + format_point(points[1]) +
                                        ", which splits the polygon's interior"));
     }
+    report_touch_loops();
   }
 
   // Pairs (lower, higher) of clean-ring indices whose edges cross.
   std::vector<std::pair<int, int>> crossing_pairs;
 
  private:
+  // Rings touching once each can still split the interior when the touches close a loop (outer
+  // touches hole 1, hole 1 touches hole 2, hole 2 touches the outer). In the graph of rings and
+  // distinct touch points such a loop is a cycle (union-find); rings meeting at one common point
+  // share a point node and form none.
+  void report_touch_loops() {
+    std::vector<Vec2> points;
+    std::vector<int> parent(rings_.size());
+    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
+    auto find = [&](int x) {
+      while (parent[std::size_t(x)] != x)
+        x = parent[std::size_t(x)] = parent[std::size_t(parent[std::size_t(x)])];
+      return x;
+    };
+    auto point_node = [&](Vec2 p) {
+      for (std::size_t i = 0; i < points.size(); ++i)
+        if (length(points[i] - p) <= tol_) return int(rings_.size() + i);
+      points.push_back(p);
+      parent.push_back(int(parent.size()));
+      return int(parent.size() - 1);
+    };
+    std::vector<std::pair<int, int>> linked;  // (ring, point node) edges already in the graph
+    for (const auto& [pair, touch] : touches_) {
+      if (touch.size() != 1) continue;
+      const int pt = point_node(touch[0]);
+      for (int ring : {pair.first, pair.second}) {
+        if (std::find(linked.begin(), linked.end(), std::pair{ring, pt}) != linked.end()) continue;
+        linked.emplace_back(ring, pt);
+        const int a = find(ring), b = find(pt);
+        if (a != b) {
+          parent[std::size_t(a)] = b;
+          continue;
+        }
+        const auto [lo, hi] = pair;
+        issues_.push_back(make_issue(
+            PolygonIssueKind::kRingsIntersect, rings_[hi].id, -1, false,
+            ring_name(rings_[hi].id) + " touches " + ring_name(rings_[lo].id) + " at " +
+                format_point(touch[0]) +
+                ", closing a loop of touching rings that splits the polygon's interior"));
+        return;
+      }
+    }
+  }
+
   int vertex(int ring, int index) const { return rings_[ring].source[index]; }
   std::string edge(int ring, int index) const {
     const int n = int(rings_[ring].source.size());

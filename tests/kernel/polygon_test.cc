@@ -242,6 +242,19 @@ TEST(PolygonRepair, HoleTouchingOuterOnceIsValidTwiceIsNot) {
   EXPECT_TRUE(has_kind(r.issues, PolygonIssueKind::kRingsIntersect));
 }
 
+TEST(PolygonRepair, LoopOfSingleTouchesIsReported) {
+  // Hole 1 touches the outer ring at (3, 0), hole 2 touches it at (3, 2), and the holes touch at
+  // (2, 1): the triangle (3,0)-(2,1)-(3,2) is cut off from the rest.
+  const Polygon loop{rect(0, 0, 3, 3), {{{1, 1}, {2, 1}, {3, 0}}, {{3, 2}, {2, 1}, {1, 2}}}};
+  EXPECT_EQ(messages(validate(loop)),
+            (std::vector<std::string>{"hole 2 touches hole 1 at (2, 1), closing a loop of touching "
+                                      "rings that splits the polygon's interior"}));
+  // Three rings meeting at one common point split nothing.
+  const Polygon star_point{rect(0, 0, 4, 4),
+                           {{{0, 2}, {1, 3}, {1, 2.5}}, {{0, 2}, {1, 1.5}, {1, 1}}}};
+  EXPECT_TRUE(repair(star_point).ok);
+}
+
 TEST(PolygonRepair, NonFiniteTooFewAndZeroArea) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const RepairResult r = repair(Polygon{{{0, 0}, {1, 0}, {nan, 1}}, {}});
