@@ -17,7 +17,7 @@ std::string bind_error(std::string_view op, std::vector<ArgInput> inputs) {
 
 TEST(Registry, DeclaresTheFirstOperations) {
   for (std::string_view name : {"extrude", "split", "repeat", "comp", "translate", "rotate",
-                                "scale", "center", "roof", "insert"}) {
+                                "scale", "center", "roof", "insert", "offset", "setback"}) {
     const Operation* op = registry().find(name);
     ASSERT_NE(op, nullptr) << name;
     EXPECT_FALSE(op->doc.empty());

@@ -1,0 +1,65 @@
+#include <gtest/gtest.h>
+
+#include "shape/ops.h"
+
+namespace insula::shape {
+namespace {
+
+double total_area(const ShapeTree& tree, const OpResult& r, std::uint32_t piece) {
+  double sum = 0;
+  for (std::size_t i = 0; i < r.children.size(); ++i) {
+    if (r.pieces[i] == piece) sum += kernel::area(*tree[r.children[i]].outline);
+  }
+  return sum;
+}
+
+TEST(Offset, InsetGivesInsideAndBorder) {
+  ShapeTree tree;
+  const RootResult root = tree.create_root({{{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {}});
+  const OpResult r = registry().run(tree, root.id, "offset", {{"distance", -1.0}});
+  ASSERT_TRUE(r.ok()) << r.error;
+  ASSERT_EQ(r.children.size(), 2U);
+  EXPECT_NEAR(total_area(tree, r, 0), 8 * 4, 1e-9);
+  EXPECT_NEAR(total_area(tree, r, 1), 60 - 32, 1e-9);
+  const Shape& inside = tree[r.children[0]];
+  EXPECT_NEAR(inside.scope.size.x, 8, 1e-9);
+  EXPECT_NEAR(inside.scope.origin.x, 1, 1e-9);
+  EXPECT_NEAR(inside.scope.origin.y, 1, 1e-9);
+  const Shape& border = tree[r.children[1]];
+  EXPECT_EQ(border.outline->holes.size(), 1U);
+  EXPECT_NEAR(kernel::surface_area(*border.mesh), 28, 1e-9);
+}
+
+TEST(Offset, GrowingAndVanishing) {
+  ShapeTree tree;
+  const RootResult root = tree.create_root({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}});
+  const OpResult grow = offset(tree, root.id, 1, OffsetPart::kInside);
+  ASSERT_EQ(grow.children.size(), 1U);
+  EXPECT_NEAR(kernel::area(*tree[grow.children[0]].outline), 36, 1e-9);
+  EXPECT_NEAR(tree[grow.children[0]].scope.origin.x, -1, 1e-9);
+  // Insetting by more than half the width leaves no inside, only the border.
+  const OpResult gone = offset(tree, root.id, -3, OffsetPart::kAll);
+  ASSERT_EQ(gone.children.size(), 1U);
+  EXPECT_EQ(gone.pieces[0], 1U);
+  EXPECT_NEAR(kernel::area(*tree[gone.children[0]].outline), 16, 1e-9);
+}
+
+TEST(Setback, FrontStripAndRemainder) {
+  ShapeTree tree;
+  // The first edge (y = 0) is the front.
+  const RootResult root = tree.create_root({{{0, 0}, {20, 0}, {20, 30}, {0, 30}}, {}});
+  const OpResult r = registry().run(tree, root.id, "setback", {{"", 5.0}});
+  ASSERT_TRUE(r.ok()) << r.error;
+  ASSERT_EQ(r.children.size(), 2U);
+  EXPECT_NEAR(total_area(tree, r, 0), 100, 1e-9);
+  EXPECT_NEAR(total_area(tree, r, 1), 500, 1e-9);
+  EXPECT_NEAR(tree[r.children[1]].scope.origin.y, 5, 1e-9);
+  const OpResult sides = setback(tree, root.id, 2, EdgeSelector::kSide);
+  EXPECT_NEAR(total_area(tree, sides, 0), 2 * 2 * 30, 1e-9);
+  const OpResult all = setback(tree, root.id, 2, EdgeSelector::kAll);
+  EXPECT_NEAR(total_area(tree, all, 1), 16 * 26, 1e-9);
+  EXPECT_EQ(setback(tree, root.id, 0, EdgeSelector::kAll).error, "distance must be > 0");
+}
+
+}  // namespace
+}  // namespace insula::shape
