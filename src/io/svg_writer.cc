@@ -180,9 +180,15 @@ void section_face(const kernel::Mesh& mesh, std::size_t face, double height,
 struct Frame {
   kernel::Bounds2 content;
   double margin = 1;
+  double pixels_per_meter = 1;
   Vec2 map(Vec2 p) const { return {p.x - content.min.x, content.max.y - p.y}; }
   double width() const { return content.max.x - content.min.x; }
   double height() const { return content.max.y - content.min.y; }
+  double view_width() const { return width() + 2 * margin; }
+  double view_height() const { return height() + 3 * margin; }  // one more below: scale bar
+  // A line width given in pixels of the picture, in meters (not every renderer knows
+  // vector-effect="non-scaling-stroke", so widths are real lengths).
+  double pixels(double px) const { return px / pixels_per_meter; }
 };
 
 std::string number(double v) {
@@ -210,11 +216,25 @@ std::string path_of_rings(const std::vector<Ring2>& rings, const Frame& frame) {
   return d;
 }
 
+// Segments as path data; a segment starting where the previous one ended continues the same
+// subpath (so corners get line joins), and a subpath back at its start is closed with Z.
 std::string path_of_segments(const std::vector<Segment>& segments, const Frame& frame) {
   std::string d;
-  for (const Segment& s : segments) {
-    move_or_line(d, 'M', frame.map(s.a));
-    move_or_line(d, 'L', frame.map(s.b));
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const Segment& s = segments[i];
+    if (i == 0 || !(segments[i - 1].b == s.a)) {
+      if (i > 0) d += ' ';
+      d += 'M';
+      d += point(frame.map(s.a));
+    }
+    const bool closes = i + 1 < segments.size() ? !(segments[i + 1].a == s.b) : true;
+    std::size_t start = i;
+    while (start > 0 && segments[start - 1].b == segments[start].a) --start;
+    if (closes && start != i && segments[start].a == s.b) {
+      d += " Z";
+    } else {
+      move_or_line(d, 'L', frame.map(s.b));
+    }
   }
   return d;
 }
@@ -250,7 +270,7 @@ Drawing collect(const shape::Scene& scene, const SvgOptions& options) {
   return drawing;
 }
 
-Frame frame_of(const Drawing& drawing) {
+Frame frame_of(const Drawing& drawing, const SvgOptions& options) {
   Frame frame;
   for (const Footprint& footprint : drawing.footprints) {
     for (const Ring2& ring : footprint.pieces) {
@@ -263,16 +283,18 @@ Frame frame_of(const Drawing& drawing) {
   }
   if (frame.content.empty()) frame.content = {{0, 0}, {1, 1}};
   frame.margin = std::max(1.0, 0.1 * std::max(frame.width(), frame.height()));
+  frame.pixels_per_meter =
+      options.pixels_per_meter > 0
+          ? options.pixels_per_meter
+          : kDefaultPictureSize / std::max(frame.view_width(), frame.view_height());
   return frame;
 }
 
-std::string header(const shape::Scene& scene, const Frame& frame, const SvgOptions& options) {
+std::string header(const shape::Scene& scene, const Frame& frame) {
   const double m = frame.margin;
-  const double view_width = frame.width() + 2 * m;
-  const double view_height = frame.height() + 3 * m;  // one more margin below for the scale bar
-  const double ppm = options.pixels_per_meter > 0
-                         ? options.pixels_per_meter
-                         : kDefaultPictureSize / std::max(view_width, view_height);
+  const double view_width = frame.view_width();
+  const double view_height = frame.view_height();
+  const double ppm = frame.pixels_per_meter;
   const Vec3 corner =
       scene.origin + kernel::lift(Vec2{frame.content.min.x, frame.content.max.y}, 0);
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
@@ -299,15 +321,15 @@ std::string footprints_svg(const Drawing& drawing, const Frame& frame, bool sect
     out += "<path d=\"" + path_of_rings(footprint.pieces, frame) + "\" fill=\"" + fill +
            "\" stroke=\"none\"/>\n";
     out += "<path d=\"" + path_of_segments(footprint.outline, frame) +
-           "\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1.5\" "
-           "vector-effect=\"non-scaling-stroke\"/>\n";
+           "\" fill=\"none\" stroke=\"#333333\" stroke-width=\"" +
+           format_decimal(frame.pixels(1.5), 6) + "\"/>\n";
     out += "</g>\n";
   }
   out += "</g>\n";
   if (section && !drawing.section.empty()) {
     out += "<g id=\"section\">\n<path d=\"" + path_of_segments(drawing.section, frame) +
-           "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"3\" stroke-linecap=\"round\" "
-           "vector-effect=\"non-scaling-stroke\"/>\n</g>\n";
+           "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"" +
+           format_decimal(frame.pixels(3), 6) + "\" stroke-linecap=\"round\"/>\n</g>\n";
   }
   return out;
 }
@@ -332,8 +354,8 @@ std::string scale_bar_svg(const Frame& frame) {
   const double tick = m / 5;
   std::string out = "<g id=\"scale-bar\" stroke=\"#000000\" fill=\"none\">\n";
   out += "<path d=\"M0 " + number(y - tick) + " L0 " + number(y) + " L" + number(length) + " " +
-         number(y) + " L" + number(length) + " " + number(y - tick) +
-         "\" stroke-width=\"1.5\" vector-effect=\"non-scaling-stroke\"/>\n";
+         number(y) + " L" + number(length) + " " + number(y - tick) + "\" stroke-width=\"" +
+         format_decimal(frame.pixels(1.5), 6) + "\"/>\n";
   out +=
       "<text x=\"" + number(length / 2) + "\" y=\"" + number(y + 2 * tick) +
       "\" font-family=\"sans-serif\" font-size=\"" + number(1.5 * tick) +
@@ -413,8 +435,8 @@ std::string xml_escape(std::string_view text) {
 
 std::string svg_text(const shape::Scene& scene, const SvgOptions& options) {
   const Drawing drawing = collect(scene, options);
-  const Frame frame = frame_of(drawing);
-  std::string out = header(scene, frame, options);
+  const Frame frame = frame_of(drawing, options);
+  std::string out = header(scene, frame);
   out += footprints_svg(drawing, frame, options.section_height.has_value());
   if (options.labels) out += labels_svg(drawing, frame);
   out += scale_bar_svg(frame);
