@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "kernel/extrude.h"
 #include "kernel/transform.h"
@@ -244,6 +245,53 @@ TEST(PlaneSplit, ObliqueCutsConserveVolume) {
       EXPECT_GT(volume(r.negative), 0);
       EXPECT_GT(volume(r.positive), 0);
     }
+  }
+}
+
+// Star-shaped prisms (some with a hole, some tilted) cut by axis-aligned planes, planes through a
+// vertex and oblique planes: both parts stay closed and the volume is conserved.
+TEST(PlaneSplit, RandomCutsOfStarPrisms) {
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int iter = 0; iter < 600; ++iter) {
+    const int n = 5 + iter % 12;
+    Polygon star;
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * i / n;
+      const double r = iter % 2 ? (i % 2 ? 4 : 10) : 4 + 6 * u(rng);
+      // Quarter-metre grid, so cuts often pass exactly through vertices and along edges.
+      star.outer.push_back(
+          {std::round(r * std::cos(a) * 4) / 4, std::round(r * std::sin(a) * 4) / 4});
+    }
+    if (iter % 3 == 0) star.holes.push_back({{-1, -1}, {-1, 1}, {1, 1}, {1, -1}});
+    Mesh m = prism(star, 1 + 3 * u(rng));
+    if (iter % 4 == 1) transform_mesh(m, rotation({u(rng), u(rng), u(rng)}, 360 * u(rng)));
+    const Vec3 vertex = m.position(static_cast<std::uint32_t>(rng() % m.vertex_count()));
+    const Vec3 random_normal = normalized(Vec3{u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5});
+    Plane plane;
+    switch (iter % 5) {
+      case 0:
+        plane = {{0, 0, 1}, std::round(u(rng) * 4) / 2};
+        break;
+      case 1:
+        plane = {{1, 0, 0}, std::round((u(rng) * 20 - 10) * 4) / 4};
+        break;
+      case 2:
+        plane = {random_normal, dot(random_normal, vertex)};
+        break;
+      case 3:
+        plane = {{0, 1, 0}, vertex.y};
+        break;
+      default:
+        plane = {random_normal, (u(rng) - 0.5) * 5};
+        break;
+    }
+    const SplitResult r = split(m, plane, capped());
+    ASSERT_TRUE(r.ok()) << "iteration " << iter << ": " << split_status_message(r.status);
+    EXPECT_NEAR(volume(r.negative) + volume(r.positive), volume(m), 1e-9 * volume(m))
+        << "iteration " << iter;
+    EXPECT_TRUE(r.negative.empty() || check(r.negative).closed) << "iteration " << iter;
+    EXPECT_TRUE(r.positive.empty() || check(r.positive).closed) << "iteration " << iter;
   }
 }
 
