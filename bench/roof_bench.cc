@@ -1,0 +1,83 @@
+// Skeleton roofs and mass shells. Run: build/bench/roof_bench --benchmark_repetitions=5
+// --benchmark_report_aggregates_only=true (figures in docs/kernel-roofs.md).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "kernel/mass.h"
+#include "kernel/roof.h"
+#include "kernel/skeleton.h"
+
+namespace insula::kernel {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A star-shaped, non-convex footprint with n vertices (alternating radii), handled by CGAL.
+Polygon star(int n) {
+  Polygon p;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * kPi * i / n;
+    const double r = i % 2 == 0 ? 20.0 : 16.0 + 0.37 * std::sin(i * 1.7);
+    p.outer.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return p;
+}
+
+// A convex footprint with n vertices (an ellipse), handled by the convex wavefront.
+Polygon ellipse(int n) {
+  Polygon p;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * kPi * i / n;
+    p.outer.push_back({20 * std::cos(a), 12 * std::sin(a)});
+  }
+  return p;
+}
+
+Polygon l_shape8() {
+  return {{{0, 0}, {14, 0}, {14, 6}, {10, 6}, {6, 6}, {6, 12}, {3, 12}, {0, 12}}, {}};
+}
+
+void BM_HipRoofStar(benchmark::State& state) {
+  const Polygon p = star(static_cast<int>(state.range(0)));
+  RoofSpec spec;
+  for (auto _ : state) {
+    RoofResult r = build_roof(p, spec, 10);
+    benchmark::DoNotOptimize(r.mesh.face_count());
+  }
+}
+BENCHMARK(BM_HipRoofStar)->Arg(16)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
+
+void BM_HipRoofConvex(benchmark::State& state) {
+  const Polygon p = ellipse(static_cast<int>(state.range(0)));
+  RoofSpec spec;
+  for (auto _ : state) {
+    RoofResult r = build_roof(p, spec, 10);
+    benchmark::DoNotOptimize(r.mesh.face_count());
+  }
+}
+BENCHMARK(BM_HipRoofConvex)->Arg(16)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
+
+void BM_SkeletonStar(benchmark::State& state) {
+  const Polygon p = star(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    auto s = interior_straight_skeleton(p);
+    benchmark::DoNotOptimize(s.has_value());
+  }
+}
+BENCHMARK(BM_SkeletonStar)->Arg(16)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
+
+void BM_MassHip(benchmark::State& state, Polygon footprint) {
+  MassSpec spec;
+  spec.wall_height = 9;
+  for (auto _ : state) {
+    MassResult r = build_mass(footprint, spec);
+    benchmark::DoNotOptimize(r.mesh.face_count());
+  }
+}
+BENCHMARK_CAPTURE(BM_MassHip, l_shape_8, l_shape8())->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_MassHip, rectangle, Polygon{{{0, 0}, {14, 0}, {14, 8}, {0, 8}}, {}})
+    ->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace insula::kernel
