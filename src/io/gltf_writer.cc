@@ -28,8 +28,12 @@ constexpr std::uint32_t kGlbMagic = 0x46546C67;   // "glTF"
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
 constexpr std::uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
 
+// Little-endian whatever the host (glTF 2.0, "Binary glTF Layout").
 void append_u32(std::string& out, std::uint32_t value) {
-  for (int shift = 0; shift < 32; shift += 8) out += static_cast<char>((value >> shift) & 0xFFU);
+  const char bytes[4] = {static_cast<char>(value & 0xFFU), static_cast<char>((value >> 8) & 0xFFU),
+                         static_cast<char>((value >> 16) & 0xFFU),
+                         static_cast<char>((value >> 24) & 0xFFU)};
+  out.append(bytes, 4);
 }
 
 void append_f32(std::string& out, float value) {
@@ -171,7 +175,9 @@ json Builder::part_node(const shape::Part& part, std::size_t index) {
   const std::string name = part.name.empty() ? "part" + std::to_string(index) : part.name;
   json extras = attributes_json(part.attributes);
   if (!extras.contains("kind")) extras["kind"] = kind_name(part.kind);
-  json node = {{"name", name}, {"extras", extras}};
+  json node = json::object();
+  node["name"] = name;
+  node["extras"] = std::move(extras);
   std::map<std::uint32_t, Primitive> by_material;
   for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
     add_face(part.mesh, f, by_material[materials_.index(part.mesh.tag(f))]);
@@ -181,7 +187,10 @@ json Builder::part_node(const shape::Part& part, std::size_t index) {
     if (primitive.index_count > 0) primitives.push_back(add_primitive(primitive, material));
   }
   if (!primitives.empty()) {
-    meshes_.push_back({{"name", name}, {"primitives", primitives}});
+    json mesh = json::object();
+    mesh["name"] = name;
+    mesh["primitives"] = std::move(primitives);
+    meshes_.push_back(std::move(mesh));
     node["mesh"] = meshes_.size() - 1;
   }
   return node;
@@ -221,20 +230,20 @@ json Builder::build() {
       children.push_back(nodes_.size() - 1);
     }
     json node = {{"name", building.id.empty() ? "building" + std::to_string(b) : building.id}};
-    if (!children.empty()) node["children"] = children;
+    if (!children.empty()) node["children"] = std::move(children);
     if (!building.attributes.empty()) node["extras"] = attributes_json(building.attributes);
     nodes_.push_back(std::move(node));
     roots.push_back(nodes_.size() - 1);
   }
   json scene = {{"name", "Insula"}, {"extras", scene_extras()}};
-  if (!roots.empty()) scene["nodes"] = roots;
-  json gltf = {{"asset", {{"version", "2.0"}, {"generator", "Insula"}}},
-               {"scene", 0},
-               {"scenes", json::array({scene})}};
-  if (!nodes_.empty()) gltf["nodes"] = nodes_;
+  if (!roots.empty()) scene["nodes"] = std::move(roots);
+  json gltf = {{"asset", {{"version", "2.0"}, {"generator", "Insula"}}}, {"scene", 0}};
+  gltf["scenes"] = json::array();
+  gltf["scenes"].push_back(std::move(scene));
+  if (!nodes_.empty()) gltf["nodes"] = std::move(nodes_);
   if (!meshes_.empty()) {
-    gltf["meshes"] = meshes_;
-    gltf["accessors"] = accessors_;
+    gltf["meshes"] = std::move(meshes_);
+    gltf["accessors"] = std::move(accessors_);
     gltf["materials"] = materials_json();
     gltf["bufferViews"] = {{{"buffer", 0},
                             {"byteLength", vertex_bytes_.size()},
@@ -244,7 +253,8 @@ json Builder::build() {
                             {"byteOffset", vertex_bytes_.size()},
                             {"byteLength", index_bytes_.size()},
                             {"target", kElementArrayBuffer}}};
-    binary_ = vertex_bytes_ + index_bytes_;
+    binary_.reserve(vertex_bytes_.size() + index_bytes_.size());
+    binary_.append(vertex_bytes_).append(index_bytes_);
     gltf["buffers"] = {{{"byteLength", binary_.size()}}};
   }
   return gltf;
@@ -267,11 +277,15 @@ std::string base64(const std::string& bytes) {
   return out;
 }
 
-void append_chunk(std::string& out, std::string data, char pad, std::uint32_t type) {
-  while (data.size() % 4 != 0) data += pad;
-  append_u32(out, static_cast<std::uint32_t>(data.size()));
+std::size_t padded(std::size_t size) {
+  return (size + 3) / 4 * 4;
+}
+
+void append_chunk(std::string& out, const std::string& data, char pad, std::uint32_t type) {
+  append_u32(out, static_cast<std::uint32_t>(padded(data.size())));
   append_u32(out, type);
   out += data;
+  out.append(padded(data.size()) - data.size(), pad);
 }
 
 bool has_gltf_extension(const std::filesystem::path& path) {
@@ -286,14 +300,18 @@ bool has_gltf_extension(const std::filesystem::path& path) {
 std::string glb_bytes(const shape::Scene& scene) {
   Builder builder(scene);
   const json gltf = builder.build();
-  std::string chunks;
-  append_chunk(chunks, gltf.dump(), ' ', kChunkJson);
-  if (!builder.binary().empty()) append_chunk(chunks, builder.binary(), '\0', kChunkBin);
+  const std::string text = gltf.dump();
+  const std::string& binary = builder.binary();
+  const std::size_t total =
+      12 + 8 + padded(text.size()) + (binary.empty() ? 0 : 8 + padded(binary.size()));
   std::string out;
+  out.reserve(total);
   append_u32(out, kGlbMagic);
   append_u32(out, 2);
-  append_u32(out, static_cast<std::uint32_t>(12 + chunks.size()));
-  return out + chunks;
+  append_u32(out, static_cast<std::uint32_t>(total));
+  append_chunk(out, text, ' ', kChunkJson);
+  if (!binary.empty()) append_chunk(out, binary, '\0', kChunkBin);
+  return out;
 }
 
 std::string gltf_text(const shape::Scene& scene) {
