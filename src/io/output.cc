@@ -17,7 +17,8 @@ namespace {
 bool ends_with(const std::string& text, const std::string& suffix) {
   if (text.size() < suffix.size()) return false;
   return std::equal(suffix.rbegin(), suffix.rend(), text.rbegin(), [](char a, char b) {
-    return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+    return std::tolower(static_cast<unsigned char>(a)) ==
+           std::tolower(static_cast<unsigned char>(b));
   });
 }
 
@@ -31,7 +32,9 @@ std::string output_format_name(const std::string& path) {
   return {};
 }
 
-bool is_supported_output(const std::string& path) { return !output_format_name(path).empty(); }
+bool is_supported_output(const std::string& path) {
+  return !output_format_name(path).empty();
+}
 
 std::string write_scene(const shape::Scene& scene, const std::string& path) {
   const std::string format = output_format_name(path);

@@ -1,12 +1,12 @@
-// The interior straight skeleton of a polygon with holes (Aichholzer, Aurenhammer, Alberts, Gärtner,
-// "A novel type of skeleton for polygons", J.UCS 1995), computed by CGAL 5.5's
+// The interior straight skeleton of a polygon with holes (Aichholzer, Aurenhammer, Alberts,
+// Gärtner, "A novel type of skeleton for polygons", J.UCS 1995), computed by CGAL 5.5's
 // create_interior_straight_skeleton_2 and returned in plain types so no CGAL header leaks out.
 //
 // Invariants of a Skeleton built from polygon P (normalized: outer counter-clockwise, holes
 // clockwise):
 //  - vertices [0, contour_count) are P's vertices in ring order (outer ring, then each hole), with
-//    time 0; the others are skeleton nodes with time > 0 = their distance to the supporting lines of
-//    the edges whose faces meet there (the offset distance at which the wavefront reaches them).
+//    time 0; the others are skeleton nodes with time > 0 = their distance to the supporting lines
+//    of the edges whose faces meet there (the offset distance at which the wavefront reaches them).
 //  - contour edge e runs from contour vertex e to the next vertex of the same ring; face(e) is the
 //    loop of vertex ids bounding the region swept by edge e, counter-clockwise seen from above
 //    (interior on the left), starting with edge e's two end points.

@@ -30,7 +30,7 @@ if [ "$count" -gt 2 ] || echo "$cgal" | grep -qE '\.h$'; then
   status=1
 fi
 # kernel does no file I/O.
-if grep -rnE '#include <(fstream|cstdio)>' "$root/src/kernel"; then
+if grep -rnE '#include <fstream>|fopen|std::(i|o)?fstream|std::filesystem' "$root/src/kernel"; then
   echo "kernel must not do file I/O"
   status=1
 fi

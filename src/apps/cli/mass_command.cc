@@ -1,8 +1,8 @@
 #include "apps/cli/mass_command.h"
 
-#include <CLI/CLI.hpp>
 #include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/parallel_for.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -41,7 +41,8 @@ struct BuildingPlan {
   kernel::MassSpec spec;
 };
 
-std::optional<double> number_property(const shape::AttributeMap& properties, const std::string& name) {
+std::optional<double> number_property(const shape::AttributeMap& properties,
+                                      const std::string& name) {
   auto it = properties.find(name);
   if (it == properties.end()) return std::nullopt;
   if (const double* d = std::get_if<double>(&it->second)) return *d;
@@ -54,8 +55,7 @@ std::optional<double> number_property(const shape::AttributeMap& properties, con
 }
 
 std::string feature_name(const io::Footprint& footprint) {
-  return "feature " + std::to_string(footprint.feature_index) + " (id \"" + footprint.id +
-         "\")";
+  return "feature " + std::to_string(footprint.feature_index) + " (id \"" + footprint.id + "\")";
 }
 
 double plan_height(const MassOptions& options, const io::Footprint& footprint,
@@ -65,8 +65,9 @@ double plan_height(const MassOptions& options, const io::Footprint& footprint,
   if (h && std::isfinite(*h) && *h > 0 && *h < 1000) return *h;
   const bool present = footprint.properties.count(options.height_attr) > 0;
   warnings.push_back(feature_name(footprint) + ": " +
-                     (present ? "property '" + options.height_attr + "' is not a height in (0, 1000) m"
-                              : "no '" + options.height_attr + "' property") +
+                     (present
+                          ? "property '" + options.height_attr + "' is not a height in (0, 1000) m"
+                          : "no '" + options.height_attr + "' property") +
                      "; using " + shape::to_string(options.default_height) + " m");
   return options.default_height;
 }
@@ -78,8 +79,8 @@ kernel::RoofType plan_roof(const MassOptions& options, const io::Footprint& foot
     if (it != footprint.properties.end()) {
       const std::string name = shape::to_string(it->second);
       if (std::optional<kernel::RoofType> known = kernel::roof_type_from_name(name)) return *known;
-      warnings.push_back(feature_name(footprint) + ": unknown roof '" + name +
-                         "'; using " + options.roof);
+      warnings.push_back(feature_name(footprint) + ": unknown roof '" + name + "'; using " +
+                         options.roof);
     }
   }
   return kernel::roof_type_from_name(options.roof).value_or(kernel::RoofType::kHip);
@@ -122,8 +123,8 @@ BuiltBuilding build_one(const io::Footprint& footprint, const BuildingPlan& plan
     kernel::MassResult mass = kernel::build_mass(footprint.polygons[i], plan.spec);
     if (!mass.message.empty()) out.messages.push_back(mass.message);
     shape::Part part;
-    part.name = footprint.polygons.size() == 1 ? footprint.id
-                                               : footprint.id + "-part-" + std::to_string(i);
+    part.name =
+        footprint.polygons.size() == 1 ? footprint.id : footprint.id + "-part-" + std::to_string(i);
     part.kind = shape::PartKind::kBuildingPart;
     part.mesh = std::move(mass.mesh);
     out.watertight = out.watertight && !part.mesh.empty() && kernel::is_watertight(part.mesh);
@@ -140,22 +141,24 @@ std::vector<BuiltBuilding> build_all(const io::FootprintSet& set,
   std::atomic<std::size_t> done{0};
   Stopwatch clock;
   std::atomic<double> last_report{0};
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, built.size(), 64),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        built[i] = build_one(set.footprints[i], plans[i]);
-                      }
-                      const std::size_t now = done += range.size();
-                      const double t = clock.seconds();
-                      double last = last_report.load();
-                      if (!quiet && t - last > 1.0 && last_report.compare_exchange_strong(last, t)) {
-                        std::fprintf(stderr, "insula: built %zu of %zu buildings\n", now, built.size());
-                      }
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, built.size(), 64),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          built[i] = build_one(set.footprints[i], plans[i]);
+        }
+        const std::size_t now = done += range.size();
+        const double t = clock.seconds();
+        double last = last_report.load();
+        if (!quiet && t - last > 1.0 && last_report.compare_exchange_strong(last, t)) {
+          std::fprintf(stderr, "insula: built %zu of %zu buildings\n", now, built.size());
+        }
+      });
   return built;
 }
 
-void print_diagnostics(const std::vector<base::Diagnostic>& diagnostics, const base::Source& source) {
+void print_diagnostics(const std::vector<base::Diagnostic>& diagnostics,
+                       const base::Source& source) {
   for (const base::Diagnostic& d : diagnostics) {
     std::fprintf(stderr, "%s\n", base::render(d, &source).c_str());
   }
@@ -164,23 +167,27 @@ void print_diagnostics(const std::vector<base::Diagnostic>& diagnostics, const b
 }  // namespace
 
 void add_mass_command(CLI::App& app, MassOptions& options) {
-  CLI::App* mass = app.add_subcommand("mass", "LOD2 mass models: one closed roofed building per footprint");
+  CLI::App* mass =
+      app.add_subcommand("mass", "LOD2 mass models: one closed roofed building per footprint");
   mass->add_option("FOOTPRINTS", options.input, "GeoJSON file of Polygon/MultiPolygon footprints")
       ->required();
-  mass->add_option("-o,--output", options.outputs,
-                   "output file, format by extension (.obj .glb .gltf .city.json .svg .png); repeatable")
+  mass->add_option(
+          "-o,--output", options.outputs,
+          "output file, format by extension (.obj .glb .gltf .city.json .svg .png); repeatable")
       ->required();
-  auto* roof = mass->add_option("--roof", options.roof,
-                                "roof type: flat, shed, gable, hip, pyramid, mansard, holed_mansard "
-                                "(default hip; else the feature's 'roof' property)")
-                   ->check(CLI::IsMember(kRoofNames));
+  auto* roof =
+      mass->add_option("--roof", options.roof,
+                       "roof type: flat, shed, gable, hip, pyramid, mansard, holed_mansard "
+                       "(default hip; else the feature's 'roof' property)")
+          ->check(CLI::IsMember(kRoofNames));
   auto* pitch = mass->add_option("--pitch", options.pitch_deg,
                                  "roof pitch in degrees (default 30; else the feature's 'pitch')")
                     ->check(CLI::Range(1.0, 75.0));
   mass->add_option("--overhang", options.overhang, "roof overhang in meters (default 0)")
       ->check(CLI::Range(0.0, 5.0));
-  auto* height = mass->add_option("--height", options.height, "wall height in meters for every building")
-                     ->check(CLI::Range(0.5, 1000.0));
+  auto* height =
+      mass->add_option("--height", options.height, "wall height in meters for every building")
+          ->check(CLI::Range(0.5, 1000.0));
   mass->add_option("--height-attr", options.height_attr,
                    "feature property holding the wall height (default 'height')")
       ->excludes(height);
@@ -202,14 +209,17 @@ int run_mass(const MassOptions& options) {
   MassReport report;
   for (const std::string& out : options.outputs) {
     if (!io::is_supported_output(out)) {
-      std::fprintf(stderr, "insula: %s: unknown output format (use .obj .glb .gltf .city.json .svg .png)\n",
+      std::fprintf(stderr,
+                   "insula: %s: unknown output format (use .obj .glb .gltf .city.json .svg .png)\n",
                    out.c_str());
       return kExitUsage;
     }
   }
-  const int threads = options.threads > 0 ? options.threads
-                                          : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  const int threads = options.threads > 0
+                          ? options.threads
+                          : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                            static_cast<std::size_t>(threads));
   report.threads = threads;
 
   Stopwatch read_clock;
@@ -233,13 +243,15 @@ int run_mass(const MassOptions& options) {
   scene.crs = set->crs;
   scene.buildings.reserve(built.size());
   for (BuiltBuilding& b : built) {
-    for (std::string& m : b.messages) warnings.push_back("building \"" + b.building.id + "\": " + m);
+    for (std::string& m : b.messages)
+      warnings.push_back("building \"" + b.building.id + "\": " + m);
     report.count_building(b.building, b.watertight);
     scene.buildings.push_back(std::move(b.building));
   }
   report.stage("build", build_clock.seconds());
   if (!options.quiet) {
-    for (const std::string& w : warnings) std::fprintf(stderr, "%s: warning: %s\n", options.input.c_str(), w.c_str());
+    for (const std::string& w : warnings)
+      std::fprintf(stderr, "%s: warning: %s\n", options.input.c_str(), w.c_str());
   }
   report.warnings = warnings.size() + set.diagnostics().size();
 
@@ -265,7 +277,8 @@ int run_mass(const MassOptions& options) {
     }
   }
   if (!options.quiet) {
-    std::fprintf(stderr, "insula: %zu buildings in %.2f s\n", scene.buildings.size(), report.total_seconds);
+    std::fprintf(stderr, "insula: %zu buildings in %.2f s\n", scene.buildings.size(),
+                 report.total_seconds);
   }
   for (const std::string& out : written) std::printf("%s\n", out.c_str());
   return kExitDone;
