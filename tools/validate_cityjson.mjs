@@ -1,8 +1,8 @@
 #!/usr/bin/env node
 // Validates CityJSON 2.0 files against the CityJSON 2.0.2 JSON schemas with ajv (draft-07).
 // Usage: node tools/validate_cityjson.mjs [--schema-dir DIR] FILE...
-// The schema folder defaults to $INSULA_CITYJSON_SCHEMA, else ../shared/data/cityjson-2.0.2 beside
-// the repository (where the project keeps its shared data). cityjson.min.schema.json is the root;
+// The schema folder defaults to $INSULA_CITYJSON_SCHEMA, else tools/schemas/cityjson-2.0.2 (a copy of
+// the official CityJSON 2.0.2 schemas, so a fresh clone validates without anything beside it). cityjson.min.schema.json is the root;
 // every other *.schema.json in the folder is registered by its $id so $refs between them resolve.
 // Exit status: 0 when every file is valid, 1 otherwise (errors are printed), 2 on usage error.
 import fs from 'node:fs';
@@ -14,7 +14,7 @@ import addFormats from 'ajv-formats';
 const here = path.dirname(fileURLToPath(import.meta.url));
 let args = process.argv.slice(2);
 let schemaDir = process.env.INSULA_CITYJSON_SCHEMA ??
-    path.resolve(here, '..', '..', 'shared', 'data', 'cityjson-2.0.2');
+    path.resolve(here, 'schemas', 'cityjson-2.0.2');
 if (args[0] === '--schema-dir') {
   schemaDir = args[1];
   args = args.slice(2);
