@@ -46,6 +46,12 @@ Vec3 loop_area_vector(const std::vector<Vec3>& points, std::span<const std::uint
 // at a point, or a hole touching its outer ring) into simple loops.
 std::vector<std::vector<std::uint32_t>> split_at_repeats(const std::vector<std::uint32_t>& walk) {
   std::vector<std::vector<std::uint32_t>> loops;
+  std::vector<std::uint32_t> sorted = walk;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) {
+    if (walk.size() >= 3) loops.push_back(walk);
+    return loops;  // the common case: already simple
+  }
   std::vector<std::uint32_t> stack;
   std::unordered_map<std::uint32_t, std::size_t> position;
   for (std::uint32_t v : walk) {
@@ -75,7 +81,8 @@ struct LoopVertex {
 
 // A maximal run of face-boundary edges on one side; it starts and ends on the cut line.
 struct Chain {
-  std::vector<std::uint32_t> ids;
+  std::size_t first = 0;  // index in the face loop of its start vertex
+  std::size_t count = 0;  // number of vertices (edges + 1)
   double t_start = 0;
   double t_end = 0;
   std::size_t next = 0;  // chain reached by following the cut line from this chain's end
@@ -142,15 +149,15 @@ void Splitter::split_face(std::size_t face) {
     negative |= side_[v] < 0;
     positive |= side_[v] > 0;
   }
+  if (negative != positive) {
+    add_piece(positive ? kPositive : kNegative, loop, mesh_.tag(face));
+    return;
+  }
   const Vec3 face_normal = kernel::face_normal(mesh_, face);
-  if (!negative && !positive) {
+  if (!negative) {
     // In the plane: it bounds the part it faces away from.
     if (face_normal == Vec3{}) return;
     add_piece(dot(face_normal, normal_) > 0 ? kNegative : kPositive, loop, mesh_.tag(face));
-    return;
-  }
-  if (!negative || !positive) {
-    add_piece(positive ? kPositive : kNegative, loop, mesh_.tag(face));
     return;
   }
   // Direction of the cut line: walking along +d, the face lies on the left of the line on the
@@ -198,12 +205,11 @@ std::vector<Chain> Splitter::chains(const std::vector<LoopVertex>& loop, int sig
       continue;
     }
     if (!open) {
-      result.push_back({{loop[i].id}, loop[i].t, 0, 0});
+      result.push_back({i, 1, loop[i].t, 0, 0});
       open = true;
     }
-    const LoopVertex& b = loop[(i + 1) % m];
-    result.back().ids.push_back(b.id);
-    result.back().t_end = b.t;
+    ++result.back().count;
+    result.back().t_end = loop[(i + 1) % m].t;
   }
   return result;
 }
@@ -246,7 +252,9 @@ void Splitter::emit_side(const std::vector<LoopVertex>& loop, int sigma, Vec3 fa
     std::vector<std::uint32_t> walk;
     for (std::size_t k = start; !visited[k]; k = runs[k].next) {
       visited[k] = 1;
-      walk.insert(walk.end(), runs[k].ids.begin(), runs[k].ids.end());
+      for (std::size_t j = 0; j < runs[k].count; ++j) {
+        walk.push_back(loop[(runs[k].first + j) % loop.size()].id);
+      }
       const double lo = std::min(runs[k].t_end, runs[runs[k].next].t_start) + tol;
       const double hi = std::max(runs[k].t_end, runs[runs[k].next].t_start) - tol;
       for (const LoopVertex& v : on_line) {
@@ -331,8 +339,13 @@ bool trace_cap_loops(const std::vector<std::pair<std::uint32_t, std::uint32_t>>&
       }
       std::size_t next = edges.size();
       double best = 0;
-      for (std::size_t candidate : outgoing[to]) {
+      const std::vector<std::size_t>& choices = outgoing[to];
+      for (std::size_t candidate : choices) {
         if (used[candidate]) continue;
+        if (choices.size() == 1) {
+          next = candidate;  // no junction: no angle needed
+          break;
+        }
         const double turn =
             clockwise_angle(flat[from] - flat[to], flat[edges[candidate].second] - flat[to]);
         if (next == edges.size() || turn < best) {

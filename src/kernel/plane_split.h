@@ -59,7 +59,9 @@ struct SplitResult {
   bool ok() const { return status == SplitStatus::kOk; }
 };
 
-// Splits `mesh` by `plane`. On kOpenCut or kCapTriangulationFailed the parts are still returned,
+// Splits `mesh` by `plane`. Capping needs faces that share vertex indices along their edges
+// (kernel::weld() a polygon soup first); otherwise the cut edges do not chain and kOpenCut is
+// reported. On kOpenCut or kCapTriangulationFailed the parts are still returned,
 // cut but with the failing caps left out (so they are open); on the other errors both are empty.
 SplitResult split(const Mesh& mesh, const Plane& plane, const SplitOptions& options = {});
 
