@@ -36,13 +36,14 @@ bool is_supported_output(const std::string& path) {
   return !output_format_name(path).empty();
 }
 
-std::string write_scene(const shape::Scene& scene, const std::string& path) {
+std::string write_scene(const shape::Scene& scene, const std::string& path,
+                        const OutputOptions& options) {
   const std::string format = output_format_name(path);
   if (format == "obj") return write_obj(scene, path);
   if (format == "glb" || format == "gltf") return write_gltf(scene, path);
   if (format == "cityjson") return write_cityjson(scene, path);
-  if (format == "svg") return write_svg(scene, path);
-  if (format == "png") return write_png(scene, path);
+  if (format == "svg") return write_svg(scene, path, options.svg);
+  if (format == "png") return write_png(scene, path, options.render);
   return path + ": unknown output format";
 }
 

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "io/png_renderer.h"
+#include "io/svg_writer.h"
 #include "shape/scene.h"
 
 namespace insula::io {
@@ -12,8 +14,15 @@ namespace insula::io {
 bool is_supported_output(const std::string& path);
 // "obj", "glb", "gltf", "cityjson", "svg", "png"; empty when unsupported.
 std::string output_format_name(const std::string& path);
+// Options of the formats that have any (the others ignore them).
+struct OutputOptions {
+  RenderOptions render;
+  SvgOptions svg;
+};
+
 // Writes the scene in the path's format, atomically. Empty string on success, else the reason.
-std::string write_scene(const shape::Scene& scene, const std::string& path);
+std::string write_scene(const shape::Scene& scene, const std::string& path,
+                        const OutputOptions& options = {});
 // Removes files this run wrote (and an OBJ's .mtl), so a failed run leaves nothing behind.
 void remove_outputs(const std::vector<std::string>& paths);
 

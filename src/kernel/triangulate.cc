@@ -241,7 +241,9 @@ std::optional<std::uint32_t> Triangulator::find_bridge(std::uint32_t hole, std::
     i = next(i);
   } while (i != outer);
   std::sort(candidates.begin(), candidates.end());
-  for (const auto& [distance2, v] : candidates) {
+  for (const auto& candidate : candidates) {
+    const double distance2 = candidate.first;
+    const std::uint32_t v = candidate.second;
     if (budget_ < candidates.size()) return std::nullopt;
     budget_ -= candidates.size();
     if (distance2 == 0) {

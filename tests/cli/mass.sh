@@ -49,6 +49,17 @@ done
 expect_exit 0 "overhang" "$insula" mass "$example" --overhang 0.6 -o "$tmp/oh.city.json" --report "$tmp/oh.json" --quiet
 node "$root/tools/validate_cityjson.mjs" "$tmp/oh.city.json" >/dev/null 2>&1 || fail "CityJSON with overhang"
 
+# Picture options: the PNG has the asked size; a cutaway view differs from the closed one.
+expect_exit 0 "image size" "$insula" mass "$example" -o "$tmp/small.png" --image-size 320x200 --quiet
+node -e 'const b = require("fs").readFileSync(process.argv[1]);
+         if (b.readUInt32BE(16) !== 320 || b.readUInt32BE(20) !== 200) process.exit(1);' "$tmp/small.png" ||
+  fail "--image-size 320x200 gives a 320x200 PNG"
+expect_exit 0 "cutaway" "$insula" mass "$example" -o "$tmp/cut.png" --image-size 320x200 --cut-height 3 --quiet
+cmp -s "$tmp/small.png" "$tmp/cut.png" && fail "--cut-height changes the picture"
+expect_exit 0 "plan view" "$insula" mass "$example" -o "$tmp/plan.png" --elevation 90 --azimuth 270 --quiet
+expect_exit 2 "bad image size" "$insula" mass "$example" -o "$tmp/x.png" --image-size 10x10000
+expect_exit 2 "bad elevation" "$insula" mass "$example" -o "$tmp/x.png" --elevation 100
+
 # Same output whatever the thread count.
 "$insula" mass "$example" --threads 1 -o "$tmp/a.obj" -o "$tmp/a.glb" --quiet >/dev/null
 "$insula" mass "$example" --threads 2 -o "$tmp/b.obj" -o "$tmp/b.glb" --quiet >/dev/null

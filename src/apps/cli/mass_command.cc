@@ -15,6 +15,7 @@
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/mass_report.h"
 #include "apps/cli/stopwatch.h"
+#include "apps/cli/view_options.h"
 #include "base/diagnostic.h"
 #include "io/geojson_reader.h"
 #include "io/output.h"
@@ -198,6 +199,7 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
   mass->add_option("--threads", options.threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   mass->add_flag("-q,--quiet", options.quiet, "no progress or warnings on stderr");
+  add_view_options(*mass, options.output);
   mass->callback([&options, roof, pitch]() {
     options.roof_given = roof->count() > 0;
     options.pitch_given = pitch->count() > 0;
@@ -258,7 +260,7 @@ int run_mass(const MassOptions& options) {
   std::vector<std::string> written;
   for (const std::string& out : options.outputs) {
     Stopwatch write_clock;
-    const std::string error = io::write_scene(scene, out);
+    const std::string error = io::write_scene(scene, out, options.output);
     if (!error.empty()) {
       std::fprintf(stderr, "insula: error: %s\n", error.c_str());
       io::remove_outputs(written);  // a failed run leaves nothing behind

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "io/output.h"
+
 namespace CLI {
 class App;
 }
@@ -23,6 +25,7 @@ struct MassOptions {
   std::string report;
   int threads = 0;
   bool quiet = false;
+  io::OutputOptions output;  // PNG view and SVG options
   // Set when the flag was given on the command line; a given flag wins over feature properties.
   bool roof_given = false;
   bool pitch_given = false;

@@ -1,0 +1,66 @@
+#include "apps/cli/view_options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <string>
+
+namespace insula::cli {
+namespace {
+
+// Parses "WIDTHxHEIGHT" (pixels, 16..8192 each).
+std::string parse_size(const std::string& text, io::RenderOptions& render) {
+  int width = 0;
+  int height = 0;
+  char x = 0;
+  char rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &rest) != 3 ||
+      (x != 'x' && x != 'X') || width < 16 || height < 16 || width > 8192 || height > 8192) {
+    return "expected WIDTHxHEIGHT in pixels, each 16 to 8192, e.g. 1600x1200";
+  }
+  render.width = width;
+  render.height = height;
+  return {};
+}
+
+}  // namespace
+
+void add_view_options(CLI::App& command, io::OutputOptions& output) {
+  io::RenderOptions& render = output.render;
+  command
+      .add_option_function<std::string>(
+          "--image-size",
+          [&render](const std::string& text) {
+            const std::string error = parse_size(text, render);
+            if (!error.empty()) throw CLI::ValidationError("--image-size", error);
+          },
+          "PNG size in pixels, WIDTHxHEIGHT (default 1024x768)")
+      ->type_name("WxH");
+  command
+      .add_option("--azimuth", render.azimuth_deg,
+                  "PNG view: direction the camera looks from, degrees counter-clockwise from east "
+                  "(default 225, south-west)")
+      ->check(CLI::Range(-360.0, 360.0));
+  command
+      .add_option("--elevation", render.elevation_deg,
+                  "PNG view: camera elevation in degrees, 90 = plan (default 35)")
+      ->check(CLI::Range(5.0, 90.0));
+  command.add_flag("--cutaway", render.cutaway,
+                   "PNG view: cut the buildings open to show interiors");
+  command
+      .add_option_function<double>(
+          "--cut-height",
+          [&render](double height) {
+            render.cutaway = true;
+            render.cut_height = height;
+          },
+          "PNG cutaway at this height in meters (local Z; footprints stand on 0); implies "
+          "--cutaway")
+      ->check(CLI::Range(-1000.0, 10000.0));
+  command
+      .add_option("--svg-scale", output.svg.pixels_per_meter,
+                  "SVG picture scale in pixels per meter (default: fit 1000 pixels)")
+      ->check(CLI::Range(0.01, 1000.0));
+}
+
+}  // namespace insula::cli
