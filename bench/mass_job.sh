@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end benchmark of `insula mass` on generated footprints with hip roofs.
-# Usage: bench/mass_job.sh [COUNT] [RUNS]   (prints each run and the median wall time)
+# Usage: [INSULA=path/to/insula] bench/mass_job.sh [COUNT] [RUNS]   (prints each run and the median)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+insula=${INSULA:-./build/src/apps/cli/insula}
 count=${1:-10000}
 runs=${2:-5}
 tmp=$(mktemp -d)
@@ -11,7 +12,7 @@ node bench/make_footprints.mjs "$count" "$tmp/in.geojson"
 times=()
 for _ in $(seq "$runs"); do
   start=$(date +%s%N)
-  ./build/src/apps/cli/insula mass "$tmp/in.geojson" --roof hip -o "$tmp/out.glb" --report "$tmp/r.json" --quiet >/dev/null
+  "$insula" mass "$tmp/in.geojson" --roof hip -o "$tmp/out.glb" --report "$tmp/r.json" --quiet >/dev/null
   end=$(date +%s%N)
   ms=$(((end - start) / 1000000))
   t=$(printf '%d.%03d' $((ms / 1000)) $((ms % 1000)))

@@ -128,7 +128,9 @@ BuiltBuilding build_one(const io::Footprint& footprint, const BuildingPlan& plan
         footprint.polygons.size() == 1 ? footprint.id : footprint.id + "-part-" + std::to_string(i);
     part.kind = shape::PartKind::kBuildingPart;
     part.mesh = std::move(mass.mesh);
-    out.watertight = out.watertight && !part.mesh.empty() && kernel::is_watertight(part.mesh);
+    // build_mass promises shared vertices, so the topological check needs no welding.
+    out.watertight = out.watertight && !part.mesh.empty() && kernel::check(part.mesh).closed &&
+                     kernel::volume(part.mesh) > 0;
     out.building.parts.push_back(std::move(part));
   }
   return out;
