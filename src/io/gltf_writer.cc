@@ -6,18 +6,16 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
-#include <variant>
-
-#include <nlohmann/json.hpp>
+#include <span>
+#include <utility>
+#include <vector>
 
 #include "io/atomic_file.h"
+#include "io/json_stream.h"
 #include "io/triangulated.h"
 
 namespace insula::io {
 namespace {
-
-using nlohmann::json;
 
 constexpr std::uint32_t kArrayBuffer = 34962;
 constexpr std::uint32_t kElementArrayBuffer = 34963;
@@ -36,26 +34,9 @@ void append_u32(std::string& out, std::uint32_t value) {
   out.append(bytes, 4);
 }
 
-void append_f32(std::string& out, float value) {
-  append_u32(out, std::bit_cast<std::uint32_t>(value));
-}
-
 // Z-up local meters to glTF's Y-up frame: (x, y, z) -> (x, z, -y), a rotation (keeps handedness).
 std::array<float, 3> to_y_up(kernel::Vec3 p) {
   return {static_cast<float>(p.x), static_cast<float>(p.z), static_cast<float>(-p.y)};
-}
-
-json value_json(const shape::Value& value) {
-  if (const auto* b = std::get_if<bool>(&value)) return *b;
-  if (const auto* d = std::get_if<double>(&value)) return std::isfinite(*d) ? json(*d) : json();
-  if (const auto* s = std::get_if<std::string>(&value)) return *s;
-  return nullptr;
-}
-
-json attributes_json(const shape::AttributeMap& attributes) {
-  json out = json::object();
-  for (const auto& [name, value] : attributes) out[name] = value_json(value);
-  return out;
 }
 
 std::string_view kind_name(shape::PartKind kind) {
@@ -79,185 +60,302 @@ double channel(float value) {
   return std::round(static_cast<double>(value) * 1e6) / 1e6;
 }
 
-// Accumulates the binary buffer and the JSON arrays that describe it.
+std::string part_name(const shape::Part& part, std::size_t index) {
+  return part.name.empty() ? "part" + std::to_string(index) : part.name;
+}
+
+// One primitive (the faces of one part showing one material): where its data sits in the buffer.
+// Accessors come in threes: POSITION (with min/max), NORMAL, indices.
+struct PrimitiveRecord {
+  std::uint32_t material = 0;
+  std::uint32_t vertex_count = 0;
+  std::uint32_t index_count = 0;
+  std::size_t position_offset = 0;  // bytes into the vertex view; normals follow the positions
+  std::size_t index_offset = 0;     // bytes into the index view
+  std::array<float, 3> min{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
+                           std::numeric_limits<float>::max()};
+  std::array<float, 3> max{std::numeric_limits<float>::lowest(),
+                           std::numeric_limits<float>::lowest(),
+                           std::numeric_limits<float>::lowest()};
+};
+
+// Fills the binary buffer in one pass over the scene (vertex view: per primitive its positions
+// then its normals; index view after it), then writes the JSON from compact records. Object keys
+// are written in sorted order, so the text is the one nlohmann::json would print.
 class Builder {
  public:
-  explicit Builder(const shape::Scene& scene) : scene_(scene), materials_(scene) {}
+  explicit Builder(const shape::Scene& scene);
 
-  json build();
-  const std::string& binary() const { return binary_; }
+  // The glTF JSON; `buffer_uri` (when not empty) becomes the buffer's "uri".
+  void write_json(JsonStream& json, std::string_view buffer_uri) const;
+  // Appends the binary buffer (vertex view, then index view), little-endian.
+  void append_binary(std::string& out) const;
+  std::size_t binary_size() const { return 4 * (vertices_.size() + indices_.size()); }
 
  private:
-  struct Primitive {
-    std::string positions;  // float32 xyz, Y-up
-    std::string normals;    // float32 xyz, Y-up
-    std::string indices;    // uint32
-    std::uint32_t vertex_count = 0;
-    std::uint32_t index_count = 0;
-    std::array<float, 3> min{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-                             std::numeric_limits<float>::max()};
-    std::array<float, 3> max{std::numeric_limits<float>::lowest(),
-                             std::numeric_limits<float>::lowest(),
-                             std::numeric_limits<float>::lowest()};
-  };
+  void add_part(const kernel::Mesh& mesh);
+  void add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
+                     std::span<const std::pair<std::uint32_t, std::uint32_t>> faces);
+  void add_face(const kernel::Mesh& mesh, std::size_t face, PrimitiveRecord& primitive);
 
-  void add_face(const kernel::Mesh& mesh, std::size_t face, Primitive& primitive);
-  json part_node(const shape::Part& part, std::size_t index);
-  json add_primitive(const Primitive& primitive, std::uint32_t material);
-  std::uint32_t add_accessor(json accessor) {
-    accessors_.push_back(std::move(accessor));
-    return static_cast<std::uint32_t>(accessors_.size() - 1);
-  }
-  json materials_json() const;
-  json scene_extras() const;
+  void write_accessors(JsonStream& json) const;
+  void write_meshes(JsonStream& json) const;
+  void write_nodes(JsonStream& json) const;
+  void write_materials(JsonStream& json) const;
+  void write_buffers(JsonStream& json, std::string_view buffer_uri) const;
+  void write_scene(JsonStream& json) const;
 
   const shape::Scene& scene_;
   MaterialTable materials_;
-  std::string vertex_bytes_;
-  std::string index_bytes_;
-  std::string binary_;
-  json accessors_ = json::array();
-  json meshes_ = json::array();
-  json nodes_ = json::array();
-  std::vector<CornerTriangle> scratch_;
+  std::vector<float> vertices_;         // the vertex view, as floats
+  std::vector<std::uint32_t> indices_;  // the index view
+  std::vector<PrimitiveRecord> primitives_;
+  std::vector<std::uint32_t> part_primitives_;  // primitives of each part, parts in scene order
+
+  // Scratch reused from face to face.
+  FaceTriangulator triangulator_;
+  std::vector<CornerTriangle> triangles_;
+  std::vector<float> normals_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> faces_by_material_;
 };
 
-void Builder::add_face(const kernel::Mesh& mesh, std::size_t face, Primitive& primitive) {
-  scratch_.clear();
-  if (!triangulate_face(mesh, face, scratch_)) return;
+Builder::Builder(const shape::Scene& scene) : scene_(scene), materials_(scene) {
+  // Upper bounds (every face kept): 6 floats per corner, 3 indices per corner beyond two a face.
+  std::size_t corners = 0;
+  std::size_t triangles = 0;
+  for (const shape::Building& building : scene_.buildings) {
+    for (const shape::Part& part : building.parts) {
+      for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
+        const std::size_t n = part.mesh.face(f).size();
+        corners += n;
+        triangles += n >= 3 ? n - 2 : 0;
+      }
+    }
+  }
+  vertices_.reserve(6 * corners);
+  indices_.reserve(3 * triangles);
+  for (const shape::Building& building : scene_.buildings) {
+    for (const shape::Part& part : building.parts) add_part(part.mesh);
+  }
+}
+
+// One primitive per material, materials in index order, faces in mesh order within each.
+void Builder::add_part(const kernel::Mesh& mesh) {
+  faces_by_material_.clear();
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+    faces_by_material_.emplace_back(materials_.index(mesh.tag(f)), f);
+  }
+  std::sort(faces_by_material_.begin(), faces_by_material_.end());
+  const std::size_t first = primitives_.size();
+  const std::span<const std::pair<std::uint32_t, std::uint32_t>> all(faces_by_material_);
+  for (std::size_t begin = 0; begin < all.size();) {
+    std::size_t end = begin;
+    while (end < all.size() && all[end].first == all[begin].first) ++end;
+    add_primitive(mesh, all[begin].first, all.subspan(begin, end - begin));
+    begin = end;
+  }
+  part_primitives_.push_back(static_cast<std::uint32_t>(primitives_.size() - first));
+}
+
+void Builder::add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
+                            std::span<const std::pair<std::uint32_t, std::uint32_t>> faces) {
+  PrimitiveRecord primitive;
+  primitive.material = material;
+  primitive.position_offset = 4 * vertices_.size();
+  primitive.index_offset = 4 * indices_.size();
+  normals_.clear();
+  for (const auto& entry : faces) add_face(mesh, entry.second, primitive);
+  if (primitive.index_count == 0) return;  // every face degenerate: no primitive
+  vertices_.insert(vertices_.end(), normals_.begin(), normals_.end());
+  primitives_.push_back(primitive);
+}
+
+// Flat shading: the face's corners become vertices of their own, all carrying the face normal.
+void Builder::add_face(const kernel::Mesh& mesh, std::size_t face, PrimitiveRecord& primitive) {
+  const kernel::Vec3 newell = kernel::face_normal(mesh, face);
+  triangles_.clear();
+  if (!triangulator_.triangulate(mesh, face, newell, triangles_)) return;
   const auto loop = mesh.face(face);
-  const std::array<float, 3> normal = to_y_up(kernel::face_normal(mesh, face));
+  const std::array<float, 3> normal = to_y_up(newell);
   const std::uint32_t base = primitive.vertex_count;
   for (std::uint32_t vertex : loop) {
     const std::array<float, 3> p = to_y_up(mesh.position(vertex));
     for (std::size_t k = 0; k < 3; ++k) {
-      append_f32(primitive.positions, p[k]);
-      append_f32(primitive.normals, normal[k]);
+      vertices_.push_back(p[k]);
+      normals_.push_back(normal[k]);
       primitive.min[k] = std::min(primitive.min[k], p[k]);
       primitive.max[k] = std::max(primitive.max[k], p[k]);
     }
   }
   primitive.vertex_count += static_cast<std::uint32_t>(loop.size());
-  for (const CornerTriangle& triangle : scratch_) {
-    for (std::uint32_t corner : triangle) append_u32(primitive.indices, base + corner);
+  for (const CornerTriangle& triangle : triangles_) {
+    for (std::uint32_t corner : triangle) indices_.push_back(base + corner);
   }
-  primitive.index_count += static_cast<std::uint32_t>(3 * scratch_.size());
+  primitive.index_count += static_cast<std::uint32_t>(3 * triangles_.size());
 }
 
-json Builder::add_primitive(const Primitive& primitive, std::uint32_t material) {
-  const auto vec3_accessor = [&](const std::string& bytes) {
-    json accessor = {{"bufferView", 0},
-                     {"byteOffset", vertex_bytes_.size()},
-                     {"componentType", kFloat},
-                     {"count", primitive.vertex_count},
-                     {"type", "VEC3"}};
-    vertex_bytes_ += bytes;
-    return accessor;
-  };
-  json position = vec3_accessor(primitive.positions);
-  position["min"] = {primitive.min[0], primitive.min[1], primitive.min[2]};
-  position["max"] = {primitive.max[0], primitive.max[1], primitive.max[2]};
-  const std::uint32_t position_index = add_accessor(std::move(position));
-  const std::uint32_t normal_index = add_accessor(vec3_accessor(primitive.normals));
-  const std::uint32_t index_index = add_accessor({{"bufferView", 1},
-                                                  {"byteOffset", index_bytes_.size()},
-                                                  {"componentType", kUnsignedInt},
-                                                  {"count", primitive.index_count},
-                                                  {"type", "SCALAR"}});
-  index_bytes_ += primitive.indices;
-  return {{"attributes", {{"POSITION", position_index}, {"NORMAL", normal_index}}},
-          {"indices", index_index},
-          {"material", material},
-          {"mode", kTriangles}};
+// Little-endian whatever the host (glTF 2.0, "Binary glTF Layout").
+template <typename T>
+void append_little_endian(std::string& out, const std::vector<T>& values) {
+  static_assert(sizeof(T) == 4);
+  if constexpr (std::endian::native == std::endian::little) {
+    out.append(reinterpret_cast<const char*>(values.data()), 4 * values.size());
+  } else {
+    for (T value : values) append_u32(out, std::bit_cast<std::uint32_t>(value));
+  }
 }
 
-json Builder::part_node(const shape::Part& part, std::size_t index) {
-  const std::string name = part.name.empty() ? "part" + std::to_string(index) : part.name;
-  json extras = attributes_json(part.attributes);
-  if (!extras.contains("kind")) extras["kind"] = kind_name(part.kind);
-  json node = json::object();
-  node["name"] = name;
-  node["extras"] = std::move(extras);
-  std::map<std::uint32_t, Primitive> by_material;
-  for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
-    add_face(part.mesh, f, by_material[materials_.index(part.mesh.tag(f))]);
-  }
-  json primitives = json::array();
-  for (const auto& [material, primitive] : by_material) {
-    if (primitive.index_count > 0) primitives.push_back(add_primitive(primitive, material));
-  }
-  if (!primitives.empty()) {
-    json mesh = json::object();
-    mesh["name"] = name;
-    mesh["primitives"] = std::move(primitives);
-    meshes_.push_back(std::move(mesh));
-    node["mesh"] = meshes_.size() - 1;
-  }
-  return node;
+void Builder::append_binary(std::string& out) const {
+  append_little_endian(out, vertices_);
+  append_little_endian(out, indices_);
 }
 
-json Builder::materials_json() const {
-  json out = json::array();
-  for (const shape::Material& material : materials_.materials()) {
-    const auto& c = material.rgba;
-    json entry = {
-        {"name", material.name},
-        {"pbrMetallicRoughness",
-         {{"baseColorFactor", {channel(c[0]), channel(c[1]), channel(c[2]), channel(c[3])}},
-          {"metallicFactor", 0.0},
-          {"roughnessFactor", 0.9}}}};
-    if (c[3] < 1.0F) entry["alphaMode"] = "BLEND";
-    out.push_back(std::move(entry));
+void write_vec3(JsonStream& json, const std::array<float, 3>& v) {
+  json.begin_array();
+  for (float c : v) json.number(static_cast<double>(c));
+  json.end_array();
+}
+
+void Builder::write_accessors(JsonStream& json) const {
+  json.key("accessors").begin_array();
+  for (const PrimitiveRecord& p : primitives_) {
+    json.begin_object().key("bufferView").integer(0).key("byteOffset").integer(p.position_offset);
+    json.key("componentType").integer(kFloat).key("count").integer(p.vertex_count);
+    json.key("max");
+    write_vec3(json, p.max);
+    json.key("min");
+    write_vec3(json, p.min);
+    json.key("type").string("VEC3").end_object();
+    json.begin_object().key("bufferView").integer(0).key("byteOffset");
+    json.integer(p.position_offset + 12 * std::size_t{p.vertex_count});
+    json.key("componentType").integer(kFloat).key("count").integer(p.vertex_count);
+    json.key("type").string("VEC3").end_object();
+    json.begin_object().key("bufferView").integer(1).key("byteOffset").integer(p.index_offset);
+    json.key("componentType").integer(kUnsignedInt).key("count").integer(p.index_count);
+    json.key("type").string("SCALAR").end_object();
   }
-  return out;
+  json.end_array();
 }
 
-json Builder::scene_extras() const {
-  json extras = {{"origin", {scene_.origin.x, scene_.origin.y, scene_.origin.z}},
-                 {"units", "m"},
-                 {"world_from_gltf", "(x, y, z) = (X + origin[0], -Z + origin[1], Y + origin[2])"}};
-  if (!scene_.crs.empty()) extras["crs"] = scene_.crs;
-  return extras;
+void Builder::write_meshes(JsonStream& json) const {
+  json.key("meshes").begin_array();
+  std::size_t part_index = 0;
+  std::uint32_t primitive = 0;
+  for (const shape::Building& building : scene_.buildings) {
+    for (std::size_t p = 0; p < building.parts.size(); ++p) {
+      const std::uint32_t count = part_primitives_[part_index++];
+      if (count == 0) continue;
+      json.begin_object().key("name").string(part_name(building.parts[p], p));
+      json.key("primitives").begin_array();
+      for (const std::uint32_t end = primitive + count; primitive < end; ++primitive) {
+        const std::uint32_t accessor = 3 * primitive;
+        json.begin_object().key("attributes").begin_object();
+        json.key("NORMAL").integer(accessor + 1).key("POSITION").integer(accessor).end_object();
+        json.key("indices").integer(accessor + 2);
+        json.key("material").integer(primitives_[primitive].material);
+        json.key("mode").integer(kTriangles).end_object();
+      }
+      json.end_array().end_object();
+    }
+  }
+  json.end_array();
 }
 
-json Builder::build() {
-  json roots = json::array();
+// Per building: one node per part, then the building's node with those parts as children.
+void Builder::write_nodes(JsonStream& json) const {
+  json.key("nodes").begin_array();
+  std::size_t part_index = 0;
+  std::size_t node = 0;
+  std::size_t mesh = 0;
   for (std::size_t b = 0; b < scene_.buildings.size(); ++b) {
     const shape::Building& building = scene_.buildings[b];
-    json children = json::array();
     for (std::size_t p = 0; p < building.parts.size(); ++p) {
-      nodes_.push_back(part_node(building.parts[p], p));
-      children.push_back(nodes_.size() - 1);
+      const shape::Part& part = building.parts[p];
+      json.begin_object().key("extras").attributes(part.attributes, "kind", kind_name(part.kind));
+      if (part_primitives_[part_index++] > 0) json.key("mesh").integer(mesh++);
+      json.key("name").string(part_name(part, p)).end_object();
     }
-    json node = {{"name", building.id.empty() ? "building" + std::to_string(b) : building.id}};
-    if (!children.empty()) node["children"] = std::move(children);
-    if (!building.attributes.empty()) node["extras"] = attributes_json(building.attributes);
-    nodes_.push_back(std::move(node));
-    roots.push_back(nodes_.size() - 1);
+    json.begin_object();
+    if (!building.parts.empty()) {
+      json.key("children").begin_array();
+      for (std::size_t p = 0; p < building.parts.size(); ++p) json.integer(node + p);
+      json.end_array();
+    }
+    if (!building.attributes.empty()) json.key("extras").attributes(building.attributes);
+    json.key("name");
+    json.string(building.id.empty() ? "building" + std::to_string(b) : building.id);
+    json.end_object();
+    node += building.parts.size() + 1;
   }
-  json scene = {{"name", "Insula"}, {"extras", scene_extras()}};
-  if (!roots.empty()) scene["nodes"] = std::move(roots);
-  json gltf = {{"asset", {{"version", "2.0"}, {"generator", "Insula"}}}, {"scene", 0}};
-  gltf["scenes"] = json::array();
-  gltf["scenes"].push_back(std::move(scene));
-  if (!nodes_.empty()) gltf["nodes"] = std::move(nodes_);
-  if (!meshes_.empty()) {
-    gltf["meshes"] = std::move(meshes_);
-    gltf["accessors"] = std::move(accessors_);
-    gltf["materials"] = materials_json();
-    gltf["bufferViews"] = {{{"buffer", 0},
-                            {"byteLength", vertex_bytes_.size()},
-                            {"byteStride", 12},
-                            {"target", kArrayBuffer}},
-                           {{"buffer", 0},
-                            {"byteOffset", vertex_bytes_.size()},
-                            {"byteLength", index_bytes_.size()},
-                            {"target", kElementArrayBuffer}}};
-    binary_.reserve(vertex_bytes_.size() + index_bytes_.size());
-    binary_.append(vertex_bytes_).append(index_bytes_);
-    gltf["buffers"] = {{{"byteLength", binary_.size()}}};
+  json.end_array();
+}
+
+void Builder::write_materials(JsonStream& json) const {
+  json.key("materials").begin_array();
+  for (const shape::Material& material : materials_.materials()) {
+    const auto& c = material.rgba;
+    json.begin_object();
+    if (c[3] < 1.0F) json.key("alphaMode").string("BLEND");
+    json.key("name").string(material.name);
+    json.key("pbrMetallicRoughness").begin_object().key("baseColorFactor").begin_array();
+    for (float channel_value : c) json.number(channel(channel_value));
+    json.end_array().key("metallicFactor").number(0.0).key("roughnessFactor").number(0.9);
+    json.end_object().end_object();
   }
-  return gltf;
+  json.end_array();
+}
+
+void Builder::write_buffers(JsonStream& json, std::string_view buffer_uri) const {
+  const std::size_t vertex_bytes = 4 * vertices_.size();
+  json.key("bufferViews").begin_array();
+  json.begin_object().key("buffer").integer(0).key("byteLength").integer(vertex_bytes);
+  json.key("byteStride").integer(12).key("target").integer(kArrayBuffer).end_object();
+  json.begin_object().key("buffer").integer(0).key("byteLength").integer(4 * indices_.size());
+  json.key("byteOffset").integer(vertex_bytes);
+  json.key("target").integer(kElementArrayBuffer).end_object();
+  json.end_array();
+  json.key("buffers").begin_array().begin_object().key("byteLength").integer(binary_size());
+  if (!buffer_uri.empty()) json.key("uri").string(buffer_uri);
+  json.end_object().end_array();
+}
+
+void Builder::write_scene(JsonStream& json) const {
+  json.key("scene").integer(0).key("scenes").begin_array().begin_object();
+  json.key("extras").begin_object();
+  if (!scene_.crs.empty()) json.key("crs").string(scene_.crs);
+  json.key("origin").begin_array();
+  json.number(scene_.origin.x).number(scene_.origin.y).number(scene_.origin.z).end_array();
+  json.key("units").string("m");
+  json.key("world_from_gltf").string("(x, y, z) = (X + origin[0], -Z + origin[1], Y + origin[2])");
+  json.end_object().key("name").string("Insula");
+  if (!scene_.buildings.empty()) {
+    json.key("nodes").begin_array();
+    std::size_t node = 0;
+    for (const shape::Building& building : scene_.buildings) {
+      node += building.parts.size();
+      json.integer(node++);
+    }
+    json.end_array();
+  }
+  json.end_object().end_array();
+}
+
+// Root members in sorted order; the buffer and everything describing it only when some face
+// produced triangles.
+void Builder::write_json(JsonStream& json, std::string_view buffer_uri) const {
+  const bool has_meshes = !primitives_.empty();
+  json.begin_object();
+  if (has_meshes) write_accessors(json);
+  json.key("asset").begin_object().key("generator").string("Insula");
+  json.key("version").string("2.0").end_object();
+  if (has_meshes) {
+    write_buffers(json, buffer_uri);
+    write_materials(json);
+    write_meshes(json);
+  }
+  if (!scene_.buildings.empty()) write_nodes(json);
+  write_scene(json);
+  json.end_object();
 }
 
 std::string base64(const std::string& bytes) {
@@ -281,11 +379,10 @@ std::size_t padded(std::size_t size) {
   return (size + 3) / 4 * 4;
 }
 
-void append_chunk(std::string& out, const std::string& data, char pad, std::uint32_t type) {
-  append_u32(out, static_cast<std::uint32_t>(padded(data.size())));
+// A chunk's length (padded to 4 bytes) and type; the caller appends the data and the padding.
+void append_chunk_header(std::string& out, std::size_t size, std::uint32_t type) {
+  append_u32(out, static_cast<std::uint32_t>(padded(size)));
   append_u32(out, type);
-  out += data;
-  out.append(padded(data.size()) - data.size(), pad);
 }
 
 bool has_gltf_extension(const std::filesystem::path& path) {
@@ -298,29 +395,42 @@ bool has_gltf_extension(const std::filesystem::path& path) {
 }  // namespace
 
 std::string glb_bytes(const shape::Scene& scene) {
-  Builder builder(scene);
-  const json gltf = builder.build();
-  const std::string text = gltf.dump();
-  const std::string& binary = builder.binary();
-  const std::size_t total =
-      12 + 8 + padded(text.size()) + (binary.empty() ? 0 : 8 + padded(binary.size()));
+  const Builder builder(scene);
+  std::string text;
+  JsonStream json(text);
+  builder.write_json(json, {});
+  const std::size_t binary = builder.binary_size();
+  const std::size_t total = 12 + 8 + padded(text.size()) + (binary == 0 ? 0 : 8 + padded(binary));
   std::string out;
   out.reserve(total);
   append_u32(out, kGlbMagic);
   append_u32(out, 2);
   append_u32(out, static_cast<std::uint32_t>(total));
-  append_chunk(out, text, ' ', kChunkJson);
-  if (!binary.empty()) append_chunk(out, binary, '\0', kChunkBin);
+  append_chunk_header(out, text.size(), kChunkJson);
+  out += text;
+  out.append(padded(text.size()) - text.size(), ' ');
+  if (binary > 0) {
+    append_chunk_header(out, binary, kChunkBin);
+    builder.append_binary(out);
+    out.append(padded(binary) - binary, '\0');
+  }
   return out;
 }
 
 std::string gltf_text(const shape::Scene& scene) {
-  Builder builder(scene);
-  json gltf = builder.build();
-  if (gltf.contains("buffers")) {
-    gltf["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(builder.binary());
+  const Builder builder(scene);
+  std::string uri;
+  if (builder.binary_size() > 0) {
+    std::string binary;
+    binary.reserve(builder.binary_size());
+    builder.append_binary(binary);
+    uri = "data:application/octet-stream;base64," + base64(binary);
   }
-  return gltf.dump(1) + "\n";
+  std::string text;
+  JsonStream json(text, 1);
+  builder.write_json(json, uri);
+  text += '\n';
+  return text;
 }
 
 std::string write_gltf(const shape::Scene& scene, const std::filesystem::path& path) {

@@ -4,25 +4,39 @@
 
 #include <array>
 #include <cstdint>
-#include <map>
+#include <limits>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "kernel/mesh.h"
+#include "kernel/polygon.h"
 #include "shape/scene.h"
 
 namespace insula::io {
 
 using CornerTriangle = std::array<std::uint32_t, 3>;
 
-// Appends the triangles of face `face` of `mesh` to `triangles`, as corner positions in the face's
-// loop (0 .. n-1), each counter-clockwise around the face's Newell normal. The face is projected to
-// its dominant coordinate plane and triangulated with kernel::triangulate, so concave faces come
-// out right; a convex face the triangulator rejects falls back to a fan. Returns false and appends
-// nothing for a degenerate face (zero normal, or non-convex and rejected by the triangulator).
-bool triangulate_face(const kernel::Mesh& mesh, std::size_t face,
-                      std::vector<CornerTriangle>& triangles);
+// Triangulates planar n-gon faces of meshes, reusing its buffers from face to face.
+class FaceTriangulator {
+ public:
+  // Appends the triangles of face `face` of `mesh` to `triangles`, as corner positions in the
+  // face's loop (0 .. n-1), each counter-clockwise around `normal`, the face's Newell normal
+  // (kernel::face_normal). The face is projected to its dominant coordinate plane. A strictly
+  // convex face gets the triangles kernel::triangulate's ear clipper gives it (ear at corner 0,
+  // then every second remaining corner) without running it; any other face is triangulated with
+  // kernel::triangulate, so concave faces come out right, and a convex face the triangulator
+  // rejects falls back to a fan. Returns false and appends nothing for a degenerate face (zero
+  // normal, or non-convex and rejected by the triangulator).
+  bool triangulate(const kernel::Mesh& mesh, std::size_t face, kernel::Vec3 normal,
+                   std::vector<CornerTriangle>& triangles);
+
+ private:
+  kernel::Polygon polygon_;
+  std::vector<std::uint32_t> next_;
+  std::vector<std::uint32_t> prev_;
+};
 
 // `name` with every whitespace or control character replaced by '_' (OBJ splits names at blanks);
 // `fallback` when `name` is empty.
@@ -40,10 +54,15 @@ class MaterialTable {
   const std::vector<shape::Material>& materials() const { return materials_; }
 
  private:
+  static constexpr std::uint32_t kNone = UINT32_MAX;
+  // Class keys follow the scene materials, one per value a SemanticClass can hold.
+  static constexpr std::size_t kKeysPerClass =
+      std::size_t{std::numeric_limits<std::underlying_type_t<kernel::SemanticClass>>::max()} + 1;
+
   std::uint32_t key(const kernel::FaceTag& tag) const;
 
   std::size_t scene_material_count_ = 0;
-  std::map<std::uint32_t, std::uint32_t> index_by_key_;
+  std::vector<std::uint32_t> index_by_key_;  // by key(); kNone for keys no face uses
   std::vector<shape::Material> materials_;
 };
 
