@@ -6,6 +6,7 @@
 #include <exception>
 #include <string>
 
+#include "apps/cli/check_command.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/mass_command.h"
 
@@ -21,6 +22,8 @@ int run(int argc, char** argv) {
   app.require_subcommand(1);
   insula::cli::MassOptions mass;
   insula::cli::add_mass_command(app, mass);
+  insula::cli::CheckOptions check;
+  insula::cli::add_check_command(app, check);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -34,6 +37,7 @@ int run(int argc, char** argv) {
     return insula::cli::kExitUsage;
   }
   if (app.got_subcommand("mass")) return insula::cli::run_mass(mass);
+  if (app.got_subcommand("check")) return insula::cli::run_check(check);
   return insula::cli::kExitUsage;
 }
 

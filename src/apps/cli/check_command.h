@@ -1,0 +1,21 @@
+// `insula check INPUT`: parse and check only, no geometry (design.md, "Command line"). The
+// front-end is chosen by INPUT's extension.
+#pragma once
+
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace insula::cli {
+
+struct CheckOptions {
+  std::string input;
+  bool quiet = false;
+};
+
+void add_check_command(CLI::App& app, CheckOptions& options);
+int run_check(const CheckOptions& options);
+
+}  // namespace insula::cli
