@@ -47,14 +47,83 @@ std::string write_scene(const shape::Scene& scene, const std::string& path,
   return path + ": unknown output format";
 }
 
-void remove_outputs(const std::vector<std::string>& paths) {
-  std::error_code ignored;
-  for (const std::string& path : paths) {
-    std::filesystem::remove(path, ignored);
-    if (output_format_name(path) == "obj") {
-      std::filesystem::remove(std::filesystem::path(path).replace_extension(".mtl"), ignored);
+std::vector<std::string> files_of_output(const std::string& path) {
+  if (output_format_name(path) != "obj") return {path};
+  return {path, std::filesystem::path(path).replace_extension(".mtl").string()};
+}
+
+namespace {
+
+// Existing files moved aside while outputs are written, restored if the transaction fails.
+class Backup {
+ public:
+  std::string move_aside(const std::string& path) {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) return {};
+    const std::string aside = path + ".insula-backup";
+    std::filesystem::rename(path, aside, error);
+    if (error) return path + ": cannot move the existing file aside: " + error.message();
+    moved_.push_back(path);
+    return {};
+  }
+  void restore() {
+    std::error_code ignored;
+    for (const std::string& path : moved_)
+      std::filesystem::rename(path + ".insula-backup", path, ignored);
+    moved_.clear();
+  }
+  void discard() {
+    std::error_code ignored;
+    for (const std::string& path : moved_)
+      std::filesystem::remove(path + ".insula-backup", ignored);
+    moved_.clear();
+  }
+
+ private:
+  std::vector<std::string> moved_;
+};
+
+}  // namespace
+
+std::string write_outputs(const shape::Scene& scene, const std::vector<std::string>& paths,
+                          const OutputOptions& options,
+                          const std::function<void(std::size_t)>& on_written) {
+  Backup backup;
+  std::vector<std::string> written;
+  std::string error;
+  for (std::size_t i = 0; i < paths.size() && error.empty(); ++i) {
+    for (const std::string& file : files_of_output(paths[i])) {
+      if (error.empty()) error = backup.move_aside(file);
+    }
+    if (error.empty()) error = write_scene(scene, paths[i], options);
+    if (error.empty()) {
+      written.push_back(paths[i]);
+      if (on_written) on_written(i);
     }
   }
+  if (error.empty()) {
+    backup.discard();
+    return {};
+  }
+  std::error_code ignored;
+  for (const std::string& path : written) {
+    for (const std::string& file : files_of_output(path)) std::filesystem::remove(file, ignored);
+  }
+  backup.restore();
+  return error;
+}
+
+std::string check_output_directories(const std::vector<std::string>& paths) {
+  for (const std::string& path : paths) {
+    std::filesystem::path directory = std::filesystem::path(path).parent_path();
+    if (directory.empty()) directory = ".";
+    std::error_code error;
+    if (!std::filesystem::is_directory(directory, error)) {
+      return path + ": directory '" + directory.string() + "' does not exist";
+    }
+    if (std::filesystem::is_directory(path, error)) return path + ": is a directory";
+  }
+  return {};
 }
 
 }  // namespace insula::io

@@ -61,8 +61,10 @@ expect_exit 2 "bad image size" "$insula" mass "$example" -o "$tmp/x.png" --image
 expect_exit 2 "bad elevation" "$insula" mass "$example" -o "$tmp/x.png" --elevation 100
 
 # Same output whatever the thread count.
-"$insula" mass "$example" --threads 1 -o "$tmp/a.obj" -o "$tmp/a.glb" --quiet >/dev/null
-"$insula" mass "$example" --threads 2 -o "$tmp/b.obj" -o "$tmp/b.glb" --quiet >/dev/null
+# 600 footprints, so the parallel build really splits the work (its grain is 64).
+node "$root/bench/make_footprints.mjs" 600 "$tmp/many.geojson"
+"$insula" mass "$tmp/many.geojson" --threads 1 -o "$tmp/a.obj" -o "$tmp/a.glb" --quiet >/dev/null
+"$insula" mass "$tmp/many.geojson" --threads 2 -o "$tmp/b.obj" -o "$tmp/b.glb" --quiet >/dev/null
 cmp -s "$tmp/a.glb" "$tmp/b.glb" || fail "glb differs between 1 and 2 threads"
 sed 's/^mtllib .*//' "$tmp/a.obj" >"$tmp/a2" && sed 's/^mtllib .*//' "$tmp/b.obj" >"$tmp/b2"
 cmp -s "$tmp/a2" "$tmp/b2" || fail "obj differs between 1 and 2 threads"
@@ -85,6 +87,32 @@ printf '{"type":"FeatureCollection","features":[' >"$tmp/broken.geojson"
 expect_exit 1 "broken JSON" "$insula" mass "$tmp/broken.geojson" -o "$tmp/y.obj"
 grep -qE "broken.geojson:1:[0-9]+: error" "$tmp/err.txt" || { fail "broken JSON message"; cat "$tmp/err.txt"; }
 [ -e "$tmp/y.obj" ] && fail "failed parse left y.obj behind"
+
+# Numeric flags reject NaN; a failed run keeps the user's earlier files.
+expect_exit 2 "NaN pitch" "$insula" mass "$example" -o "$tmp/x.obj" --pitch nan
+expect_exit 2 "NaN height" "$insula" mass "$example" -o "$tmp/x.obj" --height nan
+expect_exit 2 "NaN cut height" "$insula" mass "$example" -o "$tmp/x.png" --cut-height nan
+expect_exit 2 "oversized picture rejected before the build" "$insula" mass "$example" -o "$tmp/x.png" --image-size 8000x8000
+echo precious >"$tmp/keep.obj"
+echo precious >"$tmp/keep.mtl"
+expect_exit 1 "failing second output" "$insula" mass "$example" -o "$tmp/keep.obj" -o "$tmp/no/such/dir/x.glb"
+grep -qx precious "$tmp/keep.obj" && grep -qx precious "$tmp/keep.mtl" || fail "a failed run must keep existing files"
+expect_exit 0 "overwrite" "$insula" mass "$example" -o "$tmp/keep.obj" --quiet
+grep -q "^o " "$tmp/keep.obj" || fail "a successful run replaces the file"
+ls "$tmp" | grep -q insula-backup && fail "backup files left behind"
+
+# A footprint that gives no closed building (a hole touching the outer ring at a vertex) is an
+# error naming the feature; --keep-going leaves it out with a warning.
+printf '%s' '{"type":"FeatureCollection","features":[
+  {"type":"Feature","id":"ok","properties":{"height":8},"geometry":{"type":"Polygon","coordinates":[[[30,0],[40,0],[40,10],[30,10],[30,0]]]}},
+  {"type":"Feature","id":"pinched","properties":{"height":8},"geometry":{"type":"Polygon","coordinates":[[[0,0],[20,0],[20,20],[0,20],[0,0]],[[0,0],[5,5],[5,10],[2,8],[0,0]]]}}]}'   >"$tmp/pinched.geojson"
+expect_exit 1 "unbuildable footprint" "$insula" mass "$tmp/pinched.geojson" -o "$tmp/p.obj"
+grep -q 'pinched.geojson: error: feature 1 (id "pinched")' "$tmp/err.txt" || { fail "unbuildable footprint message"; cat "$tmp/err.txt"; }
+[ -e "$tmp/p.obj" ] && fail "unbuildable footprint: nothing written"
+expect_exit 0 "--keep-going" "$insula" mass "$tmp/pinched.geojson" -o "$tmp/p.obj" --keep-going --report "$tmp/p.json"
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+         if (r.buildings !== 1 || r.failed !== 1 || r.watertight !== 1) process.exit(1);' "$tmp/p.json" ||
+  fail "--keep-going report"
 
 # Every file of the bad-input catalog: exit 1 (error) or 0 (repaired with a warning), never a crash.
 for bad in "$root"/tests/data/bad/*.geojson; do

@@ -15,6 +15,7 @@
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/mass_report.h"
 #include "apps/cli/stopwatch.h"
+#include "apps/cli/validators.h"
 #include "apps/cli/view_options.h"
 #include "base/diagnostic.h"
 #include "io/geojson_reader.h"
@@ -160,6 +161,15 @@ std::vector<BuiltBuilding> build_all(const io::FootprintSet& set,
   return built;
 }
 
+// A footprint that gave no closed shell: an error, or a warning with --keep-going.
+void report_failed_building(const MassOptions& options, const io::Footprint& footprint,
+                            const BuiltBuilding& built) {
+  std::string message = options.input + (options.keep_going ? ": warning: " : ": error: ") +
+                        feature_name(footprint) + ": no closed building could be made";
+  if (!built.messages.empty()) message += ": " + built.messages.front();
+  std::fprintf(stderr, "%s\n", message.c_str());
+}
+
 void print_diagnostics(const std::vector<base::Diagnostic>& diagnostics,
                        const base::Source& source) {
   for (const base::Diagnostic& d : diagnostics) {
@@ -185,22 +195,25 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
           ->check(CLI::IsMember(kRoofNames));
   auto* pitch = mass->add_option("--pitch", options.pitch_deg,
                                  "roof pitch in degrees (default 30; else the feature's 'pitch')")
-                    ->check(CLI::Range(1.0, 75.0));
+                    ->check(finite_range(1.0, 75.0));
   mass->add_option("--overhang", options.overhang, "roof overhang in meters (default 0)")
-      ->check(CLI::Range(0.0, 5.0));
+      ->check(finite_range(0.0, 5.0));
   auto* height =
       mass->add_option("--height", options.height, "wall height in meters for every building")
-          ->check(CLI::Range(0.5, 1000.0));
+          ->check(finite_range(0.5, 1000.0));
   mass->add_option("--height-attr", options.height_attr,
                    "feature property holding the wall height (default 'height')")
       ->excludes(height);
   mass->add_option("--default-height", options.default_height,
                    "wall height when a feature has no usable height (default 10)")
-      ->check(CLI::Range(0.5, 1000.0));
+      ->check(finite_range(0.5, 1000.0));
   mass->add_option("--report", options.report, "write a JSON report (counts, timings)");
   mass->add_option("--threads", options.threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   mass->add_flag("-q,--quiet", options.quiet, "no progress or warnings on stderr");
+  mass->add_flag(
+      "--keep-going", options.keep_going,
+      "leave out footprints that give no closed building (with a warning) instead of failing");
   add_view_options(*mass, options.output);
   mass->callback([&options, roof, pitch]() {
     options.roof_given = roof->count() > 0;
@@ -218,6 +231,20 @@ int run_mass(const MassOptions& options) {
                    out.c_str());
       return kExitUsage;
     }
+  }
+  for (const std::string& out : options.outputs) {
+    const std::string error =
+        io::output_format_name(out) == "png" ? io::validate(options.output.render) : "";
+    if (!error.empty()) {
+      std::fprintf(stderr, "insula: %s: %s\n", out.c_str(), error.c_str());
+      return kExitUsage;
+    }
+  }
+  std::vector<std::string> targets = options.outputs;
+  if (!options.report.empty()) targets.push_back(options.report);
+  if (const std::string error = io::check_output_directories(targets); !error.empty()) {
+    std::fprintf(stderr, "insula: error: %s\n", error.c_str());
+    return kExitInput;
   }
   const int threads = options.threads > 0
                           ? options.threads
@@ -246,12 +273,31 @@ int run_mass(const MassOptions& options) {
   scene.origin = set->origin;
   scene.crs = set->crs;
   scene.buildings.reserve(built.size());
-  for (BuiltBuilding& b : built) {
+  std::size_t failed = 0;
+  for (std::size_t i = 0; i < built.size(); ++i) {
+    BuiltBuilding& b = built[i];
     for (std::string& m : b.messages)
       warnings.push_back("building \"" + b.building.id + "\": " + m);
+    if (!b.watertight) {
+      ++failed;
+      report_failed_building(options, set->footprints[i], b);
+      if (options.keep_going) continue;
+    }
     report.count_building(b.building, b.watertight);
     scene.buildings.push_back(std::move(b.building));
   }
+  if (failed > 0 && !options.keep_going) {
+    std::fprintf(
+        stderr,
+        "insula: %zu of %zu buildings failed; nothing written (--keep-going leaves them out)\n",
+        failed, built.size());
+    return kExitInput;
+  }
+  if (scene.buildings.empty()) {
+    std::fprintf(stderr, "insula: error: no building could be made; nothing written\n");
+    return kExitInput;
+  }
+  report.failed = failed;
   report.stage("build", build_clock.seconds());
   if (!options.quiet) {
     for (const std::string& w : warnings)
@@ -259,24 +305,24 @@ int run_mass(const MassOptions& options) {
   }
   report.warnings = warnings.size() + set.diagnostics().size();
 
-  std::vector<std::string> written;
-  for (const std::string& out : options.outputs) {
-    Stopwatch write_clock;
-    const std::string error = io::write_scene(scene, out, options.output);
-    if (!error.empty()) {
-      std::fprintf(stderr, "insula: error: %s\n", error.c_str());
-      io::remove_outputs(written);  // a failed run leaves nothing behind
-      return kExitInput;
-    }
-    written.push_back(out);
-    report.stage("write " + io::output_format_name(out), write_clock.seconds());
+  Stopwatch write_clock;
+  const std::string write_error =
+      io::write_outputs(scene, options.outputs, options.output, [&](std::size_t i) {
+        report.stage("write " + io::output_format_name(options.outputs[i]), write_clock.seconds());
+        write_clock = Stopwatch();
+      });
+  if (!write_error.empty()) {
+    std::fprintf(stderr, "insula: error: %s\n", write_error.c_str());
+    return kExitInput;
   }
   report.total_seconds = total.seconds();
   if (!options.report.empty()) {
     const std::string error = report.write(options.report);
     if (!error.empty()) {
       std::fprintf(stderr, "insula: error: %s\n", error.c_str());
-      io::remove_outputs(written);
+      for (const std::string& out : options.outputs) {
+        for (const std::string& file : io::files_of_output(out)) std::remove(file.c_str());
+      }
       return kExitInput;
     }
   }
@@ -284,7 +330,7 @@ int run_mass(const MassOptions& options) {
     std::fprintf(stderr, "insula: %zu buildings in %.2f s\n", scene.buildings.size(),
                  report.total_seconds);
   }
-  for (const std::string& out : written) std::printf("%s\n", out.c_str());
+  for (const std::string& out : options.outputs) std::printf("%s\n", out.c_str());
   return kExitDone;
 }
 

@@ -25,6 +25,7 @@ struct MassOptions {
   std::string report;
   int threads = 0;
   bool quiet = false;
+  bool keep_going = false;
   io::OutputOptions output;  // PNG view and SVG options
   // Set when the flag was given on the command line; a given flag wins over feature properties.
   bool roof_given = false;

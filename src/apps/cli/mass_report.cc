@@ -29,6 +29,7 @@ std::string MassReport::json() const {
   out["triangles"] = triangles;
   out["watertight"] = watertight;
   out["warnings"] = warnings;
+  out["failed"] = failed;
   out["threads"] = threads;
   out["seconds"] = seconds;
   return out.dump(2) + "\n";

@@ -18,6 +18,7 @@ struct MassReport {
   std::size_t triangles = 0;
   std::size_t watertight = 0;  // buildings whose every part is a closed, outward shell
   std::size_t warnings = 0;
+  std::size_t failed = 0;  // footprints left out with --keep-going
   int threads = 1;
   double total_seconds = 0;
   std::vector<std::pair<std::string, double>> stages;  // in execution order

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "apps/cli/validators.h"
+
 namespace insula::cli {
 namespace {
 
@@ -40,11 +42,11 @@ void add_view_options(CLI::App& command, io::OutputOptions& output) {
       .add_option("--azimuth", render.azimuth_deg,
                   "PNG view: direction the camera looks from, degrees counter-clockwise from east "
                   "(default 225, south-west)")
-      ->check(CLI::Range(-360.0, 360.0));
+      ->check(finite_range(-360.0, 360.0));
   command
       .add_option("--elevation", render.elevation_deg,
                   "PNG view: camera elevation in degrees, 90 = plan (default 35)")
-      ->check(CLI::Range(5.0, 90.0));
+      ->check(finite_range(5.0, 90.0));
   command.add_flag("--cutaway", render.cutaway,
                    "PNG view: cut the buildings open to show interiors");
   command
@@ -56,11 +58,11 @@ void add_view_options(CLI::App& command, io::OutputOptions& output) {
           },
           "PNG cutaway at this height in meters (local Z; footprints stand on 0); implies "
           "--cutaway")
-      ->check(CLI::Range(-1000.0, 10000.0));
+      ->check(finite_range(-1000.0, 10000.0));
   command
       .add_option("--svg-scale", output.svg.pixels_per_meter,
                   "SVG picture scale in pixels per meter (default: fit 1000 pixels)")
-      ->check(CLI::Range(0.01, 1000.0));
+      ->check(finite_range(0.01, 1000.0));
 }
 
 }  // namespace insula::cli
