@@ -127,23 +127,41 @@ kernel::Bounds2 bounds_of(const std::vector<Ring2>& rings) {
   return b;
 }
 
+constexpr int kMaxSeedCells = 64;          // seed cells along the long side of the bounding box
+constexpr int kMaxCellsProcessed = 20000;  // refinement budget (cells popped from the queue)
+
 // Pole of inaccessibility by best-first quadtree search (the "polylabel" idea, Garcia-Castellanos
 // & Lombardo 2007 grid search refined as a priority queue): cells are split while they could still
 // hold a point farther from the outline than the best found, within 1/200 of the footprint size.
+// Seed cells are squares of the short side, but never smaller than the long side / 64: a sliver
+// (1000 m x 10 µm) would otherwise seed (long / short)^2 cells. At most ~64 x 64 seed cells and
+// kMaxCellsProcessed refinement steps, so the cost is bounded for any shape; a bounding box with a
+// zero or non-finite side (or no outline) gives the bounding-box centre.
 Vec2 visual_centre(const Footprint& footprint) {
   const kernel::Bounds2 b = bounds_of(footprint.pieces);
   const Vec2 size = b.max - b.min;
-  const double cell = std::min(size.x, size.y);
-  if (footprint.outline.empty() || cell <= 0) return (b.min + b.max) / 2;
-  const double precision = std::max(size.x, size.y) / 200;
+  const Vec2 middle = (b.min + b.max) / 2;
+  const double long_side = std::max(size.x, size.y);
+  const double short_side = std::min(size.x, size.y);
+  if (footprint.outline.empty() || !std::isfinite(long_side) || !(short_side > 0)) return middle;
+  const double cell = std::max(short_side, long_side / kMaxSeedCells);
+  const double precision = long_side / 200;
   std::priority_queue<Cell> queue;
-  for (double x = b.min.x; x < b.max.x; x += cell) {
-    for (double y = b.min.y; y < b.max.y; y += cell) {
-      queue.push(make_cell(footprint, {x + cell / 2, y + cell / 2}, cell / 2));
+  // Cells along one side (ceil, tolerant of rounding), at most kMaxSeedCells + 1.
+  const auto count = [&](double side) {
+    const double n = std::clamp(std::ceil(side / cell - 1e-9), 1.0, kMaxSeedCells + 1.0);
+    return static_cast<int>(n);
+  };
+  const int nx = count(size.x);
+  const int ny = count(size.y);
+  for (int i = 0; i < nx; ++i) {
+    for (int j = 0; j < ny; ++j) {
+      const Vec2 centre{b.min.x + (i + 0.5) * cell, b.min.y + (j + 0.5) * cell};
+      queue.push(make_cell(footprint, centre, cell / 2));
     }
   }
-  Cell best = make_cell(footprint, (b.min + b.max) / 2, 0);
-  for (int step = 0; !queue.empty() && step < 20000; ++step) {
+  Cell best = make_cell(footprint, middle, 0);
+  for (int step = 0; !queue.empty() && step < kMaxCellsProcessed; ++step) {
     const Cell c = queue.top();
     queue.pop();
     if (c.distance > best.distance) best = c;

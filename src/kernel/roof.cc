@@ -24,6 +24,10 @@ constexpr double kPi = 3.14159265358979323846;
 // antiparallel, so the end closes a ridge (docs/kernel-roofs.md, "Gable").
 constexpr double kGableParallelDeg = 30;
 
+// A pyramid accepts a footprint whose outer ring turns clockwise by at most this much in total
+// (digitizing noise on nearly straight edges), docs/kernel-roofs.md, "Pyramid on concave input".
+constexpr double kPyramidReflexDeg = 1;
+
 double tan_deg(double degrees) {
   return std::tan(degrees * kPi / 180);
 }
@@ -130,8 +134,26 @@ bool plan_eave(RoofPlan& plan, double overhang, const std::vector<std::uint32_t>
   return offset_contour(plan.footprint, plan.offsets, plan.eave);
 }
 
+// Total clockwise (reflex) turning of the outer ring, in degrees, for the ring's own orientation:
+// 0 for a convex ring, 90 per right-angle notch of an L, T or U.
+double reflex_turning_deg(const Contour& c) {
+  const double orientation = signed_area(c.polygon().outer) < 0 ? -1.0 : 1.0;
+  double total = 0;
+  for (std::uint32_t k = 0; k < c.ring_starts[1]; ++k) {
+    const Vec2 in = c.points[k] - c.points[c.prev(k)];
+    const Vec2 out = c.points[c.next(k)] - c.points[k];
+    const double turn = std::atan2(orientation * cross(in, out), dot(in, out));
+    if (turn < 0) total -= turn;
+  }
+  return total * 180 / kPi;
+}
+
+// A pyramid only over a convex footprint without holes (docs/kernel-roofs.md, "Pyramid on concave
+// input"): with a reflex corner the apex over the centroid is limited by the nearest edge line, and
+// the faces of the other wings fold into nearly flat tents.
 bool plan_pyramid(RoofPlan& plan) {
-  if (plan.eave.ring_starts.size() != 2) return false;
+  if (plan.eave.ring_starts.size() != 2 || plan.footprint.ring_starts.size() != 2) return false;
+  if (reflex_turning_deg(plan.footprint) > kPyramidReflexDeg) return false;
   const Polygon polygon = plan.eave.polygon();
   const Vec2 c = centroid(polygon);
   double nearest = 1e300;

@@ -108,6 +108,30 @@ TEST(SvgWriter, LabelsSitInsideTheirFootprints) {
   EXPECT_TRUE(in_arm) << x << " " << y;
 }
 
+// Label placement must stay cheap on slivers: the search once seeded (long / short)^2 cells (a
+// 1000 m x 10 µm footprint took 48 s and 5.2 GB). The test only has to finish (ctest's timeout);
+// the label must still be inside the footprint's bounding box (3 decimals: 1 mm rounding).
+TEST(SvgWriter, LabelsOnSliversStayInsideTheBoundingBox) {
+  for (const auto& [length, width] : {std::pair{1000.0, 1e-5}, std::pair{10000.0, 0.01}}) {
+    shape::Scene scene;
+    scene.buildings.push_back(
+        {"sliver",
+         {},
+         {{"p",
+           shape::PartKind::kBuildingPart,
+           {},
+           testing::prism({{0, 0}, {length, 0}, {length, width}, {0, width}}, 0, 3)}}});
+    const std::string svg = svg_text(scene);
+    EXPECT_EQ(check_xml(svg), "");
+    const auto at = text_positions(svg, "sliver");
+    ASSERT_EQ(at.size(), 1U) << length;
+    EXPECT_GE(at[0].first, 0) << length;
+    EXPECT_LE(at[0].first, length) << length;
+    EXPECT_GE(at[0].second, -0.0005) << length;
+    EXPECT_LE(at[0].second, width + 0.0005) << length;
+  }
+}
+
 TEST(SvgWriter, EscapesLabels) {
   shape::Scene scene = test_scene();
   scene.buildings[0].id = "A&B <\"x\"> 'y'";

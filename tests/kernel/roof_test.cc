@@ -178,5 +178,47 @@ TEST(Roof, InvalidSpecAndFootprintFail) {
   EXPECT_TRUE(bowtie.mesh.empty());
 }
 
+// Pyramid only over convex footprints (docs/kernel-roofs.md, "Pyramid on concave input"): a T
+// falls back to hip with the message; a convex pentagon, also with a 1 µm inward digitizing wobble
+// on one edge, gets a single apex that every face reaches.
+TEST(Roof, PyramidOnATFallsBackToHip) {
+  RoofSpec spec;
+  spec.type = RoofType::kPyramid;
+  // A T with a short stem: its centroid (3, 2.8) is on the inner side of every edge line, so the
+  // old star-shaped test accepted it and built a tent 1 m * tan(pitch) high over a 6 x 5 m plan.
+  const Polygon t{{{2, 0}, {4, 0}, {4, 1}, {6, 1}, {6, 5}, {0, 5}, {0, 1}, {2, 1}}, {}};
+  const RoofResult r = build_roof(t, spec, 3);
+  EXPECT_EQ(r.status, RoofStatus::kFallback);
+  EXPECT_EQ(r.message, "pyramid roof could not be built; hip roof instead");
+  EXPECT_FALSE(r.mesh.empty());
+}
+
+TEST(Roof, PyramidOnAConvexPentagonHasOneApex) {
+  RoofSpec spec;
+  spec.type = RoofType::kPyramid;
+  spec.pitch_deg = 45;
+  Polygon pentagon{{{0, 0}, {6, 0}, {7, 4}, {3, 7}, {-1, 4}}, {}};
+  Polygon wobbly = pentagon;
+  wobbly.outer.insert(wobbly.outer.begin() + 1, Vec2{3, 1e-6});  // reflex by 0.00004 degrees
+  for (const Polygon& p : {pentagon, wobbly}) {
+    const RoofResult r = build_roof(p, spec, 2);
+    ASSERT_EQ(r.status, RoofStatus::kOk) << r.message;
+    EXPECT_EQ(r.mesh.face_count(), p.outer.size());
+    const double top = r.mesh.bounds().max.z;
+    EXPECT_GT(top, 2 + 2);
+    // Every face has exactly one vertex at the top height, and all of them are the same point.
+    std::vector<Vec3> apexes;
+    for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+      int at_top = 0;
+      for (std::uint32_t v : r.mesh.face(f)) {
+        if (std::abs(r.mesh.position(v).z - top) < 1e-9)
+          ++at_top, apexes.push_back(r.mesh.position(v));
+      }
+      EXPECT_EQ(at_top, 1) << "face " << f;
+    }
+    for (const Vec3& a : apexes) EXPECT_LT(length(a - apexes.front()), 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace insula::kernel
