@@ -11,8 +11,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <unordered_map>
+#include <utility>
 
 namespace insula::kernel {
 namespace {
@@ -134,6 +136,15 @@ void add_contour(const Polygon& polygon, Skeleton& out) {
   out.contour_count = index;
 }
 
+// Removes repeated consecutive ids, including the last against the first: after near-coincident
+// nodes are merged, a loop may step from a node to itself.
+void drop_repeats(std::vector<std::uint32_t>& loop) {
+  loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
+  while (loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
+}
+
+// Fails when a loop has fewer than 3 distinct consecutive vertices: each face belongs to one
+// contour edge, so a degenerate face cannot be dropped without breaking the face(e) invariant.
 bool store_faces(const std::vector<std::vector<std::uint32_t>>& loops, Skeleton& out) {
   out.face_offsets.assign(1, 0);
   for (const auto& loop : loops) {
@@ -149,10 +160,18 @@ bool store_faces(const std::vector<std::vector<std::uint32_t>>& loops, Skeleton&
 class Converter {
  public:
   explicit Converter(Skeleton& out) : out_(out) {
+    Vec2 lo = out_.vertices[0].position, hi = lo;
     for (std::uint32_t k = 0; k < out_.contour_count; ++k) {
       const Vec2 p = out_.vertices[k].position;
       by_position_.emplace(key_of(p.x, p.y), k);
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
     }
+    // CGAL reports the nodes of one simultaneous event (e.g. the centre of a regular star) as
+    // several vertices a few ulps apart; closer than this they are one node. Far below any
+    // geometric feature the contour can carry, far above the rounding of its constructions.
+    tolerance_ = kMergeTolerance * std::max(length(hi - lo), 1e-300);
+    origin_ = lo;
   }
 
   bool convert(const CgalSkeleton& ss) {
@@ -200,6 +219,7 @@ class Converter {
       h = h->next();
       if (++guard > 1000000) return false;
     } while (h != contour);
+    drop_repeats(loops[edge]);
     return true;
   }
 
@@ -207,15 +227,61 @@ class Converter {
   std::uint32_t id_of(VertexHandle v) {
     std::uint32_t& id = ids_[static_cast<std::size_t>(v->id())];
     if (id != kUnset) return id;
-    const double time = v->time();
-    id = static_cast<std::uint32_t>(out_.vertices.size());
-    out_.vertices.push_back({{v->point().x(), v->point().y()}, std::isfinite(time) ? time : -1.0});
+    const double time = std::isfinite(v->time()) ? v->time() : -1.0;
+    id = merged_node({v->point().x(), v->point().y()}, time);
     return id;
   }
 
+  using Cell = std::pair<std::int64_t, std::int64_t>;
+  struct CellHash {
+    std::size_t operator()(Cell c) const {
+      return static_cast<std::size_t>(c.first) * 0x9E3779B97F4A7C15ULL ^
+             static_cast<std::size_t>(c.second);
+    }
+  };
+  // Cells are counted from the contour's lower corner: nodes lie inside its bounding box, so the
+  // indices stay below ~1e9 whatever the absolute coordinates.
+  Cell cell_of(Vec2 p) const {
+    const double size = 4 * tolerance_;  // one cell spans the tolerance, so 3x3 cells suffice
+    const double limit = 4e18;
+    return {
+        static_cast<std::int64_t>(std::clamp(std::floor((p.x - origin_.x) / size), -limit, limit)),
+        static_cast<std::int64_t>(std::clamp(std::floor((p.y - origin_.y) / size), -limit, limit))};
+  }
+
+  // The id of an existing skeleton node within tolerance_ of p in position and time, or a new
+  // node. Nodes are hashed in a grid of cells 4 * tolerance_ wide; neighbours are in 3x3 cells.
+  std::uint32_t merged_node(Vec2 p, double time) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {  // rejected later by times_valid
+      out_.vertices.push_back({p, time});
+      return static_cast<std::uint32_t>(out_.vertices.size() - 1);
+    }
+    const Cell c = cell_of(p);
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto range = by_cell_.equal_range({c.first + dx, c.second + dy});
+        for (auto it = range.first; it != range.second; ++it) {
+          const SkeletonVertex& s = out_.vertices[it->second];
+          if (std::abs(s.time - time) <= tolerance_ && length(s.position - p) <= tolerance_) {
+            return it->second;
+          }
+        }
+      }
+    }
+    const auto id = static_cast<std::uint32_t>(out_.vertices.size());
+    out_.vertices.push_back({p, time});
+    by_cell_.emplace(c, id);
+    return id;
+  }
+
+  static constexpr double kMergeTolerance = 1e-9;  // relative to the contour's bounding diagonal
+
   Skeleton& out_;
   std::unordered_multimap<PointKey, std::uint32_t, PointKeyHash> by_position_;
+  std::unordered_multimap<Cell, std::uint32_t, CellHash> by_cell_;
   std::vector<std::uint32_t> ids_;
+  double tolerance_ = 0;
+  Vec2 origin_;
 };
 
 // Straight skeleton of a strictly convex polygon by direct wavefront simulation: only edge events

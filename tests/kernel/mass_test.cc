@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include "kernel/triangulate.h"
+
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace insula::kernel {
@@ -285,6 +288,77 @@ TEST(Mass, BadInputFailsWithAMessage) {
   MassSpec s = spec(RoofType::kHip);
   s.wall_height = -1;
   EXPECT_EQ(build_mass(rectangle(4, 4), s).status, MassStatus::kFailed);
+}
+
+// A regular 5-point star (radii 10 and 4.5): CGAL meets all five reflex bisectors at the centre
+// in one event and reports it as several nodes a few ulps apart.
+Polygon star() {
+  Polygon p;
+  for (int i = 0; i < 10; ++i) {
+    const double r = i % 2 == 0 ? 10 : 4.5, a = 2 * kPi * i / 10;
+    p.outer.push_back({10 + r * std::cos(a), 10 + r * std::sin(a)});
+  }
+  return p;
+}
+// An annulus of 64-gons (radii 12 and 6): the hip faces meet at many simultaneous events.
+Polygon ring64() {
+  Polygon p = circle(64, 12);
+  Polygon hole = circle(64, 6);
+  p.holes.push_back(hole.outer);
+  std::reverse(p.holes[0].begin(), p.holes[0].end());
+  return p;
+}
+
+// Face f projected to the plane its normal is most perpendicular to, triangulated the way the
+// GLB writer and renderer do it.
+bool face_triangulates(const Mesh& mesh, std::size_t f) {
+  const Vec3 n = face_normal(mesh, f);
+  const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
+  Polygon p;
+  for (std::uint32_t v : mesh.face(f)) {
+    const Vec3 q = mesh.position(v);
+    if (az >= ax && az >= ay) {
+      p.outer.push_back({q.x, q.y});
+    } else if (ay >= ax) {
+      p.outer.push_back({q.z, q.x});
+    } else {
+      p.outer.push_back({q.y, q.z});
+    }
+  }
+  Triangulation t;
+  return triangulate(p, t);
+}
+
+double closest_vertex_pair(const Mesh& mesh) {
+  double best = std::numeric_limits<double>::infinity();
+  const auto& v = mesh.positions();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    for (std::size_t j = i + 1; j < v.size(); ++j) best = std::min(best, length(v[i] - v[j]));
+  }
+  return best;
+}
+
+// Regression: simultaneous skeleton events used to leave nodes 1e-15 m apart, so roof faces had
+// zigzags that triangulate() rejected and the writers dropped (43 of 52 star triangles written).
+TEST(Mass, SimultaneousSkeletonEventsGiveCleanFaces) {
+  const std::vector<std::pair<std::string, Polygon>> footprints = {
+      {"star", star()}, {"ring64", ring64()}, {"H", h_shape()}};
+  for (const auto& [name, footprint] : footprints) {
+    const int euler = footprint.holes.empty() ? 2 : 0;
+    for (RoofType roof : {RoofType::kHip, RoofType::kGable, RoofType::kMansard}) {
+      for (double overhang : {0.0, 0.8}) {
+        const std::string what = name + " " + std::string(roof_type_name(roof)) + " overhang " +
+                                 std::to_string(overhang);
+        SCOPED_TRACE(what);
+        const MassResult r = build_mass(footprint, spec(roof, overhang));
+        expect_shell(r, euler, what + " " + r.message);
+        for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+          EXPECT_TRUE(face_triangulates(r.mesh, f)) << "face " << f;
+        }
+        EXPECT_GE(closest_vertex_pair(r.mesh), 1e-9);
+      }
+    }
+  }
 }
 
 TEST(Mass, HugeOverhangIsDropped) {
