@@ -60,6 +60,20 @@ expect_exit 0 "plan view" "$insula" mass "$example" -o "$tmp/plan.png" --elevati
 expect_exit 2 "bad image size" "$insula" mass "$example" -o "$tmp/x.png" --image-size 10x10000
 expect_exit 2 "bad elevation" "$insula" mass "$example" -o "$tmp/x.png" --elevation 100
 
+# Every face reaches the GLB: its triangle count equals the report's (n - 2 per n-gon face), for
+# every roof type with an overhang (skeleton events with coincident nodes once dropped faces).
+for roof in gable hip mansard; do
+  "$insula" mass "$example" --roof "$roof" --overhang 0.8 -o "$tmp/c.glb" --report "$tmp/c.json" --quiet >/dev/null
+  node -e '
+    const fs = require("fs");
+    const glb = fs.readFileSync(process.argv[1]);
+    const gltf = JSON.parse(glb.subarray(20, 20 + glb.readUInt32LE(12)).toString());
+    let triangles = 0;
+    for (const mesh of gltf.meshes) for (const p of mesh.primitives) triangles += gltf.accessors[p.indices].count / 3;
+    const report = JSON.parse(fs.readFileSync(process.argv[2]));
+    if (triangles !== report.triangles) { console.log(triangles, report.triangles); process.exit(1); }'     "$tmp/c.glb" "$tmp/c.json" || fail "roof $roof: GLB triangles differ from the report"
+done
+
 # Same output whatever the thread count.
 # 600 footprints, so the parallel build really splits the work (its grain is 64).
 node "$root/bench/make_footprints.mjs" 600 "$tmp/many.geojson"
