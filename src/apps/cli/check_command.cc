@@ -3,11 +3,10 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <fstream>
 #include <optional>
-#include <sstream>
 
 #include "apps/cli/exit_codes.h"
+#include "apps/cli/input_file.h"
 #include "base/diagnostic.h"
 #include "io/geojson_reader.h"
 #include "lang/cga/parser.h"
@@ -18,15 +17,6 @@ namespace {
 bool has_suffix(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() &&
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-std::optional<std::string> read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return buffer.str();
 }
 
 void print(const std::vector<base::Diagnostic>& diagnostics, const base::Source& source,
@@ -72,7 +62,7 @@ int run_check(const CheckOptions& options) {
                  options.input.c_str());
     return kExitUsage;
   }
-  const std::optional<std::string> text = read_text(options.input);
+  const std::optional<std::string> text = read_input_file(options.input);
   if (!text) {
     std::fprintf(stderr, "%s: error: cannot read file\n", options.input.c_str());
     return kExitInput;

@@ -8,11 +8,10 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "apps/cli/exit_codes.h"
+#include "apps/cli/input_file.h"
 #include "apps/cli/mass_report.h"
 #include "apps/cli/stopwatch.h"
 #include "apps/cli/validators.h"
@@ -28,15 +27,6 @@ namespace {
 
 const std::vector<std::string> kRoofNames = {"flat",    "shed",    "gable",        "hip",
                                              "pyramid", "mansard", "holed_mansard"};
-
-std::optional<std::string> read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return buffer.str();
-}
 
 // What one footprint becomes, decided before the parallel build so warnings stay in input order.
 struct BuildingPlan {
@@ -254,7 +244,7 @@ int run_mass(const MassOptions& options) {
   report.threads = threads;
 
   Stopwatch read_clock;
-  const std::optional<std::string> text = read_text(options.input);
+  const std::optional<std::string> text = read_input_file(options.input);
   if (!text) {
     std::fprintf(stderr, "%s: error: cannot read file\n", options.input.c_str());
     return kExitInput;
