@@ -109,6 +109,32 @@ TEST(Skeleton, ManyVerticesCircle) {
   EXPECT_NEAR(s->max_time(), 10 * std::cos(3.14159265358979 / 256), 1e-6);
 }
 
+// Large footprints stay practical: a 4,000-vertex convex ring takes the wavefront path, and the
+// simplicity check of a 20,000-vertex comb (non-convex, so it reaches CGAL's input check) is a
+// sweep, not all pairs of edges.
+TEST(Skeleton, LargeConvexRingAndLargeCombAreHandled) {
+  Polygon circle;
+  for (int i = 0; i < 4000; ++i) {
+    const double a = 2 * 3.14159265358979 * i / 4000;
+    circle.outer.push_back({50 * std::cos(a), 50 * std::sin(a)});
+  }
+  const auto s = interior_straight_skeleton(circle);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_EQ(s->face_count(), 4000U);
+  EXPECT_NEAR(s->max_time(), 50 * std::cos(3.14159265358979 / 4000), 1e-6);
+
+  Polygon strip;
+  for (int i = 0; i < 5000; ++i) {
+    strip.outer.push_back({2.0 * i, 0});
+    strip.outer.push_back({2.0 * i + 1, 0});
+  }
+  strip.outer.push_back({10000, 5});
+  strip.outer.push_back({0, 5});
+  EXPECT_TRUE(is_simple_polygon(strip));
+  strip.outer.push_back({5000, -1});  // the closing edges now cross the base
+  EXPECT_FALSE(is_simple_polygon(strip));
+}
+
 TEST(Skeleton, InvalidInputGivesNothing) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(interior_straight_skeleton({{{0, 0}, {1, 0}}, {}}).has_value());
