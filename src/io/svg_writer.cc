@@ -91,10 +91,7 @@ bool inside_ring(const Ring2& ring, Vec2 p) {
 }
 
 double distance_to(Segment s, Vec2 p) {
-  const Vec2 d = s.b - s.a;
-  const double l2 = kernel::dot(d, d);
-  const double t = l2 > 0 ? std::clamp(kernel::dot(p - s.a, d) / l2, 0.0, 1.0) : 0.0;
-  return kernel::length(p - (s.a + d * t));
+  return kernel::distance_to_segment(p, s.a, s.b);
 }
 
 // Distance to the outline, negative outside every piece.

@@ -35,13 +35,6 @@ double ring_length(const Ring& ring) {
   return total;
 }
 
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return length(p - (a + ab * t));
-}
-
 // Crossing-number test (Shimrat's algorithm, half-open rule so a vertex is counted once), with a
 // first pass that reports points within `tolerance` of an edge as on the boundary.
 PointLocation locate_in_ring(const Ring& ring, Vec2 p, double tolerance) {
@@ -68,6 +61,13 @@ void drop_closing_vertex(Ring& ring) {
 }
 
 }  // namespace
+
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return length(p - (a + ab * t));
+}
 
 double signed_area(const Ring& ring) {
   if (ring.size() < 3) return 0;

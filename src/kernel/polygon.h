@@ -26,6 +26,9 @@ Vec2 centroid(const Polygon& polygon);
 // Outer counter-clockwise, holes clockwise; drops a closing vertex equal to the first.
 void normalize(Polygon& polygon);
 
+// Distance from p to the closed segment ab (to a when the segment has zero length).
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
+
 enum class PointLocation { kOutside, kBoundary, kInside };
 // `tolerance` is the distance within which a point counts as on the boundary.
 PointLocation locate(const Polygon& polygon, Vec2 point, double tolerance = 1e-9);

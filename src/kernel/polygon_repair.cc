@@ -54,13 +54,6 @@ struct CleanRing {
   bool zero_area = false;  // mean width below the tolerance
 };
 
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return length(p - (a + ab * t));
-}
-
 PolygonIssue make_issue(PolygonIssueKind kind, int ring, int vertex, bool repaired,
                         std::string message) {
   return PolygonIssue{kind, ring, vertex, repaired, std::move(message)};

@@ -6,6 +6,8 @@
 // use only ring vertices, the mesh has no T-junctions and is closed on shared indices.
 #include "kernel/wall.h"
 
+#include "kernel/polygon.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -50,13 +52,6 @@ double twice_area(const Ring& ring) {
   return a;
 }
 
-double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return length(p - (a + ab * t));
-}
-
 // Segments cross at a point interior to both (strict orientation tests).
 bool cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double o1 = cross(b - a, c - a);
@@ -68,8 +63,8 @@ bool cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 
 double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   if (cross_properly(a, b, c, d)) return 0;
-  return std::min(std::min(point_segment_distance(a, c, d), point_segment_distance(b, c, d)),
-                  std::min(point_segment_distance(c, a, b), point_segment_distance(d, a, b)));
+  return std::min(std::min(distance_to_segment(a, c, d), distance_to_segment(b, c, d)),
+                  std::min(distance_to_segment(c, a, b), distance_to_segment(d, a, b)));
 }
 
 // Crossing-number test; meaningful for points farther than kEps from the boundary.
@@ -89,7 +84,7 @@ bool inside_ring(const Ring& ring, Vec2 p) {
 double ring_distance(const Ring& ring, Vec2 p) {
   double d = 1e300;
   for (std::size_t i = 0; i < ring.size(); ++i) {
-    d = std::min(d, point_segment_distance(p, ring[i], ring[(i + 1) % ring.size()]));
+    d = std::min(d, distance_to_segment(p, ring[i], ring[(i + 1) % ring.size()]));
   }
   return d;
 }
@@ -145,8 +140,7 @@ std::string outline_problem(const Ring& ring) {
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
     // Adjacent edges may only meet at their shared vertex: no spike folding back.
-    if (n > 3 &&
-        (point_segment_distance(c, a, b) <= kEps || point_segment_distance(a, b, c) <= kEps))
+    if (n > 3 && (distance_to_segment(c, a, b) <= kEps || distance_to_segment(a, b, c) <= kEps))
       return "wall outline edges " + std::to_string(i) + " and " + std::to_string((i + 1) % n) +
              " overlap";
     for (std::size_t j = i + 2; j < n; ++j) {
