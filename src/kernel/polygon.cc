@@ -62,6 +62,14 @@ void drop_closing_vertex(Ring& ring) {
 
 }  // namespace
 
+bool segments_cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double o1 = cross(b - a, c - a);
+  const double o2 = cross(b - a, d - a);
+  const double o3 = cross(d - c, a - c);
+  const double o4 = cross(d - c, b - c);
+  return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
+}
+
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double len2 = dot(ab, ab);

@@ -29,6 +29,10 @@ void normalize(Polygon& polygon);
 // Distance from p to the closed segment ab (to a when the segment has zero length).
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
 
+// Segments ab and cd cross at a point interior to both (strict orientation tests: touching,
+// collinear overlap and shared endpoints do not count).
+bool segments_cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
 enum class PointLocation { kOutside, kBoundary, kInside };
 // `tolerance` is the distance within which a point counts as on the boundary.
 PointLocation locate(const Polygon& polygon, Vec2 point, double tolerance = 1e-9);

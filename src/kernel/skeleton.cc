@@ -49,13 +49,11 @@ PointKey key_of(double x, double y) {
 
 // Proper or touching intersection of closed segments ab and cd.
 bool segments_meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (segments_cross_properly(a, b, c, d)) return true;
   const double d1 = cross(b - a, c - a);
   const double d2 = cross(b - a, d - a);
   const double d3 = cross(d - c, a - c);
   const double d4 = cross(d - c, b - c);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
-    return true;
-  }
   auto on_segment = [](Vec2 p, Vec2 q, Vec2 r) {  // r collinear with pq: is it within pq?
     return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
            r.y <= std::max(p.y, q.y);

@@ -43,26 +43,8 @@ Box ring_box(const Ring& ring) {
   return b;
 }
 
-double twice_area(const Ring& ring) {
-  double a = 0;
-  const Vec2 o = ring.front();
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    a += cross(ring[i] - o, ring[(i + 1) % ring.size()] - o);
-  }
-  return a;
-}
-
-// Segments cross at a point interior to both (strict orientation tests).
-bool cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const double o1 = cross(b - a, c - a);
-  const double o2 = cross(b - a, d - a);
-  const double o3 = cross(d - c, a - c);
-  const double o4 = cross(d - c, b - c);
-  return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
-}
-
 double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  if (cross_properly(a, b, c, d)) return 0;
+  if (segments_cross_properly(a, b, c, d)) return 0;
   return std::min(std::min(distance_to_segment(a, c, d), distance_to_segment(b, c, d)),
                   std::min(distance_to_segment(c, a, b), distance_to_segment(d, a, b)));
 }
@@ -151,7 +133,7 @@ std::string outline_problem(const Ring& ring) {
       }
     }
   }
-  if (std::abs(twice_area(ring)) <= kEps) return "wall outline has zero area";
+  if (std::abs(2 * signed_area(ring)) <= kEps) return "wall outline has zero area";
   return {};
 }
 
@@ -251,7 +233,7 @@ std::optional<Finding> against_outline(const Ring& outline, const Accepted& c, d
     for (std::size_t j = 0; j < n; ++j) {
       if (static_cast<int>(j) == c.host) continue;
       const Vec2 p = outline[j], q = outline[(j + 1) % n];
-      if (cross_properly(a, b, p, q)) return Finding{OpeningProblem::kOutsideOutline};
+      if (segments_cross_properly(a, b, p, q)) return Finding{OpeningProblem::kOutsideOutline};
       distance = std::min(distance, segment_distance(a, b, p, q));
     }
   }
@@ -681,7 +663,7 @@ std::string wall_problem(const WallSpec& spec) {
 
 Ring counter_clockwise(const Ring& ring) {
   Ring out = ring;
-  if (twice_area(out) < 0) std::reverse(out.begin(), out.end());
+  if (signed_area(out) < 0) std::reverse(out.begin(), out.end());
   return out;
 }
 
@@ -694,7 +676,7 @@ Ring opening_ring(const Opening& opening) {
 
 double opening_area(const Opening& opening) {
   const Ring ring = opening_ring(opening);
-  return ring.empty() ? 0 : std::abs(twice_area(ring)) / 2;
+  return ring.empty() ? 0 : std::abs(signed_area(ring));
 }
 
 std::vector<OpeningIssue> check_openings(const WallSpec& spec, std::vector<std::size_t>* accepted) {
