@@ -6,9 +6,12 @@
 #include <exception>
 #include <string>
 
+#include "apps/cli/build_command.h"
 #include "apps/cli/check_command.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/mass_command.h"
+#include "apps/cli/random_command.h"
+#include "apps/cli/transform_command.h"
 
 namespace {
 
@@ -24,6 +27,12 @@ int run(int argc, char** argv) {
   insula::cli::add_mass_command(app, mass);
   insula::cli::CheckOptions check;
   insula::cli::add_check_command(app, check);
+  insula::cli::BuildOptions build;
+  insula::cli::add_build_command(app, build);
+  insula::cli::TransformOptions transform;
+  insula::cli::add_transform_command(app, transform);
+  insula::cli::RandomOptions random;
+  insula::cli::add_random_command(app, random);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -38,6 +47,9 @@ int run(int argc, char** argv) {
   }
   if (app.got_subcommand("mass")) return insula::cli::run_mass(mass);
   if (app.got_subcommand("check")) return insula::cli::run_check(check);
+  if (app.got_subcommand("build")) return insula::cli::run_build(build);
+  if (app.got_subcommand("transform")) return insula::cli::run_transform(transform);
+  if (app.got_subcommand("random")) return insula::cli::run_random(random);
   return insula::cli::kExitUsage;
 }
 

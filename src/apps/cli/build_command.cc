@@ -1,0 +1,127 @@
+#include "apps/cli/build_command.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "apps/cli/exit_codes.h"
+#include "apps/cli/front_ends.h"
+#include "apps/cli/view_options.h"
+#include "io/atomic_file.h"
+
+namespace insula::cli {
+namespace {
+
+bool has_suffix(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+shape::Value parse_value(const std::string& text) {
+  if (text == "true") return true;
+  if (text == "false") return false;
+  char* end = nullptr;
+  const double number = std::strtod(text.c_str(), &end);
+  if (!text.empty() && end == text.c_str() + text.size() && std::isfinite(number)) return number;
+  return text;
+}
+
+}  // namespace
+
+void add_build_command(CLI::App& app, BuildOptions& options) {
+  CLI::App* build = app.add_subcommand(
+      "build", "build a grammar or program: .cga (CGA grammar), .bldg (building grammar), .lua");
+  build->add_option("INPUT", options.input, "a .cga, .bldg or .lua file")->required();
+  build->add_option("-o,--output", options.outputs,
+                    "output file, format by extension (.obj .glb .gltf .city.json .svg .png); "
+                    "repeatable; none: derive and report only");
+  build->add_option("--lot", options.lot, "GeoJSON lots (CGA) or outline footprints (.bldg)");
+  build->add_option("--seed", options.seed, "random seed (default 0)");
+  build->add_option("--threads", options.threads, "worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  build->add_option("--set", options.sets, "override an attribute: name=value; repeatable");
+  build->add_option("--start", options.start, "start symbol (CGA)");
+  build->add_option("--rules", options.rules, "restriction rules file (.bldg)");
+  build->add_option("--assets", options.assets, "asset folder a program may read (.lua)");
+  build->add_option("--report", options.report, "write a JSON report (counts, timings)");
+  build->add_flag("-q,--quiet", options.quiet, "no progress or warnings on stderr");
+  add_view_options(*build, options.output);
+}
+
+int run_build(const BuildOptions& options) {
+  if (has_suffix(options.input, ".cga")) return build_cga(options);
+  if (has_suffix(options.input, ".bldg")) return build_bldg(options);
+  if (has_suffix(options.input, ".lua")) return build_lua(options);
+  std::fprintf(stderr, "insula: %s: unknown input type (use .cga, .bldg or .lua)\n",
+               options.input.c_str());
+  return kExitUsage;
+}
+
+int check_build_outputs(const BuildOptions& options) {
+  for (const std::string& out : options.outputs) {
+    if (!io::is_supported_output(out)) {
+      std::fprintf(stderr,
+                   "insula: %s: unknown output format (use .obj .glb .gltf .city.json .svg .png)\n",
+                   out.c_str());
+      return kExitUsage;
+    }
+    const std::string error =
+        io::output_format_name(out) == "png" ? io::validate(options.output.render) : "";
+    if (!error.empty()) {
+      std::fprintf(stderr, "insula: %s: %s\n", out.c_str(), error.c_str());
+      return kExitUsage;
+    }
+  }
+  std::vector<std::string> targets = options.outputs;
+  if (!options.report.empty()) targets.push_back(options.report);
+  if (const std::string error = io::check_output_directories(targets); !error.empty()) {
+    std::fprintf(stderr, "insula: error: %s\n", error.c_str());
+    return kExitInput;
+  }
+  return kExitDone;
+}
+
+bool parse_sets(const std::vector<std::string>& sets,
+                std::vector<std::pair<std::string, shape::Value>>& out, std::string& error) {
+  for (const std::string& entry : sets) {
+    const std::size_t eq = entry.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      error = "--set '" + entry + "': expected name=value";
+      return false;
+    }
+    out.emplace_back(entry.substr(0, eq), parse_value(entry.substr(eq + 1)));
+  }
+  return true;
+}
+
+int finish_build(const BuildOptions& options, const shape::Scene& scene, nlohmann::json& report,
+                 const Stopwatch& total) {
+  Stopwatch write_clock;
+  const std::string write_error =
+      io::write_outputs(scene, options.outputs, options.output, [&](std::size_t i) {
+        report["seconds"]["write_" + io::output_format_name(options.outputs[i])] =
+            write_clock.seconds();
+        write_clock = Stopwatch();
+      });
+  if (!write_error.empty()) {
+    std::fprintf(stderr, "insula: error: %s\n", write_error.c_str());
+    return kExitInput;
+  }
+  report["seconds"]["total"] = total.seconds();
+  if (!options.report.empty()) {
+    const std::string error = io::write_file_atomically(options.report, report.dump(2) + "\n");
+    if (!error.empty()) {
+      std::fprintf(stderr, "insula: error: %s\n", error.c_str());
+      for (const std::string& out : options.outputs) {
+        for (const std::string& file : io::files_of_output(out)) std::remove(file.c_str());
+      }
+      return kExitInput;
+    }
+  }
+  for (const std::string& out : options.outputs) std::printf("%s\n", out.c_str());
+  return kExitDone;
+}
+
+}  // namespace insula::cli

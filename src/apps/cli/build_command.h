@@ -1,0 +1,60 @@
+// `insula build INPUT [-o OUT]... [--lot LOTS.geojson] [--seed N] [--set name=value]...
+// [--report R.json]` (design.md, "Command line"): the front-end is chosen by INPUT's extension
+// (.cga, .bldg, .lua), each output format by OUT's extension. The options are shared; a front-end
+// ignores those that do not apply to it and says so in its docs.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/cli/stopwatch.h"
+#include "io/output.h"
+#include "shape/scene.h"
+#include "shape/value.h"
+
+namespace CLI {
+class App;
+}
+
+namespace insula::cli {
+
+struct BuildOptions {
+  std::string input;
+  std::vector<std::string> outputs;  // may be empty: derive and report only
+  std::string lot;                   // --lot LOTS.geojson: lots / outline footprints
+  std::uint64_t seed = 0;
+  int threads = 0;                  // 0 = all cores
+  std::vector<std::string> sets;    // --set name=value, as given
+  std::string start;                // --start SYMBOL (CGA)
+  std::string rules;                // --rules FILE: restriction rules (.bldg)
+  std::vector<std::string> assets;  // --assets DIR: asset folders a program may read (.lua)
+  std::string report;               // --report R.json
+  bool quiet = false;
+  io::OutputOptions output;  // PNG view and SVG options
+};
+
+void add_build_command(CLI::App& app, BuildOptions& options);
+// Dispatches on the input's extension.
+int run_build(const BuildOptions& options);
+
+// Checks before any work: every output has a known format, picture options are valid and every
+// output's directory (and the report's) exists. Returns kExitDone or the exit code to return
+// (the reason already printed).
+int check_build_outputs(const BuildOptions& options);
+
+// The --set values, parsed: "name=value" with value a number, true/false or else a string.
+// On a malformed entry returns false and sets `error` (e.g. "--set 'x': expected name=value").
+bool parse_sets(const std::vector<std::string>& sets,
+                std::vector<std::pair<std::string, shape::Value>>& out, std::string& error);
+
+// Writes the scene to every output (adding report["seconds"]["write_<format>"]), then sets
+// report["seconds"]["total"] from `total` and writes the report when asked. Returns the exit code;
+// on failure nothing is left behind (io::write_outputs is a transaction).
+int finish_build(const BuildOptions& options, const shape::Scene& scene, nlohmann::json& report,
+                 const Stopwatch& total);
+
+}  // namespace insula::cli
