@@ -5,11 +5,14 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "kernel/mesh.h"
+#include "kernel/transform.h"
 #include "kernel/vec.h"
+#include "shape/plan.h"
 #include "shape/value.h"
 
 namespace insula::shape {
@@ -27,12 +30,18 @@ struct Part {
   PartKind kind = PartKind::kBuildingPart;
   AttributeMap attributes;
   kernel::Mesh mesh;
+  // An instance of a shared mesh (seed 001 §4.5: repeated decorations are shared, not copied): when
+  // set, the part's geometry is `instance_of` placed by `instance_transform` (mesh stays empty).
+  // glTF writes one mesh and a node per instance; the other writers expand it.
+  std::shared_ptr<const kernel::Mesh> instance_of;
+  kernel::Transform instance_transform;
 };
 
 struct Building {
   std::string id;  // unique within the scene
   AttributeMap attributes;
   std::vector<Part> parts;
+  std::vector<StoreyPlan> plans;  // floor plans (traversable buildings); empty for masses
 };
 
 struct Scene {

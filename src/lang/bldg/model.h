@@ -114,6 +114,12 @@ struct Building {
   Location where;
   // Outline in meters, counter-clockwise outer ring, optional holes; convex or concave.
   kernel::Polygon outline;
+  // When the outline comes from a GeoJSON feature instead of inline coordinates: the file (as
+  // written, relative to the .bldg file) and the feature id. The front-end cannot read files
+  // (design.md, "Layers"), so the command line fills `outline` before the floor plan is made.
+  std::string outline_file;
+  std::string outline_feature;
+  Location outline_where;
   PartNode layout;  // root container of building parts
   std::vector<Transition> transitions;
 };
