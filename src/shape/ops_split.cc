@@ -8,6 +8,7 @@
 
 #include "kernel/plane_split.h"
 #include "shape/ops.h"
+#include "shape/ops_fast.h"
 
 namespace insula::shape {
 
@@ -20,13 +21,6 @@ namespace {
 
 constexpr double kMinPiece = 1e-9;                 // meters: thinner pieces are left out
 constexpr std::uint32_t kCapMarker = 0xfffffffeU;  // face id marking cut faces until retagged
-
-// The tag of a face made by a cut, seen from the piece it bounds: floors and ceilings for
-// horizontal cuts (scope y is up), interior walls otherwise.
-FaceTag cut_tag(Axis axis, bool faces_up) {
-  if (axis != Axis::kY) return {SemanticClass::kInteriorWallSurface, 0, 0};
-  return {faces_up ? SemanticClass::kCeilingSurface : SemanticClass::kFloorSurface, 0, 0};
-}
 
 Vec3 unit(Axis axis) {
   Vec3 v;
@@ -43,17 +37,14 @@ void shift(Mesh& mesh, Axis axis, double by) {
   for (Vec3& p : mesh.positions()) set_component(p, axis, component(p, axis) - by);
 }
 
-// Box geometry: each piece is a box; outer sides keep the parent's tags, cut sides get cut_tag.
+// Box geometry: each piece is a box; outer sides keep the parent's tags, cut sides get
+// cut_face_tag.
 std::vector<std::shared_ptr<const Mesh>> split_box(const std::array<FaceTag, 6>& tags, Vec3 size,
                                                    Axis axis, const std::vector<Piece>& pieces) {
-  const auto a = static_cast<std::size_t>(axis);
   const double total = component(size, axis);
   std::vector<std::shared_ptr<const Mesh>> out;
   for (const Piece& p : pieces) {
-    std::array<FaceTag, 6> t = tags;
-    if (p.start > kMinPiece) t[2 * a] = cut_tag(axis, false);
-    if (p.start + p.size < total - kMinPiece) t[2 * a + 1] = cut_tag(axis, true);
-    out.push_back(box_mesh(piece_size(size, axis, p.size), t));
+    out.push_back(box_mesh(piece_size(size, axis, p.size), split_box_tags(tags, axis, p, total)));
   }
   return out;
 }
@@ -62,7 +53,7 @@ void retag_caps(Mesh& mesh, Axis axis) {
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     if (mesh.tag(f).face_id != kCapMarker) continue;
     const double along = component(kernel::face_normal(mesh, f), axis);
-    mesh.tag(f) = cut_tag(axis, along > 0);
+    mesh.tag(f) = cut_face_tag(axis, along > 0);
   }
 }
 
@@ -88,10 +79,6 @@ Cut split_mesh(const Mesh& mesh, Axis axis, const std::vector<Piece>& pieces, bo
     cut.meshes.push_back(std::make_shared<Mesh>(std::move(m)));
   }
   return cut;
-}
-
-kernel::Polygon rectangle(double w, double h) {
-  return {{{0, 0}, {w, 0}, {w, h}, {0, h}}, {}};
 }
 
 // The outline of a flat piece: its single face as a polygon in the xy plane; null when the cut
@@ -155,7 +142,7 @@ OpResult split(ShapeTree& tree, ShapeId id, Axis axis, std::span<const SizeSpec>
     if (!cut.error.empty()) return OpResult::failure(cut.error);
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       const Vec3 size = piece_size(s.scope.size, axis, pieces[i].size);
-      outlines[i] = rect ? std::make_shared<kernel::Polygon>(rectangle(size.x, size.y))
+      outlines[i] = rect ? std::make_shared<kernel::Polygon>(rectangle_outline(size.x, size.y))
                          : outline_of(*cut.meshes[i]);
       meshes[i] = rect ? flat_mesh(*outlines[i], first_tag(s)) : cut.meshes[i];
     }
@@ -169,21 +156,17 @@ OpResult split(ShapeTree& tree, ShapeId id, Axis axis, std::span<const SizeSpec>
   OpResult result;
   const Scope scope = s.scope;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
-    Vec3 offset;
-    set_component(offset, axis, pieces[i].start);
-    const Scope child = scope.sub(offset, piece_size(scope.size, axis, pieces[i].size));
+    const Scope child = split_piece_scope(scope, axis, pieces[i]);
     result.add(tree.add_child(id, child, meshes[i], outlines[i]), pieces[i].entry);
   }
   return finish(tree, id, std::move(result));
 }
 
 OpResult repeat(ShapeTree& tree, ShapeId id, Axis axis, double size) {
-  if (!(size > 0) || !std::isfinite(size)) return OpResult::failure("size must be > 0");
-  const double total = component(tree[id].scope.size, axis);
-  const double count = std::max(1.0, std::floor(total / size + 1e-9));
-  if (count > 1e6) return OpResult::failure("more than 1000000 pieces");
-  const std::vector<SizeSpec> sizes(static_cast<std::size_t>(count),
-                                    SizeSpec{1, SizeMode::kFloating});
+  std::string error;
+  const std::size_t count = repeat_count(component(tree[id].scope.size, axis), size, error);
+  if (count == 0) return OpResult::failure(error);
+  const std::vector<SizeSpec> sizes(count, SizeSpec{1, SizeMode::kFloating});
   OpResult result = split(tree, id, axis, sizes);
   std::fill(result.pieces.begin(), result.pieces.end(), 0U);  // every piece is the one pattern
   return result;
