@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <initializer_list>
 
+#include "shape/component_ops.h"
 #include "shape/ops.h"
 
 namespace insula::shape {
@@ -315,7 +316,7 @@ const Registry& registry() {
     std::vector<Operation> all;
     for (auto* family :
          {&extrude_operations, &split_operations, &comp_operations, &transform_operations,
-          &offset_operations, &roof_operations, &insert_operations}) {
+          &offset_operations, &roof_operations, &insert_operations, &component_operations}) {
       for (Operation& op : (*family)()) all.push_back(std::move(op));
     }
     return Registry(std::move(all));

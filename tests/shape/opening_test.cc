@@ -1,0 +1,134 @@
+#include <gtest/gtest.h>
+
+#include "shape/component_ops.h"
+
+namespace insula::shape {
+namespace {
+
+using kernel::SemanticClass;
+using kernel::Vec3;
+
+ShapeId room(ShapeTree& tree, Vec3 size) {
+  Scope scope;
+  scope.x = {1, 0, 0};
+  scope.y = {0, 0, 1};
+  scope.z = {0, -1, 0};
+  scope.size = size;
+  return tree.add_root(scope, box_mesh(scope.size, mass_box_tags()));
+}
+
+double world_volume(const ShapeTree& tree, ShapeId id) {
+  return kernel::volume(mesh_to_world(*tree[id].mesh, tree[id].scope));
+}
+
+// The front (+z scope) face of the room as a flat component.
+ShapeId front_face(ShapeTree& tree, ShapeId r) {
+  for (std::size_t f = 0; f < tree[r].mesh->face_count(); ++f) {
+    if (face_matches(FaceSelector::kFront, kernel::face_normal(*tree[r].mesh, f))) {
+      return face_component(tree, r, f).children.at(0);
+    }
+  }
+  return kNoShape;
+}
+
+TEST(Opening, DoorAndWindowCutThroughASlabWall) {
+  ShapeTree tree;
+  const ShapeId r = room(tree, {5, 3, 4});
+  const ShapeId face = front_face(tree, r);
+  const ShapeId wall = extrude_joint(tree, std::span(&face, 1), -0.2).children.at(0);
+  OpeningSpec door;
+  door.u = 1.5;
+  door.width = 1;
+  door.height = 2;
+  const ShapeId d = add_opening(tree, face, door).children.at(0);
+  OpeningSpec window;
+  window.kind = OpeningKind::kWindow;
+  window.u = 3.5;
+  window.sill = 1;
+  window.width = 1.2;
+  window.height = 1.5;
+  const ShapeId w = add_opening(tree, face, window).children.at(0);
+  EXPECT_TRUE(tree.has_label(d, "door"));
+  EXPECT_TRUE(tree.has_label(w, "opening"));
+  const auto cut = opening_in_wall(tree, wall, d);
+  ASSERT_TRUE(cut.has_value());
+  EXPECT_NEAR(cut->width, 1, 1e-12);
+  EXPECT_NEAR(cut->height, 2, 1e-12);
+  SolidOptions options;
+  options.openings = {d, w};
+  const OpResult s = solid_geometry(tree, wall, options);
+  ASSERT_TRUE(s.ok()) << s.error;
+  const ShapeId solid = s.children.at(0);
+  EXPECT_TRUE(tree.has_label(solid, "solid"));
+  EXPECT_TRUE(kernel::is_watertight(*tree[solid].mesh));
+  EXPECT_NEAR(world_volume(tree, solid), 0.2 * (15 - 2 - 1.8), 1e-9);
+  int jambs = 0;
+  for (std::size_t k = 0; k < tree[solid].mesh->face_count(); ++k) {
+    jambs += tree[solid].mesh->tag(k).semantic == SemanticClass::kJamb ? 1 : 0;
+  }
+  EXPECT_EQ(jambs, 4);  // two per opening
+  // The door's own geometry: frame and leaf (the union half), watertight pieces.
+  EXPECT_EQ(tree[d].mesh->face_count(), 4U * 6U);
+  EXPECT_EQ(tree[w].mesh->face_count(), 5U * 6U);
+}
+
+TEST(Opening, DoorInAMitredRoomWallIsANotchAboveTheFloor) {
+  ShapeTree tree;
+  const ShapeId r = room(tree, {5, 3, 4});
+  std::vector<ShapeId> faces;
+  for (std::size_t f = 0; f < tree[r].mesh->face_count(); ++f) {
+    const Vec3 n = kernel::face_normal(*tree[r].mesh, f);
+    if (face_matches(FaceSelector::kSide, n) || face_matches(FaceSelector::kBottom, n)) {
+      faces.push_back(face_component(tree, r, f).children.at(0));
+    }
+  }
+  const OpResult walls = extrude_joint(tree, faces, -0.1);
+  ASSERT_TRUE(walls.ok());
+  ShapeId front = kNoShape;
+  ShapeId front_wall = kNoShape;
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    if (dot(tree[faces[i]].scope.z, Vec3{0, -1, 0}) > 0.99) {
+      front = faces[i];
+      front_wall = walls.children[i];
+    }
+  }
+  ASSERT_NE(front, kNoShape);
+  OpeningSpec door;
+  door.u = 2.5;
+  door.width = 1;
+  door.height = 2.1;
+  const ShapeId d = add_opening(tree, front, door).children.at(0);
+  const double before = world_volume(tree, front_wall);
+  SolidOptions options;
+  options.openings = {d};
+  const ShapeId solid = solid_geometry(tree, front_wall, options).children.at(0);
+  EXPECT_TRUE(kernel::is_watertight(*tree[solid].mesh, 1e-7) ||
+              kernel::check(kernel::weld(*tree[solid].mesh)).boundary_edges == 0);
+  // The notch starts on top of the 0.1 m floor: 1 x 2.0 x 0.1 removed.
+  EXPECT_NEAR(world_volume(tree, solid), before - 1 * 2.0 * 0.1, 1e-9);
+}
+
+TEST(Opening, OpeningsElsewhereLeaveTheGeometryShared) {
+  ShapeTree tree;
+  const ShapeId r = room(tree, {5, 3, 4});
+  const ShapeId face = front_face(tree, r);
+  const ShapeId wall = extrude_joint(tree, std::span(&face, 1), -0.2).children.at(0);
+  SolidOptions options;
+  options.uv_scale = 2;
+  const ShapeId solid = solid_geometry(tree, wall, options).children.at(0);
+  EXPECT_EQ(tree[solid].mesh, tree[wall].mesh);
+  EXPECT_EQ(std::get<double>(*tree.attribute(solid, "uv_scale")), 2);
+}
+
+TEST(Opening, BadSizeIsAnError) {
+  ShapeTree tree;
+  const ShapeId r = room(tree, {5, 3, 4});
+  const ShapeId face = front_face(tree, r);
+  OpeningSpec bad;
+  bad.width = 0;
+  EXPECT_EQ(add_opening(tree, face, bad).error, "width, height and depth must be > 0");
+  EXPECT_EQ(add_opening(tree, r, OpeningSpec{}).error, "an opening needs a flat wall component");
+}
+
+}  // namespace
+}  // namespace insula::shape
