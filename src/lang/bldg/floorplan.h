@@ -73,7 +73,9 @@ struct PlanRoom {
 struct PlanWall {
   kernel::Vec2 a;
   kernel::Vec2 b;
-  int left = 0;               // storey-local room index
+  // Storey-local room index, or kDeadZoneSide for the outer wall of a dead zone (its right side is
+  // then the exterior).
+  int left = 0;
   int right = kExteriorSide;  // room index, kExteriorSide or kDeadZoneSide
   double thickness = 0;       // outer or inner wall thickness from the restriction rules
   bool exterior() const { return right == kExteriorSide; }
@@ -182,7 +184,8 @@ struct FloorPlan {
 
 struct FloorPlanOptions {
   std::string file;  // for diagnostics (Span::file)
-  // §3.4 room shape adaptation; §5-beyond reachability guarantee. On by default.
+  // §3.4 room shape adaptation; the reachability guarantee (adding doors and stairs; unreachable
+  // rooms are listed either way). On by default.
   bool adapt_room_shapes = true;
   bool guarantee_reachability = true;
 };

@@ -1,0 +1,183 @@
+// make_floor_plan: the floor-plan engine's entry point (floorplan.h). It runs the stages in the
+// paper's order (§3.3 probing with weight borrowing, then §3.4's last subdivision, fake-concave
+// suppression and room shape adaptation) followed by the stages past the paper (stairs,
+// reachability) and the walls the 3D builder needs.
+#include "lang/bldg/floorplan.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernel/boolean2d.h"
+#include "lang/bldg/plan_geometry.h"
+#include "lang/bldg/plan_stages.h"
+#include "lang/bldg/plan_state.h"
+#include "lang/bldg/plan_transitions.h"
+
+namespace insula::lang::bldg {
+namespace {
+
+using plan::Work;
+
+base::Span span_at(const std::string& file, Location where) {
+  return where.line > 0 ? base::Span::at(file, where.line, where.column) : base::Span::whole(file);
+}
+
+bool check_outline(const Building& building, Work& work, std::vector<base::Diagnostic>& errors,
+                   const std::string& file) {
+  const Location where = building.outline_where.line > 0 ? building.outline_where : building.where;
+  if (building.outline.outer.size() < 3) {
+    errors.push_back(base::Diagnostic::error(
+        "PLAN003",
+        building.outline_file.empty()
+            ? "the building has no outline"
+            : "the outline from '" + building.outline_file + "' was not loaded",
+        span_at(file, where)));
+    return false;
+  }
+  const kernel::RepairResult repaired = kernel::repair(building.outline);
+  if (!repaired.ok) {
+    std::string why = "invalid";
+    for (const kernel::PolygonIssue& issue : repaired.issues)
+      if (!issue.repaired) {
+        why = issue.message;
+        break;
+      }
+    errors.push_back(base::Diagnostic::error(
+        "PLAN004", "the building outline is not a valid polygon: " + why, span_at(file, where)));
+    return false;
+  }
+  work.outline = repaired.polygon;
+  plan::simplify(work.outline);
+  return true;
+}
+
+// Storeys, parts and rooms of the plan from the work state (fake-concave: disposable parts and
+// their rooms stay out, §3.2).
+void assemble(Work& work, FloorPlan& out) {
+  out.outline = work.outline;
+  out.door_width = work.door_width;
+  out.storeys.resize(static_cast<std::size_t>(work.levels));
+  for (int level = 0; level < work.levels; ++level) out.storeys[level].level = level;
+  std::vector<kernel::Polygon> kept;
+  for (const plan::WorkPart& p : work.parts) {
+    PlanPart part;
+    part.symbol = p.node->symbol;
+    part.where = p.node->where;
+    part.roof = p.node->part->roof;
+    part.roof_height = p.node->part->height;
+    part.disposable = p.disposable();
+    part.outline = p.cell;
+    part.storeys = p.disposable() ? 0 : static_cast<int>(p.floors.size());
+    out.parts.push_back(part);
+    if (p.disposable() || !p.has_cell) continue;
+    kept.push_back(p.cell);
+    for (int f : p.floors) {
+      const plan::WorkFloor& floor = work.floors[f];
+      PlanStorey& storey = out.storeys[floor.level];
+      storey.height = std::max(storey.height, floor.height);
+      for (const PlanDeadZone& z : floor.dead_zones) storey.dead_zones.push_back(z);
+    }
+  }
+  double elevation = 0;
+  for (PlanStorey& storey : out.storeys) {
+    storey.elevation = elevation;
+    elevation += storey.height;
+  }
+  for (PlanPart& part : out.parts)
+    if (part.storeys > 0)
+      part.eaves = out.storeys[part.storeys - 1].elevation + out.storeys[part.storeys - 1].height;
+  out.footprint = kept.size() == 1 ? kept : kernel::union_all(kept);
+  // Rooms, part by part in grammar order.
+  for (std::size_t p = 0; p < work.parts.size(); ++p) {
+    const plan::WorkPart& wp = work.parts[p];
+    if (wp.disposable()) continue;
+    const double part_area = wp.has_cell ? kernel::area(wp.cell) : 0;
+    for (int f : wp.floors) {
+      const plan::WorkFloor& floor = work.floors[f];
+      double floor_weight = 0;
+      for (int r : floor.rooms) floor_weight += work.rooms[r].weight;
+      for (int r : floor.rooms) {
+        plan::WorkRoom& wr = work.rooms[r];
+        if (!wr.has_cell) continue;
+        const Room& room = *wr.division->room;
+        PlanRoom pr;
+        pr.symbol = wr.division->symbol;
+        pr.type = room.type;
+        pr.part = wp.node->symbol;
+        pr.part_index = static_cast<int>(p);
+        pr.storey = floor.level;
+        pr.where = wr.division->where;
+        pr.size = room.size;
+        pr.cell = wr.cell;
+        pr.weight = floor_weight > 0 ? wr.weight / floor_weight : 0;
+        pr.target_area = pr.weight * part_area;
+        pr.walls_asked = room.walls;
+        pr.windows_asked = room.windows;
+        pr.entrance_asked = room.entrance;
+        std::vector<PlanRoom>& rooms = out.storeys[floor.level].rooms;
+        wr.plan_index = static_cast<int>(rooms.size());
+        rooms.push_back(std::move(pr));
+      }
+    }
+  }
+}
+
+}  // namespace
+
+double default_door_width(const Building& building, const Restrictions& restrictions) {
+  const double from_perimeter =
+      restrictions.door_width_fraction * kernel::perimeter(building.outline);
+  return std::max(restrictions.door_min_width, std::isfinite(from_perimeter) ? from_perimeter : 0);
+}
+
+int find_room(const PlanStorey& storey, const std::string& symbol) {
+  for (std::size_t i = 0; i < storey.rooms.size(); ++i)
+    if (storey.rooms[i].symbol == symbol) return static_cast<int>(i);
+  return -1;
+}
+
+base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrictions& restrictions,
+                                        const FloorPlanOptions& options) {
+  std::vector<base::Diagnostic> errors;
+  Work work;
+  work.file = options.file;
+  if (!check_outline(building, work, errors, options.file))
+    return base::Result<FloorPlan>::failure(std::move(errors));
+  plan::build_work(building, restrictions, work, errors);
+  if (work.levels == 0 && errors.empty()) {
+    errors.push_back(base::Diagnostic::error(
+        "PLAN005", "the building has no building part that is kept (all are disposable)",
+        span_at(options.file, building.where)));
+  }
+  if (!errors.empty()) return base::Result<FloorPlan>::failure(std::move(errors));
+  work.door_width = default_door_width(building, restrictions);
+  // A door keeps half the thickest wall meeting its wall plus 10 cm of jamb from each end.
+  work.clearance =
+      0.5 * std::max(restrictions.outer_wall_thickness, restrictions.inner_wall_thickness) + 0.1;
+
+  plan::subdivide_all(work);  // §3.2, first arrangement
+  std::vector<plan::DoorRequest> doors = plan::collect_doors(work);
+  plan::fit_doors(work, doors);  // §3.3 probing: weight borrowing
+
+  for (const plan::WorkRoom& room : work.rooms) {
+    if (room.division == nullptr || room.has_cell || work.parts[room.part].disposable()) continue;
+    errors.push_back(base::Diagnostic::error(
+        "PLAN006", "room '" + room.division->symbol + "' gets no area in the floor plan",
+        span_at(options.file, room.division->where)));
+  }
+  if (!errors.empty()) return base::Result<FloorPlan>::failure(std::move(errors));
+
+  FloorPlan out;
+  assemble(work, out);  // §3.4: the last subdivision, fake-concave suppression
+  plan::place_doors(work, out, doors);
+  plan::place_entrances(work, out);
+  if (options.adapt_room_shapes) plan::adapt_room_shapes(work, out);
+  plan::place_stairs(work, out);
+  plan::guarantee_reachability(work, out, options.guarantee_reachability);
+  plan::place_windows(work, out);
+  plan::build_walls(work, out);
+  out.warnings = std::move(work.warnings);
+  return out;
+}
+
+}  // namespace insula::lang::bldg

@@ -1,0 +1,251 @@
+#include "lang/bldg/plan_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernel/boolean2d.h"
+
+namespace insula::lang::bldg::plan {
+namespace {
+
+using kernel::Polygon;
+using kernel::Ring;
+using kernel::Vec2;
+
+double coord(Vec2 p, bool along_x) {
+  return along_x ? p.x : p.y;
+}
+
+// Twice the signed area of `ring` clipped to coord <= t (Sutherland-Hodgman against one line).
+double clipped_twice_area(const Ring& ring, bool along_x, double t) {
+  const std::size_t n = ring.size();
+  if (n < 3) return 0;
+  const Vec2 origin = ring[0];
+  double twice = 0;
+  bool have_first = false;
+  Vec2 first;
+  Vec2 last;
+  auto emit = [&](Vec2 p) {
+    p = p - origin;
+    if (!have_first) {
+      first = p;
+      have_first = true;
+    } else {
+      twice += kernel::cross(last, p);
+    }
+    last = p;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 p = ring[i];
+    const Vec2 q = ring[(i + 1) % n];
+    const double cp = coord(p, along_x) - t;
+    const double cq = coord(q, along_x) - t;
+    if (cp <= 0) emit(p);
+    if ((cp < 0 && cq > 0) || (cp > 0 && cq < 0)) emit(p + (q - p) * (cp / (cp - cq)));
+  }
+  if (have_first) twice += kernel::cross(last, first);
+  return twice;
+}
+
+// Collinear test for consecutive vertices a, b, c: b lies on the line ac within the tolerance
+// and between a and c.
+bool redundant(Vec2 a, Vec2 b, Vec2 c) {
+  const Vec2 ac = c - a;
+  const double len = kernel::length(ac);
+  if (kernel::length(b - a) < kLineTolerance || kernel::length(c - b) < kLineTolerance) return true;
+  if (len < kLineTolerance) return false;
+  const double dist = std::abs(kernel::cross(ac, b - a)) / len;
+  return dist < kLineTolerance && kernel::dot(b - a, c - b) > 0;
+}
+
+void simplify_ring(Ring& ring) {
+  bool changed = true;
+  while (changed && ring.size() >= 3) {
+    changed = false;
+    for (std::size_t i = 0; i < ring.size() && ring.size() >= 3; ++i) {
+      const std::size_t n = ring.size();
+      if (redundant(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n])) {
+        ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
+        changed = true;
+        break;
+      }
+    }
+  }
+}
+
+struct Interval {
+  double s0;
+  double s1;
+  int other;
+};
+
+// Intervals of edge p->q (parameter in metres from p) covered by edges of `ring` running the
+// opposite way on the same line.
+void covered_by_ring(Vec2 p, Vec2 q, const Ring& ring, int other, std::vector<Interval>& out) {
+  const Vec2 d = q - p;
+  const double len = kernel::length(d);
+  if (len < kLineTolerance) return;
+  const Vec2 u = d / len;
+  const std::size_t n = ring.size();
+  for (std::size_t j = 0; j < n; ++j) {
+    const Vec2 a = ring[j];
+    const Vec2 b = ring[(j + 1) % n];
+    if (kernel::dot(b - a, u) >= 0) continue;  // must run the other way
+    if (std::abs(kernel::cross(u, a - p)) > kLineTolerance) continue;
+    if (std::abs(kernel::cross(u, b - p)) > kLineTolerance) continue;
+    const double sa = kernel::dot(a - p, u);
+    const double sb = kernel::dot(b - p, u);
+    const double lo = std::max(0.0, std::min(sa, sb));
+    const double hi = std::min(len, std::max(sa, sb));
+    if (hi - lo > kLineTolerance) out.push_back({lo, hi, other});
+  }
+}
+
+void pieces_of_edge(Vec2 p, Vec2 q, const std::vector<const Polygon*>& others,
+                    const std::vector<kernel::Bounds2>& boxes, std::vector<EdgePiece>& out) {
+  std::vector<Interval> covered;
+  kernel::Bounds2 edge_box;
+  edge_box.add(p);
+  edge_box.add(q);
+  for (std::size_t k = 0; k < others.size(); ++k) {
+    if (others[k] == nullptr || !bounds_touch(edge_box, boxes[k], kLineTolerance)) continue;
+    covered_by_ring(p, q, others[k]->outer, static_cast<int>(k), covered);
+    for (const Ring& hole : others[k]->holes)
+      covered_by_ring(p, q, hole, static_cast<int>(k), covered);
+  }
+  std::sort(covered.begin(), covered.end(),
+            [](const Interval& x, const Interval& y) { return x.s0 < y.s0; });
+  const double len = kernel::length(q - p);
+  const Vec2 u = (q - p) / len;
+  double s = 0;
+  const std::size_t start = out.size();  // pieces merge within this edge only
+  auto push = [&](double s0, double s1, int other) {
+    if (s1 - s0 <= kLineTolerance) return;
+    if (out.size() > start && out.back().other == other &&
+        kernel::length(out.back().b - (p + u * s0)) < kLineTolerance) {
+      out.back().b = s1 >= len - kLineTolerance ? q : p + u * s1;
+      return;
+    }
+    out.push_back({s0 <= kLineTolerance ? p : p + u * s0,
+                   s1 >= len - kLineTolerance ? q : p + u * s1, other});
+  };
+  for (const Interval& c : covered) {
+    if (c.s1 <= s + kLineTolerance) continue;
+    if (c.s0 > s) push(s, c.s0, -1);
+    push(std::max(s, c.s0), c.s1, c.other);
+    s = c.s1;
+  }
+  if (s < len) push(s, len, -1);
+}
+
+}  // namespace
+
+double area_below(const std::vector<Polygon>& region, bool along_x, double t) {
+  double twice = 0;
+  for (const Polygon& p : region) {
+    twice += clipped_twice_area(p.outer, along_x, t);
+    for (const Ring& h : p.holes) twice += clipped_twice_area(h, along_x, t);
+  }
+  return twice / 2;
+}
+
+double area_of(const std::vector<Polygon>& region) {
+  double total = 0;
+  for (const Polygon& p : region) total += kernel::area(p);
+  return total;
+}
+
+kernel::Bounds2 bounds_of(const std::vector<Polygon>& region) {
+  kernel::Bounds2 b;
+  for (const Polygon& p : region)
+    for (Vec2 v : p.outer) b.add(v);
+  return b;
+}
+
+Polygon rectangle(double x0, double y0, double x1, double y1) {
+  return Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
+}
+
+Polygon oriented_rectangle(Vec2 from, Vec2 along, Vec2 inward, double length, double depth) {
+  Polygon p{
+      {from, from + along * length, from + along * length + inward * depth, from + inward * depth},
+      {}};
+  kernel::normalize(p);
+  return p;
+}
+
+void simplify(Polygon& polygon) {
+  simplify_ring(polygon.outer);
+  for (Ring& h : polygon.holes) simplify_ring(h);
+  std::erase_if(polygon.holes, [](const Ring& h) { return h.size() < 3; });
+}
+
+int wall_count(const Polygon& polygon) {
+  Polygon copy{polygon.outer, {}};
+  simplify_ring(copy.outer);
+  return static_cast<int>(copy.outer.size());
+}
+
+std::vector<EdgePiece> boundary_pieces(const Polygon& cell,
+                                       const std::vector<const Polygon*>& others) {
+  std::vector<kernel::Bounds2> boxes(others.size());
+  for (std::size_t k = 0; k < others.size(); ++k)
+    if (others[k] != nullptr) boxes[k] = kernel::bounds(*others[k]);
+  std::vector<EdgePiece> out;
+  auto ring_pieces = [&](const Ring& ring) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 p = ring[i];
+      const Vec2 q = ring[(i + 1) % n];
+      if (kernel::length(q - p) < kLineTolerance) continue;
+      pieces_of_edge(p, q, others, boxes, out);
+    }
+  };
+  ring_pieces(cell.outer);
+  for (const Ring& h : cell.holes) ring_pieces(h);
+  return out;
+}
+
+std::vector<EdgePiece> shared_segments(const Polygon& cell, const Polygon& other) {
+  std::vector<EdgePiece> out;
+  for (const EdgePiece& piece : boundary_pieces(cell, {&other}))
+    if (piece.other == 0) out.push_back(piece);
+  return out;
+}
+
+double shared_length(const Polygon& cell, const Polygon& other) {
+  double total = 0;
+  for (const EdgePiece& piece : shared_segments(cell, other)) total += piece.length();
+  return total;
+}
+
+bool covers(const std::vector<Polygon>& outer, const Polygon& inner) {
+  const kernel::BooleanResult r = kernel::subtract({inner}, outer);
+  return r.ok() && area_of(r.polygons) < 1e-9;
+}
+
+bool overlaps(const Polygon& a, const Polygon& b) {
+  if (!bounds_touch(kernel::bounds(a), kernel::bounds(b), 0)) return false;
+  const kernel::BooleanResult r = kernel::intersect({a}, {b});
+  return r.ok() && area_of(r.polygons) > 1e-9;
+}
+
+bool bounds_touch(const kernel::Bounds2& a, const kernel::Bounds2& b, double margin) {
+  return a.min.x <= b.max.x + margin && b.min.x <= a.max.x + margin &&
+         a.min.y <= b.max.y + margin && b.min.y <= a.max.y + margin;
+}
+
+int largest(const std::vector<Polygon>& polygons) {
+  int best = -1;
+  double best_area = -1;
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const double a = kernel::area(polygons[i]);
+    if (a > best_area) {
+      best_area = a;
+      best = static_cast<int>(i);
+    }
+  }
+  return best;
+}
+
+}  // namespace insula::lang::bldg::plan

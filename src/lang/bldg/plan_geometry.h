@@ -1,0 +1,63 @@
+// Planar helpers of the floor-plan engine (floorplan.h): areas cut by an axis-parallel line (the
+// treemap's Eqs. 3-5 need them thousands of times, so they avoid a full polygon boolean), shared
+// boundaries between cells, ring simplification and wall counting. Booleans themselves come from
+// kernel/boolean2d.h.
+#pragma once
+
+#include <vector>
+
+#include "kernel/polygon.h"
+#include "kernel/vec.h"
+
+namespace insula::lang::bldg::plan {
+
+// Cells are snapped to the boolean grid (1e-6 m); boundaries closer than this are the same line.
+inline constexpr double kLineTolerance = 1e-5;
+
+// Area of the part of `region` with coordinate (x when along_x, else y) <= t. Rings are clipped
+// to the half-plane (Sutherland-Hodgman); the signed areas of the clipped rings are exact even for
+// concave rings and holes, because the degenerate edges the clipper leaves on the line cancel.
+double area_below(const std::vector<kernel::Polygon>& region, bool along_x, double t);
+double area_of(const std::vector<kernel::Polygon>& region);
+kernel::Bounds2 bounds_of(const std::vector<kernel::Polygon>& region);
+
+// Axis-parallel rectangle [x0, x1] x [y0, y1], counter-clockwise.
+kernel::Polygon rectangle(double x0, double y0, double x1, double y1);
+// Rectangle spanning `from` + `along` x [0, length], offset by `inward` x [0, depth].
+kernel::Polygon oriented_rectangle(kernel::Vec2 from, kernel::Vec2 along, kernel::Vec2 inward,
+                                   double length, double depth);
+
+// Removes repeated and collinear vertices (within kLineTolerance) from every ring.
+void simplify(kernel::Polygon& polygon);
+// Edges of the outer ring once collinear vertices are merged (the room's "walls", §3.4).
+int wall_count(const kernel::Polygon& polygon);
+
+// A piece of an edge of `cell`, oriented as the edge (the cell lies on its left), and the index
+// (into the `others` list) of the polygon on its right, or -1 when none is.
+struct EdgePiece {
+  kernel::Vec2 a;
+  kernel::Vec2 b;
+  int other = -1;
+  double length() const { return kernel::length(b - a); }
+};
+
+// Splits every edge of `cell` (outer ring and holes) into pieces by which of `others` lies on the
+// other side (an edge of another polygon on the same line, running the other way). Pieces come
+// in ring order. Null entries in `others` are skipped.
+std::vector<EdgePiece> boundary_pieces(const kernel::Polygon& cell,
+                                       const std::vector<const kernel::Polygon*>& others);
+
+// The maximal straight segments of `cell`'s boundary shared with `other` (oriented as in `cell`).
+std::vector<EdgePiece> shared_segments(const kernel::Polygon& cell, const kernel::Polygon& other);
+double shared_length(const kernel::Polygon& cell, const kernel::Polygon& other);
+
+// True when `inner` lies inside `outer` (area of inner minus outer below 1e-9 m²).
+bool covers(const std::vector<kernel::Polygon>& outer, const kernel::Polygon& inner);
+// True when the interiors of a and b overlap by more than 1e-9 m².
+bool overlaps(const kernel::Polygon& a, const kernel::Polygon& b);
+bool bounds_touch(const kernel::Bounds2& a, const kernel::Bounds2& b, double margin);
+
+// Index of the polygon of largest area; -1 when empty.
+int largest(const std::vector<kernel::Polygon>& polygons);
+
+}  // namespace insula::lang::bldg::plan

@@ -1,0 +1,184 @@
+#include "lang/bldg/plan_openings.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace insula::lang::bldg::plan {
+namespace {
+
+using kernel::Polygon;
+using kernel::Vec2;
+
+// Depth of the area in front of a door that must stay clear of stairs on both sides (m).
+constexpr double kDoorApproach = 0.9;
+
+struct Interval {
+  double lo;
+  double hi;
+};
+
+// Intervals of p->q (metres from p) occupied by openings of the storey on the same line.
+std::vector<Interval> occupied(const PlanStorey& storey, Vec2 p, Vec2 q) {
+  const Vec2 u = kernel::normalized(q - p);
+  std::vector<Interval> out;
+  auto add = [&](Vec2 a, Vec2 b) {
+    if (std::abs(kernel::cross(u, a - p)) > 1e-4 || std::abs(kernel::cross(u, b - p)) > 1e-4)
+      return;
+    const double sa = kernel::dot(a - p, u);
+    const double sb = kernel::dot(b - p, u);
+    out.push_back({std::min(sa, sb), std::max(sa, sb)});
+  };
+  for (const PlanDoor& d : storey.doors) add(d.a, d.b);
+  for (const PlanDoor& d : storey.entrances) add(d.a, d.b);
+  for (const PlanWindow& w : storey.windows) add(w.a, w.b);
+  return out;
+}
+
+bool clear_of(const std::vector<Polygon>& keep_out, const Polygon& zone) {
+  return std::none_of(keep_out.begin(), keep_out.end(),
+                      [&](const Polygon& k) { return overlaps(k, zone); });
+}
+
+}  // namespace
+
+std::vector<EdgePiece> room_pieces(const PlanStorey& storey, int room) {
+  std::vector<const Polygon*> others;
+  for (std::size_t i = 0; i < storey.rooms.size(); ++i)
+    others.push_back(static_cast<int>(i) == room ? nullptr : &storey.rooms[i].cell);
+  return boundary_pieces(storey.rooms[room].cell, others);
+}
+
+std::optional<Slot> find_slot(const PlanStorey& storey, Vec2 p, Vec2 q, double width,
+                              double clearance, const std::vector<Polygon>& keep_out,
+                              double prefer) {
+  const double len = kernel::length(q - p);
+  const double target = prefer >= 0 ? prefer : len / 2;
+  if (len < width + 2 * clearance) return std::nullopt;
+  const Vec2 u = (q - p) / len;
+  std::vector<Interval> busy = occupied(storey, p, q);
+  std::vector<Interval> free = {{clearance, len - clearance}};
+  for (const Interval& o : busy) {
+    std::vector<Interval> next;
+    for (const Interval& f : free) {
+      const double lo = o.lo - clearance;
+      const double hi = o.hi + clearance;
+      if (hi <= f.lo || lo >= f.hi) {
+        next.push_back(f);
+        continue;
+      }
+      if (lo > f.lo) next.push_back({f.lo, lo});
+      if (hi < f.hi) next.push_back({hi, f.hi});
+    }
+    free = std::move(next);
+  }
+  // Candidates: the position nearest the middle in each free interval, then positions sliding
+  // away from it, so a stair beside the middle does not rule the wall out.
+  std::vector<double> centres;
+  for (const Interval& f : free) {
+    if (f.hi - f.lo < width - 1e-9) continue;
+    const double lo = f.lo + width / 2;
+    const double hi = f.hi - width / 2;
+    centres.push_back(std::clamp(target, lo, hi));
+    for (double s = lo; s <= hi + 1e-9; s += 0.25) centres.push_back(std::min(s, hi));
+  }
+  std::stable_sort(centres.begin(), centres.end(),
+                   [&](double x, double y) { return std::abs(x - target) < std::abs(y - target); });
+  const Vec2 n = kernel::perp(u);
+  for (double c : centres) {
+    const Vec2 a = p + u * (c - width / 2);
+    if (!keep_out.empty()) {
+      const Polygon zone =
+          oriented_rectangle(a - n * kDoorApproach, u, n, width, 2 * kDoorApproach);
+      if (!clear_of(keep_out, zone)) continue;
+    }
+    return Slot{a, p + u * (c + width / 2), p + u * c};
+  }
+  return std::nullopt;
+}
+
+bool opening_on(const Polygon& cell, Vec2 a, Vec2 b, double clearance) {
+  constexpr double kTol = 1e-5;
+  auto check_ring = [&](const kernel::Ring& ring) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 p = ring[i];
+      const Vec2 q = ring[(i + 1) % n];
+      if (kernel::distance_to_segment(a, p, q) > kTol ||
+          kernel::distance_to_segment(b, p, q) > kTol)
+        continue;
+      // On this edge: the opening keeps `clearance` from both ends of the edge.
+      const Vec2 u = kernel::normalized(q - p);
+      const double sa = kernel::dot(a - p, u);
+      const double sb = kernel::dot(b - p, u);
+      const double len = kernel::length(q - p);
+      return std::min(sa, sb) >= clearance - kTol && std::max(sa, sb) <= len - clearance + kTol;
+    }
+    return false;
+  };
+  if (check_ring(cell.outer)) return true;
+  return std::any_of(cell.holes.begin(), cell.holes.end(), check_ring);
+}
+
+bool openings_intact(const PlanStorey& storey, const std::vector<int>& rooms, double clearance) {
+  auto touches = [&](int r) { return std::find(rooms.begin(), rooms.end(), r) != rooms.end(); };
+  auto door_ok = [&](const PlanDoor& d) {
+    if (!touches(d.room_a) && !(d.room_b >= 0 && touches(d.room_b))) return true;
+    if (!opening_on(storey.rooms[d.room_a].cell, d.a, d.b, clearance)) return false;
+    return d.room_b < 0 || opening_on(storey.rooms[d.room_b].cell, d.a, d.b, clearance);
+  };
+  return std::all_of(storey.doors.begin(), storey.doors.end(), door_ok) &&
+         std::all_of(storey.entrances.begin(), storey.entrances.end(), door_ok) &&
+         std::all_of(storey.windows.begin(), storey.windows.end(), [&](const PlanWindow& w) {
+           return !touches(w.room) || opening_on(storey.rooms[w.room].cell, w.a, w.b, clearance);
+         });
+}
+
+std::optional<PlanDoor> door_between(const PlanStorey& storey, int a, int b, double width,
+                                     double clearance, const std::vector<Polygon>& keep_out) {
+  std::vector<EdgePiece> shared = shared_segments(storey.rooms[a].cell, storey.rooms[b].cell);
+  std::stable_sort(shared.begin(), shared.end(),
+                   [](const EdgePiece& x, const EdgePiece& y) { return x.length() > y.length(); });
+  for (const EdgePiece& piece : shared) {
+    const std::optional<Slot> slot =
+        find_slot(storey, piece.a, piece.b, width, clearance, keep_out);
+    if (!slot) continue;
+    PlanDoor door;
+    door.room_a = a;
+    door.room_b = b;
+    door.a = slot->a;
+    door.b = slot->b;
+    door.center = slot->center;
+    door.width = width;
+    return door;
+  }
+  return std::nullopt;
+}
+
+std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, int room,
+                                       const std::vector<Polygon>& footprint) {
+  std::vector<EdgePiece> out;
+  for (const EdgePiece& piece : room_pieces(storey, room)) {
+    if (piece.other >= 0) continue;
+    const Vec2 u = kernel::normalized(piece.b - piece.a);
+    const Vec2 outside = (piece.a + piece.b) * 0.5 - kernel::perp(u) * 0.01;
+    bool covered = false;
+    for (const Polygon& f : footprint)
+      covered = covered || kernel::locate(f, outside, 1e-7) == kernel::PointLocation::kInside;
+    bool dead = false;
+    for (const PlanDeadZone& z : storey.dead_zones)
+      dead = dead || kernel::locate(z.cell, outside, 1e-7) == kernel::PointLocation::kInside;
+    if (!covered && !dead) out.push_back(piece);
+  }
+  return out;
+}
+
+std::vector<Polygon> stair_keep_out(const FloorPlan& plan, int level) {
+  std::vector<Polygon> out;
+  if (level >= 0 && level < static_cast<int>(plan.storeys.size()))
+    for (const PlanStair& s : plan.storeys[level].stairs) out.push_back(s.footprint);
+  if (level >= 1)
+    for (const PlanStair& s : plan.storeys[level - 1].stairs) out.push_back(s.footprint);
+  return out;
+}
+
+}  // namespace insula::lang::bldg::plan

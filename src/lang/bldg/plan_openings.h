@@ -1,0 +1,55 @@
+// Openings of the floor plan: where a door, an entrance or a window goes on a wall (seed 000, §3.3
+// "geometric tests ... to check if there is space to place a transition"), and the checks that
+// keep placed openings valid while later stages (room shape adaptation, added doors) edit cells.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "kernel/polygon.h"
+#include "lang/bldg/floorplan.h"
+#include "lang/bldg/plan_geometry.h"
+
+namespace insula::lang::bldg::plan {
+
+struct Slot {
+  kernel::Vec2 a;
+  kernel::Vec2 b;
+  kernel::Vec2 center;
+};
+
+// The pieces of room `room`'s boundary with the storey's room index on the other side (-1 for the
+// exterior or a dead zone).
+std::vector<EdgePiece> room_pieces(const PlanStorey& storey, int room);
+
+// A slot of `width` on segment p->q: `clearance` free at both ends and from every opening of the
+// storey on the same line, out of `keep_out` areas (stairs) on both sides of the wall, centred as
+// close as possible to `prefer` metres from p (the segment's middle when negative).
+std::optional<Slot> find_slot(const PlanStorey& storey, kernel::Vec2 p, kernel::Vec2 q,
+                              double width, double clearance,
+                              const std::vector<kernel::Polygon>& keep_out = {},
+                              double prefer = -1);
+
+// True when a..b lies on one straight edge of `cell` with no vertex of the cell within
+// `clearance` of it along that edge.
+bool opening_on(const kernel::Polygon& cell, kernel::Vec2 a, kernel::Vec2 b, double clearance);
+
+// True when every door and entrance touching one of `rooms` still sits on its wall.
+bool openings_intact(const PlanStorey& storey, const std::vector<int>& rooms, double clearance);
+
+// Places a door between rooms a and b of the storey on their longest shared segment where a slot
+// fits; nullopt when none does.
+std::optional<PlanDoor> door_between(const PlanStorey& storey, int a, int b, double width,
+                                     double clearance,
+                                     const std::vector<kernel::Polygon>& keep_out = {});
+
+// Segments of room `room`'s boundary that face the open air: exterior pieces whose outside is not
+// covered by `footprint` (on upper storeys a piece above a lower part's roof is not open air).
+std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, int room,
+                                       const std::vector<kernel::Polygon>& footprint);
+
+// Stair footprints that constrain doors of `storey`: its own flights and the stairwells of the
+// flights arriving from the storey below.
+std::vector<kernel::Polygon> stair_keep_out(const FloorPlan& plan, int level);
+
+}  // namespace insula::lang::bldg::plan

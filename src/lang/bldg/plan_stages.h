@@ -1,0 +1,36 @@
+// The stages of the floor-plan engine after the subdivision, in the order floorplan.cc runs them.
+// Each edits the FloorPlan being assembled; warnings go to Work::warnings.
+#pragma once
+
+#include <vector>
+
+#include "lang/bldg/floorplan.h"
+#include "lang/bldg/plan_state.h"
+#include "lang/bldg/plan_transitions.h"
+
+namespace insula::lang::bldg::plan {
+
+// Doors between rooms, on their longest shared segment (§3.3); requests that lost their fit are
+// dropped with a warning.
+void place_doors(Work& work, FloorPlan& plan, const std::vector<DoorRequest>& doors);
+// Entrance doors of rooms flagged `entrance` and of entrance transitions, on the ground storey's
+// open-air walls; when the building has none, one on the room with the longest open-air wall.
+void place_entrances(Work& work, FloorPlan& plan);
+// §3.4: add or remove room outline vertices toward the requested number of walls (plan_shape.cc).
+void adapt_room_shapes(Work& work, FloorPlan& plan);
+// Stair transitions: a straight flight inside both rooms (plan_stairs.cc).
+void place_stairs(Work& work, FloorPlan& plan);
+// Adds a stair between reachable room `lower` (storey level) and room `upper` (level + 1) when
+// one fits; returns whether it did.
+bool add_stair(Work& work, FloorPlan& plan, int level, int lower, int upper,
+               const std::string& symbol, Location where, bool added);
+// Every room reachable from an entrance through doors and stairs, doors and stairs added where
+// they fit (when `repair`); the rest listed in FloorPlan::unreachable_rooms with the reason
+// (plan_reach.cc).
+void guarantee_reachability(Work& work, FloorPlan& plan, bool repair);
+// Windows on open-air walls, as many as asked where they fit.
+void place_windows(Work& work, FloorPlan& plan);
+// Walls from the final cells, wall indices of every opening, rooms' neighbours (plan_walls.cc).
+void build_walls(Work& work, FloorPlan& plan);
+
+}  // namespace insula::lang::bldg::plan

@@ -1,0 +1,213 @@
+#include "lang/bldg/plan_transitions.h"
+
+#include <algorithm>
+
+#include "lang/bldg/plan_geometry.h"
+
+namespace insula::lang::bldg::plan {
+namespace {
+
+// What a borrowing attempt may change, to roll it back (§3.3: "borrowed space flows back").
+struct Snapshot {
+  std::vector<double> weights;
+  std::vector<kernel::Polygon> room_cells;
+  std::vector<bool> room_has;
+  std::vector<kernel::Polygon> part_cells;
+  std::vector<bool> part_has;
+  std::vector<std::vector<PlanDeadZone>> dead_zones;
+};
+
+Snapshot take(const Work& work) {
+  Snapshot s;
+  for (const WorkRoom& r : work.rooms) {
+    s.weights.push_back(r.weight);
+    s.room_cells.push_back(r.cell);
+    s.room_has.push_back(r.has_cell);
+  }
+  for (const WorkPart& p : work.parts) {
+    s.part_cells.push_back(p.cell);
+    s.part_has.push_back(p.has_cell);
+  }
+  for (const WorkFloor& f : work.floors) s.dead_zones.push_back(f.dead_zones);
+  return s;
+}
+
+void restore(Work& work, const Snapshot& s) {
+  for (std::size_t i = 0; i < work.rooms.size(); ++i) {
+    work.rooms[i].weight = s.weights[i];
+    work.rooms[i].cell = s.room_cells[i];
+    work.rooms[i].has_cell = s.room_has[i];
+  }
+  for (std::size_t i = 0; i < work.parts.size(); ++i) {
+    work.parts[i].cell = s.part_cells[i];
+    work.parts[i].has_cell = s.part_has[i];
+  }
+  for (std::size_t i = 0; i < work.floors.size(); ++i) work.floors[i].dead_zones = s.dead_zones[i];
+}
+
+// Rooms of the same floor under the parent container of `room`, other than `room` itself.
+std::vector<int> siblings(const Work& work, int room) {
+  const WorkRoom& r = work.rooms[room];
+  if (r.floor < 0) return {};
+  const WorkFloor& floor = work.floors[r.floor];
+  int node = -1;
+  for (std::size_t n = 0; n < floor.tree.size(); ++n)
+    if (floor.tree[n].leaf == room) node = static_cast<int>(n);
+  if (node < 0 || floor.tree[node].parent < 0) return {};
+  std::vector<int> out;
+  std::vector<int> stack = {floor.tree[node].parent};
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    if (floor.tree[n].leaf >= 0 && floor.tree[n].leaf != room) out.push_back(floor.tree[n].leaf);
+    for (int c : floor.tree[n].children) stack.push_back(c);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Redoes the cells after the weights of `changed` rooms moved: the parts when a ground-floor
+// weight moved (they weigh what their ground floor weighs), then the floors concerned (all of them
+// when a part's cell changed).
+void recompute(Work& work, const std::vector<int>& changed) {
+  bool ground = false;
+  for (int r : changed) ground = ground || work.rooms[r].level == 0;
+  if (ground && subdivide_parts(work)) {
+    for (std::size_t f = 0; f < work.floors.size(); ++f) subdivide_floor(work, static_cast<int>(f));
+    return;
+  }
+  std::vector<int> floors;
+  for (int r : changed)
+    if (work.rooms[r].floor >= 0) floors.push_back(work.rooms[r].floor);
+  std::sort(floors.begin(), floors.end());
+  floors.erase(std::unique(floors.begin(), floors.end()), floors.end());
+  for (int f : floors) subdivide_floor(work, f);
+}
+
+bool all_fit(const Work& work, const std::vector<DoorRequest>& doors, std::size_t upto) {
+  for (std::size_t i = 0; i < upto; ++i)
+    if (doors[i].accepted && !door_fits(work, doors[i].a, doors[i].b, doors[i].width)) return false;
+  return door_fits(work, doors[upto].a, doors[upto].b, doors[upto].width);
+}
+
+// Tries lending weight to `borrower` from `lenders`, in four growing amounts up to the limit.
+bool try_borrow(Work& work, std::vector<DoorRequest>& doors, std::size_t index, int borrower,
+                const std::vector<int>& lenders) {
+  if (lenders.empty()) return false;
+  const double limit = std::clamp(work.restrictions->borrow_limit, 0.0, 0.95);
+  if (limit <= 0) return false;
+  const Snapshot before = take(work);
+  std::vector<int> changed = lenders;
+  changed.push_back(borrower);
+  constexpr int kAmounts = 4;
+  for (int k = 1; k <= kAmounts; ++k) {
+    double lent = 0;
+    for (int l : lenders) {
+      const double give = before.weights[l] * limit * k / kAmounts;
+      work.rooms[l].weight = before.weights[l] - give;
+      lent += give;
+    }
+    work.rooms[borrower].weight = before.weights[borrower] + lent;
+    recompute(work, changed);
+    if (all_fit(work, doors, index)) return true;
+  }
+  restore(work, before);
+  return false;
+}
+
+}  // namespace
+
+std::vector<int> rooms_named(const Work& work, const std::string& symbol) {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < work.rooms.size(); ++i) {
+    const Division* d = work.rooms[i].division;
+    if (d != nullptr && d->symbol == symbol) out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
+std::vector<DoorRequest> collect_doors(Work& work) {
+  std::vector<DoorRequest> out;
+  for (const Transition& t : work.building->transitions) {
+    if (t.kind != TransitionKind::kDoor) continue;
+    const std::vector<int> from = rooms_named(work, t.from);
+    const std::vector<int> to = rooms_named(work, t.to);
+    if (from.empty() || to.empty()) {
+      warn(work, "door '" + t.symbol + "' names a room that does not exist; ignored", t.where);
+      continue;
+    }
+    int a = -1;
+    int b = -1;
+    for (int x : from)
+      for (int y : to)
+        if (a < 0 && x != y && work.rooms[x].level == work.rooms[y].level) {
+          a = x;
+          b = y;
+        }
+    if (a < 0) {
+      warn(work, "door '" + t.symbol + "' joins rooms on different storeys (use a stair); ignored",
+           t.where);
+      continue;
+    }
+    if (work.parts[work.rooms[a].part].disposable() ||
+        work.parts[work.rooms[b].part].disposable()) {
+      warn(work, "door '" + t.symbol + "' touches a disposable part; ignored (fake-concave)",
+           t.where);
+      continue;
+    }
+    DoorRequest request;
+    request.transition = &t;
+    request.a = a;
+    request.b = b;
+    request.width = t.width > 0 ? t.width : work.door_width;
+    out.push_back(request);
+  }
+  return out;
+}
+
+double longest_shared(const Work& work, int a, int b) {
+  const WorkRoom& ra = work.rooms[a];
+  const WorkRoom& rb = work.rooms[b];
+  if (!ra.has_cell || !rb.has_cell) return 0;
+  double best = 0;
+  for (const EdgePiece& piece : shared_segments(ra.cell, rb.cell))
+    best = std::max(best, piece.length());
+  return best;
+}
+
+bool door_fits(const Work& work, int a, int b, double width) {
+  return longest_shared(work, a, b) >= width + 2 * work.clearance - 1e-9;
+}
+
+void fit_doors(Work& work, std::vector<DoorRequest>& doors) {
+  for (std::size_t i = 0; i < doors.size(); ++i) {
+    DoorRequest& d = doors[i];
+    if (door_fits(work, d.a, d.b, d.width)) {
+      d.accepted = true;
+      continue;
+    }
+    // Fig. 4: lend between the two rooms first, then from each room's siblings.
+    std::vector<int> sib_a = siblings(work, d.a);
+    std::vector<int> sib_b = siblings(work, d.b);
+    std::erase(sib_a, d.b);
+    std::erase(sib_b, d.a);
+    const bool ok =
+        try_borrow(work, doors, i, d.a, {d.b}) || try_borrow(work, doors, i, d.b, {d.a}) ||
+        try_borrow(work, doors, i, d.a, sib_a) || try_borrow(work, doors, i, d.b, sib_b);
+    d.accepted = ok;
+    d.borrowed = ok;
+    if (!ok) {
+      const double got = longest_shared(work, d.a, d.b);
+      warn(work,
+           "door '" + d.transition->symbol + "' between '" + room_name(work, d.a) + "' and '" +
+               room_name(work, d.b) + "' does not fit (" +
+               (got > 0 ? "their longest shared wall is " + std::to_string(got).substr(0, 5) + " m"
+                        : std::string("they do not touch")) +
+               ", the door needs " + std::to_string(d.width + 2 * work.clearance).substr(0, 5) +
+               " m even after weight borrowing); dropped",
+           d.transition->where);
+    }
+  }
+}
+
+}  // namespace insula::lang::bldg::plan

@@ -1,0 +1,112 @@
+#include "lang/bldg/plan_treemap.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernel/boolean2d.h"
+#include "lang/bldg/plan_geometry.h"
+
+namespace insula::lang::bldg::plan {
+namespace {
+
+using kernel::Polygon;
+
+struct AreaFunction {
+  const std::vector<Polygon>& region;
+  bool along_x;
+  TreemapStats& stats;
+  double operator()(double t) const {
+    ++stats.area_evaluations;
+    return area_below(region, along_x, t);
+  }
+};
+
+// The end coordinate of rectangle i: starts at `start` with width w0 (Eq. 2), scaled by +-step
+// until area_below crosses `target` (Eqs. 4-5), then bisected within the last step.
+double place_cut(const AreaFunction& area, double start, double w0, double extent, double step,
+                 double target, double tolerance, double end) {
+  const double delta = step * extent;
+  double w = std::clamp(w0, 0.0, end - start);
+  double f = area(start + w) - target;
+  double lo = w;
+  double hi = w;
+  if (f < 0) {
+    while (f < 0 && start + w < end) {  // grow: Sx = (width + step) / width
+      lo = w;
+      w = std::min(w + delta, end - start);
+      f = area(start + w) - target;
+      ++area.stats.scaling_steps;
+    }
+    hi = w;
+  } else {
+    while (f > 0 && w > 0) {  // shrink: Sx = (width - step) / width
+      hi = w;
+      w = std::max(w - delta, 0.0);
+      f = area(start + w) - target;
+      ++area.stats.scaling_steps;
+    }
+    lo = w;
+  }
+  if (std::abs(f) <= tolerance) return start + w;
+  for (int k = 0; k < 100 && hi - lo > 1e-12 * std::max(1.0, extent); ++k) {
+    const double mid = 0.5 * (lo + hi);
+    const double fm = area(start + mid) - target;
+    if (std::abs(fm) <= tolerance) return start + mid;
+    (fm < 0 ? lo : hi) = mid;
+  }
+  return start + 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+std::vector<std::vector<Polygon>> split_region(const std::vector<Polygon>& region,
+                                               const std::vector<double>& weights, bool along_x,
+                                               double step, TreemapStats* stats) {
+  TreemapStats local;
+  TreemapStats& s = stats != nullptr ? *stats : local;
+  std::vector<std::vector<Polygon>> cells(weights.size());
+  if (weights.empty()) return cells;
+  if (weights.size() == 1) {
+    cells[0] = region;
+    return cells;
+  }
+  if (!(step > 0 && step <= 0.5)) step = 0.01;
+  const kernel::Bounds2 box = bounds_of(region);
+  const double lo = along_x ? box.min.x : box.min.y;
+  const double hi = along_x ? box.max.x : box.max.y;
+  const double extent = hi - lo;
+  const double total_area = area_of(region);
+  double total_weight = 0;
+  for (double w : weights) total_weight += w;
+  const AreaFunction area{region, along_x, s};
+  // Cut coordinates: cuts[i] ends child i; the first starts at the minimum rectangle (Eq. 1).
+  std::vector<double> cuts(weights.size() + 1);
+  cuts[0] = lo;
+  cuts.back() = hi;
+  double cumulative = 0;
+  for (std::size_t i = 0; i + 1 < weights.size(); ++i) {
+    const double relative = weights[i] / total_weight;
+    cumulative += relative;
+    cuts[i + 1] = place_cut(area, cuts[i], extent * relative, extent, step, total_area * cumulative,
+                            1e-9 * total_area, hi);
+  }
+  // Eq. 3: each auxiliary rectangle (reaching past the region across the axis, and past the
+  // minimum rectangle at both ends of the row) intersected with the region.
+  const double pad = 1 + 0.01 * std::max(box.max.x - box.min.x, box.max.y - box.min.y);
+  for (std::size_t i = 0; i < weights.size(); ++i) {
+    const double a = i == 0 ? lo - pad : cuts[i];
+    const double b = i + 1 == weights.size() ? hi + pad : cuts[i + 1];
+    if (b - a <= 0) continue;
+    const Polygon rect = along_x ? rectangle(a, box.min.y - pad, b, box.max.y + pad)
+                                 : rectangle(box.min.x - pad, a, box.max.x + pad, b);
+    kernel::BooleanResult r = kernel::intersect(region, {rect});
+    if (!r.ok()) continue;
+    for (Polygon& p : r.polygons) {
+      simplify(p);
+      if (p.outer.size() >= 3 && kernel::area(p) > 1e-9) cells[i].push_back(std::move(p));
+    }
+  }
+  return cells;
+}
+
+}  // namespace insula::lang::bldg::plan

@@ -1,0 +1,80 @@
+// Walls of the final plan: every boundary piece of every cell once, with the rooms on both sides
+// (floorplan.h, PlanWall), then the wall each opening sits on and the rooms' door neighbours.
+#include <algorithm>
+
+#include "lang/bldg/plan_geometry.h"
+#include "lang/bldg/plan_stages.h"
+
+namespace insula::lang::bldg::plan {
+namespace {
+
+using kernel::Polygon;
+
+void storey_walls(const Restrictions& r, PlanStorey& storey) {
+  const int rooms = static_cast<int>(storey.rooms.size());
+  std::vector<const Polygon*> cells;
+  for (const PlanRoom& room : storey.rooms) cells.push_back(&room.cell);
+  for (const PlanDeadZone& z : storey.dead_zones) cells.push_back(&z.cell);
+  for (int i = 0; i < static_cast<int>(cells.size()); ++i) {
+    std::vector<const Polygon*> others = cells;
+    others[i] = nullptr;
+    const bool dead = i >= rooms;
+    for (const EdgePiece& piece : boundary_pieces(*cells[i], others)) {
+      PlanWall wall;
+      wall.a = piece.a;
+      wall.b = piece.b;
+      wall.left = dead ? kDeadZoneSide : i;
+      if (piece.other < 0) {
+        wall.right = kExteriorSide;
+      } else if (piece.other >= rooms) {
+        if (dead) continue;  // between two dead zones: no wall
+        wall.right = kDeadZoneSide;
+      } else {
+        if (dead || piece.other < i) continue;  // listed from the other side
+        wall.right = piece.other;
+      }
+      wall.thickness =
+          wall.right == kExteriorSide ? r.outer_wall_thickness : r.inner_wall_thickness;
+      storey.walls.push_back(wall);
+    }
+  }
+}
+
+int wall_of(const PlanStorey& storey, int a, int b, kernel::Vec2 centre) {
+  for (std::size_t w = 0; w < storey.walls.size(); ++w) {
+    const PlanWall& wall = storey.walls[w];
+    const bool sides = (wall.left == a && wall.right == b) || (wall.left == b && wall.right == a);
+    if (sides && kernel::distance_to_segment(centre, wall.a, wall.b) < 1e-5)
+      return static_cast<int>(w);
+  }
+  return -1;
+}
+
+}  // namespace
+
+void build_walls(Work& work, FloorPlan& plan) {
+  for (PlanStorey& storey : plan.storeys) {
+    storey.walls.clear();
+    storey_walls(*work.restrictions, storey);
+    for (PlanDoor& d : storey.doors) d.wall = wall_of(storey, d.room_a, d.room_b, d.center);
+    for (PlanDoor& d : storey.entrances)
+      d.wall = wall_of(storey, d.room_a, kExteriorSide, d.center);
+    for (PlanWindow& w : storey.windows) w.wall = wall_of(storey, w.room, kExteriorSide, w.center);
+    for (PlanRoom& room : storey.rooms) {
+      room.area = kernel::area(room.cell);
+      room.walls = wall_count(room.cell);
+      room.neighbors.clear();
+    }
+    for (const PlanDoor& d : storey.doors) {
+      storey.rooms[d.room_a].neighbors.push_back(d.room_b);
+      storey.rooms[d.room_b].neighbors.push_back(d.room_a);
+    }
+    for (PlanRoom& room : storey.rooms) {
+      std::sort(room.neighbors.begin(), room.neighbors.end());
+      room.neighbors.erase(std::unique(room.neighbors.begin(), room.neighbors.end()),
+                           room.neighbors.end());
+    }
+  }
+}
+
+}  // namespace insula::lang::bldg::plan
