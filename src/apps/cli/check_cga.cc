@@ -1,19 +1,32 @@
-// `insula check FILE.cga`.
+// `insula check FILE.cga`: parse (parser.h), then the static semantics (checker.h); every
+// diagnostic goes to stderr, and the summary line only when there is no error.
 #include <optional>
 #include <string>
 
 #include "apps/cli/front_ends.h"
+#include "lang/cga/checker.h"
 #include "lang/cga/parser.h"
 
 namespace insula::cli {
 
 std::optional<std::string> check_cga(const base::Source& source, bool quiet) {
   base::Result<lang::cga::Grammar> grammar = lang::cga::parse(source);
-  print_diagnostics(grammar.diagnostics(), source, quiet);
-  if (!grammar.ok()) return std::nullopt;
-  std::size_t rules = 0;
-  for (const auto& set : grammar->sets) rules += set.rules.size();
-  return std::to_string(rules) + " rules, " + std::to_string(grammar->attrs.size()) + " attributes";
+  if (!grammar.ok()) {
+    print_diagnostics(grammar.diagnostics(), source, quiet);
+    return std::nullopt;
+  }
+  const lang::cga::CheckResult checked = lang::cga::check(grammar.value(), source);
+  print_diagnostics(checked.diagnostics, source, quiet);
+  if (!checked.ok) return std::nullopt;
+  std::size_t warnings = 0;
+  for (const base::Diagnostic& d : checked.diagnostics) {
+    if (d.severity == base::Severity::kWarning) ++warnings;
+  }
+  const std::size_t reachable = checked.reachable_rules().size();
+  return std::to_string(checked.rules.size()) + " rules (" + std::to_string(reachable) +
+         " reachable), " + std::to_string(grammar->attrs.size()) + " attributes, start '" +
+         checked.start_symbol + "', " + std::to_string(warnings) + " warning" +
+         (warnings == 1 ? "" : "s");
 }
 
 }  // namespace insula::cli

@@ -1,0 +1,187 @@
+// Static semantics of CGA expressions: every identifier is a grammar attribute, a name given from
+// outside (CheckOptions::known_attributes) or a shape attribute (`Shape.sx`, builtins.h); every
+// function exists with a fitting number of arguments (builtins.h); literals fold to constants so
+// the checks of §IV.B (probabilities, angles) can run on them.
+#include <cmath>
+#include <string>
+
+#include "lang/cga/builtins.h"
+#include "lang/cga/checker_internal.h"
+
+namespace insula::lang::cga::detail {
+namespace {
+
+std::string arity_text(std::uint8_t min_args, std::uint8_t max_args) {
+  if (max_args == kUnbounded) return "at least " + std::to_string(min_args);
+  if (min_args == max_args) return std::to_string(min_args);
+  return std::to_string(min_args) + " to " + std::to_string(max_args);
+}
+
+std::string plural(std::size_t count, const char* word) {
+  return std::to_string(count) + " " + word + (count == 1 ? "" : "s");
+}
+
+std::optional<double> arithmetic(BinaryOp op, double a, double b) {
+  switch (op) {
+    case BinaryOp::kAdd:
+      return a + b;
+    case BinaryOp::kSub:
+      return a - b;
+    case BinaryOp::kMul:
+      return a * b;
+    case BinaryOp::kDiv:
+      if (b == 0.0) return std::nullopt;
+      return a / b;
+    case BinaryOp::kMod:
+      if (b == 0.0) return std::nullopt;
+      return std::fmod(a, b);
+    default:
+      return std::nullopt;  // comparisons and logic are not numbers
+  }
+}
+
+}  // namespace
+
+std::optional<Constant> fold(const Expr& expr) {
+  switch (expr.kind) {
+    case ExprKind::kNumber:
+      return Constant{expr.number};
+    case ExprKind::kUnary: {
+      if (expr.operands.empty() || expr.unary_op == UnaryOp::kNot) return std::nullopt;
+      std::optional<Constant> inner = fold(*expr.operands[0]);
+      if (!inner) return std::nullopt;
+      if (expr.unary_op == UnaryOp::kNegate) inner->value = -inner->value;
+      if (expr.unary_op == UnaryOp::kRelative) inner->relative = true;
+      if (expr.unary_op == UnaryOp::kFloating) inner->floating = true;
+      return inner;
+    }
+    case ExprKind::kBinary: {
+      if (expr.operands.size() != 2) return std::nullopt;
+      const std::optional<Constant> a = fold(*expr.operands[0]);
+      const std::optional<Constant> b = fold(*expr.operands[1]);
+      if (!a || !b || a->relative || a->floating || b->relative || b->floating) {
+        return std::nullopt;
+      }
+      const std::optional<double> value = arithmetic(expr.binary_op, a->value, b->value);
+      if (!value || !std::isfinite(*value)) return std::nullopt;
+      return Constant{*value};
+    }
+    default:
+      return std::nullopt;
+  }
+}
+
+void Checker::check_expr(const Expr& expr, ExprRole role) {
+  switch (expr.kind) {
+    case ExprKind::kNumber:
+    case ExprKind::kString:
+    case ExprKind::kBool:
+      return;
+    case ExprKind::kIdent:
+      check_identifier(expr, role);
+      return;
+    case ExprKind::kMember:
+      check_member(expr);
+      return;
+    case ExprKind::kCall:
+      check_call(expr);
+      return;
+    case ExprKind::kUnary:
+    case ExprKind::kBinary:
+      for (const ExprPtr& operand : expr.operands) check_expr(*operand);
+      return;
+  }
+}
+
+// A bare identifier names a grammar attribute or a name given from outside (lot properties,
+// --set). Where an operation accepts a bare word (an axis, an asset), an unknown identifier is
+// that word and the operation's check decides (checker_successors.cc).
+void Checker::check_identifier(const Expr& expr, ExprRole role) {
+  if (attributes_.count(expr.text)) {
+    used_attributes_.insert(expr.text);
+    if (current_attribute_) attribute_deps_[current_attribute_->name].insert(expr.text);
+    return;
+  }
+  if (known_.count(expr.text) || role == ExprRole::kBareWord) return;
+  if (is_shape_object(expr.text)) {
+    error("CGA322", "'" + expr.text + "' needs a member, e.g. '" + expr.text + ".sx'", expr.range);
+    return;
+  }
+  error("CGA313",
+        "undefined identifier '" + expr.text + "' (not an attribute or a shape attribute)",
+        expr.range);
+}
+
+// `Shape.sx`, `Scope.sy`, ...: the members of builtins.h's kShapeAttributes that take no
+// argument (`Shape.occ` needs one and is a call).
+void Checker::check_member(const Expr& expr) {
+  const Expr& object = *expr.operands[0];
+  if (object.kind != ExprKind::kIdent || !is_shape_object(object.text)) {
+    if (object.kind == ExprKind::kIdent && !attributes_.count(object.text) &&
+        !known_.count(object.text)) {
+      error("CGA322",
+            "unknown object '" + object.text + "' (shape attributes are Shape.* and Scope.*)",
+            object.range);
+    } else {
+      error("CGA322", "only Shape.* and Scope.* have members", expr.range);
+    }
+    return;
+  }
+  const AttributeInfo* info = find_shape_attribute(object.text, expr.text);
+  if (!info) {
+    error("CGA322", "unknown shape attribute '" + object.text + "." + expr.text + "'", expr.range);
+    return;
+  }
+  if (info->args > 0) {
+    error("CGA312",
+          "'" + object.text + "." + expr.text + "' expects " + plural(info->args, "argument") +
+              ", found 0",
+          expr.range);
+  }
+}
+
+void Checker::check_call(const Expr& expr) {
+  const Expr& callee = *expr.operands[0];
+  const std::size_t count = expr.operands.size() - 1;
+  if (callee.kind == ExprKind::kMember) {
+    const Expr& object = *callee.operands[0];
+    const AttributeInfo* info =
+        object.kind == ExprKind::kIdent ? find_shape_attribute(object.text, callee.text) : nullptr;
+    if (!info) {
+      check_member(callee);  // reports the unknown object or member
+    } else if (info->args != count) {
+      error("CGA312",
+            "'" + object.text + "." + callee.text + "' expects " + plural(info->args, "argument") +
+                ", found " + std::to_string(count),
+            callee.range);
+    }
+  } else if (callee.kind == ExprKind::kIdent) {
+    const FunctionInfo* info = find_function(callee.text);
+    if (!info) {
+      error("CGA321", "unknown function '" + callee.text + "'", callee.range);
+    } else if (!signature_accepts(info->signature, count)) {
+      error("CGA312",
+            "'" + callee.text + "' expects " + arity_text(info->min_args, info->max_args) +
+                " argument" + (info->max_args == 1 && info->min_args == 1 ? "" : "s") + ", found " +
+                std::to_string(count),
+            callee.range);
+    } else {
+      for (std::size_t i = 0; i < count; ++i) {
+        const Expr& arg = *expr.operands[i + 1];
+        const char letter = signature_letter(info->signature, count, i);
+        if ((letter == 'n' && arg.kind == ExprKind::kString) ||
+            (letter == 's' && arg.kind == ExprKind::kNumber)) {
+          error("CGA320",
+                "argument " + std::to_string(i + 1) + " of '" + callee.text + "' must be a " +
+                    (letter == 'n' ? "number" : "string"),
+                arg.range);
+        }
+      }
+    }
+  } else {
+    error("CGA321", "only functions and Shape.occ can be called", callee.range);
+  }
+  for (std::size_t i = 1; i < expr.operands.size(); ++i) check_expr(*expr.operands[i]);
+}
+
+}  // namespace insula::lang::cga::detail

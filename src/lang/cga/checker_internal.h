@@ -1,0 +1,100 @@
+// The checker's working state, shared by checker.cc (rules, ids, start symbol, reachability,
+// attributes), checker_successors.cc (successors, operations, §IV.B constraints 1-5) and
+// checker_exprs.cc (expressions: identifiers, functions, constant folding). Not a public API.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/diagnostic.h"
+#include "lang/cga/ast.h"
+#include "lang/cga/builtins.h"
+#include "lang/cga/checker.h"
+
+namespace insula::lang::cga::detail {
+
+// The value of an expression made only of literals and arithmetic (no attribute, since
+// attributes can be overridden from outside with --set or lot properties). Relative (`2r`) and
+// floating (`~2`) sizes fold to their number with the mode recorded.
+struct Constant {
+  double value = 0.0;
+  bool relative = false;
+  bool floating = false;
+};
+std::optional<Constant> fold(const Expr& expr);
+
+// Where an expression stands decides which bare words it may be.
+enum class ExprRole {
+  kValue,     // a number, string or boolean value: identifiers must be defined
+  kBareWord,  // an operation argument that may be a bare word (an axis, an asset or enum name)
+};
+
+class Checker {
+ public:
+  Checker(const Grammar& grammar, const base::Source& source, const CheckOptions& options);
+  CheckResult run();
+
+  // ---- diagnostics
+  void error(std::string code, std::string message, Range range);
+  void warning(std::string code, std::string message, Range range);
+  void file_error(std::string code, std::string message);
+
+  // ---- checker_exprs.cc
+  void check_expr(const Expr& expr, ExprRole role = ExprRole::kValue);
+
+ private:
+  // ---- checker.cc
+  void declare_attributes();
+  void check_attribute_cycles();
+  void check_priority_sets();
+  void check_rule_ids();
+  void choose_start();
+  void compute_reachability();
+  void report_unused();
+
+  // ---- checker_successors.cc
+  void check_rule(const Rule& rule);
+  void check_probabilities(const Rule& rule);
+  void check_sequence(const std::vector<Item>& items);
+  void check_empty_shape(const std::vector<Item>& items);
+  void check_item(const Item& item);
+  void check_arguments(const Item& item, const OperationInfo& info);
+  void check_split(const Item& item);
+  void check_repeat(const Item& item);
+  void check_comp(const Item& item);
+  void check_rotation(const Item& item);
+  void check_generic(const Item& item, const OperationInfo& info);
+  void check_registry_ranges(const Item& item);
+  void check_axis(const Expr& expr, bool combinations);
+  std::optional<CompType> check_comp_type(const Expr& expr);
+  void check_plain_branches(const Item& item, std::size_t expected, const char* what);
+  void check_selector_keys(const Item& item, std::span<const std::string_view> selectors,
+                           bool indices, bool indices_only);
+  void check_size_keys(const Item& item, const std::vector<Branch>& branches);
+  void check_branch_items(const Branch& branch);
+
+  // ---- checker_exprs.cc
+  void check_call(const Expr& expr);
+  void check_member(const Expr& expr);
+  void check_identifier(const Expr& expr, ExprRole role);
+
+  const Grammar& grammar_;
+  const base::Source& source_;
+  const CheckOptions& options_;
+  std::vector<base::Diagnostic> diagnostics_;
+  CheckResult result_;
+
+  std::map<std::string, const AttrDecl*, std::less<>> attributes_;
+  std::set<std::string, std::less<>> known_;  // CheckOptions::known_attributes
+  std::set<std::string, std::less<>> used_attributes_;
+  // The attribute whose default is being checked (for the dependency graph), or null.
+  const AttrDecl* current_attribute_ = nullptr;
+  std::map<std::string, std::set<std::string>, std::less<>> attribute_deps_;
+};
+
+}  // namespace insula::lang::cga::detail

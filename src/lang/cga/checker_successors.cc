@@ -1,0 +1,555 @@
+// Static semantics of successors (seed 004 §IV.B constraints 1-5) and of operations: names,
+// arities, argument kinds, blocks and their keys from builtins.h; value ranges of constant
+// arguments from the shape operation registry (shape/operation.h), so no range is written twice.
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "lang/cga/builtins.h"
+#include "lang/cga/checker_internal.h"
+#include "shape/operation.h"
+
+namespace insula::lang::cga::detail {
+namespace {
+
+// §IV.B constraint 5: "successors.probability->sum = 1", compared with this tolerance.
+constexpr double kProbabilityTolerance = 1e-9;
+
+// Built by append: GCC 12 reports a false -Wrestrict on `"'" + std::string(...)`.
+std::string quoted(std::string_view name) {
+  std::string out = "'";
+  out.append(name);
+  out += '\'';
+  return out;
+}
+
+std::string number_text(double value) {
+  std::string text = std::to_string(value);
+  if (text.find('.') != std::string::npos) {
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+  }
+  return text;
+}
+
+std::string plural(std::size_t count, std::string_view word) {
+  std::string out = std::to_string(count) + " ";
+  if (count == 1) return out.append(word);
+  return out.append(word == "index" ? "indices" : std::string(word) + "s");
+}
+
+// Scope rules of §II/§VI (T, S, Rx/Ry/Rz, I) and their CityEngine forms (t, s, r, center, i,
+// primitiveCube): the operations that give the shapes of their successor a scope.
+bool is_scope_rule(const Item& item) {
+  if (item.kind != ItemKind::kOp) return false;
+  if (item.has_block) return false;  // an operation with a block hands its result on
+  const OperationInfo* info = find_operation(item.name);
+  if (!info) return false;
+  const std::string_view op = info->registry_op;
+  return op == "translate" || op == "scale" || op == "rotate" || op == "center" || op == "insert";
+}
+
+// ε, or CityEngine's `nil()`.
+bool is_empty_shape(const Item& item) {
+  return item.kind == ItemKind::kEmpty || (item.kind == ItemKind::kOp && item.name == "nil");
+}
+
+// The registry parameter each constant argument of an operation is checked against (bounds
+// from shape::registry(), never restated here). Only the arguments whose meaning maps one to
+// one onto a registry parameter are listed.
+struct RangeMap {
+  std::string_view op;
+  std::string_view registry_op;
+  std::string_view params[4];
+};
+constexpr RangeMap kRangeMaps[] = {
+    {"extrude", "extrude", {"height"}},
+    {"setback", "setback", {"distance"}},
+    {"roofHip", "roof", {"pitch", "overhang"}},
+    {"roofGable", "roof", {"pitch", "overhang"}},
+    {"roofPyramid", "roof", {"pitch", "overhang"}},
+    {"roofShed", "roof", {"pitch", "overhang"}},
+    {"roofMansard", "roof", {"pitch", "mansard_pitch", "break_height", "overhang"}},
+    {"roofFlat", "roof", {"overhang"}},
+};
+
+}  // namespace
+
+void Checker::check_rule(const Rule& rule) {
+  if (rule.condition) check_expr(*rule.condition);
+  for (const Alternative& alt : rule.alternatives) check_sequence(alt.items);
+  check_probabilities(rule);
+}
+
+// §IV.B constraint 1 (each probability in (0, 1]) and constraint 5 (the parts of a rule with
+// more than one sum to 1). Only constant probabilities can be checked statically; one that
+// uses an attribute or a function is checked by the derivation when it is evaluated. When no
+// part of a rule gives a probability, the parts are equally likely; giving some and not others
+// is an error (CGA306).
+void Checker::check_probabilities(const Rule& rule) {
+  const std::size_t parts = rule.alternatives.size();
+  std::size_t given = 0;
+  std::size_t constant = 0;
+  double sum = 0.0;
+  const Expr* last = nullptr;
+  for (const Alternative& alt : rule.alternatives) {
+    if (!alt.probability) continue;
+    ++given;
+    last = alt.probability.get();
+    check_expr(*alt.probability);
+    const std::optional<Constant> value = fold(*alt.probability);
+    if (!value || value->relative || value->floating) continue;
+    ++constant;
+    sum += value->value;
+    if (!(value->value > 0.0 && value->value <= 1.0)) {
+      error("CGA301",
+            "probability " + number_text(value->value) +
+                " is not in (0, 1] (seed 004 §IV.B, constraint 1)",
+            alt.probability->range);
+    }
+  }
+  if (parts < 2 || given == 0) return;
+  if (given < parts) {
+    for (const Alternative& alt : rule.alternatives) {
+      if (alt.probability) continue;
+      error("CGA306",
+            "this part of the rule has no probability but " + plural(given, "other part") +
+                (given == 1 ? " has" : " have") + " one",
+            alt.range);
+    }
+    return;
+  }
+  if (constant == parts && std::abs(sum - 1.0) > kProbabilityTolerance) {
+    error("CGA305",
+          "the probabilities of the " + std::to_string(parts) + " parts of the rule sum to " +
+              number_text(sum) + ", not 1 (seed 004 §IV.B, constraint 5)",
+          last->range);
+  }
+}
+
+void Checker::check_sequence(const std::vector<Item>& items) {
+  check_empty_shape(items);
+  for (const Item& item : items) check_item(item);
+}
+
+// §IV.B constraint 3: "if self.oclIsTypeOf(Empty) then self.scope->size() = 0". The scope rules
+// of a successor (T, S, Rx/Ry/Rz, I and their CityEngine forms) set the scope of the shapes of
+// that successor; `[` and `]` delimit regions whose scope changes do not leak out. So ε is an
+// error when a scope rule stands in the same region of the same item sequence (before or after
+// it; nested blocks and bracketed sub-regions are other regions). ε together with anything else
+// is legal but has no effect (warning CGA406).
+void Checker::check_empty_shape(const std::vector<Item>& items) {
+  if (std::none_of(items.begin(), items.end(), is_empty_shape)) return;
+  // Region of each item: brackets open a new region and return to the enclosing one.
+  std::vector<std::size_t> region(items.size(), 0);
+  std::vector<std::size_t> open{0};
+  std::size_t next = 1;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (items[i].kind == ItemKind::kPush) {
+      open.push_back(next++);
+    } else if (items[i].kind == ItemKind::kPop && open.size() > 1) {
+      open.pop_back();
+    }
+    region[i] = open.back();
+  }
+  bool reported = false;
+  for (std::size_t e = 0; e < items.size(); ++e) {
+    if (!is_empty_shape(items[e])) continue;
+    for (std::size_t s = 0; s < items.size(); ++s) {
+      if (region[s] != region[e] || !is_scope_rule(items[s])) continue;
+      error("CGA303",
+            "the empty shape has no scope, but the scope rule " + quoted(items[s].name) +
+                " is in the same successor (seed 004 §IV.B, constraint 3)",
+            items[e].range);
+      reported = true;
+      break;
+    }
+  }
+  if (!reported && items.size() > 1) {
+    const auto empty = std::find_if(items.begin(), items.end(), is_empty_shape);
+    warning("CGA406", "the empty shape next to other successors has no effect", empty->range);
+  }
+}
+
+void Checker::check_item(const Item& item) {
+  if (item.kind != ItemKind::kOp) return;
+  const OperationInfo* info = find_operation(item.name);
+  if (!info) {
+    error("CGA311", "unknown operation '" + item.name + "'", item.range);
+    for (const ExprPtr& arg : item.args) check_expr(*arg, ExprRole::kBareWord);
+    for (const Branch& branch : item.branches) check_branch_items(branch);
+    return;
+  }
+  const std::size_t count = item.args.size();
+  if (!signature_accepts(info->signature, count)) {
+    std::string wanted = std::to_string(info->min_args);
+    if (info->max_args == kUnbounded) {
+      wanted = "at least " + wanted;
+    } else if (info->max_args != info->min_args) {
+      wanted += " to " + std::to_string(info->max_args);
+    }
+    error("CGA312",
+          quoted(item.name) + " expects " + wanted + " argument" + (wanted == "1" ? "" : "s") +
+              ", found " + std::to_string(count),
+          item.range);
+  } else {
+    check_arguments(item, *info);
+  }
+  if (info->block == BlockUse::kRequired && !item.has_block) {
+    error("CGA318", quoted(item.name) + " needs a successor block '{ ... }'", item.range);
+  } else if (info->block == BlockUse::kNone && item.has_block) {
+    error("CGA318", quoted(item.name) + " takes no successor block", item.range);
+  }
+  switch (info->kind) {
+    case OpKind::kSplit:
+      check_split(item);
+      break;
+    case OpKind::kRepeat:
+      check_repeat(item);
+      break;
+    case OpKind::kComp:
+      check_comp(item);
+      break;
+    case OpKind::kRotate:
+      check_rotation(item);
+      break;
+    default:
+      check_generic(item, *info);
+      break;
+  }
+  for (const Branch& branch : item.branches) check_branch_items(branch);
+}
+
+void Checker::check_branch_items(const Branch& branch) {
+  for (const Branch& inner : branch.pattern) check_branch_items(inner);
+  check_sequence(branch.items);
+}
+
+// Arguments by the letters of the operation's signature (builtins.h). Literal values of the
+// wrong kind are errors; computed values are checked by the derivation.
+void Checker::check_arguments(const Item& item, const OperationInfo& info) {
+  const std::size_t count = item.args.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const Expr& arg = *item.args[i];
+    const char letter = signature_letter(info.signature, count, i);
+    const std::string which = "argument " + std::to_string(i + 1) + " of " + quoted(item.name);
+    switch (letter) {
+      case 'a':
+        check_axis(arg, info.kind == OpKind::kSplit || info.kind == OpKind::kRepeat);
+        break;
+      case 'c':
+        if (arg.kind == ExprKind::kString || arg.kind == ExprKind::kIdent) {
+          check_comp_type(arg);  // check_comp reads the type again without reporting
+        } else {
+          error("CGA320", which + " must be a component type string", arg.range);
+        }
+        break;
+      case 'i':
+        if (arg.kind != ExprKind::kIdent) {
+          error("CGA320", which + " must be an attribute name", arg.range);
+        } else if (arg.text != "material") {
+          check_expr(arg);
+        }
+        break;
+      case 's':
+        if (arg.kind == ExprKind::kNumber || arg.kind == ExprKind::kBool ||
+            (arg.kind == ExprKind::kUnary && fold(arg))) {
+          error("CGA320", which + " must be a string", arg.range);
+        } else {
+          check_expr(arg, ExprRole::kBareWord);
+        }
+        break;
+      case 'n':
+      case 'z': {
+        check_expr(arg);
+        const std::optional<Constant> value = fold(arg);
+        if (arg.kind == ExprKind::kString || arg.kind == ExprKind::kBool) {
+          error("CGA320", which + " must be a number", arg.range);
+        } else if (letter == 'n' && value && (value->relative || value->floating)) {
+          error("CGA320",
+                which + " must be a plain number, not a " +
+                    (value->relative ? "relative" : "floating") + " size",
+                arg.range);
+        }
+        break;
+      }
+      default:
+        check_expr(arg);
+        break;
+    }
+  }
+}
+
+// §VI: "<axis> can be X, Y or Z as well as combinations of these (XY, YZ, XZ or XYZ)" for the
+// paper's BS and RR; CityEngine's split takes one axis. A bare word (`split(y)`) is the axis
+// unless it names an attribute.
+void Checker::check_axis(const Expr& expr, bool combinations) {
+  std::string text;
+  if (expr.kind == ExprKind::kString) {
+    text = expr.text;
+  } else if (expr.kind == ExprKind::kIdent && !attributes_.count(expr.text) &&
+             !known_.count(expr.text)) {
+    text = expr.text;
+  } else {
+    check_expr(expr);  // computed: checked when derived
+    return;
+  }
+  const std::optional<std::string> axis = canonical_axis(text);
+  if (!axis || (!combinations && axis->size() != 1)) {
+    error("CGA308",
+          "unknown split axis \"" + text + "\" (expected " +
+              (combinations ? "X, Y, Z, XY, XZ, YZ or XYZ" : "x, y or z") + ")",
+          expr.range);
+  }
+}
+
+std::optional<CompType> Checker::check_comp_type(const Expr& expr) {
+  if (expr.kind == ExprKind::kIdent && (attributes_.count(expr.text) || known_.count(expr.text))) {
+    check_expr(expr);
+    return std::nullopt;
+  }
+  const std::optional<CompTypeSpelling> type = comp_type_of(expr.text);
+  if (!type) {
+    error("CGA309",
+          "unknown component type \"" + expr.text +
+              "\" (expected faces, edges, vertices or sidefaces)",
+          expr.range);
+    return std::nullopt;
+  }
+  if (type->nonstandard) {
+    warning("CGA401",
+            "component type \"" + expr.text + "\" is read as \"" +
+                std::string(comp_type_name(type->type)) + "\"",
+            expr.range);
+  }
+  return type->type;
+}
+
+// BS/Subdiv (§II "Basic Split Rule"): one successor per size, no keys; sizes must not be
+// negative (zero-size pieces are left out by shape::resolve_sizes).
+void Checker::check_split(const Item& item) {
+  for (std::size_t i = 1; i < item.args.size(); ++i) {
+    const std::optional<Constant> value = fold(*item.args[i]);
+    if (value && value->value < 0.0) {
+      error("CGA319", "split size " + number_text(value->value) + " is negative",
+            item.args[i]->range);
+    }
+  }
+  if (item.args.size() >= 2) check_plain_branches(item, item.args.size() - 1, "size");
+}
+
+// RR/Repeat (§II "Repeat Rule"): one successor, a positive size.
+void Checker::check_repeat(const Item& item) {
+  if (item.args.size() == 2) {
+    const std::optional<Constant> value = fold(*item.args[1]);
+    if (value && !(value->value > 0.0)) {
+      error("CGA319", "repeat size " + number_text(value->value) + " is not positive",
+            item.args[1]->range);
+    }
+  }
+  check_plain_branches(item, 1, "");
+}
+
+// Branches of a positional block: exactly `expected` unkeyed successors.
+void Checker::check_plain_branches(const Item& item, std::size_t expected, const char* what) {
+  for (const Branch& branch : item.branches) {
+    if (branch.repeat) {
+      error("CGA318", quoted(item.name) + " takes no repeat pattern (use split)", branch.range);
+      return;
+    }
+    if (branch.key) {
+      error("CGA318", quoted(item.name) + " takes no branch keys", branch.key->range);
+      return;
+    }
+  }
+  if (item.has_block && item.branches.size() != expected) {
+    const std::string wanted =
+        *what ? "one successor per " + std::string(what) + " (" + std::to_string(expected) + ")"
+              : plural(expected, "successor");
+    error(
+        "CGA318",
+        quoted(item.name) + " needs " + wanted + ", found " + std::to_string(item.branches.size()),
+        item.range);
+  }
+}
+
+// CS/Comp and comp (§II "Component Split Rule", §IV.B constraint 4): with an index list, one
+// unkeyed successor per index; without, either one successor for every component or branches
+// keyed by selector (front, side, ... or a component index; CityEngine's comp).
+void Checker::check_comp(const Item& item) {
+  std::optional<CompType> type;
+  if (!item.args.empty()) {
+    if (const auto spelling = comp_type_of(item.args[0]->text)) type = spelling->type;
+  }
+  std::set<double> indices;
+  for (std::size_t i = 1; i < item.args.size(); ++i) {
+    const std::optional<Constant> value = fold(*item.args[i]);
+    if (!value || value->relative || value->floating || value->value < 0.0 ||
+        value->value != std::floor(value->value)) {
+      error("CGA310", "a component index must be a natural number", item.args[i]->range);
+    } else if (!indices.insert(value->value).second) {
+      error("CGA310", "component index " + number_text(value->value) + " is listed twice",
+            item.args[i]->range);
+    }
+  }
+  if (!item.has_block) return;
+  const std::size_t listed = item.args.empty() ? 0 : item.args.size() - 1;
+  const bool keyed = std::any_of(item.branches.begin(), item.branches.end(),
+                                 [](const Branch& b) { return b.key != nullptr; });
+  if (listed > 0 || !keyed) {
+    const std::size_t wanted = listed > 0 ? listed : 1;
+    if (keyed || item.branches.size() != wanted) {
+      error("CGA304",
+            listed > 0 ? "the component split lists " + plural(listed, "index") + " but has " +
+                             plural(item.branches.size(), "successor") +
+                             (keyed ? " with keys" : "") + " (seed 004 §IV.B, constraint 4)"
+                       : "a component split without an index list sends every component to "
+                         "one successor, found " +
+                             std::to_string(item.branches.size()) +
+                             " (give an index list or selector keys; seed 004 §IV.B, "
+                             "constraint 4)",
+            item.range);
+    }
+    return;
+  }
+  const OperationInfo* info = find_operation(item.name);
+  check_selector_keys(item, info ? info->selectors : std::span<const std::string_view>{},
+                      /*indices=*/true,
+                      type && *type != CompType::kFaces && *type != CompType::kSideFaces);
+}
+
+// Every branch keyed by a distinct selector (or, for comp, a component index).
+void Checker::check_selector_keys(const Item& item, std::span<const std::string_view> selectors,
+                                  bool indices, bool indices_only) {
+  std::set<std::string> seen;
+  for (const Branch& branch : item.branches) {
+    if (branch.repeat) {
+      error("CGA318", quoted(item.name) + " takes no repeat pattern (use split)", branch.range);
+      continue;
+    }
+    if (!branch.key) {
+      error("CGA318", "this branch of " + quoted(item.name) + " needs a selector key",
+            branch.range);
+      continue;
+    }
+    const Expr& key = *branch.key;
+    std::string name;
+    if (key.kind == ExprKind::kIdent) {
+      name = key.text;
+      const bool known = std::find(selectors.begin(), selectors.end(), name) != selectors.end();
+      if (!known || indices_only) {
+        std::string list;
+        for (const std::string_view s : selectors)
+          list += (list.empty() ? "" : ", ") + std::string(s);
+        error("CGA315",
+              indices_only
+                  ? "selector '" + name + "' applies to faces only; edges and vertices take indices"
+                  : "unknown selector '" + name + "' for " + quoted(item.name) + " (expected " +
+                        list + (indices ? " or an index" : "") + ")",
+              key.range);
+        continue;
+      }
+    } else {
+      const std::optional<Constant> value = fold(key);
+      if (!indices || !value || value->relative || value->floating || value->value < 0.0 ||
+          value->value != std::floor(value->value)) {
+        error("CGA315",
+              std::string("a key of ") + quoted(item.name) + " must be a selector name" +
+                  (indices ? " or a component index" : ""),
+              key.range);
+        continue;
+      }
+      name = number_text(value->value);
+    }
+    if (!seen.insert(name).second) {
+      error("CGA315", "selector '" + name + "' appears twice", key.range);
+    }
+  }
+}
+
+// Keys of CityEngine's split: sizes (absolute, relative `'0.5`/`1r`, floating `~2`) or a repeat
+// pattern `{ ... }*` of keyed branches.
+void Checker::check_size_keys(const Item& item, const std::vector<Branch>& branches) {
+  for (const Branch& branch : branches) {
+    if (branch.repeat) {
+      check_size_keys(item, branch.pattern);
+      continue;
+    }
+    if (!branch.key) {
+      error("CGA318", "this branch of " + quoted(item.name) + " needs a size key ('2: A')",
+            branch.range);
+      continue;
+    }
+    check_expr(*branch.key);
+    if (branch.key->kind == ExprKind::kString || branch.key->kind == ExprKind::kBool) {
+      error("CGA320", "a split size must be a number", branch.key->range);
+      continue;
+    }
+    const std::optional<Constant> value = fold(*branch.key);
+    if (value && value->value < 0.0) {
+      error("CGA319", "split size " + number_text(value->value) + " is negative",
+            branch.key->range);
+    }
+  }
+}
+
+// §IV.B constraint 2: "self.angle >= 0 and self.angle <= 360" for the RotationRule Rx/Ry/Rz.
+// CityEngine's r(x, y, z) allows any angle and is not the paper's RotationRule.
+void Checker::check_rotation(const Item& item) {
+  if (item.args.size() != 1) return;
+  const std::optional<Constant> value = fold(*item.args[0]);
+  if (value && !value->relative && !value->floating &&
+      !(value->value >= 0.0 && value->value <= 360.0)) {
+    error("CGA302",
+          "rotation angle " + number_text(value->value) +
+              " is not in [0, 360] (seed 004 §IV.B, constraint 2)",
+          item.args[0]->range);
+  }
+}
+
+void Checker::check_generic(const Item& item, const OperationInfo& info) {
+  if (item.name == "comp") {
+    check_comp(item);
+  } else if (info.keys == KeyUse::kSize) {
+    check_size_keys(item, item.branches);
+  } else if (info.keys == KeyUse::kSelector && item.has_block) {
+    check_selector_keys(item, info.selectors, false, false);
+  } else if (info.keys == KeyUse::kNone && item.has_block) {
+    check_plain_branches(item, 1, "");
+  }
+  check_registry_ranges(item);
+}
+
+// Constant arguments against the bounds the registry declares for the parameter they become.
+void Checker::check_registry_ranges(const Item& item) {
+  const auto map = std::find_if(std::begin(kRangeMaps), std::end(kRangeMaps),
+                                [&](const RangeMap& m) { return m.op == item.name; });
+  if (map == std::end(kRangeMaps)) return;
+  const shape::Operation* op = shape::registry().find(map->registry_op);
+  if (!op) return;
+  for (std::size_t i = 0; i < item.args.size() && i < std::size(map->params); ++i) {
+    if (map->params[i].empty()) break;
+    const shape::ParamDecl* param = op->param(map->params[i]);
+    const std::optional<Constant> value = fold(*item.args[i]);
+    if (!param || !value || value->relative || value->floating) continue;
+    const bool low = param->min && value->value < *param->min;
+    const bool high = param->max && value->value > *param->max;
+    if (!low && !high) continue;
+    std::string range;
+    if (param->min && param->max) {
+      range = "in [" + number_text(*param->min) + ", " + number_text(*param->max) + "]";
+    } else if (param->min) {
+      range = ">= " + number_text(*param->min);
+    } else {
+      range = "<= " + number_text(*param->max);
+    }
+    error("CGA319",
+          "argument " + std::to_string(i + 1) + " of " + quoted(item.name) + " (" +
+              std::string(map->params[i]) + ") is " + number_text(value->value) + ", must be " +
+              range,
+          item.args[i]->range);
+  }
+}
+
+}  // namespace insula::lang::cga::detail
