@@ -394,6 +394,217 @@ std::string north_arrow_svg(const Frame& frame) {
   return out + "</g>\n";
 }
 
+// ---- Floor plans (shape::Building::plans; seed 000 "look at its plan") ----------------------
+// One panel per storey level, side by side from level 0 at the left, all panels at the same
+// scale and over the same extent, each titled "storey <level>". A panel draws the rooms of every
+// building's plan of that level (filled by room type, labelled with name and area), the walls
+// (exterior darker), windows (a thin double line across the wall), doors (the leaf from its hinge
+// and its swing arc; entrances in red) and stairs (treads and an arrow up).
+
+// A pale fill per room type, stable across runs (FNV-1a of the type picks a hue).
+std::string room_fill(std::string_view type) {
+  std::uint32_t h = 2166136261U;
+  for (char c : type) h = (h ^ static_cast<unsigned char>(c)) * 16777619U;
+  static constexpr std::array<const char*, 10> kFills = {"#f6e3c8", "#dcebd4", "#d6e4f0", "#f2d9de",
+                                                         "#e9e1f2", "#f5f0c8", "#d9efec", "#eedfd0",
+                                                         "#e0e0e0", "#f0e4ea"};
+  return kFills[h % kFills.size()];
+}
+
+std::vector<Ring2> rings_of(const kernel::Polygon& polygon) {
+  std::vector<Ring2> rings;
+  rings.push_back(polygon.outer);
+  for (const kernel::Ring& hole : polygon.holes) rings.push_back(hole);
+  return rings;
+}
+
+kernel::Bounds2 plan_bounds(const shape::Scene& scene) {
+  kernel::Bounds2 b;
+  for (const shape::Building& building : scene.buildings) {
+    for (const shape::StoreyPlan& plan : building.plans) {
+      for (const shape::PlanWall& wall : plan.walls) {
+        for (Vec2 p : wall.outline.outer) b.add(p);
+      }
+      for (const shape::PlanRoom& room : plan.rooms) {
+        for (Vec2 p : room.outline.outer) b.add(p);
+      }
+    }
+  }
+  return b;
+}
+
+int plan_levels(const shape::Scene& scene, int& lowest) {
+  int lo = 0;
+  int hi = -1;
+  bool any = false;
+  for (const shape::Building& building : scene.buildings) {
+    for (const shape::StoreyPlan& plan : building.plans) {
+      lo = any ? std::min(lo, plan.level) : plan.level;
+      hi = any ? std::max(hi, plan.level) : plan.level;
+      any = true;
+    }
+  }
+  lowest = lo;
+  return any ? hi - lo + 1 : 0;
+}
+
+std::string fill_path(const std::vector<Ring2>& rings, const Frame& frame, const std::string& fill,
+                      Vec2 shift) {
+  std::vector<Ring2> moved = rings;
+  for (Ring2& ring : moved) {
+    for (Vec2& p : ring) p = p + shift;
+  }
+  return "<path d=\"" + path_of_rings(moved, frame) + "\" fill=\"" + fill +
+         "\" fill-rule=\"evenodd\"/>\n";
+}
+
+std::string line(Vec2 a, Vec2 b, const Frame& frame) {
+  return "<path d=\"M" + point(frame.map(a)) + " L" + point(frame.map(b)) + "\"/>\n";
+}
+
+std::string room_label(const shape::PlanRoom& room, const Frame& frame, Vec2 shift, double size) {
+  Footprint footprint;
+  footprint.pieces = rings_of(room.outline);
+  footprint.outline = outline_of(footprint.pieces);
+  const Vec2 at = frame.map(visual_centre(footprint) + shift);
+  return "<text x=\"" + number(at.x) + "\" y=\"" + number(at.y - 0.6 * size) + "\">" +
+         xml_escape(room.name) + "</text>\n<text x=\"" + number(at.x) + "\" y=\"" +
+         number(at.y + 0.6 * size) + "\">" + format_decimal(room.area, 1) + " m²</text>\n";
+}
+
+std::string opening_svg(const shape::PlanOpening& o, const Frame& frame, Vec2 shift) {
+  const Vec2 a = o.a + shift;
+  const Vec2 b = o.b + shift;
+  const double width = kernel::length(b - a);
+  if (!(width > 0)) return {};
+  if (o.kind == shape::PlanOpeningKind::kWindow) {
+    // A light pane across the wall between two lines (the plan has no wall thickness here: the
+    // lines stand 0.08 m either side of the wall's middle).
+    const Vec2 n = Vec2{-(b - a).y, (b - a).x} / width * 0.08;
+    const Ring2 pane{a + n, b + n, b - n, a - n};
+    return "<g class=\"window\" stroke=\"#1f5fa8\">\n<path d=\"" + path_of_rings({pane}, frame) +
+           "\" fill=\"#dcebf7\" stroke=\"none\"/>\n" + line(a + n, b + n, frame) +
+           line(a - n, b - n, frame) + "</g>\n";
+  }
+  // The leaf stands open at right angles from the hinge `a`; the arc sweeps from its tip to `b`.
+  const Vec2 tip = a + o.swing * width;
+  const Vec2 p = frame.map(tip);
+  const Vec2 q = frame.map(b);
+  // Picture y is flipped, so a counter-clockwise turn in the plan is clockwise in the picture.
+  const double turn = (b - a).x * o.swing.y - (b - a).y * o.swing.x;
+  const char* sweep = turn > 0 ? "1" : "0";
+  const char* colour = o.kind == shape::PlanOpeningKind::kEntrance ? "#b22222" : "#333333";
+  return std::string("<g class=\"") +
+         (o.kind == shape::PlanOpeningKind::kEntrance ? "entrance" : "door") + "\" stroke=\"" +
+         colour + "\">\n" + line(a, tip, frame) + "<path d=\"M" + point(p) + " A" + number(width) +
+         " " + number(width) + " 0 0 " + sweep + " " + point(q) + "\" stroke-dasharray=\"" +
+         number(width / 12) + "\"/>\n</g>\n";
+}
+
+std::string stair_svg(const shape::PlanStair& stair, const Frame& frame, Vec2 shift) {
+  std::string out = "<g class=\"stair\" stroke=\"#333333\">\n";
+  std::vector<Ring2> rings = rings_of(stair.outline);
+  for (Ring2& ring : rings) {
+    for (Vec2& p : ring) p = p + shift;
+  }
+  out += "<path d=\"" + path_of_rings(rings, frame) + "\" fill=\"#ffffff\"/>\n";
+  const Vec2 from = stair.up_from + shift;
+  const Vec2 to = stair.up_to + shift;
+  const double run = kernel::length(to - from);
+  if (run > 0) {
+    const Vec2 dir = (to - from) / run;
+    const Vec2 side{-dir.y, dir.x};
+    // Half the flight's width from the arrow: the extent of the outline across the arrow.
+    double half = 0;
+    for (Vec2 p : stair.outline.outer)
+      half = std::max(half, std::abs(kernel::dot(p + shift - from, side)));
+    const int treads = std::max(2, static_cast<int>(std::round(run / 0.3)));
+    for (int i = 1; i < treads; ++i) {
+      const Vec2 c = from + dir * (run * i / treads);
+      out += line(c - side * half, c + side * half, frame);
+    }
+    out += line(from, to, frame);
+    out += line(to, to - dir * 0.35 + side * 0.2, frame) +
+           line(to, to - dir * 0.35 - side * 0.2, frame);
+  }
+  return out + "</g>\n";
+}
+
+std::string storey_panel(const shape::Scene& scene, int level, const Frame& frame, Vec2 shift,
+                         double text_size) {
+  std::string rooms;
+  std::string walls;
+  std::string labels;
+  std::string openings;
+  std::string stairs;
+  for (const shape::Building& building : scene.buildings) {
+    for (const shape::StoreyPlan& plan : building.plans) {
+      if (plan.level != level) continue;
+      for (const shape::PlanRoom& room : plan.rooms) {
+        rooms += fill_path(rings_of(room.outline), frame, room_fill(room.type), shift);
+        labels += room_label(room, frame, shift, text_size);
+      }
+      for (const shape::PlanWall& wall : plan.walls) {
+        walls +=
+            fill_path(rings_of(wall.outline), frame, wall.exterior ? "#2b2b2b" : "#6b6b6b", shift);
+      }
+      for (const shape::PlanOpening& o : plan.openings) openings += opening_svg(o, frame, shift);
+      for (const shape::PlanStair& s : plan.stairs) stairs += stair_svg(s, frame, shift);
+    }
+  }
+  const double line_width = frame.pixels(1.2);
+  std::string out = "<g class=\"storey\" data-level=\"" + std::to_string(level) + "\">\n";
+  const Vec2 title = frame.map(Vec2{frame.content.min.x, frame.content.max.y} + shift);
+  out += "<text x=\"" + number(title.x) + "\" y=\"" + number(title.y - 0.5 * frame.margin) +
+         "\" font-family=\"sans-serif\" font-size=\"" + number(1.6 * text_size) +
+         "\" fill=\"#000000\">storey " + std::to_string(level) + "</text>\n";
+  out += "<g class=\"rooms\" stroke=\"none\">\n" + rooms + "</g>\n";
+  out += "<g class=\"stairs\" fill=\"none\" stroke-width=\"" + format_decimal(line_width, 6) +
+         "\">\n" + stairs + "</g>\n";
+  out += "<g class=\"walls\" stroke=\"none\">\n" + walls + "</g>\n";
+  out += "<g class=\"openings\" fill=\"none\" stroke-width=\"" + format_decimal(line_width, 6) +
+         "\">\n" + openings + "</g>\n";
+  out += "<g class=\"room-labels\" font-family=\"sans-serif\" font-size=\"" + number(text_size) +
+         "\" text-anchor=\"middle\" dominant-baseline=\"central\" fill=\"#000000\">\n" + labels +
+         "</g>\n";
+  return out + "</g>\n";
+}
+
+std::string plans_svg(const shape::Scene& scene, const SvgOptions& options) {
+  int lowest = 0;
+  const int levels = plan_levels(scene, lowest);
+  const kernel::Bounds2 extent = plan_bounds(scene);
+  const double width = extent.max.x - extent.min.x;
+  const double height = extent.max.y - extent.min.y;
+  const double gap = std::max(1.0, 0.1 * std::max(width, height));
+  // The frame's content spans every panel; panel k is shifted by k * (width + gap) to the east.
+  Frame frame;
+  frame.content = extent;
+  frame.content.max.x += (levels - 1) * (width + gap);
+  frame.margin = gap;
+  frame.pixels_per_meter = options.pixels_per_meter > 0
+                               ? options.pixels_per_meter
+                               : 1600 / std::max(frame.view_width(), frame.view_height());
+  // Labels about 0.35 m tall, smaller when the plan is large, never below 2 px.
+  const double text_size =
+      std::max(frame.pixels(2 * 7), std::min(0.35, 0.025 * std::max(width, height)));
+  std::string out = header(scene, frame);
+  for (int k = 0; k < levels; ++k) {
+    out += storey_panel(scene, lowest + k, frame, Vec2{k * (width + gap), 0}, text_size);
+  }
+  out += scale_bar_svg(frame);
+  out += north_arrow_svg(frame);
+  return out + "</svg>\n";
+}
+
+bool has_plans(const shape::Scene& scene) {
+  return std::any_of(scene.buildings.begin(), scene.buildings.end(), [](const shape::Building& b) {
+    return std::any_of(b.plans.begin(), b.plans.end(), [](const shape::StoreyPlan& p) {
+      return !p.rooms.empty() || !p.walls.empty();
+    });
+  });
+}
+
 // Length of the UTF-8 sequence starting at text[i], or 0 when it is not valid UTF-8.
 std::size_t utf8_length(std::string_view text, std::size_t i) {
   const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
@@ -449,6 +660,7 @@ std::string xml_escape(std::string_view text) {
 }
 
 std::string svg_text(const shape::Scene& scene, const SvgOptions& options) {
+  if (!options.section_height && has_plans(scene)) return plans_svg(scene, options);
   const Drawing drawing = collect(scene, options);
   const Frame frame = frame_of(drawing, options);
   std::string out = header(scene, frame);

@@ -6,6 +6,14 @@
 // inaccessibility (the inside point farthest from the outline), plus a scale bar and a north arrow.
 // With SvgOptions::section_height set, the cut lines of every face with that horizontal plane are
 // drawn over the footprints (a storey plan). Labels are XML-escaped; output is deterministic.
+//
+// Floor plans: when a building carries shape::StoreyPlan (traversable buildings, seed 000) and no
+// section is asked, the picture is the floor plans instead: one panel per storey level, side by
+// side from the lowest level at the left (west), all at one scale, titled "storey <level>"
+// (every building's plan of a level in the same panel). Each panel draws the rooms filled by type
+// and labelled with name and area (m², one decimal), walls (exterior darker), windows (a blue
+// double line), doors (the open leaf from the hinge and a dashed swing arc; entrances in red) and
+// stairs (treads and an arrow pointing up the flight), plus one scale bar and north arrow.
 #pragma once
 
 #include <filesystem>

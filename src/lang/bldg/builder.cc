@@ -1,0 +1,221 @@
+// The 3D builder's driver (seed 000, §3.4 and §4.1: "the walls are extruded considering the doors
+// and windows previously flagged. Ground and ceilings are also placed in each room. Then, the
+// geometry of the roof is created according to the type of roof defined for each building part.
+// [...] producing entrance's stairs, rooms' footers, frame portals for doors and windows"), and the
+// solids the stages share.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "kernel/boolean2d.h"
+#include "lang/bldg/builder_detail.h"
+
+namespace insula::lang::bldg {
+namespace detail {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The builder's own materials (linear RGB), then one per restriction-rule colour.
+std::vector<shape::Material> base_materials() {
+  return {
+      {"default", {0.8F, 0.8F, 0.8F, 1.0F}},  {"plinth", {0.42F, 0.40F, 0.37F, 1.0F}},
+      {"frame", {0.23F, 0.13F, 0.06F, 1.0F}}, {"glass", {0.45F, 0.62F, 0.75F, 0.6F}},
+      {"floor", {0.55F, 0.36F, 0.22F, 1.0F}}, {"footer", {0.30F, 0.22F, 0.16F, 1.0F}},
+      {"stair", {0.62F, 0.58F, 0.52F, 1.0F}},
+  };
+}
+
+// Restriction-rule colours (`color.<Class>`) override every face of their class.
+void apply_colors(const Restrictions& rules, BuildResult& result) {
+  std::array<kernel::MaterialId, kernel::kSemanticClassCount> by_class{};
+  for (const auto& [name, rgba] : rules.colors) {
+    const auto semantic = kernel::semantic_from_name(name);
+    if (!semantic) continue;
+    by_class[static_cast<std::size_t>(*semantic)] =
+        static_cast<kernel::MaterialId>(result.materials.size());
+    result.materials.push_back({"color." + name, rgba});
+  }
+  if (std::all_of(by_class.begin(), by_class.end(), [](auto m) { return m == 0; })) return;
+  for (shape::Part& part : result.building.parts) {
+    for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
+      kernel::FaceTag& tag = part.mesh.tag(f);
+      const kernel::MaterialId m = by_class[static_cast<std::size_t>(tag.semantic)];
+      if (m != 0) tag.material = m;
+    }
+  }
+}
+
+}  // namespace
+
+double Context::floor_z(int storey) const {
+  return rules.base_height + plan.storeys[static_cast<std::size_t>(storey)].elevation;
+}
+
+double Context::storey_height(int storey) const {
+  const double h = plan.storeys[static_cast<std::size_t>(storey)].height;
+  return h > 0 ? h : rules.storey_height;
+}
+
+kernel::Polygon WallGeometry::rect(double u0, double u1, double across0, double across1) const {
+  kernel::Polygon p;
+  p.outer = {at(u0, across0), at(u1, across0), at(u1, across1), at(u0, across1)};
+  kernel::normalize(p);
+  return p;
+}
+
+void add_box(kernel::Mesh& mesh, Vec3 origin, Vec3 u, Vec3 v, Vec3 w, FaceTag tag) {
+  if (kernel::dot(kernel::cross(u, v), w) < 0) {
+    origin = origin + w;
+    w = -w;
+  }
+  const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
+  for (int k = 0; k < 2; ++k) {
+    for (int j = 0; j < 2; ++j) {
+      for (int i = 0; i < 2; ++i) mesh.add_vertex(origin + u * i + v * j + w * k);
+    }
+  }
+  // Corner (i, j, k) is base + i + 2j + 4k.
+  const auto c = [base](std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+    return base + i + 2 * j + 4 * k;
+  };
+  mesh.add_face({c(0, 0, 0), c(0, 1, 0), c(1, 1, 0), c(1, 0, 0)}, tag);
+  mesh.add_face({c(0, 0, 1), c(1, 0, 1), c(1, 1, 1), c(0, 1, 1)}, tag);
+  mesh.add_face({c(0, 0, 0), c(1, 0, 0), c(1, 0, 1), c(0, 0, 1)}, tag);
+  mesh.add_face({c(0, 1, 0), c(0, 1, 1), c(1, 1, 1), c(1, 1, 0)}, tag);
+  mesh.add_face({c(0, 0, 0), c(0, 0, 1), c(0, 1, 1), c(0, 1, 0)}, tag);
+  mesh.add_face({c(1, 0, 0), c(1, 1, 0), c(1, 1, 1), c(1, 0, 1)}, tag);
+}
+
+bool add_prism(kernel::Mesh& mesh, const kernel::Polygon& polygon, double z0, double z1,
+               FaceTag bottom, FaceTag top, FaceTag side) {
+  kernel::ExtrudeOptions options;
+  options.bottom = bottom;
+  options.top = top;
+  options.side = side;
+  options.tolerance = 1e-6;
+  const kernel::ExtrudeResult prism = kernel::extrude_between(polygon, z0, z1, options);
+  if (!prism.ok()) return false;
+  // extrude numbers side faces from side.face_id; keep the caller's id on every side face.
+  const std::size_t first = mesh.face_count();
+  mesh.append(prism.mesh);
+  for (std::size_t f = first; f < mesh.face_count(); ++f) {
+    kernel::FaceTag& tag = mesh.tag(f);
+    if (tag.semantic == side.semantic && tag.material == side.material) tag.face_id = side.face_id;
+  }
+  return true;
+}
+
+void add_staircase(kernel::Mesh& mesh, Vec2 foot, Vec2 dir, double width, double z0, int steps,
+                   double run, double rise, FaceTag tag) {
+  if (steps < 1 || !(run > 0) || !(rise > 0) || !(width > 0)) return;
+  // The profile in the vertical plane through the flight's right edge, climbing along `dir`:
+  // (0, 0), (0, r), (d, r), (d, 2r), ... (n d, n r), (n d, 0).
+  const Vec2 side = kernel::perp(dir);
+  const Vec2 right = foot - side * (width / 2);
+  const auto p = [&](double along, double up) {
+    return kernel::lift(right + dir * along, z0 + up);
+  };
+  std::vector<Vec3> loop;
+  loop.push_back(p(0, 0));
+  for (int i = 0; i < steps; ++i) {
+    loop.push_back(p(i * run, (i + 1) * rise));
+    loop.push_back(p((i + 1) * run, (i + 1) * rise));
+  }
+  loop.push_back(p(steps * run, 0));
+  // extrude_loop grows the solid along the loop's normal: orient the loop so that it points
+  // across the flight, towards its left edge.
+  const Vec3 normal = kernel::cross(loop[1] - loop[0], loop.back() - loop[0]);
+  if (kernel::dot(normal, kernel::lift(side, 0)) < 0) std::reverse(loop.begin(), loop.end());
+  kernel::ExtrudeOptions options;
+  options.bottom = tag;
+  options.top = tag;
+  options.side = tag;
+  const kernel::ExtrudeResult solid = kernel::extrude_loop(loop, width, options);
+  if (solid.ok()) mesh.append(solid.mesh);
+}
+
+std::vector<kernel::Polygon> minus(const std::vector<kernel::Polygon>& a,
+                                   const std::vector<kernel::Polygon>& b) {
+  if (b.empty()) return a;
+  kernel::BooleanResult r = kernel::subtract(a, b);
+  return r.ok() ? std::move(r.polygons) : a;
+}
+
+}  // namespace detail
+
+BuildResult build_building(const Building& building, const FloorPlan& plan,
+                           const Restrictions& restrictions, const BuilderOptions& options) {
+  using Clock = std::chrono::steady_clock;
+  BuildResult result;
+  result.materials = detail::base_materials();
+  result.building.id = building.symbol.empty() ? "building" : building.symbol;
+  if (!building.name.empty()) result.building.attributes["name"] = building.name;
+  const detail::Context context{building, plan, restrictions, options, result};
+  std::vector<shape::Part> room_parts;
+  std::vector<shape::Part> storey_parts;
+  std::vector<detail::StoreyWalls> storey_walls;
+  for (std::size_t s = 0; s < plan.storeys.size(); ++s) {
+    const int level = static_cast<int>(s);
+    const PlanStorey& storey = plan.storeys[s];
+    shape::StoreyPlan drawing;
+    drawing.name = "storey " + std::to_string(storey.level);
+    drawing.level = storey.level;
+    drawing.elevation = context.floor_z(level);
+    shape::Part part;
+    part.name = drawing.name;
+    part.kind = shape::PartKind::kStorey;
+    part.attributes["storey"] = static_cast<double>(storey.level);
+    part.attributes["elevation"] = drawing.elevation;
+    part.attributes["height"] = context.storey_height(level);
+    auto start = Clock::now();
+    storey_walls.push_back(detail::build_walls(context, level, part.mesh, drawing));
+    result.stats.seconds_walls += detail::seconds_since(start);
+    start = Clock::now();
+    detail::build_rooms(context, level, storey_walls.back(), room_parts, drawing);
+    result.stats.seconds_slabs += detail::seconds_since(start);
+    start = Clock::now();
+    detail::build_stairs(context, level, part.mesh, drawing);
+    result.stats.seconds_stairs += detail::seconds_since(start);
+    storey_parts.push_back(std::move(part));
+    result.building.plans.push_back(std::move(drawing));
+  }
+  result.stats.storeys = plan.storeys.size();
+  auto start = Clock::now();
+  shape::Part base;
+  base.name = "base";
+  base.kind = shape::PartKind::kBuildingPart;
+  detail::build_base(context, storey_walls, base.mesh);
+  result.stats.seconds_slabs += detail::seconds_since(start);
+  start = Clock::now();
+  std::vector<shape::Part> roof_parts;
+  detail::build_roofs(context, roof_parts);
+  result.stats.seconds_roofs += detail::seconds_since(start);
+
+  std::vector<shape::Part>& parts = result.building.parts;
+  if (!base.mesh.empty()) parts.push_back(std::move(base));
+  for (auto* group : {&storey_parts, &room_parts, &roof_parts}) {
+    for (shape::Part& part : *group) parts.push_back(std::move(part));
+  }
+  for (const shape::Part& part : parts) {
+    result.stats.vertices += part.mesh.vertex_count();
+    result.stats.triangles += part.mesh.triangle_count();
+  }
+  detail::apply_colors(restrictions, result);
+  return result;
+}
+
+shape::Scene to_scene(BuildResult result) {
+  shape::Scene scene;
+  scene.materials = std::move(result.materials);
+  scene.buildings.push_back(std::move(result.building));
+  return scene;
+}
+
+}  // namespace insula::lang::bldg

@@ -1,0 +1,100 @@
+// Internals of the 3D builder (builder.h), shared by builder_*.cc: the build context, the solids
+// every stage uses (boxes, prisms, staircase profiles) and the stage entry points.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kernel/extrude.h"
+#include "kernel/mesh.h"
+#include "kernel/polygon.h"
+#include "kernel/vec.h"
+#include "lang/bldg/builder.h"
+#include "lang/bldg/floorplan.h"
+
+namespace insula::lang::bldg::detail {
+
+using kernel::FaceTag;
+using kernel::SemanticClass;
+using kernel::Vec2;
+using kernel::Vec3;
+
+// Material ids of the builder's own materials (BuildResult::materials); 0 = default by class.
+enum Material : kernel::MaterialId {
+  kDefaultMaterial = 0,
+  kPlinthMaterial,
+  kFrameMaterial,
+  kGlassMaterial,
+  kFloorMaterial,
+  kFooterMaterial,
+  kStairMaterial,
+  kBuiltinMaterials,  // restriction-rule colours follow
+};
+
+struct Context {
+  const Building& building;
+  const FloorPlan& plan;
+  const Restrictions& rules;
+  const BuilderOptions& options;
+  BuildResult& result;
+
+  // Floor level of a storey: the plinth's top plus the storey's elevation.
+  double floor_z(int storey) const;
+  double storey_height(int storey) const;
+  void warn(std::string message) const { result.warnings.push_back(std::move(message)); }
+};
+
+// A wall piece of a storey placed in the plan: the segment it stands on (extended to close
+// corners), its side of the segment, and its footprint.
+struct WallGeometry {
+  Vec2 start;          // extended start on the wall's reference line
+  Vec2 dir;            // unit, along the wall
+  Vec2 left;           // unit, perp(dir): towards the wall's `left` room
+  double length = 0;   // extended length
+  double offset0 = 0;  // footprint across the reference line, along `left`: [offset0, offset1]
+  double offset1 = 0;
+  double thickness = 0;
+  bool exterior = false;  // exterior or dead-zone side: the wall stands inside the room's cell
+  kernel::Polygon footprint;
+
+  double u_of(Vec2 p) const { return kernel::dot(p - start, dir); }
+  // Plan point at distance u along the wall and `across` along `left`.
+  Vec2 at(double u, double across) const { return start + dir * u + left * across; }
+  kernel::Polygon rect(double u0, double u1, double across0, double across1) const;
+};
+
+// What the wall stage hands to the room stage of the same storey.
+struct StoreyWalls {
+  std::vector<WallGeometry> walls;         // per FloorPlan wall piece (same index)
+  std::vector<kernel::Polygon> door_gaps;  // per door and entrance cut: the gap across the wall
+};
+
+// A closed parallelepiped with corner `origin` and edges u, v, w (any handedness), faces outward.
+void add_box(kernel::Mesh& mesh, Vec3 origin, Vec3 u, Vec3 v, Vec3 w, FaceTag tag);
+
+// Appends the closed prism of `polygon` between z0 and z1 (z0 < z1) with the given tags; false
+// (nothing added) when the polygon is degenerate.
+bool add_prism(kernel::Mesh& mesh, const kernel::Polygon& polygon, double z0, double z1,
+               FaceTag bottom, FaceTag top, FaceTag side);
+
+// A closed staircase solid: `steps` steps of depth `run` and rise `rise` climbing along `dir`
+// (unit, horizontal) from the foot line centred on `foot` at height z0, `width` wide; every step
+// reaches down to z0 (a massive flight, as entrance steps and stairs are built).
+void add_staircase(kernel::Mesh& mesh, Vec2 foot, Vec2 dir, double width, double z0, int steps,
+                   double run, double rise, FaceTag tag);
+
+// Stage entry points (builder_walls.cc, builder_rooms.cc, builder_roofs.cc).
+StoreyWalls build_walls(const Context& context, int storey, kernel::Mesh& mesh,
+                        shape::StoreyPlan& plan);
+void build_rooms(const Context& context, int storey, const StoreyWalls& walls,
+                 std::vector<shape::Part>& parts, shape::StoreyPlan& plan);
+void build_stairs(const Context& context, int storey, kernel::Mesh& mesh, shape::StoreyPlan& plan);
+void build_base(const Context& context, const std::vector<StoreyWalls>& walls, kernel::Mesh& mesh);
+void build_roofs(const Context& context, std::vector<shape::Part>& parts);
+
+// The polygons of `a` minus `b` (kernel/boolean2d.h); `a` itself when `b` is empty.
+std::vector<kernel::Polygon> minus(const std::vector<kernel::Polygon>& a,
+                                   const std::vector<kernel::Polygon>& b);
+
+}  // namespace insula::lang::bldg::detail

@@ -1,0 +1,200 @@
+// Roofs (seed 000, §4.1: "the geometry of the roof is created according to the type of roof defined
+// for each building part. Flat, pyramidal, hipped, mansard, holed mansard, and none"; §4.6: every
+// group of "HipGlued" parts "in spatial contact with others, at the ground level" gets one
+// straight-skeleton roof over the polygon clustering their layouts, Fig. 10).
+//
+// Each roof comes from kernel/roof.h over the part's outline at its eaves, closed underneath by a
+// face over the wall-top vertices (plus the gable triangles kernel::add_roof returns as caps), so
+// every roof is one closed solid. The grammar gives a roof height, not a pitch: the roof is built
+// at the kernel's default pitch and its heights above the eaves are scaled so the ridge (or the
+// apex, or the mansard's top) lies `height` above the eaves; an affine scaling of z keeps every
+// face planar, so this is the same roof at the pitch that gives that height.
+// HipGlued: parts touching along an edge are grouped (union-find over pairwise unions that give
+// one polygon), their outlines united with kernel/boolean2d.h, and one hip roof built at the
+// group's highest eaves; a lower part of the group is raised to those eaves by a filler block.
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+#include "kernel/boolean2d.h"
+#include "kernel/roof.h"
+#include "lang/bldg/builder_detail.h"
+
+namespace insula::lang::bldg::detail {
+namespace {
+
+kernel::RoofType roof_type(RoofKind kind) {
+  switch (kind) {
+    case RoofKind::kFlat:
+      return kernel::RoofType::kFlat;
+    case RoofKind::kPyramid:
+      return kernel::RoofType::kPyramid;
+    case RoofKind::kMansard:
+      return kernel::RoofType::kMansard;
+    case RoofKind::kHoledMansard:
+      return kernel::RoofType::kHoledMansard;
+    case RoofKind::kGable:
+      return kernel::RoofType::kGable;
+    case RoofKind::kHip:
+    case RoofKind::kHipGlued:
+    case RoofKind::kNone:
+      break;
+  }
+  return kernel::RoofType::kHip;
+}
+
+// Outer ring, then holes: the index of the vertex after `e` in its ring.
+std::vector<std::uint32_t> ring_successors(const kernel::Polygon& p) {
+  std::vector<std::uint32_t> next;
+  std::uint32_t begin = 0;
+  const auto add_ring = [&](const kernel::Ring& ring) {
+    const auto n = static_cast<std::uint32_t>(ring.size());
+    for (std::uint32_t i = 0; i < n; ++i) next.push_back(begin + (i + 1) % n);
+    begin += n;
+  };
+  add_ring(p.outer);
+  for (const kernel::Ring& hole : p.holes) add_ring(hole);
+  return next;
+}
+
+// One closed roof solid over `footprint` with its eaves at `eave_z`, `height` high.
+kernel::Mesh roof_solid(const kernel::Polygon& footprint, RoofKind kind, double height,
+                        double eave_z, const BuilderOptions& options, std::string& message) {
+  kernel::Mesh mesh;
+  kernel::RoofSpec spec;
+  spec.type = roof_type(kind);
+  spec.overhang = options.roof_overhang;
+  const kernel::RoofBuild build = kernel::add_roof(footprint, spec, eave_z, mesh);
+  if (build.status == kernel::RoofStatus::kFailed) {
+    message = build.message.empty() ? "the roof could not be built" : build.message;
+    return {};
+  }
+  if (build.status == kernel::RoofStatus::kFallback) message = build.message;
+  const std::vector<std::uint32_t> next = ring_successors(footprint);
+  if (build.wall_top.size() == next.size() && build.cap_offsets.size() == next.size() + 1) {
+    std::vector<std::uint32_t> loop;
+    for (std::uint32_t e = 0; e < next.size(); ++e) {
+      if (build.cap_offsets[e] == build.cap_offsets[e + 1]) continue;
+      loop.assign({build.wall_top[e], build.wall_top[next[e]]});
+      loop.insert(loop.end(), build.cap_indices.begin() + build.cap_offsets[e],
+                  build.cap_indices.begin() + build.cap_offsets[e + 1]);
+      mesh.add_face(loop, {SemanticClass::kWallSurface, 0, build.next_face_id});
+    }
+    kernel::add_region_faces(mesh, footprint, build.wall_top, true,
+                             {SemanticClass::kClosureSurface, 0, build.next_face_id + 1});
+  }
+  // Scale the heights above the eaves so the top is `height` above them (see the file comment).
+  double top = eave_z;
+  for (const Vec3& p : mesh.positions()) top = std::max(top, p.z);
+  if (spec.type != kernel::RoofType::kFlat && top - eave_z > 1e-6 && height > 0) {
+    const double scale = height / (top - eave_z);
+    for (Vec3& p : mesh.positions()) p.z = eave_z + (p.z - eave_z) * scale;
+  }
+  return mesh;
+}
+
+// The footprint a roof stands on: normalised, without collinear vertices (a union of parts keeps
+// the vertices where their outlines met).
+kernel::Polygon clean(const kernel::Polygon& polygon) {
+  kernel::RepairResult repaired = kernel::repair(polygon, 1e-6);
+  return repaired.ok ? repaired.polygon : polygon;
+}
+
+int find(std::vector<int>& parent, int i) {
+  while (parent[static_cast<std::size_t>(i)] != i) {
+    i = parent[static_cast<std::size_t>(i)] =
+        parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+  }
+  return i;
+}
+
+bool in_contact(const kernel::Polygon& a, const kernel::Polygon& b) {
+  const kernel::BooleanResult u = kernel::unite({a}, {b});
+  return u.ok() && u.polygons.size() == 1;
+}
+
+void add_roof_part(const Context& c, const std::string& name, const kernel::Polygon& footprint,
+                   RoofKind kind, double height, double eave_z, std::vector<shape::Part>& parts,
+                   kernel::Mesh extra = {}) {
+  std::string message;
+  kernel::Mesh mesh = roof_solid(clean(footprint), kind, height, eave_z, c.options, message);
+  if (!message.empty()) c.warn(name + ": " + message);
+  if (mesh.empty()) return;
+  mesh.append(extra);
+  shape::Part part;
+  part.name = name;
+  part.kind = shape::PartKind::kBuildingPart;
+  part.attributes["roof_height"] = height;
+  part.mesh = std::move(mesh);
+  parts.push_back(std::move(part));
+  ++c.result.stats.roofs;
+}
+
+}  // namespace
+
+void build_roofs(const Context& c, std::vector<shape::Part>& parts) {
+  const std::vector<PlanPart>& plan_parts = c.plan.parts;
+  const auto eave_z = [&](const PlanPart& p) { return c.rules.base_height + p.eaves; };
+  std::vector<int> glued;
+  for (std::size_t i = 0; i < plan_parts.size(); ++i) {
+    const PlanPart& p = plan_parts[i];
+    if (p.disposable || p.storeys == 0 || p.outline.outer.empty()) continue;
+    if (p.roof == RoofKind::kNone) continue;
+    if (p.roof == RoofKind::kHipGlued) {
+      glued.push_back(static_cast<int>(i));
+      continue;
+    }
+    add_roof_part(c, std::string("roof ").append(p.symbol), p.outline, p.roof, p.roof_height,
+                  eave_z(p), parts);
+  }
+  // §4.6: groups of HipGlued parts in contact.
+  std::vector<int> parent(glued.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (std::size_t i = 0; i < glued.size(); ++i) {
+    for (std::size_t j = i + 1; j < glued.size(); ++j) {
+      const auto& a = plan_parts[static_cast<std::size_t>(glued[i])].outline;
+      const auto& b = plan_parts[static_cast<std::size_t>(glued[j])].outline;
+      if (in_contact(a, b)) {
+        parent[static_cast<std::size_t>(find(parent, static_cast<int>(i)))] =
+            find(parent, static_cast<int>(j));
+      }
+    }
+  }
+  for (std::size_t root = 0; root < glued.size(); ++root) {
+    if (find(parent, static_cast<int>(root)) != static_cast<int>(root)) continue;
+    std::vector<const PlanPart*> group;
+    for (std::size_t i = 0; i < glued.size(); ++i) {
+      if (find(parent, static_cast<int>(i)) == static_cast<int>(root)) {
+        group.push_back(&plan_parts[static_cast<std::size_t>(glued[i])]);
+      }
+    }
+    std::string name = "roof ";
+    std::vector<kernel::Polygon> outlines;
+    double eaves = 0;
+    double height = 0;
+    for (const PlanPart* p : group) {
+      if (p != group.front()) name += '+';
+      name += p->symbol;
+      outlines.push_back(p->outline);
+      eaves = std::max(eaves, eave_z(*p));
+      height = std::max(height, p->roof_height);
+    }
+    // Lower parts of the group are raised to the common eaves.
+    kernel::Mesh fillers;
+    for (const PlanPart* p : group) {
+      if (eave_z(*p) < eaves - 1e-6) {
+        add_prism(fillers, p->outline, eave_z(*p), eaves, {SemanticClass::kClosureSurface, 0, 0},
+                  {SemanticClass::kClosureSurface, 0, 1}, {SemanticClass::kWallSurface, 0, 2});
+      }
+    }
+    const std::vector<kernel::Polygon> merged = kernel::union_all(outlines);
+    for (std::size_t k = 0; k < merged.size(); ++k) {
+      std::string piece = name;
+      if (k > 0) piece.append("#").append(std::to_string(k + 1));
+      add_roof_part(c, piece, merged[k], RoofKind::kHip, height, eaves, parts,
+                    k == 0 ? std::move(fillers) : kernel::Mesh{});
+    }
+  }
+}
+
+}  // namespace insula::lang::bldg::detail

@@ -1,0 +1,258 @@
+// Walls of one storey (seed 000, §3.4: "inner and outer walls are raised until a certain height
+// [...] Then, frames for doors and windows are created"; §4.1 "the walls are extruded considering
+// the doors and windows previously flagged").
+//
+// Every boundary piece of the floor plan (floorplan.h, PlanWall) becomes one closed wall solid
+// built by kernel/wall.h with its door and window openings cut through it:
+//  - a piece between two rooms is an inner wall centred on the cell boundary;
+//  - a piece on the exterior (or on a dead zone) is an outer wall standing inside the room's cell,
+//    its outer face on the outline.
+// Corners: an inner wall is lengthened by half its thickness at a free end (filling the corner of
+// two inner walls, or reaching the middle of the wall it meets) and shortened by half the outer
+// thickness where it meets the outline (its end stays buried in the outer wall, never flush with
+// the facade). An outer wall is lengthened by its thickness at a reflex corner of the outline,
+// where two walls standing inside would otherwise leave a square hole.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "kernel/polygon.h"
+#include "kernel/wall.h"
+#include "lang/bldg/builder_detail.h"
+
+namespace insula::lang::bldg::detail {
+namespace {
+
+constexpr double kTouch = 1e-6;       // m: endpoints closer than this are the same point
+constexpr double kOpeningTop = 0.05;  // m: least wall above an opening, below the ceiling slab
+
+bool outer_side(const PlanWall& wall) {
+  return wall.right == kExteriorSide || wall.right == kDeadZoneSide;
+}
+
+// A point of the storey's outline (an outer wall's reference line).
+bool on_outline(const PlanStorey& storey, Vec2 p) {
+  for (const PlanWall& w : storey.walls) {
+    if (outer_side(w) && kernel::distance_to_segment(p, w.a, w.b) < kTouch) return true;
+  }
+  return false;
+}
+
+// The outer piece that starts where `wall` ends (its successor along the outline), or null.
+const PlanWall* next_outer(const PlanStorey& storey, const PlanWall& wall) {
+  for (const PlanWall& w : storey.walls) {
+    if (&w != &wall && outer_side(w) && kernel::length(w.a - wall.b) < kTouch) return &w;
+  }
+  return nullptr;
+}
+const PlanWall* previous_outer(const PlanStorey& storey, const PlanWall& wall) {
+  for (const PlanWall& w : storey.walls) {
+    if (&w != &wall && outer_side(w) && kernel::length(w.b - wall.a) < kTouch) return &w;
+  }
+  return nullptr;
+}
+
+bool reflex(Vec2 incoming, Vec2 outgoing) {
+  return kernel::cross(incoming, outgoing) < -1e-9;
+}
+
+WallGeometry place(const PlanStorey& storey, const PlanWall& wall, double outer_thickness) {
+  WallGeometry g;
+  const double length = kernel::length(wall.b - wall.a);
+  g.dir = (wall.b - wall.a) / length;
+  g.left = kernel::perp(g.dir);
+  g.thickness = wall.thickness;
+  g.exterior = outer_side(wall);
+  double extend_start = 0;
+  double extend_end = 0;
+  if (g.exterior) {
+    g.offset0 = 0;
+    g.offset1 = g.thickness;
+    const PlanWall* next = next_outer(storey, wall);
+    const PlanWall* previous = previous_outer(storey, wall);
+    if (next != nullptr && reflex(g.dir, kernel::normalized(next->b - next->a))) {
+      extend_end = g.thickness;
+    }
+    if (previous != nullptr && reflex(kernel::normalized(previous->b - previous->a), g.dir)) {
+      extend_start = g.thickness;
+    }
+  } else {
+    g.offset0 = -g.thickness / 2;
+    g.offset1 = g.thickness / 2;
+    extend_start = on_outline(storey, wall.a) ? -outer_thickness / 2 : g.thickness / 2;
+    extend_end = on_outline(storey, wall.b) ? -outer_thickness / 2 : g.thickness / 2;
+  }
+  g.start = wall.a - g.dir * extend_start;
+  g.length = length + extend_start + extend_end;
+  g.footprint = g.rect(0, g.length, g.offset0, g.offset1);
+  return g;
+}
+
+// One opening asked of a wall piece.
+struct Asked {
+  kernel::Opening opening;  // u and width set once the wall is placed, from a and b
+  bool door = false;
+  bool entrance = false;
+  const PlanDoor* plan_door = nullptr;  // doors and entrances
+  Vec2 a;                               // the opening's ends on the cell boundary
+  Vec2 b;
+};
+
+kernel::WallFaceTags wall_tags(bool exterior, std::uint32_t& face_id) {
+  kernel::WallFaceTags tags;
+  tags.front.semantic =
+      exterior ? SemanticClass::kWallSurface : SemanticClass::kInteriorWallSurface;
+  for (FaceTag* tag : {&tags.front, &tags.back, &tags.jamb, &tags.sill, &tags.lintel, &tags.top,
+                       &tags.bottom, &tags.end}) {
+    tag->face_id = face_id++;
+  }
+  return tags;
+}
+
+// Frame portals (§4.1) on both faces of the wall: posts and a head, plus a sill piece for windows;
+// frame_width wide, standing frame_depth out of the face. A window also gets a glass pane in the
+// middle of the wall.
+void add_frames(const kernel::WallFrame& frame, double thickness, const kernel::Opening& o,
+                bool door, const BuilderOptions& options, kernel::Mesh& mesh) {
+  const double fw = options.frame_width;
+  const double fd = options.frame_depth;
+  const FaceTag tag{door ? SemanticClass::kDoor : SemanticClass::kWindow, kFrameMaterial, 0};
+  const double bottom = door ? o.sill : o.sill - fw;
+  const double top = o.sill + o.height;
+  const auto box = [&](double u0, double u1, double v0, double v1, double w0, double w1) {
+    add_box(mesh, frame.map(u0, v0, w0), frame.u_axis * (u1 - u0), frame.v_axis * (v1 - v0),
+            frame.normal * (w1 - w0), tag);
+  };
+  for (const auto& [w0, w1] : {std::pair{thickness, thickness + fd}, std::pair{-fd, 0.0}}) {
+    box(o.u - fw, o.u, bottom, top + fw, w0, w1);
+    box(o.u + o.width, o.u + o.width + fw, bottom, top + fw, w0, w1);
+    box(o.u, o.u + o.width, top, top + fw, w0, w1);
+    if (!door) box(o.u, o.u + o.width, o.sill - fw, o.sill, w0, w1);
+  }
+  if (!door) {
+    const double pane = std::min(0.02, thickness / 4);
+    add_box(mesh, frame.map(o.u, o.sill, thickness / 2 - pane / 2), frame.u_axis * o.width,
+            frame.v_axis * o.height, frame.normal * pane,
+            {SemanticClass::kWindow, kGlassMaterial, 0});
+  }
+}
+
+// The wall's footprint in the plan, with gaps where doors go through it.
+void plan_wall(const WallGeometry& g, std::vector<std::pair<double, double>> gaps,
+               shape::StoreyPlan& plan) {
+  std::sort(gaps.begin(), gaps.end());
+  double u = 0;
+  for (const auto& [g0, g1] : gaps) {
+    if (g0 > u + kTouch) plan.walls.push_back({g.rect(u, g0, g.offset0, g.offset1), g.exterior});
+    u = std::max(u, g1);
+  }
+  if (g.length > u + kTouch) {
+    plan.walls.push_back({g.rect(u, g.length, g.offset0, g.offset1), g.exterior});
+  }
+}
+
+void plan_door(const WallGeometry& g, const PlanWall& wall, const Asked& asked,
+               shape::StoreyPlan& plan) {
+  // The leaf swings into room_a, hinged on the face of the wall on that side.
+  const bool into_left = wall.left == asked.plan_door->room_a;
+  const double across = into_left ? g.offset1 : g.offset0;
+  shape::PlanOpening o;
+  o.kind = asked.entrance ? shape::PlanOpeningKind::kEntrance : shape::PlanOpeningKind::kDoor;
+  o.a = g.at(asked.opening.u, across);
+  o.b = g.at(asked.opening.u + asked.opening.width, across);
+  o.swing = into_left ? g.left : -g.left;
+  plan.openings.push_back(o);
+}
+
+}  // namespace
+
+StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::StoreyPlan& plan) {
+  const PlanStorey& storey = c.plan.storeys[static_cast<std::size_t>(s)];
+  const double z0 = c.floor_z(s);
+  const double h = c.storey_height(s);
+  const double slab = c.options.slab_thickness;
+  StoreyWalls out;
+  std::vector<std::vector<Asked>> asked(storey.walls.size());
+  const auto add_door = [&](const PlanDoor& d, bool entrance) {
+    if (d.wall < 0 || static_cast<std::size_t>(d.wall) >= storey.walls.size()) return;
+    const double height =
+        std::min(d.height > 0 ? d.height : c.rules.door_height, h - 2 * slab - kOpeningTop);
+    asked[static_cast<std::size_t>(d.wall)].push_back(
+        {{0, slab, 0, height, 0, 8}, true, entrance, &d, d.a, d.b});
+  };
+  for (const PlanDoor& d : storey.doors) add_door(d, false);
+  for (const PlanDoor& d : storey.entrances) add_door(d, true);
+  for (const PlanWindow& w : storey.windows) {
+    if (w.wall < 0 || static_cast<std::size_t>(w.wall) >= storey.walls.size()) continue;
+    const double sill = slab + w.sill;
+    const double height = std::min(w.height, h - slab - kOpeningTop - sill);
+    asked[static_cast<std::size_t>(w.wall)].push_back(
+        {{0, sill, 0, height, 0, 8}, false, false, nullptr, w.a, w.b});
+  }
+  std::uint32_t face_id = 0;
+  for (std::size_t i = 0; i < storey.walls.size(); ++i) {
+    const PlanWall& wall = storey.walls[i];
+    WallGeometry g = place(storey, wall, c.rules.outer_wall_thickness);
+    out.walls.push_back(g);
+    if (!(g.length > kTouch) || !(g.thickness > 0)) continue;
+    kernel::WallSpec spec;
+    spec.thickness = g.thickness;
+    spec.policy = kernel::OpeningPolicy::kSkip;
+    spec.tags = wall_tags(wall.exterior(), face_id);
+    spec.outline = {{0, 0}, {g.length, 0}, {g.length, h}, {0, h}};
+    for (Asked& a : asked[i]) {
+      const double u0 = g.u_of(a.a);
+      const double u1 = g.u_of(a.b);
+      a.opening.u = std::min(u0, u1);
+      a.opening.width = std::abs(u1 - u0);
+      spec.openings.push_back(a.opening);
+    }
+    const auto placement = kernel::place_wall(
+        kernel::lift(g.start, z0), kernel::lift(g.start + g.dir * g.length, z0), h, g.thickness,
+        g.exterior ? kernel::WallAlignment::kInside : kernel::WallAlignment::kCenter);
+    if (!placement) continue;
+    const kernel::WallResult built = kernel::build_wall(spec, placement->frame);
+    if (!built.ok()) {
+      c.warn("storey " + std::to_string(storey.level) + ": wall " + std::to_string(i) +
+             " of room '" + storey.rooms[static_cast<std::size_t>(wall.left)].symbol +
+             "' could not be built: " + built.message);
+      continue;
+    }
+    for (const kernel::OpeningIssue& issue : built.issues) {
+      const Asked& a = asked[i][issue.opening];
+      c.warn("storey " + std::to_string(storey.level) + ": " +
+             (a.door ? (a.entrance ? "entrance" : "door") : "window") + " in the wall of room '" +
+             storey.rooms[static_cast<std::size_t>(wall.left)].symbol +
+             "' left out: " + issue.message);
+    }
+    mesh.append(built.mesh);
+    ++c.result.stats.walls;
+    std::vector<std::pair<double, double>> gaps;
+    for (std::size_t k : built.cut) {
+      const Asked& a = asked[i][k];
+      if (c.options.frames)
+        add_frames(placement->frame, g.thickness, a.opening, a.door, c.options, mesh);
+      if (a.door) {
+        gaps.emplace_back(a.opening.u, a.opening.u + a.opening.width);
+        plan_door(g, wall, a, plan);
+        ++(a.entrance ? c.result.stats.entrances : c.result.stats.doors);
+        const double reach = c.options.frame_depth + c.options.footer_depth + 0.05;
+        out.door_gaps.push_back(g.rect(a.opening.u, a.opening.u + a.opening.width,
+                                       g.offset0 - reach, g.offset1 + reach));
+      } else {
+        const double mid = (g.offset0 + g.offset1) / 2;
+        shape::PlanOpening o;
+        o.kind = shape::PlanOpeningKind::kWindow;
+        o.a = g.at(a.opening.u, mid);
+        o.b = g.at(a.opening.u + a.opening.width, mid);
+        o.swing = g.left;
+        plan.openings.push_back(o);
+        ++c.result.stats.windows;
+      }
+    }
+    plan_wall(g, std::move(gaps), plan);
+  }
+  return out;
+}
+
+}  // namespace insula::lang::bldg::detail
