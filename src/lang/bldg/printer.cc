@@ -228,6 +228,10 @@ class Printer {
 
 }  // namespace
 
+std::string print_building(const Building& building) {
+  return Printer(building).run();
+}
+
 const char* roof_name(RoofKind kind) {
   switch (kind) {
     case RoofKind::kFlat:

@@ -1,0 +1,865 @@
+// Stochastic generation (seed 000, §4.3): the rooms are arranged by priority, the connected
+// divisions' graph is set up, and the rooms are placed in a treemap-like node structure that is
+// a Building model (and, through print_building, grammar rules).
+//
+// Steps: (1) a building-part skeleton for the requested shape, with disposable parts cutting the
+// L, U, T and H notches (§3.2 "fake-concave"), and extra parts made by splitting real ones;
+// (2) a room program (the given room list, or a default domestic one) sorted by priority;
+// (3) a nominal treemap of rectangles from the size labels' growth factors (Eqs. 1-2 on a
+// rectangular outline, where the intersection of Eq. 3 is the rectangle itself) used to order the
+// parts from the entrance inwards and to know which rooms share a wall; (4) a door tree grown
+// from the entrance room (Prim-like, doors preferably leave public rooms), plus a few extra
+// doors between public rooms; (5) windows on rooms with exterior wall length.
+#include "lang/bldg/stochastic.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include "shape/rng.h"
+
+namespace insula::lang::bldg {
+namespace {
+
+using shape::Rng;
+
+struct Rect {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  double width() const { return x1 - x0; }
+  double height() const { return y1 - y0; }
+};
+
+// Growth factors of the default restriction rules (§3.3): room weights are proportional to them.
+double growth(SizeLabel size) {
+  return Restrictions{}.growth[static_cast<std::size_t>(size)];
+}
+
+// Nominal floor area per unit of weight, m² (a medium room ~16 m²).
+constexpr double kAreaPerWeight = 8.0;
+// Fraction of the outline left to rooms once walls are raised.
+constexpr double kUsableFraction = 0.85;
+// A door needs this much shared wall in the nominal layout (door_min_width 0.9 + jambs and
+// slack for the floor-plan engine's weight adjustments, §3.3).
+constexpr double kDoorOverlap[] = {1.6, 1.0, 0.01};
+
+struct GenRoom {
+  std::string type;
+  SizeLabel size = SizeLabel::kMedium;
+  int priority = 2;
+  std::string symbol;
+  Rect rect;
+  bool disposable = false;
+  int windows = 0;
+};
+
+// A node of the part skeleton: a container of cells or a building part (leaf).
+struct Cell {
+  bool leaf = true;
+  bool disposable = false;
+  Orientation orientation = Orientation::kHorizontal;
+  std::vector<Cell> children;
+  int room_count = 0;
+  std::vector<int> rooms;  // leaf: indices into the room list, in priority order
+  Rect rect;
+};
+
+// A node of a part's division tree.
+struct DivNode {
+  int room = -1;  // leaf when >= 0
+  Orientation orientation = Orientation::kHorizontal;
+  std::vector<DivNode> children;
+};
+
+Orientation along_longer(const Rect& r) {
+  return r.width() >= r.height() ? Orientation::kHorizontal : Orientation::kVertical;
+}
+Orientation perpendicular(Orientation o) {
+  return o == Orientation::kHorizontal ? Orientation::kVertical : Orientation::kHorizontal;
+}
+
+// ---- room program and priorities ----
+
+struct TypeInfo {
+  const char* type;
+  int priority;  // 0 public (near the entrance), 1 service, 2 private
+  SizeLabel size;
+};
+constexpr TypeInfo kTypes[] = {
+    {"atrium", 0, SizeLabel::kBig},     {"hall", 0, SizeLabel::kSmall},
+    {"living", 0, SizeLabel::kBig},     {"lobby", 0, SizeLabel::kMedium},
+    {"corridor", 0, SizeLabel::kSmall}, {"vestibule", 0, SizeLabel::kSmall},
+    {"shop", 0, SizeLabel::kMedium},    {"taberna", 0, SizeLabel::kMedium},
+    {"fauces", 0, SizeLabel::kSmall},   {"peristylium", 0, SizeLabel::kBig},
+    {"kitchen", 1, SizeLabel::kMedium}, {"dining", 1, SizeLabel::kMedium},
+    {"culina", 1, SizeLabel::kSmall},   {"triclinium", 1, SizeLabel::kMedium},
+    {"pantry", 1, SizeLabel::kSmall},   {"storage", 1, SizeLabel::kSmall},
+    {"laundry", 1, SizeLabel::kSmall},  {"tablinum", 1, SizeLabel::kMedium},
+    {"bedroom", 2, SizeLabel::kMedium}, {"bathroom", 2, SizeLabel::kSmall},
+    {"study", 2, SizeLabel::kSmall},    {"cubiculum", 2, SizeLabel::kSmall},
+    {"office", 2, SizeLabel::kMedium},  {"guest", 2, SizeLabel::kMedium},
+};
+
+const TypeInfo* type_info(const std::string& type) {
+  for (const TypeInfo& info : kTypes) {
+    if (type == info.type) return &info;
+  }
+  return nullptr;
+}
+
+GenRoom make_room(const std::string& type, Rng& rng) {
+  GenRoom room;
+  room.type = type;
+  if (const TypeInfo* info = type_info(type)) {
+    room.priority = info->priority;
+    room.size = info->size;
+    if (type == "bedroom" && rng.unit() < 0.4) room.size = SizeLabel::kBig;
+  }
+  return room;
+}
+
+// A default domestic program of n rooms: a hall, a living room and a kitchen first, then a
+// bathroom per six rooms and a mix of private and service rooms.
+std::vector<std::string> default_program(int n, Rng& rng) {
+  std::vector<std::string> out;
+  const char* firsts[] = {"hall", "living", "kitchen", "bathroom"};
+  for (int i = 0; i < n && i < 4; ++i) out.emplace_back(firsts[i]);
+  const char* rest[] = {"bedroom", "bedroom", "bedroom", "dining", "study", "storage", "bathroom"};
+  const double weights[] = {3, 3, 3, 1, 1, 1, 1};
+  while (static_cast<int>(out.size()) < n) {
+    out.emplace_back(rest[rng.choice(weights)]);
+  }
+  return out;
+}
+
+// ---- skeleton ----
+
+Cell leaf(bool disposable = false) {
+  Cell c;
+  c.disposable = disposable;
+  return c;
+}
+Cell container(Orientation o, std::vector<Cell> children) {
+  Cell c;
+  c.leaf = false;
+  c.orientation = o;
+  c.children = std::move(children);
+  return c;
+}
+
+// The fake-concave skeletons (§3.2, Fig. 7): children are placed from low to high coordinate,
+// so the front (y = 0) is the first child of a vertical container.
+Cell skeleton(RandomShape shape, bool wide) {
+  const auto H = Orientation::kHorizontal;
+  const auto V = Orientation::kVertical;
+  switch (shape) {
+    case RandomShape::kConvex:
+      return container(wide ? H : V, {leaf()});
+    case RandomShape::kL:
+      return container(H, {leaf(), container(V, {leaf(), leaf(true)})});
+    case RandomShape::kU:
+      return container(H, {leaf(), container(V, {leaf(), leaf(true)}), leaf()});
+    case RandomShape::kT:
+      return container(V, {container(H, {leaf(true), leaf(), leaf(true)}), leaf()});
+    case RandomShape::kH:
+      return container(H, {leaf(), container(V, {leaf(true), leaf(), leaf(true)}), leaf()});
+  }
+  return container(H, {leaf()});
+}
+
+int min_parts(RandomShape shape) {
+  switch (shape) {
+    case RandomShape::kConvex:
+      return 1;
+    case RandomShape::kL:
+    case RandomShape::kT:
+      return 2;
+    case RandomShape::kU:
+    case RandomShape::kH:
+      return 3;
+  }
+  return 1;
+}
+
+void collect_leaves(Cell& cell, std::vector<Cell*>& out, bool real_only) {
+  if (cell.leaf) {
+    if (!real_only || !cell.disposable) out.push_back(&cell);
+    return;
+  }
+  for (Cell& child : cell.children) collect_leaves(child, out, real_only);
+}
+
+// Adds one real part by splitting a real leaf: a new sibling when the parent has room (fewer
+// than 3 children), else the leaf becomes a perpendicular container of two parts.
+bool split_one(Cell& parent, Rng& rng, int& budget) {
+  std::vector<std::size_t> real;
+  for (std::size_t i = 0; i < parent.children.size(); ++i) {
+    if (parent.children[i].leaf && !parent.children[i].disposable) real.push_back(i);
+  }
+  std::vector<std::size_t> inner;
+  for (std::size_t i = 0; i < parent.children.size(); ++i) {
+    if (!parent.children[i].leaf) inner.push_back(i);
+  }
+  if (!real.empty() && (inner.empty() || rng.unit() < 0.5)) {
+    const std::size_t i =
+        real[static_cast<std::size_t>(rng.integer(0, static_cast<std::int64_t>(real.size()) - 1))];
+    const bool has_disposable = std::any_of(parent.children.begin(), parent.children.end(),
+                                            [](const Cell& c) { return c.disposable; });
+    if (parent.children.size() < 3 && !has_disposable) {
+      parent.children.insert(parent.children.begin() + static_cast<std::ptrdiff_t>(i) + 1, leaf());
+    } else {
+      parent.children[i] = container(perpendicular(parent.orientation), {leaf(), leaf()});
+    }
+    --budget;
+    return true;
+  }
+  if (inner.empty()) return false;
+  const std::size_t i =
+      inner[static_cast<std::size_t>(rng.integer(0, static_cast<std::int64_t>(inner.size()) - 1))];
+  return split_one(parent.children[i], rng, budget);
+}
+
+// ---- nominal treemap (Eqs. 1-2 on rectangles) ----
+
+double cell_weight(const Cell& cell, const std::vector<GenRoom>& rooms) {
+  if (cell.leaf) {
+    if (cell.rooms.empty()) return 2.0 * std::max(1, cell.room_count);
+    double w = 0;
+    for (const int r : cell.rooms) w += growth(rooms[static_cast<std::size_t>(r)].size);
+    return w;
+  }
+  double w = 0;
+  for (const Cell& child : cell.children) w += cell_weight(child, rooms);
+  return w;
+}
+
+// Splits `rect` along `o` into pieces proportional to `weights`, the last taking the remainder
+// (§3.2: "last index sub-BLSEs ... the remaining space is directly allocated to them").
+std::vector<Rect> slice(const Rect& rect, Orientation o, const std::vector<double>& weights) {
+  const double total = std::accumulate(weights.begin(), weights.end(), 0.0);
+  std::vector<Rect> out;
+  double at = o == Orientation::kHorizontal ? rect.x0 : rect.y0;
+  for (std::size_t i = 0; i < weights.size(); ++i) {
+    Rect r = rect;
+    const double extent = o == Orientation::kHorizontal ? rect.width() : rect.height();
+    const double next = i + 1 == weights.size()
+                            ? (o == Orientation::kHorizontal ? rect.x1 : rect.y1)
+                            : at + extent * weights[i] / total;
+    if (o == Orientation::kHorizontal) {
+      r.x0 = at;
+      r.x1 = next;
+    } else {
+      r.y0 = at;
+      r.y1 = next;
+    }
+    out.push_back(r);
+    at = next;
+  }
+  return out;
+}
+
+void place_cells(Cell& cell, const Rect& rect, const std::vector<GenRoom>& rooms) {
+  cell.rect = rect;
+  if (cell.leaf) return;
+  std::vector<double> weights;
+  for (const Cell& child : cell.children) weights.push_back(cell_weight(child, rooms));
+  const std::vector<Rect> pieces = slice(rect, cell.orientation, weights);
+  for (std::size_t i = 0; i < cell.children.size(); ++i) {
+    place_cells(cell.children[i], pieces[i], rooms);
+  }
+}
+
+double weight_of(const DivNode& node, const std::vector<GenRoom>& rooms) {
+  if (node.room >= 0) return growth(rooms[static_cast<std::size_t>(node.room)].size);
+  double w = 0;
+  for (const DivNode& child : node.children) w += weight_of(child, rooms);
+  return w;
+}
+
+void place_rooms(const DivNode& node, const Rect& rect, std::vector<GenRoom>& rooms) {
+  if (node.room >= 0) {
+    rooms[static_cast<std::size_t>(node.room)].rect = rect;
+    return;
+  }
+  std::vector<double> weights;
+  for (const DivNode& child : node.children) weights.push_back(weight_of(child, rooms));
+  const std::vector<Rect> pieces = slice(rect, node.orientation, weights);
+  for (std::size_t i = 0; i < node.children.size(); ++i) {
+    place_rooms(node.children[i], pieces[i], rooms);
+  }
+}
+
+// The treemap-like node structure of one part's rooms (§4.3): groups of up to three rooms in
+// containers, the axis along the longer side of the space so rooms stay compact.
+DivNode divide(const std::vector<int>& ids, std::size_t lo, std::size_t hi, const Rect& rect,
+               std::vector<GenRoom>& rooms, Rng& rng) {
+  DivNode node;
+  if (hi - lo == 1) {
+    node.room = ids[lo];
+    return node;
+  }
+  node.orientation = along_longer(rect);
+  const std::size_t n = hi - lo;
+  std::vector<std::pair<std::size_t, std::size_t>> groups;
+  if (n <= 3) {
+    for (std::size_t i = lo; i < hi; ++i) groups.emplace_back(i, i + 1);
+  } else {
+    const std::size_t k = (n >= 7 && rng.unit() < 0.4) ? 3 : 2;
+    std::size_t at = lo;
+    for (std::size_t g = 0; g < k; ++g) {
+      const std::size_t left = hi - at, groups_left = k - g;
+      std::size_t size = left / groups_left;
+      if (groups_left > 1 && left > groups_left * 2 && rng.unit() < 0.5) size += 1;
+      if (g + 1 == k) size = left;
+      groups.emplace_back(at, at + size);
+      at += size;
+    }
+  }
+  std::vector<double> weights;
+  for (const auto& [a, b] : groups) {
+    double w = 0;
+    for (std::size_t i = a; i < b; ++i) w += growth(rooms[static_cast<std::size_t>(ids[i])].size);
+    weights.push_back(w);
+  }
+  const std::vector<Rect> pieces = slice(rect, node.orientation, weights);
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    node.children.push_back(divide(ids, groups[g].first, groups[g].second, pieces[g], rooms, rng));
+  }
+  return node;
+}
+
+// Length of the wall two rectangles share (0 when they do not touch along a side).
+double shared_length(const Rect& a, const Rect& b) {
+  constexpr double kEps = 1e-6;
+  const auto overlap = [](double a0, double a1, double b0, double b1) {
+    return std::max(0.0, std::min(a1, b1) - std::max(a0, b0));
+  };
+  if (std::abs(a.x1 - b.x0) < kEps || std::abs(b.x1 - a.x0) < kEps) {
+    return overlap(a.y0, a.y1, b.y0, b.y1);
+  }
+  if (std::abs(a.y1 - b.y0) < kEps || std::abs(b.y1 - a.y0) < kEps) {
+    return overlap(a.x0, a.x1, b.x0, b.x1);
+  }
+  return 0;
+}
+
+double boundary_length(const Rect& r, const Rect& outline) {
+  constexpr double kEps = 1e-6;
+  double length = 0;
+  if (std::abs(r.x0 - outline.x0) < kEps) length += r.height();
+  if (std::abs(r.x1 - outline.x1) < kEps) length += r.height();
+  if (std::abs(r.y0 - outline.y0) < kEps) length += r.width();
+  if (std::abs(r.y1 - outline.y1) < kEps) length += r.width();
+  return length;
+}
+
+std::string identifier(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+    out += ok ? c : '_';
+  }
+  if (out.empty() || (out[0] >= '0' && out[0] <= '9')) out = "r_" + out;
+  return out;
+}
+
+// Rounds to 1 / `per_unit` (10: decimetres) without binary noise in the printed grammar.
+double round_to(double v, double per_unit) {
+  return std::round(v * per_unit) / per_unit;
+}
+
+// Rooms that should end a walk, not be passed through (a door tree through a bathroom is odd).
+bool dead_end(const std::string& type) {
+  return type == "bathroom" || type == "storage" || type == "pantry" || type == "laundry" ||
+         type == "void";
+}
+
+class Generator {
+ public:
+  Generator(const RandomSpec& spec, std::uint64_t seed) : spec_(spec), rng_(seed) {}
+
+  Building run() {
+    make_skeleton();
+    make_program();
+    order_and_assign();
+    make_divisions();
+    connect();
+    add_windows();
+    return emit();
+  }
+
+ private:
+  void make_skeleton() {
+    const int minimum = min_parts(spec_.shape);
+    int parts = spec_.parts > 0 ? std::max(spec_.parts, minimum)
+                                : static_cast<int>(rng_.integer(minimum, minimum + 2));
+    parts = std::min(parts, 24);
+    wide_ = rng_.unit() < 0.5;
+    root_ = skeleton(spec_.shape, wide_);
+    int budget = parts - minimum;
+    while (budget > 0) {
+      if (!split_one(root_, rng_, budget)) break;
+    }
+    std::vector<Cell*> real;
+    collect_leaves(root_, real, true);
+    const int lo = std::max(1, std::min(spec_.rooms_min, spec_.rooms_max));
+    const int hi = std::max(lo, std::max(spec_.rooms_min, spec_.rooms_max));
+    for (Cell* cell : real) cell->room_count = static_cast<int>(rng_.integer(lo, hi));
+  }
+
+  // The room list: the one given (repeated when shorter than the parts need), or a default
+  // program; then the rooms are sorted by priority (§4.3), ties in random order.
+  void make_program() {
+    std::vector<Cell*> real;
+    collect_leaves(root_, real, true);
+    int total = 0;
+    for (Cell* cell : real) total += cell->room_count;
+    std::vector<std::string> types;
+    if (!spec_.room_types.empty()) {
+      types = spec_.room_types;
+      while (types.size() < real.size())
+        types.push_back(spec_.room_types[types.size() % spec_.room_types.size()]);
+      redistribute(real, static_cast<int>(types.size()));
+    } else {
+      types = default_program(total, rng_);
+    }
+    for (const std::string& type : types) rooms_.push_back(make_room(type, rng_));
+    std::vector<std::uint64_t> keys(rooms_.size());
+    for (auto& key : keys) key = rng_.next();
+    order_.resize(rooms_.size());
+    std::iota(order_.begin(), order_.end(), 0);
+    std::stable_sort(order_.begin(), order_.end(), [&](int a, int b) {
+      const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+      return std::pair(rooms_[ua].priority, keys[ua]) < std::pair(rooms_[ub].priority, keys[ub]);
+    });
+  }
+
+  // Spreads `n` rooms over the real parts as evenly as possible (at least one each).
+  void redistribute(std::vector<Cell*>& real, int n) {
+    const int parts = static_cast<int>(real.size());
+    for (int i = 0; i < parts; ++i) real[static_cast<std::size_t>(i)]->room_count = n / parts;
+    for (int i = 0; i < n % parts; ++i) ++real[static_cast<std::size_t>(i)]->room_count;
+  }
+
+  // Parts ordered from the entrance inwards (breadth first over parts that share a wall), and
+  // the priority-sorted rooms dealt to them in that order: public rooms at the entrance.
+  void order_and_assign() {
+    std::vector<Cell*> real;
+    collect_leaves(root_, real, true);
+    std::vector<Cell*> disposable;
+    collect_leaves(root_, disposable, false);
+    disposable.erase(std::remove_if(disposable.begin(), disposable.end(),
+                                    [](const Cell* c) { return !c->disposable; }),
+                     disposable.end());
+    size_disposables(root_);
+    outline_ = outline_rect();
+    place_cells(root_, outline_, rooms_);
+    const std::size_t front = front_leaf(real);
+    std::vector<std::size_t> queue{front};
+    std::vector<bool> seen(real.size(), false);
+    seen[front] = true;
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+      std::vector<std::pair<double, std::size_t>> next;
+      for (std::size_t j = 0; j < real.size(); ++j) {
+        const double shared = shared_length(real[queue[q]]->rect, real[j]->rect);
+        if (!seen[j] && shared > 0) next.emplace_back(-shared, j);
+      }
+      std::sort(next.begin(), next.end());
+      for (const auto& [unused, j] : next) {
+        seen[j] = true;
+        queue.push_back(j);
+      }
+    }
+    for (std::size_t j = 0; j < real.size(); ++j) {
+      if (!seen[j]) queue.push_back(j);  // not expected: every skeleton is connected
+    }
+    std::size_t at = 0;
+    for (const std::size_t j : queue) {
+      for (int k = 0; k < real[j]->room_count && at < order_.size(); ++k) {
+        real[j]->rooms.push_back(order_[at++]);
+      }
+    }
+    // Disposable parts get medium "void" rooms weighing about as much as their real sibling,
+    // so the notch is proportionate (it is removed after the subdivision, §3.2).
+    for (Cell* cell : disposable) {
+      for (int k = 0; k < cell->room_count; ++k) {
+        GenRoom room;
+        room.type = "void";
+        room.disposable = true;
+        room.priority = 3;
+        cell->rooms.push_back(static_cast<int>(rooms_.size()));
+        rooms_.push_back(room);
+      }
+    }
+    outline_ = outline_rect();
+    place_cells(root_, outline_, rooms_);
+  }
+
+  void size_disposables(Cell& cell) {
+    if (cell.leaf) return;
+    double sibling = 0;
+    int real_children = 0;
+    for (const Cell& child : cell.children) {
+      if (!child.disposable) {
+        sibling += cell_weight(child, rooms_);
+        ++real_children;
+      }
+    }
+    for (Cell& child : cell.children) {
+      if (child.disposable) {
+        const double target = real_children > 0 ? sibling / real_children : 4.0;
+        child.room_count =
+            std::max(1, static_cast<int>(std::lround(target / growth(SizeLabel::kMedium))));
+      }
+      size_disposables(child);
+    }
+  }
+
+  // A rectangle whose area holds every room's nominal area; its aspect depends on the shape.
+  Rect outline_rect() {
+    const double weight = cell_weight(root_, rooms_);
+    const double area = weight * kAreaPerWeight / kUsableFraction;
+    if (aspect_ == 0) {
+      switch (spec_.shape) {
+        case RandomShape::kConvex:
+          aspect_ = rng_.uniform(1.0, 1.6);
+          break;
+        case RandomShape::kL:
+          aspect_ = rng_.uniform(1.0, 1.3);
+          break;
+        case RandomShape::kU:
+        case RandomShape::kH:
+          aspect_ = rng_.uniform(1.2, 1.5);
+          break;
+        case RandomShape::kT:
+          aspect_ = rng_.uniform(1.0, 1.3);
+          break;
+      }
+      if (spec_.shape == RandomShape::kConvex && !wide_) aspect_ = 1 / aspect_;
+    }
+    const double width = std::max(4.0, round_to(std::sqrt(area * aspect_), 10));
+    const double depth = std::max(4.0, round_to(area / width, 10));
+    return Rect{0, 0, width, depth};
+  }
+
+  // The real part on the front edge (y = 0) nearest the middle: the entrance side.
+  std::size_t front_leaf(const std::vector<Cell*>& real) const {
+    std::size_t best = 0;
+    double best_score = 1e300;
+    const double mid = (outline_.x0 + outline_.x1) / 2;
+    for (std::size_t j = 0; j < real.size(); ++j) {
+      const Rect& r = real[j]->rect;
+      if (r.y0 > outline_.y0 + 1e-6) continue;
+      const double score = std::abs((r.x0 + r.x1) / 2 - mid);
+      if (score < best_score) {
+        best_score = score;
+        best = j;
+      }
+    }
+    return best;
+  }
+
+  void make_divisions() {
+    std::vector<Cell*> leaves;
+    collect_leaves(root_, leaves, false);
+    for (Cell* cell : leaves) {
+      divisions_.push_back(divide(cell->rooms, 0, cell->rooms.size(), cell->rect, rooms_, rng_));
+      place_rooms(divisions_.back(), cell->rect, rooms_);
+      leaf_of_.emplace(cell, divisions_.size() - 1);
+    }
+  }
+
+  // §4.3 "sets up the connected divisions' graph": the entrance on the front room of highest
+  // priority, then a tree of doors grown from it over rooms that share a wall, each step taking a
+  // door from the most public room that can give one, then extra doors between public rooms.
+  void connect() {
+    entrance_ = choose_entrance();
+    seed_salt_ = rng_.next();
+    const std::size_t n = rooms_.size();
+    std::vector<bool> in_tree(n, false);
+    in_tree[static_cast<std::size_t>(entrance_)] = true;
+    std::size_t reached = 1;
+    std::size_t wanted = 0;
+    for (const GenRoom& room : rooms_) wanted += room.disposable ? 0 : 1;
+    for (const double threshold : kDoorOverlap) {
+      while (reached < wanted) {
+        int best_u = -1, best_v = -1;
+        std::pair<int, std::uint64_t> best_key{1 << 30, 0};
+        for (std::size_t u = 0; u < n; ++u) {
+          if (!in_tree[u]) continue;
+          for (std::size_t v = 0; v < n; ++v) {
+            if (in_tree[v] || rooms_[v].disposable) continue;
+            if (shared_length(rooms_[u].rect, rooms_[v].rect) < threshold) continue;
+            const std::pair<int, std::uint64_t> key{
+                rooms_[u].priority + (dead_end(rooms_[u].type) ? 3 : 0),
+                shape::mix64(seed_salt_ ^ (u * 1315423911U + v))};
+            if (key < best_key) {
+              best_key = key;
+              best_u = static_cast<int>(u);
+              best_v = static_cast<int>(v);
+            }
+          }
+        }
+        if (best_u < 0) break;
+        doors_.emplace_back(best_u, best_v);
+        in_tree[static_cast<std::size_t>(best_v)] = true;
+        ++reached;
+      }
+    }
+    // Not expected with the skeletons above; keeps the graph guarantee for any program.
+    for (std::size_t v = 0; v < n && reached < wanted; ++v) {
+      if (in_tree[v] || rooms_[v].disposable) continue;
+      doors_.emplace_back(nearest_in_tree(v, in_tree), static_cast<int>(v));
+      in_tree[v] = true;
+      ++reached;
+    }
+    add_extra_doors();
+  }
+
+  int nearest_in_tree(std::size_t v, const std::vector<bool>& in_tree) const {
+    int best = entrance_;
+    double best_d = 1e300;
+    const Rect& a = rooms_[v].rect;
+    for (std::size_t u = 0; u < rooms_.size(); ++u) {
+      if (!in_tree[u]) continue;
+      const Rect& b = rooms_[u].rect;
+      const double d = std::hypot((a.x0 + a.x1 - b.x0 - b.x1) / 2, (a.y0 + a.y1 - b.y0 - b.y1) / 2);
+      if (d < best_d) {
+        best_d = d;
+        best = static_cast<int>(u);
+      }
+    }
+    return best;
+  }
+
+  void add_extra_doors() {
+    for (std::size_t u = 0; u < rooms_.size(); ++u) {
+      for (std::size_t v = u + 1; v < rooms_.size(); ++v) {
+        if (rooms_[u].disposable || rooms_[v].disposable) continue;
+        if (rooms_[u].priority > 1 || rooms_[v].priority > 1) continue;
+        if (shared_length(rooms_[u].rect, rooms_[v].rect) < kDoorOverlap[0]) continue;
+        const bool exists = std::any_of(doors_.begin(), doors_.end(), [&](const auto& d) {
+          return (d.first == static_cast<int>(u) && d.second == static_cast<int>(v)) ||
+                 (d.first == static_cast<int>(v) && d.second == static_cast<int>(u));
+        });
+        if (!exists && rng_.unit() < 0.25) {
+          doors_.emplace_back(static_cast<int>(u), static_cast<int>(v));
+        }
+      }
+    }
+  }
+
+  int choose_entrance() const {
+    int best = -1;
+    std::pair<int, double> best_key{1 << 30, 0};
+    const double mid = (outline_.x0 + outline_.x1) / 2;
+    for (int pass = 0; pass < 2 && best < 0; ++pass) {
+      for (std::size_t i = 0; i < rooms_.size(); ++i) {
+        const GenRoom& room = rooms_[i];
+        if (room.disposable) continue;
+        const bool front = room.rect.y0 <= outline_.y0 + 1e-6;
+        if (pass == 0 ? !front : boundary_length(room.rect, outline_) <= 0) continue;
+        const std::pair<int, double> key{room.priority,
+                                         std::abs((room.rect.x0 + room.rect.x1) / 2 - mid)};
+        if (key < best_key) {
+          best_key = key;
+          best = static_cast<int>(i);
+        }
+      }
+    }
+    if (best >= 0) return best;
+    for (std::size_t i = 0; i < rooms_.size(); ++i) {
+      if (!rooms_[i].disposable) return static_cast<int>(i);
+    }
+    return 0;
+  }
+
+  // Windows where a room has exterior wall: the outline, or a disposable part's side (which is
+  // exterior once the part is removed).
+  void add_windows() {
+    for (GenRoom& room : rooms_) {
+      if (room.disposable) continue;
+      double exterior = boundary_length(room.rect, outline_);
+      for (const GenRoom& other : rooms_) {
+        if (other.disposable) exterior += shared_length(room.rect, other.rect);
+      }
+      if (exterior < 2.0) continue;
+      room.windows = 1;
+      const bool small = room.type == "bathroom" || room.type == "storage" ||
+                         room.type == "corridor" || room.type == "hall" || room.type == "pantry";
+      if (!small && exterior >= 7.0 && rng_.unit() < 0.6) room.windows = 2;
+    }
+  }
+
+  // ---- the model ----
+  Building emit() {
+    name_rooms();
+    Building building;
+    building.symbol = "building";
+    building.name = spec_.name;
+    building.outline.outer = {{outline_.x0, outline_.y0},
+                              {outline_.x1, outline_.y0},
+                              {outline_.x1, outline_.y1},
+                              {outline_.x0, outline_.y1}};
+    building.layout = emit_cell(root_, true);
+    building.layout.symbol = building.symbol;
+    choose_roofs(building.layout);
+    Transition entrance;
+    entrance.symbol = "entrance0";
+    entrance.kind = TransitionKind::kEntrance;
+    entrance.from = rooms_[static_cast<std::size_t>(entrance_)].symbol;
+    building.transitions.push_back(entrance);
+    for (std::size_t i = 0; i < doors_.size(); ++i) {
+      Transition door;
+      door.symbol = "door" + std::to_string(i);
+      door.kind = TransitionKind::kDoor;
+      door.from = rooms_[static_cast<std::size_t>(doors_[i].first)].symbol;
+      door.to = rooms_[static_cast<std::size_t>(doors_[i].second)].symbol;
+      building.transitions.push_back(door);
+    }
+    return building;
+  }
+
+  void name_rooms() {
+    std::map<std::string, int> counts;
+    for (GenRoom& room : rooms_) {
+      const std::string base = identifier(room.type);
+      room.symbol = base + std::to_string(++counts[base]);
+    }
+  }
+
+  PartNode emit_cell(const Cell& cell, bool root) {
+    PartNode node;
+    node.orientation = cell.orientation;
+    if (!cell.leaf) {
+      if (!root) node.symbol = "parts" + std::to_string(containers_++);
+      for (const Cell& child : cell.children) node.children.push_back(emit_cell(child, false));
+      return node;
+    }
+    const int index = parts_++;
+    node.symbol = (cell.disposable ? "notch" : "part") + std::to_string(index);
+    node.orientation = Orientation::kAlternate;
+    BuildingPart part;
+    part.disposable = cell.disposable;
+    Floor floor;
+    floor.symbol = node.symbol + "_ground";
+    const DivNode& divisions = divisions_[leaf_of_.at(&cell)];
+    if (divisions.room >= 0) {
+      floor.layout.orientation = along_longer(cell.rect);
+      floor.layout.children.push_back(emit_division(divisions, node.symbol));
+    } else {
+      floor.layout.orientation = divisions.orientation;
+      for (const DivNode& child : divisions.children) {
+        floor.layout.children.push_back(emit_division(child, node.symbol));
+      }
+    }
+    floor.layout.symbol = floor.symbol;
+    part.floors.push_back(std::move(floor));
+    node.part = std::move(part);
+    return node;
+  }
+
+  Division emit_division(const DivNode& div, const std::string& part) {
+    Division out;
+    if (div.room >= 0) {
+      const GenRoom& room = rooms_[static_cast<std::size_t>(div.room)];
+      out.symbol = room.symbol;
+      Room r;
+      r.type = room.type;
+      r.size = room.disposable ? SizeLabel::kMedium : room.size;
+      r.walls = room.disposable ? 0 : 4;
+      r.windows = room.windows;
+      out.room = r;
+      return out;
+    }
+    out.symbol = part + "_div" + std::to_string(div_counter_[part]++);
+    out.orientation = div.orientation;
+    for (const DivNode& child : div.children) out.children.push_back(emit_division(child, part));
+    return out;
+  }
+
+  // Roofs (§4.1, §4.6): one kind and height for the whole building; L, U, T and H buildings, and
+  // half of the multi-part convex ones, get HipGlued so the parts share one merged roof (Fig. 10).
+  void choose_roofs(PartNode& layout) {
+    const RoofKind kinds[] = {RoofKind::kHip, RoofKind::kGable, RoofKind::kFlat, RoofKind::kMansard,
+                              RoofKind::kPyramid};
+    RoofKind kind = kinds[rng_.integer(0, parts_ == 1 ? 4 : 3)];
+    if (spec_.shape != RandomShape::kConvex || (parts_ > 1 && rng_.unit() < 0.5)) {
+      kind = RoofKind::kHipGlued;
+    }
+    const double height = kind == RoofKind::kFlat ? 0.5 : round_to(rng_.uniform(2.0, 3.5), 10);
+    set_roofs(layout, kind, height);
+  }
+
+  void set_roofs(PartNode& node, RoofKind kind, double height) {
+    if (node.part) {
+      node.part->roof = node.part->disposable ? RoofKind::kFlat : kind;
+      node.part->height = node.part->disposable ? 0.0 : height;
+    }
+    for (PartNode& child : node.children) set_roofs(child, kind, height);
+  }
+
+  RandomSpec spec_;
+  Rng rng_;
+  std::uint64_t seed_salt_ = 0x5DEECE66DULL;
+  Cell root_;
+  bool wide_ = true;
+  double aspect_ = 0;
+  Rect outline_;
+  std::vector<GenRoom> rooms_;
+  std::vector<int> order_;
+  std::vector<DivNode> divisions_;
+  std::map<const Cell*, std::size_t> leaf_of_;
+  int entrance_ = 0;
+  std::vector<std::pair<int, int>> doors_;
+  int parts_ = 0;
+  int containers_ = 0;
+  std::map<std::string, int> div_counter_;
+};
+
+}  // namespace
+
+bool parse_random_shape(const std::string& text, RandomShape& shape) {
+  std::string key;
+  for (const char c : text) key += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  if (key == "convex") {
+    shape = RandomShape::kConvex;
+  } else if (key == "l") {
+    shape = RandomShape::kL;
+  } else if (key == "u") {
+    shape = RandomShape::kU;
+  } else if (key == "t") {
+    shape = RandomShape::kT;
+  } else if (key == "h") {
+    shape = RandomShape::kH;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+const char* random_shape_name(RandomShape shape) {
+  switch (shape) {
+    case RandomShape::kConvex:
+      return "convex";
+    case RandomShape::kL:
+      return "L";
+    case RandomShape::kU:
+      return "U";
+    case RandomShape::kT:
+      return "T";
+    case RandomShape::kH:
+      return "H";
+  }
+  return "convex";
+}
+
+Building random_building(const RandomSpec& spec, std::uint64_t seed) {
+  return Generator(spec, seed).run();
+}
+
+std::uint64_t batch_seed(std::uint64_t seed, std::uint64_t index) {
+  return shape::mix64(seed ^ shape::mix64(index + 0x9E3779B97F4A7C15ULL));
+}
+
+}  // namespace insula::lang::bldg
