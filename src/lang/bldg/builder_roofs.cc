@@ -13,6 +13,7 @@
 // one polygon), their outlines united with kernel/boolean2d.h, and one hip roof built at the
 // group's highest eaves; a lower part of the group is raised to those eaves by a filler block.
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <string>
 
@@ -59,11 +60,20 @@ std::vector<std::uint32_t> ring_successors(const kernel::Polygon& p) {
 
 // One closed roof solid over `footprint` with its eaves at `eave_z`, `height` high.
 kernel::Mesh roof_solid(const kernel::Polygon& footprint, RoofKind kind, double height,
-                        double eave_z, const BuilderOptions& options, std::string& message) {
+                        double eave_z, double overhang, std::string& message) {
   kernel::Mesh mesh;
   kernel::RoofSpec spec;
   spec.type = roof_type(kind);
-  spec.overhang = options.roof_overhang;
+  spec.overhang = overhang;
+  if (kind == RoofKind::kHoledMansard && height > 0) {
+    // The Roman compluvium roof: the roof band slopes down inwards... as a mansard's lower band it
+    // rises from the eaves to the opening's rim `height` above them; its width (the roof's reach
+    // from the outline, 0.55 x twice the area over the perimeter: 3.9 m on a 20 x 14 m part)
+    // covers the rooms around a central atrium and leaves the middle open.
+    const double reach = 0.55 * 2 * kernel::area(footprint) / kernel::perimeter(footprint);
+    spec.mansard_break_height = height;
+    spec.mansard_pitch_deg = std::atan2(height, reach) * 180 / 3.141592653589793;
+  }
   const kernel::RoofBuild build = kernel::add_roof(footprint, spec, eave_z, mesh);
   if (build.status == kernel::RoofStatus::kFailed) {
     message = build.message.empty() ? "the roof could not be built" : build.message;
@@ -108,16 +118,47 @@ int find(std::vector<int>& parent, int i) {
   return i;
 }
 
+// Parts "in spatial contact [...] at the ground level" (§4.6): they share at least kContact of
+// boundary. The treemap's cells may leave micrometre gaps between neighbours, so `a` is grown by
+// kGap first and the overlap's area measured.
+constexpr double kGap = 1e-3;     // m
+constexpr double kContact = 0.5;  // m of shared wall
+
 bool in_contact(const kernel::Polygon& a, const kernel::Polygon& b) {
-  const kernel::BooleanResult u = kernel::unite({a}, {b});
-  return u.ok() && u.polygons.size() == 1;
+  const kernel::BooleanResult grown = kernel::offset({a}, kGap);
+  if (!grown.ok()) return false;
+  const kernel::BooleanResult overlap = kernel::intersect(grown.polygons, {b});
+  double shared = 0;
+  for (const kernel::Polygon& p : overlap.polygons) shared += kernel::area(p);
+  return overlap.ok() && shared > kGap * kContact;
+}
+
+// The union of touching outlines with the micrometre gaps closed (grow, unite, shrink back).
+std::vector<kernel::Polygon> merge(const std::vector<kernel::Polygon>& outlines) {
+  const kernel::BooleanResult grown = kernel::offset(outlines, kGap);
+  if (!grown.ok()) return kernel::union_all(outlines);
+  const kernel::BooleanResult back = kernel::offset(grown.polygons, -kGap);
+  return back.ok() ? back.polygons : kernel::union_all(outlines);
+}
+
+// The eaves overhang only on free-standing roofs: the kernel's overhang runs along every edge, and
+// on an edge shared with another part it would reach into that part's roof.
+bool touches_other_part(const Context& c, const kernel::Polygon& footprint,
+                        const std::vector<const PlanPart*>& own) {
+  for (const PlanPart& p : c.plan.parts) {
+    if (p.disposable || p.storeys == 0 || p.outline.outer.empty()) continue;
+    if (std::find(own.begin(), own.end(), &p) != own.end()) continue;
+    if (in_contact(footprint, p.outline)) return true;
+  }
+  return false;
 }
 
 void add_roof_part(const Context& c, const std::string& name, const kernel::Polygon& footprint,
-                   RoofKind kind, double height, double eave_z, std::vector<shape::Part>& parts,
-                   kernel::Mesh extra = {}) {
+                   const std::vector<const PlanPart*>& own, RoofKind kind, double height,
+                   double eave_z, std::vector<shape::Part>& parts, kernel::Mesh extra = {}) {
   std::string message;
-  kernel::Mesh mesh = roof_solid(clean(footprint), kind, height, eave_z, c.options, message);
+  const double overhang = touches_other_part(c, footprint, own) ? 0 : c.options.roof_overhang;
+  kernel::Mesh mesh = roof_solid(clean(footprint), kind, height, eave_z, overhang, message);
   if (!message.empty()) c.warn(name + ": " + message);
   if (mesh.empty()) return;
   mesh.append(extra);
@@ -144,7 +185,7 @@ void build_roofs(const Context& c, std::vector<shape::Part>& parts) {
       glued.push_back(static_cast<int>(i));
       continue;
     }
-    add_roof_part(c, std::string("roof ").append(p.symbol), p.outline, p.roof, p.roof_height,
+    add_roof_part(c, std::string("roof ").append(p.symbol), p.outline, {&p}, p.roof, p.roof_height,
                   eave_z(p), parts);
   }
   // §4.6: groups of HipGlued parts in contact.
@@ -187,11 +228,11 @@ void build_roofs(const Context& c, std::vector<shape::Part>& parts) {
                   {SemanticClass::kClosureSurface, 0, 1}, {SemanticClass::kWallSurface, 0, 2});
       }
     }
-    const std::vector<kernel::Polygon> merged = kernel::union_all(outlines);
+    const std::vector<kernel::Polygon> merged = merge(outlines);
     for (std::size_t k = 0; k < merged.size(); ++k) {
       std::string piece = name;
       if (k > 0) piece.append("#").append(std::to_string(k + 1));
-      add_roof_part(c, piece, merged[k], RoofKind::kHip, height, eaves, parts,
+      add_roof_part(c, piece, merged[k], group, RoofKind::kHip, height, eaves, parts,
                     k == 0 ? std::move(fillers) : kernel::Mesh{});
     }
   }
