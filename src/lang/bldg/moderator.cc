@@ -135,7 +135,7 @@ class Moderator {
     link_sets();
     check_finality();
     if (axiom >= 0) walk_tree(axiom);
-    report_unreached();
+    report_unreached(axiom >= 0);
     check_structure();
     if (axiom >= 0) assign_storeys(axiom);
     check_transitions();
@@ -403,7 +403,7 @@ class Moderator {
     if (rule.args.size() < 2) {
       error("BLD202",
             "'building' expects a name and an outline (a ring or geojson(file, feature)), found " +
-                std::to_string(rule.args.size()) + " parameters",
+                std::to_string(rule.args.size()),
             rule.args_range);
       return;
     }
@@ -490,16 +490,11 @@ class Moderator {
         continue;
       }
       std::string message = issue.message;
-      const std::size_t paren = message.find(" (");
-      if (paren != std::string::npos) message.resize(paren);
+      const std::size_t removed = message.rfind(" (removed)");
+      if (removed != std::string::npos) message.resize(removed);
       const std::size_t arg = 1 + static_cast<std::size_t>(std::max(0, issue.ring));
       const Range range = arg < rule.args.size() ? rule.args[arg].range : rule.args_range;
-      error(
-          "BLD206",
-          "invalid outline (" +
-              (issue.ring == 0 ? std::string("outer ring") : "hole " + std::to_string(issue.ring)) +
-              "): " + message,
-          range);
+      error("BLD206", "invalid outline: " + message, range);
       return;
     }
   }
@@ -510,6 +505,7 @@ class Moderator {
       const SymbolRef& symbol = nodes_[i].rule->symbol;
       const auto [it, inserted] = symbols_.emplace(symbol.name, static_cast<int>(i));
       if (!inserted) {
+        duplicates_.push_back(static_cast<int>(i));
         const Location first = location(nodes_[it->second].rule->symbol.range);
         error("BLD210",
               "symbol " + quoted(symbol.name) + " is already defined at line " +
@@ -648,11 +644,13 @@ class Moderator {
 
   // Rules the axiom does not reach: each unused subtree is reported once, at its root; rules that
   // only refer to each other in a ring are reported as a cycle.
-  void report_unreached() {
+  void report_unreached(bool has_axiom) {
     color_.resize(nodes_.size(), 0);
+    // A second definition is reported as such; without an axiom everything would be unused.
+    for (const int d : duplicates_) color_[static_cast<std::size_t>(d)] = 2;
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
       if (color_[i] != 0 || nodes_[i].referenced) continue;
-      if (nodes_[i].fn != Fn::kBuilding) {
+      if (nodes_[i].fn != Fn::kBuilding && has_axiom) {
         error("BLD212",
               "unused symbol " + quoted(nodes_[i].rule->symbol.name) +
                   " (no successor set refers to it)",
@@ -910,7 +908,8 @@ class Moderator {
   std::vector<Node> nodes_;
   std::map<std::string, int> symbols_;
   std::vector<Edge> edges_;
-  std::vector<int> color_;  // 0 unvisited, 1 on the stack, 2 done
+  std::vector<int> duplicates_;  // rules whose symbol was defined before
+  std::vector<int> color_;       // 0 unvisited, 1 on the stack, 2 done
 };
 
 }  // namespace
@@ -927,10 +926,9 @@ base::Result<Building> parse_building(const base::Source& source) {
     std::vector<base::Diagnostic> checks;
     building = Moderator(source, syntax.rules, checks).run();
     for (base::Diagnostic& d : checks) {
-      if (syntax_errors &&
-          (d.code == "BLD211" || d.code == "BLD215" || d.code == "BLD230" || d.code == "BLD212")) {
-        continue;
-      }
+      // With syntax errors rules are missing: keep only the checks of the rules that parsed
+      // (functions, parameters, outlines, duplicate symbols), not the structure ones.
+      if (syntax_errors && d.code > "BLD210") continue;
       diags.push_back(std::move(d));
     }
   }
