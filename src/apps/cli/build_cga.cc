@@ -1,14 +1,236 @@
-// `insula build FILE.cga`. Being written (see the open issue for the .cga front-end).
+// `insula build FILE.cga [--lot LOTS.geojson] [--seed N] [--threads N] [--set a=b] [--start S]
+// [-o OUT]... [--report R.json]`: parse, check, compile, derive every lot in parallel (results by
+// lot index, so the output does not depend on --threads), then write the outputs and the report
+// (docs/cga-derivation.md).
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/parallel_for.h>
+
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
+#include "apps/cli/input_file.h"
+#include "io/geojson_reader.h"
+#include "io/obj_reader.h"
+#include "lang/cga/checker.h"
+#include "lang/cga/compile.h"
+#include "lang/cga/derive.h"
+#include "lang/cga/parser.h"
 
 namespace insula::cli {
 
+namespace {
+
+namespace cga = lang::cga;
+
+// OBJ assets named by I(), Pshape() and i(), read from the grammar's folder once each.
+class ObjAssets : public shape::AssetProvider {
+ public:
+  explicit ObjAssets(std::filesystem::path dir) : dir_(std::move(dir)) {}
+
+  std::shared_ptr<const kernel::Mesh> find(std::string_view name,
+                                           std::string& error) const override {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    auto it = cache_.find(std::string(name));
+    if (it == cache_.end()) it = cache_.emplace(std::string(name), load(name)).first;
+    if (!it->second.mesh) error = it->second.error;
+    return it->second.mesh;
+  }
+
+ private:
+  struct Entry {
+    std::shared_ptr<const kernel::Mesh> mesh;
+    std::string error;
+  };
+  Entry load(std::string_view name) const {
+    const std::filesystem::path path = dir_ / std::string(name);
+    const std::optional<std::string> text = read_input_file(path.string());
+    if (!text) return {nullptr, "asset '" + std::string(name) + "' not found in " + dir_.string()};
+    base::Result<kernel::Mesh> mesh = io::read_obj(*text, path.string());
+    if (!mesh.ok()) {
+      const std::string why =
+          mesh.diagnostics().empty() ? "unreadable" : base::render(mesh.diagnostics().front());
+      return {nullptr, "asset '" + std::string(name) + "': " + why};
+    }
+    return {std::make_shared<kernel::Mesh>(std::move(mesh.value())), {}};
+  }
+
+  std::filesystem::path dir_;
+  mutable std::mutex mutex_;
+  mutable std::map<std::string, Entry> cache_;
+};
+
+struct Lots {
+  std::vector<cga::Lot> lots;
+  kernel::Vec3 origin;
+  std::string crs;
+};
+
+// --lot: one lot per GeoJSON feature (a MultiPolygon gives one lot of several start shapes).
+// Without --lot the lot list stays empty here; the default lot needs the compiled grammar.
+std::optional<Lots> read_lots(const BuildOptions& options) {
+  Lots out;
+  if (options.lot.empty()) return out;
+  const std::optional<std::string> text = read_input_file(options.lot);
+  if (!text) {
+    std::fprintf(stderr, "%s: error: cannot read file\n", options.lot.c_str());
+    return std::nullopt;
+  }
+  const base::Source source(options.lot, *text);
+  base::Result<io::FootprintSet> set = io::read_geojson(source.text(), options.lot);
+  print_diagnostics(set.diagnostics(), source, options.quiet);
+  if (!set.ok()) return std::nullopt;
+  out.origin = set->origin;
+  out.crs = set->crs;
+  for (io::Footprint& f : set->footprints) {
+    out.lots.push_back({std::move(f.id), std::move(f.polygons), std::move(f.properties)});
+  }
+  return out;
+}
+
+// Names given from outside (--set and lot properties): the checker and the compiler accept them
+// in expressions.
+std::vector<std::string> outside_names(const cga::DeriveOptions& derive, const Lots& lots) {
+  std::vector<std::string> names;
+  for (const auto& [name, value] : derive.sets) names.push_back(name);
+  for (const cga::Lot& lot : lots.lots) {
+    for (const auto& [name, value] : lot.properties) names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+nlohmann::json report_json(const cga::Program& program, const std::vector<cga::LotResult>& results,
+                           std::size_t lots) {
+  const cga::Totals t = cga::totals(program, results);
+  nlohmann::json report;
+  report["input"] = program.source->name();
+  report["start"] = std::string(program.symbol_name(program.start));
+  report["lots"] = lots;
+  report["shapes"] = t.shapes;
+  report["terminals"] = t.terminals;
+  report["rule_applications"] = t.rule_applications;
+  report["symbols"] = nlohmann::json::object();
+  for (const auto& [name, count] : t.symbols) report["symbols"][name] = count;
+  if (!t.reports.empty()) {
+    for (const auto& [name, e] : t.reports) {
+      report["reports"][name] = {{"sum", e.sum}, {"count", e.count}};
+    }
+  }
+  return report;
+}
+
+}  // namespace
+
 int build_cga(const BuildOptions& options) {
-  std::fprintf(stderr, "insula: %s: the .cga front-end cannot build yet\n", options.input.c_str());
-  return kExitInternal;
+  const Stopwatch total;
+  if (const int code = check_build_outputs(options); code != kExitDone) return code;
+  nlohmann::json seconds;
+
+  Stopwatch clock;
+  const std::optional<std::string> text = read_input_file(options.input);
+  if (!text) {
+    std::fprintf(stderr, "%s: error: cannot read file\n", options.input.c_str());
+    return kExitInput;
+  }
+  const base::Source source(options.input, *text);
+  base::Result<cga::Grammar> grammar = cga::parse(source);
+  print_diagnostics(grammar.diagnostics(), source, options.quiet);
+  if (!grammar.ok()) return kExitInput;
+  seconds["parse"] = clock.seconds();
+
+  cga::DeriveOptions derive;
+  derive.seed = options.seed;
+  std::string error;
+  if (!parse_sets(options.sets, derive.sets, error)) {
+    std::fprintf(stderr, "insula: error: %s\n", error.c_str());
+    return kExitUsage;
+  }
+  clock = Stopwatch();
+  std::optional<Lots> lots = read_lots(options);
+  if (!lots) return kExitInput;
+  seconds["read_lots"] = clock.seconds();
+
+  // The static checks (checker.h) before anything is derived; errors stop the build.
+  clock = Stopwatch();
+  cga::CheckOptions check_options;
+  check_options.start = options.start;
+  check_options.known_attributes = outside_names(derive, *lots);
+  const cga::CheckResult checked = cga::check(grammar.value(), source, check_options);
+  print_diagnostics(checked.diagnostics, source, options.quiet);
+  if (!checked.ok) return kExitInput;
+  seconds["check"] = clock.seconds();
+
+  clock = Stopwatch();
+  cga::CompileOptions compile_options;
+  compile_options.start = options.start;
+  compile_options.extra_attributes = check_options.known_attributes;
+  auto program = cga::compile(grammar.value(), source, compile_options);
+  print_diagnostics(program.diagnostics(), source, options.quiet);
+  if (!program.ok()) return kExitInput;
+  const cga::Program& p = *program.value();
+  seconds["compile"] = clock.seconds();
+
+  for (const auto& [name, value] : derive.sets) {
+    const bool declared = std::any_of(grammar->attrs.begin(), grammar->attrs.end(),
+                                      [&](const cga::AttrDecl& a) { return a.name == name; });
+    if (!declared) {
+      std::fprintf(stderr, "%s: error: --set '%s': the grammar declares no attr '%s'\n",
+                   options.input.c_str(), name.c_str(), name.c_str());
+      return kExitInput;
+    }
+  }
+  derive.keep_terminals = !options.outputs.empty();
+  const ObjAssets assets(std::filesystem::path(options.input).parent_path());
+  derive.assets = &assets;
+  if (lots->lots.empty()) lots->lots.push_back(cga::default_lot(p, derive));
+
+  clock = Stopwatch();
+  const int threads = options.threads > 0
+                          ? options.threads
+                          : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  std::vector<cga::LotResult> results(lots->lots.size());
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(threads));
+    tbb::parallel_for(std::size_t{0}, results.size(), [&](std::size_t i) {
+      results[i] = cga::derive_lot(p, lots->lots[i], i, derive);
+    });
+  }
+  seconds["derive"] = clock.seconds();
+
+  // Diagnostics and print() lines in lot order, whatever the thread count.
+  bool failed = false;
+  for (const cga::LotResult& r : results) {
+    for (const std::string& line : r.prints) std::fprintf(stderr, "%s\n", line.c_str());
+    print_diagnostics(r.diagnostics, source, options.quiet);
+    failed = failed || !r.ok;
+  }
+  if (failed) return kExitInput;
+
+  clock = Stopwatch();
+  shape::Scene scene;
+  if (!options.outputs.empty()) {
+    scene = cga::to_scene(p, lots->lots, results);
+    scene.origin = lots->origin;
+    scene.crs = lots->crs;
+  }
+  seconds["scene"] = clock.seconds();
+
+  nlohmann::json report = report_json(p, results, lots->lots.size());
+  report["threads"] = threads;
+  report["seed"] = options.seed;
+  report["seconds"] = seconds;
+  return finish_build(options, scene, report, total);
 }
 
 }  // namespace insula::cli

@@ -1,0 +1,684 @@
+#include "lang/cga/compile.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
+
+#include "lang/cga/checker.h"
+#include "lang/cga/eval.h"
+
+namespace insula::lang::cga {
+
+using shape::SizeMode;
+using shape::Value;
+
+const CAttr* Program::find_attr(std::string_view name) const {
+  for (const CAttr& a : attrs) {
+    if (a.name == name) return &a;
+  }
+  return nullptr;
+}
+
+std::string Program::describe(const CRule& rule) const {
+  const std::string name = rule.id.empty() ? symbols[rule.predecessor] + " -->" : rule.id;
+  return "rule '" + name + "' (line " + std::to_string(span(rule.range).line) + ")";
+}
+
+namespace {
+
+constexpr std::pair<std::string_view, ShapeAttr> kShapeAttrs[] = {
+    {"sx", ShapeAttr::kSx},       {"sy", ShapeAttr::kSy},         {"sz", ShapeAttr::kSz},
+    {"tx", ShapeAttr::kTx},       {"ty", ShapeAttr::kTy},         {"tz", ShapeAttr::kTz},
+    {"area", ShapeAttr::kArea},   {"volume", ShapeAttr::kVolume}, {"depth", ShapeAttr::kDepth},
+    {"index", ShapeAttr::kIndex}, {"total", ShapeAttr::kTotal},
+};
+
+constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
+    {"rand", Function::kRand},   {"rint", Function::kRint},   {"round", Function::kRound},
+    {"floor", Function::kFloor}, {"ceil", Function::kCeil},   {"abs", Function::kAbs},
+    {"min", Function::kMin},     {"max", Function::kMax},     {"clamp", Function::kClamp},
+    {"sqrt", Function::kSqrt},   {"pow", Function::kPow},     {"exp", Function::kExp},
+    {"ln", Function::kLn},       {"sin", Function::kSin},     {"cos", Function::kCos},
+    {"tan", Function::kTan},     {"asin", Function::kAsin},   {"acos", Function::kAcos},
+    {"atan", Function::kAtan},   {"atan2", Function::kAtan2}, {"p", Function::kP},
+    {"float", Function::kFloat}, {"str", Function::kStr},     {"bool", Function::kBool},
+    {"len", Function::kLen},
+};
+
+struct OpName {
+  std::string_view name;
+  OpCode code;
+};
+constexpr OpName kGenericOps[] = {
+    {"extrude", OpCode::kExtrude},
+    {"split", OpCode::kSplit},
+    {"comp", OpCode::kComp},
+    {"t", OpCode::kTranslate},
+    {"s", OpCode::kScale},
+    {"r", OpCode::kRotate},
+    {"center", OpCode::kCenter},
+    {"i", OpCode::kInsert},
+    {"primitiveCube", OpCode::kInsert},
+    {"offset", OpCode::kOffset},
+    {"setback", OpCode::kSetback},
+    {"roofHip", OpCode::kRoof},
+    {"roofGable", OpCode::kRoof},
+    {"roofPyramid", OpCode::kRoof},
+    {"roofShed", OpCode::kRoof},
+    {"roofMansard", OpCode::kRoof},
+    {"roofFlat", OpCode::kRoof},
+    {"color", OpCode::kColor},
+    {"set", OpCode::kSet},
+    {"print", OpCode::kPrint},
+    {"report", OpCode::kReport},
+    {"nil", OpCode::kEmpty},
+};
+
+// An expression that names a word: a string literal or a bare identifier (`split(x)`).
+const std::string* word_of(const Expr& e) {
+  if (e.kind == ExprKind::kString || e.kind == ExprKind::kIdent) return &e.text;
+  return nullptr;
+}
+
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+class Compiler {
+ public:
+  Compiler(const Grammar& grammar, const base::Source& source) : grammar_(grammar) {
+    program_ = std::make_shared<Program>();
+    program_->source = std::make_shared<base::Source>(source.name(), source.text());
+  }
+
+  base::Result<std::shared_ptr<const Program>> run(const CompileOptions& options) {
+    declare_attributes(options.extra_attributes);
+    collect_levels();
+    for (const PrioritySet& set : grammar_.sets) {
+      const std::uint32_t level = level_of(set.priority);
+      for (const Rule& rule : set.rules) compile_rule(rule, level);
+    }
+    index_rules();
+    choose_start(options);
+    if (base::has_errors(diagnostics_)) {
+      return base::Result<std::shared_ptr<const Program>>::failure(std::move(diagnostics_));
+    }
+    return {std::shared_ptr<const Program>(std::move(program_)), std::move(diagnostics_)};
+  }
+
+ private:
+  void error(std::string code, std::string message, Range range) {
+    diagnostics_.push_back(
+        base::Diagnostic::error(std::move(code), std::move(message), program_->span(range)));
+  }
+
+  // ---- attributes: every `attr` plus every name a set() assigns
+  void declare_attributes(const std::vector<std::string>& extra) {
+    for (const AttrDecl& a : grammar_.attrs) {
+      if (program_->find_attr(a.name) != nullptr) continue;  // the checker reports duplicates
+      program_->attrs.push_back({a.name, kNoExpr, a.range});
+    }
+    for (const std::string& name : extra) {
+      if (program_->find_attr(name) == nullptr) program_->attrs.push_back({name, kNoExpr, {}});
+    }
+    program_->color_attr = static_cast<std::uint32_t>(program_->attrs.size());
+    program_->attrs.push_back({"#color", kNoExpr, {}});
+    for (const PrioritySet& set : grammar_.sets) {
+      for (const Rule& rule : set.rules) {
+        for (const Alternative& alt : rule.alternatives) declare_set_targets(alt.items);
+      }
+    }
+    // Defaults compile after every name is known (one attr may use another).
+    for (const AttrDecl& a : grammar_.attrs) {
+      CAttr& target = program_->attrs[attr_index(a.name)];
+      if (target.value == kNoExpr && a.value) target.value = expr(*a.value);
+    }
+  }
+
+  void declare_set_targets(const std::vector<Item>& items) {
+    for (const Item& item : items) {
+      if (item.kind == ItemKind::kOp && item.name == "set" && !item.args.empty()) {
+        if (const std::string* w = word_of(*item.args[0]);
+            w != nullptr && program_->find_attr(*w) == nullptr) {
+          program_->attrs.push_back({*w, kNoExpr, item.range});
+        }
+      }
+      for (const Branch& b : item.branches) declare_branch_targets(b);
+    }
+  }
+  void declare_branch_targets(const Branch& b) {
+    declare_set_targets(b.items);
+    for (const Branch& p : b.pattern) declare_branch_targets(p);
+  }
+
+  std::uint32_t attr_index(std::string_view name) const {
+    for (std::size_t i = 0; i < program_->attrs.size(); ++i) {
+      if (program_->attrs[i].name == name) return static_cast<std::uint32_t>(i);
+    }
+    return kNoExpr;
+  }
+
+  // ---- expressions
+  std::uint32_t add(ENode node) {
+    program_->nodes.push_back(std::move(node));
+    return static_cast<std::uint32_t>(program_->nodes.size() - 1);
+  }
+  std::uint32_t constant(Value v, Range range) {
+    program_->consts.push_back(std::move(v));
+    ENode n;
+    n.code = ECode::kConst;
+    n.a = static_cast<std::uint32_t>(program_->consts.size() - 1);
+    n.range = range;
+    return add(std::move(n));
+  }
+  bool is_const(std::uint32_t e) const { return program_->nodes[e].code == ECode::kConst; }
+  const Value& const_value(std::uint32_t e) const { return program_->consts[program_->nodes[e].a]; }
+
+  std::uint32_t expr(const Expr& e) {
+    switch (e.kind) {
+      case ExprKind::kNumber:
+        return constant(e.number, e.range);
+      case ExprKind::kString:
+        return constant(e.text, e.range);
+      case ExprKind::kBool:
+        return constant(e.boolean, e.range);
+      case ExprKind::kIdent: {
+        const std::uint32_t a = attr_index(e.text);
+        if (a == kNoExpr) {
+          error("CGA501", "unknown attribute '" + e.text + "'", e.range);
+          return constant(Value{}, e.range);
+        }
+        ENode n{ECode::kAttr, 0, a, e.range, {}};
+        return add(std::move(n));
+      }
+      case ExprKind::kMember:
+        return member(e);
+      case ExprKind::kCall:
+        return call(e);
+      case ExprKind::kUnary: {
+        if (e.unary_op == UnaryOp::kRelative || e.unary_op == UnaryOp::kFloating) {
+          error("CGA502",
+                "a relative ('r) or floating (~) size is only allowed as a split or scale size",
+                e.range);
+          return constant(Value{}, e.range);
+        }
+        const std::uint32_t k = expr(*e.operands[0]);
+        return fold(ENode{ECode::kUnary, static_cast<std::uint8_t>(e.unary_op), 0, e.range, {k}});
+      }
+      case ExprKind::kBinary: {
+        const std::uint32_t a = expr(*e.operands[0]);
+        const std::uint32_t b = expr(*e.operands[1]);
+        return fold(
+            ENode{ECode::kBinary, static_cast<std::uint8_t>(e.binary_op), 0, e.range, {a, b}});
+      }
+    }
+    return constant(Value{}, e.range);
+  }
+
+  // Folds operators over constants (errors such as 1/0 stay for run time, at their position).
+  std::uint32_t fold(ENode n) {
+    const bool all_const =
+        std::all_of(n.kids.begin(), n.kids.end(), [&](std::uint32_t k) { return is_const(k); });
+    if (all_const && !(n.code == ECode::kFunction && is_random(static_cast<Function>(n.a)))) {
+      try {
+        Value v;
+        if (n.code == ECode::kUnary) {
+          v = apply_unary(static_cast<UnaryOp>(n.op), const_value(n.kids[0]), n.range);
+        } else if (n.code == ECode::kBinary) {
+          v = apply_binary(static_cast<BinaryOp>(n.op), const_value(n.kids[0]),
+                           const_value(n.kids[1]), n.range);
+        } else {
+          std::vector<Value> args;
+          for (std::uint32_t k : n.kids) args.push_back(const_value(k));
+          v = apply_function(static_cast<Function>(n.a), args, n.range);
+        }
+        return constant(std::move(v), n.range);
+      } catch (const EvalError&) {
+        // not foldable: evaluate (and report) when derived
+      }
+    }
+    return add(std::move(n));
+  }
+
+  std::uint32_t member(const Expr& e) {
+    const Expr& object = *e.operands[0];
+    if (object.kind == ExprKind::kIdent) {
+      if (const AttributeInfo* info = find_shape_attribute(object.text, e.text);
+          info != nullptr && info->args == 0) {
+        for (const auto& [name, code] : kShapeAttrs) {
+          if (name == e.text)
+            return add(ENode{ECode::kShapeAttr, 0, static_cast<std::uint32_t>(code), e.range, {}});
+        }
+      }
+    }
+    error("CGA503",
+          "unknown shape attribute '" +
+              (object.kind == ExprKind::kIdent ? object.text + "." : std::string()) + e.text + "'",
+          e.range);
+    return constant(Value{}, e.range);
+  }
+
+  std::uint32_t call(const Expr& e) {
+    const Expr& callee = *e.operands[0];
+    const std::size_t argc = e.operands.size() - 1;
+    std::vector<std::uint32_t> kids;
+    for (std::size_t i = 1; i < e.operands.size(); ++i) kids.push_back(expr(*e.operands[i]));
+    if (callee.kind == ExprKind::kMember && callee.text == "occ" &&
+        callee.operands[0]->kind == ExprKind::kIdent && is_shape_object(callee.operands[0]->text)) {
+      if (argc != 1) {
+        error("CGA504", "'occ' expects 1 argument, found " + std::to_string(argc), e.range);
+        return constant(Value{}, e.range);
+      }
+      program_->uses_occlusion = true;
+      return add(ENode{ECode::kOcc, 0, 0, e.range, kids});
+    }
+    if (callee.kind == ExprKind::kIdent) {
+      if (const FunctionInfo* info = find_function(callee.text)) {
+        if (!signature_accepts(info->signature, argc)) {
+          error("CGA504",
+                "'" + callee.text + "' cannot take " + std::to_string(argc) + " argument" +
+                    (argc == 1 ? "" : "s"),
+                e.range);
+          return constant(Value{}, e.range);
+        }
+        for (const auto& [name, code] : kFunctionCodes) {
+          if (name == callee.text) {
+            return fold(
+                ENode{ECode::kFunction, 0, static_cast<std::uint32_t>(code), e.range, kids});
+          }
+        }
+      }
+    }
+    error("CGA505",
+          "unknown function '" +
+              (callee.kind == ExprKind::kIdent ? callee.text : std::string("?")) + "'",
+          e.range);
+    return constant(Value{}, e.range);
+  }
+
+  // A size: `2`, `~2` (floating), `'0.5` (a fraction of the scope), `1r`. In a split the paper's
+  // `1r` is Müller et al.'s relative size, a share of what the absolute sizes leave (seed 004
+  // §II: "Subdiv("X",2,1r,1r,2)"), i.e. a floating weight; in a scale it is relative to the
+  // current size, as `'`.
+  CSize size(const Expr& e, bool split) {
+    CSize s;
+    const Expr* inner = &e;
+    if (e.kind == ExprKind::kUnary && e.unary_op == UnaryOp::kFloating) {
+      s.mode = SizeMode::kFloating;
+      inner = e.operands[0].get();
+    } else if (e.kind == ExprKind::kUnary && e.unary_op == UnaryOp::kRelative) {
+      const std::string& text = program_->source->text();
+      const bool r_suffix =
+          e.range.end > e.range.begin && e.range.end <= text.size() && text[e.range.end - 1] == 'r';
+      s.mode = split && r_suffix ? SizeMode::kFloating : SizeMode::kRelative;
+      inner = e.operands[0].get();
+    }
+    const std::uint32_t x = expr(*inner);
+    if (is_const(x)) {
+      if (const double* d = std::get_if<double>(&const_value(x))) {
+        s.value = *d;
+        return s;
+      }
+    }
+    s.expr = x;
+    return s;
+  }
+
+  // ---- successors
+  std::vector<CItem> items(const std::vector<Item>& source) {
+    std::vector<CItem> out;
+    for (const Item& item : source) out.push_back(compile_item(item));
+    return out;
+  }
+
+  SymbolId symbol(const std::string& name) {
+    auto [it, inserted] =
+        program_->symbol_ids.emplace(name, static_cast<SymbolId>(program_->symbols.size()));
+    if (inserted) program_->symbols.push_back(name);
+    return it->second;
+  }
+
+  CItem compile_item(const Item& item) {
+    CItem c;
+    c.range = item.range;
+    switch (item.kind) {
+      case ItemKind::kSymbol:
+        c.code = OpCode::kSymbol;
+        c.symbol = symbol(item.name);
+        return c;
+      case ItemKind::kEmpty:
+        c.code = OpCode::kEmpty;
+        return c;
+      case ItemKind::kPush:
+        c.code = OpCode::kPush;
+        return c;
+      case ItemKind::kPop:
+        c.code = OpCode::kPop;
+        return c;
+      case ItemKind::kOp:
+        break;
+    }
+    c.info = find_operation(item.name);
+    if (c.info == nullptr) {
+      error("CGA506", "unknown operation '" + item.name + "'", item.range);
+      c.code = OpCode::kEmpty;
+      return c;
+    }
+    c.has_block = item.has_block;
+    if (!signature_accepts(c.info->signature, item.args.size())) {
+      error("CGA504",
+            "'" + item.name + "' cannot take " + std::to_string(item.args.size()) + " argument" +
+                (item.args.size() == 1 ? "" : "s"),
+            item.range);
+      c.code = OpCode::kEmpty;
+      return c;
+    }
+    if (c.info->block == BlockUse::kRequired && !item.has_block) {
+      error("CGA507", "'" + item.name + "' needs a successor block '{ ... }'", item.range);
+    }
+    if (c.info->block == BlockUse::kNone && item.has_block) {
+      error("CGA507", "'" + item.name + "' takes no successor block", item.range);
+    }
+    operation(item, c);
+    for (const Branch& b : item.branches) c.branches.push_back(branch(b, *c.info));
+    return c;
+  }
+
+  void operation(const Item& item, CItem& c) {
+    switch (item.op) {
+      case OpKind::kSplit:
+        split_args(item, c, true);
+        return;
+      case OpKind::kRepeat:
+        split_args(item, c, false);
+        c.code = OpCode::kRepeat;
+        return;
+      case OpKind::kComp:
+        comp_args(item, c);
+        return;
+      case OpKind::kTranslate:
+        c.code = OpCode::kTranslate;
+        plain_args(item, c);
+        return;
+      case OpKind::kScale:
+        scale_args(item, c);
+        return;
+      case OpKind::kRotate: {
+        // Rx(a) is r(a, 0, 0) and so on: three arguments, two of them constant zero.
+        c.code = OpCode::kRotate;
+        for (char axis : {'x', 'y', 'z'}) {
+          c.args.push_back(axis == item.axis ? expr(*item.args[0]) : constant(0.0, item.range));
+        }
+        return;
+      }
+      case OpKind::kInsert:
+      case OpKind::kPredefined:
+        c.code = OpCode::kInsertShape;
+        asset_arg(item, c);
+        return;
+      case OpKind::kGeneric:
+        break;
+    }
+    for (const OpName& op : kGenericOps) {
+      if (op.name == item.name) c.code = op.code;
+    }
+    switch (c.code) {
+      case OpCode::kSplit:
+        split_args(item, c, false);
+        return;
+      case OpCode::kComp:
+        comp_args(item, c);
+        return;
+      case OpCode::kScale:
+        scale_args(item, c);
+        return;
+      case OpCode::kInsert:
+        if (item.name == "primitiveCube") {
+          c.text = "cube";
+        } else {
+          asset_arg(item, c);
+        }
+        return;
+      case OpCode::kCenter: {
+        const std::string* w = word_of(*item.args[0]);
+        c.text = w != nullptr ? lower(*w) : "";
+        if (c.text.empty() || c.text.find_first_not_of("xyz") != std::string::npos) {
+          error("CGA508", "center() expects axes such as \"xyz\" or \"x\"", item.args[0]->range);
+        }
+        return;
+      }
+      case OpCode::kRoof: {
+        const std::string type = lower(item.name.substr(4));
+        c.text = type == "hip" || type == "gable" || type == "pyramid" || type == "shed" ||
+                         type == "mansard" || type == "flat"
+                     ? type
+                     : "hip";
+        plain_args(item, c);
+        return;
+      }
+      case OpCode::kSet: {
+        const std::string* w = word_of(*item.args[0]);
+        if (w == nullptr || attr_index(*w) == kNoExpr) {
+          error("CGA508", "set() expects an attribute name first", item.args[0]->range);
+          return;
+        }
+        c.attr = attr_index(*w);
+        c.args.push_back(expr(*item.args[1]));
+        return;
+      }
+      case OpCode::kOffset: {
+        c.args.push_back(expr(*item.args[0]));
+        if (item.args.size() > 1) {
+          const std::string* w = word_of(*item.args[1]);
+          c.text = w != nullptr ? lower(*w) : "";
+          if (c.text != "inside" && c.text != "border" && c.text != "all") {
+            error("CGA508", "offset() part must be inside, border or all", item.args[1]->range);
+          }
+        }
+        return;
+      }
+      default:
+        plain_args(item, c);
+        return;
+    }
+  }
+
+  void plain_args(const Item& item, CItem& c) {
+    for (const ExprPtr& a : item.args) c.args.push_back(expr(*a));
+  }
+
+  void asset_arg(const Item& item, CItem& c) {
+    const Expr& a = *item.args[0];
+    if (a.kind == ExprKind::kIdent && attr_index(a.text) == kNoExpr) {
+      c.text = a.text;  // I(cube): a bare name
+      return;
+    }
+    c.args.push_back(expr(a));
+  }
+
+  void scale_args(const Item& item, CItem& c) {
+    c.code = OpCode::kScale;
+    for (const ExprPtr& a : item.args) c.sizes.push_back(size(*a, false));
+  }
+
+  std::vector<shape::Axis> axes(const Expr& e, bool several) {
+    const std::string* w = word_of(e);
+    const std::optional<std::string> text = canonical_axis(w != nullptr ? *w : "");
+    std::vector<shape::Axis> out;
+    if (text) {
+      for (char ch : *text) {
+        out.push_back(ch == 'x' ? shape::Axis::kX : ch == 'y' ? shape::Axis::kY : shape::Axis::kZ);
+      }
+    }
+    if (out.empty() || (!several && out.size() != 1)) {
+      error("CGA508",
+            several ? "expected axes x, y, z or a combination such as \"XY\""
+                    : "expected one axis: x, y or z",
+            e.range);
+      out = {shape::Axis::kX};
+    }
+    return out;
+  }
+
+  // BS(axis, sizes...) / split(axis){ sizes: ... } / RR(axis, size).
+  void split_args(const Item& item, CItem& c, bool basic) {
+    c.code = OpCode::kSplit;
+    const bool repeat = item.op == OpKind::kRepeat;
+    c.axes = axes(*item.args[0], repeat);
+    for (std::size_t i = 1; i < item.args.size(); ++i) {
+      c.sizes.push_back(size(*item.args[i], true));
+    }
+    if (basic && c.sizes.size() != item.branches.size()) {
+      error("CGA509",
+            "'" + item.name + "' has " + std::to_string(c.sizes.size()) + " sizes but " +
+                std::to_string(item.branches.size()) + " successors",
+            item.range);
+    }
+  }
+
+  void comp_args(const Item& item, CItem& c) {
+    c.code = OpCode::kComp;
+    // The checker's normalisation (checker.h): the paper's spellings and CityEngine's letters.
+    const std::string* w = word_of(*item.args[0]);
+    const std::optional<CompTypeSpelling> type = comp_type_of(w != nullptr ? *w : "");
+    if (!type) {
+      error("CGA508",
+            "unknown component type '" + (w != nullptr ? *w : std::string("?")) +
+                "' (faces, sidefaces, edges, vertices)",
+            item.args[0]->range);
+    } else {
+      c.comp = type->type == CompType::kFaces       ? CompKind::kFaces
+               : type->type == CompType::kSideFaces ? CompKind::kSideFaces
+               : type->type == CompType::kEdges     ? CompKind::kEdges
+                                                    : CompKind::kVertices;
+    }
+    for (std::size_t i = 1; i < item.args.size(); ++i) {
+      const std::uint32_t e = expr(*item.args[i]);
+      const double* d = is_const(e) ? std::get_if<double>(&const_value(e)) : nullptr;
+      if (d == nullptr || *d < 0 || *d != std::floor(*d)) {
+        error("CGA508", "component indices must be constant whole numbers >= 0",
+              item.args[i]->range);
+        continue;
+      }
+      c.indices.push_back(static_cast<std::int64_t>(*d));
+    }
+  }
+
+  CBranch branch(const Branch& b, const OperationInfo& info) {
+    CBranch out;
+    out.range = b.range;
+    out.repeat = b.repeat;
+    for (const Branch& p : b.pattern) out.pattern.push_back(branch(p, info));
+    out.items = items(b.items);
+    if (!b.key) return out;
+    out.has_key = true;
+    if (info.keys == KeyUse::kSize) {
+      out.size = size(*b.key, true);
+    } else if (info.keys == KeyUse::kSelector) {
+      const Expr& key = *b.key;
+      if (key.kind == ExprKind::kNumber && key.number >= 0 &&
+          key.number == std::floor(key.number)) {
+        out.index = static_cast<std::int64_t>(key.number);
+      } else if (const std::string* w = word_of(key); w != nullptr && is_selector(info, *w)) {
+        out.selector = *w;
+      } else {
+        error("CGA510",
+              "'" + std::string(info.name) + "' has no selector '" +
+                  (word_of(key) ? *word_of(key) : std::string("?")) + "'",
+              key.range);
+      }
+    } else {
+      error("CGA510", "the branches of '" + std::string(info.name) + "' take no keys",
+            b.key->range);
+    }
+    return out;
+  }
+
+  // ---- rules
+  void collect_levels() {
+    for (const PrioritySet& set : grammar_.sets) program_->priorities.push_back(set.priority);
+    std::sort(program_->priorities.begin(), program_->priorities.end());
+    program_->priorities.erase(
+        std::unique(program_->priorities.begin(), program_->priorities.end()),
+        program_->priorities.end());
+  }
+  std::uint32_t level_of(std::uint32_t priority) const {
+    const auto& p = program_->priorities;
+    return static_cast<std::uint32_t>(std::lower_bound(p.begin(), p.end(), priority) - p.begin());
+  }
+
+  void compile_rule(const Rule& rule, std::uint32_t level) {
+    CRule r;
+    r.id = rule.id;
+    r.range = rule.range;
+    r.id_range = rule.id.empty() ? rule.predecessor_range : rule.id_range;
+    r.predecessor = symbol(rule.predecessor);
+    r.level = level;
+    if (rule.condition) r.condition = expr(*rule.condition);
+    for (const Alternative& alt : rule.alternatives) {
+      CAlternative a;
+      a.range = alt.range;
+      a.items = items(alt.items);
+      if (alt.probability) a.probability = expr(*alt.probability);
+      r.alternatives.push_back(std::move(a));
+    }
+    program_->rules.push_back(std::move(r));
+  }
+
+  void index_rules() {
+    const std::size_t n = program_->symbols.size();
+    const std::size_t levels = program_->priorities.size();
+    program_->rules_at.assign(n, std::vector<std::vector<std::uint32_t>>(levels));
+    program_->levels_of.assign(n, {});
+    for (std::uint32_t i = 0; i < program_->rules.size(); ++i) {
+      const CRule& r = program_->rules[i];
+      program_->rules_at[r.predecessor][r.level].push_back(i);
+    }
+    for (std::size_t s = 0; s < n; ++s) {
+      for (std::uint32_t l = 0; l < levels; ++l) {
+        if (!program_->rules_at[s][l].empty()) program_->levels_of[s].push_back(l);
+      }
+    }
+  }
+
+  void choose_start(const CompileOptions& options) {
+    if (!options.start.empty()) {
+      auto it = program_->symbol_ids.find(options.start);
+      if (it == program_->symbol_ids.end()) {
+        diagnostics_.push_back(base::Diagnostic::error(
+            "CGA511", "start symbol '" + options.start + "' does not occur in the grammar",
+            base::Span::whole(program_->source->name())));
+        return;
+      }
+      program_->start = it->second;
+      return;
+    }
+    // §VI: the derivation starts from the first rule of the lowest priority set.
+    const CRule* first = nullptr;
+    for (const CRule& r : program_->rules) {
+      if (first == nullptr || r.level < first->level) first = &r;
+    }
+    if (first == nullptr) {
+      diagnostics_.push_back(base::Diagnostic::error("CGA512", "the grammar has no rules",
+                                                     base::Span::whole(program_->source->name())));
+      return;
+    }
+    program_->start = first->predecessor;
+  }
+
+  const Grammar& grammar_;
+  std::shared_ptr<Program> program_;
+  std::vector<base::Diagnostic> diagnostics_;
+};
+
+}  // namespace
+
+base::Result<std::shared_ptr<const Program>> compile(const Grammar& grammar,
+                                                     const base::Source& source,
+                                                     const CompileOptions& options) {
+  return Compiler(grammar, source).run(options);
+}
+
+}  // namespace insula::lang::cga

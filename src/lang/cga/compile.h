@@ -1,0 +1,215 @@
+// Compilation of a parsed CGA grammar (ast.h) into the form the derivation engine runs
+// (derive.h): symbols interned to integers, rules indexed by predecessor and priority level,
+// expressions flattened into a node array with names resolved (attributes, functions, shape
+// attributes) and constants folded, operations resolved through the builtins table (builtins.h),
+// split sizes precomputed when constant. Compilation reports what the engine cannot run (unknown
+// operations, functions or attributes, wrong argument counts) as CGA5xx diagnostics; the checker
+// (checker.h) reports the language-level problems before it.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "base/diagnostic.h"
+#include "lang/cga/ast.h"
+#include "lang/cga/builtins.h"
+#include "shape/operation.h"
+#include "shape/scope.h"
+#include "shape/value.h"
+
+namespace insula::lang::cga {
+
+using SymbolId = std::uint32_t;
+inline constexpr SymbolId kNoSymbol = 0xffffffffU;
+inline constexpr std::uint32_t kNoExpr = 0xffffffffU;
+
+// ---- expressions
+
+enum class ECode : std::uint8_t {
+  kConst,      // value = consts[a]
+  kAttr,       // attribute a (Program::attrs)
+  kShapeAttr,  // shape attribute a (ShapeAttr)
+  kOcc,        // Shape.occ(kids[0])
+  kFunction,   // function a (Function), arguments kids
+  kUnary,      // op (UnaryOp), kids[0]
+  kBinary,     // op (BinaryOp), kids[0], kids[1]
+};
+
+enum class ShapeAttr : std::uint8_t {
+  kSx,
+  kSy,
+  kSz,
+  kTx,
+  kTy,
+  kTz,
+  kArea,
+  kVolume,
+  kDepth,
+  kIndex,
+  kTotal
+};
+
+enum class Function : std::uint8_t {
+  kRand,
+  kRint,
+  kRound,
+  kFloor,
+  kCeil,
+  kAbs,
+  kMin,
+  kMax,
+  kClamp,
+  kSqrt,
+  kPow,
+  kExp,
+  kLn,
+  kSin,
+  kCos,
+  kTan,
+  kAsin,
+  kAcos,
+  kAtan,
+  kAtan2,
+  kP,
+  kFloat,
+  kStr,
+  kBool,
+  kLen
+};
+
+struct ENode {
+  ECode code = ECode::kConst;
+  std::uint8_t op = 0;
+  std::uint32_t a = 0;
+  Range range;
+  std::vector<std::uint32_t> kids;
+};
+
+// A split size: mode plus either a constant or an expression (evaluated per shape).
+struct CSize {
+  shape::SizeMode mode = shape::SizeMode::kAbsolute;
+  std::uint32_t expr = kNoExpr;  // kNoExpr: `value` is the constant
+  double value = 0;
+};
+
+// ---- successors
+
+enum class OpCode : std::uint8_t {
+  kSymbol,
+  kEmpty,
+  kPush,
+  kPop,
+  kSplit,   // BS/Subdiv/split
+  kRepeat,  // RR/Repeat
+  kComp,    // CS/Comp/comp
+  kTranslate,
+  kScale,
+  kRotate,
+  kCenter,
+  kInsertShape,  // I / Pshape: a new terminal shape with the asset, the current shape goes on
+  kInsert,       // i / primitiveCube: the current shape's geometry becomes the asset
+  kExtrude,
+  kOffset,
+  kSetback,
+  kRoof,
+  kColor,
+  kSet,
+  kPrint,
+  kReport,
+};
+
+enum class CompKind : std::uint8_t { kFaces, kSideFaces, kEdges, kVertices };
+
+struct CItem;
+
+// A branch of an operation block: its key (a size, a selector or an index), or a repeat pattern.
+struct CBranch {
+  Range range;
+  bool has_key = false;
+  CSize size;               // split sizes
+  std::string selector;     // comp / offset / setback selector ("front", "inside", ...)
+  std::int64_t index = -1;  // comp index key
+  bool repeat = false;      // `{ ... }*`
+  std::vector<CBranch> pattern;
+  std::vector<CItem> items;
+};
+
+struct CItem {
+  OpCode code = OpCode::kSymbol;
+  Range range;
+  SymbolId symbol = kNoSymbol;          // kSymbol
+  const OperationInfo* info = nullptr;  // operations
+  std::vector<std::uint32_t> args;      // expressions, positional
+  std::vector<shape::Axis> axes;        // split / repeat (RR "XY": two)
+  std::vector<CSize> sizes;             // BS sizes, RR size
+  CompKind comp = CompKind::kFaces;     // comp
+  std::vector<std::int64_t> indices;    // CS index list
+  std::string text;                     // roof type, asset name, set target, axes of center
+  std::uint32_t attr = 0;               // kSet: attribute index
+  std::vector<CBranch> branches;
+  bool has_block = false;
+};
+
+struct CAlternative {
+  Range range;
+  std::vector<CItem> items;
+  std::uint32_t probability = kNoExpr;  // none: the alternatives share what is left equally
+};
+
+struct CRule {
+  std::string id;  // as written; empty for an unnamed rule
+  Range range;
+  Range id_range;
+  SymbolId predecessor = kNoSymbol;
+  std::uint32_t level = 0;  // index into Program::priorities
+  std::uint32_t condition = kNoExpr;
+  std::vector<CAlternative> alternatives;
+};
+
+struct CAttr {
+  std::string name;
+  std::uint32_t value = kNoExpr;  // default; kNoExpr: only ever set() (starts null)
+  Range range;
+};
+
+struct Program {
+  std::shared_ptr<const base::Source> source;
+  std::vector<std::string> symbols;
+  std::unordered_map<std::string, SymbolId> symbol_ids;
+  std::vector<std::uint32_t> priorities;  // distinct priority numbers, ascending (levels)
+  std::vector<CRule> rules;
+  // rules_at[symbol][level]: rule indices in file order; levels_of[symbol]: levels with rules.
+  std::vector<std::vector<std::vector<std::uint32_t>>> rules_at;
+  std::vector<std::vector<std::uint32_t>> levels_of;
+  std::vector<CAttr> attrs;
+  std::uint32_t color_attr = 0;  // the hidden attribute color() sets
+  std::vector<ENode> nodes;
+  std::vector<shape::Value> consts;
+  SymbolId start = kNoSymbol;
+  bool uses_occlusion = false;
+
+  bool has_rules(SymbolId s) const { return s < levels_of.size() && !levels_of[s].empty(); }
+  std::string_view symbol_name(SymbolId s) const { return symbols[s]; }
+  // "rule 'r12' (line 7)" or "rule 'Lot -->' (line 7)" for an unnamed rule.
+  std::string describe(const CRule& rule) const;
+  base::Span span(Range range) const { return span_of(*source, range); }
+  const CAttr* find_attr(std::string_view name) const;
+};
+
+struct CompileOptions {
+  std::string start;  // --start SYMBOL; empty: the first rule of the lowest priority set
+  // Names expressions may use besides the `attr`s (lot properties, --set names): attributes
+  // without a default, null unless the lot or --set gives them a value.
+  std::vector<std::string> extra_attributes;
+};
+
+// Compiles `grammar` (parsed from `source`). Fails with CGA5xx diagnostics for what the engine
+// cannot run; never throws.
+base::Result<std::shared_ptr<const Program>> compile(const Grammar& grammar,
+                                                     const base::Source& source,
+                                                     const CompileOptions& options = {});
+
+}  // namespace insula::lang::cga

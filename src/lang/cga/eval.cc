@@ -1,0 +1,253 @@
+#include "lang/cga/eval.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace insula::lang::cga {
+
+using shape::Value;
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+bool is_number(const Value& v) {
+  return std::holds_alternative<double>(v);
+}
+bool is_string(const Value& v) {
+  return std::holds_alternative<std::string>(v);
+}
+
+[[noreturn]] void fail(Range range, std::string message) {
+  throw EvalError{range, std::move(message)};
+}
+
+double finite_or_fail(double x, Range range, const char* what) {
+  if (!std::isfinite(x)) fail(range, std::string(what) + " is not a finite number");
+  return x;
+}
+
+Value compare(BinaryOp op, const Value& a, const Value& b, Range range) {
+  int order = 0;
+  if (is_number(a) && is_number(b)) {
+    const double x = std::get<double>(a);
+    const double y = std::get<double>(b);
+    order = x < y ? -1 : (x > y ? 1 : 0);
+  } else if (is_string(a) && is_string(b)) {
+    order = std::get<std::string>(a).compare(std::get<std::string>(b));
+    order = order < 0 ? -1 : (order > 0 ? 1 : 0);
+  } else if (op == BinaryOp::kEq || op == BinaryOp::kNe) {
+    // Different types are unequal; booleans compare by value.
+    const bool equal = a == b;
+    return op == BinaryOp::kEq ? equal : !equal;
+  } else {
+    fail(range,
+         "cannot order a " + std::string(type_name(a)) + " and a " + std::string(type_name(b)));
+  }
+  switch (op) {
+    case BinaryOp::kEq:
+      return order == 0;
+    case BinaryOp::kNe:
+      return order != 0;
+    case BinaryOp::kLt:
+      return order < 0;
+    case BinaryOp::kLe:
+      return order <= 0;
+    case BinaryOp::kGt:
+      return order > 0;
+    default:
+      return order >= 0;
+  }
+}
+
+double arithmetic(BinaryOp op, double x, double y, Range range) {
+  switch (op) {
+    case BinaryOp::kAdd:
+      return x + y;
+    case BinaryOp::kSub:
+      return x - y;
+    case BinaryOp::kMul:
+      return x * y;
+    case BinaryOp::kDiv:
+      if (y == 0) fail(range, "division by zero");
+      return x / y;
+    default:
+      if (y == 0) fail(range, "modulo by zero");
+      return std::fmod(x, y);
+  }
+}
+
+double number_arg(const std::vector<Value>& args, std::size_t i, Range range) {
+  return as_number(args[i], range);
+}
+
+}  // namespace
+
+std::string_view type_name(const Value& value) {
+  if (std::holds_alternative<double>(value)) return "number";
+  if (std::holds_alternative<std::string>(value)) return "string";
+  if (std::holds_alternative<bool>(value)) return "bool";
+  return "null";
+}
+
+double as_number(const Value& value, Range range) {
+  if (const double* d = std::get_if<double>(&value)) return *d;
+  if (const bool* b = std::get_if<bool>(&value)) return *b ? 1.0 : 0.0;
+  fail(range, "expected a number, got a " + std::string(type_name(value)));
+}
+
+bool as_bool(const Value& value, Range range) {
+  if (const bool* b = std::get_if<bool>(&value)) return *b;
+  if (const double* d = std::get_if<double>(&value)) return *d != 0;
+  fail(range, "expected a condition (bool), got a " + std::string(type_name(value)));
+}
+
+std::string as_text(const Value& value) {
+  return shape::to_string(value);
+}
+
+Value apply_unary(UnaryOp op, const Value& v, Range range) {
+  if (op == UnaryOp::kNot) return !as_bool(v, range);
+  if (op == UnaryOp::kNegate) return -as_number(v, range);
+  fail(range, "a relative ('r) or floating (~) size is only allowed as a split or scale size");
+}
+
+Value apply_binary(BinaryOp op, const Value& a, const Value& b, Range range) {
+  switch (op) {
+    case BinaryOp::kOr:
+      return as_bool(a, range) || as_bool(b, range);
+    case BinaryOp::kAnd:
+      return as_bool(a, range) && as_bool(b, range);
+    case BinaryOp::kEq:
+    case BinaryOp::kNe:
+    case BinaryOp::kLt:
+    case BinaryOp::kLe:
+    case BinaryOp::kGt:
+    case BinaryOp::kGe:
+      return compare(op, a, b, range);
+    case BinaryOp::kAdd:
+      if (is_string(a) || is_string(b)) return as_text(a) + as_text(b);
+      [[fallthrough]];
+    default:
+      return arithmetic(op, as_number(a, range), as_number(b, range), range);
+  }
+}
+
+bool is_random(Function f) {
+  return f == Function::kRand || f == Function::kP;
+}
+
+Value apply_function(Function f, const std::vector<Value>& args, Range range) {
+  const auto x = [&](std::size_t i) { return number_arg(args, i, range); };
+  switch (f) {
+    case Function::kRint:
+      return std::nearbyint(x(0));
+    case Function::kRound:
+      return std::round(x(0));
+    case Function::kFloor:
+      return std::floor(x(0));
+    case Function::kCeil:
+      return std::ceil(x(0));
+    case Function::kAbs:
+      return std::fabs(x(0));
+    case Function::kMin:
+    case Function::kMax: {
+      double r = x(0);
+      for (std::size_t i = 1; i < args.size(); ++i) {
+        r = f == Function::kMin ? std::min(r, x(i)) : std::max(r, x(i));
+      }
+      return r;
+    }
+    case Function::kClamp:
+      return std::clamp(x(0), std::min(x(1), x(2)), std::max(x(1), x(2)));
+    case Function::kSqrt:
+      if (x(0) < 0) fail(range, "sqrt of a negative number");
+      return std::sqrt(x(0));
+    case Function::kPow:
+      return finite_or_fail(std::pow(x(0), x(1)), range, "pow");
+    case Function::kExp:
+      return finite_or_fail(std::exp(x(0)), range, "exp");
+    case Function::kLn:
+      if (!(x(0) > 0)) fail(range, "ln of a number <= 0");
+      return std::log(x(0));
+    case Function::kSin:
+      return std::sin(x(0) * kDeg);
+    case Function::kCos:
+      return std::cos(x(0) * kDeg);
+    case Function::kTan:
+      return finite_or_fail(std::tan(x(0) * kDeg), range, "tan");
+    case Function::kAsin:
+      return std::asin(std::clamp(x(0), -1.0, 1.0)) / kDeg;
+    case Function::kAcos:
+      return std::acos(std::clamp(x(0), -1.0, 1.0)) / kDeg;
+    case Function::kAtan:
+      return std::atan(x(0)) / kDeg;
+    case Function::kAtan2:
+      return std::atan2(x(0), x(1)) / kDeg;
+    case Function::kFloat:
+      if (const std::string* s = std::get_if<std::string>(&args[0])) {
+        char* end = nullptr;
+        const double d = std::strtod(s->c_str(), &end);
+        if (s->empty() || end != s->c_str() + s->size() || !std::isfinite(d)) {
+          fail(range, "float(\"" + *s + "\"): not a number");
+        }
+        return d;
+      }
+      return x(0);
+    case Function::kStr:
+      return as_text(args[0]);
+    case Function::kBool:
+      if (const std::string* s = std::get_if<std::string>(&args[0])) return !s->empty();
+      return as_bool(args[0], range);
+    case Function::kLen:
+      if (!is_string(args[0])) fail(range, "len() expects a string");
+      return static_cast<double>(std::get<std::string>(args[0]).size());
+    default:
+      fail(range, "internal: random function evaluated without a generator");
+  }
+}
+
+Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context) {
+  const ENode& n = program.nodes[expr];
+  switch (n.code) {
+    case ECode::kConst:
+      return program.consts[n.a];
+    case ECode::kAttr:
+      return context.attribute(n.a, n.range);
+    case ECode::kShapeAttr:
+      return context.shape_attribute(static_cast<ShapeAttr>(n.a));
+    case ECode::kOcc:
+      return context.occlusion(as_text(evaluate(program, n.kids[0], context)), n.range);
+    case ECode::kUnary:
+      return apply_unary(static_cast<UnaryOp>(n.op), evaluate(program, n.kids[0], context),
+                         n.range);
+    case ECode::kBinary: {
+      const auto op = static_cast<BinaryOp>(n.op);
+      const Value a = evaluate(program, n.kids[0], context);
+      // and / or short-circuit (a condition guarding a division stays safe).
+      if (op == BinaryOp::kAnd && !as_bool(a, n.range)) return false;
+      if (op == BinaryOp::kOr && as_bool(a, n.range)) return true;
+      return apply_binary(op, a, evaluate(program, n.kids[1], context), n.range);
+    }
+    case ECode::kFunction: {
+      const auto f = static_cast<Function>(n.a);
+      std::vector<Value> args;
+      args.reserve(n.kids.size());
+      for (std::uint32_t k : n.kids) args.push_back(evaluate(program, k, context));
+      if (f == Function::kRand) {
+        const double lo = args.size() == 2 ? as_number(args[0], n.range) : 0.0;
+        const double hi = args.empty()       ? 1.0
+                          : args.size() == 1 ? as_number(args[0], n.range)
+                                             : as_number(args[1], n.range);
+        return context.rng().uniform(lo, hi);
+      }
+      if (f == Function::kP) return context.rng().unit() < as_number(args[0], n.range);
+      return apply_function(f, args, n.range);
+    }
+  }
+  return Value{};
+}
+
+}  // namespace insula::lang::cga
