@@ -173,7 +173,9 @@ class Printer {
     for (const Division& child : division.children) {
       division_names_[&child] = claim(child.symbol, child.room ? "room" : "divisions");
       set.push_back(division_names_[&child]);
-      // Transitions keep naming the room by its written symbol; follow a renaming.
+      // Transitions name a room by its written symbol, meaning its first definition (as the
+      // moderator reads it); follow a renaming only when no room kept that symbol.
+      if (child.room && child.symbol == division_names_[&child]) kept_.insert(child.symbol);
       if (child.room && child.symbol != division_names_[&child]) {
         renamed_.emplace(child.symbol, division_names_[&child]);
       }
@@ -200,6 +202,7 @@ class Printer {
   }
 
   std::string room_ref(const std::string& symbol) const {
+    if (kept_.count(symbol)) return symbol;
     const auto it = renamed_.find(symbol);
     return it == renamed_.end() ? symbol : it->second;
   }
@@ -223,6 +226,7 @@ class Printer {
   std::map<const Floor*, std::string> floor_names_;
   std::map<const Division*, std::string> division_names_;
   std::multimap<std::string, std::string> renamed_;
+  std::set<std::string> kept_;
   std::vector<std::string> transition_names_;
 };
 

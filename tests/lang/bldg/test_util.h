@@ -80,3 +80,59 @@ inline void for_each_room(const PartNode& node, const std::function<void(const D
 }
 
 }  // namespace insula::lang::bldg::testing
+
+namespace insula::lang::bldg::testing {
+
+// Every field of a model except source locations, independent of the printer, so round-trip
+// tests compare models and not just texts.
+inline std::string dump(const Division& d, const std::string& indent) {
+  std::string out =
+      indent + "div " + d.symbol + " o" + std::to_string(static_cast<int>(d.orientation));
+  if (d.room) {
+    out += " room[" + d.room->type + " s" + std::to_string(static_cast<int>(d.room->size)) + " w" +
+           std::to_string(d.room->walls) + " n" + std::to_string(d.room->windows) + " e" +
+           std::to_string(d.room->entrance) + "]";
+  }
+  out += "\n";
+  for (const Division& c : d.children) out += dump(c, indent + "  ");
+  return out;
+}
+
+inline std::string dump(const PartNode& p, const std::string& indent) {
+  std::string out =
+      indent + "part " + p.symbol + " o" + std::to_string(static_cast<int>(p.orientation));
+  if (p.part) {
+    out += " roof" + std::to_string(static_cast<int>(p.part->roof)) + " h" +
+           std::to_string(p.part->height) + " disp" + std::to_string(p.part->disposable) + "\n";
+    for (const Floor& f : p.part->floors) {
+      out += indent + " floor " + f.symbol + " h" + std::to_string(f.height) + "\n" +
+             dump(f.layout, indent + "  ");
+    }
+  } else {
+    out += "\n";
+  }
+  for (const PartNode& c : p.children) out += dump(c, indent + "  ");
+  return out;
+}
+
+inline std::string dump(const Building& b) {
+  char buffer[64];
+  std::string out = "building " + b.symbol + " '" + b.name + "' file '" + b.outline_file +
+                    "' feature '" + b.outline_feature + "'\n";
+  for (std::size_t r = 0; r <= b.outline.holes.size(); ++r) {
+    out += r == 0 ? " outer" : " hole";
+    for (const kernel::Vec2& v : r == 0 ? b.outline.outer : b.outline.holes[r - 1]) {
+      std::snprintf(buffer, sizeof buffer, " (%.17g %.17g)", v.x, v.y);
+      out += buffer;
+    }
+    out += "\n";
+  }
+  out += dump(b.layout, " ");
+  for (const Transition& t : b.transitions) {
+    out += " transition " + t.symbol + " k" + std::to_string(static_cast<int>(t.kind)) + " " +
+           t.from + " " + t.to + " w" + std::to_string(t.width) + "\n";
+  }
+  return out;
+}
+
+}  // namespace insula::lang::bldg::testing
