@@ -1,0 +1,92 @@
+// Every example of examples/bldg/ through the whole pipeline (parse_building -> make_floor_plan ->
+// build_building): every part closed and outward, no builder warning, one room part per room of
+// the plan, and a golden summary per example (tests/data/bldg/examples/<stem>.txt: counts, room
+// clear-floor areas, parts; regenerate with INSULA_UPDATE_GOLDEN=1).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "kernel/mesh.h"
+#include "lang/bldg/builder.h"
+#include "lang/bldg/floorplan.h"
+#include "lang/bldg/parser.h"
+#include "test_util.h"
+
+namespace insula::lang::bldg {
+namespace {
+
+std::filesystem::path examples_dir() {
+  return std::filesystem::path(INSULA_SOURCE_DIR) / "examples" / "bldg";
+}
+
+std::string fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+std::string summary(const BuildResult& r) {
+  const BuildStats& s = r.stats;
+  std::string out = "building " + r.building.id + "\n";
+  out += "storeys " + std::to_string(s.storeys) + " rooms " + std::to_string(s.rooms) + " walls " +
+         std::to_string(s.walls) + " doors " + std::to_string(s.doors) + " entrances " +
+         std::to_string(s.entrances) + " windows " + std::to_string(s.windows) + " stairs " +
+         std::to_string(s.stairs) + " roofs " + std::to_string(s.roofs) + "\n";
+  out +=
+      "vertices " + std::to_string(s.vertices) + " triangles " + std::to_string(s.triangles) + "\n";
+  for (const shape::Part& p : r.building.parts) {
+    const kernel::MeshCheck c = kernel::check(p.mesh);
+    out += "part '" + p.name + "' faces " + std::to_string(p.mesh.face_count()) + " shells " +
+           std::to_string(c.components) + " volume " + fixed(kernel::volume(p.mesh), 2);
+    if (p.kind == shape::PartKind::kRoom) {
+      out += " area " + fixed(std::get<double>(p.attributes.at("area")), 2);
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+void expect_golden(const std::string& name, const std::string& text) {
+  const std::filesystem::path path = testing::data_dir() / "examples" / (name + ".txt");
+  if (std::getenv("INSULA_UPDATE_GOLDEN") != nullptr) {
+    std::filesystem::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << text;
+    return;
+  }
+  EXPECT_EQ(testing::read_file(path), text)
+      << "golden " << path << " (INSULA_UPDATE_GOLDEN=1 regenerates it)";
+}
+
+TEST(BuilderExamples, BuildClosedAndMatchTheirGoldens) {
+  const auto files = testing::files_in(examples_dir(), ".bldg");
+  ASSERT_GE(files.size(), 9U);
+  for (const std::filesystem::path& file : files) {
+    SCOPED_TRACE(file.string());
+    const base::Source source(file.string(), testing::read_file(file));
+    const base::Result<Building> building = parse_building(source);
+    ASSERT_TRUE(building.ok());
+    const Restrictions rules;
+    const base::Result<FloorPlan> plan = make_floor_plan(building.value(), rules);
+    ASSERT_TRUE(plan.ok());
+    const BuildResult r = build_building(building.value(), plan.value(), rules);
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    std::size_t rooms = 0;
+    for (const PlanStorey& s : plan->storeys) rooms += s.rooms.size();
+    EXPECT_EQ(r.stats.rooms, rooms);
+    EXPECT_EQ(r.building.plans.size(), plan->storeys.size());
+    for (const shape::Part& p : r.building.parts) {
+      const kernel::MeshCheck c = kernel::check(p.mesh);
+      EXPECT_TRUE(c.closed && c.oriented && c.non_manifold_edges == 0) << p.name;
+      EXPECT_GT(kernel::volume(p.mesh), 0) << p.name;
+    }
+    expect_golden(file.stem().string(), summary(r));
+  }
+}
+
+}  // namespace
+}  // namespace insula::lang::bldg
