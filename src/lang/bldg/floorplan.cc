@@ -122,6 +122,16 @@ void assemble(Work& work, FloorPlan& out) {
   }
 }
 
+// Cells of one storey agree exactly on shared boundaries (plan_geometry.h, weld).
+void weld_storeys(FloorPlan& out) {
+  for (PlanStorey& storey : out.storeys) {
+    std::vector<kernel::Polygon*> cells;
+    for (PlanRoom& r : storey.rooms) cells.push_back(&r.cell);
+    for (PlanDeadZone& z : storey.dead_zones) cells.push_back(&z.cell);
+    plan::weld(cells);
+  }
+}
+
 }  // namespace
 
 double default_door_width(const Building& building, const Restrictions& restrictions) {
@@ -158,6 +168,12 @@ base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrict
   plan::subdivide_all(work);  // §3.2, first arrangement
   std::vector<plan::DoorRequest> doors = plan::collect_doors(work);
   plan::fit_doors(work, doors);  // §3.3 probing: weight borrowing
+  // Past the paper: doors that connect every room, probed and borrowed for like the grammar's.
+  for (int round = 0; options.guarantee_reachability && round < 64; ++round) {
+    const std::size_t start = doors.size();
+    if (plan::request_connections(work, doors) == 0) break;
+    plan::fit_doors(work, doors, start);
+  }
 
   for (const plan::WorkRoom& room : work.rooms) {
     if (room.division == nullptr || room.has_cell || work.parts[room.part].disposable()) continue;
@@ -169,9 +185,13 @@ base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrict
 
   FloorPlan out;
   assemble(work, out);  // §3.4: the last subdivision, fake-concave suppression
+  weld_storeys(out);
   plan::place_doors(work, out, doors);
   plan::place_entrances(work, out);
-  if (options.adapt_room_shapes) plan::adapt_room_shapes(work, out);
+  if (options.adapt_room_shapes) {
+    plan::adapt_room_shapes(work, out);
+    weld_storeys(out);
+  }
   plan::place_stairs(work, out);
   plan::guarantee_reachability(work, out, options.guarantee_reachability);
   plan::place_windows(work, out);

@@ -235,6 +235,69 @@ bool bounds_touch(const kernel::Bounds2& a, const kernel::Bounds2& b, double mar
          a.min.y <= b.max.y + margin && b.min.y <= a.max.y + margin;
 }
 
+void weld(const std::vector<Polygon*>& cells, double tolerance) {
+  std::vector<Vec2*> points;
+  for (Polygon* c : cells) {
+    for (Vec2& v : c->outer) points.push_back(&v);
+    for (Ring& h : c->holes)
+      for (Vec2& v : h) points.push_back(&v);
+  }
+  // Vertex clusters: sorted by x, each point takes the first earlier representative in reach.
+  std::vector<std::size_t> order(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return points[a]->x < points[b]->x || (points[a]->x == points[b]->x && a < b);
+  });
+  std::vector<Vec2> original(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) original[i] = *points[i];
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t i = order[k];
+    for (std::size_t m = k; m-- > 0;) {
+      const std::size_t j = order[m];
+      if (original[i].x - original[j].x > tolerance) break;
+      if (kernel::length(original[i] - original[j]) <= tolerance) {
+        *points[i] = *points[j];
+        break;
+      }
+    }
+  }
+  // T-junctions: a vertex on another cell's edge goes exactly onto that edge.
+  std::vector<kernel::Bounds2> boxes;
+  for (const Polygon* c : cells) boxes.push_back(kernel::bounds(*c));
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    auto snap_ring = [&](Ring& ring) {
+      for (Vec2& v : ring) {
+        kernel::Bounds2 pb;
+        pb.add(v);
+        for (std::size_t j = 0; j < cells.size(); ++j) {
+          if (j == i || !bounds_touch(pb, boxes[j], tolerance)) continue;
+          auto try_ring = [&](const Ring& other) {
+            const std::size_t n = other.size();
+            for (std::size_t e = 0; e < n; ++e) {
+              const Vec2 p = other[e];
+              const Vec2 q = other[(e + 1) % n];
+              if (kernel::length(v - p) <= tolerance || kernel::length(v - q) <= tolerance)
+                continue;
+              if (kernel::distance_to_segment(v, p, q) > tolerance) continue;
+              const Vec2 d = q - p;
+              v = p + d * (kernel::dot(v - p, d) / kernel::dot(d, d));
+              return true;
+            }
+            return false;
+          };
+          if (try_ring(cells[j]->outer)) break;
+          bool done = false;
+          for (const Ring& h : cells[j]->holes) done = done || try_ring(h);
+          if (done) break;
+        }
+      }
+    };
+    snap_ring(cells[i]->outer);
+    for (Ring& h : cells[i]->holes) snap_ring(h);
+  }
+  for (Polygon* c : cells) simplify(*c);
+}
+
 int largest(const std::vector<Polygon>& polygons) {
   int best = -1;
   double best_area = -1;

@@ -57,6 +57,13 @@ bool covers(const std::vector<kernel::Polygon>& outer, const kernel::Polygon& in
 bool overlaps(const kernel::Polygon& a, const kernel::Polygon& b);
 bool bounds_touch(const kernel::Bounds2& a, const kernel::Bounds2& b, double margin);
 
+// Makes neighbouring cells agree exactly on their common boundaries. Each boolean operation
+// rounds to a grid centred on its own inputs (kernel/boolean2d.h), so two cells cut in different
+// calls may place the same line up to a micrometre apart. Vertices closer than `tolerance` are
+// merged (the first one seen wins) and a vertex within `tolerance` of another cell's edge is moved
+// onto it, then rings are simplified.
+void weld(const std::vector<kernel::Polygon*>& cells, double tolerance = kLineTolerance);
+
 // Index of the polygon of largest area; -1 when empty.
 int largest(const std::vector<kernel::Polygon>& polygons);
 

@@ -89,14 +89,23 @@ void place_doors(Work& work, FloorPlan& plan, const std::vector<DoorRequest>& do
     std::optional<PlanDoor> door =
         door_between(storey, a.plan_index, b.plan_index, d.width, work.clearance);
     if (!door) {
-      warn(work,
-           "door '" + d.transition->symbol + "' finds no free place on the wall between '" +
-               room_name(work, d.a) + "' and '" + room_name(work, d.b) + "'; dropped",
-           d.transition->where);
+      if (d.transition != nullptr)
+        warn(work,
+             "door '" + d.transition->symbol + "' finds no free place on the wall between '" +
+                 room_name(work, d.a) + "' and '" + room_name(work, d.b) + "'; dropped",
+             d.transition->where);
       continue;
     }
-    door->symbol = d.transition->symbol;
-    door->where = d.transition->where;
+    if (d.transition != nullptr) {
+      door->symbol = d.transition->symbol;
+      door->where = d.transition->where;
+    } else {
+      door->added = true;
+      warn(work,
+           "door added between '" + room_name(work, d.a) + "' and '" + room_name(work, d.b) +
+               "' so that every room can be reached",
+           work.rooms[d.a].division->where);
+    }
     door->height = work.restrictions->door_height;
     storey.doors.push_back(*door);
   }

@@ -26,7 +26,8 @@ struct Flight {
   double riser_max;
   double tread;
 };
-constexpr Flight kFlights[] = {{0.19, 0.27}, {0.22, 0.2}};
+// Comfortable, steep, then ladder-like (the Roman upper floors' wooden stairs).
+constexpr Flight kFlights[] = {{0.19, 0.27}, {0.22, 0.2}, {0.25, 0.14}};
 
 std::vector<Polygon> door_zones(const PlanStorey& storey) {
   std::vector<Polygon> out;

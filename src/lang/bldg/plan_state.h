@@ -19,7 +19,7 @@ struct TreeNode {
   std::vector<int> children;
   Orientation orientation = Orientation::kAlternate;
   int leaf = -1;  // part index (part tree) or room index (division tree) for final nodes
-  int depth = 0;  // arrangement depth, continued from the part tree into the floors' trees
+  int depth = 0;  // arrangement depth in its tree (0 at the root)
 };
 
 struct WorkRoom {

@@ -78,7 +78,7 @@ void add_part(Work& work, const PartNode& node, int parent, int depth,
     const int floor_index = static_cast<int>(work.floors.size());
     work.floors.push_back(std::move(floor));
     work.parts[part_index].floors.push_back(floor_index);
-    add_division(work, floor_index, f.layout, -1, depth + 1);
+    add_division(work, floor_index, f.layout, -1, 0);
     if (work.floors[floor_index].rooms.empty() && !bp.disposable) {
       errors.push_back(base::Diagnostic::error(
           "PLAN002", "floor '" + f.symbol + "' of part '" + node.symbol + "' holds no room",
@@ -108,15 +108,23 @@ double node_weight(const std::vector<TreeNode>& tree, int node,
   return sum;
 }
 
-bool along_x(const TreeNode& node) {
+// §3.2: the axis alternates per depth. Each tree (the parts', each floor's) starts across the
+// longer side of the region it divides (x on a tie), so a long narrow part is cut into rooms
+// across its length instead of into slivers along it.
+bool along_x(const TreeNode& node, bool x_first) {
   if (node.orientation == Orientation::kHorizontal) return true;
   if (node.orientation == Orientation::kVertical) return false;
-  return node.depth % 2 == 0;  // §3.2: the axis alternates per depth, x first
+  return (node.depth % 2 == 0) == x_first;
+}
+
+bool wider_than_tall(const std::vector<Polygon>& region) {
+  const kernel::Bounds2 b = bounds_of(region);
+  return b.max.x - b.min.x >= b.max.y - b.min.y;
 }
 
 // Recursive treemap: `region` is cut among `node`'s children; leaves receive their pieces.
 void split_tree(const std::vector<TreeNode>& tree, int node, std::vector<Polygon> region,
-                const std::function<double(int)>& leaf_weight, double step,
+                const std::function<double(int)>& leaf_weight, double step, bool x_first,
                 std::vector<std::vector<Polygon>>& leaf_regions) {
   const TreeNode& n = tree[node];
   if (n.leaf >= 0) {
@@ -126,9 +134,10 @@ void split_tree(const std::vector<TreeNode>& tree, int node, std::vector<Polygon
   if (n.children.empty()) return;
   std::vector<double> weights;
   for (int c : n.children) weights.push_back(std::max(node_weight(tree, c, leaf_weight), 1e-12));
-  std::vector<std::vector<Polygon>> cells = split_region(region, weights, along_x(n), step);
+  std::vector<std::vector<Polygon>> cells =
+      split_region(region, weights, along_x(n, x_first), step);
   for (std::size_t i = 0; i < n.children.size(); ++i)
-    split_tree(tree, n.children[i], std::move(cells[i]), leaf_weight, step, leaf_regions);
+    split_tree(tree, n.children[i], std::move(cells[i]), leaf_weight, step, x_first, leaf_regions);
 }
 
 // Keeps each leaf's largest piece and merges the others into the neighbouring leaf that shares
@@ -222,7 +231,8 @@ bool subdivide_parts(Work& work) {
     return sum;
   };
   std::vector<std::vector<Polygon>> regions(work.parts.size());
-  split_tree(work.part_tree, 0, {work.outline}, weight, work.restrictions->step, regions);
+  split_tree(work.part_tree, 0, {work.outline}, weight, work.restrictions->step,
+             wider_than_tall({work.outline}), regions);
   std::vector<Polygon> cells;
   std::vector<bool> has_cell;
   const std::vector<Polygon> left = settle_pieces(regions, cells, has_cell);
@@ -249,7 +259,8 @@ void subdivide_floor(Work& work, int floor_index) {
   std::vector<std::vector<Polygon>> regions(work.rooms.size());
   const auto weight = [&](int room) { return work.rooms[room].weight; };
   if (part.has_cell)
-    split_tree(floor.tree, 0, {part.cell}, weight, work.restrictions->step, regions);
+    split_tree(floor.tree, 0, {part.cell}, weight, work.restrictions->step,
+               wider_than_tall({part.cell}), regions);
   std::vector<std::vector<Polygon>> mine;
   for (int r : floor.rooms) mine.push_back(std::move(regions[r]));
   std::vector<Polygon> cells;

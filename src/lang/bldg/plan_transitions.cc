@@ -117,6 +117,85 @@ bool try_borrow(Work& work, std::vector<DoorRequest>& doors, std::size_t index, 
 
 }  // namespace
 
+namespace {
+
+int find_set(std::vector<int>& parent, int x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+}  // namespace
+
+int request_connections(Work& work, std::vector<DoorRequest>& doors) {
+  const int n = static_cast<int>(work.rooms.size());
+  std::vector<int> parent(n);
+  for (int i = 0; i < n; ++i) parent[i] = i;
+  auto unite = [&](int a, int b) { parent[find_set(parent, a)] = find_set(parent, b); };
+  std::vector<std::pair<int, int>> failed;
+  for (const DoorRequest& d : doors) {
+    if (d.accepted) unite(d.a, d.b);
+    if (!d.accepted) failed.push_back({std::min(d.a, d.b), std::max(d.a, d.b)});
+  }
+  auto has_failed = [&](int a, int b) {
+    return std::find(failed.begin(), failed.end(), std::pair{std::min(a, b), std::max(a, b)}) !=
+           failed.end();
+  };
+  int added = 0;
+  std::vector<bool> source(n, false);
+  for (int r = 0; r < n; ++r) {
+    const Division* d = work.rooms[r].division;
+    source[r] = d != nullptr && d->room->entrance && work.rooms[r].level == 0;
+  }
+  for (const Transition& t : work.building->transitions)
+    if (t.kind == TransitionKind::kEntrance)
+      for (int r : rooms_named(work, t.from)) source[r] = work.rooms[r].level == 0;
+  auto kept = [&](int r) {
+    const WorkRoom& room = work.rooms[r];
+    return room.division != nullptr && room.has_cell && !work.parts[room.part].disposable();
+  };
+  for (int level = 0; level < work.levels; ++level) {
+    std::vector<int> rooms;
+    for (int r = 0; r < n; ++r)
+      if (kept(r) && work.rooms[r].level == level) rooms.push_back(r);
+    // The main group: an entrance room's on the ground storey, else the first room's.
+    int main_room = rooms.empty() ? -1 : rooms[0];
+    for (int r : rooms)
+      if (source[r]) {
+        main_room = r;
+        break;
+      }
+    for (std::size_t guard = 0; guard < rooms.size(); ++guard) {
+      // The adjacent pair, one room in the main group, with the longest shared boundary.
+      int best_a = -1;
+      int best_b = -1;
+      double best = 0;
+      const int main_set = find_set(parent, main_room);
+      for (int a : rooms) {
+        if (find_set(parent, a) != main_set) continue;
+        for (int b : rooms) {
+          if (find_set(parent, b) == main_set || has_failed(a, b)) continue;
+          const double len = longest_shared(work, a, b);
+          if (len > best) {
+            best = len;
+            best_a = a;
+            best_b = b;
+          }
+        }
+      }
+      if (best_a < 0) break;
+      DoorRequest request;
+      request.a = best_a;
+      request.b = best_b;
+      request.width = work.door_width;
+      request.added = true;
+      doors.push_back(request);
+      unite(best_a, best_b);
+      ++added;
+    }
+  }
+  return added;
+}
+
 std::vector<int> rooms_named(const Work& work, const std::string& symbol) {
   std::vector<int> out;
   for (std::size_t i = 0; i < work.rooms.size(); ++i) {
@@ -179,8 +258,8 @@ bool door_fits(const Work& work, int a, int b, double width) {
   return longest_shared(work, a, b) >= width + 2 * work.clearance - 1e-9;
 }
 
-void fit_doors(Work& work, std::vector<DoorRequest>& doors) {
-  for (std::size_t i = 0; i < doors.size(); ++i) {
+void fit_doors(Work& work, std::vector<DoorRequest>& doors, std::size_t start) {
+  for (std::size_t i = start; i < doors.size(); ++i) {
     DoorRequest& d = doors[i];
     if (door_fits(work, d.a, d.b, d.width)) {
       d.accepted = true;
@@ -196,7 +275,7 @@ void fit_doors(Work& work, std::vector<DoorRequest>& doors) {
         try_borrow(work, doors, i, d.a, sib_a) || try_borrow(work, doors, i, d.b, sib_b);
     d.accepted = ok;
     d.borrowed = ok;
-    if (!ok) {
+    if (!ok && d.transition != nullptr) {
       const double got = longest_shared(work, d.a, d.b);
       warn(work,
            "door '" + d.transition->symbol + "' between '" + room_name(work, d.a) + "' and '" +

@@ -13,12 +13,13 @@
 namespace insula::lang::bldg::plan {
 
 struct DoorRequest {
-  const Transition* transition = nullptr;
-  int a = 0;  // work room indices, same level
+  const Transition* transition = nullptr;  // null for a door the engine asks for (connections)
+  int a = 0;                               // work room indices, same level
   int b = 0;
   double width = 0;
   bool accepted = false;
   bool borrowed = false;  // accepted after weight borrowing
+  bool added = false;     // asked by request_connections, not by the grammar
 };
 
 // Work room indices of the rooms named `symbol` (a symbol may repeat across storeys).
@@ -28,11 +29,20 @@ std::vector<int> rooms_named(const Work& work, const std::string& symbol);
 // ignored (§3.2), as are doors between rooms on different storeys; both with a warning.
 std::vector<DoorRequest> collect_doors(Work& work);
 
+// Past the paper: door requests that join the rooms of each storey into one connected group
+// (storey 0's with an entrance room), between the adjacent rooms of two groups with the longest
+// shared boundary, so that probing and weight borrowing make room for them too. The final
+// reachability stage (plan_reach.cc) covers what still fails.
+// One round: uses the accepted requests, never a pair that already failed; returns how many
+// requests it added (fit_doors then tests them from where they start).
+int request_connections(Work& work, std::vector<DoorRequest>& doors);
+
 // Longest straight piece of the boundary rooms a and b share (0 when they do not touch).
 double longest_shared(const Work& work, int a, int b);
 bool door_fits(const Work& work, int a, int b, double width);
 
-// Tests every request in order, borrowing weight where needed (cells are redone in `work`).
-void fit_doors(Work& work, std::vector<DoorRequest>& doors);
+// Tests the requests from index `start` on, in order, borrowing weight where needed (cells are
+// redone in `work`); earlier accepted doors must keep fitting.
+void fit_doors(Work& work, std::vector<DoorRequest>& doors, std::size_t start = 0);
 
 }  // namespace insula::lang::bldg::plan

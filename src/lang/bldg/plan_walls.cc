@@ -50,16 +50,33 @@ int wall_of(const PlanStorey& storey, int a, int b, kernel::Vec2 centre) {
   return -1;
 }
 
+// Puts an opening's points exactly on its wall's line (welding may have moved the wall by a few
+// micrometres since the opening was placed).
+void onto_wall(const PlanWall& wall, kernel::Vec2& a, kernel::Vec2& b, kernel::Vec2& centre) {
+  const kernel::Vec2 d = wall.b - wall.a;
+  const double len2 = kernel::dot(d, d);
+  if (len2 <= 0) return;
+  for (kernel::Vec2* p : {&a, &b, &centre}) *p = wall.a + d * (kernel::dot(*p - wall.a, d) / len2);
+}
+
 }  // namespace
 
 void build_walls(Work& work, FloorPlan& plan) {
   for (PlanStorey& storey : plan.storeys) {
     storey.walls.clear();
     storey_walls(*work.restrictions, storey);
-    for (PlanDoor& d : storey.doors) d.wall = wall_of(storey, d.room_a, d.room_b, d.center);
-    for (PlanDoor& d : storey.entrances)
+    for (PlanDoor& d : storey.doors) {
+      d.wall = wall_of(storey, d.room_a, d.room_b, d.center);
+      if (d.wall >= 0) onto_wall(storey.walls[d.wall], d.a, d.b, d.center);
+    }
+    for (PlanDoor& d : storey.entrances) {
       d.wall = wall_of(storey, d.room_a, kExteriorSide, d.center);
-    for (PlanWindow& w : storey.windows) w.wall = wall_of(storey, w.room, kExteriorSide, w.center);
+      if (d.wall >= 0) onto_wall(storey.walls[d.wall], d.a, d.b, d.center);
+    }
+    for (PlanWindow& w : storey.windows) {
+      w.wall = wall_of(storey, w.room, kExteriorSide, w.center);
+      if (w.wall >= 0) onto_wall(storey.walls[w.wall], w.a, w.b, w.center);
+    }
     for (PlanRoom& room : storey.rooms) {
       room.area = kernel::area(room.cell);
       room.walls = wall_count(room.cell);

@@ -195,7 +195,8 @@ TEST(FloorPlan, TwoRoomsExactAreasDoorAndEntrance) {
 }
 
 TEST(FloorPlan, AxisAlternatesPerDepth) {
-  // Root part container along x; the floor's root (next depth) along y; its child along x again.
+  // A floor's root starts across the longer side (x on this square's tie); its child container
+  // cuts along y.
   const Building b =
       building_of(rect(0, 0, 8, 8),
                   part("P", {floor_of("F", group("D", Orientation::kAlternate,
@@ -203,13 +204,19 @@ TEST(FloorPlan, AxisAlternatesPerDepth) {
                                                                    {room("b"), room("c")})}))}));
   const FloorPlan plan = plan_of(b);
   const PlanStorey& s = plan.storeys[0];
-  // Weights 1/3 each: a gets the bottom third (y in [0, 8/3]); b and c split the rest along x.
+  // Weights 1/3 each: a gets the left third (x in [0, 8/3]); b and c split the rest along y.
   const kernel::Bounds2 ba = plan::bounds_of({s.rooms[0].cell});
-  EXPECT_NEAR(ba.max.y, 8.0 / 3, 1e-6);
-  EXPECT_NEAR(ba.max.x, 8, 1e-9);
+  EXPECT_NEAR(ba.max.x, 8.0 / 3, 1e-6);
+  EXPECT_NEAR(ba.max.y, 8, 1e-9);
   const kernel::Bounds2 bb = plan::bounds_of({s.rooms[1].cell});
-  EXPECT_NEAR(bb.max.x, 4, 1e-6);
-  EXPECT_NEAR(bb.min.y, 8.0 / 3, 1e-6);
+  EXPECT_NEAR(bb.max.y, 4, 1e-6);
+  EXPECT_NEAR(bb.min.x, 8.0 / 3, 1e-6);
+  // A tall outline starts along y.
+  const Building tall = building_of(
+      rect(0, 0, 6, 9), part("P", {floor_of("F", group("D", Orientation::kAlternate,
+                                                       {room("a"), room("b"), room("c")}))}));
+  const FloorPlan tall_plan = plan_of(tall);
+  EXPECT_NEAR(plan::bounds_of({tall_plan.storeys[0].rooms[0].cell}).max.y, 3, 1e-6);
 }
 
 TEST(FloorPlan, ConcaveOutlineTiles) {
