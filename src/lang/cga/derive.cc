@@ -2,6 +2,7 @@
 #include "lang/cga/derive.h"
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -25,10 +26,38 @@ using shape::SizeMode;
 using shape::SizeSpec;
 using shape::Value;
 
+namespace {
+
+constexpr std::size_t kFirstBlock = 32;   // records in block 0; block k < 7 holds 32 << k
+constexpr std::size_t kLastBlock = 4096;  // records in every block from block 7 on
+constexpr std::size_t kGrowing = 4064;    // records in blocks 0..6 (32 + 64 + ... + 2048)
+
+// Block index and offset of record i.
+std::pair<std::size_t, std::size_t> locate_record(std::size_t i) {
+  if (i < kGrowing) {
+    const std::size_t k = static_cast<std::size_t>(std::bit_width(i + kFirstBlock)) - 6;
+    return {k, i + kFirstBlock - (kFirstBlock << k)};
+  }
+  return {7 + (i - kGrowing) / kLastBlock, (i - kGrowing) % kLastBlock};
+}
+
+}  // namespace
+
 void TerminalStore::push(const Terminal& t) {
-  if (size_ == blocks_.size() * kBlock) blocks_.push_back(std::make_unique<Terminal[]>(kBlock));
-  blocks_[size_ / kBlock][size_ % kBlock] = t;
+  if (size_ == capacity_) {
+    const std::size_t k = blocks_.size();
+    const std::size_t n = k < 7 ? kFirstBlock << k : kLastBlock;
+    blocks_.push_back(std::unique_ptr<Terminal[]>(new Terminal[n]));
+    capacity_ += n;
+  }
+  const auto [block, offset] = locate_record(size_);
+  blocks_[block][offset] = t;
   ++size_;
+}
+
+const Terminal& TerminalStore::operator[](std::size_t i) const {
+  const auto [block, offset] = locate_record(i);
+  return blocks_[block][offset];
 }
 
 std::shared_ptr<const Mesh> BuiltinAssets::find(std::string_view name, std::string& error) const {
@@ -548,8 +577,13 @@ class Engine final : public EvalContext {
     return c;
   }
 
-  void warn(const CItem& c, const std::string& message) {
+  void warn(const CItem& c, std::string message) {
     const std::string name = c.info != nullptr ? std::string(c.info->name) : "operation";
+    // Registry errors name the shape operation ("roof: ..."); say the CGA name instead.
+    if (c.info != nullptr && !c.info->registry_op.empty()) {
+      const std::string prefix = std::string(c.info->registry_op) + ": ";
+      if (message.compare(0, prefix.size(), prefix) == 0) message.erase(0, prefix.size());
+    }
     ++warnings_[{c.range.begin, name + ": " + message}];
   }
 

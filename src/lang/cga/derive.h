@@ -87,18 +87,19 @@ struct ReportEntry {
   std::uint64_t count = 0;
 };
 
-// A block of terminal records that never moves once filled (no doubling copies).
+// Terminal records in blocks that never move once filled (no doubling copies). Blocks grow from
+// 32 records to 4096 (a lot with a handful of terminals does not pay for a big block).
 class TerminalStore {
  public:
-  static constexpr std::size_t kBlock = 4096;
   void push(const Terminal& t);
   std::size_t size() const { return size_; }
-  const Terminal& operator[](std::size_t i) const { return blocks_[i / kBlock][i % kBlock]; }
-  std::size_t capacity_bytes() const { return blocks_.size() * kBlock * sizeof(Terminal); }
+  const Terminal& operator[](std::size_t i) const;
+  std::size_t capacity_bytes() const { return capacity_ * sizeof(Terminal); }
 
  private:
   std::vector<std::unique_ptr<Terminal[]>> blocks_;
   std::size_t size_ = 0;
+  std::size_t capacity_ = 0;
 };
 
 struct LotResult {

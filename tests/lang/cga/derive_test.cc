@@ -1,0 +1,288 @@
+// The derivation engine (seed 004 §II): rule selection by priority and condition, probabilities,
+// ε, terminals, successor semantics, attributes, limits and diagnostics.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "derive_util.h"
+#include "lang/cga/derive.h"
+#include "shape/collect.h"
+#include "shape/ops.h"
+
+namespace insula::lang::cga {
+namespace {
+
+using testing::compile_text;
+using testing::derive_all;
+using testing::diagnostics_text;
+using testing::rectangle_lot;
+using testing::symbol_count;
+
+TEST(Derive, SplitsALotIntoTerminals) {
+  auto p = compile_text(R"(
+Lot --> split("x"){ 4: A | ~1: B | 4: A }
+B --> split("y"){ 2: C | 3: ε }
+)");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(20, 5)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  // Terminals in emission order; B's pieces after the A's because B waits for its own rule.
+  EXPECT_EQ(dump_derivation(*p, r),
+            "shapes 5\nterminals 3\nrule_applications 2\nsymbol A 2\nsymbol B 1\nsymbol C 1\n"
+            "symbol Lot 1\nlot 0 shapes 5 terminals 3\n"
+            "  A rect at 0 0 0 size 4 5 0\n"
+            "  A rect at 16 0 0 size 4 5 0\n"
+            "  C rect at 4 0 0 size 12 2 0\n");
+}
+
+TEST(Derive, PaperRelativeSizesShareTheRemainder) {
+  // §II: Subdiv("X",2,1r,1r,2){ B | A | A | B } on a 10 m floor: 2 | 3 | 3 | 2.
+  auto p = compile_text(R"(1: floor ~> Subdiv("X", 2, 1r, 1r, 2){ B | A | A | B })");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 4)});
+  ASSERT_TRUE(r[0].ok);
+  ASSERT_EQ(r[0].terminals_store.size(), 4U);
+  const double widths[] = {2, 3, 3, 2};
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_DOUBLE_EQ(r[0].terminals_store[i].scope.size.x, widths[i]);
+  }
+  // CityEngine's ' is a fraction of the scope: '0.25 of 10 m.
+  auto q = compile_text(R"(L --> split("x"){ '0.25: A | ~1: B })");
+  const auto s = derive_all(*q, {rectangle_lot(10, 4)});
+  EXPECT_DOUBLE_EQ(s[0].terminals_store[0].scope.size.x, 2.5);
+  EXPECT_DOUBLE_EQ(s[0].terminals_store[1].scope.size.x, 7.5);
+}
+
+TEST(Derive, NestedRepeatPatternsFillTheRest) {
+  // 1 + n * (~2.5 + 0.4) + 1 over 20 m: n = floor(18 / 2.9) = 6 tiles of (18 - 2.4) / 6 = 2.6.
+  auto p = compile_text(R"(F --> split("x"){ 1: W | { ~2.5: T | 0.4: P }* | 1: W })");
+  const auto r = derive_all(*p, {rectangle_lot(20, 3)});
+  ASSERT_TRUE(r[0].ok);
+  EXPECT_EQ(symbol_count(*p, r[0], "T"), 6U);
+  EXPECT_EQ(symbol_count(*p, r[0], "P"), 6U);
+  EXPECT_EQ(symbol_count(*p, r[0], "W"), 2U);
+  for (std::size_t i = 0; i < r[0].terminals_store.size(); ++i) {
+    const Terminal& t = r[0].terminals_store[i];
+    if (p->symbol_name(t.symbol) == "T") {
+      EXPECT_NEAR(t.scope.size.x, 2.6, 1e-12);
+    }
+  }
+}
+
+TEST(Derive, PrioritiesConditionsAndTerminals) {
+  // Level 1 rules of B have false conditions, so B falls to level 2; C has no rule: terminal.
+  auto p = compile_text(R"(
+PRIORITY 1:
+1: Lot ~> split("x"){ 5: B | 5: C }
+2: B : Scope.sx > 6 ~> X
+PRIORITY 2:
+3: B ~> Y
+)");
+  const auto r = derive_all(*p, {rectangle_lot(10, 10)});
+  ASSERT_TRUE(r[0].ok);
+  EXPECT_EQ(symbol_count(*p, r[0], "X"), 0U);
+  EXPECT_EQ(symbol_count(*p, r[0], "Y"), 1U);
+  EXPECT_EQ(r[0].terminals, 2U);  // C and Y
+  EXPECT_EQ(r[0].rule_applications, 2U);
+  EXPECT_EQ(p->symbol_name(p->start), "Lot");
+}
+
+TEST(Derive, EpsilonRemovesAndIsNoTerminal) {
+  auto p = compile_text(R"(
+Lot --> extrude(6) Mass
+Mass --> comp("f"){ top: Roof | bottom: ε | side: Wall }
+)");
+  const auto r = derive_all(*p, {rectangle_lot(10, 8)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(symbol_count(*p, r[0], "Wall"), 4U);
+  EXPECT_EQ(symbol_count(*p, r[0], "Roof"), 1U);
+  EXPECT_EQ(r[0].terminals, 5U);
+  EXPECT_EQ(r[0].shapes, 7U);  // Lot, Mass, 4 walls, roof
+}
+
+TEST(Derive, ProbabilitiesFollowTheShapeSeed) {
+  auto p = compile_text(R"(
+Lot --> A : 0.5 ~> B : 0.5
+)");
+  std::vector<Lot> lots;
+  for (int i = 0; i < 2000; ++i) lots.push_back(rectangle_lot(1, 1, std::to_string(i)));
+  const auto r = derive_all(*p, lots);
+  std::uint64_t a = 0;
+  for (const LotResult& x : r) a += symbol_count(*p, x, "A");
+  EXPECT_GT(a, 900U);
+  EXPECT_LT(a, 1100U);
+  // Same seed: same choices; another seed: other choices.
+  const auto again = derive_all(*p, lots);
+  EXPECT_EQ(dump_derivation(*p, r), dump_derivation(*p, again));
+  DeriveOptions other;
+  other.seed = 7;
+  EXPECT_NE(dump_derivation(*p, r), dump_derivation(*p, derive_all(*p, lots, other)));
+}
+
+TEST(Derive, LotsAreIndependentOfDerivationOrder) {
+  auto p = compile_text(R"(
+Lot --> split("x"){ { ~rand(1, 3): T }* }
+T --> color(rand(0, 1), 0.5, 0.5) W : 0.3 ~> V : 0.7
+)");
+  std::vector<Lot> lots;
+  for (int i = 0; i < 8; ++i) lots.push_back(rectangle_lot(10 + i, 5, std::to_string(i)));
+  const DeriveOptions options;
+  std::vector<LotResult> forward = derive_all(*p, lots, options);
+  std::vector<LotResult> backward(lots.size());
+  for (std::size_t i = lots.size(); i-- > 0;) backward[i] = derive_lot(*p, lots[i], i, options);
+  EXPECT_EQ(dump_derivation(*p, forward), dump_derivation(*p, backward));
+}
+
+TEST(Derive, AttributesDefaultsLotPropertiesAndSets) {
+  auto p = compile_text(R"(
+attr height = 5
+attr style = "plain"
+Lot --> extrude(height) Mass
+fancy: Mass : style == "fancy" ~> set(height, 1) Fancy
+Mass --> Plain
+)");
+  Lot lot = rectangle_lot(4, 4);
+  auto r = derive_all(*p, {lot});
+  ASSERT_TRUE(r[0].ok);
+  EXPECT_DOUBLE_EQ(r[0].terminals_store[0].scope.size.y, 5);
+  EXPECT_EQ(symbol_count(*p, r[0], "Plain"), 1U);
+  lot.properties["height"] = 7.0;
+  lot.properties["style"] = std::string("fancy");
+  r = derive_all(*p, {lot});
+  EXPECT_DOUBLE_EQ(r[0].terminals_store[0].scope.size.y, 7);
+  EXPECT_EQ(symbol_count(*p, r[0], "Fancy"), 1U);
+  EXPECT_EQ(std::get<double>(r[0].attributes.at("height")), 7.0);
+  DeriveOptions options;
+  options.sets = {{"height", 9.0}};  // --set wins over the lot property
+  r = derive_all(*p, {lot}, options);
+  EXPECT_DOUBLE_EQ(r[0].terminals_store[0].scope.size.y, 9);
+}
+
+TEST(Derive, PushPopAndInsertionBuildThePaperMassModel) {
+  // §II Figure 2: three primitives placed with scope rules and a push/pop pair.
+  auto p = compile_text(R"(
+1: A ~> [ T(0, 0, 6) S(8, 10, 18) I("cube") ] T(6, 0, 0) S(7, 13, 18) I("cube")
+        T(0, 0, 16) S(8, 15, 8) I("cube")
+)");
+  const auto r = derive_all(*p, {rectangle_lot(20, 30)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  ASSERT_EQ(r[0].terminals, 3U);
+  const auto& t = r[0].terminals_store;
+  EXPECT_EQ(t[0].scope.size, (kernel::Vec3{8, 10, 18}));
+  EXPECT_EQ(t[1].scope.size, (kernel::Vec3{7, 13, 18}));
+  EXPECT_EQ(t[2].scope.size, (kernel::Vec3{8, 15, 8}));
+  // The second cube starts 6 m along x; the third 16 m further along z (world -Y... of the lot
+  // frame: scope z of a footprint is world up).
+  EXPECT_NEAR(t[1].scope.origin.x, 6, 1e-12);
+  EXPECT_NEAR(t[2].scope.origin.z, 16, 1e-12);
+  const shape::Scene scene = to_scene(*p, {rectangle_lot(20, 30)}, r);
+  ASSERT_EQ(scene.buildings.size(), 1U);
+  EXPECT_EQ(scene.buildings[0].parts.size(), 3U);
+  EXPECT_EQ(scene.buildings[0].parts[0].mesh.face_count(), 6U);
+}
+
+TEST(Derive, PrintReportAndColor) {
+  auto p = compile_text(R"(
+Lot --> print("lot", Scope.sx) split("x"){ 2: A | 3: B }
+A --> report("area", Shape.area) color("#FF0000") X
+B --> report("area", Shape.area) color(0, 0, 1) Y
+)");
+  const auto r = derive_all(*p, {rectangle_lot(5, 4)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  ASSERT_EQ(r[0].prints.size(), 1U);
+  EXPECT_EQ(r[0].prints[0], "test.cga:2: print: lot 5");
+  EXPECT_DOUBLE_EQ(r[0].reports.at("area").sum, 20);
+  EXPECT_EQ(r[0].reports.at("area").count, 2U);
+  const shape::Scene scene = to_scene(*p, {rectangle_lot(5, 4)}, r);
+  ASSERT_EQ(scene.buildings[0].parts.size(), 2U);
+  const auto& x = scene.buildings[0].parts[0];
+  EXPECT_EQ(std::get<std::string>(x.attributes.at("color")), "#ff0000");
+  EXPECT_EQ(scene.material_for(x.mesh.tag(0)).rgba[0], 1.0F);
+  const auto& y = scene.buildings[0].parts[1];
+  EXPECT_EQ(std::get<std::string>(y.attributes.at("color")), "#0000ff");
+}
+
+TEST(Derive, DepthLimitNamesTheRule) {
+  auto p = compile_text("Lot --> A\nA --> T(0, 0, 0) A\n");
+  DeriveOptions options;
+  options.limits.max_depth = 50;
+  const auto r = derive_all(*p, {rectangle_lot(1, 1)}, options);
+  EXPECT_FALSE(r[0].ok);
+  EXPECT_EQ(diagnostics_text(r[0]),
+            "test.cga:2:1: error[CGA601]: derivation depth limit of 50 reached in rule 'A -->' "
+            "(line 2)\nnote: in lot 'lot'\n");
+}
+
+TEST(Derive, ShapeLimitNamesTheRule) {
+  auto p = compile_text("Lot --> A\nr7: A ~> B B\nr8: B ~> A A\n");
+  DeriveOptions options;
+  options.limits.max_shapes = 1000;
+  const auto r = derive_all(*p, {rectangle_lot(1, 1)}, options);
+  EXPECT_FALSE(r[0].ok);
+  const std::string text = diagnostics_text(r[0]);
+  EXPECT_NE(text.find("error[CGA602]: shape limit of 1000 reached in rule 'r"), std::string::npos)
+      << text;
+}
+
+TEST(Derive, EvaluationErrorsArePositioned) {
+  auto p = compile_text("attr w = 20\nLot --> extrude(1 / (Scope.sx - w)) X\n");
+  const auto r = derive_all(*p, {rectangle_lot(20, 5)});
+  EXPECT_FALSE(r[0].ok);
+  EXPECT_EQ(diagnostics_text(r[0]),
+            "test.cga:2:17: error[CGA603]: division by zero\nnote: in rule 'Lot -->' (line 2)\n"
+            "note: in lot 'lot'\n");
+}
+
+TEST(Derive, FailedOperationsWarnAndKeepTheShape) {
+  // extrude needs a flat shape: the second extrude fails, the mass stays as it is.
+  auto p = compile_text("Lot --> extrude(3) extrude(2) X\n");
+  const auto r = derive_all(*p, {rectangle_lot(4, 4)});
+  ASSERT_TRUE(r[0].ok);
+  EXPECT_EQ(r[0].terminals, 1U);
+  EXPECT_DOUBLE_EQ(r[0].terminals_store[0].scope.size.y, 3);
+  EXPECT_EQ(diagnostics_text(r[0]),
+            "test.cga:1:20: warning[CGA604]: extrude: needs a flat shape (a footprint or a "
+            "face)\n");
+}
+
+TEST(Derive, OcclusionSeesTheOtherShapesOfTheLot) {
+  auto p = compile_text(R"(
+Lot --> extrude(10) [ S(1r, 1r, 1r) Block ] T(0, 0, 0) S('0.5, '0.5, '0.5) Probe
+hidden: Probe : Shape.occ("all") == "full" ~> Hidden
+Probe --> Visible
+)");
+  const auto r = derive_all(*p, {rectangle_lot(10, 10)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(symbol_count(*p, r[0], "Hidden"), 1U);
+  EXPECT_EQ(symbol_count(*p, r[0], "Visible"), 0U);
+}
+
+TEST(Derive, DefaultLotUsesLotWidthAndDepth) {
+  auto p = compile_text("attr lotWidth = 12\nattr lotDepth = 30\nLot --> X\n");
+  const Lot lot = default_lot(*p, {});
+  ASSERT_EQ(lot.polygons.size(), 1U);
+  EXPECT_DOUBLE_EQ(kernel::area(lot.polygons[0]), 360);
+  auto q = compile_text("Lot --> X\n");
+  EXPECT_DOUBLE_EQ(kernel::area(default_lot(*q, {}).polygons[0]), 400);
+}
+
+TEST(Derive, StartSymbolOption) {
+  CompileOptions options;
+  options.start = "B";
+  auto p = compile_text("A --> X\nB --> Y\n", options);
+  const auto r = derive_all(*p, {rectangle_lot(1, 1)});
+  EXPECT_EQ(symbol_count(*p, r[0], "Y"), 1U);
+  EXPECT_EQ(symbol_count(*p, r[0], "X"), 0U);
+}
+
+TEST(Derive, ReportOnlyRunKeepsNoTerminals) {
+  auto p = compile_text("Lot --> split(\"x\"){ { ~1: T }* }\n");
+  DeriveOptions options;
+  options.keep_terminals = false;
+  const auto r = derive_all(*p, {rectangle_lot(10, 1)}, options);
+  EXPECT_EQ(r[0].terminals, 10U);
+  EXPECT_EQ(r[0].terminals_store.size(), 0U);
+}
+
+}  // namespace
+}  // namespace insula::lang::cga
