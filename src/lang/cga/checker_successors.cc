@@ -83,10 +83,11 @@ void Checker::check_rule(const Rule& rule) {
 }
 
 // §IV.B constraint 1 (each probability in (0, 1]) and constraint 5 (the parts of a rule with
-// more than one sum to 1). Only constant probabilities can be checked statically; one that
-// uses an attribute or a function is checked by the derivation when it is evaluated. When no
-// part of a rule gives a probability, the parts are equally likely; giving some and not others
-// is an error (CGA306).
+// more than one sum to 1). Only constant probabilities can be checked statically; one that uses
+// an attribute or a function is evaluated by the derivation. Parts without a probability share
+// what the others leave equally (derive.cc's choice; all parts without one are equally likely),
+// so with some parts given, their constant sum must leave a positive share (CGA306); with every
+// part given, the sum must be 1 (CGA305).
 void Checker::check_probabilities(const Rule& rule) {
   const std::size_t parts = rule.alternatives.size();
   std::size_t given = 0;
@@ -109,18 +110,20 @@ void Checker::check_probabilities(const Rule& rule) {
             alt.probability->range);
     }
   }
-  if (parts < 2 || given == 0) return;
+  if (parts < 2 || given == 0 || constant != given) return;
   if (given < parts) {
+    if (1.0 - sum > kProbabilityTolerance) return;
     for (const Alternative& alt : rule.alternatives) {
       if (alt.probability) continue;
       error("CGA306",
-            "this part of the rule has no probability but " + plural(given, "other part") +
-                (given == 1 ? " has" : " have") + " one",
+            "this part of the rule has no probability and the others' sum to " + number_text(sum) +
+                ", leaving it none (seed 004 §IV.B, constraint 1)",
             alt.range);
+      break;
     }
     return;
   }
-  if (constant == parts && std::abs(sum - 1.0) > kProbabilityTolerance) {
+  if (std::abs(sum - 1.0) > kProbabilityTolerance) {
     error("CGA305",
           "the probabilities of the " + std::to_string(parts) + " parts of the rule sum to " +
               number_text(sum) + ", not 1 (seed 004 §IV.B, constraint 5)",
@@ -236,7 +239,7 @@ void Checker::check_arguments(const Item& item, const OperationInfo& info) {
     const std::string which = "argument " + std::to_string(i + 1) + " of " + quoted(item.name);
     switch (letter) {
       case 'a':
-        check_axis(arg, info.kind == OpKind::kSplit || info.kind == OpKind::kRepeat);
+        check_axis(arg, info.kind == OpKind::kRepeat);
         break;
       case 'c':
         if (arg.kind == ExprKind::kString || arg.kind == ExprKind::kIdent) {
@@ -281,9 +284,11 @@ void Checker::check_arguments(const Item& item, const OperationInfo& info) {
   }
 }
 
-// §VI: "<axis> can be X, Y or Z as well as combinations of these (XY, YZ, XZ or XYZ)" for the
-// paper's BS and RR; CityEngine's split takes one axis. A bare word (`split(y)`) is the axis
-// unless it names an attribute.
+// §VI: "<axis> can be X, Y or Z as well as combinations of these (XY, YZ, XZ or XYZ)" for RR
+// (a grid of cells of about the size along each named axis). A basic split has one list of
+// sizes, which has no meaning along two axes at once, so BS/Subdiv and CityEngine's split take
+// one axis (the paper's `BS("XY", 3, 5, 7)` example is CGA308). A bare word (`split(y)`) is the
+// axis unless it names an attribute.
 void Checker::check_axis(const Expr& expr, bool combinations) {
   std::string text;
   if (expr.kind == ExprKind::kString) {

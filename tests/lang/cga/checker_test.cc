@@ -185,7 +185,8 @@ TEST(CgaChecker, ComponentSplitForms) {
 
 TEST(CgaChecker, AxesOfThePaperAndOfCityEngine) {
   EXPECT_TRUE(run("1: a ~> RR(\"XY\", 3){ cell }\n")->result.ok);  // §VI
-  EXPECT_TRUE(run("1: a ~> BS(\"xyz\", 1){ c }\n")->result.ok);
+  EXPECT_TRUE(run("1: a ~> RR(\"xyz\", 1){ c }\n")->result.ok);
+  EXPECT_FALSE(run("1: a ~> BS(\"XY\", 3, 5, 7){ b | f | d }\n")->result.ok);  // §VI's example
   EXPECT_TRUE(run("A --> split(y){ 1: B | ~1: C }\n")->result.ok);  // bare word
   EXPECT_FALSE(run("A --> split(w){ 1: B }\n")->result.ok);
   EXPECT_FALSE(run("1: a ~> RR(\"YX\", 3){ cell }\n")->result.ok);
