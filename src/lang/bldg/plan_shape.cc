@@ -41,8 +41,9 @@ double free_from(const PlanStorey& storey, int room, Vec2 v, Vec2 w) {
   return best;
 }
 
-std::optional<Polygon> single(const kernel::BooleanResult& r) {
-  if (!r.ok() || r.polygons.size() != 1) return std::nullopt;
+// The one polygon of a boolean result, without holes (a room cell never gains a hole here).
+std::optional<Polygon> single(const kernel::BooleanResult& r, std::size_t holes = 0) {
+  if (!r.ok() || r.polygons.size() != 1 || r.polygons[0].holes.size() != holes) return std::nullopt;
   Polygon p = r.polygons[0];
   simplify(p);
   return p;
@@ -65,7 +66,8 @@ std::vector<int> give_away(PlanStorey& storey, int room, const Polygon& t, const
     storey.dead_zones.push_back({t, why});
     return {room};
   }
-  std::optional<Polygon> grown = single(kernel::unite({storey.rooms[best].cell}, {t}));
+  std::optional<Polygon> grown =
+      single(kernel::unite({storey.rooms[best].cell}, {t}), storey.rooms[best].cell.holes.size());
   if (!grown) return {};
   storey.rooms[best].cell = *grown;
   return {room, best};
@@ -80,7 +82,8 @@ std::optional<std::vector<int>> take_from(PlanStorey& storey, int room, const Po
   std::vector<int> changed = {room};
   for (std::size_t j = 0; j < storey.rooms.size(); ++j) {
     if (static_cast<int>(j) == room || !overlaps(storey.rooms[j].cell, t)) continue;
-    std::optional<Polygon> shrunk = single(kernel::subtract({storey.rooms[j].cell}, {t}));
+    std::optional<Polygon> shrunk =
+        single(kernel::subtract({storey.rooms[j].cell}, {t}), storey.rooms[j].cell.holes.size());
     if (!shrunk || kernel::area(*shrunk) < kMinRoomArea) return std::nullopt;
     storey.rooms[j].cell = *shrunk;
     changed.push_back(static_cast<int>(j));
@@ -144,7 +147,8 @@ bool add_wall(PlanStorey& storey, int room, double clearance) {
     Polygon t{{m1, v, m2}, {}};
     kernel::normalize(t);
     PlanStorey trial = storey;
-    std::optional<Polygon> cut = single(kernel::subtract({trial.rooms[room].cell}, {t}));
+    std::optional<Polygon> cut = single(kernel::subtract({trial.rooms[room].cell}, {t}),
+                                        trial.rooms[room].cell.holes.size());
     if (!cut || kernel::area(*cut) < kMinRoomArea) continue;
     trial.rooms[room].cell = *cut;
     const std::vector<int> changed =
@@ -173,7 +177,8 @@ bool remove_wall(PlanStorey& storey, int room, double clearance) {
     const bool convex = kernel::cross(v - p, q - v) > 0;
     std::vector<int> changed;
     if (convex) {
-      std::optional<Polygon> cut = single(kernel::subtract({trial.rooms[room].cell}, {t}));
+      std::optional<Polygon> cut = single(kernel::subtract({trial.rooms[room].cell}, {t}),
+                                          trial.rooms[room].cell.holes.size());
       if (!cut || kernel::area(*cut) < kMinRoomArea) continue;
       trial.rooms[room].cell = *cut;
       changed = give_away(trial, room, t,
@@ -181,7 +186,8 @@ bool remove_wall(PlanStorey& storey, int room, double clearance) {
     } else {
       std::optional<std::vector<int>> taken = take_from(trial, room, t);
       if (!taken) continue;
-      std::optional<Polygon> grown = single(kernel::unite({trial.rooms[room].cell}, {t}));
+      std::optional<Polygon> grown =
+          single(kernel::unite({trial.rooms[room].cell}, {t}), trial.rooms[room].cell.holes.size());
       if (!grown) continue;
       trial.rooms[room].cell = *grown;
       changed = *taken;

@@ -19,22 +19,23 @@ namespace {
 using kernel::Polygon;
 using kernel::Vec2;
 
-constexpr double kLanding = 0.6;   // free floor before the first and after the last step (m)
-constexpr double kApproach = 0.9;  // free floor in front of a door, both sides (m)
-
 struct Flight {
   double riser_max;
   double tread;
+  double landing;   // free floor before the first and after the last step (m)
+  double approach;  // free floor kept in front of every door, both sides (m)
 };
-// Comfortable, steep, then ladder-like (the Roman upper floors' wooden stairs).
-constexpr Flight kFlights[] = {{0.19, 0.27}, {0.22, 0.2}, {0.25, 0.14}};
+// Comfortable, steep, then ladder-like (the Roman upper floors' wooden stairs) with less room
+// around it.
+constexpr Flight kFlights[] = {
+    {0.19, 0.27, 0.6, 0.9}, {0.22, 0.2, 0.6, 0.9}, {0.25, 0.14, 0.4, 0.6}};
 
-std::vector<Polygon> door_zones(const PlanStorey& storey) {
+std::vector<Polygon> door_zones(const PlanStorey& storey, double approach) {
   std::vector<Polygon> out;
   auto add = [&](const PlanDoor& d) {
     const Vec2 u = kernel::normalized(d.b - d.a);
     const Vec2 n = kernel::perp(u);
-    out.push_back(oriented_rectangle(d.a - n * kApproach, u, n, d.width, 2 * kApproach));
+    out.push_back(oriented_rectangle(d.a - n * approach, u, n, d.width, 2 * approach));
   };
   for (const PlanDoor& d : storey.doors) add(d);
   for (const PlanDoor& d : storey.entrances) add(d);
@@ -48,7 +49,7 @@ bool clear(const std::vector<Polygon>& obstacles, const Polygon& p) {
 
 std::optional<PlanStair> fit_flight(const std::vector<Polygon>& region, const Polygon& lower,
                                     const Polygon& upper, const std::vector<Polygon>& obstacles,
-                                    double width, double run, int risers) {
+                                    double width, double run, int risers, double landing) {
   for (const Polygon& piece : region) {
     const kernel::Ring& ring = piece.outer;
     const std::size_t n = ring.size();
@@ -76,9 +77,9 @@ std::optional<PlanStair> fit_flight(const std::vector<Polygon>& region, const Po
           const Vec2 head = dir == 0 ? foot + u * run : foot - u * run;
           const Vec2 up = kernel::normalized(head - foot);
           const Polygon foot_landing = oriented_rectangle(
-              foot - up * kLanding - inward * (width / 2), up, inward, kLanding, width);
+              foot - up * landing - inward * (width / 2), up, inward, landing, width);
           const Polygon head_landing =
-              oriented_rectangle(head - inward * (width / 2), up, inward, kLanding, width);
+              oriented_rectangle(head - inward * (width / 2), up, inward, landing, width);
           if (!covers({lower}, foot_landing) || !covers({upper}, head_landing)) continue;
           if (!clear(obstacles, foot_landing) || !clear(obstacles, head_landing)) continue;
           PlanStair stair;
@@ -114,17 +115,19 @@ bool add_stair(Work& work, FloorPlan& plan, int level, int lower, int upper,
   if (!region.ok() || region.polygons.empty() || lower_clear.polygons.empty() ||
       upper_clear.polygons.empty())
     return false;
-  std::vector<Polygon> obstacles = door_zones(below);
-  for (Polygon& z : door_zones(above)) obstacles.push_back(std::move(z));
-  for (const Polygon& s : stair_keep_out(plan, level)) obstacles.push_back(s);
-  for (const Polygon& s : stair_keep_out(plan, level + 1)) obstacles.push_back(s);
+  std::vector<Polygon> stairs = stair_keep_out(plan, level);
+  for (const Polygon& s : stair_keep_out(plan, level + 1)) stairs.push_back(s);
   const double width = r.stair_width > 0 ? r.stair_width : 1.0;
   for (const Flight& f : kFlights) {
+    std::vector<Polygon> obstacles = door_zones(below, f.approach);
+    for (Polygon& z : door_zones(above, f.approach)) obstacles.push_back(std::move(z));
+    obstacles.insert(obstacles.end(), stairs.begin(), stairs.end());
     const int risers = std::max(2, static_cast<int>(std::ceil(below.height / f.riser_max - 1e-9)));
     const double run = (risers - 1) * f.tread;
-    std::optional<PlanStair> stair = fit_flight(
-        region.polygons, lower_clear.polygons[largest(lower_clear.polygons)],
-        upper_clear.polygons[largest(upper_clear.polygons)], obstacles, width, run, risers);
+    std::optional<PlanStair> stair =
+        fit_flight(region.polygons, lower_clear.polygons[largest(lower_clear.polygons)],
+                   upper_clear.polygons[largest(upper_clear.polygons)], obstacles, width, run,
+                   risers, f.landing);
     if (!stair) continue;
     stair->symbol = symbol;
     stair->where = where;
