@@ -99,6 +99,7 @@ bool finish_report(const std::filesystem::path& path, std::uint64_t seed, const 
     return false;
   }
   report.erase("seconds");
+  report["input"] = path.stem().string() + ".bldg";  // not the folder: same seed, same bytes
   report["random"] = {{"seed", seed},
                       {"shape", lang::bldg::random_shape_name(batch.spec.shape)},
                       {"parts", batch.spec.parts},
