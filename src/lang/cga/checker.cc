@@ -262,9 +262,16 @@ void Checker::compute_reachability() {
 }
 
 void Checker::report_unused() {
+  // Read by the derivation itself: the default lot without --lot is lotWidth x lotDepth
+  // (derive.cc, default_lot), so declaring them is a use.
+  static constexpr std::string_view kReadByDerivation[] = {"lotWidth", "lotDepth"};
   for (const AttrDecl& attr : grammar_.attrs) {
     if (attributes_.at(attr.name) != &attr) continue;
     if (used_attributes_.count(attr.name)) continue;
+    if (std::find(std::begin(kReadByDerivation), std::end(kReadByDerivation), attr.name) !=
+        std::end(kReadByDerivation)) {
+      continue;
+    }
     warning("CGA403", "attribute '" + attr.name + "' is never used", attr.name_range);
   }
 }

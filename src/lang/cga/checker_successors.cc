@@ -440,7 +440,7 @@ void Checker::check_selector_keys(const Item& item, std::span<const std::string_
     }
     const Expr& key = *branch.key;
     std::string name;
-    if (key.kind == ExprKind::kIdent) {
+    if (key.kind == ExprKind::kIdent || key.kind == ExprKind::kString) {
       name = key.text;
       const bool known = std::find(selectors.begin(), selectors.end(), name) != selectors.end();
       if (!known || indices_only) {

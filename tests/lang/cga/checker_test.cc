@@ -105,6 +105,15 @@ TEST(CgaChecker, KnownAttributesAreDefined) {
   EXPECT_TRUE(c->result.diagnostics.empty());
 }
 
+TEST(CgaChecker, LotSizeAttributesCountAsUsed) {
+  // The derivation reads lotWidth and lotDepth for its default lot; 'spare' is unused.
+  const auto c =
+      run("attr lotWidth = 30\nattr lotDepth = 18\nattr spare = 1\nLot --> extrude(3) Mass\n");
+  EXPECT_EQ(rendered(c->result),
+            (std::vector<std::string>{"t.cga:3:6: warning[CGA403]: attribute 'spare' is never "
+                                      "used"}));
+}
+
 TEST(CgaChecker, ProbabilitiesOfAttributesAreLeftToTheDerivation) {
   // Not constant: neither the range nor the sum can be known before the run.
   const auto c =
@@ -179,6 +188,7 @@ TEST(CgaChecker, ComponentSplitForms) {
   EXPECT_TRUE(run("1: a ~> CS(\"edges\"){ A }\n")->result.ok);
   EXPECT_TRUE(run("1: a ~> comp(f){ front: A | 3: B | all: C }\n")->result.ok);
   EXPECT_TRUE(run("1: a ~> comp(\"v\"){ 0: A | 7: B }\n")->result.ok);
+  EXPECT_TRUE(run("1: a ~> comp(\"f\"){ \"top\": A | \"side\": B }\n")->result.ok);
   EXPECT_FALSE(run("1: a ~> CS(\"faces\", 0){ front: A }\n")->result.ok);
   EXPECT_FALSE(run("1: a ~> comp(\"f\"){ front: A | B }\n")->result.ok);
 }
@@ -187,7 +197,7 @@ TEST(CgaChecker, AxesOfThePaperAndOfCityEngine) {
   EXPECT_TRUE(run("1: a ~> RR(\"XY\", 3){ cell }\n")->result.ok);  // §VI
   EXPECT_TRUE(run("1: a ~> RR(\"xyz\", 1){ c }\n")->result.ok);
   EXPECT_FALSE(run("1: a ~> BS(\"XY\", 3, 5, 7){ b | f | d }\n")->result.ok);  // §VI's example
-  EXPECT_TRUE(run("A --> split(y){ 1: B | ~1: C }\n")->result.ok);  // bare word
+  EXPECT_TRUE(run("A --> split(y){ 1: B | ~1: C }\n")->result.ok);             // bare word
   EXPECT_FALSE(run("A --> split(w){ 1: B }\n")->result.ok);
   EXPECT_FALSE(run("1: a ~> RR(\"YX\", 3){ cell }\n")->result.ok);
   // An attribute named like an axis is its value, checked when derived.
