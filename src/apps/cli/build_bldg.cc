@@ -3,12 +3,17 @@
 // outputs §3.5). docs/bldg-building.md.
 //
 // The outline of a `geojson(file, feature)` building is read here (front-ends do no file I/O): from
-// --lot when given, else from the file named in the grammar, relative to the .bldg file. Any error
-// (grammar, rules, outline, floor plan) is printed as `file:line:col: error...`, exits 1 and writes
-// nothing.
+// --lot when given, else from the file named in the grammar, relative to the .bldg file. With
+// --lot and a grammar that names no feature, every feature of the lot file becomes a building (a
+// village, Fig. 12; see build_lots). Any error (grammar, rules, outline, floor plan) is printed as
+// `file:line:col: error...`, exits 1 and writes nothing.
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
 #include <string>
+#include <variant>
 
 #include <nlohmann/json.hpp>
 
@@ -188,60 +193,173 @@ nlohmann::json plan_report(const FloorPlan& plan, const lang::bldg::BuildResult&
   return report;
 }
 
+// One grammar through the pipeline: parsed (already), floor plan, 3D model.
+struct Built {
+  FloorPlan plan;
+  lang::bldg::BuildResult result;
+  double plan_seconds = 0;
+  double build_seconds = 0;
+};
+
+std::optional<Built> plan_and_build(const BuildOptions& options, const base::Source& source,
+                                    const Building& building,
+                                    const lang::bldg::Restrictions& rules) {
+  Stopwatch stage;
+  lang::bldg::FloorPlanOptions plan_options;
+  plan_options.file = source.name();
+  base::Result<FloorPlan> plan = lang::bldg::make_floor_plan(building, rules, plan_options);
+  print_diagnostics(plan.diagnostics(), source, options.quiet);
+  if (!plan.ok()) return std::nullopt;
+  Built built;
+  built.plan_seconds = stage.seconds();
+  stage = Stopwatch();
+  built.result = lang::bldg::build_building(building, plan.value(), rules);
+  built.build_seconds = stage.seconds();
+  if (!options.quiet) {
+    for (const auto& w : plan->warnings) {
+      std::fprintf(stderr, "%s:%u:%u: warning: %s\n", source.name().c_str(), w.where.line,
+                   w.where.column, w.message.c_str());
+    }
+    for (const auto& w : built.result.warnings) {
+      std::fprintf(stderr, "%s: warning: %s\n", source.name().c_str(), w.c_str());
+    }
+  }
+  built.plan = std::move(plan.value());
+  return built;
+}
+
+struct Parsed {
+  std::unique_ptr<base::Source> source;
+  Building building;
+};
+
+std::optional<Parsed> parse_file(const BuildOptions& options, const std::string& path) {
+  const auto text = read_input_file(path);
+  if (!text) {
+    print_error(path + ": cannot read file");
+    return std::nullopt;
+  }
+  Parsed parsed;
+  parsed.source = std::make_unique<base::Source>(path, *text);
+  base::Result<Building> building = lang::bldg::parse_building(*parsed.source);
+  print_diagnostics(building.diagnostics(), *parsed.source, options.quiet);
+  if (!building.ok()) return std::nullopt;
+  parsed.building = std::move(building.value());
+  return parsed;
+}
+
+void add_seconds(nlohmann::json& report, const Built& built) {
+  const auto add = [&](const char* key, double seconds) {
+    report["seconds"][key] = report["seconds"].value(key, 0.0) + seconds;
+  };
+  add("floor_plan", built.plan_seconds);
+  add("build", built.build_seconds);
+  add("walls", built.result.stats.seconds_walls);
+  add("slabs", built.result.stats.seconds_slabs);
+  add("stairs", built.result.stats.seconds_stairs);
+  add("roofs", built.result.stats.seconds_roofs);
+}
+
+// A village (seed 000, Fig. 12): every feature of --lot is one building, built from the grammar
+// its "bldg" property names (relative to the GeoJSON file), else from INPUT, on the feature's
+// polygon as outline. Buildings are named after the features.
+int build_lots(const BuildOptions& options, const Parsed& input, const Stopwatch& total,
+               const lang::bldg::Restrictions& rules, nlohmann::json& report) {
+  const auto text = read_input_file(options.lot);
+  if (!text) {
+    print_error(options.lot + ": cannot read file");
+    return kExitInput;
+  }
+  const base::Source lot_source(options.lot, *text);
+  base::Result<io::FootprintSet> lots = io::read_geojson(*text, options.lot);
+  print_diagnostics(lots.diagnostics(), lot_source, options.quiet);
+  if (!lots.ok()) return kExitInput;
+  std::map<std::string, Parsed> grammars;
+  std::vector<lang::bldg::BuildResult> results;
+  report["buildings"] = nlohmann::json::array();
+  for (const io::Footprint& lot : lots->footprints) {
+    const Parsed* grammar = &input;
+    const auto named = lot.properties.find("bldg");
+    if (named != lot.properties.end() && std::holds_alternative<std::string>(named->second)) {
+      const std::string path =
+          (std::filesystem::path(options.lot).parent_path() / std::get<std::string>(named->second))
+              .string();
+      if (!grammars.contains(path)) {
+        std::optional<Parsed> parsed = parse_file(options, path);
+        if (!parsed) return kExitInput;
+        grammars.emplace(path, std::move(*parsed));
+      }
+      grammar = &grammars.at(path);
+    }
+    if (lot.polygons.size() != 1) {
+      print_error(options.lot + ": feature '" + lot.id + "' is a MultiPolygon of " +
+                  std::to_string(lot.polygons.size()) + " polygons; a building needs one");
+      return kExitInput;
+    }
+    Building building = grammar->building;
+    building.outline = lot.polygons.front();
+    building.symbol = lot.id;
+    std::optional<Built> built = plan_and_build(options, *grammar->source, building, rules);
+    if (!built) return kExitInput;
+    nlohmann::json one = plan_report(built->plan, built->result);
+    one["id"] = lot.id;
+    one["grammar"] = grammar->source->name();
+    for (const char* key :
+         {"rooms", "doors", "entrances", "windows", "stairs", "unreachable_rooms"}) {
+      for (nlohmann::json item : one[key]) {
+        item["building"] = lot.id;
+        report[key].push_back(item);
+      }
+    }
+    for (const auto& w : one["warnings"])
+      report["warnings"].push_back(lot.id + ": " + w.get<std::string>());
+    report["vertices"] = report.value("vertices", std::size_t{0}) + built->result.stats.vertices;
+    report["triangles"] = report.value("triangles", std::size_t{0}) + built->result.stats.triangles;
+    add_seconds(report, *built);
+    report["buildings"].push_back(std::move(one));
+    results.push_back(std::move(built->result));
+  }
+  shape::Scene scene;
+  for (lang::bldg::BuildResult& r : results) {
+    // One material table for the scene: the builder's tables only differ by the rules' colours,
+    // which are the same for every building here.
+    if (scene.buildings.empty()) scene.materials = r.materials;
+    scene.buildings.push_back(std::move(r.building));
+  }
+  scene.origin = lots->origin;
+  scene.crs = lots->crs;
+  return finish_build(options, scene, report, total);
+}
+
 }  // namespace
 
 int build_bldg(const BuildOptions& options) {
   const Stopwatch total;
   if (const int code = check_build_outputs(options); code != kExitDone) return code;
-  const auto text = read_input_file(options.input);
-  if (!text) {
-    print_error(options.input + ": cannot read file");
-    return kExitInput;
-  }
-  const base::Source source(options.input, *text);
   Stopwatch stage;
-  base::Result<Building> parsed = lang::bldg::parse_building(source);
-  print_diagnostics(parsed.diagnostics(), source, options.quiet);
-  if (!parsed.ok()) return kExitInput;
-  const double parse_seconds = stage.seconds();
+  std::optional<Parsed> input = parse_file(options, options.input);
+  if (!input) return kExitInput;
+  nlohmann::json report;
+  report["input"] = options.input;
+  report["seconds"]["parse"] = stage.seconds();
   lang::bldg::Restrictions rules;
   if (!load_rules(options, rules)) return kExitInput;
-  Building& building = parsed.value();
-  shape::Scene scene;
-  if (!load_outline(options, source, building, scene)) return kExitInput;
-
-  stage = Stopwatch();
-  lang::bldg::FloorPlanOptions plan_options;
-  plan_options.file = options.input;
-  base::Result<FloorPlan> plan = lang::bldg::make_floor_plan(building, rules, plan_options);
-  print_diagnostics(plan.diagnostics(), source, options.quiet);
-  if (!plan.ok()) return kExitInput;
-  const double plan_seconds = stage.seconds();
-
-  stage = Stopwatch();
-  lang::bldg::BuildResult built = lang::bldg::build_building(building, plan.value(), rules);
-  const double build_seconds = stage.seconds();
-  if (!options.quiet) {
-    for (const auto& w : plan->warnings) {
-      std::fprintf(stderr, "%s:%u:%u: warning: %s\n", options.input.c_str(), w.where.line,
-                   w.where.column, w.message.c_str());
+  if (!options.lot.empty() && input->building.outline_feature.empty()) {
+    for (const char* key :
+         {"rooms", "doors", "entrances", "windows", "stairs", "unreachable_rooms", "warnings"}) {
+      report[key] = nlohmann::json::array();
     }
-    for (const auto& w : built.warnings) {
-      std::fprintf(stderr, "%s: warning: %s\n", options.input.c_str(), w.c_str());
-    }
+    return build_lots(options, *input, total, rules, report);
   }
-  nlohmann::json report = plan_report(plan.value(), built);
-  report["input"] = options.input;
-  report["seconds"] = {{"parse", parse_seconds},
-                       {"floor_plan", plan_seconds},
-                       {"build", build_seconds},
-                       {"walls", built.stats.seconds_walls},
-                       {"slabs", built.stats.seconds_slabs},
-                       {"stairs", built.stats.seconds_stairs},
-                       {"roofs", built.stats.seconds_roofs}};
+  shape::Scene scene;
+  if (!load_outline(options, *input->source, input->building, scene)) return kExitInput;
+  std::optional<Built> built = plan_and_build(options, *input->source, input->building, rules);
+  if (!built) return kExitInput;
+  report.update(plan_report(built->plan, built->result));
+  add_seconds(report, *built);
   const kernel::Vec3 origin = scene.origin;
   const std::string crs = scene.crs;
-  scene = lang::bldg::to_scene(std::move(built));
+  scene = lang::bldg::to_scene(std::move(built->result));
   scene.origin = origin;
   scene.crs = crs;
   return finish_build(options, scene, report, total);
