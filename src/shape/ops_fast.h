@@ -17,6 +17,10 @@
 
 namespace insula::shape {
 
+// resolve_sizes (ops.h) into a caller's buffer (cleared first), so a hot loop reuses one
+// allocation; resolve_sizes itself calls this.
+void resolve_sizes_into(double total, std::span<const SizeSpec> sizes, std::vector<Piece>& out);
+
 // The scope of split piece `piece` of `parent` along `axis`: the parent's frame moved to the
 // piece's start, with the piece's extent on `axis` and the parent's on the other two.
 Scope split_piece_scope(const Scope& parent, Axis axis, const Piece& piece);

@@ -97,7 +97,8 @@ FaceTag first_tag(const Shape& s) {
 
 }  // namespace
 
-std::vector<Piece> resolve_sizes(double total, std::span<const SizeSpec> sizes) {
+void resolve_sizes_into(double total, std::span<const SizeSpec> sizes, std::vector<Piece>& out) {
+  out.clear();
   double fixed = 0;
   double weights = 0;
   for (const SizeSpec& s : sizes) {
@@ -107,7 +108,6 @@ std::vector<Piece> resolve_sizes(double total, std::span<const SizeSpec> sizes) 
     if (s.mode == SizeMode::kFloating) weights += v;
   }
   const double rest = std::max(0.0, total - fixed);
-  std::vector<Piece> out;
   double at = 0;
   for (std::uint32_t i = 0; i < sizes.size() && at < total - kMinPiece; ++i) {
     const SizeSpec& s = sizes[i];
@@ -124,6 +124,11 @@ std::vector<Piece> resolve_sizes(double total, std::span<const SizeSpec> sizes) 
   if (weights > 0 && !out.empty() && std::fabs(at - total) < 1e-9 * std::max(1.0, total)) {
     out.back().size = total - out.back().start;
   }
+}
+
+std::vector<Piece> resolve_sizes(double total, std::span<const SizeSpec> sizes) {
+  std::vector<Piece> out;
+  resolve_sizes_into(total, sizes, out);
   return out;
 }
 

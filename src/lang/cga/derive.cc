@@ -888,57 +888,72 @@ class Engine final : public EvalContext {
   }
 
   // ---- split and repeat: scope math for boxes, rectangles and pure scopes (shape/ops_fast.h),
-  // the shape layer's split for any other geometry.
-  struct Pieces {
-    std::vector<State> states;
-    std::vector<std::uint32_t> entries;
-    std::string error;
+  // the shape layer's split for any other geometry. Buffers are reused per nesting level (a
+  // split inside a split's branch takes the next level), so the hot path does not allocate.
+  struct Scratch {
+    std::vector<SizeSpec> sizes;
+    std::vector<const CBranch*> targets;
+    std::vector<shape::Piece> pieces;
+  };
+  class Lease {
+   public:
+    explicit Lease(Engine& e) : e_(e) {
+      if (e.nest_ == e.scratch_.size()) e.scratch_.push_back(std::make_unique<Scratch>());
+      s_ = e.scratch_[e.nest_++].get();
+      s_->sizes.clear();
+      s_->targets.clear();
+    }
+    ~Lease() { --e_.nest_; }
+    Lease(const Lease&) = delete;
+    Lease& operator=(const Lease&) = delete;
+    Scratch& operator*() { return *s_; }
+    Scratch* operator->() { return s_; }
+
+   private:
+    Engine& e_;
+    Scratch* s_ = nullptr;
   };
 
-  Pieces split_pieces(State& st, Axis axis, const std::vector<SizeSpec>& sizes) {
-    Pieces out;
+  // Calls visit(piece state, size entry) for each piece of splitting `st` along `axis`; returns
+  // the operation's error ("" on success).
+  template <typename Visit>
+  std::string for_each_piece(State& st, Axis axis, std::span<const SizeSpec> sizes,
+                             std::vector<shape::Piece>& pieces, Visit&& visit) {
     const double total = shape::component(st.scope.size, axis);
-    if (!(total > 0)) {
-      out.error = "the scope has size 0 along the split axis";
-      return out;
-    }
+    if (!(total > 0)) return "the scope has size 0 along the split axis";
     const Geometry& g = out_.geometry[st.geometry];
     const bool flat =
         g.kind == Geometry::Kind::kRect || (g.kind == Geometry::Kind::kMesh && g.outline);
     const bool fast = g.kind != Geometry::Kind::kMesh || (flat ? g.rect_like : g.box_like);
     if (!fast) {
-      std::vector<shape::ArgInput> a{{"axis", std::string(axis_name(axis))}, {"sizes", sizes}};
+      std::vector<shape::ArgInput> a{{"axis", std::string(axis_name(axis))},
+                                     {"sizes", std::vector<SizeSpec>(sizes.begin(), sizes.end())}};
       OpOutcome o = run_op(st, "split", a);
-      if (!o.error.empty()) {
-        out.error = o.error;
-        return out;
+      if (!o.error.empty()) return o.error;
+      const auto n = static_cast<std::uint32_t>(o.children.size());
+      for (std::uint32_t k = 0; k < n; ++k) {
+        State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, n);
+        visit(piece, o.pieces[k]);
       }
-      for (std::size_t k = 0; k < o.children.size(); ++k) {
-        out.states.push_back(child_of(st, o.children[k].scope, o.children[k].geometry,
-                                      static_cast<std::uint32_t>(k),
-                                      static_cast<std::uint32_t>(o.children.size())));
-        out.entries.push_back(o.pieces[k]);
-      }
-      return out;
+      return {};
     }
-    const std::vector<shape::Piece> pieces = shape::resolve_sizes(total, sizes);
-    const Geometry::Kind kind = g.kind;
+    shape::resolve_sizes_into(total, sizes, pieces);
+    const Geometry::Kind kind = g.kind;  // copies: interning below may grow out_.geometry
     const FaceTag tag = g.tag;
     const std::array<FaceTag, 6> tags = g.tags;
-    out.states.reserve(pieces.size());
-    for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const auto n = static_cast<std::uint32_t>(pieces.size());
+    for (std::uint32_t k = 0; k < n; ++k) {
       std::uint32_t geometry = 0;
       if (flat) {
         geometry = intern_rect(tag);
       } else if (kind != Geometry::Kind::kNone) {
         geometry = intern_box(shape::split_box_tags(tags, axis, pieces[k], total));
       }
-      out.states.push_back(child_of(st, shape::split_piece_scope(st.scope, axis, pieces[k]),
-                                    geometry, static_cast<std::uint32_t>(k),
-                                    static_cast<std::uint32_t>(pieces.size())));
-      out.entries.push_back(pieces[k].entry);
+      State piece =
+          child_of(st, shape::split_piece_scope(st.scope, axis, pieces[k]), geometry, k, n);
+      visit(piece, pieces[k].entry);
     }
-    return out;
+    return {};
   }
 
   // Nominal length of a size (floating sizes count their value) for repeat counting.
@@ -995,31 +1010,30 @@ class Engine final : public EvalContext {
   }
 
   void split(const CItem& c, State& st) {
-    std::vector<SizeSpec> sizes;
-    std::vector<const CBranch*> targets;
-    const Axis axis = c.axes.front();
-    const double total = shape::component(st.scope.size, axis);
     if (c.code == OpCode::kRepeat) {
       repeat(c, st, 0);
       return;
     }
+    Lease scratch(*this);
+    const Axis axis = c.axes.front();
     if (!c.sizes.empty()) {  // BS(axis, sizes...){ one successor per size }
       for (std::size_t k = 0; k < c.sizes.size(); ++k) {
-        sizes.push_back(size_of(c.sizes[k], st));
-        targets.push_back(k < c.branches.size() ? &c.branches[k] : nullptr);
+        scratch->sizes.push_back(size_of(c.sizes[k], st));
+        scratch->targets.push_back(k < c.branches.size() ? &c.branches[k] : nullptr);
       }
     } else {
-      keyed_sizes(c, st, total, sizes, targets);
+      keyed_sizes(c, st, shape::component(st.scope.size, axis), scratch->sizes, scratch->targets);
     }
-    Pieces p = split_pieces(st, axis, sizes);
-    if (!p.error.empty()) {
-      warn(c, p.error);
+    const std::vector<const CBranch*>& targets = scratch->targets;
+    const std::string error = for_each_piece(st, axis, scratch->sizes, scratch->pieces,
+                                             [&](State& piece, std::uint32_t entry) {
+                                               if (targets[entry] != nullptr) {
+                                                 run_branch(*targets[entry], piece);
+                                               }
+                                             });
+    if (!error.empty()) {
+      warn(c, error);
       terminal(st, rule_->predecessor);
-      return;
-    }
-    for (std::size_t k = 0; k < p.states.size(); ++k) {
-      const CBranch* b = targets[p.entries[k]];
-      if (b != nullptr) run_branch(*b, p.states[k]);
     }
   }
 
@@ -1029,23 +1043,21 @@ class Engine final : public EvalContext {
     std::string error;
     const double size = size_of(c.sizes.front(), st).value;
     const std::size_t n = shape::repeat_count(shape::component(st.scope.size, axis), size, error);
-    Pieces p;
-    if (n == 0) {
-      p.error = error;
-    } else {
-      p = split_pieces(st, axis, std::vector<SizeSpec>(n, SizeSpec{1, SizeMode::kFloating}));
+    if (n > 0) {
+      Lease scratch(*this);
+      scratch->sizes.assign(n, SizeSpec{1, SizeMode::kFloating});
+      error = for_each_piece(st, axis, scratch->sizes, scratch->pieces,
+                             [&](State& piece, std::uint32_t) {
+                               if (axis_index + 1 < c.axes.size()) {
+                                 repeat(c, piece, axis_index + 1);
+                               } else if (!c.branches.empty()) {
+                                 run_branch(c.branches.front(), piece);
+                               }
+                             });
     }
-    if (!p.error.empty()) {
-      warn(c, p.error);
+    if (!error.empty()) {
+      warn(c, error);
       terminal(st, rule_->predecessor);
-      return;
-    }
-    for (State& piece : p.states) {
-      if (axis_index + 1 < c.axes.size()) {
-        repeat(c, piece, axis_index + 1);
-      } else if (!c.branches.empty()) {
-        run_branch(c.branches.front(), piece);
-      }
     }
   }
 
@@ -1191,6 +1203,8 @@ class Engine final : public EvalContext {
   std::map<std::array<std::uint64_t, 6>, std::uint32_t> boxes_;
   std::map<std::uint64_t, std::uint32_t> rects_;
   std::map<std::pair<std::uint32_t, std::string>, std::size_t> warnings_;
+  std::vector<std::unique_ptr<Scratch>> scratch_;
+  std::size_t nest_ = 0;
 };
 
 }  // namespace
