@@ -16,6 +16,7 @@
 #include "io/atomic_file.h"
 #include "lang/cga/ast.h"
 #include "lang/cga/buildinggen_xml.h"
+#include "lang/cga/checker.h"
 #include "lang/cga/derivation_graph.h"
 #include "lang/cga/model_json.h"
 #include "lang/cga/model_xmi.h"
@@ -113,10 +114,17 @@ int run_transform(const TransformOptions& options) {
   if (from_xml) {
     output = xml_to_cga(source, options.quiet, exit_code);
   } else {
+    // A grammar is transformed only when it is a well-formed model (parser, then the static
+    // semantics of §IV.B in checker.h), so no output describes a grammar `build` would reject.
     base::Result<lang::cga::Grammar> grammar = lang::cga::parse(source);
     print_diagnostics(grammar.diagnostics(), source, options.quiet);
-    if (grammar.ok())
-      output = transform_grammar(grammar.value(), source, options.to, options.quiet);
+    if (grammar.ok()) {
+      const lang::cga::CheckResult checked = lang::cga::check(grammar.value(), source);
+      print_diagnostics(checked.diagnostics, source, options.quiet);
+      if (checked.ok) {
+        output = transform_grammar(grammar.value(), source, options.to, options.quiet);
+      }
+    }
   }
   if (!output) return exit_code;
   if (options.output.empty()) {

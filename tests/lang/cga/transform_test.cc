@@ -12,6 +12,7 @@
 
 #include "lang/cga/ast_dump.h"
 #include "lang/cga/buildinggen_xml.h"
+#include "lang/cga/checker.h"
 #include "lang/cga/derivation_graph.h"
 #include "lang/cga/model_json.h"
 #include "lang/cga/model_xmi.h"
@@ -306,6 +307,17 @@ TEST(CgaBuildingGen, RoundTripEveryExpressibleGrammar) {
     EXPECT_EQ(stripped_dump(again), stripped_dump(p)) << path;
   }
   EXPECT_EQ(expressible, 3);  // fig16_facade.cga, its read-back golden, implicit_set.cga
+}
+
+// `insula transform` runs the checker first: the BuildingGen examples must be well-formed models.
+TEST(CgaBuildingGen, ExamplesPassTheChecker) {
+  for (const char* name : {"fig16_facade.cga", "implicit_set.cga"}) {
+    const Parsed p = parse_path(transform_dir() / name);
+    const CheckResult checked = check(p.grammar, p.source);
+    EXPECT_TRUE(checked.ok) << name << "\n"
+                            << (checked.diagnostics.empty() ? ""
+                                                            : base::render(checked.diagnostics[0]));
+  }
 }
 
 TEST(CgaBuildingGen, ReadBackGroupsRulesByPredecessor) {
