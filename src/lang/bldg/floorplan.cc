@@ -55,7 +55,6 @@ bool check_outline(const Building& building, Work& work, std::vector<base::Diagn
 // their rooms stay out, §3.2).
 void assemble(Work& work, FloorPlan& out) {
   out.outline = work.outline;
-  out.door_width = work.door_width;
   out.storeys.resize(static_cast<std::size_t>(work.levels));
   for (int level = 0; level < work.levels; ++level) out.storeys[level].level = level;
   std::vector<kernel::Polygon> kept;
@@ -68,6 +67,7 @@ void assemble(Work& work, FloorPlan& out) {
     part.disposable = p.disposable();
     part.outline = p.cell;
     part.storeys = p.disposable() ? 0 : static_cast<int>(p.floors.size());
+    part.door_width = work.door_widths[out.parts.size()];
     out.parts.push_back(part);
     if (p.disposable() || !p.has_cell) continue;
     kept.push_back(p.cell);
@@ -134,9 +134,8 @@ void weld_storeys(FloorPlan& out) {
 
 }  // namespace
 
-double default_door_width(const Building& building, const Restrictions& restrictions) {
-  const double from_perimeter =
-      restrictions.door_width_fraction * kernel::perimeter(building.outline);
+double default_door_width(double layout_perimeter, const Restrictions& restrictions) {
+  const double from_perimeter = restrictions.door_width_fraction * layout_perimeter;
   return std::max(restrictions.door_min_width, std::isfinite(from_perimeter) ? from_perimeter : 0);
 }
 
@@ -160,12 +159,14 @@ base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrict
         span_at(options.file, building.where)));
   }
   if (!errors.empty()) return base::Result<FloorPlan>::failure(std::move(errors));
-  work.door_width = default_door_width(building, restrictions);
   // A door keeps half the thickest wall meeting its wall plus 10 cm of jamb from each end.
   work.clearance =
       0.5 * std::max(restrictions.outer_wall_thickness, restrictions.inner_wall_thickness) + 0.1;
 
   plan::subdivide_all(work);  // §3.2, first arrangement
+  for (const plan::WorkPart& p : work.parts)
+    work.door_widths.push_back(
+        default_door_width(p.has_cell ? kernel::perimeter(p.cell) : 0, restrictions));
   std::vector<plan::DoorRequest> doors = plan::collect_doors(work);
   plan::fit_doors(work, doors);  // §3.3 probing: weight borrowing
   // Past the paper: doors that connect every room, probed and borrowed for like the grammar's.

@@ -163,6 +163,7 @@ struct PlanPart {
   int storeys = 0;  // floors of the part: it occupies storeys 0 .. storeys-1
   // Top of the part's highest storey (m), where its roof starts.
   double eaves = 0;
+  double door_width = 0;  // default door width in this part (default_door_width of its cell)
 };
 
 struct PlanWarning {
@@ -179,7 +180,6 @@ struct FloorPlan {
   std::vector<PlanStorey> storeys;
   std::vector<PlanUnreachable> unreachable_rooms;
   std::vector<PlanWarning> warnings;  // transitions dropped, rooms shrunk, walls not reached, ...
-  double door_width = 0;              // the default door width used (m)
 };
 
 struct FloorPlanOptions {
@@ -197,9 +197,11 @@ struct FloorPlanOptions {
 base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrictions& restrictions,
                                         const FloorPlanOptions& options = {});
 
-// The default door width (§3.3): door_width_fraction x the outline's perimeter, at least
-// door_min_width.
-double default_door_width(const Building& building, const Restrictions& restrictions);
+// The default door width (§3.3) in a layout of perimeter `layout_perimeter` (m):
+// door_width_fraction x the perimeter, at least door_min_width. The layout of a door is its
+// building part's cell, so a large building does not get barn doors everywhere; a door between
+// two parts takes the narrower of the two.
+double default_door_width(double layout_perimeter, const Restrictions& restrictions);
 
 // Room index (storey-local) by symbol on a storey; -1 when absent.
 int find_room(const PlanStorey& storey, const std::string& symbol);

@@ -91,13 +91,19 @@ void covered_by_ring(Vec2 p, Vec2 q, const Ring& ring, int other, std::vector<In
     const Vec2 a = ring[j];
     const Vec2 b = ring[(j + 1) % n];
     if (kernel::dot(b - a, u) >= 0) continue;  // must run the other way
-    if (std::abs(kernel::cross(u, a - p)) > kLineTolerance) continue;
-    if (std::abs(kernel::cross(u, b - p)) > kLineTolerance) continue;
     const double sa = kernel::dot(a - p, u);
     const double sb = kernel::dot(b - p, u);
     const double lo = std::max(0.0, std::min(sa, sb));
     const double hi = std::min(len, std::max(sa, sb));
-    if (hi - lo > kLineTolerance) out.push_back({lo, hi, other});
+    if (hi - lo <= kLineTolerance) continue;
+    // The other edge must lie on this one where they overlap (checked at the overlap's ends, not
+    // at the other edge's far ends: two long edges a few micrometres off parallel still match).
+    auto off_line = [&](double s) {
+      const Vec2 q_on_other = a + (b - a) * ((s - sa) / (sb - sa));
+      return std::abs(kernel::cross(u, q_on_other - p)) > kLineTolerance;
+    };
+    if (off_line(lo) || off_line(hi)) continue;
+    out.push_back({lo, hi, other});
   }
 }
 

@@ -53,7 +53,7 @@ std::vector<EntranceRequest> entrance_requests(Work& work) {
   for (std::size_t r = 0; r < work.rooms.size(); ++r) {
     const WorkRoom& room = work.rooms[r];
     if (room.division == nullptr || !room.division->room->entrance) continue;
-    out.push_back({static_cast<int>(r), "", room.division->where, work.door_width});
+    out.push_back({static_cast<int>(r), "", room.division->where, work.door_widths[room.part]});
   }
   for (const Transition& t : work.building->transitions) {
     if (t.kind != TransitionKind::kEntrance) continue;
@@ -62,7 +62,7 @@ std::vector<EntranceRequest> entrance_requests(Work& work) {
       warn(work, "entrance '" + t.symbol + "' names a room that does not exist; ignored", t.where);
       continue;
     }
-    const double width = t.width > 0 ? t.width : work.door_width;
+    const double width = t.width > 0 ? t.width : work.door_widths[work.rooms[rooms[0]].part];
     auto same = std::find_if(out.begin(), out.end(), [&](const EntranceRequest& e) {
       return e.room == rooms[0] && e.symbol.empty();
     });
@@ -144,7 +144,8 @@ void place_entrances(Work& work, FloorPlan& plan) {
   for (std::size_t i = 0; i < ground.rooms.size(); ++i) {
     for (const EdgePiece& piece : open_air_pieces(ground, static_cast<int>(i), plan.footprint)) {
       if (piece.length() > best_len + 1e-9 &&
-          entrance_for(plan, static_cast<int>(i), work.door_width, work.clearance)) {
+          entrance_for(plan, static_cast<int>(i), work.door_widths[ground.rooms[i].part_index],
+                       work.clearance)) {
         best_len = piece.length();
         best = static_cast<int>(i);
       }
@@ -154,7 +155,8 @@ void place_entrances(Work& work, FloorPlan& plan) {
     warn(work, "the building has no entrance and no room has an open-air wall long enough for one");
     return;
   }
-  PlanDoor door = *entrance_for(plan, best, work.door_width, work.clearance);
+  PlanDoor door =
+      *entrance_for(plan, best, work.door_widths[ground.rooms[best].part_index], work.clearance);
   door.height = work.restrictions->door_height;
   door.added = true;
   plan.storeys[0].entrances.push_back(door);

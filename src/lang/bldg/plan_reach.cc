@@ -72,8 +72,10 @@ bool add_doors(Work& work, FloorPlan& plan, Reach& reach) {
       }
       std::sort(neighbours.begin(), neighbours.end());
       for (const auto& [len, v] : neighbours) {
-        std::optional<PlanDoor> door =
-            door_between(storey, static_cast<int>(u), v, work.door_width, work.clearance, keep_out);
+        std::optional<PlanDoor> door = door_between(
+            storey, static_cast<int>(u), v,
+            door_width_between(work, storey.rooms[u].part_index, storey.rooms[v].part_index),
+            work.clearance, keep_out);
         if (!door) continue;
         door->height = work.restrictions->door_height;
         door->added = true;
@@ -136,7 +138,7 @@ std::string why_unreachable(const Work& work, const FloorPlan& plan, const Reach
       for (const EdgePiece& p : shared_segments(storey.rooms[u].cell, storey.rooms[v].cell))
         best = std::max(best, p.length());
   if (best <= 0) return "it shares no wall with a reachable room";
-  const double need = work.door_width + 2 * work.clearance;
+  const double need = work.door_widths[storey.rooms[u].part_index] + 2 * work.clearance;
   if (best < need)
     return "its longest wall shared with a reachable room is " + meters(best) +
            " m; a door needs " + meters(need) + " m";

@@ -146,6 +146,7 @@ bool add_wall(PlanStorey& storey, int room, double clearance) {
     const Vec2 m2 = v + kernel::normalized(q - v) * d2;
     Polygon t{{m1, v, m2}, {}};
     kernel::normalize(t);
+    if (!covers({storey.rooms[room].cell}, t)) continue;  // a concave room: the cut leaves it
     PlanStorey trial = storey;
     std::optional<Polygon> cut = single(kernel::subtract({trial.rooms[room].cell}, {t}),
                                         trial.rooms[room].cell.holes.size());
@@ -177,6 +178,7 @@ bool remove_wall(PlanStorey& storey, int room, double clearance) {
     const bool convex = kernel::cross(v - p, q - v) > 0;
     std::vector<int> changed;
     if (convex) {
+      if (!covers({trial.rooms[room].cell}, t)) continue;  // the new wall would leave the room
       std::optional<Polygon> cut = single(kernel::subtract({trial.rooms[room].cell}, {t}),
                                           trial.rooms[room].cell.holes.size());
       if (!cut || kernel::area(*cut) < kMinRoomArea) continue;

@@ -61,7 +61,7 @@ struct Work {
   std::vector<WorkFloor> floors;
   std::vector<WorkRoom> rooms;
   std::vector<PlanWarning> warnings;
-  double door_width = 0;
+  std::vector<double> door_widths;  // default door width per part (floorplan.h)
   double clearance = 0;  // kept free at each end of a door or window (wall junctions, jambs)
   int levels = 0;        // storeys of the tallest non-disposable part
   std::string file;
@@ -81,6 +81,8 @@ void subdivide_floor(Work& work, int floor);
 void subdivide_all(Work& work);
 
 void warn(Work& work, std::string message, Location where = {});
+// Default width of a door between rooms of parts a and b (the narrower part's).
+double door_width_between(const Work& work, int part_a, int part_b);
 std::string room_name(const Work& work, int room);
 
 }  // namespace insula::lang::bldg::plan

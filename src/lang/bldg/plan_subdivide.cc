@@ -191,6 +191,10 @@ void warn(Work& work, std::string message, Location where) {
   work.warnings.push_back({std::move(message), where});
 }
 
+double door_width_between(const Work& work, int part_a, int part_b) {
+  return std::min(work.door_widths[part_a], work.door_widths[part_b]);
+}
+
 std::string room_name(const Work& work, int room) {
   const WorkRoom& r = work.rooms[room];
   return r.division != nullptr ? r.division->symbol : work.parts[r.part].node->symbol;

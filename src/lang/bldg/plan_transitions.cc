@@ -186,7 +186,7 @@ int request_connections(Work& work, std::vector<DoorRequest>& doors) {
       DoorRequest request;
       request.a = best_a;
       request.b = best_b;
-      request.width = work.door_width;
+      request.width = door_width_between(work, work.rooms[best_a].part, work.rooms[best_b].part);
       request.added = true;
       doors.push_back(request);
       unite(best_a, best_b);
@@ -238,7 +238,8 @@ std::vector<DoorRequest> collect_doors(Work& work) {
     request.transition = &t;
     request.a = a;
     request.b = b;
-    request.width = t.width > 0 ? t.width : work.door_width;
+    request.width =
+        t.width > 0 ? t.width : door_width_between(work, work.rooms[a].part, work.rooms[b].part);
     out.push_back(request);
   }
   return out;

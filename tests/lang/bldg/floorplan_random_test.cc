@@ -21,6 +21,7 @@
 #include "kernel/boolean2d.h"
 #include "lang/bldg/floorplan.h"
 #include "lang/bldg/plan_geometry.h"
+#include "lang/bldg/stochastic.h"
 
 namespace insula::lang::bldg {
 namespace {
@@ -325,10 +326,11 @@ std::string check(const Building& b, const FloorPlan& plan, const Restrictions& 
   for (const auto& level : seen) unreachable += std::count(level.begin(), level.end(), false);
   if (unreachable != plan.unreachable_rooms.size()) return "unreachable rooms misreported";
   // A room reported unreachable must be so for the reason given.
-  const double need = plan.door_width + 2 * (0.5 * r.outer_wall_thickness + 0.1);
   for (const PlanUnreachable& u : plan.unreachable_rooms) {
     if (seen[u.storey][u.room]) return "reachable room reported unreachable";
     const PlanStorey& s = plan.storeys[u.storey];
+    const double need = plan.parts[s.rooms[u.room].part_index].door_width +
+                        2 * (0.5 * r.outer_wall_thickness + 0.1);
     double longest = 0;
     for (std::size_t v = 0; v < s.rooms.size(); ++v)
       if (seen[u.storey][v])
@@ -388,6 +390,46 @@ TEST(FloorPlanRandom, ThousandBuildingsKeepEveryProperty) {
   EXPECT_GT(stairs, 200);
   RecordProperty("rooms", rooms);
   RecordProperty("added_doors", borrowed_or_added);
+}
+
+// The same properties on buildings of the stochastic generator (§4.3, stochastic.h): every shape,
+// 1-5 parts, Table 2's room ranges. Its rooms are connected in its nominal layout, so the engine
+// must reach every room.
+TEST(FloorPlanRandom, StochasticBuildingsKeepEveryProperty) {
+  const Restrictions r;
+  const RandomShape shapes[] = {RandomShape::kConvex, RandomShape::kL, RandomShape::kU,
+                                RandomShape::kT, RandomShape::kH};
+  int failures = 0;
+  int with_unreachable = 0;
+  int rooms = 0;
+  for (std::uint64_t i = 0; i < 300; ++i) {
+    RandomSpec spec;
+    spec.shape = shapes[i % 5];
+    spec.parts = static_cast<int>(i / 5 % 5) + 1;
+    spec.rooms_min = 3 + 2 * static_cast<int>(i % 3);
+    spec.rooms_max = spec.rooms_min + 4;
+    const Building b = random_building(spec, batch_seed(7, i));
+    const base::Result<FloorPlan> result = make_floor_plan(b, r);
+    ASSERT_TRUE(result.ok()) << "building " << i << ": " << result.diagnostics()[0].message;
+    for (const PlanStorey& s : result->storeys) rooms += static_cast<int>(s.rooms.size());
+    bool walls_asked = false;
+    for (const PlanStorey& s : result->storeys)
+      for (const PlanRoom& room : s.rooms) walls_asked = walls_asked || room.walls_asked >= 3;
+    if (!result->unreachable_rooms.empty()) {
+      ++with_unreachable;
+      ADD_FAILURE() << "building " << i << " (" << random_shape_name(spec.shape) << ", "
+                    << spec.parts << " parts): '" << result->unreachable_rooms[0].symbol
+                    << "' unreachable: " << result->unreachable_rooms[0].reason;
+    }
+    const std::string why = check(b, result.value(), r, !walls_asked);
+    if (!why.empty()) {
+      ADD_FAILURE() << "building " << i << ": " << why;
+      if (++failures > 10) break;
+    }
+  }
+  EXPECT_EQ(failures, 0);
+  EXPECT_EQ(with_unreachable, 0);
+  EXPECT_GT(rooms, 3000);
 }
 
 }  // namespace

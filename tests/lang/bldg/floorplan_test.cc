@@ -172,8 +172,8 @@ TEST(FloorPlan, TwoRoomsExactAreasDoorAndEntrance) {
   EXPECT_NEAR(s.rooms[0].target_area, s.rooms[0].area, kAreaTolerance);
   const double cut = 10 * 0.376 / 1.002;
   EXPECT_NEAR(plan::bounds_of({s.rooms[0].cell}).max.x, cut, 1e-6);
-  // Door width: max(0.9, 0.02 x 32 m) = 0.9, centred on the 6 m shared wall.
-  EXPECT_DOUBLE_EQ(plan.door_width, 0.9);
+  // Door width: max(0.9, 0.02 x the part's 32 m perimeter) = 0.9, centred on the 6 m wall.
+  EXPECT_DOUBLE_EQ(plan.parts[0].door_width, 0.9);
   ASSERT_EQ(s.doors.size(), 1u);
   EXPECT_NEAR(s.doors[0].center.x, cut, 1e-6);
   EXPECT_NEAR(s.doors[0].center.y, 3, 1e-6);
