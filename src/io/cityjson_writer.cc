@@ -12,6 +12,7 @@
 
 #include "io/atomic_file.h"
 #include "io/json_stream.h"
+#include "shape/part_mesh.h"
 
 namespace insula::io {
 namespace {
@@ -365,8 +366,9 @@ std::string cityjson_reference_system(const std::string& crs) {
   return std::string(kPrefix) + "EPSG/0/" + std::string(rest);
 }
 
-std::string cityjson_text(const shape::Scene& scene) {
-  Writer writer(scene);
+std::string cityjson_text(const shape::Scene& input) {
+  shape::Scene expanded;  // shared-mesh instances written as plain geometry
+  Writer writer(shape::expand_instances(input, expanded));
   std::string out;
   writer.write(out);
   out += '\n';

@@ -6,13 +6,18 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <span>
+#include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "io/atomic_file.h"
 #include "io/json_stream.h"
 #include "io/triangulated.h"
+#include "kernel/uv.h"
+#include "shape/part_mesh.h"
 
 namespace insula::io {
 namespace {
@@ -72,12 +77,31 @@ struct PrimitiveRecord {
   std::uint32_t index_count = 0;
   std::size_t position_offset = 0;  // bytes into the vertex view; normals follow the positions
   std::size_t index_offset = 0;     // bytes into the index view
+  std::size_t uv_offset = 0;        // bytes into the texture coordinate view
+  bool has_uv = false;              // TEXCOORD_0 (parts of solidGeometry with "uv_scale")
+  std::uint32_t accessor = 0;       // first of its accessors (3, or 4 with texture coordinates)
   std::array<float, 3> min{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
                            std::numeric_limits<float>::max()};
   std::array<float, 3> max{std::numeric_limits<float>::lowest(),
                            std::numeric_limits<float>::lowest(),
                            std::numeric_limits<float>::lowest()};
 };
+
+// A glTF mesh: a run of primitives. Parts that are instances of one shared mesh (seed 001 §4.5)
+// point at the same record and get a node each with their placement as the node's matrix.
+struct MeshRecord {
+  std::string name;
+  std::uint32_t first = 0;
+  std::uint32_t count = 0;
+};
+
+// The texture size of a part in meters, or 0 for none (solid_geometry's attribute).
+double uv_scale(const shape::Part& part) {
+  auto it = part.attributes.find("uv_scale");
+  if (it == part.attributes.end()) return 0;
+  const auto* v = std::get_if<double>(&it->second);
+  return v != nullptr && *v > 0 ? *v : 0;
+}
 
 // Fills the binary buffer in one pass over the scene (vertex view: per primitive its positions
 // then its normals; index view after it), then writes the JSON from compact records. Object keys
@@ -90,10 +114,13 @@ class Builder {
   void write_json(JsonStream& json, std::string_view buffer_uri) const;
   // Appends the binary buffer (vertex view, then index view), little-endian.
   void append_binary(std::string& out) const;
-  std::size_t binary_size() const { return 4 * (vertices_.size() + indices_.size()); }
+  std::size_t binary_size() const { return 4 * (vertices_.size() + indices_.size() + uvs_.size()); }
 
  private:
-  void add_part(const kernel::Mesh& mesh);
+  // Adds the part's primitives as a new glTF mesh (or finds its shared one); returns the mesh
+  // index, or -1 when no face produced a triangle.
+  std::int32_t add_part(const shape::Part& part, std::size_t index);
+  std::uint32_t add_primitives(const kernel::Mesh& mesh, double uv);
   void add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
                      std::span<const std::pair<std::uint32_t, std::uint32_t>> faces);
   void add_face(const kernel::Mesh& mesh, std::size_t face, PrimitiveRecord& primitive);
@@ -110,7 +137,11 @@ class Builder {
   std::vector<float> vertices_;         // the vertex view, as floats
   std::vector<std::uint32_t> indices_;  // the index view
   std::vector<PrimitiveRecord> primitives_;
-  std::vector<std::uint32_t> part_primitives_;  // primitives of each part, parts in scene order
+  std::vector<float> uvs_;  // the texture coordinate view (empty: no such view)
+  std::vector<MeshRecord> meshes_;
+  std::vector<std::int32_t> part_mesh_;  // glTF mesh of each part (-1: none), parts in scene order
+  std::map<const kernel::Mesh*, std::int32_t> shared_;  // instance meshes already added
+  double uv_ = 0;                                       // texture size of the part being added
 
   // Scratch reused from face to face.
   FaceTriangulator triangulator_;
@@ -125,8 +156,9 @@ Builder::Builder(const shape::Scene& scene) : scene_(scene), materials_(scene) {
   std::size_t triangles = 0;
   for (const shape::Building& building : scene_.buildings) {
     for (const shape::Part& part : building.parts) {
-      for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
-        const std::size_t n = part.mesh.face(f).size();
+      const kernel::Mesh& mesh = part.instance_of ? *part.instance_of : part.mesh;
+      for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+        const std::size_t n = mesh.face(f).size();
         corners += n;
         triangles += n >= 3 ? n - 2 : 0;
       }
@@ -135,12 +167,31 @@ Builder::Builder(const shape::Scene& scene) : scene_(scene), materials_(scene) {
   vertices_.reserve(6 * corners);
   indices_.reserve(3 * triangles);
   for (const shape::Building& building : scene_.buildings) {
-    for (const shape::Part& part : building.parts) add_part(part.mesh);
+    for (std::size_t p = 0; p < building.parts.size(); ++p) {
+      part_mesh_.push_back(add_part(building.parts[p], p));
+    }
   }
 }
 
+std::int32_t Builder::add_part(const shape::Part& part, std::size_t index) {
+  if (part.instance_of) {
+    if (auto it = shared_.find(part.instance_of.get()); it != shared_.end()) return it->second;
+  }
+  const auto first = static_cast<std::uint32_t>(primitives_.size());
+  const std::uint32_t count =
+      add_primitives(part.instance_of ? *part.instance_of : part.mesh, uv_scale(part));
+  std::int32_t mesh = -1;
+  if (count > 0) {
+    mesh = static_cast<std::int32_t>(meshes_.size());
+    meshes_.push_back({part_name(part, index), first, count});
+  }
+  if (part.instance_of) shared_[part.instance_of.get()] = mesh;
+  return mesh;
+}
+
 // One primitive per material, materials in index order, faces in mesh order within each.
-void Builder::add_part(const kernel::Mesh& mesh) {
+std::uint32_t Builder::add_primitives(const kernel::Mesh& mesh, double uv) {
+  uv_ = uv;
   faces_by_material_.clear();
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
     faces_by_material_.emplace_back(materials_.index(mesh.tag(f)), f);
@@ -154,7 +205,7 @@ void Builder::add_part(const kernel::Mesh& mesh) {
     add_primitive(mesh, all[begin].first, all.subspan(begin, end - begin));
     begin = end;
   }
-  part_primitives_.push_back(static_cast<std::uint32_t>(primitives_.size() - first));
+  return static_cast<std::uint32_t>(primitives_.size() - first);
 }
 
 void Builder::add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
@@ -163,6 +214,10 @@ void Builder::add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
   primitive.material = material;
   primitive.position_offset = 4 * vertices_.size();
   primitive.index_offset = 4 * indices_.size();
+  primitive.uv_offset = 4 * uvs_.size();
+  primitive.has_uv = uv_ > 0;
+  primitive.accessor =
+      primitives_.empty() ? 0 : primitives_.back().accessor + (primitives_.back().has_uv ? 4 : 3);
   normals_.clear();
   for (const auto& entry : faces) add_face(mesh, entry.second, primitive);
   if (primitive.index_count == 0) return;  // every face degenerate: no primitive
@@ -179,6 +234,11 @@ void Builder::add_face(const kernel::Mesh& mesh, std::size_t face, PrimitiveReco
   const std::array<float, 3> normal = to_y_up(newell);
   const std::uint32_t base = primitive.vertex_count;
   for (std::uint32_t vertex : loop) {
+    if (uv_ > 0) {
+      const kernel::Vec2 t = kernel::planar_uv(mesh.position(vertex), newell, uv_);
+      uvs_.push_back(static_cast<float>(t.x));
+      uvs_.push_back(static_cast<float>(t.y));
+    }
     const std::array<float, 3> p = to_y_up(mesh.position(vertex));
     for (std::size_t k = 0; k < 3; ++k) {
       vertices_.push_back(p[k]);
@@ -208,11 +268,25 @@ void append_little_endian(std::string& out, const std::vector<T>& values) {
 void Builder::append_binary(std::string& out) const {
   append_little_endian(out, vertices_);
   append_little_endian(out, indices_);
+  append_little_endian(out, uvs_);
 }
 
 void write_vec3(JsonStream& json, const std::array<float, 3>& v) {
   json.begin_array();
   for (float c : v) json.number(static_cast<double>(c));
+  json.end_array();
+}
+
+// An instance's placement (local Z-up) as a glTF node matrix (Y-up, column-major): C T C^-1 with
+// C: (x, y, z) -> (x, z, -y).
+void write_matrix(JsonStream& json, const kernel::Transform& t) {
+  const auto c = [](kernel::Vec3 v) { return std::array<double, 3>{v.x, v.z, -v.y}; };
+  const std::array<std::array<double, 3>, 4> columns = {c(t.x), c(t.z), c(-t.y), c(t.t)};
+  json.key("matrix").begin_array();
+  for (std::size_t k = 0; k < 4; ++k) {
+    for (double v : columns[k]) json.number(v);
+    json.number(k == 3 ? 1.0 : 0.0);
+  }
   json.end_array();
 }
 
@@ -233,30 +307,31 @@ void Builder::write_accessors(JsonStream& json) const {
     json.begin_object().key("bufferView").integer(1).key("byteOffset").integer(p.index_offset);
     json.key("componentType").integer(kUnsignedInt).key("count").integer(p.index_count);
     json.key("type").string("SCALAR").end_object();
+    if (!p.has_uv) continue;
+    json.begin_object().key("bufferView").integer(2).key("byteOffset").integer(p.uv_offset);
+    json.key("componentType").integer(kFloat).key("count").integer(p.vertex_count);
+    json.key("type").string("VEC2").end_object();
   }
   json.end_array();
 }
 
 void Builder::write_meshes(JsonStream& json) const {
   json.key("meshes").begin_array();
-  std::size_t part_index = 0;
-  std::uint32_t primitive = 0;
-  for (const shape::Building& building : scene_.buildings) {
-    for (std::size_t p = 0; p < building.parts.size(); ++p) {
-      const std::uint32_t count = part_primitives_[part_index++];
-      if (count == 0) continue;
-      json.begin_object().key("name").string(part_name(building.parts[p], p));
-      json.key("primitives").begin_array();
-      for (const std::uint32_t end = primitive + count; primitive < end; ++primitive) {
-        const std::uint32_t accessor = 3 * primitive;
-        json.begin_object().key("attributes").begin_object();
-        json.key("NORMAL").integer(accessor + 1).key("POSITION").integer(accessor).end_object();
-        json.key("indices").integer(accessor + 2);
-        json.key("material").integer(primitives_[primitive].material);
-        json.key("mode").integer(kTriangles).end_object();
-      }
-      json.end_array().end_object();
+  for (const MeshRecord& mesh : meshes_) {
+    json.begin_object().key("name").string(mesh.name);
+    json.key("primitives").begin_array();
+    for (std::uint32_t primitive = mesh.first; primitive < mesh.first + mesh.count; ++primitive) {
+      const PrimitiveRecord& record = primitives_[primitive];
+      const std::uint32_t accessor = record.accessor;
+      json.begin_object().key("attributes").begin_object();
+      json.key("NORMAL").integer(accessor + 1).key("POSITION").integer(accessor);
+      if (record.has_uv) json.key("TEXCOORD_0").integer(accessor + 3);
+      json.end_object();
+      json.key("indices").integer(accessor + 2);
+      json.key("material").integer(record.material);
+      json.key("mode").integer(kTriangles).end_object();
     }
+    json.end_array().end_object();
   }
   json.end_array();
 }
@@ -266,13 +341,14 @@ void Builder::write_nodes(JsonStream& json) const {
   json.key("nodes").begin_array();
   std::size_t part_index = 0;
   std::size_t node = 0;
-  std::size_t mesh = 0;
   for (std::size_t b = 0; b < scene_.buildings.size(); ++b) {
     const shape::Building& building = scene_.buildings[b];
     for (std::size_t p = 0; p < building.parts.size(); ++p) {
       const shape::Part& part = building.parts[p];
       json.begin_object().key("extras").attributes(part.attributes, "kind", kind_name(part.kind));
-      if (part_primitives_[part_index++] > 0) json.key("mesh").integer(mesh++);
+      if (part.instance_of) write_matrix(json, part.instance_transform);
+      if (const std::int32_t mesh = part_mesh_[part_index++]; mesh >= 0)
+        json.key("mesh").integer(mesh);
       json.key("name").string(part_name(part, p)).end_object();
     }
     json.begin_object();
@@ -313,6 +389,11 @@ void Builder::write_buffers(JsonStream& json, std::string_view buffer_uri) const
   json.begin_object().key("buffer").integer(0).key("byteLength").integer(4 * indices_.size());
   json.key("byteOffset").integer(vertex_bytes);
   json.key("target").integer(kElementArrayBuffer).end_object();
+  if (!uvs_.empty()) {
+    json.begin_object().key("buffer").integer(0).key("byteLength").integer(4 * uvs_.size());
+    json.key("byteOffset").integer(vertex_bytes + 4 * indices_.size());
+    json.key("byteStride").integer(8).key("target").integer(kArrayBuffer).end_object();
+  }
   json.end_array();
   json.key("buffers").begin_array().begin_object().key("byteLength").integer(binary_size());
   if (!buffer_uri.empty()) json.key("uri").string(buffer_uri);

@@ -8,6 +8,7 @@
 
 #include "io/atomic_file.h"
 #include "io/triangulated.h"
+#include "shape/part_mesh.h"
 
 namespace insula::io {
 namespace {
@@ -99,7 +100,9 @@ std::string format_decimal(double value, int decimals) {
   return text;
 }
 
-ObjText obj_text(const shape::Scene& scene, std::string_view mtl_file_name) {
+ObjText obj_text(const shape::Scene& input, std::string_view mtl_file_name) {
+  shape::Scene expanded;  // shared-mesh instances written as plain geometry
+  const shape::Scene& scene = shape::expand_instances(input, expanded);
   const MaterialTable materials(scene);
   ObjText text;
   append_header(text.obj, scene, mtl_file_name);

@@ -9,6 +9,7 @@
 #include "io/render_raster.h"
 #include "io/render_scene.h"
 #include "kernel/mesh.h"
+#include "shape/part_mesh.h"
 
 // stb_image_write's implementation lives in this translation unit only, with static linkage so it
 // can never clash with another copy (tinygltf also bundles one).
@@ -132,8 +133,10 @@ double auto_cut_height(const shape::Building& building) {
   return std::max(base + std::min(kPlanCut, (eave - base) / 2), eave - kEavesClearance);
 }
 
-Image render(const shape::Scene& scene, const RenderOptions& options) {
+Image render(const shape::Scene& input, const RenderOptions& options) {
   if (!validate(options).empty()) return {};
+  shape::Scene expanded;  // shared-mesh instances drawn as plain parts
+  const shape::Scene& scene = shape::expand_instances(input, expanded);
   const int factor = options.supersample;
   raster::Framebuffer framebuffer(options.width * factor, options.height * factor);
   const raster::Camera camera =

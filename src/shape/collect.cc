@@ -1,6 +1,7 @@
 #include "shape/collect.h"
 
 #include <algorithm>
+#include <map>
 
 namespace insula::shape {
 
@@ -19,9 +20,20 @@ std::string building_id(const ShapeTree& tree, ShapeId root, std::size_t index,
   return options.id_prefix + std::to_string(index);
 }
 
+// How many collected shapes use each mesh (for CollectOptions::instances).
+std::map<const kernel::Mesh*, int> mesh_uses(const ShapeTree& tree, const CollectOptions& options) {
+  std::map<const kernel::Mesh*, int> uses;
+  if (!options.instances) return uses;
+  for (ShapeId id = 0; id < tree.size(); ++id) {
+    if (tree[id].mesh && selected(tree, id, options)) ++uses[tree[id].mesh.get()];
+  }
+  return uses;
+}
+
 }  // namespace
 
 Scene collect(const ShapeTree& tree, const CollectOptions& options) {
+  const std::map<const kernel::Mesh*, int> uses = mesh_uses(tree, options);
   Scene scene;
   scene.origin = options.origin;
   scene.crs = options.crs;
@@ -39,7 +51,12 @@ Scene collect(const ShapeTree& tree, const CollectOptions& options) {
       const std::string_view label = tree.first_label(id);
       part.name = label.empty() ? "shape_" + std::to_string(id) : std::string(label);
       part.attributes = tree.resolved_attributes(id);
-      part.mesh = mesh_to_world(*s.mesh, s.scope);
+      if (auto it = uses.find(s.mesh.get()); it != uses.end() && it->second > 1) {
+        part.instance_of = s.mesh;
+        part.instance_transform = scope_transform(s.scope);
+      } else {
+        part.mesh = mesh_to_world(*s.mesh, s.scope);
+      }
       building.parts.push_back(std::move(part));
     }
     if (!building.parts.empty()) scene.buildings.push_back(std::move(building));

@@ -17,6 +17,9 @@ struct CollectOptions {
   std::string id_prefix = "building_";
   kernel::Vec3 origin;  // copied to Scene::origin (world = local + origin)
   std::string crs;
+  // Shapes sharing one mesh (seed 001 §4.5: repeated decorations placed by connect/place) become
+  // instance parts (Part::instance_of, instance_transform) when two or more are collected.
+  bool instances = false;
 };
 
 // Part name = the shape's first label ("shape_<id>" without labels), attributes = its resolved
