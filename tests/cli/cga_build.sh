@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# `insula build FILE.cga`: the report's counts, identical outputs whatever --threads and for the
+# same --seed, --set and lot properties, --start, report-only runs, and bad input (grammar errors,
+# unknown --set names, runaway grammars) exiting 1 with a positioned diagnostic and no output.
+set -u
+insula=$1
+root=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+json() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($2)" "$1"; }
+
+ex=$root/examples/cga
+
+# The district: 12 lots from GeoJSON, per-lot height and style.
+"$insula" build "$ex/district.cga" --lot "$ex/district.geojson" --threads 1 \
+  -o "$tmp/d1.obj" --report "$tmp/d1.json" -q >/dev/null || fail "district build (1 thread)"
+"$insula" build "$ex/district.cga" --lot "$ex/district.geojson" --threads 2 \
+  -o "$tmp/d2.obj" --report "$tmp/d2.json" -q >/dev/null || fail "district build (2 threads)"
+# The OBJ names its own .mtl file; everything else must be byte-identical.
+same_obj() { cmp -s <(grep -v '^mtllib' "$1") <(grep -v '^mtllib' "$2"); }
+same_obj "$tmp/d1.obj" "$tmp/d2.obj" || fail "OBJ differs between --threads 1 and 2"
+cmp -s "$tmp/d1.mtl" "$tmp/d2.mtl" || fail "MTL differs between --threads 1 and 2"
+[ "$(json "$tmp/d1.json" "d['lots'], d['shapes'], d['terminals']")" = \
+  "$(json "$tmp/d2.json" "d['lots'], d['shapes'], d['terminals']")" ] || fail "report counts differ"
+[ "$(json "$tmp/d1.json" "d['lots']")" = "12" ] || fail "12 lots"
+[ "$(json "$tmp/d1.json" "d['terminals'] > 1000 and d['symbols']['Lot'] == 12")" = "True" ] ||
+  fail "district counts: $(cat "$tmp/d1.json")"
+[ "$(json "$tmp/d1.json" "sorted(d['seconds'])")" = \
+  "['check', 'compile', 'derive', 'parse', 'read_lots', 'scene', 'total', 'write_obj']" ] ||
+  fail "seconds per stage: $(json "$tmp/d1.json" "d['seconds']")"
+
+# Report only: the same counts, no geometry written.
+"$insula" build "$ex/district.cga" --lot "$ex/district.geojson" --report "$tmp/r.json" -q \
+  >"$tmp/out" || fail "report-only build"
+[ "$(json "$tmp/r.json" "d['terminals']")" = "$(json "$tmp/d1.json" "d['terminals']")" ] ||
+  fail "report-only terminals differ"
+
+# Seeds: the building's balconies are random; same seed same file, other seed other file.
+"$insula" build "$ex/building.cga" --lot "$ex/building_lot.geojson" --seed 3 -o "$tmp/b1.obj" -q \
+  >/dev/null || fail "building seed 3"
+"$insula" build "$ex/building.cga" --lot "$ex/building_lot.geojson" --seed 3 -o "$tmp/b2.obj" -q \
+  >/dev/null || fail "building seed 3 again"
+"$insula" build "$ex/building.cga" --lot "$ex/building_lot.geojson" --seed 4 -o "$tmp/b3.obj" -q \
+  >/dev/null || fail "building seed 4"
+same_obj "$tmp/b1.obj" "$tmp/b2.obj" || fail "same seed, different output"
+same_obj "$tmp/b1.obj" "$tmp/b3.obj" && fail "another seed, same output"
+
+# --set wins over lot properties, which win over attr defaults.
+cat >"$tmp/h.cga" <<'G'
+attr height = 5
+Lot --> extrude(height) Mass
+Mass --> report("height", Scope.sy) M
+G
+cat >"$tmp/lot.geojson" <<'G'
+{"type": "Feature", "id": "a", "properties": {"height": 7},
+ "geometry": {"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,8],[0,8],[0,0]]]}}
+G
+"$insula" build "$tmp/h.cga" --report "$tmp/h1.json" -q >/dev/null
+[ "$(json "$tmp/h1.json" "d['reports']['height']['sum']")" = "5.0" ] || fail "attr default"
+"$insula" build "$tmp/h.cga" --lot "$tmp/lot.geojson" --report "$tmp/h2.json" -q >/dev/null
+[ "$(json "$tmp/h2.json" "d['reports']['height']['sum']")" = "7.0" ] || fail "lot property"
+"$insula" build "$tmp/h.cga" --lot "$tmp/lot.geojson" --set height=9 --report "$tmp/h3.json" -q \
+  >/dev/null
+[ "$(json "$tmp/h3.json" "d['reports']['height']['sum']")" = "9.0" ] || fail "--set"
+
+# --start picks another start symbol.
+"$insula" build "$tmp/h.cga" --start Mass --report "$tmp/s.json" -q >/dev/null ||
+  fail "--start Mass"
+[ "$(json "$tmp/s.json" "d['start'], d['symbols'].get('Lot', 0)")" = "Mass 0" ] ||
+  fail "--start report: $(cat "$tmp/s.json")"
+
+# Bad input: exit 1, a positioned diagnostic, no output files.
+cat >"$tmp/runaway.cga" <<'G'
+Lot --> A
+grow: A ~> T(0, 0, 1) A
+G
+"$insula" build "$tmp/runaway.cga" -o "$tmp/x.obj" --report "$tmp/x.json" 2>"$tmp/err" >/dev/null
+[ $? -eq 1 ] || fail "runaway grammar exits 1"
+grep -qF "runaway.cga:2:1: error[CGA601]: derivation depth limit of 10000 reached in rule 'grow' (line 2)" \
+  "$tmp/err" || { fail "depth limit message"; cat "$tmp/err"; }
+[ -e "$tmp/x.obj" ] || [ -e "$tmp/x.json" ] && fail "output written after an error"
+
+"$insula" build "$tmp/h.cga" --set hieght=3 --report "$tmp/y.json" 2>"$tmp/err" >/dev/null
+[ $? -eq 1 ] || fail "unknown --set exits 1"
+grep -qF "error: --set 'hieght': the grammar declares no attr 'hieght'" "$tmp/err" ||
+  { fail "unknown --set message"; cat "$tmp/err"; }
+
+printf 'Lot --> split("x"){ 2: A | ~1: B\n' >"$tmp/bad.cga"
+"$insula" build "$tmp/bad.cga" --report "$tmp/z.json" 2>"$tmp/err" >/dev/null
+[ $? -eq 1 ] || fail "syntax error exits 1"
+grep -qE "bad.cga:[0-9]+:[0-9]+: error\[CGA1" "$tmp/err" || { fail "syntax message"; cat "$tmp/err"; }
+[ -e "$tmp/z.json" ] && fail "report written after a syntax error"
+
+[ $failures -eq 0 ] && echo "cga_build: ok"
+exit $((failures > 0))
