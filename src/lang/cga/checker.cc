@@ -6,9 +6,10 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <deque>
 #include <functional>
 #include <tuple>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include "lang/cga/checker_internal.h"
@@ -18,21 +19,22 @@ namespace detail {
 namespace {
 
 // Calls `visit` on every symbol item of `items`, through blocks and repeat patterns.
-void for_each_symbol(const std::vector<Item>& items, const std::function<void(const Item&)>& visit);
+template <typename Visit>
+void for_each_symbol(const std::vector<Item>& items, const Visit& visit);
 
-void for_each_symbol(const std::vector<Branch>& branches,
-                     const std::function<void(const Item&)>& visit) {
+template <typename Visit>
+void for_each_symbol(const std::vector<Branch>& branches, const Visit& visit) {
   for (const Branch& branch : branches) {
     for_each_symbol(branch.pattern, visit);
     for_each_symbol(branch.items, visit);
   }
 }
 
-void for_each_symbol(const std::vector<Item>& items,
-                     const std::function<void(const Item&)>& visit) {
+template <typename Visit>
+void for_each_symbol(const std::vector<Item>& items, const Visit& visit) {
   for (const Item& item : items) {
     if (item.kind == ItemKind::kSymbol) visit(item);
-    for_each_symbol(item.branches, visit);
+    if (!item.branches.empty()) for_each_symbol(item.branches, visit);
   }
 }
 
@@ -222,32 +224,39 @@ void Checker::choose_start() {
 // ignored: any of them may hold at derivation time). Rules of unreachable predecessors never
 // apply: warning CGA402.
 void Checker::compute_reachability() {
-  std::map<std::string_view, std::vector<CheckedRule*>> by_predecessor;
-  std::set<std::string, std::less<>> successors;
-  for (CheckedRule& checked : result_.rules) {
-    by_predecessor[checked.rule->predecessor].push_back(&checked);
-    for (const Alternative& alt : checked.rule->alternatives) {
-      for_each_symbol(alt.items, [&](const Item& item) { successors.insert(item.name); });
+  // One walk over the successors (symbols per rule), hash containers: the check stays well
+  // under the parse time on large grammars (docs/perf/cgacheck.md).
+  std::unordered_map<std::string_view, std::vector<std::size_t>> by_predecessor;
+  std::vector<std::vector<std::string_view>> symbols(result_.rules.size());
+  std::unordered_set<std::string_view> successors;
+  for (std::size_t r = 0; r < result_.rules.size(); ++r) {
+    by_predecessor[result_.rules[r].rule->predecessor].push_back(r);
+    for (const Alternative& alt : result_.rules[r].rule->alternatives) {
+      for_each_symbol(alt.items, [&](const Item& item) {
+        if (successors.insert(item.name).second || symbols[r].empty() ||
+            symbols[r].back() != item.name) {
+          symbols[r].push_back(item.name);
+        }
+      });
     }
   }
-  for (const std::string& symbol : successors) {
-    if (!by_predecessor.count(symbol)) result_.terminals.push_back(symbol);
+  for (const std::string_view symbol : successors) {
+    if (!by_predecessor.count(symbol)) result_.terminals.emplace_back(symbol);
   }
+  std::sort(result_.terminals.begin(), result_.terminals.end());
   if (result_.start_symbol.empty()) return;
 
-  std::set<std::string_view> seen{result_.start_symbol};
-  std::deque<std::string_view> queue{result_.start_symbol};
+  std::unordered_set<std::string_view> seen{result_.start_symbol};
+  std::vector<std::string_view> queue{result_.start_symbol};
   while (!queue.empty()) {
-    const std::string_view symbol = queue.front();
-    queue.pop_front();
+    const std::string_view symbol = queue.back();
+    queue.pop_back();
     auto it = by_predecessor.find(symbol);
     if (it == by_predecessor.end()) continue;
-    for (CheckedRule* checked : it->second) {
-      checked->reachable = true;
-      for (const Alternative& alt : checked->rule->alternatives) {
-        for_each_symbol(alt.items, [&](const Item& item) {
-          if (seen.insert(item.name).second) queue.push_back(item.name);
-        });
+    for (const std::size_t r : it->second) {
+      result_.rules[r].reachable = true;
+      for (const std::string_view next : symbols[r]) {
+        if (seen.insert(next).second) queue.push_back(next);
       }
     }
   }
