@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# End-to-end test of `insula build FILE.bldg`: every example of examples/bldg/ to every format,
+# checked by the third-party validators (glTF, CityJSON schema, assimp), the report's fields, the
+# SVG floor plans, a village built on lots, determinism, and errors that leave no output.
+set -u
+insula=$1
+root=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+expect_exit() {  # code, description, command...
+  local want=$1 what=$2
+  shift 2
+  "$@" >"$tmp/out.txt" 2>"$tmp/err.txt"
+  local got=$?
+  [ "$got" -eq "$want" ] || { fail "$what: exit $got, expected $want"; cat "$tmp/err.txt"; }
+}
+examples=$root/examples/bldg
+
+names=()
+for file in "$examples"/*.bldg; do
+  name=$(basename "$file" .bldg)
+  names+=("$name")
+  out=$tmp/$name
+  expect_exit 0 "build $name" "$insula" build "$file" -o "$out.glb" -o "$out.city.json" \
+    -o "$out.obj" -o "$out.svg" -o "$out.png" --image-size 320x240 --report "$out.json" --quiet
+  for f in "$out.glb" "$out.city.json" "$out.obj" "$out.mtl" "$out.svg" "$out.png" "$out.json"; do
+    [ -s "$f" ] || fail "$name: missing output $(basename "$f")"
+  done
+  assimp info "$out.obj" >"$tmp/v.txt" 2>&1 || { fail "$name: assimp info obj"; tail -5 "$tmp/v.txt"; }
+done
+# Third-party validators, every example in one run each.
+node "$root/tools/validate_gltf.mjs" "$tmp"/*.glb >"$tmp/v.txt" 2>&1 || { fail "glTF validator"; cat "$tmp/v.txt"; }
+node "$root/tools/validate_cityjson.mjs" "$tmp"/*.city.json >"$tmp/v.txt" 2>&1 || { fail "CityJSON schema"; cat "$tmp/v.txt"; }
+# Per example: the report (every room with its fields, every room reachable, counts, timings),
+# the plan (a panel per storey, every room labelled) and the CityJSON objects (a BuildingRoom per
+# room, a BuildingStorey per storey, interior surfaces, doors and windows).
+node -e '
+  const fs = require("fs");
+  const [dir, ...names] = process.argv.slice(1);
+  let failed = false;
+  for (const name of names) {
+    const r = JSON.parse(fs.readFileSync(`${dir}/${name}.json`));
+    const c = JSON.parse(fs.readFileSync(`${dir}/${name}.city.json`));
+    const svg = fs.readFileSync(`${dir}/${name}.svg`, "utf8");
+    const problems = [];
+    if (!Array.isArray(r.rooms) || r.rooms.length === 0) problems.push("rooms");
+    for (const room of r.rooms || []) {
+      for (const k of ["name", "type", "storey", "area", "neighbors", "floor_area"])
+        if (!(k in room)) problems.push("room field " + k);
+      if (!(room.floor_area > 0 && room.floor_area < room.area)) problems.push("floor_area of " + room.name);
+      if (!svg.includes(`>${room.name}</text>`)) problems.push("room " + room.name + " not labelled in the plan");
+    }
+    for (const k of ["doors", "windows", "entrances", "unreachable_rooms", "stairs"])
+      if (!Array.isArray(r[k])) problems.push(k);
+    if ((r.unreachable_rooms || []).length !== 0) problems.push("unreachable rooms");
+    if ((r.entrances || []).length < 1) problems.push("no entrance");
+    if (!(r.vertices > 0 && r.triangles > 0)) problems.push("vertices/triangles");
+    for (const k of ["total", "parse", "floor_plan", "build", "walls", "slabs", "roofs", "write_glb"])
+      if (typeof (r.seconds || {})[k] !== "number") problems.push("seconds." + k);
+    if (r.counts.rooms !== r.rooms.length) problems.push("counts.rooms");
+    const panels = (svg.match(/class="storey"/g) || []).length;
+    if (panels !== r.storeys) problems.push(`${panels} plan panels for ${r.storeys} storeys`);
+    const objects = Object.values(c.CityObjects);
+    const count = (t) => objects.filter((o) => o.type === t).length;
+    const types = new Set();
+    for (const o of objects) for (const g of o.geometry || []) for (const s of (g.semantics || {}).surfaces || []) types.add(s.type);
+    if (count("BuildingRoom") !== r.rooms.length) problems.push("CityJSON rooms " + count("BuildingRoom"));
+    if (count("BuildingStorey") !== r.storeys) problems.push("CityJSON storeys " + count("BuildingStorey"));
+    for (const t of ["FloorSurface", "CeilingSurface", "InteriorWallSurface", "Door", "Window", "RoofSurface", "WallSurface"])
+      if (!types.has(t)) problems.push("CityJSON: no " + t);
+    if (problems.length) { console.log(`FAIL: ${name}: ${problems.join(", ")}`); failed = true; }
+  }
+  process.exit(failed ? 1 : 0);' "$tmp" "${names[@]}" || fail "report, plan or CityJSON content"
+
+# The two-storey house: a stair between the storeys, two plan panels.
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+         if (r.storeys !== 2 || r.stairs.length !== 1 || r.counts.stairs !== 1) process.exit(1);' \
+  "$tmp/two_storey.json" || fail "two_storey: one stair between two storeys"
+grep -q 'class="stair"' "$tmp/two_storey.svg" || fail "two_storey: stair drawn in the plan"
+# Fig. 10: each merged roof is one roof.
+for shape in u t s h; do
+  node -e 'if (JSON.parse(require("fs").readFileSync(process.argv[1])).counts.roofs !== 1) process.exit(1);' \
+    "$tmp/roofs_$shape.json" || fail "roofs_$shape: one merged HipGlued roof"
+done
+
+# Same input, same bytes.
+expect_exit 0 "rebuild" "$insula" build "$examples/domus.bldg" -o "$tmp/again.glb" -o "$tmp/again.city.json" --quiet
+cmp -s "$tmp/domus.glb" "$tmp/again.glb" || fail "domus GLB differs between runs"
+cmp -s "$tmp/domus.city.json" "$tmp/again.city.json" || fail "domus CityJSON differs between runs"
+
+# The village: one building per lot, each lot's grammar from its "bldg" property.
+village=$examples/village
+expect_exit 0 "village" "$insula" build "$village/village.bldg" --lot "$village/village.geojson" \
+  -o "$tmp/village.glb" -o "$tmp/village.city.json" --report "$tmp/village.json" --quiet
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+         if (r.buildings.length !== 27 || r.unreachable_rooms.length !== 0 ||
+             !r.rooms.every((room) => typeof room.building === "string")) process.exit(1);' \
+  "$tmp/village.json" || fail "village: 27 buildings, all rooms reachable"
+node "$root/tools/validate_gltf.mjs" "$tmp/village.glb" >/dev/null 2>&1 || fail "village: glTF validator"
+node "$root/tools/validate_cityjson.mjs" "$tmp/village.city.json" >/dev/null 2>&1 || fail "village: CityJSON schema"
+
+# Restriction rules change the model: thicker outer walls give less floor area.
+printf 'outer_wall_thickness = 0.6\ncolor.RoofSurface = "#336699"\n' >"$tmp/thick.rules"
+expect_exit 0 "rules" "$insula" build "$examples/two_storey.bldg" --rules "$tmp/thick.rules" --report "$tmp/thick.json" --quiet
+node -e 'const fs = require("fs");
+         const a = JSON.parse(fs.readFileSync(process.argv[1])), b = JSON.parse(fs.readFileSync(process.argv[2]));
+         const sum = (r) => r.rooms.reduce((s, room) => s + room.floor_area, 0);
+         if (!(sum(b) < sum(a) - 1)) process.exit(1);' "$tmp/two_storey.json" "$tmp/thick.json" ||
+  fail "--rules: thicker outer walls leave less floor area"
+
+# Errors: file:line:col, exit 1, nothing written.
+printf 'b -> building("x", [(0, 0), (1, 0), (1, 1)]) : {p}\np -> buildingpart(Hip, 3) : {f}\nf -> floor() : {r}\nr -> room(kitchen, huge)\n' >"$tmp/bad.bldg"
+expect_exit 1 "malformed grammar" "$insula" build "$tmp/bad.bldg" -o "$tmp/bad.glb" --report "$tmp/bad.json"
+grep -q "bad.bldg:4:[0-9]*: error" "$tmp/err.txt" || { fail "malformed grammar: file:line:col"; cat "$tmp/err.txt"; }
+[ -e "$tmp/bad.glb" ] || [ -e "$tmp/bad.json" ] && fail "malformed grammar: output written"
+printf 'h -> building("x", geojson("lots.geojson", "nope")) : {p}\np -> buildingpart(Hip, 3) : {f}\nf -> floor() : {r}\nr -> room(kitchen, medium, 4, 1, true)\n' >"$tmp/lot.bldg"
+printf '{"type": "FeatureCollection", "features": [{"type": "Feature", "id": "a", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 0], [10, 8], [0, 8], [0, 0]]]}}]}' >"$tmp/lots.geojson"
+expect_exit 1 "missing feature" "$insula" build "$tmp/lot.bldg" -o "$tmp/lot.glb"
+grep -q "lot.bldg:1:[0-9]*: error.*no feature 'nope'" "$tmp/err.txt" || { fail "missing feature: message"; cat "$tmp/err.txt"; }
+[ -e "$tmp/lot.glb" ] && fail "missing feature: output written"
+sed -i 's/"nope"/"a"/' "$tmp/lot.bldg"
+expect_exit 0 "outline from a GeoJSON feature" "$insula" build "$tmp/lot.bldg" -o "$tmp/lot.glb" --report "$tmp/lot.json" --quiet
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+         if (Math.abs(r.rooms[0].area - 80) > 1e-6) process.exit(1);' "$tmp/lot.json" ||
+  fail "outline from a GeoJSON feature: one 10 x 8 room"
+printf 'storey_height = 1\n' >"$tmp/bad.rules"
+expect_exit 1 "bad rules" "$insula" build "$examples/two_storey.bldg" --rules "$tmp/bad.rules" -o "$tmp/r.glb"
+grep -q "bad.rules:1:[0-9]*: error" "$tmp/err.txt" || { fail "bad rules: file:line:col"; cat "$tmp/err.txt"; }
+[ -e "$tmp/r.glb" ] && fail "bad rules: output written"
+expect_exit 1 "missing input" "$insula" build "$tmp/none.bldg" -o "$tmp/n.glb"
+expect_exit 2 "unknown output format" "$insula" build "$examples/domus.bldg" -o "$tmp/x.xyz"
+
+[ "$failures" -eq 0 ] && echo "bldg_build: all passed"
+exit $((failures > 0))
