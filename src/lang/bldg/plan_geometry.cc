@@ -254,6 +254,8 @@ void weld(const std::vector<Polygon*>& cells, double tolerance) {
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return points[a]->x < points[b]->x || (points[a]->x == points[b]->x && a < b);
   });
+  const double tol2 = tolerance * tolerance;
+  auto dist2 = [](Vec2 a, Vec2 b) { return kernel::dot(a - b, a - b); };
   std::vector<Vec2> original(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) original[i] = *points[i];
   for (std::size_t k = 0; k < order.size(); ++k) {
@@ -261,7 +263,7 @@ void weld(const std::vector<Polygon*>& cells, double tolerance) {
     for (std::size_t m = k; m-- > 0;) {
       const std::size_t j = order[m];
       if (original[i].x - original[j].x > tolerance) break;
-      if (kernel::length(original[i] - original[j]) <= tolerance) {
+      if (dist2(original[i], original[j]) <= tol2) {
         *points[i] = *points[j];
         break;
       }
@@ -282,11 +284,14 @@ void weld(const std::vector<Polygon*>& cells, double tolerance) {
             for (std::size_t e = 0; e < n; ++e) {
               const Vec2 p = other[e];
               const Vec2 q = other[(e + 1) % n];
-              if (kernel::length(v - p) <= tolerance || kernel::length(v - q) <= tolerance)
-                continue;
-              if (kernel::distance_to_segment(v, p, q) > tolerance) continue;
+              if (dist2(v, p) <= tol2 || dist2(v, q) <= tol2) continue;
               const Vec2 d = q - p;
-              v = p + d * (kernel::dot(v - p, d) / kernel::dot(d, d));
+              const double dd = kernel::dot(d, d);
+              const double t = dd > 0 ? kernel::dot(v - p, d) / dd : -1;
+              if (t <= 0 || t >= 1) continue;
+              const Vec2 foot = p + d * t;
+              if (dist2(v, foot) > tol2) continue;
+              v = foot;
               return true;
             }
             return false;

@@ -164,17 +164,26 @@ int request_connections(Work& work, std::vector<DoorRequest>& doors) {
         main_room = r;
         break;
       }
+    // Longest shared wall piece of every pair of the storey, computed once.
+    const std::size_t m = rooms.size();
+    std::vector<double> shared(m * m, 0);
+    for (std::size_t i = 0; i < m; ++i)
+      for (std::size_t j = i + 1; j < m; ++j)
+        shared[i * m + j] = shared[j * m + i] = longest_shared(work, rooms[i], rooms[j]);
     for (std::size_t guard = 0; guard < rooms.size(); ++guard) {
       // The adjacent pair, one room in the main group, with the longest shared boundary.
       int best_a = -1;
       int best_b = -1;
       double best = 0;
       const int main_set = find_set(parent, main_room);
-      for (int a : rooms) {
+      for (std::size_t i = 0; i < m; ++i) {
+        const int a = rooms[i];
         if (find_set(parent, a) != main_set) continue;
-        for (int b : rooms) {
+        for (std::size_t j = 0; j < m; ++j) {
+          const int b = rooms[j];
+          if (shared[i * m + j] <= 0) continue;
           if (find_set(parent, b) == main_set || has_failed(a, b)) continue;
-          const double len = longest_shared(work, a, b);
+          const double len = shared[i * m + j];
           if (len > best) {
             best = len;
             best_a = a;
@@ -249,6 +258,7 @@ double longest_shared(const Work& work, int a, int b) {
   const WorkRoom& ra = work.rooms[a];
   const WorkRoom& rb = work.rooms[b];
   if (!ra.has_cell || !rb.has_cell) return 0;
+  if (!bounds_touch(kernel::bounds(ra.cell), kernel::bounds(rb.cell), kLineTolerance)) return 0;
   double best = 0;
   for (const EdgePiece& piece : shared_segments(ra.cell, rb.cell))
     best = std::max(best, piece.length());

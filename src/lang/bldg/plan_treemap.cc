@@ -57,6 +57,37 @@ double place_cut(const AreaFunction& area, double start, double w0, double exten
   return start + 0.5 * (lo + hi);
 }
 
+bool convex(const kernel::Ring& ring) {
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const kernel::Vec2 a = ring[i];
+    const kernel::Vec2 b = ring[(i + 1) % n];
+    const kernel::Vec2 c = ring[(i + 2) % n];
+    if (kernel::cross(b - a, c - b) < -1e-12) return false;
+  }
+  return true;
+}
+
+// Sutherland-Hodgman against sign x (coord - t) <= 0: exact for a convex ring (the cut lies
+// exactly on the line, with no boolean grid), which is most cells.
+kernel::Ring clip(const kernel::Ring& ring, bool along_x, double t, double sign) {
+  kernel::Ring out;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const kernel::Vec2 p = ring[i];
+    const kernel::Vec2 q = ring[(i + 1) % n];
+    const double cp = sign * ((along_x ? p.x : p.y) - t);
+    const double cq = sign * ((along_x ? q.x : q.y) - t);
+    if (cp <= 0) out.push_back(p);
+    if ((cp < 0 && cq > 0) || (cp > 0 && cq < 0)) {
+      kernel::Vec2 x = p + (q - p) * (cp / (cp - cq));
+      (along_x ? x.x : x.y) = t;
+      out.push_back(x);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::vector<Polygon>> split_region(const std::vector<Polygon>& region,
@@ -93,7 +124,17 @@ std::vector<std::vector<Polygon>> split_region(const std::vector<Polygon>& regio
   // Eq. 3: each auxiliary rectangle (reaching past the region across the axis, and past the
   // minimum rectangle at both ends of the row) intersected with the region.
   const double pad = 1 + 0.01 * std::max(box.max.x - box.min.x, box.max.y - box.min.y);
+  const bool fast = region.size() == 1 && region[0].holes.empty() && convex(region[0].outer);
   for (std::size_t i = 0; i < weights.size(); ++i) {
+    if (fast) {
+      kernel::Ring ring = region[0].outer;
+      if (i > 0) ring = clip(ring, along_x, cuts[i], -1);
+      if (i + 1 < weights.size()) ring = clip(ring, along_x, cuts[i + 1], 1);
+      Polygon p{std::move(ring), {}};
+      simplify(p);
+      if (p.outer.size() >= 3 && kernel::area(p) > 1e-9) cells[i].push_back(std::move(p));
+      continue;
+    }
     const double a = i == 0 ? lo - pad : cuts[i];
     const double b = i + 1 == weights.size() ? hi + pad : cuts[i + 1];
     if (b - a <= 0) continue;
