@@ -1,14 +1,186 @@
-// `insula build FILE.lua`. Being written (see the open issue for the .lua front-end).
+// `insula build FILE.lua [--seed N] [--assets DIR]... [--set name=value]... [-o OUT]...
+// [--report R.json]`: runs a component program (seed 001) in the sandboxed runtime, collects the
+// tree's leaves and writes them. Assets are OBJ files read only from the --assets folders.
 #include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
 
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
+#include "apps/cli/input_file.h"
+#include "io/obj_reader.h"
+#include "lang/lua/runtime.h"
 
 namespace insula::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// OBJ assets by name, confined to the asset folders: a name is a relative path (".obj" added when
+// it has no extension); absolute names, ".." and symbolic links leading out of the folder are
+// refused (docs/lua-api.md, "Sandbox").
+class FolderAssets : public shape::AssetProvider {
+ public:
+  explicit FolderAssets(std::vector<std::string> folders) : folders_(std::move(folders)) {}
+
+  std::shared_ptr<const kernel::Mesh> find(std::string_view name,
+                                           std::string& error) const override {
+    const std::string key(name);
+    if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+    fs::path relative(key);
+    if (key.empty() || relative.is_absolute() || relative.has_root_name()) {
+      error = "asset '" + key + "': only names inside the asset folders are allowed";
+      return nullptr;
+    }
+    for (const fs::path& part : relative) {
+      if (part == "..") {
+        error = "asset '" + key + "': '..' is not allowed in asset names";
+        return nullptr;
+      }
+    }
+    if (!relative.has_extension()) relative += ".obj";
+    for (const std::string& folder : folders_) {
+      std::error_code ec;
+      const fs::path root = fs::canonical(folder, ec);
+      if (ec) continue;
+      const fs::path candidate = fs::weakly_canonical(root / relative, ec);
+      if (ec || !fs::is_regular_file(candidate, ec)) continue;
+      const auto [end, unused] =
+          std::mismatch(root.begin(), root.end(), candidate.begin(), candidate.end());
+      (void)unused;
+      if (end != root.end()) {
+        error = "asset '" + key + "' leads outside its asset folder";
+        return nullptr;
+      }
+      return load(key, candidate, error);
+    }
+    error = "asset '" + key + "' not found in the asset folders";
+    return nullptr;
+  }
+
+ private:
+  std::shared_ptr<const kernel::Mesh> load(const std::string& key, const fs::path& path,
+                                           std::string& error) const {
+    const std::optional<std::string> text = read_input_file(path.string());
+    if (!text) {
+      error = "cannot read asset '" + key + "'";
+      return nullptr;
+    }
+    base::Result<kernel::Mesh> mesh = io::read_obj(*text, path.filename().string());
+    if (!mesh) {
+      error = "asset '" + key + "': " + base::render(mesh.diagnostics().front());
+      return nullptr;
+    }
+    auto shared = std::make_shared<const kernel::Mesh>(std::move(mesh.value()));
+    cache_.emplace(key, shared);
+    return shared;
+  }
+
+  std::vector<std::string> folders_;
+  mutable std::map<std::string, std::shared_ptr<const kernel::Mesh>> cache_;
+};
+
+// --set values: limit_* entries set the runtime limits, the others become params.<name>.
+bool apply_sets(const BuildOptions& options, lua::RunOptions& run, std::string& error) {
+  std::vector<std::pair<std::string, shape::Value>> sets;
+  if (!parse_sets(options.sets, sets, error)) return false;
+  for (auto& [name, value] : sets) {
+    const double* number = std::get_if<double>(&value);
+    const bool limit = name.rfind("limit_", 0) == 0;
+    if (limit && (number == nullptr || *number < 1 || *number > 1e15)) {
+      error = "--set " + name + ": expected a number >= 1";
+      return false;
+    }
+    if (name == "limit_instructions") {
+      run.limits.instructions = static_cast<std::uint64_t>(*number);
+    } else if (name == "limit_memory_mb") {
+      run.limits.memory_bytes = static_cast<std::size_t>(*number) << 20;
+    } else if (name == "limit_depth") {
+      run.limits.call_depth = static_cast<int>(std::min(*number, 1e6));
+    } else if (name == "limit_components") {
+      run.limits.components = static_cast<std::size_t>(*number);
+    } else if (limit) {
+      error = "--set " + name +
+              ": unknown limit (limit_instructions, limit_memory_mb, limit_depth, "
+              "limit_components)";
+      return false;
+    } else {
+      run.params.emplace_back(name, std::move(value));
+    }
+  }
+  return true;
+}
+
+void count_geometry(const shape::Scene& scene, nlohmann::json& report) {
+  std::size_t parts = 0;
+  std::size_t vertices = 0;
+  std::size_t triangles = 0;
+  for (const shape::Building& b : scene.buildings) {
+    for (const shape::Part& part : b.parts) {
+      const kernel::Mesh& mesh = part.instance_of ? *part.instance_of : part.mesh;
+      ++parts;
+      vertices += mesh.vertex_count();
+      triangles += mesh.triangle_count();
+    }
+  }
+  report["buildings"] = scene.buildings.size();
+  report["parts"] = parts;
+  report["vertices"] = vertices;
+  report["triangles"] = triangles;
+}
+
+}  // namespace
 
 int build_lua(const BuildOptions& options) {
-  std::fprintf(stderr, "insula: %s: the .lua front-end cannot build yet\n", options.input.c_str());
-  return kExitInternal;
+  const Stopwatch total;
+  if (const int code = check_build_outputs(options); code != kExitDone) return code;
+  lua::RunOptions run;
+  run.seed = options.seed;
+  std::string error;
+  if (!apply_sets(options, run, error)) {
+    std::fprintf(stderr, "insula: %s\n", error.c_str());
+    return kExitUsage;
+  }
+  for (const std::string& folder : options.assets) {
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) {
+      std::fprintf(stderr, "insula: --assets %s: not a directory\n", folder.c_str());
+      return kExitUsage;
+    }
+  }
+  const std::optional<std::string> text = read_input_file(options.input);
+  if (!text) {
+    std::fprintf(stderr, "%s: error: cannot read file\n", options.input.c_str());
+    return kExitInput;
+  }
+  const base::Source source(options.input, *text);
+  const FolderAssets assets(options.assets);
+  run.assets = &assets;
+  if (!options.quiet) {
+    run.print = [&](const std::string& line) {
+      std::fprintf(stderr, "%s: %s\n", options.input.c_str(), line.c_str());
+    };
+  }
+  nlohmann::json report;
+  Stopwatch stage;
+  lua::Runtime runtime(std::move(run));
+  const std::vector<base::Diagnostic> diagnostics = runtime.run(source);
+  report["seconds"]["run"] = stage.seconds();
+  print_diagnostics(diagnostics, source, options.quiet);
+  if (base::has_errors(diagnostics)) return kExitInput;
+  stage = Stopwatch();
+  const shape::Scene scene = lua::collect_program(runtime.program());
+  report["seconds"]["collect"] = stage.seconds();
+  const lua::RunStats stats = runtime.stats();
+  report["input"] = options.input;
+  report["seed"] = options.seed;
+  report["components"] = runtime.tree().size();
+  report["roots"] = runtime.tree().roots().size();
+  report["operations"] = stats.operations;
+  report["lua"] = {{"instructions", stats.instructions}, {"peak_memory_bytes", stats.peak_memory}};
+  count_geometry(scene, report);
+  return finish_build(options, scene, report, total);
 }
 
 }  // namespace insula::cli

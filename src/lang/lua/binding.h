@@ -34,6 +34,7 @@
 #include <lua.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -44,42 +45,13 @@
 #include <vector>
 
 #include "kernel/vec.h"
+#include "lang/lua/program.h"
 #include "shape/operation.h"
 #include "shape/rng.h"
 #include "shape/shape_tree.h"
 #include "shape/value.h"
 
 namespace insula::lua {
-
-// The state of one running program, reachable from any lua_State of it through program(L).
-struct Program {
-  shape::ShapeTree tree;
-  // OBJ assets by name (build_lua.cc: io's OBJ reader restricted to the --assets folders); null
-  // when the program may read no assets ("componentFromFile: no asset folders given").
-  const shape::AssetProvider* assets = nullptr;
-  // The program's random stream (math.random, and any random choice a binding makes that is not
-  // tied to one component: e.g. connect() without a position; seed 001 §3.4.2). Seeded by --seed.
-  shape::Rng rng{0};
-  std::string file;  // the program's file name, as printed in diagnostics
-  // Every operation a binding ran, for the report ("operations", as in seed 001 §5's table).
-  std::uint64_t operations = 0;
-  // Per-family state for bindings that remember facts beyond the tree (e.g. openings to cut at
-  // solidGeometry time), keyed by family name; see extension<T>().
-  std::vector<std::pair<std::string, std::shared_ptr<void>>> extensions;
-
-  explicit Program(std::uint64_t seed) : tree(seed), rng(shape::mix64(seed ^ 0x1u)) {}
-  // The state of family `name`, default-constructed on first use.
-  template <typename T>
-  T& extension(std::string_view name) {
-    for (auto& [key, value] : extensions) {
-      if (key == name) return *static_cast<T*>(value.get());
-    }
-    auto value = std::make_shared<T>();
-    T& ref = *value;
-    extensions.emplace_back(std::string(name), std::move(value));
-    return ref;
-  }
-};
 
 // The program a state belongs to (stored in the state's extra space; O(1)).
 Program& program(lua_State* L);
@@ -99,28 +71,22 @@ class Error : public std::runtime_error {
 [[noreturn]] void arg_error(std::string_view operation, int arg, std::string_view message);
 // Throws Error(operation, message).
 [[noreturn]] void op_error(std::string_view operation, std::string_view message);
-// Throws op_error(operation, result.error) when the operation failed; counts the operation.
+// Throws op_error(operation, result.error) when the operation failed; counts the operation and
+// stops the program when the tree passed Limits::components.
 void check_op(lua_State* L, std::string_view operation, const shape::OpResult& result);
 
 using Body = int (*)(lua_State*);
-// Converts a thrown Error (or std::exception, reported as "internal error: ...") into a Lua error
-// raised at the calling Lua line. Register protect<body>, never the body itself.
-int raise_error(lua_State* L, const std::string& operation, const std::string& message);
+// Runs `body`; on a thrown Error (or std::exception, reported as "internal error: ...") pushes the
+// located message "file:line: in <operation>: <message>" (the calling Lua line) and returns false,
+// with every C++ object of the body already destroyed.
+bool call_body(lua_State* L, Body body, int& results) noexcept;
+// Register protect<body>, never the body itself: the Lua error is raised here, where no C++
+// frame with a destructor is left to skip.
 template <Body F>
 int protect(lua_State* L) {
-  std::string operation;
-  std::string message;
-  try {
-    return F(L);
-  } catch (const Error& e) {
-    operation = e.operation();
-    message = e.what();
-  } catch (const std::bad_alloc&) {
-    message = "not enough memory";
-  } catch (const std::exception& e) {
-    message = std::string("internal error: ") + e.what();
-  }
-  return raise_error(L, operation, message);  // after the try block: no C++ frame left alive
+  int results = 0;
+  if (call_body(L, F, results)) return results;
+  return lua_error(L);
 }
 
 // ---- components: full userdata of metatable "insula.Component" holding a ShapeId. Fields:
