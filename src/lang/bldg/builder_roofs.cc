@@ -59,8 +59,32 @@ std::vector<std::uint32_t> ring_successors(const kernel::Polygon& p) {
 }
 
 // One closed roof solid over `footprint` with its eaves at `eave_z`, `height` high.
+// A flat roof is a slab kFlatThickness thick over the outline grown by the overhang: the kernel's
+// flat roof is a single face, which over an outline without overhang would enclose no volume.
+constexpr double kFlatThickness = 0.25;  // m, the kernel's fascia
+
+kernel::Mesh flat_roof(const kernel::Polygon& footprint, double eave_z, double overhang,
+                       std::string& message) {
+  std::vector<kernel::Polygon> slab{footprint};
+  if (overhang > 0) {
+    kernel::BooleanResult grown = kernel::offset(slab, overhang);
+    if (grown.ok() && grown.polygons.size() == 1) slab = std::move(grown.polygons);
+  }
+  kernel::Mesh mesh;
+  for (const kernel::Polygon& p : slab) {
+    if (!add_prism(mesh, p, eave_z, eave_z + kFlatThickness,
+                   {SemanticClass::kOuterCeilingSurface, 0, 0}, {SemanticClass::kRoofSurface, 0, 1},
+                   {SemanticClass::kWallSurface, 0, 2})) {
+      message = "the flat roof could not be built";
+      return {};
+    }
+  }
+  return mesh;
+}
+
 kernel::Mesh roof_solid(const kernel::Polygon& footprint, RoofKind kind, double height,
                         double eave_z, double overhang, std::string& message) {
+  if (kind == RoofKind::kFlat) return flat_roof(footprint, eave_z, overhang, message);
   kernel::Mesh mesh;
   kernel::RoofSpec spec;
   spec.type = roof_type(kind);
@@ -96,7 +120,7 @@ kernel::Mesh roof_solid(const kernel::Polygon& footprint, RoofKind kind, double 
   // Scale the heights above the eaves so the top is `height` above them (see the file comment).
   double top = eave_z;
   for (const Vec3& p : mesh.positions()) top = std::max(top, p.z);
-  if (spec.type != kernel::RoofType::kFlat && top - eave_z > 1e-6 && height > 0) {
+  if (top - eave_z > 1e-6 && height > 0) {
     const double scale = height / (top - eave_z);
     for (Vec3& p : mesh.positions()) p.z = eave_z + (p.z - eave_z) * scale;
   }

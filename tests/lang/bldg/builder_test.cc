@@ -295,9 +295,11 @@ TEST(Builder, EveryRoofKindReachesItsHeight) {
   }
   const BuildResult flat =
       build_building(building(), one_storey(RoofKind::kFlat, 1), Restrictions{});
-  // The outline plus 0.3 m of overhang all round, and its 0.25 m fascia (kernel/roof.h).
-  EXPECT_NEAR(area_of(find_part(flat, "roof p")->mesh, SemanticClass::kRoofSurface),
-              10.6 * 8.6 + 2 * (10.6 + 8.6) * 0.25, 1e-6);
+  // A 0.25 m slab over the outline plus 0.3 m of overhang all round.
+  const kernel::Mesh& slab = find_part(flat, "roof p")->mesh;
+  EXPECT_NEAR(area_of(slab, SemanticClass::kRoofSurface), 10.6 * 8.6, 1e-6);
+  EXPECT_NEAR(kernel::volume(slab), 10.6 * 8.6 * 0.25, 1e-6);
+  EXPECT_NEAR(top_of(slab), 3.3 + 0.25, 1e-9);
   const BuildResult none =
       build_building(building(), one_storey(RoofKind::kNone, 1), Restrictions{});
   EXPECT_EQ(find_part(none, "roof p"), nullptr);
