@@ -1,12 +1,12 @@
 #include "lang/cga/derivation_graph.h"
 
-#include <nlohmann/json.hpp>
-
 #include <initializer_list>
 #include <map>
 #include <string_view>
+#include <unordered_set>
 #include <utility>
 
+#include "lang/cga/json_out.h"
 #include "lang/cga/printer.h"
 
 namespace insula::lang::cga {
@@ -133,16 +133,16 @@ class Builder {
           break;
         }
       }
+      seen_.clear();
       collect(alt.items, edge);
       graph_.edges.push_back(std::move(edge));
     }
   }
 
+  // Each target once per edge; `seen_` holds the targets of the edge being built, so a successor
+  // with thousands of shapes stays linear.
   void add_target(RuleEdge& edge, std::size_t target) {
-    for (const std::size_t t : edge.targets) {
-      if (t == target) return;
-    }
-    edge.targets.push_back(target);
+    if (seen_.insert(target).second) edge.targets.push_back(target);
   }
 
   // Every shape the successor generates, through nested blocks and repeat patterns
@@ -180,6 +180,7 @@ class Builder {
   const base::Source& source_;
   DerivationGraph graph_;
   std::map<std::string, std::size_t> index_;
+  std::unordered_set<std::size_t> seen_;
 };
 
 std::string dot_string(const std::string& text) {
@@ -260,40 +261,72 @@ std::string graph_dot(const DerivationGraph& graph) {
 }
 
 std::string graph_json(const DerivationGraph& graph) {
-  using nlohmann::json;
-  json nodes = json::array();
+  JsonOut out;
+  const auto field = [&](std::string_view name, std::string_view value) {
+    out.key(name);
+    out.string(value);
+  };
+  out.begin_object();
+  field("format", "insula-cga-derivation-graph");
+  out.key("version");
+  out.integer(1);
+  field("file", graph.file);
+  out.key("nodes");
+  out.begin_array();
   for (std::size_t i = 0; i < graph.nodes.size(); ++i) {
     const GraphNode& n = graph.nodes[i];
-    nodes.push_back({{"id", node_id(i)},
-                     {"name", n.name},
-                     {"kind", node_kind_name(n.kind)},
-                     {"predefined", n.predefined},
-                     {"root", n.root}});
+    out.begin_object();
+    field("id", node_id(i));
+    field("name", n.name);
+    field("kind", node_kind_name(n.kind));
+    out.key("predefined");
+    out.boolean(n.predefined);
+    out.key("root");
+    out.boolean(n.root);
+    out.end_object();
   }
-  json edges = json::array();
+  out.end_array();
+  out.key("edges");
+  out.begin_array();
   for (std::size_t i = 0; i < graph.edges.size(); ++i) {
     const RuleEdge& e = graph.edges[i];
-    json targets = json::array();
-    for (const std::size_t t : e.targets) targets.push_back(node_id(t));
-    edges.push_back({{"id", cat({"e", std::to_string(i)})},
-                     {"rule", e.rule_id},
-                     {"priority", e.priority},
-                     {"rulePart", e.rule_part},
-                     {"type", edge_type_name(e.type)},
-                     {"source", node_id(e.source)},
-                     {"targets", std::move(targets)},
-                     {"probability", e.probability ? json(*e.probability) : json()},
-                     {"probabilityText", e.probability_text},
-                     {"condition", e.condition.empty() ? json() : json(e.condition)},
-                     {"operations", e.operations},
-                     {"line", e.line}});
+    out.begin_object();
+    field("id", cat({"e", std::to_string(i)}));
+    field("rule", e.rule_id);
+    out.key("priority");
+    out.integer(e.priority);
+    out.key("rulePart");
+    out.integer(static_cast<long long>(e.rule_part));
+    field("type", edge_type_name(e.type));
+    field("source", node_id(e.source));
+    out.key("targets");
+    out.begin_array();
+    for (const std::size_t t : e.targets) out.string(node_id(t));
+    out.end_array();
+    out.key("probability");
+    if (e.probability) {
+      out.number(*e.probability);
+    } else {
+      out.null();
+    }
+    field("probabilityText", e.probability_text);
+    out.key("condition");
+    if (e.condition.empty()) {
+      out.null();
+    } else {
+      out.string(e.condition);
+    }
+    out.key("operations");
+    out.begin_array();
+    for (const std::string& op : e.operations) out.string(op);
+    out.end_array();
+    out.key("line");
+    out.integer(e.line);
+    out.end_object();
   }
-  const json out = {{"format", "insula-cga-derivation-graph"},
-                    {"version", 1},
-                    {"file", graph.file},
-                    {"nodes", std::move(nodes)},
-                    {"edges", std::move(edges)}};
-  return out.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+  out.end_array();
+  out.end_object();
+  return out.take();
 }
 
 }  // namespace insula::lang::cga

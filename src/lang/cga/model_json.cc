@@ -1,13 +1,11 @@
 #include "lang/cga/model_json.h"
 
-#include <nlohmann/json.hpp>
-
 #include <string_view>
+
+#include "lang/cga/json_out.h"
 
 namespace insula::lang::cga {
 namespace {
-
-using nlohmann::json;
 
 std::string_view unary_name(UnaryOp op) {
   constexpr std::string_view kNames[] = {"not", "negate", "relative", "floating"};
@@ -27,150 +25,206 @@ std::string_view operation_name(OpKind kind) {
   return kNames[static_cast<int>(kind)];
 }
 
+std::string_view item_kind_name(ItemKind kind) {
+  constexpr std::string_view kNames[] = {"symbol", "empty", "push", "pop", "operation"};
+  return kNames[static_cast<int>(kind)];
+}
+
+// Streams the grammar in the member order of docs/cga-model.schema.json.
 class Writer {
  public:
   explicit Writer(const base::Source& source) : source_(source) {}
 
-  json grammar(const Grammar& g) {
-    json out = {{"format", kModelJsonFormat}, {"version", kModelJsonVersion}, {"file", g.file}};
-    json attrs = json::array();
+  std::string grammar(const Grammar& g) {
+    out_.begin_object();
+    field("format", kModelJsonFormat);
+    out_.key("version");
+    out_.integer(kModelJsonVersion);
+    field("file", g.file);
+    out_.key("attributes");
+    out_.begin_array();
     for (const AttrDecl& a : g.attrs) {
-      attrs.push_back({{"name", a.name},
-                       {"value", expr(*a.value)},
-                       {"range", range(a.range)},
-                       {"nameRange", range(a.name_range)}});
+      out_.begin_object();
+      field("name", a.name);
+      out_.key("value");
+      expr(*a.value);
+      range("range", a.range);
+      range("nameRange", a.name_range);
+      out_.end_object();
     }
-    out["attributes"] = std::move(attrs);
-    json sets = json::array();
+    out_.end_array();
+    out_.key("prioritySets");
+    out_.begin_array();
     for (const PrioritySet& set : g.sets) {
-      json rules = json::array();
-      for (const Rule& r : set.rules) rules.push_back(rule(r));
-      sets.push_back({{"priority", set.priority},
-                      {"implicit", set.implicit},
-                      {"range", range(set.range)},
-                      {"rules", std::move(rules)}});
+      out_.begin_object();
+      out_.key("priority");
+      out_.integer(set.priority);
+      out_.key("implicit");
+      out_.boolean(set.implicit);
+      range("range", set.range);
+      out_.key("rules");
+      out_.begin_array();
+      for (const Rule& r : set.rules) rule(r);
+      out_.end_array();
+      out_.end_object();
     }
-    out["prioritySets"] = std::move(sets);
-    return out;
+    out_.end_array();
+    out_.end_object();
+    return out_.take();
   }
 
  private:
-  json range(Range r) const {
+  void field(std::string_view name, std::string_view value) {
+    out_.key(name);
+    out_.string(value);
+  }
+
+  void range(std::string_view name, Range r) {
     const base::Span span = span_of(source_, r);
-    return {{"line", span.line},
-            {"column", span.column},
-            {"endLine", span.end_line},
-            {"endColumn", span.end_column}};
+    out_.key(name);
+    out_.inline_object({{"line", span.line},
+                        {"column", span.column},
+                        {"endLine", span.end_line},
+                        {"endColumn", span.end_column}});
   }
 
-  json rule(const Rule& r) {
-    json parts = json::array();
+  void optional_expr(std::string_view name, const ExprPtr& e) {
+    out_.key(name);
+    if (e) {
+      expr(*e);
+    } else {
+      out_.null();
+    }
+  }
+
+  void rule(const Rule& r) {
+    out_.begin_object();
+    field("id", r.id);
+    field("predecessor", r.predecessor);
+    optional_expr("condition", r.condition);
+    out_.key("ruleParts");
+    out_.begin_array();
     for (const Alternative& alt : r.alternatives) {
-      parts.push_back({{"arrow", alt.arrow},
-                       {"probability", alt.probability ? expr(*alt.probability) : json()},
-                       {"successors", items(alt.items)},
-                       {"range", range(alt.range)}});
+      out_.begin_object();
+      field("arrow", alt.arrow);
+      optional_expr("probability", alt.probability);
+      items("successors", alt.items);
+      range("range", alt.range);
+      out_.end_object();
     }
-    json out = {{"id", r.id},
-                {"predecessor", r.predecessor},
-                {"condition", r.condition ? expr(*r.condition) : json()},
-                {"ruleParts", std::move(parts)},
-                {"range", range(r.range)},
-                {"predecessorRange", range(r.predecessor_range)}};
-    if (!r.id.empty()) out["idRange"] = range(r.id_range);
-    return out;
+    out_.end_array();
+    range("range", r.range);
+    range("predecessorRange", r.predecessor_range);
+    if (!r.id.empty()) range("idRange", r.id_range);
+    out_.end_object();
   }
 
-  json items(const std::vector<Item>& list) {
-    json out = json::array();
-    for (const Item& it : list) out.push_back(item(it));
-    return out;
+  void items(std::string_view name, const std::vector<Item>& list) {
+    out_.key(name);
+    out_.begin_array();
+    for (const Item& it : list) item(it);
+    out_.end_array();
   }
 
-  json item(const Item& it) {
-    switch (it.kind) {
-      case ItemKind::kSymbol:
-        return {{"kind", "symbol"}, {"name", it.name}, {"range", range(it.range)}};
-      case ItemKind::kEmpty:
-        return {{"kind", "empty"}, {"range", range(it.range)}};
-      case ItemKind::kPush:
-        return {{"kind", "push"}, {"range", range(it.range)}};
-      case ItemKind::kPop:
-        return {{"kind", "pop"}, {"range", range(it.range)}};
-      case ItemKind::kOp:
-        break;
+  void item(const Item& it) {
+    out_.begin_object();
+    field("kind", item_kind_name(it.kind));
+    if (it.kind == ItemKind::kSymbol) field("name", it.name);
+    if (it.kind == ItemKind::kOp) {
+      field("operation", operation_name(it.op));
+      field("name", it.name);
+      if (it.op == OpKind::kRotate) field("axis", std::string_view(&it.axis, 1));
+      out_.key("arguments");
+      out_.begin_array();
+      for (const ExprPtr& a : it.args) expr(*a);
+      out_.end_array();
+      out_.key("hasBlock");
+      out_.boolean(it.has_block);
+      branches("branches", it.branches);
     }
-    json args = json::array();
-    for (const ExprPtr& a : it.args) args.push_back(expr(*a));
-    json out = {{"kind", "operation"},      {"operation", operation_name(it.op)},
-                {"name", it.name},          {"arguments", std::move(args)},
-                {"hasBlock", it.has_block}, {"branches", branches(it.branches)},
-                {"range", range(it.range)}};
-    if (it.op == OpKind::kRotate) out["axis"] = std::string(1, it.axis);
-    return out;
+    range("range", it.range);
+    out_.end_object();
   }
 
-  json branches(const std::vector<Branch>& list) {
-    json out = json::array();
+  void branches(std::string_view name, const std::vector<Branch>& list) {
+    out_.key(name);
+    out_.begin_array();
     for (const Branch& b : list) {
-      out.push_back({{"key", b.key ? expr(*b.key) : json()},
-                     {"repeat", b.repeat},
-                     {"pattern", branches(b.pattern)},
-                     {"successors", items(b.items)},
-                     {"range", range(b.range)}});
+      out_.begin_object();
+      optional_expr("key", b.key);
+      out_.key("repeat");
+      out_.boolean(b.repeat);
+      branches("pattern", b.pattern);
+      items("successors", b.items);
+      range("range", b.range);
+      out_.end_object();
     }
-    return out;
+    out_.end_array();
   }
 
-  json expr(const Expr& e) {
-    json out;
+  void expr(const Expr& e) {
+    out_.begin_object();
     switch (e.kind) {
       case ExprKind::kNumber:
-        out = {{"kind", "number"}, {"value", e.number}};
+        field("kind", "number");
+        out_.key("value");
+        out_.number(e.number);
         break;
       case ExprKind::kString:
-        out = {{"kind", "string"}, {"value", e.text}};
+        field("kind", "string");
+        field("value", e.text);
         break;
       case ExprKind::kBool:
-        out = {{"kind", "boolean"}, {"value", e.boolean}};
+        field("kind", "boolean");
+        out_.key("value");
+        out_.boolean(e.boolean);
         break;
       case ExprKind::kIdent:
-        out = {{"kind", "identifier"}, {"name", e.text}};
+        field("kind", "identifier");
+        field("name", e.text);
         break;
       case ExprKind::kMember:
-        out = {{"kind", "member"}, {"object", expr(*e.operands[0])}, {"member", e.text}};
+        field("kind", "member");
+        out_.key("object");
+        expr(*e.operands[0]);
+        field("member", e.text);
         break;
-      case ExprKind::kCall: {
-        json args = json::array();
-        for (std::size_t i = 1; i < e.operands.size(); ++i) args.push_back(expr(*e.operands[i]));
-        out = {{"kind", "call"}, {"callee", expr(*e.operands[0])}, {"arguments", std::move(args)}};
+      case ExprKind::kCall:
+        field("kind", "call");
+        out_.key("callee");
+        expr(*e.operands[0]);
+        out_.key("arguments");
+        out_.begin_array();
+        for (std::size_t i = 1; i < e.operands.size(); ++i) expr(*e.operands[i]);
+        out_.end_array();
         break;
-      }
       case ExprKind::kUnary:
-        out = {{"kind", "unary"},
-               {"operator", unary_name(e.unary_op)},
-               {"operand", expr(*e.operands[0])}};
+        field("kind", "unary");
+        field("operator", unary_name(e.unary_op));
+        out_.key("operand");
+        expr(*e.operands[0]);
         break;
       case ExprKind::kBinary:
-        out = {{"kind", "binary"},
-               {"operator", binary_name(e.binary_op)},
-               {"left", expr(*e.operands[0])},
-               {"right", expr(*e.operands[1])}};
+        field("kind", "binary");
+        field("operator", binary_name(e.binary_op));
+        out_.key("left");
+        expr(*e.operands[0]);
+        out_.key("right");
+        expr(*e.operands[1]);
         break;
     }
-    out["range"] = range(e.range);
-    return out;
+    range("range", e.range);
+    out_.end_object();
   }
 
   const base::Source& source_;
+  JsonOut out_;
 };
 
 }  // namespace
 
 std::string model_json(const Grammar& grammar, const base::Source& source) {
-  // Strings in the AST are bytes from the source; invalid UTF-8 (allowed inside CGA strings) is
-  // replaced rather than thrown on, so any parsed grammar serialises.
-  return Writer(source).grammar(grammar).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+  return Writer(source).grammar(grammar);
 }
 
 }  // namespace insula::lang::cga

@@ -9,6 +9,21 @@ namespace {
 std::size_t xml_char_length(std::string_view text, std::size_t i) {
   const auto b0 = static_cast<unsigned char>(text[i]);
   if (b0 < 0x80) return (b0 >= 0x20 || b0 == '\t' || b0 == '\n' || b0 == '\r') ? 1 : 0;
+  const std::size_t length = utf8_length(text, i);
+  if (length == 3) {
+    // U+FFFE and U+FFFF are not XML characters: EF BF BE / EF BF BF.
+    const auto b1 = static_cast<unsigned char>(text[i + 1]);
+    const auto b2 = static_cast<unsigned char>(text[i + 2]);
+    if (b0 == 0xEF && b1 == 0xBF && (b2 == 0xBE || b2 == 0xBF)) return 0;
+  }
+  return length;
+}
+
+}  // namespace
+
+std::size_t utf8_length(std::string_view text, std::size_t i) {
+  const auto b0 = static_cast<unsigned char>(text[i]);
+  if (b0 < 0x80) return 1;
   std::size_t length = 0;
   std::uint32_t code = 0;
   if (b0 >= 0xC2 && b0 <= 0xDF) {
@@ -29,15 +44,10 @@ std::size_t xml_char_length(std::string_view text, std::size_t i) {
     if ((b & 0xC0) != 0x80) return 0;
     code = (code << 6) | (b & 0x3F);
   }
-  // Overlong forms, surrogates, non-characters U+FFFE/U+FFFF and beyond U+10FFFF are rejected.
   const std::uint32_t min = length == 2 ? 0x80 : length == 3 ? 0x800 : 0x10000;
-  if (code < min || code > 0x10FFFF) return 0;
-  if (code >= 0xD800 && code <= 0xDFFF) return 0;
-  if (code == 0xFFFE || code == 0xFFFF) return 0;
+  if (code < min || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return 0;
   return length;
 }
-
-}  // namespace
 
 bool is_xml_text(std::string_view text) {
   for (std::size_t i = 0; i < text.size();) {

@@ -8,6 +8,10 @@
 
 namespace insula::lang::cga {
 
+// Length (1 to 4) of the valid UTF-8 encoded scalar value at byte `i` of `text`, or 0 when the
+// bytes there are not one (overlong forms, surrogates and values beyond U+10FFFF are invalid).
+std::size_t utf8_length(std::string_view text, std::size_t i);
+
 // True when `text` is valid UTF-8 of characters allowed in XML 1.0 (tab, LF, CR and from U+0020,
 // without U+FFFE and U+FFFF).
 bool is_xml_text(std::string_view text);

@@ -175,6 +175,13 @@ TEST(CgaModelJson, PaperFig13) {
   expect_golden(model_json(p.grammar, p.source), transform_dir() / "paper_fig13.json");
 }
 
+TEST(CgaModelJson, StringsAreEscapedAndInvalidUtf8Replaced) {
+  const Parsed p = parse_text("1: A ~> Pshape(\"a\x01b\\\"\xFF\xCE\xB5\") B");
+  const nlohmann::json j = nlohmann::json::parse(model_json(p.grammar, p.source));
+  const auto& pshape = j["prioritySets"][0]["rules"][0]["ruleParts"][0]["successors"][0];
+  EXPECT_EQ(pshape["arguments"][0]["value"], "a\x01b\"\xEF\xBF\xBD\xCE\xB5");
+}
+
 // ---- derivation graph (§VII.B) ----
 
 TEST(CgaDerivationGraph, PaperFig13IsFigure13sOutputModel) {
