@@ -39,9 +39,14 @@ double growth(SizeLabel size) {
 constexpr double kAreaPerWeight = 8.0;
 // Fraction of the outline left to rooms once walls are raised.
 constexpr double kUsableFraction = 0.85;
-// A door needs this much shared wall in the nominal layout (door_min_width 0.9 + jambs and
-// slack for the floor-plan engine's weight adjustments, §3.3).
-constexpr double kDoorOverlap[] = {1.6, 1.0, 0.01};
+// Generated doors state their width (door(a, b, 1)): the restriction rules' default is a
+// fraction of the layout perimeter (§3.3), which gives 2 m doors in a 35 m building.
+constexpr double kDoorWidth = 1.0;
+constexpr double kEntranceWidth = 1.2;
+// A door needs this much shared wall in the nominal layout: its width, the floor-plan engine's
+// clearance at both ends (half a wall and a jamb, 0.25 m each with the default rules) and slack
+// for the engine's weight adjustments; the later passes accept less rather than leave a room out.
+constexpr double kDoorOverlap[] = {kDoorWidth + 0.5 + 0.6, kDoorWidth + 0.5 + 0.2, 0.01};
 
 struct GenRoom {
   std::string type;
@@ -677,18 +682,44 @@ class Generator {
   // Windows where a room has exterior wall: the outline, or a disposable part's side (which is
   // exterior once the part is removed).
   void add_windows() {
-    for (GenRoom& room : rooms_) {
+    // A window needs window_width (1.2) plus the engine's clearance at both ends on one straight
+    // exterior wall.
+    constexpr double kWindowRun = 1.2 + 0.5 + 0.5;
+    for (std::size_t i = 0; i < rooms_.size(); ++i) {
+      GenRoom& room = rooms_[i];
       if (room.disposable) continue;
-      double exterior = boundary_length(room.rect, outline_);
-      for (const GenRoom& other : rooms_) {
-        if (other.disposable) exterior += shared_length(room.rect, other.rect);
-      }
-      if (exterior < 2.0) continue;
+      std::vector<double> runs = exterior_runs(room.rect);
+      std::sort(runs.rbegin(), runs.rend());
+      // The entrance room keeps its longest wall for the door (the engine puts no window beside
+      // an entrance door).
+      if (static_cast<int>(i) == entrance_ && !runs.empty()) runs.erase(runs.begin());
+      int fit = 0;
+      for (const double run : runs) fit += static_cast<int>(std::floor(run / kWindowRun));
+      if (fit == 0) continue;
       room.windows = 1;
       const bool small = room.type == "bathroom" || room.type == "storage" ||
                          room.type == "corridor" || room.type == "hall" || room.type == "pantry";
-      if (!small && exterior >= 7.0 && rng_.unit() < 0.6) room.windows = 2;
+      if (!small && fit >= 3 && rng_.unit() < 0.6) room.windows = 2;
     }
+  }
+
+  // Straight exterior wall runs of a room: its sides on the outline, and the parts of its sides
+  // along disposable rooms (exterior once the notch is removed, §3.2).
+  std::vector<double> exterior_runs(const Rect& r) const {
+    std::vector<double> runs;
+    const double sides[] = {boundary_length(Rect{r.x0, r.y0, r.x0, r.y1}, outline_),
+                            boundary_length(Rect{r.x1, r.y0, r.x1, r.y1}, outline_),
+                            boundary_length(Rect{r.x0, r.y0, r.x1, r.y0}, outline_),
+                            boundary_length(Rect{r.x0, r.y1, r.x1, r.y1}, outline_)};
+    for (const double side : sides) {
+      if (side > 0) runs.push_back(side);
+    }
+    for (const GenRoom& other : rooms_) {
+      if (!other.disposable) continue;
+      const double shared = shared_length(r, other.rect);
+      if (shared > 0) runs.push_back(shared);
+    }
+    return runs;
   }
 
   // ---- the model ----
@@ -708,6 +739,7 @@ class Generator {
     entrance.symbol = "entrance0";
     entrance.kind = TransitionKind::kEntrance;
     entrance.from = rooms_[static_cast<std::size_t>(entrance_)].symbol;
+    entrance.width = kEntranceWidth;
     building.transitions.push_back(entrance);
     for (std::size_t i = 0; i < doors_.size(); ++i) {
       Transition door;
@@ -715,6 +747,7 @@ class Generator {
       door.kind = TransitionKind::kDoor;
       door.from = rooms_[static_cast<std::size_t>(doors_[i].first)].symbol;
       door.to = rooms_[static_cast<std::size_t>(doors_[i].second)].symbol;
+      door.width = kDoorWidth;
       building.transitions.push_back(door);
     }
     return building;

@@ -108,6 +108,10 @@ TEST(BldgStochastic, ThousandBuildingsAreValidReachableAndRoundTrip) {
       EXPECT_EQ(priority_of(census.rooms.at(t.from)->type), best);
     }
     EXPECT_EQ(entrances, 1);
+    // Doors state their width (1 m, entrances 1.2 m) instead of the perimeter-based default.
+    for (const Transition& t : b.transitions) {
+      EXPECT_DOUBLE_EQ(t.width, t.kind == TransitionKind::kEntrance ? 1.2 : 1.0);
+    }
     // Every real room reachable; no door into a disposable part.
     const std::set<std::string> seen = reached(b);
     for (const auto& [symbol, room] : census.rooms) EXPECT_TRUE(seen.count(symbol)) << symbol;
