@@ -464,7 +464,7 @@ class Engine final : public EvalContext {
       terminal(st, symbol);
       return;
     }
-    if (depth > options_.limits.max_depth) {
+    if (depth > std::min<std::uint32_t>(options_.limits.max_depth, 0xffff)) {
       limit_error("CGA601", "derivation depth limit of " +
                                 std::to_string(options_.limits.max_depth) + " reached");
     }
@@ -567,6 +567,12 @@ class Engine final : public EvalContext {
 
   State child_of(State& parent, const Scope& scope, std::uint32_t geometry, std::uint32_t index,
                  std::uint32_t total) {
+    // Operation pieces count against the shape limit too: a piece that never becomes a symbol
+    // (a failed nested split, a branch of ε) still costs work (RR("XYZ", 0.001) on a lot).
+    if (++pieces_ > options_.limits.max_shapes) {
+      limit_error("CGA602", "shape limit of " + std::to_string(options_.limits.max_shapes) +
+                                " reached (operation pieces)");
+    }
     State c;
     c.scope = scope;
     c.seed = shape::child_seed(parent.seed, parent.next_child++);
@@ -1205,6 +1211,7 @@ class Engine final : public EvalContext {
   std::map<std::pair<std::uint32_t, std::string>, std::size_t> warnings_;
   std::vector<std::unique_ptr<Scratch>> scratch_;
   std::size_t nest_ = 0;
+  std::uint64_t pieces_ = 0;
 };
 
 }  // namespace

@@ -31,7 +31,7 @@
 namespace insula::lang::cga {
 
 struct DeriveLimits {
-  // Rule applications along one path from a start shape (runaway recursion).
+  // Rule applications along one path from a start shape (runaway recursion); at most 65535.
   std::uint32_t max_depth = 10000;
   // Shapes created per lot (runaway growth).
   std::uint64_t max_shapes = 10000000;
