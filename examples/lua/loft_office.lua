@@ -30,11 +30,12 @@ end
 extrude(shell, 0.3, { label = "ewall" })
 
 -- Storeys: open floor in front, a band of meeting rooms along the back façade.
+local windows = repel(query("window"), 0.25)
 for i, s in ipairs(slice(office, "y", H, { label = "storey" })) do
   s.level = i - 1
-  split(s, "z", { label = "open", rel = 1 }, { label = "meeting band", abs = 5.0 })
+  -- The band's wall also keeps off the windows of the end façades.
+  constrainedSplit(s, "z", windows, { label = "open", rel = 1 }, { label = "meeting band", abs = 5.0 })
 end
-local windows = repel(query("window"), 0.25)
 for band in query("'meeting band'") do
   constrainedSplit(band, "x", windows, { label = "meeting", abs = 5.0 }, { label = "meeting", abs = 5.0 },
     { label = "meeting", abs = 5.0 }, { label = "lounge", rel = 1 }, { label = "meeting", abs = 5.0 },
