@@ -87,6 +87,17 @@ void Checker::check_expr(const Expr& expr, ExprRole role) {
       check_call(expr);
       return;
     case ExprKind::kUnary:
+      // A relative or floating size is a size of the scope, meaningful only where the operation
+      // resolves it against one (shape::resolve_sizes): split, repeat and scale sizes.
+      if ((expr.unary_op == UnaryOp::kRelative || expr.unary_op == UnaryOp::kFloating) &&
+          role == ExprRole::kValue) {
+        error("CGA320",
+              "a relative ('r) or floating (~) size is only allowed as a split, repeat or scale "
+              "size",
+              expr.range);
+      }
+      for (const ExprPtr& operand : expr.operands) check_expr(*operand);
+      return;
     case ExprKind::kBinary:
       for (const ExprPtr& operand : expr.operands) check_expr(*operand);
       return;

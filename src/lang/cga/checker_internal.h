@@ -15,6 +15,7 @@
 #include "lang/cga/ast.h"
 #include "lang/cga/builtins.h"
 #include "lang/cga/checker.h"
+#include "shape/operation.h"
 
 namespace insula::lang::cga::detail {
 
@@ -28,9 +29,10 @@ struct Constant {
 };
 std::optional<Constant> fold(const Expr& expr);
 
-// Where an expression stands decides which bare words it may be.
+// Where an expression stands decides which bare words and sizes it may be.
 enum class ExprRole {
   kValue,     // a number, string or boolean value: identifiers must be defined
+  kSize,      // a split, repeat or scale size: may be relative (`2r`, `'0.5`) or floating (`~1`)
   kBareWord,  // an operation argument that may be a bare word (an axis, an asset or enum name)
 };
 
@@ -70,6 +72,7 @@ class Checker {
   void check_rotation(const Item& item);
   void check_generic(const Item& item, const OperationInfo& info);
   void check_registry_ranges(const Item& item);
+  void check_registry_choice(const Item& item, std::size_t index, const shape::ParamDecl& param);
   void check_axis(const Expr& expr, bool combinations);
   std::optional<CompType> check_comp_type(const Expr& expr);
   void check_plain_branches(const Item& item, std::size_t expected, const char* what);

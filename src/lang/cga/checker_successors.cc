@@ -2,6 +2,7 @@
 // arities, argument kinds, blocks and their keys from builtins.h; value ranges of constant
 // arguments from the shape operation registry (shape/operation.h), so no range is written twice.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <set>
 #include <string>
@@ -72,6 +73,8 @@ constexpr RangeMap kRangeMaps[] = {
     {"roofShed", "roof", {"pitch", "overhang"}},
     {"roofMansard", "roof", {"pitch", "mansard_pitch", "break_height", "overhang"}},
     {"roofFlat", "roof", {"overhang"}},
+    {"offset", "offset", {"distance", "part"}},
+    {"center", "center", {"axes"}},
 };
 
 }  // namespace
@@ -264,19 +267,13 @@ void Checker::check_arguments(const Item& item, const OperationInfo& info) {
         }
         break;
       case 'n':
-      case 'z': {
-        check_expr(arg);
-        const std::optional<Constant> value = fold(arg);
+      case 'z':
         if (arg.kind == ExprKind::kString || arg.kind == ExprKind::kBool) {
           error("CGA320", which + " must be a number", arg.range);
-        } else if (letter == 'n' && value && (value->relative || value->floating)) {
-          error("CGA320",
-                which + " must be a plain number, not a " +
-                    (value->relative ? "relative" : "floating") + " size",
-                arg.range);
+        } else {
+          check_expr(arg, letter == 'z' ? ExprRole::kSize : ExprRole::kValue);
         }
         break;
-      }
       default:
         check_expr(arg);
         break;
@@ -486,7 +483,7 @@ void Checker::check_size_keys(const Item& item, const std::vector<Branch>& branc
             branch.range);
       continue;
     }
-    check_expr(*branch.key);
+    check_expr(*branch.key, ExprRole::kSize);
     if (branch.key->kind == ExprKind::kString || branch.key->kind == ExprKind::kBool) {
       error("CGA320", "a split size must be a number", branch.key->range);
       continue;
@@ -536,6 +533,10 @@ void Checker::check_registry_ranges(const Item& item) {
   for (std::size_t i = 0; i < item.args.size() && i < std::size(map->params); ++i) {
     if (map->params[i].empty()) break;
     const shape::ParamDecl* param = op->param(map->params[i]);
+    if (param && param->type == shape::ParamType::kEnum) {
+      check_registry_choice(item, i, *param);
+      continue;
+    }
     const std::optional<Constant> value = fold(*item.args[i]);
     if (!param || !value || value->relative || value->floating) continue;
     const bool low = param->min && value->value < *param->min;
@@ -555,6 +556,30 @@ void Checker::check_registry_ranges(const Item& item) {
               range,
           item.args[i]->range);
   }
+}
+
+}  // namespace insula::lang::cga::detail
+
+namespace insula::lang::cga::detail {
+
+// A literal (or bare-word) argument that becomes an enum parameter of the registry must be one
+// of its choices, in either case (`center("XZ")`, `offset(-1, "inside")`).
+void Checker::check_registry_choice(const Item& item, std::size_t index,
+                                    const shape::ParamDecl& param) {
+  const Expr& arg = *item.args[index];
+  const bool word =
+      arg.kind == ExprKind::kString ||
+      (arg.kind == ExprKind::kIdent && !attributes_.count(arg.text) && !known_.count(arg.text));
+  if (!word) return;
+  std::string text = arg.text;
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (std::find(param.choices.begin(), param.choices.end(), text) != param.choices.end()) return;
+  std::string list;
+  for (const std::string& choice : param.choices) list += (list.empty() ? "" : ", ") + choice;
+  error("CGA319",
+        "argument " + std::to_string(index + 1) + " of " + quoted(item.name) + " (" + param.name +
+            ") is \"" + arg.text + "\", must be one of " + list,
+        arg.range);
 }
 
 }  // namespace insula::lang::cga::detail
