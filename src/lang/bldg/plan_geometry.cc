@@ -108,13 +108,14 @@ void covered_by_ring(Vec2 p, Vec2 q, const Ring& ring, int other, std::vector<In
 }
 
 void pieces_of_edge(Vec2 p, Vec2 q, const std::vector<const Polygon*>& others,
-                    const std::vector<kernel::Bounds2>& boxes, std::vector<EdgePiece>& out) {
+                    const std::vector<kernel::Bounds2>& boxes, const std::vector<std::size_t>& near,
+                    std::vector<EdgePiece>& out) {
   std::vector<Interval> covered;
   kernel::Bounds2 edge_box;
   edge_box.add(p);
   edge_box.add(q);
-  for (std::size_t k = 0; k < others.size(); ++k) {
-    if (others[k] == nullptr || !bounds_touch(edge_box, boxes[k], kLineTolerance)) continue;
+  for (std::size_t k : near) {
+    if (!bounds_touch(edge_box, boxes[k], kLineTolerance)) continue;
     covered_by_ring(p, q, others[k]->outer, static_cast<int>(k), covered);
     for (const Ring& hole : others[k]->holes)
       covered_by_ring(p, q, hole, static_cast<int>(k), covered);
@@ -194,9 +195,15 @@ int wall_count(const Polygon& polygon) {
 
 std::vector<EdgePiece> boundary_pieces(const Polygon& cell,
                                        const std::vector<const Polygon*>& others) {
+  // Only the polygons whose box touches the cell's can share an edge with it (indices kept).
+  const kernel::Bounds2 cell_box = kernel::bounds(cell);
+  std::vector<std::size_t> near;
   std::vector<kernel::Bounds2> boxes(others.size());
-  for (std::size_t k = 0; k < others.size(); ++k)
-    if (others[k] != nullptr) boxes[k] = kernel::bounds(*others[k]);
+  for (std::size_t k = 0; k < others.size(); ++k) {
+    if (others[k] == nullptr) continue;
+    boxes[k] = kernel::bounds(*others[k]);
+    if (bounds_touch(cell_box, boxes[k], kLineTolerance)) near.push_back(k);
+  }
   std::vector<EdgePiece> out;
   auto ring_pieces = [&](const Ring& ring) {
     const std::size_t n = ring.size();
@@ -204,7 +211,7 @@ std::vector<EdgePiece> boundary_pieces(const Polygon& cell,
       const Vec2 p = ring[i];
       const Vec2 q = ring[(i + 1) % n];
       if (kernel::length(q - p) < kLineTolerance) continue;
-      pieces_of_edge(p, q, others, boxes, out);
+      pieces_of_edge(p, q, others, boxes, near, out);
     }
   };
   ring_pieces(cell.outer);
@@ -273,12 +280,15 @@ void weld(const std::vector<Polygon*>& cells, double tolerance) {
   std::vector<kernel::Bounds2> boxes;
   for (const Polygon* c : cells) boxes.push_back(kernel::bounds(*c));
   for (std::size_t i = 0; i < cells.size(); ++i) {
+    std::vector<std::size_t> near;
+    for (std::size_t j = 0; j < cells.size(); ++j)
+      if (j != i && bounds_touch(boxes[i], boxes[j], tolerance)) near.push_back(j);
     auto snap_ring = [&](Ring& ring) {
       for (Vec2& v : ring) {
         kernel::Bounds2 pb;
         pb.add(v);
-        for (std::size_t j = 0; j < cells.size(); ++j) {
-          if (j == i || !bounds_touch(pb, boxes[j], tolerance)) continue;
+        for (std::size_t j : near) {
+          if (!bounds_touch(pb, boxes[j], tolerance)) continue;
           auto try_ring = [&](const Ring& other) {
             const std::size_t n = other.size();
             for (std::size_t e = 0; e < n; ++e) {
@@ -307,6 +317,57 @@ void weld(const std::vector<Polygon*>& cells, double tolerance) {
     for (Ring& h : cells[i]->holes) snap_ring(h);
   }
   for (Polygon* c : cells) simplify(*c);
+}
+
+bool convex_overlap(const Polygon& a, const Polygon& b) {
+  auto separated = [](const Ring& p, const Ring& q) {
+    const std::size_t n = p.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 e = p[(i + 1) % n] - p[i];
+      const Vec2 axis{-e.y, e.x};
+      const double len = kernel::length(axis);
+      if (len <= 0) continue;
+      double pmin = 1e300, pmax = -1e300, qmin = 1e300, qmax = -1e300;
+      for (Vec2 v : p) {
+        const double d = kernel::dot(v, axis) / len;
+        pmin = std::min(pmin, d);
+        pmax = std::max(pmax, d);
+      }
+      for (Vec2 v : q) {
+        const double d = kernel::dot(v, axis) / len;
+        qmin = std::min(qmin, d);
+        qmax = std::max(qmax, d);
+      }
+      if (pmax <= qmin + 1e-9 || qmax <= pmin + 1e-9) return true;
+    }
+    return false;
+  };
+  return !separated(a.outer, b.outer) && !separated(b.outer, a.outer);
+}
+
+bool convex_inside(const Polygon& region, const Ring& inner) {
+  for (Vec2 v : inner)
+    if (kernel::locate(region, v, 1e-7) == kernel::PointLocation::kOutside) return false;
+  const double sign = kernel::signed_area(inner) >= 0 ? 1 : -1;
+  auto strictly_inside = [&](Vec2 p) {
+    const std::size_t n = inner.size();
+    for (std::size_t i = 0; i < n; ++i)
+      if (sign * kernel::cross(inner[(i + 1) % n] - inner[i], p - inner[i]) <= 1e-9) return false;
+    return true;
+  };
+  auto ring_ok = [&](const Ring& r) {
+    const std::size_t n = r.size();
+    const std::size_t m = inner.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (strictly_inside(r[i])) return false;
+      for (std::size_t j = 0; j < m; ++j)
+        if (kernel::segments_cross_properly(r[i], r[(i + 1) % n], inner[j], inner[(j + 1) % m]))
+          return false;
+    }
+    return true;
+  };
+  if (!ring_ok(region.outer)) return false;
+  return std::all_of(region.holes.begin(), region.holes.end(), ring_ok);
 }
 
 int largest(const std::vector<Polygon>& polygons) {

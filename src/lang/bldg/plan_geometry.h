@@ -64,6 +64,13 @@ bool bounds_touch(const kernel::Bounds2& a, const kernel::Bounds2& b, double mar
 // onto it, then rings are simplified.
 void weld(const std::vector<kernel::Polygon*>& cells, double tolerance = kLineTolerance);
 
+// Interiors of two convex polygons (outer rings) overlap by more than a sliver (separating axes,
+// 1e-9 m slack): the cheap test for stair and door rectangles.
+bool convex_overlap(const kernel::Polygon& a, const kernel::Polygon& b);
+// The convex ring `inner` lies inside `region` (its boundary may touch region's): every vertex of
+// inner inside or on region, no vertex of region strictly inside inner, no proper crossing.
+bool convex_inside(const kernel::Polygon& region, const kernel::Ring& inner);
+
 // Index of the polygon of largest area; -1 when empty.
 int largest(const std::vector<kernel::Polygon>& polygons);
 

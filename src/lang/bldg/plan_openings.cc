@@ -36,7 +36,7 @@ std::vector<Interval> occupied(const PlanStorey& storey, Vec2 p, Vec2 q) {
 
 bool clear_of(const std::vector<Polygon>& keep_out, const Polygon& zone) {
   return std::none_of(keep_out.begin(), keep_out.end(),
-                      [&](const Polygon& k) { return overlaps(k, zone); });
+                      [&](const Polygon& k) { return convex_overlap(k, zone); });
 }
 
 }  // namespace

@@ -42,9 +42,10 @@ std::vector<Polygon> door_zones(const PlanStorey& storey, double approach) {
   return out;
 }
 
+// Obstacles are rectangles (door approaches, flights and stairwells).
 bool clear(const std::vector<Polygon>& obstacles, const Polygon& p) {
   return std::none_of(obstacles.begin(), obstacles.end(),
-                      [&](const Polygon& o) { return overlaps(o, p); });
+                      [&](const Polygon& o) { return convex_overlap(o, p); });
 }
 
 std::optional<PlanStair> fit_flight(const std::vector<Polygon>& region, const Polygon& lower,
@@ -70,7 +71,7 @@ std::optional<PlanStair> fit_flight(const std::vector<Polygon>& region, const Po
         for (int dir = 0; dir < 2; ++dir) {
           const Vec2 start = p + u * s;
           const Polygon foot_print = oriented_rectangle(start, u, inward, run, width);
-          if (!covers({piece}, foot_print) || !clear(obstacles, foot_print)) continue;
+          if (!convex_inside(piece, foot_print.outer) || !clear(obstacles, foot_print)) continue;
           // Ascent along +u (dir 0) or -u (dir 1).
           const Vec2 foot =
               dir == 0 ? start + inward * (width / 2) : start + u * run + inward * (width / 2);
@@ -80,7 +81,9 @@ std::optional<PlanStair> fit_flight(const std::vector<Polygon>& region, const Po
               foot - up * landing - inward * (width / 2), up, inward, landing, width);
           const Polygon head_landing =
               oriented_rectangle(head - inward * (width / 2), up, inward, landing, width);
-          if (!covers({lower}, foot_landing) || !covers({upper}, head_landing)) continue;
+          if (!convex_inside(lower, foot_landing.outer) ||
+              !convex_inside(upper, head_landing.outer))
+            continue;
           if (!clear(obstacles, foot_landing) || !clear(obstacles, head_landing)) continue;
           PlanStair stair;
           stair.footprint = foot_print;
