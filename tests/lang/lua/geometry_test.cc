@@ -249,6 +249,33 @@ TEST(LuaGeometry, ErrorsNameTheOperationAndLine) {
       std::string::npos);
 }
 
+// Hostile arguments stop with a message instead of exhausting memory or time.
+TEST(LuaGeometry, HostileArgumentsAreBounded) {
+  const struct {
+    const char* program;
+    const char* message;
+  } cases[] = {
+      {"slice(component { size = { 10, 3, 6 } }, 'x', 1e-9)", "in slice: more than 1000000 pieces"},
+      {"slice(component { size = { 10, 3, 6 } }, 'x', 0/0)",
+       "in slice: argument 3: expected a finite number"},
+      {"local c = component { size = { 2, 2, 2 } }\nplace(region(c, { label = 'f' }), c, { "
+       "attempts = 1e9 })",
+       "in place: argument 3: field 'attempts' must be in [1, 10000]"},
+      {"door(component { size = { 2, 2, 2 } })",
+       "in door: the wall must be a flat component (a face)"},
+      {"extrude({ component { size = { 2, 2, 2 } } }, 0/0)",
+       "in extrude: argument 2: expected a finite number"},
+      {"slice(component { size = { 10, 3, 6 } }, 'x', -1)", "in slice: size must be > 0"},
+      {"subtract(component { size = { 2, 2, 2 } }, 'x')", "in subtract: argument 2:"},
+  };
+  for (const auto& c : cases) {
+    const Outcome r = run_program(c.program, "hostile.lua");
+    ASSERT_EQ(r.diagnostics.size(), 1U) << c.program;
+    EXPECT_NE(r.diagnostics[0].message.find(c.message), std::string::npos)
+        << c.program << " -> " << r.diagnostics[0].message;
+  }
+}
+
 // Goldens of the examples: components, collected parts and triangles (INSULA_UPDATE_GOLDEN=1
 // rewrites tests/data/lua/geometry/examples.json).
 TEST(LuaGeometry, ExampleGoldens) {
