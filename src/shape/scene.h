@@ -33,15 +33,16 @@ struct Part {
   // An instance of a shared mesh (seed 001 §4.5: repeated decorations are shared, not copied): when
   // set, the part's geometry is `instance_of` placed by `instance_transform` (mesh stays empty).
   // glTF writes one mesh and a node per instance; the other writers expand it.
-  std::shared_ptr<const kernel::Mesh> instance_of;
-  kernel::Transform instance_transform;
+  // (`{}` on members added later lets older aggregate initialisers omit them without warnings.)
+  std::shared_ptr<const kernel::Mesh> instance_of{};
+  kernel::Transform instance_transform{};
 };
 
 struct Building {
   std::string id;  // unique within the scene
   AttributeMap attributes;
   std::vector<Part> parts;
-  std::vector<StoreyPlan> plans;  // floor plans (traversable buildings); empty for masses
+  std::vector<StoreyPlan> plans{};  // floor plans (traversable buildings); empty for masses
 };
 
 struct Scene {
