@@ -16,6 +16,9 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <queue>
+#include <set>
+#include <tuple>
 
 #include "shape/rng.h"
 
@@ -581,35 +584,24 @@ class Generator {
     entrance_ = choose_entrance();
     seed_salt_ = rng_.next();
     const std::size_t n = rooms_.size();
+    // Rooms that share a wall in the nominal layout, with the shared length (computed once).
+    neighbors_.assign(n, {});
+    for (std::size_t u = 0; u < n; ++u) {
+      for (std::size_t v = u + 1; v < n; ++v) {
+        if (rooms_[u].disposable || rooms_[v].disposable) continue;
+        const double shared = shared_length(rooms_[u].rect, rooms_[v].rect);
+        if (shared <= 0) continue;
+        neighbors_[u].emplace_back(static_cast<int>(v), shared);
+        neighbors_[v].emplace_back(static_cast<int>(u), shared);
+      }
+    }
     std::vector<bool> in_tree(n, false);
     in_tree[static_cast<std::size_t>(entrance_)] = true;
     std::size_t reached = 1;
     std::size_t wanted = 0;
     for (const GenRoom& room : rooms_) wanted += room.disposable ? 0 : 1;
     for (const double threshold : kDoorOverlap) {
-      while (reached < wanted) {
-        int best_u = -1, best_v = -1;
-        std::pair<int, std::uint64_t> best_key{1 << 30, 0};
-        for (std::size_t u = 0; u < n; ++u) {
-          if (!in_tree[u]) continue;
-          for (std::size_t v = 0; v < n; ++v) {
-            if (in_tree[v] || rooms_[v].disposable) continue;
-            if (shared_length(rooms_[u].rect, rooms_[v].rect) < threshold) continue;
-            const std::pair<int, std::uint64_t> key{
-                rooms_[u].priority + (dead_end(rooms_[u].type) ? 3 : 0),
-                shape::mix64(seed_salt_ ^ (u * 1315423911U + v))};
-            if (key < best_key) {
-              best_key = key;
-              best_u = static_cast<int>(u);
-              best_v = static_cast<int>(v);
-            }
-          }
-        }
-        if (best_u < 0) break;
-        doors_.emplace_back(best_u, best_v);
-        in_tree[static_cast<std::size_t>(best_v)] = true;
-        ++reached;
-      }
+      if (reached < wanted) reached += grow_tree(threshold, in_tree);
     }
     // Not expected with the skeletons above; keeps the graph guarantee for any program.
     for (std::size_t v = 0; v < n && reached < wanted; ++v) {
@@ -619,6 +611,39 @@ class Generator {
       ++reached;
     }
     add_extra_doors();
+  }
+
+  // Prim's algorithm over walls at least `threshold` long: the next door is the frontier edge of
+  // smallest key (the source room's priority, dead ends last, then a seeded hash). Returns the
+  // number of rooms added.
+  std::size_t grow_tree(double threshold, std::vector<bool>& in_tree) {
+    using Candidate = std::tuple<int, std::uint64_t, int, int>;  // key, hash, u, v
+    std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>> frontier;
+    const auto push_edges = [&](int u) {
+      const GenRoom& from = rooms_[static_cast<std::size_t>(u)];
+      const int key = from.priority + (dead_end(from.type) ? 3 : 0);
+      for (const auto& [v, shared] : neighbors_[static_cast<std::size_t>(u)]) {
+        if (in_tree[static_cast<std::size_t>(v)] || shared < threshold) continue;
+        const std::uint64_t hash =
+            shape::mix64(seed_salt_ ^ (static_cast<std::uint64_t>(u) * 1315423911U +
+                                       static_cast<std::uint64_t>(v)));
+        frontier.emplace(key, hash, u, v);
+      }
+    };
+    for (std::size_t u = 0; u < in_tree.size(); ++u) {
+      if (in_tree[u]) push_edges(static_cast<int>(u));
+    }
+    std::size_t added = 0;
+    while (!frontier.empty()) {
+      const auto [key, hash, u, v] = frontier.top();
+      frontier.pop();
+      if (in_tree[static_cast<std::size_t>(v)]) continue;
+      doors_.emplace_back(u, v);
+      in_tree[static_cast<std::size_t>(v)] = true;
+      ++added;
+      push_edges(v);
+    }
+    return added;
   }
 
   int nearest_in_tree(std::size_t v, const std::vector<bool>& in_tree) const {
@@ -638,17 +663,16 @@ class Generator {
   }
 
   void add_extra_doors() {
+    std::set<std::pair<int, int>> existing;
+    for (const auto& [a, b] : doors_) existing.emplace(std::min(a, b), std::max(a, b));
     for (std::size_t u = 0; u < rooms_.size(); ++u) {
-      for (std::size_t v = u + 1; v < rooms_.size(); ++v) {
-        if (rooms_[u].disposable || rooms_[v].disposable) continue;
-        if (rooms_[u].priority > 1 || rooms_[v].priority > 1) continue;
-        if (shared_length(rooms_[u].rect, rooms_[v].rect) < kDoorOverlap[0]) continue;
-        const bool exists = std::any_of(doors_.begin(), doors_.end(), [&](const auto& d) {
-          return (d.first == static_cast<int>(u) && d.second == static_cast<int>(v)) ||
-                 (d.first == static_cast<int>(v) && d.second == static_cast<int>(u));
-        });
-        if (!exists && rng_.unit() < 0.25) {
-          doors_.emplace_back(static_cast<int>(u), static_cast<int>(v));
+      for (const auto& [v, shared] : neighbors_[u]) {
+        const int a = static_cast<int>(u);
+        if (v <= a || shared < kDoorOverlap[0]) continue;
+        if (rooms_[u].priority > 1 || rooms_[static_cast<std::size_t>(v)].priority > 1) continue;
+        if (existing.count({a, v}) == 0 && rng_.unit() < 0.25) {
+          doors_.emplace_back(a, v);
+          existing.emplace(a, v);
         }
       }
     }
@@ -845,6 +869,7 @@ class Generator {
   std::map<const Cell*, std::size_t> leaf_of_;
   int entrance_ = 0;
   std::vector<std::pair<int, int>> doors_;
+  std::vector<std::vector<std::pair<int, double>>> neighbors_;  // room -> (room, shared wall)
   int parts_ = 0;
   int containers_ = 0;
   std::map<std::string, int> div_counter_;
