@@ -23,10 +23,11 @@ local wings = {
   component { size = { 14, STOREYS * H, 40 }, position = { 52, 0, 14 }, label = "wing", name = "east" },
 }
 -- Stairwells: one per wing, in the band behind the corridor, across every storey.
+-- Children of their wings (§3.4.3 instancing, in the wing's space).
 local stairs = {
-  component { size = { 3.2, STOREYS * H, 6 }, position = { 31.4, 0, 8 }, label = "stair" },
-  component { size = { 6, STOREYS * H, 3.2 }, position = { 8, 0, 30 }, label = "stair" },
-  component { size = { 6, STOREYS * H, 3.2 }, position = { 52, 0, 30 }, label = "stair" },
+  instance(wings[1], { size = { 3.2, STOREYS * H, 6 }, position = { 31.4, 0, 8 }, label = "stair" }),
+  instance(wings[2], { size = { 6, STOREYS * H, 3.2 }, position = { 8, 0, 16 }, label = "stair" }),
+  instance(wings[3], { size = { 6, STOREYS * H, 3.2 }, position = { 0, 0, 16 }, label = "stair" }),
 }
 
 -- Storeys, corridor and apartment bands. The south wing runs along x, the others along z.

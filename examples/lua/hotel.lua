@@ -10,8 +10,9 @@ local W, D, H, STOREYS = 30, 14, 3.2, 4
 local ROOM = 4.2 -- nominal room width; the left-over goes to both end rooms (§3.4.3)
 
 local hotel = component { size = { W, STOREYS * H, D }, label = "hotel" }
--- The stairwell spans every storey (§4.1) and the whole depth of the back rooms.
-local stair = component { size = { 3.0, STOREYS * H, 6 }, position = { 13.5, 0, 8 }, label = "stair" }
+-- The stairwell spans every storey (§4.1) and the whole depth of the back rooms: a child of the
+-- hotel (§3.4.3 instancing, clipped to the hotel's boundary).
+local stair = instance(hotel, { size = { 3.0, STOREYS * H, 6 }, position = { 13.5, 0, 8 }, label = "stair" })
 
 -- Space partitioning (§4.1): storeys, then rooms | corridor | rooms.
 for i, s in ipairs(slice(hotel, "y", H, { label = "storey" })) do

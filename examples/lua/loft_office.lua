@@ -8,7 +8,7 @@
 
 local W, D, H, STOREYS = 36, 18, 4.0, 3
 local office = component { size = { W, STOREYS * H, D }, label = "office" }
-local core = component { size = { 8, STOREYS * H, 6 }, position = { 14, 0, 7 }, label = "core" }
+local core = instance(office, { size = { 8, STOREYS * H, 6 }, position = { 14, 0, 7 }, label = "core" })
 
 -- The façade first: its windows are the constraints the partitions avoid.
 local shell = {}
