@@ -18,24 +18,31 @@ namespace insula::lang::cga {
 namespace detail {
 namespace {
 
-// Calls `visit` on every symbol item of `items`, through blocks and repeat patterns.
+// Calls `visit` on every item of `items`, through blocks and (nested) repeat patterns.
 template <typename Visit>
-void for_each_symbol(const std::vector<Item>& items, const Visit& visit);
+void for_each_item(const std::vector<Item>& items, const Visit& visit);
 
 template <typename Visit>
-void for_each_symbol(const std::vector<Branch>& branches, const Visit& visit) {
+void for_each_item(const std::vector<Branch>& branches, const Visit& visit) {
   for (const Branch& branch : branches) {
-    for_each_symbol(branch.pattern, visit);
-    for_each_symbol(branch.items, visit);
+    for_each_item(branch.pattern, visit);
+    for_each_item(branch.items, visit);
+  }
+}
+
+template <typename Visit>
+void for_each_item(const std::vector<Item>& items, const Visit& visit) {
+  for (const Item& item : items) {
+    visit(item);
+    if (!item.branches.empty()) for_each_item(item.branches, visit);
   }
 }
 
 template <typename Visit>
 void for_each_symbol(const std::vector<Item>& items, const Visit& visit) {
-  for (const Item& item : items) {
+  for_each_item(items, [&](const Item& item) {
     if (item.kind == ItemKind::kSymbol) visit(item);
-    if (!item.branches.empty()) for_each_symbol(item.branches, visit);
-  }
+  });
 }
 
 std::string line_of(const base::Source& source, Range range) {
@@ -100,6 +107,7 @@ CheckResult Checker::run() {
 // `attr name = value`: names are unique; defaults may use other attributes (in any order, as in
 // CityEngine) but not themselves through a cycle.
 void Checker::declare_attributes() {
+  collect_set_targets();
   for (const AttrDecl& attr : grammar_.attrs) {
     auto [it, inserted] = attributes_.emplace(attr.name, &attr);
     if (!inserted) {
@@ -114,6 +122,22 @@ void Checker::declare_attributes() {
     current_attribute_ = &attr;
     check_expr(*attr.value);
     current_attribute_ = nullptr;
+  }
+}
+
+// `set(name, value)` declares `name` for the shape and its descendants when no `attr` does
+// (as the compiler does), so `name` is defined in every expression of the grammar.
+void Checker::collect_set_targets() {
+  const auto visit = [&](const Item& item) {
+    if (item.kind == ItemKind::kOp && item.name == "set" && !item.args.empty() &&
+        (item.args[0]->kind == ExprKind::kIdent || item.args[0]->kind == ExprKind::kString)) {
+      known_.insert(item.args[0]->text);
+    }
+  };
+  for (const PrioritySet& set : grammar_.sets) {
+    for (const Rule& rule : set.rules) {
+      for (const Alternative& alt : rule.alternatives) for_each_item(alt.items, visit);
+    }
   }
 }
 

@@ -52,6 +52,7 @@ class Checker {
  private:
   // ---- checker.cc
   void declare_attributes();
+  void collect_set_targets();
   void check_attribute_cycles();
   void check_priority_sets();
   void check_rule_ids();

@@ -51,6 +51,14 @@ bool is_scope_rule(const Item& item) {
   return op == "translate" || op == "scale" || op == "rotate" || op == "center" || op == "insert";
 }
 
+// Operations whose string argument may be a bare word: an asset name (`I(box)`), the axes of
+// center or the part of offset (`offset(-1, inside)`). Elsewhere (color, report, print) an
+// identifier is an attribute.
+bool takes_word(const OperationInfo& info) {
+  return info.registry_op == "insert" || info.registry_op == "center" ||
+         info.registry_op == "offset";
+}
+
 // ε, or CityEngine's `nil()`.
 bool is_empty_shape(const Item& item) {
   return item.kind == ItemKind::kEmpty || (item.kind == ItemKind::kOp && item.name == "nil");
@@ -252,10 +260,9 @@ void Checker::check_arguments(const Item& item, const OperationInfo& info) {
         }
         break;
       case 'i':
-        if (arg.kind != ExprKind::kIdent) {
+        // set(name, value) declares `name` when no attr does (collect_set_targets).
+        if (arg.kind != ExprKind::kIdent && arg.kind != ExprKind::kString) {
           error("CGA320", which + " must be an attribute name", arg.range);
-        } else if (arg.text != "material") {
-          check_expr(arg);
         }
         break;
       case 's':
@@ -263,7 +270,7 @@ void Checker::check_arguments(const Item& item, const OperationInfo& info) {
             (arg.kind == ExprKind::kUnary && fold(arg))) {
           error("CGA320", which + " must be a string", arg.range);
         } else {
-          check_expr(arg, ExprRole::kBareWord);
+          check_expr(arg, takes_word(info) ? ExprRole::kBareWord : ExprRole::kValue);
         }
         break;
       case 'n':
@@ -287,30 +294,22 @@ void Checker::check_arguments(const Item& item, const OperationInfo& info) {
 // one axis (the paper's `BS("XY", 3, 5, 7)` example is CGA308). A bare word (`split(y)`) is the
 // axis unless it names an attribute.
 void Checker::check_axis(const Expr& expr, bool combinations) {
-  std::string text;
-  if (expr.kind == ExprKind::kString) {
-    text = expr.text;
-  } else if (expr.kind == ExprKind::kIdent && !attributes_.count(expr.text) &&
-             !known_.count(expr.text)) {
-    text = expr.text;
-  } else {
-    check_expr(expr);  // computed: checked when derived
+  if (expr.kind != ExprKind::kString && expr.kind != ExprKind::kIdent) {
+    error("CGA308", "the split axis must be written as a word (\"x\" or x), not computed",
+          expr.range);
+    check_expr(expr);
     return;
   }
-  const std::optional<std::string> axis = canonical_axis(text);
+  const std::optional<std::string> axis = canonical_axis(expr.text);
   if (!axis || (!combinations && axis->size() != 1)) {
     error("CGA308",
-          "unknown split axis \"" + text + "\" (expected " +
+          "unknown split axis \"" + expr.text + "\" (expected " +
               (combinations ? "X, Y, Z, XY, XZ, YZ or XYZ" : "x, y or z") + ")",
           expr.range);
   }
 }
 
 std::optional<CompType> Checker::check_comp_type(const Expr& expr) {
-  if (expr.kind == ExprKind::kIdent && (attributes_.count(expr.text) || known_.count(expr.text))) {
-    check_expr(expr);
-    return std::nullopt;
-  }
   const std::optional<CompTypeSpelling> type = comp_type_of(expr.text);
   if (!type) {
     error("CGA309",

@@ -200,8 +200,9 @@ TEST(CgaChecker, AxesOfThePaperAndOfCityEngine) {
   EXPECT_TRUE(run("A --> split(y){ 1: B | ~1: C }\n")->result.ok);             // bare word
   EXPECT_FALSE(run("A --> split(w){ 1: B }\n")->result.ok);
   EXPECT_FALSE(run("1: a ~> RR(\"YX\", 3){ cell }\n")->result.ok);
-  // An attribute named like an axis is its value, checked when derived.
-  EXPECT_TRUE(run("attr dir = \"x\"\nA --> split(dir){ 1: B }\n")->result.ok);
+  // The axis is a word, never a value (as the compiler reads it): an attribute cannot be one.
+  EXPECT_FALSE(run("attr dir = \"x\"\nA --> split(dir){ 1: B }\n")->result.ok);
+  EXPECT_FALSE(run("A --> split(Shape.sx){ 1: B }\n")->result.ok);
 }
 
 TEST(CgaChecker, SplitPatternsAndSizes) {
