@@ -55,7 +55,8 @@ struct WallGeometry {
   double offset0 = 0;  // footprint across the reference line, along `left`: [offset0, offset1]
   double offset1 = 0;
   double thickness = 0;
-  bool exterior = false;  // exterior or dead-zone side: the wall stands inside the room's cell
+  bool exterior = false;      // exterior or dead-zone side: the wall stands inside the room's cell
+  bool reaches_past = false;  // lengthened at a reflex corner, into a neighbouring cell
   kernel::Polygon footprint;
 
   double u_of(Vec2 p) const { return kernel::dot(p - start, dir); }
@@ -66,8 +67,9 @@ struct WallGeometry {
 
 // What the wall stage hands to the room stage of the same storey.
 struct StoreyWalls {
-  std::vector<WallGeometry> walls;         // per FloorPlan wall piece (same index)
-  std::vector<kernel::Polygon> door_gaps;  // per door and entrance cut: the gap across the wall
+  std::vector<WallGeometry> walls;           // per FloorPlan wall piece (same index)
+  std::vector<kernel::Polygon> door_gaps;    // per door and entrance cut: the gap across the wall
+  std::vector<std::vector<int>> room_walls;  // per room: the wall pieces bordering it
 };
 
 // A closed parallelepiped with corner `origin` and edges u, v, w (any handedness), faces outward.

@@ -143,18 +143,46 @@ int find(std::vector<int>& parent, int i) {
 }
 
 // Parts "in spatial contact [...] at the ground level" (§4.6): they share at least kContact of
-// boundary. The treemap's cells may leave micrometre gaps between neighbours, so `a` is grown by
-// kGap first and the overlap's area measured.
+// boundary, edges closer than kGap counting as shared (the treemap's cells may leave micrometre
+// gaps between neighbours).
 constexpr double kGap = 1e-3;     // m
 constexpr double kContact = 0.5;  // m of shared wall
 
-bool in_contact(const kernel::Polygon& a, const kernel::Polygon& b) {
-  const kernel::BooleanResult grown = kernel::offset({a}, kGap);
-  if (!grown.ok()) return false;
-  const kernel::BooleanResult overlap = kernel::intersect(grown.polygons, {b});
+// Length of boundary that `a` and `b` share: collinear overlaps of their edges, within kGap.
+double shared_length(const kernel::Polygon& a, const kernel::Polygon& b) {
   double shared = 0;
-  for (const kernel::Polygon& p : overlap.polygons) shared += kernel::area(p);
-  return overlap.ok() && shared > kGap * kContact;
+  const auto edges = [](const kernel::Polygon& p, auto&& visit) {
+    const auto ring_edges = [&](const kernel::Ring& r) {
+      for (std::size_t i = 0; i < r.size(); ++i) visit(r[i], r[(i + 1) % r.size()]);
+    };
+    ring_edges(p.outer);
+    for (const kernel::Ring& hole : p.holes) ring_edges(hole);
+  };
+  edges(a, [&](Vec2 p, Vec2 q) {
+    const double length = kernel::length(q - p);
+    if (length < kGap) return;
+    const Vec2 dir = (q - p) / length;
+    edges(b, [&](Vec2 r, Vec2 s) {
+      if (kernel::distance_to_segment(r, p - dir * 1e9, q + dir * 1e9) > kGap ||
+          kernel::distance_to_segment(s, p - dir * 1e9, q + dir * 1e9) > kGap) {
+        return;
+      }
+      const double u0 = std::min(kernel::dot(r - p, dir), kernel::dot(s - p, dir));
+      const double u1 = std::max(kernel::dot(r - p, dir), kernel::dot(s - p, dir));
+      shared += std::max(0.0, std::min(u1, length) - std::max(u0, 0.0));
+    });
+  });
+  return shared;
+}
+
+bool in_contact(const kernel::Polygon& a, const kernel::Polygon& b) {
+  const kernel::Bounds2 ba = kernel::bounds(a);
+  const kernel::Bounds2 bb = kernel::bounds(b);
+  if (ba.min.x > bb.max.x + kGap || bb.min.x > ba.max.x + kGap || ba.min.y > bb.max.y + kGap ||
+      bb.min.y > ba.max.y + kGap) {
+    return false;
+  }
+  return shared_length(a, b) >= kContact;
 }
 
 // The union of touching outlines with the micrometre gaps closed (grow, unite, shrink back).

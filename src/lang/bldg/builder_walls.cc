@@ -30,10 +30,19 @@ bool outer_side(const PlanWall& wall) {
   return wall.right == kExteriorSide || wall.right == kDeadZoneSide;
 }
 
+// Near the segment's bounding box (a cheap test before the distance).
+bool near_box(Vec2 p, Vec2 a, Vec2 b) {
+  return p.x >= std::min(a.x, b.x) - kTouch && p.x <= std::max(a.x, b.x) + kTouch &&
+         p.y >= std::min(a.y, b.y) - kTouch && p.y <= std::max(a.y, b.y) + kTouch;
+}
+
 // A point of the storey's outline (an outer wall's reference line).
 bool on_outline(const PlanStorey& storey, Vec2 p) {
   for (const PlanWall& w : storey.walls) {
-    if (outer_side(w) && kernel::distance_to_segment(p, w.a, w.b) < kTouch) return true;
+    if (outer_side(w) && near_box(p, w.a, w.b) &&
+        kernel::distance_to_segment(p, w.a, w.b) < kTouch) {
+      return true;
+    }
   }
   return false;
 }
@@ -41,13 +50,19 @@ bool on_outline(const PlanStorey& storey, Vec2 p) {
 // The outer piece that starts where `wall` ends (its successor along the outline), or null.
 const PlanWall* next_outer(const PlanStorey& storey, const PlanWall& wall) {
   for (const PlanWall& w : storey.walls) {
-    if (&w != &wall && outer_side(w) && kernel::length(w.a - wall.b) < kTouch) return &w;
+    if (&w != &wall && outer_side(w) && std::abs(w.a.x - wall.b.x) < kTouch &&
+        std::abs(w.a.y - wall.b.y) < kTouch) {
+      return &w;
+    }
   }
   return nullptr;
 }
 const PlanWall* previous_outer(const PlanStorey& storey, const PlanWall& wall) {
   for (const PlanWall& w : storey.walls) {
-    if (&w != &wall && outer_side(w) && kernel::length(w.b - wall.a) < kTouch) return &w;
+    if (&w != &wall && outer_side(w) && std::abs(w.b.x - wall.a.x) < kTouch &&
+        std::abs(w.b.y - wall.a.y) < kTouch) {
+      return &w;
+    }
   }
   return nullptr;
 }
@@ -82,6 +97,7 @@ WallGeometry place(const PlanStorey& storey, const PlanWall& wall, double outer_
     extend_start = on_outline(storey, wall.a) ? -outer_thickness / 2 : g.thickness / 2;
     extend_end = on_outline(storey, wall.b) ? -outer_thickness / 2 : g.thickness / 2;
   }
+  g.reaches_past = g.exterior && (extend_start > 0 || extend_end > 0);
   g.start = wall.a - g.dir * extend_start;
   g.length = length + extend_start + extend_end;
   g.footprint = g.rect(0, g.length, g.offset0, g.offset1);
@@ -172,6 +188,14 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
   const double h = c.storey_height(s);
   const double slab = c.options.slab_thickness;
   StoreyWalls out;
+  out.room_walls.resize(storey.rooms.size());
+  for (std::size_t i = 0; i < storey.walls.size(); ++i) {
+    for (const int room : {storey.walls[i].left, storey.walls[i].right}) {
+      if (room >= 0 && static_cast<std::size_t>(room) < storey.rooms.size()) {
+        out.room_walls[static_cast<std::size_t>(room)].push_back(static_cast<int>(i));
+      }
+    }
+  }
   std::vector<std::vector<Asked>> asked(storey.walls.size());
   const auto add_door = [&](const PlanDoor& d, bool entrance) {
     if (d.wall < 0 || static_cast<std::size_t>(d.wall) >= storey.walls.size()) return;
