@@ -140,7 +140,23 @@ std::optional<Prism> as_prism(const ShapeTree& tree, ShapeId id, const Scope& re
   return prism;
 }
 
-// The tag of the source face (ref space) whose plane holds `centre` with a parallel normal.
+// Whether the point (on face f's plane) lies in the face, boundary included: the loop projected
+// along the normal's dominant axis.
+bool face_contains(const Mesh& mesh, std::size_t f, Vec3 point, Vec3 normal) {
+  const double ax = std::fabs(normal.x);
+  const double ay = std::fabs(normal.y);
+  const double az = std::fabs(normal.z);
+  const auto flat = [&](Vec3 p) -> Vec2 {
+    if (ax >= ay && ax >= az) return {p.y, p.z};
+    if (ay >= az) return {p.x, p.z};
+    return {p.x, p.y};
+  };
+  Polygon loop;
+  for (std::uint32_t v : mesh.face(f)) loop.outer.push_back(flat(mesh.position(v)));
+  return kernel::locate(loop, flat(point), kPlanar) != kernel::PointLocation::kOutside;
+}
+
+// The tag of the source face (ref space) holding `centre`, with a parallel normal.
 FaceTag carried_tag(std::span<const Prism* const> sources, Vec3 centre, Vec3 normal,
                     FaceTag fallback) {
   for (const Prism* src : sources) {
@@ -148,10 +164,65 @@ FaceTag carried_tag(std::span<const Prism* const> sources, Vec3 centre, Vec3 nor
       const Vec3 n = kernel::face_normal(src->mesh, f);
       if (std::fabs(std::fabs(dot(n, normal)) - 1) > 1e-6) continue;
       const Vec3 p = src->mesh.position(src->mesh.face(f)[0]);
-      if (std::fabs(dot(n, centre - p)) <= kPlanar) return src->mesh.tag(f);
+      if (std::fabs(dot(n, centre - p)) > kPlanar) continue;
+      if (face_contains(src->mesh, f, centre, n)) return src->mesh.tag(f);
     }
   }
   return fallback;
+}
+
+bool same_tag(const FaceTag& a, const FaceTag& b) {
+  return a.face_id == b.face_id && a.semantic == b.semantic && a.material == b.material;
+}
+
+// §3.1.1: "the boolean union ... will only merge faces sharing the same ID". Clipper merges
+// collinear edges of the result; this puts back, on each result edge, the source vertices where
+// the carried face changes, so side faces from differently tagged sources stay apart.
+void keep_face_ids(Polygon& polygon, double y_mid, std::span<const Prism* const> sources) {
+  std::vector<Vec2> points;
+  for (const Prism* src : sources) {
+    for (const Polygon& p : src->section) {
+      points.insert(points.end(), p.outer.begin(), p.outer.end());
+      for (const auto& hole : p.holes) points.insert(points.end(), hole.begin(), hole.end());
+    }
+  }
+  const auto tag_at = [&](Vec2 a, Vec2 b) {
+    const Vec2 m = (a + b) * 0.5;
+    const Vec2 d = b - a;
+    return carried_tag(sources, {m.x, y_mid, -m.y}, normalized(Vec3{d.y, 0, d.x}), FaceTag{});
+  };
+  const auto refine = [&](kernel::Ring& ring) {
+    kernel::Ring out;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Vec2 a = ring[i];
+      const Vec2 b = ring[(i + 1) % ring.size()];
+      const Vec2 d = b - a;
+      const double len2 = dot(d, d);
+      std::vector<double> ts;
+      for (Vec2 p : points) {
+        const double t = len2 > 0 ? dot(p - a, d) / len2 : 0;
+        if (t > 1e-9 && t < 1 - 1e-9 && kernel::distance_to_segment(p, a, b) <= kPlanar) {
+          ts.push_back(t);
+        }
+      }
+      std::sort(ts.begin(), ts.end());
+      ts.erase(std::unique(ts.begin(), ts.end(), [](double x, double y) { return y - x < 1e-9; }),
+               ts.end());
+      out.push_back(a);
+      double from = 0;
+      for (std::size_t k = 0; k < ts.size(); ++k) {
+        const double to = k + 1 < ts.size() ? ts[k + 1] : 1.0;
+        const Vec2 split = a + d * ts[k];
+        if (!same_tag(tag_at(a + d * from, split), tag_at(split, a + d * to))) {
+          out.push_back(split);
+          from = ts[k];
+        }
+      }
+    }
+    ring = std::move(out);
+  };
+  refine(polygon.outer);
+  for (auto& hole : polygon.holes) refine(hole);
 }
 
 FaceTag cap_tag(const Prism& p, bool top) {
@@ -172,7 +243,9 @@ OpResult add_prisms(ShapeTree& tree, ShapeId parent, const Scope& ref,
     kernel::ExtrudeOptions options;
     options.bottom = cap_tag(*sources[0], false);
     options.top = cap_tag(*sources[0], true);
-    kernel::ExtrudeResult prism = kernel::extrude_planar(polygons[i], plane, y1 - y0, options);
+    Polygon section = polygons[i];
+    keep_face_ids(section, (y0 + y1) / 2, sources);
+    kernel::ExtrudeResult prism = kernel::extrude_planar(section, plane, y1 - y0, options);
     if (!prism.ok())
       return OpResult::failure(std::string(kernel::extrude_status_message(prism.status)));
     Mesh& m = prism.mesh;

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "shape/component_ops.h"
 
 namespace insula::shape {
@@ -77,6 +79,35 @@ TEST(ComponentBoolean, UnionAndIntersectionAreRoots) {
   ASSERT_EQ(i.children.size(), 1U);
   EXPECT_NEAR(world_volume(tree, i.children[0]), 3 * 4, 1e-9);
   EXPECT_EQ(tree.roots().size(), roots + 2);
+}
+
+TEST(ComponentBoolean, UnionKeepsCoplanarFacesWithDifferentIdsApart) {
+  // §3.1.1: a union only merges faces sharing the same id. A and B stand side by side; their
+  // fronts (+z) carry ids 5 and 9, their backs (-z) the same id 4.
+  ShapeTree tree;
+  const ShapeId a = box_at(tree, {0, 0, 0}, {4, 3, 4});
+  Scope scope;
+  scope.origin = {4, 0, 0};
+  scope.size = {4, 3, 4};
+  auto tags = mass_box_tags();
+  tags[5].face_id = 9;
+  const ShapeId b = tree.add_root(scope, box_mesh(scope.size, tags));
+  const std::vector<ShapeId> ab{a, b};
+  const OpResult u = unite_components(tree, ab);
+  ASSERT_EQ(u.children.size(), 1U);
+  const kernel::Mesh& m = *tree[u.children[0]].mesh;
+  std::vector<std::uint32_t> front;
+  int back = 0;
+  for (std::size_t f = 0; f < m.face_count(); ++f) {
+    const Vec3 n = kernel::face_normal(m, f);
+    if (n.z > 0.5) front.push_back(m.tag(f).face_id);
+    if (n.z < -0.5) ++back;
+  }
+  std::sort(front.begin(), front.end());
+  EXPECT_EQ(front, (std::vector<std::uint32_t>{5, 9}));
+  EXPECT_EQ(back, 1);  // same id: merged into one face
+  EXPECT_NEAR(world_volume(tree, u.children[0]), 96, 1e-9);
+  EXPECT_TRUE(kernel::is_watertight(m));
 }
 
 TEST(ComponentBoolean, DifferentHeightsGoThroughCorefinement) {
