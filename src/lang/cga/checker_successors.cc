@@ -207,6 +207,8 @@ void Checker::check_item(const Item& item) {
           quoted(item.name) + " expects " + wanted + " argument" + (wanted == "1" ? "" : "s") +
               ", found " + std::to_string(count),
           item.range);
+    // Still resolve the names (no spurious "never used" for the attributes they read).
+    for (const ExprPtr& arg : item.args) check_expr(*arg, ExprRole::kBareWord);
   } else {
     check_arguments(item, *info);
   }
