@@ -148,6 +148,32 @@ TEST(CgaPrinter, ParenthesesOnlyWherePrecedenceNeedsThem) {
   }
 }
 
+TEST(CgaPrinter, DeepNestingAndLongChainsRoundTrip) {
+  // Close to the parser's nesting limit (kMaxNesting): nested blocks, parentheses, unary chains.
+  std::string blocks = "1: A ~> ";
+  for (int i = 0; i < 60; ++i) blocks += "BS(\"X\", 1r){ ";
+  blocks += "B";
+  for (int i = 0; i < 60; ++i) blocks += " }";
+  std::string parens = "2: B : ";
+  for (int i = 0; i < 25; ++i) parens += "(x - ";
+  parens += "1";
+  for (int i = 0; i < 25; ++i) parens += ")";
+  parens += " > 0 ~> C";
+  std::string chain = "3: C : 1";
+  for (int i = 0; i < 80; ++i) chain += " + 1";
+  chain += " > - -~'x && !!!y ~> D";
+  const Parsed p = parse_text(blocks + "\n" + parens + "\n" + chain + "\n");
+  const Parsed again = parse_text(print(p.grammar));
+  EXPECT_EQ(stripped_dump(again), stripped_dump(p));
+  EXPECT_TRUE(nlohmann::json::accept(model_json(p.grammar, p.source)));
+  pugi::xml_document doc;
+  EXPECT_TRUE(doc.load_string(model_xmi(p.grammar, p.source).c_str()));
+  const DerivationGraph g = derivation_graph(p.grammar, p.source);
+  EXPECT_EQ(g.edges.size(), 3U);
+  EXPECT_EQ(g.edges[0].targets.size(), 1U);
+  EXPECT_EQ(g.edges[0].operations.size(), 60U);
+}
+
 // ---- JSON model ----
 
 TEST(CgaModelJson, PaperFig13) {
