@@ -267,6 +267,12 @@ void build_stairs(const Context& c, int s, kernel::Mesh& mesh, shape::StoreyPlan
     plan.stairs.push_back({st.footprint, st.foot, st.head});
     ++c.result.stats.stairs;
   }
+  // The flights arriving from below show on this storey's plan too, over their stairwell.
+  if (s > 0) {
+    for (const PlanStair& st : c.plan.storeys[static_cast<std::size_t>(s - 1)].stairs) {
+      plan.stairs.push_back({st.footprint, st.foot, st.head});
+    }
+  }
 }
 
 void build_base(const Context& c, const std::vector<StoreyWalls>& walls, kernel::Mesh& mesh) {

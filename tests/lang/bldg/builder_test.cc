@@ -382,6 +382,7 @@ TEST(Builder, StairsClimbToTheUpperFloorThroughAStairwell) {
   ASSERT_EQ(r.building.plans.size(), 2U);
   EXPECT_EQ(r.building.plans[0].stairs.size(), 1U);
   EXPECT_NEAR(r.building.plans[1].elevation, 3.3, 1e-12);
+  EXPECT_EQ(r.building.plans[1].stairs.size(), 1U);  // drawn over its stairwell
   EXPECT_NEAR(top_of(find_part(r, "roof p")->mesh), 0.3 + 6 + 2, 1e-9);
   expect_closed(r);
 }
