@@ -175,9 +175,10 @@ TEST(BldgParser, DeepGrammarIsRejectedNotOverflowed) {
       "p -> buildingpart(Flat, 2) : {f}\nf -> floor() : {d0}\n";
   const int depth = 5000;
   for (int i = 0; i < depth; ++i) {
-    text += "d" + std::to_string(i) + " -> divisions() : {d" + std::to_string(i + 1) + "}\n";
+    text +=
+        testing::numbered("d", i) + " -> divisions() : {" + testing::numbered("d", i + 1) + "}\n";
   }
-  text += "d" + std::to_string(depth) + " -> room(x, small)\n";
+  text += testing::numbered("d", depth) + " -> room(x, small)\n";
   const std::string first = testing::first_error(text);
   EXPECT_NE(first.find("error[BLD216]: the tree is deeper than 256 levels"), std::string::npos)
       << first;
@@ -190,7 +191,7 @@ TEST(BldgParser, WideGrammarParses) {
   const int rooms = 2000;
   for (int i = 0; i < rooms; ++i) text += (i ? ", r" : "r") + std::to_string(i);
   text += "}\n";
-  for (int i = 0; i < rooms; ++i) text += "r" + std::to_string(i) + " -> room(x, small)\n";
+  for (int i = 0; i < rooms; ++i) text += testing::numbered("r", i) + " -> room(x, small)\n";
   const Building b = parse_ok(text);
   EXPECT_EQ(b.layout.children[0].part->floors[0].layout.children.size(),
             static_cast<std::size_t>(rooms));
