@@ -83,23 +83,23 @@ local function door_on(w, width)
   return door(r, { width = width, height = 2.1 })
 end
 -- Each query runs once over the whole building: its occlusion group is gathered once.
-for w in query("wall and parent(living) and occlusion(corridor) > 0") do door_on(w, 1.0) end
-for w in query("wall and parent(bedroom) and occlusion(living) > 0") do door_on(w, 0.8) end
-for w in query("wall and parent(bath) and occlusion(bedroom) > 0") do door_on(w, 0.7) end
+for w in query("wall and parent(living) and occlusion(corridor) > 0.9") do door_on(w, 1.0) end
+for w in query("wall and parent(bedroom) and occlusion(living) > 0.9") do door_on(w, 0.8) end
+for w in query("wall and parent(bath) and occlusion(bedroom) > 0.9") do door_on(w, 0.7) end
 for w in query("wall and parent(stair) and occlusion(corridor) > 0") do
   for level = 0, STOREYS - 1 do
     door(w, { u = w.size[1] / 2, sill = level * H + 0.1, width = 1.2, height = 2.1 })
   end
 end
-for w in query("wall and (parent(bedroom) or parent(bath)) and occlusion(facade) > 0") do
+for w in query("wall and (parent(bedroom) or parent(bath)) and occlusion(facade) > 0.9") do
   window(w, { u = w.size[1] / 2, sill = 0.9, width = math.min(1.4, w.size[1] - 0.6), height = 1.4 })
 end
-for w in query("wall and parent(corridor) and occlusion(facade) > 0") do
+for w in query("wall and parent(corridor) and occlusion(facade) > 0.9") do
   window(w, { u = w.size[1] / 2, sill = 0.6, width = 1.0, height = 2.0 })
 end
 -- Living rooms: a window and a balcony door onto a balcony hung on the façade (w.level is the
 -- storey's level, inherited).
-for w in query("wall and parent(living) and occlusion(facade) > 0") do
+for w in query("wall and parent(living) and occlusion(facade) > 0.9") do
   if w.size[1] > 2.6 then
     local u = w.size[1] / 2
     window(w, { u = u - 0.7, sill = 0.9, width = 0.8, height = 1.4 })

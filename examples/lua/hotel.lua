@@ -57,7 +57,7 @@ for w in query("wall and parent(room) and occlusion(corridor) > 0") do
   door(r, { width = 0.9, height = 2.1 })
 end
 -- One window per room on the façade; walls of the corridor ends get a tall window.
-for w in query("wall and parent(room) and occlusion(facade) > 0") do
+for w in query("wall and parent(room) and occlusion(facade) > 0.9") do
   window(w, { u = w.size[1] / 2, sill = 0.9, width = 1.4, height = 1.4 })
 end
 -- The stairwell opens onto the corridor on every storey (holes above the lowest, a notch there).
@@ -66,7 +66,7 @@ for w in query("wall and parent(stair) and occlusion(corridor) > 0") do
     door(w, { u = w.size[1] / 2, sill = i * H + 0.1, width = 1.0, height = 2.1 })
   end
 end
-for w in query("wall and parent(corridor) and occlusion(facade) > 0") do
+for w in query("wall and parent(corridor) and occlusion(facade) > 0.9") do
   window(w, { u = w.size[1] / 2, sill = 0.6, width = 1.0, height = 2.0 })
 end
 

@@ -294,11 +294,22 @@ TEST(LuaGeometry, ExampleGoldens) {
         triangles += p.instance_of ? p.instance_of->triangle_count() : p.mesh.triangle_count();
       }
     }
-    counts[name] = {{"components", r.tree().size()},
-                    {"doors", r.labelled("door").size()},
-                    {"parts", parts},
-                    {"triangles", triangles},
-                    {"windows", r.labelled("window").size()}};
+    // Every (opening, wall it pierces) pair, and the openings actually cut (two jambs each).
+    std::vector<ShapeId> openings = r.labelled("opening");
+    std::size_t pairs = 0;
+    std::size_t jambs = 0;
+    for (ShapeId solid : r.labelled("solid")) {
+      const ShapeId wall = r.tree().parent(solid);
+      for (ShapeId o : openings) pairs += shape::opening_in_wall(r.tree(), wall, o) ? 1 : 0;
+      const kernel::Mesh& m = *r.tree()[solid].mesh;
+      for (std::size_t f = 0; f < m.face_count(); ++f) {
+        jambs += m.tag(f).semantic == kernel::SemanticClass::kJamb ? 1 : 0;
+      }
+    }
+    counts[name] = {
+        {"components", r.tree().size()},         {"cuts", jambs / 2}, {"pierced_walls", pairs},
+        {"doors", r.labelled("door").size()},    {"parts", parts},    {"triangles", triangles},
+        {"windows", r.labelled("window").size()}};
   }
   const std::filesystem::path golden =
       std::filesystem::path(INSULA_TEST_DATA) / "lua/geometry/examples.json";
@@ -307,6 +318,12 @@ TEST(LuaGeometry, ExampleGoldens) {
   }
   EXPECT_EQ(counts, nlohmann::json::parse(read(golden)));
   EXPECT_GE(counts["apartment_building"]["triangles"].get<std::size_t>(), 500000U);
+  // Every door and window is cut through every wall it pierces (one window of the apartment
+  // building's courtyard façade is the known exception, see docs/lua-geometry.md).
+  EXPECT_EQ(counts["hotel"]["cuts"], counts["hotel"]["pierced_walls"]);
+  EXPECT_EQ(counts["loft_office"]["cuts"], counts["loft_office"]["pierced_walls"]);
+  EXPECT_GE(counts["apartment_building"]["cuts"].get<std::size_t>() + 1,
+            counts["apartment_building"]["pierced_walls"].get<std::size_t>());
 }
 
 }  // namespace
