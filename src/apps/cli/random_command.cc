@@ -9,6 +9,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
@@ -193,10 +196,20 @@ int run_random(const RandomOptions& options) {
   const auto work = [&] {
     for (int i = next++; i < options.count; i = next++) make_one(batch, i);
   };
+  // Each build lists the files it wrote on stdout (finish_build, as `insula build` does); the
+  // batch prints its own summary instead, so stdout is parked on /dev/null meanwhile.
+  std::fflush(stdout);
+  const int saved_stdout = dup(STDOUT_FILENO);
+  const int null_fd = open("/dev/null", O_WRONLY);
+  if (saved_stdout >= 0 && null_fd >= 0) dup2(null_fd, STDOUT_FILENO);
   std::vector<std::thread> workers;
   for (int t = 1; t < threads; ++t) workers.emplace_back(work);
   work();
   for (std::thread& worker : workers) worker.join();
+  std::fflush(stdout);
+  if (saved_stdout >= 0 && null_fd >= 0) dup2(saved_stdout, STDOUT_FILENO);
+  if (saved_stdout >= 0) close(saved_stdout);
+  if (null_fd >= 0) close(null_fd);
   if (!options.quiet) {
     const double seconds = total.seconds();
     std::printf("%s: %d buildings (%d failed), %zu vertices, %.3f s (%.1f ms per building)\n",
