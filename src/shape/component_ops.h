@@ -164,7 +164,9 @@ OpResult add_opening(ShapeTree& tree, ShapeId face, const OpeningSpec& spec);
 // (the "subtract" half of §4.4's composite operation). Walls that are prisms through their face
 // (joint extrusion, extrude) are cut with kernel/wall.h (planar, no 3D boolean): the mitred ends
 // are split off with kernel::split and the middle slab is rebuilt with the openings; any other
-// boundary falls back to kernel::boolean3d. `uv_scale` > 0 asks writers for texture coordinates
+// boundary, and openings the planar path rejects (reaching into a mitred end, overlapping another
+// opening), go through kernel::boolean3d piece by piece. The child's attribute "openings_cut"
+// counts the openings cut. `uv_scale` > 0 asks writers for texture coordinates
 // (planar per face, `uv_scale` meters per texture repeat; kernel/uv.h), recorded as the
 // attribute "uv_scale". The child has attribute "component" = the component's first label.
 struct SolidOptions {

@@ -115,9 +115,10 @@ bool split_core(const Mesh& wall, const kernel::Bounds2& core, Pieces& out) {
   return true;
 }
 
-// The planar path: openings cut into the wall's slab core with kernel::build_wall.
+// The planar path: openings cut into the wall's slab core with kernel::build_wall. `cut` gets the
+// indices of the openings it cut (the others reach into the mitred ends or overlap each other).
 bool cut_planar(const Mesh& wall, double thickness, std::vector<kernel::Opening> openings,
-                Mesh& out) {
+                Pieces& out, std::vector<std::size_t>& cut) {
   FaceTag front_tag;
   FaceTag back_tag;
   const auto front = caps(wall, thickness, 1, &front_tag);
@@ -146,22 +147,42 @@ bool cut_planar(const Mesh& wall, double thickness, std::vector<kernel::Opening>
   spec.tags.back = back_tag;
   kernel::WallResult built = kernel::build_wall(spec);
   if (!built.ok()) return false;
-  out = std::move(built.mesh);
-  for (const Mesh& end : pieces.ends) out.append(end);
+  cut = std::move(built.cut);
+  out.core = std::move(built.mesh);
+  out.ends = std::move(pieces.ends);
   return true;
 }
 
-// The general path: each opening box subtracted by CGAL corefinement.
-bool cut_general(const Mesh& wall, const std::vector<kernel::Bounds3>& boxes, Mesh& out) {
-  out = wall;
+bool overlaps(const kernel::Bounds3& a, const kernel::Bounds3& b) {
+  return a.min.x < b.max.x && b.min.x < a.max.x && a.min.y < b.max.y && b.min.y < a.max.y &&
+         a.min.z < b.max.z && b.min.z < a.max.z;
+}
+
+// The general path: opening boxes subtracted by CGAL corefinement from every closed piece they
+// reach (the slab with its planar cuts and the mitred ends are separate closed meshes); the
+// reveals keep the jamb, sill and lintel classes. Returns how many openings were cut.
+std::size_t cut_general(Pieces& pieces, const std::vector<kernel::Bounds3>& boxes) {
+  const FaceTag jamb{SemanticClass::kJamb, 0, 0};
+  const std::array<FaceTag, 6> tags = {
+      jamb, jamb, FaceTag{SemanticClass::kSill, 0, 0}, FaceTag{SemanticClass::kLintel, 0, 0},
+      jamb, jamb};
+  std::size_t cut = 0;
   for (const kernel::Bounds3& b : boxes) {
-    Mesh box;
-    append_box(box, b.min, b.max, {SemanticClass::kJamb, 0, 0});
-    kernel::Boolean3dResult r = kernel::boolean3d(out, box, kernel::BooleanOp::kDifference);
-    if (r.status != kernel::Boolean3dStatus::kOk) return false;
-    out = std::move(r.mesh);
+    Mesh box = *box_mesh(b.max - b.min, tags);
+    for (Vec3& p : box.positions()) p += b.min;
+    bool any = false;
+    const auto subtract = [&](Mesh& piece) {
+      if (piece.empty() || !overlaps(piece.bounds(), b)) return;
+      kernel::Boolean3dResult r = kernel::boolean3d(piece, box, kernel::BooleanOp::kDifference);
+      if (r.status != kernel::Boolean3dStatus::kOk) return;
+      piece = std::move(r.mesh);
+      any = true;
+    };
+    subtract(pieces.core);
+    for (Mesh& end : pieces.ends) subtract(end);
+    cut += any ? 1 : 0;
   }
-  return true;
+  return cut;
 }
 
 }  // namespace
@@ -215,18 +236,33 @@ OpResult solid_geometry(ShapeTree& tree, ShapeId id, const SolidOptions& options
     }
   }
   std::shared_ptr<const Mesh> mesh = s.mesh;
+  std::size_t cut_count = 0;
   if (!openings.empty()) {
-    Mesh cut;
-    if (!cut_planar(*s.mesh, s.scope.size.z, openings, cut) && !cut_general(*s.mesh, boxes, cut)) {
-      return OpResult::failure("cannot cut the openings into the component's geometry");
+    Pieces pieces;
+    std::vector<std::size_t> planar;
+    std::vector<kernel::Bounds3> rest;  // openings the planar path could not cut
+    if (cut_planar(*s.mesh, s.scope.size.z, openings, pieces, planar)) {
+      std::vector<bool> done(openings.size(), false);
+      for (std::size_t i : planar) done[i] = true;
+      for (std::size_t i = 0; i < boxes.size(); ++i) {
+        if (!done[i]) rest.push_back(boxes[i]);
+      }
+    } else {
+      pieces = {{}, *s.mesh};
+      rest = boxes;
     }
-    mesh = std::make_shared<Mesh>(std::move(cut));
+    cut_count = planar.size() + cut_general(pieces, rest);
+    for (const Mesh& end : pieces.ends) pieces.core.append(end);
+    mesh = std::make_shared<Mesh>(std::move(pieces.core));
   }
   const std::string name(tree.first_label(id));
   const ShapeId child = tree.add_child(id, s.scope, std::move(mesh));
   tree.add_label(child, "solid");
   tree.set_attribute(child, "component", Value{name});
   if (options.uv_scale > 0) tree.set_attribute(child, "uv_scale", Value{options.uv_scale});
+  if (!openings.empty()) {
+    tree.set_attribute(child, "openings_cut", Value{static_cast<double>(cut_count)});
+  }
   if (!options.material.empty()) tree.set_attribute(child, "material", Value{options.material});
   OpResult result;
   result.add(child, 0);

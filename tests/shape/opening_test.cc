@@ -67,6 +67,7 @@ TEST(Opening, DoorAndWindowCutThroughASlabWall) {
     jambs += tree[solid].mesh->tag(k).semantic == SemanticClass::kJamb ? 1 : 0;
   }
   EXPECT_EQ(jambs, 4);  // two per opening
+  EXPECT_EQ(std::get<double>(*tree.attribute(solid, "openings_cut")), 2);
   // The door's own geometry: frame and leaf (the union half), watertight pieces.
   EXPECT_EQ(tree[d].mesh->face_count(), 4U * 6U);
   EXPECT_EQ(tree[w].mesh->face_count(), 5U * 6U);
@@ -106,6 +107,45 @@ TEST(Opening, DoorInAMitredRoomWallIsANotchAboveTheFloor) {
               kernel::check(kernel::weld(*tree[solid].mesh)).boundary_edges == 0);
   // The notch starts on top of the 0.1 m floor: 1 x 2.0 x 0.1 removed.
   EXPECT_NEAR(world_volume(tree, solid), before - 1 * 2.0 * 0.1, 1e-9);
+}
+
+TEST(Opening, AnOpeningInTheMitredEndIsCutByCorefinement) {
+  // Walls meeting at corners, grown inward together: the window reaches from the corner into
+  // the mitred end, where the wall is not a prism through its face; the planar path cannot cut
+  // it and CGAL cuts the box out of the end piece and the slab.
+  ShapeTree tree;
+  const ShapeId r = room(tree, {5, 3, 4});
+  std::vector<ShapeId> faces;
+  for (std::size_t f = 0; f < tree[r].mesh->face_count(); ++f) {
+    if (face_matches(FaceSelector::kSide, kernel::face_normal(*tree[r].mesh, f))) {
+      faces.push_back(face_component(tree, r, f).children.at(0));
+    }
+  }
+  const OpResult walls = extrude_joint(tree, faces, -0.2);
+  ShapeId front = kNoShape;
+  ShapeId front_wall = kNoShape;
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    if (dot(tree[faces[i]].scope.z, Vec3{0, -1, 0}) > 0.99) {
+      front = faces[i];
+      front_wall = walls.children[i];
+    }
+  }
+  ASSERT_NE(front, kNoShape);
+  OpeningSpec window;
+  window.kind = OpeningKind::kWindow;
+  window.u = 0.55;  // [0.1, 1.0]: starts inside the 0.2 m mitre
+  window.sill = 1;
+  window.width = 0.9;
+  window.height = 1;
+  const ShapeId w = add_opening(tree, front, window).children.at(0);
+  const double before = world_volume(tree, front_wall);
+  SolidOptions options;
+  options.openings = {w};
+  const ShapeId solid = solid_geometry(tree, front_wall, options).children.at(0);
+  EXPECT_EQ(std::get<double>(*tree.attribute(solid, "openings_cut")), 1);
+  // The box [0.1, 1.0] x [1, 2] through the wall removes 0.9 x 0.2 of section, less the corner of
+  // the mitre triangle (legs 0.1) that is not wall: 1 m high.
+  EXPECT_NEAR(before - world_volume(tree, solid), 1.0 * (0.9 * 0.2 - 0.5 * 0.1 * 0.1), 1e-6);
 }
 
 TEST(Opening, OpeningsElsewhereLeaveTheGeometryShared) {
