@@ -47,6 +47,17 @@ cmp -s "$tmp/d1.mtl" "$tmp/d2.mtl" || fail "MTL differs between --threads 1 and 
 same_obj "$tmp/b1.obj" "$tmp/b2.obj" || fail "same seed, different output"
 same_obj "$tmp/b1.obj" "$tmp/b3.obj" && fail "another seed, same output"
 
+# The lot's x axis follows the file's first edge: the same footprint written clockwise, starting
+# with the street edge, builds the same model.
+cat >"$tmp/cw.geojson" <<'G'
+{"type": "FeatureCollection", "features": [{"type": "Feature", "id": "corner_house",
+ "properties": {"floors": 4}, "geometry": {"type": "Polygon", "coordinates":
+ [[[26, 0], [0, 0], [0, 12], [14, 12], [14, 22], [26, 22], [26, 0]]]}}]}
+G
+"$insula" build "$ex/building.cga" --lot "$tmp/cw.geojson" --seed 3 -o "$tmp/cw.obj" -q \
+  >/dev/null || fail "building from a clockwise ring"
+same_obj "$tmp/b1.obj" "$tmp/cw.obj" || fail "clockwise ring: another start shape"
+
 # --set wins over lot properties, which win over attr defaults.
 cat >"$tmp/h.cga" <<'G'
 attr height = 5

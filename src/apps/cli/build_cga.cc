@@ -6,6 +6,7 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -74,6 +75,37 @@ struct Lots {
   std::string crs;
 };
 
+// The first edge of each polygon of feature `index` as written in the file (local coordinates),
+// so a lot's x axis follows the file's first edge even when the reader reversed a clockwise ring.
+// Empty when the structure is not the expected one (the reader already validated the file).
+std::vector<std::array<kernel::Vec2, 2>> first_edges(const std::string& text, std::size_t index,
+                                                     std::size_t polygons, kernel::Vec3 origin) {
+  std::vector<std::array<kernel::Vec2, 2>> out;
+  try {
+    const nlohmann::json doc = nlohmann::json::parse(text);
+    const nlohmann::json* geometry = &doc;
+    if (doc.value("type", "") == "FeatureCollection") geometry = &doc.at("features").at(index);
+    if (geometry->value("type", "") == "Feature") geometry = &geometry->at("geometry");
+    const std::string type = geometry->value("type", "");
+    std::vector<const nlohmann::json*> rings;
+    if (type == "Polygon") rings.push_back(&geometry->at("coordinates").at(0));
+    if (type == "MultiPolygon") {
+      for (const nlohmann::json& p : geometry->at("coordinates")) rings.push_back(&p.at(0));
+    }
+    if (rings.size() != polygons) return {};
+    for (const nlohmann::json* ring : rings) {
+      const auto point = [&](std::size_t k) {
+        return kernel::Vec2{ring->at(k).at(0).get<double>() - origin.x,
+                            ring->at(k).at(1).get<double>() - origin.y};
+      };
+      out.push_back({point(0), point(1)});
+    }
+  } catch (const nlohmann::json::exception&) {
+    return {};
+  }
+  return out;
+}
+
 // --lot: one lot per GeoJSON feature (a MultiPolygon gives one lot of several start shapes).
 // Without --lot the lot list stays empty here; the default lot needs the compiled grammar.
 std::optional<Lots> read_lots(const BuildOptions& options) {
@@ -91,7 +123,9 @@ std::optional<Lots> read_lots(const BuildOptions& options) {
   out.origin = set->origin;
   out.crs = set->crs;
   for (io::Footprint& f : set->footprints) {
-    out.lots.push_back({std::move(f.id), std::move(f.polygons), std::move(f.properties)});
+    cga::Lot lot{std::move(f.id), std::move(f.polygons), std::move(f.properties), {}};
+    lot.first_edges = first_edges(*text, f.feature_index, lot.polygons.size(), set->origin);
+    out.lots.push_back(std::move(lot));
   }
   return out;
 }

@@ -371,10 +371,31 @@ class Engine final : public EvalContext {
 
  private:
   // ---- the derivation loop
+  // The polygon with its outer ring rotated so the input's first edge comes first.
+  kernel::Polygon oriented(std::size_t i) const {
+    kernel::Polygon polygon = lot_.polygons[i];
+    kernel::normalize(polygon);
+    if (i >= lot_.first_edges.size()) return polygon;
+    const auto& [a, b] = lot_.first_edges[i];
+    const auto near = [](kernel::Vec2 p, kernel::Vec2 q) {
+      return std::fabs(p.x - q.x) <= 1e-6 && std::fabs(p.y - q.y) <= 1e-6;
+    };
+    kernel::Ring& ring = polygon.outer;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const kernel::Vec2 p = ring[k];
+      const kernel::Vec2 q = ring[(k + 1) % ring.size()];
+      if ((near(p, a) && near(q, b)) || (near(p, b) && near(q, a))) {
+        std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(k), ring.end());
+        break;
+      }
+    }
+    return polygon;
+  }
+
   void start() {
     for (std::size_t i = 0; i < lot_.polygons.size(); ++i) {
       shape::ShapeTree tree;
-      const shape::RootResult root = tree.create_root(lot_.polygons[i]);
+      const shape::RootResult root = tree.create_root(oriented(i));
       if (!root.ok()) {
         throw DeriveError{base::Diagnostic::error(
             "CGA606", "lot '" + lot_.id + "' polygon " + std::to_string(i) + ": " + root.error,

@@ -13,6 +13,7 @@
 // layer's operation (shape::registry()) on a one-shape tree. Meshes are built only by to_scene().
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -54,6 +55,11 @@ struct Lot {
   std::string id;
   std::vector<kernel::Polygon> polygons;
   shape::AttributeMap properties;
+  // Optional, per polygon: the first edge as written in the input (GeoJSON order). Readers
+  // normalise rings to counter-clockwise, which moves a clockwise ring's first edge; when given,
+  // the outer ring is rotated so the edge with these end points (either direction) comes first,
+  // and the start shape's x axis runs along it. Empty: the ring's own first edge.
+  std::vector<std::array<kernel::Vec2, 2>> first_edges;
 };
 
 // Geometry of a pending or terminal shape, by handle into LotResult::geometry.

@@ -266,6 +266,22 @@ TEST(Derive, DefaultLotUsesLotWidthAndDepth) {
   EXPECT_DOUBLE_EQ(kernel::area(default_lot(*q, {}).polygons[0]), 400);
 }
 
+TEST(Derive, StartShapeFollowsTheInputsFirstEdge) {
+  auto p = compile_text("Lot --> X\n");
+  Lot lot = rectangle_lot(10, 4);
+  auto r = derive_all(*p, {lot});
+  EXPECT_EQ(r[0].terminals_store[0].scope.x, (kernel::Vec3{1, 0, 0}));
+  // A file that listed the ring clockwise from (10, 4) to (10, 0): after normalisation that edge
+  // is (10, 0) -> (10, 4), and the scope's x axis runs along it.
+  lot.first_edges = {{kernel::Vec2{10, 4}, kernel::Vec2{10, 0}}};
+  r = derive_all(*p, {lot});
+  const shape::Scope& s = r[0].terminals_store[0].scope;
+  EXPECT_NEAR(s.x.x, 0, 1e-12);
+  EXPECT_NEAR(s.x.y, 1, 1e-12);
+  EXPECT_NEAR(s.size.x, 4, 1e-12);
+  EXPECT_NEAR(s.size.y, 10, 1e-12);
+}
+
 TEST(Derive, StartSymbolOption) {
   CompileOptions options;
   options.start = "B";
