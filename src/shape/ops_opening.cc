@@ -173,9 +173,26 @@ std::size_t cut_general(Pieces& pieces, const std::vector<kernel::Bounds3>& boxe
     bool any = false;
     const auto subtract = [&](Mesh& piece) {
       if (piece.empty() || !overlaps(piece.bounds(), b)) return;
-      kernel::Boolean3dResult r = kernel::boolean3d(piece, box, kernel::BooleanOp::kDifference);
+      // Corefinement costs with the mesh's size: cut the slab down to the opening's neighbourhood
+      // first (two plane splits along u) and hand CGAL only that part.
+      Mesh keep;
+      Mesh part = kernel::weld(piece);
+      const kernel::Bounds3 pb = part.bounds();
+      kernel::SplitOptions split_options;
+      split_options.cap_tag = {SemanticClass::kClosureSurface, 0, 0};
+      for (const auto& [normal, offset] : {std::pair<Vec3, double>{{-1, 0, 0}, -(b.min.x - 0.05)},
+                                           std::pair<Vec3, double>{{1, 0, 0}, b.max.x + 0.05}}) {
+        const double at = normal.x < 0 ? -offset : offset;
+        if (part.face_count() < 64 || at <= pb.min.x + kEps || at >= pb.max.x - kEps) continue;
+        kernel::SplitResult r = kernel::split(part, {normal, offset}, split_options);
+        if (!r.ok()) return;
+        keep.append(r.positive);
+        part = kernel::weld(r.negative);
+      }
+      kernel::Boolean3dResult r = kernel::boolean3d(part, box, kernel::BooleanOp::kDifference);
       if (r.status != kernel::Boolean3dStatus::kOk) return;
       piece = std::move(r.mesh);
+      piece.append(keep);
       any = true;
     };
     subtract(pieces.core);
