@@ -30,8 +30,22 @@ std::optional<PlanDoor> entrance_for(const FloorPlan& plan, int index, double wi
                                      double clearance) {
   const PlanStorey& storey = plan.storeys[0];
   std::vector<EdgePiece> pieces = open_air_pieces(storey, index, plan.footprint);
-  std::stable_sort(pieces.begin(), pieces.end(),
-                   [](const EdgePiece& x, const EdgePiece& y) { return x.length() > y.length(); });
+  // Street side first: a wall on a courtyard (a hole of the footprint) leads nowhere unless the
+  // room has no other; then the longest.
+  auto street = [&](const EdgePiece& p) {
+    const kernel::Vec2 m = (p.a + p.b) * 0.5;
+    for (const Polygon& f : plan.footprint) {
+      const std::size_t n = f.outer.size();
+      for (std::size_t i = 0; i < n; ++i)
+        if (kernel::distance_to_segment(m, f.outer[i], f.outer[(i + 1) % n]) < 1e-4) return true;
+    }
+    return false;
+  };
+  std::stable_sort(pieces.begin(), pieces.end(), [&](const EdgePiece& x, const EdgePiece& y) {
+    const bool sx = street(x);
+    const bool sy = street(y);
+    return sx != sy ? sx : x.length() > y.length();
+  });
   for (const EdgePiece& piece : pieces) {
     const std::optional<Slot> slot =
         find_slot(storey, piece.a, piece.b, width, clearance, stair_keep_out(plan, 0));

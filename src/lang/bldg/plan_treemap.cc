@@ -88,6 +88,36 @@ kernel::Ring clip(const kernel::Ring& ring, bool along_x, double t, double sign)
   return out;
 }
 
+// On a concave or holed region, a cut passing within kSnap (1 m) of a vertex strictly inside the
+// region's extent (a reflex corner, a courtyard's edge) would leave a sliver of room beside it:
+// the cut moves onto the vertex. The cell's area then departs from its target by at most kSnap
+// times the region's width (docs/bldg-floorplan.md). Convex regions have no such vertex.
+constexpr double kSnap = 1.0;
+
+double snap_to_corner(const std::vector<Polygon>& region, bool along_x, double previous, double t,
+                      double lo, double hi) {
+  double best = t;
+  double best_d = kSnap;
+  auto consider = [&](const kernel::Ring& ring) {
+    for (kernel::Vec2 v : ring) {
+      const double c = along_x ? v.x : v.y;
+      if (c <= lo + kSnap || c >= hi - kSnap || c <= previous + kSnap) continue;
+      const double d = std::abs(c - t);
+      if (d > 1e-9 && d < best_d) {
+        best_d = d;
+        best = c;
+      }
+    }
+  };
+  const bool simple = region.size() == 1 && region[0].holes.empty() && convex(region[0].outer);
+  if (simple) return t;
+  for (const Polygon& p : region) {
+    consider(p.outer);
+    for (const kernel::Ring& h : p.holes) consider(h);
+  }
+  return best;
+}
+
 }  // namespace
 
 std::vector<std::vector<Polygon>> split_region(const std::vector<Polygon>& region,
@@ -120,6 +150,7 @@ std::vector<std::vector<Polygon>> split_region(const std::vector<Polygon>& regio
     cumulative += relative;
     cuts[i + 1] = place_cut(area, cuts[i], extent * relative, extent, step, total_area * cumulative,
                             1e-9 * total_area, hi);
+    cuts[i + 1] = snap_to_corner(region, along_x, cuts[i], cuts[i + 1], lo, hi);
   }
   // Eq. 3: each auxiliary rectangle (reaching past the region across the axis, and past the
   // minimum rectangle at both ends of the row) intersected with the region.

@@ -8,6 +8,7 @@
 // paper stops there, within one step; we then bisect inside that last step so the cell's area
 // matches its target to 1e-9 of the region's area, which makes areas exact and testable. The last
 // child takes the remainder (§3.2). Targets are cumulative, so errors never add up along a row.
+// On concave or holed regions a cut within 1 m of an inner corner moves onto it (no slivers).
 //
 // The region may be concave, hold holes, or consist of several pieces: a slab of the region is
 // whatever the intersection gives, possibly several pieces (floorplan.cc decides what to do with a

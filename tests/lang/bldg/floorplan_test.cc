@@ -149,11 +149,21 @@ TEST(PlanTreemap, ExactAreasOnConcaveRegion) {
 TEST(PlanTreemap, SlabOfAUFallsApart) {
   // A U opening upward: a horizontal slab across the arms gives two pieces.
   Polygon u{{{0, 0}, {9, 0}, {9, 9}, {6, 9}, {6, 3}, {3, 3}, {3, 9}, {0, 9}}, {}};
-  const auto cells = plan::split_region({u}, {1, 1}, false, 0.01);
+  const auto cells = plan::split_region({u}, {5, 1}, false, 0.01);
   EXPECT_EQ(cells[0].size(), 1u);
-  EXPECT_EQ(cells[1].size(), 2u);
-  EXPECT_NEAR(plan::area_of(cells[0]), 31.5, 1e-6);
-  EXPECT_NEAR(plan::area_of(cells[1]), 31.5, 1e-6);
+  EXPECT_EQ(cells[1].size(), 2u);  // the tops of both arms, above y = 7.25
+  EXPECT_NEAR(plan::area_of(cells[0]), 52.5, 1e-6);
+  EXPECT_NEAR(plan::area_of(cells[1]), 10.5, 1e-6);
+}
+
+TEST(PlanTreemap, CutNearAnInnerCornerSnapsOntoIt) {
+  // Equal halves of the U would cut at y = 3.75, 0.75 m above the inner corner (y = 3): the cut
+  // moves onto the corner instead of leaving a 0.75 m sliver under the courtyard of the U.
+  Polygon u{{{0, 0}, {9, 0}, {9, 9}, {6, 9}, {6, 3}, {3, 3}, {3, 9}, {0, 9}}, {}};
+  const auto cells = plan::split_region({u}, {1, 1}, false, 0.01);
+  EXPECT_NEAR(plan::area_of(cells[0]), 27, 1e-6);
+  EXPECT_NEAR(plan::area_of(cells[1]), 36, 1e-6);
+  EXPECT_NEAR(plan::bounds_of(cells[0]).max.y, 3, 1e-9);
 }
 
 TEST(FloorPlan, TwoRoomsExactAreasDoorAndEntrance) {
@@ -262,6 +272,10 @@ TEST(FloorPlan, HoledOutlineCourtyard) {
   }
   EXPECT_NEAR(court, 24, 1e-6);
   EXPECT_TRUE(plan.unreachable_rooms.empty());
+  // The entrance opens on the street, not on the enclosed courtyard.
+  ASSERT_EQ(s.entrances.size(), 1u);
+  const Vec2 e = s.entrances[0].center;
+  EXPECT_TRUE(e.x < 1e-9 || e.y < 1e-9 || e.x > 20 - 1e-9 || e.y > 20 - 1e-9);
 }
 
 TEST(FloorPlan, FakeConcaveL) {
