@@ -608,12 +608,17 @@ class Moderator {
           error("BLD220", "the building axiom " + quoted(edge.ref->name) + " cannot be a successor",
                 edge.ref->range);
         } else {
-          error(
-              "BLD214",
-              "symbol " + quoted(edge.ref->name) + " is already used in the set of " +
-                  quoted(nodes_[static_cast<std::size_t>(nodes_[child].parent)].rule->symbol.name) +
-                  " (each symbol is used once: the rules form a tree)",
-              edge.ref->range);
+          // A node reached first as the root of a detached subtree, or cut off below the depth
+          // limit, has no parent to name.
+          const int parent = nodes_[child].parent;
+          error("BLD214",
+                "symbol " + quoted(edge.ref->name) + " is already used" +
+                    (parent >= 0
+                         ? " in the set of " +
+                               quoted(nodes_[static_cast<std::size_t>(parent)].rule->symbol.name)
+                         : std::string(" in another set")) +
+                    " (each symbol is used once: the rules form a tree)",
+                edge.ref->range);
         }
       } else if (stack.size() > kMaxDepth) {
         error("BLD216", "the tree is deeper than " + std::to_string(kMaxDepth) + " levels",

@@ -245,3 +245,28 @@ TEST(BldgModerator, AnyBytesGiveADiagnosticNotACrash) {
 
 }  // namespace
 }  // namespace insula::lang::bldg
+
+namespace insula::lang::bldg {
+namespace {
+
+// Found by bldg_fuzz: a symbol first reached as the root of a detached cycle, then used again
+// from another detached cycle, has no parent to name (it crashed the moderator).
+TEST(BldgModerator, ReuseAcrossDetachedCycles) {
+  const std::string all = testing::errors(
+      "b -> building(x, [(0,0),(8,0),(8,6),(0,6)]) : {p}\n"
+      "p -> buildingpart(Flat, 3) : {f}\n"
+      "f -> floor() : {r}\n"
+      "r -> room(hall, small)\n"
+      "a -> divisions() : {b2}\n"
+      "b2 -> divisions() : {a}\n"
+      "c -> divisions() : {d}\n"
+      "d -> divisions() : {c, a}\n");
+  EXPECT_EQ(all,
+            "t.bldg:6:22: error[BLD213]: cycle: 'a' is among its own successors (through 'b2')\n"
+            "t.bldg:8:21: error[BLD213]: cycle: 'c' is among its own successors (through 'd')\n"
+            "t.bldg:8:24: error[BLD214]: symbol 'a' is already used in another set (each symbol "
+            "is used once: the rules form a tree)\n");
+}
+
+}  // namespace
+}  // namespace insula::lang::bldg
