@@ -45,6 +45,7 @@ std::vector<EdgePiece> room_pieces(const PlanStorey& storey, int room) {
   std::vector<const Polygon*> others;
   for (std::size_t i = 0; i < storey.rooms.size(); ++i)
     others.push_back(static_cast<int>(i) == room ? nullptr : &storey.rooms[i].cell);
+  for (const PlanDeadZone& z : storey.dead_zones) others.push_back(&z.cell);
   return boundary_pieces(storey.rooms[room].cell, others);
 }
 

@@ -18,8 +18,8 @@ struct Slot {
   kernel::Vec2 center;
 };
 
-// The pieces of room `room`'s boundary with the storey's room index on the other side (-1 for the
-// exterior or a dead zone).
+// The pieces of room `room`'s boundary with the storey's room index on the other side: -1 for the
+// exterior, rooms.size() + k for dead zone k.
 std::vector<EdgePiece> room_pieces(const PlanStorey& storey, int room);
 
 // A slot of `width` on segment p->q: `clearance` free at both ends and from every opening of the
