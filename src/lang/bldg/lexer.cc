@@ -43,6 +43,8 @@ class Lexer {
   explicit Lexer(const base::Source& source) : source_(source), text_(source.text()) {}
 
   LexOutput run() {
+    // A UTF-8 byte order mark, as some editors write, is not a token.
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
     while (true) {
       skip_trivia();
       if (pos_ >= text_.size()) break;

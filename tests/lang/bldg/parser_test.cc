@@ -132,6 +132,16 @@ TEST(BldgParser, CaseInsensitiveKeywordsAndDivisionSynonym) {
   EXPECT_TRUE(r.entrance);
 }
 
+TEST(BldgParser, ByteOrderMarkAndCrlfAreAccepted) {
+  const Building b = parse_ok(
+      "\xEF\xBB\xBF"
+      "b -> building(x, [(0,0),(4,0),(4,4),(0,4)]) : {p}\r\n"
+      "p -> buildingpart(Flat, 2) : {f}\r\n\tf -> floor() : {r}\r\nr -> room(a, small)\r\n");
+  EXPECT_EQ(b.where.column, 4U);  // columns count bytes, the mark included
+  EXPECT_EQ(b.layout.children[0].part->floors[0].where.line, 3U);
+  EXPECT_EQ(b.layout.children[0].part->floors[0].where.column, 2U);
+}
+
 TEST(BldgParser, DoorIntoDisposablePartIsAWarning) {
   const base::Source source("w.bldg",
                             "b -> building(x, [(0,0),(8,0),(8,4),(0,4)]) : {p, q, d}\n"
