@@ -1,9 +1,8 @@
 #include "lang/cga/model_xmi.h"
 
-#include <pugixml.hpp>
-
-#include <sstream>
+#include <cstdint>
 #include <string_view>
+#include <vector>
 
 #include "lang/cga/printer.h"
 #include "lang/cga/xml_text.h"
@@ -31,161 +30,244 @@ std::string_view operation_class(OpKind kind) {
   return kNames[static_cast<int>(kind)];
 }
 
+// Streams XML with two-space indentation: a grammar of a few MB gives tens of MB of XMI, which a
+// DOM would hold several times over (docs/perf/cgatransform.md). Attributes go right after
+// open(); children follow; close() ends the innermost element.
+class XmlOut {
+ public:
+  XmlOut() { out_ = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"; }
+
+  void open(std::string_view name) {
+    finish_start_tag();
+    indent();
+    out_ += '<';
+    out_ += name;
+    open_.emplace_back(name);
+    pending_ = true;
+  }
+
+  // An attribute of the element just opened; text XML cannot carry is replaced (xml_text.h).
+  void attribute(std::string_view name, std::string_view value) {
+    out_ += ' ';
+    out_ += name;
+    out_ += "=\"";
+    for (const char c : to_xml_text(value)) escaped(c);
+    out_ += '"';
+  }
+
+  void attribute(std::string_view name, std::uint32_t value) {
+    attribute(name, std::string_view(std::to_string(value)));
+  }
+
+  void close() {
+    const std::string name = std::move(open_.back());
+    open_.pop_back();
+    if (pending_) {
+      out_ += " />\n";
+      pending_ = false;
+      return;
+    }
+    indent();
+    out_ += "</";
+    out_ += name;
+    out_ += ">\n";
+  }
+
+  std::string take() { return std::move(out_); }
+
+ private:
+  void escaped(char c) {
+    switch (c) {
+      case '&':
+        out_ += "&amp;";
+        break;
+      case '<':
+        out_ += "&lt;";
+        break;
+      case '>':
+        out_ += "&gt;";
+        break;
+      case '"':
+        out_ += "&quot;";
+        break;
+      case '\n':
+        out_ += "&#10;";
+        break;
+      case '\r':
+        out_ += "&#13;";
+        break;
+      case '\t':
+        out_ += "&#9;";
+        break;
+      default:
+        out_ += c;
+    }
+  }
+
+  void finish_start_tag() {
+    if (!pending_) return;
+    out_ += ">\n";
+    pending_ = false;
+  }
+
+  void indent() { out_.append(open_.size() * 2, ' '); }
+
+  std::string out_;
+  std::vector<std::string> open_;  // names of the open elements
+  bool pending_ = false;           // the innermost start tag still takes attributes
+};
+
 class Writer {
  public:
   explicit Writer(const base::Source& source) : source_(source) {}
 
-  void grammar(pugi::xml_node root, const Grammar& g) {
-    root.append_attribute("xmi:version") = "2.0";
-    root.append_attribute("xmlns:xmi") = "http://www.omg.org/XMI";
-    root.append_attribute("xmlns:xsi") = "http://www.w3.org/2001/XMLSchema-instance";
-    root.append_attribute("xmlns:cga") = kCgaNsUri;
-    text(root, "file", g.file);
+  std::string grammar(const Grammar& g) {
+    out_.open(std::string(kCgaNsPrefix) + ":ShapeGrammar");
+    out_.attribute("xmi:version", "2.0");
+    out_.attribute("xmlns:xmi", "http://www.omg.org/XMI");
+    out_.attribute("xmlns:xsi", "http://www.w3.org/2001/XMLSchema-instance");
+    out_.attribute("xmlns:cga", kCgaNsUri);
+    out_.attribute("file", g.file);
     for (const AttrDecl& a : g.attrs) {
-      pugi::xml_node node = root.append_child("attributes");
-      located(node, a.range);
-      text(node, "name", a.name);
-      expr(node, "value", *a.value);
+      out_.open("attributes");
+      located(a.range);
+      out_.attribute("name", a.name);
+      expr("value", *a.value);
+      out_.close();
     }
     for (const PrioritySet& set : g.sets) {
-      pugi::xml_node node = root.append_child("prioritySets");
-      located(node, set.range);
-      node.append_attribute("priority") = set.priority;
-      if (set.implicit) node.append_attribute("implicit") = "true";
-      for (const Rule& r : set.rules) rule(node, r);
+      out_.open("prioritySets");
+      located(set.range);
+      out_.attribute("priority", set.priority);
+      if (set.implicit) out_.attribute("implicit", "true");
+      for (const Rule& r : set.rules) rule(r);
+      out_.close();
     }
+    out_.close();
+    return out_.take();
   }
 
  private:
-  void text(pugi::xml_node node, const char* name, std::string_view value) {
-    node.append_attribute(name) = to_xml_text(value).c_str();
-  }
-
-  void located(pugi::xml_node node, Range range) {
+  void located(Range range) {
     const base::Span span = span_of(source_, range);
-    node.append_attribute("line") = span.line;
-    node.append_attribute("column") = span.column;
-    node.append_attribute("endLine") = span.end_line;
-    node.append_attribute("endColumn") = span.end_column;
+    out_.attribute("line", span.line);
+    out_.attribute("column", span.column);
+    out_.attribute("endLine", span.end_line);
+    out_.attribute("endColumn", span.end_column);
   }
 
-  pugi::xml_node typed(pugi::xml_node parent, const char* feature, std::string_view eclass) {
-    pugi::xml_node node = parent.append_child(feature);
-    node.append_attribute("xsi:type") = ("cga:" + std::string(eclass)).c_str();
-    return node;
+  // Opens `feature` as an instance of `eclass` (xsi:type, as EMF writes a subclass instance).
+  void typed(std::string_view feature, std::string_view eclass, Range range) {
+    out_.open(feature);
+    out_.attribute("xsi:type", std::string(kCgaNsPrefix) + ":" + std::string(eclass));
+    located(range);
   }
 
-  void rule(pugi::xml_node parent, const Rule& r) {
-    pugi::xml_node node = parent.append_child("rules");
-    located(node, r.range);
-    if (!r.id.empty()) text(node, "id", r.id);
-    text(node, "predecessor", r.predecessor);
-    if (r.condition) expr(node, "condition", *r.condition);
+  void rule(const Rule& r) {
+    out_.open("rules");
+    located(r.range);
+    if (!r.id.empty()) out_.attribute("id", r.id);
+    out_.attribute("predecessor", r.predecessor);
+    if (r.condition) expr("condition", *r.condition);
     for (const Alternative& alt : r.alternatives) {
-      pugi::xml_node part = node.append_child("ruleParts");
-      located(part, alt.range);
-      text(part, "arrow", alt.arrow);
-      if (alt.probability) expr(part, "probability", *alt.probability);
-      for (const Item& it : alt.items) item(part, "successors", it);
+      out_.open("ruleParts");
+      located(alt.range);
+      out_.attribute("arrow", alt.arrow);
+      if (alt.probability) expr("probability", *alt.probability);
+      for (const Item& it : alt.items) item(it);
+      out_.close();
     }
+    out_.close();
   }
 
-  void item(pugi::xml_node parent, const char* feature, const Item& it) {
-    pugi::xml_node node;
+  void item(const Item& it) {
     switch (it.kind) {
       case ItemKind::kSymbol:
-        node = typed(parent, feature, "SymbolShape");
-        text(node, "symbol", it.name);
+        typed("successors", "SymbolShape", it.range);
+        out_.attribute("symbol", it.name);
         break;
       case ItemKind::kEmpty:
-        node = typed(parent, feature, "EmptyShape");
+        typed("successors", "EmptyShape", it.range);
         break;
       case ItemKind::kPush:
-        node = typed(parent, feature, "PushRule");
+        typed("successors", "PushRule", it.range);
         break;
       case ItemKind::kPop:
-        node = typed(parent, feature, "PopRule");
+        typed("successors", "PopRule", it.range);
         break;
       case ItemKind::kOp:
-        node = typed(parent, feature, operation_class(it.op));
-        text(node, "name", it.name);
-        if (it.has_block) node.append_attribute("hasBlock") = "true";
-        if (it.op == OpKind::kRotate) text(node, "axis", std::string(1, it.axis));
-        for (const ExprPtr& a : it.args) expr(node, "arguments", *a);
-        for (const Branch& b : it.branches) branch(node, "branches", b);
+        typed("successors", operation_class(it.op), it.range);
+        out_.attribute("name", it.name);
+        if (it.has_block) out_.attribute("hasBlock", "true");
+        if (it.op == OpKind::kRotate) out_.attribute("axis", std::string_view(&it.axis, 1));
+        for (const ExprPtr& a : it.args) expr("arguments", *a);
+        for (const Branch& b : it.branches) branch("branches", b);
         break;
     }
-    located(node, it.range);
+    out_.close();
   }
 
-  void branch(pugi::xml_node parent, const char* feature, const Branch& b) {
-    pugi::xml_node node = parent.append_child(feature);
-    located(node, b.range);
-    if (b.repeat) node.append_attribute("repeat") = "true";
-    if (b.key) expr(node, "key", *b.key);
-    for (const Branch& inner : b.pattern) branch(node, "pattern", inner);
-    for (const Item& it : b.items) item(node, "successors", it);
+  void branch(std::string_view feature, const Branch& b) {
+    out_.open(feature);
+    located(b.range);
+    if (b.repeat) out_.attribute("repeat", "true");
+    if (b.key) expr("key", *b.key);
+    for (const Branch& inner : b.pattern) branch("pattern", inner);
+    for (const Item& it : b.items) item(it);
+    out_.close();
   }
 
-  void expr(pugi::xml_node parent, const char* feature, const Expr& e) {
-    pugi::xml_node node;
+  void expr(std::string_view feature, const Expr& e) {
     switch (e.kind) {
       case ExprKind::kNumber:
-        node = typed(parent, feature, "NumberLiteral");
-        node.append_attribute("value") = number_text(e.number).c_str();
+        typed(feature, "NumberLiteral", e.range);
+        out_.attribute("value", number_text(e.number));
         break;
       case ExprKind::kString:
-        node = typed(parent, feature, "StringLiteral");
-        text(node, "value", e.text);
+        typed(feature, "StringLiteral", e.range);
+        out_.attribute("value", e.text);
         break;
       case ExprKind::kBool:
-        node = typed(parent, feature, "BooleanLiteral");
-        node.append_attribute("value") = e.boolean ? "true" : "false";
+        typed(feature, "BooleanLiteral", e.range);
+        out_.attribute("value", e.boolean ? "true" : "false");
         break;
       case ExprKind::kIdent:
-        node = typed(parent, feature, "Identifier");
-        text(node, "name", e.text);
+        typed(feature, "Identifier", e.range);
+        out_.attribute("name", e.text);
         break;
       case ExprKind::kMember:
-        node = typed(parent, feature, "MemberAccess");
-        text(node, "member", e.text);
-        expr(node, "object", *e.operands[0]);
+        typed(feature, "MemberAccess", e.range);
+        out_.attribute("member", e.text);
+        expr("object", *e.operands[0]);
         break;
       case ExprKind::kCall:
-        node = typed(parent, feature, "Call");
-        expr(node, "callee", *e.operands[0]);
-        for (std::size_t i = 1; i < e.operands.size(); ++i) expr(node, "arguments", *e.operands[i]);
+        typed(feature, "Call", e.range);
+        expr("callee", *e.operands[0]);
+        for (std::size_t i = 1; i < e.operands.size(); ++i) expr("arguments", *e.operands[i]);
         break;
       case ExprKind::kUnary:
-        node = typed(parent, feature, "UnaryExpression");
-        text(node, "operator", unary_literal(e.unary_op));
-        expr(node, "operand", *e.operands[0]);
+        typed(feature, "UnaryExpression", e.range);
+        out_.attribute("operator", unary_literal(e.unary_op));
+        expr("operand", *e.operands[0]);
         break;
       case ExprKind::kBinary:
-        node = typed(parent, feature, "BinaryExpression");
-        text(node, "operator", binary_literal(e.binary_op));
-        expr(node, "left", *e.operands[0]);
-        expr(node, "right", *e.operands[1]);
+        typed(feature, "BinaryExpression", e.range);
+        out_.attribute("operator", binary_literal(e.binary_op));
+        expr("left", *e.operands[0]);
+        expr("right", *e.operands[1]);
         break;
     }
-    located(node, e.range);
+    out_.close();
   }
 
   const base::Source& source_;
+  XmlOut out_;
 };
 
 }  // namespace
 
 std::string model_xmi(const Grammar& grammar, const base::Source& source) {
-  pugi::xml_document doc;
-  pugi::xml_node declaration = doc.append_child(pugi::node_declaration);
-  declaration.append_attribute("version") = "1.0";
-  declaration.append_attribute("encoding") = "UTF-8";
-  const std::string root_name = std::string(kCgaNsPrefix) + ":ShapeGrammar";
-  Writer(source).grammar(doc.append_child(root_name.c_str()), grammar);
-  std::ostringstream out;
-  doc.save(out, "  ", pugi::format_default, pugi::encoding_utf8);
-  return out.str();
+  return Writer(source).grammar(grammar);
 }
 
 }  // namespace insula::lang::cga
