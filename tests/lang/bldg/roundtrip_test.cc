@@ -3,6 +3,8 @@
 // printed text is canonical: print(parse(print(m))) == print(m).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "lang/bldg/printer.h"
 #include "lang/bldg/stochastic.h"
 #include "test_util.h"
@@ -28,6 +30,26 @@ TEST(BldgRoundTrip, EveryGoodGrammar) {
   for (const auto& path : files) {
     const Building model = testing::parse_ok(testing::read_file(path), path.filename().string());
     expect_round_trip(model, path.stem().string());
+  }
+}
+
+// The canonical text of every good grammar, kept as a golden so a change of the printed form is
+// deliberate (regenerate with INSULA_UPDATE_GOLDEN=1).
+TEST(BldgRoundTrip, PrintedFormGoldens) {
+  const std::filesystem::path golden_dir = testing::data_dir() / "golden";
+  const bool update = std::getenv("INSULA_UPDATE_GOLDEN") != nullptr;
+  for (const auto& path : testing::files_in(testing::data_dir(), ".bldg")) {
+    SCOPED_TRACE(path.filename().string());
+    const std::string printed =
+        print_building(testing::parse_ok(testing::read_file(path), path.filename().string()));
+    const std::filesystem::path golden = golden_dir / path.filename();
+    if (update) {
+      std::filesystem::create_directories(golden_dir);
+      std::ofstream(golden, std::ios::binary) << printed;
+      continue;
+    }
+    ASSERT_TRUE(std::filesystem::exists(golden)) << "run with INSULA_UPDATE_GOLDEN=1";
+    EXPECT_EQ(printed, testing::read_file(golden));
   }
 }
 
