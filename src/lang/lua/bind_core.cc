@@ -1,6 +1,7 @@
 // Components (seed 001 §3.1): creation (boxes, footprints, faces, OBJ assets), fields, labels,
 // inherited attributes (§3.4.1 alteration) and face ids (§3.1.1); the face handle type.
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "kernel/polygon.h"
@@ -26,6 +27,14 @@ shape::Scope root_frame(Vec3 position, Vec3 size) {
   s.origin = s.to_world(position);  // the frame at the world origin maps position too
   s.size = size;
   return s;
+}
+
+// Box sides of a component: mass classes (walls, ground below, roof above) without face ids, so
+// face ids stay the names a program sets (§3.1.1; shape::mass_box_tags numbers its sides instead).
+std::shared_ptr<const kernel::Mesh> component_box(Vec3 size) {
+  std::array<kernel::FaceTag, 6> tags = shape::mass_box_tags();
+  for (kernel::FaceTag& tag : tags) tag.face_id = 0;
+  return shape::box_mesh(size, tags);
 }
 
 std::string describe_component(const shape::ShapeTree& tree, ShapeId id) {
@@ -118,7 +127,7 @@ ShapeId create_root(lua_State* L, int spec) {
   const Vec3 size = field_vec3(L, spec, "size", {}, op, true);
   const Vec3 position = field_vec3(L, spec, "position", {}, op);
   if (size.x <= 0 || size.y <= 0 || size.z <= 0) arg_error(op, 1, "a box needs sizes > 0");
-  return p.tree.add_root(root_frame(position, size), shape::box_mesh(size, shape::mass_box_tags()));
+  return p.tree.add_root(root_frame(position, size), component_box(size));
 }
 
 // component(parent, {boundary=face}): a 2D component from a face of the parent's boundary
@@ -166,7 +175,7 @@ ShapeId create_child_box(lua_State* L, ShapeId parent, int spec) {
     op_error(op, "the box lies outside its parent (nothing left after clipping)");
   }
   ++p.operations;
-  return p.tree.add_child(parent, ps.sub(lo, size), shape::box_mesh(size, shape::mass_box_tags()));
+  return p.tree.add_child(parent, ps.sub(lo, size), component_box(size));
 }
 
 int lua_component(lua_State* L) {

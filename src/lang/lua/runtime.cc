@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -249,6 +250,51 @@ int safe_randomseed(lua_State* L) {
   return 0;
 }
 
+// Lua patterns backtrack in C, where the instruction hook never runs: a failing match costs up
+// to n^k steps for a subject of n bytes and k repetition items (`*`, `+`, `-`). Calls whose bound
+// exceeds kPatternBudget are refused before they run.
+constexpr double kPatternBudget = 1e9;
+
+int repetition_items(const char* pattern, std::size_t length) {
+  int items = 0;
+  bool in_set = false;
+  for (std::size_t i = 0; i < length; ++i) {
+    const char c = pattern[i];
+    if (c == '%') {
+      ++i;  // an escaped character or class
+    } else if (in_set) {
+      in_set = c != ']';
+    } else if (c == '[') {
+      in_set = true;
+      if (i + 1 < length && pattern[i + 1] == '^') ++i;
+      if (i + 1 < length && pattern[i + 1] == ']') ++i;
+    } else if (c == '*' || c == '+' || c == '-') {
+      ++items;
+    }
+  }
+  return items;
+}
+
+int guarded_pattern(lua_State* L) {
+  std::size_t subject = 0;
+  std::size_t length = 0;
+  if (lua_type(L, 1) == LUA_TSTRING && lua_type(L, 2) == LUA_TSTRING) {
+    lua_tolstring(L, 1, &subject);
+    const char* pattern = lua_tolstring(L, 2, &length);
+    const int items = repetition_items(pattern, length);
+    if (items > 1 && std::pow(static_cast<double>(subject), items) > kPatternBudget) {
+      return luaL_error(L,
+                        "pattern with %d repetition items is too costly on a %d-byte string "
+                        "(split the text or simplify the pattern)",
+                        items, static_cast<int>(subject));
+    }
+  }
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
 void open_libraries(lua_State* L) {
   static constexpr luaL_Reg kLibraries[] = {{LUA_GNAME, luaopen_base},
                                             {LUA_STRLIBNAME, luaopen_string},
@@ -281,6 +327,11 @@ void open_libraries(lua_State* L) {
   lua_getfield(L, -1, LUA_STRLIBNAME);
   lua_pushnil(L);
   lua_setfield(L, -2, "dump");
+  for (const char* name : {"find", "match", "gmatch", "gsub"}) {
+    lua_getfield(L, -1, name);
+    lua_pushcclosure(L, guarded_pattern, 1);
+    lua_setfield(L, -2, name);
+  }
   lua_pop(L, 1);
   lua_getfield(L, -1, LUA_MATHLIBNAME);
   lua_pushcfunction(L, safe_random);
@@ -341,10 +392,12 @@ base::Diagnostic to_diagnostic(const base::Source& source, const std::string& sh
                                                 : "LUA104";
   } else if (starts_with(message, "in ")) {
     code = "LUA003";
-    const std::size_t colon = message.find(':');
-    if (colon != std::string::npos) op = std::string_view(message).substr(3, colon - 3);
   } else if (message.find("stack overflow") != std::string::npos) {
     code = "LUA103";
+  }
+  if (starts_with(message, "in ")) {
+    const std::size_t colon = message.find(':');
+    if (colon != std::string::npos) op = std::string_view(message).substr(3, colon - 3);
   }
   const auto at = static_cast<std::uint32_t>(std::max(line, 0));
   base::Span span = at > 0 ? base::Span::at(source.name(), at, column_of(source, at, op))
