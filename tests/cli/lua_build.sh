@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# End-to-end test of `insula build FILE.lua` and `insula check FILE.lua`: the luacore examples to
+# every format with exact report counts (the examples' goldens), determinism for a seed, the
+# sandbox (no file access outside --assets), errors with file:line:col that leave no output, and
+# limits set with --set.
+set -u
+insula=$1
+root=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+expect_exit() {  # code, description, command...
+  local want=$1 what=$2
+  shift 2
+  "$@" >"$tmp/out.txt" 2>"$tmp/err.txt"
+  local got=$?
+  [ "$got" -eq "$want" ] || { fail "$what: exit $got, expected $want"; cat "$tmp/err.txt"; }
+}
+field() {  # report, key: the number after "key":
+  sed -n "s/^  \"$2\": \([0-9]*\).*/\1/p" "$1"
+}
+expect_field() {  # report, key, value
+  local got
+  got=$(field "$1" "$2")
+  [ "$got" = "$3" ] || fail "$(basename "$1"): $2 = '$got', expected $3"
+}
+examples=$root/examples/lua
+
+# Goldens: exact component and mesh counts of the examples (change only with the program).
+out=$tmp/fig3
+expect_exit 0 "build fig3_floor" "$insula" build "$examples/fig3_floor.lua" -o "$out.glb" \
+  -o "$out.obj" -o "$out.city.json" -o "$out.png" --image-size 320x240 --report "$out.json" -q
+for f in "$out.glb" "$out.obj" "$out.city.json" "$out.png" "$out.json"; do
+  [ -s "$f" ] || fail "fig3_floor: missing output $(basename "$f")"
+done
+expect_field "$out.json" components 134
+expect_field "$out.json" triangles 988
+expect_field "$out.json" vertices 646
+expect_field "$out.json" parts 43
+grep -q '"run":' "$out.json" || fail "fig3_floor: no seconds.run in the report"
+grep -q '"write_glb":' "$out.json" || fail "fig3_floor: no seconds.write_glb in the report"
+
+out=$tmp/row
+expect_exit 0 "build row_house" "$insula" build "$examples/row_house.lua" --seed 3 -o "$out.glb" \
+  --report "$out.json" -q
+expect_field "$out.json" components 492
+expect_field "$out.json" triangles 9452
+# Same seed, same bytes; another seed, other widths.
+expect_exit 0 "row_house again" "$insula" build "$examples/row_house.lua" --seed 3 -o "$tmp/row2.glb" -q
+cmp -s "$out.glb" "$tmp/row2.glb" || fail "row_house: --seed 3 twice gives different files"
+expect_exit 0 "row_house seed 4" "$insula" build "$examples/row_house.lua" --seed 4 -o "$tmp/row4.glb" -q
+cmp -s "$out.glb" "$tmp/row4.glb" && fail "row_house: seeds 3 and 4 give the same file"
+# --set reaches params.
+expect_exit 0 "row_house 6 houses" "$insula" build "$examples/row_house.lua" --set houses=6 \
+  --report "$tmp/row6.json" -q
+[ "$(field "$tmp/row6.json" components)" -gt 492 ] || fail "--set houses=6 did not add houses"
+
+# check: compiles only.
+expect_exit 0 "check fig3" "$insula" check "$examples/fig3_floor.lua"
+printf 'local x = \n' >"$tmp/bad.lua"
+expect_exit 1 "check syntax error" "$insula" check "$tmp/bad.lua"
+grep -q "bad.lua:2:1: error\[LUA001\]: unexpected symbol near <eof>" "$tmp/err.txt" ||
+  fail "check: syntax error text: $(cat "$tmp/err.txt")"
+
+# Errors: file:line:col, exit 1, no output written.
+printf 'local c = component{size={4, 3, 4}}\n\nsplit(c, "w", 1)\n' >"$tmp/op.lua"
+expect_exit 1 "failed operation" "$insula" build "$tmp/op.lua" -o "$tmp/op.glb" --report "$tmp/op.json"
+grep -q "op.lua:3:1: error\[LUA003\]: in split: argument 2: expected an axis (x, y or z), got 'w'" \
+  "$tmp/err.txt" || fail "operation error text: $(cat "$tmp/err.txt")"
+[ -e "$tmp/op.glb" ] && fail "a failed program wrote its output"
+[ -e "$tmp/op.json" ] && fail "a failed program wrote its report"
+
+# Sandbox: no io/os, assets only inside --assets.
+printf 'io.open("/etc/passwd")\n' >"$tmp/io.lua"
+expect_exit 1 "io" "$insula" build "$tmp/io.lua" -o "$tmp/io.glb"
+grep -q "error\[LUA002\]: attempt to index a nil value (global 'io')" "$tmp/err.txt" ||
+  fail "io error text: $(cat "$tmp/err.txt")"
+mkdir -p "$tmp/assets/sub"
+printf 'v 0 0 0\nv 1 0 0\nv 1 2 0\nv 0 2 0\nf 1 2 3 4\n' >"$tmp/assets/sub/door.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n' >"$tmp/secret.obj"
+ln -s "$tmp/secret.obj" "$tmp/assets/link.obj"
+printf 'local d = componentFromFile("sub/door")\nprint(d.size[1], d.size[2])\n' >"$tmp/asset.lua"
+expect_exit 0 "asset inside" "$insula" build "$tmp/asset.lua" --assets "$tmp/assets"
+grep -q "1.0	2.0" "$tmp/err.txt" || fail "asset size: $(cat "$tmp/err.txt")"
+for name in ../secret /etc/passwd link; do
+  printf 'componentFromFile("%s")\n' "$name" >"$tmp/escape.lua"
+  expect_exit 1 "asset $name" "$insula" build "$tmp/escape.lua" --assets "$tmp/assets" -o "$tmp/e.glb"
+  grep -q "error\[LUA003\]: in componentFromFile: asset" "$tmp/err.txt" ||
+    fail "asset $name: $(cat "$tmp/err.txt")"
+done
+
+# Limits from --set.
+printf 'while true do end\n' >"$tmp/loop.lua"
+expect_exit 1 "instruction limit" "$insula" build "$tmp/loop.lua" --set limit_instructions=100000
+grep -q "loop.lua:1:1: error\[LUA101\]: instruction limit of 100000 reached" "$tmp/err.txt" ||
+  fail "limit text: $(cat "$tmp/err.txt")"
+expect_exit 2 "bad limit" "$insula" build "$tmp/loop.lua" --set limit_depth=x
+
+if [ "$failures" -gt 0 ]; then
+  echo "$failures failure(s)"
+  exit 1
+fi
+echo "lua_build: ok"
