@@ -7,6 +7,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -157,7 +158,13 @@ BuildResult build_building(const Building& building, const FloorPlan& plan,
   result.materials = detail::base_materials();
   result.building.id = building.symbol.empty() ? "building" : building.symbol;
   if (!building.name.empty()) result.building.attributes["name"] = building.name;
-  const detail::Context context{building, plan, restrictions, options, result};
+  std::map<std::string, std::vector<kernel::Polygon>> compluvia;
+  const detail::Context context{building, plan, restrictions, options, result, &compluvia};
+  // Roofs first: a compluvium opens the ceilings below it.
+  auto roof_start = Clock::now();
+  std::vector<shape::Part> roof_parts;
+  detail::build_roofs(context, roof_parts);
+  result.stats.seconds_roofs += detail::seconds_since(roof_start);
   std::vector<shape::Part> room_parts;
   std::vector<shape::Part> storey_parts;
   std::vector<detail::StoreyWalls> storey_walls;
@@ -193,10 +200,6 @@ BuildResult build_building(const Building& building, const FloorPlan& plan,
   base.kind = shape::PartKind::kBuildingPart;
   detail::build_base(context, storey_walls, base.mesh);
   result.stats.seconds_slabs += detail::seconds_since(start);
-  start = Clock::now();
-  std::vector<shape::Part> roof_parts;
-  detail::build_roofs(context, roof_parts);
-  result.stats.seconds_roofs += detail::seconds_since(start);
 
   std::vector<shape::Part>& parts = result.building.parts;
   if (!base.mesh.empty()) parts.push_back(std::move(base));

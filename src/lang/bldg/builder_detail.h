@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,9 @@ struct Context {
   const Restrictions& rules;
   const BuilderOptions& options;
   BuildResult& result;
+  // Roof openings (HoledMansard compluvia) per part symbol, from build_roofs: the ceilings of the
+  // part's top storey stay open under them.
+  std::map<std::string, std::vector<kernel::Polygon>>* compluvia = nullptr;
 
   // Floor level of a storey: the plinth's top plus the storey's elevation.
   double floor_z(int storey) const;

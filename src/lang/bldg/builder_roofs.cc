@@ -14,8 +14,10 @@
 // group's highest eaves; a lower part of the group is raised to those eaves by a filler block.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "kernel/boolean2d.h"
 #include "kernel/roof.h"
@@ -59,6 +61,62 @@ std::vector<std::uint32_t> ring_successors(const kernel::Polygon& p) {
 }
 
 // One closed roof solid over `footprint` with its eaves at `eave_z`, `height` high.
+// The compluvium (§4.1 "holed mansard"): kernel::add_roof closes the opening with a floor at the
+// eaves (OuterFloorSurface). Here that floor is removed and the roof closed underneath by the
+// footprint minus the opening, so the opening goes through the roof; its outline (the floor's
+// boundary loops) is returned so the rooms below can leave their ceilings open under it.
+std::vector<kernel::Polygon> open_compluvium(kernel::Mesh& mesh, const kernel::Polygon& footprint,
+                                             const std::vector<std::uint32_t>& wall_top,
+                                             kernel::FaceTag bottom) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.tag(f).semantic != SemanticClass::kOuterFloorSurface) continue;
+    const auto loop = mesh.face(f);
+    for (std::size_t i = 0; i < loop.size(); ++i) ++edges[{loop[i], loop[(i + 1) % loop.size()]}];
+  }
+  std::map<std::uint32_t, std::uint32_t> next;  // boundary edges of the opening's floor
+  for (const auto& [edge, n] : edges) {
+    if (!edges.contains({edge.second, edge.first})) next[edge.first] = edge.second;
+  }
+  std::vector<std::vector<std::uint32_t>> loops;
+  while (!next.empty()) {
+    std::vector<std::uint32_t> loop;
+    std::uint32_t v = next.begin()->first;
+    while (next.contains(v)) {
+      loop.push_back(v);
+      const std::uint32_t w = next.at(v);
+      next.erase(v);
+      v = w;
+    }
+    if (loop.size() >= 3) loops.push_back(std::move(loop));
+  }
+  if (loops.empty()) return {};
+  kernel::Polygon region = footprint;
+  std::vector<std::uint32_t> ids = wall_top;
+  std::vector<kernel::Polygon> openings;
+  for (std::vector<std::uint32_t>& loop : loops) {
+    kernel::Ring ring;
+    for (std::uint32_t v : loop) ring.push_back(kernel::drop(mesh.position(v)));
+    openings.push_back({ring, {}});
+    // A hole of the bottom region runs clockwise: the floor's boundary ran counter-clockwise.
+    std::reverse(loop.begin(), loop.end());
+    std::reverse(ring.begin(), ring.end());
+    region.holes.push_back(std::move(ring));
+    ids.insert(ids.end(), loop.begin(), loop.end());
+  }
+  kernel::Mesh opened;
+  opened.reserve(mesh.vertex_count(), mesh.face_count(), 0);
+  for (const Vec3& p : mesh.positions()) opened.add_vertex(p);
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.tag(f).semantic != SemanticClass::kOuterFloorSurface) {
+      opened.add_face(mesh.face(f), mesh.tag(f));
+    }
+  }
+  if (!kernel::add_region_faces(opened, region, ids, true, bottom)) return {};
+  mesh = std::move(opened);
+  return openings;
+}
+
 // A flat roof is a slab kFlatThickness thick over the outline grown by the overhang: the kernel's
 // flat roof is a single face, which over an outline without overhang would enclose no volume.
 constexpr double kFlatThickness = 0.25;  // m, the kernel's fascia
@@ -83,7 +141,8 @@ kernel::Mesh flat_roof(const kernel::Polygon& footprint, double eave_z, double o
 }
 
 kernel::Mesh roof_solid(const kernel::Polygon& footprint, RoofKind kind, double height,
-                        double eave_z, double overhang, std::string& message) {
+                        double eave_z, double overhang, std::string& message,
+                        std::vector<kernel::Polygon>* openings) {
   if (kind == RoofKind::kFlat) return flat_roof(footprint, eave_z, overhang, message);
   kernel::Mesh mesh;
   kernel::RoofSpec spec;
@@ -114,8 +173,16 @@ kernel::Mesh roof_solid(const kernel::Polygon& footprint, RoofKind kind, double 
                   build.cap_indices.begin() + build.cap_offsets[e + 1]);
       mesh.add_face(loop, {SemanticClass::kWallSurface, 0, build.next_face_id});
     }
-    kernel::add_region_faces(mesh, footprint, build.wall_top, true,
-                             {SemanticClass::kClosureSurface, 0, build.next_face_id + 1});
+    const FaceTag bottom{SemanticClass::kClosureSurface, 0, build.next_face_id + 1};
+    std::vector<kernel::Polygon> opened;
+    if (build.built == kernel::RoofType::kHoledMansard) {
+      opened = open_compluvium(mesh, footprint, build.wall_top, bottom);
+    }
+    if (opened.empty()) {
+      kernel::add_region_faces(mesh, footprint, build.wall_top, true, bottom);
+    } else if (openings != nullptr) {
+      *openings = std::move(opened);
+    }
   }
   // Scale the heights above the eaves so the top is `height` above them (see the file comment).
   double top = eave_z;
@@ -210,7 +277,12 @@ void add_roof_part(const Context& c, const std::string& name, const kernel::Poly
                    double eave_z, std::vector<shape::Part>& parts, kernel::Mesh extra = {}) {
   std::string message;
   const double overhang = touches_other_part(c, footprint, own) ? 0 : c.options.roof_overhang;
-  kernel::Mesh mesh = roof_solid(clean(footprint), kind, height, eave_z, overhang, message);
+  std::vector<kernel::Polygon> openings;
+  kernel::Mesh mesh =
+      roof_solid(clean(footprint), kind, height, eave_z, overhang, message, &openings);
+  if (!openings.empty()) {
+    for (const PlanPart* p : own) (*c.compluvia)[p->symbol] = openings;
+  }
   if (!message.empty()) c.warn(name + ": " + message);
   if (mesh.empty()) return;
   mesh.append(extra);

@@ -232,7 +232,15 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
       add_prism(part.mesh, p, z0, z0 + slab, closure,
                 {SemanticClass::kFloorSurface, kFloorMaterial, 1}, inner);
     }
-    for (const kernel::Polygon& p : minus(clear, near(ceiling_holes))) {
+    std::vector<kernel::Polygon> open_above = near(ceiling_holes);
+    // Under a compluvium (the part's top storey), the ceiling stays open to the sky.
+    const auto compluvium = c.compluvia->find(room.part);
+    if (compluvium != c.compluvia->end() && room.part_index >= 0 &&
+        static_cast<std::size_t>(room.part_index) < c.plan.parts.size() &&
+        c.plan.parts[static_cast<std::size_t>(room.part_index)].storeys == storey.level + 1) {
+      for (const kernel::Polygon& hole : near(compluvium->second)) open_above.push_back(hole);
+    }
+    for (const kernel::Polygon& p : minus(clear, open_above)) {
       add_prism(part.mesh, p, z0 + h - slab, z0 + h, {SemanticClass::kCeilingSurface, 0, 3},
                 closure, inner);
     }

@@ -306,6 +306,23 @@ TEST(Builder, EveryRoofKindReachesItsHeight) {
   EXPECT_EQ(none.stats.roofs, 0U);
 }
 
+TEST(Builder, CompluviumOpensTheRoofAndTheCeilingsBelow) {
+  const BuildResult r =
+      build_building(building(), one_storey(RoofKind::kHoledMansard, 2), Restrictions{});
+  const kernel::Mesh& roof = find_part(r, "roof p")->mesh;
+  EXPECT_EQ(faces_of(roof, SemanticClass::kOuterFloorSurface), 0U);  // no floor in the opening
+  const double closure = area_of(roof, SemanticClass::kClosureSurface);
+  EXPECT_GT(closure, 10);
+  EXPECT_LT(closure, 80 - 1);  // the footprint less the opening
+  // Both rooms reach under the opening: their ceilings lose exactly its share of the clear floor.
+  const double clear = 4.64 * 7.4;
+  const double ceilings = area_of(find_part(r, "a")->mesh, SemanticClass::kCeilingSurface) +
+                          area_of(find_part(r, "b")->mesh, SemanticClass::kCeilingSurface);
+  EXPECT_LT(ceilings, 2 * clear - 1);
+  EXPECT_NEAR(area_of(find_part(r, "a")->mesh, SemanticClass::kFloorSurface), clear, 1e-6);
+  expect_closed(r);
+}
+
 FloorPlan parts_only(std::vector<PlanPart> parts) {
   FloorPlan plan;
   for (const PlanPart& p : parts) plan.footprint.push_back(p.outline);
