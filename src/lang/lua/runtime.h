@@ -30,7 +30,7 @@ struct lua_State;
 namespace insula::lua {
 
 struct Limits {
-  std::uint64_t instructions = 500'000'000;           // Lua VM instructions (about 2.5 s)
+  std::uint64_t instructions = 500'000'000;           // Lua VM instructions (about 5 s)
   std::size_t memory_bytes = std::size_t{512} << 20;  // Lua heap (geometry is not counted)
   int call_depth = 200;                               // nested Lua and C function calls
   std::size_t components = 5'000'000;                 // shapes in the tree
