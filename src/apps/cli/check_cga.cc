@@ -10,12 +10,19 @@
 namespace insula::cli {
 
 std::optional<std::string> check_cga(const base::Source& source, bool quiet) {
+  return check_cga(source, quiet, std::string());
+}
+
+std::optional<std::string> check_cga(const base::Source& source, bool quiet,
+                                     const std::string& start) {
   base::Result<lang::cga::Grammar> grammar = lang::cga::parse(source);
   if (!grammar.ok()) {
     print_diagnostics(grammar.diagnostics(), source, quiet);
     return std::nullopt;
   }
-  const lang::cga::CheckResult checked = lang::cga::check(grammar.value(), source);
+  lang::cga::CheckOptions options;
+  options.start = start;
+  const lang::cga::CheckResult checked = lang::cga::check(grammar.value(), source, options);
   print_diagnostics(checked.diagnostics, source, quiet);
   if (!checked.ok) return std::nullopt;
   std::size_t warnings = 0;

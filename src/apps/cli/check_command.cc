@@ -37,15 +37,19 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
                    "a .geojson footprint file, a .cga or .bldg grammar or a .lua program")
       ->required();
   check->add_flag("-q,--quiet", options.quiet, "print errors only");
+  check->add_option("--start", options.start,
+                    "CGA: derive from this symbol instead of the first rule of the lowest "
+                    "priority set (reachability is checked from it)");
 }
 
 int run_check(const CheckOptions& options) {
   using Checker = std::optional<std::string> (*)(const base::Source&, bool);
   Checker checker = nullptr;
+  bool cga = false;  // check_cga also takes --start
   if (has_suffix(options.input, ".geojson") || has_suffix(options.input, ".json")) {
     checker = check_geojson;
   } else if (has_suffix(options.input, ".cga")) {
-    checker = check_cga;
+    cga = true;
   } else if (has_suffix(options.input, ".bldg")) {
     checker = check_bldg;
   } else if (has_suffix(options.input, ".lua")) {
@@ -61,7 +65,8 @@ int run_check(const CheckOptions& options) {
     return kExitInput;
   }
   const base::Source source(options.input, *text);
-  const std::optional<std::string> summary = checker(source, options.quiet);
+  const std::optional<std::string> summary =
+      cga ? check_cga(source, options.quiet, options.start) : checker(source, options.quiet);
   if (!summary) return kExitInput;
   if (!options.quiet) std::printf("%s: ok: %s\n", options.input.c_str(), summary->c_str());
   return kExitDone;

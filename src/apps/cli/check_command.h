@@ -13,6 +13,7 @@ namespace insula::cli {
 struct CheckOptions {
   std::string input;
   bool quiet = false;
+  std::string start;  // --start SYMBOL: the CGA start symbol (other front-ends ignore it)
 };
 
 void add_check_command(CLI::App& app, CheckOptions& options);

@@ -19,6 +19,9 @@ int build_lua(const BuildOptions& options);
 // `insula check`: a one-line summary of what was checked, or nullopt when the input has errors
 // (diagnostics already printed; warnings too unless `quiet`).
 std::optional<std::string> check_cga(const base::Source& source, bool quiet);
+// The same with `insula check --start SYMBOL` (empty: the grammar's own start symbol).
+std::optional<std::string> check_cga(const base::Source& source, bool quiet,
+                                     const std::string& start);
 std::optional<std::string> check_bldg(const base::Source& source, bool quiet);
 std::optional<std::string> check_lua(const base::Source& source, bool quiet);
 

@@ -252,7 +252,8 @@ void Checker::check_arguments(const Item& item, const OperationInfo& info) {
     const std::string which = "argument " + std::to_string(i + 1) + " of " + quoted(item.name);
     switch (letter) {
       case 'a':
-        check_axis(arg, info.kind == OpKind::kRepeat);
+        // RR/Repeat and the paper's BS/Subdiv take axis combinations; CityEngine's split one axis.
+        check_axis(arg, info.kind == OpKind::kRepeat || info.kind == OpKind::kSplit);
         break;
       case 'c':
         if (arg.kind == ExprKind::kString || arg.kind == ExprKind::kIdent) {
@@ -291,10 +292,11 @@ void Checker::check_arguments(const Item& item, const OperationInfo& info) {
 }
 
 // §VI: "<axis> can be X, Y or Z as well as combinations of these (XY, YZ, XZ or XYZ)" for RR
-// (a grid of cells of about the size along each named axis). A basic split has one list of
-// sizes, which has no meaning along two axes at once, so BS/Subdiv and CityEngine's split take
-// one axis (the paper's `BS("XY", 3, 5, 7)` example is CGA308). A bare word (`split(y)`) is the
-// axis unless it names an attribute.
+// (a grid of cells of about the size along each named axis), and BasicSplitRule "like
+// RepeatRule, also takes <axis>" (the paper's own example is `BS("XY", 3, 5, 7)`): a nested split
+// along each named axis by the same sizes (docs/cga-language.md, Decisions). CityEngine's
+// split(axis){ ... } takes one axis. A bare word (`split(y)`) is the axis unless it names an
+// attribute.
 void Checker::check_axis(const Expr& expr, bool combinations) {
   if (expr.kind != ExprKind::kString && expr.kind != ExprKind::kIdent) {
     error("CGA308", "the split axis must be written as a word (\"x\" or x), not computed",

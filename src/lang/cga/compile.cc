@@ -525,8 +525,9 @@ class Compiler {
   // BS(axis, sizes...) / split(axis){ sizes: ... } / RR(axis, size).
   void split_args(const Item& item, CItem& c, bool basic) {
     c.code = OpCode::kSplit;
-    const bool repeat = item.op == OpKind::kRepeat;
-    c.axes = axes(*item.args[0], repeat);
+    // RR and the paper's BS take axis combinations (§VI); CityEngine's split(axis) one axis.
+    const bool several = item.op == OpKind::kRepeat || item.op == OpKind::kSplit;
+    c.axes = axes(*item.args[0], several);
     for (std::size_t i = 1; i < item.args.size(); ++i) {
       c.sizes.push_back(size(*item.args[i], true));
     }

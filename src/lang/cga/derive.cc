@@ -537,8 +537,32 @@ class Engine final : public EvalContext {
     terminal(st, w.symbol);
   }
 
+  // The value of probability expression `p` of `rule`. Seed 004 §IV.B constraint 1 asks for a
+  // probability in (0, 1]; the checker enforces it on constants (CGA301). A computed one (an
+  // attribute, a function) that is negative, NaN or above 1 is an error here (CGA605) rather
+  // than a weight silently clamped to 0; 0 itself is allowed, so an attribute can switch an
+  // alternative off (docs/cga-derivation.md, "Errors").
+  double probability(const CRule& rule, std::uint32_t p) {
+    const Range range = program_.nodes[p].range;
+    const double v = as_number(evaluate(program_, p, *this), range);
+    if (!(v >= 0 && v <= 1)) {
+      base::Diagnostic d = base::Diagnostic::error(
+          "CGA605",
+          "the probability of " + program_.describe(rule) + " evaluates to " + as_text(Value(v)) +
+              ", not a number in [0, 1] (seed 004 §IV.B, constraint 1)",
+          program_.span(range));
+      d.notes.push_back("in lot '" + lot_.id + "'");
+      throw DeriveError{std::move(d)};
+    }
+    return v;
+  }
+
   const CAlternative& choose(const CRule& rule) {
-    if (rule.alternatives.size() == 1) return rule.alternatives.front();
+    if (rule.alternatives.size() == 1) {
+      const std::uint32_t p = rule.alternatives.front().probability;
+      if (p != kNoExpr) probability(rule, p);  // checked even when there is nothing to choose
+      return rule.alternatives.front();
+    }
     // Probabilities from the shape's generator; alternatives without one share what is left.
     std::vector<double> weights(rule.alternatives.size(), -1.0);
     double given = 0;
@@ -549,7 +573,7 @@ class Engine final : public EvalContext {
         ++missing;
         continue;
       }
-      weights[i] = std::max(0.0, as_number(evaluate(program_, p, *this), program_.nodes[p].range));
+      weights[i] = probability(rule, p);
       given += weights[i];
     }
     const double share =
@@ -1052,12 +1076,37 @@ class Engine final : public EvalContext {
       keyed_sizes(c, st, shape::component(st.scope.size, axis), scratch->sizes, scratch->targets);
     }
     const std::vector<const CBranch*>& targets = scratch->targets;
-    const std::string error = for_each_piece(st, axis, scratch->sizes, scratch->pieces,
-                                             [&](State& piece, std::uint32_t entry) {
-                                               if (targets[entry] != nullptr) {
-                                                 run_branch(*targets[entry], piece);
-                                               }
-                                             });
+    const std::span<const SizeSpec> sizes = scratch->sizes;
+    const std::string error =
+        for_each_piece(st, axis, sizes, scratch->pieces, [&](State& piece, std::uint32_t entry) {
+          if (targets[entry] == nullptr) return;
+          if (c.axes.size() > 1) {
+            split_cells(c, piece, sizes, 1, *targets[entry]);
+          } else {
+            run_branch(*targets[entry], piece);
+          }
+        });
+    if (!error.empty()) {
+      warn(c, error);
+      terminal(st, rule_->predecessor);
+    }
+  }
+
+  // BS("XY", 3, 5, 7){ A | B | C } (§VI, docs/cga-language.md "Decisions"): the piece of the
+  // first axis that successor `target` got is split along each further axis in turn by the same
+  // sizes (evaluated once, on the shape the rule rewrites), and every cell of it gets `target`,
+  // as RR("XY", 3) nests repeats. The same cores as a one-axis split (for_each_piece).
+  void split_cells(const CItem& c, State& st, std::span<const SizeSpec> sizes,
+                   std::size_t axis_index, const CBranch& target) {
+    Lease scratch(*this);
+    const std::string error = for_each_piece(
+        st, c.axes[axis_index], sizes, scratch->pieces, [&](State& cell, std::uint32_t) {
+          if (axis_index + 1 < c.axes.size()) {
+            split_cells(c, cell, sizes, axis_index + 1, target);
+          } else {
+            run_branch(target, cell);
+          }
+        });
     if (!error.empty()) {
       warn(c, error);
       terminal(st, rule_->predecessor);

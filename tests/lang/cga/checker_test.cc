@@ -196,8 +196,12 @@ TEST(CgaChecker, ComponentSplitForms) {
 TEST(CgaChecker, AxesOfThePaperAndOfCityEngine) {
   EXPECT_TRUE(run("1: a ~> RR(\"XY\", 3){ cell }\n")->result.ok);  // §VI
   EXPECT_TRUE(run("1: a ~> RR(\"xyz\", 1){ c }\n")->result.ok);
-  EXPECT_FALSE(run("1: a ~> BS(\"XY\", 3, 5, 7){ b | f | d }\n")->result.ok);  // §VI's example
-  EXPECT_TRUE(run("A --> split(y){ 1: B | ~1: C }\n")->result.ok);             // bare word
+  // §VI: BasicSplitRule takes <axis> "like RepeatRule"; the paper's own example, as written.
+  EXPECT_TRUE(run("1: front ~> BS( \"XY\", 3, 5, 7){ balcony| floor| door}\n")->result.ok);
+  EXPECT_TRUE(run("1: a ~> Subdiv(\"xyz\", 1r, 2){ b | c }\n")->result.ok);
+  EXPECT_FALSE(run("1: a ~> BS(\"YX\", 3, 5, 7){ b | f | d }\n")->result.ok);
+  EXPECT_FALSE(run("A --> split(\"xy\"){ 1: B | ~1: C }\n")->result.ok);  // CityEngine's: one
+  EXPECT_TRUE(run("A --> split(y){ 1: B | ~1: C }\n")->result.ok);        // bare word
   EXPECT_FALSE(run("A --> split(w){ 1: B }\n")->result.ok);
   EXPECT_FALSE(run("1: a ~> RR(\"YX\", 3){ cell }\n")->result.ok);
   // The axis is a word, never a value (as the compiler reads it): an attribute cannot be one.

@@ -300,5 +300,89 @@ TEST(Derive, ReportOnlyRunKeepsNoTerminals) {
   EXPECT_EQ(r[0].terminals_store.size(), 0U);
 }
 
+TEST(Derive, PaperBasicSplitAlongTwoAxes) {
+  // §VI's example exactly as written: BS along "XY" is a nested split, the sizes 3, 5, 7 divide
+  // x, each piece is divided along y by the same sizes, and successor i gets every cell of the
+  // i-th x piece (docs/cga-language.md, Decisions). On a 15 x 15 m lot: 9 cells.
+  auto p = compile_text(R"(6: front ~> BS( "XY", 3, 5, 7){ balcony| floor| door})");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(15, 15)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(dump_derivation(*p, r),
+            "shapes 10\nterminals 9\nrule_applications 1\nsymbol balcony 3\nsymbol door 3\n"
+            "symbol floor 3\nsymbol front 1\nlot 0 shapes 10 terminals 9\n"
+            "  balcony rect at 0 0 0 size 3 3 0\n"
+            "  balcony rect at 0 3 0 size 3 5 0\n"
+            "  balcony rect at 0 8 0 size 3 7 0\n"
+            "  floor rect at 3 0 0 size 5 3 0\n"
+            "  floor rect at 3 3 0 size 5 5 0\n"
+            "  floor rect at 3 8 0 size 5 7 0\n"
+            "  door rect at 8 0 0 size 7 3 0\n"
+            "  door rect at 8 3 0 size 7 5 0\n"
+            "  door rect at 8 8 0 size 7 7 0\n");
+}
+
+TEST(Derive, BasicSplitAlongThreeAxesResolvesSizesPerAxis) {
+  // Relative sizes resolve against each axis' own extent. A mass's scope has y up (scope.h), so
+  // the 10 x 6 lot extruded by 4 has scope 10 x 4 x 6: x 10 -> 7 | 3, y 4 -> 1 | 3,
+  // z 6 -> 3 | 3. Successor A gets the 4 cells of the first x piece, B those of the second.
+  auto p = compile_text("Lot --> extrude(4) M\nM --> BS(\"XYZ\", 1r, 3){ A | B }\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 6)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(r[0].terminals, 8U);
+  EXPECT_EQ(symbol_count(*p, r[0], "A"), 4U);
+  EXPECT_EQ(symbol_count(*p, r[0], "B"), 4U);
+  ASSERT_EQ(r[0].terminals_store.size(), 8U);
+  double volume_a = 0;
+  double volume_b = 0;
+  for (std::size_t i = 0; i < 8; ++i) {
+    const Terminal& t = r[0].terminals_store[i];
+    const double v = t.scope.size.x * t.scope.size.y * t.scope.size.z;
+    const bool a = p->symbol_name(t.symbol) == "A";
+    EXPECT_DOUBLE_EQ(t.scope.size.x, a ? 7 : 3);
+    EXPECT_TRUE(t.scope.size.y == 1 || t.scope.size.y == 3) << t.scope.size.y;
+    EXPECT_DOUBLE_EQ(t.scope.size.z, 3);
+    (a ? volume_a : volume_b) += v;
+  }
+  EXPECT_DOUBLE_EQ(volume_a, 7 * 6 * 4);
+  EXPECT_DOUBLE_EQ(volume_b, 3 * 6 * 4);
+}
+
+TEST(Derive, ComputedProbabilityOutsideZeroOneIsAnError) {
+  // Seed 004 §IV.B constraint 1 for values only known while deriving (CGA605), not a weight
+  // silently clamped to 0.
+  auto p = compile_text("attr p = -0.25\nr1: Lot ~> A : (p) ~> B : (1 - p)\n");
+  ASSERT_TRUE(p);
+  auto r = derive_all(*p, {rectangle_lot(1, 1)});
+  EXPECT_FALSE(r[0].ok);
+  EXPECT_EQ(diagnostics_text(r[0]),
+            "test.cga:2:17: error[CGA605]: the probability of rule 'r1' (line 2) evaluates to "
+            "-0.25, not a number in [0, 1] (seed 004 §IV.B, constraint 1)\nnote: in lot 'lot'\n");
+  // Above 1 from a shape attribute (10 m / 4 = 2.5).
+  p = compile_text("Lot --> A : (Scope.sx / 4) ~> B\n");
+  r = derive_all(*p, {rectangle_lot(10, 1)});
+  EXPECT_FALSE(r[0].ok);
+  EXPECT_EQ(diagnostics_text(r[0]),
+            "test.cga:1:14: error[CGA605]: the probability of rule 'Lot -->' (line 1) evaluates "
+            "to 2.5, not a number in [0, 1] (seed 004 §IV.B, constraint 1)\nnote: in lot 'lot'\n");
+  // Checked when the rule has a single part too.
+  p = compile_text("attr q = 3\nLot --> A : (q)\n");
+  r = derive_all(*p, {rectangle_lot(1, 1)});
+  EXPECT_FALSE(r[0].ok);
+  EXPECT_NE(diagnostics_text(r[0]).find("error[CGA605]"), std::string::npos);
+  // 0 is a valid value: it switches an alternative off.
+  p = compile_text("attr p = 0\nLot --> A : (p) ~> B : (1 - p)\n");
+  std::vector<Lot> lots;
+  for (int i = 0; i < 50; ++i) lots.push_back(rectangle_lot(1, 1, std::to_string(i)));
+  r = derive_all(*p, lots);
+  std::uint64_t b = 0;
+  for (const LotResult& x : r) {
+    EXPECT_TRUE(x.ok);
+    b += symbol_count(*p, x, "B");
+  }
+  EXPECT_EQ(b, 50U);
+}
+
 }  // namespace
 }  // namespace insula::lang::cga
