@@ -104,5 +104,22 @@ printf 'Lot --> split("x"){ 2: A | ~1: B\n' >"$tmp/bad.cga"
 grep -qE "bad.cga:[0-9]+:[0-9]+: error\[CGA1" "$tmp/err" || { fail "syntax message"; cat "$tmp/err"; }
 [ -e "$tmp/z.json" ] && fail "report written after a syntax error"
 
+# A probability computed while deriving (here from --set) outside [0, 1] is CGA605 at the
+# expression, naming the rule and the value: exit 1, no output (seed 004 §IV.B constraint 1).
+printf 'attr p = 0.5\nr1: Lot ~> A : (p) ~> B : (1 - p)\n' >"$tmp/p.cga"
+"$insula" build "$tmp/p.cga" --set p=0.25 -o "$tmp/p0.obj" -q >/dev/null || fail "p = 0.25"
+"$insula" build "$tmp/p.cga" --set p=-0.5 -o "$tmp/p.obj" --report "$tmp/p.json" 2>"$tmp/err" \
+  >/dev/null
+[ $? -eq 1 ] || fail "negative probability exits 1"
+grep -qF "p.cga:2:17: error[CGA605]: the probability of rule 'r1' (line 2) evaluates to -0.5, not a number in [0, 1]" \
+  "$tmp/err" || { fail "negative probability message"; cat "$tmp/err"; }
+[ -e "$tmp/p.obj" ] || [ -e "$tmp/p.json" ] && fail "output written after CGA605"
+
+# The paper's BS( "XY", 3, 5, 7) (§VI) builds: 9 cells of the facade, 3 per successor.
+"$insula" build "$root/tests/data/cga/derive/paper_bs_xy.cga" --report "$tmp/bs.json" -q \
+  >/dev/null || fail "paper BS XY build"
+[ "$(json "$tmp/bs.json" "d['symbols']['balcony'], d['symbols']['floor'], d['symbols']['door']")" = \
+  "3 3 3" ] || fail "paper BS XY counts: $(cat "$tmp/bs.json")"
+
 [ $failures -eq 0 ] && echo "cga_build: ok"
 exit $((failures > 0))

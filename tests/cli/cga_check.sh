@@ -41,6 +41,20 @@ diff expected err >/dev/null || { fail "warn.cga stderr"; diff expected err; }
 "$insula" check -q warn.cga >out 2>err
 [ $? -eq 0 ] && [ ! -s err ] && [ ! -s out ] || fail "-q prints nothing for a clean grammar"
 
+# --start SYMBOL: reachability from that symbol (rule 1 is now unreachable); a symbol that is
+# no rule's predecessor is CGA314 (exit 1, nothing on stdout).
+"$insula" check warn.cga --start Mass >out 2>err
+[ $? -eq 0 ] || fail "--start Mass exits non-zero"
+[ "$(cat out)" = "warn.cga: ok: 4 rules (2 reachable), 2 attributes, start 'Mass', 3 warnings" ] ||
+  fail "--start Mass summary: $(cat out)"
+grep -qF "warn.cga:4:1: warning[CGA402]: rule '1' is unreachable: 'Lot' is not derived from the start symbol 'Mass'" err ||
+  fail "--start Mass: rule 1 reachable? $(cat err)"
+"$insula" check -q warn.cga --start Nope >out 2>err
+[ $? -eq 1 ] || fail "--start Nope exits 0"
+[ -s out ] && fail "--start Nope prints on stdout: $(cat out)"
+[ "$(cat err)" = "warn.cga: error[CGA314]: the start symbol 'Nope' is the predecessor of no rule" ] ||
+  fail "--start Nope message: $(cat err)"
+
 # Errors: every one at its token, nothing on stdout, exit 1.
 cat >bad.cga <<'CGA'
 PRIORITY 1:
