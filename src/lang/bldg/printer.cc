@@ -1,8 +1,9 @@
 #include "lang/bldg/printer.h"
 
-#include <charconv>
 #include <map>
 #include <set>
+
+#include "base/format.h"
 
 namespace insula::lang::bldg {
 namespace {
@@ -20,27 +21,11 @@ bool is_identifier(const std::string& text) {
 }
 
 std::string number(double v) {
-  if (v == 0) return "0";  // also -0
-  char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-  return ec == std::errc() ? std::string(buffer, end) : "0";
+  return v == 0 ? "0" : base::shortest_number(v);  // -0 prints as 0
 }
 
 std::string string_literal(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
+  return base::quoted_string(text);
 }
 
 std::string name_literal(const std::string& text) {

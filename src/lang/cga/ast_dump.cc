@@ -1,8 +1,9 @@
 #include "lang/cga/ast_dump.h"
 
-#include <charconv>
 #include <initializer_list>
 #include <string_view>
+
+#include "base/format.h"
 
 namespace insula::lang::cga {
 namespace {
@@ -15,26 +16,11 @@ std::string cat(std::initializer_list<std::string_view> parts) {
 }
 
 std::string number_text(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
+  return base::shortest_number(value);
 }
 
 std::string quoted(std::string_view text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
+  return base::quoted_string(text);
 }
 
 std::string_view unary_name(UnaryOp op) {

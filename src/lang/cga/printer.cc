@@ -6,9 +6,10 @@
 // never continued by the next line.
 #include "lang/cga/printer.h"
 
-#include <charconv>
 #include <cmath>
 #include <string_view>
+
+#include "base/format.h"
 
 namespace insula::lang::cga {
 namespace {
@@ -275,27 +276,11 @@ class GrammarPrinter {
 }  // namespace
 
 std::string number_text(double value) {
-  char buffer[40];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
+  return base::shortest_number(value);
 }
 
 std::string string_literal(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else {
-      out += c;
-    }
-  }
-  out += '"';
-  return out;
+  return base::quoted_string(text);
 }
 
 bool is_identifier(const std::string& name) {
