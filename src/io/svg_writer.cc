@@ -10,6 +10,7 @@
 #include "io/atomic_file.h"
 #include "io/obj_writer.h"
 #include "kernel/polygon.h"
+#include "shape/part_mesh.h"
 
 namespace insula::io {
 namespace {
@@ -659,7 +660,10 @@ std::string xml_escape(std::string_view text) {
   return out;
 }
 
-std::string svg_text(const shape::Scene& scene, const SvgOptions& options) {
+std::string svg_text(const shape::Scene& input, const SvgOptions& options) {
+  // Plans see placed furniture too: instance parts become plain parts (shape/part_mesh.h).
+  shape::Scene expanded;
+  const shape::Scene& scene = shape::expand_instances(input, expanded);
   if (!options.section_height && has_plans(scene)) return plans_svg(scene, options);
   const Drawing drawing = collect(scene, options);
   const Frame frame = frame_of(drawing, options);

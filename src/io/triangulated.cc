@@ -143,9 +143,9 @@ MaterialTable::MaterialTable(const shape::Scene& scene)
   std::vector<bool> used_keys(index_by_key_.size(), false);
   for (const shape::Building& building : scene.buildings) {
     for (const shape::Part& part : building.parts) {
-      for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
-        used_keys[key(part.mesh.tag(f))] = true;
-      }
+      // Instance parts keep their faces in the shared mesh (shape/part_mesh.h).
+      const kernel::Mesh& mesh = part.instance_of ? *part.instance_of : part.mesh;
+      for (std::size_t f = 0; f < mesh.face_count(); ++f) used_keys[key(mesh.tag(f))] = true;
     }
   }
   std::set<std::string> used;

@@ -68,13 +68,15 @@ std::shared_ptr<const Mesh> box_mesh(Vec3 size, std::span<const FaceTag, 6> tags
   return mesh;
 }
 
+// No face ids (0): a face id is an interned name of the shape tree (ShapeTree::face_id, seed 001
+// §3.1.1), so raw side numbers 1-5 would read as whichever names a tree interned first.
 std::array<FaceTag, 6> mass_box_tags() {
-  return {{{SemanticClass::kWallSurface, 0, 2},
-           {SemanticClass::kWallSurface, 0, 3},
+  return {{{SemanticClass::kWallSurface, 0, 0},
+           {SemanticClass::kWallSurface, 0, 0},
            {SemanticClass::kGroundSurface, 0, 0},
-           {SemanticClass::kRoofSurface, 0, 1},
-           {SemanticClass::kWallSurface, 0, 4},
-           {SemanticClass::kWallSurface, 0, 5}}};
+           {SemanticClass::kRoofSurface, 0, 0},
+           {SemanticClass::kWallSurface, 0, 0},
+           {SemanticClass::kWallSurface, 0, 0}}};
 }
 
 bool is_box(const Mesh& mesh, Vec3 size, std::array<FaceTag, 6>* tags, double tolerance) {

@@ -97,6 +97,33 @@ grep -q "loop.lua:1:1: error\[LUA101\]: instruction limit of 100000 reached" "$t
   fail "limit text: $(cat "$tmp/err.txt")"
 expect_exit 2 "bad limit" "$insula" build "$tmp/loop.lua" --set limit_depth=x
 
+# Instancing (seed 001 §4.5): the hotel's furniture shares meshes, so the GLB holds one mesh per
+# distinct piece and a node per placement; OBJ and CityJSON expand every placement.
+out=$tmp/hotel
+expect_exit 0 "build hotel" "$insula" build "$examples/hotel.lua" --assets "$examples/assets" \
+  -o "$out.glb" -o "$out.obj" -o "$out.city.json" -o "$out.png" --image-size 160x120 \
+  --report "$out.json" -q
+node "$root/tools/validate_gltf.mjs" "$out.glb" >"$tmp/v.txt" 2>&1 || { fail "hotel: glTF validator"; cat "$tmp/v.txt"; }
+node -e '
+  const fs = require("fs");
+  const glb = fs.readFileSync(process.argv[1]);
+  const g = JSON.parse(glb.subarray(20, 20 + glb.readUInt32LE(12)).toString());
+  const parts = JSON.parse(fs.readFileSync(process.argv[3])).parts;
+  const instanced = g.nodes.filter((n) => n.matrix !== undefined).length;
+  const city = JSON.parse(fs.readFileSync(process.argv[2]));
+  let geometries = 0;
+  for (const o of Object.values(city.CityObjects)) geometries += (o.geometry || []).length;
+  const ok = g.meshes.length < g.nodes.length - 1 && instanced > 100 && geometries === parts &&
+             g.materials.some((m) => m.name === "None");
+  if (!ok) {
+    console.log(`meshes ${g.meshes.length} nodes ${g.nodes.length} instanced ${instanced}` +
+                ` cityjson geometries ${geometries} parts ${parts}`);
+    process.exit(1);
+  }' "$out.glb" "$out.city.json" "$out.json" || fail "hotel: GLB instancing / CityJSON expansion"
+# OBJ expands the instances: as many faces as without instancing (the hotel's golden).
+[ "$(grep -c '^f ' "$out.obj")" = 14171 ] || fail "hotel: OBJ has $(grep -c '^f ' "$out.obj") faces, expected 14171"
+[ -s "$out.png" ] || fail "hotel: no PNG"
+
 if [ "$failures" -gt 0 ]; then
   echo "$failures failure(s)"
   exit 1

@@ -60,12 +60,19 @@ TEST(Instance, FlatChildClippedByFlatParent) {
 
 TEST(Instance, FaceComponentKeepsTheFaceId) {
   ShapeTree tree;
-  const ShapeId p = box(tree, {10, 3, 8});
-  const OpResult r = face_component(tree, p, 5);  // +z, face id 5
+  // Box sides carry no face id (mass_box_tags); name the +z side as a program would.
+  auto tags = mass_box_tags();
+  const std::uint32_t front = tree.face_id("front");
+  tags[5].face_id = front;
+  Scope scope;
+  scope.size = {10, 3, 8};
+  const ShapeId p = tree.add_root(scope, box_mesh(scope.size, tags));
+  const OpResult r = face_component(tree, p, 5);  // +z
   ASSERT_TRUE(r.ok());
   const Shape& f = tree[r.children[0]];
   EXPECT_TRUE(f.is_flat());
-  EXPECT_EQ(f.mesh->tag(0).face_id, 5U);
+  EXPECT_EQ(f.mesh->tag(0).face_id, front);
+  EXPECT_EQ(tree.face_name(f.mesh->tag(0).face_id), "front");
   EXPECT_NEAR(kernel::area(*f.outline), 30, 1e-9);
 }
 

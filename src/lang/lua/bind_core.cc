@@ -30,11 +30,9 @@ shape::Scope root_frame(Vec3 position, Vec3 size) {
 }
 
 // Box sides of a component: mass classes (walls, ground below, roof above) without face ids, so
-// face ids stay the names a program sets (§3.1.1; shape::mass_box_tags numbers its sides instead).
+// face ids stay the names a program sets (§3.1.1).
 std::shared_ptr<const kernel::Mesh> component_box(Vec3 size) {
-  std::array<kernel::FaceTag, 6> tags = shape::mass_box_tags();
-  for (kernel::FaceTag& tag : tags) tag.face_id = 0;
-  return shape::box_mesh(size, tags);
+  return shape::box_mesh(size, shape::mass_box_tags());
 }
 
 std::string describe_component(const shape::ShapeTree& tree, ShapeId id) {

@@ -534,7 +534,12 @@ RunStats Runtime::stats() const {
 }
 
 shape::Scene collect_program(const Program& program) {
-  shape::Scene scene = shape::collect(program.tree);
+  // Repeated decorations share one mesh (seed 001 §4.5: "can therefore take advantage of
+  // instancing"): glTF writes them as one mesh and a node per placement; the other writers expand
+  // them (shape/part_mesh.h).
+  shape::CollectOptions options;
+  options.instances = true;
+  shape::Scene scene = shape::collect(program.tree, options);
   // Components moved by connect() (seed 001 §3.4.2) live on as their placed copies only.
   for (shape::Building& b : scene.buildings) {
     std::erase_if(b.parts, [](const shape::Part& part) {
