@@ -62,6 +62,7 @@ struct WallGeometry {
   bool exterior = false;      // exterior or dead-zone side: the wall stands inside the room's cell
   bool reaches_past = false;  // lengthened at a reflex corner, into a neighbouring cell
   kernel::Polygon footprint;
+  kernel::Bounds2 box;  // bounds(footprint), cached: the room stage tests it against every cell
 
   double u_of(Vec2 p) const { return kernel::dot(p - start, dir); }
   // Plan point at distance u along the wall and `across` along `left`.

@@ -94,7 +94,7 @@ std::optional<kernel::Polygon> convex_clear_floor(const kernel::Polygon& cell, i
   }
   const kernel::Bounds2 box = kernel::bounds(cell);
   for (const WallGeometry& g : walls.walls) {
-    if (g.reaches_past && boxes_overlap(box, kernel::bounds(g.footprint))) return std::nullopt;
+    if (g.reaches_past && boxes_overlap(box, g.box)) return std::nullopt;
   }
   kernel::Polygon clear{cell.outer, {}};
   for (const Face& f : faces) {
@@ -113,7 +113,7 @@ std::vector<kernel::Polygon> clear_floor(const kernel::Polygon& cell, int room,
   const kernel::Bounds2 box = kernel::bounds(cell);
   std::vector<kernel::Polygon> near;
   for (const WallGeometry& w : walls.walls) {
-    if (!w.footprint.outer.empty() && boxes_overlap(box, kernel::bounds(w.footprint))) {
+    if (!w.footprint.outer.empty() && boxes_overlap(box, w.box)) {
       near.push_back(w.footprint);
     }
   }

@@ -36,32 +36,38 @@ bool near_box(Vec2 p, Vec2 a, Vec2 b) {
          p.y >= std::min(a.y, b.y) - kTouch && p.y <= std::max(a.y, b.y) + kTouch;
 }
 
+// The storey's outer pieces (exterior or dead-zone side), listed once per storey: the corner tests
+// below look at them for every piece, and the inner pieces are most of the storey's walls.
+std::vector<const PlanWall*> outer_walls(const PlanStorey& storey) {
+  std::vector<const PlanWall*> out;
+  for (const PlanWall& w : storey.walls)
+    if (outer_side(w)) out.push_back(&w);
+  return out;
+}
+
 // A point of the storey's outline (an outer wall's reference line).
-bool on_outline(const PlanStorey& storey, Vec2 p) {
-  for (const PlanWall& w : storey.walls) {
-    if (outer_side(w) && near_box(p, w.a, w.b) &&
-        kernel::distance_to_segment(p, w.a, w.b) < kTouch) {
-      return true;
-    }
+bool on_outline(const std::vector<const PlanWall*>& outer, Vec2 p) {
+  for (const PlanWall* w : outer) {
+    if (near_box(p, w->a, w->b) && kernel::distance_to_segment(p, w->a, w->b) < kTouch) return true;
   }
   return false;
 }
 
 // The outer piece that starts where `wall` ends (its successor along the outline), or null.
-const PlanWall* next_outer(const PlanStorey& storey, const PlanWall& wall) {
-  for (const PlanWall& w : storey.walls) {
-    if (&w != &wall && outer_side(w) && std::abs(w.a.x - wall.b.x) < kTouch &&
-        std::abs(w.a.y - wall.b.y) < kTouch) {
-      return &w;
+const PlanWall* next_outer(const std::vector<const PlanWall*>& outer, const PlanWall& wall) {
+  for (const PlanWall* w : outer) {
+    if (w != &wall && std::abs(w->a.x - wall.b.x) < kTouch &&
+        std::abs(w->a.y - wall.b.y) < kTouch) {
+      return w;
     }
   }
   return nullptr;
 }
-const PlanWall* previous_outer(const PlanStorey& storey, const PlanWall& wall) {
-  for (const PlanWall& w : storey.walls) {
-    if (&w != &wall && outer_side(w) && std::abs(w.b.x - wall.a.x) < kTouch &&
-        std::abs(w.b.y - wall.a.y) < kTouch) {
-      return &w;
+const PlanWall* previous_outer(const std::vector<const PlanWall*>& outer, const PlanWall& wall) {
+  for (const PlanWall* w : outer) {
+    if (w != &wall && std::abs(w->b.x - wall.a.x) < kTouch &&
+        std::abs(w->b.y - wall.a.y) < kTouch) {
+      return w;
     }
   }
   return nullptr;
@@ -71,7 +77,8 @@ bool reflex(Vec2 incoming, Vec2 outgoing) {
   return kernel::cross(incoming, outgoing) < -1e-9;
 }
 
-WallGeometry place(const PlanStorey& storey, const PlanWall& wall, double outer_thickness) {
+WallGeometry place(const std::vector<const PlanWall*>& outer, const PlanWall& wall,
+                   double outer_thickness) {
   WallGeometry g;
   const double length = kernel::length(wall.b - wall.a);
   g.dir = (wall.b - wall.a) / length;
@@ -83,8 +90,8 @@ WallGeometry place(const PlanStorey& storey, const PlanWall& wall, double outer_
   if (g.exterior) {
     g.offset0 = 0;
     g.offset1 = g.thickness;
-    const PlanWall* next = next_outer(storey, wall);
-    const PlanWall* previous = previous_outer(storey, wall);
+    const PlanWall* next = next_outer(outer, wall);
+    const PlanWall* previous = previous_outer(outer, wall);
     if (next != nullptr && reflex(g.dir, kernel::normalized(next->b - next->a))) {
       extend_end = g.thickness;
     }
@@ -94,13 +101,14 @@ WallGeometry place(const PlanStorey& storey, const PlanWall& wall, double outer_
   } else {
     g.offset0 = -g.thickness / 2;
     g.offset1 = g.thickness / 2;
-    extend_start = on_outline(storey, wall.a) ? -outer_thickness / 2 : g.thickness / 2;
-    extend_end = on_outline(storey, wall.b) ? -outer_thickness / 2 : g.thickness / 2;
+    extend_start = on_outline(outer, wall.a) ? -outer_thickness / 2 : g.thickness / 2;
+    extend_end = on_outline(outer, wall.b) ? -outer_thickness / 2 : g.thickness / 2;
   }
   g.reaches_past = g.exterior && (extend_start > 0 || extend_end > 0);
   g.start = wall.a - g.dir * extend_start;
   g.length = length + extend_start + extend_end;
   g.footprint = g.rect(0, g.length, g.offset0, g.offset1);
+  g.box = kernel::bounds(g.footprint);
   return g;
 }
 
@@ -214,9 +222,11 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
         {{0, sill, 0, height, 0, 8}, false, false, nullptr, w.a, w.b});
   }
   std::uint32_t face_id = 0;
+  const std::vector<const PlanWall*> outer = outer_walls(storey);
+  out.walls.reserve(storey.walls.size());
   for (std::size_t i = 0; i < storey.walls.size(); ++i) {
     const PlanWall& wall = storey.walls[i];
-    WallGeometry g = place(storey, wall, c.rules.outer_wall_thickness);
+    WallGeometry g = place(outer, wall, c.rules.outer_wall_thickness);
     out.walls.push_back(g);
     if (!(g.length > kTouch) || !(g.thickness > 0)) continue;
     kernel::WallSpec spec;

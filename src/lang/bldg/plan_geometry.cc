@@ -195,13 +195,19 @@ int wall_count(const Polygon& polygon) {
 
 std::vector<EdgePiece> boundary_pieces(const Polygon& cell,
                                        const std::vector<const Polygon*>& others) {
-  // Only the polygons whose box touches the cell's can share an edge with it (indices kept).
-  const kernel::Bounds2 cell_box = kernel::bounds(cell);
-  std::vector<std::size_t> near;
   std::vector<kernel::Bounds2> boxes(others.size());
+  for (std::size_t k = 0; k < others.size(); ++k)
+    if (others[k] != nullptr) boxes[k] = kernel::bounds(*others[k]);
+  return boundary_pieces(cell, kernel::bounds(cell), others, boxes);
+}
+
+std::vector<EdgePiece> boundary_pieces(const Polygon& cell, const kernel::Bounds2& cell_box,
+                                       const std::vector<const Polygon*>& others,
+                                       const std::vector<kernel::Bounds2>& boxes) {
+  // Only the polygons whose box touches the cell's can share an edge with it (indices kept).
+  std::vector<std::size_t> near;
   for (std::size_t k = 0; k < others.size(); ++k) {
     if (others[k] == nullptr) continue;
-    boxes[k] = kernel::bounds(*others[k]);
     if (bounds_touch(cell_box, boxes[k], kLineTolerance)) near.push_back(k);
   }
   std::vector<EdgePiece> out;

@@ -46,6 +46,12 @@ struct EdgePiece {
 // in ring order. Null entries in `others` are skipped.
 std::vector<EdgePiece> boundary_pieces(const kernel::Polygon& cell,
                                        const std::vector<const kernel::Polygon*>& others);
+// The same with the bounds of `cell` and of every entry of `others` given (boxes[k] =
+// kernel::bounds(*others[k]); unused for null entries), for callers that ask about every cell of a
+// storey in turn and would otherwise recompute every box for every cell.
+std::vector<EdgePiece> boundary_pieces(const kernel::Polygon& cell, const kernel::Bounds2& cell_box,
+                                       const std::vector<const kernel::Polygon*>& others,
+                                       const std::vector<kernel::Bounds2>& boxes);
 
 // The maximal straight segments of `cell`'s boundary shared with `other` (oriented as in `cell`).
 std::vector<EdgePiece> shared_segments(const kernel::Polygon& cell, const kernel::Polygon& other);

@@ -166,10 +166,16 @@ int request_connections(Work& work, std::vector<DoorRequest>& doors) {
       }
     // Longest shared wall piece of every pair of the storey, computed once.
     const std::size_t m = rooms.size();
+    // Pairs whose boxes do not touch share nothing: most pairs of a large storey, skipped here
+    // without recomputing both boxes per pair.
     std::vector<double> shared(m * m, 0);
+    std::vector<kernel::Bounds2> boxes(m);
+    for (std::size_t i = 0; i < m; ++i)
+      if (work.rooms[rooms[i]].has_cell) boxes[i] = kernel::bounds(work.rooms[rooms[i]].cell);
     for (std::size_t i = 0; i < m; ++i)
       for (std::size_t j = i + 1; j < m; ++j)
-        shared[i * m + j] = shared[j * m + i] = longest_shared(work, rooms[i], rooms[j]);
+        if (bounds_touch(boxes[i], boxes[j], kLineTolerance))
+          shared[i * m + j] = shared[j * m + i] = longest_shared(work, rooms[i], rooms[j]);
     for (std::size_t guard = 0; guard < rooms.size(); ++guard) {
       // The adjacent pair, one room in the main group, with the longest shared boundary.
       int best_a = -1;

@@ -15,11 +15,17 @@ void storey_walls(const Restrictions& r, PlanStorey& storey) {
   std::vector<const Polygon*> cells;
   for (const PlanRoom& room : storey.rooms) cells.push_back(&room.cell);
   for (const PlanDeadZone& z : storey.dead_zones) cells.push_back(&z.cell);
+  std::vector<kernel::Bounds2> boxes;
+  boxes.reserve(cells.size());
+  for (const Polygon* cell : cells) boxes.push_back(kernel::bounds(*cell));
+  std::vector<const Polygon*> others = cells;
   for (int i = 0; i < static_cast<int>(cells.size()); ++i) {
-    std::vector<const Polygon*> others = cells;
-    others[i] = nullptr;
+    others[static_cast<std::size_t>(i)] = nullptr;
     const bool dead = i >= rooms;
-    for (const EdgePiece& piece : boundary_pieces(*cells[i], others)) {
+    const std::vector<EdgePiece> pieces = boundary_pieces(
+        *cells[static_cast<std::size_t>(i)], boxes[static_cast<std::size_t>(i)], others, boxes);
+    others[static_cast<std::size_t>(i)] = cells[static_cast<std::size_t>(i)];
+    for (const EdgePiece& piece : pieces) {
       PlanWall wall;
       wall.a = piece.a;
       wall.b = piece.b;
