@@ -86,31 +86,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 #endif
 
 #ifdef INSULA_FUZZ_REPLAY
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <vector>
-
-// Replays files, and the files of folders, named on the command line.
-int main(int argc, char** argv) {
-  std::vector<std::filesystem::path> files;
-  for (int i = 1; i < argc; ++i) {
-    if (std::filesystem::is_directory(argv[i])) {
-      for (const auto& entry : std::filesystem::directory_iterator(argv[i])) {
-        if (entry.is_regular_file()) files.push_back(entry.path());
-      }
-    } else {
-      files.emplace_back(argv[i]);
-    }
-  }
-  for (const std::filesystem::path& file : files) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream bytes;
-    bytes << in.rdbuf();
-    const std::string text = bytes.str();
-    LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
-  }
-  std::printf("geojson_fuzz_replay: %zu inputs, no contract violation\n", files.size());
-  return 0;
-}
+#define INSULA_FUZZ_REPLAY_NAME "geojson_fuzz_replay"
+#include "replay_main.h"
 #endif

@@ -10,45 +10,33 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "../common/test_util.h"
+
 namespace {
 
-std::vector<std::filesystem::path> replay_files() {
-  std::vector<std::filesystem::path> files;
-  for (const char* folder : {INSULA_SOURCE_DIR "/fuzz/corpus/geojson", INSULA_TEST_DATA "/bad"}) {
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-      if (entry.is_regular_file() && entry.path().extension() == ".geojson") {
-        files.push_back(entry.path());
-      }
-    }
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
+using insula::test::read_file;
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
+std::vector<std::filesystem::path> replay_files() {
+  return insula::test::corpus_files(
+      {INSULA_SOURCE_DIR "/fuzz/corpus/geojson", INSULA_TEST_DATA "/bad"}, /*recursive=*/false,
+      [](const std::filesystem::path& path) { return path.extension() == ".geojson"; });
 }
 
 TEST(GeoJsonReplay, CorpusAndCatalogKeepTheContract) {
   const std::vector<std::filesystem::path> files = replay_files();
   ASSERT_GE(files.size(), 40u);  // 9 corpus seeds and the catalog
   for (const auto& file : files) {
-    EXPECT_EQ(insula::fuzz::check_geojson(read_text(file)), "") << file;
+    EXPECT_EQ(insula::fuzz::check_geojson(read_file(file)), "") << file;
   }
 }
 
 TEST(GeoJsonReplay, TruncationsKeepTheContract) {
   for (const auto& file : replay_files()) {
-    const std::string text = read_text(file);
+    const std::string text = read_file(file);
     const std::size_t step = std::max<std::size_t>(1, text.size() / 48);
     for (std::size_t n = 0; n < text.size(); n += step) {
       ASSERT_EQ(insula::fuzz::check_geojson(std::string_view(text).substr(0, n)), "")
@@ -62,7 +50,7 @@ TEST(GeoJsonReplay, ByteSubstitutionsKeepTheContract) {
   const std::string interesting = "[]{}\",:-+.eE019 \nnNtI\\";
   std::mt19937 rng(20240601);  // fixed: a failure reproduces
   for (const auto& file : replay_files()) {
-    const std::string text = read_text(file);
+    const std::string text = read_file(file);
     if (text.empty() || text.size() > 20000) continue;
     for (int round = 0; round < 64; ++round) {
       std::string mutated = text;

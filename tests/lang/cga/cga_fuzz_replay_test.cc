@@ -8,40 +8,31 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "../../common/test_util.h"
+
 namespace {
 
-std::vector<std::filesystem::path> replay_files() {
-  std::vector<std::filesystem::path> files;
-  for (const char* folder : {INSULA_TEST_DATA "/cga", INSULA_SOURCE_DIR "/fuzz/corpus/cga"}) {
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
-      const std::string extension = entry.path().extension().string();
-      const bool corpus = entry.path().string().find("/fuzz/corpus/") != std::string::npos;
-      if (entry.is_regular_file() && (corpus || extension == ".cga" || extension == ".xml")) {
-        files.push_back(entry.path());
-      }
-    }
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
+using insula::test::read_file;
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
+// Every file of the fuzz corpus, and the grammars and XML files of the test data.
+std::vector<std::filesystem::path> replay_files() {
+  return insula::test::corpus_files({INSULA_TEST_DATA "/cga", INSULA_SOURCE_DIR "/fuzz/corpus/cga"},
+                                    /*recursive=*/true, [](const std::filesystem::path& path) {
+                                      const std::string extension = path.extension().string();
+                                      const bool corpus =
+                                          path.string().find("/fuzz/corpus/") != std::string::npos;
+                                      return corpus || extension == ".cga" || extension == ".xml";
+                                    });
 }
 
 TEST(CgaFuzzReplay, CorpusKeepsTheContract) {
   const std::vector<std::filesystem::path> files = replay_files();
   ASSERT_GE(files.size(), 40U);
   for (const auto& file : files) {
-    EXPECT_EQ(insula::fuzz::check_cga(read_text(file)), "") << file;
+    EXPECT_EQ(insula::fuzz::check_cga(read_file(file)), "") << file;
   }
 }
 
@@ -50,7 +41,7 @@ TEST(CgaFuzzReplay, TruncationsAndMutationsKeepTheContract) {
   std::uint64_t state = 0x2545F4914F6CDD1DULL;  // fixed seed: deterministic
   std::size_t inputs = 0;
   for (const auto& file : replay_files()) {
-    const std::string text = read_text(file);
+    const std::string text = read_file(file);
     if (text.empty()) continue;
     const std::size_t step = std::max<std::size_t>(1, text.size() / 40);
     for (std::size_t length = 0; length < text.size(); length += step) {
