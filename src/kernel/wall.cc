@@ -646,6 +646,44 @@ void emit(const Boundary& b, const std::vector<std::uint32_t>& loops,
   result.front_pieces = pieces;
 }
 
+// Writes the wall's faces into `mesh` after whatever it already holds (vertex indices shifted by
+// its vertex count). A left-handed frame gets every loop reversed as it is written, which is what
+// Mesh::flip does afterwards to a wall built alone.
+void emit_into(const Boundary& b, const std::vector<std::uint32_t>& loops,
+               const std::vector<std::uint32_t>& offsets, const WallSpec& spec,
+               const WallFrame& frame, Mesh& mesh, std::vector<std::int32_t>* face_opening) {
+  const auto n = static_cast<std::uint32_t>(b.points.size());
+  const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
+  const std::size_t pieces = offsets.size() - 1;
+  const bool flip = dot(cross(frame.u_axis, frame.v_axis), frame.normal) < 0;
+  for (Vec2 p : b.points) mesh.add_vertex(frame.map(p.x, p.y, spec.thickness));
+  for (Vec2 p : b.points) mesh.add_vertex(frame.map(p.x, p.y, 0));
+  std::vector<std::uint32_t> loop;
+  for (std::size_t f = 0; f < pieces; ++f) {
+    loop.assign(loops.begin() + offsets[f], loops.begin() + offsets[f + 1]);
+    for (std::uint32_t& v : loop) v += base;
+    if (flip) std::reverse(loop.begin(), loop.end());
+    mesh.add_face(loop, spec.tags.front);
+  }
+  for (std::size_t f = 0; f < pieces; ++f) {
+    loop.assign(loops.begin() + offsets[f], loops.begin() + offsets[f + 1]);
+    if (!flip) std::reverse(loop.begin(), loop.end());
+    for (std::uint32_t& v : loop) v += base + n;
+    mesh.add_face(loop, spec.tags.back);
+  }
+  if (face_opening != nullptr) face_opening->assign(2 * pieces, -1);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = b.next[i];
+    const FaceTag tag = tag_for(spec.tags, b.kind[i]);
+    if (flip) {
+      mesh.add_face({base + j, base + n + j, base + n + i, base + i}, tag);
+    } else {
+      mesh.add_face({base + i, base + n + i, base + n + j, base + j}, tag);
+    }
+    if (face_opening != nullptr) face_opening->push_back(b.opening[i]);
+  }
+}
+
 WallResult failure(WallStatus status, std::string message) {
   WallResult r;
   r.status = status;
@@ -714,6 +752,34 @@ WallResult build_wall(const WallSpec& spec, const WallFrame& frame) {
   result.issues = std::move(issues);
   for (const Accepted& c : cut) result.cut.push_back(c.index);
   emit(boundary, loops, offsets, spec, frame, result);
+  return result;
+}
+
+WallResult build_wall(const WallSpec& spec, const WallFrame& frame, Mesh& out) {
+  if (std::string why = wall_problem(spec); !why.empty()) {
+    return failure(WallStatus::kInvalidWall, std::move(why));
+  }
+  const Ring outline = counter_clockwise(spec.outline);
+  std::vector<Accepted> cut;
+  std::vector<OpeningIssue> issues = validate(outline, spec, cut);
+  if (!issues.empty() && spec.policy == OpeningPolicy::kFail) {
+    WallResult r = failure(WallStatus::kRejectedOpening, issues.front().message);
+    r.issues = std::move(issues);
+    return r;
+  }
+  Boundary boundary;
+  build_boundary(outline, cut, boundary);
+  std::vector<std::array<std::uint32_t, 2>> diagonals;
+  std::vector<std::uint32_t> loops, offsets{0};
+  if (!MonotonePartition(boundary).run(diagonals) ||
+      !PieceWalker(boundary, diagonals).run(loops, offsets)) {
+    return failure(WallStatus::kDecompositionFailed, "the planar partition of the wall failed");
+  }
+  WallResult result;
+  result.issues = std::move(issues);
+  for (const Accepted& c : cut) result.cut.push_back(c.index);
+  emit_into(boundary, loops, offsets, spec, frame, out, nullptr);
+  result.front_pieces = offsets.size() - 1;
   return result;
 }
 

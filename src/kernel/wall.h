@@ -120,6 +120,13 @@ struct WallResult {
 // which compares only openings whose margin-expanded bounding boxes overlap. Never throws.
 WallResult build_wall(const WallSpec& spec, const WallFrame& frame = {});
 
+// The same wall appended straight into `out` (after the vertices and faces it already holds; the
+// same faces in the same order as build_wall's mesh appended with Mesh::append), so that a caller
+// building many walls into one mesh allocates and copies no mesh per wall. The result's mesh and
+// face_opening stay empty; status, message, issues, cut and front_pieces are as build_wall's.
+// Nothing is appended unless the result is ok.
+WallResult build_wall(const WallSpec& spec, const WallFrame& frame, Mesh& out);
+
 // Validation alone (what build_wall reports), for front-ends testing whether an opening fits.
 // Openings are checked in input order against the outline and the earlier accepted ones.
 // Returns the issues and, in `accepted`, the indices of the openings that pass. Outline problems

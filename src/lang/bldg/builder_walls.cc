@@ -224,14 +224,24 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
   std::uint32_t face_id = 0;
   const std::vector<const PlanWall*> outer = outer_walls(storey);
   out.walls.reserve(storey.walls.size());
+  // Room for the whole storey at once (the mesh would otherwise regrow a dozen times): a plain wall
+  // is 8 vertices and 6 faces, an opening adds 8 vertices and 4 faces, and its frames 6 (door) or
+  // 9 (window) boxes of 8 vertices and 6 faces.
+  const std::size_t doors = storey.doors.size() + storey.entrances.size();
+  const std::size_t windows = storey.windows.size();
+  const std::size_t boxes = c.options.frames ? 6 * doors + 9 * windows : 0;
+  const std::size_t faces = 8 * storey.walls.size() + 6 * (doors + windows) + 6 * boxes;
+  mesh.reserve(mesh.vertex_count() + 8 * (storey.walls.size() + doors + windows + boxes),
+               mesh.face_count() + faces, 4 * (mesh.face_count() + faces));
+  kernel::WallSpec spec;  // reused: its vectors keep their storage from wall to wall
+  spec.policy = kernel::OpeningPolicy::kSkip;
   for (std::size_t i = 0; i < storey.walls.size(); ++i) {
     const PlanWall& wall = storey.walls[i];
     WallGeometry g = place(outer, wall, c.rules.outer_wall_thickness);
     out.walls.push_back(g);
     if (!(g.length > kTouch) || !(g.thickness > 0)) continue;
-    kernel::WallSpec spec;
+    spec.openings.clear();
     spec.thickness = g.thickness;
-    spec.policy = kernel::OpeningPolicy::kSkip;
     spec.tags = wall_tags(wall.exterior(), face_id);
     spec.outline = {{0, 0}, {g.length, 0}, {g.length, h}, {0, h}};
     for (Asked& a : asked[i]) {
@@ -245,7 +255,8 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
         kernel::lift(g.start, z0), kernel::lift(g.start + g.dir * g.length, z0), h, g.thickness,
         g.exterior ? kernel::WallAlignment::kInside : kernel::WallAlignment::kCenter);
     if (!placement) continue;
-    const kernel::WallResult built = kernel::build_wall(spec, placement->frame);
+    // Appended straight into the storey's mesh: no mesh allocated and copied per wall.
+    const kernel::WallResult built = kernel::build_wall(spec, placement->frame, mesh);
     if (!built.ok()) {
       c.warn("storey " + std::to_string(storey.level) + ": wall " + std::to_string(i) +
              " of room '" + storey.rooms[static_cast<std::size_t>(wall.left)].symbol +
@@ -259,7 +270,6 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
              storey.rooms[static_cast<std::size_t>(wall.left)].symbol +
              "' left out: " + issue.message);
     }
-    mesh.append(built.mesh);
     ++c.result.stats.walls;
     std::vector<std::pair<double, double>> gaps;
     for (std::size_t k : built.cut) {
