@@ -207,6 +207,16 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
   for (const PlanStair& st : storey.stairs) ceiling_holes.push_back(st.footprint);
   const FaceTag closure{SemanticClass::kClosureSurface, 0, 0};
   const FaceTag inner{SemanticClass::kInteriorWallSurface, 0, 2};
+  // Bounds of every hole list, computed once per storey rather than once per room and hole.
+  const auto boxes_of = [](const std::vector<kernel::Polygon>& holes) {
+    std::vector<kernel::Bounds2> out;
+    out.reserve(holes.size());
+    for (const kernel::Polygon& hole : holes) out.push_back(kernel::bounds(hole));
+    return out;
+  };
+  const std::vector<kernel::Bounds2> floor_boxes = boxes_of(floor_holes);
+  const std::vector<kernel::Bounds2> ceiling_boxes = boxes_of(ceiling_holes);
+  const std::vector<kernel::Bounds2> gap_boxes = boxes_of(walls.door_gaps);
   for (const PlanRoom& room : storey.rooms) {
     const int index = static_cast<int>(&room - storey.rooms.data());
     const std::vector<kernel::Polygon> clear = clear_floor(room.cell, index, walls, storey);
@@ -221,32 +231,34 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
     part.attributes["area"] = std::round(area * 1000) / 1000;
     part.attributes["building_part"] = room.part;
     const kernel::Bounds2 box = kernel::bounds(room.cell);
-    const auto near = [&](const std::vector<kernel::Polygon>& holes) {
+    const auto near = [&](const std::vector<kernel::Polygon>& holes,
+                          const std::vector<kernel::Bounds2>& boxes) {
       std::vector<kernel::Polygon> out;
-      for (const kernel::Polygon& hole : holes) {
-        if (boxes_overlap(box, kernel::bounds(hole))) out.push_back(hole);
+      for (std::size_t k = 0; k < holes.size(); ++k) {
+        if (boxes_overlap(box, boxes[k])) out.push_back(holes[k]);
       }
       return out;
     };
-    for (const kernel::Polygon& p : minus(clear, near(floor_holes))) {
+    for (const kernel::Polygon& p : minus(clear, near(floor_holes, floor_boxes))) {
       add_prism(part.mesh, p, z0, z0 + slab, closure,
                 {SemanticClass::kFloorSurface, kFloorMaterial, 1}, inner);
     }
-    std::vector<kernel::Polygon> open_above = near(ceiling_holes);
+    std::vector<kernel::Polygon> open_above = near(ceiling_holes, ceiling_boxes);
     // Under a compluvium (the part's top storey), the ceiling stays open to the sky.
     const auto compluvium = c.compluvia->find(room.part);
     if (compluvium != c.compluvia->end() && room.part_index >= 0 &&
         static_cast<std::size_t>(room.part_index) < c.plan.parts.size() &&
         c.plan.parts[static_cast<std::size_t>(room.part_index)].storeys == storey.level + 1) {
-      for (const kernel::Polygon& hole : near(compluvium->second)) open_above.push_back(hole);
+      for (const kernel::Polygon& hole : near(compluvium->second, boxes_of(compluvium->second)))
+        open_above.push_back(hole);
     }
     for (const kernel::Polygon& p : minus(clear, open_above)) {
       add_prism(part.mesh, p, z0 + h - slab, z0 + h, {SemanticClass::kCeilingSurface, 0, 3},
                 closure, inner);
     }
     if (c.options.footers && c.rules.footer_height > 0 && c.options.footer_depth > 0) {
-      std::vector<kernel::Polygon> gaps = near(walls.door_gaps);
-      for (kernel::Polygon& hole : near(floor_holes)) gaps.push_back(std::move(hole));
+      std::vector<kernel::Polygon> gaps = near(walls.door_gaps, gap_boxes);
+      for (kernel::Polygon& hole : near(floor_holes, floor_boxes)) gaps.push_back(std::move(hole));
       add_footers(clear, gaps, c.options.footer_depth, z0 + slab, c.rules.footer_height, part.mesh);
     }
     shape::PlanRoom drawn;

@@ -49,11 +49,17 @@ double clipped_twice_area(const Ring& ring, bool along_x, double t) {
 
 // Collinear test for consecutive vertices a, b, c: b lies on the line ac within the tolerance
 // and between a and c.
+// Squared lengths against the squared tolerance: the same tests without std::hypot, which was
+// the ring simplification's main cost.
 bool redundant(Vec2 a, Vec2 b, Vec2 c) {
+  constexpr double kTol2 = kLineTolerance * kLineTolerance;
   const Vec2 ac = c - a;
-  const double len = kernel::length(ac);
-  if (kernel::length(b - a) < kLineTolerance || kernel::length(c - b) < kLineTolerance) return true;
-  if (len < kLineTolerance) return false;
+  const Vec2 ab = b - a;
+  const Vec2 bc = c - b;
+  if (kernel::dot(ab, ab) < kTol2 || kernel::dot(bc, bc) < kTol2) return true;
+  const double len2 = kernel::dot(ac, ac);
+  if (len2 < kTol2) return false;
+  const double len = std::sqrt(len2);
   const double dist = std::abs(kernel::cross(ac, b - a)) / len;
   return dist < kLineTolerance && kernel::dot(b - a, c - b) > 0;
 }
@@ -110,7 +116,9 @@ void covered_by_ring(Vec2 p, Vec2 q, const Ring& ring, int other, std::vector<In
 void pieces_of_edge(Vec2 p, Vec2 q, const std::vector<const Polygon*>& others,
                     const std::vector<kernel::Bounds2>& boxes, const std::vector<std::size_t>& near,
                     std::vector<EdgePiece>& out) {
-  std::vector<Interval> covered;
+  // Scratch kept from edge to edge (every edge of every cell passes here).
+  thread_local std::vector<Interval> covered;
+  covered.clear();
   kernel::Bounds2 edge_box;
   edge_box.add(p);
   edge_box.add(q);
