@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -73,6 +74,22 @@ inline void expect_golden(const std::filesystem::path& golden, const std::string
   ASSERT_TRUE(std::filesystem::exists(golden))
       << "missing golden " << golden << "; run with INSULA_UPDATE_GOLDEN=1";
   EXPECT_EQ(actual, read_file(golden)) << "golden " << golden;
+}
+
+// A bad-input catalog: every file of `files` has the first diagnostic `expected` lists for its
+// stem (as `first_line` renders it), and every listed stem has its file.
+inline void expect_catalog_first_lines(
+    const std::vector<std::filesystem::path>& files,
+    const std::map<std::string, std::string>& expected,
+    const std::function<std::string(const std::filesystem::path&)>& first_line) {
+  for (const auto& path : files) {
+    const std::string stem = path.stem().string();
+    SCOPED_TRACE(stem);
+    const auto it = expected.find(stem);
+    ASSERT_NE(it, expected.end()) << "add the expected diagnostic for " << stem;
+    EXPECT_EQ(first_line(path), it->second);
+  }
+  EXPECT_EQ(files.size(), expected.size()) << "a listed file is missing";
 }
 
 }  // namespace insula::test

@@ -37,19 +37,11 @@ TEST(BldgRoundTrip, EveryGoodGrammar) {
 // deliberate (regenerate with INSULA_UPDATE_GOLDEN=1).
 TEST(BldgRoundTrip, PrintedFormGoldens) {
   const std::filesystem::path golden_dir = testing::data_dir() / "golden";
-  const bool update = std::getenv("INSULA_UPDATE_GOLDEN") != nullptr;
   for (const auto& path : testing::files_in(testing::data_dir(), ".bldg")) {
     SCOPED_TRACE(path.filename().string());
     const std::string printed =
         print_building(testing::parse_ok(testing::read_file(path), path.filename().string()));
-    const std::filesystem::path golden = golden_dir / path.filename();
-    if (update) {
-      std::filesystem::create_directories(golden_dir);
-      std::ofstream(golden, std::ios::binary) << printed;
-      continue;
-    }
-    ASSERT_TRUE(std::filesystem::exists(golden)) << "run with INSULA_UPDATE_GOLDEN=1";
-    EXPECT_EQ(printed, testing::read_file(golden));
+    insula::test::expect_golden(golden_dir / path.filename(), printed);
   }
 }
 

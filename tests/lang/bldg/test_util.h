@@ -1,14 +1,12 @@
 // Helpers shared by the .bldg front-end tests.
 #pragma once
 
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "../../common/test_util.h"
 #include "base/diagnostic.h"
 #include "lang/bldg/parser.h"
 
@@ -18,25 +16,9 @@ inline std::filesystem::path data_dir() {
   return std::filesystem::path(INSULA_TEST_DATA) / "bldg";
 }
 
-inline std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-// Files with `extension` directly in `dir`, sorted by name.
-inline std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir,
-                                                   const std::string& extension) {
-  std::vector<std::filesystem::path> out;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.is_regular_file() && entry.path().extension() == extension) {
-      out.push_back(entry.path());
-    }
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
+// Shared by every front-end (tests/common/test_util.h).
+using insula::test::files_in;
+using insula::test::read_file;
 
 // prefix + i, built by appending: GCC 12 -O3 reports a false -Wrestrict on "x" + std::string.
 inline std::string numbered(const char* prefix, int i) {

@@ -99,14 +99,10 @@ const std::map<std::string, std::string>& expected_first_lines() {
 TEST(CgaBadInput, EveryCatalogFileHasItsExactFirstDiagnostic) {
   const auto files = files_in(data_dir() / "bad", ".cga");
   ASSERT_GE(files.size(), 20U);
-  for (const auto& path : files) {
-    const std::string stem = path.stem().string();
-    SCOPED_TRACE(stem);
-    const auto it = expected_first_lines().find(stem);
-    ASSERT_NE(it, expected_first_lines().end()) << "add the expected diagnostic for " << stem;
-    EXPECT_EQ(testing::first_error(read_file(path), path.filename().string()), it->second);
-  }
-  EXPECT_EQ(files.size(), expected_first_lines().size()) << "a listed file is missing";
+  insula::test::expect_catalog_first_lines(
+      files, expected_first_lines(), [](const std::filesystem::path& path) {
+        return testing::first_error(read_file(path), path.filename().string());
+      });
 }
 
 }  // namespace

@@ -110,22 +110,15 @@ TEST(CgaCheckerCatalog, CatalogCoversEveryCode) {
 TEST(CgaCheckerGolden, CorpusCheckedModels) {
   const auto grammars = files_in(data_dir(), ".cga");
   ASSERT_GE(grammars.size(), 5U);
-  const bool update = std::getenv("INSULA_UPDATE_GOLDEN") != nullptr;
   for (const auto& path : grammars) {
     SCOPED_TRACE(path.string());
     const base::Source source(path.filename().string(), read_file(path));
     const auto grammar = parse(source);
     ASSERT_TRUE(grammar.ok());
-    const std::string text = dump_checked(grammar.value(), check(grammar.value(), source));
     auto golden = data_dir() / "semantic" / "checked" / path.filename();
     golden.replace_extension(".checked");
-    if (update) {
-      std::ofstream(golden, std::ios::binary) << text;
-      continue;
-    }
-    ASSERT_TRUE(std::filesystem::exists(golden))
-        << "missing golden; run with INSULA_UPDATE_GOLDEN=1";
-    EXPECT_EQ(text, read_file(golden));
+    insula::test::expect_golden(golden,
+                                dump_checked(grammar.value(), check(grammar.value(), source)));
   }
 }
 

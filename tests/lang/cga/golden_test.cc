@@ -2,8 +2,6 @@
 // INSULA_UPDATE_GOLDEN=1).
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-
 #include "lang/cga/ast_dump.h"
 #include "test_util.h"
 
@@ -17,22 +15,14 @@ using testing::read_file;
 TEST(CgaGolden, EveryGrammarParsesToItsGoldenDump) {
   const auto grammars = files_in(data_dir(), ".cga");
   ASSERT_GE(grammars.size(), 5U);
-  const bool update = std::getenv("INSULA_UPDATE_GOLDEN") != nullptr;
   for (const auto& path : grammars) {
     SCOPED_TRACE(path.string());
     const base::Source source(path.filename().string(), read_file(path));
     const auto result = parse(source);
     ASSERT_TRUE(result.ok()) << base::render(result.diagnostics().front(), &source);
-    const std::string text = dump(result.value(), source);
     auto golden = path;
     golden.replace_extension(".ast");
-    if (update) {
-      std::ofstream(golden, std::ios::binary) << text;
-      continue;
-    }
-    ASSERT_TRUE(std::filesystem::exists(golden))
-        << "missing golden; run with INSULA_UPDATE_GOLDEN=1";
-    EXPECT_EQ(text, read_file(golden));
+    insula::test::expect_golden(golden, dump(result.value(), source));
   }
 }
 
