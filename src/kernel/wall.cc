@@ -328,6 +328,15 @@ struct Boundary {
   std::vector<std::int32_t> opening;  // opening of that edge, or -1 for the rim
   std::uint32_t ring_start = 0;
 
+  // Room for n vertices in every array (the appending build_wall sizes them once).
+  void reserve(std::size_t n) {
+    points.reserve(n);
+    next.reserve(n);
+    prev.reserve(n);
+    kind.reserve(n);
+    opening.reserve(n);
+  }
+
   void add(Vec2 p, EdgeKind k, std::int32_t o) {
     points.push_back(p);
     kind.push_back(k);
@@ -768,9 +777,15 @@ WallResult build_wall(const WallSpec& spec, const WallFrame& frame, Mesh& out) {
     return r;
   }
   Boundary boundary;
+  std::size_t points = outline.size();
+  for (const Accepted& c : cut) points += c.ring.size() + 1;
+  boundary.reserve(points);
   build_boundary(outline, cut, boundary);
   std::vector<std::array<std::uint32_t, 2>> diagonals;
   std::vector<std::uint32_t> loops, offsets{0};
+  diagonals.reserve(2 * cut.size() + 2);  // a few per opening
+  loops.reserve(2 * points + 8 * cut.size());
+  offsets.reserve(2 * cut.size() + 4);
   if (!MonotonePartition(boundary).run(diagonals) ||
       !PieceWalker(boundary, diagonals).run(loops, offsets)) {
     return failure(WallStatus::kDecompositionFailed, "the planar partition of the wall failed");

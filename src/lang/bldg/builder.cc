@@ -77,21 +77,27 @@ void add_box(kernel::Mesh& mesh, Vec3 origin, Vec3 u, Vec3 v, Vec3 w, FaceTag ta
     w = -w;
   }
   const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
+  // Corner (i, j, k) is base + i + 2j + 4k. The corners go straight into the position array
+  // (frames and footers make most of a building's boxes, and this is their inner loop).
+  std::vector<Vec3>& positions = mesh.positions();
   for (int k = 0; k < 2; ++k) {
     for (int j = 0; j < 2; ++j) {
-      for (int i = 0; i < 2; ++i) mesh.add_vertex(origin + u * i + v * j + w * k);
+      for (int i = 0; i < 2; ++i) positions.push_back(origin + u * i + v * j + w * k);
     }
   }
-  // Corner (i, j, k) is base + i + 2j + 4k.
-  const auto c = [base](std::uint32_t i, std::uint32_t j, std::uint32_t k) {
-    return base + i + 2 * j + 4 * k;
-  };
-  mesh.add_face({c(0, 0, 0), c(0, 1, 0), c(1, 1, 0), c(1, 0, 0)}, tag);
-  mesh.add_face({c(0, 0, 1), c(1, 0, 1), c(1, 1, 1), c(0, 1, 1)}, tag);
-  mesh.add_face({c(0, 0, 0), c(1, 0, 0), c(1, 0, 1), c(0, 0, 1)}, tag);
-  mesh.add_face({c(0, 1, 0), c(0, 1, 1), c(1, 1, 1), c(1, 1, 0)}, tag);
-  mesh.add_face({c(0, 0, 0), c(0, 0, 1), c(0, 1, 1), c(0, 1, 0)}, tag);
-  mesh.add_face({c(1, 0, 0), c(1, 1, 0), c(1, 1, 1), c(1, 0, 1)}, tag);
+  static constexpr std::array<std::array<std::uint32_t, 4>, 6> kFaces{{
+      {0, 2, 3, 1},  // k = 0
+      {4, 5, 7, 6},  // k = 1
+      {0, 1, 5, 4},  // j = 0
+      {2, 6, 7, 3},  // j = 1
+      {0, 4, 6, 2},  // i = 0
+      {1, 3, 7, 5},  // i = 1
+  }};
+  for (const auto& face : kFaces) {
+    const std::array<std::uint32_t, 4> loop{base + face[0], base + face[1], base + face[2],
+                                            base + face[3]};
+    mesh.add_face(loop, tag);
+  }
 }
 
 bool add_prism(kernel::Mesh& mesh, const kernel::Polygon& polygon, double z0, double z1,

@@ -230,6 +230,14 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
     part.attributes["storey"] = static_cast<double>(storey.level);
     part.attributes["area"] = std::round(area * 1000) / 1000;
     part.attributes["building_part"] = room.part;
+    // Room for the floor and ceiling prisms (2n vertices and n + 2 faces each over n outline
+    // vertices) and a footer box (8 vertices, 6 faces) per edge, so the mesh grows once.
+    std::size_t n = 0;
+    for (const kernel::Polygon& p : clear) {
+      n += p.outer.size();
+      for (const kernel::Ring& hole : p.holes) n += hole.size();
+    }
+    part.mesh.reserve(12 * n, 8 * n + 4, 32 * n + 8);
     const kernel::Bounds2 box = kernel::bounds(room.cell);
     const auto near = [&](const std::vector<kernel::Polygon>& holes,
                           const std::vector<kernel::Bounds2>& boxes) {
