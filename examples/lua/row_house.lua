@@ -1,8 +1,9 @@
 -- A row of town houses (seed 001, Fig. 9): one block split into houses of random widths (seeded),
 -- each house into two storeys, each storey into a hall running front to back and a front and a back
 -- room; walls and floors grown inward per space and the block's shell grown outward (§4.2, Fig. 6),
--- a gable roof per house (§3.4.3 roofing), a front door in every hall, doors from the hall into the
--- rooms found by occlusion (§4.4), and windows on every room wall that faces the street or the yard.
+-- one gable roof with its ridge along the street (§3.4.3 roofing), a front door in every hall,
+-- doors from the hall into the rooms found by occlusion (§4.4), and windows on every room wall that
+-- faces the street or the yard.
 --
 --   insula build examples/lua/row_house.lua --seed 3 -o row.glb --report row.json
 
@@ -52,11 +53,11 @@ for _, f in ipairs(fquery(row, "SIDE or BOTTOM")) do
 end
 extrude(shell, 0.25, { label = "ewall" })
 
--- Roofs: the top face of each house, a gable with a small overhang.
-for h in query("house") do
-  local top = component(h, { boundary = fquery(h, "TOP")[1], label = "roof base" })
-  roof(top, "gable", 40, 0.3, { label = "roof" })
-end
+-- Roof: one gable over the whole row with its ridge along the street and the gables on the end
+-- walls, as the row houses of Fig. 9 (a gable per house would put the ridge on each house's long
+-- axis, front to back, and turn the gables to the street).
+local top = component(row, { boundary = fquery(row, "TOP")[1], label = "roof base" })
+roof(top, "gable", 40, 0.3, { label = "roof" })
 
 -- Architectural elements (§4.4): a front door per house, doors from the hall into each room,
 -- a window per room wall on the street or the yard.

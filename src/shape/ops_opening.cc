@@ -99,10 +99,20 @@ bool split_core(const Mesh& wall, const kernel::Bounds2& core, Pieces& out) {
   const kernel::Bounds3 b = rest.bounds();
   kernel::SplitOptions options;
   options.cap_tag = {SemanticClass::kClosureSurface, 0, 0};
-  const std::array<std::pair<Vec3, double>, 4> planes = {{{{-1, 0, 0}, -core.min.x},
-                                                          {{1, 0, 0}, core.max.x},
-                                                          {{0, -1, 0}, -core.min.y},
-                                                          {{0, 1, 0}, core.max.y}}};
+  // The core comes from a 2D boolean whose output is rounded (3e-7 m on a 249 m facade): move
+  // each plane onto the wall's own vertex within kEps, or it cuts a sliver of the mitre off into
+  // the core, which then is no slab.
+  const auto snap = [&](double at, bool along_x) {
+    for (const Vec3& p : rest.positions()) {
+      const double c = along_x ? p.x : p.y;
+      if (std::fabs(c - at) <= kEps) return c;
+    }
+    return at;
+  };
+  const std::array<std::pair<Vec3, double>, 4> planes = {{{{-1, 0, 0}, -snap(core.min.x, true)},
+                                                          {{1, 0, 0}, snap(core.max.x, true)},
+                                                          {{0, -1, 0}, -snap(core.min.y, false)},
+                                                          {{0, 1, 0}, snap(core.max.y, false)}}};
   const std::array<double, 4> outer = {-b.min.x, b.max.x, -b.min.y, b.max.y};
   for (std::size_t i = 0; i < 4; ++i) {
     if (planes[i].second >= outer[i] - kEps) continue;  // the wall ends there anyway
@@ -161,45 +171,90 @@ bool overlaps(const kernel::Bounds3& a, const kernel::Bounds3& b) {
 // The general path: opening boxes subtracted by CGAL corefinement from every closed piece they
 // reach (the slab with its planar cuts and the mitred ends are separate closed meshes); the
 // reveals keep the jamb, sill and lintel classes. Returns how many openings were cut.
+//
+// Corefinement costs with the mesh's size, so a large slab is swept along u: the openings are
+// taken in order of u, grouped where their neighbourhoods (0.05 m either side) overlap, and each
+// group is cut from the slab's not yet visited remainder after two plane splits hand CGAL only the
+// group's neighbourhood. Finished parts are never split, welded or corefined again, so a facade
+// with n openings costs O(n) corefinements of bounded size (it was O(n) on the whole, growing
+// slab: 40 row houses took 19 s, luafix in docs/perf/lua.md).
 std::size_t cut_general(Pieces& pieces, const std::vector<kernel::Bounds3>& boxes) {
+  constexpr double kReach = 0.05;         // meters of slab kept around an opening for CGAL
+  constexpr std::size_t kSplitFrom = 64;  // smaller meshes go to CGAL whole
   const FaceTag jamb{SemanticClass::kJamb, 0, 0};
   const std::array<FaceTag, 6> tags = {
       jamb, jamb, FaceTag{SemanticClass::kSill, 0, 0}, FaceTag{SemanticClass::kLintel, 0, 0},
       jamb, jamb};
-  std::size_t cut = 0;
+  std::vector<Mesh> box_meshes;
+  box_meshes.reserve(boxes.size());
   for (const kernel::Bounds3& b : boxes) {
     Mesh box = *box_mesh(b.max - b.min, tags);
     for (Vec3& p : box.positions()) p += b.min;
-    bool any = false;
-    const auto subtract = [&](Mesh& piece) {
-      if (piece.empty() || !overlaps(piece.bounds(), b)) return;
-      // Corefinement costs with the mesh's size: cut the slab down to the opening's neighbourhood
-      // first (two plane splits along u) and hand CGAL only that part.
-      Mesh keep;
-      Mesh part = kernel::weld(piece);
-      const kernel::Bounds3 pb = part.bounds();
-      kernel::SplitOptions split_options;
-      split_options.cap_tag = {SemanticClass::kClosureSurface, 0, 0};
-      for (const auto& [normal, offset] : {std::pair<Vec3, double>{{-1, 0, 0}, -(b.min.x - 0.05)},
-                                           std::pair<Vec3, double>{{1, 0, 0}, b.max.x + 0.05}}) {
-        const double at = normal.x < 0 ? -offset : offset;
-        if (part.face_count() < 64 || at <= pb.min.x + kEps || at >= pb.max.x - kEps) continue;
-        kernel::SplitResult r = kernel::split(part, {normal, offset}, split_options);
-        if (!r.ok()) return;
-        keep.append(r.positive);
-        part = kernel::weld(r.negative);
-      }
-      kernel::Boolean3dResult r = kernel::boolean3d(part, box, kernel::BooleanOp::kDifference);
-      if (r.status != kernel::Boolean3dStatus::kOk) return;
-      piece = std::move(r.mesh);
-      piece.append(keep);
-      any = true;
-    };
-    subtract(pieces.core);
-    for (Mesh& end : pieces.ends) subtract(end);
-    cut += any ? 1 : 0;
+    box_meshes.push_back(std::move(box));
   }
-  return cut;
+  std::vector<bool> cut(boxes.size(), false);
+  // Subtracts box i from a piece small enough (or already cut down) to hand to CGAL as it is.
+  const auto subtract = [&](Mesh& piece, std::size_t i) {
+    if (piece.empty() || !overlaps(piece.bounds(), boxes[i])) return;
+    kernel::Boolean3dResult r =
+        kernel::boolean3d(kernel::weld(piece), box_meshes[i], kernel::BooleanOp::kDifference);
+    if (r.status != kernel::Boolean3dStatus::kOk) return;
+    piece = std::move(r.mesh);
+    cut[i] = true;
+  };
+  for (Mesh& end : pieces.ends) {  // the mitred ends are a few faces each
+    for (std::size_t i = 0; i < boxes.size(); ++i) subtract(end, i);
+  }
+  if (!pieces.core.empty()) {
+    std::vector<std::size_t> order(boxes.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return boxes[a].min.x < boxes[b].min.x; });
+    kernel::SplitOptions split_options;
+    split_options.cap_tag = {SemanticClass::kClosureSurface, 0, 0};
+    Mesh done;
+    Mesh rest = kernel::weld(pieces.core);
+    for (std::size_t first = 0; first < order.size();) {
+      double lo = boxes[order[first]].min.x - kReach;
+      double hi = boxes[order[first]].max.x + kReach;
+      std::size_t last = first + 1;
+      while (last < order.size() && boxes[order[last]].min.x - kReach < hi) {
+        hi = std::max(hi, boxes[order[last]].max.x + kReach);
+        ++last;
+      }
+      // Cut the group's neighbourhood [lo, hi] out of the remainder: the part left of it is
+      // finished, the part right of it is the next remainder.
+      Mesh middle = std::move(rest);
+      rest = Mesh();
+      if (middle.face_count() >= kSplitFrom) {
+        const kernel::Bounds3 mb = middle.bounds();
+        if (lo > mb.min.x + kEps) {
+          kernel::SplitResult r = kernel::split(middle, {{-1, 0, 0}, -lo}, split_options);
+          if (r.ok()) {
+            done.append(r.positive);
+            middle = kernel::weld(r.negative);
+          }
+        }
+        if (hi < mb.max.x - kEps) {
+          kernel::SplitResult r = kernel::split(middle, {{1, 0, 0}, hi}, split_options);
+          if (r.ok()) {
+            rest = kernel::weld(r.positive);
+            middle = kernel::weld(r.negative);
+          }
+        }
+      }
+      for (std::size_t k = first; k < last; ++k) subtract(middle, order[k]);
+      if (rest.empty()) {
+        rest = std::move(middle);  // not split off: the next group cuts the same mesh
+      } else {
+        done.append(middle);
+      }
+      first = last;
+    }
+    done.append(rest);
+    pieces.core = std::move(done);
+  }
+  return static_cast<std::size_t>(std::count(cut.begin(), cut.end(), true));
 }
 
 }  // namespace
