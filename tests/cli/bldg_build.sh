@@ -2,20 +2,7 @@
 # End-to-end test of `insula build FILE.bldg`: every example of examples/bldg/ to every format,
 # checked by the third-party validators (glTF, CityJSON schema, assimp), the report's fields, the
 # SVG floor plans, a village built on lots, determinism, and errors that leave no output.
-set -u
-insula=$1
-root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-expect_exit() {  # code, description, command...
-  local want=$1 what=$2
-  shift 2
-  "$@" >"$tmp/out.txt" 2>"$tmp/err.txt"
-  local got=$?
-  [ "$got" -eq "$want" ] || { fail "$what: exit $got, expected $want"; cat "$tmp/err.txt"; }
-}
+source "$(dirname "$0")/lib/common.sh"
 examples=$root/examples/bldg
 
 names=()
@@ -28,11 +15,11 @@ for file in "$examples"/*.bldg; do
   for f in "$out.glb" "$out.city.json" "$out.obj" "$out.mtl" "$out.svg" "$out.png" "$out.json"; do
     [ -s "$f" ] || fail "$name: missing output $(basename "$f")"
   done
-  assimp info "$out.obj" >"$tmp/v.txt" 2>&1 || { fail "$name: assimp info obj"; tail -5 "$tmp/v.txt"; }
+  assimp_info "$name: assimp info obj" "$out.obj"
 done
 # Third-party validators, every example in one run each.
-node "$root/tools/validate_gltf.mjs" "$tmp"/*.glb >"$tmp/v.txt" 2>&1 || { fail "glTF validator"; cat "$tmp/v.txt"; }
-node "$root/tools/validate_cityjson.mjs" "$tmp"/*.city.json >"$tmp/v.txt" 2>&1 || { fail "CityJSON schema"; cat "$tmp/v.txt"; }
+validate_gltf "glTF validator" "$tmp"/*.glb
+validate_cityjson "CityJSON schema" "$tmp"/*.city.json
 # Per example: the report (every room with its fields, every room reachable, counts, timings),
 # the plan (a panel per storey, every room labelled) and the CityJSON objects (a BuildingRoom per
 # room, a BuildingStorey per storey, interior surfaces, doors and windows).
@@ -98,8 +85,8 @@ node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
          if (r.buildings.length !== 27 || r.unreachable_rooms.length !== 0 ||
              !r.rooms.every((room) => typeof room.building === "string")) process.exit(1);' \
   "$tmp/village.json" || fail "village: 27 buildings, all rooms reachable"
-node "$root/tools/validate_gltf.mjs" "$tmp/village.glb" >/dev/null 2>&1 || fail "village: glTF validator"
-node "$root/tools/validate_cityjson.mjs" "$tmp/village.city.json" >/dev/null 2>&1 || fail "village: CityJSON schema"
+validate_gltf "village: glTF validator" "$tmp/village.glb"
+validate_cityjson "village: CityJSON schema" "$tmp/village.city.json"
 
 # Restriction rules change the model: thicker outer walls give less floor area.
 printf 'outer_wall_thickness = 0.6\ncolor.RoofSurface = "#336699"\n' >"$tmp/thick.rules"
@@ -132,5 +119,4 @@ grep -q "bad.rules:1:[0-9]*: error" "$tmp/err.txt" || { fail "bad rules: file:li
 expect_exit 1 "missing input" "$insula" build "$tmp/none.bldg" -o "$tmp/n.glb"
 expect_exit 2 "unknown output format" "$insula" build "$examples/domus.bldg" -o "$tmp/x.xyz"
 
-[ "$failures" -eq 0 ] && echo "bldg_build: all passed"
-exit $((failures > 0))
+finish bldg_build

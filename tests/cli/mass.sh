@@ -1,20 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end test of `insula mass`: outputs on the bundled example, the report, third-party
 # validators, exit codes, determinism across thread counts, and no partial output on failure.
-set -u
-insula=$1
-root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-expect_exit() {  # code, description, command...
-  local want=$1 what=$2
-  shift 2
-  "$@" >"$tmp/out.txt" 2>"$tmp/err.txt"
-  local got=$?
-  [ "$got" -eq "$want" ] || { fail "$what: exit $got, expected $want"; cat "$tmp/err.txt"; }
-}
+source "$(dirname "$0")/lib/common.sh"
 
 example=$root/examples/town.geojson
 expect_exit 0 "mass on the example" "$insula" mass "$example" -o "$tmp/t.glb" -o "$tmp/t.obj" \
@@ -33,10 +20,10 @@ node -e '
   if (!ok) { console.log(JSON.stringify(r)); process.exit(1); }' "$tmp/r.json" || fail "report content"
 
 # Third-party validators.
-node "$root/tools/validate_gltf.mjs" "$tmp/t.glb" >"$tmp/v.txt" 2>&1 || { fail "glTF validator"; cat "$tmp/v.txt"; }
-node "$root/tools/validate_cityjson.mjs" "$tmp/t.city.json" >"$tmp/v.txt" 2>&1 || { fail "CityJSON schema"; cat "$tmp/v.txt"; }
-assimp info "$tmp/t.obj" >"$tmp/v.txt" 2>&1 || { fail "assimp info obj"; tail -5 "$tmp/v.txt"; }
-assimp info "$tmp/t.glb" >"$tmp/v.txt" 2>&1 || { fail "assimp info glb"; tail -5 "$tmp/v.txt"; }
+validate_gltf "glTF validator" "$tmp/t.glb"
+validate_cityjson "CityJSON schema" "$tmp/t.city.json"
+assimp_info "assimp info obj" "$tmp/t.obj"
+assimp_info "assimp info glb" "$tmp/t.glb"
 
 # Every roof type gives six watertight buildings.
 for roof in flat shed gable hip pyramid mansard; do
@@ -47,7 +34,7 @@ for roof in flat shed gable hip pyramid mansard; do
     "$tmp/$roof.json" || fail "roof $roof: not all buildings watertight"
 done
 expect_exit 0 "overhang" "$insula" mass "$example" --overhang 0.6 -o "$tmp/oh.city.json" --report "$tmp/oh.json" --quiet
-node "$root/tools/validate_cityjson.mjs" "$tmp/oh.city.json" >/dev/null 2>&1 || fail "CityJSON with overhang"
+validate_cityjson "CityJSON with overhang" "$tmp/oh.city.json"
 
 # Picture options: the PNG has the asked size; a cutaway view differs from the closed one.
 expect_exit 0 "image size" "$insula" mass "$example" -o "$tmp/small.png" --image-size 320x200 --quiet
@@ -139,5 +126,4 @@ for bad in "$root"/tests/data/bad/*.geojson; do
   esac
 done
 
-[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
-echo "all mass checks passed"
+finish mass
