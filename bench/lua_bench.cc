@@ -58,9 +58,11 @@ struct Built {
   shape::Scene scene;
 };
 
-Built build(const base::Source& source, const Assets& assets) {
+Built build(const base::Source& source, const Assets& assets,
+            std::vector<std::pair<std::string, shape::Value>> params = {}) {
   RunOptions options;
   options.assets = &assets;
+  options.params = std::move(params);
   Runtime runtime(options);
   if (!runtime.run(source).empty()) return {};
   Built out;
@@ -109,6 +111,26 @@ void BM_LuaApartmentGlb(benchmark::State& state) {
   state.counters["MB"] = static_cast<double>(bytes) / 1e6;
 }
 BENCHMARK(BM_LuaApartmentGlb)->Unit(benchmark::kMillisecond);
+
+// The row house scaled to 40 houses (--set houses=40): 4,884 components, one 249 m facade per side
+// with ~160 openings each. Measures that the opening stage stays linear in the number of walls
+// and openings (luafix, docs/perf/lua.md: 18.8 s before, one corefinement per opening on the
+// whole, growing facade).
+void BM_LuaRowHouses(benchmark::State& state) {
+  const auto path = kExamples / "row_house.lua";
+  const base::Source source(path.string(), read(path));
+  const Assets assets;
+  const double houses = static_cast<double>(state.range(0));
+  Built built;
+  for (auto _ : state) {
+    built = build(source, assets, {{"houses", shape::Value{houses}}});
+    benchmark::DoNotOptimize(built.triangles);
+  }
+  if (built.triangles == 0) state.SkipWithError("the program failed");
+  state.counters["components"] = static_cast<double>(built.components);
+  state.counters["triangles"] = static_cast<double>(built.triangles);
+}
+BENCHMARK(BM_LuaRowHouses)->Arg(4)->Arg(40)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace insula::lua
