@@ -1,13 +1,7 @@
 #!/usr/bin/env bash
 # `insula check FILE.bldg`: the rules' moderator (seed 000, §3.3) from the command line: summaries
 # of good grammars, the exact first diagnostic and exit 1 for bad ones, nothing on stdout then.
-set -u
-insula=$1
-root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib/common.sh"
 
 out=$("$insula" check "$root/tests/data/bldg/casa.bldg" 2>&1)
 [ $? -eq 0 ] && [ "$out" = "$root/tests/data/bldg/casa.bldg: ok: building 'Casa': 2 parts (1 disposable), 2 floors, 4 rooms, 3 transitions" ] ||
@@ -58,5 +52,4 @@ printf '\xff\xfe\x00garbage' >"$tmp/binary.bldg"
 timeout 20 "$insula" check "$tmp/binary.bldg" >/dev/null 2>&1
 [ $? -eq 1 ] || fail "binary input exits 1"
 
-[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
-echo "all bldg check checks passed"
+finish bldg_check

@@ -1,12 +1,6 @@
 #!/usr/bin/env bash
 # `insula check`: parse-only verification of footprints and grammars, exit codes and messages.
-set -u
-insula=$1
-root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib/common.sh"
 
 out=$("$insula" check "$root/examples/town.geojson" 2>&1)
 [ $? -eq 0 ] && [ "$out" = "$root/examples/town.geojson: ok: 6 footprints" ] || fail "check town.geojson: $out"
@@ -30,5 +24,4 @@ done
 "$insula" check "$root/README.md" 2>/dev/null
 [ $? -eq 2 ] || fail "unknown input type is a usage error"
 
-[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
-echo "all check checks passed"
+finish check
