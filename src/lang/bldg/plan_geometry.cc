@@ -234,8 +234,13 @@ std::vector<EdgePiece> boundary_pieces(const Polygon& cell, const kernel::Bounds
 }
 
 std::vector<EdgePiece> shared_segments(const Polygon& cell, const Polygon& other) {
+  // Polygons whose boxes do not touch share nothing (boundary_pieces would only list every edge
+  // of `cell` as open): most of the pairs callers ask about.
+  const kernel::Bounds2 cell_box = kernel::bounds(cell);
+  const std::vector<kernel::Bounds2> other_box{kernel::bounds(other)};
+  if (!bounds_touch(cell_box, other_box[0], kLineTolerance)) return {};
   std::vector<EdgePiece> out;
-  for (const EdgePiece& piece : boundary_pieces(cell, {&other}))
+  for (const EdgePiece& piece : boundary_pieces(cell, cell_box, {&other}, other_box))
     if (piece.other == 0) out.push_back(piece);
   return out;
 }
