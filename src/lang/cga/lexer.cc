@@ -2,7 +2,7 @@
 
 #include <string_view>
 
-#include "base/scanner.h"
+#include "base/token_lexer.h"
 
 namespace insula::lang::cga {
 
@@ -23,11 +23,7 @@ constexpr Keyword kKeywords[] = {
 };
 
 // Operators, longest spelling first so `-->` wins over `->` and `-`.
-struct Operator {
-  std::string_view spelling;
-  Tok kind;
-};
-constexpr Operator kOperators[] = {
+constexpr base::Spelling<Tok> kOperators[] = {
     {"-->", Tok::kLongArrow}, {"->", Tok::kArrow},   {"~>", Tok::kTildeArrow},
     {"==", Tok::kEq},         {"!=", Tok::kNe},      {"<>", Tok::kNe},
     {"<=", Tok::kLe},         {">=", Tok::kGe},      {"&&", Tok::kAnd},
@@ -51,58 +47,29 @@ std::string quote(std::string_view text) {
 
 constexpr std::string_view kEpsilonUtf8 = "\xCE\xB5";  // U+03B5 GREEK SMALL LETTER EPSILON
 
-class Lexer {
+class Lexer : public base::TokenLexer<Lexer, LexOutput, Tok> {
  public:
-  explicit Lexer(const base::Source& source) : scan_(source, kCodes) {}
-
-  LexOutput run() {
-    while (true) {
-      scan_.skip_trivia();
-      if (scan_.at_end()) break;
-      lex_token();
-    }
-    push(Tok::kEnd, scan_.pos(), scan_.pos(), "");
-    out_.diagnostics = scan_.take_diagnostics();
-    return std::move(out_);
-  }
-
- private:
-  static constexpr base::ScanCodes kCodes = {"CGA001", "CGA002", "CGA003", "CGA004", "CGA005"};
-
-  Token& push(Tok kind, std::size_t begin, std::size_t end, std::string text) {
-    Token token;
-    token.kind = kind;
-    token.range = Range{static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end)};
-    token.text = std::move(text);
-    token.line_start = scan_.take_line_start();
-    out_.tokens.push_back(std::move(token));
-    return out_.tokens.back();
-  }
+  explicit Lexer(const base::Source& source) : TokenLexer(source, kCodes) {}
 
   void lex_token() {
     const std::size_t begin = scan_.pos();
     const char c = scan_.peek();
-    if (base::is_ident_start(c)) return lex_identifier();
-    if (base::is_digit(c)) return lex_number();
-    if (c == '"') {
-      std::string value = scan_.scan_string();
-      push(Tok::kString, begin, scan_.pos(), std::move(value));
-      return;
-    }
-    if (scan_.starts_with(kEpsilonUtf8)) {
+    if (base::is_ident_start(c)) {
+      lex_identifier();
+    } else if (base::is_digit(c)) {
+      lex_number();
+    } else if (c == '"') {
+      push_string(Tok::kString);
+    } else if (scan_.starts_with(kEpsilonUtf8)) {
       push(Tok::kEpsilon, begin, begin + kEpsilonUtf8.size(), "ε");
       scan_.advance(kEpsilonUtf8.size());
-      return;
+    } else if (!push_operator(kOperators)) {
+      scan_.bad_character();
     }
-    for (const Operator& op : kOperators) {
-      if (scan_.starts_with(op.spelling)) {
-        push(op.kind, begin, begin + op.spelling.size(), std::string(op.spelling));
-        scan_.advance(op.spelling.size());
-        return;
-      }
-    }
-    scan_.bad_character();
   }
+
+ private:
+  static constexpr base::ScanCodes kCodes = {"CGA001", "CGA002", "CGA003", "CGA004", "CGA005"};
 
   void lex_identifier() {
     const std::size_t begin = scan_.pos();
@@ -124,15 +91,8 @@ class Lexer {
       relative = true;
       scan_.advance(1);
     }
-    const double value = scan_.finish_number(begin, digits_end);
-    Token& token =
-        push(Tok::kNumber, begin, scan_.pos(), std::string(scan_.slice(begin, scan_.pos())));
-    token.number = value;
-    token.relative = relative;
+    push_number(Tok::kNumber, begin, digits_end).relative = relative;
   }
-
-  base::Scanner scan_;
-  LexOutput out_;
 };
 
 }  // namespace
@@ -160,8 +120,8 @@ std::string token_name(Tok kind) {
     default:
       break;
   }
-  for (const Operator& op : kOperators) {
-    if (op.kind == kind) return quote(op.spelling);
+  for (const base::Spelling<Tok>& op : kOperators) {
+    if (op.kind == kind) return quote(op.text);
   }
   for (const Keyword& keyword : kKeywords) {
     if (keyword.kind == kind) return quote(keyword.word);
