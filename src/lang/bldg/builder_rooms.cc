@@ -40,9 +40,11 @@ bool convex(const kernel::Ring& ring) {
 }
 
 // Sutherland-Hodgman: the part of a convex ring where dot(p - origin, normal) >= d.
-kernel::Ring clip(const kernel::Ring& ring, Vec2 origin, Vec2 normal, double d) {
-  kernel::Ring out;
+// Written into `out` (cleared; its storage is reused from cut to cut).
+void clip(const kernel::Ring& ring, Vec2 origin, Vec2 normal, double d, kernel::Ring& out) {
+  out.clear();
   const std::size_t n = ring.size();
+  out.reserve(n + 1);  // a convex ring cut by a line gains at most one vertex
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 p = ring[i];
     const Vec2 q = ring[(i + 1) % n];
@@ -51,7 +53,6 @@ kernel::Ring clip(const kernel::Ring& ring, Vec2 origin, Vec2 normal, double d) 
     if (fp >= 0) out.push_back(p);
     if ((fp >= 0) != (fq >= 0)) out.push_back(p + (q - p) * (fp / (fp - fq)));
   }
-  return out;
 }
 
 // The inner face of a wall piece seen from `room`: points p of the room with
@@ -76,6 +77,7 @@ std::optional<kernel::Polygon> convex_clear_floor(const kernel::Polygon& cell, i
                                                   const PlanStorey& storey) {
   if (!cell.holes.empty() || !convex(cell.outer)) return std::nullopt;
   std::vector<Face> faces;
+  faces.reserve(walls.room_walls[static_cast<std::size_t>(room)].size());
   for (int i : walls.room_walls[static_cast<std::size_t>(room)]) {
     const WallGeometry& g = walls.walls[static_cast<std::size_t>(i)];
     if (g.footprint.outer.empty()) continue;
@@ -97,8 +99,10 @@ std::optional<kernel::Polygon> convex_clear_floor(const kernel::Polygon& cell, i
     if (g.reaches_past && boxes_overlap(box, g.box)) return std::nullopt;
   }
   kernel::Polygon clear{cell.outer, {}};
+  kernel::Ring scratch;
   for (const Face& f : faces) {
-    clear.outer = clip(clear.outer, f.origin, f.normal, f.d);
+    clip(clear.outer, f.origin, f.normal, f.d, scratch);
+    std::swap(clear.outer, scratch);
     if (clear.outer.size() < 3) return kernel::Polygon{};
   }
   return clear;
