@@ -89,4 +89,49 @@ class TokenLexer {
   Output out_;
 };
 
+// The name of a token kind in messages: "end of file", "identifier", "number" or "string" for
+// the kinds every front-end has, `'->'` for an operator of `table`; empty for any other kind.
+template <class Tok, std::size_t N>
+std::string token_kind_name(Tok kind, const Spelling<Tok> (&table)[N]) {
+  switch (kind) {
+    case Tok::kEnd:
+      return "end of file";
+    case Tok::kIdent:
+      return "identifier";
+    case Tok::kNumber:
+      return "number";
+    case Tok::kString:
+      return "string";
+    default:
+      break;
+  }
+  for (const Spelling<Tok>& op : table) {
+    if (op.kind == kind) {
+      std::string out(1, '\'');  // appended: GCC 12 reports a false -Wrestrict on "'" + string
+      out.append(op.text);
+      out += '\'';
+      return out;
+    }
+  }
+  return {};
+}
+
+// The token as shown in "found ..." messages: its spelling, or "end of file".
+template <class Token>
+std::string describe_token(const Token& token) {
+  using Tok = decltype(token.kind);
+  switch (token.kind) {
+    case Tok::kEnd:
+      return "end of file";
+    case Tok::kString:
+      return "string \"" + token.text + "\"";
+    case Tok::kIdent:
+      return "identifier '" + token.text + "'";
+    case Tok::kNumber:
+      return "number " + token.text;
+    default:
+      return "'" + token.text + "'";
+  }
+}
+
 }  // namespace insula::base

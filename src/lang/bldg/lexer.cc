@@ -55,42 +55,12 @@ LexOutput lex(const base::Source& source) {
 }
 
 std::string token_name(Tok kind) {
-  switch (kind) {
-    case Tok::kEnd:
-      return "end of file";
-    case Tok::kIdent:
-      return "identifier";
-    case Tok::kNumber:
-      return "number";
-    case Tok::kString:
-      return "string";
-    default:
-      break;
-  }
-  for (const base::Spelling<Tok>& op : kOperators) {
-    if (op.kind == kind) {
-      std::string out(1, '\'');
-      out.append(op.text);
-      out += '\'';
-      return out;
-    }
-  }
-  return "token";
+  std::string name = base::token_kind_name(kind, kOperators);
+  return name.empty() ? "token" : name;
 }
 
 std::string describe(const Token& token) {
-  switch (token.kind) {
-    case Tok::kEnd:
-      return "end of file";
-    case Tok::kString:
-      return "string \"" + token.text + "\"";
-    case Tok::kIdent:
-      return "identifier '" + token.text + "'";
-    case Tok::kNumber:
-      return "number " + token.text;
-    default:
-      return "'" + token.text + "'";
-  }
+  return base::describe_token(token);
 }
 
 }  // namespace insula::lang::bldg

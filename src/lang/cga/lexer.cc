@@ -103,14 +103,6 @@ LexOutput lex(const base::Source& source) {
 
 std::string token_name(Tok kind) {
   switch (kind) {
-    case Tok::kEnd:
-      return "end of file";
-    case Tok::kIdent:
-      return "identifier";
-    case Tok::kNumber:
-      return "number";
-    case Tok::kString:
-      return "string";
     case Tok::kEpsilon:
       return "'ε'";
     case Tok::kPriority:
@@ -120,9 +112,7 @@ std::string token_name(Tok kind) {
     default:
       break;
   }
-  for (const base::Spelling<Tok>& op : kOperators) {
-    if (op.kind == kind) return quote(op.text);
-  }
+  if (std::string name = base::token_kind_name(kind, kOperators); !name.empty()) return name;
   for (const Keyword& keyword : kKeywords) {
     if (keyword.kind == kind) return quote(keyword.word);
   }
@@ -130,18 +120,7 @@ std::string token_name(Tok kind) {
 }
 
 std::string describe(const Token& token) {
-  switch (token.kind) {
-    case Tok::kEnd:
-      return "end of file";
-    case Tok::kString:
-      return "string \"" + token.text + "\"";
-    case Tok::kIdent:
-      return "identifier '" + token.text + "'";
-    case Tok::kNumber:
-      return "number " + token.text;
-    default:
-      return "'" + token.text + "'";
-  }
+  return base::describe_token(token);
 }
 
 }  // namespace insula::lang::cga
