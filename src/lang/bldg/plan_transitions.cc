@@ -1,6 +1,8 @@
 #include "lang/bldg/plan_transitions.h"
 
 #include <algorithm>
+#include <string_view>
+#include <unordered_map>
 
 #include "lang/bldg/plan_geometry.h"
 
@@ -222,10 +224,21 @@ std::vector<int> rooms_named(const Work& work, const std::string& symbol) {
 
 std::vector<DoorRequest> collect_doors(Work& work) {
   std::vector<DoorRequest> out;
+  // The rooms of every symbol, listed once (rooms_named per door scanned every room per door).
+  std::unordered_map<std::string_view, std::vector<int>> named;
+  for (std::size_t i = 0; i < work.rooms.size(); ++i) {
+    const Division* d = work.rooms[i].division;
+    if (d != nullptr) named[d->symbol].push_back(static_cast<int>(i));
+  }
+  const std::vector<int> none;
+  const auto rooms_of = [&](const std::string& symbol) -> const std::vector<int>& {
+    const auto it = named.find(symbol);
+    return it == named.end() ? none : it->second;
+  };
   for (const Transition& t : work.building->transitions) {
     if (t.kind != TransitionKind::kDoor) continue;
-    const std::vector<int> from = rooms_named(work, t.from);
-    const std::vector<int> to = rooms_named(work, t.to);
+    const std::vector<int>& from = rooms_of(t.from);
+    const std::vector<int>& to = rooms_of(t.to);
     if (from.empty() || to.empty()) {
       warn(work, "door '" + t.symbol + "' names a room that does not exist; ignored", t.where);
       continue;
