@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 
 #include "shape/component_ops.h"
 
@@ -14,6 +15,22 @@ ShapeId box_at(ShapeTree& tree, Vec3 origin, Vec3 size) {
   scope.origin = origin;
   scope.size = size;
   return tree.add_root(scope, box_mesh(size, mass_box_tags()));
+}
+
+// A box whose sides carry named face ids (§3.1.1), as a program names them; box_mesh's side order
+// is -x, +x, -y, +y, -z, +z. mass_box_tags itself leaves the face ids 0.
+std::array<kernel::FaceTag, 6> named_tags(ShapeTree& tree) {
+  auto tags = mass_box_tags();
+  const char* names[6] = {"left", "right", "bottom", "top", "back", "front"};
+  for (std::size_t i = 0; i < 6; ++i) tags[i].face_id = tree.face_id(names[i]);
+  return tags;
+}
+
+ShapeId named_box_at(ShapeTree& tree, Vec3 origin, Vec3 size) {
+  Scope scope;
+  scope.origin = origin;
+  scope.size = size;
+  return tree.add_root(scope, box_mesh(size, named_tags(tree)));
 }
 
 ShapeId rect_at(ShapeTree& tree, Vec3 origin, double w, double h) {
@@ -33,7 +50,7 @@ double world_volume(const ShapeTree& tree, ShapeId id) {
 TEST(ComponentBoolean, SubtractShaftFromApartmentIsAChildWithTheHole) {
   // Fig. 2/3: an elevator shaft (taller, spanning storeys) cut from a 5 x 2.5 x 4 apartment.
   ShapeTree tree;
-  const ShapeId apt = box_at(tree, {0, 0, 0}, {5, 2.5, 4});
+  const ShapeId apt = named_box_at(tree, {0, 0, 0}, {5, 2.5, 4});
   const ShapeId shaft = box_at(tree, {4, -1, 2}, {2, 6, 1});
   const std::vector<ShapeId> cutters{shaft};
   const OpResult r = subtract_components(tree, apt, cutters);
@@ -45,10 +62,10 @@ TEST(ComponentBoolean, SubtractShaftFromApartmentIsAChildWithTheHole) {
   EXPECT_TRUE(kernel::is_watertight(*tree[room].mesh));
   // The shaft notches the +x side: an 8-sided section, 8 sides + floor + ceiling.
   EXPECT_EQ(tree[room].mesh->face_count(), 10U);
-  // Faces keep the ids of the faces they come from: the +x wall (id 3) survives in part.
+  // Faces keep the ids of the faces they come from: the +x wall ("right") survives in part.
   bool has_right = false;
   for (std::size_t f = 0; f < tree[room].mesh->face_count(); ++f) {
-    has_right = has_right || tree[room].mesh->tag(f).face_id == 3;
+    has_right = has_right || tree.face_name(tree[room].mesh->tag(f).face_id) == "right";
   }
   EXPECT_TRUE(has_right);
   EXPECT_NEAR(tree[room].scope.size.x, 5, 1e-12);
@@ -83,14 +100,14 @@ TEST(ComponentBoolean, UnionAndIntersectionAreRoots) {
 
 TEST(ComponentBoolean, UnionKeepsCoplanarFacesWithDifferentIdsApart) {
   // §3.1.1: a union only merges faces sharing the same id. A and B stand side by side; their
-  // fronts (+z) carry ids 5 and 9, their backs (-z) the same id 4.
+  // fronts (+z) carry the ids "front" and "shop", their backs (-z) the same id "back".
   ShapeTree tree;
-  const ShapeId a = box_at(tree, {0, 0, 0}, {4, 3, 4});
+  const ShapeId a = named_box_at(tree, {0, 0, 0}, {4, 3, 4});
   Scope scope;
   scope.origin = {4, 0, 0};
   scope.size = {4, 3, 4};
-  auto tags = mass_box_tags();
-  tags[5].face_id = 9;
+  auto tags = named_tags(tree);
+  tags[5].face_id = tree.face_id("shop");
   const ShapeId b = tree.add_root(scope, box_mesh(scope.size, tags));
   const std::vector<ShapeId> ab{a, b};
   const OpResult u = unite_components(tree, ab);
@@ -104,7 +121,9 @@ TEST(ComponentBoolean, UnionKeepsCoplanarFacesWithDifferentIdsApart) {
     if (n.z < -0.5) ++back;
   }
   std::sort(front.begin(), front.end());
-  EXPECT_EQ(front, (std::vector<std::uint32_t>{5, 9}));
+  std::vector<std::uint32_t> expected{tree.face_id("front"), tree.face_id("shop")};
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(front, expected);
   EXPECT_EQ(back, 1);  // same id: merged into one face
   EXPECT_NEAR(world_volume(tree, u.children[0]), 96, 1e-9);
   EXPECT_TRUE(kernel::is_watertight(m));
