@@ -7,7 +7,7 @@
 // 125 ms with 40-45 MB of RAM (i7 M620); the target is 50 times its speed (10.3 M vertices/s per
 // core) and under 20 MB peak.
 // Peak memory needs a fresh process: `bldg_bench --peak-memory` generates the heaviest of the 25
-// buildings once and prints the process's VmHWM (/proc/self/status). docs/perf/bldg.md.
+// buildings once and prints the process's VmHWM (/proc/self/status). docs/PERFORMANCE.md.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>

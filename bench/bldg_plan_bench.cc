@@ -2,7 +2,7 @@
 // building parts with [1 + 2g, 5 + 2g] rooms per part (3-7 ... 11-15), five stochastic buildings
 // per group (25 generations), L/U/T/H/convex in turn. Run:
 //   build/bench/bldg_plan_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-// Figures in docs/perf/bldgplan.md. Each iteration plans all five buildings of the group.
+// Figures in docs/PERFORMANCE.md. Each iteration plans all five buildings of the group.
 #include <benchmark/benchmark.h>
 
 #include <vector>

@@ -1,4 +1,4 @@
-// CGA derivation throughput and memory (issue 4, "Performance"; docs/perf/cga-derive.md).
+// CGA derivation throughput and memory (issue 4, "Performance"; docs/PERFORMANCE.md).
 // Run: build/bench/cga_derive_bench --benchmark_repetitions=5
 //      --benchmark_report_aggregates_only=true
 // One thread. A facade grammar (comp, floors, tiles, window columns) over 200 x 200 m lots of 300

@@ -5,7 +5,7 @@
 // 2.2 GHz); the target here is the apartment building, >= 500K triangles with every door and
 // window cut, in <= 1 s on one core. Run:
 //   build/bench/lua_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-// Figures in docs/perf/lua.md.
+// Figures in docs/PERFORMANCE.md.
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
@@ -114,7 +114,7 @@ BENCHMARK(BM_LuaApartmentGlb)->Unit(benchmark::kMillisecond);
 
 // The row house scaled to 40 houses (--set houses=40): 4,884 components, one 249 m facade per side
 // with ~160 openings each. Measures that the opening stage stays linear in the number of walls
-// and openings (luafix, docs/perf/lua.md: 18.8 s before, one corefinement per opening on the
+// and openings (docs/PERFORMANCE.md: 18.8 s before, one corefinement per opening on the
 // whole, growing facade).
 void BM_LuaRowHouses(benchmark::State& state) {
   const auto path = kExamples / "row_house.lua";

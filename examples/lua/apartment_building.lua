@@ -6,7 +6,7 @@
 -- the corridor into each living room, from the living room into the bedroom and from the bedroom
 -- into the bathroom (found by occlusion, §4.4); windows on the façade, a balcony with its door on
 -- each living room, and furniture on floor regions clear of the doors (§4.5). The largest example:
--- bench/lua_bench.cc times it (docs/perf/luageom.md).
+-- bench/lua_bench.cc times it (docs/PERFORMANCE.md).
 --
 --   insula build examples/lua/apartment_building.lua --assets examples/lua/assets -o apartments.glb
 --   insula build ... --set storeys=4 --set seed=3   (fewer storeys, another layout draw)

@@ -128,7 +128,10 @@ Mesh weld(const Mesh& mesh, double tolerance) {
   // Hash on a grid of cell `tolerance`; look up the 27 neighbouring cells so near points merge.
   struct CellHash {
     std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
-      return static_cast<std::size_t>(c[0] * 73856093 ^ c[1] * 19349663 ^ c[2] * 83492791);
+      // Unsigned arithmetic: cell indices of far-away points would overflow a signed product.
+      const auto u = [](std::int64_t x) { return static_cast<std::uint64_t>(x); };
+      return static_cast<std::size_t>(u(c[0]) * 73856093U ^ u(c[1]) * 19349663U ^
+                                      u(c[2]) * 83492791U);
     }
   };
   const double cell = std::max(tolerance, 1e-12);

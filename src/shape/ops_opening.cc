@@ -177,7 +177,7 @@ bool overlaps(const kernel::Bounds3& a, const kernel::Bounds3& b) {
 // group is cut from the slab's not yet visited remainder after two plane splits hand CGAL only the
 // group's neighbourhood. Finished parts are never split, welded or corefined again, so a facade
 // with n openings costs O(n) corefinements of bounded size (it was O(n) on the whole, growing
-// slab: 40 row houses took 19 s, luafix in docs/perf/lua.md).
+// slab: 40 row houses took 19 s, docs/PERFORMANCE.md).
 std::size_t cut_general(Pieces& pieces, const std::vector<kernel::Bounds3>& boxes) {
   constexpr double kReach = 0.05;         // meters of slab kept around an opening for CGAL
   constexpr std::size_t kSplitFrom = 64;  // smaller meshes go to CGAL whole

@@ -8,7 +8,7 @@
 // where a flight arrives from below or leaves upwards; and footers (skirting) along its walls,
 // footer_height tall and footer_depth deep, interrupted at door gaps and stairwells. Convex cells
 // (the treemap's usual output) are cut by half-planes instead of booleans: the same polygon, about
-// twenty times faster (docs/perf/bldg.md).
+// twenty times faster (docs/PERFORMANCE.md).
 #include <algorithm>
 #include <cmath>
 #include <optional>

@@ -249,7 +249,7 @@ void Checker::choose_start() {
 // apply: warning CGA402.
 void Checker::compute_reachability() {
   // One walk over the successors (symbols per rule), hash containers: the check stays well
-  // under the parse time on large grammars (docs/perf/cgacheck.md).
+  // under the parse time on large grammars (docs/PERFORMANCE.md).
   std::unordered_map<std::string_view, std::vector<std::size_t>> by_predecessor;
   std::vector<std::vector<std::string_view>> symbols(result_.rules.size());
   std::unordered_set<std::string_view> successors;

@@ -1,6 +1,6 @@
 // A small streaming JSON writer for the model and graph exports: a grammar of a few MB becomes a
 // JSON text of a hundred MB, which a DOM (nlohmann) builds and copies at several times the cost
-// (docs/perf/cgatransform.md). Objects and arrays are indented by two spaces; `inline_object`
+// (docs/PERFORMANCE.md). Objects and arrays are indented by two spaces; `inline_object`
 // writes a small object on one line (source ranges). Strings are escaped per RFC 8259 and
 // invalid UTF-8 is replaced by U+FFFD, so any parsed grammar gives valid JSON.
 #pragma once

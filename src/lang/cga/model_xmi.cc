@@ -31,7 +31,7 @@ std::string_view operation_class(OpKind kind) {
 }
 
 // Streams XML with two-space indentation: a grammar of a few MB gives tens of MB of XMI, which a
-// DOM would hold several times over (docs/perf/cgatransform.md). Attributes go right after
+// DOM would hold several times over (docs/PERFORMANCE.md). Attributes go right after
 // open(); children follow; close() ends the innermost element.
 class XmlOut {
  public:
