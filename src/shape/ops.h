@@ -109,7 +109,8 @@ OpResult insert(ShapeTree& tree, ShapeId id, const kernel::Mesh& asset);
 // -x, +x, -y, +y, -z, +z.
 std::shared_ptr<const kernel::Mesh> box_mesh(kernel::Vec3 size,
                                              std::span<const kernel::FaceTag, 6> tags);
-// The default tags of a mass box: walls, ground at -y, roof at +y.
+// The default tags of a mass box: walls, ground at -y, roof at +y; face id 0 (no name), so they
+// never collide with the tree's named face ids (ShapeTree::face_id).
 std::array<kernel::FaceTag, 6> mass_box_tags();
 // Whether `mesh` is exactly the box [0, size] (6 axis-aligned rectangles), with the tag of each
 // side in the order of box_mesh.
