@@ -59,8 +59,9 @@ int run_build(const BuildOptions& options) {
   return kExitUsage;
 }
 
-int check_build_outputs(const BuildOptions& options) {
-  for (const std::string& out : options.outputs) {
+int check_outputs(const std::vector<std::string>& outputs, const std::string& report,
+                  const io::OutputOptions& output) {
+  for (const std::string& out : outputs) {
     if (!io::is_supported_output(out)) {
       std::fprintf(stderr,
                    "insula: %s: unknown output format (use .obj .glb .gltf .city.json .svg .png)\n",
@@ -68,14 +69,14 @@ int check_build_outputs(const BuildOptions& options) {
       return kExitUsage;
     }
     const std::string error =
-        io::output_format_name(out) == "png" ? io::validate(options.output.render) : "";
+        io::output_format_name(out) == "png" ? io::validate(output.render) : "";
     if (!error.empty()) {
       std::fprintf(stderr, "insula: %s: %s\n", out.c_str(), error.c_str());
       return kExitUsage;
     }
   }
-  std::vector<std::string> targets = options.outputs;
-  if (!options.report.empty()) targets.push_back(options.report);
+  std::vector<std::string> targets = outputs;
+  if (!report.empty()) targets.push_back(report);
   if (const std::string error = io::check_output_directories(targets); !error.empty()) {
     std::fprintf(stderr, "insula: error: %s\n", error.c_str());
     return kExitInput;

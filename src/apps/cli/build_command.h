@@ -42,9 +42,13 @@ void add_build_command(CLI::App& app, BuildOptions& options);
 int run_build(const BuildOptions& options);
 
 // Checks before any work: every output has a known format, picture options are valid and every
-// output's directory (and the report's) exists. Returns kExitDone or the exit code to return
-// (the reason already printed).
-int check_build_outputs(const BuildOptions& options);
+// output's directory (and the report's, when given) exists. Returns kExitDone or the exit code to
+// return (the reason already printed). Shared by every verb that writes scenes.
+int check_outputs(const std::vector<std::string>& outputs, const std::string& report,
+                  const io::OutputOptions& output);
+inline int check_build_outputs(const BuildOptions& options) {
+  return check_outputs(options.outputs, options.report, options.output);
+}
 
 // The --set values, parsed: "name=value" with value a number, true/false or else a string.
 // On a malformed entry returns false and sets `error` (e.g. "--set 'x': expected name=value").

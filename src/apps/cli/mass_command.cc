@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "apps/cli/build_command.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/mass_report.h"
@@ -214,27 +215,9 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
 int run_mass(const MassOptions& options) {
   Stopwatch total;
   MassReport report;
-  for (const std::string& out : options.outputs) {
-    if (!io::is_supported_output(out)) {
-      std::fprintf(stderr,
-                   "insula: %s: unknown output format (use .obj .glb .gltf .city.json .svg .png)\n",
-                   out.c_str());
-      return kExitUsage;
-    }
-  }
-  for (const std::string& out : options.outputs) {
-    const std::string error =
-        io::output_format_name(out) == "png" ? io::validate(options.output.render) : "";
-    if (!error.empty()) {
-      std::fprintf(stderr, "insula: %s: %s\n", out.c_str(), error.c_str());
-      return kExitUsage;
-    }
-  }
-  std::vector<std::string> targets = options.outputs;
-  if (!options.report.empty()) targets.push_back(options.report);
-  if (const std::string error = io::check_output_directories(targets); !error.empty()) {
-    std::fprintf(stderr, "insula: error: %s\n", error.c_str());
-    return kExitInput;
+  if (const int code = check_outputs(options.outputs, options.report, options.output);
+      code != kExitDone) {
+    return code;
   }
   const int threads = options.threads > 0
                           ? options.threads
