@@ -280,8 +280,11 @@ bool ordered(const T& a, const T& b, Compare op) {
 
 }  // namespace
 
-bool AttributeTest::matches(const ShapeTree& tree, ShapeId id) const {
-  const Value* v = tree.attribute(id, name);
+bool compare(double a, Compare op, double b) {
+  return ordered(a, b, op);
+}
+
+bool value_matches(const Value* v, Compare op, const Value& value) {
   if (v == nullptr || v->index() != value.index()) return op == Compare::kNotEqual;
   if (const auto* d = std::get_if<double>(v)) return ordered(*d, std::get<double>(value), op);
   if (const auto* s = std::get_if<std::string>(v)) {
@@ -289,6 +292,10 @@ bool AttributeTest::matches(const ShapeTree& tree, ShapeId id) const {
   }
   if (op != Compare::kEqual && op != Compare::kNotEqual) return false;
   return (*v == value) == (op == Compare::kEqual);
+}
+
+bool AttributeTest::matches(const ShapeTree& tree, ShapeId id) const {
+  return value_matches(tree.attribute(id, name), op, value);
 }
 
 base::Result<AttributeTest> AttributeTest::parse(std::string_view text,

@@ -46,6 +46,14 @@ class LabelExpr {
 
 enum class Compare : std::uint8_t { kEqual, kNotEqual, kLess, kLessEqual, kGreater, kGreaterEqual };
 
+// `a op b` on numbers.
+bool compare(double a, Compare op, double b);
+// Whether an attribute value (null when the shape has none) satisfies `op value`: numbers compare
+// numerically, strings lexicographically, booleans only with == and !=; a missing value or a type
+// mismatch is false, except for != which is then true. The rule of AttributeTest and of every
+// front-end's attribute queries.
+bool value_matches(const Value* v, Compare op, const Value& value);
+
 // `name op value` on the attribute a shape sees (inherited). Numbers compare numerically, strings
 // lexicographically, booleans only with == and !=; a missing attribute or a type mismatch is false
 // (except != which is then true).

@@ -126,25 +126,6 @@ bool parse_number(std::string_view text, double& out) {
   return ec == std::errc() && ptr == last && std::isfinite(out);
 }
 
-bool compare_numbers(double a, shape::Compare op, double b) {
-  using shape::Compare;
-  switch (op) {
-    case Compare::kEqual:
-      return a == b;
-    case Compare::kNotEqual:
-      return a != b;
-    case Compare::kLess:
-      return a < b;
-    case Compare::kLessEqual:
-      return a <= b;
-    case Compare::kGreater:
-      return a > b;
-    case Compare::kGreaterEqual:
-      return a >= b;
-  }
-  return false;
-}
-
 bool is_selector(std::string_view word, shape::FaceSelector& out) {
   using shape::FaceSelector;
   static constexpr std::pair<std::string_view, FaceSelector> kSelectors[] = {
@@ -447,16 +428,8 @@ bool QueryExpr::Evaluator::eval(ShapeId id, std::uint32_t index) {
       return tree_.children(id).empty();
     case Kind::kFlat:
       return tree_[id].is_flat();
-    case Kind::kAttribute: {
-      const shape::Value* v = tree_.attribute(id, node.text);
-      if (v == nullptr || v->index() != node.value.index()) {
-        return node.compare == shape::Compare::kNotEqual;
-      }
-      if (const auto* d = std::get_if<double>(v)) {
-        return compare_numbers(*d, node.compare, std::get<double>(node.value));
-      }
-      return shape::AttributeTest{node.text, node.compare, node.value}.matches(tree_, id);
-    }
+    case Kind::kAttribute:
+      return shape::value_matches(tree_.attribute(id, node.text), node.compare, node.value);
     case Kind::kOcclusion:
     case Kind::kNear:
       break;
@@ -484,7 +457,7 @@ bool QueryExpr::Evaluator::eval(ShapeId id, std::uint32_t index) {
   if (node.kind == Kind::kNear) {
     return !shape::within_distance(tree_, id, node.number, close).empty();
   }
-  return compare_numbers(shape::occlusion(tree_, id, close), node.compare, node.number);
+  return shape::compare(shape::occlusion(tree_, id, close), node.compare, node.number);
 }
 
 bool QueryExpr::matches_face(kernel::Vec3 normal, std::string_view face_name) const {
