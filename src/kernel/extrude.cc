@@ -223,6 +223,54 @@ ExtrudeResult extrude_between(const Polygon& footprint, double z_bottom, double 
   return extrude(footprint, z_bottom, z_top - z_bottom, options);
 }
 
+ExtrudeStatus extrude_between_append(Mesh& mesh, const Polygon& footprint, double z_bottom,
+                                     double z_top, const ExtrudeOptions& options) {
+  if (!std::isfinite(z_bottom) || !std::isfinite(z_top)) return ExtrudeStatus::kNonFinite;
+  const double height = z_top - z_bottom;
+  if (!std::isfinite(height) || !(height > 0)) return ExtrudeStatus::kInvalidHeight;
+  if (!footprint.holes.empty()) {
+    // A cap with holes is triangulated, which may fail after the bottom cap went in: build apart
+    // and append so that a failure leaves `mesh` untouched.
+    ExtrudeResult prism = extrude(footprint, z_bottom, height, options);
+    if (prism.ok()) mesh.append(prism.mesh);
+    return prism.status;
+  }
+  std::vector<PreparedRing> rings;
+  const ExtrudeStatus status = prepare(footprint, std::max(options.tolerance, 0.0), rings);
+  if (status != ExtrudeStatus::kOk) return status;
+  // One ring: the same vertices, caps and sides as extrude(), shifted by the vertices already in
+  // `mesh`. An n-gon cap cannot fail, so nothing needs undoing.
+  const PreparedRing& ring = rings.front();
+  const auto total = static_cast<std::uint32_t>(ring.points.size());
+  const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
+  for (double z : {z_bottom, z_bottom + height}) {
+    for (Vec2 p : ring.points) mesh.add_vertex(lift(p, z));
+  }
+  std::vector<std::uint32_t> loop(total);
+  // normalized_region() reverses a clockwise outer ring; the bottom cap runs reversed again.
+  for (std::uint32_t j = 0; j < total; ++j) {
+    const std::uint32_t k = ring.reversed ? total - 1 - j : j;
+    loop[j] = base + k;
+  }
+  std::reverse(loop.begin(), loop.end());
+  mesh.add_face(loop, options.bottom);
+  std::reverse(loop.begin(), loop.end());
+  for (std::uint32_t& id : loop) id += total;
+  mesh.add_face(loop, options.top);
+  for (std::uint32_t j = 0; j < total; ++j) {
+    const std::uint32_t a = base + j;
+    const std::uint32_t b = base + (j + 1) % total;
+    FaceTag tag = options.side;
+    tag.face_id = options.side.face_id + ring.edge_id[j];
+    if (ring.reversed) {
+      mesh.add_face({b, a, a + total, b + total}, tag);
+    } else {
+      mesh.add_face({a, b, b + total, a + total}, tag);
+    }
+  }
+  return ExtrudeStatus::kOk;
+}
+
 ExtrudeResult extrude_planar(const Polygon& local, const Transform& plane, double distance,
                              const ExtrudeOptions& options) {
   if (!std::isfinite(distance)) return {ExtrudeStatus::kNonFinite, {}};

@@ -54,6 +54,12 @@ ExtrudeResult extrude(const Polygon& footprint, double z0, double height,
 // Prism between two heights, z_bottom < z_top (a storey slab, a roof-less part).
 ExtrudeResult extrude_between(const Polygon& footprint, double z_bottom, double z_top,
                               const ExtrudeOptions& options = {});
+// extrude_between writing straight into `mesh` (a storey mesh gathering many slabs) instead of a
+// fresh one: the vertices and faces appended are exactly those `mesh.append(extrude_between(...)
+// .mesh)` would append, in the same order, without the temporary mesh and its copy. On failure
+// nothing is added and the status says why.
+ExtrudeStatus extrude_between_append(Mesh& mesh, const Polygon& footprint, double z_bottom,
+                                     double z_top, const ExtrudeOptions& options = {});
 // Prism over a polygon given in the XY plane of `plane` (local coordinates), extruded by
 // `distance` along the plane's local z axis (non-zero; negative extrudes behind the plane). The
 // bottom tag goes to the cap lying in the plane, the top tag to the moved cap. `plane` may be any

@@ -107,11 +107,11 @@ bool add_prism(kernel::Mesh& mesh, const kernel::Polygon& polygon, double z0, do
   options.top = top;
   options.side = side;
   options.tolerance = 1e-6;
-  const kernel::ExtrudeResult prism = kernel::extrude_between(polygon, z0, z1, options);
-  if (!prism.ok()) return false;
-  // extrude numbers side faces from side.face_id; keep the caller's id on every side face.
+  // Straight into the storey mesh: no temporary prism mesh to build, copy and free per slab.
   const std::size_t first = mesh.face_count();
-  mesh.append(prism.mesh);
+  if (kernel::extrude_between_append(mesh, polygon, z0, z1, options) != kernel::ExtrudeStatus::kOk)
+    return false;
+  // extrude numbers side faces from side.face_id; keep the caller's id on every side face.
   for (std::size_t f = first; f < mesh.face_count(); ++f) {
     kernel::FaceTag& tag = mesh.tag(f);
     if (tag.semantic == side.semantic && tag.material == side.material) tag.face_id = side.face_id;
