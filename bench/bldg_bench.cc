@@ -7,9 +7,12 @@
 // 125 ms with 40-45 MB of RAM (i7 M620); the target is 50 times its speed (10.3 M vertices/s per
 // core) and under 20 MB peak.
 // Peak memory needs a fresh process: `bldg_bench --peak-memory` generates the heaviest of the 25
-// buildings once and prints the process's VmHWM (/proc/self/status). docs/PERFORMANCE.md.
+// buildings once and prints the process's VmHWM (/proc/self/status). `bldg_bench --digest` prints
+// one hash of all 25 generated models (an optimisation must leave it unchanged).
+// docs/PERFORMANCE.md.
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -96,6 +99,47 @@ void BM_Build(benchmark::State& state) {
 }
 BENCHMARK(BM_Build)->DenseRange(1, 5)->Unit(benchmark::kMillisecond);
 
+// FNV-1a over the bytes of a value: the digest below must not move when the generation is
+// optimised (same vertices, faces, tags and part names, bit for bit).
+template <typename T>
+void mix(std::uint64_t& hash, const T& value) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
+  for (std::size_t i = 0; i < sizeof(T); ++i) hash = (hash ^ bytes[i]) * 1099511628211ULL;
+}
+
+// `--digest`: one hash of everything the 25 generations build (parts' names, positions, face
+// loops and tags, warnings), to check that an optimisation changed no output.
+int digest() {
+  std::uint64_t hash = 14695981039346656037ULL;
+  std::size_t vertices = 0;
+  for (int g = 1; g <= 5; ++g) {
+    for (int i = 0; i < 5; ++i) {
+      const Building building = random_building(spec_of(g, i), seed_of(g, i));
+      const Restrictions rules;
+      const base::Result<FloorPlan> plan = make_floor_plan(building, rules);
+      if (!plan.ok()) continue;
+      const BuildResult built = build_building(building, plan.value(), rules);
+      vertices += built.stats.vertices;
+      for (const shape::Part& part : built.building.parts) {
+        for (char c : part.name) mix(hash, c);
+        for (const kernel::Vec3& p : part.mesh.positions()) mix(hash, p);
+        for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
+          for (std::uint32_t v : part.mesh.face(f)) mix(hash, v);
+          const kernel::FaceTag& tag = part.mesh.tag(f);
+          mix(hash, tag.semantic);
+          mix(hash, tag.material);
+          mix(hash, tag.face_id);
+        }
+      }
+      for (const std::string& warning : built.warnings) {
+        for (char c : warning) mix(hash, c);
+      }
+    }
+  }
+  std::printf("digest %016llx, %zu vertices\n", static_cast<unsigned long long>(hash), vertices);
+  return 0;
+}
+
 // Peak resident memory (kB) of this process so far.
 long peak_kb() {
   std::ifstream status("/proc/self/status");
@@ -131,6 +175,7 @@ int main(int argc, char** argv) {
   if (argc > 1 && std::strcmp(argv[1], "--peak-memory") == 0) {
     return insula::lang::bldg::peak_memory();
   }
+  if (argc > 1 && std::strcmp(argv[1], "--digest") == 0) return insula::lang::bldg::digest();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
