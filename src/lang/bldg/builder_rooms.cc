@@ -67,17 +67,33 @@ Face inner_face(const WallGeometry& g, bool room_on_left) {
   return room_on_left ? Face{g.start, g.left, g.offset1} : Face{g.start, -g.left, -g.offset0};
 }
 
+// Per-storey facts and per-room buffers of the room stage, kept across the rooms of a storey so
+// that a room costs no temporary allocations of its own (rooms are the stage's inner loop).
+struct RoomScratch {
+  std::vector<kernel::Bounds2> reaching;  // boxes of the walls lengthened at reflex corners
+  std::vector<Face> faces;
+  kernel::Ring ring;
+  kernel::Ring cut;
+  std::vector<kernel::Polygon> near;
+  std::vector<const kernel::Polygon*> gaps;
+  std::vector<std::pair<double, double>> blocked;
+};
+
 // The clear floor of a convex cell: the cell cut by the inner face of every wall bordering it
 // (exactly the cell minus those walls, since the walls' footprints lie along the cell's edges).
-// Not taken (nullopt) when two collinear pieces of one edge stand out differently (a notch the
+// Not taken (false) when two collinear pieces of one edge stand out differently (a notch the
 // half-planes cannot make) or an outer wall lengthened at a reflex corner reaches into the cell:
-// then the boolean difference is used.
-std::optional<kernel::Polygon> convex_clear_floor(const kernel::Polygon& cell, int room,
-                                                  const StoreyWalls& walls,
-                                                  const PlanStorey& storey) {
-  if (!cell.holes.empty() || !convex(cell.outer)) return std::nullopt;
-  std::vector<Face> faces;
-  faces.reserve(walls.room_walls[static_cast<std::size_t>(room)].size());
+// then the boolean difference is used. On success `out` holds the clear floor (empty when the
+// walls leave nothing).
+bool convex_clear_floor(const kernel::Polygon& cell, const kernel::Bounds2& box, int room,
+                        const StoreyWalls& walls, const PlanStorey& storey, RoomScratch& scratch,
+                        std::vector<kernel::Polygon>& out) {
+  if (!cell.holes.empty() || !convex(cell.outer)) return false;
+  for (const kernel::Bounds2& reach : scratch.reaching) {
+    if (boxes_overlap(box, reach)) return false;
+  }
+  std::vector<Face>& faces = scratch.faces;
+  faces.clear();
   for (int i : walls.room_walls[static_cast<std::size_t>(room)]) {
     const WallGeometry& g = walls.walls[static_cast<std::size_t>(i)];
     if (g.footprint.outer.empty()) continue;
@@ -90,38 +106,37 @@ std::optional<kernel::Polygon> convex_clear_floor(const kernel::Polygon& cell, i
       const double line_j = kernel::dot(faces[j].origin, faces[j].normal);
       if (parallel && std::abs(line_i - line_j) < 1e-9 &&
           std::abs(faces[i].d - faces[j].d) > 1e-9) {
-        return std::nullopt;
+        return false;
       }
     }
   }
-  const kernel::Bounds2 box = kernel::bounds(cell);
-  for (const WallGeometry& g : walls.walls) {
-    if (g.reaches_past && boxes_overlap(box, g.box)) return std::nullopt;
-  }
-  kernel::Polygon clear{cell.outer, {}};
-  kernel::Ring scratch;
+  kernel::Ring& clear = scratch.ring;
+  clear.assign(cell.outer.begin(), cell.outer.end());
   for (const Face& f : faces) {
-    clip(clear.outer, f.origin, f.normal, f.d, scratch);
-    std::swap(clear.outer, scratch);
-    if (clear.outer.size() < 3) return kernel::Polygon{};
+    clip(clear, f.origin, f.normal, f.d, scratch.cut);
+    std::swap(clear, scratch.cut);
+    if (clear.size() < 3) return true;
   }
-  return clear;
+  kernel::Polygon& floor = out.emplace_back();
+  floor.outer = clear;
+  if (kernel::area(floor) < 1e-9) out.pop_back();
+  return true;
 }
 
-std::vector<kernel::Polygon> clear_floor(const kernel::Polygon& cell, int room,
-                                         const StoreyWalls& walls, const PlanStorey& storey) {
-  if (std::optional<kernel::Polygon> fast = convex_clear_floor(cell, room, walls, storey)) {
-    if (fast->outer.empty() || kernel::area(*fast) < 1e-9) return {};
-    return {std::move(*fast)};
-  }
-  const kernel::Bounds2 box = kernel::bounds(cell);
-  std::vector<kernel::Polygon> near;
+// The clear floor of a room: its cell minus the wall footprints around it, into `out` (empty on
+// entry); boolean results come largest first.
+void clear_floor(const kernel::Polygon& cell, const kernel::Bounds2& box, int room,
+                 const StoreyWalls& walls, const PlanStorey& storey, RoomScratch& scratch,
+                 std::vector<kernel::Polygon>& out) {
+  if (convex_clear_floor(cell, box, room, walls, storey, scratch, out)) return;
+  std::vector<kernel::Polygon>& near = scratch.near;
+  near.clear();
   for (const WallGeometry& w : walls.walls) {
     if (!w.footprint.outer.empty() && boxes_overlap(box, w.box)) {
       near.push_back(w.footprint);
     }
   }
-  return minus({cell}, near);
+  out = minus({cell}, near);
 }
 
 // The stretch [u0, u1] along an edge (origin p, unit dir, inward normal n) that `blocker`
@@ -145,10 +160,10 @@ std::pair<double, double> covered(const kernel::Polygon& blocker, Vec2 p, Vec2 d
 // Room footers (§3.4): a strip footer_depth deep and footer_height tall along every edge of the
 // clear floor, one box per stretch between door gaps and stairwells.
 void add_footers(const std::vector<kernel::Polygon>& clear,
-                 const std::vector<kernel::Polygon>& gaps, double depth, double z, double height,
+                 const std::vector<const kernel::Polygon*>& gaps, double depth, double z,
+                 double height, std::vector<std::pair<double, double>>& blocked,
                  kernel::Mesh& mesh) {
   const FaceTag tag{SemanticClass::kInteriorWallSurface, kFooterMaterial, 4};
-  std::vector<std::pair<double, double>> blocked;
   const auto edge_footers = [&](const kernel::Ring& ring) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const Vec2 p = ring[i];
@@ -157,8 +172,8 @@ void add_footers(const std::vector<kernel::Polygon>& clear,
       const Vec2 dir = (ring[(i + 1) % ring.size()] - p) / length;
       const Vec2 n = kernel::perp(dir);  // the floor lies left of every ring edge
       blocked.clear();
-      for (const kernel::Polygon& g : gaps) {
-        const auto [u0, u1] = covered(g, p, dir, n, depth);
+      for (const kernel::Polygon* g : gaps) {
+        const auto [u0, u1] = covered(*g, p, dir, n, depth);
         if (u1 > u0) blocked.emplace_back(u0, u1);
       }
       std::sort(blocked.begin(), blocked.end());
@@ -198,7 +213,7 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
   const PlanStorey& storey = c.plan.storeys[static_cast<std::size_t>(s)];
   const double z0 = c.floor_z(s);
   const double h = c.storey_height(s);
-  const double slab = c.options.slab_thickness;
+  const double slab_thickness = c.options.slab_thickness;
   // Stairwells: flights arriving from the storey below cut this floor; flights leaving upwards cut
   // this storey's ceilings.
   std::vector<kernel::Polygon> floor_holes;
@@ -221,19 +236,28 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
   const std::vector<kernel::Bounds2> floor_boxes = boxes_of(floor_holes);
   const std::vector<kernel::Bounds2> ceiling_boxes = boxes_of(ceiling_holes);
   const std::vector<kernel::Bounds2> gap_boxes = boxes_of(walls.door_gaps);
+  RoomScratch scratch;
+  for (const WallGeometry& g : walls.walls) {
+    if (g.reaches_past) scratch.reaching.push_back(g.box);
+  }
+  std::vector<kernel::Polygon> clear;
   for (const PlanRoom& room : storey.rooms) {
     const int index = static_cast<int>(&room - storey.rooms.data());
-    const std::vector<kernel::Polygon> clear = clear_floor(room.cell, index, walls, storey);
+    const kernel::Bounds2 box = kernel::bounds(room.cell);
+    clear.clear();
+    clear_floor(room.cell, box, index, walls, storey, scratch, clear);
     shape::Part part;
     part.name = unique_name(room.symbol, parts);
     part.kind = shape::PartKind::kRoom;
     double area = 0;
     for (const kernel::Polygon& p : clear) area += kernel::area(p);
-    part.attributes["name"] = room.symbol;
-    part.attributes["type"] = room.type;
-    part.attributes["storey"] = static_cast<double>(storey.level);
-    part.attributes["area"] = std::round(area * 1000) / 1000;
-    part.attributes["building_part"] = room.part;
+    // In key order, each placed at the end without a search.
+    shape::AttributeMap& attributes = part.attributes;
+    attributes.emplace_hint(attributes.end(), "area", std::round(area * 1000) / 1000);
+    attributes.emplace_hint(attributes.end(), "building_part", room.part);
+    attributes.emplace_hint(attributes.end(), "name", room.symbol);
+    attributes.emplace_hint(attributes.end(), "storey", static_cast<double>(storey.level));
+    attributes.emplace_hint(attributes.end(), "type", room.type);
     // Room for the floor and ceiling prisms (2n vertices and n + 2 faces each over n outline
     // vertices) and a footer box (8 vertices, 6 faces) per edge, so the mesh grows once.
     std::size_t n = 0;
@@ -242,7 +266,6 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
       for (const kernel::Ring& hole : p.holes) n += hole.size();
     }
     part.mesh.reserve(12 * n, 8 * n + 4, 32 * n + 8);
-    const kernel::Bounds2 box = kernel::bounds(room.cell);
     const auto near = [&](const std::vector<kernel::Polygon>& holes,
                           const std::vector<kernel::Bounds2>& boxes) {
       std::vector<kernel::Polygon> out;
@@ -251,10 +274,18 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
       }
       return out;
     };
-    for (const kernel::Polygon& p : minus(clear, near(floor_holes, floor_boxes))) {
-      add_prism(part.mesh, p, z0, z0 + slab, closure,
-                {SemanticClass::kFloorSurface, kFloorMaterial, 1}, inner);
-    }
+    // A slab over the clear floor minus `holes` (most rooms have none: no copy then).
+    const auto slab = [&](const std::vector<kernel::Polygon>& holes, double bottom, double top,
+                          FaceTag below, FaceTag above) {
+      const std::vector<kernel::Polygon> cut =
+          holes.empty() ? std::vector<kernel::Polygon>{} : minus(clear, holes);
+      for (const kernel::Polygon& p : holes.empty() ? clear : cut) {
+        add_prism(part.mesh, p, bottom, top, below, above, inner);
+      }
+    };
+    const std::vector<kernel::Polygon> floor_cut = near(floor_holes, floor_boxes);
+    slab(floor_cut, z0, z0 + slab_thickness, closure,
+         {SemanticClass::kFloorSurface, kFloorMaterial, 1});
     std::vector<kernel::Polygon> open_above = near(ceiling_holes, ceiling_boxes);
     // Under a compluvium (the part's top storey), the ceiling stays open to the sky.
     const auto compluvium = c.compluvia->find(room.part);
@@ -264,14 +295,17 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
       for (const kernel::Polygon& hole : near(compluvium->second, boxes_of(compluvium->second)))
         open_above.push_back(hole);
     }
-    for (const kernel::Polygon& p : minus(clear, open_above)) {
-      add_prism(part.mesh, p, z0 + h - slab, z0 + h, {SemanticClass::kCeilingSurface, 0, 3},
-                closure, inner);
-    }
+    slab(open_above, z0 + h - slab_thickness, z0 + h, {SemanticClass::kCeilingSurface, 0, 3},
+         closure);
     if (c.options.footers && c.rules.footer_height > 0 && c.options.footer_depth > 0) {
-      std::vector<kernel::Polygon> gaps = near(walls.door_gaps, gap_boxes);
-      for (kernel::Polygon& hole : near(floor_holes, floor_boxes)) gaps.push_back(std::move(hole));
-      add_footers(clear, gaps, c.options.footer_depth, z0 + slab, c.rules.footer_height, part.mesh);
+      std::vector<const kernel::Polygon*>& gaps = scratch.gaps;
+      gaps.clear();
+      for (std::size_t k = 0; k < walls.door_gaps.size(); ++k) {
+        if (boxes_overlap(box, gap_boxes[k])) gaps.push_back(&walls.door_gaps[k]);
+      }
+      for (const kernel::Polygon& hole : floor_cut) gaps.push_back(&hole);
+      add_footers(clear, gaps, c.options.footer_depth, z0 + slab_thickness, c.rules.footer_height,
+                  scratch.blocked, part.mesh);
     }
     shape::PlanRoom drawn;
     drawn.name = room.symbol;
