@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 
 #include "kernel/boolean2d.h"
 
@@ -86,16 +88,14 @@ struct Interval {
 };
 
 // Intervals of edge p->q (parameter in metres from p) covered by edges of `ring` running the
-// opposite way on the same line.
-void covered_by_ring(Vec2 p, Vec2 q, const Ring& ring, int other, std::vector<Interval>& out) {
-  const Vec2 d = q - p;
-  const double len = kernel::length(d);
-  if (len < kLineTolerance) return;
-  const Vec2 u = d / len;
+// opposite way on the same line. `u` is the edge's unit direction and `len` its length, computed
+// once per edge by the caller (they were recomputed, with std::hypot, per ring).
+void covered_by_ring(Vec2 p, Vec2 u, double len, const Ring& ring, int other,
+                     std::vector<Interval>& out) {
   const std::size_t n = ring.size();
   for (std::size_t j = 0; j < n; ++j) {
     const Vec2 a = ring[j];
-    const Vec2 b = ring[(j + 1) % n];
+    const Vec2 b = ring[j + 1 < n ? j + 1 : 0];
     if (kernel::dot(b - a, u) >= 0) continue;  // must run the other way
     const double sa = kernel::dot(a - p, u);
     const double sb = kernel::dot(b - p, u);
@@ -113,25 +113,31 @@ void covered_by_ring(Vec2 p, Vec2 q, const Ring& ring, int other, std::vector<In
   }
 }
 
-void pieces_of_edge(Vec2 p, Vec2 q, const std::vector<const Polygon*>& others,
-                    const std::vector<kernel::Bounds2>& boxes, const std::vector<std::size_t>& near,
-                    std::vector<EdgePiece>& out) {
+// The polygons an edge is compared with: others[near[i]], whose boxes are boxes[near[i]].
+struct Neighbours {
+  const std::vector<const Polygon*>& others;
+  const std::vector<kernel::Bounds2>& boxes;
+  const std::vector<std::size_t>& near;
+};
+
+// Appends the pieces of edge p->q (length len >= kLineTolerance) to `out`.
+void pieces_of_edge(Vec2 p, Vec2 q, double len, const Neighbours& nb, std::vector<EdgePiece>& out) {
   // Scratch kept from edge to edge (every edge of every cell passes here).
   thread_local std::vector<Interval> covered;
   covered.clear();
-  kernel::Bounds2 edge_box;
-  edge_box.add(p);
-  edge_box.add(q);
-  for (std::size_t k : near) {
-    if (!bounds_touch(edge_box, boxes[k], kLineTolerance)) continue;
-    covered_by_ring(p, q, others[k]->outer, static_cast<int>(k), covered);
-    for (const Ring& hole : others[k]->holes)
-      covered_by_ring(p, q, hole, static_cast<int>(k), covered);
-  }
-  std::sort(covered.begin(), covered.end(),
-            [](const Interval& x, const Interval& y) { return x.s0 < y.s0; });
-  const double len = kernel::length(q - p);
   const Vec2 u = (q - p) / len;
+  kernel::Bounds2 edge_box;
+  edge_box.min = {std::min(p.x, q.x), std::min(p.y, q.y)};
+  edge_box.max = {std::max(p.x, q.x), std::max(p.y, q.y)};
+  for (std::size_t k : nb.near) {
+    if (!bounds_touch(edge_box, nb.boxes[k], kLineTolerance)) continue;
+    covered_by_ring(p, u, len, nb.others[k]->outer, static_cast<int>(k), covered);
+    for (const Ring& hole : nb.others[k]->holes)
+      covered_by_ring(p, u, len, hole, static_cast<int>(k), covered);
+  }
+  if (covered.size() > 1)
+    std::sort(covered.begin(), covered.end(),
+              [](const Interval& x, const Interval& y) { return x.s0 < y.s0; });
   double s = 0;
   const std::size_t start = out.size();  // pieces merge within this edge only
   auto push = [&](double s0, double s1, int other) {
@@ -151,6 +157,39 @@ void pieces_of_edge(Vec2 p, Vec2 q, const std::vector<const Polygon*>& others,
     s = c.s1;
   }
   if (s < len) push(s, len, -1);
+}
+
+// Appends the pieces of every edge of `cell` (outer ring, then holes) to `out`.
+void append_pieces(const Polygon& cell, const Neighbours& nb, std::vector<EdgePiece>& out) {
+  auto ring_pieces = [&](const Ring& ring) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 p = ring[i];
+      const Vec2 q = ring[i + 1 < n ? i + 1 : 0];
+      const double len = kernel::length(q - p);
+      if (len < kLineTolerance) continue;
+      pieces_of_edge(p, q, len, nb, out);
+    }
+  };
+  ring_pieces(cell.outer);
+  for (const Ring& h : cell.holes) ring_pieces(h);
+}
+
+// The pieces of `cell`'s boundary against the single polygon `other` (index 0), into a scratch
+// list reused from call to call; empty when the boxes do not touch (most pairs callers ask about).
+const std::vector<EdgePiece>& pieces_against(const Polygon& cell, const kernel::Bounds2& cell_box,
+                                             const Polygon& other,
+                                             const kernel::Bounds2& other_box) {
+  thread_local std::vector<EdgePiece> pieces;
+  thread_local std::vector<const Polygon*> others(1);
+  thread_local std::vector<kernel::Bounds2> boxes(1);
+  thread_local const std::vector<std::size_t> near{0};
+  pieces.clear();
+  if (!bounds_touch(cell_box, other_box, kLineTolerance)) return pieces;
+  others[0] = &other;
+  boxes[0] = other_box;
+  append_pieces(cell, Neighbours{others, boxes, near}, pieces);
+  return pieces;
 }
 
 }  // namespace
@@ -205,50 +244,45 @@ std::vector<EdgePiece> boundary_pieces(const Polygon& cell,
                                        const std::vector<const Polygon*>& others) {
   std::vector<kernel::Bounds2> boxes(others.size());
   for (std::size_t k = 0; k < others.size(); ++k)
-    if (others[k] != nullptr) boxes[k] = kernel::bounds(*others[k]);
-  return boundary_pieces(cell, kernel::bounds(cell), others, boxes);
+    if (others[k] != nullptr) boxes[k] = box_of(*others[k]);
+  return boundary_pieces(cell, box_of(cell), others, boxes);
 }
 
 std::vector<EdgePiece> boundary_pieces(const Polygon& cell, const kernel::Bounds2& cell_box,
                                        const std::vector<const Polygon*>& others,
                                        const std::vector<kernel::Bounds2>& boxes) {
   // Only the polygons whose box touches the cell's can share an edge with it (indices kept).
-  std::vector<std::size_t> near;
+  thread_local std::vector<std::size_t> near;
+  near.clear();
   for (std::size_t k = 0; k < others.size(); ++k) {
     if (others[k] == nullptr) continue;
     if (bounds_touch(cell_box, boxes[k], kLineTolerance)) near.push_back(k);
   }
   std::vector<EdgePiece> out;
-  auto ring_pieces = [&](const Ring& ring) {
-    const std::size_t n = ring.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 p = ring[i];
-      const Vec2 q = ring[(i + 1) % n];
-      if (kernel::length(q - p) < kLineTolerance) continue;
-      pieces_of_edge(p, q, others, boxes, near, out);
-    }
-  };
-  ring_pieces(cell.outer);
-  for (const Ring& h : cell.holes) ring_pieces(h);
+  append_pieces(cell, Neighbours{others, boxes, near}, out);
   return out;
 }
 
 std::vector<EdgePiece> shared_segments(const Polygon& cell, const Polygon& other) {
-  // Polygons whose boxes do not touch share nothing (boundary_pieces would only list every edge
-  // of `cell` as open): most of the pairs callers ask about.
-  const kernel::Bounds2 cell_box = kernel::bounds(cell);
-  const std::vector<kernel::Bounds2> other_box{kernel::bounds(other)};
-  if (!bounds_touch(cell_box, other_box[0], kLineTolerance)) return {};
   std::vector<EdgePiece> out;
-  for (const EdgePiece& piece : boundary_pieces(cell, cell_box, {&other}, other_box))
+  for (const EdgePiece& piece : pieces_against(cell, box_of(cell), other, box_of(other)))
     if (piece.other == 0) out.push_back(piece);
   return out;
 }
 
 double shared_length(const Polygon& cell, const Polygon& other) {
   double total = 0;
-  for (const EdgePiece& piece : shared_segments(cell, other)) total += piece.length();
+  for (const EdgePiece& piece : pieces_against(cell, box_of(cell), other, box_of(other)))
+    if (piece.other == 0) total += piece.length();
   return total;
+}
+
+double longest_shared_segment(const Polygon& cell, const kernel::Bounds2& cell_box,
+                              const Polygon& other, const kernel::Bounds2& other_box) {
+  double best = 0;
+  for (const EdgePiece& piece : pieces_against(cell, cell_box, other, other_box))
+    if (piece.other == 0) best = std::max(best, piece.length());
+  return best;
 }
 
 bool covers(const std::vector<Polygon>& outer, const Polygon& inner) {
@@ -257,15 +291,78 @@ bool covers(const std::vector<Polygon>& outer, const Polygon& inner) {
 }
 
 bool overlaps(const Polygon& a, const Polygon& b) {
-  if (!bounds_touch(kernel::bounds(a), kernel::bounds(b), 0)) return false;
+  if (!bounds_touch(box_of(a), box_of(b), 0)) return false;
   const kernel::BooleanResult r = kernel::intersect({a}, {b});
   return r.ok() && area_of(r.polygons) > 1e-9;
 }
 
-bool bounds_touch(const kernel::Bounds2& a, const kernel::Bounds2& b, double margin) {
-  return a.min.x <= b.max.x + margin && b.min.x <= a.max.x + margin &&
-         a.min.y <= b.max.y + margin && b.min.y <= a.max.y + margin;
+namespace {
+
+// For every cell, the other cells whose boxes touch its own (within `margin`), in increasing
+// index order, as one flat list: near[start[i] .. start[i + 1]) for cell i. A sweep over the
+// boxes sorted by their left side finds the pairs without testing every pair of a storey.
+struct NearLists {
+  std::vector<std::uint32_t> start;
+  std::vector<std::uint32_t> near;
+};
+
+NearLists touching_boxes(const std::vector<kernel::Bounds2>& boxes, double margin) {
+  const std::size_t n = boxes.size();
+  std::vector<std::uint32_t> by_left(n);
+  for (std::size_t i = 0; i < n; ++i) by_left[i] = static_cast<std::uint32_t>(i);
+  std::sort(by_left.begin(), by_left.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return boxes[a].min.x < boxes[b].min.x; });
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::size_t k = 0; k < n; ++k) {
+    const kernel::Bounds2& a = boxes[by_left[k]];
+    // Boxes further right start past a's right side plus the margin: none of them touches a.
+    for (std::size_t m = k + 1; m < n && boxes[by_left[m]].min.x <= a.max.x + margin; ++m) {
+      if (!bounds_touch(a, boxes[by_left[m]], margin)) continue;
+      pairs.push_back({by_left[k], by_left[m]});
+      pairs.push_back({by_left[m], by_left[k]});
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  NearLists lists;
+  lists.start.assign(n + 1, 0);
+  lists.near.reserve(pairs.size());
+  for (const auto& [i, j] : pairs) {
+    ++lists.start[i + 1];
+    lists.near.push_back(j);
+  }
+  for (std::size_t i = 0; i < n; ++i) lists.start[i + 1] += lists.start[i];
+  return lists;
 }
+
+// Moves `v` onto the first edge of `ring` it lies within `tolerance` of (strictly between the
+// edge's ends, and not within `tolerance` of either end); true when it did.
+bool snap_to_ring(Vec2& v, const Ring& ring, double tolerance) {
+  const double tol2 = tolerance * tolerance;
+  // An edge whose box is further than this from v cannot hold a foot within `tolerance` of v
+  // (the foot lies in the edge's box up to rounding): skipped before the division below.
+  const double reach = 1.5 * tolerance + 1e-9;
+  auto dist2 = [](Vec2 a, Vec2 b) { return kernel::dot(a - b, a - b); };
+  const std::size_t n = ring.size();
+  for (std::size_t e = 0; e < n; ++e) {
+    const Vec2 p = ring[e];
+    const Vec2 q = ring[e + 1 < n ? e + 1 : 0];
+    if (v.x < std::min(p.x, q.x) - reach || v.x > std::max(p.x, q.x) + reach ||
+        v.y < std::min(p.y, q.y) - reach || v.y > std::max(p.y, q.y) + reach)
+      continue;
+    if (dist2(v, p) <= tol2 || dist2(v, q) <= tol2) continue;
+    const Vec2 d = q - p;
+    const double dd = kernel::dot(d, d);
+    const double t = dd > 0 ? kernel::dot(v - p, d) / dd : -1;
+    if (t <= 0 || t >= 1) continue;
+    const Vec2 foot = p + d * t;
+    if (dist2(v, foot) > tol2) continue;
+    v = foot;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
 
 void weld(const std::vector<Polygon*>& cells, double tolerance) {
   std::vector<Vec2*> points;
@@ -295,39 +392,24 @@ void weld(const std::vector<Polygon*>& cells, double tolerance) {
       }
     }
   }
-  // T-junctions: a vertex on another cell's edge goes exactly onto that edge.
+  // T-junctions: a vertex on another cell's edge goes exactly onto that edge. Cells are visited
+  // in order and each vertex tries the touching cells in index order (the first edge wins).
   std::vector<kernel::Bounds2> boxes;
-  for (const Polygon* c : cells) boxes.push_back(kernel::bounds(*c));
+  boxes.reserve(cells.size());
+  for (const Polygon* c : cells) boxes.push_back(box_of(*c));
+  const NearLists lists = touching_boxes(boxes, tolerance);
   for (std::size_t i = 0; i < cells.size(); ++i) {
-    std::vector<std::size_t> near;
-    for (std::size_t j = 0; j < cells.size(); ++j)
-      if (j != i && bounds_touch(boxes[i], boxes[j], tolerance)) near.push_back(j);
     auto snap_ring = [&](Ring& ring) {
       for (Vec2& v : ring) {
         kernel::Bounds2 pb;
-        pb.add(v);
-        for (std::size_t j : near) {
+        pb.min = v;
+        pb.max = v;
+        for (std::uint32_t k = lists.start[i]; k < lists.start[i + 1]; ++k) {
+          const std::size_t j = lists.near[k];
           if (!bounds_touch(pb, boxes[j], tolerance)) continue;
-          auto try_ring = [&](const Ring& other) {
-            const std::size_t n = other.size();
-            for (std::size_t e = 0; e < n; ++e) {
-              const Vec2 p = other[e];
-              const Vec2 q = other[(e + 1) % n];
-              if (dist2(v, p) <= tol2 || dist2(v, q) <= tol2) continue;
-              const Vec2 d = q - p;
-              const double dd = kernel::dot(d, d);
-              const double t = dd > 0 ? kernel::dot(v - p, d) / dd : -1;
-              if (t <= 0 || t >= 1) continue;
-              const Vec2 foot = p + d * t;
-              if (dist2(v, foot) > tol2) continue;
-              v = foot;
-              return true;
-            }
-            return false;
-          };
-          if (try_ring(cells[j]->outer)) break;
+          if (snap_to_ring(v, cells[j]->outer, tolerance)) break;
           bool done = false;
-          for (const Ring& h : cells[j]->holes) done = done || try_ring(h);
+          for (const Ring& h : cells[j]->holes) done = done || snap_to_ring(v, h, tolerance);
           if (done) break;
         }
       }

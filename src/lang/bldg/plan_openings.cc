@@ -41,12 +41,25 @@ bool clear_of(const std::vector<Polygon>& keep_out, const Polygon& zone) {
 
 }  // namespace
 
+StoreyCells::StoreyCells(const PlanStorey& storey) {
+  others_.reserve(storey.rooms.size() + storey.dead_zones.size());
+  for (const PlanRoom& r : storey.rooms) others_.push_back(&r.cell);
+  for (const PlanDeadZone& z : storey.dead_zones) others_.push_back(&z.cell);
+  boxes_.reserve(others_.size());
+  for (const Polygon* cell : others_) boxes_.push_back(box_of(*cell));
+}
+
+std::vector<EdgePiece> StoreyCells::pieces(int index) const {
+  const auto i = static_cast<std::size_t>(index);
+  const Polygon* cell = others_[i];
+  others_[i] = nullptr;
+  std::vector<EdgePiece> out = boundary_pieces(*cell, boxes_[i], others_, boxes_);
+  others_[i] = cell;
+  return out;
+}
+
 std::vector<EdgePiece> room_pieces(const PlanStorey& storey, int room) {
-  std::vector<const Polygon*> others;
-  for (std::size_t i = 0; i < storey.rooms.size(); ++i)
-    others.push_back(static_cast<int>(i) == room ? nullptr : &storey.rooms[i].cell);
-  for (const PlanDeadZone& z : storey.dead_zones) others.push_back(&z.cell);
-  return boundary_pieces(storey.rooms[room].cell, others);
+  return StoreyCells(storey).pieces(room);
 }
 
 std::optional<Slot> find_slot(const PlanStorey& storey, Vec2 p, Vec2 q, double width,
@@ -75,13 +88,27 @@ std::optional<Slot> find_slot(const PlanStorey& storey, Vec2 p, Vec2 q, double w
   // Candidates: the position nearest the middle in each free interval, then positions sliding
   // away from it, so a stair beside the middle does not rule the wall out.
   std::vector<double> centres;
+  // Without keep-out areas the first candidate is taken: the earliest listed of those nearest the
+  // target, which is what the stable sort below puts first, found without listing the others.
+  const bool first_wins = keep_out.empty();
+  double best = 0;
+  bool have_best = false;
+  auto consider = [&](double c) {
+    if (!first_wins) {
+      centres.push_back(c);
+    } else if (!have_best || std::abs(c - target) < std::abs(best - target)) {
+      best = c;
+      have_best = true;
+    }
+  };
   for (const Interval& f : free) {
     if (f.hi - f.lo < width - 1e-9) continue;
     const double lo = f.lo + width / 2;
     const double hi = f.hi - width / 2;
-    centres.push_back(std::clamp(target, lo, hi));
-    for (double s = lo; s <= hi + 1e-9; s += 0.25) centres.push_back(std::min(s, hi));
+    consider(std::clamp(target, lo, hi));
+    for (double s = lo; s <= hi + 1e-9; s += 0.25) consider(std::min(s, hi));
   }
+  if (have_best) centres.push_back(best);
   std::stable_sort(centres.begin(), centres.end(),
                    [&](double x, double y) { return std::abs(x - target) < std::abs(y - target); });
   const Vec2 n = kernel::perp(u);
@@ -157,8 +184,13 @@ std::optional<PlanDoor> door_between(const PlanStorey& storey, int a, int b, dou
 
 std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, int room,
                                        const std::vector<Polygon>& footprint) {
+  return open_air_pieces(storey, StoreyCells(storey), room, footprint);
+}
+
+std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, const StoreyCells& cells, int room,
+                                       const std::vector<Polygon>& footprint) {
   std::vector<EdgePiece> out;
-  for (const EdgePiece& piece : room_pieces(storey, room)) {
+  for (const EdgePiece& piece : cells.pieces(room)) {
     if (piece.other >= 0) continue;
     const Vec2 u = kernel::normalized(piece.b - piece.a);
     const Vec2 outside = (piece.a + piece.b) * 0.5 - kernel::perp(u) * 0.01;

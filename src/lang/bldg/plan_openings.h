@@ -18,6 +18,21 @@ struct Slot {
   kernel::Vec2 center;
 };
 
+// The cells of a storey, rooms then dead zones, with their boxes (box_of), taken once for stages
+// that list the boundary pieces of many rooms of the storey while the cells do not change: each
+// listing would otherwise recompute the box of every cell. Holds pointers into the storey.
+class StoreyCells {
+ public:
+  explicit StoreyCells(const PlanStorey& storey);
+  // boundary_pieces of cell `index` (a room, or rooms.size() + k for dead zone k) against all the
+  // others.
+  std::vector<EdgePiece> pieces(int index) const;
+
+ private:
+  mutable std::vector<const kernel::Polygon*> others_;  // the cell asked about is nulled per call
+  std::vector<kernel::Bounds2> boxes_;
+};
+
 // The pieces of room `room`'s boundary with the storey's room index on the other side: -1 for the
 // exterior, rooms.size() + k for dead zone k.
 std::vector<EdgePiece> room_pieces(const PlanStorey& storey, int room);
@@ -46,6 +61,9 @@ std::optional<PlanDoor> door_between(const PlanStorey& storey, int a, int b, dou
 // Segments of room `room`'s boundary that face the open air: exterior pieces whose outside is not
 // covered by `footprint` (on upper storeys a piece above a lower part's roof is not open air).
 std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, int room,
+                                       const std::vector<kernel::Polygon>& footprint);
+// The same with the storey's cells taken once (`cells` built from `storey`, unchanged since).
+std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, const StoreyCells& cells, int room,
                                        const std::vector<kernel::Polygon>& footprint);
 
 // Stair footprints that constrain doors of `storey`: its own flights and the stairwells of the

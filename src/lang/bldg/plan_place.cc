@@ -183,6 +183,7 @@ void place_windows(Work& work, FloorPlan& plan) {
   const Restrictions& r = *work.restrictions;
   // Window transitions by room symbol, in grammar order.
   for (PlanStorey& storey : plan.storeys) {
+    const StoreyCells cells(storey);  // windows do not move cells
     for (std::size_t i = 0; i < storey.rooms.size(); ++i) {
       PlanRoom& room = storey.rooms[i];
       std::vector<const Transition*> named;
@@ -190,7 +191,8 @@ void place_windows(Work& work, FloorPlan& plan) {
         if (t.kind == TransitionKind::kWindow && t.from == room.symbol) named.push_back(&t);
       const int asked = room.windows_asked + static_cast<int>(named.size());
       if (asked <= 0) continue;
-      std::vector<EdgePiece> pieces = open_air_pieces(storey, static_cast<int>(i), plan.footprint);
+      std::vector<EdgePiece> pieces =
+          open_air_pieces(storey, cells, static_cast<int>(i), plan.footprint);
       // Share the windows among the open-air walls, the longest wall per window first.
       std::vector<int> count(pieces.size(), 0);
       for (int k = 0; k < asked; ++k) {

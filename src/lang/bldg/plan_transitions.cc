@@ -168,16 +168,15 @@ int request_connections(Work& work, std::vector<DoorRequest>& doors) {
       }
     // Longest shared wall piece of every pair of the storey, computed once.
     const std::size_t m = rooms.size();
-    // Pairs whose boxes do not touch share nothing: most pairs of a large storey, skipped here
-    // without recomputing both boxes per pair.
+    // Boxes taken once per room; pairs whose boxes do not touch (most pairs of a large storey)
+    // return at once from longest_shared_segment, which allocates nothing for the others.
     std::vector<double> shared(m * m, 0);
     std::vector<kernel::Bounds2> boxes(m);
-    for (std::size_t i = 0; i < m; ++i)
-      if (work.rooms[rooms[i]].has_cell) boxes[i] = kernel::bounds(work.rooms[rooms[i]].cell);
+    for (std::size_t i = 0; i < m; ++i) boxes[i] = box_of(work.rooms[rooms[i]].cell);
     for (std::size_t i = 0; i < m; ++i)
       for (std::size_t j = i + 1; j < m; ++j)
-        if (bounds_touch(boxes[i], boxes[j], kLineTolerance))
-          shared[i * m + j] = shared[j * m + i] = longest_shared(work, rooms[i], rooms[j]);
+        shared[i * m + j] = shared[j * m + i] = longest_shared_segment(
+            work.rooms[rooms[i]].cell, boxes[i], work.rooms[rooms[j]].cell, boxes[j]);
     for (std::size_t guard = 0; guard < rooms.size(); ++guard) {
       // The adjacent pair, one room in the main group, with the longest shared boundary.
       int best_a = -1;
@@ -277,11 +276,7 @@ double longest_shared(const Work& work, int a, int b) {
   const WorkRoom& ra = work.rooms[a];
   const WorkRoom& rb = work.rooms[b];
   if (!ra.has_cell || !rb.has_cell) return 0;
-  if (!bounds_touch(kernel::bounds(ra.cell), kernel::bounds(rb.cell), kLineTolerance)) return 0;
-  double best = 0;
-  for (const EdgePiece& piece : shared_segments(ra.cell, rb.cell))
-    best = std::max(best, piece.length());
-  return best;
+  return longest_shared_segment(ra.cell, box_of(ra.cell), rb.cell, box_of(rb.cell));
 }
 
 bool door_fits(const Work& work, int a, int b, double width) {

@@ -17,7 +17,7 @@ void storey_walls(const Restrictions& r, PlanStorey& storey) {
   for (const PlanDeadZone& z : storey.dead_zones) cells.push_back(&z.cell);
   std::vector<kernel::Bounds2> boxes;
   boxes.reserve(cells.size());
-  for (const Polygon* cell : cells) boxes.push_back(kernel::bounds(*cell));
+  for (const Polygon* cell : cells) boxes.push_back(box_of(*cell));
   std::vector<const Polygon*> others = cells;
   for (int i = 0; i < static_cast<int>(cells.size()); ++i) {
     others[static_cast<std::size_t>(i)] = nullptr;
