@@ -68,11 +68,21 @@ Vec2 from_int(const IntPoint& q, Vec2 origin) {
   return origin + Vec2{double(q.X) / kBooleanScale, double(q.Y) / kBooleanScale};
 }
 
-void add_ring(const Ring& ring, Vec2 origin, Paths& out) {
+// Appends `ring` as normalize() would leave it (closing duplicates dropped, outer rings
+// counter-clockwise, holes clockwise), without copying the polygon first.
+void add_ring(const Ring& ring, bool hole, Vec2 origin, Paths& out) {
+  std::size_t n = ring.size();
+  while (n > 1 && ring.front() == ring[n - 1]) --n;
+  if (n != ring.size()) {
+    add_ring(Ring(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(n)), hole, origin, out);
+    return;
+  }
+  const double twice = signed_area(ring);
+  const bool reverse = hole ? twice > 0 : twice < 0;
   Path path;
-  path.reserve(ring.size());
-  for (const Vec2& v : ring) {
-    const IntPoint q = to_int(v, origin);
+  path.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const IntPoint q = to_int(ring[reverse ? n - 1 - k : k], origin);
     if (path.empty() || !(path.back() == q)) path.push_back(q);
   }
   while (path.size() > 1 && path.front() == path.back()) path.pop_back();
@@ -82,10 +92,12 @@ void add_ring(const Ring& ring, Vec2 origin, Paths& out) {
 // Normalised rings, so that under the non-zero rule holes cancel their outer ring.
 Paths to_paths(const std::vector<Polygon>& polygons, Vec2 origin) {
   Paths paths;
-  for (Polygon p : polygons) {
-    normalize(p);
-    add_ring(p.outer, origin, paths);
-    for (const Ring& hole : p.holes) add_ring(hole, origin, paths);
+  std::size_t rings = 0;
+  for (const Polygon& p : polygons) rings += 1 + p.holes.size();
+  paths.reserve(rings);
+  for (const Polygon& p : polygons) {
+    add_ring(p.outer, false, origin, paths);
+    for (const Ring& hole : p.holes) add_ring(hole, true, origin, paths);
   }
   return paths;
 }
