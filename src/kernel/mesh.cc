@@ -14,22 +14,6 @@ void Bounds3::add(Vec3 p) {
   max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
 }
 
-std::uint32_t Mesh::add_vertex(Vec3 position) {
-  positions_.push_back(position);
-  return static_cast<std::uint32_t>(positions_.size() - 1);
-}
-
-std::uint32_t Mesh::add_face(std::span<const std::uint32_t> loop, FaceTag tag) {
-  indices_.insert(indices_.end(), loop.begin(), loop.end());
-  offsets_.push_back(static_cast<std::uint32_t>(indices_.size()));
-  tags_.push_back(tag);
-  return static_cast<std::uint32_t>(tags_.size() - 1);
-}
-
-std::uint32_t Mesh::add_face(std::initializer_list<std::uint32_t> loop, FaceTag tag) {
-  return add_face(std::span<const std::uint32_t>(loop.begin(), loop.size()), tag);
-}
-
 std::uint32_t Mesh::add_polygon(std::span<const Vec3> loop, FaceTag tag) {
   const auto first = static_cast<std::uint32_t>(positions_.size());
   positions_.insert(positions_.end(), loop.begin(), loop.end());

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <vector>
 
@@ -32,6 +33,8 @@ struct Bounds3 {
 
 class Mesh {
  public:
+  // add_vertex and add_face are defined inline below: every mesh builder calls them in its inner
+  // loop (a building's boxes alone make tens of thousands of faces).
   std::uint32_t add_vertex(Vec3 position);
   // Adds a face over existing vertex indices (at least 3). Returns the face index.
   std::uint32_t add_face(std::span<const std::uint32_t> loop, FaceTag tag);
@@ -67,6 +70,22 @@ class Mesh {
   std::vector<std::uint32_t> offsets_{0};
   std::vector<FaceTag> tags_;
 };
+
+inline std::uint32_t Mesh::add_vertex(Vec3 position) {
+  positions_.push_back(position);
+  return static_cast<std::uint32_t>(positions_.size() - 1);
+}
+
+inline std::uint32_t Mesh::add_face(std::span<const std::uint32_t> loop, FaceTag tag) {
+  indices_.insert(indices_.end(), loop.begin(), loop.end());
+  offsets_.push_back(static_cast<std::uint32_t>(indices_.size()));
+  tags_.push_back(tag);
+  return static_cast<std::uint32_t>(tags_.size() - 1);
+}
+
+inline std::uint32_t Mesh::add_face(std::initializer_list<std::uint32_t> loop, FaceTag tag) {
+  return add_face(std::span<const std::uint32_t>(loop.begin(), loop.size()), tag);
+}
 
 // Newell normal of a face (unit length; zero for a degenerate face).
 Vec3 face_normal(const Mesh& mesh, std::size_t face);
