@@ -2,6 +2,7 @@
 // counter-clockwise, every hole clockwise, no ring repeats its first vertex at the end.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,16 @@ void normalize(Polygon& polygon);
 
 // Distance from p to the closed segment ab (to a when the segment has zero length).
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
+
+// The square of that distance, without the root: for tests against a squared tolerance in hot
+// loops (the wall validation, the builder's corner tests). Inline for the same reason.
+inline double squared_distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  const Vec2 d = p - (a + ab * t);
+  return dot(d, d);
+}
 
 // Segments ab and cd cross at a point interior to both (strict orientation tests: touching,
 // collinear overlap and shared endpoints do not count).

@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
 namespace insula::kernel {
@@ -43,10 +44,36 @@ Box ring_box(const Ring& ring) {
   return b;
 }
 
-double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+// The gap between the bounding boxes of segments ab and cd along the axis where it is largest (0
+// when the boxes touch): a lower bound of the segments' distance, for skipping far pairs cheaply.
+double box_gap(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double gap_x =
+      std::max(std::min(c.x, d.x) - std::max(a.x, b.x), std::min(a.x, b.x) - std::max(c.x, d.x));
+  const double gap_y =
+      std::max(std::min(c.y, d.y) - std::max(a.y, b.y), std::min(a.y, b.y) - std::max(c.y, d.y));
+  return std::max({gap_x, gap_y, 0.0});
+}
+
+// Squared distance between segments ab and cd that do not cross: the least of the endpoint-to-
+// segment distances.
+double squared_endpoint_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  return std::min(
+      std::min(squared_distance_to_segment(a, c, d), squared_distance_to_segment(b, c, d)),
+      std::min(squared_distance_to_segment(c, a, b), squared_distance_to_segment(d, a, b)));
+}
+
+// Squared distance between segments ab and cd (0 when they cross). Squared so that the hot
+// validation loops take no root per pair; callers compare with squared tolerances or take one
+// root of the minimum.
+double squared_segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   if (segments_cross_properly(a, b, c, d)) return 0;
-  return std::min(std::min(distance_to_segment(a, c, d), distance_to_segment(b, c, d)),
-                  std::min(distance_to_segment(c, a, b), distance_to_segment(d, a, b)));
+  return squared_endpoint_distance(a, b, c, d);
+}
+
+// Segments ab and cd come within `tolerance` of each other.
+bool segments_within(Vec2 a, Vec2 b, Vec2 c, Vec2 d, double tolerance) {
+  if (box_gap(a, b, c, d) > tolerance) return false;
+  return squared_segment_distance(a, b, c, d) <= tolerance * tolerance;
 }
 
 // Crossing-number test; meaningful for points farther than kEps from the boundary.
@@ -76,7 +103,8 @@ bool inside_convex_cw(const Ring& ring, Vec2 p) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const Vec2 a = ring[i];
     const Vec2 e = ring[(i + 1) % ring.size()] - a;
-    if (cross(e, p - a) > -kEps * length(e)) return false;
+    const double side = cross(e, p - a);
+    if (side > 0 || side > -kEps * length(e)) return false;  // the root only near the edge
   }
   return true;
 }
@@ -115,19 +143,21 @@ std::string outline_problem(const Ring& ring) {
     if (!finite(p)) return "wall outline has a non-finite coordinate";
   }
   for (std::size_t i = 0; i < n; ++i) {
-    if (length(ring[i] - ring[(i + n - 1) % n]) <= kEps) {
+    const Vec2 step = ring[i] - ring[(i + n - 1) % n];
+    if (dot(step, step) <= kEps * kEps) {
       return "wall outline vertex " + std::to_string(i) + " repeats the previous vertex";
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
     // Adjacent edges may only meet at their shared vertex: no spike folding back.
-    if (n > 3 && (distance_to_segment(c, a, b) <= kEps || distance_to_segment(a, b, c) <= kEps))
+    if (n > 3 && (squared_distance_to_segment(c, a, b) <= kEps * kEps ||
+                  squared_distance_to_segment(a, b, c) <= kEps * kEps))
       return "wall outline edges " + std::to_string(i) + " and " + std::to_string((i + 1) % n) +
              " overlap";
     for (std::size_t j = i + 2; j < n; ++j) {
       if (i == 0 && j == n - 1) continue;
-      if (segment_distance(a, b, ring[j], ring[(j + 1) % n]) <= kEps) {
+      if (segments_within(a, b, ring[j], ring[(j + 1) % n], kEps)) {
         return "wall outline edges " + std::to_string(i) + " and " + std::to_string(j) +
                " touch or cross";
       }
@@ -223,7 +253,10 @@ std::optional<Finding> against_outline(const Ring& outline, const Accepted& c, d
   for (Vec2 p : outline) {
     if (inside_convex_cw(c.ring, p)) return Finding{OpeningProblem::kOutsideOutline};
   }
-  double distance = 1e300;
+  // Edge pairs whose boxes lie farther apart than `reach` can neither cross nor decide the verdict
+  // (closeness() looks at distances up to kEps and the margin): they are skipped.
+  const double reach = std::max(margin, kEps);
+  double squared = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < edges; ++i) {
     const Vec2 a = c.ring[i], b = c.ring[(i + 1) % m];
     // A notch's first corner sits on the host edge; its last corner ends edge `edges - 1`.
@@ -233,10 +266,12 @@ std::optional<Finding> against_outline(const Ring& outline, const Accepted& c, d
     for (std::size_t j = 0; j < n; ++j) {
       if (static_cast<int>(j) == c.host) continue;
       const Vec2 p = outline[j], q = outline[(j + 1) % n];
+      if (box_gap(a, b, p, q) > reach) continue;
       if (segments_cross_properly(a, b, p, q)) return Finding{OpeningProblem::kOutsideOutline};
-      distance = std::min(distance, segment_distance(a, b, p, q));
+      squared = std::min(squared, squared_endpoint_distance(a, b, p, q));
     }
   }
+  const double distance = std::sqrt(squared);
   const auto verdict =
       closeness(distance, margin, OpeningProblem::kTouchesOutline, OpeningProblem::kNearOutline);
   if (!verdict) return std::nullopt;
@@ -246,14 +281,17 @@ std::optional<Finding> against_outline(const Ring& outline, const Accepted& c, d
 std::optional<Finding> against_opening(const Accepted& c, const Accepted& d, double margin) {
   if (!c.box.overlaps(d.box, margin + kEps)) return std::nullopt;
   if (convex_interiors_overlap(c.ring, d.ring)) return Finding{OpeningProblem::kOverlapsOpening};
-  double distance = 1e300;
+  const double reach = std::max(margin, kEps);  // farther pairs cannot decide (as above)
+  double squared = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < c.ring.size(); ++i) {
     const Vec2 a = c.ring[i], b = c.ring[(i + 1) % c.ring.size()];
     for (std::size_t j = 0; j < d.ring.size(); ++j) {
-      distance =
-          std::min(distance, segment_distance(a, b, d.ring[j], d.ring[(j + 1) % d.ring.size()]));
+      const Vec2 p = d.ring[j], q = d.ring[(j + 1) % d.ring.size()];
+      if (box_gap(a, b, p, q) > reach) continue;
+      squared = std::min(squared, squared_segment_distance(a, b, p, q));
     }
   }
+  const double distance = std::sqrt(squared);
   const auto verdict =
       closeness(distance, margin, OpeningProblem::kTouchesOpening, OpeningProblem::kNearOpening);
   if (!verdict) return std::nullopt;
@@ -328,13 +366,14 @@ struct Boundary {
   std::vector<std::int32_t> opening;  // opening of that edge, or -1 for the rim
   std::uint32_t ring_start = 0;
 
-  // Room for n vertices in every array (the appending build_wall sizes them once).
-  void reserve(std::size_t n) {
-    points.reserve(n);
-    next.reserve(n);
-    prev.reserve(n);
-    kind.reserve(n);
-    opening.reserve(n);
+  // Empties every array, keeping its storage for the next wall (WallWorkspace).
+  void clear() {
+    points.clear();
+    next.clear();
+    prev.clear();
+    kind.clear();
+    opening.clear();
+    ring_start = 0;
   }
 
   void add(Vec2 p, EdgeKind k, std::int32_t o) {
@@ -410,15 +449,14 @@ enum class VertexType : std::uint8_t { kStart, kSplit, kEnd, kMerge, kRegular };
 
 class MonotonePartition {
  public:
-  explicit MonotonePartition(const Boundary& b) : b_(b) {
+  // Diagonals (vertex pairs) splitting the region of `b` into y-monotone pieces; false on a guard
+  // failure. The sweep's arrays keep their storage from one call to the next (WallWorkspace).
+  bool run(const Boundary& b, std::vector<std::array<std::uint32_t, 2>>& diagonals) {
+    b_ = &b;
     const std::size_t n = b.points.size();
     q_.resize(n);
     for (std::size_t i = 0; i < n; ++i) q_[i] = {b.points[i].y, -b.points[i].x};
-  }
-
-  // Diagonals (vertex pairs) splitting the region into y-monotone pieces; false on a guard failure.
-  bool run(std::vector<std::array<std::uint32_t, 2>>& diagonals) {
-    const std::size_t n = q_.size();
+    status_.clear();
     order_.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) order_[i] = i;
     std::sort(order_.begin(), order_.end(),
@@ -438,7 +476,7 @@ class MonotonePartition {
   }
 
   VertexType classify(std::uint32_t v) const {
-    const std::uint32_t p = b_.prev[v], n = b_.next[v];
+    const std::uint32_t p = b_->prev[v], n = b_->next[v];
     const bool convex = cross(q_[v] - q_[p], q_[n] - q_[v]) > 0;
     const bool p_below = below(p, v), n_below = below(n, v);
     if (p_below && n_below) return convex ? VertexType::kStart : VertexType::kSplit;
@@ -448,7 +486,7 @@ class MonotonePartition {
 
   // x of edge e (from e to next(e), going down) at height y.
   double x_at(std::uint32_t e, double y) const {
-    const Vec2 a = q_[e], c = q_[b_.next[e]];
+    const Vec2 a = q_[e], c = q_[b_->next[e]];
     if (a.y == c.y) return std::max(a.x, c.x);
     return a.x + (c.x - a.x) * (y - a.y) / (c.y - a.y);
   }
@@ -478,7 +516,7 @@ class MonotonePartition {
   }
 
   bool handle(std::uint32_t v, std::vector<std::array<std::uint32_t, 2>>& d) {
-    const std::uint32_t in = b_.prev[v];  // e_{i-1}
+    const std::uint32_t in = b_->prev[v];  // e_{i-1}
     switch (type_[v]) {
       case VertexType::kStart:
         status_.push_back(v);
@@ -523,7 +561,7 @@ class MonotonePartition {
     return true;
   }
 
-  const Boundary& b_;
+  const Boundary* b_ = nullptr;
   std::vector<Vec2> q_;
   std::vector<std::uint32_t> order_;
   std::vector<VertexType> type_;
@@ -537,24 +575,14 @@ class MonotonePartition {
 
 class PieceWalker {
  public:
-  PieceWalker(const Boundary& b, const std::vector<std::array<std::uint32_t, 2>>& diagonals)
-      : b_(b) {
-    const std::size_t n = b.points.size();
-    start_.assign(n + 1, 0);
-    for (std::size_t i = 0; i < n; ++i) start_[i + 1] = 1;
-    for (const auto& d : diagonals) ++start_[d[0] + 1], ++start_[d[1] + 1];
-    for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
-    to_.resize(start_[n]);
-    used_.assign(start_[n], 0);
-    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    for (std::uint32_t i = 0; i < n; ++i) to_[fill[i]++] = b.next[i];
-    for (const auto& d : diagonals) to_[fill[d[0]]++] = d[1], to_[fill[d[1]]++] = d[0];
-  }
-
-  // Appends each piece as a vertex loop (offsets into `loops`); false if a walk does not close
-  // into a simple loop.
-  bool run(std::vector<std::uint32_t>& loops, std::vector<std::uint32_t>& offsets) {
-    std::vector<std::uint32_t> stamp(b_.points.size(), 0);
+  // Appends each piece of `b` cut by `diagonals` as a vertex loop (offsets into `loops`); false if
+  // a walk does not close into a simple loop. The arrays keep their storage between calls.
+  bool run(const Boundary& b, const std::vector<std::array<std::uint32_t, 2>>& diagonals,
+           std::vector<std::uint32_t>& loops, std::vector<std::uint32_t>& offsets) {
+    b_ = &b;
+    link(diagonals);
+    std::vector<std::uint32_t>& stamp = fill_;  // free once the half-edges are linked
+    stamp.assign(b.points.size(), 0);
     std::uint32_t piece = 0;
     for (std::uint32_t h = 0; h < to_.size(); ++h) {
       if (used_[h]) continue;
@@ -578,6 +606,20 @@ class PieceWalker {
   }
 
  private:
+  // Outgoing half-edges per vertex: its boundary edge, then its diagonals.
+  void link(const std::vector<std::array<std::uint32_t, 2>>& diagonals) {
+    const std::size_t n = b_->points.size();
+    start_.assign(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) start_[i + 1] = 1;
+    for (const auto& d : diagonals) ++start_[d[0] + 1], ++start_[d[1] + 1];
+    for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
+    to_.resize(start_[n]);
+    used_.assign(start_[n], 0);
+    fill_.assign(start_.begin(), start_.end() - 1);
+    for (std::uint32_t i = 0; i < n; ++i) to_[fill_[i]++] = b_->next[i];
+    for (const auto& d : diagonals) to_[fill_[d[0]]++] = d[1], to_[fill_[d[1]]++] = d[0];
+  }
+
   std::uint32_t from_of(std::uint32_t h) const {
     return static_cast<std::uint32_t>(std::upper_bound(start_.begin(), start_.end(), h) -
                                       start_.begin() - 1);
@@ -586,22 +628,31 @@ class PieceWalker {
   std::uint32_t next_half_edge(std::uint32_t from, std::uint32_t at) const {
     const std::uint32_t first = start_[at], last = start_[at + 1];
     if (last - first == 1) return first;
-    const Vec2 back = b_.points[from] - b_.points[at];
+    const Vec2 back = b_->points[from] - b_->points[at];
+    // The least clockwise angle from `back` in (0, 2 pi], compared without computing angles: first
+    // by half-turn (0 for (0, pi], 1 for (pi, 2 pi]), then within a half-turn by orientation.
+    const auto half_turn = [back](Vec2 d) {
+      const double c = cross(d, back);
+      return c > 0 || (c == 0 && dot(d, back) < 0) ? 0 : 1;
+    };
     std::uint32_t best = first;
-    double best_angle = 1e300;
-    for (std::uint32_t h = first; h < last; ++h) {
-      const Vec2 d = b_.points[to_[h]] - b_.points[at];
-      double angle = std::atan2(cross(d, back), dot(d, back));  // clockwise from `back`
-      if (angle <= 0) angle += 2 * std::numbers::pi;
-      if (angle < best_angle) best = h, best_angle = angle;
+    Vec2 best_d = b_->points[to_[first]] - b_->points[at];
+    int best_half = half_turn(best_d);
+    for (std::uint32_t h = first + 1; h < last; ++h) {
+      const Vec2 d = b_->points[to_[h]] - b_->points[at];
+      const int half = half_turn(d);
+      if (half < best_half || (half == best_half && cross(d, best_d) < 0)) {
+        best = h, best_d = d, best_half = half;
+      }
     }
     return best;
   }
 
-  const Boundary& b_;
+  const Boundary* b_ = nullptr;
   std::vector<std::uint32_t> start_;  // outgoing half-edges of vertex v: [start_[v], start_[v+1])
   std::vector<std::uint32_t> to_;
   std::vector<std::uint8_t> used_;
+  std::vector<std::uint32_t> fill_;  // next free slot per vertex while linking; then walk stamps
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -660,14 +711,13 @@ void emit(const Boundary& b, const std::vector<std::uint32_t>& loops,
 // Mesh::flip does afterwards to a wall built alone.
 void emit_into(const Boundary& b, const std::vector<std::uint32_t>& loops,
                const std::vector<std::uint32_t>& offsets, const WallSpec& spec,
-               const WallFrame& frame, Mesh& mesh, std::vector<std::int32_t>* face_opening) {
+               const WallFrame& frame, Mesh& mesh, std::vector<std::uint32_t>& loop) {
   const auto n = static_cast<std::uint32_t>(b.points.size());
   const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
   const std::size_t pieces = offsets.size() - 1;
   const bool flip = dot(cross(frame.u_axis, frame.v_axis), frame.normal) < 0;
   for (Vec2 p : b.points) mesh.add_vertex(frame.map(p.x, p.y, spec.thickness));
   for (Vec2 p : b.points) mesh.add_vertex(frame.map(p.x, p.y, 0));
-  std::vector<std::uint32_t> loop;
   for (std::size_t f = 0; f < pieces; ++f) {
     loop.assign(loops.begin() + offsets[f], loops.begin() + offsets[f + 1]);
     for (std::uint32_t& v : loop) v += base;
@@ -680,7 +730,6 @@ void emit_into(const Boundary& b, const std::vector<std::uint32_t>& loops,
     for (std::uint32_t& v : loop) v += base + n;
     mesh.add_face(loop, spec.tags.back);
   }
-  if (face_opening != nullptr) face_opening->assign(2 * pieces, -1);
   for (std::uint32_t i = 0; i < n; ++i) {
     const std::uint32_t j = b.next[i];
     const FaceTag tag = tag_for(spec.tags, b.kind[i]);
@@ -689,15 +738,7 @@ void emit_into(const Boundary& b, const std::vector<std::uint32_t>& loops,
     } else {
       mesh.add_face({base + i, base + n + i, base + n + j, base + j}, tag);
     }
-    if (face_opening != nullptr) face_opening->push_back(b.opening[i]);
   }
-}
-
-WallResult failure(WallStatus status, std::string message) {
-  WallResult r;
-  r.status = status;
-  r.message = std::move(message);
-  return r;
 }
 
 std::string wall_problem(const WallSpec& spec) {
@@ -708,10 +749,72 @@ std::string wall_problem(const WallSpec& spec) {
   return outline_problem(spec.outline);
 }
 
-Ring counter_clockwise(const Ring& ring) {
-  Ring out = ring;
+void counter_clockwise(const Ring& ring, Ring& out) {
+  out.assign(ring.begin(), ring.end());
   if (signed_area(out) < 0) std::reverse(out.begin(), out.end());
-  return out;
+}
+
+}  // namespace
+
+// Everything one wall needs between validation and emission; reused from wall to wall.
+struct WallWorkspace::Buffers {
+  Ring outline;  // the spec's outline, counter-clockwise
+  std::vector<Accepted> cut;
+  Boundary boundary;
+  MonotonePartition partition;
+  PieceWalker walker;
+  std::vector<std::array<std::uint32_t, 2>> diagonals;
+  std::vector<std::uint32_t> loops;    // the pieces' vertex loops, one after the other
+  std::vector<std::uint32_t> offsets;  // piece f is loops[offsets[f], offsets[f + 1])
+  std::vector<std::uint32_t> loop;     // one face while it is emitted
+  WallResult result;                   // of the last appending build_wall
+};
+
+WallWorkspace::WallWorkspace() : buffers_(std::make_unique<Buffers>()) {}
+WallWorkspace::~WallWorkspace() = default;
+WallWorkspace::WallWorkspace(WallWorkspace&&) noexcept = default;
+WallWorkspace& WallWorkspace::operator=(WallWorkspace&&) noexcept = default;
+
+namespace {
+
+// The stages both forms of build_wall share: validation, boundary rings, monotone partition and
+// piece loops, left in `w` (boundary, loops, offsets). On failure `result` says why and nothing is
+// left to emit. `result` is reset first, so a workspace's result can be reused.
+bool partition_wall(const WallSpec& spec, WallWorkspace::Buffers& w, WallResult& result) {
+  result.status = WallStatus::kOk;
+  result.message.clear();
+  result.issues.clear();
+  result.cut.clear();
+  result.face_opening.clear();
+  result.front_pieces = 0;
+  if (std::string why = wall_problem(spec); !why.empty()) {
+    result.status = WallStatus::kInvalidWall;
+    result.message = std::move(why);
+    return false;
+  }
+  counter_clockwise(spec.outline, w.outline);
+  w.cut.clear();
+  result.issues = validate(w.outline, spec, w.cut);
+  if (!result.issues.empty() && spec.policy == OpeningPolicy::kFail) {
+    result.status = WallStatus::kRejectedOpening;
+    result.message = result.issues.front().message;
+    return false;
+  }
+  w.boundary.clear();
+  build_boundary(w.outline, w.cut, w.boundary);
+  w.diagonals.clear();
+  w.loops.clear();
+  w.offsets.assign(1, 0);
+  if (!w.partition.run(w.boundary, w.diagonals) ||
+      !w.walker.run(w.boundary, w.diagonals, w.loops, w.offsets)) {
+    result.status = WallStatus::kDecompositionFailed;
+    result.message = "the planar partition of the wall failed";
+    result.issues.clear();
+    return false;
+  }
+  for (const Accepted& c : w.cut) result.cut.push_back(c.index);
+  result.front_pieces = w.offsets.size() - 1;
+  return true;
 }
 
 }  // namespace
@@ -730,7 +833,9 @@ std::vector<OpeningIssue> check_openings(const WallSpec& spec, std::vector<std::
   if (accepted) accepted->clear();
   if (!wall_problem(spec).empty()) return {};
   std::vector<Accepted> cut;
-  std::vector<OpeningIssue> issues = validate(counter_clockwise(spec.outline), spec, cut);
+  Ring outline;
+  counter_clockwise(spec.outline, outline);
+  std::vector<OpeningIssue> issues = validate(outline, spec, cut);
   if (accepted) {
     for (const Accepted& c : cut) accepted->push_back(c.index);
   }
@@ -738,64 +843,26 @@ std::vector<OpeningIssue> check_openings(const WallSpec& spec, std::vector<std::
 }
 
 WallResult build_wall(const WallSpec& spec, const WallFrame& frame) {
-  if (std::string why = wall_problem(spec); !why.empty()) {
-    return failure(WallStatus::kInvalidWall, std::move(why));
-  }
-  const Ring outline = counter_clockwise(spec.outline);
-  std::vector<Accepted> cut;
-  std::vector<OpeningIssue> issues = validate(outline, spec, cut);
-  if (!issues.empty() && spec.policy == OpeningPolicy::kFail) {
-    WallResult r = failure(WallStatus::kRejectedOpening, issues.front().message);
-    r.issues = std::move(issues);
-    return r;
-  }
-  Boundary boundary;
-  build_boundary(outline, cut, boundary);
-  std::vector<std::array<std::uint32_t, 2>> diagonals;
-  std::vector<std::uint32_t> loops, offsets{0};
-  if (!MonotonePartition(boundary).run(diagonals) ||
-      !PieceWalker(boundary, diagonals).run(loops, offsets)) {
-    return failure(WallStatus::kDecompositionFailed, "the planar partition of the wall failed");
-  }
+  WallWorkspace workspace;
+  WallWorkspace::Buffers& w = workspace.buffers();
   WallResult result;
-  result.issues = std::move(issues);
-  for (const Accepted& c : cut) result.cut.push_back(c.index);
-  emit(boundary, loops, offsets, spec, frame, result);
+  if (partition_wall(spec, w, result)) emit(w.boundary, w.loops, w.offsets, spec, frame, result);
   return result;
 }
 
 WallResult build_wall(const WallSpec& spec, const WallFrame& frame, Mesh& out) {
-  if (std::string why = wall_problem(spec); !why.empty()) {
-    return failure(WallStatus::kInvalidWall, std::move(why));
+  WallWorkspace workspace;
+  build_wall(spec, frame, out, workspace);
+  return std::move(workspace.buffers().result);
+}
+
+const WallResult& build_wall(const WallSpec& spec, const WallFrame& frame, Mesh& out,
+                             WallWorkspace& workspace) {
+  WallWorkspace::Buffers& w = workspace.buffers();
+  if (partition_wall(spec, w, w.result)) {
+    emit_into(w.boundary, w.loops, w.offsets, spec, frame, out, w.loop);
   }
-  const Ring outline = counter_clockwise(spec.outline);
-  std::vector<Accepted> cut;
-  std::vector<OpeningIssue> issues = validate(outline, spec, cut);
-  if (!issues.empty() && spec.policy == OpeningPolicy::kFail) {
-    WallResult r = failure(WallStatus::kRejectedOpening, issues.front().message);
-    r.issues = std::move(issues);
-    return r;
-  }
-  Boundary boundary;
-  std::size_t points = outline.size();
-  for (const Accepted& c : cut) points += c.ring.size() + 1;
-  boundary.reserve(points);
-  build_boundary(outline, cut, boundary);
-  std::vector<std::array<std::uint32_t, 2>> diagonals;
-  std::vector<std::uint32_t> loops, offsets{0};
-  diagonals.reserve(2 * cut.size() + 2);  // a few per opening
-  loops.reserve(2 * points + 8 * cut.size());
-  offsets.reserve(2 * cut.size() + 4);
-  if (!MonotonePartition(boundary).run(diagonals) ||
-      !PieceWalker(boundary, diagonals).run(loops, offsets)) {
-    return failure(WallStatus::kDecompositionFailed, "the planar partition of the wall failed");
-  }
-  WallResult result;
-  result.issues = std::move(issues);
-  for (const Accepted& c : cut) result.cut.push_back(c.index);
-  emit_into(boundary, loops, offsets, spec, frame, out, nullptr);
-  result.front_pieces = offsets.size() - 1;
-  return result;
+  return w.result;
 }
 
 std::optional<WallPlacement> place_wall(Vec3 base_start, Vec3 base_end, double height,

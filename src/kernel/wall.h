@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -126,6 +127,30 @@ WallResult build_wall(const WallSpec& spec, const WallFrame& frame = {});
 // face_opening stay empty; status, message, issues, cut and front_pieces are as build_wall's.
 // Nothing is appended unless the result is ok.
 WallResult build_wall(const WallSpec& spec, const WallFrame& frame, Mesh& out);
+
+// Scratch memory for building many walls: the boundary rings, the sweep's arrays and the pieces of
+// one wall are kept here and reused by the next, so a caller building a storey's walls allocates
+// them once instead of per wall. Also holds the last result (see the overload below). One
+// workspace per thread; it may be moved but not copied.
+class WallWorkspace {
+ public:
+  WallWorkspace();
+  ~WallWorkspace();
+  WallWorkspace(WallWorkspace&&) noexcept;
+  WallWorkspace& operator=(WallWorkspace&&) noexcept;
+
+  struct Buffers;  // defined in wall.cc
+  Buffers& buffers() { return *buffers_; }
+
+ private:
+  std::unique_ptr<Buffers> buffers_;
+};
+
+// build_wall appending into `out` (the overload above, same faces, same result fields) with its
+// intermediate arrays taken from `workspace`. The result is stored in the workspace and stays valid
+// until the next call with the same workspace; its mesh and face_opening stay empty.
+const WallResult& build_wall(const WallSpec& spec, const WallFrame& frame, Mesh& out,
+                             WallWorkspace& workspace);
 
 // Validation alone (what build_wall reports), for front-ends testing whether an opening fits.
 // Openings are checked in input order against the outline and the earlier accepted ones.

@@ -48,7 +48,10 @@ std::vector<const PlanWall*> outer_walls(const PlanStorey& storey) {
 // A point of the storey's outline (an outer wall's reference line).
 bool on_outline(const std::vector<const PlanWall*>& outer, Vec2 p) {
   for (const PlanWall* w : outer) {
-    if (near_box(p, w->a, w->b) && kernel::distance_to_segment(p, w->a, w->b) < kTouch) return true;
+    if (near_box(p, w->a, w->b) &&
+        kernel::squared_distance_to_segment(p, w->a, w->b) < kTouch * kTouch) {
+      return true;
+    }
   }
   return false;
 }
@@ -233,7 +236,8 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
   const std::size_t faces = 8 * storey.walls.size() + 6 * (doors + windows) + 6 * boxes;
   mesh.reserve(mesh.vertex_count() + 8 * (storey.walls.size() + doors + windows + boxes),
                mesh.face_count() + faces, 4 * (mesh.face_count() + faces));
-  kernel::WallSpec spec;  // reused: its vectors keep their storage from wall to wall
+  kernel::WallSpec spec;            // reused: its vectors keep their storage from wall to wall
+  kernel::WallWorkspace workspace;  // likewise the wall kernel's intermediate arrays
   spec.policy = kernel::OpeningPolicy::kSkip;
   for (std::size_t i = 0; i < storey.walls.size(); ++i) {
     const PlanWall& wall = storey.walls[i];
@@ -256,7 +260,7 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
         g.exterior ? kernel::WallAlignment::kInside : kernel::WallAlignment::kCenter);
     if (!placement) continue;
     // Appended straight into the storey's mesh: no mesh allocated and copied per wall.
-    const kernel::WallResult built = kernel::build_wall(spec, placement->frame, mesh);
+    const kernel::WallResult& built = kernel::build_wall(spec, placement->frame, mesh, workspace);
     if (!built.ok()) {
       c.warn("storey " + std::to_string(storey.level) + ": wall " + std::to_string(i) +
              " of room '" + storey.rooms[static_cast<std::size_t>(wall.left)].symbol +
