@@ -13,11 +13,14 @@
 #include "lang/bldg/stochastic.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
 #include <queue>
 #include <set>
+#include <span>
+#include <string_view>
 #include <tuple>
 
 #include "shape/rng.h"
@@ -35,7 +38,8 @@ struct Rect {
 
 // Growth factors of the default restriction rules (§3.3): room weights are proportional to them.
 double growth(SizeLabel size) {
-  return Restrictions{}.growth[static_cast<std::size_t>(size)];
+  static const Restrictions defaults;  // built once: a Restrictions holds maps and strings
+  return defaults.growth[static_cast<std::size_t>(size)];
 }
 
 // Nominal floor area per unit of weight, m² (a medium room ~16 m²).
@@ -89,8 +93,8 @@ Orientation perpendicular(Orientation o) {
 // ---- room program and priorities ----
 
 struct TypeInfo {
-  const char* type;
-  int priority;  // 0 public (near the entrance), 1 service, 2 private
+  std::string_view type;  // a view: comparing lengths first rejects most names at once
+  int priority;           // 0 public (near the entrance), 1 service, 2 private
   SizeLabel size;
 };
 constexpr TypeInfo kTypes[] = {
@@ -242,10 +246,10 @@ double cell_weight(const Cell& cell, const std::vector<GenRoom>& rooms) {
 }
 
 // Splits `rect` along `o` into pieces proportional to `weights`, the last taking the remainder
-// (§3.2: "last index sub-BLSEs ... the remaining space is directly allocated to them").
-std::vector<Rect> slice(const Rect& rect, Orientation o, const std::vector<double>& weights) {
+// (§3.2: "last index sub-BLSEs ... the remaining space is directly allocated to them"); piece i
+// goes to out[i] (`out` holds weights.size() rects).
+void slice(const Rect& rect, Orientation o, std::span<const double> weights, std::span<Rect> out) {
   const double total = std::accumulate(weights.begin(), weights.end(), 0.0);
-  std::vector<Rect> out;
   double at = o == Orientation::kHorizontal ? rect.x0 : rect.y0;
   for (std::size_t i = 0; i < weights.size(); ++i) {
     Rect r = rect;
@@ -260,10 +264,9 @@ std::vector<Rect> slice(const Rect& rect, Orientation o, const std::vector<doubl
       r.y0 = at;
       r.y1 = next;
     }
-    out.push_back(r);
+    out[i] = r;
     at = next;
   }
-  return out;
 }
 
 void place_cells(Cell& cell, const Rect& rect, const std::vector<GenRoom>& rooms) {
@@ -271,7 +274,8 @@ void place_cells(Cell& cell, const Rect& rect, const std::vector<GenRoom>& rooms
   if (cell.leaf) return;
   std::vector<double> weights;
   for (const Cell& child : cell.children) weights.push_back(cell_weight(child, rooms));
-  const std::vector<Rect> pieces = slice(rect, cell.orientation, weights);
+  std::vector<Rect> pieces(weights.size());
+  slice(rect, cell.orientation, weights, pieces);
   for (std::size_t i = 0; i < cell.children.size(); ++i) {
     place_cells(cell.children[i], pieces[i], rooms);
   }
@@ -284,14 +288,20 @@ double weight_of(const DivNode& node, const std::vector<GenRoom>& rooms) {
   return w;
 }
 
+// Children of a division node: up to three groups of rooms (§4.3).
+constexpr std::size_t kMaxGroups = 3;
+
 void place_rooms(const DivNode& node, const Rect& rect, std::vector<GenRoom>& rooms) {
   if (node.room >= 0) {
     rooms[static_cast<std::size_t>(node.room)].rect = rect;
     return;
   }
-  std::vector<double> weights;
-  for (const DivNode& child : node.children) weights.push_back(weight_of(child, rooms));
-  const std::vector<Rect> pieces = slice(rect, node.orientation, weights);
+  // divide() makes at most kMaxGroups children per node.
+  std::array<double, kMaxGroups> weights{};
+  std::array<Rect, kMaxGroups> pieces{};
+  const std::size_t n = node.children.size();
+  for (std::size_t i = 0; i < n; ++i) weights[i] = weight_of(node.children[i], rooms);
+  slice(rect, node.orientation, std::span(weights).first(n), std::span(pieces).first(n));
   for (std::size_t i = 0; i < node.children.size(); ++i) {
     place_rooms(node.children[i], pieces[i], rooms);
   }
@@ -308,9 +318,10 @@ DivNode divide(const std::vector<int>& ids, std::size_t lo, std::size_t hi, cons
   }
   node.orientation = along_longer(rect);
   const std::size_t n = hi - lo;
-  std::vector<std::pair<std::size_t, std::size_t>> groups;
-  if (n <= 3) {
-    for (std::size_t i = lo; i < hi; ++i) groups.emplace_back(i, i + 1);
+  std::array<std::pair<std::size_t, std::size_t>, kMaxGroups> groups{};
+  std::size_t count = 0;
+  if (n <= kMaxGroups) {
+    for (std::size_t i = lo; i < hi; ++i) groups[count++] = {i, i + 1};
   } else {
     const std::size_t k = (n >= 7 && rng.unit() < 0.4) ? 3 : 2;
     std::size_t at = lo;
@@ -319,18 +330,22 @@ DivNode divide(const std::vector<int>& ids, std::size_t lo, std::size_t hi, cons
       std::size_t size = left / groups_left;
       if (groups_left > 1 && left > groups_left * 2 && rng.unit() < 0.5) size += 1;
       if (g + 1 == k) size = left;
-      groups.emplace_back(at, at + size);
+      groups[count++] = {at, at + size};
       at += size;
     }
   }
-  std::vector<double> weights;
-  for (const auto& [a, b] : groups) {
+  std::array<double, kMaxGroups> weights{};
+  for (std::size_t g = 0; g < count; ++g) {
     double w = 0;
-    for (std::size_t i = a; i < b; ++i) w += growth(rooms[static_cast<std::size_t>(ids[i])].size);
-    weights.push_back(w);
+    for (std::size_t i = groups[g].first; i < groups[g].second; ++i) {
+      w += growth(rooms[static_cast<std::size_t>(ids[i])].size);
+    }
+    weights[g] = w;
   }
-  const std::vector<Rect> pieces = slice(rect, node.orientation, weights);
-  for (std::size_t g = 0; g < groups.size(); ++g) {
+  std::array<Rect, kMaxGroups> pieces{};
+  slice(rect, node.orientation, std::span(weights).first(count), std::span(pieces).first(count));
+  node.children.reserve(count);
+  for (std::size_t g = 0; g < count; ++g) {
     node.children.push_back(divide(ids, groups[g].first, groups[g].second, pieces[g], rooms, rng));
   }
   return node;
@@ -339,6 +354,10 @@ DivNode divide(const std::vector<int>& ids, std::size_t lo, std::size_t hi, cons
 // Length of the wall two rectangles share (0 when they do not touch along a side).
 double shared_length(const Rect& a, const Rect& b) {
   constexpr double kEps = 1e-6;
+  // Apart by more than kEps along an axis: no side can touch (most pairs of a building's rooms).
+  if (a.x1 < b.x0 - kEps || b.x1 < a.x0 - kEps || a.y1 < b.y0 - kEps || b.y1 < a.y0 - kEps) {
+    return 0;
+  }
   const auto overlap = [](double a0, double a1, double b0, double b1) {
     return std::max(0.0, std::min(a1, b1) - std::max(a0, b0));
   };
@@ -586,14 +605,9 @@ class Generator {
     const std::size_t n = rooms_.size();
     // Rooms that share a wall in the nominal layout, with the shared length (computed once).
     neighbors_.assign(n, {});
-    for (std::size_t u = 0; u < n; ++u) {
-      for (std::size_t v = u + 1; v < n; ++v) {
-        if (rooms_[u].disposable || rooms_[v].disposable) continue;
-        const double shared = shared_length(rooms_[u].rect, rooms_[v].rect);
-        if (shared <= 0) continue;
-        neighbors_[u].emplace_back(static_cast<int>(v), shared);
-        neighbors_[v].emplace_back(static_cast<int>(u), shared);
-      }
+    for (const auto& [u, v, shared] : touching_pairs()) {
+      neighbors_[u].emplace_back(v, shared);
+      neighbors_[v].emplace_back(u, shared);
     }
     std::vector<bool> in_tree(n, false);
     in_tree[static_cast<std::size_t>(entrance_)] = true;
@@ -611,6 +625,34 @@ class Generator {
       ++reached;
     }
     add_extra_doors();
+  }
+
+  // The pairs (u < v, in increasing order) of real rooms sharing a wall of positive length, with
+  // its length. A sweep over the rooms sorted by left edge compares only rooms whose x ranges
+  // meet, instead of all n² pairs.
+  std::vector<std::tuple<int, int, double>> touching_pairs() const {
+    constexpr double kEps = 1e-6;  // shared_length's tolerance
+    std::vector<int> by_x;
+    for (std::size_t u = 0; u < rooms_.size(); ++u) {
+      if (!rooms_[u].disposable) by_x.push_back(static_cast<int>(u));
+    }
+    const auto rect = [&](int u) -> const Rect& {
+      return rooms_[static_cast<std::size_t>(u)].rect;
+    };
+    std::sort(by_x.begin(), by_x.end(),
+              [&](int a, int b) { return std::pair(rect(a).x0, a) < std::pair(rect(b).x0, b); });
+    std::vector<std::tuple<int, int, double>> pairs;
+    for (std::size_t i = 0; i < by_x.size(); ++i) {
+      const Rect& a = rect(by_x[i]);
+      for (std::size_t j = i + 1; j < by_x.size() && rect(by_x[j]).x0 <= a.x1 + kEps; ++j) {
+        const double shared = shared_length(a, rect(by_x[j]));
+        if (shared > 0) {
+          pairs.emplace_back(std::min(by_x[i], by_x[j]), std::max(by_x[i], by_x[j]), shared);
+        }
+      }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
   }
 
   // Prim's algorithm over walls at least `threshold` long: the next door is the frontier edge of
@@ -801,13 +843,15 @@ class Generator {
     Floor floor;
     floor.symbol = node.symbol + "_ground";
     const DivNode& divisions = divisions_[leaf_of_.at(&cell)];
+    int& counter = div_counter_[node.symbol];
     if (divisions.room >= 0) {
       floor.layout.orientation = along_longer(cell.rect);
-      floor.layout.children.push_back(emit_division(divisions, node.symbol));
+      floor.layout.children.push_back(emit_division(divisions, node.symbol, counter));
     } else {
       floor.layout.orientation = divisions.orientation;
+      floor.layout.children.reserve(divisions.children.size());
       for (const DivNode& child : divisions.children) {
-        floor.layout.children.push_back(emit_division(child, node.symbol));
+        floor.layout.children.push_back(emit_division(child, node.symbol, counter));
       }
     }
     floor.layout.symbol = floor.symbol;
@@ -816,7 +860,8 @@ class Generator {
     return node;
   }
 
-  Division emit_division(const DivNode& div, const std::string& part) {
+  // `counter` numbers the containers of `part` (its entry in div_counter_).
+  Division emit_division(const DivNode& div, const std::string& part, int& counter) {
     Division out;
     if (div.room >= 0) {
       const GenRoom& room = rooms_[static_cast<std::size_t>(div.room)];
@@ -829,9 +874,14 @@ class Generator {
       out.room = r;
       return out;
     }
-    out.symbol = part + "_div" + std::to_string(div_counter_[part]++);
+    out.symbol = part;
+    out.symbol += "_div";
+    out.symbol += std::to_string(counter++);
     out.orientation = div.orientation;
-    for (const DivNode& child : div.children) out.children.push_back(emit_division(child, part));
+    out.children.reserve(div.children.size());
+    for (const DivNode& child : div.children) {
+      out.children.push_back(emit_division(child, part, counter));
+    }
     return out;
   }
 
