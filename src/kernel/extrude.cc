@@ -36,12 +36,18 @@ ExtrudeStatus prepare_ring(const Ring& ring, std::uint32_t first_edge, bool is_h
     if (!finite(p)) return ExtrudeStatus::kNonFinite;
   }
   const auto same = [&](std::size_t a, std::size_t b) {
-    return length(ring[a] - ring[b]) <= tolerance;
+    const Vec2 d = ring[a] - ring[b];
+    // A coordinate apart by more than the tolerance settles it without the square root: a
+    // faithfully rounded hypot is never below either coordinate.
+    if (std::abs(d.x) > tolerance || std::abs(d.y) > tolerance) return false;
+    return length(d) <= tolerance;
   };
   // Start at the first vertex that begins a run (differs from its predecessor).
   std::size_t start = 0;
   while (start < n && same(start, (start + n - 1) % n)) ++start;
   if (start == n) return ExtrudeStatus::kTooFewVertices;
+  out.points.reserve(n);
+  out.edge_id.reserve(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t i = (start + k) % n;
     if (k == 0 || !same(i, (i + n - 1) % n)) {
@@ -52,17 +58,30 @@ ExtrudeStatus prepare_ring(const Ring& ring, std::uint32_t first_edge, bool is_h
   }
   if (out.points.size() < 3) return ExtrudeStatus::kTooFewVertices;
   const double signed_twice = 2 * signed_area(out.points);
-  double perimeter_length = 0;
-  for (std::size_t j = 0; j < out.points.size(); ++j) {
-    perimeter_length += length(out.points[(j + 1) % out.points.size()] - out.points[j]);
+  // Near zero: less than a strip of width `tolerance` along the boundary. The perimeter is bounded
+  // first by the sum of |dx| + |dy| (never below it, also after rounding): when even that strip is
+  // smaller than the area, the square roots are not needed.
+  const std::size_t m = out.points.size();
+  double perimeter_bound = 0;
+  for (std::size_t j = 0; j < m; ++j) {
+    const Vec2 d = out.points[(j + 1) % m] - out.points[j];
+    perimeter_bound += std::abs(d.x) + std::abs(d.y);
   }
-  // Near zero: less than a strip of width `tolerance` along the boundary.
-  if (std::abs(signed_twice) <= 2 * tolerance * perimeter_length) return ExtrudeStatus::kZeroArea;
+  if (std::abs(signed_twice) <= 2 * tolerance * perimeter_bound) {
+    double perimeter_length = 0;
+    for (std::size_t j = 0; j < m; ++j) {
+      perimeter_length += length(out.points[(j + 1) % m] - out.points[j]);
+    }
+    if (std::abs(signed_twice) <= 2 * tolerance * perimeter_length) {
+      return ExtrudeStatus::kZeroArea;
+    }
+  }
   out.reversed = is_hole ? signed_twice > 0 : signed_twice < 0;
   return ExtrudeStatus::kOk;
 }
 
 ExtrudeStatus prepare(const Polygon& polygon, double tolerance, std::vector<PreparedRing>& rings) {
+  rings.reserve(1 + polygon.holes.size());
   std::uint32_t first_edge = 0;
   for (std::size_t r = 0; r <= polygon.holes.size(); ++r) {
     const Ring& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
@@ -235,18 +254,24 @@ ExtrudeStatus extrude_between_append(Mesh& mesh, const Polygon& footprint, doubl
     if (prism.ok()) mesh.append(prism.mesh);
     return prism.status;
   }
-  std::vector<PreparedRing> rings;
-  const ExtrudeStatus status = prepare(footprint, std::max(options.tolerance, 0.0), rings);
+  // One ring (prepare() on the outer ring alone): the same vertices, caps and sides as extrude(),
+  // shifted by the vertices already in `mesh`. An n-gon cap cannot fail, so nothing needs undoing.
+  PreparedRing ring;
+  const ExtrudeStatus status =
+      prepare_ring(footprint.outer, 0, false, std::max(options.tolerance, 0.0), ring);
   if (status != ExtrudeStatus::kOk) return status;
-  // One ring: the same vertices, caps and sides as extrude(), shifted by the vertices already in
-  // `mesh`. An n-gon cap cannot fail, so nothing needs undoing.
-  const PreparedRing& ring = rings.front();
   const auto total = static_cast<std::uint32_t>(ring.points.size());
   const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
   for (double z : {z_bottom, z_bottom + height}) {
     for (Vec2 p : ring.points) mesh.add_vertex(lift(p, z));
   }
-  std::vector<std::uint32_t> loop(total);
+  // The caps' vertex loop: on the stack for the usual few-sided slab.
+  constexpr std::size_t kStackLoop = 32;
+  std::array<std::uint32_t, kStackLoop> small;
+  std::vector<std::uint32_t> large;
+  if (total > kStackLoop) large.resize(total);
+  const std::span<std::uint32_t> loop =
+      total > kStackLoop ? std::span<std::uint32_t>(large) : std::span(small).first(total);
   // normalized_region() reverses a clockwise outer ring; the bottom cap runs reversed again.
   for (std::uint32_t j = 0; j < total; ++j) {
     const std::uint32_t k = ring.reversed ? total - 1 - j : j;
