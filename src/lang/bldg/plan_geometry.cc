@@ -14,14 +14,13 @@ using kernel::Polygon;
 using kernel::Ring;
 using kernel::Vec2;
 
-double coord(Vec2 p, bool along_x) {
-  return along_x ? p.x : p.y;
-}
-
-// Twice the signed area of `ring` clipped to coord <= t (Sutherland-Hodgman against one line).
-double clipped_twice_area(const Ring& ring, bool along_x, double t) {
+// Twice the signed area of `ring` clipped to coord <= t (Sutherland-Hodgman against one line),
+// the axis fixed at compile time: the treemap's cut search evaluates it thousands of times.
+template <bool kAlongX>
+double clipped_twice_area(const Ring& ring, double t) {
   const std::size_t n = ring.size();
   if (n < 3) return 0;
+  auto coord = [](Vec2 p) { return kAlongX ? p.x : p.y; };
   const Vec2 origin = ring[0];
   double twice = 0;
   bool have_first = false;
@@ -37,16 +36,28 @@ double clipped_twice_area(const Ring& ring, bool along_x, double t) {
     }
     last = p;
   };
+  Vec2 p = ring[0];
+  double cp = coord(p) - t;
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 p = ring[i];
-    const Vec2 q = ring[(i + 1) % n];
-    const double cp = coord(p, along_x) - t;
-    const double cq = coord(q, along_x) - t;
+    const Vec2 q = ring[i + 1 < n ? i + 1 : 0];
+    const double cq = coord(q) - t;
     if (cp <= 0) emit(p);
     if ((cp < 0 && cq > 0) || (cp > 0 && cq < 0)) emit(p + (q - p) * (cp / (cp - cq)));
+    p = q;
+    cp = cq;
   }
   if (have_first) twice += kernel::cross(last, first);
   return twice;
+}
+
+template <bool kAlongX>
+double region_area_below(const std::vector<Polygon>& region, double t) {
+  double twice = 0;
+  for (const Polygon& p : region) {
+    twice += clipped_twice_area<kAlongX>(p.outer, t);
+    for (const Ring& h : p.holes) twice += clipped_twice_area<kAlongX>(h, t);
+  }
+  return twice / 2;
 }
 
 // Collinear test for consecutive vertices a, b, c: b lies on the line ac within the tolerance
@@ -113,28 +124,30 @@ void covered_by_ring(Vec2 p, Vec2 u, double len, const Ring& ring, int other,
   }
 }
 
-// The polygons an edge is compared with: others[near[i]], whose boxes are boxes[near[i]].
+// The polygons an edge is compared with: others[near[i]], whose boxes are boxes[near[i]]. With
+// `shared_only` the caller keeps only the pieces that have a polygon on the other side, so edges
+// no other polygon covers are skipped without listing their open pieces.
 struct Neighbours {
   const std::vector<const Polygon*>& others;
   const std::vector<kernel::Bounds2>& boxes;
   const std::vector<std::size_t>& near;
+  bool shared_only = false;
 };
 
-// Appends the pieces of edge p->q (length len >= kLineTolerance) to `out`.
-void pieces_of_edge(Vec2 p, Vec2 q, double len, const Neighbours& nb, std::vector<EdgePiece>& out) {
+// Appends the pieces of edge p->q (length len >= kLineTolerance, box edge_box) to `out`.
+void pieces_of_edge(Vec2 p, Vec2 q, double len, const kernel::Bounds2& edge_box,
+                    const Neighbours& nb, std::vector<EdgePiece>& out) {
   // Scratch kept from edge to edge (every edge of every cell passes here).
   thread_local std::vector<Interval> covered;
   covered.clear();
   const Vec2 u = (q - p) / len;
-  kernel::Bounds2 edge_box;
-  edge_box.min = {std::min(p.x, q.x), std::min(p.y, q.y)};
-  edge_box.max = {std::max(p.x, q.x), std::max(p.y, q.y)};
   for (std::size_t k : nb.near) {
     if (!bounds_touch(edge_box, nb.boxes[k], kLineTolerance)) continue;
     covered_by_ring(p, u, len, nb.others[k]->outer, static_cast<int>(k), covered);
     for (const Ring& hole : nb.others[k]->holes)
       covered_by_ring(p, u, len, hole, static_cast<int>(k), covered);
   }
+  if (nb.shared_only && covered.empty()) return;  // one open piece, unwanted
   if (covered.size() > 1)
     std::sort(covered.begin(), covered.end(),
               [](const Interval& x, const Interval& y) { return x.s0 < y.s0; });
@@ -159,6 +172,12 @@ void pieces_of_edge(Vec2 p, Vec2 q, double len, const Neighbours& nb, std::vecto
   if (s < len) push(s, len, -1);
 }
 
+bool touches_any(const kernel::Bounds2& edge_box, const Neighbours& nb) {
+  return std::any_of(nb.near.begin(), nb.near.end(), [&](std::size_t k) {
+    return bounds_touch(edge_box, nb.boxes[k], kLineTolerance);
+  });
+}
+
 // Appends the pieces of every edge of `cell` (outer ring, then holes) to `out`.
 void append_pieces(const Polygon& cell, const Neighbours& nb, std::vector<EdgePiece>& out) {
   auto ring_pieces = [&](const Ring& ring) {
@@ -166,17 +185,22 @@ void append_pieces(const Polygon& cell, const Neighbours& nb, std::vector<EdgePi
     for (std::size_t i = 0; i < n; ++i) {
       const Vec2 p = ring[i];
       const Vec2 q = ring[i + 1 < n ? i + 1 : 0];
+      kernel::Bounds2 edge_box;
+      edge_box.min = {std::min(p.x, q.x), std::min(p.y, q.y)};
+      edge_box.max = {std::max(p.x, q.x), std::max(p.y, q.y)};
+      if (nb.shared_only && !touches_any(edge_box, nb)) continue;
       const double len = kernel::length(q - p);
       if (len < kLineTolerance) continue;
-      pieces_of_edge(p, q, len, nb, out);
+      pieces_of_edge(p, q, len, edge_box, nb, out);
     }
   };
   ring_pieces(cell.outer);
   for (const Ring& h : cell.holes) ring_pieces(h);
 }
 
-// The pieces of `cell`'s boundary against the single polygon `other` (index 0), into a scratch
-// list reused from call to call; empty when the boxes do not touch (most pairs callers ask about).
+// The pieces of `cell`'s boundary shared with the single polygon `other` (index 0; open pieces
+// may be left out), into a scratch list reused from call to call; empty when the boxes do not
+// touch (most pairs callers ask about).
 const std::vector<EdgePiece>& pieces_against(const Polygon& cell, const kernel::Bounds2& cell_box,
                                              const Polygon& other,
                                              const kernel::Bounds2& other_box) {
@@ -188,19 +212,14 @@ const std::vector<EdgePiece>& pieces_against(const Polygon& cell, const kernel::
   if (!bounds_touch(cell_box, other_box, kLineTolerance)) return pieces;
   others[0] = &other;
   boxes[0] = other_box;
-  append_pieces(cell, Neighbours{others, boxes, near}, pieces);
+  append_pieces(cell, Neighbours{others, boxes, near, true}, pieces);
   return pieces;
 }
 
 }  // namespace
 
 double area_below(const std::vector<Polygon>& region, bool along_x, double t) {
-  double twice = 0;
-  for (const Polygon& p : region) {
-    twice += clipped_twice_area(p.outer, along_x, t);
-    for (const Ring& h : p.holes) twice += clipped_twice_area(h, along_x, t);
-  }
-  return twice / 2;
+  return along_x ? region_area_below<true>(region, t) : region_area_below<false>(region, t);
 }
 
 double area_of(const std::vector<Polygon>& region) {

@@ -18,12 +18,30 @@ namespace {
 
 using Reach = std::vector<std::vector<bool>>;  // [level][room]
 
+// Rooms reachable from the entrances through doors and stairs (a breadth-first search over the
+// door and stair links, listed once per room: the set reached does not depend on the visit order).
 Reach reachable(const FloorPlan& plan) {
   Reach reach(plan.storeys.size());
-  std::queue<std::pair<int, int>> queue;
-  for (std::size_t s = 0; s < plan.storeys.size(); ++s)
-    reach[s].assign(plan.storeys[s].rooms.size(), false);
   if (plan.storeys.empty()) return reach;
+  std::vector<std::vector<std::vector<std::pair<int, int>>>> links(plan.storeys.size());
+  for (std::size_t s = 0; s < plan.storeys.size(); ++s) {
+    reach[s].assign(plan.storeys[s].rooms.size(), false);
+    links[s].resize(plan.storeys[s].rooms.size());
+  }
+  const int levels = static_cast<int>(plan.storeys.size());
+  for (int s = 0; s < levels; ++s) {
+    const PlanStorey& storey = plan.storeys[s];
+    for (const PlanDoor& d : storey.doors) {
+      links[s][d.room_a].push_back({s, d.room_b});
+      links[s][d.room_b].push_back({s, d.room_a});
+    }
+    if (s + 1 >= levels) continue;
+    for (const PlanStair& st : storey.stairs) {
+      links[s][st.lower_room].push_back({s + 1, st.upper_room});
+      links[s + 1][st.upper_room].push_back({s, st.lower_room});
+    }
+  }
+  std::queue<std::pair<int, int>> queue;
   for (const PlanDoor& e : plan.storeys[0].entrances) {
     if (!reach[0][e.room_a]) queue.push({0, e.room_a});
     reach[0][e.room_a] = true;
@@ -31,21 +49,11 @@ Reach reachable(const FloorPlan& plan) {
   while (!queue.empty()) {
     const auto [s, r] = queue.front();
     queue.pop();
-    auto visit = [&](int level, int room) {
-      if (reach[level][room]) return;
+    for (const auto& [level, room] : links[s][r]) {
+      if (reach[level][room]) continue;
       reach[level][room] = true;
       queue.push({level, room});
-    };
-    const PlanStorey& storey = plan.storeys[s];
-    for (const PlanDoor& d : storey.doors) {
-      if (d.room_a == r) visit(s, d.room_b);
-      if (d.room_b == r) visit(s, d.room_a);
     }
-    for (const PlanStair& st : storey.stairs)
-      if (st.lower_room == r) visit(s + 1, st.upper_room);
-    if (s > 0)
-      for (const PlanStair& st : plan.storeys[s - 1].stairs)
-        if (st.upper_room == r) visit(s - 1, st.lower_room);
   }
   return reach;
 }

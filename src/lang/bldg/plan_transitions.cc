@@ -166,31 +166,50 @@ int request_connections(Work& work, std::vector<DoorRequest>& doors) {
         main_room = r;
         break;
       }
-    // Longest shared wall piece of every pair of the storey, computed once.
+    // Longest shared wall piece of a pair of the storey, computed once and only for the pairs the
+    // search below looks at (one room in the main group, the other not): when the grammar's doors
+    // already join every room, none is. Boxes are taken once per room; pairs whose boxes do not
+    // touch (most pairs of a large storey) share nothing.
     const std::size_t m = rooms.size();
-    // Boxes taken once per room; pairs whose boxes do not touch (most pairs of a large storey)
-    // return at once from longest_shared_segment, which allocates nothing for the others.
-    std::vector<double> shared(m * m, 0);
-    std::vector<kernel::Bounds2> boxes(m);
-    for (std::size_t i = 0; i < m; ++i) boxes[i] = box_of(work.rooms[rooms[i]].cell);
-    for (std::size_t i = 0; i < m; ++i)
-      for (std::size_t j = i + 1; j < m; ++j)
-        shared[i * m + j] = shared[j * m + i] = longest_shared_segment(
-            work.rooms[rooms[i]].cell, boxes[i], work.rooms[rooms[j]].cell, boxes[j]);
+    std::vector<double> shared;  // -1: not computed yet
+    std::vector<kernel::Bounds2> boxes;
+    auto shared_of = [&](std::size_t i, std::size_t j) {
+      if (shared.empty()) {
+        shared.assign(m * m, -1);
+        for (int r : rooms) boxes.push_back(box_of(work.rooms[r].cell));
+      }
+      double& cached = shared[i * m + j];
+      if (cached < 0) {
+        cached = bounds_touch(boxes[i], boxes[j], kLineTolerance)
+                     ? longest_shared_segment(work.rooms[rooms[i]].cell, boxes[i],
+                                              work.rooms[rooms[j]].cell, boxes[j])
+                     : 0;
+        shared[j * m + i] = cached;
+      }
+      return cached;
+    };
+    std::vector<bool> in_main;
     for (std::size_t guard = 0; guard < rooms.size(); ++guard) {
       // The adjacent pair, one room in the main group, with the longest shared boundary.
       int best_a = -1;
       int best_b = -1;
       double best = 0;
       const int main_set = find_set(parent, main_room);
+      in_main.assign(m, false);
+      std::size_t outside = 0;
+      for (std::size_t i = 0; i < m; ++i) {
+        in_main[i] = find_set(parent, rooms[i]) == main_set;
+        if (!in_main[i]) ++outside;
+      }
+      if (outside == 0) break;  // the storey is one group
       for (std::size_t i = 0; i < m; ++i) {
         const int a = rooms[i];
-        if (find_set(parent, a) != main_set) continue;
+        if (!in_main[i]) continue;
         for (std::size_t j = 0; j < m; ++j) {
           const int b = rooms[j];
-          if (shared[i * m + j] <= 0) continue;
-          if (find_set(parent, b) == main_set || has_failed(a, b)) continue;
-          const double len = shared[i * m + j];
+          if (in_main[j] || has_failed(a, b)) continue;
+          const double len = i < j ? shared_of(i, j) : shared_of(j, i);
+          if (len <= 0) continue;
           if (len > best) {
             best = len;
             best_a = a;

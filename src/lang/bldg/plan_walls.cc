@@ -46,12 +46,28 @@ void storey_walls(const Restrictions& r, PlanStorey& storey) {
   }
 }
 
-int wall_of(const PlanStorey& storey, int a, int b, kernel::Vec2 centre) {
+// The walls of each room of a storey (as left or right side), in increasing wall index.
+std::vector<std::vector<int>> walls_by_room(const PlanStorey& storey) {
+  std::vector<std::vector<int>> out(storey.rooms.size());
+  const int rooms = static_cast<int>(storey.rooms.size());
   for (std::size_t w = 0; w < storey.walls.size(); ++w) {
     const PlanWall& wall = storey.walls[w];
+    if (wall.left >= 0 && wall.left < rooms) out[wall.left].push_back(static_cast<int>(w));
+    if (wall.right >= 0 && wall.right < rooms && wall.right != wall.left)
+      out[wall.right].push_back(static_cast<int>(w));
+  }
+  return out;
+}
+
+// The first wall (lowest index) between room a (a room of the storey) and side b through
+// `centre`; only room a's walls are scanned, which finds the same first wall as a scan of all.
+int wall_of(const PlanStorey& storey, const std::vector<std::vector<int>>& by_room, int a, int b,
+            kernel::Vec2 centre) {
+  if (a < 0 || a >= static_cast<int>(by_room.size())) return -1;
+  for (int w : by_room[a]) {
+    const PlanWall& wall = storey.walls[w];
     const bool sides = (wall.left == a && wall.right == b) || (wall.left == b && wall.right == a);
-    if (sides && kernel::distance_to_segment(centre, wall.a, wall.b) < 1e-5)
-      return static_cast<int>(w);
+    if (sides && kernel::distance_to_segment(centre, wall.a, wall.b) < 1e-5) return w;
   }
   return -1;
 }
@@ -71,16 +87,17 @@ void build_walls(Work& work, FloorPlan& plan) {
   for (PlanStorey& storey : plan.storeys) {
     storey.walls.clear();
     storey_walls(*work.restrictions, storey);
+    const std::vector<std::vector<int>> by_room = walls_by_room(storey);
     for (PlanDoor& d : storey.doors) {
-      d.wall = wall_of(storey, d.room_a, d.room_b, d.center);
+      d.wall = wall_of(storey, by_room, d.room_a, d.room_b, d.center);
       if (d.wall >= 0) onto_wall(storey.walls[d.wall], d.a, d.b, d.center);
     }
     for (PlanDoor& d : storey.entrances) {
-      d.wall = wall_of(storey, d.room_a, kExteriorSide, d.center);
+      d.wall = wall_of(storey, by_room, d.room_a, kExteriorSide, d.center);
       if (d.wall >= 0) onto_wall(storey.walls[d.wall], d.a, d.b, d.center);
     }
     for (PlanWindow& w : storey.windows) {
-      w.wall = wall_of(storey, w.room, kExteriorSide, w.center);
+      w.wall = wall_of(storey, by_room, w.room, kExteriorSide, w.center);
       if (w.wall >= 0) onto_wall(storey.walls[w.wall], w.a, w.b, w.center);
     }
     for (PlanRoom& room : storey.rooms) {
