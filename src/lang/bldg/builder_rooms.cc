@@ -14,6 +14,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <unordered_set>
 #include <utility>
 
 #include "kernel/boolean2d.h"
@@ -196,13 +197,11 @@ void add_footers(const std::vector<kernel::Polygon>& clear,
   }
 }
 
-std::string unique_name(const std::string& base, const std::vector<shape::Part>& parts) {
+// `base`, or base#2, base#3, ... whichever is not `taken` yet; the name returned is added to it.
+std::string unique_name(const std::string& base, std::unordered_set<std::string>& taken) {
   std::string name = base;
-  for (int k = 2; std::any_of(parts.begin(), parts.end(),
-                              [&](const shape::Part& p) { return p.name == name; });
-       ++k) {
-    name = base + "#" + std::to_string(k);
-  }
+  for (int k = 2; taken.count(name) != 0; ++k) name = base + "#" + std::to_string(k);
+  taken.insert(name);
   return name;
 }
 
@@ -241,13 +240,16 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
     if (g.reaches_past) scratch.reaching.push_back(g.box);
   }
   std::vector<kernel::Polygon> clear;
+  std::unordered_set<std::string> taken;  // the names of `parts`, so far and as rooms are added
+  taken.reserve(parts.size() + storey.rooms.size());
+  for (const shape::Part& part : parts) taken.insert(part.name);
   for (const PlanRoom& room : storey.rooms) {
     const int index = static_cast<int>(&room - storey.rooms.data());
     const kernel::Bounds2 box = kernel::bounds(room.cell);
     clear.clear();
     clear_floor(room.cell, box, index, walls, storey, scratch, clear);
     shape::Part part;
-    part.name = unique_name(room.symbol, parts);
+    part.name = unique_name(room.symbol, taken);
     part.kind = shape::PartKind::kRoom;
     double area = 0;
     for (const kernel::Polygon& p : clear) area += kernel::area(p);
@@ -258,14 +260,6 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
     attributes.emplace_hint(attributes.end(), "name", room.symbol);
     attributes.emplace_hint(attributes.end(), "storey", static_cast<double>(storey.level));
     attributes.emplace_hint(attributes.end(), "type", room.type);
-    // Room for the floor and ceiling prisms (2n vertices and n + 2 faces each over n outline
-    // vertices) and a footer box (8 vertices, 6 faces) per edge, so the mesh grows once.
-    std::size_t n = 0;
-    for (const kernel::Polygon& p : clear) {
-      n += p.outer.size();
-      for (const kernel::Ring& hole : p.holes) n += hole.size();
-    }
-    part.mesh.reserve(12 * n, 8 * n + 4, 32 * n + 8);
     const auto near = [&](const std::vector<kernel::Polygon>& holes,
                           const std::vector<kernel::Bounds2>& boxes) {
       std::vector<kernel::Polygon> out;
@@ -284,6 +278,27 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
       }
     };
     const std::vector<kernel::Polygon> floor_cut = near(floor_holes, floor_boxes);
+    const bool footers =
+        c.options.footers && c.rules.footer_height > 0 && c.options.footer_depth > 0;
+    std::vector<const kernel::Polygon*>& gaps = scratch.gaps;
+    gaps.clear();
+    if (footers) {
+      for (std::size_t k = 0; k < walls.door_gaps.size(); ++k) {
+        if (boxes_overlap(box, gap_boxes[k])) gaps.push_back(&walls.door_gaps[k]);
+      }
+      for (const kernel::Polygon& hole : floor_cut) gaps.push_back(&hole);
+    }
+    // Room for the floor and ceiling prisms (2n vertices, n + 2 faces and 6n indices each over n
+    // outline vertices) and the footer boxes (8 vertices, 6 faces, 24 indices each): one per edge,
+    // plus one more wherever a gap splits an edge (a gap meets at most two), so the mesh grows
+    // once.
+    std::size_t n = 0;
+    for (const kernel::Polygon& p : clear) {
+      n += p.outer.size();
+      for (const kernel::Ring& hole : p.holes) n += hole.size();
+    }
+    const std::size_t boxes = footers ? n + 2 * gaps.size() : 0;
+    part.mesh.reserve(4 * n + 8 * boxes, 2 * n + 4 + 6 * boxes, 12 * n + 24 * boxes);
     slab(floor_cut, z0, z0 + slab_thickness, closure,
          {SemanticClass::kFloorSurface, kFloorMaterial, 1});
     std::vector<kernel::Polygon> open_above = near(ceiling_holes, ceiling_boxes);
@@ -297,13 +312,7 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
     }
     slab(open_above, z0 + h - slab_thickness, z0 + h, {SemanticClass::kCeilingSurface, 0, 3},
          closure);
-    if (c.options.footers && c.rules.footer_height > 0 && c.options.footer_depth > 0) {
-      std::vector<const kernel::Polygon*>& gaps = scratch.gaps;
-      gaps.clear();
-      for (std::size_t k = 0; k < walls.door_gaps.size(); ++k) {
-        if (boxes_overlap(box, gap_boxes[k])) gaps.push_back(&walls.door_gaps[k]);
-      }
-      for (const kernel::Polygon& hole : floor_cut) gaps.push_back(&hole);
+    if (footers) {
       add_footers(clear, gaps, c.options.footer_depth, z0 + slab_thickness, c.rules.footer_height,
                   scratch.blocked, part.mesh);
     }
