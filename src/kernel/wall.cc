@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 namespace insula::kernel {
 namespace {
@@ -44,14 +45,15 @@ Box ring_box(const Ring& ring) {
   return b;
 }
 
-// The gap between the bounding boxes of segments ab and cd along the axis where it is largest (0
-// when the boxes touch): a lower bound of the segments' distance, for skipping far pairs cheaply.
-double box_gap(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+// The gap between the bounding boxes of segments ab and cd along the axis where it is largest
+// (negative when the boxes overlap): a lower bound of the segments' distance, for skipping far
+// pairs cheaply. Callers compare it with a positive tolerance.
+inline double box_gap(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double gap_x =
       std::max(std::min(c.x, d.x) - std::max(a.x, b.x), std::min(a.x, b.x) - std::max(c.x, d.x));
   const double gap_y =
       std::max(std::min(c.y, d.y) - std::max(a.y, b.y), std::min(a.y, b.y) - std::max(c.y, d.y));
-  return std::max({gap_x, gap_y, 0.0});
+  return std::max(gap_x, gap_y);
 }
 
 // Squared distance between segments ab and cd that do not cross: the least of the endpoint-to-
@@ -68,6 +70,12 @@ double squared_endpoint_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 double squared_segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   if (segments_cross_properly(a, b, c, d)) return 0;
   return squared_endpoint_distance(a, b, c, d);
+}
+
+// Point p lies within `tolerance` of segment ab.
+bool point_within(Vec2 p, Vec2 a, Vec2 b, double tolerance) {
+  if (box_gap(p, p, a, b) > tolerance) return false;
+  return squared_distance_to_segment(p, a, b) <= tolerance * tolerance;
 }
 
 // Segments ab and cd come within `tolerance` of each other.
@@ -136,7 +144,8 @@ bool finite(Vec2 p) {
 // ---------------------------------------------------------------------------------------------
 // Outline validation. `ccw` is the outline turned counter-clockwise.
 
-std::string outline_problem(const Ring& ring) {
+// `area` is signed_area(ring), computed once by the caller (who also orients the ring by it).
+std::string outline_problem(const Ring& ring, double area) {
   const std::size_t n = ring.size();
   if (n < 3) return "wall outline needs at least 3 vertices";
   for (Vec2 p : ring) {
@@ -151,8 +160,7 @@ std::string outline_problem(const Ring& ring) {
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
     // Adjacent edges may only meet at their shared vertex: no spike folding back.
-    if (n > 3 && (squared_distance_to_segment(c, a, b) <= kEps * kEps ||
-                  squared_distance_to_segment(a, b, c) <= kEps * kEps))
+    if (n > 3 && (point_within(c, a, b, kEps) || point_within(a, b, c, kEps)))
       return "wall outline edges " + std::to_string(i) + " and " + std::to_string((i + 1) % n) +
              " overlap";
     for (std::size_t j = i + 2; j < n; ++j) {
@@ -163,7 +171,7 @@ std::string outline_problem(const Ring& ring) {
       }
     }
   }
-  if (std::abs(2 * signed_area(ring)) <= kEps) return "wall outline has zero area";
+  if (std::abs(2 * area) <= kEps) return "wall outline has zero area";
   return {};
 }
 
@@ -256,16 +264,22 @@ std::optional<Finding> against_outline(const Ring& outline, const Accepted& c, d
   // Edge pairs whose boxes lie farther apart than `reach` can neither cross nor decide the verdict
   // (closeness() looks at distances up to kEps and the margin): they are skipped.
   const double reach = std::max(margin, kEps);
-  double squared = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < edges; ++i) {
-    const Vec2 a = c.ring[i], b = c.ring[(i + 1) % m];
     // A notch's first corner sits on the host edge; its last corner ends edge `edges - 1`.
+    const Vec2 a = c.ring[i];
     if ((c.host < 0 || i > 0) && !inside_ring(outline, a) && ring_distance(outline, a) > kEps) {
       return Finding{OpeningProblem::kOutsideOutline};
     }
-    for (std::size_t j = 0; j < n; ++j) {
-      if (static_cast<int>(j) == c.host) continue;
-      const Vec2 p = outline[j], q = outline[(j + 1) % n];
+  }
+  double squared = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < n; ++j) {
+    if (static_cast<int>(j) == c.host) continue;
+    const Vec2 p = outline[j], q = outline[(j + 1) % n];
+    // The opening's box holds every edge's box: an outline edge beyond `reach` of it is beyond
+    // `reach` of each opening edge, and all of them would be skipped below.
+    if (box_gap(c.box.min, c.box.max, p, q) > reach) continue;
+    for (std::size_t i = 0; i < edges; ++i) {
+      const Vec2 a = c.ring[i], b = c.ring[(i + 1) % m];
       if (box_gap(a, b, p, q) > reach) continue;
       if (segments_cross_properly(a, b, p, q)) return Finding{OpeningProblem::kOutsideOutline};
       squared = std::min(squared, squared_endpoint_distance(a, b, p, q));
@@ -456,14 +470,22 @@ class MonotonePartition {
     const std::size_t n = b.points.size();
     q_.resize(n);
     for (std::size_t i = 0; i < n; ++i) q_[i] = {b.points[i].y, -b.points[i].x};
+    type_.resize(n);
+    bool split_or_merge = false;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      type_[i] = classify(i);
+      split_or_merge |= type_[i] == VertexType::kSplit || type_[i] == VertexType::kMerge;
+    }
+    // Without split or merge vertices the region is monotone already (de Berg, Lemma 3.4) and the
+    // sweep would add no diagonal (it adds them only at split vertices and at merge helpers): a
+    // plain wall, or one with door notches only, skips the sort and the sweep.
+    if (!split_or_merge) return true;
     status_.clear();
     order_.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) order_[i] = i;
     std::sort(order_.begin(), order_.end(),
               [this](std::uint32_t a, std::uint32_t c) { return below(c, a); });
-    type_.resize(n);
     helper_.assign(n, 0);
-    for (std::uint32_t i = 0; i < n; ++i) type_[i] = classify(i);
     for (std::uint32_t v : order_) {
       if (!handle(v, diagonals)) return false;
     }
@@ -580,6 +602,10 @@ class PieceWalker {
   bool run(const Boundary& b, const std::vector<std::array<std::uint32_t, 2>>& diagonals,
            std::vector<std::uint32_t>& loops, std::vector<std::uint32_t>& offsets) {
     b_ = &b;
+    if (diagonals.empty()) {
+      rings_as_pieces(loops, offsets);
+      return true;
+    }
     link(diagonals);
     std::vector<std::uint32_t>& stamp = fill_;  // free once the half-edges are linked
     stamp.assign(b.points.size(), 0);
@@ -606,6 +632,16 @@ class PieceWalker {
   }
 
  private:
+  // Without diagonals every ring is a piece, listed from its first vertex along `next`: what the
+  // walk below yields then, without linking half-edges.
+  void rings_as_pieces(std::vector<std::uint32_t>& loops, std::vector<std::uint32_t>& offsets) {
+    const auto n = static_cast<std::uint32_t>(b_->points.size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+      loops.push_back(i);
+      if (b_->next[i] != i + 1) offsets.push_back(static_cast<std::uint32_t>(loops.size()));
+    }
+  }
+
   // Outgoing half-edges per vertex: its boundary edge, then its diagonals.
   void link(const std::vector<std::array<std::uint32_t, 2>>& diagonals) {
     const std::size_t n = b_->points.size();
@@ -741,17 +777,17 @@ void emit_into(const Boundary& b, const std::vector<std::uint32_t>& loops,
   }
 }
 
-std::string wall_problem(const WallSpec& spec) {
+std::string wall_problem(const WallSpec& spec, double outline_area) {
   if (!std::isfinite(spec.thickness) || spec.thickness <= 0)
     return "wall thickness must be positive and finite";
   if (!std::isfinite(spec.min_margin) || spec.min_margin < 0)
     return "minimum margin must be non-negative and finite";
-  return outline_problem(spec.outline);
+  return outline_problem(spec.outline, outline_area);
 }
 
-void counter_clockwise(const Ring& ring, Ring& out) {
+void counter_clockwise(const Ring& ring, double area, Ring& out) {
   out.assign(ring.begin(), ring.end());
-  if (signed_area(out) < 0) std::reverse(out.begin(), out.end());
+  if (area < 0) std::reverse(out.begin(), out.end());
 }
 
 }  // namespace
@@ -787,12 +823,13 @@ bool partition_wall(const WallSpec& spec, WallWorkspace::Buffers& w, WallResult&
   result.cut.clear();
   result.face_opening.clear();
   result.front_pieces = 0;
-  if (std::string why = wall_problem(spec); !why.empty()) {
+  const double area = signed_area(spec.outline);
+  if (std::string why = wall_problem(spec, area); !why.empty()) {
     result.status = WallStatus::kInvalidWall;
     result.message = std::move(why);
     return false;
   }
-  counter_clockwise(spec.outline, w.outline);
+  counter_clockwise(spec.outline, area, w.outline);
   w.cut.clear();
   result.issues = validate(w.outline, spec, w.cut);
   if (!result.issues.empty() && spec.policy == OpeningPolicy::kFail) {
@@ -831,10 +868,11 @@ double opening_area(const Opening& opening) {
 
 std::vector<OpeningIssue> check_openings(const WallSpec& spec, std::vector<std::size_t>* accepted) {
   if (accepted) accepted->clear();
-  if (!wall_problem(spec).empty()) return {};
+  const double area = signed_area(spec.outline);
+  if (!wall_problem(spec, area).empty()) return {};
   std::vector<Accepted> cut;
   Ring outline;
-  counter_clockwise(spec.outline, outline);
+  counter_clockwise(spec.outline, area, outline);
   std::vector<OpeningIssue> issues = validate(outline, spec, cut);
   if (accepted) {
     for (const Accepted& c : cut) accepted->push_back(c.index);
@@ -865,8 +903,12 @@ const WallResult& build_wall(const WallSpec& spec, const WallFrame& frame, Mesh&
   return w.result;
 }
 
-std::optional<WallPlacement> place_wall(Vec3 base_start, Vec3 base_end, double height,
-                                        double thickness, WallAlignment alignment) {
+namespace {
+
+// place_wall's frame, and the wall's length; nullopt as documented there.
+std::optional<std::pair<WallFrame, double>> frame_and_length(Vec3 base_start, Vec3 base_end,
+                                                             double height, double thickness,
+                                                             WallAlignment alignment) {
   const bool inputs_finite = std::isfinite(base_start.x) && std::isfinite(base_start.y) &&
                              std::isfinite(base_start.z) && std::isfinite(base_end.x) &&
                              std::isfinite(base_end.y) && std::isfinite(base_end.z) &&
@@ -875,19 +917,38 @@ std::optional<WallPlacement> place_wall(Vec3 base_start, Vec3 base_end, double h
   const Vec3 run{base_end.x - base_start.x, base_end.y - base_start.y, 0};
   const double len = length(run);
   if (len <= kEps) return std::nullopt;
-  WallPlacement w;
-  w.frame.u_axis = run / len;
-  w.frame.v_axis = {0, 0, 1};
-  w.frame.normal = cross(w.frame.u_axis, w.frame.v_axis);
+  WallFrame frame;
+  frame.u_axis = run / len;
+  frame.v_axis = {0, 0, 1};
+  frame.normal = cross(frame.u_axis, frame.v_axis);
   const double shift = alignment == WallAlignment::kInside   ? thickness
                        : alignment == WallAlignment::kCenter ? thickness / 2
                                                              : 0;
-  w.frame.origin = base_start - w.frame.normal * shift;
+  frame.origin = base_start - frame.normal * shift;
+  return std::pair{frame, len};
+}
+
+}  // namespace
+
+std::optional<WallPlacement> place_wall(Vec3 base_start, Vec3 base_end, double height,
+                                        double thickness, WallAlignment alignment) {
+  const auto placed = frame_and_length(base_start, base_end, height, thickness, alignment);
+  if (!placed) return std::nullopt;
+  WallPlacement w;
+  w.frame = placed->first;
+  const double len = placed->second;
   w.outline = {{0, 0}, {len, 0}, {len, height}, {0, height}};
   w.length = len;
   w.height = height;
   w.thickness = thickness;
   return w;
+}
+
+std::optional<WallFrame> place_wall_frame(Vec3 base_start, Vec3 base_end, double height,
+                                          double thickness, WallAlignment alignment) {
+  const auto placed = frame_and_length(base_start, base_end, height, thickness, alignment);
+  if (!placed) return std::nullopt;
+  return placed->first;
 }
 
 }  // namespace insula::kernel

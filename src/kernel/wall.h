@@ -189,4 +189,10 @@ std::optional<WallPlacement> place_wall(Vec3 base_start, Vec3 base_end, double h
                                         double thickness,
                                         WallAlignment alignment = WallAlignment::kInside);
 
+// place_wall's frame alone, without the outline ring (nothing allocated), for callers that build
+// their own outline, e.g. wall after wall of a storey. nullopt in the same cases as place_wall.
+std::optional<WallFrame> place_wall_frame(Vec3 base_start, Vec3 base_end, double height,
+                                          double thickness,
+                                          WallAlignment alignment = WallAlignment::kInside);
+
 }  // namespace insula::kernel

@@ -30,26 +30,33 @@ bool outer_side(const PlanWall& wall) {
   return wall.right == kExteriorSide || wall.right == kDeadZoneSide;
 }
 
-// Near the segment's bounding box (a cheap test before the distance).
-bool near_box(Vec2 p, Vec2 a, Vec2 b) {
-  return p.x >= std::min(a.x, b.x) - kTouch && p.x <= std::max(a.x, b.x) + kTouch &&
-         p.y >= std::min(a.y, b.y) - kTouch && p.y <= std::max(a.y, b.y) + kTouch;
-}
+// An outer piece with its bounding box grown by kTouch (a cheap test before the distance).
+struct OuterWall {
+  const PlanWall* wall;
+  Vec2 lo;
+  Vec2 hi;
+
+  bool near(Vec2 p) const { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
+};
 
 // The storey's outer pieces (exterior or dead-zone side), listed once per storey: the corner tests
 // below look at them for every piece, and the inner pieces are most of the storey's walls.
-std::vector<const PlanWall*> outer_walls(const PlanStorey& storey) {
-  std::vector<const PlanWall*> out;
-  for (const PlanWall& w : storey.walls)
-    if (outer_side(w)) out.push_back(&w);
+std::vector<OuterWall> outer_walls(const PlanStorey& storey) {
+  std::vector<OuterWall> out;
+  for (const PlanWall& w : storey.walls) {
+    if (!outer_side(w)) continue;
+    out.push_back({&w,
+                   {std::min(w.a.x, w.b.x) - kTouch, std::min(w.a.y, w.b.y) - kTouch},
+                   {std::max(w.a.x, w.b.x) + kTouch, std::max(w.a.y, w.b.y) + kTouch}});
+  }
   return out;
 }
 
 // A point of the storey's outline (an outer wall's reference line).
-bool on_outline(const std::vector<const PlanWall*>& outer, Vec2 p) {
-  for (const PlanWall* w : outer) {
-    if (near_box(p, w->a, w->b) &&
-        kernel::squared_distance_to_segment(p, w->a, w->b) < kTouch * kTouch) {
+bool on_outline(const std::vector<OuterWall>& outer, Vec2 p) {
+  for (const OuterWall& w : outer) {
+    if (w.near(p) &&
+        kernel::squared_distance_to_segment(p, w.wall->a, w.wall->b) < kTouch * kTouch) {
       return true;
     }
   }
@@ -57,8 +64,9 @@ bool on_outline(const std::vector<const PlanWall*>& outer, Vec2 p) {
 }
 
 // The outer piece that starts where `wall` ends (its successor along the outline), or null.
-const PlanWall* next_outer(const std::vector<const PlanWall*>& outer, const PlanWall& wall) {
-  for (const PlanWall* w : outer) {
+const PlanWall* next_outer(const std::vector<OuterWall>& outer, const PlanWall& wall) {
+  for (const OuterWall& o : outer) {
+    const PlanWall* w = o.wall;
     if (w != &wall && std::abs(w->a.x - wall.b.x) < kTouch &&
         std::abs(w->a.y - wall.b.y) < kTouch) {
       return w;
@@ -66,8 +74,9 @@ const PlanWall* next_outer(const std::vector<const PlanWall*>& outer, const Plan
   }
   return nullptr;
 }
-const PlanWall* previous_outer(const std::vector<const PlanWall*>& outer, const PlanWall& wall) {
-  for (const PlanWall* w : outer) {
+const PlanWall* previous_outer(const std::vector<OuterWall>& outer, const PlanWall& wall) {
+  for (const OuterWall& o : outer) {
+    const PlanWall* w = o.wall;
     if (w != &wall && std::abs(w->b.x - wall.a.x) < kTouch &&
         std::abs(w->b.y - wall.a.y) < kTouch) {
       return w;
@@ -80,7 +89,7 @@ bool reflex(Vec2 incoming, Vec2 outgoing) {
   return kernel::cross(incoming, outgoing) < -1e-9;
 }
 
-WallGeometry place(const std::vector<const PlanWall*>& outer, const PlanWall& wall,
+WallGeometry place(const std::vector<OuterWall>& outer, const PlanWall& wall,
                    double outer_thickness) {
   WallGeometry g;
   const double length = kernel::length(wall.b - wall.a);
@@ -225,7 +234,7 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
         {{0, sill, 0, height, 0, 8}, false, false, nullptr, w.a, w.b});
   }
   std::uint32_t face_id = 0;
-  const std::vector<const PlanWall*> outer = outer_walls(storey);
+  const std::vector<OuterWall> outer = outer_walls(storey);
   out.walls.reserve(storey.walls.size());
   // Room for the whole storey at once (the mesh would otherwise regrow a dozen times): a plain wall
   // is 8 vertices and 6 faces, an opening adds 8 vertices and 4 faces, and its frames 6 (door) or
@@ -241,8 +250,8 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
   spec.policy = kernel::OpeningPolicy::kSkip;
   for (std::size_t i = 0; i < storey.walls.size(); ++i) {
     const PlanWall& wall = storey.walls[i];
-    WallGeometry g = place(outer, wall, c.rules.outer_wall_thickness);
-    out.walls.push_back(g);
+    out.walls.push_back(place(outer, wall, c.rules.outer_wall_thickness));
+    const WallGeometry& g = out.walls.back();  // out.walls is reserved: stays in place
     if (!(g.length > kTouch) || !(g.thickness > 0)) continue;
     spec.openings.clear();
     spec.thickness = g.thickness;
@@ -255,12 +264,12 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
       a.opening.width = std::abs(u1 - u0);
       spec.openings.push_back(a.opening);
     }
-    const auto placement = kernel::place_wall(
+    const auto frame = kernel::place_wall_frame(
         kernel::lift(g.start, z0), kernel::lift(g.start + g.dir * g.length, z0), h, g.thickness,
         g.exterior ? kernel::WallAlignment::kInside : kernel::WallAlignment::kCenter);
-    if (!placement) continue;
+    if (!frame) continue;
     // Appended straight into the storey's mesh: no mesh allocated and copied per wall.
-    const kernel::WallResult& built = kernel::build_wall(spec, placement->frame, mesh, workspace);
+    const kernel::WallResult& built = kernel::build_wall(spec, *frame, mesh, workspace);
     if (!built.ok()) {
       c.warn("storey " + std::to_string(storey.level) + ": wall " + std::to_string(i) +
              " of room '" + storey.rooms[static_cast<std::size_t>(wall.left)].symbol +
@@ -278,8 +287,7 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
     std::vector<std::pair<double, double>> gaps;
     for (std::size_t k : built.cut) {
       const Asked& a = asked[i][k];
-      if (c.options.frames)
-        add_frames(placement->frame, g.thickness, a.opening, a.door, c.options, mesh);
+      if (c.options.frames) add_frames(*frame, g.thickness, a.opening, a.door, c.options, mesh);
       if (a.door) {
         gaps.emplace_back(a.opening.u, a.opening.u + a.opening.width);
         plan_door(g, wall, a, plan);
