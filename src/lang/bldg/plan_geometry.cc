@@ -254,9 +254,10 @@ void simplify(Polygon& polygon) {
 }
 
 int wall_count(const Polygon& polygon) {
-  Polygon copy{polygon.outer, {}};
-  simplify_ring(copy.outer);
-  return static_cast<int>(copy.outer.size());
+  thread_local Ring scratch;  // reused: the walls stage counts every room's walls
+  scratch.assign(polygon.outer.begin(), polygon.outer.end());
+  simplify_ring(scratch);
+  return static_cast<int>(scratch.size());
 }
 
 std::vector<EdgePiece> boundary_pieces(const Polygon& cell,
@@ -278,6 +279,7 @@ std::vector<EdgePiece> boundary_pieces(const Polygon& cell, const kernel::Bounds
     if (bounds_touch(cell_box, boxes[k], kLineTolerance)) near.push_back(k);
   }
   std::vector<EdgePiece> out;
+  out.reserve(cell.outer.size() + 4);
   append_pieces(cell, Neighbours{others, boxes, near}, out);
   return out;
 }
@@ -390,20 +392,19 @@ void weld(const std::vector<Polygon*>& cells, double tolerance) {
     for (Ring& h : c->holes)
       for (Vec2& v : h) points.push_back(&v);
   }
-  // Vertex clusters: sorted by x, each point takes the first earlier representative in reach.
-  std::vector<std::size_t> order(points.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return points[a]->x < points[b]->x || (points[a]->x == points[b]->x && a < b);
-  });
-  const double tol2 = tolerance * tolerance;
-  auto dist2 = [](Vec2 a, Vec2 b) { return kernel::dot(a - b, a - b); };
+  // Vertex clusters: sorted by x (then index), each point takes the first earlier representative
+  // in reach. The keys are sorted with the points' indices, not through the pointers.
   std::vector<Vec2> original(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) original[i] = *points[i];
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const std::size_t i = order[k];
+  std::vector<std::pair<double, std::size_t>> by_x(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) by_x[i] = {original[i].x, i};
+  std::sort(by_x.begin(), by_x.end());
+  const double tol2 = tolerance * tolerance;
+  auto dist2 = [](Vec2 a, Vec2 b) { return kernel::dot(a - b, a - b); };
+  for (std::size_t k = 0; k < by_x.size(); ++k) {
+    const std::size_t i = by_x[k].second;
     for (std::size_t m = k; m-- > 0;) {
-      const std::size_t j = order[m];
+      const std::size_t j = by_x[m].second;
       if (original[i].x - original[j].x > tolerance) break;
       if (dist2(original[i], original[j]) <= tol2) {
         *points[i] = *points[j];

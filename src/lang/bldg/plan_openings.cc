@@ -17,10 +17,10 @@ struct Interval {
   double hi;
 };
 
-// Intervals of p->q (metres from p) occupied by openings of the storey on the same line.
-std::vector<Interval> occupied(const PlanStorey& storey, Vec2 p, Vec2 q) {
-  const Vec2 u = kernel::normalized(q - p);
-  std::vector<Interval> out;
+// Intervals of the line through p with unit direction u (metres from p) occupied by openings of
+// the storey on that line, into `out` (cleared first).
+void occupied(const PlanStorey& storey, Vec2 p, Vec2 u, std::vector<Interval>& out) {
+  out.clear();
   auto add = [&](Vec2 a, Vec2 b) {
     if (std::abs(kernel::cross(u, a - p)) > 1e-4 || std::abs(kernel::cross(u, b - p)) > 1e-4)
       return;
@@ -31,7 +31,6 @@ std::vector<Interval> occupied(const PlanStorey& storey, Vec2 p, Vec2 q) {
   for (const PlanDoor& d : storey.doors) add(d.a, d.b);
   for (const PlanDoor& d : storey.entrances) add(d.a, d.b);
   for (const PlanWindow& w : storey.windows) add(w.a, w.b);
-  return out;
 }
 
 bool clear_of(const std::vector<Polygon>& keep_out, const Polygon& zone) {
@@ -41,21 +40,25 @@ bool clear_of(const std::vector<Polygon>& keep_out, const Polygon& zone) {
 
 }  // namespace
 
-StoreyCells::StoreyCells(const PlanStorey& storey) {
+StoreyCells::StoreyCells(const PlanStorey& storey) : storey_(&storey) {
   others_.reserve(storey.rooms.size() + storey.dead_zones.size());
   for (const PlanRoom& r : storey.rooms) others_.push_back(&r.cell);
   for (const PlanDeadZone& z : storey.dead_zones) others_.push_back(&z.cell);
   boxes_.reserve(others_.size());
   for (const Polygon* cell : others_) boxes_.push_back(box_of(*cell));
+  pieces_.resize(others_.size());
+  done_.assign(others_.size(), false);
 }
 
-std::vector<EdgePiece> StoreyCells::pieces(int index) const {
+const std::vector<EdgePiece>& StoreyCells::pieces(int index) const {
   const auto i = static_cast<std::size_t>(index);
+  if (done_[i]) return pieces_[i];
   const Polygon* cell = others_[i];
   others_[i] = nullptr;
-  std::vector<EdgePiece> out = boundary_pieces(*cell, boxes_[i], others_, boxes_);
+  pieces_[i] = boundary_pieces(*cell, boxes_[i], others_, boxes_);
   others_[i] = cell;
-  return out;
+  done_[i] = true;
+  return pieces_[i];
 }
 
 std::vector<EdgePiece> room_pieces(const PlanStorey& storey, int room) {
@@ -69,10 +72,14 @@ std::optional<Slot> find_slot(const PlanStorey& storey, Vec2 p, Vec2 q, double w
   const double target = prefer >= 0 ? prefer : len / 2;
   if (len < width + 2 * clearance) return std::nullopt;
   const Vec2 u = (q - p) / len;
-  std::vector<Interval> busy = occupied(storey, p, q);
-  std::vector<Interval> free = {{clearance, len - clearance}};
+  // Scratch kept from call to call (every door and window asks here, some several times).
+  thread_local std::vector<Interval> busy;
+  thread_local std::vector<Interval> free;
+  thread_local std::vector<Interval> next;
+  occupied(storey, p, u, busy);
+  free.assign(1, {clearance, len - clearance});
   for (const Interval& o : busy) {
-    std::vector<Interval> next;
+    next.clear();
     for (const Interval& f : free) {
       const double lo = o.lo - clearance;
       const double hi = o.hi + clearance;
@@ -83,13 +90,13 @@ std::optional<Slot> find_slot(const PlanStorey& storey, Vec2 p, Vec2 q, double w
       if (lo > f.lo) next.push_back({f.lo, lo});
       if (hi < f.hi) next.push_back({hi, f.hi});
     }
-    free = std::move(next);
+    std::swap(free, next);
   }
   // Candidates: the position nearest the middle in each free interval, then positions sliding
   // away from it, so a stair beside the middle does not rule the wall out.
   std::vector<double> centres;
   // Without keep-out areas the first candidate is taken: the earliest listed of those nearest the
-  // target, which is what the stable sort below puts first, found without listing the others.
+  // target, which is what the stable sort below puts first, found without listing or sorting.
   const bool first_wins = keep_out.empty();
   double best = 0;
   bool have_best = false;
@@ -108,7 +115,10 @@ std::optional<Slot> find_slot(const PlanStorey& storey, Vec2 p, Vec2 q, double w
     consider(std::clamp(target, lo, hi));
     for (double s = lo; s <= hi + 1e-9; s += 0.25) consider(std::min(s, hi));
   }
-  if (have_best) centres.push_back(best);
+  if (first_wins) {
+    if (!have_best) return std::nullopt;
+    return Slot{p + u * (best - width / 2), p + u * (best + width / 2), p + u * best};
+  }
   std::stable_sort(centres.begin(), centres.end(),
                    [&](double x, double y) { return std::abs(x - target) < std::abs(y - target); });
   const Vec2 n = kernel::perp(u);

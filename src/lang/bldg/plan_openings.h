@@ -20,17 +20,24 @@ struct Slot {
 
 // The cells of a storey, rooms then dead zones, with their boxes (box_of), taken once for stages
 // that list the boundary pieces of many rooms of the storey while the cells do not change: each
-// listing would otherwise recompute the box of every cell. Holds pointers into the storey.
+// listing would otherwise recompute the box of every cell. Each cell's pieces are computed on
+// first request and kept (the windows and the walls stages ask for the same ones). Holds pointers
+// into the storey: valid while its rooms and dead zones are neither moved nor edited.
 class StoreyCells {
  public:
   explicit StoreyCells(const PlanStorey& storey);
   // boundary_pieces of cell `index` (a room, or rooms.size() + k for dead zone k) against all the
   // others.
-  std::vector<EdgePiece> pieces(int index) const;
+  const std::vector<EdgePiece>& pieces(int index) const;
+  int size() const { return static_cast<int>(others_.size()); }
+  const PlanStorey* storey() const { return storey_; }
 
  private:
+  const PlanStorey* storey_;
   mutable std::vector<const kernel::Polygon*> others_;  // the cell asked about is nulled per call
   std::vector<kernel::Bounds2> boxes_;
+  mutable std::vector<std::vector<EdgePiece>> pieces_;
+  mutable std::vector<bool> done_;
 };
 
 // The pieces of room `room`'s boundary with the storey's room index on the other side: -1 for the

@@ -182,8 +182,11 @@ void place_entrances(Work& work, FloorPlan& plan) {
 void place_windows(Work& work, FloorPlan& plan) {
   const Restrictions& r = *work.restrictions;
   // Window transitions by room symbol, in grammar order.
+  work.storey_cells.clear();
+  work.storey_cells.reserve(plan.storeys.size());
   for (PlanStorey& storey : plan.storeys) {
-    const StoreyCells cells(storey);  // windows do not move cells
+    // Windows do not move cells: their pieces are kept for build_walls.
+    const StoreyCells& cells = work.storey_cells.emplace_back(storey);
     for (std::size_t i = 0; i < storey.rooms.size(); ++i) {
       PlanRoom& room = storey.rooms[i];
       std::vector<const Transition*> named;

@@ -10,6 +10,7 @@
 #include "kernel/polygon.h"
 #include "lang/bldg/floorplan.h"
 #include "lang/bldg/model.h"
+#include "lang/bldg/plan_openings.h"
 
 namespace insula::lang::bldg::plan {
 
@@ -64,6 +65,9 @@ struct Work {
   std::vector<double> door_widths;  // default door width per part (floorplan.h)
   double clearance = 0;  // kept free at each end of a door or window (wall junctions, jambs)
   int levels = 0;        // storeys of the tallest non-disposable part
+  // The settled cells of each storey of the FloorPlan with their boundary pieces, taken by
+  // place_windows and reused by build_walls (no stage between them moves a cell).
+  std::vector<StoreyCells> storey_cells;
   std::string file;
 };
 

@@ -69,13 +69,13 @@ bool convex(const kernel::Ring& ring) {
 }
 
 // Sutherland-Hodgman against sign x (coord - t) <= 0: exact for a convex ring (the cut lies
-// exactly on the line, with no boolean grid), which is most cells.
-kernel::Ring clip(const kernel::Ring& ring, bool along_x, double t, double sign) {
-  kernel::Ring out;
+// exactly on the line, with no boolean grid), which is most cells. Writes into `out` (cleared).
+void clip(const kernel::Ring& ring, bool along_x, double t, double sign, kernel::Ring& out) {
+  out.clear();
   const std::size_t n = ring.size();
   for (std::size_t i = 0; i < n; ++i) {
     const kernel::Vec2 p = ring[i];
-    const kernel::Vec2 q = ring[(i + 1) % n];
+    const kernel::Vec2 q = ring[i + 1 < n ? i + 1 : 0];
     const double cp = sign * ((along_x ? p.x : p.y) - t);
     const double cq = sign * ((along_x ? q.x : q.y) - t);
     if (cp <= 0) out.push_back(p);
@@ -85,7 +85,6 @@ kernel::Ring clip(const kernel::Ring& ring, bool along_x, double t, double sign)
       out.push_back(x);
     }
   }
-  return out;
 }
 
 // On a concave or holed region, a cut passing within kSnap (1 m) of a vertex strictly inside the
@@ -94,8 +93,8 @@ kernel::Ring clip(const kernel::Ring& ring, bool along_x, double t, double sign)
 // times the region's width (docs/bldg-floorplan.md). Convex regions have no such vertex.
 constexpr double kSnap = 1.0;
 
-double snap_to_corner(const std::vector<Polygon>& region, bool along_x, double previous, double t,
-                      double lo, double hi) {
+double snap_to_corner(const std::vector<Polygon>& region, bool simple, bool along_x,
+                      double previous, double t, double lo, double hi) {
   double best = t;
   double best_d = kSnap;
   auto consider = [&](const kernel::Ring& ring) {
@@ -109,7 +108,6 @@ double snap_to_corner(const std::vector<Polygon>& region, bool along_x, double p
       }
     }
   };
-  const bool simple = region.size() == 1 && region[0].holes.empty() && convex(region[0].outer);
   if (simple) return t;
   for (const Polygon& p : region) {
     consider(p.outer);
@@ -140,6 +138,8 @@ std::vector<std::vector<Polygon>> split_region(const std::vector<Polygon>& regio
   double total_weight = 0;
   for (double w : weights) total_weight += w;
   const AreaFunction area{region, along_x, s};
+  // One convex ring (most regions): cuts need no corner snapping and cells are clipped directly.
+  const bool fast = region.size() == 1 && region[0].holes.empty() && convex(region[0].outer);
   // Cut coordinates: cuts[i] ends child i; the first starts at the minimum rectangle (Eq. 1).
   std::vector<double> cuts(weights.size() + 1);
   cuts[0] = lo;
@@ -150,18 +150,25 @@ std::vector<std::vector<Polygon>> split_region(const std::vector<Polygon>& regio
     cumulative += relative;
     cuts[i + 1] = place_cut(area, cuts[i], extent * relative, extent, step, total_area * cumulative,
                             1e-9 * total_area, hi);
-    cuts[i + 1] = snap_to_corner(region, along_x, cuts[i], cuts[i + 1], lo, hi);
+    cuts[i + 1] = snap_to_corner(region, fast, along_x, cuts[i], cuts[i + 1], lo, hi);
   }
   // Eq. 3: each auxiliary rectangle (reaching past the region across the axis, and past the
   // minimum rectangle at both ends of the row) intersected with the region.
   const double pad = 1 + 0.01 * std::max(box.max.x - box.min.x, box.max.y - box.min.y);
-  const bool fast = region.size() == 1 && region[0].holes.empty() && convex(region[0].outer);
   for (std::size_t i = 0; i < weights.size(); ++i) {
     if (fast) {
-      kernel::Ring ring = region[0].outer;
-      if (i > 0) ring = clip(ring, along_x, cuts[i], -1);
-      if (i + 1 < weights.size()) ring = clip(ring, along_x, cuts[i + 1], 1);
-      Polygon p{std::move(ring), {}};
+      thread_local kernel::Ring after_start;  // scratch rings reused from cell to cell
+      thread_local kernel::Ring before_end;
+      const kernel::Ring* ring = &region[0].outer;
+      if (i > 0) {
+        clip(*ring, along_x, cuts[i], -1, after_start);
+        ring = &after_start;
+      }
+      if (i + 1 < weights.size()) {
+        clip(*ring, along_x, cuts[i + 1], 1, before_end);
+        ring = &before_end;
+      }
+      Polygon p{*ring, {}};
       simplify(p);
       if (p.outer.size() >= 3 && kernel::area(p) > 1e-9) cells[i].push_back(std::move(p));
       continue;

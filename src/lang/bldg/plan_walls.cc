@@ -1,8 +1,10 @@
 // Walls of the final plan: every boundary piece of every cell once, with the rooms on both sides
 // (floorplan.h, PlanWall), then the wall each opening sits on and the rooms' door neighbours.
 #include <algorithm>
+#include <optional>
 
 #include "lang/bldg/plan_geometry.h"
+#include "lang/bldg/plan_openings.h"
 #include "lang/bldg/plan_stages.h"
 
 namespace insula::lang::bldg::plan {
@@ -10,21 +12,11 @@ namespace {
 
 using kernel::Polygon;
 
-void storey_walls(const Restrictions& r, PlanStorey& storey) {
+void storey_walls(const Restrictions& r, const StoreyCells& cells, PlanStorey& storey) {
   const int rooms = static_cast<int>(storey.rooms.size());
-  std::vector<const Polygon*> cells;
-  for (const PlanRoom& room : storey.rooms) cells.push_back(&room.cell);
-  for (const PlanDeadZone& z : storey.dead_zones) cells.push_back(&z.cell);
-  std::vector<kernel::Bounds2> boxes;
-  boxes.reserve(cells.size());
-  for (const Polygon* cell : cells) boxes.push_back(box_of(*cell));
-  std::vector<const Polygon*> others = cells;
-  for (int i = 0; i < static_cast<int>(cells.size()); ++i) {
-    others[static_cast<std::size_t>(i)] = nullptr;
+  for (int i = 0; i < cells.size(); ++i) {
     const bool dead = i >= rooms;
-    const std::vector<EdgePiece> pieces = boundary_pieces(
-        *cells[static_cast<std::size_t>(i)], boxes[static_cast<std::size_t>(i)], others, boxes);
-    others[static_cast<std::size_t>(i)] = cells[static_cast<std::size_t>(i)];
+    const std::vector<EdgePiece>& pieces = cells.pieces(i);
     for (const EdgePiece& piece : pieces) {
       PlanWall wall;
       wall.a = piece.a;
@@ -84,9 +76,14 @@ void onto_wall(const PlanWall& wall, kernel::Vec2& a, kernel::Vec2& b, kernel::V
 }  // namespace
 
 void build_walls(Work& work, FloorPlan& plan) {
-  for (PlanStorey& storey : plan.storeys) {
+  for (std::size_t s = 0; s < plan.storeys.size(); ++s) {
+    PlanStorey& storey = plan.storeys[s];
     storey.walls.clear();
-    storey_walls(*work.restrictions, storey);
+    // The pieces place_windows listed, when it ran on these storeys; else listed here.
+    const bool cached = s < work.storey_cells.size() && work.storey_cells[s].storey() == &storey;
+    std::optional<StoreyCells> fresh;
+    if (!cached) fresh.emplace(storey);
+    storey_walls(*work.restrictions, cached ? work.storey_cells[s] : *fresh, storey);
     const std::vector<std::vector<int>> by_room = walls_by_room(storey);
     for (PlanDoor& d : storey.doors) {
       d.wall = wall_of(storey, by_room, d.room_a, d.room_b, d.center);
@@ -115,6 +112,7 @@ void build_walls(Work& work, FloorPlan& plan) {
                            room.neighbors.end());
     }
   }
+  work.storey_cells.clear();
 }
 
 }  // namespace insula::lang::bldg::plan
