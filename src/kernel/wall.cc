@@ -74,7 +74,6 @@ double squared_segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 
 // Point p lies within `tolerance` of segment ab.
 bool point_within(Vec2 p, Vec2 a, Vec2 b, double tolerance) {
-  if (box_gap(p, p, a, b) > tolerance) return false;
   return squared_distance_to_segment(p, a, b) <= tolerance * tolerance;
 }
 
@@ -207,13 +206,19 @@ void append_arch(const Opening& o, Ring& ring) {
   }
 }
 
-Ring make_ring(const Opening& o) {
+// The opening's ring (see opening_ring) written into `ring`, whose storage is reused.
+void fill_ring(const Opening& o, Ring& ring) {
   const double u1 = o.u + o.width;
   const double top = o.sill + o.height - (o.arch_rise > 0 ? o.arch_rise : 0);
-  Ring ring{{o.u, o.sill}, {o.u, top}};
+  ring.assign({{o.u, o.sill}, {o.u, top}});
   if (o.arch_rise > 0) append_arch(o, ring);
   ring.push_back({u1, top});
   ring.push_back({u1, o.sill});
+}
+
+Ring make_ring(const Opening& o) {
+  Ring ring;
+  fill_ring(o, ring);
   return ring;
 }
 
@@ -335,8 +340,10 @@ std::string describe(std::size_t index, const Finding& f, std::optional<std::siz
 }
 
 // Greedy validation in input order against the outline and the earlier accepted openings.
+// `spare` (optional) holds rings of an earlier wall whose storage the accepted openings take over.
 std::vector<OpeningIssue> validate(const Ring& outline, const WallSpec& spec,
-                                   std::vector<Accepted>& accepted) {
+                                   std::vector<Accepted>& accepted,
+                                   std::vector<Ring>* spare = nullptr) {
   std::vector<OpeningIssue> issues;
   const double margin = spec.min_margin;
   for (std::size_t i = 0; i < spec.openings.size(); ++i) {
@@ -350,7 +357,11 @@ std::vector<OpeningIssue> validate(const Ring& outline, const WallSpec& spec,
     }
     c.host = find_host(outline, c.opening);
     if (c.host >= 0) c.opening.sill = outline[static_cast<std::size_t>(c.host)].y;
-    c.ring = make_ring(c.opening);
+    if (spare != nullptr && !spare->empty()) {
+      c.ring = std::move(spare->back());
+      spare->pop_back();
+    }
+    fill_ring(c.opening, c.ring);
     c.box = ring_box(c.ring);
     std::optional<Finding> finding = against_outline(outline, c, margin);
     std::optional<std::size_t> other;
@@ -796,6 +807,7 @@ void counter_clockwise(const Ring& ring, double area, Ring& out) {
 struct WallWorkspace::Buffers {
   Ring outline;  // the spec's outline, counter-clockwise
   std::vector<Accepted> cut;
+  std::vector<Ring> spare_rings;  // the rings of `cut` between walls
   Boundary boundary;
   MonotonePartition partition;
   PieceWalker walker;
@@ -830,8 +842,9 @@ bool partition_wall(const WallSpec& spec, WallWorkspace::Buffers& w, WallResult&
     return false;
   }
   counter_clockwise(spec.outline, area, w.outline);
+  for (Accepted& c : w.cut) w.spare_rings.push_back(std::move(c.ring));
   w.cut.clear();
-  result.issues = validate(w.outline, spec, w.cut);
+  result.issues = validate(w.outline, spec, w.cut, &w.spare_rings);
   if (!result.issues.empty() && spec.policy == OpeningPolicy::kFail) {
     result.status = WallStatus::kRejectedOpening;
     result.message = result.issues.front().message;

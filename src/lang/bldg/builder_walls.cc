@@ -41,20 +41,29 @@ struct OuterWall {
 
 // The storey's outer pieces (exterior or dead-zone side), listed once per storey: the corner tests
 // below look at them for every piece, and the inner pieces are most of the storey's walls.
-std::vector<OuterWall> outer_walls(const PlanStorey& storey) {
-  std::vector<OuterWall> out;
+struct Outline {
+  std::vector<OuterWall> pieces;   // in plan order (next_outer and previous_outer take the first)
+  std::vector<OuterWall> by_left;  // by lo.x: on_outline stops at the first box right of the point
+};
+
+Outline outer_walls(const PlanStorey& storey) {
+  Outline out;
   for (const PlanWall& w : storey.walls) {
     if (!outer_side(w)) continue;
-    out.push_back({&w,
-                   {std::min(w.a.x, w.b.x) - kTouch, std::min(w.a.y, w.b.y) - kTouch},
-                   {std::max(w.a.x, w.b.x) + kTouch, std::max(w.a.y, w.b.y) + kTouch}});
+    out.pieces.push_back({&w,
+                          {std::min(w.a.x, w.b.x) - kTouch, std::min(w.a.y, w.b.y) - kTouch},
+                          {std::max(w.a.x, w.b.x) + kTouch, std::max(w.a.y, w.b.y) + kTouch}});
   }
+  out.by_left = out.pieces;
+  std::sort(out.by_left.begin(), out.by_left.end(),
+            [](const OuterWall& a, const OuterWall& b) { return a.lo.x < b.lo.x; });
   return out;
 }
 
 // A point of the storey's outline (an outer wall's reference line).
-bool on_outline(const std::vector<OuterWall>& outer, Vec2 p) {
-  for (const OuterWall& w : outer) {
+bool on_outline(const Outline& outline, Vec2 p) {
+  for (const OuterWall& w : outline.by_left) {
+    if (w.lo.x > p.x) break;  // this box and all after it lie right of p
     if (w.near(p) &&
         kernel::squared_distance_to_segment(p, w.wall->a, w.wall->b) < kTouch * kTouch) {
       return true;
@@ -64,8 +73,8 @@ bool on_outline(const std::vector<OuterWall>& outer, Vec2 p) {
 }
 
 // The outer piece that starts where `wall` ends (its successor along the outline), or null.
-const PlanWall* next_outer(const std::vector<OuterWall>& outer, const PlanWall& wall) {
-  for (const OuterWall& o : outer) {
+const PlanWall* next_outer(const Outline& outline, const PlanWall& wall) {
+  for (const OuterWall& o : outline.pieces) {
     const PlanWall* w = o.wall;
     if (w != &wall && std::abs(w->a.x - wall.b.x) < kTouch &&
         std::abs(w->a.y - wall.b.y) < kTouch) {
@@ -74,8 +83,8 @@ const PlanWall* next_outer(const std::vector<OuterWall>& outer, const PlanWall& 
   }
   return nullptr;
 }
-const PlanWall* previous_outer(const std::vector<OuterWall>& outer, const PlanWall& wall) {
-  for (const OuterWall& o : outer) {
+const PlanWall* previous_outer(const Outline& outline, const PlanWall& wall) {
+  for (const OuterWall& o : outline.pieces) {
     const PlanWall* w = o.wall;
     if (w != &wall && std::abs(w->b.x - wall.a.x) < kTouch &&
         std::abs(w->b.y - wall.a.y) < kTouch) {
@@ -89,8 +98,7 @@ bool reflex(Vec2 incoming, Vec2 outgoing) {
   return kernel::cross(incoming, outgoing) < -1e-9;
 }
 
-WallGeometry place(const std::vector<OuterWall>& outer, const PlanWall& wall,
-                   double outer_thickness) {
+WallGeometry place(const Outline& outer, const PlanWall& wall, double outer_thickness) {
   WallGeometry g;
   const double length = kernel::length(wall.b - wall.a);
   g.dir = (wall.b - wall.a) / length;
@@ -234,7 +242,7 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
         {{0, sill, 0, height, 0, 8}, false, false, nullptr, w.a, w.b});
   }
   std::uint32_t face_id = 0;
-  const std::vector<OuterWall> outer = outer_walls(storey);
+  const Outline outer = outer_walls(storey);
   out.walls.reserve(storey.walls.size());
   // Room for the whole storey at once (the mesh would otherwise regrow a dozen times): a plain wall
   // is 8 vertices and 6 faces, an opening adds 8 vertices and 4 faces, and its frames 6 (door) or
