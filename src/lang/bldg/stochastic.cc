@@ -751,10 +751,15 @@ class Generator {
     // A window needs window_width (1.2) plus the engine's clearance at both ends on one straight
     // exterior wall.
     constexpr double kWindowRun = 1.2 + 0.5 + 0.5;
+    std::vector<Rect> notches;  // the disposable rooms, gathered once for every room's runs
+    for (const GenRoom& room : rooms_) {
+      if (room.disposable) notches.push_back(room.rect);
+    }
+    std::vector<double> runs;
     for (std::size_t i = 0; i < rooms_.size(); ++i) {
       GenRoom& room = rooms_[i];
       if (room.disposable) continue;
-      std::vector<double> runs = exterior_runs(room.rect);
+      exterior_runs(room.rect, notches, runs);
       std::sort(runs.rbegin(), runs.rend());
       // The entrance room keeps its longest wall for the door (the engine puts no window beside
       // an entrance door).
@@ -769,10 +774,11 @@ class Generator {
     }
   }
 
-  // Straight exterior wall runs of a room: its sides on the outline, and the parts of its sides
-  // along disposable rooms (exterior once the notch is removed, §3.2).
-  std::vector<double> exterior_runs(const Rect& r) const {
-    std::vector<double> runs;
+  // Straight exterior wall runs of a room, into `runs`: its sides on the outline, and the parts
+  // of its sides along the disposable rooms' `notches` (exterior once the notch is removed, §3.2).
+  void exterior_runs(const Rect& r, const std::vector<Rect>& notches,
+                     std::vector<double>& runs) const {
+    runs.clear();
     const double sides[] = {boundary_length(Rect{r.x0, r.y0, r.x0, r.y1}, outline_),
                             boundary_length(Rect{r.x1, r.y0, r.x1, r.y1}, outline_),
                             boundary_length(Rect{r.x0, r.y0, r.x1, r.y0}, outline_),
@@ -780,12 +786,10 @@ class Generator {
     for (const double side : sides) {
       if (side > 0) runs.push_back(side);
     }
-    for (const GenRoom& other : rooms_) {
-      if (!other.disposable) continue;
-      const double shared = shared_length(r, other.rect);
+    for (const Rect& notch : notches) {
+      const double shared = shared_length(r, notch);
       if (shared > 0) runs.push_back(shared);
     }
-    return runs;
   }
 
   // ---- the model ----
