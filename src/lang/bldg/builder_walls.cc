@@ -41,9 +41,44 @@ struct OuterWall {
 
 // The storey's outer pieces (exterior or dead-zone side), listed once per storey: the corner tests
 // below look at them for every piece, and the inner pieces are most of the storey's walls.
+// on_outline's question is asked for both ends of every inner piece, so the pieces are also listed
+// per column: the x range of the outline is cut into as many columns as there are pieces, and a
+// piece is listed in every column its box spans.
 struct Outline {
-  std::vector<OuterWall> pieces;   // in plan order (next_outer and previous_outer take the first)
-  std::vector<OuterWall> by_left;  // by lo.x: on_outline stops at the first box right of the point
+  std::vector<OuterWall> pieces;  // in plan order (next_outer and previous_outer take the first)
+  double x0 = 0;                  // left edge of column 0
+  double column_width = 1;
+  std::size_t columns = 0;
+  std::vector<std::uint32_t> column_start;  // column c lists column_items[start[c], start[c + 1])
+  std::vector<std::uint32_t> column_items;  // indices into pieces
+
+  // The column of x, clamped to the existing ones (monotone in x, so a box [lo, hi] is listed in
+  // every column of a point inside it).
+  std::size_t column(double x) const {
+    const double c = std::floor((x - x0) / column_width);
+    if (!(c > 0)) return 0;
+    return static_cast<std::size_t>(std::min(c, static_cast<double>(columns - 1)));
+  }
+
+  void index_columns() {
+    if (pieces.empty()) return;
+    double x1 = pieces.front().hi.x;
+    x0 = pieces.front().lo.x;
+    for (const OuterWall& w : pieces) x0 = std::min(x0, w.lo.x), x1 = std::max(x1, w.hi.x);
+    columns = pieces.size();
+    column_width = std::max((x1 - x0) / static_cast<double>(columns), 1e-3);
+    column_start.assign(columns + 2, 0);
+    for (const OuterWall& w : pieces) {  // count, then place (a counting sort)
+      for (std::size_t c = column(w.lo.x); c <= column(w.hi.x); ++c) ++column_start[c + 2];
+    }
+    for (std::size_t c = 2; c < column_start.size(); ++c) column_start[c] += column_start[c - 1];
+    column_items.resize(column_start.back());
+    for (std::uint32_t i = 0; i < pieces.size(); ++i) {
+      for (std::size_t c = column(pieces[i].lo.x); c <= column(pieces[i].hi.x); ++c) {
+        column_items[column_start[c + 1]++] = i;
+      }
+    }
+  }
 };
 
 Outline outer_walls(const PlanStorey& storey) {
@@ -54,16 +89,17 @@ Outline outer_walls(const PlanStorey& storey) {
                           {std::min(w.a.x, w.b.x) - kTouch, std::min(w.a.y, w.b.y) - kTouch},
                           {std::max(w.a.x, w.b.x) + kTouch, std::max(w.a.y, w.b.y) + kTouch}});
   }
-  out.by_left = out.pieces;
-  std::sort(out.by_left.begin(), out.by_left.end(),
-            [](const OuterWall& a, const OuterWall& b) { return a.lo.x < b.lo.x; });
+  out.index_columns();
   return out;
 }
 
-// A point of the storey's outline (an outer wall's reference line).
+// A point of the storey's outline (an outer wall's reference line). Only the pieces listed in p's
+// column can have p in their box.
 bool on_outline(const Outline& outline, Vec2 p) {
-  for (const OuterWall& w : outline.by_left) {
-    if (w.lo.x > p.x) break;  // this box and all after it lie right of p
+  if (outline.pieces.empty()) return false;
+  const std::size_t c = outline.column(p.x);
+  for (std::uint32_t k = outline.column_start[c]; k < outline.column_start[c + 1]; ++k) {
+    const OuterWall& w = outline.pieces[outline.column_items[k]];
     if (w.near(p) &&
         kernel::squared_distance_to_segment(p, w.wall->a, w.wall->b) < kTouch * kTouch) {
       return true;
