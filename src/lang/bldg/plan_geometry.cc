@@ -72,23 +72,28 @@ bool redundant(Vec2 a, Vec2 b, Vec2 c) {
   if (kernel::dot(ab, ab) < kTol2 || kernel::dot(bc, bc) < kTol2) return true;
   const double len2 = kernel::dot(ac, ac);
   if (len2 < kTol2) return false;
+  // b must lie between a and c: tested before the distance, it rules out most vertices (corners)
+  // without the square root and the division.
+  if (!(kernel::dot(ab, bc) > 0)) return false;
   const double len = std::sqrt(len2);
-  const double dist = std::abs(kernel::cross(ac, b - a)) / len;
-  return dist < kLineTolerance && kernel::dot(b - a, c - b) > 0;
+  const double dist = std::abs(kernel::cross(ac, ab)) / len;
+  return dist < kLineTolerance;
 }
 
+// Erases the redundant vertex of lowest index, again and again, until none is left. After an
+// erasure at i only the vertices beside it changed neighbours, so the scan resumes at i - 1 rather
+// than at 0 (vertices 0 .. i - 2 were kept and keep their neighbours), except when the erased
+// vertex was the first or the last, which changes vertex 0's neighbour: then it restarts at 0.
 void simplify_ring(Ring& ring) {
-  bool changed = true;
-  while (changed && ring.size() >= 3) {
-    changed = false;
-    for (std::size_t i = 0; i < ring.size() && ring.size() >= 3; ++i) {
-      const std::size_t n = ring.size();
-      if (redundant(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n])) {
-        ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
-        changed = true;
-        break;
-      }
+  std::size_t i = 0;
+  while (ring.size() >= 3 && i < ring.size()) {
+    const std::size_t n = ring.size();
+    if (!redundant(ring[i == 0 ? n - 1 : i - 1], ring[i], ring[i + 1 < n ? i + 1 : 0])) {
+      ++i;
+      continue;
     }
+    ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
+    i = (i == 0 || i == n - 1) ? 0 : i - 1;
   }
 }
 
@@ -340,18 +345,24 @@ NearLists touching_boxes(const std::vector<kernel::Bounds2>& boxes, double margi
     for (std::size_t m = k + 1; m < n && boxes[by_left[m]].min.x <= a.max.x + margin; ++m) {
       if (!bounds_touch(a, boxes[by_left[m]], margin)) continue;
       pairs.push_back({by_left[k], by_left[m]});
-      pairs.push_back({by_left[m], by_left[k]});
     }
   }
-  std::sort(pairs.begin(), pairs.end());
+  // Both directions of every pair into the rows (a counting pass, then a fill), each row sorted.
   NearLists lists;
   lists.start.assign(n + 1, 0);
-  lists.near.reserve(pairs.size());
   for (const auto& [i, j] : pairs) {
     ++lists.start[i + 1];
-    lists.near.push_back(j);
+    ++lists.start[j + 1];
   }
   for (std::size_t i = 0; i < n; ++i) lists.start[i + 1] += lists.start[i];
+  lists.near.resize(lists.start[n]);
+  std::vector<std::uint32_t> fill(lists.start.begin(), lists.start.end() - 1);
+  for (const auto& [i, j] : pairs) {
+    lists.near[fill[i]++] = j;
+    lists.near[fill[j]++] = i;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    std::sort(lists.near.begin() + lists.start[i], lists.near.begin() + lists.start[i + 1]);
   return lists;
 }
 
@@ -398,7 +409,9 @@ void weld(const std::vector<Polygon*>& cells, double tolerance) {
   for (std::size_t i = 0; i < points.size(); ++i) original[i] = *points[i];
   std::vector<std::pair<double, std::size_t>> by_x(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) by_x[i] = {original[i].x, i};
-  std::sort(by_x.begin(), by_x.end());
+  std::sort(by_x.begin(), by_x.end(), [](const auto& a, const auto& b) {
+    return a.first < b.first || (a.first == b.first && a.second < b.second);
+  });
   const double tol2 = tolerance * tolerance;
   auto dist2 = [](Vec2 a, Vec2 b) { return kernel::dot(a - b, a - b); };
   for (std::size_t k = 0; k < by_x.size(); ++k) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string_view>
+#include <unordered_map>
 
 #include "lang/bldg/plan_openings.h"
 #include "lang/bldg/plan_stages.h"
@@ -181,7 +183,11 @@ void place_entrances(Work& work, FloorPlan& plan) {
 
 void place_windows(Work& work, FloorPlan& plan) {
   const Restrictions& r = *work.restrictions;
-  // Window transitions by room symbol, in grammar order.
+  // Window transitions by room symbol, in grammar order (listed once, not scanned per room).
+  std::unordered_map<std::string_view, std::vector<const Transition*>> windows_of;
+  for (const Transition& t : work.building->transitions)
+    if (t.kind == TransitionKind::kWindow) windows_of[t.from].push_back(&t);
+  const std::vector<const Transition*> no_windows;
   work.storey_cells.clear();
   work.storey_cells.reserve(plan.storeys.size());
   for (PlanStorey& storey : plan.storeys) {
@@ -189,9 +195,9 @@ void place_windows(Work& work, FloorPlan& plan) {
     const StoreyCells& cells = work.storey_cells.emplace_back(storey);
     for (std::size_t i = 0; i < storey.rooms.size(); ++i) {
       PlanRoom& room = storey.rooms[i];
-      std::vector<const Transition*> named;
-      for (const Transition& t : work.building->transitions)
-        if (t.kind == TransitionKind::kWindow && t.from == room.symbol) named.push_back(&t);
+      const auto listed = windows_of.find(room.symbol);
+      const std::vector<const Transition*>& named =
+          listed == windows_of.end() ? no_windows : listed->second;
       const int asked = room.windows_asked + static_cast<int>(named.size());
       if (asked <= 0) continue;
       std::vector<EdgePiece> pieces =

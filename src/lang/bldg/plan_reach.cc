@@ -5,7 +5,6 @@
 // with the reason.
 #include <algorithm>
 #include <cstdio>
-#include <queue>
 #include <tuple>
 
 #include "kernel/boolean2d.h"
@@ -23,37 +22,42 @@ using Reach = std::vector<std::vector<bool>>;  // [level][room]
 Reach reachable(const FloorPlan& plan) {
   Reach reach(plan.storeys.size());
   if (plan.storeys.empty()) return reach;
-  std::vector<std::vector<std::vector<std::pair<int, int>>>> links(plan.storeys.size());
-  for (std::size_t s = 0; s < plan.storeys.size(); ++s) {
+  // Rooms numbered across storeys (first[s] + room); links as one flat list per room.
+  const std::size_t levels = plan.storeys.size();
+  std::vector<int> first(levels + 1, 0);
+  for (std::size_t s = 0; s < levels; ++s) {
     reach[s].assign(plan.storeys[s].rooms.size(), false);
-    links[s].resize(plan.storeys[s].rooms.size());
+    first[s + 1] = first[s] + static_cast<int>(plan.storeys[s].rooms.size());
   }
-  const int levels = static_cast<int>(plan.storeys.size());
-  for (int s = 0; s < levels; ++s) {
+  std::vector<std::pair<int, int>> links;  // (from, to) in global room numbers, both directions
+  for (std::size_t s = 0; s < levels; ++s) {
     const PlanStorey& storey = plan.storeys[s];
     for (const PlanDoor& d : storey.doors) {
-      links[s][d.room_a].push_back({s, d.room_b});
-      links[s][d.room_b].push_back({s, d.room_a});
+      links.push_back({first[s] + d.room_a, first[s] + d.room_b});
+      links.push_back({first[s] + d.room_b, first[s] + d.room_a});
     }
     if (s + 1 >= levels) continue;
     for (const PlanStair& st : storey.stairs) {
-      links[s][st.lower_room].push_back({s + 1, st.upper_room});
-      links[s + 1][st.upper_room].push_back({s, st.lower_room});
+      links.push_back({first[s] + st.lower_room, first[s + 1] + st.upper_room});
+      links.push_back({first[s + 1] + st.upper_room, first[s] + st.lower_room});
     }
   }
-  std::queue<std::pair<int, int>> queue;
-  for (const PlanDoor& e : plan.storeys[0].entrances) {
-    if (!reach[0][e.room_a]) queue.push({0, e.room_a});
-    reach[0][e.room_a] = true;
-  }
-  while (!queue.empty()) {
-    const auto [s, r] = queue.front();
-    queue.pop();
-    for (const auto& [level, room] : links[s][r]) {
-      if (reach[level][room]) continue;
-      reach[level][room] = true;
-      queue.push({level, room});
-    }
+  std::sort(links.begin(), links.end());
+  std::vector<int> level_of(static_cast<std::size_t>(first[levels]));
+  for (std::size_t s = 0; s < levels; ++s)
+    for (int g = first[s]; g < first[s + 1]; ++g) level_of[g] = static_cast<int>(s);
+  std::vector<int> queue;
+  auto visit = [&](int g) {
+    const int s = level_of[g];
+    if (reach[s][g - first[s]]) return;
+    reach[s][g - first[s]] = true;
+    queue.push_back(g);
+  };
+  for (const PlanDoor& e : plan.storeys[0].entrances) visit(e.room_a);
+  for (std::size_t next = 0; next < queue.size(); ++next) {
+    const int g = queue[next];
+    auto it = std::lower_bound(links.begin(), links.end(), std::pair{g, -1});
+    for (; it != links.end() && it->first == g; ++it) visit(it->second);
   }
   return reach;
 }
