@@ -23,9 +23,10 @@ struct Frame {
   BooleanStatus status = BooleanStatus::kOk;
 };
 
-Frame make_frame(const std::vector<const std::vector<Polygon>*>& inputs, double margin) {
+// `box`: a box the frame must hold besides the inputs (empty: the inputs' bounds alone).
+Frame make_frame(const std::vector<const std::vector<Polygon>*>& inputs, double margin,
+                 Bounds2 box = {}) {
   Frame frame;
-  Bounds2 box;
   for (const std::vector<Polygon>* input : inputs) {
     for (const Polygon& p : *input) {
       const Bounds2 b = bounds(p);
@@ -183,9 +184,9 @@ bool execute(ClipperLib::ClipType type, const Paths& a, const Paths& b, PolyTree
 }
 
 BooleanResult run(ClipperLib::ClipType type, const std::vector<Polygon>& a,
-                  const std::vector<Polygon>& b) {
+                  const std::vector<Polygon>& b, const Bounds2& box = {}) {
   BooleanResult result;
-  const Frame frame = make_frame({&a, &b}, 0);
+  const Frame frame = make_frame({&a, &b}, 0, box);
   result.status = frame.status;
   if (!result.ok()) return result;
   try {
@@ -240,6 +241,11 @@ BooleanResult intersect(const std::vector<Polygon>& a, const std::vector<Polygon
 
 BooleanResult subtract(const std::vector<Polygon>& a, const std::vector<Polygon>& b) {
   return run(ClipperLib::ctDifference, a, b);
+}
+
+BooleanResult subtract(const std::vector<Polygon>& a, const std::vector<Polygon>& b,
+                       const Bounds2& frame) {
+  return run(ClipperLib::ctDifference, a, b, frame);
 }
 
 BooleanResult exclusive_or(const std::vector<Polygon>& a, const std::vector<Polygon>& b) {

@@ -44,6 +44,12 @@ BooleanResult unite(const std::vector<Polygon>& a, const std::vector<Polygon>& b
 BooleanResult intersect(const std::vector<Polygon>& a, const std::vector<Polygon>& b);
 // a minus b.
 BooleanResult subtract(const std::vector<Polygon>& a, const std::vector<Polygon>& b);
+// a minus b, snapped in the integer frame of `frame` (widened to the operands' bounds) rather
+// than of the operands' bounds alone. A caller may then leave out of `b` the polygons that only
+// touch `a` (no common interior) and, passing the bounds of the full set, still get the vertices
+// subtract(a, full set) gives (Clipper may start a ring at another of them).
+BooleanResult subtract(const std::vector<Polygon>& a, const std::vector<Polygon>& b,
+                       const Bounds2& frame);
 BooleanResult exclusive_or(const std::vector<Polygon>& a, const std::vector<Polygon>& b);
 
 // The union of all polygons, e.g. merging touching or overlapping footprints into blocks. Empty

@@ -29,6 +29,11 @@ bool boxes_overlap(const kernel::Bounds2& a, const kernel::Bounds2& b) {
          a.min.y <= b.max.y + kSlack && b.min.y <= a.max.y + kSlack;
 }
 
+// Do the boxes share interior (not only a side or a corner)?
+bool interiors_overlap(const kernel::Bounds2& a, const kernel::Bounds2& b) {
+  return a.min.x < b.max.x && b.min.x < a.max.x && a.min.y < b.max.y && b.min.y < a.max.y;
+}
+
 bool convex(const kernel::Ring& ring) {
   const std::size_t n = ring.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -130,14 +135,30 @@ void clear_floor(const kernel::Polygon& cell, const kernel::Bounds2& box, int ro
                  const StoreyWalls& walls, const PlanStorey& storey, RoomScratch& scratch,
                  std::vector<kernel::Polygon>& out) {
   if (convex_clear_floor(cell, box, room, walls, storey, scratch, out)) return;
+  // The walls whose boxes meet the cell's. Those that only touch it cannot take any of its area
+  // and stay out of the (costly) boolean; they still widen its integer frame, so the result has
+  // the vertices it would have with them.
   std::vector<kernel::Polygon>& near = scratch.near;
   near.clear();
+  kernel::Bounds2 frame = box;
+  bool any = false;
   for (const WallGeometry& w : walls.walls) {
-    if (!w.footprint.outer.empty() && boxes_overlap(box, w.box)) {
-      near.push_back(w.footprint);
-    }
+    if (w.footprint.outer.empty() || !boxes_overlap(box, w.box)) continue;
+    any = true;
+    frame.add(w.box.min);
+    frame.add(w.box.max);
+    if (interiors_overlap(box, w.box)) near.push_back(w.footprint);
   }
-  out = minus({cell}, near);
+  if (!any) {
+    out.push_back(cell);
+    return;
+  }
+  kernel::BooleanResult r = kernel::subtract({cell}, near, frame);
+  if (r.ok()) {
+    out = std::move(r.polygons);
+  } else {
+    out.push_back(cell);
+  }
 }
 
 // The stretch [u0, u1] along an edge (origin p, unit dir, inward normal n) that `blocker`
