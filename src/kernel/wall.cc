@@ -72,8 +72,13 @@ double squared_segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return squared_endpoint_distance(a, b, c, d);
 }
 
-// Point p lies within `tolerance` of segment ab.
+// Point p lies within `tolerance` of segment ab. Most outline vertices are far from the edges
+// they are tested against along one axis already; that test is a few comparisons.
 bool point_within(Vec2 p, Vec2 a, Vec2 b, double tolerance) {
+  if (std::min(a.x, b.x) - p.x > tolerance || p.x - std::max(a.x, b.x) > tolerance ||
+      std::min(a.y, b.y) - p.y > tolerance || p.y - std::max(a.y, b.y) > tolerance) {
+    return false;
+  }
   return squared_distance_to_segment(p, a, b) <= tolerance * tolerance;
 }
 
