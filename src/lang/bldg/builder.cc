@@ -79,11 +79,19 @@ void add_box(kernel::Mesh& mesh, Vec3 origin, Vec3 u, Vec3 v, Vec3 w, FaceTag ta
   const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
   // Corner (i, j, k) is base + i + 2j + 4k. The corners go straight into the position array
   // (frames and footers make most of a building's boxes, and this is their inner loop).
+  // Corner (i, j, k) is ((origin + u i) + v j) + w k, the partial sums shared between corners
+  // (x * 1.0 is x, so the terms are u or u * 0.0, ...: the same bits as the full expression).
   std::vector<Vec3>& positions = mesh.positions();
+  const std::array<Vec3, 2> us{u * 0.0, u};
+  const std::array<Vec3, 2> vs{v * 0.0, v};
+  const std::array<Vec3, 2> ws{w * 0.0, w};
+  const std::array<Vec3, 2> along_u{origin + us[0], origin + us[1]};
+  const std::array<Vec3, 4> along_uv{along_u[0] + vs[0], along_u[1] + vs[0], along_u[0] + vs[1],
+                                     along_u[1] + vs[1]};
+  const std::size_t first = positions.size();
+  positions.resize(first + 8);
   for (int k = 0; k < 2; ++k) {
-    for (int j = 0; j < 2; ++j) {
-      for (int i = 0; i < 2; ++i) positions.push_back(origin + u * i + v * j + w * k);
-    }
+    for (int ij = 0; ij < 4; ++ij) positions[first + 4 * k + ij] = along_uv[ij] + ws[k];
   }
   static constexpr std::array<std::array<std::uint32_t, 4>, 6> kFaces{{
       {0, 2, 3, 1},  // k = 0
