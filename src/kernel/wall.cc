@@ -768,8 +768,17 @@ void emit_into(const Boundary& b, const std::vector<std::uint32_t>& loops,
   const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
   const std::size_t pieces = offsets.size() - 1;
   const bool flip = dot(cross(frame.u_axis, frame.v_axis), frame.normal) < 0;
-  for (Vec2 p : b.points) mesh.add_vertex(frame.map(p.x, p.y, spec.thickness));
-  for (Vec2 p : b.points) mesh.add_vertex(frame.map(p.x, p.y, 0));
+  // Front vertices, then back vertices: frame.map(u, v, thickness) and frame.map(u, v, 0), written
+  // in one pass that evaluates their common part origin + u_axis u + v_axis v once (the same
+  // sums in the same order as WallFrame::map, so the same bits).
+  std::vector<Vec3>& positions = mesh.positions();
+  positions.resize(base + 2 * std::size_t{n});
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Vec2 p = b.points[i];
+    const Vec3 in_plane = frame.origin + frame.u_axis * p.x + frame.v_axis * p.y;
+    positions[base + i] = in_plane + frame.normal * spec.thickness;
+    positions[base + n + i] = in_plane + frame.normal * 0.0;
+  }
   for (std::size_t f = 0; f < pieces; ++f) {
     loop.assign(loops.begin() + offsets[f], loops.begin() + offsets[f + 1]);
     for (std::uint32_t& v : loop) v += base;
