@@ -424,8 +424,10 @@ struct Boundary {
 
 EdgeKind rim_kind(Vec2 a, Vec2 b) {
   const Vec2 d = b - a;
-  // The outward normal of a counter-clockwise edge is (d.y, -d.x) / |d|.
-  if (std::abs(d.x) <= 1e-9 * length(d)) return EdgeKind::kEnd;
+  // The outward normal of a counter-clockwise edge is (d.y, -d.x) / |d|. Axis-parallel edges
+  // (every edge of a rectangular wall) are settled without the root: |d| = |d.x| when d.y = 0.
+  if (d.x == 0) return EdgeKind::kEnd;
+  if (d.y != 0 && std::abs(d.x) <= 1e-9 * length(d)) return EdgeKind::kEnd;
   return d.x < 0 ? EdgeKind::kTop : EdgeKind::kBottom;
 }
 
@@ -445,8 +447,10 @@ void add_opening_edges(Boundary& out, const Accepted& c, bool notch) {
   }
 }
 
-void build_boundary(const Ring& outline, const std::vector<Accepted>& cut, Boundary& out) {
-  std::vector<const Accepted*> notches;
+// `notches` is scratch storage (its contents are replaced).
+void build_boundary(const Ring& outline, const std::vector<Accepted>& cut, Boundary& out,
+                    std::vector<const Accepted*>& notches) {
+  notches.clear();
   for (const Accepted& c : cut) {
     if (c.host >= 0) notches.push_back(&c);
   }
@@ -822,6 +826,7 @@ struct WallWorkspace::Buffers {
   Ring outline;  // the spec's outline, counter-clockwise
   std::vector<Accepted> cut;
   std::vector<Ring> spare_rings;  // the rings of `cut` between walls
+  std::vector<const Accepted*> notches;
   Boundary boundary;
   MonotonePartition partition;
   PieceWalker walker;
@@ -865,7 +870,7 @@ bool partition_wall(const WallSpec& spec, WallWorkspace::Buffers& w, WallResult&
     return false;
   }
   w.boundary.clear();
-  build_boundary(w.outline, w.cut, w.boundary);
+  build_boundary(w.outline, w.cut, w.boundary, w.notches);
   w.diagonals.clear();
   w.loops.clear();
   w.offsets.assign(1, 0);
