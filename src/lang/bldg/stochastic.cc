@@ -382,6 +382,7 @@ double boundary_length(const Rect& r, const Rect& outline) {
 
 std::string identifier(const std::string& text) {
   std::string out;
+  out.reserve(text.size());
   for (const char c : text) {
     const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
     out += ok ? c : '_';
@@ -450,6 +451,7 @@ class Generator {
     } else {
       types = default_program(total, rng_);
     }
+    rooms_.reserve(types.size());
     for (const std::string& type : types) rooms_.push_back(make_room(type, rng_));
     std::vector<std::uint64_t> keys(rooms_.size());
     for (auto& key : keys) key = rng_.next();
@@ -810,7 +812,8 @@ class Generator {
     entrance.kind = TransitionKind::kEntrance;
     entrance.from = rooms_[static_cast<std::size_t>(entrance_)].symbol;
     entrance.width = kEntranceWidth;
-    building.transitions.push_back(entrance);
+    building.transitions.reserve(1 + doors_.size());
+    building.transitions.push_back(std::move(entrance));
     for (std::size_t i = 0; i < doors_.size(); ++i) {
       Transition door;
       door.symbol = "door" + std::to_string(i);
@@ -818,7 +821,7 @@ class Generator {
       door.from = rooms_[static_cast<std::size_t>(doors_[i].first)].symbol;
       door.to = rooms_[static_cast<std::size_t>(doors_[i].second)].symbol;
       door.width = kDoorWidth;
-      building.transitions.push_back(door);
+      building.transitions.push_back(std::move(door));
     }
     return building;
   }
@@ -875,7 +878,7 @@ class Generator {
       r.size = room.disposable ? SizeLabel::kMedium : room.size;
       r.walls = room.disposable ? 0 : 4;
       r.windows = room.windows;
-      out.room = r;
+      out.room = std::move(r);
       return out;
     }
     out.symbol = part;
