@@ -108,7 +108,7 @@ void assemble(Work& work, FloorPlan& out) {
         pr.storey = floor.level;
         pr.where = wr.division->where;
         pr.size = room.size;
-        pr.cell = wr.cell;
+        pr.cell = std::move(wr.cell);  // the work cells are not read past this stage
         pr.weight = floor_weight > 0 ? wr.weight / floor_weight : 0;
         pr.target_area = pr.weight * part_area;
         pr.walls_asked = room.walls;

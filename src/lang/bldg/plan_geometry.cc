@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <utility>
 
 #include "kernel/boolean2d.h"
@@ -13,52 +14,6 @@ namespace {
 using kernel::Polygon;
 using kernel::Ring;
 using kernel::Vec2;
-
-// Twice the signed area of `ring` clipped to coord <= t (Sutherland-Hodgman against one line),
-// the axis fixed at compile time: the treemap's cut search evaluates it thousands of times.
-template <bool kAlongX>
-double clipped_twice_area(const Ring& ring, double t) {
-  const std::size_t n = ring.size();
-  if (n < 3) return 0;
-  auto coord = [](Vec2 p) { return kAlongX ? p.x : p.y; };
-  const Vec2 origin = ring[0];
-  double twice = 0;
-  bool have_first = false;
-  Vec2 first;
-  Vec2 last;
-  auto emit = [&](Vec2 p) {
-    p = p - origin;
-    if (!have_first) {
-      first = p;
-      have_first = true;
-    } else {
-      twice += kernel::cross(last, p);
-    }
-    last = p;
-  };
-  Vec2 p = ring[0];
-  double cp = coord(p) - t;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 q = ring[i + 1 < n ? i + 1 : 0];
-    const double cq = coord(q) - t;
-    if (cp <= 0) emit(p);
-    if ((cp < 0 && cq > 0) || (cp > 0 && cq < 0)) emit(p + (q - p) * (cp / (cp - cq)));
-    p = q;
-    cp = cq;
-  }
-  if (have_first) twice += kernel::cross(last, first);
-  return twice;
-}
-
-template <bool kAlongX>
-double region_area_below(const std::vector<Polygon>& region, double t) {
-  double twice = 0;
-  for (const Polygon& p : region) {
-    twice += clipped_twice_area<kAlongX>(p.outer, t);
-    for (const Ring& h : p.holes) twice += clipped_twice_area<kAlongX>(h, t);
-  }
-  return twice / 2;
-}
 
 // Collinear test for consecutive vertices a, b, c: b lies on the line ac within the tolerance
 // and between a and c.
@@ -135,7 +90,7 @@ void covered_by_ring(Vec2 p, Vec2 u, double len, const Ring& ring, int other,
 struct Neighbours {
   const std::vector<const Polygon*>& others;
   const std::vector<kernel::Bounds2>& boxes;
-  const std::vector<std::size_t>& near;
+  std::span<const std::uint32_t> near;
   bool shared_only = false;
 };
 
@@ -146,7 +101,7 @@ void pieces_of_edge(Vec2 p, Vec2 q, double len, const kernel::Bounds2& edge_box,
   thread_local std::vector<Interval> covered;
   covered.clear();
   const Vec2 u = (q - p) / len;
-  for (std::size_t k : nb.near) {
+  for (const std::uint32_t k : nb.near) {
     if (!bounds_touch(edge_box, nb.boxes[k], kLineTolerance)) continue;
     covered_by_ring(p, u, len, nb.others[k]->outer, static_cast<int>(k), covered);
     for (const Ring& hole : nb.others[k]->holes)
@@ -178,7 +133,7 @@ void pieces_of_edge(Vec2 p, Vec2 q, double len, const kernel::Bounds2& edge_box,
 }
 
 bool touches_any(const kernel::Bounds2& edge_box, const Neighbours& nb) {
-  return std::any_of(nb.near.begin(), nb.near.end(), [&](std::size_t k) {
+  return std::any_of(nb.near.begin(), nb.near.end(), [&](std::uint32_t k) {
     return bounds_touch(edge_box, nb.boxes[k], kLineTolerance);
   });
 }
@@ -212,7 +167,7 @@ const std::vector<EdgePiece>& pieces_against(const Polygon& cell, const kernel::
   thread_local std::vector<EdgePiece> pieces;
   thread_local std::vector<const Polygon*> others(1);
   thread_local std::vector<kernel::Bounds2> boxes(1);
-  thread_local const std::vector<std::size_t> near{0};
+  static constexpr std::uint32_t near[1] = {0};
   pieces.clear();
   if (!bounds_touch(cell_box, other_box, kLineTolerance)) return pieces;
   others[0] = &other;
@@ -224,7 +179,7 @@ const std::vector<EdgePiece>& pieces_against(const Polygon& cell, const kernel::
 }  // namespace
 
 double area_below(const std::vector<Polygon>& region, bool along_x, double t) {
-  return along_x ? region_area_below<true>(region, t) : region_area_below<false>(region, t);
+  return along_x ? area_below_axis<true>(region, t) : area_below_axis<false>(region, t);
 }
 
 double area_of(const std::vector<Polygon>& region) {
@@ -277,12 +232,23 @@ std::vector<EdgePiece> boundary_pieces(const Polygon& cell, const kernel::Bounds
                                        const std::vector<const Polygon*>& others,
                                        const std::vector<kernel::Bounds2>& boxes) {
   // Only the polygons whose box touches the cell's can share an edge with it (indices kept).
-  thread_local std::vector<std::size_t> near;
+  thread_local std::vector<std::uint32_t> near;
   near.clear();
   for (std::size_t k = 0; k < others.size(); ++k) {
     if (others[k] == nullptr) continue;
-    if (bounds_touch(cell_box, boxes[k], kLineTolerance)) near.push_back(k);
+    if (bounds_touch(cell_box, boxes[k], kLineTolerance))
+      near.push_back(static_cast<std::uint32_t>(k));
   }
+  std::vector<EdgePiece> out;
+  out.reserve(cell.outer.size() + 4);
+  append_pieces(cell, Neighbours{others, boxes, near}, out);
+  return out;
+}
+
+std::vector<EdgePiece> boundary_pieces(const Polygon& cell,
+                                       const std::vector<const Polygon*>& others,
+                                       const std::vector<kernel::Bounds2>& boxes,
+                                       std::span<const std::uint32_t> near) {
   std::vector<EdgePiece> out;
   out.reserve(cell.outer.size() + 4);
   append_pieces(cell, Neighbours{others, boxes, near}, out);
@@ -322,18 +288,10 @@ bool overlaps(const Polygon& a, const Polygon& b) {
   return r.ok() && area_of(r.polygons) > 1e-9;
 }
 
-namespace {
-
-// For every cell, the other cells whose boxes touch its own (within `margin`), in increasing
-// index order, as one flat list: near[start[i] .. start[i + 1]) for cell i. A sweep over the
-// boxes sorted by their left side finds the pairs without testing every pair of a storey.
-struct NearLists {
-  std::vector<std::uint32_t> start;
-  std::vector<std::uint32_t> near;
-};
-
 NearLists touching_boxes(const std::vector<kernel::Bounds2>& boxes, double margin) {
   const std::size_t n = boxes.size();
+  // Pairs (i, j) whose boxes touch, by a sweep along x: boxes sorted by their left side, each
+  // compared only with those starting before its right side ends.
   std::vector<std::uint32_t> by_left(n);
   for (std::size_t i = 0; i < n; ++i) by_left[i] = static_cast<std::uint32_t>(i);
   std::sort(by_left.begin(), by_left.end(),
@@ -365,6 +323,8 @@ NearLists touching_boxes(const std::vector<kernel::Bounds2>& boxes, double margi
     std::sort(lists.near.begin() + lists.start[i], lists.near.begin() + lists.start[i + 1]);
   return lists;
 }
+
+namespace {
 
 // Moves `v` onto the first edge of `ring` it lies within `tolerance` of (strictly between the
 // edge's ends, and not within `tolerance` of either end); true when it did.

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "kernel/polygon.h"
@@ -20,6 +22,58 @@ inline constexpr double kLineTolerance = 1e-5;
 // concave rings and holes, because the degenerate edges the clipper leaves on the line cancel.
 double area_below(const std::vector<kernel::Polygon>& region, bool along_x, double t);
 double area_of(const std::vector<kernel::Polygon>& region);
+
+namespace detail {
+// Twice the signed area of `ring` clipped to coord <= t (Sutherland-Hodgman against one line),
+// the axis fixed at compile time: the treemap's cut search evaluates it thousands of times, so it
+// is inline here, for the search's loop.
+template <bool kAlongX>
+inline double clipped_twice_area(const kernel::Ring& ring, double t) {
+  const std::size_t n = ring.size();
+  if (n < 3) return 0;
+  auto coord = [](kernel::Vec2 p) { return kAlongX ? p.x : p.y; };
+  const kernel::Vec2 origin = ring[0];
+  double twice = 0;
+  bool have_first = false;
+  kernel::Vec2 first;
+  kernel::Vec2 last;
+  auto emit = [&](kernel::Vec2 p) {
+    p = p - origin;
+    if (!have_first) {
+      first = p;
+      have_first = true;
+    } else {
+      twice += kernel::cross(last, p);
+    }
+    last = p;
+  };
+  kernel::Vec2 p = ring[0];
+  double cp = coord(p) - t;
+  for (std::size_t i = 0; i < n; ++i) {
+    const kernel::Vec2 q = ring[i + 1 < n ? i + 1 : 0];
+    const double cq = coord(q) - t;
+    if (cp <= 0) emit(p);
+    if ((cp < 0 && cq > 0) || (cp > 0 && cq < 0)) emit(p + (q - p) * (cp / (cp - cq)));
+    p = q;
+    cp = cq;
+  }
+  if (have_first) twice += kernel::cross(last, first);
+  return twice;
+}
+
+}  // namespace detail
+
+// area_below with the axis fixed at compile time (x when kAlongX); the same value.
+template <bool kAlongX>
+inline double area_below_axis(const std::vector<kernel::Polygon>& region, double t) {
+  double twice = 0;
+  for (const kernel::Polygon& p : region) {
+    twice += detail::clipped_twice_area<kAlongX>(p.outer, t);
+    for (const kernel::Ring& h : p.holes) twice += detail::clipped_twice_area<kAlongX>(h, t);
+  }
+  return twice / 2;
+}
+
 kernel::Bounds2 bounds_of(const std::vector<kernel::Polygon>& region);
 
 // Axis-parallel rectangle [x0, x1] x [y0, y1], counter-clockwise.
@@ -53,6 +107,26 @@ std::vector<EdgePiece> boundary_pieces(const kernel::Polygon& cell,
 std::vector<EdgePiece> boundary_pieces(const kernel::Polygon& cell, const kernel::Bounds2& cell_box,
                                        const std::vector<const kernel::Polygon*>& others,
                                        const std::vector<kernel::Bounds2>& boxes);
+
+// For every polygon of a list, the others whose boxes touch its own within `margin`
+// (bounds_touch), in increasing index order: near[start[i] .. start[i + 1]) for polygon i. Found by
+// a sweep over the boxes sorted by their left side, not by testing every pair.
+struct NearLists {
+  std::vector<std::uint32_t> start;
+  std::vector<std::uint32_t> near;
+  std::span<const std::uint32_t> of(std::size_t i) const {
+    return {near.data() + start[i], near.data() + start[i + 1]};
+  }
+};
+NearLists touching_boxes(const std::vector<kernel::Bounds2>& boxes, double margin);
+
+// boundary_pieces with the candidates given: `near` lists, in increasing order, the indices into
+// `others` whose boxes touch the cell's within kLineTolerance (touching_boxes(boxes,
+// kLineTolerance).of(cell's own index) when `cell` is one of a list).
+std::vector<EdgePiece> boundary_pieces(const kernel::Polygon& cell,
+                                       const std::vector<const kernel::Polygon*>& others,
+                                       const std::vector<kernel::Bounds2>& boxes,
+                                       std::span<const std::uint32_t> near);
 
 // The maximal straight segments of `cell`'s boundary shared with `other` (oriented as in `cell`).
 std::vector<EdgePiece> shared_segments(const kernel::Polygon& cell, const kernel::Polygon& other);

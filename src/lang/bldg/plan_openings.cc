@@ -46,6 +46,7 @@ StoreyCells::StoreyCells(const PlanStorey& storey) : storey_(&storey) {
   for (const PlanDeadZone& z : storey.dead_zones) others_.push_back(&z.cell);
   boxes_.reserve(others_.size());
   for (const Polygon* cell : others_) boxes_.push_back(box_of(*cell));
+  near_ = touching_boxes(boxes_, kLineTolerance);
   pieces_.resize(others_.size());
   done_.assign(others_.size(), false);
 }
@@ -53,10 +54,8 @@ StoreyCells::StoreyCells(const PlanStorey& storey) : storey_(&storey) {
 const std::vector<EdgePiece>& StoreyCells::pieces(int index) const {
   const auto i = static_cast<std::size_t>(index);
   if (done_[i]) return pieces_[i];
-  const Polygon* cell = others_[i];
-  others_[i] = nullptr;
-  pieces_[i] = boundary_pieces(*cell, boxes_[i], others_, boxes_);
-  others_[i] = cell;
+  // The touching lists leave the cell itself out, as boundary_pieces does with a null entry.
+  pieces_[i] = boundary_pieces(*others_[i], others_, boxes_, near_.of(i));
   done_[i] = true;
   return pieces_[i];
 }
@@ -113,6 +112,9 @@ std::optional<Slot> find_slot(const PlanStorey& storey, Vec2 p, Vec2 q, double w
     const double lo = f.lo + width / 2;
     const double hi = f.hi - width / 2;
     consider(std::clamp(target, lo, hi));
+    // The sliding positions lie in [lo, hi], none strictly nearer the target than the clamped
+    // one listed before them: only a keep-out area can make them matter.
+    if (first_wins) continue;
     for (double s = lo; s <= hi + 1e-9; s += 0.25) consider(std::min(s, hi));
   }
   if (first_wins) {

@@ -34,8 +34,9 @@ class StoreyCells {
 
  private:
   const PlanStorey* storey_;
-  mutable std::vector<const kernel::Polygon*> others_;  // the cell asked about is nulled per call
+  std::vector<const kernel::Polygon*> others_;
   std::vector<kernel::Bounds2> boxes_;
+  NearLists near_;
   mutable std::vector<std::vector<EdgePiece>> pieces_;
   mutable std::vector<bool> done_;
 };

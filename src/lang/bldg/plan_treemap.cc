@@ -17,7 +17,7 @@ struct AreaFunction {
   TreemapStats& stats;
   double operator()(double t) const {
     ++stats.area_evaluations;
-    return area_below(region, along_x, t);
+    return along_x ? area_below_axis<true>(region, t) : area_below_axis<false>(region, t);
   }
 };
 
