@@ -319,8 +319,13 @@ NearLists touching_boxes(const std::vector<kernel::Bounds2>& boxes, double margi
     lists.near[fill[i]++] = j;
     lists.near[fill[j]++] = i;
   }
-  for (std::size_t i = 0; i < n; ++i)
-    std::sort(lists.near.begin() + lists.start[i], lists.near.begin() + lists.start[i + 1]);
+  // Rows are short (the cells around one cell): insertion sort, without std::sort's setup.
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint32_t* row = lists.near.data() + lists.start[i];
+    const std::size_t len = lists.start[i + 1] - lists.start[i];
+    for (std::size_t a = 1; a < len; ++a)
+      for (std::size_t b = a; b > 0 && row[b - 1] > row[b]; --b) std::swap(row[b - 1], row[b]);
+  }
   return lists;
 }
 
