@@ -145,6 +145,24 @@ TEST(WallWorkspace, ResultIsResetBetweenWalls) {
   EXPECT_EQ(mesh.face_count(), 12U);
 }
 
+// Axis-parallel rectangles (place_wall's outlines) take a shorter validation path; its verdicts
+// must be those of the general tests.
+TEST(WallWorkspace, RectangleOutlinesAreValidatedLikeAnyOutline) {
+  const auto message = [](Ring outline) {
+    WallSpec spec;
+    spec.outline = std::move(outline);
+    return build_wall(spec).message;
+  };
+  EXPECT_EQ(message({{0, 0}, {4, 0}, {4, 3}, {0, 3}}), "");
+  EXPECT_EQ(message({{0, 0}, {0, 3}, {4, 3}, {4, 0}}), "");  // clockwise, y side first
+  EXPECT_EQ(message({{0, 0}, {1e-10, 0}, {1e-10, 3}, {0, 3}}),
+            "wall outline vertex 1 repeats the previous vertex");
+  EXPECT_EQ(message({{0, 0}, {2e-5, 0}, {2e-5, 2e-5}, {0, 2e-5}}), "wall outline has zero area");
+  EXPECT_EQ(message({{0, 0}, {INFINITY, 0}, {INFINITY, 3}, {0, 3}}),
+            "wall outline has a non-finite coordinate");
+  EXPECT_EQ(message({{0, 0}, {4, 0}, {4, 3}, {0, 3.5}}), "");  // not a rectangle: general path
+}
+
 TEST(SquaredDistanceToSegment, SquareOfTheDistance) {
   const Vec2 a{1, 1}, b{4, 5};
   for (const Vec2 p : {Vec2{0, 0}, Vec2{5, 7}, Vec2{3, 1}, Vec2{2.5, 3}, Vec2{-2, 9}}) {
