@@ -94,6 +94,21 @@ struct Neighbours {
   bool shared_only = false;
 };
 
+// False when the box's shadow on the edge's line (parameter from p along u) overlaps [0, len] by
+// less than kLineTolerance minus a nanometre: then every edge of a ring inside the box gives an
+// overlap covered_by_ring drops (hi - lo <= kLineTolerance; the nanometre covers the rounding of
+// its projections, which differ from the box corner's by far less). Neighbours touching the edge
+// only at a corner are skipped so.
+bool overlaps_along(Vec2 p, Vec2 u, double len, const kernel::Bounds2& box) {
+  const double x0 = (box.min.x - p.x) * u.x;
+  const double x1 = (box.max.x - p.x) * u.x;
+  const double y0 = (box.min.y - p.y) * u.y;
+  const double y1 = (box.max.y - p.y) * u.y;
+  const double lo = std::min(x0, x1) + std::min(y0, y1);
+  const double hi = std::max(x0, x1) + std::max(y0, y1);
+  return std::min(len, hi) - std::max(0.0, lo) > kLineTolerance - 1e-9;
+}
+
 // Appends the pieces of edge p->q (length len >= kLineTolerance, box edge_box) to `out`.
 void pieces_of_edge(Vec2 p, Vec2 q, double len, const kernel::Bounds2& edge_box,
                     const Neighbours& nb, std::vector<EdgePiece>& out) {
@@ -103,6 +118,7 @@ void pieces_of_edge(Vec2 p, Vec2 q, double len, const kernel::Bounds2& edge_box,
   const Vec2 u = (q - p) / len;
   for (const std::uint32_t k : nb.near) {
     if (!bounds_touch(edge_box, nb.boxes[k], kLineTolerance)) continue;
+    if (!overlaps_along(p, u, len, nb.boxes[k])) continue;
     covered_by_ring(p, u, len, nb.others[k]->outer, static_cast<int>(k), covered);
     for (const Ring& hole : nb.others[k]->holes)
       covered_by_ring(p, u, len, hole, static_cast<int>(k), covered);
