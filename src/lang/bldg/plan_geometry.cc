@@ -25,11 +25,11 @@ bool redundant(Vec2 a, Vec2 b, Vec2 c) {
   const Vec2 ab = b - a;
   const Vec2 bc = c - b;
   if (kernel::dot(ab, ab) < kTol2 || kernel::dot(bc, bc) < kTol2) return true;
-  const double len2 = kernel::dot(ac, ac);
-  if (len2 < kTol2) return false;
   // b must lie between a and c: tested before the distance, it rules out most vertices (corners)
   // without the square root and the division.
   if (!(kernel::dot(ab, bc) > 0)) return false;
+  const double len2 = kernel::dot(ac, ac);
+  if (len2 < kTol2) return false;
   const double len = std::sqrt(len2);
   const double dist = std::abs(kernel::cross(ac, ab)) / len;
   return dist < kLineTolerance;
@@ -230,7 +230,14 @@ void simplify(Polygon& polygon) {
 }
 
 int wall_count(const Polygon& polygon) {
-  thread_local Ring scratch;  // reused: the walls stage counts every room's walls
+  // Most outlines hold no redundant vertex: then simplify_ring would erase nothing.
+  const Ring& ring = polygon.outer;
+  const std::size_t n = ring.size();
+  bool simple = n >= 3;
+  for (std::size_t i = 0; simple && i < n; ++i)
+    simple = !redundant(ring[i == 0 ? n - 1 : i - 1], ring[i], ring[i + 1 < n ? i + 1 : 0]);
+  if (simple || n < 3) return static_cast<int>(n);
+  thread_local Ring scratch;  // reused: the shape and walls stages count every room's walls
   scratch.assign(polygon.outer.begin(), polygon.outer.end());
   simplify_ring(scratch);
   return static_cast<int>(scratch.size());
@@ -312,11 +319,14 @@ NearLists touching_boxes(const std::vector<kernel::Bounds2>& boxes, double margi
   for (std::size_t i = 0; i < n; ++i) by_left[i] = static_cast<std::uint32_t>(i);
   std::sort(by_left.begin(), by_left.end(),
             [&](std::uint32_t a, std::uint32_t b) { return boxes[a].min.x < boxes[b].min.x; });
+  std::vector<double> left(n);  // left sides in sweep order, contiguous for the inner loop
+  for (std::size_t k = 0; k < n; ++k) left[k] = boxes[by_left[k]].min.x;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   for (std::size_t k = 0; k < n; ++k) {
     const kernel::Bounds2& a = boxes[by_left[k]];
+    const double reach = a.max.x + margin;
     // Boxes further right start past a's right side plus the margin: none of them touches a.
-    for (std::size_t m = k + 1; m < n && boxes[by_left[m]].min.x <= a.max.x + margin; ++m) {
+    for (std::size_t m = k + 1; m < n && left[m] <= reach; ++m) {
       if (!bounds_touch(a, boxes[by_left[m]], margin)) continue;
       pairs.push_back({by_left[k], by_left[m]});
     }

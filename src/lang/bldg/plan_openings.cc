@@ -206,12 +206,19 @@ std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, const StoreyCel
     if (piece.other >= 0) continue;
     const Vec2 u = kernel::normalized(piece.b - piece.a);
     const Vec2 outside = (piece.a + piece.b) * 0.5 - kernel::perp(u) * 0.01;
+    // A point outside a polygon's box (by more than the tolerance) is not inside it: the box test
+    // spares most point-in-polygon tests.
+    auto inside = [&](const Polygon& polygon) {
+      kernel::Bounds2 point;
+      point.min = outside;
+      point.max = outside;
+      return bounds_touch(point, box_of(polygon), 1e-6) &&
+             kernel::locate(polygon, outside, 1e-7) == kernel::PointLocation::kInside;
+    };
     bool covered = false;
-    for (const Polygon& f : footprint)
-      covered = covered || kernel::locate(f, outside, 1e-7) == kernel::PointLocation::kInside;
+    for (const Polygon& f : footprint) covered = covered || inside(f);
     bool dead = false;
-    for (const PlanDeadZone& z : storey.dead_zones)
-      dead = dead || kernel::locate(z.cell, outside, 1e-7) == kernel::PointLocation::kInside;
+    for (const PlanDeadZone& z : storey.dead_zones) dead = dead || inside(z.cell);
     if (!covered && !dead) out.push_back(piece);
   }
   return out;

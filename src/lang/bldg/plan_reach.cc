@@ -17,47 +17,35 @@ namespace {
 
 using Reach = std::vector<std::vector<bool>>;  // [level][room]
 
-// Rooms reachable from the entrances through doors and stairs (a breadth-first search over the
-// door and stair links, listed once per room: the set reached does not depend on the visit order).
+// Rooms reachable from the entrances through doors and stairs: doors and stairs join rooms both
+// ways, so the rooms reached are those of the groups (union-find over rooms numbered across
+// storeys) that hold an entrance room.
 Reach reachable(const FloorPlan& plan) {
   Reach reach(plan.storeys.size());
   if (plan.storeys.empty()) return reach;
-  // Rooms numbered across storeys (first[s] + room); links as one flat list per room.
   const std::size_t levels = plan.storeys.size();
-  std::vector<int> first(levels + 1, 0);
-  for (std::size_t s = 0; s < levels; ++s) {
-    reach[s].assign(plan.storeys[s].rooms.size(), false);
+  std::vector<int> first(levels + 1, 0);  // global number of room r of storey s: first[s] + r
+  for (std::size_t s = 0; s < levels; ++s)
     first[s + 1] = first[s] + static_cast<int>(plan.storeys[s].rooms.size());
-  }
-  std::vector<std::pair<int, int>> links;  // (from, to) in global room numbers, both directions
+  std::vector<int> parent(static_cast<std::size_t>(first[levels]));
+  for (std::size_t g = 0; g < parent.size(); ++g) parent[g] = static_cast<int>(g);
+  auto find = [&](int g) {
+    while (parent[g] != g) g = parent[g] = parent[parent[g]];
+    return g;
+  };
+  auto join = [&](int a, int b) { parent[find(a)] = find(b); };
   for (std::size_t s = 0; s < levels; ++s) {
     const PlanStorey& storey = plan.storeys[s];
-    for (const PlanDoor& d : storey.doors) {
-      links.push_back({first[s] + d.room_a, first[s] + d.room_b});
-      links.push_back({first[s] + d.room_b, first[s] + d.room_a});
-    }
+    for (const PlanDoor& d : storey.doors) join(first[s] + d.room_a, first[s] + d.room_b);
     if (s + 1 >= levels) continue;
-    for (const PlanStair& st : storey.stairs) {
-      links.push_back({first[s] + st.lower_room, first[s + 1] + st.upper_room});
-      links.push_back({first[s + 1] + st.upper_room, first[s] + st.lower_room});
-    }
+    for (const PlanStair& st : storey.stairs)
+      join(first[s] + st.lower_room, first[s + 1] + st.upper_room);
   }
-  std::sort(links.begin(), links.end());
-  std::vector<int> level_of(static_cast<std::size_t>(first[levels]));
-  for (std::size_t s = 0; s < levels; ++s)
-    for (int g = first[s]; g < first[s + 1]; ++g) level_of[g] = static_cast<int>(s);
-  std::vector<int> queue;
-  auto visit = [&](int g) {
-    const int s = level_of[g];
-    if (reach[s][g - first[s]]) return;
-    reach[s][g - first[s]] = true;
-    queue.push_back(g);
-  };
-  for (const PlanDoor& e : plan.storeys[0].entrances) visit(e.room_a);
-  for (std::size_t next = 0; next < queue.size(); ++next) {
-    const int g = queue[next];
-    auto it = std::lower_bound(links.begin(), links.end(), std::pair{g, -1});
-    for (; it != links.end() && it->first == g; ++it) visit(it->second);
+  std::vector<bool> entered(parent.size(), false);  // by group root
+  for (const PlanDoor& e : plan.storeys[0].entrances) entered[find(e.room_a)] = true;
+  for (std::size_t s = 0; s < levels; ++s) {
+    reach[s].assign(plan.storeys[s].rooms.size(), false);
+    for (int g = first[s]; g < first[s + 1]; ++g) reach[s][g - first[s]] = entered[find(g)];
   }
   return reach;
 }
