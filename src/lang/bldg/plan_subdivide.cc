@@ -98,14 +98,24 @@ void distribute(Work& work, const std::vector<int>& rooms) {
   for (std::size_t i = 0; i < rooms.size(); ++i) work.rooms[rooms[i]].weight = w[i];
 }
 
-// Back-propagated weight of a tree node (§3.2): a leaf's own weight, a container's children's sum.
-double node_weight(const std::vector<TreeNode>& tree, int node,
-                   const std::function<double(int)>& leaf_weight) {
-  const TreeNode& n = tree[node];
-  if (n.leaf >= 0) return leaf_weight(n.leaf);
-  double sum = 0;
-  for (int c : n.children) sum += node_weight(tree, c, leaf_weight);
-  return sum;
+// Back-propagated weights of every node of a tree (§3.2): a leaf's own weight, a container's
+// children's sum (in child order). Children come after their parent in the flattened tree, so one
+// pass from the last node back computes each sum once (the recursion per cut summed each subtree
+// again at every level above it).
+std::vector<double> node_weights(const std::vector<TreeNode>& tree,
+                                 const std::function<double(int)>& leaf_weight) {
+  std::vector<double> weight(tree.size(), 0);
+  for (std::size_t k = tree.size(); k-- > 0;) {
+    const TreeNode& n = tree[k];
+    if (n.leaf >= 0) {
+      weight[k] = leaf_weight(n.leaf);
+      continue;
+    }
+    double sum = 0;
+    for (int c : n.children) sum += weight[c];
+    weight[k] = sum;
+  }
+  return weight;
 }
 
 // §3.2: the axis alternates per depth. Each tree (the parts', each floor's) starts across the
@@ -124,7 +134,7 @@ bool wider_than_tall(const std::vector<Polygon>& region) {
 
 // Recursive treemap: `region` is cut among `node`'s children; leaves receive their pieces.
 void split_tree(const std::vector<TreeNode>& tree, int node, std::vector<Polygon> region,
-                const std::function<double(int)>& leaf_weight, double step, bool x_first,
+                const std::vector<double>& weight, double step, bool x_first,
                 std::vector<std::vector<Polygon>>& leaf_regions) {
   const TreeNode& n = tree[node];
   if (n.leaf >= 0) {
@@ -133,11 +143,11 @@ void split_tree(const std::vector<TreeNode>& tree, int node, std::vector<Polygon
   }
   if (n.children.empty()) return;
   std::vector<double> weights;
-  for (int c : n.children) weights.push_back(std::max(node_weight(tree, c, leaf_weight), 1e-12));
+  for (int c : n.children) weights.push_back(std::max(weight[c], 1e-12));
   std::vector<std::vector<Polygon>> cells =
       split_region(region, weights, along_x(n, x_first), step);
   for (std::size_t i = 0; i < n.children.size(); ++i)
-    split_tree(tree, n.children[i], std::move(cells[i]), leaf_weight, step, x_first, leaf_regions);
+    split_tree(tree, n.children[i], std::move(cells[i]), weight, step, x_first, leaf_regions);
 }
 
 // Keeps each leaf's largest piece and merges the others into the neighbouring leaf that shares
@@ -235,8 +245,8 @@ bool subdivide_parts(Work& work) {
     return sum;
   };
   std::vector<std::vector<Polygon>> regions(work.parts.size());
-  split_tree(work.part_tree, 0, {work.outline}, weight, work.restrictions->step,
-             wider_than_tall({work.outline}), regions);
+  split_tree(work.part_tree, 0, {work.outline}, node_weights(work.part_tree, weight),
+             work.restrictions->step, wider_than_tall({work.outline}), regions);
   std::vector<Polygon> cells;
   std::vector<bool> has_cell;
   const std::vector<Polygon> left = settle_pieces(regions, cells, has_cell);
@@ -263,8 +273,8 @@ void subdivide_floor(Work& work, int floor_index) {
   std::vector<std::vector<Polygon>> regions(work.rooms.size());
   const auto weight = [&](int room) { return work.rooms[room].weight; };
   if (part.has_cell)
-    split_tree(floor.tree, 0, {part.cell}, weight, work.restrictions->step,
-               wider_than_tall({part.cell}), regions);
+    split_tree(floor.tree, 0, {part.cell}, node_weights(floor.tree, weight),
+               work.restrictions->step, wider_than_tall({part.cell}), regions);
   std::vector<std::vector<Polygon>> mine;
   for (int r : floor.rooms) mine.push_back(std::move(regions[r]));
   std::vector<Polygon> cells;
