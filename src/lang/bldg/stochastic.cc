@@ -15,10 +15,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
+#include <functional>
 #include <numeric>
-#include <queue>
-#include <set>
 #include <span>
 #include <string_view>
 #include <tuple>
@@ -56,7 +54,9 @@ constexpr double kEntranceWidth = 1.2;
 constexpr double kDoorOverlap[] = {kDoorWidth + 0.5 + 0.6, kDoorWidth + 0.5 + 0.2, 0.01};
 
 struct GenRoom {
-  std::string type;
+  // A view into the generator's spec (its room list) or a string literal: both outlive the
+  // generator's rooms, and a view costs no copy per room.
+  std::string_view type;
   SizeLabel size = SizeLabel::kMedium;
   int priority = 2;
   std::string symbol;
@@ -74,6 +74,7 @@ struct Cell {
   int room_count = 0;
   std::vector<int> rooms;  // leaf: indices into the room list, in priority order
   Rect rect;
+  std::size_t division = 0;  // leaf: its division tree in Generator::divisions_
 };
 
 // A node of a part's division tree.
@@ -112,14 +113,14 @@ constexpr TypeInfo kTypes[] = {
     {"office", 2, SizeLabel::kMedium},  {"guest", 2, SizeLabel::kMedium},
 };
 
-const TypeInfo* type_info(const std::string& type) {
+const TypeInfo* type_info(std::string_view type) {
   for (const TypeInfo& info : kTypes) {
     if (type == info.type) return &info;
   }
   return nullptr;
 }
 
-GenRoom make_room(const std::string& type, Rng& rng) {
+GenRoom make_room(std::string_view type, Rng& rng) {
   GenRoom room;
   room.type = type;
   if (const TypeInfo* info = type_info(type)) {
@@ -132,8 +133,9 @@ GenRoom make_room(const std::string& type, Rng& rng) {
 
 // A default domestic program of n rooms: a hall, a living room and a kitchen first, then a
 // bathroom per six rooms and a mix of private and service rooms.
-std::vector<std::string> default_program(int n, Rng& rng) {
-  std::vector<std::string> out;
+std::vector<std::string_view> default_program(int n, Rng& rng) {
+  std::vector<std::string_view> out;
+  out.reserve(static_cast<std::size_t>(std::max(n, 0)));
   const char* firsts[] = {"hall", "living", "kitchen", "bathroom"};
   for (int i = 0; i < n && i < 4; ++i) out.emplace_back(firsts[i]);
   const char* rest[] = {"bedroom", "bedroom", "bedroom", "dining", "study", "storage", "bathroom"};
@@ -380,7 +382,7 @@ double boundary_length(const Rect& r, const Rect& outline) {
   return length;
 }
 
-std::string identifier(const std::string& text) {
+std::string identifier(std::string_view text) {
   std::string out;
   out.reserve(text.size());
   for (const char c : text) {
@@ -397,7 +399,7 @@ double round_to(double v, double per_unit) {
 }
 
 // Rooms that should end a walk, not be passed through (a door tree through a bathroom is odd).
-bool dead_end(const std::string& type) {
+bool dead_end(std::string_view type) {
   return type == "bathroom" || type == "storage" || type == "pantry" || type == "laundry" ||
          type == "void";
 }
@@ -442,9 +444,9 @@ class Generator {
     collect_leaves(root_, real, true);
     int total = 0;
     for (Cell* cell : real) total += cell->room_count;
-    std::vector<std::string> types;
+    std::vector<std::string_view> types;
     if (!spec_.room_types.empty()) {
-      types = spec_.room_types;
+      types.assign(spec_.room_types.begin(), spec_.room_types.end());
       while (types.size() < real.size())
         types.push_back(spec_.room_types[types.size() % spec_.room_types.size()]);
       redistribute(real, static_cast<int>(types.size()));
@@ -452,7 +454,7 @@ class Generator {
       types = default_program(total, rng_);
     }
     rooms_.reserve(types.size());
-    for (const std::string& type : types) rooms_.push_back(make_room(type, rng_));
+    for (const std::string_view type : types) rooms_.push_back(make_room(type, rng_));
     std::vector<std::uint64_t> keys(rooms_.size());
     for (auto& key : keys) key = rng_.next();
     order_.resize(rooms_.size());
@@ -594,7 +596,7 @@ class Generator {
     for (Cell* cell : leaves) {
       divisions_.push_back(divide(cell->rooms, 0, cell->rooms.size(), cell->rect, rooms_, rng_));
       place_rooms(divisions_.back(), cell->rect, rooms_);
-      leaf_of_.emplace(cell, divisions_.size() - 1);
+      cell->division = divisions_.size() - 1;
     }
   }
 
@@ -605,13 +607,8 @@ class Generator {
     entrance_ = choose_entrance();
     seed_salt_ = rng_.next();
     const std::size_t n = rooms_.size();
-    // Rooms that share a wall in the nominal layout, with the shared length (computed once).
-    neighbors_.assign(n, {});
-    for (const auto& [u, v, shared] : touching_pairs()) {
-      neighbors_[u].emplace_back(v, shared);
-      neighbors_[v].emplace_back(u, shared);
-    }
-    std::vector<bool> in_tree(n, false);
+    set_neighbors(touching_pairs());
+    std::vector<char> in_tree(n, 0);
     in_tree[static_cast<std::size_t>(entrance_)] = true;
     std::size_t reached = 1;
     std::size_t wanted = 0;
@@ -623,7 +620,7 @@ class Generator {
     for (std::size_t v = 0; v < n && reached < wanted; ++v) {
       if (in_tree[v] || rooms_[v].disposable) continue;
       doors_.emplace_back(nearest_in_tree(v, in_tree), static_cast<int>(v));
-      in_tree[v] = true;
+      in_tree[v] = 1;
       ++reached;
     }
     add_extra_doors();
@@ -657,21 +654,50 @@ class Generator {
     return pairs;
   }
 
+  // Rooms that share a wall in the nominal layout, with the shared length (computed once), as
+  // one flat list sliced per room: room u's neighbours are neighbors_[neighbor_start_[u] ..
+  // neighbor_start_[u + 1]), in the order of `pairs` (what pushing to per-room lists gives,
+  // without a vector per room).
+  void set_neighbors(const std::vector<std::tuple<int, int, double>>& pairs) {
+    const std::size_t n = rooms_.size();
+    neighbor_start_.assign(n + 1, 0);
+    for (const auto& [u, v, shared] : pairs) {
+      ++neighbor_start_[static_cast<std::size_t>(u) + 1];
+      ++neighbor_start_[static_cast<std::size_t>(v) + 1];
+    }
+    for (std::size_t u = 0; u < n; ++u) neighbor_start_[u + 1] += neighbor_start_[u];
+    neighbors_.resize(neighbor_start_[n]);
+    std::vector<std::size_t> next(neighbor_start_.begin(), neighbor_start_.end() - 1);
+    for (const auto& [u, v, shared] : pairs) {
+      neighbors_[next[static_cast<std::size_t>(u)]++] = {v, shared};
+      neighbors_[next[static_cast<std::size_t>(v)]++] = {u, shared};
+    }
+  }
+
+  std::span<const std::pair<int, double>> neighbors(std::size_t u) const {
+    return std::span(neighbors_)
+        .subspan(neighbor_start_[u], neighbor_start_[u + 1] - neighbor_start_[u]);
+  }
+
   // Prim's algorithm over walls at least `threshold` long: the next door is the frontier edge of
   // smallest key (the source room's priority, dead ends last, then a seeded hash). Returns the
   // number of rooms added.
-  std::size_t grow_tree(double threshold, std::vector<bool>& in_tree) {
-    using Candidate = std::tuple<int, std::uint64_t, int, int>;  // key, hash, u, v
-    std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>> frontier;
+  // A room's edges enter the frontier at most once per call, so no two candidates have equal
+  // keys and the order of doors depends only on the keys, not on the heap's layout. The heap's
+  // storage (frontier_) is kept from call to call.
+  std::size_t grow_tree(double threshold, std::vector<char>& in_tree) {
+    std::vector<Candidate>& frontier = frontier_;
+    frontier.clear();
     const auto push_edges = [&](int u) {
       const GenRoom& from = rooms_[static_cast<std::size_t>(u)];
       const int key = from.priority + (dead_end(from.type) ? 3 : 0);
-      for (const auto& [v, shared] : neighbors_[static_cast<std::size_t>(u)]) {
+      for (const auto& [v, shared] : neighbors(static_cast<std::size_t>(u))) {
         if (in_tree[static_cast<std::size_t>(v)] || shared < threshold) continue;
         const std::uint64_t hash =
             shape::mix64(seed_salt_ ^ (static_cast<std::uint64_t>(u) * 1315423911U +
                                        static_cast<std::uint64_t>(v)));
-        frontier.emplace(key, hash, u, v);
+        frontier.emplace_back(key, hash, u, v);
+        std::push_heap(frontier.begin(), frontier.end(), std::greater<>());
       }
     };
     for (std::size_t u = 0; u < in_tree.size(); ++u) {
@@ -679,18 +705,19 @@ class Generator {
     }
     std::size_t added = 0;
     while (!frontier.empty()) {
-      const auto [key, hash, u, v] = frontier.top();
-      frontier.pop();
+      std::pop_heap(frontier.begin(), frontier.end(), std::greater<>());
+      const auto [key, hash, u, v] = frontier.back();
+      frontier.pop_back();
       if (in_tree[static_cast<std::size_t>(v)]) continue;
       doors_.emplace_back(u, v);
-      in_tree[static_cast<std::size_t>(v)] = true;
+      in_tree[static_cast<std::size_t>(v)] = 1;
       ++added;
       push_edges(v);
     }
     return added;
   }
 
-  int nearest_in_tree(std::size_t v, const std::vector<bool>& in_tree) const {
+  int nearest_in_tree(std::size_t v, const std::vector<char>& in_tree) const {
     int best = entrance_;
     double best_d = 1e300;
     const Rect& a = rooms_[v].rect;
@@ -706,18 +733,24 @@ class Generator {
     return best;
   }
 
+  // Extra doors only join neighbours, each pair once (u < v), so a door already there is found
+  // by marking the neighbour-list slot of every door's lower room.
   void add_extra_doors() {
-    std::set<std::pair<int, int>> existing;
-    for (const auto& [a, b] : doors_) existing.emplace(std::min(a, b), std::max(a, b));
+    std::vector<char> has_door(neighbors_.size(), 0);
+    for (const auto& [x, y] : doors_) {
+      const auto a = static_cast<std::size_t>(std::min(x, y));
+      const int b = std::max(x, y);
+      for (std::size_t k = neighbor_start_[a]; k < neighbor_start_[a + 1]; ++k) {
+        if (neighbors_[k].first == b) has_door[k] = 1;
+      }
+    }
     for (std::size_t u = 0; u < rooms_.size(); ++u) {
-      for (const auto& [v, shared] : neighbors_[u]) {
-        const int a = static_cast<int>(u);
+      const int a = static_cast<int>(u);
+      for (std::size_t k = neighbor_start_[u]; k < neighbor_start_[u + 1]; ++k) {
+        const auto& [v, shared] = neighbors_[k];
         if (v <= a || shared < kDoorOverlap[0]) continue;
         if (rooms_[u].priority > 1 || rooms_[static_cast<std::size_t>(v)].priority > 1) continue;
-        if (existing.count({a, v}) == 0 && rng_.unit() < 0.25) {
-          doors_.emplace_back(a, v);
-          existing.emplace(a, v);
-        }
+        if (!has_door[k] && rng_.unit() < 0.25) doors_.emplace_back(a, v);
       }
     }
   }
@@ -753,10 +786,7 @@ class Generator {
     // A window needs window_width (1.2) plus the engine's clearance at both ends on one straight
     // exterior wall.
     constexpr double kWindowRun = 1.2 + 0.5 + 0.5;
-    std::vector<Rect> notches;  // the disposable rooms, gathered once for every room's runs
-    for (const GenRoom& room : rooms_) {
-      if (room.disposable) notches.push_back(room.rect);
-    }
+    const std::vector<Notch> notches = gather_notches();
     std::vector<double> runs;
     for (std::size_t i = 0; i < rooms_.size(); ++i) {
       GenRoom& room = rooms_[i];
@@ -776,9 +806,36 @@ class Generator {
     }
   }
 
+  // A disposable part: its rectangle holds its void rooms' rectangles (they slice it), so a room
+  // well apart from the part touches none of them.
+  struct Notch {
+    Rect part;
+    std::vector<Rect> rooms;
+  };
+
+  std::vector<Notch> gather_notches() {
+    std::vector<Cell*> leaves;
+    collect_leaves(root_, leaves, false);
+    std::vector<Notch> notches;
+    for (const Cell* cell : leaves) {
+      if (!cell->disposable) continue;
+      Notch& notch = notches.emplace_back();
+      notch.part = cell->rect;
+      for (const int r : cell->rooms)
+        notch.rooms.push_back(rooms_[static_cast<std::size_t>(r)].rect);
+    }
+    return notches;
+  }
+
+  // True when the rectangles are apart by more than `gap` along an axis.
+  static bool apart(const Rect& a, const Rect& b, double gap) {
+    return a.x1 < b.x0 - gap || b.x1 < a.x0 - gap || a.y1 < b.y0 - gap || b.y1 < a.y0 - gap;
+  }
+
   // Straight exterior wall runs of a room, into `runs`: its sides on the outline, and the parts
-  // of its sides along the disposable rooms' `notches` (exterior once the notch is removed, §3.2).
-  void exterior_runs(const Rect& r, const std::vector<Rect>& notches,
+  // of its sides along the disposable rooms of `notches` (exterior once the notch is removed,
+  // §3.2). The order of the runs does not matter (add_windows sorts them).
+  void exterior_runs(const Rect& r, const std::vector<Notch>& notches,
                      std::vector<double>& runs) const {
     runs.clear();
     const double sides[] = {boundary_length(Rect{r.x0, r.y0, r.x0, r.y1}, outline_),
@@ -788,9 +845,15 @@ class Generator {
     for (const double side : sides) {
       if (side > 0) runs.push_back(side);
     }
-    for (const Rect& notch : notches) {
-      const double shared = shared_length(r, notch);
-      if (shared > 0) runs.push_back(shared);
+    // shared_length's tolerance is 1e-6; twice that covers the void rooms' rounding inside
+    // their part's rectangle.
+    constexpr double kGap = 2e-6;
+    for (const Notch& notch : notches) {
+      if (apart(r, notch.part, kGap)) continue;
+      for (const Rect& room : notch.rooms) {
+        const double shared = shared_length(r, room);
+        if (shared > 0) runs.push_back(shared);
+      }
     }
   }
 
@@ -804,9 +867,15 @@ class Generator {
                               {outline_.x1, outline_.y0},
                               {outline_.x1, outline_.y1},
                               {outline_.x0, outline_.y1}};
-    building.layout = emit_cell(root_, true);
+    // The transitions first: they copy the room symbols that the layout then takes over.
+    emit_transitions(building);
+    emit_cell(root_, true, building.layout);
     building.layout.symbol = building.symbol;
     choose_roofs(building.layout);
+    return building;
+  }
+
+  void emit_transitions(Building& building) const {
     Transition entrance;
     entrance.symbol = "entrance0";
     entrance.kind = TransitionKind::kEntrance;
@@ -823,73 +892,88 @@ class Generator {
       door.width = kDoorWidth;
       building.transitions.push_back(std::move(door));
     }
-    return building;
   }
 
+  // Symbols are the room type as an identifier and a per-identifier count ("bedroom3"). Few
+  // distinct types per building: the identifiers are looked up in a short list, each type's
+  // identifier made once.
   void name_rooms() {
-    std::map<std::string, int> counts;
+    std::vector<std::pair<std::string, int>> counts;             // identifier, rooms so far
+    std::vector<std::pair<std::string_view, std::size_t>> slot;  // type -> index in counts
     for (GenRoom& room : rooms_) {
-      const std::string base = identifier(room.type);
-      room.symbol = base + std::to_string(++counts[base]);
+      auto known = std::find_if(slot.begin(), slot.end(),
+                                [&](const auto& entry) { return entry.first == room.type; });
+      if (known == slot.end()) {
+        std::string base = identifier(room.type);
+        auto same = std::find_if(counts.begin(), counts.end(),
+                                 [&](const auto& entry) { return entry.first == base; });
+        if (same == counts.end()) same = counts.insert(same, {std::move(base), 0});
+        known =
+            slot.insert(slot.end(), {room.type, static_cast<std::size_t>(same - counts.begin())});
+      }
+      auto& [base, count] = counts[known->second];
+      room.symbol = base;
+      room.symbol += std::to_string(++count);
     }
   }
 
-  PartNode emit_cell(const Cell& cell, bool root) {
-    PartNode node;
+  // Fills `node` in place (a PartNode built and then moved into its parent costs a move of
+  // every string and vector in it). Room symbols are moved out of rooms_: each room is emitted
+  // once, after the transitions have copied them.
+  void emit_cell(const Cell& cell, bool root, PartNode& node) {
     node.orientation = cell.orientation;
     if (!cell.leaf) {
       if (!root) node.symbol = "parts" + std::to_string(containers_++);
-      for (const Cell& child : cell.children) node.children.push_back(emit_cell(child, false));
-      return node;
+      node.children.resize(cell.children.size());
+      for (std::size_t i = 0; i < cell.children.size(); ++i) {
+        emit_cell(cell.children[i], false, node.children[i]);
+      }
+      return;
     }
     const int index = parts_++;
-    node.symbol = (cell.disposable ? "notch" : "part") + std::to_string(index);
+    node.symbol = cell.disposable ? "notch" : "part";
+    node.symbol += std::to_string(index);
     node.orientation = Orientation::kAlternate;
-    BuildingPart part;
+    BuildingPart& part = node.part.emplace();
     part.disposable = cell.disposable;
-    Floor floor;
-    floor.symbol = node.symbol + "_ground";
-    const DivNode& divisions = divisions_[leaf_of_.at(&cell)];
-    int& counter = div_counter_[node.symbol];
+    Floor& floor = part.floors.emplace_back();
+    floor.symbol = node.symbol;
+    floor.symbol += "_ground";
+    const DivNode& divisions = divisions_[cell.division];
+    int counter = 0;  // numbers the part's division containers
     if (divisions.room >= 0) {
       floor.layout.orientation = along_longer(cell.rect);
-      floor.layout.children.push_back(emit_division(divisions, node.symbol, counter));
+      emit_division(divisions, node.symbol, counter, floor.layout.children.emplace_back());
     } else {
       floor.layout.orientation = divisions.orientation;
-      floor.layout.children.reserve(divisions.children.size());
-      for (const DivNode& child : divisions.children) {
-        floor.layout.children.push_back(emit_division(child, node.symbol, counter));
+      floor.layout.children.resize(divisions.children.size());
+      for (std::size_t i = 0; i < divisions.children.size(); ++i) {
+        emit_division(divisions.children[i], node.symbol, counter, floor.layout.children[i]);
       }
     }
     floor.layout.symbol = floor.symbol;
-    part.floors.push_back(std::move(floor));
-    node.part = std::move(part);
-    return node;
   }
 
-  // `counter` numbers the containers of `part` (its entry in div_counter_).
-  Division emit_division(const DivNode& div, const std::string& part, int& counter) {
-    Division out;
+  // Fills `out`; `counter` numbers the containers of `part`.
+  void emit_division(const DivNode& div, const std::string& part, int& counter, Division& out) {
     if (div.room >= 0) {
-      const GenRoom& room = rooms_[static_cast<std::size_t>(div.room)];
-      out.symbol = room.symbol;
-      Room r;
+      GenRoom& room = rooms_[static_cast<std::size_t>(div.room)];
+      out.symbol = std::move(room.symbol);
+      Room& r = out.room.emplace();
       r.type = room.type;
       r.size = room.disposable ? SizeLabel::kMedium : room.size;
       r.walls = room.disposable ? 0 : 4;
       r.windows = room.windows;
-      out.room = std::move(r);
-      return out;
+      return;
     }
     out.symbol = part;
     out.symbol += "_div";
     out.symbol += std::to_string(counter++);
     out.orientation = div.orientation;
-    out.children.reserve(div.children.size());
-    for (const DivNode& child : div.children) {
-      out.children.push_back(emit_division(child, part, counter));
+    out.children.resize(div.children.size());
+    for (std::size_t i = 0; i < div.children.size(); ++i) {
+      emit_division(div.children[i], part, counter, out.children[i]);
     }
-    return out;
   }
 
   // Roofs (§4.1, §4.6): one kind and height for the whole building; L, U, T and H buildings, and
@@ -923,13 +1007,14 @@ class Generator {
   std::vector<GenRoom> rooms_;
   std::vector<int> order_;
   std::vector<DivNode> divisions_;
-  std::map<const Cell*, std::size_t> leaf_of_;
   int entrance_ = 0;
   std::vector<std::pair<int, int>> doors_;
-  std::vector<std::vector<std::pair<int, double>>> neighbors_;  // room -> (room, shared wall)
+  std::vector<std::pair<int, double>> neighbors_;  // (room, shared wall), sliced per room
+  std::vector<std::size_t> neighbor_start_;
+  using Candidate = std::tuple<int, std::uint64_t, int, int>;  // key, hash, u, v
+  std::vector<Candidate> frontier_;
   int parts_ = 0;
   int containers_ = 0;
-  std::map<std::string, int> div_counter_;
 };
 
 }  // namespace
