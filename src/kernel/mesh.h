@@ -39,6 +39,23 @@ class Mesh {
   // Adds a face over existing vertex indices (at least 3). Returns the face index.
   std::uint32_t add_face(std::span<const std::uint32_t> loop, FaceTag tag);
   std::uint32_t add_face(std::initializer_list<std::uint32_t> loop, FaceTag tag);
+  // Adds corners.size() / n faces of n vertices each, all tagged `tag`: face f runs over
+  // base + corners[f n], ..., base + corners[f n + n - 1]. The same faces as that many add_face
+  // calls, with one size check per array instead of one per face (boxes and other fixed solids
+  // whose face loops are a constant table).
+  void add_faces(std::span<const std::uint32_t> corners, std::uint32_t n, std::uint32_t base,
+                 FaceTag tag);
+  // Room for `faces` new faces holding `indices` vertex indices in all, for builders that compute
+  // their loops in place (no loop vector per face). The caller fills every slot: face f's loop goes
+  // into indices[...] right after face f - 1's, ends[f] is the absolute end of face f's loop
+  // (first_index + the number of indices written up to and including face f), tags[f] its tag.
+  struct FaceSlots {
+    std::span<std::uint32_t> indices;
+    std::span<std::uint32_t> ends;
+    std::span<FaceTag> tags;
+    std::uint32_t first_index = 0;  // the number of face indices the mesh held before the call
+  };
+  FaceSlots add_face_slots(std::size_t faces, std::size_t indices);
   // Adds a face with its own new vertices.
   std::uint32_t add_polygon(std::span<const Vec3> loop, FaceTag tag);
   // Appends all of `other`'s vertices and faces.
@@ -85,6 +102,32 @@ inline std::uint32_t Mesh::add_face(std::span<const std::uint32_t> loop, FaceTag
 
 inline std::uint32_t Mesh::add_face(std::initializer_list<std::uint32_t> loop, FaceTag tag) {
   return add_face(std::span<const std::uint32_t>(loop.begin(), loop.size()), tag);
+}
+
+inline void Mesh::add_faces(std::span<const std::uint32_t> corners, std::uint32_t n,
+                            std::uint32_t base, FaceTag tag) {
+  const std::size_t first_index = indices_.size();
+  const std::size_t first_face = offsets_.size();
+  const std::size_t faces = corners.size() / n;
+  indices_.resize(first_index + faces * n);
+  offsets_.resize(first_face + faces);
+  std::uint32_t* index = indices_.data() + first_index;
+  for (std::size_t i = 0; i < faces * n; ++i) index[i] = base + corners[i];
+  auto end = static_cast<std::uint32_t>(first_index);
+  for (std::size_t f = 0; f < faces; ++f) offsets_[first_face + f] = end += n;
+  tags_.insert(tags_.end(), faces, tag);
+}
+
+inline Mesh::FaceSlots Mesh::add_face_slots(std::size_t faces, std::size_t indices) {
+  const std::size_t first_index = indices_.size();
+  const std::size_t first_face = tags_.size();
+  indices_.resize(first_index + indices);
+  offsets_.resize(first_face + 1 + faces);
+  tags_.resize(first_face + faces);
+  return {{indices_.data() + first_index, indices},
+          {offsets_.data() + first_face + 1, faces},
+          {tags_.data() + first_face, faces},
+          static_cast<std::uint32_t>(first_index)};
 }
 
 // Newell normal of a face (unit length; zero for a degenerate face).

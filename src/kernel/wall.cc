@@ -780,10 +780,11 @@ void emit(const Boundary& b, const std::vector<std::uint32_t>& loops,
 
 // Writes the wall's faces into `mesh` after whatever it already holds (vertex indices shifted by
 // its vertex count). A left-handed frame gets every loop reversed as it is written, which is what
-// Mesh::flip does afterwards to a wall built alone.
+// Mesh::flip does afterwards to a wall built alone. The loops are written straight into the mesh's
+// face slots (no loop vector per face, no size check per face).
 void emit_into(const Boundary& b, const std::vector<std::uint32_t>& loops,
                const std::vector<std::uint32_t>& offsets, const WallSpec& spec,
-               const WallFrame& frame, Mesh& mesh, std::vector<std::uint32_t>& loop) {
+               const WallFrame& frame, Mesh& mesh) {
   const auto n = static_cast<std::uint32_t>(b.points.size());
   const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
   const std::size_t pieces = offsets.size() - 1;
@@ -799,26 +800,37 @@ void emit_into(const Boundary& b, const std::vector<std::uint32_t>& loops,
     positions[base + i] = in_plane + frame.normal * spec.thickness;
     positions[base + n + i] = in_plane + frame.normal * 0.0;
   }
-  for (std::size_t f = 0; f < pieces; ++f) {
-    loop.assign(loops.begin() + offsets[f], loops.begin() + offsets[f + 1]);
-    for (std::uint32_t& v : loop) v += base;
-    if (flip) std::reverse(loop.begin(), loop.end());
-    mesh.add_face(loop, spec.tags.front);
-  }
-  for (std::size_t f = 0; f < pieces; ++f) {
-    loop.assign(loops.begin() + offsets[f], loops.begin() + offsets[f + 1]);
-    if (!flip) std::reverse(loop.begin(), loop.end());
-    for (std::uint32_t& v : loop) v += base + n;
-    mesh.add_face(loop, spec.tags.back);
-  }
+  // Front pieces, back pieces (reversed, on the back vertices), then one quad per boundary edge.
+  const Mesh::FaceSlots slots = mesh.add_face_slots(2 * pieces + n, 2 * loops.size() + 4 * n);
+  std::uint32_t* out = slots.indices.data();
+  std::size_t face = 0;
+  const auto close_face = [&](const FaceTag& tag) {
+    slots.ends[face] = slots.first_index + static_cast<std::uint32_t>(out - slots.indices.data());
+    slots.tags[face++] = tag;
+  };
+  const auto write_pieces = [&](bool reversed, std::uint32_t shift, const FaceTag& tag) {
+    for (std::size_t f = 0; f < pieces; ++f) {
+      const std::uint32_t* first = loops.data() + offsets[f];
+      const std::uint32_t* last = loops.data() + offsets[f + 1];
+      if (reversed) {
+        while (last != first) *out++ = *--last + shift;
+      } else {
+        while (first != last) *out++ = *first++ + shift;
+      }
+      close_face(tag);
+    }
+  };
+  write_pieces(flip, base, spec.tags.front);
+  write_pieces(!flip, base + n, spec.tags.back);
   for (std::uint32_t i = 0; i < n; ++i) {
     const std::uint32_t j = b.next[i];
-    const FaceTag tag = tag_for(spec.tags, b.kind[i]);
     if (flip) {
-      mesh.add_face({base + j, base + n + j, base + n + i, base + i}, tag);
+      out[0] = base + j, out[1] = base + n + j, out[2] = base + n + i, out[3] = base + i;
     } else {
-      mesh.add_face({base + i, base + n + i, base + n + j, base + j}, tag);
+      out[0] = base + i, out[1] = base + n + i, out[2] = base + n + j, out[3] = base + j;
     }
+    out += 4;
+    close_face(tag_for(spec.tags, b.kind[i]));
   }
 }
 
@@ -849,7 +861,6 @@ struct WallWorkspace::Buffers {
   std::vector<std::array<std::uint32_t, 2>> diagonals;
   std::vector<std::uint32_t> loops;    // the pieces' vertex loops, one after the other
   std::vector<std::uint32_t> offsets;  // piece f is loops[offsets[f], offsets[f + 1])
-  std::vector<std::uint32_t> loop;     // one face while it is emitted
   WallResult result;                   // of the last appending build_wall
 };
 
@@ -946,7 +957,7 @@ const WallResult& build_wall(const WallSpec& spec, const WallFrame& frame, Mesh&
                              WallWorkspace& workspace) {
   WallWorkspace::Buffers& w = workspace.buffers();
   if (partition_wall(spec, w, w.result)) {
-    emit_into(w.boundary, w.loops, w.offsets, spec, frame, out, w.loop);
+    emit_into(w.boundary, w.loops, w.offsets, spec, frame, out);
   }
   return w.result;
 }

@@ -67,7 +67,20 @@ double Context::storey_height(int storey) const {
 kernel::Polygon WallGeometry::rect(double u0, double u1, double across0, double across1) const {
   kernel::Polygon p;
   p.outer = {at(u0, across0), at(u1, across0), at(u1, across1), at(u0, across1)};
-  kernel::normalize(p);
+  const kernel::Ring& r = p.outer;
+  if (r.front() == r.back()) {  // degenerate: normalize drops the repeated corner
+    kernel::normalize(p);
+    return p;
+  }
+  // What normalize does with four distinct-ended corners: reverse them when signed_area < 0. The
+  // sign comes from the same shoelace sum signed_area takes (relative to the first corner, in the
+  // same order, so the same bits), without the moment terms and the call (walls, plan walls and
+  // door gaps take thousands of these per building).
+  double twice_area = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    twice_area += kernel::cross(r[i] - r[0], r[(i + 1) % 4] - r[0]);
+  }
+  if (0.5 * twice_area < 0) std::reverse(p.outer.begin(), p.outer.end());
   return p;
 }
 
@@ -93,19 +106,16 @@ void add_box(kernel::Mesh& mesh, Vec3 origin, Vec3 u, Vec3 v, Vec3 w, FaceTag ta
   for (int k = 0; k < 2; ++k) {
     for (int ij = 0; ij < 4; ++ij) positions[first + 4 * k + ij] = along_uv[ij] + ws[k];
   }
-  static constexpr std::array<std::array<std::uint32_t, 4>, 6> kFaces{{
-      {0, 2, 3, 1},  // k = 0
-      {4, 5, 7, 6},  // k = 1
-      {0, 1, 5, 4},  // j = 0
-      {2, 6, 7, 3},  // j = 1
-      {0, 4, 6, 2},  // i = 0
-      {1, 3, 7, 5},  // i = 1
-  }};
-  for (const auto& face : kFaces) {
-    const std::array<std::uint32_t, 4> loop{base + face[0], base + face[1], base + face[2],
-                                            base + face[3]};
-    mesh.add_face(loop, tag);
-  }
+  // Six quads over the corners, outward for a right-handed (u, v, w).
+  static constexpr std::array<std::uint32_t, 24> kFaces{
+      0, 2, 3, 1,  // k = 0
+      4, 5, 7, 6,  // k = 1
+      0, 1, 5, 4,  // j = 0
+      2, 6, 7, 3,  // j = 1
+      0, 4, 6, 2,  // i = 0
+      1, 3, 7, 5,  // i = 1
+  };
+  mesh.add_faces(kFaces, 4, base, tag);
 }
 
 bool add_prism(kernel::Mesh& mesh, const kernel::Polygon& polygon, double z0, double z1,
