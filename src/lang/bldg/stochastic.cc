@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
 #include <numeric>
 #include <span>
 #include <string_view>
@@ -62,6 +61,7 @@ struct GenRoom {
   std::string symbol;
   Rect rect;
   bool disposable = false;
+  bool dead_end = false;  // dead_end(type), asked for every door the room could give
   int windows = 0;
 };
 
@@ -74,14 +74,19 @@ struct Cell {
   int room_count = 0;
   std::vector<int> rooms;  // leaf: indices into the room list, in priority order
   Rect rect;
-  std::size_t division = 0;  // leaf: its division tree in Generator::divisions_
+  std::size_t division = 0;  // leaf: the root of its division tree in Generator::divisions_
 };
 
-// A node of a part's division tree.
+// A node of a part's division tree. The nodes of every part live in one list (no vector per
+// node); a node's children are the `count` nodes from `first`.
 struct DivNode {
   int room = -1;  // leaf when >= 0
   Orientation orientation = Orientation::kHorizontal;
-  std::vector<DivNode> children;
+  std::size_t first = 0;
+  std::size_t count = 0;
+  // The growth factors of its rooms: a leaf's own, a container's the sum of its children's in
+  // order (the weight place_rooms slices by).
+  double weight = 0;
 };
 
 Orientation along_longer(const Rect& r) {
@@ -120,9 +125,16 @@ const TypeInfo* type_info(std::string_view type) {
   return nullptr;
 }
 
+// Rooms that should end a walk, not be passed through (a door tree through a bathroom is odd).
+bool dead_end(std::string_view type) {
+  return type == "bathroom" || type == "storage" || type == "pantry" || type == "laundry" ||
+         type == "void";
+}
+
 GenRoom make_room(std::string_view type, Rng& rng) {
   GenRoom room;
   room.type = type;
+  room.dead_end = dead_end(type);
   if (const TypeInfo* info = type_info(type)) {
     room.priority = info->priority;
     room.size = info->size;
@@ -283,17 +295,12 @@ void place_cells(Cell& cell, const Rect& rect, const std::vector<GenRoom>& rooms
   }
 }
 
-double weight_of(const DivNode& node, const std::vector<GenRoom>& rooms) {
-  if (node.room >= 0) return growth(rooms[static_cast<std::size_t>(node.room)].size);
-  double w = 0;
-  for (const DivNode& child : node.children) w += weight_of(child, rooms);
-  return w;
-}
-
 // Children of a division node: up to three groups of rooms (§4.3).
 constexpr std::size_t kMaxGroups = 3;
 
-void place_rooms(const DivNode& node, const Rect& rect, std::vector<GenRoom>& rooms) {
+void place_rooms(const std::vector<DivNode>& nodes, std::size_t at, const Rect& rect,
+                 std::vector<GenRoom>& rooms) {
+  const DivNode& node = nodes[at];
   if (node.room >= 0) {
     rooms[static_cast<std::size_t>(node.room)].rect = rect;
     return;
@@ -301,24 +308,25 @@ void place_rooms(const DivNode& node, const Rect& rect, std::vector<GenRoom>& ro
   // divide() makes at most kMaxGroups children per node.
   std::array<double, kMaxGroups> weights{};
   std::array<Rect, kMaxGroups> pieces{};
-  const std::size_t n = node.children.size();
-  for (std::size_t i = 0; i < n; ++i) weights[i] = weight_of(node.children[i], rooms);
+  const std::size_t n = node.count;
+  for (std::size_t i = 0; i < n; ++i) weights[i] = nodes[node.first + i].weight;
   slice(rect, node.orientation, std::span(weights).first(n), std::span(pieces).first(n));
-  for (std::size_t i = 0; i < node.children.size(); ++i) {
-    place_rooms(node.children[i], pieces[i], rooms);
-  }
+  for (std::size_t i = 0; i < n; ++i) place_rooms(nodes, node.first + i, pieces[i], rooms);
 }
 
 // The treemap-like node structure of one part's rooms (§4.3): groups of up to three rooms in
-// containers, the axis along the longer side of the space so rooms stay compact.
-DivNode divide(const std::vector<int>& ids, std::size_t lo, std::size_t hi, const Rect& rect,
-               std::vector<GenRoom>& rooms, Rng& rng) {
-  DivNode node;
+// containers, the axis along the longer side of the space so rooms stay compact. Fills
+// nodes[self] with the rooms ids[lo, hi); its children are appended to `nodes` as one block.
+void divide(const std::vector<int>& ids, std::size_t lo, std::size_t hi, const Rect& rect,
+            const std::vector<GenRoom>& rooms, Rng& rng, std::vector<DivNode>& nodes,
+            std::size_t self) {
   if (hi - lo == 1) {
-    node.room = ids[lo];
-    return node;
+    nodes[self].room = ids[lo];
+    nodes[self].weight = growth(rooms[static_cast<std::size_t>(ids[lo])].size);
+    return;
   }
-  node.orientation = along_longer(rect);
+  const Orientation orientation = along_longer(rect);
+  nodes[self].orientation = orientation;
   const std::size_t n = hi - lo;
   std::array<std::pair<std::size_t, std::size_t>, kMaxGroups> groups{};
   std::size_t count = 0;
@@ -345,12 +353,17 @@ DivNode divide(const std::vector<int>& ids, std::size_t lo, std::size_t hi, cons
     weights[g] = w;
   }
   std::array<Rect, kMaxGroups> pieces{};
-  slice(rect, node.orientation, std::span(weights).first(count), std::span(pieces).first(count));
-  node.children.reserve(count);
+  slice(rect, orientation, std::span(weights).first(count), std::span(pieces).first(count));
+  const std::size_t first = nodes.size();
+  nodes[self].first = first;
+  nodes[self].count = count;
+  nodes.resize(first + count);  // invalidates references into `nodes`: indices only below
+  double weight = 0;
   for (std::size_t g = 0; g < count; ++g) {
-    node.children.push_back(divide(ids, groups[g].first, groups[g].second, pieces[g], rooms, rng));
+    divide(ids, groups[g].first, groups[g].second, pieces[g], rooms, rng, nodes, first + g);
+    weight += nodes[first + g].weight;
   }
-  return node;
+  nodes[self].weight = weight;
 }
 
 // Length of the wall two rectangles share (0 when they do not touch along a side).
@@ -396,12 +409,6 @@ std::string identifier(std::string_view text) {
 // Rounds to 1 / `per_unit` (10: decimetres) without binary noise in the printed grammar.
 double round_to(double v, double per_unit) {
   return std::round(v * per_unit) / per_unit;
-}
-
-// Rooms that should end a walk, not be passed through (a door tree through a bathroom is odd).
-bool dead_end(std::string_view type) {
-  return type == "bathroom" || type == "storage" || type == "pantry" || type == "laundry" ||
-         type == "void";
 }
 
 class Generator {
@@ -455,14 +462,23 @@ class Generator {
     }
     rooms_.reserve(types.size());
     for (const std::string_view type : types) rooms_.push_back(make_room(type, rng_));
-    std::vector<std::uint64_t> keys(rooms_.size());
-    for (auto& key : keys) key = rng_.next();
-    order_.resize(rooms_.size());
-    std::iota(order_.begin(), order_.end(), 0);
-    std::stable_sort(order_.begin(), order_.end(), [&](int a, int b) {
-      const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
-      return std::pair(rooms_[ua].priority, keys[ua]) < std::pair(rooms_[ub].priority, keys[ub]);
+    // A stable sort by (priority, key) is a sort by (priority, key, index): no buffer needed.
+    struct Rank {
+      int priority;
+      std::uint64_t key;
+      int index;
+    };
+    std::vector<Rank> ranks(rooms_.size());
+    for (std::size_t i = 0; i < ranks.size(); ++i) {
+      ranks[i] = {rooms_[i].priority, rng_.next(), static_cast<int>(i)};
+    }
+    std::sort(ranks.begin(), ranks.end(), [](const Rank& a, const Rank& b) {
+      if (a.priority != b.priority) return a.priority < b.priority;
+      if (a.key != b.key) return a.key < b.key;
+      return a.index < b.index;
     });
+    order_.resize(ranks.size());
+    for (std::size_t i = 0; i < ranks.size(); ++i) order_[i] = ranks[i].index;
   }
 
   // Spreads `n` rooms over the real parts as evenly as possible (at least one each).
@@ -517,6 +533,7 @@ class Generator {
         GenRoom room;
         room.type = "void";
         room.disposable = true;
+        room.dead_end = dead_end(room.type);
         room.priority = 3;
         cell->rooms.push_back(static_cast<int>(rooms_.size()));
         rooms_.push_back(room);
@@ -593,10 +610,14 @@ class Generator {
   void make_divisions() {
     std::vector<Cell*> leaves;
     collect_leaves(root_, leaves, false);
+    // A tree of r rooms has fewer than 2r nodes.
+    divisions_.reserve(2 * rooms_.size() + leaves.size());
     for (Cell* cell : leaves) {
-      divisions_.push_back(divide(cell->rooms, 0, cell->rooms.size(), cell->rect, rooms_, rng_));
-      place_rooms(divisions_.back(), cell->rect, rooms_);
-      cell->division = divisions_.size() - 1;
+      cell->division = divisions_.size();
+      divisions_.emplace_back();
+      divide(cell->rooms, 0, cell->rooms.size(), cell->rect, rooms_, rng_, divisions_,
+             cell->division);
+      place_rooms(divisions_, cell->division, cell->rect, rooms_);
     }
   }
 
@@ -690,14 +711,14 @@ class Generator {
     frontier.clear();
     const auto push_edges = [&](int u) {
       const GenRoom& from = rooms_[static_cast<std::size_t>(u)];
-      const int key = from.priority + (dead_end(from.type) ? 3 : 0);
+      const int key = from.priority + (from.dead_end ? 3 : 0);
       for (const auto& [v, shared] : neighbors(static_cast<std::size_t>(u))) {
         if (in_tree[static_cast<std::size_t>(v)] || shared < threshold) continue;
         const std::uint64_t hash =
             shape::mix64(seed_salt_ ^ (static_cast<std::uint64_t>(u) * 1315423911U +
                                        static_cast<std::uint64_t>(v)));
-        frontier.emplace_back(key, hash, u, v);
-        std::push_heap(frontier.begin(), frontier.end(), std::greater<>());
+        frontier.push_back({key, hash, u, v});
+        std::push_heap(frontier.begin(), frontier.end(), Candidate::after);
       }
     };
     for (std::size_t u = 0; u < in_tree.size(); ++u) {
@@ -705,7 +726,7 @@ class Generator {
     }
     std::size_t added = 0;
     while (!frontier.empty()) {
-      std::pop_heap(frontier.begin(), frontier.end(), std::greater<>());
+      std::pop_heap(frontier.begin(), frontier.end(), Candidate::after);
       const auto [key, hash, u, v] = frontier.back();
       frontier.pop_back();
       if (in_tree[static_cast<std::size_t>(v)]) continue;
@@ -946,9 +967,10 @@ class Generator {
       emit_division(divisions, node.symbol, counter, floor.layout.children.emplace_back());
     } else {
       floor.layout.orientation = divisions.orientation;
-      floor.layout.children.resize(divisions.children.size());
-      for (std::size_t i = 0; i < divisions.children.size(); ++i) {
-        emit_division(divisions.children[i], node.symbol, counter, floor.layout.children[i]);
+      floor.layout.children.resize(divisions.count);
+      for (std::size_t i = 0; i < divisions.count; ++i) {
+        emit_division(divisions_[divisions.first + i], node.symbol, counter,
+                      floor.layout.children[i]);
       }
     }
     floor.layout.symbol = floor.symbol;
@@ -970,9 +992,9 @@ class Generator {
     out.symbol += "_div";
     out.symbol += std::to_string(counter++);
     out.orientation = div.orientation;
-    out.children.resize(div.children.size());
-    for (std::size_t i = 0; i < div.children.size(); ++i) {
-      emit_division(div.children[i], part, counter, out.children[i]);
+    out.children.resize(div.count);
+    for (std::size_t i = 0; i < div.count; ++i) {
+      emit_division(divisions_[div.first + i], part, counter, out.children[i]);
     }
   }
 
@@ -1006,12 +1028,24 @@ class Generator {
   Rect outline_;
   std::vector<GenRoom> rooms_;
   std::vector<int> order_;
-  std::vector<DivNode> divisions_;
+  std::vector<DivNode> divisions_;  // every part's division tree (Cell::division: its root)
   int entrance_ = 0;
   std::vector<std::pair<int, int>> doors_;
   std::vector<std::pair<int, double>> neighbors_;  // (room, shared wall), sliced per room
   std::vector<std::size_t> neighbor_start_;
-  using Candidate = std::tuple<int, std::uint64_t, int, int>;  // key, hash, u, v
+  // A door candidate of grow_tree, ordered by (key, hash, u, v) as a tuple would be; the heap
+  // is a min-heap, so its comparison is "comes after".
+  struct Candidate {
+    int key;
+    std::uint64_t hash;
+    int u, v;
+    static bool after(const Candidate& a, const Candidate& b) {
+      if (a.key != b.key) return a.key > b.key;
+      if (a.hash != b.hash) return a.hash > b.hash;
+      if (a.u != b.u) return a.u > b.u;
+      return a.v > b.v;
+    }
+  };
   std::vector<Candidate> frontier_;
   int parts_ = 0;
   int containers_ = 0;
