@@ -842,6 +842,18 @@ std::string wall_problem(const WallSpec& spec, double outline_area) {
   return outline_problem(spec.outline, outline_area);
 }
 
+// signed_area(ring), with four-vertex outlines (every placed wall's rectangle) summed in place:
+// the same shoelace terms relative to the first vertex in the same order, so the same bits,
+// without the moment terms signed_area's shared helper also accumulates.
+double outline_signed_area(const Ring& ring) {
+  if (ring.size() != 4) return signed_area(ring);
+  double twice_area = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    twice_area += cross(ring[i] - ring[0], ring[(i + 1) % 4] - ring[0]);
+  }
+  return 0.5 * twice_area;
+}
+
 void counter_clockwise(const Ring& ring, double area, Ring& out) {
   out.assign(ring.begin(), ring.end());
   if (area < 0) std::reverse(out.begin(), out.end());
@@ -881,7 +893,7 @@ bool partition_wall(const WallSpec& spec, WallWorkspace::Buffers& w, WallResult&
   result.cut.clear();
   result.face_opening.clear();
   result.front_pieces = 0;
-  const double area = signed_area(spec.outline);
+  const double area = outline_signed_area(spec.outline);
   if (std::string why = wall_problem(spec, area); !why.empty()) {
     result.status = WallStatus::kInvalidWall;
     result.message = std::move(why);
@@ -927,7 +939,7 @@ double opening_area(const Opening& opening) {
 
 std::vector<OpeningIssue> check_openings(const WallSpec& spec, std::vector<std::size_t>* accepted) {
   if (accepted) accepted->clear();
-  const double area = signed_area(spec.outline);
+  const double area = outline_signed_area(spec.outline);
   if (!wall_problem(spec, area).empty()) return {};
   std::vector<Accepted> cut;
   Ring outline;

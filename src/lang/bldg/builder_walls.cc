@@ -14,6 +14,8 @@
 // where two walls standing inside would otherwise leave a square hole.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <span>
 #include <string>
 
 #include "kernel/polygon.h"
@@ -218,7 +220,7 @@ void add_frames(const kernel::WallFrame& frame, double thickness, const kernel::
 }
 
 // The wall's footprint in the plan, with gaps where doors go through it.
-void plan_wall(const WallGeometry& g, std::vector<std::pair<double, double>> gaps,
+void plan_wall(const WallGeometry& g, std::vector<std::pair<double, double>>& gaps,
                shape::StoreyPlan& plan) {
   std::sort(gaps.begin(), gaps.end());
   double u = 0;
@@ -260,23 +262,37 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
       }
     }
   }
-  std::vector<std::vector<Asked>> asked(storey.walls.size());
+  // The openings asked of each wall, in one array grouped by wall (a counting sort that keeps
+  // doors, entrances, then windows in their plan order within a wall): no vector per wall.
+  const std::size_t wall_count = storey.walls.size();
+  const auto wall_of = [&](int wall) {
+    return wall >= 0 && static_cast<std::size_t>(wall) < wall_count ? static_cast<std::size_t>(wall)
+                                                                    : wall_count;
+  };
+  std::vector<std::uint32_t> asked_start(wall_count + 2, 0);
+  for (const PlanDoor& d : storey.doors) ++asked_start[wall_of(d.wall) + 1];
+  for (const PlanDoor& d : storey.entrances) ++asked_start[wall_of(d.wall) + 1];
+  for (const PlanWindow& w : storey.windows) ++asked_start[wall_of(w.wall) + 1];
+  for (std::size_t i = 0; i + 1 < asked_start.size(); ++i) asked_start[i + 1] += asked_start[i];
+  std::vector<Asked> asked(asked_start[wall_count]);
+  std::vector<std::uint32_t> asked_fill(asked_start.begin(), asked_start.end() - 2);
   const auto add_door = [&](const PlanDoor& d, bool entrance) {
-    if (d.wall < 0 || static_cast<std::size_t>(d.wall) >= storey.walls.size()) return;
+    const std::size_t wall = wall_of(d.wall);
+    if (wall == wall_count) return;
     const double height =
         std::min(d.height > 0 ? d.height : c.rules.door_height, h - 2 * slab - kOpeningTop);
-    asked[static_cast<std::size_t>(d.wall)].push_back(
-        {{0, slab, 0, height, 0, 8}, true, entrance, &d, d.a, d.b});
+    asked[asked_fill[wall]++] = {{0, slab, 0, height, 0, 8}, true, entrance, &d, d.a, d.b};
   };
   for (const PlanDoor& d : storey.doors) add_door(d, false);
   for (const PlanDoor& d : storey.entrances) add_door(d, true);
   for (const PlanWindow& w : storey.windows) {
-    if (w.wall < 0 || static_cast<std::size_t>(w.wall) >= storey.walls.size()) continue;
+    const std::size_t wall = wall_of(w.wall);
+    if (wall == wall_count) continue;
     const double sill = slab + w.sill;
     const double height = std::min(w.height, h - slab - kOpeningTop - sill);
-    asked[static_cast<std::size_t>(w.wall)].push_back(
-        {{0, sill, 0, height, 0, 8}, false, false, nullptr, w.a, w.b});
+    asked[asked_fill[wall]++] = {{0, sill, 0, height, 0, 8}, false, false, nullptr, w.a, w.b};
   }
+  std::vector<std::pair<double, double>> gaps;  // per wall, reused
   std::uint32_t face_id = 0;
   const Outline outer = outer_walls(storey);
   out.walls.reserve(storey.walls.size());
@@ -301,7 +317,9 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
     spec.thickness = g.thickness;
     spec.tags = wall_tags(wall.exterior(), face_id);
     spec.outline = {{0, 0}, {g.length, 0}, {g.length, h}, {0, h}};
-    for (Asked& a : asked[i]) {
+    const std::span<Asked> wall_asked(asked.data() + asked_start[i],
+                                      asked_start[i + 1] - asked_start[i]);
+    for (Asked& a : wall_asked) {
       const double u0 = g.u_of(a.a);
       const double u1 = g.u_of(a.b);
       a.opening.u = std::min(u0, u1);
@@ -321,16 +339,16 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
       continue;
     }
     for (const kernel::OpeningIssue& issue : built.issues) {
-      const Asked& a = asked[i][issue.opening];
+      const Asked& a = wall_asked[issue.opening];
       c.warn("storey " + std::to_string(storey.level) + ": " +
              (a.door ? (a.entrance ? "entrance" : "door") : "window") + " in the wall of room '" +
              storey.rooms[static_cast<std::size_t>(wall.left)].symbol +
              "' left out: " + issue.message);
     }
     ++c.result.stats.walls;
-    std::vector<std::pair<double, double>> gaps;
+    gaps.clear();
     for (std::size_t k : built.cut) {
-      const Asked& a = asked[i][k];
+      const Asked& a = wall_asked[k];
       if (c.options.frames) add_frames(*frame, g.thickness, a.opening, a.door, c.options, mesh);
       if (a.door) {
         gaps.emplace_back(a.opening.u, a.opening.u + a.opening.width);
@@ -350,7 +368,7 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
         ++c.result.stats.windows;
       }
     }
-    plan_wall(g, std::move(gaps), plan);
+    plan_wall(g, gaps, plan);
   }
   return out;
 }
