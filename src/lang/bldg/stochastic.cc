@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <numeric>
 #include <span>
@@ -131,11 +132,12 @@ bool dead_end(std::string_view type) {
          type == "void";
 }
 
-GenRoom make_room(std::string_view type, Rng& rng) {
+// `info` is type_info(type), looked up by the caller.
+GenRoom make_room(std::string_view type, const TypeInfo* info, Rng& rng) {
   GenRoom room;
   room.type = type;
   room.dead_end = dead_end(type);
-  if (const TypeInfo* info = type_info(type)) {
+  if (info) {
     room.priority = info->priority;
     room.size = info->size;
     if (type == "bedroom" && rng.unit() < 0.4) room.size = SizeLabel::kBig;
@@ -145,17 +147,28 @@ GenRoom make_room(std::string_view type, Rng& rng) {
 
 // A default domestic program of n rooms: a hall, a living room and a kitchen first, then a
 // bathroom per six rooms and a mix of private and service rooms.
-std::vector<std::string_view> default_program(int n, Rng& rng) {
-  std::vector<std::string_view> out;
+// The program's types are entries of kTypes, looked up once.
+std::vector<const TypeInfo*> default_program(int n, Rng& rng) {
+  static const std::array<const TypeInfo*, 4> firsts = {
+      type_info("hall"), type_info("living"), type_info("kitchen"), type_info("bathroom")};
+  static const std::array<const TypeInfo*, 7> rest = {
+      type_info("bedroom"), type_info("bedroom"), type_info("bedroom"), type_info("dining"),
+      type_info("study"),   type_info("storage"), type_info("bathroom")};
+  std::vector<const TypeInfo*> out;
   out.reserve(static_cast<std::size_t>(std::max(n, 0)));
-  const char* firsts[] = {"hall", "living", "kitchen", "bathroom"};
-  for (int i = 0; i < n && i < 4; ++i) out.emplace_back(firsts[i]);
-  const char* rest[] = {"bedroom", "bedroom", "bedroom", "dining", "study", "storage", "bathroom"};
+  for (int i = 0; i < n && i < 4; ++i) out.push_back(firsts[static_cast<std::size_t>(i)]);
   const double weights[] = {3, 3, 3, 1, 1, 1, 1};
   while (static_cast<int>(out.size()) < n) {
-    out.emplace_back(rest[rng.choice(weights)]);
+    out.push_back(rest[rng.choice(weights)]);
   }
   return out;
+}
+
+// Appends the decimal digits of `n`, as std::to_string writes them, without a temporary string.
+void append_number(std::string& out, std::size_t n) {
+  std::array<char, 24> digits;
+  char* end = std::to_chars(digits.data(), digits.data() + digits.size(), n).ptr;
+  out.append(digits.data(), static_cast<std::size_t>(end - digits.data()));
 }
 
 // ---- skeleton ----
@@ -451,17 +464,20 @@ class Generator {
     collect_leaves(root_, real, true);
     int total = 0;
     for (Cell* cell : real) total += cell->room_count;
-    std::vector<std::string_view> types;
     if (!spec_.room_types.empty()) {
-      types.assign(spec_.room_types.begin(), spec_.room_types.end());
+      std::vector<std::string_view> types(spec_.room_types.begin(), spec_.room_types.end());
       while (types.size() < real.size())
         types.push_back(spec_.room_types[types.size() % spec_.room_types.size()]);
       redistribute(real, static_cast<int>(types.size()));
+      rooms_.reserve(types.size());
+      for (const std::string_view type : types) {
+        rooms_.push_back(make_room(type, type_info(type), rng_));
+      }
     } else {
-      types = default_program(total, rng_);
+      const std::vector<const TypeInfo*> types = default_program(total, rng_);
+      rooms_.reserve(types.size());
+      for (const TypeInfo* info : types) rooms_.push_back(make_room(info->type, info, rng_));
     }
-    rooms_.reserve(types.size());
-    for (const std::string_view type : types) rooms_.push_back(make_room(type, rng_));
     // A stable sort by (priority, key) is a sort by (priority, key, index): no buffer needed.
     struct Rank {
       int priority;
@@ -505,8 +521,9 @@ class Generator {
     std::vector<std::size_t> queue{front};
     std::vector<bool> seen(real.size(), false);
     seen[front] = true;
+    std::vector<std::pair<double, std::size_t>> next;
     for (std::size_t q = 0; q < queue.size(); ++q) {
-      std::vector<std::pair<double, std::size_t>> next;
+      next.clear();
       for (std::size_t j = 0; j < real.size(); ++j) {
         const double shared = shared_length(real[queue[q]]->rect, real[j]->rect);
         if (!seen[j] && shared > 0) next.emplace_back(-shared, j);
@@ -718,7 +735,7 @@ class Generator {
             shape::mix64(seed_salt_ ^ (static_cast<std::uint64_t>(u) * 1315423911U +
                                        static_cast<std::uint64_t>(v)));
         frontier.push_back({key, hash, u, v});
-        std::push_heap(frontier.begin(), frontier.end(), Candidate::after);
+        std::push_heap(frontier.begin(), frontier.end(), CandidateAfter());
       }
     };
     for (std::size_t u = 0; u < in_tree.size(); ++u) {
@@ -726,7 +743,7 @@ class Generator {
     }
     std::size_t added = 0;
     while (!frontier.empty()) {
-      std::pop_heap(frontier.begin(), frontier.end(), Candidate::after);
+      std::pop_heap(frontier.begin(), frontier.end(), CandidateAfter());
       const auto [key, hash, u, v] = frontier.back();
       frontier.pop_back();
       if (in_tree[static_cast<std::size_t>(v)]) continue;
@@ -897,21 +914,20 @@ class Generator {
   }
 
   void emit_transitions(Building& building) const {
-    Transition entrance;
+    building.transitions.reserve(1 + doors_.size());
+    Transition& entrance = building.transitions.emplace_back();
     entrance.symbol = "entrance0";
     entrance.kind = TransitionKind::kEntrance;
     entrance.from = rooms_[static_cast<std::size_t>(entrance_)].symbol;
     entrance.width = kEntranceWidth;
-    building.transitions.reserve(1 + doors_.size());
-    building.transitions.push_back(std::move(entrance));
     for (std::size_t i = 0; i < doors_.size(); ++i) {
-      Transition door;
-      door.symbol = "door" + std::to_string(i);
+      Transition& door = building.transitions.emplace_back();
+      door.symbol = "door";
+      append_number(door.symbol, i);
       door.kind = TransitionKind::kDoor;
       door.from = rooms_[static_cast<std::size_t>(doors_[i].first)].symbol;
       door.to = rooms_[static_cast<std::size_t>(doors_[i].second)].symbol;
       door.width = kDoorWidth;
-      building.transitions.push_back(std::move(door));
     }
   }
 
@@ -934,7 +950,7 @@ class Generator {
       }
       auto& [base, count] = counts[known->second];
       room.symbol = base;
-      room.symbol += std::to_string(++count);
+      append_number(room.symbol, static_cast<std::size_t>(++count));
     }
   }
 
@@ -944,7 +960,10 @@ class Generator {
   void emit_cell(const Cell& cell, bool root, PartNode& node) {
     node.orientation = cell.orientation;
     if (!cell.leaf) {
-      if (!root) node.symbol = "parts" + std::to_string(containers_++);
+      if (!root) {
+        node.symbol = "parts";
+        append_number(node.symbol, static_cast<std::size_t>(containers_++));
+      }
       node.children.resize(cell.children.size());
       for (std::size_t i = 0; i < cell.children.size(); ++i) {
         emit_cell(cell.children[i], false, node.children[i]);
@@ -953,7 +972,7 @@ class Generator {
     }
     const int index = parts_++;
     node.symbol = cell.disposable ? "notch" : "part";
-    node.symbol += std::to_string(index);
+    append_number(node.symbol, static_cast<std::size_t>(index));
     node.orientation = Orientation::kAlternate;
     BuildingPart& part = node.part.emplace();
     part.disposable = cell.disposable;
@@ -990,7 +1009,7 @@ class Generator {
     }
     out.symbol = part;
     out.symbol += "_div";
-    out.symbol += std::to_string(counter++);
+    append_number(out.symbol, static_cast<std::size_t>(counter++));
     out.orientation = div.orientation;
     out.children.resize(div.count);
     for (std::size_t i = 0; i < div.count; ++i) {
@@ -1039,7 +1058,9 @@ class Generator {
     int key;
     std::uint64_t hash;
     int u, v;
-    static bool after(const Candidate& a, const Candidate& b) {
+  };
+  struct CandidateAfter {  // a function object: inlined into the heap's loops
+    bool operator()(const Candidate& a, const Candidate& b) const {
       if (a.key != b.key) return a.key > b.key;
       if (a.hash != b.hash) return a.hash > b.hash;
       if (a.u != b.u) return a.u > b.u;
