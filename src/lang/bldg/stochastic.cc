@@ -408,6 +408,17 @@ double boundary_length(const Rect& r, const Rect& outline) {
   return length;
 }
 
+// boundary_length of one side of a room (a rectangle of zero width or height) at coordinate
+// `at`, `length` long, against the outline's sides at `lo` and `hi` on the same axis: the same
+// sums, without the zero-length terms.
+double side_run(double at, double length, double lo, double hi) {
+  constexpr double kEps = 1e-6;
+  double run = 0;
+  if (std::abs(at - lo) < kEps) run += length;
+  if (std::abs(at - hi) < kEps) run += length;
+  return run;
+}
+
 std::string identifier(std::string_view text) {
   std::string out;
   out.reserve(text.size());
@@ -539,6 +550,7 @@ class Generator {
     }
     std::size_t at = 0;
     for (const std::size_t j : queue) {
+      real[j]->rooms.reserve(static_cast<std::size_t>(std::max(real[j]->room_count, 0)));
       for (int k = 0; k < real[j]->room_count && at < order_.size(); ++k) {
         real[j]->rooms.push_back(order_[at++]);
       }
@@ -546,6 +558,7 @@ class Generator {
     // Disposable parts get medium "void" rooms weighing about as much as their real sibling,
     // so the notch is proportionate (it is removed after the subdivision, §3.2).
     for (Cell* cell : disposable) {
+      cell->rooms.reserve(static_cast<std::size_t>(std::max(cell->room_count, 0)));
       for (int k = 0; k < cell->room_count; ++k) {
         GenRoom room;
         room.type = "void";
@@ -664,31 +677,48 @@ class Generator {
     add_extra_doors();
   }
 
+  // Two rooms sharing a wall of positive length.
+  struct Touch {
+    int u, v;  // u < v
+    double shared;
+  };
+
   // The pairs (u < v, in increasing order) of real rooms sharing a wall of positive length, with
   // its length. A sweep over the rooms sorted by left edge compares only rooms whose x ranges
-  // meet, instead of all n² pairs.
-  std::vector<std::tuple<int, int, double>> touching_pairs() const {
+  // meet, instead of all n² pairs; their rectangles are copied into the sorted list so the sweep
+  // reads them in order, and pairs whose y ranges are apart (most of them) are skipped before
+  // shared_length.
+  std::vector<Touch> touching_pairs() const {
     constexpr double kEps = 1e-6;  // shared_length's tolerance
-    std::vector<int> by_x;
-    for (std::size_t u = 0; u < rooms_.size(); ++u) {
-      if (!rooms_[u].disposable) by_x.push_back(static_cast<int>(u));
-    }
-    const auto rect = [&](int u) -> const Rect& {
-      return rooms_[static_cast<std::size_t>(u)].rect;
+    struct Placed {
+      Rect rect;
+      int room;
     };
-    std::sort(by_x.begin(), by_x.end(),
-              [&](int a, int b) { return std::pair(rect(a).x0, a) < std::pair(rect(b).x0, b); });
-    std::vector<std::tuple<int, int, double>> pairs;
+    std::vector<Placed> by_x;
+    by_x.reserve(rooms_.size());
+    for (std::size_t u = 0; u < rooms_.size(); ++u) {
+      if (!rooms_[u].disposable) by_x.push_back({rooms_[u].rect, static_cast<int>(u)});
+    }
+    std::sort(by_x.begin(), by_x.end(), [](const Placed& a, const Placed& b) {
+      return a.rect.x0 != b.rect.x0 ? a.rect.x0 < b.rect.x0 : a.room < b.room;
+    });
+    std::vector<Touch> pairs;
     for (std::size_t i = 0; i < by_x.size(); ++i) {
-      const Rect& a = rect(by_x[i]);
-      for (std::size_t j = i + 1; j < by_x.size() && rect(by_x[j]).x0 <= a.x1 + kEps; ++j) {
-        const double shared = shared_length(a, rect(by_x[j]));
+      const Rect& a = by_x[i].rect;
+      const double reach = a.x1 + kEps;
+      for (std::size_t j = i + 1; j < by_x.size() && by_x[j].rect.x0 <= reach; ++j) {
+        const Rect& b = by_x[j].rect;
+        if (b.y1 < a.y0 - kEps || a.y1 < b.y0 - kEps) continue;  // shared_length would be 0
+        const double shared = shared_length(a, b);
         if (shared > 0) {
-          pairs.emplace_back(std::min(by_x[i], by_x[j]), std::max(by_x[i], by_x[j]), shared);
+          const int u = by_x[i].room, v = by_x[j].room;
+          pairs.push_back({std::min(u, v), std::max(u, v), shared});
         }
       }
     }
-    std::sort(pairs.begin(), pairs.end());
+    // Each pair is found once, so ordering by (u, v) is the tuples' order.
+    std::sort(pairs.begin(), pairs.end(),
+              [](const Touch& a, const Touch& b) { return a.u != b.u ? a.u < b.u : a.v < b.v; });
     return pairs;
   }
 
@@ -696,7 +726,7 @@ class Generator {
   // one flat list sliced per room: room u's neighbours are neighbors_[neighbor_start_[u] ..
   // neighbor_start_[u + 1]), in the order of `pairs` (what pushing to per-room lists gives,
   // without a vector per room).
-  void set_neighbors(const std::vector<std::tuple<int, int, double>>& pairs) {
+  void set_neighbors(const std::vector<Touch>& pairs) {
     const std::size_t n = rooms_.size();
     neighbor_start_.assign(n + 1, 0);
     for (const auto& [u, v, shared] : pairs) {
@@ -876,10 +906,10 @@ class Generator {
   void exterior_runs(const Rect& r, const std::vector<Notch>& notches,
                      std::vector<double>& runs) const {
     runs.clear();
-    const double sides[] = {boundary_length(Rect{r.x0, r.y0, r.x0, r.y1}, outline_),
-                            boundary_length(Rect{r.x1, r.y0, r.x1, r.y1}, outline_),
-                            boundary_length(Rect{r.x0, r.y0, r.x1, r.y0}, outline_),
-                            boundary_length(Rect{r.x0, r.y1, r.x1, r.y1}, outline_)};
+    const double sides[] = {side_run(r.x0, r.height(), outline_.x0, outline_.x1),
+                            side_run(r.x1, r.height(), outline_.x0, outline_.x1),
+                            side_run(r.y0, r.width(), outline_.y0, outline_.y1),
+                            side_run(r.y1, r.width(), outline_.y0, outline_.y1)};
     for (const double side : sides) {
       if (side > 0) runs.push_back(side);
     }
