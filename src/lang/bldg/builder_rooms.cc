@@ -76,14 +76,52 @@ Face inner_face(const WallGeometry& g, bool room_on_left) {
 // Per-storey facts and per-room buffers of the room stage, kept across the rooms of a storey so
 // that a room costs no temporary allocations of its own (rooms are the stage's inner loop).
 struct RoomScratch {
-  std::vector<kernel::Bounds2> reaching;  // boxes of the walls lengthened at reflex corners
+  std::vector<const WallGeometry*> reaching;  // the walls lengthened at reflex corners
   std::vector<Face> faces;
   kernel::Ring ring;
   kernel::Ring cut;
+  kernel::Ring probe;
+  kernel::Ring probe_cut;
   std::vector<kernel::Polygon> near;
   std::vector<const kernel::Polygon*> gaps;
   std::vector<std::pair<double, double>> blocked;
 };
+
+// Drops the vertices of a convex ring that lie on the line through their neighbours (within a
+// nanometre), as the boolean path's output has none: a cell's T-junction vertex would otherwise
+// split a slab side and a footer in two.
+void drop_straight_vertices(kernel::Ring& ring) {
+  constexpr double kTolerance = 1e-9;
+  bool changed = true;
+  while (changed && ring.size() >= 3) {
+    changed = false;
+    for (std::size_t i = 0; i < ring.size() && ring.size() >= 3; ++i) {
+      const Vec2 a = ring[(i + ring.size() - 1) % ring.size()];
+      const Vec2 b = ring[i];
+      const Vec2 c = ring[(i + 1) % ring.size()];
+      if (std::abs(kernel::cross(b - a, c - a)) <= kTolerance * kernel::length(c - a)) {
+        ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
+        changed = true;
+      }
+    }
+  }
+}
+
+// Does the convex polygon `wall` (a wall footprint) overlap the convex ring `floor` over more
+// than a sliver? (`floor` clipped by the half-planes of `wall`'s edges keeps some area.)
+bool reaches_into(const kernel::Ring& floor, const kernel::Ring& wall, RoomScratch& scratch) {
+  if (wall.size() < 3) return false;
+  kernel::Ring& part = scratch.probe;
+  part.assign(floor.begin(), floor.end());
+  const double orient = kernel::signed_area(wall) > 0 ? 1 : -1;
+  const std::size_t m = wall.size();
+  for (std::size_t e = 0; e < m && part.size() >= 3; ++e) {
+    const Vec2 dir = (wall[(e + 1) % m] - wall[e]) * orient;
+    clip(part, wall[e], kernel::perp(dir), 0, scratch.probe_cut);
+    std::swap(part, scratch.probe_cut);
+  }
+  return part.size() >= 3 && std::abs(kernel::signed_area(part)) > 1e-10;
+}
 
 // The clear floor of a convex cell: the cell cut by the inner face of every wall bordering it
 // (exactly the cell minus those walls, since the walls' footprints lie along the cell's edges).
@@ -95,9 +133,6 @@ bool convex_clear_floor(const kernel::Polygon& cell, const kernel::Bounds2& box,
                         const StoreyWalls& walls, const PlanStorey& storey, RoomScratch& scratch,
                         std::vector<kernel::Polygon>& out) {
   if (!cell.holes.empty() || !convex(cell.outer)) return false;
-  for (const kernel::Bounds2& reach : scratch.reaching) {
-    if (boxes_overlap(box, reach)) return false;
-  }
   std::vector<Face>& faces = scratch.faces;
   faces.clear();
   for (int i : walls.room_walls[static_cast<std::size_t>(room)]) {
@@ -123,6 +158,14 @@ bool convex_clear_floor(const kernel::Polygon& cell, const kernel::Bounds2& box,
     std::swap(clear, scratch.cut);
     if (clear.size() < 3) return true;
   }
+  // A wall lengthened at a reflex corner may reach into what the half-planes left: then only the
+  // boolean difference is exact.
+  for (const WallGeometry* g : scratch.reaching) {
+    if (!boxes_overlap(box, g->box)) continue;
+    if (reaches_into(clear, g->footprint.outer, scratch)) return false;
+  }
+  drop_straight_vertices(clear);
+  if (clear.size() < 3) return true;
   kernel::Polygon& floor = out.emplace_back();
   floor.outer = clear;
   if (kernel::area(floor) < 1e-9) out.pop_back();
@@ -258,7 +301,7 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
   const std::vector<kernel::Bounds2> gap_boxes = boxes_of(walls.door_gaps);
   RoomScratch scratch;
   for (const WallGeometry& g : walls.walls) {
-    if (g.reaches_past) scratch.reaching.push_back(g.box);
+    if (g.reaches_past) scratch.reaching.push_back(&g);
   }
   std::vector<kernel::Polygon> clear;
   std::unordered_set<std::string> taken;  // the names of `parts`, so far and as rooms are added
