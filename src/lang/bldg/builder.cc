@@ -84,38 +84,70 @@ kernel::Polygon WallGeometry::rect(double u0, double u1, double across0, double 
   return p;
 }
 
-void add_box(kernel::Mesh& mesh, Vec3 origin, Vec3 u, Vec3 v, Vec3 w, FaceTag tag) {
+namespace {
+
+// Six quads over a box's corners, corner (i, j, k) being i + 2j + 4k: outward for a right-handed
+// (u, v, w).
+constexpr std::array<std::uint32_t, 24> kBoxFaces{
+    0, 2, 3, 1,  // k = 0
+    4, 5, 7, 6,  // k = 1
+    0, 1, 5, 4,  // j = 0
+    2, 6, 7, 3,  // j = 1
+    0, 4, 6, 2,  // i = 0
+    1, 3, 7, 5,  // i = 1
+};
+
+// Writes a box's eight corners to `corners`, corner (i, j, k) at i + 2j + 4k, as
+// ((origin + u i) + v j) + w k with the partial sums shared between corners (x * 1.0 is x, so the
+// terms are u or u * 0.0, ...: the same bits as the full expression). A left-handed (u, v, w) is
+// turned right-handed first, from the opposite w face.
+void write_box_corners(Vec3* corners, Vec3 origin, Vec3 u, Vec3 v, Vec3 w) {
   if (kernel::dot(kernel::cross(u, v), w) < 0) {
     origin = origin + w;
     w = -w;
   }
-  const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
-  // Corner (i, j, k) is base + i + 2j + 4k. The corners go straight into the position array
-  // (frames and footers make most of a building's boxes, and this is their inner loop).
-  // Corner (i, j, k) is ((origin + u i) + v j) + w k, the partial sums shared between corners
-  // (x * 1.0 is x, so the terms are u or u * 0.0, ...: the same bits as the full expression).
-  std::vector<Vec3>& positions = mesh.positions();
   const std::array<Vec3, 2> us{u * 0.0, u};
   const std::array<Vec3, 2> vs{v * 0.0, v};
   const std::array<Vec3, 2> ws{w * 0.0, w};
   const std::array<Vec3, 2> along_u{origin + us[0], origin + us[1]};
   const std::array<Vec3, 4> along_uv{along_u[0] + vs[0], along_u[1] + vs[0], along_u[0] + vs[1],
                                      along_u[1] + vs[1]};
-  const std::size_t first = positions.size();
-  positions.resize(first + 8);
   for (int k = 0; k < 2; ++k) {
-    for (int ij = 0; ij < 4; ++ij) positions[first + 4 * k + ij] = along_uv[ij] + ws[k];
+    for (int ij = 0; ij < 4; ++ij) corners[4 * k + ij] = along_uv[ij] + ws[k];
   }
-  // Six quads over the corners, outward for a right-handed (u, v, w).
-  static constexpr std::array<std::uint32_t, 24> kFaces{
-      0, 2, 3, 1,  // k = 0
-      4, 5, 7, 6,  // k = 1
-      0, 1, 5, 4,  // j = 0
-      2, 6, 7, 3,  // j = 1
-      0, 4, 6, 2,  // i = 0
-      1, 3, 7, 5,  // i = 1
-  };
-  mesh.add_faces(kFaces, 4, base, tag);
+}
+
+}  // namespace
+
+void add_box(kernel::Mesh& mesh, Vec3 origin, Vec3 u, Vec3 v, Vec3 w, FaceTag tag) {
+  // The corners go straight into the position array (frames and footers make most of a building's
+  // boxes, and this is their inner loop).
+  std::vector<Vec3>& positions = mesh.positions();
+  const auto base = static_cast<std::uint32_t>(positions.size());
+  positions.resize(base + std::size_t{8});
+  write_box_corners(positions.data() + base, origin, u, v, w);
+  mesh.add_faces(kBoxFaces, 4, base, tag);
+}
+
+void add_boxes(kernel::Mesh& mesh, std::span<const BoxEdges> boxes, FaceTag tag) {
+  // add_box's vertices and faces box after box, with each of the mesh's arrays grown once for
+  // all of them (a window's frame is eight boxes).
+  std::vector<Vec3>& positions = mesh.positions();
+  const std::size_t first = positions.size();
+  positions.resize(first + 8 * boxes.size());
+  const kernel::Mesh::FaceSlots slots = mesh.add_face_slots(6 * boxes.size(), 24 * boxes.size());
+  std::uint32_t* index = slots.indices.data();
+  std::uint32_t end = slots.first_index;
+  for (std::size_t b = 0; b < boxes.size(); ++b) {
+    const BoxEdges& box = boxes[b];
+    const auto base = static_cast<std::uint32_t>(first + 8 * b);
+    write_box_corners(positions.data() + base, box.origin, box.u, box.v, box.w);
+    for (const std::uint32_t corner : kBoxFaces) *index++ = base + corner;
+    for (std::size_t f = 0; f < 6; ++f) {
+      slots.ends[6 * b + f] = end += 4;
+      slots.tags[6 * b + f] = tag;
+    }
+  }
 }
 
 bool add_prism(kernel::Mesh& mesh, const kernel::Polygon& polygon, double z0, double z1,

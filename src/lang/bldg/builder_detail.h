@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,16 @@ struct StoreyWalls {
 
 // A closed parallelepiped with corner `origin` and edges u, v, w (any handedness), faces outward.
 void add_box(kernel::Mesh& mesh, Vec3 origin, Vec3 u, Vec3 v, Vec3 w, FaceTag tag);
+
+// add_box's arguments for one box of add_boxes.
+struct BoxEdges {
+  Vec3 origin;
+  Vec3 u;
+  Vec3 v;
+  Vec3 w;
+};
+// add_box for each box in order (the same vertices and faces), the mesh's arrays grown once.
+void add_boxes(kernel::Mesh& mesh, std::span<const BoxEdges> boxes, FaceTag tag);
 
 // Appends the closed prism of `polygon` between z0 and z1 (z0 < z1) with the given tags; false
 // (nothing added) when the polygon is degenerate.

@@ -13,6 +13,7 @@
 // the facade). An outer wall is lengthened by its thickness at a reflex corner of the outline,
 // where two walls standing inside would otherwise leave a square hole.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -201,9 +202,12 @@ void add_frames(const kernel::WallFrame& frame, double thickness, const kernel::
   const FaceTag tag{door ? SemanticClass::kDoor : SemanticClass::kWindow, kFrameMaterial, 0};
   const double bottom = door ? o.sill : o.sill - fw;
   const double top = o.sill + o.height;
+  // The portal's boxes (at most eight) go into the mesh together (add_boxes).
+  std::array<BoxEdges, 8> boxes;
+  std::size_t count = 0;
   const auto box = [&](double u0, double u1, double v0, double v1, double w0, double w1) {
-    add_box(mesh, frame.map(u0, v0, w0), frame.u_axis * (u1 - u0), frame.v_axis * (v1 - v0),
-            frame.normal * (w1 - w0), tag);
+    boxes[count++] = {frame.map(u0, v0, w0), frame.u_axis * (u1 - u0), frame.v_axis * (v1 - v0),
+                      frame.normal * (w1 - w0)};
   };
   for (const auto& [w0, w1] : {std::pair{thickness, thickness + fd}, std::pair{-fd, 0.0}}) {
     box(o.u - fw, o.u, bottom, top + fw, w0, w1);
@@ -211,6 +215,7 @@ void add_frames(const kernel::WallFrame& frame, double thickness, const kernel::
     box(o.u, o.u + o.width, top, top + fw, w0, w1);
     if (!door) box(o.u, o.u + o.width, o.sill - fw, o.sill, w0, w1);
   }
+  add_boxes(mesh, std::span<const BoxEdges>(boxes.data(), count), tag);
   if (!door) {
     const double pane = std::min(0.02, thickness / 4);
     add_box(mesh, frame.map(o.u, o.sill, thickness / 2 - pane / 2), frame.u_axis * o.width,
