@@ -102,6 +102,14 @@ bool inside_ring(const Ring& ring, Vec2 p) {
   return inside;
 }
 
+// inside_ring for an axis-parallel rectangle with bounding box `b`: the crossing test meets only
+// its two vertical sides, each when b.min.y <= p.y < b.max.y, at x = b.min.x and x = b.max.x
+// exactly (the interpolation adds a zero), so p is inside when also b.min.x <= p.x < b.max.x.
+// The same verdicts without the loop (every placed wall's outline is such a rectangle).
+bool inside_rectangle(const Box& b, Vec2 p) {
+  return b.min.y <= p.y && p.y < b.max.y && b.min.x <= p.x && p.x < b.max.x;
+}
+
 double ring_distance(const Ring& ring, Vec2 p) {
   double d = 1e300;
   for (std::size_t i = 0; i < ring.size(); ++i) {
@@ -279,7 +287,9 @@ std::optional<OpeningProblem> closeness(double distance, double margin, OpeningP
   return std::nullopt;
 }
 
-std::optional<Finding> against_outline(const Ring& outline, const Accepted& c, double margin) {
+// `rectangle` is the outline's box when the outline is an axis-parallel rectangle, else null.
+std::optional<Finding> against_outline(const Ring& outline, const Box* rectangle, const Accepted& c,
+                                       double margin) {
   const std::size_t n = outline.size();
   const std::size_t m = c.ring.size();
   // A notch's sill edge (last) and its two bottom corners lie on the host edge by construction.
@@ -293,7 +303,9 @@ std::optional<Finding> against_outline(const Ring& outline, const Accepted& c, d
   for (std::size_t i = 0; i < edges; ++i) {
     // A notch's first corner sits on the host edge; its last corner ends edge `edges - 1`.
     const Vec2 a = c.ring[i];
-    if ((c.host < 0 || i > 0) && !inside_ring(outline, a) && ring_distance(outline, a) > kEps) {
+    if (c.host >= 0 && i == 0) continue;
+    const bool inside = rectangle ? inside_rectangle(*rectangle, a) : inside_ring(outline, a);
+    if (!inside && ring_distance(outline, a) > kEps) {
       return Finding{OpeningProblem::kOutsideOutline};
     }
   }
@@ -367,6 +379,8 @@ std::vector<OpeningIssue> validate(const Ring& outline, const WallSpec& spec,
                                    std::vector<Ring>* spare = nullptr) {
   std::vector<OpeningIssue> issues;
   const double margin = spec.min_margin;
+  const Box outline_box = ring_box(outline);
+  const Box* rectangle = axis_rectangle(outline) ? &outline_box : nullptr;
   for (std::size_t i = 0; i < spec.openings.size(); ++i) {
     Accepted c;
     c.index = i;
@@ -384,7 +398,7 @@ std::vector<OpeningIssue> validate(const Ring& outline, const WallSpec& spec,
     }
     fill_ring(c.opening, c.ring);
     c.box = ring_box(c.ring);
-    std::optional<Finding> finding = against_outline(outline, c, margin);
+    std::optional<Finding> finding = against_outline(outline, rectangle, c, margin);
     std::optional<std::size_t> other;
     for (std::size_t k = 0; !finding && k < accepted.size(); ++k) {
       finding = against_opening(c, accepted[k], margin);
