@@ -54,6 +54,10 @@ struct Outline {
   std::size_t columns = 0;
   std::vector<std::uint32_t> column_start;  // column c lists column_items[start[c], start[c + 1])
   std::vector<std::uint32_t> column_items;  // indices into pieces
+  // Indices into pieces ordered by the x of the piece's start (by_start) or end (by_end), ties in
+  // plan order: next_outer and previous_outer look only at the pieces whose x is close.
+  std::vector<std::uint32_t> by_start;
+  std::vector<std::uint32_t> by_end;
 
   // The column of x, clamped to the existing ones (monotone in x, so a box [lo, hi] is listed in
   // every column of a point inside it).
@@ -93,6 +97,15 @@ Outline outer_walls(const PlanStorey& storey) {
                           {std::max(w.a.x, w.b.x) + kTouch, std::max(w.a.y, w.b.y) + kTouch}});
   }
   out.index_columns();
+  for (auto [order, end] : {std::pair{&out.by_start, false}, std::pair{&out.by_end, true}}) {
+    order->resize(out.pieces.size());
+    for (std::uint32_t i = 0; i < order->size(); ++i) (*order)[i] = i;
+    const auto x = [&out, end = end](std::uint32_t i) {
+      return end ? out.pieces[i].wall->b.x : out.pieces[i].wall->a.x;
+    };
+    std::stable_sort(order->begin(), order->end(),
+                     [&x](std::uint32_t i, std::uint32_t j) { return x(i) < x(j); });
+  }
   return out;
 }
 
@@ -111,26 +124,35 @@ bool on_outline(const Outline& outline, Vec2 p) {
   return false;
 }
 
+// The first outer piece in plan order, other than `wall`, whose start (or end, with `end`) lies
+// within kTouch of p along both axes; null if none. Only the pieces whose x lies within 4 kTouch
+// kTouch of p.x are looked at (a superset of those passing the exact test, which is applied as it
+// stands to each of them).
+const PlanWall* outer_piece_at(const Outline& outline, const PlanWall& wall, Vec2 p, bool end) {
+  const std::vector<std::uint32_t>& order = end ? outline.by_end : outline.by_start;
+  const auto point = [&](std::uint32_t i) {
+    const PlanWall* w = outline.pieces[i].wall;
+    return end ? w->b : w->a;
+  };
+  auto it = std::lower_bound(order.begin(), order.end(), p.x - 4 * kTouch,
+                             [&](std::uint32_t i, double x) { return point(i).x < x; });
+  std::uint32_t best = static_cast<std::uint32_t>(outline.pieces.size());
+  for (; it != order.end() && point(*it).x <= p.x + 4 * kTouch; ++it) {
+    const Vec2 q = point(*it);
+    if (*it < best && outline.pieces[*it].wall != &wall && std::abs(q.x - p.x) < kTouch &&
+        std::abs(q.y - p.y) < kTouch) {
+      best = *it;
+    }
+  }
+  return best < outline.pieces.size() ? outline.pieces[best].wall : nullptr;
+}
+
 // The outer piece that starts where `wall` ends (its successor along the outline), or null.
 const PlanWall* next_outer(const Outline& outline, const PlanWall& wall) {
-  for (const OuterWall& o : outline.pieces) {
-    const PlanWall* w = o.wall;
-    if (w != &wall && std::abs(w->a.x - wall.b.x) < kTouch &&
-        std::abs(w->a.y - wall.b.y) < kTouch) {
-      return w;
-    }
-  }
-  return nullptr;
+  return outer_piece_at(outline, wall, wall.b, false);
 }
 const PlanWall* previous_outer(const Outline& outline, const PlanWall& wall) {
-  for (const OuterWall& o : outline.pieces) {
-    const PlanWall* w = o.wall;
-    if (w != &wall && std::abs(w->b.x - wall.a.x) < kTouch &&
-        std::abs(w->b.y - wall.a.y) < kTouch) {
-      return w;
-    }
-  }
-  return nullptr;
+  return outer_piece_at(outline, wall, wall.a, true);
 }
 
 bool reflex(Vec2 incoming, Vec2 outgoing) {
