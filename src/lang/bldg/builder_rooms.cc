@@ -205,20 +205,24 @@ void clear_floor(const kernel::Polygon& cell, const kernel::Bounds2& box, int ro
 }
 
 // The stretch [u0, u1] along an edge (origin p, unit dir, inward normal n) that `blocker`
-// covers within `depth` of the edge, or an empty interval.
+// covers within `depth` of the edge, or an empty interval. Most blockers (the door gaps and
+// stairwells near a room) miss most of its edges: the extent across the edge is settled first,
+// and the stretch along it only measured for those within reach.
 std::pair<double, double> covered(const kernel::Polygon& blocker, Vec2 p, Vec2 dir, Vec2 n,
                                   double depth) {
-  double u0 = 1e300;
-  double u1 = -1e300;
   double a0 = 1e300;
   double a1 = -1e300;
   for (Vec2 v : blocker.outer) {
-    u0 = std::min(u0, kernel::dot(v - p, dir));
-    u1 = std::max(u1, kernel::dot(v - p, dir));
     a0 = std::min(a0, kernel::dot(v - p, n));
     a1 = std::max(a1, kernel::dot(v - p, n));
   }
   if (a1 < -1e-9 || a0 > depth + 1e-9) return {0, 0};
+  double u0 = 1e300;
+  double u1 = -1e300;
+  for (Vec2 v : blocker.outer) {
+    u0 = std::min(u0, kernel::dot(v - p, dir));
+    u1 = std::max(u1, kernel::dot(v - p, dir));
+  }
   return {u0, u1};
 }
 
@@ -384,7 +388,9 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
     drawn.name = room.symbol;
     drawn.type = room.type;
     drawn.area = area;
-    if (!clear.empty()) drawn.outline = clear.front();  // boolean results: largest first
+    // Boolean results come largest first. `clear` is refilled for the next room: its first
+    // polygon moves into the plan rather than being copied.
+    if (!clear.empty()) drawn.outline = std::move(clear.front());
     plan.rooms.push_back(std::move(drawn));
     parts.push_back(std::move(part));
     ++c.result.stats.rooms;
