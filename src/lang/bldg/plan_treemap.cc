@@ -63,19 +63,26 @@ double bisect(const Area& area, double start, Probe lo, Probe hi, double target,
     const Probe fixed = below ? hi : lo;
     const auto same_side = [&](double f) { return below ? f < -tolerance : f > tolerance; };
     // The loop's next probes while each lands on the same side, up to its iteration limits, and
-    // the first whose interpolated departure does not.
+    // the first whose interpolated departure does not. The run is listed only a few probes past
+    // that guess: should it go on further, the loop's next round takes it up.
+    constexpr std::size_t kPastGuess = 8;
+    const double slope = (mid.f - fixed.f) / (mid.at - fixed.at);
     std::size_t n = 0;
     std::size_t guess = kMaxProbes;
-    for (double l = lo.at, h = hi.at; k + static_cast<int>(n) < kMaxProbes && h - l > width;) {
+    std::size_t limit = kMaxProbes;
+    for (double l = lo.at, h = hi.at;
+         n < limit && k + static_cast<int>(n) < kMaxProbes && h - l > width;) {
       const double m = 0.5 * (l + h);
-      const double predicted = fixed.f + (mid.f - fixed.f) * ((m - fixed.at) / (mid.at - fixed.at));
-      if (guess == kMaxProbes && !same_side(predicted)) guess = n;
+      if (guess == kMaxProbes && !same_side(fixed.f + slope * (m - fixed.at))) {
+        guess = n;
+        limit = n + kPastGuess;
+      }
       run[n++] = m;
       (below ? l : h) = m;
     }
     if (n == 0) break;
     // run[0, a) land on the same side (the last at departure fa), run[b, n) do not (the first
-    // at departure fb; b == n: none known not to).
+    // at departure fb; b == n: none listed does not).
     std::size_t a = 0;
     std::size_t b = n;
     double fa = mid.f;
@@ -100,7 +107,7 @@ double bisect(const Area& area, double start, Probe lo, Probe hi, double target,
     while (a < b) probe(a + (b - a) / 2);
     if (b > 0) (below ? lo : hi) = Probe{run[b - 1], fa};
     k += static_cast<int>(b);
-    if (b == n) break;  // the run ran into the loop's limits
+    if (b == n) continue;  // the whole list landed on the same side: the loop goes on from there
     // run[b] is the loop's next probe, and lands within the tolerance or on the other side.
     ++k;
     if (std::abs(fb) <= tolerance) return run[b];
