@@ -378,6 +378,7 @@ std::vector<OpeningIssue> validate(const Ring& outline, const WallSpec& spec,
                                    std::vector<Accepted>& accepted,
                                    std::vector<Ring>* spare = nullptr) {
   std::vector<OpeningIssue> issues;
+  if (spec.openings.empty()) return issues;  // most walls: nothing to validate
   const double margin = spec.min_margin;
   const Box outline_box = ring_box(outline);
   const Box* rectangle = axis_rectangle(outline) ? &outline_box : nullptr;
@@ -416,6 +417,7 @@ std::vector<OpeningIssue> validate(const Ring& outline, const WallSpec& spec,
 // ---------------------------------------------------------------------------------------------
 // Boundary rings: every vertex starts one directed edge with the wall's material on its left.
 
+// emit_into indexes its tag table by this order (top, bottom, end, jamb, sill, lintel).
 enum class EdgeKind : std::uint8_t { kTop, kBottom, kEnd, kJamb, kSill, kLintel };
 
 struct Boundary {
@@ -836,15 +838,18 @@ void emit_into(const Boundary& b, const std::vector<std::uint32_t>& loops,
   };
   write_pieces(flip, base, spec.tags.front);
   write_pieces(!flip, base + n, spec.tags.back);
+  // The side quads: (i, n + i, n + j, j) for the edge i -> j, its two ends swapped when flipped;
+  // tags looked up by edge kind (tag_for's choice, in EdgeKind order).
+  const std::array<const FaceTag*, 6> kind_tags{&spec.tags.top,  &spec.tags.bottom,
+                                                &spec.tags.end,  &spec.tags.jamb,
+                                                &spec.tags.sill, &spec.tags.lintel};
   for (std::uint32_t i = 0; i < n; ++i) {
     const std::uint32_t j = b.next[i];
-    if (flip) {
-      out[0] = base + j, out[1] = base + n + j, out[2] = base + n + i, out[3] = base + i;
-    } else {
-      out[0] = base + i, out[1] = base + n + i, out[2] = base + n + j, out[3] = base + j;
-    }
+    const std::uint32_t first = base + (flip ? j : i);
+    const std::uint32_t second = base + (flip ? i : j);
+    out[0] = first, out[1] = first + n, out[2] = second + n, out[3] = second;
     out += 4;
-    close_face(tag_for(spec.tags, b.kind[i]));
+    close_face(*kind_tags[static_cast<std::size_t>(b.kind[i])]);
   }
 }
 
