@@ -533,13 +533,16 @@ class MonotonePartition {
     // plain wall, or one with door notches only, skips the sort and the sweep.
     if (!split_or_merge) return true;
     status_.clear();
+    // Vertices from the top down: sorted with their coordinates at hand (the comparison below(c, a)
+    // on copies; the same comparisons on the same sequence, so the same order).
     order_.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) order_[i] = i;
-    std::sort(order_.begin(), order_.end(),
-              [this](std::uint32_t a, std::uint32_t c) { return below(c, a); });
+    for (std::uint32_t i = 0; i < n; ++i) order_[i] = {q_[i], i};
+    std::sort(order_.begin(), order_.end(), [](const Ordered& a, const Ordered& c) {
+      return c.q.y < a.q.y || (c.q.y == a.q.y && c.q.x > a.q.x);
+    });
     helper_.assign(n, 0);
-    for (std::uint32_t v : order_) {
-      if (!handle(v, diagonals)) return false;
+    for (const Ordered& o : order_) {
+      if (!handle(o.vertex, diagonals)) return false;
     }
     return true;
   }
@@ -635,9 +638,14 @@ class MonotonePartition {
     return true;
   }
 
+  struct Ordered {
+    Vec2 q;  // q_[vertex]
+    std::uint32_t vertex;
+  };
+
   const Boundary* b_ = nullptr;
   std::vector<Vec2> q_;
-  std::vector<std::uint32_t> order_;
+  std::vector<Ordered> order_;
   std::vector<VertexType> type_;
   std::vector<std::uint32_t> helper_;
   std::vector<std::uint32_t> status_;
@@ -662,13 +670,14 @@ class PieceWalker {
     std::vector<std::uint32_t>& stamp = fill_;  // free once the half-edges are linked
     stamp.assign(b.points.size(), 0);
     std::uint32_t piece = 0;
-    for (std::uint32_t h = 0; h < to_.size(); ++h) {
+    const std::size_t half_edges = to_.size();  // read once: the loop's stores may alias it
+    for (std::uint32_t h = 0; h < half_edges; ++h) {
       if (used_[h]) continue;
       ++piece;
       std::uint32_t cur = h;
       std::uint32_t from = from_of(h);
       for (std::size_t steps = 0;; ++steps) {
-        if (steps > to_.size() || stamp[from] == piece) return false;
+        if (steps > half_edges || stamp[from] == piece) return false;
         stamp[from] = piece;
         used_[cur] = 1;
         loops.push_back(from);
