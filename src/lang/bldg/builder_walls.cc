@@ -103,8 +103,9 @@ Outline outer_walls(const PlanStorey& storey) {
     const auto x = [&out, end = end](std::uint32_t i) {
       return end ? out.pieces[i].wall->b.x : out.pieces[i].wall->a.x;
     };
-    std::stable_sort(order->begin(), order->end(),
-                     [&x](std::uint32_t i, std::uint32_t j) { return x(i) < x(j); });
+    std::sort(order->begin(), order->end(), [&x](std::uint32_t i, std::uint32_t j) {
+      return x(i) < x(j) || (x(i) == x(j) && i < j);
+    });
   }
   return out;
 }
