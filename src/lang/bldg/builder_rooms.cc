@@ -11,6 +11,7 @@
 // twenty times faster (docs/PERFORMANCE.md).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <set>
 #include <string>
@@ -23,8 +24,10 @@
 namespace insula::lang::bldg::detail {
 namespace {
 
+// Boxes closer than this are taken to meet (m).
+constexpr double kSlack = 1e-6;
+
 bool boxes_overlap(const kernel::Bounds2& a, const kernel::Bounds2& b) {
-  constexpr double kSlack = 1e-6;
   return a.min.x <= b.max.x + kSlack && b.min.x <= a.max.x + kSlack &&
          a.min.y <= b.max.y + kSlack && b.min.y <= a.max.y + kSlack;
 }
@@ -33,6 +36,46 @@ bool boxes_overlap(const kernel::Bounds2& a, const kernel::Bounds2& b) {
 bool interiors_overlap(const kernel::Bounds2& a, const kernel::Bounds2& b) {
   return a.min.x < b.max.x && b.min.x < a.max.x && a.min.y < b.max.y && b.min.y < a.max.y;
 }
+
+// The boxes of a storey's door gaps ordered by their left sides: a room finds the gaps whose
+// boxes meet its own (boxes_overlap) among the few whose left sides lie within reach of its
+// x-range, instead of testing every gap of the storey for every room.
+class GapBoxes {
+ public:
+  explicit GapBoxes(const std::vector<kernel::Bounds2>& boxes) : boxes_(boxes) {
+    order_.resize(boxes.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k) order_[k] = static_cast<std::uint32_t>(k);
+    std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return boxes[a].min.x < boxes[b].min.x || (boxes[a].min.x == boxes[b].min.x && a < b);
+    });
+    lefts_.reserve(boxes.size());
+    for (std::uint32_t k : order_) {
+      lefts_.push_back(boxes[k].min.x);
+      widest_ = std::max(widest_, boxes[k].max.x - boxes[k].min.x);
+    }
+  }
+
+  // The indices k (increasing) with boxes_overlap(box, boxes[k]), into `out` (cleared).
+  void overlapping(const kernel::Bounds2& box, std::vector<std::uint32_t>& out) const {
+    out.clear();
+    // A gap meeting the box starts at most its width plus the slack (and a micrometre for the
+    // rounding of these sums) left of the box, and no further right than boxes_overlap allows;
+    // each gap in between still takes the exact test.
+    const double from = box.min.x - (widest_ + kSlack + 1e-6);
+    const auto first = std::lower_bound(lefts_.begin(), lefts_.end(), from);
+    for (auto it = first; it != lefts_.end() && *it <= box.max.x + kSlack; ++it) {
+      const std::uint32_t k = order_[static_cast<std::size_t>(it - lefts_.begin())];
+      if (boxes_overlap(box, boxes_[k])) out.push_back(k);
+    }
+    std::sort(out.begin(), out.end());
+  }
+
+ private:
+  const std::vector<kernel::Bounds2>& boxes_;
+  std::vector<std::uint32_t> order_;  // gap indices by the left sides of their boxes
+  std::vector<double> lefts_;         // those left sides, in that order
+  double widest_ = 0;                 // the widest box along x
+};
 
 bool convex(const kernel::Ring& ring) {
   const std::size_t n = ring.size();
@@ -84,6 +127,7 @@ struct RoomScratch {
   kernel::Ring probe_cut;
   std::vector<kernel::Polygon> near;
   std::vector<const kernel::Polygon*> gaps;
+  std::vector<std::uint32_t> gap_indices;
   std::vector<std::pair<double, double>> blocked;
 };
 
@@ -303,6 +347,7 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
   const std::vector<kernel::Bounds2> floor_boxes = boxes_of(floor_holes);
   const std::vector<kernel::Bounds2> ceiling_boxes = boxes_of(ceiling_holes);
   const std::vector<kernel::Bounds2> gap_boxes = boxes_of(walls.door_gaps);
+  const GapBoxes gap_finder(gap_boxes);
   RoomScratch scratch;
   for (const WallGeometry& g : walls.walls) {
     if (g.reaches_past) scratch.reaching.push_back(&g);
@@ -351,9 +396,8 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
     std::vector<const kernel::Polygon*>& gaps = scratch.gaps;
     gaps.clear();
     if (footers) {
-      for (std::size_t k = 0; k < walls.door_gaps.size(); ++k) {
-        if (boxes_overlap(box, gap_boxes[k])) gaps.push_back(&walls.door_gaps[k]);
-      }
+      gap_finder.overlapping(box, scratch.gap_indices);
+      for (std::uint32_t k : scratch.gap_indices) gaps.push_back(&walls.door_gaps[k]);
       for (const kernel::Polygon& hole : floor_cut) gaps.push_back(&hole);
     }
     // Room for the floor and ceiling prisms (2n vertices, n + 2 faces and 6n indices each over n
