@@ -126,7 +126,10 @@ double place_cut(const AreaFunction& area, double start, double w0, double exten
   Probe lo{w, f};
   Probe hi{w, f};
   if (f < 0) {
-    while (f < 0 && start + w < end) {  // grow: Sx = (width + step) / width
+    // w stops growing at end - start, and start + (end - start) may round below end: without
+    // the width test the loop would then repeat that last step forever (a region whose area up
+    // to `end` stays below the target, e.g. two pieces side by side).
+    while (f < 0 && start + w < end && w < end - start) {  // grow: Sx = (width + step) / width
       lo = {w, f};
       w = std::min(w + delta, end - start);
       f = area(start + w) - target;
