@@ -530,7 +530,8 @@ class MonotonePartition {
     }
     // Without split or merge vertices the region is monotone already (de Berg, Lemma 3.4) and the
     // sweep would add no diagonal (it adds them only at split vertices and at merge helpers): a
-    // plain wall, or one with door notches only, skips the sort and the sweep.
+    // plain wall skips the sort and the sweep. (A door notch can still make a merge vertex through
+    // the equal-y tie-break, so walls with doors usually do sweep.)
     if (!split_or_merge) return true;
     status_.clear();
     // Vertices from the top down: sorted with their coordinates at hand (the comparison below(c, a)
