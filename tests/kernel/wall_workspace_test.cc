@@ -14,12 +14,7 @@ namespace insula::kernel {
 namespace {
 
 Opening window(double u, double sill, double width, double height) {
-  Opening o;
-  o.u = u;
-  o.sill = sill;
-  o.width = width;
-  o.height = height;
-  return o;
+  return {u, sill, width, height};
 }
 
 // A random star-shaped outline with random, often conflicting openings (doors on the base when
