@@ -3,13 +3,7 @@
 # the same bytes (also with another thread count and in another folder); rebuilding a written
 # grammar with `insula build` gives the same GLB; every room reachable; bad options are usage
 # errors that write nothing.
-set -u
-insula=$1
-root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib/common.sh"
 
 "$insula" random --count 4 --seed 11 --shape L --rooms 3-5 -o "$tmp/a" >"$tmp/out" 2>"$tmp/err"
 [ $? -eq 0 ] || { fail "random exits 0"; cat "$tmp/err"; }
@@ -72,5 +66,4 @@ touch "$tmp/file"
 "$insula" random --count 1 -o "$tmp/file" >/dev/null 2>"$tmp/err"
 [ $? -eq 1 ] && grep -q "cannot create the output folder" "$tmp/err" || fail "output is a file"
 
-[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
-echo "all bldg random checks passed"
+finish bldg_random
