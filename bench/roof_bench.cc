@@ -79,5 +79,32 @@ BENCHMARK_CAPTURE(BM_MassHip, l_shape_8, l_shape8())->Unit(benchmark::kMicroseco
 BENCHMARK_CAPTURE(BM_MassHip, rectangle, Polygon{{{0, 0}, {14, 0}, {14, 8}, {0, 8}}, {}})
     ->Unit(benchmark::kMicrosecond);
 
+// The eave outline of Table 2's heaviest generated building (group 5, building 4): an H of 12
+// axis-parallel edges, the typical input of the generator's HipGlued roofs.
+Polygon h_shape12() {
+  return {{{63.5, 44.3},
+           {57.371146, 44.3},
+           {57.371146, 29.684259},
+           {5.187385, 29.684259},
+           {5.187385, 44.3},
+           {-0.3, 44.3},
+           {-0.3, -0.3},
+           {5.187385, -0.3},
+           {5.187385, 14.315741},
+           {57.371146, 14.315741},
+           {57.371146, -0.3},
+           {63.5, -0.3}},
+          {}};
+}
+
+void BM_SkeletonRectilinear(benchmark::State& state, Polygon footprint) {
+  for (auto _ : state) {
+    auto s = interior_straight_skeleton(footprint);
+    benchmark::DoNotOptimize(s.has_value());
+  }
+}
+BENCHMARK_CAPTURE(BM_SkeletonRectilinear, l_shape_8, l_shape8())->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SkeletonRectilinear, h_shape_12, h_shape12())->Unit(benchmark::kMicrosecond);
+
 }  // namespace
 }  // namespace insula::kernel
