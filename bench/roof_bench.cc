@@ -7,6 +7,7 @@
 #include "kernel/mass.h"
 #include "kernel/roof.h"
 #include "kernel/skeleton.h"
+#include "kernel/skeleton_rectilinear.h"
 
 namespace insula::kernel {
 namespace {
@@ -105,6 +106,25 @@ void BM_SkeletonRectilinear(benchmark::State& state, Polygon footprint) {
 }
 BENCHMARK_CAPTURE(BM_SkeletonRectilinear, l_shape_8, l_shape8())->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_SkeletonRectilinear, h_shape_12, h_shape12())->Unit(benchmark::kMicrosecond);
+
+// The rectilinear wavefront alone, and CGAL's general builder on the same outlines.
+void BM_RectilinearWavefront(benchmark::State& state, Polygon footprint) {
+  for (auto _ : state) {
+    auto s = rectilinear_straight_skeleton(footprint);
+    benchmark::DoNotOptimize(s.has_value());
+  }
+}
+BENCHMARK_CAPTURE(BM_RectilinearWavefront, l_shape_8, l_shape8())->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_RectilinearWavefront, h_shape_12, h_shape12())->Unit(benchmark::kMicrosecond);
+
+void BM_SkeletonCgal(benchmark::State& state, Polygon footprint) {
+  for (auto _ : state) {
+    auto s = general_straight_skeleton(footprint);
+    benchmark::DoNotOptimize(s.has_value());
+  }
+}
+BENCHMARK_CAPTURE(BM_SkeletonCgal, l_shape_8, l_shape8())->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SkeletonCgal, h_shape_12, h_shape12())->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace insula::kernel

@@ -1,8 +1,9 @@
 // CGAL translation unit #1 (design.md: CGAL stays in at most two translation units). Wraps
 // create_interior_straight_skeleton_2 with Exact_predicates_inexact_constructions_kernel and
 // copies its half-edge structure into the plain Skeleton of skeleton.h. Strictly convex polygons
-// take a direct wavefront simulation instead (ConvexSkeleton below), which is exact for them and
-// far cheaper than CGAL's general builder.
+// take a direct wavefront simulation instead (ConvexSkeleton below), and rectilinear ones the
+// wavefront of skeleton_rectilinear.cc: both exact for their inputs and far cheaper than CGAL's
+// general builder.
 #include "kernel/skeleton.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -15,6 +16,8 @@
 #include <cstring>
 #include <unordered_map>
 #include <utility>
+
+#include "kernel/skeleton_rectilinear.h"
 
 namespace insula::kernel {
 namespace {
@@ -503,6 +506,15 @@ std::optional<Skeleton> interior_straight_skeleton(const Polygon& polygon) {
       add_contour(polygon, out);
       if (ConvexSkeleton(out).run() && times_valid(out)) return out;
     }
+    return cgal_skeleton(polygon);
+  } catch (...) {
+    return std::nullopt;
+  }
+}
+
+std::optional<Skeleton> general_straight_skeleton(const Polygon& polygon) {
+  try {
+    if (!is_simple_polygon(polygon)) return std::nullopt;
     return cgal_skeleton(polygon);
   } catch (...) {
     return std::nullopt;

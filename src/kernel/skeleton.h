@@ -12,6 +12,8 @@
 //    (interior on the left), starting with edge e's two end points.
 //  - every point of face(e) is at distance `time` from e's supporting line, so lifting each vertex
 //    by time * tan(pitch) gives a planar roof face (the hip roof).
+// Strictly convex polygons and rectilinear ones (skeleton_rectilinear.h) take direct wavefront
+// simulations; the rest, and anything those decline, go to CGAL.
 #pragma once
 
 #include <cstdint>
@@ -57,5 +59,9 @@ bool is_simple_polygon(const Polygon& polygon);
 // The interior straight skeleton of `polygon` (normalized orientation, see polygon.h). Returns
 // nullopt when the polygon is not simple (is_simple_polygon) or CGAL fails; never throws.
 std::optional<Skeleton> interior_straight_skeleton(const Polygon& polygon);
+
+// The same skeleton from CGAL's general builder alone, bypassing the convex and rectilinear
+// wavefronts interior_straight_skeleton prefers: the reference the tests compare them with.
+std::optional<Skeleton> general_straight_skeleton(const Polygon& polygon);
 
 }  // namespace insula::kernel
