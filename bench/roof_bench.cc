@@ -107,6 +107,35 @@ void BM_SkeletonRectilinear(benchmark::State& state, Polygon footprint) {
 BENCHMARK_CAPTURE(BM_SkeletonRectilinear, l_shape_8, l_shape8())->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_SkeletonRectilinear, h_shape_12, h_shape12())->Unit(benchmark::kMicrosecond);
 
+// A comb of `teeth` rectangular teeth: 4 * teeth + 2 axis-parallel edges.
+Polygon comb(int teeth) {
+  Polygon p;
+  for (int i = 0; i < teeth; ++i) {
+    p.outer.push_back({4.0 * i, 0});
+    p.outer.push_back({4.0 * i + 2, 0});
+    p.outer.push_back({4.0 * i + 2, -3});
+    p.outer.push_back({4.0 * i + 4, -3});
+  }
+  p.outer.push_back({4.0 * teeth, 5});
+  p.outer.push_back({0, 5});
+  return p;
+}
+
+// A comb whose teeth all differ in depth, so each one is its own event: the wavefront's worst case.
+Polygon uneven_comb(int teeth) {
+  Polygon p;
+  for (int i = 0; i < teeth; ++i) {
+    const double depth = 3 + 0.01 * i;
+    p.outer.push_back({4.0 * i, 0});
+    p.outer.push_back({4.0 * i + 2, 0});
+    p.outer.push_back({4.0 * i + 2, -depth});
+    p.outer.push_back({4.0 * i + 4, -depth});
+  }
+  p.outer.push_back({4.0 * teeth, 5});
+  p.outer.push_back({0, 5});
+  return p;
+}
+
 // The rectilinear wavefront alone, and CGAL's general builder on the same outlines.
 void BM_RectilinearWavefront(benchmark::State& state, Polygon footprint) {
   for (auto _ : state) {
@@ -116,6 +145,13 @@ void BM_RectilinearWavefront(benchmark::State& state, Polygon footprint) {
 }
 BENCHMARK_CAPTURE(BM_RectilinearWavefront, l_shape_8, l_shape8())->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_RectilinearWavefront, h_shape_12, h_shape12())->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_RectilinearWavefront, comb_66, comb(16))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_RectilinearWavefront, comb_254, comb(63))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_RectilinearWavefront, comb_1002, comb(250))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_RectilinearWavefront, uneven_comb_254, uneven_comb(63))
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_RectilinearWavefront, uneven_comb_1002, uneven_comb(250))
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_SkeletonCgal(benchmark::State& state, Polygon footprint) {
   for (auto _ : state) {
@@ -125,6 +161,8 @@ void BM_SkeletonCgal(benchmark::State& state, Polygon footprint) {
 }
 BENCHMARK_CAPTURE(BM_SkeletonCgal, l_shape_8, l_shape8())->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_SkeletonCgal, h_shape_12, h_shape12())->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SkeletonCgal, comb_66, comb(16))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SkeletonCgal, comb_254, comb(63))->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace insula::kernel
