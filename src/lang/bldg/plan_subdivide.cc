@@ -127,8 +127,10 @@ bool along_x(const TreeNode& node, bool x_first) {
   return (node.depth % 2 == 0) == x_first;
 }
 
-bool wider_than_tall(const std::vector<Polygon>& region) {
-  const kernel::Bounds2 b = bounds_of(region);
+// Of a one-polygon region (bounds_of's box: the outer ring's), without copying it into a list.
+bool wider_than_tall(const Polygon& region) {
+  kernel::Bounds2 b;
+  for (const kernel::Vec2 v : region.outer) b.add(v);
   return b.max.x - b.min.x >= b.max.y - b.min.y;
 }
 
@@ -142,7 +144,9 @@ void split_tree(const std::vector<TreeNode>& tree, int node, std::vector<Polygon
     return;
   }
   if (n.children.empty()) return;
-  std::vector<double> weights;
+  // Scratch reused from node to node: split_region reads it before the recursion below.
+  thread_local std::vector<double> weights;
+  weights.clear();
   for (int c : n.children) weights.push_back(std::max(weight[c], 1e-12));
   std::vector<std::vector<Polygon>> cells =
       split_region(region, weights, along_x(n, x_first), step);
@@ -151,19 +155,22 @@ void split_tree(const std::vector<TreeNode>& tree, int node, std::vector<Polygon
 }
 
 // Keeps each leaf's largest piece and merges the others into the neighbouring leaf that shares
-// the longest boundary with them. Returns the pieces no neighbour touches.
+// the longest boundary with them. Returns the pieces no neighbour touches. `regions` is left
+// with moved-from pieces.
 std::vector<Polygon> settle_pieces(std::vector<std::vector<Polygon>>& regions,
                                    std::vector<Polygon>& cells, std::vector<bool>& has_cell) {
   std::vector<Polygon> orphans;
   cells.assign(regions.size(), Polygon{});
   has_cell.assign(regions.size(), false);
   for (std::size_t i = 0; i < regions.size(); ++i) {
-    const int keep = largest(regions[i]);
+    // A single piece (the usual case) is kept without measuring it; the pieces move (the caller's
+    // lists are not read again).
+    const int keep = regions[i].size() == 1 ? 0 : largest(regions[i]);
     if (keep < 0) continue;
-    cells[i] = regions[i][keep];
+    cells[i] = std::move(regions[i][keep]);
     has_cell[i] = true;
     for (std::size_t k = 0; k < regions[i].size(); ++k)
-      if (static_cast<int>(k) != keep) orphans.push_back(regions[i][k]);
+      if (static_cast<int>(k) != keep) orphans.push_back(std::move(regions[i][k]));
   }
   // Merging may make an orphan touch a cell it did not touch before; a few rounds settle chains.
   for (int round = 0; round < 4 && !orphans.empty(); ++round) {
@@ -246,7 +253,7 @@ bool subdivide_parts(Work& work) {
   };
   std::vector<std::vector<Polygon>> regions(work.parts.size());
   split_tree(work.part_tree, 0, {work.outline}, node_weights(work.part_tree, weight),
-             work.restrictions->step, wider_than_tall({work.outline}), regions);
+             work.restrictions->step, wider_than_tall(work.outline), regions);
   std::vector<Polygon> cells;
   std::vector<bool> has_cell;
   const std::vector<Polygon> left = settle_pieces(regions, cells, has_cell);
@@ -274,7 +281,7 @@ void subdivide_floor(Work& work, int floor_index) {
   const auto weight = [&](int room) { return work.rooms[room].weight; };
   if (part.has_cell)
     split_tree(floor.tree, 0, {part.cell}, node_weights(floor.tree, weight),
-               work.restrictions->step, wider_than_tall({part.cell}), regions);
+               work.restrictions->step, wider_than_tall(part.cell), regions);
   std::vector<std::vector<Polygon>> mine;
   for (int r : floor.rooms) mine.push_back(std::move(regions[r]));
   std::vector<Polygon> cells;
