@@ -1,13 +1,24 @@
 #include "lang/bldg/plan_transitions.h"
 
 #include <algorithm>
+#include <functional>
 #include <string_view>
-#include <unordered_map>
 
 #include "lang/bldg/plan_geometry.h"
 
 namespace insula::lang::bldg::plan {
 namespace {
+
+// A room listed under its symbol's hash (std::hash of the symbol), for finding the rooms of a
+// symbol without a hash map of lists.
+struct NamedRoom {
+  std::size_t hash;
+  int room;
+  std::string_view symbol;
+  friend bool operator<(const NamedRoom& a, const NamedRoom& b) {
+    return a.hash < b.hash || (a.hash == b.hash && a.room < b.room);
+  }
+};
 
 // What a borrowing attempt may change, to roll it back (§3.3: "borrowed space flows back").
 struct Snapshot {
@@ -242,21 +253,32 @@ std::vector<int> rooms_named(const Work& work, const std::string& symbol) {
 
 std::vector<DoorRequest> collect_doors(Work& work) {
   std::vector<DoorRequest> out;
-  // The rooms of every symbol, listed once (rooms_named per door scanned every room per door).
-  std::unordered_map<std::string_view, std::vector<int>> named;
+  // The rooms of every symbol, listed once (rooms_named per door scanned every room per door):
+  // sorted by the symbol's hash then room, the rooms of a symbol are those of its hash's run that
+  // bear it, in increasing room order. One list, where a hash map of lists allocated a node and a
+  // list per symbol; hashes, where sorting the symbols themselves compared long common prefixes.
+  const std::hash<std::string_view> hash_of;
+  std::vector<NamedRoom> named;
+  named.reserve(work.rooms.size());
   for (std::size_t i = 0; i < work.rooms.size(); ++i) {
     const Division* d = work.rooms[i].division;
-    if (d != nullptr) named[d->symbol].push_back(static_cast<int>(i));
+    if (d != nullptr) named.push_back({hash_of(d->symbol), static_cast<int>(i), d->symbol});
   }
-  const std::vector<int> none;
-  const auto rooms_of = [&](const std::string& symbol) -> const std::vector<int>& {
-    const auto it = named.find(symbol);
-    return it == named.end() ? none : it->second;
+  std::sort(named.begin(), named.end());
+  std::vector<int> from;
+  std::vector<int> to;
+  const auto rooms_of = [&](const std::string& symbol, std::vector<int>& rooms) {
+    rooms.clear();
+    const std::size_t h = hash_of(symbol);
+    auto it = std::partition_point(named.begin(), named.end(),
+                                   [&](const NamedRoom& e) { return e.hash < h; });
+    for (; it != named.end() && it->hash == h; ++it)
+      if (it->symbol == symbol) rooms.push_back(it->room);
   };
   for (const Transition& t : work.building->transitions) {
     if (t.kind != TransitionKind::kDoor) continue;
-    const std::vector<int>& from = rooms_of(t.from);
-    const std::vector<int>& to = rooms_of(t.to);
+    rooms_of(t.from, from);
+    rooms_of(t.to, to);
     if (from.empty() || to.empty()) {
       warn(work, "door '" + t.symbol + "' names a room that does not exist; ignored", t.where);
       continue;
