@@ -19,6 +19,44 @@ base::Span span_of(const Work& work, Location where) {
   return base::Span::at(work.file, where.line, where.column);
 }
 
+// Nodes and rooms (leaves) of a division tree, for sizing the lists add_division fills.
+struct TreeSize {
+  std::size_t nodes = 0;
+  std::size_t rooms = 0;
+};
+void count_division(const Division& division, TreeSize& size) {
+  ++size.nodes;
+  if (division.room.has_value()) {
+    ++size.rooms;
+    return;
+  }
+  for (const Division& child : division.children) count_division(child, size);
+}
+
+// Parts, floors and rooms (the stand-in of a part without rooms included) of a part tree.
+struct PartTreeSize {
+  std::size_t nodes = 0;
+  std::size_t parts = 0;
+  std::size_t floors = 0;
+  std::size_t rooms = 0;
+};
+void count_parts(const PartNode& node, PartTreeSize& size) {
+  ++size.nodes;
+  if (!node.part.has_value()) {
+    for (const PartNode& child : node.children) count_parts(child, size);
+    return;
+  }
+  ++size.parts;
+  size.floors += node.part->floors.size();
+  std::size_t rooms = 0;
+  for (const Floor& f : node.part->floors) {
+    TreeSize t;
+    count_division(f.layout, t);
+    rooms += t.rooms;
+  }
+  size.rooms += std::max<std::size_t>(rooms, 1);
+}
+
 // Adds the division tree under `division` to the floor's tree; returns the node index.
 int add_division(Work& work, int floor_index, const Division& division, int parent, int depth) {
   WorkFloor& floor = work.floors[floor_index];
@@ -39,6 +77,7 @@ int add_division(Work& work, int floor_index, const Division& division, int pare
     work.floors[floor_index].tree[index].leaf = room_index;
     return index;
   }
+  work.floors[floor_index].tree[index].children.reserve(division.children.size());
   for (const Division& child : division.children) {
     const int c = add_division(work, floor_index, child, index, depth + 1);
     work.floors[floor_index].tree[index].children.push_back(c);
@@ -55,6 +94,7 @@ void add_part(Work& work, const PartNode& node, int parent, int depth,
   work.part_tree[index].depth = depth;
   if (parent >= 0) work.part_tree[parent].children.push_back(index);
   if (!node.part.has_value()) {
+    work.part_tree[index].children.reserve(node.children.size());
     for (const PartNode& child : node.children) add_part(work, child, index, depth + 1, errors);
     return;
   }
@@ -75,6 +115,10 @@ void add_part(Work& work, const PartNode& node, int parent, int depth,
     floor.part = part_index;
     floor.level = static_cast<int>(level);
     floor.height = f.height > 0 ? f.height : work.restrictions->storey_height;
+    TreeSize size;
+    count_division(f.layout, size);
+    floor.tree.reserve(size.nodes);
+    floor.rooms.reserve(size.rooms);
     const int floor_index = static_cast<int>(work.floors.size());
     work.floors.push_back(std::move(floor));
     work.parts[part_index].floors.push_back(floor_index);
@@ -221,6 +265,13 @@ void build_work(const Building& building, const Restrictions& restrictions, Work
                 std::vector<base::Diagnostic>& errors) {
   work.building = &building;
   work.restrictions = &restrictions;
+  // The lists sized once: growing them moved every room (with its cell) and floor again and again.
+  PartTreeSize size;
+  count_parts(building.layout, size);
+  work.part_tree.reserve(size.nodes);
+  work.parts.reserve(size.parts);
+  work.floors.reserve(size.floors);
+  work.rooms.reserve(size.rooms);
   add_part(work, building.layout, -1, 0, errors);
   // Parts without rooms (disposable parts usually) weigh as one medium room.
   std::vector<int> ground;
