@@ -754,6 +754,110 @@ class PieceWalker {
 };
 
 // ---------------------------------------------------------------------------------------------
+// The plain wall: an outline (x0, y0), (x1, y0), (x1, y1), (x0, y1) (counter-clockwise from the
+// lower-left corner, as place_wall and the bldg builder make it) with rectangular openings that
+// stand clear of the outline and whose u-ranges lie side by side, each beyond the margin of the
+// next. Most walls of a building are such. For them the general stages have a known outcome,
+// produced here directly (the same boundary, the same loops in the same order):
+//  - validation accepts every opening (a gap beyond the margin, with slack for the rounding of the
+//    general path's distances; boxes apart along u fail Box::overlaps exactly as there), so `cut`
+//    is every opening in input order and opening i is boundary ring i + 1 (vertices 4 + 4i ..);
+//  - the sweep (de Berg section 3.2, along +u) meets vertices 0 (start) and 3, then opening after
+//    opening by u, each with its lower-left corner a as a split vertex (diagonal to the helper of
+//    the bottom edge: vertex 3 for the first opening, the previous opening's upper-right corner c
+//    after that) and c as a merge vertex, then vertex 1 (diagonal to the last c);
+//  - the walk from half-edge 0 then closes piece 1 = 0, 1, then c, d, a of each opening from the
+//    last to the first, then 3, and piece 2 = 1, 2, 3, then a, b, c of each opening from the first.
+// A wall that differs in any way takes the general path; tests/kernel/wall_plain_test.cc builds
+// random walls both ways (WallWorkspace::set_plain_shortcut) and compares them.
+
+struct PlainOpening {
+  double u0;
+  double u1;
+  std::uint32_t index;  // into WallSpec::openings
+};
+
+// The openings of a plain wall in `sorted`, ordered by u; false when the wall is not plain.
+// `ccw` is the validated outline, counter-clockwise.
+bool plain_wall(const Ring& ccw, const WallSpec& spec, std::vector<PlainOpening>& sorted) {
+  sorted.clear();
+  if (ccw.size() != 4) return false;
+  const double x0 = ccw[0].x, y0 = ccw[0].y, x1 = ccw[2].x, y1 = ccw[2].y;
+  if (!(ccw[1].x == x1 && ccw[1].y == y0 && ccw[3].x == x0 && ccw[3].y == y1 && x0 < x1 &&
+        y0 < y1)) {
+    return false;
+  }
+  // The general path's distances err by a few units in the last place of the coordinates; a gap
+  // this much beyond `reach` is beyond the margin (and kEps) there too.
+  const double reach = std::max(spec.min_margin, kEps);
+  const double scale = std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
+  const double clear = reach + 1e-9 * (reach + scale);
+  for (std::size_t i = 0; i < spec.openings.size(); ++i) {
+    const Opening& o = spec.openings[i];
+    if (o.arch_rise != 0 || !parameter_problem(o).empty()) return false;
+    const double u1 = o.u + o.width;
+    const double top = o.sill + o.height;  // fill_ring's top without an arch
+    if (!(o.u - x0 > clear && x1 - u1 > clear && o.sill - y0 > clear && y1 - top > clear)) {
+      return false;
+    }
+    sorted.push_back({o.u, u1, static_cast<std::uint32_t>(i)});
+  }
+  std::sort(sorted.begin(), sorted.end(),
+            [](const PlainOpening& a, const PlainOpening& b) { return a.u0 < b.u0; });
+  // Box::overlaps' x test with against_opening's pad: false for neighbours, so for every pair.
+  const double pad = spec.min_margin + kEps;
+  for (std::size_t j = 1; j < sorted.size(); ++j) {
+    if (!(sorted[j].u0 > sorted[j - 1].u1 + pad)) return false;
+  }
+  return true;
+}
+
+// build_boundary's rings for a plain wall: the outline's edges are bottom, end, top, end
+// (rim_kind), each opening's left jamb, lintel, right jamb and sill (add_opening_edges).
+void plain_boundary(const Ring& ccw, const WallSpec& spec, Boundary& b) {
+  b.clear();
+  b.add(ccw[0], EdgeKind::kBottom, -1);
+  b.add(ccw[1], EdgeKind::kEnd, -1);
+  b.add(ccw[2], EdgeKind::kTop, -1);
+  b.add(ccw[3], EdgeKind::kEnd, -1);
+  b.close();
+  for (std::size_t i = 0; i < spec.openings.size(); ++i) {
+    const Opening& o = spec.openings[i];
+    const auto index = static_cast<std::int32_t>(i);
+    const double u1 = o.u + o.width;
+    const double top = o.sill + o.height;
+    b.add({o.u, o.sill}, EdgeKind::kJamb, index);
+    b.add({o.u, top}, EdgeKind::kLintel, index);
+    b.add({u1, top}, EdgeKind::kJamb, index);
+    b.add({u1, o.sill}, EdgeKind::kSill, index);
+    b.close();
+  }
+}
+
+// The pieces' loops of a plain wall (see above): one piece, the outline, without openings.
+void plain_loops(const std::vector<PlainOpening>& sorted, std::vector<std::uint32_t>& loops,
+                 std::vector<std::uint32_t>& offsets) {
+  if (sorted.empty()) {
+    loops.insert(loops.end(), {0, 1, 2, 3});
+    offsets.push_back(4);
+    return;
+  }
+  loops.insert(loops.end(), {0, 1});
+  for (auto it = sorted.rbegin(); it != sorted.rend(); ++it) {
+    const std::uint32_t a = 4 + 4 * it->index;
+    loops.insert(loops.end(), {a + 2, a + 3, a});
+  }
+  loops.push_back(3);
+  offsets.push_back(static_cast<std::uint32_t>(loops.size()));
+  loops.insert(loops.end(), {1, 2, 3});
+  for (const PlainOpening& p : sorted) {
+    const std::uint32_t a = 4 + 4 * p.index;
+    loops.insert(loops.end(), {a, a + 1, a + 2});
+  }
+  offsets.push_back(static_cast<std::uint32_t>(loops.size()));
+}
+
+// ---------------------------------------------------------------------------------------------
 // Mesh emission.
 
 const FaceTag& tag_for(const WallFaceTags& tags, EdgeKind kind) {
@@ -902,6 +1006,9 @@ struct WallWorkspace::Buffers {
   std::vector<std::array<std::uint32_t, 2>> diagonals;
   std::vector<std::uint32_t> loops;    // the pieces' vertex loops, one after the other
   std::vector<std::uint32_t> offsets;  // piece f is loops[offsets[f], offsets[f + 1])
+  std::vector<PlainOpening> plain;     // a plain wall's openings by u
+  bool plain_shortcut = true;          // WallWorkspace::set_plain_shortcut
+  std::size_t plain_walls = 0;         // built through it
   WallResult result;                   // of the last appending build_wall
 };
 
@@ -909,6 +1016,12 @@ WallWorkspace::WallWorkspace() : buffers_(std::make_unique<Buffers>()) {}
 WallWorkspace::~WallWorkspace() = default;
 WallWorkspace::WallWorkspace(WallWorkspace&&) noexcept = default;
 WallWorkspace& WallWorkspace::operator=(WallWorkspace&&) noexcept = default;
+void WallWorkspace::set_plain_shortcut(bool enabled) {
+  buffers_->plain_shortcut = enabled;
+}
+std::size_t WallWorkspace::plain_walls() const {
+  return buffers_->plain_walls;
+}
 
 namespace {
 
@@ -931,6 +1044,16 @@ bool partition_wall(const WallSpec& spec, WallWorkspace::Buffers& w, WallResult&
   counter_clockwise(spec.outline, area, w.outline);
   for (Accepted& c : w.cut) w.spare_rings.push_back(std::move(c.ring));
   w.cut.clear();
+  w.loops.clear();
+  w.offsets.assign(1, 0);
+  if (w.plain_shortcut && plain_wall(w.outline, spec, w.plain)) {
+    plain_boundary(w.outline, spec, w.boundary);
+    plain_loops(w.plain, w.loops, w.offsets);
+    for (std::size_t i = 0; i < spec.openings.size(); ++i) result.cut.push_back(i);
+    result.front_pieces = w.offsets.size() - 1;
+    ++w.plain_walls;
+    return true;
+  }
   result.issues = validate(w.outline, spec, w.cut, &w.spare_rings);
   if (!result.issues.empty() && spec.policy == OpeningPolicy::kFail) {
     result.status = WallStatus::kRejectedOpening;
@@ -940,8 +1063,6 @@ bool partition_wall(const WallSpec& spec, WallWorkspace::Buffers& w, WallResult&
   w.boundary.clear();
   build_boundary(w.outline, w.cut, w.boundary, w.notches);
   w.diagonals.clear();
-  w.loops.clear();
-  w.offsets.assign(1, 0);
   if (!w.partition.run(w.boundary, w.diagonals) ||
       !w.walker.run(w.boundary, w.diagonals, w.loops, w.offsets)) {
     result.status = WallStatus::kDecompositionFailed;
