@@ -17,20 +17,53 @@ struct Interval {
   double hi;
 };
 
+// Appends the interval (metres from p) of opening a..b to `out` when it lies on the line through p
+// with unit direction u (both ends within 0.1 mm of it).
+void add_if_on_line(Vec2 p, Vec2 u, Vec2 a, Vec2 b, std::vector<Interval>& out) {
+  if (std::abs(kernel::cross(u, a - p)) > 1e-4 || std::abs(kernel::cross(u, b - p)) > 1e-4) return;
+  const double sa = kernel::dot(a - p, u);
+  const double sb = kernel::dot(b - p, u);
+  out.push_back({std::min(sa, sb), std::max(sa, sb)});
+}
+
 // Intervals of the line through p with unit direction u (metres from p) occupied by openings of
 // the storey on that line, into `out` (cleared first).
 void occupied(const PlanStorey& storey, Vec2 p, Vec2 u, std::vector<Interval>& out) {
   out.clear();
-  auto add = [&](Vec2 a, Vec2 b) {
-    if (std::abs(kernel::cross(u, a - p)) > 1e-4 || std::abs(kernel::cross(u, b - p)) > 1e-4)
-      return;
-    const double sa = kernel::dot(a - p, u);
-    const double sb = kernel::dot(b - p, u);
-    out.push_back({std::min(sa, sb), std::max(sa, sb)});
-  };
-  for (const PlanDoor& d : storey.doors) add(d.a, d.b);
-  for (const PlanDoor& d : storey.entrances) add(d.a, d.b);
-  for (const PlanWindow& w : storey.windows) add(w.a, w.b);
+  for (const PlanDoor& d : storey.doors) add_if_on_line(p, u, d.a, d.b, out);
+  for (const PlanDoor& d : storey.entrances) add_if_on_line(p, u, d.a, d.b, out);
+  for (const PlanWindow& w : storey.windows) add_if_on_line(p, u, w.a, w.b, out);
+}
+
+// The same intervals in the same order, the openings found through the index when the line is
+// horizontal or vertical. On a horizontal line (u.y == 0, u.x == +-1) cross(u, a - p) is exactly
+// +-(a.y - p.y), so an opening on the line has its first end's y within 1e-4 of p.y (0.2 mm taken,
+// for rounding): those are the candidates, tested as the scan tests them, in the scan's order.
+// Vertical lines likewise with x; oblique ones scan every opening.
+void occupied(OpeningIndex& index, Vec2 p, Vec2 u, std::vector<Interval>& out) {
+  if (u.x != 0 && u.y != 0) {
+    occupied(index.storey(), p, u, out);
+    return;
+  }
+  thread_local std::vector<std::uint32_t> near;
+  const bool horizontal = u.y == 0;
+  index.near(horizontal, horizontal ? p.y : p.x, 2e-4, near);
+  out.clear();
+  const PlanStorey& storey = index.storey();
+  for (const std::uint32_t order : near) {
+    const std::size_t i = OpeningIndex::index(order);
+    switch (OpeningIndex::kind(order)) {
+      case 0:
+        add_if_on_line(p, u, storey.doors[i].a, storey.doors[i].b, out);
+        break;
+      case 1:
+        add_if_on_line(p, u, storey.entrances[i].a, storey.entrances[i].b, out);
+        break;
+      default:
+        add_if_on_line(p, u, storey.windows[i].a, storey.windows[i].b, out);
+        break;
+    }
+  }
 }
 
 bool clear_of(const std::vector<Polygon>& keep_out, const Polygon& zone) {
@@ -64,9 +97,13 @@ std::vector<EdgePiece> room_pieces(const PlanStorey& storey, int room) {
   return StoreyCells(storey).pieces(room);
 }
 
-std::optional<Slot> find_slot(const PlanStorey& storey, Vec2 p, Vec2 q, double width,
-                              double clearance, const std::vector<Polygon>& keep_out,
-                              double prefer) {
+namespace {
+
+// find_slot with the openings listed by `list_occupied(p, u, out)` (one of the occupied above).
+template <typename Occupied>
+std::optional<Slot> find_slot_with(const Occupied& list_occupied, Vec2 p, Vec2 q, double width,
+                                   double clearance, const std::vector<Polygon>& keep_out,
+                                   double prefer) {
   const double len = kernel::length(q - p);
   const double target = prefer >= 0 ? prefer : len / 2;
   if (len < width + 2 * clearance) return std::nullopt;
@@ -75,7 +112,7 @@ std::optional<Slot> find_slot(const PlanStorey& storey, Vec2 p, Vec2 q, double w
   thread_local std::vector<Interval> busy;
   thread_local std::vector<Interval> free;
   thread_local std::vector<Interval> next;
-  occupied(storey, p, u, busy);
+  list_occupied(p, u, busy);
   free.assign(1, {clearance, len - clearance});
   for (const Interval& o : busy) {
     next.clear();
@@ -136,6 +173,81 @@ std::optional<Slot> find_slot(const PlanStorey& storey, Vec2 p, Vec2 q, double w
   return std::nullopt;
 }
 
+}  // namespace
+
+void OpeningIndex::merge(Axis& axis) {
+  // The recent entries (a few) sorted by insertion, then merged from the back into the grown list.
+  std::vector<Entry>& r = axis.recent;
+  for (std::size_t a = 1; a < r.size(); ++a)
+    for (std::size_t b = a; b > 0 && r[b - 1].key > r[b].key; --b) std::swap(r[b - 1], r[b]);
+  std::vector<Entry>& s = axis.sorted;
+  std::size_t i = s.size();
+  std::size_t j = r.size();
+  s.resize(s.size() + r.size());
+  for (std::size_t k = s.size(); j > 0;)
+    s[--k] = (i > 0 && s[i - 1].key > r[j - 1].key) ? s[--i] : r[--j];
+  r.clear();
+}
+
+void OpeningIndex::sync() {
+  const PlanStorey& s = *storey_;
+  if (s.doors.size() < doors_ || s.entrances.size() < entrances_ ||
+      s.windows.size() < windows_) {  // not only appended: listed again
+    by_y_ = {};
+    by_x_ = {};
+    doors_ = entrances_ = windows_ = 0;
+  }
+  // An opening can lie on a horizontal line (both ends within 1e-4 of it) only when its ends' y
+  // differ by 2e-4 at most, on a vertical one likewise with x: each is listed under the axes it
+  // can be found on (3e-4 taken, for rounding).
+  auto add = [&](Vec2 a, Vec2 b, std::uint32_t order) {
+    if (std::abs(a.y - b.y) <= 3e-4) by_y_.recent.push_back({a.y, order});
+    if (std::abs(a.x - b.x) <= 3e-4) by_x_.recent.push_back({a.x, order});
+  };
+  for (; doors_ < s.doors.size(); ++doors_)
+    add(s.doors[doors_].a, s.doors[doors_].b, static_cast<std::uint32_t>(doors_));
+  for (; entrances_ < s.entrances.size(); ++entrances_)
+    add(s.entrances[entrances_].a, s.entrances[entrances_].b,
+        (1u << 30) | static_cast<std::uint32_t>(entrances_));
+  for (; windows_ < s.windows.size(); ++windows_)
+    add(s.windows[windows_].a, s.windows[windows_].b,
+        (2u << 30) | static_cast<std::uint32_t>(windows_));
+  if (by_y_.recent.size() >= kMergeAt) merge(by_y_);
+  if (by_x_.recent.size() >= kMergeAt) merge(by_x_);
+}
+
+void OpeningIndex::near(bool by_y, double at, double margin, std::vector<std::uint32_t>& out) {
+  sync();
+  out.clear();
+  const Axis& axis = by_y ? by_y_ : by_x_;
+  const double lo = at - margin;
+  const double hi = at + margin;
+  auto it = std::lower_bound(axis.sorted.begin(), axis.sorted.end(), lo,
+                             [](const Entry& e, double k) { return e.key < k; });
+  for (; it != axis.sorted.end() && it->key <= hi; ++it) out.push_back(it->order);
+  for (const Entry& e : axis.recent)
+    if (e.key >= lo && e.key <= hi) out.push_back(e.order);
+  // Few candidates (the openings of one wall line): insertion sort into listing order.
+  for (std::size_t a = 1; a < out.size(); ++a)
+    for (std::size_t b = a; b > 0 && out[b - 1] > out[b]; --b) std::swap(out[b - 1], out[b]);
+}
+
+std::optional<Slot> find_slot(const PlanStorey& storey, Vec2 p, Vec2 q, double width,
+                              double clearance, const std::vector<Polygon>& keep_out,
+                              double prefer) {
+  return find_slot_with(
+      [&](Vec2 from, Vec2 u, std::vector<Interval>& out) { occupied(storey, from, u, out); }, p, q,
+      width, clearance, keep_out, prefer);
+}
+
+std::optional<Slot> find_slot(OpeningIndex& openings, Vec2 p, Vec2 q, double width,
+                              double clearance, const std::vector<Polygon>& keep_out,
+                              double prefer) {
+  return find_slot_with(
+      [&](Vec2 from, Vec2 u, std::vector<Interval>& out) { occupied(openings, from, u, out); }, p,
+      q, width, clearance, keep_out, prefer);
+}
+
 bool opening_on(const Polygon& cell, Vec2 a, Vec2 b, double clearance) {
   constexpr double kTol = 1e-5;
   auto check_ring = [&](const kernel::Ring& ring) {
@@ -173,14 +285,17 @@ bool openings_intact(const PlanStorey& storey, const std::vector<int>& rooms, do
          });
 }
 
-std::optional<PlanDoor> door_between(const PlanStorey& storey, int a, int b, double width,
-                                     double clearance, const std::vector<Polygon>& keep_out) {
+namespace {
+
+// door_between with the slots found by `slot_on(piece)` (one of the find_slot above).
+template <typename SlotOn>
+std::optional<PlanDoor> door_with(const PlanStorey& storey, int a, int b, double width,
+                                  const SlotOn& slot_on) {
   std::vector<EdgePiece> shared = shared_segments(storey.rooms[a].cell, storey.rooms[b].cell);
   std::stable_sort(shared.begin(), shared.end(),
                    [](const EdgePiece& x, const EdgePiece& y) { return x.length() > y.length(); });
   for (const EdgePiece& piece : shared) {
-    const std::optional<Slot> slot =
-        find_slot(storey, piece.a, piece.b, width, clearance, keep_out);
+    const std::optional<Slot> slot = slot_on(piece);
     if (!slot) continue;
     PlanDoor door;
     door.room_a = a;
@@ -192,6 +307,22 @@ std::optional<PlanDoor> door_between(const PlanStorey& storey, int a, int b, dou
     return door;
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<PlanDoor> door_between(const PlanStorey& storey, int a, int b, double width,
+                                     double clearance, const std::vector<Polygon>& keep_out) {
+  return door_with(storey, a, b, width, [&](const EdgePiece& piece) {
+    return find_slot(storey, piece.a, piece.b, width, clearance, keep_out);
+  });
+}
+
+std::optional<PlanDoor> door_between(OpeningIndex& openings, int a, int b, double width,
+                                     double clearance, const std::vector<Polygon>& keep_out) {
+  return door_with(openings.storey(), a, b, width, [&](const EdgePiece& piece) {
+    return find_slot(openings, piece.a, piece.b, width, clearance, keep_out);
+  });
 }
 
 std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, int room,

@@ -3,6 +3,7 @@
 // keep placed openings valid while later stages (room shape adaptation, added doors) edit cells.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -53,6 +54,52 @@ std::optional<Slot> find_slot(const PlanStorey& storey, kernel::Vec2 p, kernel::
                               const std::vector<kernel::Polygon>& keep_out = {},
                               double prefer = -1);
 
+// The openings of a storey (doors, entrances, windows) sorted by the y of their first end (those
+// lying horizontally) and by its x (those lying vertically), so that find_slot on a horizontal or
+// vertical wall visits only those near its line instead of every opening of the storey (the windows
+// stage asks once per window). For a stage that only appends openings to the storey while it uses
+// the index (each query takes the new ones in); a stage that moves or removes openings must build a
+// new index.
+class OpeningIndex {
+ public:
+  explicit OpeningIndex(const PlanStorey& storey) : storey_(&storey) {}
+  const PlanStorey& storey() const { return *storey_; }
+  // Listing position of the openings whose first end's coordinate (y when by_y, else x) lies
+  // within `margin` of `at`, ascending: doors, then entrances, then windows, each in list order
+  // (the order find_slot's scan visits them), into `out` (cleared first).
+  void near(bool by_y, double at, double margin, std::vector<std::uint32_t>& out);
+  // Decodes a listing position of near(): 0 door, 1 entrance, 2 window, and the index in its list.
+  static int kind(std::uint32_t order) { return static_cast<int>(order >> 30); }
+  static std::size_t index(std::uint32_t order) { return order & ((1u << 30) - 1); }
+
+ private:
+  struct Entry {
+    double key;
+    std::uint32_t order;
+  };
+  // An axis's entries: `sorted` by key, then the latest additions unsorted in `recent`, merged
+  // into `sorted` once there are kMergeAt of them (an insertion per opening moved the whole list).
+  struct Axis {
+    std::vector<Entry> sorted;
+    std::vector<Entry> recent;
+  };
+  static constexpr std::size_t kMergeAt = 16;
+  void sync();
+  static void merge(Axis& axis);
+  const PlanStorey* storey_;
+  Axis by_y_;              // keyed by the first end's y
+  Axis by_x_;              // keyed by the first end's x
+  std::size_t doors_ = 0;  // how many of each list the index holds
+  std::size_t entrances_ = 0;
+  std::size_t windows_ = 0;
+};
+
+// find_slot with the storey's openings found through `openings` (built on the same storey): the
+// same slot.
+std::optional<Slot> find_slot(OpeningIndex& openings, kernel::Vec2 p, kernel::Vec2 q, double width,
+                              double clearance, const std::vector<kernel::Polygon>& keep_out = {},
+                              double prefer = -1);
+
 // True when a..b lies on one straight edge of `cell` with no vertex of the cell within
 // `clearance` of it along that edge.
 bool opening_on(const kernel::Polygon& cell, kernel::Vec2 a, kernel::Vec2 b, double clearance);
@@ -63,6 +110,11 @@ bool openings_intact(const PlanStorey& storey, const std::vector<int>& rooms, do
 // Places a door between rooms a and b of the storey on their longest shared segment where a slot
 // fits; nullopt when none does.
 std::optional<PlanDoor> door_between(const PlanStorey& storey, int a, int b, double width,
+                                     double clearance,
+                                     const std::vector<kernel::Polygon>& keep_out = {});
+// door_between with the storey's openings found through `openings` (built on that storey): the
+// same door.
+std::optional<PlanDoor> door_between(OpeningIndex& openings, int a, int b, double width,
                                      double clearance,
                                      const std::vector<kernel::Polygon>& keep_out = {});
 

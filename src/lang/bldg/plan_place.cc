@@ -96,14 +96,18 @@ std::vector<EntranceRequest> entrance_requests(Work& work) {
 }  // namespace
 
 void place_doors(Work& work, FloorPlan& plan, const std::vector<DoorRequest>& doors) {
+  // Each storey's openings indexed once (this stage only appends doors), when a door asks.
+  std::vector<std::optional<OpeningIndex>> openings(plan.storeys.size());
   for (const DoorRequest& d : doors) {
     if (!d.accepted) continue;
     const WorkRoom& a = work.rooms[d.a];
     const WorkRoom& b = work.rooms[d.b];
     if (a.plan_index < 0 || b.plan_index < 0) continue;
     PlanStorey& storey = plan.storeys[a.level];
+    std::optional<OpeningIndex>& index = openings[a.level];
+    if (!index) index.emplace(storey);
     std::optional<PlanDoor> door =
-        door_between(storey, a.plan_index, b.plan_index, d.width, work.clearance);
+        door_between(*index, a.plan_index, b.plan_index, d.width, work.clearance);
     if (!door) {
       if (d.transition != nullptr)
         warn(work,
@@ -193,6 +197,7 @@ void place_windows(Work& work, FloorPlan& plan) {
   for (PlanStorey& storey : plan.storeys) {
     // Windows do not move cells: their pieces are kept for build_walls.
     const StoreyCells& cells = work.storey_cells.emplace_back(storey);
+    OpeningIndex openings(storey);  // this stage only appends windows
     for (std::size_t i = 0; i < storey.rooms.size(); ++i) {
       PlanRoom& room = storey.rooms[i];
       const auto listed = windows_of.find(room.symbol);
@@ -225,7 +230,7 @@ void place_windows(Work& work, FloorPlan& plan) {
           const double width =
               idx < named.size() && named[idx]->width > 0 ? named[idx]->width : r.window_width;
           const std::optional<Slot> slot =
-              find_slot(storey, pieces[p].a, pieces[p].b, width, work.clearance, {},
+              find_slot(openings, pieces[p].a, pieces[p].b, width, work.clearance, {},
                         len * (2 * j + 1) / (2 * count[p]));
           if (!slot) continue;
           PlanWindow w;
