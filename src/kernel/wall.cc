@@ -813,48 +813,61 @@ bool plain_wall(const Ring& ccw, const WallSpec& spec, std::vector<PlainOpening>
 }
 
 // build_boundary's rings for a plain wall: the outline's edges are bottom, end, top, end
-// (rim_kind), each opening's left jamb, lintel, right jamb and sill (add_opening_edges).
+// (rim_kind), each opening's left jamb, lintel, right jamb and sill (add_opening_edges). Written in
+// place, every ring a run of four vertices; `prev` stays empty (only the sweep reads it).
 void plain_boundary(const Ring& ccw, const WallSpec& spec, Boundary& b) {
+  const std::size_t n = 4 + 4 * spec.openings.size();
   b.clear();
-  b.add(ccw[0], EdgeKind::kBottom, -1);
-  b.add(ccw[1], EdgeKind::kEnd, -1);
-  b.add(ccw[2], EdgeKind::kTop, -1);
-  b.add(ccw[3], EdgeKind::kEnd, -1);
-  b.close();
+  b.points.resize(n);
+  b.next.resize(n);
+  b.kind.resize(n);
+  b.opening.resize(n);
+  b.ring_start = static_cast<std::uint32_t>(n);
+  const auto ring = [&b](std::uint32_t first, std::array<Vec2, 4> corners,
+                         std::array<EdgeKind, 4> kinds, std::int32_t opening) {
+    for (std::uint32_t k = 0; k < 4; ++k) {
+      b.points[first + k] = corners[k];
+      b.next[first + k] = first + (k + 1) % 4;
+      b.kind[first + k] = kinds[k];
+      b.opening[first + k] = opening;
+    }
+  };
+  ring(0, {ccw[0], ccw[1], ccw[2], ccw[3]},
+       {EdgeKind::kBottom, EdgeKind::kEnd, EdgeKind::kTop, EdgeKind::kEnd}, -1);
   for (std::size_t i = 0; i < spec.openings.size(); ++i) {
     const Opening& o = spec.openings[i];
-    const auto index = static_cast<std::int32_t>(i);
     const double u1 = o.u + o.width;
     const double top = o.sill + o.height;
-    b.add({o.u, o.sill}, EdgeKind::kJamb, index);
-    b.add({o.u, top}, EdgeKind::kLintel, index);
-    b.add({u1, top}, EdgeKind::kJamb, index);
-    b.add({u1, o.sill}, EdgeKind::kSill, index);
-    b.close();
+    ring(static_cast<std::uint32_t>(4 + 4 * i),
+         {Vec2{o.u, o.sill}, {o.u, top}, {u1, top}, {u1, o.sill}},
+         {EdgeKind::kJamb, EdgeKind::kLintel, EdgeKind::kJamb, EdgeKind::kSill},
+         static_cast<std::int32_t>(i));
   }
 }
 
-// The pieces' loops of a plain wall (see above): one piece, the outline, without openings.
+// The pieces' loops of a plain wall (see above), written in place: without openings one piece,
+// the outline; else two pieces of 3 + 3k vertices for k openings.
 void plain_loops(const std::vector<PlainOpening>& sorted, std::vector<std::uint32_t>& loops,
                  std::vector<std::uint32_t>& offsets) {
   if (sorted.empty()) {
-    loops.insert(loops.end(), {0, 1, 2, 3});
-    offsets.push_back(4);
+    loops.assign({0, 1, 2, 3});
+    offsets.assign({0, 4});
     return;
   }
-  loops.insert(loops.end(), {0, 1});
-  for (auto it = sorted.rbegin(); it != sorted.rend(); ++it) {
-    const std::uint32_t a = 4 + 4 * it->index;
-    loops.insert(loops.end(), {a + 2, a + 3, a});
+  const auto piece = static_cast<std::uint32_t>(3 + 3 * sorted.size());
+  loops.resize(2 * piece);
+  offsets.assign({0, piece, 2 * piece});
+  std::uint32_t* lower = loops.data();
+  std::uint32_t* upper = lower + piece;
+  *lower++ = 0, *lower++ = 1;
+  *upper++ = 1, *upper++ = 2, *upper++ = 3;
+  for (std::size_t j = 0; j < sorted.size(); ++j) {
+    const std::uint32_t below = 4 + 4 * sorted[sorted.size() - 1 - j].index;  // right to left
+    *lower++ = below + 2, *lower++ = below + 3, *lower++ = below;
+    const std::uint32_t above = 4 + 4 * sorted[j].index;  // left to right
+    *upper++ = above, *upper++ = above + 1, *upper++ = above + 2;
   }
-  loops.push_back(3);
-  offsets.push_back(static_cast<std::uint32_t>(loops.size()));
-  loops.insert(loops.end(), {1, 2, 3});
-  for (const PlainOpening& p : sorted) {
-    const std::uint32_t a = 4 + 4 * p.index;
-    loops.insert(loops.end(), {a, a + 1, a + 2});
-  }
-  offsets.push_back(static_cast<std::uint32_t>(loops.size()));
+  *lower = 3;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1044,8 +1057,6 @@ bool partition_wall(const WallSpec& spec, WallWorkspace::Buffers& w, WallResult&
   counter_clockwise(spec.outline, area, w.outline);
   for (Accepted& c : w.cut) w.spare_rings.push_back(std::move(c.ring));
   w.cut.clear();
-  w.loops.clear();
-  w.offsets.assign(1, 0);
   if (w.plain_shortcut && plain_wall(w.outline, spec, w.plain)) {
     plain_boundary(w.outline, spec, w.boundary);
     plain_loops(w.plain, w.loops, w.offsets);
@@ -1063,6 +1074,8 @@ bool partition_wall(const WallSpec& spec, WallWorkspace::Buffers& w, WallResult&
   w.boundary.clear();
   build_boundary(w.outline, w.cut, w.boundary, w.notches);
   w.diagonals.clear();
+  w.loops.clear();
+  w.offsets.assign(1, 0);
   if (!w.partition.run(w.boundary, w.diagonals) ||
       !w.walker.run(w.boundary, w.diagonals, w.loops, w.offsets)) {
     result.status = WallStatus::kDecompositionFailed;
