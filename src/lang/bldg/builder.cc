@@ -100,8 +100,11 @@ constexpr std::array<std::uint32_t, 24> kBoxFaces{
 // Writes a box's eight corners to `corners`, corner (i, j, k) at i + 2j + 4k, as
 // ((origin + u i) + v j) + w k with the partial sums shared between corners (x * 1.0 is x, so the
 // terms are u or u * 0.0, ...: the same bits as the full expression). A left-handed (u, v, w) is
-// turned right-handed first, from the opposite w face.
-void write_box_corners(Vec3* corners, Vec3 origin, Vec3 u, Vec3 v, Vec3 w) {
+// turned right-handed first, from the opposite w face. Always inlined: its four Vec3 arguments
+// would otherwise be copied through the stack for every box (frames and footers make most of a
+// building's boxes), as much work as the corners themselves.
+[[gnu::always_inline]] inline void write_box_corners(Vec3* corners, Vec3 origin, Vec3 u, Vec3 v,
+                                                     Vec3 w) {
   if (kernel::dot(kernel::cross(u, v), w) < 0) {
     origin = origin + w;
     w = -w;
