@@ -132,7 +132,7 @@ void pieces_of_edge(Vec2 p, Vec2 q, double len, const kernel::Bounds2& edge_box,
   auto push = [&](double s0, double s1, int other) {
     if (s1 - s0 <= kLineTolerance) return;
     if (out.size() > start && out.back().other == other &&
-        kernel::length(out.back().b - (p + u * s0)) < kLineTolerance) {
+        edge_length(out.back().b - (p + u * s0)) < kLineTolerance) {
       out.back().b = s1 >= len - kLineTolerance ? q : p + u * s1;
       return;
     }
@@ -165,7 +165,7 @@ void append_pieces(const Polygon& cell, const Neighbours& nb, std::vector<EdgePi
       edge_box.min = {std::min(p.x, q.x), std::min(p.y, q.y)};
       edge_box.max = {std::max(p.x, q.x), std::max(p.y, q.y)};
       if (nb.shared_only && !touches_any(edge_box, nb)) continue;
-      const double len = kernel::length(q - p);
+      const double len = edge_length(q - p);
       if (len < kLineTolerance) continue;
       pieces_of_edge(p, q, len, edge_box, nb, out);
     }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -87,13 +88,21 @@ void simplify(kernel::Polygon& polygon);
 // Edges of the outer ring once collinear vertices are merged (the room's "walls", §3.4).
 int wall_count(const kernel::Polygon& polygon);
 
+// kernel::length(d) bit for bit, without std::hypot's call when d is axis-parallel (most walls):
+// hypot(x, +-0) is |x| exactly (C11 F.10.4.3), and likewise hypot(+-0, y).
+inline double edge_length(kernel::Vec2 d) {
+  if (d.y == 0) return std::abs(d.x);
+  if (d.x == 0) return std::abs(d.y);
+  return kernel::length(d);
+}
+
 // A piece of an edge of `cell`, oriented as the edge (the cell lies on its left), and the index
 // (into the `others` list) of the polygon on its right, or -1 when none is.
 struct EdgePiece {
   kernel::Vec2 a;
   kernel::Vec2 b;
   int other = -1;
-  double length() const { return kernel::length(b - a); }
+  double length() const { return edge_length(b - a); }
 };
 
 // Splits every edge of `cell` (outer ring and holes) into pieces by which of `others` lies on the

@@ -104,7 +104,7 @@ template <typename Occupied>
 std::optional<Slot> find_slot_with(const Occupied& list_occupied, Vec2 p, Vec2 q, double width,
                                    double clearance, const std::vector<Polygon>& keep_out,
                                    double prefer) {
-  const double len = kernel::length(q - p);
+  const double len = edge_length(q - p);
   const double target = prefer >= 0 ? prefer : len / 2;
   if (len < width + 2 * clearance) return std::nullopt;
   const Vec2 u = (q - p) / len;
