@@ -817,7 +817,7 @@ bool plain_wall(const Ring& ccw, const WallSpec& spec, std::vector<PlainOpening>
 // place, every ring a run of four vertices; `prev` stays empty (only the sweep reads it).
 void plain_boundary(const Ring& ccw, const WallSpec& spec, Boundary& b) {
   const std::size_t n = 4 + 4 * spec.openings.size();
-  b.clear();
+  b.prev.clear();  // resized, not cleared: the arrays' old entries are overwritten, not zeroed
   b.points.resize(n);
   b.next.resize(n);
   b.kind.resize(n);
@@ -1000,16 +1000,19 @@ double outline_signed_area(const Ring& ring) {
   return 0.5 * twice_area;
 }
 
-void counter_clockwise(const Ring& ring, double area, Ring& out) {
-  out.assign(ring.begin(), ring.end());
-  if (area < 0) std::reverse(out.begin(), out.end());
+// The outline counter-clockwise: `ring` itself when it is (no copy), else its reverse, written
+// into `scratch`.
+const Ring& counter_clockwise(const Ring& ring, double area, Ring& scratch) {
+  if (area >= 0) return ring;
+  scratch.assign(ring.rbegin(), ring.rend());
+  return scratch;
 }
 
 }  // namespace
 
 // Everything one wall needs between validation and emission; reused from wall to wall.
 struct WallWorkspace::Buffers {
-  Ring outline;  // the spec's outline, counter-clockwise
+  Ring outline;  // the spec's outline reversed, when it is clockwise
   std::vector<Accepted> cut;
   std::vector<Ring> spare_rings;  // the rings of `cut` between walls
   std::vector<const Accepted*> notches;
@@ -1054,25 +1057,25 @@ bool partition_wall(const WallSpec& spec, WallWorkspace::Buffers& w, WallResult&
     result.message = std::move(why);
     return false;
   }
-  counter_clockwise(spec.outline, area, w.outline);
+  const Ring& ccw = counter_clockwise(spec.outline, area, w.outline);
   for (Accepted& c : w.cut) w.spare_rings.push_back(std::move(c.ring));
   w.cut.clear();
-  if (w.plain_shortcut && plain_wall(w.outline, spec, w.plain)) {
-    plain_boundary(w.outline, spec, w.boundary);
+  if (w.plain_shortcut && plain_wall(ccw, spec, w.plain)) {
+    plain_boundary(ccw, spec, w.boundary);
     plain_loops(w.plain, w.loops, w.offsets);
     for (std::size_t i = 0; i < spec.openings.size(); ++i) result.cut.push_back(i);
     result.front_pieces = w.offsets.size() - 1;
     ++w.plain_walls;
     return true;
   }
-  result.issues = validate(w.outline, spec, w.cut, &w.spare_rings);
+  result.issues = validate(ccw, spec, w.cut, &w.spare_rings);
   if (!result.issues.empty() && spec.policy == OpeningPolicy::kFail) {
     result.status = WallStatus::kRejectedOpening;
     result.message = result.issues.front().message;
     return false;
   }
   w.boundary.clear();
-  build_boundary(w.outline, w.cut, w.boundary, w.notches);
+  build_boundary(ccw, w.cut, w.boundary, w.notches);
   w.diagonals.clear();
   w.loops.clear();
   w.offsets.assign(1, 0);
@@ -1105,8 +1108,8 @@ std::vector<OpeningIssue> check_openings(const WallSpec& spec, std::vector<std::
   const double area = outline_signed_area(spec.outline);
   if (!wall_problem(spec, area).empty()) return {};
   std::vector<Accepted> cut;
-  Ring outline;
-  counter_clockwise(spec.outline, area, outline);
+  Ring scratch;
+  const Ring& outline = counter_clockwise(spec.outline, area, scratch);
   std::vector<OpeningIssue> issues = validate(outline, spec, cut);
   if (accepted) {
     for (const Accepted& c : cut) accepted->push_back(c.index);
