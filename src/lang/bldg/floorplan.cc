@@ -58,6 +58,7 @@ void assemble(Work& work, FloorPlan& out) {
   out.storeys.resize(static_cast<std::size_t>(work.levels));
   for (int level = 0; level < work.levels; ++level) out.storeys[level].level = level;
   std::vector<kernel::Polygon> kept;
+  out.parts.reserve(work.parts.size());
   for (const plan::WorkPart& p : work.parts) {
     PlanPart part;
     part.symbol = p.node->symbol;
@@ -68,7 +69,7 @@ void assemble(Work& work, FloorPlan& out) {
     part.outline = p.cell;
     part.storeys = p.disposable() ? 0 : static_cast<int>(p.floors.size());
     part.door_width = work.door_widths[out.parts.size()];
-    out.parts.push_back(part);
+    out.parts.push_back(std::move(part));
     if (p.disposable() || !p.has_cell) continue;
     kept.push_back(p.cell);
     for (int f : p.floors) {
@@ -87,7 +88,15 @@ void assemble(Work& work, FloorPlan& out) {
     if (part.storeys > 0)
       part.eaves = out.storeys[part.storeys - 1].elevation + out.storeys[part.storeys - 1].height;
   out.footprint = kept.size() == 1 ? kept : kernel::union_all(kept);
-  // Rooms, part by part in grammar order.
+  // Rooms, part by part in grammar order; each storey's list sized once (a room moved with every
+  // growth).
+  std::vector<std::size_t> rooms_of(out.storeys.size(), 0);
+  for (const plan::WorkRoom& r : work.rooms)
+    if (r.has_cell && r.division != nullptr && !work.parts[r.part].disposable() &&
+        r.level < work.levels)
+      ++rooms_of[static_cast<std::size_t>(r.level)];
+  for (std::size_t level = 0; level < out.storeys.size(); ++level)
+    out.storeys[level].rooms.reserve(rooms_of[level]);
   for (std::size_t p = 0; p < work.parts.size(); ++p) {
     const plan::WorkPart& wp = work.parts[p];
     if (wp.disposable()) continue;
