@@ -237,8 +237,9 @@ void add_frames(const kernel::WallFrame& frame, double thickness, const kernel::
   const FaceTag tag{door ? SemanticClass::kDoor : SemanticClass::kWindow, kFrameMaterial, 0};
   const double bottom = door ? o.sill : o.sill - fw;
   const double top = o.sill + o.height;
-  // The portal's boxes (at most eight) go into the mesh together (add_boxes).
-  std::array<BoxEdges, 8> boxes;
+  // The portal's boxes (at most eight) and a window's pane go into the mesh together (add_boxes),
+  // the pane last; its six faces then get the glass tag.
+  std::array<BoxEdges, 9> boxes;
   std::size_t count = 0;
   const auto box = [&](double u0, double u1, double v0, double v1, double w0, double w1) {
     boxes[count++] = {frame.map(u0, v0, w0), frame.u_axis * (u1 - u0), frame.v_axis * (v1 - v0),
@@ -250,12 +251,16 @@ void add_frames(const kernel::WallFrame& frame, double thickness, const kernel::
     box(o.u, o.u + o.width, top, top + fw, w0, w1);
     if (!door) box(o.u, o.u + o.width, o.sill - fw, o.sill, w0, w1);
   }
-  add_boxes(mesh, std::span<const BoxEdges>(boxes.data(), count), tag);
   if (!door) {
     const double pane = std::min(0.02, thickness / 4);
-    add_box(mesh, frame.map(o.u, o.sill, thickness / 2 - pane / 2), frame.u_axis * o.width,
-            frame.v_axis * o.height, frame.normal * pane,
-            {SemanticClass::kWindow, kGlassMaterial, 0});
+    boxes[count++] = {frame.map(o.u, o.sill, thickness / 2 - pane / 2), frame.u_axis * o.width,
+                      frame.v_axis * o.height, frame.normal * pane};
+  }
+  add_boxes(mesh, std::span<const BoxEdges>(boxes.data(), count), tag);
+  if (!door) {
+    for (std::size_t f = mesh.face_count() - 6; f < mesh.face_count(); ++f) {
+      mesh.tag(f) = {SemanticClass::kWindow, kGlassMaterial, 0};
+    }
   }
 }
 
