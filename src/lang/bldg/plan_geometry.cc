@@ -388,7 +388,13 @@ bool snap_to_ring(Vec2& v, const Ring& ring, double tolerance) {
 }  // namespace
 
 void weld(const std::vector<Polygon*>& cells, double tolerance) {
+  std::size_t vertices = 0;
+  for (const Polygon* c : cells) {
+    vertices += c->outer.size();
+    for (const Ring& h : c->holes) vertices += h.size();
+  }
   std::vector<Vec2*> points;
+  points.reserve(vertices);
   for (Polygon* c : cells) {
     for (Vec2& v : c->outer) points.push_back(&v);
     for (Ring& h : c->holes)

@@ -94,7 +94,19 @@ const std::vector<EdgePiece>& StoreyCells::pieces(int index) const {
 }
 
 std::vector<EdgePiece> room_pieces(const PlanStorey& storey, int room) {
-  return StoreyCells(storey).pieces(room);
+  // One room's pieces: the cells whose boxes touch its box found by a scan of every box (the list
+  // StoreyCells' touching lists hold for it, in the same increasing order), without their
+  // storey-wide sweep. The room itself is left out as a null entry.
+  thread_local std::vector<const Polygon*> others;
+  thread_local std::vector<kernel::Bounds2> boxes;
+  others.clear();
+  boxes.clear();
+  for (const PlanRoom& r : storey.rooms) others.push_back(&r.cell);
+  for (const PlanDeadZone& z : storey.dead_zones) others.push_back(&z.cell);
+  for (const Polygon* cell : others) boxes.push_back(box_of(*cell));
+  const auto i = static_cast<std::size_t>(room);
+  others[i] = nullptr;
+  return boundary_pieces(storey.rooms[i].cell, boxes[i], others, boxes);
 }
 
 namespace {
@@ -325,15 +337,13 @@ std::optional<PlanDoor> door_between(OpeningIndex& openings, int a, int b, doubl
   });
 }
 
-std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, int room,
-                                       const std::vector<Polygon>& footprint) {
-  return open_air_pieces(storey, StoreyCells(storey), room, footprint);
-}
+namespace {
 
-std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, const StoreyCells& cells, int room,
-                                       const std::vector<Polygon>& footprint) {
+// The exterior pieces of `pieces` (a room's boundary pieces) that face the open air.
+std::vector<EdgePiece> open_air_of(const PlanStorey& storey, const std::vector<EdgePiece>& pieces,
+                                   const std::vector<Polygon>& footprint) {
   std::vector<EdgePiece> out;
-  for (const EdgePiece& piece : cells.pieces(room)) {
+  for (const EdgePiece& piece : pieces) {
     if (piece.other >= 0) continue;
     const Vec2 u = kernel::normalized(piece.b - piece.a);
     const Vec2 outside = (piece.a + piece.b) * 0.5 - kernel::perp(u) * 0.01;
@@ -353,6 +363,18 @@ std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, const StoreyCel
     if (!covered && !dead) out.push_back(piece);
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, int room,
+                                       const std::vector<Polygon>& footprint) {
+  return open_air_of(storey, room_pieces(storey, room), footprint);
+}
+
+std::vector<EdgePiece> open_air_pieces(const PlanStorey& storey, const StoreyCells& cells, int room,
+                                       const std::vector<Polygon>& footprint) {
+  return open_air_of(storey, cells.pieces(room), footprint);
 }
 
 std::vector<Polygon> stair_keep_out(const FloorPlan& plan, int level) {

@@ -334,6 +334,7 @@ void subdivide_floor(Work& work, int floor_index) {
     split_tree(floor.tree, 0, {part.cell}, node_weights(floor.tree, weight),
                work.restrictions->step, wider_than_tall(part.cell), regions);
   std::vector<std::vector<Polygon>> mine;
+  mine.reserve(floor.rooms.size());
   for (int r : floor.rooms) mine.push_back(std::move(regions[r]));
   std::vector<Polygon> cells;
   std::vector<bool> has_cell;

@@ -1,13 +1,17 @@
 // Slots for doors and windows (plan_openings.h, seed 000 §3.3): a slot keeps its clearance from the
 // openings already on its wall line, and find_slot through an OpeningIndex (the doors and windows
 // stages) finds exactly the slot the scan of every opening finds, while openings are appended.
+// One room's boundary pieces equal those the storey-wide listing gives it.
 #include "lang/bldg/plan_openings.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <optional>
 #include <random>
 #include <vector>
+
+#include "lang/bldg/stochastic.h"
 
 namespace insula::lang::bldg {
 namespace {
@@ -130,6 +134,47 @@ TEST(PlanOpenings, IndexedSlotsEqualScannedSlots) {
   // Both outcomes occur: walls with room left and walls filled up.
   EXPECT_GT(found, compared / 10);
   EXPECT_LT(found, compared);
+}
+
+// room_pieces (one room, its neighbours found by a scan of every box) lists what StoreyCells
+// (the storey's touching lists) lists for that room, piece for piece, on generated plans with
+// several parts, storeys and dead zones; open_air_pieces likewise for both routes.
+TEST(PlanOpenings, RoomPiecesEqualTheStoreyCellsPieces) {
+  const RandomShape shapes[] = {RandomShape::kConvex, RandomShape::kL, RandomShape::kU,
+                                RandomShape::kT, RandomShape::kH};
+  int rooms = 0;
+  int shared = 0;
+  for (int i = 0; i < 10; ++i) {
+    RandomSpec spec;
+    spec.shape = shapes[i % 5];
+    spec.parts = 1 + i % 4;
+    spec.rooms_min = 3;
+    spec.rooms_max = 9;
+    const Building building = random_building(spec, batch_seed(41, static_cast<std::uint64_t>(i)));
+    const base::Result<FloorPlan> plan = make_floor_plan(building, Restrictions{});
+    ASSERT_TRUE(plan.ok());
+    for (const PlanStorey& storey : plan.value().storeys) {
+      const plan::StoreyCells cells(storey);
+      for (int r = 0; r < static_cast<int>(storey.rooms.size()); ++r) {
+        const std::vector<plan::EdgePiece> alone = plan::room_pieces(storey, r);
+        const std::vector<plan::EdgePiece>& listed = cells.pieces(r);
+        ASSERT_EQ(alone.size(), listed.size());
+        for (std::size_t k = 0; k < alone.size(); ++k) {
+          EXPECT_EQ(alone[k].a.x, listed[k].a.x);
+          EXPECT_EQ(alone[k].a.y, listed[k].a.y);
+          EXPECT_EQ(alone[k].b.x, listed[k].b.x);
+          EXPECT_EQ(alone[k].b.y, listed[k].b.y);
+          EXPECT_EQ(alone[k].other, listed[k].other);
+          if (alone[k].other >= 0) ++shared;
+        }
+        EXPECT_EQ(plan::open_air_pieces(storey, r, plan.value().footprint).size(),
+                  plan::open_air_pieces(storey, cells, r, plan.value().footprint).size());
+        ++rooms;
+      }
+    }
+  }
+  EXPECT_GT(rooms, 50);
+  EXPECT_GT(shared, rooms);  // rooms have neighbours: the lists are not all exterior
 }
 
 }  // namespace
