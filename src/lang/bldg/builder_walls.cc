@@ -54,10 +54,15 @@ struct Outline {
   std::size_t columns = 0;
   std::vector<std::uint32_t> column_start;  // column c lists column_items[start[c], start[c + 1])
   std::vector<std::uint32_t> column_items;  // indices into pieces
-  // Indices into pieces ordered by the x of the piece's start (by_start) or end (by_end), ties in
-  // plan order: next_outer and previous_outer look only at the pieces whose x is close.
-  std::vector<std::uint32_t> by_start;
-  std::vector<std::uint32_t> by_end;
+  // The pieces' starts (by_start) or ends (by_end) with the piece's index, ordered by x, ties in
+  // plan order: next_outer and previous_outer look only at the points whose x is close, read from
+  // these arrays rather than through the pieces.
+  struct End {
+    Vec2 p;
+    std::uint32_t piece;
+  };
+  std::vector<End> by_start;
+  std::vector<End> by_end;
 
   // The column of x, clamped to the existing ones (monotone in x, so a box [lo, hi] is listed in
   // every column of a point inside it).
@@ -99,12 +104,12 @@ Outline outer_walls(const PlanStorey& storey) {
   out.index_columns();
   for (auto [order, end] : {std::pair{&out.by_start, false}, std::pair{&out.by_end, true}}) {
     order->resize(out.pieces.size());
-    for (std::uint32_t i = 0; i < order->size(); ++i) (*order)[i] = i;
-    const auto x = [&out, end = end](std::uint32_t i) {
-      return end ? out.pieces[i].wall->b.x : out.pieces[i].wall->a.x;
-    };
-    std::sort(order->begin(), order->end(), [&x](std::uint32_t i, std::uint32_t j) {
-      return x(i) < x(j) || (x(i) == x(j) && i < j);
+    for (std::uint32_t i = 0; i < order->size(); ++i) {
+      const PlanWall& w = *out.pieces[i].wall;
+      (*order)[i] = {end ? w.b : w.a, i};
+    }
+    std::sort(order->begin(), order->end(), [](const Outline::End& e, const Outline::End& f) {
+      return e.p.x < f.p.x || (e.p.x == f.p.x && e.piece < f.piece);
     });
   }
   return out;
@@ -130,19 +135,15 @@ bool on_outline(const Outline& outline, Vec2 p) {
 // kTouch of p.x are looked at (a superset of those passing the exact test, which is applied as it
 // stands to each of them).
 const PlanWall* outer_piece_at(const Outline& outline, const PlanWall& wall, Vec2 p, bool end) {
-  const std::vector<std::uint32_t>& order = end ? outline.by_end : outline.by_start;
-  const auto point = [&](std::uint32_t i) {
-    const PlanWall* w = outline.pieces[i].wall;
-    return end ? w->b : w->a;
-  };
+  const std::vector<Outline::End>& order = end ? outline.by_end : outline.by_start;
   auto it = std::lower_bound(order.begin(), order.end(), p.x - 4 * kTouch,
-                             [&](std::uint32_t i, double x) { return point(i).x < x; });
+                             [](const Outline::End& e, double x) { return e.p.x < x; });
   std::uint32_t best = static_cast<std::uint32_t>(outline.pieces.size());
-  for (; it != order.end() && point(*it).x <= p.x + 4 * kTouch; ++it) {
-    const Vec2 q = point(*it);
-    if (*it < best && outline.pieces[*it].wall != &wall && std::abs(q.x - p.x) < kTouch &&
-        std::abs(q.y - p.y) < kTouch) {
-      best = *it;
+  for (; it != order.end() && it->p.x <= p.x + 4 * kTouch; ++it) {
+    const Vec2 q = it->p;
+    if (it->piece < best && outline.pieces[it->piece].wall != &wall &&
+        std::abs(q.x - p.x) < kTouch && std::abs(q.y - p.y) < kTouch) {
+      best = it->piece;
     }
   }
   return best < outline.pieces.size() ? outline.pieces[best].wall : nullptr;
