@@ -67,18 +67,30 @@ double bisect(const Area& area, double start, Probe lo, Probe hi, double target,
     // that guess: should it go on further, the loop's next round takes it up.
     constexpr std::size_t kPastGuess = 8;
     const double slope = (mid.f - fixed.f) / (mid.at - fixed.at);
+    const auto room = static_cast<std::size_t>(kMaxProbes - k);  // the loop's iterations left
     std::size_t n = 0;
     std::size_t guess = kMaxProbes;
-    std::size_t limit = kMaxProbes;
-    for (double l = lo.at, h = hi.at;
-         n < limit && k + static_cast<int>(n) < kMaxProbes && h - l > width;) {
-      const double m = 0.5 * (l + h);
-      if (guess == kMaxProbes && !same_side(fixed.f + slope * (m - fixed.at))) {
-        guess = n;
-        limit = n + kPastGuess;
+    // The moving end takes each probe in turn, the fixed one stays: one loop per direction, up to
+    // the guess (tested at each probe), then one listing kPastGuess probes further.
+    double l = lo.at;
+    double h = hi.at;
+    const auto list = [&](double& moving, const double& other, std::size_t limit, bool find) {
+      while (n < limit && h - l > width) {
+        const double m = 0.5 * (moving + other);
+        run[n++] = m;
+        moving = m;
+        if (find && !same_side(fixed.f + slope * (m - fixed.at))) {
+          guess = n - 1;
+          return;
+        }
       }
-      run[n++] = m;
-      (below ? l : h) = m;
+    };
+    if (below) {
+      list(l, h, room, true);
+      if (guess != kMaxProbes) list(l, h, std::min(room, guess + kPastGuess), false);
+    } else {
+      list(h, l, room, true);
+      if (guess != kMaxProbes) list(h, l, std::min(room, guess + kPastGuess), false);
     }
     if (n == 0) break;
     // run[0, a) land on the same side (the last at departure fa), run[b, n) do not (the first
