@@ -163,11 +163,15 @@ double place_cut(const AreaFunction& area, double start, double w0, double exten
 
 bool convex(const kernel::Ring& ring) {
   const std::size_t n = ring.size();
+  if (n < 3) return true;
+  // Consecutive triples (a, b, c), wrapping around, without a division per vertex.
+  kernel::Vec2 a = ring[n - 2];
+  kernel::Vec2 b = ring[n - 1];
   for (std::size_t i = 0; i < n; ++i) {
-    const kernel::Vec2 a = ring[i];
-    const kernel::Vec2 b = ring[(i + 1) % n];
-    const kernel::Vec2 c = ring[(i + 2) % n];
+    const kernel::Vec2 c = ring[i];
     if (kernel::cross(b - a, c - b) < -1e-12) return false;
+    a = b;
+    b = c;
   }
   return true;
 }
@@ -245,7 +249,8 @@ std::vector<std::vector<Polygon>> split_region(const std::vector<Polygon>& regio
   // One convex ring (most regions): cuts need no corner snapping and cells are clipped directly.
   const bool fast = region.size() == 1 && region[0].holes.empty() && convex(region[0].outer);
   // Cut coordinates: cuts[i] ends child i; the first starts at the minimum rectangle (Eq. 1).
-  std::vector<double> cuts(weights.size() + 1);
+  thread_local std::vector<double> cuts;  // scratch reused from call to call
+  cuts.assign(weights.size() + 1, 0.0);
   cuts[0] = lo;
   cuts.back() = hi;
   double cumulative = 0;
