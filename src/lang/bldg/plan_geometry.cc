@@ -35,12 +35,37 @@ bool redundant(Vec2 a, Vec2 b, Vec2 c) {
   return dist < kLineTolerance;
 }
 
+// Index of the first vertex of `ring` (3 vertices or more) that `redundant` holds redundant,
+// ring.size() when none is. Walks the ring once carrying each edge's vector and squared length
+// from the vertex where it ends to the vertex where it starts (the same differences, so the same
+// bits), so that most vertices, corners, are settled by two cheap tests; the others go through
+// `redundant` itself.
+std::size_t first_redundant(const Ring& ring) {
+  constexpr double kTol2 = kLineTolerance * kLineTolerance;
+  const std::size_t n = ring.size();
+  Vec2 ab = ring[0] - ring[n - 1];
+  double ab2 = kernel::dot(ab, ab);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 b = ring[i];
+    const Vec2 c = ring[i + 1 < n ? i + 1 : 0];
+    const Vec2 bc = c - b;
+    const double bc2 = kernel::dot(bc, bc);
+    if (ab2 < kTol2 || bc2 < kTol2) return i;
+    if (kernel::dot(ab, bc) > 0 && redundant(ring[i == 0 ? n - 1 : i - 1], b, c)) return i;
+    ab = bc;
+    ab2 = bc2;
+  }
+  return n;
+}
+
 // Erases the redundant vertex of lowest index, again and again, until none is left. After an
 // erasure at i only the vertices beside it changed neighbours, so the scan resumes at i - 1 rather
 // than at 0 (vertices 0 .. i - 2 were kept and keep their neighbours), except when the erased
 // vertex was the first or the last, which changes vertex 0's neighbour: then it restarts at 0.
+// The scan starts at the first redundant vertex (most rings have none: they are left at once).
 void simplify_ring(Ring& ring) {
-  std::size_t i = 0;
+  if (ring.size() < 3) return;
+  std::size_t i = first_redundant(ring);
   while (ring.size() >= 3 && i < ring.size()) {
     const std::size_t n = ring.size();
     if (!redundant(ring[i == 0 ? n - 1 : i - 1], ring[i], ring[i + 1 < n ? i + 1 : 0])) {
@@ -233,10 +258,7 @@ int wall_count(const Polygon& polygon) {
   // Most outlines hold no redundant vertex: then simplify_ring would erase nothing.
   const Ring& ring = polygon.outer;
   const std::size_t n = ring.size();
-  bool simple = n >= 3;
-  for (std::size_t i = 0; simple && i < n; ++i)
-    simple = !redundant(ring[i == 0 ? n - 1 : i - 1], ring[i], ring[i + 1 < n ? i + 1 : 0]);
-  if (simple || n < 3) return static_cast<int>(n);
+  if (n < 3 || first_redundant(ring) == n) return static_cast<int>(n);
   thread_local Ring scratch;  // reused: the shape and walls stages count every room's walls
   scratch.assign(polygon.outer.begin(), polygon.outer.end());
   simplify_ring(scratch);
