@@ -304,8 +304,16 @@ template <typename SlotOn>
 std::optional<PlanDoor> door_with(const PlanStorey& storey, int a, int b, double width,
                                   const SlotOn& slot_on) {
   std::vector<EdgePiece> shared = shared_segments(storey.rooms[a].cell, storey.rooms[b].cell);
-  std::stable_sort(shared.begin(), shared.end(),
-                   [](const EdgePiece& x, const EdgePiece& y) { return x.length() > y.length(); });
+  // Longest first, ties in boundary order (a stable sort: an insertion sort of the few shared
+  // segments, without std::stable_sort's buffer); each length measured once.
+  thread_local std::vector<double> lengths;
+  lengths.clear();
+  for (const EdgePiece& piece : shared) lengths.push_back(piece.length());
+  for (std::size_t i = 1; i < shared.size(); ++i)
+    for (std::size_t j = i; j > 0 && lengths[j - 1] < lengths[j]; --j) {
+      std::swap(shared[j - 1], shared[j]);
+      std::swap(lengths[j - 1], lengths[j]);
+    }
   for (const EdgePiece& piece : shared) {
     const std::optional<Slot> slot = slot_on(piece);
     if (!slot) continue;

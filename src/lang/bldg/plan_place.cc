@@ -43,14 +43,27 @@ std::optional<PlanDoor> entrance_for(const FloorPlan& plan, int index, double wi
     }
     return false;
   };
-  std::stable_sort(pieces.begin(), pieces.end(), [&](const EdgePiece& x, const EdgePiece& y) {
-    const bool sx = street(x);
-    const bool sy = street(y);
-    return sx != sy ? sx : x.length() > y.length();
-  });
-  for (const EdgePiece& piece : pieces) {
+  // Each piece's side and length found once (the sort compared them anew at every comparison),
+  // then a stable insertion sort of the room's few pieces.
+  struct Ranked {
+    EdgePiece piece;
+    bool street;
+    double length;
+  };
+  std::vector<Ranked> ranked;
+  ranked.reserve(pieces.size());
+  for (const EdgePiece& p : pieces) ranked.push_back({p, street(p), p.length()});
+  const auto before = [](const Ranked& x, const Ranked& y) {
+    return x.street != y.street ? x.street : x.length > y.length;
+  };
+  for (std::size_t i = 1; i < ranked.size(); ++i)
+    for (std::size_t j = i; j > 0 && before(ranked[j], ranked[j - 1]); --j)
+      std::swap(ranked[j - 1], ranked[j]);
+  const std::vector<Polygon> keep_out = stair_keep_out(plan, 0);
+  for (const Ranked& r : ranked) {
+    const EdgePiece& piece = r.piece;
     const std::optional<Slot> slot =
-        find_slot(storey, piece.a, piece.b, width, clearance, stair_keep_out(plan, 0));
+        find_slot(storey, piece.a, piece.b, width, clearance, keep_out);
     if (!slot) continue;
     PlanDoor door;
     door.room_a = index;
