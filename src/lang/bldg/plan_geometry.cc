@@ -344,6 +344,8 @@ NearLists touching_boxes(const std::vector<kernel::Bounds2>& boxes, double margi
   std::vector<double> left(n);  // left sides in sweep order, contiguous for the inner loop
   for (std::size_t k = 0; k < n; ++k) left[k] = boxes[by_left[k]].min.x;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  pairs.reserve(4 *
+                n);  // a cell of a plan touches a few others: one allocation, not a doubling run
   for (std::size_t k = 0; k < n; ++k) {
     const kernel::Bounds2& a = boxes[by_left[k]];
     const double reach = a.max.x + margin;
@@ -361,19 +363,20 @@ NearLists touching_boxes(const std::vector<kernel::Bounds2>& boxes, double margi
     ++lists.start[j + 1];
   }
   for (std::size_t i = 0; i < n; ++i) lists.start[i + 1] += lists.start[i];
-  lists.near.resize(lists.start[n]);
+  // The rows in pair order first, then read back polygon by polygon: polygon p, taken in
+  // increasing order, goes to the rows of its partners, so every row comes out sorted (rows are
+  // symmetric), with no comparison.
+  std::vector<std::uint32_t> unsorted(lists.start[n]);
   std::vector<std::uint32_t> fill(lists.start.begin(), lists.start.end() - 1);
   for (const auto& [i, j] : pairs) {
-    lists.near[fill[i]++] = j;
-    lists.near[fill[j]++] = i;
+    unsorted[fill[i]++] = j;
+    unsorted[fill[j]++] = i;
   }
-  // Rows are short (the cells around one cell): insertion sort, without std::sort's setup.
-  for (std::size_t i = 0; i < n; ++i) {
-    std::uint32_t* row = lists.near.data() + lists.start[i];
-    const std::size_t len = lists.start[i + 1] - lists.start[i];
-    for (std::size_t a = 1; a < len; ++a)
-      for (std::size_t b = a; b > 0 && row[b - 1] > row[b]; --b) std::swap(row[b - 1], row[b]);
-  }
+  lists.near.resize(lists.start[n]);
+  std::copy(lists.start.begin(), lists.start.end() - 1, fill.begin());
+  for (std::size_t p = 0; p < n; ++p)
+    for (std::uint32_t k = lists.start[p]; k < lists.start[p + 1]; ++k)
+      lists.near[fill[unsorted[k]]++] = static_cast<std::uint32_t>(p);
   return lists;
 }
 

@@ -2,7 +2,6 @@
 // §3.2 and Fig. 2): weights back-propagate from rooms to their containers and parts, and every
 // container's region is cut among its children by plan_treemap.h.
 #include <algorithm>
-#include <functional>
 
 #include "kernel/boolean2d.h"
 #include "lang/bldg/plan_geometry.h"
@@ -146,8 +145,8 @@ void distribute(Work& work, const std::vector<int>& rooms) {
 // children's sum (in child order). Children come after their parent in the flattened tree, so one
 // pass from the last node back computes each sum once (the recursion per cut summed each subtree
 // again at every level above it).
-std::vector<double> node_weights(const std::vector<TreeNode>& tree,
-                                 const std::function<double(int)>& leaf_weight) {
+template <typename LeafWeight>
+std::vector<double> node_weights(const std::vector<TreeNode>& tree, const LeafWeight& leaf_weight) {
   std::vector<double> weight(tree.size(), 0);
   for (std::size_t k = tree.size(); k-- > 0;) {
     const TreeNode& n = tree[k];

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -104,6 +105,34 @@ TEST(PlanGeometry, ASquareKeepsFourWallsAndItsCollinearVertexGoes) {
   EXPECT_EQ(plan::wall_count(with_mid), 4);
   plan::simplify(with_mid);
   EXPECT_EQ(with_mid.outer, square.outer);
+}
+
+// touching_boxes' rows hold, in increasing order, exactly the other boxes bounds_touch finds.
+TEST(PlanGeometry, TouchingBoxesListEveryTouchingBoxInIncreasingOrder) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0, 1);
+  int pairs = 0;
+  for (int it = 0; it < 200; ++it) {
+    std::vector<kernel::Bounds2> boxes(1 + it % 60);
+    for (kernel::Bounds2& b : boxes) {
+      // On a coarse grid, so that many boxes share sides exactly or nearly.
+      const double x = std::round(20 * u(rng)) + (u(rng) < 0.3 ? 1e-6 : 0);
+      const double y = std::round(20 * u(rng));
+      b.min = {x, y};
+      b.max = {x + 1 + std::round(4 * u(rng)), y + 1 + std::round(4 * u(rng))};
+    }
+    const plan::NearLists lists = plan::touching_boxes(boxes, plan::kLineTolerance);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      std::vector<std::uint32_t> expected;
+      for (std::size_t j = 0; j < boxes.size(); ++j)
+        if (j != i && plan::bounds_touch(boxes[i], boxes[j], plan::kLineTolerance))
+          expected.push_back(static_cast<std::uint32_t>(j));
+      const auto row = lists.of(i);
+      EXPECT_EQ(std::vector<std::uint32_t>(row.begin(), row.end()), expected);
+      pairs += static_cast<int>(expected.size());
+    }
+  }
+  EXPECT_GT(pairs, 10000);
 }
 
 }  // namespace
