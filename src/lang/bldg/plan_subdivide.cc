@@ -327,7 +327,11 @@ bool subdivide_parts(Work& work) {
 void subdivide_floor(Work& work, int floor_index) {
   WorkFloor& floor = work.floors[floor_index];
   const WorkPart& part = work.parts[floor.part];
-  std::vector<std::vector<Polygon>> regions(work.rooms.size());
+  // Leaf regions by room index, a scratch reused from floor to floor (and from call to call when
+  // weight borrowing redoes floors): only this floor's entries are written, emptied first.
+  thread_local std::vector<std::vector<Polygon>> regions;
+  if (regions.size() < work.rooms.size()) regions.resize(work.rooms.size());
+  for (int r : floor.rooms) regions[r].clear();
   const auto weight = [&](int room) { return work.rooms[room].weight; };
   if (part.has_cell)
     split_tree(floor.tree, 0, {part.cell}, node_weights(floor.tree, weight),
