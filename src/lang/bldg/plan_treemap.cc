@@ -16,8 +16,16 @@ struct AreaFunction {
   const std::vector<Polygon>& region;
   bool along_x;
   TreemapStats& stats;
+  // The region's only ring when it is one polygon without holes (most regions), else null:
+  // area_below_axis's sum then has one term, (0 + twice) / 2, taken without its loops.
+  const kernel::Ring* single = nullptr;
   double operator()(double t) const {
     ++stats.area_evaluations;
+    if (single != nullptr) {
+      const double twice = along_x ? detail::clipped_twice_area<true>(*single, t)
+                                   : detail::clipped_twice_area<false>(*single, t);
+      return (0.0 + twice) / 2;
+    }
     return along_x ? area_below_axis<true>(region, t) : area_below_axis<false>(region, t);
   }
 };
@@ -245,7 +253,9 @@ std::vector<std::vector<Polygon>> split_region(const std::vector<Polygon>& regio
   const double total_area = area_of(region);
   double total_weight = 0;
   for (double w : weights) total_weight += w;
-  const AreaFunction area{region, along_x, s};
+  const AreaFunction area{
+      region, along_x, s,
+      region.size() == 1 && region[0].holes.empty() ? &region[0].outer : nullptr};
   // One convex ring (most regions): cuts need no corner snapping and cells are clipped directly.
   const bool fast = region.size() == 1 && region[0].holes.empty() && convex(region[0].outer);
   // Cut coordinates: cuts[i] ends child i; the first starts at the minimum rectangle (Eq. 1).
