@@ -506,6 +506,7 @@ std::optional<Skeleton> interior_straight_skeleton(const Polygon& polygon) {
       add_contour(polygon, out);
       if (ConvexSkeleton(out).run() && times_valid(out)) return out;
     }
+    if (auto rectilinear = rectilinear_straight_skeleton(polygon)) return rectilinear;
     return cgal_skeleton(polygon);
   } catch (...) {
     return std::nullopt;
