@@ -41,8 +41,8 @@ void BM_FloorPlanTable2(benchmark::State& state) {
     }
   }
   state.counters["rooms"] = static_cast<double>(rooms);
-  state.counters["buildings/s"] =
-      benchmark::Counter(static_cast<double>(buildings.size()), benchmark::Counter::kIsRate);
+  state.counters["buildings/s"] = benchmark::Counter(static_cast<double>(buildings.size()),
+                                                     benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_FloorPlanTable2)->DenseRange(1, 5)->Unit(benchmark::kMillisecond);
 
