@@ -140,13 +140,21 @@ class Builder {
     area_ = area(polygon);
   }
 
+  // Regions of the wavefront (an outer cycle and its holes) never meet again once apart, so each
+  // is advanced on its own: event search and grid stay the size of one region.
   bool run() {
-    double now = 0;
+    std::vector<std::vector<Cycle>> pending{std::move(cycles_)};
+    std::vector<double> since{0.0};
     const std::size_t limit = 8 * out_.contour_count + 64;
-    for (std::size_t step = 0; !cycles_.empty(); ++step) {
-      const double t = next_event(now);
-      if (step == limit || !std::isfinite(t) || !advance(t)) return false;
-      now = t;
+    for (std::size_t steps = 0; !pending.empty(); ++steps) {
+      std::vector<Cycle> cycles = std::move(pending.back());
+      const double now = since.back();
+      pending.pop_back();
+      since.pop_back();
+      const double t = next_event(cycles, now);
+      if (steps == limit || !std::isfinite(t) || !advance(cycles, t)) return false;
+      if (!split_regions(std::move(cycles), t, pending)) return false;
+      since.resize(pending.size(), t);
     }
     return assemble_faces() && faces_valid();
   }
@@ -177,10 +185,10 @@ class Builder {
 
   // The first time after `now` at which a wavefront edge collapses or a vertex reaches a
   // wavefront edge it is not part of (split and vertex events); infinity when none.
-  double next_event(double now) const {
+  double next_event(const std::vector<Cycle>& cycles, double now) const {
     const double after = now + tolerance_;
     double best = std::numeric_limits<double>::infinity();
-    for (const Cycle& c : cycles_) {
+    for (const Cycle& c : cycles) {
       for (std::size_t i = 0; i < c.size(); ++i) {
         const WaveVertex& a = c[i];
         const WaveVertex& b = c[(i + 1) % c.size()];
@@ -190,7 +198,7 @@ class Builder {
           const double t = (pb.base - pa.base) / (pa.rate - pb.rate);
           if (t > after && t < best) best = t;
         }
-        for (const Cycle& d : cycles_) {
+        for (const Cycle& d : cycles) {
           for (const WaveVertex& v : d) {
             if (&v == &a || &v == &b) continue;
             const Motion m = across(v, edge);
@@ -209,7 +217,11 @@ class Builder {
   }
 
   // The global event step at `time` (see the file comment).
-  bool advance(double time);
+  bool advance(std::vector<Cycle>& cycles, double time);
+  // Groups the cycles into regions (a counter-clockwise cycle and the clockwise ones inside it)
+  // appended to `regions`; false if a clockwise cycle lies in none.
+  bool split_regions(std::vector<Cycle> cycles, double time,
+                     std::vector<std::vector<Cycle>>& regions) const;
   bool assemble_faces();
   bool faces_valid() const;
 
@@ -284,10 +296,10 @@ std::uint32_t label_of(const std::vector<LineEdge>& edges, std::uint32_t line, s
   return kNone;
 }
 
-bool Builder::advance(double time) {
+bool Builder::advance(std::vector<Cycle>& cycles, double time) {
   // 1. Where every vertex is at `time`, snapped to the grid of distinct coordinates.
   std::vector<double> xs, ys;
-  for (const Cycle& c : cycles_) {
+  for (const Cycle& c : cycles) {
     for (const WaveVertex& v : c) {
       xs.push_back(x_of(v).at(time));
       ys.push_back(y_of(v).at(time));
@@ -300,7 +312,7 @@ bool Builder::advance(double time) {
   };
   std::vector<Old> old;
   std::vector<LineEdge> horizontal, vertical;
-  for (const Cycle& c : cycles_) {
+  for (const Cycle& c : cycles) {
     const std::size_t first = old.size();
     for (const WaveVertex& v : c) {
       const std::uint32_t p =
@@ -463,7 +475,57 @@ bool Builder::advance(double time) {
   };
   ridges(horizontal, true);
   ridges(vertical, false);
-  cycles_ = std::move(next);
+  cycles = std::move(next);
+  return true;
+}
+
+// Whether p lies inside a rectilinear ring: crossings of the horizontal ray to the right with the
+// ring's vertical edges, half-open in y.
+bool ring_contains(const Ring& ring, Vec2 p) {
+  bool inside = false;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+    if (a.x != b.x || a.x <= p.x) continue;
+    if ((a.y <= p.y) != (b.y <= p.y)) inside = !inside;
+  }
+  return inside;
+}
+
+bool Builder::split_regions(std::vector<Cycle> cycles, double time,
+                            std::vector<std::vector<Cycle>>& regions) const {
+  std::vector<Ring> rings(cycles.size());
+  std::vector<double> areas(cycles.size());
+  std::vector<std::size_t> outers;  // cycle ids of the counter-clockwise cycles
+  for (std::size_t c = 0; c < cycles.size(); ++c) {
+    for (const WaveVertex& v : cycles[c]) rings[c].push_back({x_of(v).at(time), y_of(v).at(time)});
+    areas[c] = signed_area(rings[c]);
+    if (areas[c] > 0) outers.push_back(c);
+  }
+  if (outers.size() <= 1) {
+    if (!cycles.empty()) regions.push_back(std::move(cycles));
+    return true;
+  }
+  std::vector<std::size_t> region_of(cycles.size(), 0);
+  for (std::size_t r = 0; r < outers.size(); ++r) region_of[outers[r]] = r;
+  for (std::size_t c = 0; c < cycles.size(); ++c) {
+    if (areas[c] > 0) continue;
+    // The midpoint of a hole's first edge lies strictly inside the hole's outer cycle, which is
+    // the smallest counter-clockwise cycle around it (regions can nest in courtyards).
+    const Vec2 probe = (rings[c][0] + rings[c][1]) / 2;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t r = 0; r < outers.size(); ++r) {
+      if (areas[outers[r]] < smallest && ring_contains(rings[outers[r]], probe)) {
+        smallest = areas[outers[r]];
+        region_of[c] = r;
+      }
+    }
+    if (!std::isfinite(smallest)) return false;
+  }
+  const std::size_t first = regions.size();
+  regions.resize(first + outers.size());
+  for (std::size_t c = 0; c < cycles.size(); ++c) {
+    regions[first + region_of[c]].push_back(std::move(cycles[c]));
+  }
   return true;
 }
 
