@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -123,6 +124,15 @@ TEST(RectilinearSkeleton, CourtyardHoleMatchesCgal) {
   expect_same_as_cgal(p, "courtyard");
   Polygon centred{{{0, 0}, {12, 0}, {12, 12}, {0, 12}}, {{{4, 4}, {4, 8}, {8, 8}, {8, 4}}}};
   expect_same_as_cgal(centred, "centred square courtyard");
+}
+
+// An island joined to the rest by a neck 2 m wide inside a C-shaped courtyard: at t = 1 the neck
+// is gone and the island is a region of its own inside the other region's hole.
+TEST(RectilinearSkeleton, IslandCutOffInsideACourtyardMatchesCgal) {
+  Ring c_shape{{24, 16}, {24, 24}, {6, 24},  {6, 6},   {24, 6},  {24, 14},
+               {20, 14}, {20, 10}, {10, 10}, {10, 20}, {20, 20}, {20, 16}};
+  std::reverse(c_shape.begin(), c_shape.end());  // holes run clockwise
+  expect_same_as_cgal({{{0, 0}, {30, 0}, {30, 30}, {0, 30}}, {c_shape}}, "island");
 }
 
 TEST(RectilinearSkeleton, FarFromTheOriginStaysExact) {
