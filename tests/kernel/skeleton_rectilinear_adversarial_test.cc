@@ -1,0 +1,581 @@
+// Adversarial inputs for the rectilinear straight skeleton (skeleton_rectilinear.h): many holes,
+// near-degenerate and one-ulp widths, huge and tiny scales far from the origin, slivers, spirals,
+// combs, staircases, crosses, nested courtyards, collinear vertices and the 1,024-vertex limit.
+// For each input: whenever rectilinear_straight_skeleton returns a skeleton it must be CGAL's
+// (general_straight_skeleton) face by face, and interior_straight_skeleton must always answer for
+// a simple polygon CGAL handles. Declines (nullopt: CGAL takes over) are allowed; each test counts
+// them and prints the count so a regression to "declines everything" shows.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "kernel/boolean2d.h"
+#include "kernel/polygon.h"
+#include "kernel/skeleton.h"
+#include "kernel/skeleton_rectilinear.h"
+
+namespace insula::kernel {
+namespace {
+
+Ring face_ring(const Skeleton& s, std::size_t e) {
+  Ring ring;
+  for (std::uint32_t v : s.face(e)) ring.push_back(s.vertices[v].position);
+  return ring;
+}
+
+struct Tally {
+  int compared = 0;  // the rectilinear builder answered and matched CGAL
+  int declined = 0;  // it returned nullopt (CGAL took over)
+  int skipped = 0;   // CGAL itself failed or the polygon is not simple: nothing to compare with
+  std::vector<std::string> declined_names;
+  void print(const char* what) const {
+    std::printf("[ tally    ] %s: %d compared, %d declined, %d without reference\n", what, compared,
+                declined, skipped);
+    for (const std::string& name : declined_names) std::printf("[ declined ] %s\n", name.c_str());
+  }
+};
+
+// The skeleton's own invariants (skeleton.h), with a tolerance relative to the outline's size and
+// its distance from the origin.
+void expect_valid(const Polygon& polygon, const Skeleton& s, const std::string& what) {
+  ASSERT_EQ(s.face_count(), s.contour_count) << what;
+  double size = 0, far = 0;
+  for (Vec2 p : polygon.outer) far = std::max({far, std::abs(p.x), std::abs(p.y)});
+  const double polygon_area = area(polygon);
+  for (const auto& v : s.vertices) size = std::max(size, v.time);
+  const double tolerance = 1e-9 * std::max(size, 1e-300) + 1e-13 * far;
+  double total = 0;
+  for (std::uint32_t e = 0; e < s.contour_count; ++e) {
+    const auto face = s.face(e);
+    ASSERT_GE(face.size(), 3U) << what;
+    EXPECT_EQ(face[0], e) << what;
+    EXPECT_EQ(face[1], s.next_contour(e)) << what;
+    const Vec2 a = s.vertices[e].position;
+    const Vec2 d = normalized(s.vertices[s.next_contour(e)].position - a);
+    for (std::uint32_t v : face) {
+      EXPECT_NEAR(cross(d, s.vertices[v].position - a), s.vertices[v].time, tolerance)
+          << what << " face " << e;
+    }
+    const double face_area = signed_area(face_ring(s, e));
+    EXPECT_GT(face_area, 0) << what << " face " << e;
+    total += face_area;
+  }
+  EXPECT_NEAR(total, polygon_area, 1e-9 * polygon_area) << what;
+}
+
+// Compares the rectilinear builder with CGAL on `polygon` (normalized orientation).
+void check(const Polygon& polygon, const std::string& what, Tally& tally) {
+  SCOPED_TRACE(what);
+  ASSERT_TRUE(is_rectilinear(polygon)) << what;
+  if (!is_simple_polygon(polygon)) {
+    ++tally.skipped;
+    ADD_FAILURE() << what << ": the generator made a polygon is_simple_polygon rejects";
+    return;
+  }
+  const auto ours = rectilinear_straight_skeleton(polygon);
+  const auto reference = general_straight_skeleton(polygon);
+  const auto chosen = interior_straight_skeleton(polygon);
+  if (!reference.has_value()) {
+    ++tally.skipped;
+    // CGAL could not: the rectilinear builder may still answer, and then must be valid.
+    if (ours.has_value()) expect_valid(polygon, *ours, what);
+    return;
+  }
+  // A simple polygon CGAL handles always gets a skeleton, from whichever builder.
+  ASSERT_TRUE(chosen.has_value()) << what;
+  EXPECT_EQ(chosen->contour_count, reference->contour_count) << what;
+  if (!ours.has_value()) {
+    ++tally.declined;
+    tally.declined_names.push_back(what);
+    return;
+  }
+  expect_valid(polygon, *ours, what);
+  const double polygon_area = area(polygon);
+  // Far from the origin the input coordinates themselves carry an ulp of the largest coordinate
+  // (2e-9 at 1e7), and both builders round their nodes to it: times may differ by a few such
+  // ulps and face areas by a few ulps times the face's perimeter, beyond the relative tolerances.
+  double far = 0;
+  for (Vec2 v : polygon.outer) far = std::max({far, std::abs(v.x), std::abs(v.y)});
+  const double ulp = 4 * std::numeric_limits<double>::epsilon() * far;
+  EXPECT_NEAR(ours->max_time(), reference->max_time(), 1e-9 * reference->max_time() + ulp) << what;
+  ASSERT_EQ(ours->contour_count, reference->contour_count) << what;
+  int wrong_faces = 0;
+  for (std::uint32_t e = 0; e < ours->contour_count; ++e) {
+    const double a = signed_area(face_ring(*ours, e));
+    const double b = signed_area(face_ring(*reference, e));
+    const Ring ring = face_ring(*reference, e);
+    double face_perimeter = 0;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      face_perimeter += length(ring[(k + 1) % ring.size()] - ring[k]);
+    }
+    if (!(std::abs(a - b) <= 1e-7 * polygon_area + ulp * face_perimeter)) {
+      if (++wrong_faces <= 3) {
+        ADD_FAILURE() << what << " face " << e << ": area " << a << ", CGAL " << b;
+      }
+    }
+  }
+  EXPECT_EQ(wrong_faces, 0) << what;
+  ++tally.compared;
+}
+
+// A number as %g prints it (std::to_string writes 1e-9 as 0.000000).
+std::string str(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+Polygon rectangle(double x0, double y0, double x1, double y1) {
+  return {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
+}
+
+// A clockwise rectangular hole.
+Ring hole(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x0, y1}, {x1, y1}, {x1, y0}};
+}
+
+Polygon transformed(Polygon p, double scale, Vec2 offset) {
+  auto apply = [&](Ring& ring) {
+    for (Vec2& v : ring) v = Vec2{v.x * scale + offset.x, v.y * scale + offset.y};
+  };
+  apply(p.outer);
+  for (Ring& h : p.holes) apply(h);
+  return p;
+}
+
+// The polygon mirrored across the diagonal (x <-> y), rings reversed to stay normalized: the
+// same skeleton with horizontal and vertical swapped.
+Polygon swapped(Polygon p) {
+  auto apply = [](Ring& ring) {
+    for (Vec2& v : ring) std::swap(v.x, v.y);
+    std::reverse(ring.begin(), ring.end());
+  };
+  apply(p.outer);
+  for (Ring& h : p.holes) apply(h);
+  return p;
+}
+
+// The polygon's rings started at another vertex (a different contour numbering).
+Polygon rotated_start(Polygon p, std::size_t k) {
+  std::rotate(p.outer.begin(), p.outer.begin() + static_cast<std::ptrdiff_t>(k % p.outer.size()),
+              p.outer.end());
+  return p;
+}
+
+Polygon l_shape(double arm_x, double arm_y) {
+  return {{{0, 0}, {12, 0}, {12, arm_y}, {arm_x, arm_y}, {arm_x, 12}, {0, 12}}, {}};
+}
+
+Polygon plus(double w, double arm) {
+  const double a = arm, b = arm + w, c = 2 * arm + w;
+  return {{{a, 0},
+           {b, 0},
+           {b, a},
+           {c, a},
+           {c, b},
+           {b, b},
+           {b, c},
+           {a, c},
+           {a, b},
+           {0, b},
+           {0, a},
+           {a, a}},
+          {}};
+}
+
+// A comb with `teeth` teeth hanging down; tooth i has width width(i) and depth depth(i).
+template <class Width, class Depth>
+Polygon comb(int teeth, Width width, Depth depth, double gap) {
+  Polygon p;
+  double x = 0;
+  for (int i = 0; i < teeth; ++i) {
+    // Each coordinate computed once, so that edges stay exactly axis-parallel.
+    const double x1 = x + gap, x2 = x1 + width(i);
+    p.outer.push_back({x, 0});
+    p.outer.push_back({x1, 0});
+    p.outer.push_back({x1, -depth(i)});
+    p.outer.push_back({x2, -depth(i)});
+    x = x2;
+  }
+  p.outer.push_back({x, 5});
+  p.outer.push_back({0, 5});
+  return p;
+}
+
+// A staircase of `steps` steps of the given treads and rises (counter-clockwise).
+Polygon staircase(int steps, double tread, double rise) {
+  Polygon p;
+  p.outer.push_back({0, 0});
+  const double side = steps * tread;
+  p.outer.push_back({side, 0});
+  for (int i = 0; i < steps; ++i) {
+    p.outer.push_back({side - i * tread, (i + 1) * rise});
+    p.outer.push_back({side - (i + 1) * tread, (i + 1) * rise});
+  }
+  return p;
+}
+
+TEST(RectilinearSkeletonAdversarial, StaircasesMatchCgal) {
+  Tally tally;
+  for (int steps : {1, 2, 3, 5, 8, 20, 60}) {
+    check(staircase(steps, 1, 1), "square staircase " + std::to_string(steps), tally);
+    check(staircase(steps, 2, 0.5), "flat staircase " + std::to_string(steps), tally);
+    check(staircase(steps, 1, 1 + 1e-9), "almost square staircase " + std::to_string(steps), tally);
+  }
+  tally.print("staircases");
+  EXPECT_GE(tally.compared, 15);
+}
+
+TEST(RectilinearSkeletonAdversarial, GridOfHolesMatchesCgal) {
+  Tally tally;
+  // Unit holes one unit apart (every hole's ridges meet its neighbours' at one time), then holes
+  // nearly touching at their corners, then holes of alternating sizes.
+  for (int n : {1, 2, 3, 5, 8}) {
+    Polygon p = rectangle(0, 0, 2.0 * n + 1, 2.0 * n + 1);
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j)
+        p.holes.push_back(hole(2.0 * i + 1, 2.0 * j + 1, 2.0 * i + 2, 2.0 * j + 2));
+    }
+    check(p, "unit holes " + std::to_string(n), tally);
+    check(swapped(p), "unit holes swapped " + std::to_string(n), tally);
+  }
+  for (double gap : {1e-3, 1e-6, 1e-9}) {
+    // A checkerboard of holes whose corners are `gap` apart diagonally.
+    const int n = 4;
+    Polygon p = rectangle(-1, -1, n + 1, n + 1);
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        if ((i + j) % 2 != 0) continue;
+        p.holes.push_back(hole(i + gap, j + gap, i + 1 - gap, j + 1 - gap));
+      }
+    }
+    check(p, "checkerboard gap " + str(gap), tally);
+  }
+  {
+    Polygon p = rectangle(0, 0, 40, 40);
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j < 6; ++j) {
+        const double s = 1 + 0.5 * ((i * 7 + j * 3) % 4);
+        p.holes.push_back(hole(6.0 * i + 2, 6.0 * j + 2, 6.0 * i + 2 + s, 6.0 * j + 2 + 1.5 * s));
+      }
+    }
+    check(p, "36 holes of four sizes", tally);
+  }
+  tally.print("grids of holes");
+  EXPECT_GE(tally.compared, 8);
+}
+
+TEST(RectilinearSkeletonAdversarial, NearDegenerateWidthsMatchCgal) {
+  Tally tally;
+  for (double eps : {1e-9, 1e-10, 1e-11, 1e-12}) {
+    check(l_shape(5, 5 + eps), "L arms differing by " + str(eps), tally);
+    check(plus(4 + eps, 4), "plus " + str(eps), tally);
+    check(rectangle(0, 0, 10, 10 + eps), "square + eps " + str(eps), tally);
+    // A U whose inner notch is eps narrower than the arms.
+    check(
+        {{{0, 0}, {14, 0}, {14, 10}, {10, 10}, {10, 4 + eps}, {4, 4 + eps}, {4, 10}, {0, 10}}, {}},
+        "U " + str(eps), tally);
+  }
+  // Widths one ulp apart.
+  const double four = 4.0, up = std::nextafter(four, 8.0), down = std::nextafter(four, 0.0);
+  check(rectangle(0, 0, 8, std::nextafter(8.0, 9.0)), "square + 1 ulp", tally);
+  check(l_shape(up, four), "L + 1 ulp", tally);
+  check(l_shape(down, up), "L -1/+1 ulp", tally);
+  check(plus(up, 4), "plus + 1 ulp", tally);
+  check(comb(
+            40, [&](int i) { return i % 2 == 0 ? four : up; }, [](int) { return 3.0; }, 2.0),
+        "comb of teeth one ulp apart", tally);
+  check(comb(
+            40, [](int i) { return 2.0 + 1e-11 * i; }, [](int) { return 3.0; }, 2.0),
+        "comb of teeth 1e-11 apart", tally);
+  // Two reflex corners 1e-9..1e-12 out of line.
+  for (double eps : {1e-9, 1e-12}) {
+    check({{{0, 0}, {20, 0}, {20, 4}, {14, 4}, {14, 10}, {6, 10}, {6, 4 + eps}, {0, 4 + eps}}, {}},
+          "inverted T reflex out of line " + str(eps), tally);
+  }
+  tally.print("near-degenerate widths");
+  EXPECT_GE(tally.compared, 10);
+}
+
+TEST(RectilinearSkeletonAdversarial, ScalesAndOffsetsMatchCgal) {
+  Tally tally;
+  const std::vector<Polygon> shapes = {
+      l_shape(5, 5),
+      l_shape(4, 7),
+      plus(4, 4),
+      staircase(6, 1, 1),
+      {{{0, 0}, {20, 0}, {20, 14}, {0, 14}}, {hole(6, 4, 15, 9)}},
+      comb(
+          12, [](int i) { return 1.0 + 0.25 * (i % 3); }, [](int i) { return 2.0 + 0.5 * (i % 2); },
+          1.0),
+  };
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    for (double scale : {1e-6, 1e-3, 1.0, 1e3, 1e6}) {
+      for (Vec2 offset : {Vec2{0, 0}, Vec2{1e7, -1e7}, Vec2{-3.3e6, 5.1e6}}) {
+        // Below ~1e-8 of the offset the input coordinates themselves are rounded away.
+        if (offset.x != 0 && scale < 1e-3) continue;
+        check(transformed(shapes[k], scale, offset),
+              "shape " + std::to_string(k) + " scale " + str(scale) + " offset " + str(offset.x),
+              tally);
+      }
+    }
+  }
+  tally.print("scales and offsets");
+  EXPECT_GE(tally.compared, 40);
+}
+
+// Tiny outlines far from the origin: features of a few hundred ulps of their coordinates. The
+// builder merges coordinates within 1e-14 of the largest coordinate; what it returns must still be
+// CGAL's skeleton.
+TEST(RectilinearSkeletonAdversarial, TinyOutlinesFarAwayMatchCgal) {
+  Tally tally;
+  for (double scale : {1e-6, 1e-7, 2e-8}) {
+    for (const Polygon& shape : {l_shape(5, 5), l_shape(4, 7), plus(4, 4), staircase(4, 1, 1)}) {
+      check(transformed(shape, scale, {1e7, 1e7}), "tiny at 1e7, scale " + str(scale), tally);
+    }
+  }
+  tally.print("tiny far away");
+}
+
+TEST(RectilinearSkeletonAdversarial, SliversAndThinShapesMatchCgal) {
+  Tally tally;
+  check(rectangle(0, 0, 1000, 1e-3), "1000 x 1e-3", tally);
+  check(rectangle(0, 0, 1e-3, 1e6), "1e-3 x 1e6", tally);
+  check(l_shape(1e-4, 1e-4), "thin L", tally);
+  check(comb(
+            50, [](int) { return 1e-3; }, [](int i) { return 100.0 + i; }, 1e-3),
+        "comb of needles", tally);
+  // A thin frame: a huge courtyard in a thin ring.
+  check({rectangle(0, 0, 100, 100).outer, {hole(1e-3, 1e-3, 100 - 1e-3, 100 - 1e-3)}}, "thin frame",
+        tally);
+  check({rectangle(0, 0, 100, 100).outer, {hole(1e-3, 2e-3, 100 - 3e-3, 100 - 4e-3)}},
+        "thin uneven frame", tally);
+  tally.print("slivers");
+  EXPECT_GE(tally.compared, 4);
+}
+
+// A square spiral corridor of width `w` (walls between turns also `w` wide), made as a union.
+Polygon spiral(int turns, double w) {
+  std::vector<Polygon> parts;
+  double x0 = 0, y0 = 0, x1 = (4 * turns + 1) * w, y1 = x1;
+  // Walk inward: bottom, right, top, left, each shrinking by 2w every full turn.
+  for (int t = 0; t < turns; ++t) {
+    parts.push_back(rectangle(x0, y0, x1, y0 + w));
+    parts.push_back(rectangle(x1 - w, y0, x1, y1));
+    parts.push_back(rectangle(x0 + 2 * w, y1 - w, x1, y1));
+    parts.push_back(rectangle(x0 + 2 * w, y0 + 2 * w, x0 + 3 * w, y1));
+    x0 += 2 * w;
+    y0 += 2 * w;
+    x1 -= 2 * w;
+    y1 -= 2 * w;
+  }
+  auto u = union_all(parts);
+  return u.empty() ? Polygon{} : u[0];
+}
+
+TEST(RectilinearSkeletonAdversarial, SpiralsMatchCgal) {
+  Tally tally;
+  for (int turns : {1, 2, 4, 8}) {
+    for (double w : {1.0, 0.3, 1e-3}) {
+      const Polygon p = spiral(turns, w);
+      ASSERT_TRUE(is_rectilinear(p));
+      check(p, "spiral " + std::to_string(turns) + " w " + str(w), tally);
+    }
+  }
+  tally.print("spirals");
+  EXPECT_GE(tally.compared, 8);
+}
+
+TEST(RectilinearSkeletonAdversarial, CombsMatchCgal) {
+  Tally tally;
+  for (int teeth : {1, 2, 7, 31, 100}) {
+    check(comb(
+              teeth, [](int) { return 2.0; }, [](int) { return 3.0; }, 2.0),
+          "equal comb " + std::to_string(teeth), tally);
+    check(comb(
+              teeth, [](int i) { return 2.0 + 1e-6 * i; }, [](int) { return 3.0; }, 2.0),
+          "slightly widening comb " + std::to_string(teeth), tally);
+    check(comb(
+              teeth, [](int i) { return 2.0 + 0.5 * (i % 2); },
+              [](int i) { return 1.0 + 0.75 * (i % 5); }, 1.5),
+          "mixed comb " + std::to_string(teeth), tally);
+    // Gaps equal to the teeth: the notches' reflex vertices meet the teeth ridges at one time.
+    check(comb(
+              teeth, [](int) { return 1.0; }, [](int) { return 4.0; }, 1.0),
+          "fine comb " + std::to_string(teeth), tally);
+    check(swapped(comb(
+              teeth, [](int) { return 1.0; }, [](int) { return 4.0; }, 1.0)),
+          "fine comb swapped " + std::to_string(teeth), tally);
+  }
+  tally.print("combs");
+  EXPECT_GE(tally.compared, 20);
+}
+
+TEST(RectilinearSkeletonAdversarial, CrossesAndNestedCourtyardsMatchCgal) {
+  Tally tally;
+  for (double arm : {1.0, 4.0, 4.0 + 1e-9, 10.0}) {
+    check(plus(4, arm), "plus arm " + str(arm), tally);
+    Polygon p = plus(4, arm);
+    // A hole in the middle of the cross, centred and off-centre.
+    p.holes.push_back(hole(arm + 1, arm + 1, arm + 3, arm + 3));
+    check(p, "plus with centred hole, arm " + str(arm), tally);
+    p.holes[0] = hole(arm + 0.5, arm + 1, arm + 3, arm + 3.25);
+    check(p, "plus with off-centre hole, arm " + str(arm), tally);
+  }
+  // A double cross (#).
+  check(union_all({rectangle(2, 0, 4, 12), rectangle(8, 0, 10, 12), rectangle(0, 2, 12, 4),
+                   rectangle(0, 8, 12, 10)})[0],
+        "#", tally);
+  // Nested courtyards: rings of equal width around a centre, each its own polygon; and square
+  // frames whose hole is at the same distance from every side (every event at one time).
+  for (double width : {1.0, 2.5}) {
+    for (int k = 1; k <= 4; ++k) {
+      const double o = 3 * width * k;
+      check({rectangle(-o, -o, o, o).outer, {hole(-o + width, -o + width, o - width, o - width)}},
+            "frame " + std::to_string(k) + " width " + str(width), tally);
+      check({rectangle(-o, -o, o, o + width).outer,
+             {hole(-o + width, -o + width, o - width, o - width)}},
+            "frame with a wider top " + std::to_string(k), tally);
+    }
+  }
+  // An L-shaped courtyard in an L-shaped building, and a plus-shaped courtyard in a square.
+  check({l_shape(5, 5).outer, {{{1, 1}, {1, 11}, {4, 11}, {4, 4}, {11, 4}, {11, 1}}}}, "L in L",
+        tally);
+  {
+    Polygon inner = plus(2, 2);
+    for (Vec2& v : inner.outer) v = v + Vec2{3, 3};
+    std::reverse(inner.outer.begin(), inner.outer.end());
+    check({rectangle(0, 0, 12, 12).outer, {inner.outer}}, "plus courtyard", tally);
+  }
+  tally.print("crosses and courtyards");
+  EXPECT_GE(tally.compared, 25);
+}
+
+TEST(RectilinearSkeletonAdversarial, CollinearVerticesMatchCgal) {
+  Tally tally;
+  // (255 per side, 1,020 vertices, is RectangleWithMaximumCollinearVertices below.)
+  for (int per_side : {1, 2, 10, 100}) {
+    Polygon p;
+    auto side = [&](Vec2 a, Vec2 b) {
+      for (int i = 0; i < per_side; ++i) p.outer.push_back(a + (b - a) * (double(i) / per_side));
+    };
+    side({0, 0}, {20, 0});
+    side({20, 0}, {20, 8});
+    side({20, 8}, {0, 8});
+    side({0, 8}, {0, 0});
+    check(p, "rectangle with " + std::to_string(per_side) + " vertices per side", tally);
+    check(rotated_start(p, 7), "the same started elsewhere", tally);
+  }
+  // Collinear vertices exactly where a ridge or valley lands.
+  check({{{0, 0}, {6, 0}, {12, 0}, {12, 6}, {12, 12}, {6, 12}, {0, 12}, {0, 6}}, {}},
+        "square with midpoints", tally);
+  check({{{0, 0}, {14, 0}, {14, 6}, {10, 6}, {6, 6}, {6, 12}, {3, 12}, {0, 12}, {0, 6}}, {}},
+        "L with collinear vertices at the reflex corner line", tally);
+  tally.print("collinear vertices");
+  EXPECT_GE(tally.compared, 10);
+}
+
+// The size limit: 1,024 contour vertices exactly are the builder's, 1,025 CGAL's.
+TEST(RectilinearSkeletonAdversarial, ExactlyTheVertexLimit) {
+  Polygon p = comb(
+      255, [](int i) { return 2.0 + 0.25 * (i % 3); }, [](int) { return 3.0; }, 2.0);
+  ASSERT_EQ(p.outer.size(), 1022U);
+  // Two collinear vertices on the top edge bring it to 1,024.
+  const Vec2 top_right = p.outer[p.outer.size() - 2];
+  p.outer.insert(p.outer.end() - 1, {top_right.x * 0.5, 5});
+  p.outer.insert(p.outer.end() - 1, {top_right.x * 0.25, 5});
+  ASSERT_EQ(p.outer.size(), 1024U);
+  Tally tally;
+  check(p, "1,024-vertex comb", tally);
+  EXPECT_TRUE(rectilinear_straight_skeleton(p).has_value());
+  p.outer.insert(p.outer.end() - 1, {top_right.x * 0.125, 5});
+  EXPECT_FALSE(rectilinear_straight_skeleton(p).has_value());
+  EXPECT_TRUE(interior_straight_skeleton(p).has_value());
+  tally.print("1,024 vertices");
+}
+
+// Random unions of many small rectangles on a fine grid: many holes and near-touching corners.
+TEST(RectilinearSkeletonAdversarial, DenseRandomUnionsMatchCgal) {
+  Tally tally;
+  for (std::uint32_t seed = 1; seed <= 60; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> cell(0, 24);
+    std::uniform_int_distribution<int> size(1, 4);
+    std::vector<Polygon> rects;
+    for (int i = 0; i < 40; ++i) {
+      const double x = cell(rng), y = cell(rng);
+      rects.push_back(rectangle(x, y, x + size(rng), y + size(rng)));
+    }
+    for (const Polygon& p : union_all(rects)) {
+      if (!is_rectilinear(p) || !is_simple_polygon(p)) continue;
+      check(p, "dense union seed " + std::to_string(seed), tally);
+    }
+  }
+  tally.print("dense random unions");
+  EXPECT_GE(tally.compared, 60);
+}
+
+// Unions of random rectangles on an integer grid whose distinct coordinates are then moved by
+// -8..7 times eps (one shift per coordinate value, so edges stay axis-parallel and the topology
+// stays the same): events that were simultaneous become eps apart, around the builder's merge
+// tolerance (1e-10 of the outline's size) when eps is 1e-10..1e-9.
+TEST(RectilinearSkeletonAdversarial, PerturbedGridUnionsMatchCgal) {
+  for (double eps : {1e-13, 1e-10, 1e-9, 1e-6}) {
+    Tally tally;
+    for (std::uint32_t seed = 1; seed <= 100; ++seed) {
+      std::mt19937 rng(seed);
+      std::uniform_int_distribution<int> cell(0, 12), size(1, 4);
+      std::vector<Polygon> rects;
+      const int n = 3 + static_cast<int>(seed % 10);
+      for (int i = 0; i < n; ++i) {
+        const double x = cell(rng), y = cell(rng);
+        rects.push_back(rectangle(x, y, x + size(rng), y + size(rng)));
+      }
+      auto shift = [&](double v) {
+        const auto h = static_cast<std::uint32_t>(std::lround(v) * 2654435761U + seed * 97U);
+        return v + eps * (static_cast<int>(h >> 28) - 8);
+      };
+      for (Polygon p : union_all(rects)) {
+        auto apply = [&](Ring& ring) {
+          for (Vec2& v : ring) v = Vec2{shift(v.x), shift(v.y)};
+        };
+        apply(p.outer);
+        for (Ring& h : p.holes) apply(h);
+        if (!is_simple_polygon(p)) continue;
+        check(p, "perturbed union seed " + std::to_string(seed) + " eps " + str(eps), tally);
+      }
+    }
+    tally.declined_names.clear();  // only the count: dozens at eps = 1e-9
+    tally.print(("perturbed unions, eps " + str(eps)).c_str());
+    EXPECT_GE(tally.compared, 350);
+  }
+}
+
+// lead: a rectangle with 255 collinear vertices per side (1,020 vertices, one simultaneous event
+// at t = 4) takes ~1.2 s in Release in rectilinear_straight_skeleton (CGAL ~1.7 s), over the 1 s
+// budget per case; it matches CGAL. Skipped to keep this file's runtime down; remove the skip when
+// the step is cheaper (O(edges^2 x grid) in the sliver ridge loop and the per-unit label search).
+TEST(RectilinearSkeletonAdversarial, RectangleWithMaximumCollinearVertices) {
+  GTEST_SKIP() << "lead: 1,020 collinear vertices take ~1.2 s (over 1 s)";
+  Polygon p;
+  auto side = [&](Vec2 a, Vec2 b) {
+    for (int i = 0; i < 255; ++i) p.outer.push_back(a + (b - a) * (double(i) / 255));
+  };
+  side({0, 0}, {20, 0});
+  side({20, 0}, {20, 8});
+  side({20, 8}, {0, 8});
+  side({0, 8}, {0, 0});
+  Tally tally;
+  check(p, "rectangle with 1,020 collinear vertices", tally);
+  EXPECT_EQ(tally.compared, 1);
+}
+
+}  // namespace
+}  // namespace insula::kernel
