@@ -655,5 +655,39 @@ TEST(RectilinearSkeletonAdversarial, HugeCoordinatesDoNotCrash) {
   }
 }
 
+// Found by perturbing grid unions by 5e-9 (2 of 2,581 outlines): a square of side 4 + 1e-8 with
+// a bump of height 2 + 5e-9 on its right side. The bump's two reflex corners meet at
+// t = 1 + 2.5e-9 and the square's right side then runs on the two collinear short edges, so the
+// last node is the square's centre at t = (4 + 1e-8) / 2. The rectilinear builder gives exactly
+// that; CGAL gives 2 + 2.5e-9 (off by 2.5e-9, above the 1e-9 relative tolerance; its face
+// areas still agree within 1e-7 of the polygon's). The reference is the hand-derived value.
+TEST(RectilinearSkeletonAdversarial, SquareWithBumpHasItsCentreAtHalfTheSide) {
+  const Polygon p{{{13.999999995, 7.9999999800000001},
+                   {15, 7.9999999800000001},
+                   {15, 9.9999999850000005},
+                   {13.999999995, 9.9999999850000005},
+                   {13.999999995, 10.999999985000001},
+                   {9.9999999850000005, 10.999999985000001},
+                   {9.9999999850000005, 6.9999999749999997},
+                   {13.999999995, 6.9999999749999997}},
+                  {}};
+  ASSERT_TRUE(is_simple_polygon(p));
+  const double side_x = 13.999999995 - 9.9999999850000005;
+  const double side_y = 10.999999985000001 - 6.9999999749999997;
+  ASSERT_NEAR(side_x, side_y, 1e-14);  // a square up to two ulps
+  const auto ours = rectilinear_straight_skeleton(p);
+  ASSERT_TRUE(ours.has_value());
+  expect_valid(p, *ours, "square with bump");
+  EXPECT_NEAR(ours->max_time(), side_x / 2, 1e-14);
+  // The left, top and bottom faces (faces 5, 4, 6) meet at the centre: each is a quarter of the
+  // square.
+  for (std::uint32_t e : {4U, 5U, 6U}) {
+    EXPECT_NEAR(signed_area(face_ring(*ours, e)), side_x * side_x / 4, 1e-12) << e;
+  }
+  const auto reference = general_straight_skeleton(p);
+  ASSERT_TRUE(reference.has_value());
+  std::printf("[ cgal     ] max time %.17g, exact %.17g\n", reference->max_time(), side_x / 2);
+}
+
 }  // namespace
 }  // namespace insula::kernel
