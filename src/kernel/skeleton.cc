@@ -498,9 +498,22 @@ bool is_simple_polygon(const Polygon& polygon) {
   return true;
 }
 
+namespace {
+// CGAL's predicates square coordinates: from about 1e154 on they overflow to infinity and GMP
+// traps (SIGFPE) converting it. Far beyond any real footprint, so such outlines get no skeleton.
+bool coordinates_in_range(const Polygon& polygon) {
+  constexpr double kLimit = 1e100;
+  auto ring_ok = [](const Ring& ring) {
+    return std::all_of(ring.begin(), ring.end(),
+                       [](Vec2 p) { return std::abs(p.x) <= kLimit && std::abs(p.y) <= kLimit; });
+  };
+  return ring_ok(polygon.outer) && std::all_of(polygon.holes.begin(), polygon.holes.end(), ring_ok);
+}
+}  // namespace
+
 std::optional<Skeleton> interior_straight_skeleton(const Polygon& polygon) {
   try {
-    if (!is_simple_polygon(polygon)) return std::nullopt;
+    if (!coordinates_in_range(polygon) || !is_simple_polygon(polygon)) return std::nullopt;
     if (strictly_convex(polygon)) {
       Skeleton out;
       add_contour(polygon, out);
@@ -515,7 +528,7 @@ std::optional<Skeleton> interior_straight_skeleton(const Polygon& polygon) {
 
 std::optional<Skeleton> general_straight_skeleton(const Polygon& polygon) {
   try {
-    if (!is_simple_polygon(polygon)) return std::nullopt;
+    if (!coordinates_in_range(polygon) || !is_simple_polygon(polygon)) return std::nullopt;
     return cgal_skeleton(polygon);
   } catch (...) {
     return std::nullopt;

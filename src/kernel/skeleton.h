@@ -57,7 +57,8 @@ struct Skeleton {
 bool is_simple_polygon(const Polygon& polygon);
 
 // The interior straight skeleton of `polygon` (normalized orientation, see polygon.h). Returns
-// nullopt when the polygon is not simple (is_simple_polygon) or CGAL fails; never throws.
+// nullopt when the polygon is not simple (is_simple_polygon), has a coordinate beyond 1e100 in
+// magnitude (CGAL's predicates would overflow and trap), or CGAL fails; never throws.
 std::optional<Skeleton> interior_straight_skeleton(const Polygon& polygon);
 
 // The same skeleton from CGAL's general builder alone, bypassing the convex and rectilinear

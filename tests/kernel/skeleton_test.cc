@@ -135,6 +135,30 @@ TEST(Skeleton, LargeConvexRingAndLargeCombAreHandled) {
   EXPECT_FALSE(is_simple_polygon(strip));
 }
 
+// Coordinates whose squares overflow made CGAL's exact fallback trap (SIGFPE); they are declined.
+TEST(Skeleton, HugeCoordinatesGiveNothingAndDoNotCrash) {
+  for (double scale : {1e101, 1e154, 1e300}) {
+    const Polygon l_shape{{{0, 0},
+                           {12 * scale, 0},
+                           {12 * scale, 5 * scale},
+                           {5 * scale, 5 * scale},
+                           {5 * scale, 12 * scale},
+                           {0, 12 * scale}},
+                          {}};
+    EXPECT_FALSE(interior_straight_skeleton(l_shape).has_value()) << scale;
+    EXPECT_FALSE(general_straight_skeleton(l_shape).has_value()) << scale;
+  }
+  const double big = 1e12;  // far beyond any footprint, still answered
+  const Polygon large{{{0, 0},
+                       {12 * big, 0},
+                       {12 * big, 5 * big},
+                       {5 * big, 5 * big},
+                       {5 * big, 12 * big},
+                       {0, 12 * big}},
+                      {}};
+  EXPECT_TRUE(interior_straight_skeleton(large).has_value());
+}
+
 TEST(Skeleton, InvalidInputGivesNothing) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(interior_straight_skeleton({{{0, 0}, {1, 0}}, {}}).has_value());
