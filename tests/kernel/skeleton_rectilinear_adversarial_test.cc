@@ -236,6 +236,13 @@ TEST(RectilinearSkeletonAdversarial, StaircasesMatchCgal) {
   EXPECT_GE(tally.compared, 15);
 }
 
+// lead: under -DINSULA_SANITIZE=ON, running this whole file reports a heap-use-after-free inside
+// CGAL 5.5 (Straight_skeleton_builder_2::MergeCoincidentNodes reads a node MergeSplitNodes freed,
+// in FinishUp) on general_straight_skeleton("unit holes swapped 8": a 17 x 17 square with 64 unit
+// holes, transposed). It depends on the heap's state (not reproduced when this test runs alone),
+// so CGAL's node merging likely orders by address. The rectilinear builder answers this polygon,
+// so interior_straight_skeleton does not reach CGAL for it; polygons with many holes it declines
+// (or that are not rectilinear) may.
 TEST(RectilinearSkeletonAdversarial, GridOfHolesMatchesCgal) {
   Tally tally;
   // Unit holes one unit apart (every hole's ridges meet its neighbours' at one time), then holes
