@@ -20,15 +20,13 @@
 #include "kernel/polygon.h"
 #include "kernel/skeleton.h"
 #include "kernel/skeleton_rectilinear.h"
+#include "skeleton_checks.h"
 
 namespace insula::kernel {
 namespace {
 
-Ring face_ring(const Skeleton& s, std::size_t e) {
-  Ring ring;
-  for (std::uint32_t v : s.face(e)) ring.push_back(s.vertices[v].position);
-  return ring;
-}
+using testing_skeleton::expect_valid;
+using testing_skeleton::face_ring;
 
 struct Tally {
   int compared = 0;  // the rectilinear builder answered and matched CGAL
@@ -41,34 +39,6 @@ struct Tally {
     for (const std::string& name : declined_names) std::printf("[ declined ] %s\n", name.c_str());
   }
 };
-
-// The skeleton's own invariants (skeleton.h), with a tolerance relative to the outline's size and
-// its distance from the origin.
-void expect_valid(const Polygon& polygon, const Skeleton& s, const std::string& what) {
-  ASSERT_EQ(s.face_count(), s.contour_count) << what;
-  double size = 0, far = 0;
-  for (Vec2 p : polygon.outer) far = std::max({far, std::abs(p.x), std::abs(p.y)});
-  const double polygon_area = area(polygon);
-  for (const auto& v : s.vertices) size = std::max(size, v.time);
-  const double tolerance = 1e-9 * std::max(size, 1e-300) + 1e-13 * far;
-  double total = 0;
-  for (std::uint32_t e = 0; e < s.contour_count; ++e) {
-    const auto face = s.face(e);
-    ASSERT_GE(face.size(), 3U) << what;
-    EXPECT_EQ(face[0], e) << what;
-    EXPECT_EQ(face[1], s.next_contour(e)) << what;
-    const Vec2 a = s.vertices[e].position;
-    const Vec2 d = normalized(s.vertices[s.next_contour(e)].position - a);
-    for (std::uint32_t v : face) {
-      EXPECT_NEAR(cross(d, s.vertices[v].position - a), s.vertices[v].time, tolerance)
-          << what << " face " << e;
-    }
-    const double face_area = signed_area(face_ring(s, e));
-    EXPECT_GT(face_area, 0) << what << " face " << e;
-    total += face_area;
-  }
-  EXPECT_NEAR(total, polygon_area, 1e-9 * polygon_area) << what;
-}
 
 // Compares the rectilinear builder with CGAL on `polygon` (normalized orientation).
 void check(const Polygon& polygon, const std::string& what, Tally& tally) {

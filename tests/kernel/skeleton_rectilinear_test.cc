@@ -9,38 +9,13 @@
 
 #include "kernel/boolean2d.h"
 #include "kernel/skeleton.h"
+#include "skeleton_checks.h"
 
 namespace insula::kernel {
 namespace {
 
-Ring face_ring(const Skeleton& s, std::size_t e) {
-  Ring ring;
-  for (std::uint32_t v : s.face(e)) ring.push_back(s.vertices[v].position);
-  return ring;
-}
-
-// Every face vertex lies at its time above the face's edge line, faces run counter-clockwise
-// from their edge, and together they tile the polygon.
-void expect_valid(const Polygon& polygon, const Skeleton& s, const std::string& what) {
-  ASSERT_EQ(s.face_count(), s.contour_count) << what;
-  double total = 0;
-  for (std::uint32_t e = 0; e < s.contour_count; ++e) {
-    const auto face = s.face(e);
-    ASSERT_GE(face.size(), 3U) << what;
-    EXPECT_EQ(face[0], e) << what;
-    EXPECT_EQ(face[1], s.next_contour(e)) << what;
-    const Vec2 a = s.vertices[e].position;
-    const Vec2 d = normalized(s.vertices[s.next_contour(e)].position - a);
-    for (std::uint32_t v : face) {
-      EXPECT_NEAR(cross(d, s.vertices[v].position - a), s.vertices[v].time, 1e-9)
-          << what << " face " << e;
-    }
-    const double face_area = signed_area(face_ring(s, e));
-    EXPECT_GT(face_area, 0) << what << " face " << e;
-    total += face_area;
-  }
-  EXPECT_NEAR(total, area(polygon), 1e-9 * area(polygon)) << what;
-}
+using testing_skeleton::expect_valid;
+using testing_skeleton::face_ring;
 
 // The same roof as CGAL's builder: every face has the same area and the ridge the same height.
 void expect_same_as_cgal(const Polygon& polygon, const std::string& what) {
