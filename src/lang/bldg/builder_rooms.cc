@@ -293,8 +293,8 @@ void add_footers(const std::vector<kernel::Polygon>& clear,
       double u = 0;
       const auto strip = [&](double from, double to) {
         if (to - from < depth) return;
-        add_box(mesh, kernel::lift(p + dir * from, z), kernel::lift(dir * (to - from), 0),
-                kernel::lift(n * depth, 0), Vec3{0, 0, height}, tag);
+        kernel::add_box(mesh, kernel::lift(p + dir * from, z), kernel::lift(dir * (to - from), 0),
+                        kernel::lift(n * depth, 0), Vec3{0, 0, height}, tag);
       };
       for (const auto& [b0, b1] : blocked) {
         strip(u, std::min(b0, length));
@@ -381,14 +381,10 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
       }
       return out;
     };
-    // A slab over the clear floor minus `holes` (most rooms have none: no copy then).
+    // A slab over the clear floor minus `holes` (stairwells, a compluvium).
     const auto slab = [&](const std::vector<kernel::Polygon>& holes, double bottom, double top,
                           FaceTag below, FaceTag above) {
-      const std::vector<kernel::Polygon> cut =
-          holes.empty() ? std::vector<kernel::Polygon>{} : minus(clear, holes);
-      for (const kernel::Polygon& p : holes.empty() ? clear : cut) {
-        add_prism(part.mesh, p, bottom, top, below, above, inner);
-      }
+      kernel::add_slab(part.mesh, clear, holes, bottom, top, {below, above, inner});
     };
     const std::vector<kernel::Polygon> floor_cut = near(floor_holes, floor_boxes);
     const bool footers =
@@ -448,11 +444,13 @@ void build_stairs(const Context& c, int s, kernel::Mesh& mesh, shape::StoreyPlan
   for (const PlanStair& st : storey.stairs) {
     const double run = kernel::length(st.head - st.foot);
     if (!(run > 0) || !(rise > 0)) continue;
-    const int risers = st.risers > 0 ? st.risers : static_cast<int>(std::ceil(rise / 0.18));
+    const int risers = st.risers > 0 ? st.risers : kernel::stair_steps(rise, kernel::kMaxStepRise);
     // The last step's top is the upper floor's top: the flight starts on this floor's slab.
-    add_staircase(mesh, st.foot, (st.head - st.foot) / run, st.width,
-                  c.floor_z(s) + c.options.slab_thickness, risers, run / risers, rise / risers,
-                  {SemanticClass::kStair, kStairMaterial, 0});
+    kernel::add_staircase(
+        mesh,
+        {st.foot, (st.head - st.foot) / run, st.width, c.floor_z(s) + c.options.slab_thickness,
+         risers, run / risers, rise / risers},
+        {SemanticClass::kStair, kStairMaterial, 0});
     plan.stairs.push_back({st.footprint, st.foot, st.head});
     ++c.result.stats.stairs;
   }
@@ -468,9 +466,10 @@ void build_base(const Context& c, const std::vector<StoreyWalls>& walls, kernel:
   const double base = c.rules.base_height;
   if (base > 0) {
     for (const kernel::Polygon& footprint : c.plan.footprint) {
-      add_prism(mesh, footprint, 0, base, {SemanticClass::kGroundSurface, kPlinthMaterial, 0},
-                {SemanticClass::kClosureSurface, kPlinthMaterial, 1},
-                {SemanticClass::kWallSurface, kPlinthMaterial, 2});
+      kernel::add_prism(mesh, footprint, 0, base,
+                        {{SemanticClass::kGroundSurface, kPlinthMaterial, 0},
+                         {SemanticClass::kClosureSurface, kPlinthMaterial, 1},
+                         {SemanticClass::kWallSurface, kPlinthMaterial, 2}});
     }
   }
   if (c.plan.storeys.empty() || walls.empty()) return;
@@ -483,8 +482,10 @@ void build_base(const Context& c, const std::vector<StoreyWalls>& walls, kernel:
     const WallGeometry& g = walls.front().walls[static_cast<std::size_t>(e.wall)];
     const Vec2 outward = -g.left;
     const double depth = steps * c.options.step_run;
-    add_staircase(mesh, e.center + outward * depth, -outward, e.width + 0.4, 0, steps,
-                  c.options.step_run, rise / steps, {SemanticClass::kStair, kStairMaterial, 3});
+    kernel::add_staircase(mesh,
+                          {e.center + outward * depth, -outward, e.width + 0.4, 0, steps,
+                           c.options.step_run, rise / steps},
+                          {SemanticClass::kStair, kStairMaterial, 3});
   }
 }
 

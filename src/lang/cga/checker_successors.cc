@@ -80,7 +80,10 @@ constexpr RangeMap kRangeMaps[] = {
     {"roofPyramid", "roof", {"pitch", "overhang"}},
     {"roofShed", "roof", {"pitch", "overhang"}},
     {"roofMansard", "roof", {"pitch", "mansard_pitch", "break_height", "overhang"}},
-    {"roofFlat", "roof", {"overhang"}},
+    {"roofFlat", "roof", {"overhang", "thickness"}},
+    {"stair", "stair", {"height", "steps", "max_rise"}},
+    {"frame", "frame", {"kind", "thickness", "width", "depth"}},
+    {"slab", "slab", {"kind", "thickness"}},
     {"offset", "offset", {"distance", "part"}},
     {"center", "center", {"axes"}},
 };

@@ -68,6 +68,10 @@ constexpr OpName kGenericOps[] = {
     {"roofShed", OpCode::kRoof},
     {"roofMansard", OpCode::kRoof},
     {"roofFlat", OpCode::kRoof},
+    // building elements (issue 11)
+    {"stair", OpCode::kRegistry},
+    {"frame", OpCode::kRegistry},
+    {"slab", OpCode::kRegistry},
     {"color", OpCode::kColor},
     {"set", OpCode::kSet},
     {"print", OpCode::kPrint},

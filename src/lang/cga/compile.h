@@ -115,6 +115,7 @@ enum class OpCode : std::uint8_t {
   kOffset,
   kSetback,
   kRoof,
+  kRegistry,  // a registry operation, positional arguments in declaration order
   kColor,
   kSet,
   kPrint,

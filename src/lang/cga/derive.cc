@@ -833,6 +833,7 @@ class Engine final : public EvalContext {
     const auto n = [&](std::size_t i) { return number(c.args[i], st); };
     if (c.text == "flat") {
       if (!c.args.empty()) a.push_back({"overhang", n(0)});
+      if (c.args.size() > 1) a.push_back({"thickness", n(1)});
       return a;
     }
     if (!c.args.empty()) a.push_back({"pitch", n(0)});
@@ -844,6 +845,23 @@ class Engine final : public EvalContext {
       return a;
     }
     if (c.args.size() > 1) a.push_back({"overhang", n(1)});
+    return a;
+  }
+
+  // A registry operation's positional arguments, in the registry's declaration order (the
+  // registry's binder checks their types and ranges).
+  std::vector<shape::ArgInput> registry_args(const CItem& c, State& st) {
+    std::vector<shape::ArgInput> a;
+    for (std::uint32_t e : c.args) {
+      const Value v = eval(e, st);
+      if (const auto* b = std::get_if<bool>(&v)) {
+        a.push_back({"", *b});
+      } else if (const auto* d = std::get_if<double>(&v)) {
+        a.push_back({"", *d});
+      } else {
+        a.push_back({"", as_text(v)});
+      }
+    }
     return a;
   }
 
@@ -878,6 +896,9 @@ class Engine final : public EvalContext {
         o = run_op(st, "offset", a);
         break;
       }
+      case OpCode::kRegistry:
+        o = run_op(st, c.info->registry_op, registry_args(c, st));
+        break;
       default:
         return true;
     }
