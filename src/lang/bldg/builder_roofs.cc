@@ -11,11 +11,12 @@
 // group's highest eaves; a lower part of the group is raised to those eaves by a filler block.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 #include <utility>
 
+#include "base/union_find.h"
 #include "kernel/boolean2d.h"
+#include "kernel/planar.h"
 #include "kernel/roof_solid.h"
 #include "lang/bldg/builder_detail.h"
 
@@ -75,14 +76,6 @@ kernel::Mesh roof_solid(const kernel::Polygon& footprint, RoofKind kind, double 
 kernel::Polygon clean(const kernel::Polygon& polygon) {
   kernel::RepairResult repaired = kernel::repair(polygon, 1e-6);
   return repaired.ok ? repaired.polygon : polygon;
-}
-
-int find(std::vector<int>& parent, int i) {
-  while (parent[static_cast<std::size_t>(i)] != i) {
-    i = parent[static_cast<std::size_t>(i)] =
-        parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-  }
-  return i;
 }
 
 // Parts "in spatial contact [...] at the ground level" (§4.6): they share at least kContact of
@@ -189,23 +182,21 @@ void build_roofs(const Context& c, std::vector<shape::Part>& parts) {
                   eave_z(p), parts);
   }
   // §4.6: groups of HipGlued parts in contact.
-  std::vector<int> parent(glued.size());
-  std::iota(parent.begin(), parent.end(), 0);
+  base::UnionFind groups(glued.size());
   for (std::size_t i = 0; i < glued.size(); ++i) {
     for (std::size_t j = i + 1; j < glued.size(); ++j) {
       const auto& a = plan_parts[static_cast<std::size_t>(glued[i])].outline;
       const auto& b = plan_parts[static_cast<std::size_t>(glued[j])].outline;
       if (in_contact(a, b)) {
-        parent[static_cast<std::size_t>(find(parent, static_cast<int>(i)))] =
-            find(parent, static_cast<int>(j));
+        groups.unite(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
       }
     }
   }
   for (std::size_t root = 0; root < glued.size(); ++root) {
-    if (find(parent, static_cast<int>(root)) != static_cast<int>(root)) continue;
+    if (groups.find(static_cast<std::uint32_t>(root)) != root) continue;
     std::vector<const PlanPart*> group;
     for (std::size_t i = 0; i < glued.size(); ++i) {
-      if (find(parent, static_cast<int>(i)) == static_cast<int>(root)) {
+      if (groups.find(static_cast<std::uint32_t>(i)) == root) {
         group.push_back(&plan_parts[static_cast<std::size_t>(glued[i])]);
       }
     }

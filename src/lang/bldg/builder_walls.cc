@@ -19,6 +19,7 @@
 #include <string>
 
 #include "kernel/opening_frame.h"
+#include "kernel/planar.h"
 #include "kernel/polygon.h"
 #include "kernel/wall.h"
 #include "lang/bldg/builder_detail.h"
@@ -161,18 +162,6 @@ bool reflex(Vec2 incoming, Vec2 outgoing) {
   return kernel::cross(incoming, outgoing) < -1e-9;
 }
 
-// kernel::bounds of a hole-free polygon with outer ring `ring`: Bounds2::add's folds, in place.
-kernel::Bounds2 rect_bounds(const kernel::Ring& ring) {
-  kernel::Bounds2 b;
-  for (const Vec2 p : ring) {
-    b.min.x = std::min(b.min.x, p.x);
-    b.min.y = std::min(b.min.y, p.y);
-    b.max.x = std::max(b.max.x, p.x);
-    b.max.y = std::max(b.max.y, p.y);
-  }
-  return b;
-}
-
 WallGeometry place(const Outline& outer, const PlanWall& wall, double outer_thickness) {
   WallGeometry g;
   const double length = kernel::length(wall.b - wall.a);
@@ -203,7 +192,7 @@ WallGeometry place(const Outline& outer, const PlanWall& wall, double outer_thic
   g.start = wall.a - g.dir * extend_start;
   g.length = length + extend_start + extend_end;
   g.footprint = g.rect(0, g.length, g.offset0, g.offset1);
-  g.box = rect_bounds(g.footprint.outer);
+  g.box = kernel::bounds(g.footprint.outer);
   return g;
 }
 
