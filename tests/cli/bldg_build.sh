@@ -88,6 +88,25 @@ node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
 validate_gltf "village: glTF validator" "$tmp/village.glb"
 validate_cityjson "village: CityJSON schema" "$tmp/village.city.json"
 
+# Lots: warnings name the lot (index and id, on stderr and in the report); on an L-shaped block
+# every room is reachable, doors keep 0.9 m and entrances 1.0 m.
+printf '{"type": "FeatureCollection", "features": [%s, %s]}' \
+  '{"type": "Feature", "id": "plain", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [12, 0], [12, 10], [0, 10], [0, 0]]]}}' \
+  '{"type": "Feature", "id": "corner", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[20, 0], [40, 0], [40, 10], [30, 10], [30, 20], [20, 20], [20, 0]]]}}' \
+  >"$tmp/l_lots.geojson"
+expect_exit 0 "L lot" "$insula" build "$examples/two_storey.bldg" --lot "$tmp/l_lots.geojson" \
+  -o "$tmp/l_lot.svg" --report "$tmp/l_lot.json"
+grep -q 'warning\[BLD60[01]\]: lot 1 (id "corner"): ' "$tmp/err.txt" || { fail "L lot: warnings name the lot"; cat "$tmp/err.txt"; }
+grep 'warning' "$tmp/err.txt" | grep -qv 'warning\[BLD60[01]\]: lot [01] (id "[a-z]*"): ' &&
+  { fail "L lot: a warning without its lot"; cat "$tmp/err.txt"; }
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+         const corner = r.buildings[1];
+         if (corner.id !== "corner" || corner.warnings.length === 0 ||
+             !r.warnings.some((w) => w.startsWith("lot 1 (id \"corner\"): ")) ||
+             r.unreachable_rooms.length !== 0 || !r.doors.every((d) => d.width === 0.9) ||
+             !r.entrances.every((d) => d.width === 1)) process.exit(1);' "$tmp/l_lot.json" ||
+  fail "L lot: report names the lot, all rooms reachable, doors 0.9 m, entrances 1.0 m"
+
 # Restriction rules change the model: thicker outer walls give less floor area.
 printf 'outer_wall_thickness = 0.6\ncolor.RoofSurface = "#336699"\n' >"$tmp/thick.rules"
 expect_exit 0 "rules" "$insula" build "$examples/two_storey.bldg" --rules "$tmp/thick.rules" --report "$tmp/thick.json" --quiet

@@ -55,6 +55,11 @@ bool load_rules(const BuildOptions& options, lang::bldg::Restrictions& rules) {
   return true;
 }
 
+// Names a lot in warnings and in the report: its position in the file and its id.
+std::string lot_name(const io::Footprint& lot) {
+  return "lot " + std::to_string(lot.feature_index) + " (id \"" + lot.id + "\")";
+}
+
 base::Diagnostic outline_error(const Building& building, const std::string& file,
                                const std::string& message) {
   const lang::bldg::Location at =
@@ -65,7 +70,7 @@ base::Diagnostic outline_error(const Building& building, const std::string& file
 // Fills building.outline from a GeoJSON feature when the grammar asks for one or --lot is given.
 // The scene takes the file's origin and CRS, so outputs land where the lot is.
 bool load_outline(const BuildOptions& options, const base::Source& source, Building& building,
-                  shape::Scene& scene) {
+                  shape::Scene& scene, std::string& lot) {
   if (building.outline_file.empty() && options.lot.empty()) return true;
   std::string path = options.lot;
   if (path.empty()) {
@@ -80,8 +85,8 @@ bool load_outline(const BuildOptions& options, const base::Source& source, Build
     return fail("cannot read the outline file '" + path + "': " + read_failure_reason(path));
   base::Result<io::FootprintSet> set = io::read_geojson(*text, path);
   if (!set.ok()) {
-    const base::Source lot(path, *text);
-    print_diagnostics(set.diagnostics(), lot, options.quiet);
+    const base::Source file(path, *text);
+    print_diagnostics(set.diagnostics(), file, options.quiet);
     return fail("the outline file '" + path + "' is not valid GeoJSON");
   }
   const io::Footprint* chosen = nullptr;
@@ -102,6 +107,7 @@ bool load_outline(const BuildOptions& options, const base::Source& source, Build
                 std::to_string(chosen->polygons.size()) + " polygons; a building needs one");
   }
   building.outline = chosen->polygons.front();
+  lot = lot_name(*chosen);
   scene.origin = set->origin;
   scene.crs = set->crs;
   return true;
@@ -205,9 +211,10 @@ struct Built {
   double build_seconds = 0;
 };
 
+// `lot` names the lot the building stands on in its warnings (empty: an inline outline).
 std::optional<Built> plan_and_build(const BuildOptions& options, const base::Source& source,
-                                    const Building& building,
-                                    const lang::bldg::Restrictions& rules) {
+                                    const Building& building, const lang::bldg::Restrictions& rules,
+                                    const std::string& lot) {
   Stopwatch stage;
   lang::bldg::FloorPlanOptions plan_options;
   plan_options.file = source.name();
@@ -220,15 +227,17 @@ std::optional<Built> plan_and_build(const BuildOptions& options, const base::Sou
   built.result = lang::bldg::build_building(building, plan.value(), rules);
   built.build_seconds = stage.seconds();
   // The floor planner's and the builder's warnings carry no code of their own; BLD600 and BLD601
-  // name the two kinds, so a village's hundreds of them are capped (warnings.h).
+  // name the two kinds, so a village's hundreds of them are capped (warnings.h). On a lot, each
+  // names the lot, so a user finds the building among thousands.
+  const std::string on = lot.empty() ? "" : lot + ": ";
   for (const auto& w : plan->warnings) {
     emit_warning("BLD600",
                  source.name() + ":" + std::to_string(w.where.line) + ":" +
-                     std::to_string(w.where.column) + ": warning[BLD600]: " + w.message,
+                     std::to_string(w.where.column) + ": warning[BLD600]: " + on + w.message,
                  options.quiet);
   }
   for (const auto& w : built.result.warnings) {
-    emit_warning("BLD601", source.name() + ": warning[BLD601]: " + w, options.quiet);
+    emit_warning("BLD601", source.name() + ": warning[BLD601]: " + on + w, options.quiet);
   }
   built.plan = std::move(plan.value());
   return built;
@@ -307,7 +316,8 @@ int build_lots(const BuildOptions& options, const Parsed& input, const Stopwatch
     Building building = grammar->building;
     building.outline = lot.polygons.front();
     building.symbol = lot.id;
-    std::optional<Built> built = plan_and_build(options, *grammar->source, building, rules);
+    std::optional<Built> built =
+        plan_and_build(options, *grammar->source, building, rules, lot_name(lot));
     if (!built) return kExitInput;
     nlohmann::json one = plan_report(built->plan, built->result);
     one["id"] = lot.id;
@@ -320,7 +330,7 @@ int build_lots(const BuildOptions& options, const Parsed& input, const Stopwatch
       }
     }
     for (const auto& w : one["warnings"])
-      report["warnings"].push_back(lot.id + ": " + w.get<std::string>());
+      report["warnings"].push_back(lot_name(lot) + ": " + w.get<std::string>());
     report["vertices"] = report.value("vertices", std::size_t{0}) + built->result.stats.vertices;
     report["triangles"] = report.value("triangles", std::size_t{0}) + built->result.stats.triangles;
     add_seconds(report, *built);
@@ -362,10 +372,13 @@ int build_bldg(const BuildOptions& options) {
     return build_lots(options, *input, total, rules, report);
   }
   shape::Scene scene;
-  if (!load_outline(options, *input->source, input->building, scene)) return kExitInput;
-  std::optional<Built> built = plan_and_build(options, *input->source, input->building, rules);
+  std::string lot;
+  if (!load_outline(options, *input->source, input->building, scene, lot)) return kExitInput;
+  std::optional<Built> built = plan_and_build(options, *input->source, input->building, rules, lot);
   if (!built) return kExitInput;
   report.update(plan_report(built->plan, built->result));
+  if (!lot.empty())
+    for (auto& w : report["warnings"]) w = lot + ": " + w.get<std::string>();
   add_seconds(report, *built);
   const kernel::Vec3 origin = scene.origin;
   const std::string crs = scene.crs;

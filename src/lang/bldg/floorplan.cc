@@ -144,6 +144,7 @@ void weld_storeys(FloorPlan& out) {
 }  // namespace
 
 double default_door_width(double layout_perimeter, const Restrictions& restrictions) {
+  if (restrictions.door_width_fraction <= 0) return restrictions.door_width;
   const double from_perimeter = restrictions.door_width_fraction * layout_perimeter;
   return std::max(restrictions.door_min_width, std::isfinite(from_perimeter) ? from_perimeter : 0);
 }

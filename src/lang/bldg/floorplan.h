@@ -197,7 +197,8 @@ struct FloorPlanOptions {
 base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrictions& restrictions,
                                         const FloorPlanOptions& options = {});
 
-// The default door width (§3.3) in a layout of perimeter `layout_perimeter` (m):
+// The default width of a door between rooms: Restrictions::door_width, or with
+// door_width_fraction > 0 the paper's rule (§3.3) in a layout of perimeter `layout_perimeter` (m):
 // door_width_fraction x the perimeter, at least door_min_width. The layout of a door is its
 // building part's cell, so a large building does not get barn doors everywhere; a door between
 // two parts takes the narrower of the two.

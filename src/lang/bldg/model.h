@@ -130,8 +130,14 @@ struct Restrictions {
   double initial_weight = 0.001;                   // Fig. 3: starting weight of every room
   std::array<double, 3> growth = {1.5, 2.0, 2.5};  // per SizeLabel (small, medium, big)
   double step = 0.01;                              // Eq. 5: rectangle scaling step
-  double door_width_fraction = 0.02;               // door width / layout perimeter
-  double door_min_width = 0.9;                     // meters
+  // Default widths of doors between rooms and of entrance doors (m), unless a transition states
+  // one. door_width_fraction > 0 brings back the paper's rule (§3.3): a default door is that
+  // fraction of its layout's perimeter, at least door_min_width (entrances at least
+  // entrance_width).
+  double door_width = 0.9;
+  double entrance_width = 1.0;
+  double door_width_fraction = 0;
+  double door_min_width = 0.9;
   double door_height = 2.1;
   double borrow_limit = 0.25;  // max fraction of a room's weight lent away
   double outer_wall_thickness = 0.3;

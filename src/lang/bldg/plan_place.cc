@@ -20,6 +20,13 @@ std::string meters(double v) {
   return buf;
 }
 
+// Default width of an entrance door into part `part` (model.h, Restrictions::entrance_width).
+double entrance_width(const Work& work, int part) {
+  const Restrictions& r = *work.restrictions;
+  return r.door_width_fraction > 0 ? std::max(r.entrance_width, work.door_widths[part])
+                                   : r.entrance_width;
+}
+
 struct EntranceRequest {
   int room = -1;  // work room index
   std::string symbol;
@@ -82,7 +89,7 @@ std::vector<EntranceRequest> entrance_requests(Work& work) {
   for (std::size_t r = 0; r < work.rooms.size(); ++r) {
     const WorkRoom& room = work.rooms[r];
     if (room.division == nullptr || !room.division->room->entrance) continue;
-    out.push_back({static_cast<int>(r), "", room.division->where, work.door_widths[room.part]});
+    out.push_back({static_cast<int>(r), "", room.division->where, entrance_width(work, room.part)});
   }
   for (const Transition& t : work.building->transitions) {
     if (t.kind != TransitionKind::kEntrance) continue;
@@ -91,7 +98,7 @@ std::vector<EntranceRequest> entrance_requests(Work& work) {
       warn(work, "entrance '" + t.symbol + "' names a room that does not exist; ignored", t.where);
       continue;
     }
-    const double width = t.width > 0 ? t.width : work.door_widths[work.rooms[rooms[0]].part];
+    const double width = t.width > 0 ? t.width : entrance_width(work, work.rooms[rooms[0]].part);
     auto same = std::find_if(out.begin(), out.end(), [&](const EntranceRequest& e) {
       return e.room == rooms[0] && e.symbol.empty();
     });
@@ -177,7 +184,7 @@ void place_entrances(Work& work, FloorPlan& plan) {
   for (std::size_t i = 0; i < ground.rooms.size(); ++i) {
     for (const EdgePiece& piece : open_air_pieces(ground, static_cast<int>(i), plan.footprint)) {
       if (piece.length() > best_len + 1e-9 &&
-          entrance_for(plan, static_cast<int>(i), work.door_widths[ground.rooms[i].part_index],
+          entrance_for(plan, static_cast<int>(i), entrance_width(work, ground.rooms[i].part_index),
                        work.clearance)) {
         best_len = piece.length();
         best = static_cast<int>(i);
@@ -188,8 +195,8 @@ void place_entrances(Work& work, FloorPlan& plan) {
     warn(work, "the building has no entrance and no room has an open-air wall long enough for one");
     return;
   }
-  PlanDoor door =
-      *entrance_for(plan, best, work.door_widths[ground.rooms[best].part_index], work.clearance);
+  PlanDoor door = *entrance_for(plan, best, entrance_width(work, ground.rooms[best].part_index),
+                                work.clearance);
   door.height = work.restrictions->door_height;
   door.added = true;
   plan.storeys[0].entrances.push_back(door);

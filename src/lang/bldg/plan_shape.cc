@@ -8,7 +8,10 @@
 // (a chamfered building corner); the space a removal adds (a reflex vertex) is taken from the rooms
 // it covers, never from outside the storey. A cut stops short of any door or entrance on the two
 // walls (by the door clearance), and is rejected when that leaves less than kMinCut of wall.
+// Walls are removed first by sliding an edge (no new wall direction); the paper's vertex deletion
+// draws a wall across a corner, so it is left out on an outline whose edges all run along x or y.
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "kernel/boolean2d.h"
@@ -49,9 +52,8 @@ std::optional<Polygon> single(const kernel::BooleanResult& r, std::size_t holes 
   return p;
 }
 
-// Gives region `t` (cut off room `room`) to the neighbour sharing most boundary with it, or to
-// the dead zones. Returns the rooms changed, empty when it could not.
-std::vector<int> give_away(PlanStorey& storey, int room, const Polygon& t, const std::string& why) {
+// The room other than `room` sharing the longest boundary with region `t`; -1 when none.
+int taker_of(const PlanStorey& storey, int room, const Polygon& t) {
   int best = -1;
   double best_len = kLineTolerance;
   for (std::size_t j = 0; j < storey.rooms.size(); ++j) {
@@ -62,6 +64,13 @@ std::vector<int> give_away(PlanStorey& storey, int room, const Polygon& t, const
       best = static_cast<int>(j);
     }
   }
+  return best;
+}
+
+// Gives region `t` (cut off room `room`) to the neighbour sharing most boundary with it, or to
+// the dead zones. Returns the rooms changed, empty when it could not.
+std::vector<int> give_away(PlanStorey& storey, int room, const Polygon& t, const std::string& why) {
+  const int best = taker_of(storey, room, t);
   if (best < 0) {
     storey.dead_zones.push_back({t, why});
     return {room};
@@ -159,7 +168,87 @@ bool add_wall(PlanStorey& storey, int room, double clearance) {
   return false;
 }
 
-bool remove_wall(PlanStorey& storey, int room, double clearance) {
+// Every edge of the outline runs along x or y (to 1e-9 of its length).
+bool axis_parallel(const Polygon& outline) {
+  const auto ring_ok = [](const kernel::Ring& ring) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Vec2 d = ring[(i + 1) % ring.size()] - ring[i];
+      const double eps = 1e-9 * kernel::length(d);
+      if (std::abs(d.x) > eps && std::abs(d.y) > eps) return false;
+    }
+    return true;
+  };
+  if (!ring_ok(outline.outer)) return false;
+  for (const kernel::Ring& hole : outline.holes)
+    if (!ring_ok(hole)) return false;
+  return true;
+}
+
+// Removes two walls without a new wall direction: an edge whose neighbours run the same way (the
+// end of a wing, or the bottom of a notch) slides along them until the shorter one vanishes. A
+// wing's end gives the strip it sweeps to the neighbour sharing most boundary with it (never to a
+// dead zone: the space stays in a room); a notch's bottom takes the strip from the rooms it
+// covers. Smallest strip first.
+bool slide_wall(PlanStorey& storey, int room, double clearance) {
+  const kernel::Ring ring = storey.rooms[room].cell.outer;
+  const std::size_t n = ring.size();
+  if (n <= 4) return false;
+  struct Slide {
+    std::size_t k;  // the edge ring[k] -> ring[k + 1]
+    Vec2 shift;
+    double area;
+  };
+  std::vector<Slide> slides;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2 p = ring[(k + n - 1) % n];
+    const Vec2 a = ring[k];
+    const Vec2 b = ring[(k + 1) % n];
+    const Vec2 c = ring[(k + 2) % n];
+    const Vec2 u = kernel::normalized(p - a);
+    const Vec2 w = kernel::normalized(c - b);
+    if (std::abs(kernel::cross(u, w)) > 1e-9 || kernel::dot(u, w) <= 0) continue;
+    const Vec2 shift = u * std::min(kernel::length(p - a), kernel::length(c - b));
+    slides.push_back({k, shift, std::abs(kernel::cross(b - a, shift))});
+  }
+  std::stable_sort(slides.begin(), slides.end(),
+                   [](const Slide& x, const Slide& y) { return x.area < y.area; });
+  for (const Slide& s : slides) {
+    const Vec2 a = ring[s.k];
+    const Vec2 b = ring[(s.k + 1) % n];
+    if (free_from(storey, room, a, b) < kernel::length(b - a)) continue;  // the edge holds a door
+    Polygon t{{a, b, b + s.shift, a + s.shift}, {}};
+    kernel::normalize(t);
+    if (kernel::area(t) < 1e-9) continue;
+    const Vec2 p = ring[(s.k + n - 1) % n];
+    const bool wing = kernel::cross(a - p, b - a) > 0;  // convex ends: the strip is the room's
+    PlanStorey trial = storey;
+    Polygon& cell = trial.rooms[room].cell;
+    std::vector<int> changed;
+    if (wing) {
+      if (!covers({cell}, t)) continue;
+      const int taker = taker_of(trial, room, t);
+      std::optional<Polygon> cut = single(kernel::subtract({cell}, {t}), cell.holes.size());
+      if (taker < 0 || !cut || kernel::area(*cut) < kMinRoomArea) continue;
+      cell = *cut;
+      changed = give_away(trial, room, t, "");
+    } else {
+      std::optional<std::vector<int>> taken = take_from(trial, room, t);
+      if (!taken) continue;
+      std::optional<Polygon> grown = single(kernel::unite({cell}, {t}), cell.holes.size());
+      if (!grown) continue;
+      cell = *grown;
+      changed = *taken;
+    }
+    if (wall_count(cell) >= static_cast<int>(n)) continue;
+    if (commit_if_intact(storey, trial, changed, clearance)) return true;
+  }
+  return false;
+}
+
+bool remove_wall(PlanStorey& storey, int room, double clearance, bool axis_only) {
+  if (slide_wall(storey, room, clearance)) return true;
+  // The paper's vertex deletion draws a wall across the corner: not on an axis-parallel outline.
+  if (axis_only) return false;
   const kernel::Ring ring = storey.rooms[room].cell.outer;
   const std::size_t n = ring.size();
   if (n <= 3) return false;
@@ -203,6 +292,7 @@ bool remove_wall(PlanStorey& storey, int room, double clearance) {
 }  // namespace
 
 void adapt_room_shapes(Work& work, FloorPlan& plan) {
+  const bool axis_only = axis_parallel(plan.outline);
   for (PlanStorey& storey : plan.storeys) {
     for (int pass = 0; pass < 2; ++pass) {
       for (std::size_t i = 0; i < storey.rooms.size(); ++i) {
@@ -211,8 +301,9 @@ void adapt_room_shapes(Work& work, FloorPlan& plan) {
         for (int guard = 0; guard < 16; ++guard) {
           const int have = wall_count(storey.rooms[i].cell);
           if (have == asked) break;
-          const bool ok = have < asked ? add_wall(storey, static_cast<int>(i), work.clearance)
-                                       : remove_wall(storey, static_cast<int>(i), work.clearance);
+          const bool ok = have < asked
+                              ? add_wall(storey, static_cast<int>(i), work.clearance)
+                              : remove_wall(storey, static_cast<int>(i), work.clearance, axis_only);
           if (!ok) break;
         }
       }

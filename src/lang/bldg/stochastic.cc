@@ -44,8 +44,8 @@ double growth(SizeLabel size) {
 constexpr double kAreaPerWeight = 8.0;
 // Fraction of the outline left to rooms once walls are raised.
 constexpr double kUsableFraction = 0.85;
-// Generated doors state their width (door(a, b, 1)): the restriction rules' default is a
-// fraction of the layout perimeter (§3.3), which gives 2 m doors in a 35 m building.
+// Generated doors state their width (door(a, b, 1)), so the grammar keeps it whatever rules it is
+// built with (a door_width_fraction rule gives 2 m doors in a 35 m building).
 constexpr double kDoorWidth = 1.0;
 constexpr double kEntranceWidth = 1.2;
 // A door needs this much shared wall in the nominal layout: its width, the floor-plan engine's

@@ -2,6 +2,7 @@
 // build_building): every part closed and outward, no builder warning, one room part per room of
 // the plan, and a golden summary per example (tests/data/bldg/examples/<stem>.txt: counts, room
 // clear-floor areas, parts; regenerate with INSULA_UPDATE_GOLDEN=1).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -85,6 +86,64 @@ TEST(BuilderExamples, BuildClosedAndMatchTheirGoldens) {
       EXPECT_GT(kernel::volume(p.mesh), 0) << p.name;
     }
     expect_golden(file.stem().string(), summary(r));
+  }
+}
+
+// An L-shaped lot (20 x 20 m less its north-east quarter, 300 m²) under every example: walls stay
+// on the lot's axes, the rooms share the whole storey (no dead zone), their clear floors add up to
+// the storey less its walls, every room is reachable, and doors keep the absolute default widths.
+TEST(BuilderExamples, OnAnLShapedLot) {
+  const kernel::Polygon lot{{{0, 0}, {20, 0}, {20, 10}, {10, 10}, {10, 20}, {0, 20}}, {}};
+  const Restrictions rules;
+  for (const std::filesystem::path& file : testing::files_in(examples_dir(), ".bldg")) {
+    SCOPED_TRACE(file.string());
+    const base::Source source(file.string(), testing::read_file(file));
+    base::Result<Building> building = parse_building(source);
+    ASSERT_TRUE(building.ok());
+    building.value().outline = lot;
+    const base::Result<FloorPlan> plan = make_floor_plan(building.value(), rules);
+    ASSERT_TRUE(plan.ok());
+    const BuildResult built = build_building(building.value(), plan.value(), rules);
+    EXPECT_TRUE(built.warnings.empty()) << built.warnings.front();
+    EXPECT_TRUE(plan->unreachable_rooms.empty()) << plan->unreachable_rooms.front().reason;
+    for (const PlanStorey& s : plan->storeys) {
+      SCOPED_TRACE("storey " + std::to_string(s.level));
+      EXPECT_TRUE(s.dead_zones.empty()) << s.dead_zones.front().reason;
+      double storey_area = 0;
+      for (const PlanPart& part : plan->parts)
+        if (part.storeys > s.level) storey_area += kernel::area(part.outline);
+      double rooms_area = 0;
+      for (const PlanRoom& room : s.rooms) {
+        rooms_area += kernel::area(room.cell);
+        const std::size_t n = room.cell.outer.size();
+        for (std::size_t i = 0; i < n; ++i) {
+          const kernel::Vec2 d = room.cell.outer[(i + 1) % n] - room.cell.outer[i];
+          EXPECT_TRUE(std::abs(d.x) < 1e-6 || std::abs(d.y) < 1e-6)
+              << room.symbol << " has a wall across the axes at (" << room.cell.outer[i].x << ", "
+              << room.cell.outer[i].y << ")";
+        }
+      }
+      EXPECT_NEAR(rooms_area, storey_area, 1e-6 * storey_area);
+      // Clear floors: each cell less the outer walls inside it and half of each inner wall; the
+      // corners where walls overlap or stop short stay within 2 m² on the storey.
+      double walls_area = 0;
+      for (const PlanWall& w : s.walls) walls_area += kernel::length(w.b - w.a) * w.thickness;
+      double clear = 0;
+      for (const shape::Part& p : built.building.parts) {
+        if (p.kind != shape::PartKind::kRoom) continue;
+        if (std::get<double>(p.attributes.at("storey")) != s.level) continue;
+        clear += std::get<double>(p.attributes.at("area"));
+      }
+      EXPECT_NEAR(clear, storey_area - walls_area, 2.0);
+      // A door is as wide as its transition says, else 0.9 m; an entrance 1.0 m.
+      const auto stated = [&](const PlanDoor& d, double otherwise) {
+        for (const Transition& t : building->transitions)
+          if (!d.symbol.empty() && t.symbol == d.symbol && t.width > 0) return t.width;
+        return otherwise;
+      };
+      for (const PlanDoor& d : s.doors) EXPECT_EQ(d.width, stated(d, 0.9)) << d.symbol;
+      for (const PlanDoor& d : s.entrances) EXPECT_EQ(d.width, stated(d, 1.0)) << d.symbol;
+    }
   }
 }
 

@@ -26,7 +26,9 @@ TEST(BldgRestrictions, EmptyFileGivesTheDocumentedDefaults) {
   EXPECT_DOUBLE_EQ(r->growth[1], 2.0);
   EXPECT_DOUBLE_EQ(r->growth[2], 2.5);
   EXPECT_DOUBLE_EQ(r->step, 0.01);
-  EXPECT_DOUBLE_EQ(r->door_width_fraction, 0.02);
+  EXPECT_DOUBLE_EQ(r->door_width, 0.9);
+  EXPECT_DOUBLE_EQ(r->entrance_width, 1.0);
+  EXPECT_DOUBLE_EQ(r->door_width_fraction, 0);
   EXPECT_DOUBLE_EQ(r->door_min_width, 0.9);
   EXPECT_DOUBLE_EQ(r->storey_height, 3.0);
   EXPECT_TRUE(r->colors.empty());
