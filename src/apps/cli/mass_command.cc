@@ -12,6 +12,7 @@
 
 #include "apps/cli/build_command.h"
 #include "apps/cli/exit_codes.h"
+#include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/mass_report.h"
 #include "apps/cli/stopwatch.h"
@@ -204,7 +205,9 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
   mass->add_flag("-q,--quiet", options.quiet, "no progress or warnings on stderr");
   mass->add_flag(
       "--keep-going", options.keep_going,
-      "leave out footprints that give no closed building (with a warning) instead of failing");
+      "leave out invalid footprints and footprints that give no closed building (each with a "
+      "warning) instead of failing");
+  add_crs_option(*mass, options.crs);
   add_view_options(*mass, options.output);
   mass->callback([&options, roof, pitch]() {
     options.roof_given = roof->count() > 0;
@@ -233,10 +236,14 @@ int run_mass(const MassOptions& options) {
     return kExitInput;
   }
   const base::Source source(options.input, *text);
-  base::Result<io::FootprintSet> set = io::read_geojson(source.text(), options.input);
+  base::Result<io::FootprintSet> set = io::read_geojson(
+      source.text(), options.input, geojson_options(options.crs, options.keep_going));
   if (!options.quiet || !set.ok()) print_diagnostics(set.diagnostics(), source);
   if (!set.ok()) return kExitInput;
   report.stage("read", read_clock.seconds());
+  report.invalid = set->skipped_invalid;
+  report.crs = set->crs;
+  report.source_crs = set->source_crs;
 
   Stopwatch build_clock;
   std::vector<std::string> warnings;

@@ -30,6 +30,9 @@ std::string MassReport::json() const {
   out["watertight"] = watertight;
   out["warnings"] = warnings;
   out["failed"] = failed;
+  out["invalid"] = invalid;
+  out["crs"] = crs.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(crs);
+  if (!source_crs.empty()) out["reprojected_from"] = source_crs;
   out["threads"] = threads;
   out["seconds"] = seconds;
   return out.dump(2) + "\n";
