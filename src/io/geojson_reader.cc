@@ -1,10 +1,14 @@
-// GeoJSON footprint reader (RFC 7946 structure, GeoJSON-2008 "crs" member, projected meters).
-// Stages: byte pre-scan (empty input, nesting depth) -> nlohmann::json DOM parse -> structure walk
-// collecting world-coordinate rings per feature -> origin choice and shift -> kernel::repair() ->
-// id de-duplication. nlohmann::json keeps no positions, so diagnostics find theirs again with a
-// small scanner over the (by then known valid) text: feature starts are listed once, deeper paths
-// are scanned from the feature start only when a diagnostic needs them.
+// GeoJSON footprint reader (RFC 7946 structure, GeoJSON-2008 "crs" member). Stages: byte
+// pre-scan (empty input, nesting depth) -> nlohmann::json DOM parse -> structure walk collecting
+// world-coordinate rings per feature -> CRS choice and reprojection (io/crs.h) -> origin choice
+// and shift -> kernel::repair() and the simplicity builders need -> id de-duplication.
+// nlohmann::json keeps no positions, so diagnostics find theirs again with a small scanner over the
+// (by then known valid) text: feature starts are listed once, deeper paths are scanned from the
+// feature start only when a diagnostic needs them.
 #include "io/geojson_reader.h"
+
+#include "io/crs.h"
+#include "kernel/skeleton.h"
 
 #include <algorithm>
 #include <cmath>
@@ -266,12 +270,6 @@ bool is_geojson_geometry(std::string_view type) {
          type == "MultiPolygon";
 }
 
-// EPSG codes of common geographic (degree) CRSs.
-bool is_geographic_epsg(int code) {
-  return code == 4326 || code == 4258 || code == 4269 || code == 4267 || code == 4979 ||
-         code == 4283 || code == 4617 || code == 4612 || code == 4167 || code == 4490;
-}
-
 // The EPSG code named by a CRS string: "EPSG:25832", "urn:ogc:def:crs:EPSG::25832",
 // "http://www.opengis.net/def/crs/EPSG/0/25832"; 0 when none.
 int epsg_code(std::string_view name) {
@@ -299,6 +297,46 @@ std::string ring_label(const Where& where) {
   if (where.polygon != kNone) out += " " + std::to_string(where.polygon);
   if (where.ring != kNone) out += " ring " + std::to_string(where.ring);
   return out;
+}
+
+// Where two rings of a polygon meet, or one ring meets itself, other than at the shared vertex of
+// consecutive edges. O(n^2), only run to explain a polygon kernel::is_simple_polygon rejected.
+struct Touch {
+  std::size_t ring_a = 0;  // 0: the outer ring, k: hole k
+  std::size_t ring_b = 0;
+  kernel::Vec2 point;
+};
+
+bool on_segment(kernel::Vec2 a, kernel::Vec2 b, kernel::Vec2 p) {
+  return kernel::cross(b - a, p - a) == 0 && std::min(a.x, b.x) <= p.x &&
+         p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+}
+
+std::optional<Touch> find_touch(const kernel::Polygon& polygon) {
+  std::vector<const kernel::Ring*> rings{&polygon.outer};
+  for (const kernel::Ring& hole : polygon.holes) rings.push_back(&hole);
+  for (std::size_t ra = 0; ra < rings.size(); ++ra) {
+    const kernel::Ring& a = *rings[ra];
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      const kernel::Vec2 p = a[i];
+      const kernel::Vec2 q = a[(i + 1) % a.size()];
+      for (std::size_t rb = ra; rb < rings.size(); ++rb) {
+        const kernel::Ring& b = *rings[rb];
+        for (std::size_t j = rb == ra ? i + 1 : 0; j < b.size(); ++j) {
+          if (rb == ra && (j == i + 1 || (i == 0 && j + 1 == b.size()))) continue;
+          const kernel::Vec2 u = b[j];
+          const kernel::Vec2 v = b[(j + 1) % b.size()];
+          for (const kernel::Vec2 point : {u, v}) {
+            if (on_segment(p, q, point)) return Touch{ra, rb, point};
+          }
+          for (const kernel::Vec2 point : {p, q}) {
+            if (on_segment(u, v, point)) return Touch{ra, rb, point};
+          }
+        }
+      }
+    }
+  }
+  return std::nullopt;
 }
 
 struct FeatureState {
@@ -352,11 +390,17 @@ class Reader {
                                         const Where& where);
   std::optional<kernel::Vec2> read_position(FeatureState& feature, const json& position,
                                             Where where);
-  void check_units();
+  bool looks_like_degrees() const;
+  kernel::Bounds2 valid_bounds() const;
+  void resolve_crs();
+  void to_geographic_range();
+  void reproject_all(const std::string& from, const std::string& to);
+  void reject_touching_rings(FeatureState& feature, std::size_t p, const kernel::Polygon& repaired);
   void choose_origin();
   void repair(FeatureState& feature, Footprint& footprint);
   void assign_ids();
   base::Result<FootprintSet> finish();
+  std::vector<std::string> local_note() const;
 
   std::string_view text_;
   const std::string& name_;
@@ -369,6 +413,9 @@ class Reader {
   std::size_t suppressed_warnings_ = 0;
   bool stopped_ = false;
   bool warned_extra_dimensions_ = false;
+  bool hinted_skip_ = false;
+  std::string declared_crs_;  // from the "crs" member: "EPSG:N" or "OGC:CRS84"
+  std::size_t crs_offset_ = kNone;
   std::size_t root_offset_ = 0;
   std::vector<FeatureState> features_;
   FootprintSet result_;
@@ -406,9 +453,16 @@ void Reader::feature_issue(FeatureState& feature, bool is_error, const char* cod
                            std::vector<std::string> notes) {
   const std::size_t offset =
       feature.offset == kNone ? kNone : locator_.follow(feature.offset, path);
+  const std::string flag = options_.skip_invalid_flag.empty() ? "GeoJsonOptions::skip_invalid"
+                                                              : options_.skip_invalid_flag;
   if (is_error) {
-    if (options_.skip_invalid && !feature.failed) {
-      notes.push_back("feature skipped (GeoJsonOptions::skip_invalid)");
+    // Skipping: one warning per feature, its first error; the rest would repeat "skipped".
+    if (options_.skip_invalid && feature.failed) return;
+    if (options_.skip_invalid) {
+      notes.push_back("feature skipped (" + flag + ")");
+    } else if (!hinted_skip_ && !options_.skip_invalid_flag.empty()) {
+      notes.push_back(flag + " skips invalid features, each with a warning");
+      hinted_skip_ = true;
     }
     feature.failed = true;
   }
@@ -536,15 +590,11 @@ void Reader::read_crs(const json& doc) {
   } else if (code != nullptr && code->is_number_integer()) {
     epsg = code->get<int>();
   }
+  crs_offset_ = at;
   if (epsg > 0) {
-    result_.crs = "EPSG:" + std::to_string(epsg);
-    if (is_geographic_epsg(epsg)) {
-      report(base::Severity::kWarning, "GEO007",
-             "crs " + result_.crs + " is geographic (degrees); expected projected meters", at);
-    }
+    declared_crs_ = "EPSG:" + std::to_string(epsg);
   } else if (text.find("CRS84") != std::string::npos) {
-    report(base::Severity::kWarning, "GEO007",
-           "crs " + quote_text(text) + " is geographic (degrees); expected projected meters", at);
+    declared_crs_ = "OGC:CRS84";
   } else {
     report(base::Severity::kWarning, "GEO007",
            "crs " + quote_text(text) + " names no EPSG code; ignored", at);
@@ -796,11 +846,12 @@ std::optional<kernel::Vec2> Reader::read_position(FeatureState& feature, const j
   return kernel::Vec2{xyz[0], xyz[1]};
 }
 
-// Stage 4: units. Projected meters are expected; degree data gives itself away by fitting in
-// +-180 x +-90 while every footprint spans less than 0.05 units (5 cm if it were meters, a few
-// kilometres in degrees): no real building is 5 cm wide.
-void Reader::check_units() {
-  bool in_range = false;
+// Stage 4: CRS (docs/geojson.md, "Coordinates, units and CRS"). Longitude/latitude without a
+// "crs" member gives itself away by fitting in +-180 x +-90 while every footprint spans less than
+// 0.05 units (5 cm if it were meters, a few kilometres in degrees): no real building is 5 cm wide,
+// and a hand-made file in meters near (0, 0) stays in meters.
+bool Reader::looks_like_degrees() const {
+  bool any = false;
   for (const FeatureState& feature : features_) {
     if (feature.failed) continue;
     for (const kernel::Polygon& polygon : feature.polygons) {
@@ -808,24 +859,141 @@ void Reader::check_units() {
       const bool degrees = std::abs(box.min.x) <= 180 && std::abs(box.max.x) <= 180 &&
                            std::abs(box.min.y) <= 90 && std::abs(box.max.y) <= 90 &&
                            box.max.x - box.min.x < 0.05 && box.max.y - box.min.y < 0.05;
-      if (!degrees) return;
-      in_range = true;
+      if (!degrees) return false;
+      any = true;
     }
   }
-  if (!in_range) return;
-  const FeatureState& first = features_.front();
-  report(
-      base::Severity::kWarning, "GEO008",
-      "coordinates look like longitude/latitude degrees; expected projected meters (no "
-      "reprojection is done)",
-      first.offset == kNone ? kNone : locator_.follow(first.offset, geometry_path(first, Where{})));
+  return any;
 }
 
-// Stage 5: origin. The bounding-box centre rounded down to whole meters: local coordinates stay
-// within half the data's extent (which float32 outputs such as glTF need), and world - origin is
-// exact whenever origin and world lie within a factor of 2 of each other (Sterbenz), which holds
-// for any dataset smaller than its distance from (0, 0): UTM tiles, national grids.
-void Reader::choose_origin() {
+void Reader::resolve_crs() {
+  std::string error;
+  if (!options_.crs.empty()) {
+    if (const std::string why = buildable_crs(options_.crs); !why.empty()) {
+      report(base::Severity::kError, "GEO007", "GeoJsonOptions::crs: " + why, kNone);
+      return;
+    }
+  }
+  std::string source = declared_crs_;
+  if (source.empty()) {
+    if (!looks_like_degrees()) {
+      result_.crs = options_.crs;  // meters in no named CRS: in the caller's, if it names one
+      return;
+    }
+    source = "OGC:CRS84";  // RFC 7946: GeoJSON without a "crs" member is WGS 84 lon/lat
+  }
+  const std::optional<CrsInfo> info = describe_crs(source, error);
+  if (!info) {
+    if (options_.crs.empty()) {
+      report(base::Severity::kWarning, "GEO007",
+             "crs " + source + ": " + error + "; coordinates taken as meters", crs_offset_);
+      result_.crs = source;
+    } else {
+      report(base::Severity::kError, "GEO007",
+             "crs " + source + ": " + error + "; cannot reproject to " + options_.crs, crs_offset_);
+    }
+    return;
+  }
+  if (info->geographic) to_geographic_range();
+  if (errors_ > 0) return;
+  std::string target = options_.crs;
+  if (target.empty() && !info->geographic) {
+    if (!info->metric) {
+      report(base::Severity::kError, "GEO007",
+             "crs " + info->name + " (" + info->title + ") measures in " + info->unit +
+                 "; footprints are built in meters: name a projected CRS in meters to "
+                 "reproject to (--crs EPSG:N)",
+             crs_offset_);
+      return;
+    }
+    result_.crs = info->name;
+    return;
+  }
+  if (target.empty()) {
+    const kernel::Bounds2 box = valid_bounds();
+    if (box.empty()) return;
+    target = utm_crs(0.5 * (box.min.x + box.max.x), 0.5 * (box.min.y + box.max.y));
+  }
+  const std::optional<CrsInfo> to = describe_crs(target, error);
+  if (to && to->name == info->name) {
+    result_.crs = info->name;
+    return;
+  }
+  reproject_all(info->name, to ? to->name : target);
+}
+
+// Degrees in a geographic CRS: a coordinate beyond +-180 x +-90 says the file's "crs" member is
+// wrong (often meters under an EPSG:4326 label); guessing would misplace the building.
+void Reader::to_geographic_range() {
+  for (FeatureState& feature : features_) {
+    if (feature.failed) continue;
+    for (std::size_t p = 0; p < feature.polygons.size() && !feature.failed; ++p) {
+      const kernel::Polygon& polygon = feature.polygons[p];
+      for (std::size_t r = 0; r <= polygon.holes.size() && !feature.failed; ++r) {
+        const kernel::Ring& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          if (std::abs(ring[i].x) <= 180 && std::abs(ring[i].y) <= 90) continue;
+          Where where = feature.polygon_where[p];
+          where.ring = r;
+          where.position = i;
+          feature_issue(feature, true, "GEO008",
+                        ring_label(where) + " position " + std::to_string(i) + " (" +
+                            number_text(ring[i].x) + ", " + number_text(ring[i].y) +
+                            ") is not a longitude/latitude, but crs " + declared_crs_ +
+                            " is geographic (degrees)",
+                        geometry_path(feature, where));
+          break;
+        }
+      }
+    }
+  }
+}
+
+void Reader::reproject_all(const std::string& from, const std::string& to) {
+  std::vector<kernel::Vec2> points;
+  for (const FeatureState& feature : features_) {
+    if (feature.failed) continue;
+    for (const kernel::Polygon& polygon : feature.polygons) {
+      points.insert(points.end(), polygon.outer.begin(), polygon.outer.end());
+      for (const kernel::Ring& hole : polygon.holes) {
+        points.insert(points.end(), hole.begin(), hole.end());
+      }
+    }
+  }
+  if (const std::string error = io::reproject(from, to, points); !error.empty()) {
+    report(base::Severity::kError, "GEO007", error, crs_offset_);
+    return;
+  }
+  std::size_t next = 0;
+  for (FeatureState& feature : features_) {
+    if (feature.failed) continue;
+    for (std::size_t p = 0; p < feature.polygons.size(); ++p) {
+      kernel::Polygon& polygon = feature.polygons[p];
+      for (std::size_t r = 0; r <= polygon.holes.size(); ++r) {
+        kernel::Ring& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          const kernel::Vec2 q = points[next++];
+          if (std::isfinite(q.x) && std::isfinite(q.y)) {
+            ring[i] = q;
+          } else if (!feature.failed) {
+            Where where = feature.polygon_where[p];
+            where.ring = r;
+            where.position = i;
+            feature_issue(feature, true, "GEO008",
+                          ring_label(where) + " position " + std::to_string(i) +
+                              " could not be reprojected from " + from + " to " + to,
+                          geometry_path(feature, where));
+          }
+        }
+      }
+    }
+  }
+  result_.crs = to;
+  result_.source_crs = from;
+}
+
+// The bounding box of the features still valid, in world coordinates.
+kernel::Bounds2 Reader::valid_bounds() const {
   kernel::Bounds2 box;
   for (const FeatureState& feature : features_) {
     if (feature.failed) continue;
@@ -835,6 +1003,15 @@ void Reader::choose_origin() {
       box.add(b.max);
     }
   }
+  return box;
+}
+
+// Stage 5: origin. The bounding-box centre rounded down to whole meters: local coordinates stay
+// within half the data's extent (which float32 outputs such as glTF need), and world - origin is
+// exact whenever origin and world lie within a factor of 2 of each other (Sterbenz), which holds
+// for any dataset smaller than its distance from (0, 0): UTM tiles, national grids.
+void Reader::choose_origin() {
+  const kernel::Bounds2 box = valid_bounds();
   if (options_.origin) {
     result_.origin = {options_.origin->x, options_.origin->y, 0};
   } else if (!box.empty() &&
@@ -915,16 +1092,68 @@ void Reader::repair(FeatureState& feature, Footprint& footprint) {
       Where where = feature.polygon_where[p];
       where.ring = issue.ring >= 0 ? static_cast<std::size_t>(issue.ring) : kNone;
       where.position = issue.vertex >= 0 ? static_cast<std::size_t>(issue.vertex) : kNone;
-      std::vector<std::string> notes;
-      if (result_.origin.x != 0 || result_.origin.y != 0) {
-        notes.push_back("coordinates in this message are local: world = local + (" +
-                        number_text(result_.origin.x) + ", " + number_text(result_.origin.y) + ")");
-      }
       feature_issue(feature, !issue.repaired, code, message, geometry_path(feature, where),
-                    std::move(notes));
+                    local_note());
     }
-    if (repaired.ok) footprint.polygons.push_back(std::move(repaired.polygon));
+    if (!repaired.ok) continue;
+    if (!kernel::is_simple_polygon(repaired.polygon)) {
+      reject_touching_rings(feature, p, repaired.polygon);
+      continue;
+    }
+    const kernel::Ring& written = polygon.outer;
+    const auto second = std::find_if(written.begin(), written.end(),
+                                     [&](kernel::Vec2 v) { return v != written[0]; });
+    footprint.first_edges.push_back({written[0], second == written.end() ? written[0] : *second});
+    footprint.outer_clockwise.push_back(kernel::signed_area(written) < 0);
+    footprint.polygons.push_back(std::move(repaired.polygon));
   }
+}
+
+std::vector<std::string> Reader::local_note() const {
+  if (result_.origin.x == 0 && result_.origin.y == 0) return {};
+  return {"coordinates in this message are local: world = local + (" +
+          number_text(result_.origin.x) + ", " + number_text(result_.origin.y) + ")"};
+}
+
+// kernel::repair() accepts rings that touch at one point (valid in OGC simple features), but walls
+// and roofs cannot be built on them (kernel::is_simple_polygon): rejected here, so that `check`
+// and every builder agree, with where they touch.
+void Reader::reject_touching_rings(FeatureState& feature, std::size_t p,
+                                   const kernel::Polygon& repaired) {
+  const Where polygon_where = feature.polygon_where[p];
+  std::string message = ring_label(Where{polygon_where.polygon}) + ": ";
+  Where where = polygon_where;
+  if (const std::optional<Touch> touch = find_touch(repaired)) {
+    const auto name = [](std::size_t ring) {
+      return ring == 0 ? std::string("the outer ring") : "hole " + std::to_string(ring);
+    };
+    message += touch->ring_a == touch->ring_b
+                   ? name(touch->ring_a) + " touches itself"
+                   : name(touch->ring_b) + " touches " + name(touch->ring_a);
+    message += " at (" + number_text(touch->point.x) + ", " + number_text(touch->point.y) + ")";
+    // The file position nearest the touching point, on the touching ring where there is a tie
+    // (repair may have dropped or reordered positions).
+    const kernel::Polygon& written = feature.polygons[p];
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<std::size_t> order{touch->ring_b};
+    for (std::size_t r = 0; r <= written.holes.size(); ++r) order.push_back(r);
+    for (const std::size_t r : order) {
+      if (r > written.holes.size()) continue;
+      const kernel::Ring& ring = r == 0 ? written.outer : written.holes[r - 1];
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const kernel::Vec2 d = ring[i] - touch->point;
+        if (kernel::dot(d, d) < best) {
+          best = kernel::dot(d, d);
+          where.ring = r;
+          where.position = i;
+        }
+      }
+    }
+  } else {
+    message += "rings touch or fold back on themselves";
+  }
+  message += "; footprint rings must not meet (walls and roofs need a simple outline)";
+  feature_issue(feature, true, "GEO027", message, geometry_path(feature, where), local_note());
 }
 
 // Stage 7: ids. File order decides: the first feature keeps an id, later ones are renamed.
@@ -960,8 +1189,8 @@ base::Result<FootprintSet> Reader::run() {
   std::optional<json> doc;
   if (prescan()) doc = parse();
   if (doc) read_top_level(*doc);
+  if (errors_ == 0) resolve_crs();
   if (errors_ == 0) {
-    check_units();
     choose_origin();
     for (FeatureState& feature : features_) {
       if (feature.failed || feature.polygons.empty() || stopped_) continue;
@@ -979,6 +1208,8 @@ base::Result<FootprintSet> Reader::run() {
             " read; the warnings above say why each was skipped"});
   }
   if (errors_ == 0) assign_ids();
+  result_.skipped_invalid = static_cast<std::size_t>(std::count_if(
+      features_.begin(), features_.end(), [](const FeatureState& f) { return f.failed; }));
   return finish();
 }
 

@@ -371,8 +371,11 @@ class ConvexSkeleton {
   }
 
   // A node at p and time, merged with an existing one at the same place (simultaneous events).
+  // The tolerance is a micrometre per metre of time: when a near-rectangle's remainder freezes
+  // (antiparallel neighbours), the far end's two vertices still lie up to ~1e-7 m apart and would
+  // otherwise become two nodes with a sliver face between them, and an open roof.
   std::uint32_t node_at(Vec2 p, double time) {
-    const double tolerance = 1e-9 * (1 + time);
+    const double tolerance = 1e-6 * (1 + time);
     for (std::uint32_t v = out_.contour_count; v < out_.vertices.size(); ++v) {
       const SkeletonVertex& s = out_.vertices[v];
       if (std::abs(s.time - time) < tolerance && length(s.position - p) < tolerance) return v;

@@ -3,7 +3,7 @@
 source "$(dirname "$0")/lib/common.sh"
 
 out=$("$insula" check "$root/examples/town.geojson" 2>&1)
-[ $? -eq 0 ] && [ "$out" = "$root/examples/town.geojson: ok: 6 footprints" ] || fail "check town.geojson: $out"
+[ $? -eq 0 ] && [ "$out" = "$root/examples/town.geojson: ok: 6 footprints, in EPSG:32633" ] || fail "check town.geojson: $out"
 out=$("$insula" check "$root/tests/data/cga/apartment_block.cga" 2>&1)
 [ $? -eq 0 ] && echo "$out" | grep -q "ok: 40 rules" || fail "check apartment_block.cga: $out"
 

@@ -102,18 +102,97 @@ expect_exit 0 "overwrite" "$insula" mass "$example" -o "$tmp/keep.obj" --quiet
 grep -q "^o " "$tmp/keep.obj" || fail "a successful run replaces the file"
 ls "$tmp" | grep -q insula-backup && fail "backup files left behind"
 
-# A footprint that gives no closed building (a hole touching the outer ring at a vertex) is an
-# error naming the feature; --keep-going leaves it out with a warning.
+# An invalid footprint (a hole touching the outer ring at a vertex: a valid OGC polygon no roof
+# can be built on) is an error naming the feature, where and why, and suggesting --keep-going;
+# `check` says the same. --keep-going leaves it out with one positioned warning, counted.
 printf '%s' '{"type":"FeatureCollection","features":[
   {"type":"Feature","id":"ok","properties":{"height":8},"geometry":{"type":"Polygon","coordinates":[[[30,0],[40,0],[40,10],[30,10],[30,0]]]}},
   {"type":"Feature","id":"pinched","properties":{"height":8},"geometry":{"type":"Polygon","coordinates":[[[0,0],[20,0],[20,20],[0,20],[0,0]],[[0,0],[5,5],[5,10],[2,8],[0,0]]]}}]}'   >"$tmp/pinched.geojson"
-expect_exit 1 "unbuildable footprint" "$insula" mass "$tmp/pinched.geojson" -o "$tmp/p.obj"
-grep -q 'pinched.geojson: error: feature 1 (id "pinched")' "$tmp/err.txt" || { fail "unbuildable footprint message"; cat "$tmp/err.txt"; }
-[ -e "$tmp/p.obj" ] && fail "unbuildable footprint: nothing written"
+pinched_error='pinched.geojson:3:143: error[GEO027]: feature 1 (id "pinched"): polygon: hole 1 touches the outer ring at (0, 0); footprint rings must not meet (walls and roofs need a simple outline)'
+expect_exit 1 "invalid footprint" "$insula" mass "$tmp/pinched.geojson" -o "$tmp/p.obj"
+grep -qF "$pinched_error" "$tmp/err.txt" || { fail "invalid footprint: message"; cat "$tmp/err.txt"; }
+grep -qF "note: --keep-going skips invalid features, each with a warning" "$tmp/err.txt" ||
+  { fail "invalid footprint: --keep-going suggested"; cat "$tmp/err.txt"; }
+[ -e "$tmp/p.obj" ] && fail "invalid footprint: nothing written"
+expect_exit 1 "check agrees with mass" "$insula" check "$tmp/pinched.geojson"
+grep -qF "$pinched_error" "$tmp/err.txt" || { fail "check: message"; cat "$tmp/err.txt"; }
 expect_exit 0 "--keep-going" "$insula" mass "$tmp/pinched.geojson" -o "$tmp/p.obj" --keep-going --report "$tmp/p.json"
+[ "$(grep -c 'warning\[GEO027\]' "$tmp/err.txt")" = 1 ] || { fail "--keep-going: one warning"; cat "$tmp/err.txt"; }
+grep -qF "pinched.geojson:3:143: warning[GEO027]: feature 1 (id \"pinched\")" "$tmp/err.txt" ||
+  { fail "--keep-going: positioned warning"; cat "$tmp/err.txt"; }
 node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
-         if (r.buildings !== 1 || r.failed !== 1 || r.watertight !== 1) process.exit(1);' "$tmp/p.json" ||
+         if (r.buildings !== 1 || r.invalid !== 1 || r.failed !== 0 || r.watertight !== 1) {
+           console.log(JSON.stringify(r)); process.exit(1); }' "$tmp/p.json" ||
   fail "--keep-going report"
+expect_exit 0 "check --keep-going" "$insula" check "$tmp/pinched.geojson" --keep-going
+grep -qx "$tmp/pinched.geojson: ok: 1 footprints, 1 invalid skipped" "$tmp/out.txt" ||
+  { fail "check --keep-going summary"; cat "$tmp/out.txt"; }
+# A bow-tie among good footprints in UTM: skipped, not fatal.
+expect_exit 0 "bow-tie with --keep-going" "$insula" mass "$root/tests/data/bad/utm_bowtie.geojson" \
+  -o "$tmp/bt.obj" --keep-going --report "$tmp/bt.json"
+grep -q 'utm_bowtie.geojson:54:13: warning\[GEO022\]: feature 1 (id "u2")' "$tmp/err.txt" ||
+  { fail "bow-tie warning"; cat "$tmp/err.txt"; }
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+         if (r.buildings !== 1 || r.invalid !== 1 || r.crs !== "EPSG:25832") process.exit(1);' \
+  "$tmp/bt.json" || fail "bow-tie report"
+
+# Longitude/latitude (RFC 7946, an OSM-like block) is built in its UTM zone: the same buildings
+# as the same block in UTM meters (tests/data/geo/make_block_utm.sh), CRS in report and CityJSON.
+geo=$root/tests/data/geo
+expect_exit 0 "lon/lat block" "$insula" mass "$geo/block_lonlat.geojson" -o "$tmp/ll.city.json" \
+  --report "$tmp/ll.json" --quiet
+expect_exit 0 "UTM block" "$insula" mass "$geo/block_utm.geojson" -o "$tmp/utm.city.json" --report "$tmp/utm.json" --quiet
+node -e '
+  const fs = require("fs");
+  const ll = JSON.parse(fs.readFileSync(process.argv[1])), utm = JSON.parse(fs.readFileSync(process.argv[2]));
+  const city = JSON.parse(fs.readFileSync(process.argv[3]));
+  const same = ["buildings", "parts", "vertices", "faces", "triangles", "watertight"].every((k) => ll[k] === utm[k]);
+  if (!same || ll.buildings !== 9 || ll.crs !== "EPSG:32633" || ll.reprojected_from !== "OGC:CRS84" ||
+      utm.crs !== "EPSG:32633" || city.metadata.referenceSystem !== "https://www.opengis.net/def/crs/EPSG/0/32633") {
+    console.log(JSON.stringify([ll, utm, city.metadata])); process.exit(1);
+  }' "$tmp/ll.json" "$tmp/utm.json" "$tmp/ll.city.json" || fail "lon/lat block: not the same buildings as UTM"
+validate_cityjson "CityJSON from lon/lat" "$tmp/ll.city.json"
+# Building by building (CityJSON): the same ground area within 0.5 % and the same height within
+# 1 cm. Vertices are not compared one by one: a near-square gable (way/1009) may pick the other
+# ridge when its corners move by a millimetre.
+node -e '
+  const fs = require("fs");
+  const measure = (file) => {
+    const c = JSON.parse(fs.readFileSync(file)), t = c.transform, out = {};
+    const at = (i) => c.vertices[i].map((v, k) => v * t.scale[k] + t.translate[k]);
+    for (const [id, o] of Object.entries(c.CityObjects)) {
+      for (const g of o.geometry || []) {
+        const m = out[o.parents ? o.parents[0] : id] ??= { ground: 0, top: -1e9 };
+        g.boundaries.forEach((shell, s) => shell.forEach((surface, f) => {
+          const ring = surface[0].map(at);
+          ring.forEach((p) => { m.top = Math.max(m.top, p[2]); });
+          const sem = g.semantics.surfaces[g.semantics.values[s][f]];
+          if (sem.type !== "GroundSurface") return;
+          let a = 0;
+          for (let i = 0; i < ring.length; i++) {
+            const p = ring[i], q = ring[(i + 1) % ring.length];
+            a += p[0] * q[1] - q[0] * p[1];
+          }
+          m.ground += Math.abs(a) / 2;
+        }));
+      }
+    }
+    return out;
+  };
+  const a = measure(process.argv[1]), b = measure(process.argv[2]);
+  const ids = Object.keys(a);
+  if (ids.length !== 9 || ids.join() !== Object.keys(b).join()) { console.log(ids, Object.keys(b)); process.exit(1); }
+  for (const id of ids) {
+    if (!(Math.abs(a[id].ground - b[id].ground) <= 0.005 * b[id].ground && b[id].ground > 1 &&
+          Math.abs(a[id].top - b[id].top) <= 0.01)) { console.log(id, a[id], b[id]); process.exit(1); }
+  }' "$tmp/ll.city.json" "$tmp/utm.city.json" || fail "lon/lat block: buildings differ from the UTM run"
+expect_exit 2 "--crs must be projected" "$insula" mass "$geo/block_lonlat.geojson" -o "$tmp/x.obj" --crs EPSG:4326
+grep -q "is geographic (degrees); name a projected CRS in meters" "$tmp/err.txt" || { fail "--crs EPSG:4326 message"; cat "$tmp/err.txt"; }
+printf '%s' '{"type":"Polygon","coordinates":[[[500000,5400000],[500020,5400000],[500020,5400015],[500000,5400015],[500000,5400000]]]}' >"$tmp/nocrs.geojson"
+expect_exit 0 "--crs states the CRS of meters" "$insula" mass "$tmp/nocrs.geojson" -o "$tmp/c.city.json" --crs EPSG:25832 --quiet
+node -e 'const c = JSON.parse(require("fs").readFileSync(process.argv[1]));
+         if (c.metadata.referenceSystem !== "https://www.opengis.net/def/crs/EPSG/0/25832") process.exit(1);' \
+  "$tmp/c.city.json" || fail "--crs: referenceSystem"
 
 # Every file of the bad-input catalog: exit 1 (error) or 0 (repaired with a warning), never a crash.
 for bad in "$root"/tests/data/bad/*.geojson; do

@@ -272,6 +272,13 @@ TEST(GeoJsonReader, SmallCoordinatesKeepZeroOriginAndGivenOriginIsUsed) {
 
 // ---- CRS ----------------------------------------------------------------------------------------
 
+// The first line of the failure to read a square at UTM-like coordinates under `crs_member`.
+std::string crs_of_failure(const std::string& crs_member) {
+  const auto result = read(collection({feature("", "{}", polygon(square(500000, 5400000, 10, 10)))},
+                                      R"("crs": )" + crs_member + ", "));
+  return result.ok() ? "ok" : headlines(result.diagnostics()).front();
+}
+
 std::string crs_of(const std::string& crs_member, std::vector<std::string>* warnings = nullptr) {
   const auto result = read(collection({feature("", "{}", polygon(square(500000, 5400000, 10, 10)))},
                                       R"("crs": )" + crs_member + ", "));
@@ -294,14 +301,200 @@ TEST(GeoJsonReader, CrsNamesAreReducedToEpsgCodes) {
   EXPECT_EQ(warnings, (std::vector<std::string>{
                           R"(test.geojson:1:38: warning[GEO007]: crs "local grid" names no EPSG )"
                           "code; ignored"}));
-  EXPECT_EQ(crs_of(R"({"type": "name", "properties": {"name": "urn:ogc:def:crs:OGC:1.3:CRS84"}})",
-                   &warnings),
-            "");
-  ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_NE(warnings[0].find("is geographic (degrees)"), std::string::npos);
+}
+
+// What the reader takes the coordinates to be in, and what it builds in (docs/geojson.md).
+struct CrsOutcome {
+  std::string crs;
+  std::string source_crs;
+  kernel::Vec2 first;  // world coordinates of the first footprint's first vertex
+};
+
+CrsOutcome outcome(const base::Result<FootprintSet>& result) {
+  if (!result.ok()) return {"failed: " + headlines(result.diagnostics()).front(), "", {}};
+  const kernel::Vec2 local = result->footprints[0].polygons[0].outer[0];
+  return {
+      result->crs, result->source_crs, {local.x + result->origin.x, local.y + result->origin.y}};
+}
+
+TEST(GeoJsonReader, LonLatWithoutCrsMemberIsReprojectedToItsUtmZone) {
+  // RFC 7946: no "crs" member means WGS 84 longitude/latitude. Berlin lies in UTM zone 33N.
+  const std::string lonlat = polygon(square(13.40495, 52.52001, 0.0003, 0.00018));
+  const CrsOutcome berlin = outcome(read(lonlat));
+  EXPECT_EQ(berlin.crs, "EPSG:32633");
+  EXPECT_EQ(berlin.source_crs, "OGC:CRS84");
+  // echo 13.40495 52.52001 | cs2cs OGC:CRS84 EPSG:32633 (the square's first vertex).
+  EXPECT_NEAR(berlin.first.x, 391775.892, 1e-3);
+  EXPECT_NEAR(berlin.first.y, 5820073.346, 1e-3);
+  // Southern hemisphere and west of Greenwich: zone 23S (Rio de Janeiro).
+  EXPECT_EQ(outcome(read(polygon(square(-43.2, -22.9, 0.0002, 0.0002)))).crs, "EPSG:32723");
+  // --crs names another projected CRS to build in: ETRS89 / UTM 33N.
+  GeoJsonOptions options;
+  options.crs = "EPSG:25833";
+  const CrsOutcome etrs = outcome(read(lonlat, options));
+  EXPECT_EQ(etrs.crs, "EPSG:25833");
+  EXPECT_NEAR(etrs.first.x, berlin.first.x, 2.0);  // ETRS89 and WGS 84 differ by under a metre
+}
+
+TEST(GeoJsonReader, LonLatBuildingIsNoLongerANeedle) {
+  // Issue 12: this 20 x 20 m building in degrees was read as meters, a 0.0003 x 0.00018 m
+  // footprint the builders stretched into a needle, with only a warning.
+  const std::filesystem::path file =
+      std::filesystem::path(INSULA_TEST_DATA) / "geo" / "lonlat_degrees.geojson";
+  const auto result = read_geojson(read_text(file), "lonlat_degrees.geojson");
+  ASSERT_TRUE(result.ok());
+  EXPECT_TRUE(result.diagnostics().empty());
+  ASSERT_EQ(result->footprints.size(), 1u);
+  // The area of the corners cs2cs OGC:CRS84 EPSG:32633 gives.
+  EXPECT_NEAR(kernel::area(result->footprints[0].polygons[0]), 407.674, 0.01);
+}
+
+TEST(GeoJsonReader, CrsOptionStatesTheCrsOfMetersAndReprojectsNamedCrs) {
+  // Meters in no named CRS are taken to be in --crs: nothing moves.
+  GeoJsonOptions options;
+  options.crs = "EPSG:25832";
+  const std::string meters = polygon(square(500010.25, 5400020.5, 20, 15));
+  const CrsOutcome stated = outcome(read(meters, options));
+  EXPECT_EQ(stated.crs, "EPSG:25832");
+  EXPECT_EQ(stated.source_crs, "");
+  EXPECT_EQ(stated.first, (kernel::Vec2{500010.25, 5400020.5}));
+  // Small local meters are not mistaken for degrees (a 20 m square is not 20 degrees wide).
+  EXPECT_EQ(outcome(read(polygon(square(0, 0, 20, 15)))).crs, "");
+  // A file that names its CRS is reprojected to --crs: UTM 32N to UTM 33N.
+  const std::string named =
+      collection({feature("", "{}", polygon(square(700000, 5800000, 10, 10)))},
+                 R"("crs": {"type": "name", "properties": {"name": )"
+                 R"("EPSG:25832"}}, )");
+  options.crs = "EPSG:25833";
+  const CrsOutcome moved = outcome(read(named, options));
+  EXPECT_EQ(moved.crs, "EPSG:25833");
+  EXPECT_EQ(moved.source_crs, "EPSG:25832");
+  EXPECT_GT(std::abs(moved.first.x - 700000), 1000);
+  // A CRS footprints cannot be built in.
+  options.crs = "EPSG:4326";
+  EXPECT_EQ(outcome(read(meters, options)).crs,
+            "failed: test.geojson: error[GEO007]: GeoJsonOptions::crs: EPSG:4326 (WGS 84) is "
+            "geographic (degrees); name a projected CRS in meters");
+  // A projected CRS in feet cannot be built in without reprojecting.
+  EXPECT_EQ(crs_of_failure(R"({"type": "name", "properties": {"name": "EPSG:2263"}})"),
+            "test.geojson:1:38: error[GEO007]: crs EPSG:2263 (NAD83 / New York Long Island "
+            "(ftUS)) measures in US survey foot; footprints are built in meters: name a projected "
+            "CRS in meters to reproject to (--crs EPSG:N)");
+  // OGC CRS84 named in the file, with coordinates that are not degrees.
+  EXPECT_EQ(crs_of_failure(R"({"type": "name", "properties": {"name": )"
+                           R"("urn:ogc:def:crs:OGC:1.3:CRS84"}})"),
+            "test.geojson:2:88: error[GEO008]: feature 0: polygon ring 0 position 0 (500000, "
+            "5400000) is not a longitude/latitude, but crs OGC:CRS84 is geographic (degrees)");
+}
+
+TEST(GeoJsonReader, LonLatBlockGivesTheSameBuildingsAsItsUtmVersion) {
+  // The acceptance case of issue 12 item 3: an OSM-like block (block_lonlat.geojson) and the
+  // same block reprojected by PROJ's cs2cs (make_block_utm.sh).
+  const std::filesystem::path folder = std::filesystem::path(INSULA_TEST_DATA) / "geo";
+  const auto lonlat = read_geojson(read_text(folder / "block_lonlat.geojson"), "block_lonlat");
+  const auto utm = read_geojson(read_text(folder / "block_utm.geojson"), "block_utm");
+  ASSERT_TRUE(lonlat.ok()) << headlines(lonlat.diagnostics()).front();
+  ASSERT_TRUE(utm.ok());
+  EXPECT_TRUE(lonlat.diagnostics().empty()) << headlines(lonlat.diagnostics()).front();
+  EXPECT_EQ(lonlat->crs, "EPSG:32633");
+  EXPECT_EQ(utm->crs, "EPSG:32633");
+  ASSERT_EQ(lonlat->footprints.size(), 9u);
+  ASSERT_EQ(utm->footprints.size(), 9u);
+  double total = 0;
+  for (std::size_t i = 0; i < 9; ++i) {
+    const Footprint& a = lonlat->footprints[i];
+    const Footprint& b = utm->footprints[i];
+    SCOPED_TRACE(a.id);
+    EXPECT_EQ(a.id, b.id);
+    ASSERT_EQ(a.polygons.size(), b.polygons.size());
+    for (std::size_t p = 0; p < a.polygons.size(); ++p) {
+      const double area = kernel::area(a.polygons[p]);
+      EXPECT_NEAR(area, kernel::area(b.polygons[p]), 0.005 * area);
+      EXPECT_EQ(a.polygons[p].holes.size(), b.polygons[p].holes.size());
+      const kernel::Vec2 ca = kernel::centroid(a.polygons[p]);
+      const kernel::Vec2 cb = kernel::centroid(b.polygons[p]);
+      EXPECT_NEAR(ca.x + lonlat->origin.x, cb.x + utm->origin.x, 0.01);
+      EXPECT_NEAR(ca.y + lonlat->origin.y, cb.y + utm->origin.y, 0.01);
+      total += area;
+    }
+  }
+  // The block was drawn in UTM 33N meters (an 80 x 60 m block, 3,172 m2 of footprints) and
+  // written in degrees of 7 decimals, as OSM does (about 1 cm).
+  EXPECT_NEAR(total, 3172, 1.0);
 }
 
 // ---- Policies ----------------------------------------------------------------------------------
+
+TEST(GeoJsonReader, FootprintsKeepTheFirstEdgeAndOrientationAsWritten) {
+  // Clockwise outer ring starting at (10, 0): normalization reverses it, the file's order stays.
+  const auto result = read(collection({
+      feature("", "{}", polygon("[[10, 0], [0, 0], [0, 8], [10, 8], [10, 0]]")),
+      feature("", "{}", polygon("[[0, 0], [0, 0], [12, 0], [12, 6], [0, 6], [0, 0]]")),
+  }));
+  ASSERT_TRUE(result.ok());
+  const Footprint& cw = result->footprints[0];
+  ASSERT_EQ(cw.first_edges.size(), 1u);
+  EXPECT_EQ(cw.first_edges[0][0], (kernel::Vec2{10, 0}));
+  EXPECT_EQ(cw.first_edges[0][1], (kernel::Vec2{0, 0}));
+  EXPECT_EQ(cw.outer_clockwise, std::vector<bool>{true});
+  EXPECT_EQ(cw.polygons[0].outer[0], (kernel::Vec2{10, 8}));
+  EXPECT_EQ(cw.polygons[0].outer[1], (kernel::Vec2{0, 8}));
+  // A repeated first position does not make a zero-length first edge.
+  const Footprint& ccw = result->footprints[1];
+  EXPECT_EQ(ccw.first_edges[0][1], (kernel::Vec2{12, 0}));
+  EXPECT_EQ(ccw.outer_clockwise, std::vector<bool>{false});
+}
+
+TEST(GeoJsonReader, TouchingRingsAreRejectedWithWhereAndWhy) {
+  // A hole touching the outer ring at a vertex, and two holes touching at one point: valid OGC
+  // polygons (kernel::repair accepts one touching point per pair of rings) that walls and roofs
+  // cannot be built on. A ring touching itself is already an error of kernel::repair (GEO022).
+  const std::string text = collection({
+      feature(R"("id": "ok", )", "{}", polygon(square(30, 0, 10, 10))),
+      feature(R"("id": "pinched", )", "{}",
+              polygon(square(0, 0, 20, 20) + ", [[0, 0], [5, 5], [5, 10], [2, 8], [0, 0]]")),
+      feature(
+          R"("id": "holes", )", "{}",
+          polygon(square(50, 0, 20, 10) + ", " + square(52, 2, 4, 4) + ", " + square(56, 6, 4, 2))),
+  });
+  const auto failed = read(text);
+  ASSERT_FALSE(failed.ok());
+  EXPECT_EQ(headlines(failed.diagnostics()),
+            (std::vector<std::string>{
+                "test.geojson:3:151: error[GEO027]: feature 1 (id \"pinched\"): polygon: hole 1 "
+                "touches the outer ring at (0, 0); footprint rings must not meet (walls and roofs "
+                "need a simple outline)",
+                "test.geojson:4:199: error[GEO027]: feature 2 (id \"holes\"): polygon: hole 2 "
+                "touches hole 1 at (56, 6); footprint rings must not meet (walls and roofs need a "
+                "simple outline)"}));
+  GeoJsonOptions options;
+  options.skip_invalid = true;
+  options.skip_invalid_flag = "--keep-going";
+  const auto skipped = read(text, options);
+  ASSERT_TRUE(skipped.ok());
+  ASSERT_EQ(skipped->footprints.size(), 1u);
+  EXPECT_EQ(skipped->footprints[0].id, "ok");
+  EXPECT_EQ(skipped->skipped_invalid, 2u);
+  ASSERT_EQ(skipped.diagnostics().size(), 2u);
+  EXPECT_EQ(skipped.diagnostics()[0].severity, Severity::kWarning);
+  EXPECT_EQ(skipped.diagnostics()[0].notes,
+            std::vector<std::string>{"feature skipped (--keep-going)"});
+}
+
+TEST(GeoJsonReader, WithoutSkippingTheFirstFeatureErrorSuggestsTheFlag) {
+  const std::string text = collection({
+      feature(R"("id": "short", )", "{}", polygon("[[0, 0], [1, 0], [0, 0]]")),
+      feature(R"("id": "shorter", )", "{}", polygon("[[0, 0], [1, 0]]")),
+  });
+  GeoJsonOptions options;
+  options.skip_invalid_flag = "--keep-going";
+  const auto result = read(text, options);
+  ASSERT_FALSE(result.ok());
+  ASSERT_EQ(result.diagnostics().size(), 2u);
+  EXPECT_EQ(result.diagnostics()[0].notes,
+            std::vector<std::string>{"--keep-going skips invalid features, each with a warning"});
+  EXPECT_TRUE(result.diagnostics()[1].notes.empty());
+}
 
 TEST(GeoJsonReader, SkipInvalidDropsBadFeaturesAsWarnings) {
   const std::string text = collection({
@@ -317,6 +510,7 @@ TEST(GeoJsonReader, SkipInvalidDropsBadFeaturesAsWarnings) {
   ASSERT_EQ(result->footprints.size(), 1u);
   EXPECT_EQ(result->footprints[0].id, "good");
   EXPECT_FALSE(base::has_errors(result.diagnostics()));
+  EXPECT_EQ(result->skipped_invalid, 2u);
   EXPECT_EQ(count_code(result.diagnostics(), "GEO022"), 1u);
   EXPECT_EQ(count_code(result.diagnostics(), "GEO010"), 1u);
   for (const Diagnostic& d : result.diagnostics()) {
@@ -416,12 +610,17 @@ const CatalogCase kCatalog[] = {
     {"features_not_array.geojson", false,
      "features_not_array.geojson:3:15: error[GEO005]: \"features\" is an object; expected an "
      "array"},
-    {"geographic_crs.geojson", true,
-     "geographic_crs.geojson:3:10: warning[GEO007]: crs EPSG:4326 is geographic (degrees); "
-     "expected projected meters"},
+    {"geographic_crs.geojson", false,
+     "geographic_crs.geojson:20:13: error[GEO008]: feature 0 (id \"u\"): polygon ring 0 position 0 "
+     "(500010.25, 5400020.5) is not a longitude/latitude, but crs EPSG:4326 is geographic "
+     "(degrees)"},
     {"hole_crosses_shell.geojson", false,
      "hole_crosses_shell.geojson:40:13: error[GEO023]: feature 0 (id \"hx\"): polygon: hole 1 "
      "crosses outer ring: edge 1-0 of hole 1 and edge 1-2 of outer ring cross at (10, 2)"},
+    {"hole_touches_shell.geojson", false,
+     "hole_touches_shell.geojson:36:13: error[GEO027]: feature 0 (id \"pinched\"): polygon: hole 1 "
+     "touches the outer ring at (0, 0); footprint rings must not meet (walls and roofs need a "
+     "simple outline)"},
     {"hole_outside.geojson", false,
      "hole_outside.geojson:35:11: error[GEO024]: feature 0 (id \"h\"): polygon: hole 1 lies "
      "outside the outer ring"},
@@ -433,9 +632,6 @@ const CatalogCase kCatalog[] = {
     {"invalid_utf8.geojson", false,
      "invalid_utf8.geojson:1:32: error[GEO001]: syntax error while parsing value - invalid string: "
      "ill-formed UTF-8 byte; last read: '\"caf\\xe9\"'"},
-    {"lonlat_degrees.geojson", true,
-     "lonlat_degrees.geojson:12:24: warning[GEO008]: coordinates look like longitude/latitude "
-     "degrees; expected projected meters (no reprojection is done)"},
     {"missing_coordinates.geojson", false,
      "missing_coordinates.geojson:44:19: error[GEO014]: feature 1 (id \"nc\"): Polygon has no "
      "\"coordinates\""},

@@ -120,7 +120,15 @@ TEST(Mass, EveryRoofOnEveryFootprintIsOneClosedShell) {
       {"courtyard", courtyard()},
       {"irregular", irregular()},
       {"circle", circle(256, 9)},
-      {"collinear", nearly_collinear()}};
+      {"collinear", nearly_collinear()},
+      // A 10 x 8 m shed of an OSM block (7-decimal degrees reprojected to UTM 33N): a
+      // near-rectangle whose long sides are 1e-7 rad from antiparallel. Its hip ridge used to end
+      // in two skeleton nodes 2e-7 m apart, and the roof was open.
+      {"reprojected near-rectangle", Polygon{{{30.003009, 19.999549},
+                                              {40.001459, 20.001275},
+                                              {40.001672, 28.002001},
+                                              {30.003239, 28.000276}},
+                                             {}}}};
   for (const auto& [name, footprint] : footprints) {
     const int euler = footprint.holes.empty() ? 2 : 0;
     for (RoofType roof : kAllRoofs) {

@@ -19,6 +19,7 @@
 
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
+#include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/progress.h"
@@ -83,7 +84,8 @@ bool load_outline(const BuildOptions& options, const base::Source& source, Build
   const auto text = read_input_file(path);
   if (!text)
     return fail("cannot read the outline file '" + path + "': " + read_failure_reason(path));
-  base::Result<io::FootprintSet> set = io::read_geojson(*text, path);
+  base::Result<io::FootprintSet> set =
+      io::read_geojson(*text, path, geojson_options(options.crs, false, false));
   if (!set.ok()) {
     const base::Source file(path, *text);
     print_diagnostics(set.diagnostics(), file, options.quiet);
@@ -286,9 +288,11 @@ int build_lots(const BuildOptions& options, const Parsed& input, const Stopwatch
     return kExitInput;
   }
   const base::Source lot_source(options.lot, *text);
-  base::Result<io::FootprintSet> lots = io::read_geojson(*text, options.lot);
+  base::Result<io::FootprintSet> lots =
+      io::read_geojson(*text, options.lot, geojson_options(options.crs, options.keep_going));
   print_diagnostics(lots.diagnostics(), lot_source, options.quiet);
   if (!lots.ok()) return kExitInput;
+  report["invalid_lots"] = lots->skipped_invalid;
   std::map<std::string, Parsed> grammars;
   std::vector<lang::bldg::BuildResult> results;
   report["buildings"] = nlohmann::json::array();
@@ -348,6 +352,8 @@ int build_lots(const BuildOptions& options, const Parsed& input, const Stopwatch
   }
   scene.origin = lots->origin;
   scene.crs = lots->crs;
+  report["crs"] = lots->crs.empty() ? nlohmann::json() : nlohmann::json(lots->crs);
+  if (!lots->source_crs.empty()) report["reprojected_from"] = lots->source_crs;
   return finish_build(options, scene, report, total);
 }
 

@@ -6,7 +6,6 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -18,6 +17,7 @@
 
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
+#include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/progress.h"
@@ -75,38 +75,9 @@ struct Lots {
   std::vector<cga::Lot> lots;
   kernel::Vec3 origin;
   std::string crs;
+  std::string source_crs;
+  std::size_t invalid = 0;  // features skipped with --keep-going
 };
-
-// The first edge of each polygon of feature `index` as written in the file (local coordinates),
-// so a lot's x axis follows the file's first edge even when the reader reversed a clockwise ring.
-// Empty when the structure is not the expected one (the reader already validated the file).
-std::vector<std::array<kernel::Vec2, 2>> first_edges(const std::string& text, std::size_t index,
-                                                     std::size_t polygons, kernel::Vec3 origin) {
-  std::vector<std::array<kernel::Vec2, 2>> out;
-  try {
-    const nlohmann::json doc = nlohmann::json::parse(text);
-    const nlohmann::json* geometry = &doc;
-    if (doc.value("type", "") == "FeatureCollection") geometry = &doc.at("features").at(index);
-    if (geometry->value("type", "") == "Feature") geometry = &geometry->at("geometry");
-    const std::string type = geometry->value("type", "");
-    std::vector<const nlohmann::json*> rings;
-    if (type == "Polygon") rings.push_back(&geometry->at("coordinates").at(0));
-    if (type == "MultiPolygon") {
-      for (const nlohmann::json& p : geometry->at("coordinates")) rings.push_back(&p.at(0));
-    }
-    if (rings.size() != polygons) return {};
-    for (const nlohmann::json* ring : rings) {
-      const auto point = [&](std::size_t k) {
-        return kernel::Vec2{ring->at(k).at(0).get<double>() - origin.x,
-                            ring->at(k).at(1).get<double>() - origin.y};
-      };
-      out.push_back({point(0), point(1)});
-    }
-  } catch (const nlohmann::json::exception&) {
-    return {};
-  }
-  return out;
-}
 
 // --lot: one lot per GeoJSON feature (a MultiPolygon gives one lot of several start shapes).
 // Without --lot the lot list stays empty here; the default lot needs the compiled grammar.
@@ -119,15 +90,19 @@ std::optional<Lots> read_lots(const BuildOptions& options) {
     return std::nullopt;
   }
   const base::Source source(options.lot, *text);
-  base::Result<io::FootprintSet> set = io::read_geojson(source.text(), options.lot);
+  base::Result<io::FootprintSet> set = io::read_geojson(
+      source.text(), options.lot, geojson_options(options.crs, options.keep_going));
   print_diagnostics(set.diagnostics(), source, options.quiet);
   if (!set.ok()) return std::nullopt;
   out.origin = set->origin;
   out.crs = set->crs;
+  out.source_crs = set->source_crs;
+  out.invalid = set->skipped_invalid;
   for (io::Footprint& f : set->footprints) {
-    cga::Lot lot{std::move(f.id), std::move(f.polygons), std::move(f.properties), {}};
-    lot.first_edges = first_edges(*text, f.feature_index, lot.polygons.size(), set->origin);
-    out.lots.push_back(std::move(lot));
+    // The file's first edge, so a lot's x axis follows it even where the reader reversed a
+    // clockwise ring.
+    out.lots.push_back({std::move(f.id), std::move(f.polygons), std::move(f.properties),
+                        std::move(f.first_edges)});
   }
   return out;
 }
@@ -270,6 +245,11 @@ int build_cga(const BuildOptions& options) {
   nlohmann::json report = report_json(p, results, lots->lots.size());
   report["threads"] = threads;
   report["seed"] = options.seed;
+  if (!options.lot.empty()) {
+    report["invalid_lots"] = lots->invalid;
+    report["crs"] = lots->crs.empty() ? nlohmann::json() : nlohmann::json(lots->crs);
+    if (!lots->source_crs.empty()) report["reprojected_from"] = lots->source_crs;
+  }
   report["seconds"] = seconds;
   return finish_build(options, scene, report, total);
 }

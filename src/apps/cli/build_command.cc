@@ -8,6 +8,7 @@
 
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
+#include "apps/cli/geojson_options.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/view_options.h"
 #include "apps/cli/warnings.h"
@@ -47,6 +48,9 @@ void add_build_command(CLI::App& app, BuildOptions& options) {
   build->add_option("--rules", options.rules, "restriction rules file (.bldg)");
   build->add_option("--assets", options.assets, "asset folder a program may read (.lua)");
   build->add_option("--report", options.report, "write a JSON report (counts, timings)");
+  build->add_flag("--keep-going", options.keep_going,
+                  "leave out invalid --lot features (each with a warning) instead of failing");
+  add_crs_option(*build, options.crs);
   build->add_flag("-q,--quiet", options.quiet, "no progress or warnings on stderr");
   add_view_options(*build, options.output);
 }

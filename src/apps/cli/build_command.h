@@ -34,6 +34,8 @@ struct BuildOptions {
   std::string rules;                // --rules FILE: restriction rules (.bldg)
   std::vector<std::string> assets;  // --assets DIR: asset folders a program may read (.lua)
   std::string report;               // --report R.json
+  std::string crs;                  // --crs EPSG:N: the CRS lots are built in (geojson_options.h)
+  bool keep_going = false;          // --keep-going: skip invalid lot features with a warning
   bool quiet = false;
   io::OutputOptions output;  // PNG view and SVG options
   // Set by a batch (`insula random`): the outputs and the report go into its transaction, which

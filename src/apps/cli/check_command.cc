@@ -7,6 +7,7 @@
 
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
+#include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/progress.h"
 #include "apps/cli/warnings.h"
@@ -21,12 +22,20 @@ bool has_suffix(const std::string& text, const std::string& suffix) {
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// A one-line summary of what was checked, or nullopt when the input has errors.
-std::optional<std::string> check_geojson(const base::Source& source, bool quiet) {
-  base::Result<io::FootprintSet> set = io::read_geojson(source.text(), source.name());
-  print_diagnostics(set.diagnostics(), source, quiet);
+// A one-line summary of what was checked, or nullopt when the input has errors. Reads as `mass`
+// and `build --lot` do, so the three agree on every file.
+std::optional<std::string> check_geojson(const base::Source& source, const CheckOptions& options) {
+  base::Result<io::FootprintSet> set = io::read_geojson(
+      source.text(), source.name(), geojson_options(options.crs, options.keep_going));
+  print_diagnostics(set.diagnostics(), source, options.quiet);
   if (!set.ok()) return std::nullopt;
-  return std::to_string(set->footprints.size()) + " footprints";
+  std::string summary = std::to_string(set->footprints.size()) + " footprints";
+  if (set->skipped_invalid > 0) {
+    summary += ", " + std::to_string(set->skipped_invalid) + " invalid skipped";
+  }
+  if (!set->crs.empty()) summary += ", in " + set->crs;
+  if (!set->source_crs.empty()) summary += " (reprojected from " + set->source_crs + ")";
+  return summary;
 }
 
 }  // namespace
@@ -42,14 +51,18 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
   check->add_option("--start", options.start,
                     "CGA: derive from this symbol instead of the first rule of the lowest "
                     "priority set (reachability is checked from it)");
+  check->add_flag("--keep-going", options.keep_going,
+                  "GeoJSON: skip invalid features with a warning, as mass and build do");
+  add_crs_option(*check, options.crs);
 }
 
 int run_check(const CheckOptions& options) {
   using Checker = std::optional<std::string> (*)(const base::Source&, bool);
   Checker checker = nullptr;
-  bool cga = false;  // check_cga also takes --start
+  bool cga = false;      // check_cga also takes --start
+  bool geojson = false;  // so does check_geojson --crs and --keep-going
   if (has_suffix(options.input, ".geojson") || has_suffix(options.input, ".json")) {
-    checker = check_geojson;
+    geojson = true;
   } else if (has_suffix(options.input, ".cga")) {
     cga = true;
   } else if (has_suffix(options.input, ".bldg")) {
@@ -68,8 +81,9 @@ int run_check(const CheckOptions& options) {
     return kExitInput;
   }
   const base::Source source(options.input, *text);
-  const std::optional<std::string> summary =
-      cga ? check_cga(source, options.quiet, options.start) : checker(source, options.quiet);
+  const std::optional<std::string> summary = cga ? check_cga(source, options.quiet, options.start)
+                                             : geojson ? check_geojson(source, options)
+                                                       : checker(source, options.quiet);
   if (!summary) return kExitInput;
   if (!options.quiet) std::printf("%s: ok: %s\n", options.input.c_str(), summary->c_str());
   return kExitDone;

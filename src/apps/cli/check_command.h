@@ -13,7 +13,9 @@ namespace insula::cli {
 struct CheckOptions {
   std::string input;
   bool quiet = false;
-  std::string start;  // --start SYMBOL: the CGA start symbol (other front-ends ignore it)
+  std::string start;        // --start SYMBOL: the CGA start symbol (other front-ends ignore it)
+  std::string crs;          // --crs EPSG:N (GeoJSON)
+  bool keep_going = false;  // --keep-going: skip invalid features, as mass and build do (GeoJSON)
 };
 
 void add_check_command(CLI::App& app, CheckOptions& options);

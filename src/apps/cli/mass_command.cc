@@ -13,6 +13,7 @@
 #include "apps/cli/build_command.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
+#include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/mass_report.h"
@@ -204,7 +205,9 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
   mass->add_flag("-q,--quiet", options.quiet, "no progress or warnings on stderr");
   mass->add_flag(
       "--keep-going", options.keep_going,
-      "leave out footprints that give no closed building (with a warning) instead of failing");
+      "leave out invalid footprints and footprints that give no closed building (each with a "
+      "warning) instead of failing");
+  add_crs_option(*mass, options.crs);
   add_view_options(*mass, options.output);
   mass->callback([&options, roof, pitch]() {
     options.roof_given = roof->count() > 0;
@@ -234,10 +237,14 @@ int run_mass(const MassOptions& options) {
     return kExitInput;
   }
   const base::Source source(options.input, *text);
-  base::Result<io::FootprintSet> set = io::read_geojson(source.text(), options.input);
+  base::Result<io::FootprintSet> set = io::read_geojson(
+      source.text(), options.input, geojson_options(options.crs, options.keep_going));
   print_diagnostics(set.diagnostics(), source, options.quiet);
   if (!set.ok()) return kExitInput;
   report.stage("read", read_clock.seconds());
+  report.invalid = set->skipped_invalid;
+  report.crs = set->crs;
+  report.source_crs = set->source_crs;
 
   Stopwatch build_clock;
   std::vector<Warning> warnings;

@@ -26,6 +26,7 @@ struct MassOptions {
   int threads = 0;
   bool quiet = false;
   bool keep_going = false;
+  std::string crs;           // --crs EPSG:N
   io::OutputOptions output;  // PNG view and SVG options
   // Set when the flag was given on the command line; a given flag wins over feature properties.
   bool roof_given = false;

@@ -29,6 +29,9 @@ std::string MassReport::json() const {
   out["warnings"] = warnings;
   out["warning_counts"] = warning_counts;
   out["failed"] = failed;
+  out["invalid"] = invalid;
+  out["crs"] = crs.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(crs);
+  if (!source_crs.empty()) out["reprojected_from"] = source_crs;
   out["threads"] = threads;
   out["seconds"] = seconds;
   return out.dump(2) + "\n";

@@ -20,7 +20,10 @@ struct MassReport {
   std::size_t watertight = 0;  // buildings whose every part is a closed, outward shell
   std::size_t warnings = 0;
   std::map<std::string, std::size_t> warning_counts;  // by code: the full count, printed or not
-  std::size_t failed = 0;                             // footprints left out with --keep-going
+  std::size_t failed = 0;   // footprints left out with --keep-going: no closed building
+  std::size_t invalid = 0;  // features left out with --keep-going: invalid geometry
+  std::string crs;          // the CRS of the outputs' world coordinates; empty: unknown
+  std::string source_crs;   // the input's CRS when it was reprojected
   int threads = 1;
   double total_seconds = 0;
   std::vector<std::pair<std::string, double>> stages;  // in execution order
