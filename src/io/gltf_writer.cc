@@ -9,11 +9,13 @@
 #include <map>
 #include <span>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <variant>
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "io/float32_weld.h"
 #include "io/json_stream.h"
 #include "io/triangulated.h"
 #include "kernel/uv.h"
@@ -37,11 +39,6 @@ void append_u32(std::string& out, std::uint32_t value) {
                          static_cast<char>((value >> 16) & 0xFFU),
                          static_cast<char>((value >> 24) & 0xFFU)};
   out.append(bytes, 4);
-}
-
-// Z-up local meters to glTF's Y-up frame: (x, y, z) -> (x, z, -y), a rotation (keeps handedness).
-std::array<float, 3> to_y_up(kernel::Vec3 p) {
-  return {static_cast<float>(p.x), static_cast<float>(p.z), static_cast<float>(-p.y)};
 }
 
 std::string_view kind_name(shape::PartKind kind) {
@@ -124,6 +121,9 @@ class Builder {
   void add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
                      std::span<const std::pair<std::uint32_t, std::uint32_t>> faces);
   void add_face(const kernel::Mesh& mesh, std::size_t face, PrimitiveRecord& primitive);
+  // Appends the corners `loop` (mesh vertex ids) and the triangles in triangles_ over them.
+  void add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
+                   kernel::Vec3 newell, PrimitiveRecord& primitive);
 
   void write_accessors(JsonStream& json) const;
   void write_meshes(JsonStream& json) const;
@@ -148,6 +148,8 @@ class Builder {
   std::vector<CornerTriangle> triangles_;
   std::vector<float> normals_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> faces_by_material_;
+  Float32Weld weld_;                    // of the mesh being added
+  std::vector<std::uint32_t> corners_;  // a welded face's corners (representative vertex ids)
 };
 
 Builder::Builder(const shape::Scene& scene) : scene_(scene), materials_(scene) {
@@ -192,6 +194,7 @@ std::int32_t Builder::add_part(const shape::Part& part, std::size_t index) {
 // One primitive per material, materials in index order, faces in mesh order within each.
 std::uint32_t Builder::add_primitives(const kernel::Mesh& mesh, double uv) {
   uv_ = uv;
+  weld_.run(mesh);
   faces_by_material_.clear();
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
     faces_by_material_.emplace_back(materials_.index(mesh.tag(f)), f);
@@ -226,11 +229,31 @@ void Builder::add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
 }
 
 // Flat shading: the face's corners become vertices of their own, all carrying the face normal.
+// Where float32 merges vertices (weld_, float32_weld.h) the face's triangles and corners come from
+// the weld, over the merged vertices.
 void Builder::add_face(const kernel::Mesh& mesh, std::size_t face, PrimitiveRecord& primitive) {
   const kernel::Vec3 newell = kernel::face_normal(mesh, face);
   triangles_.clear();
-  if (!triangulator_.triangulate(mesh, face, newell, triangles_)) return;
-  const auto loop = mesh.face(face);
+  if (!weld_.active()) {
+    if (!triangulator_.triangulate(mesh, face, newell, triangles_)) return;
+    add_corners(mesh, mesh.face(face), newell, primitive);
+    return;
+  }
+  corners_.clear();
+  for (const auto& triangle : weld_.triangles(face)) {
+    CornerTriangle t{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto it = std::find(corners_.begin(), corners_.end(), triangle[k]);
+      t[k] = static_cast<std::uint32_t>(it - corners_.begin());
+      if (it == corners_.end()) corners_.push_back(triangle[k]);
+    }
+    triangles_.push_back(t);
+  }
+  add_corners(mesh, corners_, newell, primitive);
+}
+
+void Builder::add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
+                          kernel::Vec3 newell, PrimitiveRecord& primitive) {
   const std::array<float, 3> normal = to_y_up(newell);
   const std::uint32_t base = primitive.vertex_count;
   for (std::uint32_t vertex : loop) {
@@ -239,7 +262,7 @@ void Builder::add_face(const kernel::Mesh& mesh, std::size_t face, PrimitiveReco
       uvs_.push_back(static_cast<float>(t.x));
       uvs_.push_back(static_cast<float>(t.y));
     }
-    const std::array<float, 3> p = to_y_up(mesh.position(vertex));
+    const Float3 p = to_y_up(mesh.position(weld_.representative(vertex)));
     for (std::size_t k = 0; k < 3; ++k) {
       vertices_.push_back(p[k]);
       normals_.push_back(normal[k]);

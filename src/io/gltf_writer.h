@@ -5,7 +5,9 @@
 // well under a millimetre near the origin); the scene origin that takes them back to the input CRS
 // is kept as doubles in the scene's `extras` ("origin", "crs"). Faces are triangulated with
 // kernel::triangulate (concave faces stay right) and shaded flat: each face has its own vertices
-// carrying its normal. Indices are UNSIGNED_INT. Output is deterministic.
+// carrying its normal; vertices float32 cannot tell apart are written as one, and faces
+// contracted over them, so closed shells stay closed (io/float32_weld.h). Indices are
+// UNSIGNED_INT. Output is deterministic.
 #pragma once
 
 #include <filesystem>

@@ -1,14 +1,21 @@
 #include "io/png_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "io/atomic_file.h"
 #include "io/render_raster.h"
 #include "io/render_scene.h"
+#include "io/triangulated.h"
 #include "kernel/mesh.h"
+#include "kernel/polygon.h"
 #include "shape/part_mesh.h"
 
 // stb_image_write's implementation lives in this translation unit only, with static linkage so it
@@ -32,6 +39,7 @@ constexpr int kMaxSide = 8192;
 constexpr long long kMaxSamples = 1LL << 26;  // framebuffer pixels: bounds memory to ~0.7 GB
 constexpr double kPlanCut = 1.2;              // meters above a floor: the usual plan cut
 constexpr double kEavesClearance = 1.5;       // meters below the eaves without storey data
+constexpr double kCoverClearance = 0.05;      // meters: what lies higher above a roof covers it
 
 bool in_range(double value, double low, double high) {
   return value >= low && value <= high;  // false for NaN
@@ -65,13 +73,109 @@ double storey_cut(const shape::Building& building) {
   return floor + std::min(kPlanCut, height / 2);
 }
 
-// Lowest vertex of any roof face (the eaves); `top` when there is no roof face.
+// The building's triangles in plan, on a grid, for "does anything lie above this point" queries.
+class Canopy {
+ public:
+  explicit Canopy(const shape::Building& building) {
+    FaceTriangulator triangulator;
+    std::vector<CornerTriangle> corners;
+    for (const shape::Part& part : building.parts) {
+      const kernel::Mesh& mesh = part.mesh;
+      for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+        corners.clear();
+        const kernel::Vec3 n = kernel::face_normal(mesh, f);
+        if (std::abs(n.z) < 1e-6 || !triangulator.triangulate(mesh, f, n, corners)) continue;
+        const auto loop = mesh.face(f);
+        for (const CornerTriangle& t : corners) {
+          triangles_.push_back(
+              {mesh.position(loop[t[0]]), mesh.position(loop[t[1]]), mesh.position(loop[t[2]])});
+          for (const kernel::Vec3& p : triangles_.back()) bounds_.add({p.x, p.y});
+        }
+      }
+    }
+    if (triangles_.empty()) return;
+    side_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(triangles_.size()))), 1, 256);
+    cells_.resize(static_cast<std::size_t>(side_) * static_cast<std::size_t>(side_));
+    for (std::uint32_t i = 0; i < triangles_.size(); ++i) {
+      const auto& t = triangles_[i];
+      const auto [x0, y0] =
+          cell(std::min({t[0].x, t[1].x, t[2].x}), std::min({t[0].y, t[1].y, t[2].y}));
+      const auto [x1, y1] =
+          cell(std::max({t[0].x, t[1].x, t[2].x}), std::max({t[0].y, t[1].y, t[2].y}));
+      for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) cells_[static_cast<std::size_t>(y * side_ + x)].push_back(i);
+      }
+    }
+  }
+
+  // Whether some triangle covers `p` in plan (strictly inside it) more than `clearance` above it.
+  bool covered(kernel::Vec3 p, double clearance) const {
+    if (triangles_.empty()) return false;
+    const auto [x, y] = cell(p.x, p.y);
+    for (std::uint32_t i : cells_[static_cast<std::size_t>(y * side_ + x)]) {
+      const auto& t = triangles_[i];
+      const double area = cross2(t[0], t[1], t[2]);
+      const double w0 = cross2(t[1], t[2], p) / area;
+      const double w1 = cross2(t[2], t[0], p) / area;
+      const double w2 = 1 - w0 - w1;
+      if (!(w0 > 1e-9 && w1 > 1e-9 && w2 > 1e-9)) continue;
+      if (w0 * t[0].z + w1 * t[1].z + w2 * t[2].z > p.z + clearance) return true;
+    }
+    return false;
+  }
+
+ private:
+  static double cross2(kernel::Vec3 a, kernel::Vec3 b, kernel::Vec3 c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  }
+  std::pair<int, int> cell(double x, double y) const {
+    const auto index = [&](double v, double lo, double hi) {
+      const double f = hi > lo ? (v - lo) / (hi - lo) : 0;
+      return std::clamp(static_cast<int>(f * side_), 0, side_ - 1);
+    };
+    return {index(x, bounds_.min.x, bounds_.max.x), index(y, bounds_.min.y, bounds_.max.y)};
+  }
+
+  std::vector<std::array<kernel::Vec3, 3>> triangles_;
+  kernel::Bounds2 bounds_;
+  int side_ = 1;
+  std::vector<std::vector<std::uint32_t>> cells_;
+};
+
+// A point well inside a face: the centroid of its largest triangle.
+std::optional<kernel::Vec3> inner_point(const kernel::Mesh& mesh, std::size_t face,
+                                        FaceTriangulator& triangulator,
+                                        std::vector<CornerTriangle>& corners) {
+  corners.clear();
+  if (!triangulator.triangulate(mesh, face, kernel::face_normal(mesh, face), corners)) {
+    return std::nullopt;
+  }
+  const auto loop = mesh.face(face);
+  double best = -1;
+  kernel::Vec3 centre;
+  for (const CornerTriangle& t : corners) {
+    const kernel::Vec3 a = mesh.position(loop[t[0]]), b = mesh.position(loop[t[1]]),
+                       c = mesh.position(loop[t[2]]);
+    const double area = kernel::length(kernel::cross(b - a, c - a));
+    if (area > best) best = area, centre = (a + b + c) / 3.0;
+  }
+  return centre;
+}
+
+// The eaves: the lowest vertex of the roof faces open to the sky, `top` when there is none. A
+// roof-tagged face with anything of the building above it (the top of a bed or a stair step under
+// the floors above, a porch roof under a balcony) is not the building's roof.
 double eaves(const shape::Building& building, double top) {
+  const Canopy canopy(building);
+  FaceTriangulator triangulator;
+  std::vector<CornerTriangle> corners;
   double low = top;
   bool any = false;
   for (const shape::Part& part : building.parts) {
     for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
       if (part.mesh.tag(f).semantic != kernel::SemanticClass::kRoofSurface) continue;
+      const std::optional<kernel::Vec3> inside = inner_point(part.mesh, f, triangulator, corners);
+      if (!inside || canopy.covered(*inside, kCoverClearance)) continue;
       for (std::uint32_t v : part.mesh.face(f)) {
         const double z = part.mesh.position(v).z;
         if (std::isfinite(z)) low = any ? std::min(low, z) : z, any = true;

@@ -68,8 +68,10 @@ Image render(const shape::Scene& scene, const RenderOptions& options = {});
 // The automatic cut height of one building, local Z in meters: the plan-cut convention of
 // architecture, about 1.2 m above the floor of the top storey, so its rooms show with the roof and
 // ceiling removed. The top storey is the highest part of kind kStorey; without storey parts, the
-// highest upward FloorSurface below the eaves; without those, the eaves (lowest roof vertex, or the
-// top when there is no roof face) less 1.5 m, but never below 1.2 m above the building's base.
+// highest upward FloorSurface below the eaves; without those, the eaves less 1.5 m, but never below
+// 1.2 m above the building's base. The eaves are the lowest vertex of the roof faces open to the
+// sky (nothing of the building above them; furniture tops tagged as roofs do not count), or the
+// top when there is none.
 // NaN for a building without geometry.
 double auto_cut_height(const shape::Building& building);
 

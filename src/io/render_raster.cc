@@ -8,6 +8,8 @@ namespace {
 
 constexpr float kShadowStrength = 0.72F;  // ground in shadow keeps this fraction of its light
 constexpr float kShadowAlpha = 0.28F;     // opacity of a shadow on a transparent background
+constexpr int kDensityRadius = 3;  // output pixels around a sample, at least, for the density
+constexpr float kCrowded = 0.45F;  // ink density above which lines fade
 
 // Screen coordinates in 24.8 fixed point. Edge functions are then exact integers, so two triangles
 // sharing an edge agree on every pixel centre and inclusive tests leave no cracks between them.
@@ -168,8 +170,50 @@ void Framebuffer::draw_stroke(const Stroke& stroke, float radius, float bias) {
   }
 }
 
+// Ink strength per sample: 1 where lines are apart, fading where they crowd (docs/renderer.md,
+// "Outlines"). The density is the inked fraction of the square window `radius` output pixels
+// around the sample (a summed-area table); above kCrowded the strength falls as
+// (kCrowded / density)^2, so lines packed closer than the pixels (a 200-storey tower's floor
+// lines) become a light hatch instead of a black bar.
+std::vector<float> Framebuffer::ink_strength(int factor, int radius) const {
+  std::vector<float> strength;
+  if (std::none_of(ink_.begin(), ink_.end(), [](Ink ink) { return ink != Ink::kNone; })) {
+    return strength;
+  }
+  const std::size_t w = static_cast<std::size_t>(width_) + 1;
+  std::vector<std::uint32_t> sum(w * (static_cast<std::size_t>(height_) + 1), 0);
+  for (int y = 0; y < height_; ++y) {
+    std::uint32_t row = 0;
+    for (int x = 0; x < width_; ++x) {
+      row += ink_[index(x, y)] != Ink::kNone ? 1U : 0U;
+      sum[(static_cast<std::size_t>(y) + 1) * w + static_cast<std::size_t>(x) + 1] =
+          sum[static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x) + 1] + row;
+    }
+  }
+  const int r = radius * factor;
+  strength.assign(ink_.size(), 1.0F);
+  for (int y = 0; y < height_; ++y) {
+    const int y0 = std::max(0, y - r), y1 = std::min(height_, y + r + 1);
+    for (int x = 0; x < width_; ++x) {
+      if (ink_[index(x, y)] == Ink::kNone) continue;
+      const int x0 = std::max(0, x - r), x1 = std::min(width_, x + r + 1);
+      const auto at = [&](int xx, int yy) {
+        return sum[static_cast<std::size_t>(yy) * w + static_cast<std::size_t>(xx)];
+      };
+      const auto inked = static_cast<float>(at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0));
+      const float density = inked / static_cast<float>((x1 - x0) * (y1 - y0));
+      if (density > kCrowded) strength[index(x, y)] = (kCrowded / density) * (kCrowded / density);
+    }
+  }
+  return strength;
+}
+
 Image Framebuffer::resolve(int factor, const RenderOptions& options) const {
   static const SrgbTable srgb;
+  // The window grows with the line width, so an isolated line fills about a fifth of it.
+  const int radius =
+      std::max(kDensityRadius, static_cast<int>(std::ceil(2 * options.outline_width)));
+  const std::vector<float> strength = ink_strength(factor, radius);
   Image image;
   image.width = width_ / factor;
   image.height = height_ / factor;
@@ -190,20 +234,20 @@ Image Framebuffer::resolve(int factor, const RenderOptions& options) const {
           const Rgb* colour = &background;
           float a = transparent ? 0.0F : 1.0F;
           float light = 1.0F;
-          if (ink_[i] != Ink::kNone) {
-            colour = &outline;
-            a = 1.0F;
-          } else if (shade_[i] != 0) {
+          if (shade_[i] != 0) {
             colour = &shades_[shade_[i] - 1];
             a = 1.0F;
           } else if (shadow_[i] != 0) {
             light = transparent ? 0.0F : kShadowStrength;
             a = transparent ? kShadowAlpha : 1.0F;
           }
-          r += (*colour)[0] * light * a;
-          g += (*colour)[1] * light * a;
-          b += (*colour)[2] * light * a;
-          alpha += a;
+          // Ink over what lies under it, by its strength (premultiplied).
+          const float s = ink_[i] == Ink::kNone ? 0.0F : strength[i];
+          const float under = (1.0F - s) * light * a;
+          r += (*colour)[0] * under + outline[0] * s;
+          g += (*colour)[1] * under + outline[1] * s;
+          b += (*colour)[2] * under + outline[2] * s;
+          alpha += (1.0F - s) * a + s;
         }
       }
       const float inv = alpha > 0 ? 1.0F / alpha : 0.0F;

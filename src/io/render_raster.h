@@ -63,6 +63,9 @@ class Framebuffer {
   template <typename Visit>
   void scan(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c, Visit&& visit) const;
   bool visible(float x, float y, float depth) const;
+  // Per sample, the opacity its ink is drawn with, from the ink density within `radius` output
+  // pixels (empty when nothing is inked).
+  std::vector<float> ink_strength(int factor, int radius) const;
   void stamp(float x, float y, float radius, Ink ink);
 
   int width_;

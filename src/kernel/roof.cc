@@ -8,7 +8,11 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <span>
+#include <utility>
+#include <vector>
 
+#include "kernel/contract_loop.h"
 #include "kernel/roof_detail.h"
 
 namespace insula::kernel {
@@ -23,6 +27,11 @@ constexpr double kPi = 3.14159265358979323846;
 // Gable ends need the two neighbouring edges to run back from the end within this angle of
 // antiparallel, so the end closes a ridge (docs/kernel-roofs.md, "Gable").
 constexpr double kGableParallelDeg = 30;
+// Quadrilaterals whose opposite-edge sums differ by at most this fraction take the square rule for
+// their ridge (docs/kernel-roofs.md, "Square footprints").
+constexpr double kNearSquare = 0.05;
+// Skeleton nodes closer than this fraction of the footprint's extent are one node.
+constexpr double kNodeMerge = 1e-6;
 
 // A pyramid accepts a footprint whose outer ring turns clockwise by at most this much in total
 // (digitizing noise on nearly straight edges), docs/kernel-roofs.md, "Pyramid on concave input".
@@ -69,19 +78,15 @@ bool offset_contour(const Contour& c, const std::vector<double>& distances, Cont
   return is_simple_polygon(out.polygon());
 }
 
-// Seed 000 §4.6 hip faces become gables where a ridge ends: see docs/kernel-roofs.md.
-std::optional<GableEnd> gable_end(const Skeleton& s, const Contour& c,
-                                  const std::vector<std::uint32_t>& face_count, std::uint32_t e) {
-  const auto loop = s.face(e);
-  if (loop.size() != 3 || loop[2] < s.contour_count || face_count[loop[2]] != 3) {
-    return std::nullopt;
-  }
+// The ridge point of a gable on edge e: on e's line, equally far from the lines of the
+// neighbouring edges, strictly inside the edge. Nothing unless those neighbours run back from e
+// within kGableParallelDeg of antiparallel (the edge closes the end of a wing).
+std::optional<GableEnd> gable_apex(const Contour& c, std::uint32_t e) {
   const std::uint32_t prev = c.prev(e);
   const std::uint32_t next = c.next(e);
   const Vec2 dp = normalized(c.points[e] - c.points[prev]);
   const Vec2 dn = normalized(c.points[c.next(next)] - c.points[next]);
   if (dot(dp, dn) > -std::cos(kGableParallelDeg * kPi / 180)) return std::nullopt;
-  // The ridge point on edge e's line: equally far from the neighbouring edges' lines.
   const Vec2 a = c.points[e];
   const Vec2 b = c.points[next];
   const double f0 = edge_distance(c, prev, a) - edge_distance(c, next, a);
@@ -92,7 +97,119 @@ std::optional<GableEnd> gable_end(const Skeleton& s, const Contour& c,
   const Vec2 apex = a + (b - a) * t;
   const double time = edge_distance(c, prev, apex);
   if (!(time > 1e-9)) return std::nullopt;
-  return GableEnd{e, loop[2], apex, time};
+  return GableEnd{e, 0, apex, time};
+}
+
+// Groups of skeleton nodes contracted to one node, each represented by its lowest id.
+class NodeGroups {
+ public:
+  explicit NodeGroups(std::uint32_t n) : root_(n) {
+    for (std::uint32_t v = 0; v < n; ++v) root_[v] = v;
+  }
+  std::uint32_t find(std::uint32_t v) {
+    while (root_[v] != v) v = root_[v] = root_[root_[v]];
+    return v;
+  }
+  bool unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return false;
+    root_[std::max(a, b)] = std::min(a, b);
+    return true;
+  }
+
+ private:
+  std::vector<std::uint32_t> root_;
+};
+
+// Unites the nodes closer than `tolerance`; false when there are none.
+bool group_close_nodes(const Skeleton& s, double tolerance, NodeGroups& groups) {
+  std::vector<std::uint32_t> order;
+  for (auto v = s.contour_count; v < s.vertices.size(); ++v) order.push_back(v);
+  const auto x = [&](std::uint32_t v) { return s.vertices[v].position.x; };
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return std::make_pair(x(a), a) < std::make_pair(x(b), b);
+  });
+  bool merged = false;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    for (std::size_t j = i + 1; j < order.size() && x(order[j]) - x(order[i]) <= tolerance; ++j) {
+      const Vec2 d = s.vertices[order[j]].position - s.vertices[order[i]].position;
+      if (length(d) <= tolerance) merged = groups.unite(order[i], order[j]) || merged;
+    }
+  }
+  return merged;
+}
+
+// The face loops with every group contracted (kernel::contract_loop); false when a face would come
+// apart into several pieces or lose its contour edge.
+bool contract_faces(const Skeleton& s, NodeGroups& groups, std::vector<std::uint32_t>& indices,
+                    std::vector<std::uint32_t>& offsets) {
+  indices.clear();
+  offsets.assign(1, 0);
+  std::vector<std::uint32_t> keys;
+  for (std::size_t e = 0; e < s.face_count(); ++e) {
+    keys.clear();
+    for (std::uint32_t v : s.face(e)) keys.push_back(groups.find(v));
+    const auto pieces = contract_loop(keys);
+    if (pieces.size() != 1 || pieces[0][0] != 0 || pieces[0][1] != 1) return false;
+    for (std::uint32_t corner : pieces[0]) indices.push_back(keys[corner]);
+    offsets.push_back(static_cast<std::uint32_t>(indices.size()));
+  }
+  return true;
+}
+
+// Contracts skeleton nodes closer than `tolerance` to one node and rewrites the face loops, so no
+// roof face keeps an edge shorter than the tolerance: near-regular footprints give clusters of
+// nodes nanometres apart whose tiny ridges the wavefront can leave inconsistent, and which float32
+// output cannot tell apart (docs/kernel-roofs.md, "Near-coincident nodes"). Where a group pinches
+// the skeleton (its nodes are not joined by edges: every node-to-node edge must keep exactly one
+// use each way) the ends of the offending edges are contracted too, for a few passes; contour
+// vertices never move. If that does not give a clean skeleton, it is left as it was.
+void merge_close_nodes(Skeleton& s, double tolerance) {
+  NodeGroups groups(static_cast<std::uint32_t>(s.vertices.size()));
+  if (!group_close_nodes(s, tolerance, groups)) return;
+  std::vector<std::uint32_t> indices, offsets;
+  for (int pass = 0; pass < 8; ++pass) {
+    if (!contract_faces(s, groups, indices, offsets)) return;
+    EdgeUses uses;
+    for (std::size_t e = 0; e + 1 < offsets.size(); ++e) {
+      uses.add_loop(std::span(indices).subspan(offsets[e], offsets[e + 1] - offsets[e]));
+    }
+    bool clean = true;
+    for (const auto& [a, b] : uses.unpaired()) {
+      if (a < s.contour_count && b < s.contour_count) continue;  // the polygon's own edges
+      if (a < s.contour_count || b < s.contour_count) return;
+      clean = false;
+      groups.unite(a, b);
+    }
+    if (clean) {
+      s.face_indices = std::move(indices);
+      s.face_offsets = std::move(offsets);
+      return;
+    }
+  }
+}
+
+// The straight skeleton a roof is built on: near-coincident nodes merged within kNodeMerge of the
+// polygon's extent.
+std::optional<Skeleton> roof_skeleton(const Polygon& polygon) {
+  std::optional<Skeleton> s = interior_straight_skeleton(polygon);
+  if (!s) return s;
+  const Bounds2 box = bounds(polygon);
+  merge_close_nodes(*s, kNodeMerge * length(box.max - box.min));
+  return s;
+}
+
+// Seed 000 §4.6 hip faces become gables where a ridge ends: see docs/kernel-roofs.md.
+std::optional<GableEnd> gable_end(const Skeleton& s, const Contour& c,
+                                  const std::vector<std::uint32_t>& face_count, std::uint32_t e) {
+  const auto loop = s.face(e);
+  if (loop.size() != 3 || loop[2] < s.contour_count || face_count[loop[2]] != 3) {
+    return std::nullopt;
+  }
+  std::optional<GableEnd> end = gable_apex(c, e);
+  if (end) end->node = loop[2];
+  return end;
 }
 
 std::vector<GableEnd> find_gables(const Skeleton& s, const Contour& c) {
@@ -166,8 +283,52 @@ bool plan_pyramid(RoofPlan& plan) {
   return true;
 }
 
+// A quadrilateral without holes whose two pairs of opposite edges have nearly equal total
+// lengths. Exactly equal sums (Pitot) are the quadrilaterals with an incircle (square, rhombus,
+// kite), whose skeleton meets in one node and has no ridge to end in a gable; within the
+// tolerance the skeleton's ridge, if any, is too short for its direction to matter to a user.
+bool near_square(const Contour& c) {
+  if (c.ring_starts.size() != 2 || c.size() != 4) return false;
+  const auto edge = [&](std::uint32_t e) { return length(c.points[c.next(e)] - c.points[e]); };
+  const double a = edge(0) + edge(2);
+  const double b = edge(1) + edge(3);
+  return std::abs(a - b) <= kNearSquare * std::max(a, b);
+}
+
+// The two-slope gable over a quadrilateral with its ends at edges 1 and 3, so the ridge runs
+// parallel to edge 0 (docs/kernel-roofs.md, "Square footprints"), as a roof skeleton: faces 0 and 2
+// meet along the ridge between the two gable apexes, faces 1 and 3 are the gable triangles. Each
+// apex is equally far from the lines of edges 0 and 2, so lifting by time * slope keeps both
+// slopes planar.
+bool plan_quad_gable(RoofPlan& plan, double overhang) {
+  if (!plan_eave(plan, overhang, {1, 3})) return false;
+  const Contour& c = plan.eave;
+  std::optional<GableEnd> end1 = gable_apex(c, 1);
+  std::optional<GableEnd> end3 = gable_apex(c, 3);
+  if (!end1 || !end3) return false;
+  end1->node = 4;
+  end3->node = 5;
+  Skeleton s;
+  for (const Vec2& p : c.points) s.vertices.push_back({p, 0});
+  s.vertices.push_back({end1->apex, end1->time});
+  s.vertices.push_back({end3->apex, end3->time});
+  s.face_indices = {0, 1, 4, 5, 1, 2, 4, 2, 3, 5, 4, 3, 0, 5};
+  s.face_offsets = {0, 4, 7, 11, 14};
+  s.ring_starts = c.ring_starts;
+  s.contour_count = 4;
+  for (std::uint32_t e : {0U, 2U}) {
+    Polygon slope;
+    for (std::uint32_t v : s.face(e)) slope.outer.push_back(s.vertices[v].position);
+    if (!is_simple_polygon(slope)) return false;
+  }
+  plan.skeleton = std::move(s);
+  plan.gables = {*end1, *end3};
+  return true;
+}
+
 bool plan_gable(RoofPlan& plan, const RoofSpec& spec) {
-  auto base = interior_straight_skeleton(plan.footprint.polygon());
+  if (near_square(plan.footprint) && plan_quad_gable(plan, spec.overhang)) return true;
+  auto base = roof_skeleton(plan.footprint.polygon());
   if (!base) return false;
   std::vector<GableEnd> gables = find_gables(*base, plan.footprint);
   if (gables.empty()) return false;
@@ -182,7 +343,7 @@ bool plan_gable(RoofPlan& plan, const RoofSpec& spec) {
   // Gable ends stay flush with their wall; the eaves overhang. The skeleton of that eave polygon
   // must still end its ridges at the same edges.
   if (!plan_eave(plan, spec.overhang, edges)) return false;
-  plan.skeleton = interior_straight_skeleton(plan.eave.polygon());
+  plan.skeleton = roof_skeleton(plan.eave.polygon());
   if (!plan.skeleton) return false;
   plan.gables = find_gables(*plan.skeleton, plan.eave);
   std::erase_if(plan.gables, [&](const GableEnd& g) {
@@ -230,7 +391,7 @@ bool plan_type(RoofPlan& plan, const RoofSpec& spec, RoofType type, double overh
     plan.break_time = overhang + spec.mansard_break_height / plan.eave_slope;
   }
   if (uses_skeleton(type)) {
-    plan.skeleton = interior_straight_skeleton(plan.eave.polygon());
+    plan.skeleton = roof_skeleton(plan.eave.polygon());
     return plan.skeleton.has_value();
   }
   return true;

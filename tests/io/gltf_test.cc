@@ -14,40 +14,16 @@
 #define TINYGLTF_NO_INCLUDE_JSON
 #include <tiny_gltf.h>
 
+#include "gltf_read.h"
 #include "io/gltf_writer.h"
 #include "writer_fixtures.h"
 
 namespace insula::io {
 namespace {
 
+using testing::load_glb;
+using testing::read_accessor;
 using testing::test_scene;
-
-tinygltf::Model load_glb(const std::string& bytes) {
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string error;
-  std::string warning;
-  const bool ok = loader.LoadBinaryFromMemory(&model, &error, &warning,
-                                              reinterpret_cast<const unsigned char*>(bytes.data()),
-                                              static_cast<unsigned int>(bytes.size()));
-  EXPECT_TRUE(ok) << error;
-  EXPECT_EQ(error, "");
-  EXPECT_EQ(warning, "");
-  return model;
-}
-
-template <typename T>
-std::vector<T> read_accessor(const tinygltf::Model& model, int index) {
-  const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(index)];
-  const tinygltf::BufferView& view =
-      model.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
-  const auto& data = model.buffers[static_cast<std::size_t>(view.buffer)].data;
-  const std::size_t components = accessor.type == TINYGLTF_TYPE_VEC3 ? 3 : 1;
-  std::vector<T> values(accessor.count * components);
-  std::memcpy(values.data(), data.data() + view.byteOffset + accessor.byteOffset,
-              values.size() * sizeof(T));
-  return values;
-}
 
 const tinygltf::Node& node_named(const tinygltf::Model& model, const std::string& name) {
   for (const tinygltf::Node& node : model.nodes) {

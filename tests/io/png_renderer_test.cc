@@ -386,6 +386,34 @@ TEST(PngRenderer, CutawayDrawsSectionLinesAlongTheCut) {
   EXPECT_EQ(count(render(scene, options), is_ink), 0);
 }
 
+// Issue 12 item 8: a 200-storey tower (a box per storey) at 320 x 240 has its floor lines about a
+// pixel apart. Drawn at full strength they made a black bar; crowded lines fade to a light hatch,
+// while the outlines of a lone box stay fully dark.
+TEST(PngRenderer, LinesDenserThanPixelsFade) {
+  shape::Scene tower;
+  for (int storey = 0; storey < 200; ++storey) {
+    add_part(tower, prism(rect(0, 0, 20, 20), 3.0 * storey, 3.0 * (storey + 1)));
+  }
+  RenderOptions options;
+  options.width = 320;
+  options.height = 240;
+  options.shadows = false;
+  const Image image = render(tower, options);
+  const Rgba background = background_pixel(options);
+  int building = 0, dark = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const Rgba p = image.pixel(x, y);
+      if (p == background) continue;
+      ++building;
+      dark += is_ink(p) ? 1 : 0;
+    }
+  }
+  ASSERT_GT(building, 1000);
+  EXPECT_LT(dark, building / 10) << dark << " of " << building << " tower pixels are ink";
+  EXPECT_GT(count(render(unit_cube(), options), is_ink), 200);
+}
+
 TEST(PngRenderer, AutomaticCutHeight) {
   // No storeys, no floors: eaves less 1.5 m, but at least min(1.2 m, half the height) up.
   shape::Scene box = unit_cube();
@@ -408,6 +436,27 @@ TEST(PngRenderer, AutomaticCutHeight) {
   add_part(floors, std::move(shell));
   EXPECT_DOUBLE_EQ(auto_cut_height(floors.buildings[0]), 7.2);
   EXPECT_TRUE(std::isnan(auto_cut_height(shape::Building{})));
+}
+
+// Issue 12 item 8: furniture and stair steps whose tops are tagged RoofSurface (a Lua hotel's beds
+// at 0.2 m) lie under the floors above them: they are not the eaves, and the cut stays 1.2 m above
+// the top floor instead of dropping to 0.1 m, where only the ground slab showed.
+TEST(PngRenderer, AutomaticCutHeightIgnoresCoveredRoofFaces) {
+  shape::Scene hotel;
+  Mesh shell = prism(rect(0, 0, 8, 8), 0, 9);
+  for (double z : {3.0, 6.0}) {
+    const auto floor = shell.add_polygon(
+        std::vector<kernel::Vec3>{{0, 0, z}, {8, 0, z}, {8, 8, z}, {0, 8, z}}, {});
+    shell.tag(floor).semantic = SemanticClass::kFloorSurface;
+  }
+  add_part(hotel, std::move(shell));
+  for (double z : {0.0, 3.0, 6.0}) add_part(hotel, prism(rect(1, 1, 3, 2), z, z + 0.2));  // beds
+  EXPECT_DOUBLE_EQ(auto_cut_height(hotel.buildings[0]), 7.2);
+  // A porch roof beside the house is open to the sky: it is the eaves of a mass model.
+  shape::Scene porch;
+  add_part(porch, prism(rect(0, 0, 5, 5), 0, 9));
+  add_part(porch, prism(rect(5, 0, 7, 5), 0, 2.5));
+  EXPECT_DOUBLE_EQ(auto_cut_height(porch.buildings[0]), 1.2);
 }
 
 }  // namespace

@@ -111,6 +111,36 @@ TEST(Roof, GableOnUShapeEndsTheTwoArms) {
   }
 }
 
+// Issue 12 item 6: quadrilaterals with an incircle (square, rhombus) have no ridge in their
+// skeleton; they get a gable whose ridge runs parallel to the first edge, from mid-end to mid-end.
+TEST(Roof, RhombusGableRidgeJoinsTheMidpointsOfEdgesOneAndThree) {
+  RoofSpec spec;
+  spec.type = RoofType::kGable;
+  spec.pitch_deg = 40;
+  const Polygon rhombus{{{0, 0}, {10, 0}, {16, 8}, {6, 8}}, {}};
+  const RoofResult r = build_roof(rhombus, spec, 3);
+  ASSERT_EQ(r.status, RoofStatus::kOk) << r.message;
+  EXPECT_EQ(r.built, RoofType::kGable);
+  const auto c = counts(r.mesh);
+  EXPECT_EQ(c.at(SemanticClass::kRoofSurface), 2);
+  EXPECT_EQ(c.at(SemanticClass::kWallSurface), 2);
+  const double h = 4 * std::tan(40 * kPi / 180);  // half the distance between edges 0 and 2
+  int apexes = 0;
+  for (const Vec3& v : r.mesh.positions()) {
+    if (v.z < 3 + 1e-9) continue;
+    EXPECT_NEAR(v.z, 3 + h, 1e-9);
+    EXPECT_NEAR(v.y, 4, 1e-9);
+    EXPECT_TRUE(std::abs(v.x - 3) < 1e-9 || std::abs(v.x - 13) < 1e-9) << v.x;
+    ++apexes;
+  }
+  EXPECT_EQ(apexes, 2);
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    if (r.mesh.tag(f).semantic != SemanticClass::kRoofSurface) continue;
+    EXPECT_NEAR(std::acos(std::abs(face_normal(r.mesh, f).z)) * 180 / kPi, 40, 1e-9);
+  }
+  expect_eaves_on_footprint(r, rhombus, 3);
+}
+
 TEST(Roof, OverhangAddsSoffitsAndLowersEaves) {
   RoofSpec spec;
   spec.overhang = 0.5;

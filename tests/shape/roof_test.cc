@@ -31,6 +31,26 @@ TEST(Roof, GableOverAFootprintRisesAlongScopeY) {
   EXPECT_NEAR(roof_area, 12 * 8 / std::cos(std::numbers::pi / 4), 1e-6);
 }
 
+// CGA roofGable reaches the kernel's gable: a square footprint gets two slopes and two gable
+// walls, not a hip with a warning (issue 12 item 6).
+TEST(Roof, GableOverASquareFootprintIsAGable) {
+  ShapeTree tree;
+  const RootResult root = tree.create_root({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}});
+  const OpResult r =
+      registry().run(tree, root.id, "roof", {{"type", std::string("gable")}, {"pitch", 45.0}});
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(r.warning, "");
+  const kernel::Mesh& mesh = *tree[r.children[0]].mesh;
+  int slopes = 0, gables = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    slopes += mesh.tag(f).semantic == SemanticClass::kRoofSurface ? 1 : 0;
+    gables += mesh.tag(f).semantic == SemanticClass::kWallSurface ? 1 : 0;
+  }
+  EXPECT_EQ(slopes, 2);
+  EXPECT_EQ(gables, 2);
+  EXPECT_NEAR(tree[r.children[0]].scope.size.y, 5, 1e-9);
+}
+
 TEST(Roof, HipOnTheTopFaceOfAMass) {
   ShapeTree tree;
   const RootResult root = tree.create_root({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}});

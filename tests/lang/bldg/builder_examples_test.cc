@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -63,18 +64,39 @@ void expect_golden(const std::string& name, const std::string& text) {
       << "golden " << path << " (INSULA_UPDATE_GOLDEN=1 regenerates it)";
 }
 
+struct Built {
+  FloorPlan plan;
+  BuildResult result;
+};
+
+// parse_building -> make_floor_plan -> build_building with the default rules; nothing (and a test
+// failure) when a stage fails.
+std::optional<Built> build_source(const base::Source& source) {
+  const base::Result<Building> building = parse_building(source);
+  if (!building.ok()) {
+    ADD_FAILURE() << source.name() << " does not parse";
+    return std::nullopt;
+  }
+  const Restrictions rules;
+  const base::Result<FloorPlan> plan = make_floor_plan(building.value(), rules);
+  if (!plan.ok()) {
+    ADD_FAILURE() << source.name() << " has no floor plan";
+    return std::nullopt;
+  }
+  BuildResult result = build_building(building.value(), plan.value(), rules);
+  return Built{plan.value(), std::move(result)};
+}
+
 TEST(BuilderExamples, BuildClosedAndMatchTheirGoldens) {
   const auto files = testing::files_in(examples_dir(), ".bldg");
   ASSERT_GE(files.size(), 9U);
   for (const std::filesystem::path& file : files) {
     SCOPED_TRACE(file.string());
-    const base::Source source(file.string(), testing::read_file(file));
-    const base::Result<Building> building = parse_building(source);
-    ASSERT_TRUE(building.ok());
-    const Restrictions rules;
-    const base::Result<FloorPlan> plan = make_floor_plan(building.value(), rules);
-    ASSERT_TRUE(plan.ok());
-    const BuildResult r = build_building(building.value(), plan.value(), rules);
+    const std::optional<Built> built =
+        build_source(base::Source(file.string(), testing::read_file(file)));
+    ASSERT_TRUE(built.has_value());
+    const FloorPlan* plan = &built->plan;
+    const BuildResult& r = built->result;
     EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
     std::size_t rooms = 0;
     for (const PlanStorey& s : plan->storeys) rooms += s.rooms.size();
@@ -145,6 +167,42 @@ TEST(BuilderExamples, OnAnLShapedLot) {
       for (const PlanDoor& d : s.entrances) EXPECT_EQ(d.width, stated(d, 1.0)) << d.symbol;
     }
   }
+}
+
+// A square house with a Gable roof gets a gable, not a hip (issue 12 item 6): the roof solid has
+// two slopes, and its ridge runs parallel to the outline's first edge (along x).
+TEST(BuilderExamples, SquareGableHouseHasTwoSlopes) {
+  const std::optional<Built> built = build_source(base::Source(
+      "square.bldg", R"(house -> building("Square", [(0, 0), (9, 0), (9, 9), (0, 9)]) : {body}
+body -> buildingpart(Gable, 3) : {ground, e}
+ground -> floor(3, horizontal) : {hall, living}
+hall -> room(hall, small, 4, 1)
+living -> room(living, big, 4, 2)
+e -> entrance(hall, 1.2)
+)"));
+  ASSERT_TRUE(built.has_value());
+  const BuildResult& r = built->result;
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+  int slopes = 0;
+  double ridge_y_min = 1e300, ridge_y_max = -1e300;
+  for (const shape::Part& p : r.building.parts) {
+    if (p.name.rfind("roof", 0) != 0) continue;
+    const kernel::MeshCheck c = kernel::check(p.mesh);
+    EXPECT_TRUE(c.closed && c.oriented && c.non_manifold_edges == 0) << p.name;
+    for (std::size_t f = 0; f < p.mesh.face_count(); ++f) {
+      if (p.mesh.tag(f).semantic == kernel::SemanticClass::kRoofSurface &&
+          kernel::face_normal(p.mesh, f).z > 0.1) {
+        ++slopes;
+      }
+    }
+    for (const kernel::Vec3& v : p.mesh.positions()) {
+      if (std::abs(v.z - p.mesh.bounds().max.z) > 1e-9) continue;
+      ridge_y_min = std::min(ridge_y_min, v.y);
+      ridge_y_max = std::max(ridge_y_max, v.y);
+    }
+  }
+  EXPECT_EQ(slopes, 2);
+  EXPECT_NEAR(ridge_y_min, ridge_y_max, 1e-9);  // a ridge along x
 }
 
 }  // namespace

@@ -1,0 +1,72 @@
+// Float32 output of a kernel mesh without breaking its shell (issue 12 item 10). glTF stores
+// positions as float32: distinct vertices closer than float32 resolves at their coordinates (0.24
+// mm at 3 km from the scene origin; the near-coincident skeleton nodes of a fine roof) land on one
+// position, and a closed, oriented shell then gets degenerate triangles and edges used by four
+// triangles once a reader welds by position. Float32Weld decides which vertices are written as one
+// and triangulates the faces over them so that the written triangles stay closed and consistently
+// oriented wherever the mesh was.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "io/triangulated.h"
+#include "kernel/mesh.h"
+
+namespace insula::io {
+
+using Float3 = std::array<float, 3>;
+
+// glTF's Y-up frame: (x, y, z) Z-up local meters -> (x, z, -y) as float32.
+Float3 to_y_up(kernel::Vec3 p);
+
+class Float32Weld {
+ public:
+  // Groups the vertices of `mesh` written as one. Returns false, with every vertex its own
+  // representative, when no two vertices at different positions round to one float32 position
+  // (the usual case: the caller triangulates as it always does). Otherwise vertices at one
+  // float32 position form a group, every face is contracted over the groups
+  // (kernel::contract_loop) and its pieces triangulated; if the mesh is closed and consistently
+  // oriented (vertices at identical positions taken as one), the two end points of every
+  // triangle edge used more than once in a direction or without its reverse are then grouped too,
+  // and the faces triangulated again, until no such edge is left (at most kMaxPasses passes).
+  bool run(const kernel::Mesh& mesh);
+
+  bool active() const { return active_; }
+  // The vertex whose float32 position `vertex` is written at (itself unless grouped).
+  std::uint32_t representative(std::uint32_t vertex) const { return parent_[vertex]; }
+  // When active: the triangles of face `face`, as representative vertex ids, each wound like the
+  // face; empty when the whole face contracted away.
+  std::span<const std::array<std::uint32_t, 3>> triangles(std::size_t face) const {
+    return std::span(triangles_).subspan(offsets_[face], offsets_[face + 1] - offsets_[face]);
+  }
+
+ private:
+  static constexpr int kMaxPasses = 8;
+
+  std::uint32_t find(std::uint32_t v);
+  bool unite(std::uint32_t a, std::uint32_t b);
+  void flatten();
+  bool closed_and_oriented(const kernel::Mesh& mesh) const;
+  void triangulate_all(const kernel::Mesh& mesh);
+  void triangulate_piece(const kernel::Mesh& mesh, std::size_t face,
+                         std::span<const std::uint32_t> corners);
+  // Groups the end points of every triangle edge used wrongly; false when there is none.
+  bool unite_bad_edges();
+
+  std::vector<std::uint32_t> parent_;
+  std::vector<std::uint32_t> same_;  // per vertex, the first vertex at its exact position
+  std::vector<std::array<std::uint32_t, 3>> triangles_;
+  std::vector<std::size_t> offsets_;  // face f's triangles: [offsets_[f], offsets_[f + 1])
+  bool active_ = false;
+  // Scratch reused from face to face.
+  std::vector<std::uint32_t> keys_;
+  std::vector<std::uint32_t> ids_;
+  std::vector<CornerTriangle> corner_triangles_;
+  kernel::Mesh piece_;
+  FaceTriangulator triangulator_;
+};
+
+}  // namespace insula::io
