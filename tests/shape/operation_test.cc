@@ -79,7 +79,8 @@ TEST(Registry, RunReportsUnknownOperationsAndLeavesTreeOnFailure) {
 // tests/lang/frontends/operations_doc_test.cc; here, the table of spellings itself.
 TEST(Registry, ReferencePageListsEachFrontEndsSpellings) {
   const FrontEndSpellings front_ends[] = {
-      {"A", [](const Operation& op) {
+      {"A",
+       [](const Operation& op) {
          return op.name == "roof" ? std::vector<std::string>{"r|1", "r2"}
                                   : std::vector<std::string>{};
        }},

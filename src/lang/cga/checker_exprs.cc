@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "lang/cga/functions.h"
 #include "lang/cga/checker_internal.h"
+#include "lang/cga/functions.h"
 
 namespace insula::lang::cga::detail {
 namespace {
