@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <set>
 #include <string>
 
@@ -32,6 +34,16 @@ std::string number_text(double value) {
     if (text.back() == '.') text.pop_back();
   }
   return text;
+}
+
+// A declared bound in a message: the short form unless it would hide the value (a minimum of
+// 1e-09 is not "0").
+std::string bound_text(double value) {
+  const std::string text = number_text(value);
+  if (std::strtod(text.c_str(), nullptr) == value) return text;
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
 }
 
 std::string plural(std::size_t count, std::string_view word) {
@@ -523,11 +535,11 @@ void Checker::check_registry_ranges(const Item& item, const OperationInfo& info)
     if (!low && !high) continue;
     std::string range;
     if (param->min && param->max) {
-      range = "in [" + number_text(*param->min) + ", " + number_text(*param->max) + "]";
+      range = "in [" + bound_text(*param->min) + ", " + bound_text(*param->max) + "]";
     } else if (param->min) {
-      range = ">= " + number_text(*param->min);
+      range = ">= " + bound_text(*param->min);
     } else {
-      range = "<= " + number_text(*param->max);
+      range = "<= " + bound_text(*param->max);
     }
     error("CGA319",
           "argument " + std::to_string(i + 1) + " of " + quoted(item.name) + " (" + param->name +
