@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 ./scripts/setup.sh
 ./scripts/build.sh insula
 mkdir -p out
-./build/src/apps/cli/insula mass examples/town.geojson \
+./build/insula mass examples/town.geojson \
   -o out/town.glb -o out/town.obj -o out/town.city.json -o out/town.svg -o out/town.png \
   --report out/town.report.json
 echo "outputs are in $(pwd)/out/ (report: out/town.report.json)"

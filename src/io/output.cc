@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "io/atomic_file.h"
 #include "io/cityjson_writer.h"
 #include "io/gltf_writer.h"
 #include "io/obj_writer.h"
@@ -54,63 +55,77 @@ std::vector<std::string> files_of_output(const std::string& path) {
 
 namespace {
 
-// Existing files moved aside while outputs are written, restored if the transaction fails.
-class Backup {
- public:
-  std::string move_aside(const std::string& path) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) return {};
-    const std::string aside = path + ".insula-backup";
-    std::filesystem::rename(path, aside, error);
-    if (error) return path + ": cannot move the existing file aside: " + error.message();
-    moved_.push_back(path);
-    return {};
-  }
-  void restore() {
-    std::error_code ignored;
-    for (const std::string& path : moved_)
-      std::filesystem::rename(path + ".insula-backup", path, ignored);
-    moved_.clear();
-  }
-  void discard() {
-    std::error_code ignored;
-    for (const std::string& path : moved_)
-      std::filesystem::remove(path + ".insula-backup", ignored);
-    moved_.clear();
-  }
-
- private:
-  std::vector<std::string> moved_;
-};
+std::string backup_of(const std::string& path) {
+  return path + ".insula-backup";
+}
 
 }  // namespace
 
-std::string write_outputs(const shape::Scene& scene, const std::vector<std::string>& paths,
-                          const OutputOptions& options,
-                          const std::function<void(std::size_t)>& on_written) {
-  Backup backup;
-  std::vector<std::string> written;
-  std::string error;
-  for (std::size_t i = 0; i < paths.size() && error.empty(); ++i) {
-    for (const std::string& file : files_of_output(paths[i])) {
-      if (error.empty()) error = backup.move_aside(file);
+OutputTransaction::OutputTransaction(std::function<bool()> cancelled)
+    : cancelled_(std::move(cancelled)) {}
+
+OutputTransaction::~OutputTransaction() {
+  if (!finished_) roll_back();
+}
+
+std::string OutputTransaction::cancelled_error() const {
+  return cancelled_ && cancelled_() ? "interrupted" : "";
+}
+
+// Makes the files free for this transaction: an existing file that is not already ours is moved
+// aside first, and only then the path counts as ours, so a rollback never removes a user's file.
+std::string OutputTransaction::claim(const std::vector<std::string>& files) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  for (const std::string& file : files) {
+    if (std::string error = cancelled_error(); !error.empty()) return error;
+    if (created_.contains(file)) continue;
+    std::error_code error;
+    if (std::filesystem::exists(file, error)) {
+      std::filesystem::rename(file, backup_of(file), error);
+      if (error) return file + ": cannot move the existing file aside: " + error.message();
+      moved_.push_back(file);
     }
-    if (error.empty()) error = write_scene(scene, paths[i], options);
-    if (error.empty()) {
-      written.push_back(paths[i]);
-      if (on_written) on_written(i);
-    }
+    created_.insert(file);
   }
-  if (error.empty()) {
-    backup.discard();
-    return {};
+  return {};
+}
+
+std::string OutputTransaction::write_scene(const shape::Scene& scene, const std::string& path,
+                                           const OutputOptions& options) {
+  if (std::string error = claim(files_of_output(path)); !error.empty()) return error;
+  if (std::string error = io::write_scene(scene, path, options); !error.empty()) return error;
+  return cancelled_error();
+}
+
+std::string OutputTransaction::write_text(const std::string& path, std::string_view content) {
+  if (std::string error = claim({path}); !error.empty()) return error;
+  if (std::string error = write_file_atomically(path, content); !error.empty()) return error;
+  return cancelled_error();
+}
+
+std::string OutputTransaction::commit() {
+  if (std::string error = cancelled_error(); !error.empty()) {
+    roll_back();
+    return error;
   }
+  const std::lock_guard<std::mutex> lock(mutex_);
+  // The commit point: from here on the new files stay, whatever arrives.
+  finished_ = true;
   std::error_code ignored;
-  for (const std::string& path : written) {
-    for (const std::string& file : files_of_output(path)) std::filesystem::remove(file, ignored);
-  }
-  backup.restore();
-  return error;
+  for (const std::string& path : moved_) std::filesystem::remove(backup_of(path), ignored);
+  moved_.clear();
+  created_.clear();
+  return {};
+}
+
+void OutputTransaction::roll_back() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  finished_ = true;
+  std::error_code ignored;
+  for (const std::string& path : created_) std::filesystem::remove(path, ignored);
+  for (const std::string& path : moved_) std::filesystem::rename(backup_of(path), path, ignored);
+  moved_.clear();
+  created_.clear();
 }
 
 std::string check_output_directories(const std::vector<std::string>& paths) {

@@ -2,7 +2,10 @@
 #pragma once
 
 #include <functional>
+#include <mutex>
+#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/png_renderer.h"
@@ -27,13 +30,39 @@ std::string write_scene(const shape::Scene& scene, const std::string& path,
 // The files a path's writer creates: the path itself, and for OBJ its .mtl beside it.
 std::vector<std::string> files_of_output(const std::string& path);
 
-// Writes several outputs as one transaction: files that already exist are first moved aside, and
-// when any write fails, everything this call wrote is removed and the moved files are put back, so
-// a failed run neither leaves partial output nor loses the user's earlier files. `on_written` is
-// called after each output with its index (for timings). Empty string on success.
-std::string write_outputs(const shape::Scene& scene, const std::vector<std::string>& paths,
-                          const OutputOptions& options,
-                          const std::function<void(std::size_t)>& on_written = {});
+// Writes several files as one transaction: a file that already exists is first moved aside (to
+// PATH.insula-backup), and roll_back() removes everything the transaction wrote and puts the moved
+// files back, so a failed or interrupted run neither leaves partial output nor loses the user's
+// earlier files; commit() drops the backups. Every step asks `cancelled` first (an interruption,
+// apps/cli/interrupt.h) and fails when it answers true; commit() asks last, so a run cancelled at
+// any moment before the commit point keeps the old files. The writes may come from several threads.
+// Destroying an uncommitted transaction rolls it back.
+class OutputTransaction {
+ public:
+  explicit OutputTransaction(std::function<bool()> cancelled = {});
+  ~OutputTransaction();
+  OutputTransaction(const OutputTransaction&) = delete;
+  OutputTransaction& operator=(const OutputTransaction&) = delete;
+
+  // The scene in the path's format (with an OBJ's .mtl). Empty string on success, else the reason.
+  std::string write_scene(const shape::Scene& scene, const std::string& path,
+                          const OutputOptions& options = {});
+  // A text file (a report, a grammar). Empty string on success, else the reason.
+  std::string write_text(const std::string& path, std::string_view content);
+  // Keeps what was written. Empty string on success; when cancelled, rolls back and says so.
+  std::string commit();
+  void roll_back();
+
+ private:
+  std::string claim(const std::vector<std::string>& files);
+  std::string cancelled_error() const;
+
+  std::function<bool()> cancelled_;
+  std::mutex mutex_;                // the lists below
+  std::vector<std::string> moved_;  // the user's files, moved aside
+  std::set<std::string> created_;   // what this transaction writes (paths now free for it)
+  bool finished_ = false;
+};
 // Checks before any work that every output's directory exists; empty string when it does.
 std::string check_output_directories(const std::vector<std::string>& paths);
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "kernel/mesh.h"
+#include "kernel/planar.h"
 #include "kernel/polygon.h"
 #include "kernel/triangulate.h"
 
@@ -99,21 +100,6 @@ int dominant_axis(Vec3 n) {
   return ax >= ay ? 0 : 1;
 }
 
-// True when every turn of the projected loop has the same sign (collinear turns allowed), so a
-// fan from the first vertex covers it exactly.
-bool convex(std::span<const Vec2> ring) {
-  const std::size_t n = ring.size();
-  int sign = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
-    const double turn = kernel::cross(b - a, c - b);
-    const int s = turn > 0 ? 1 : (turn < 0 ? -1 : 0);
-    if (s != 0 && sign != 0 && s != sign) return false;
-    if (s != 0) sign = s;
-  }
-  return true;
-}
-
 // Triangles of one planar face: a fan when the loop is convex, else kernel::triangulate on the
 // dominant-plane projection (a fan would cover the notch of a concave face).
 void triangulate(const Mesh& mesh, std::size_t face, Vec3 normal, std::vector<Triangle>& out) {
@@ -122,7 +108,8 @@ void triangulate(const Mesh& mesh, std::size_t face, Vec3 normal, std::vector<Tr
   kernel::Polygon polygon;
   polygon.outer.reserve(loop.size());
   for (std::uint32_t v : loop) polygon.outer.push_back(to_plane(mesh.position(v), axis));
-  if (loop.size() == 3 || convex(polygon.outer)) {
+  // A fan from the first vertex covers a convex loop exactly; the projection may mirror it.
+  if (loop.size() == 3 || kernel::is_convex(polygon.outer, kernel::Winding::kEither)) {
     for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
       out.push_back({{mesh.position(loop[0]), mesh.position(loop[i]), mesh.position(loop[i + 1])}});
     }

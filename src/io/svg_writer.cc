@@ -9,6 +9,7 @@
 
 #include "io/atomic_file.h"
 #include "io/obj_writer.h"
+#include "kernel/planar.h"
 #include "kernel/polygon.h"
 #include "shape/part_mesh.h"
 
@@ -119,9 +120,7 @@ Cell make_cell(const Footprint& footprint, Vec2 centre, double half) {
 
 kernel::Bounds2 bounds_of(const std::vector<Ring2>& rings) {
   kernel::Bounds2 b;
-  for (const Ring2& ring : rings) {
-    for (Vec2 p : ring) b.add(p);
-  }
+  for (const Ring2& ring : rings) kernel::add(b, ring);
   return b;
 }
 

@@ -4,6 +4,7 @@
 #include <set>
 #include <utility>
 
+#include "kernel/planar.h"
 #include "kernel/polygon.h"
 #include "kernel/triangulate.h"
 
@@ -22,17 +23,6 @@ Vec2 project(Vec3 p, Vec3 normal) {
   if (az >= ax && az >= ay) return normal.z > 0 ? Vec2{p.x, p.y} : Vec2{p.y, p.x};
   if (ax >= ay) return normal.x > 0 ? Vec2{p.y, p.z} : Vec2{p.z, p.y};
   return normal.y > 0 ? Vec2{p.z, p.x} : Vec2{p.x, p.z};
-}
-
-bool is_convex(const kernel::Ring& ring) {
-  const std::size_t n = ring.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 a = ring[i];
-    const Vec2 b = ring[(i + 1) % n];
-    const Vec2 c = ring[(i + 2) % n];
-    if (kernel::cross(b - a, c - b) < 0) return false;
-  }
-  return true;
 }
 
 // Sine of the smallest turn a strictly convex corner must make. Corners closer to straight (a
@@ -123,7 +113,7 @@ bool FaceTriangulator::triangulate(const kernel::Mesh& mesh, std::size_t face, V
   }
   kernel::Triangulation result;
   if (kernel::triangulate(polygon_, result) && map_back(ring, result, triangles)) return true;
-  if (!is_convex(ring)) return false;
+  if (!kernel::is_convex(ring)) return false;
   append_fan(n, triangles);
   return true;
 }

@@ -9,6 +9,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "base/union_find.h"
+
 namespace insula::kernel {
 
 namespace {
@@ -220,24 +222,20 @@ HullStatus HullBuilder::build() {
 
 // Union of neighbouring faces whose planes agree within the tolerance; returns each face's root.
 std::vector<std::uint32_t> HullBuilder::coplanar_groups() const {
-  std::vector<std::uint32_t> parent(faces_.size());
-  std::iota(parent.begin(), parent.end(), 0U);
-  const auto root = [&](std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  base::UnionFind groups(faces_.size());
   for (std::uint32_t f = 0; f < faces_.size(); ++f) {
     if (!faces_[f].alive) continue;
     for (int i = 0; i < 3; ++i) {
       const HullFace& g = faces_[faces_[f].adj[i]];
       const std::uint32_t apex = faces_[f].v[(i + 2) % 3];
       if (dot(g.normal, faces_[f].normal) > 0 && std::abs(distance(g, apex)) <= eps_) {
-        parent[root(f)] = root(faces_[f].adj[i]);
+        groups.unite(f, faces_[f].adj[i]);
       }
     }
   }
-  for (std::uint32_t f = 0; f < faces_.size(); ++f) parent[f] = root(f);
-  return parent;
+  std::vector<std::uint32_t> root(faces_.size());
+  for (std::uint32_t f = 0; f < faces_.size(); ++f) root[f] = groups.find(f);
+  return root;
 }
 
 Mesh HullBuilder::to_mesh(const HullOptions& options) const {

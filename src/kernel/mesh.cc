@@ -4,8 +4,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
 #include <unordered_map>
+
+#include "base/union_find.h"
 
 namespace insula::kernel {
 
@@ -75,11 +76,6 @@ Vec3 newell(const Mesh& mesh, std::size_t face) {
 
 std::uint64_t edge_key(std::uint32_t from, std::uint32_t to) {
   return (static_cast<std::uint64_t>(from) << 32) | to;
-}
-
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t v) {
-  while (parent[v] != v) v = parent[v] = parent[parent[v]];
-  return v;
 }
 
 }  // namespace
@@ -166,8 +162,7 @@ MeshCheck check(const Mesh& mesh) {
   std::unordered_map<std::uint64_t, int> directed;
   directed.reserve(mesh.face_count() * 8);
   std::vector<std::uint8_t> used(mesh.vertex_count(), 0);
-  std::vector<std::uint32_t> parent(mesh.vertex_count());
-  std::iota(parent.begin(), parent.end(), 0U);
+  base::UnionFind components(mesh.vertex_count());
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const auto loop = mesh.face(f);
     for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -175,7 +170,7 @@ MeshCheck check(const Mesh& mesh) {
       const std::uint32_t b = loop[(i + 1) % loop.size()];
       ++directed[edge_key(a, b)];
       used[a] = 1;
-      parent[find_root(parent, a)] = find_root(parent, b);
+      components.unite(a, b);
     }
   }
   bool oriented = true;
@@ -194,7 +189,7 @@ MeshCheck check(const Mesh& mesh) {
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
     if (!used[v]) continue;
     ++vertices;
-    if (find_root(parent, v) == v) ++result.components;
+    if (components.find(v) == v) ++result.components;
   }
   result.oriented = oriented;
   result.closed = result.boundary_edges == 0 && result.non_manifold_edges == 0 && oriented;

@@ -17,6 +17,7 @@
 #include <tuple>
 #include <vector>
 
+#include "base/union_find.h"
 #include "kernel/polygon.h"
 
 namespace insula::kernel {
@@ -415,19 +416,12 @@ class FindingReporter {
   // share a point node and form none.
   void report_touch_loops() {
     std::vector<Vec2> points;
-    std::vector<int> parent(rings_.size());
-    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
-    auto find = [&](int x) {
-      while (parent[std::size_t(x)] != x)
-        x = parent[std::size_t(x)] = parent[std::size_t(parent[std::size_t(x)])];
-      return x;
-    };
+    base::UnionFind loops(rings_.size());
     auto point_node = [&](Vec2 p) {
       for (std::size_t i = 0; i < points.size(); ++i)
         if (length(points[i] - p) <= tol_) return int(rings_.size() + i);
       points.push_back(p);
-      parent.push_back(int(parent.size()));
-      return int(parent.size() - 1);
+      return int(loops.add());
     };
     std::vector<std::pair<int, int>> linked;  // (ring, point node) edges already in the graph
     for (const auto& [pair, touch] : touches_) {
@@ -436,11 +430,7 @@ class FindingReporter {
       for (int ring : {pair.first, pair.second}) {
         if (std::find(linked.begin(), linked.end(), std::pair{ring, pt}) != linked.end()) continue;
         linked.emplace_back(ring, pt);
-        const int a = find(ring), b = find(pt);
-        if (a != b) {
-          parent[std::size_t(a)] = b;
-          continue;
-        }
+        if (loops.unite(std::uint32_t(ring), std::uint32_t(pt))) continue;
         const auto [lo, hi] = pair;
         issues_.push_back(make_issue(
             PolygonIssueKind::kRingsIntersect, rings_[hi].id, -1, false,

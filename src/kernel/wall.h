@@ -142,14 +142,6 @@ class WallWorkspace {
   struct Buffers;  // defined in wall.cc
   Buffers& buffers() { return *buffers_; }
 
-  // On by default: a plain wall (rectangular outline listed counter-clockwise from its lower-left
-  // corner, rectangular openings clear of it and side by side along u) gets its pieces directly
-  // instead of from the sweep, the same mesh either way. Off, every wall takes the general path
-  // (tests compare the two).
-  void set_plain_shortcut(bool enabled);
-  // How many walls built with this workspace took that shortcut.
-  std::size_t plain_walls() const;
-
  private:
   std::unique_ptr<Buffers> buffers_;
 };

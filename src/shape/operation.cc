@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <initializer_list>
 
+#include "shape/building_ops.h"
 #include "shape/component_ops.h"
 #include "shape/ops.h"
 
@@ -336,7 +337,8 @@ const Registry& registry() {
     std::vector<Operation> all;
     for (auto* family :
          {&extrude_operations, &split_operations, &comp_operations, &transform_operations,
-          &offset_operations, &roof_operations, &insert_operations, &component_operations}) {
+          &offset_operations, &roof_operations, &insert_operations, &component_operations,
+          &stair_operations, &frame_operations, &slab_operations}) {
       for (Operation& op : (*family)()) all.push_back(std::move(op));
     }
     Amendments& a = amendments();

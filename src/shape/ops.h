@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "kernel/mesh.h"
@@ -94,9 +95,15 @@ enum class EdgeSelector : std::uint8_t { kFront, kBack, kLeft, kRight, kSide, kA
 OpResult setback(ShapeTree& tree, ShapeId id, double distance, EdgeSelector edges);
 
 // --- roof (ops_roof.cc)
+// How the roof is finished beyond the kernel spec (the .bldg builder's roofs: kernel roof_solid.h).
+struct RoofForm {
+  double height = 0;     // > 0: the top lies this far above the eave (heights scaled); 0: by pitch
+  bool closed = false;   // a closed solid: gable ends and bottom closed, a compluvium through it
+  double thickness = 0;  // flat roofs: a slab this thick (a closed solid); 0: the single face
+};
 // A roof over a flat shape's outline (kernel roof.h), eave in the shape's plane. The child's scope
 // is oriented like an extrusion (y = the old normal) and fitted to the roof.
-OpResult roof(ShapeTree& tree, ShapeId id, const kernel::RoofSpec& spec);
+OpResult roof(ShapeTree& tree, ShapeId id, const kernel::RoofSpec& spec, const RoofForm& form = {});
 
 // --- insert (ops_insert.cc)
 // A child in the same scope whose geometry is `asset` (asset space = scope space: y up) with its
@@ -127,6 +134,10 @@ struct Refit {
 };
 Refit refit(const Scope& parent, const kernel::Mesh& mesh, kernel::Vec3 x, kernel::Vec3 y,
             kernel::Vec3 z);
+// The end of an operation that replaces `id` by one solid: `mesh` (parent scope space) refitted
+// with the axes x, y, z as the only child (piece 0), `id` finished, `warning` passed on.
+OpResult replace_with(ShapeTree& tree, ShapeId id, const kernel::Mesh& mesh, kernel::Vec3 x,
+                      kernel::Vec3 y, kernel::Vec3 z, std::string warning = {});
 // Marks `id` inactive (it was replaced by its children) and returns `result`.
 OpResult finish(ShapeTree& tree, ShapeId id, OpResult result);
 

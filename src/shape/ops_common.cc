@@ -124,6 +124,15 @@ Refit refit(const Scope& parent, const Mesh& mesh, Vec3 x, Vec3 y, Vec3 z) {
   return out;
 }
 
+OpResult replace_with(ShapeTree& tree, ShapeId id, const Mesh& mesh, Vec3 x, Vec3 y, Vec3 z,
+                      std::string warning) {
+  Refit child = refit(tree[id].scope, mesh, x, y, z);
+  OpResult result;
+  result.add(tree.add_child(id, child.scope, std::make_shared<Mesh>(std::move(child.mesh))), 0);
+  result.warning = std::move(warning);
+  return finish(tree, id, std::move(result));
+}
+
 OpResult finish(ShapeTree& tree, ShapeId id, OpResult result) {
   if (result.ok() && !result.children.empty()) tree.deactivate(id);
   return result;

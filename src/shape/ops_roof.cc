@@ -1,27 +1,52 @@
 // Roofs over a flat shape (seed 001 §3.4.3 "Roofing"; seed 000 §4.6 straight-skeleton roofs; CGA
-// roofGable/roofHip/...). The geometry comes from kernel roof.h; this file orients the result.
+// roofGable/roofHip/...). The geometry comes from kernel roof.h, or kernel roof_solid.h for a
+// closed solid (the .bldg builder's roofs); this file orients the result.
 #include <cmath>
 
+#include "kernel/roof_solid.h"
 #include "shape/ops.h"
 
 namespace insula::shape {
 
 using kernel::Vec3;
 
-OpResult roof(ShapeTree& tree, ShapeId id, const kernel::RoofSpec& spec) {
+namespace {
+
+struct Built {
+  kernel::Mesh mesh;
+  kernel::RoofStatus status = kernel::RoofStatus::kFailed;
+  std::string message;
+};
+
+Built build(const kernel::Polygon& outline, const kernel::RoofSpec& spec, const RoofForm& form) {
+  const bool flat = spec.type == kernel::RoofType::kFlat;
+  if (form.closed || (flat && form.thickness > 0)) {
+    if (flat && !(form.thickness > 0)) return {{}, {}, "a closed flat roof needs a thickness > 0"};
+    kernel::RoofSolidSpec solid;
+    solid.roof = spec;
+    solid.height = form.height;
+    solid.flat_thickness = form.thickness;
+    kernel::RoofSolid built = kernel::build_roof_solid(outline, solid, 0);
+    return {std::move(built.mesh), built.status, std::move(built.message)};
+  }
+  kernel::RoofResult built = kernel::build_roof(outline, spec, 0);
+  kernel::scale_roof_height(built.mesh, 0, form.height);
+  return {std::move(built.mesh), built.status, std::move(built.message)};
+}
+
+}  // namespace
+
+OpResult roof(ShapeTree& tree, ShapeId id, const kernel::RoofSpec& spec, const RoofForm& form) {
   const Shape& s = tree[id];
   if (!s.is_flat()) return OpResult::failure("needs a flat shape (a footprint or a face)");
-  kernel::RoofResult built = kernel::build_roof(*s.outline, spec, 0);
+  Built built = build(*s.outline, spec, form);
   if (built.status == kernel::RoofStatus::kFailed || built.mesh.empty()) {
     return OpResult::failure(built.message.empty() ? "no roof could be built" : built.message);
   }
   // Oriented like an extrusion: x as before, y along the face normal (up), z = x cross y.
-  Refit child = refit(s.scope, built.mesh, {1, 0, 0}, {0, 0, 1}, {0, -1, 0});
-  OpResult result;
-  result.add(tree.add_child(id, child.scope, std::make_shared<kernel::Mesh>(std::move(child.mesh))),
-             0);
-  if (built.status == kernel::RoofStatus::kFallback) result.warning = built.message;
-  return finish(tree, id, std::move(result));
+  return replace_with(
+      tree, id, built.mesh, {1, 0, 0}, {0, 0, 1}, {0, -1, 0},
+      built.status == kernel::RoofStatus::kFallback ? std::move(built.message) : std::string());
 }
 
 std::vector<Operation> roof_operations() {
@@ -52,6 +77,28 @@ std::vector<Operation> roof_operations() {
          ArgValue{2.5},
          {},
          0.0,
+         {}},
+        {"height",
+         ParamType::kNumber,
+         "top above the eave (meters; the heights are scaled to it); 0: as the pitch gives",
+         ArgValue{0.0},
+         {},
+         0.0,
+         {}},
+        {"closed",
+         ParamType::kBool,
+         "a closed solid: gable ends and the bottom closed, a holed mansard's opening through it",
+         ArgValue{false},
+         {},
+         {},
+         {}},
+        {"thickness",
+         ParamType::kNumber,
+         "flat roofs: a slab this thick over the outline grown by the overhang (meters); 0: the "
+         "single roof face",
+         ArgValue{0.0},
+         {},
+         0.0,
          {}}},
        [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
          kernel::RoofSpec spec;
@@ -60,7 +107,7 @@ std::vector<Operation> roof_operations() {
          spec.overhang = a.number("overhang");
          spec.mansard_pitch_deg = a.number("mansard_pitch");
          spec.mansard_break_height = a.number("break_height");
-         return roof(t, id, spec);
+         return roof(t, id, spec, {a.number("height"), a.boolean("closed"), a.number("thickness")});
        }});
   return ops;
 }

@@ -1,15 +1,9 @@
 // Queries over a shape tree (seed 001 §3.3): label expressions, attribute tests, subtrees,
-// proximity and occlusion. Queries never change the tree.
-//
-// Label expression grammar (EBNF; keywords are case-sensitive, labels with spaces are quoted):
-//   expr    = and_expr { "or" and_expr } ;
-//   and_expr= not_expr { "and" not_expr } ;
-//   not_expr= "not" not_expr | primary ;
-//   primary = "(" expr ")" | label ;
-//   label   = identifier | '"' { any character but '"' } '"' ;
-//   identifier = ( letter | "_" ) { letter | digit | "_" | "-" | "." } ;
+// proximity and occlusion. Queries never change the tree. The query language itself (one lexer
+// and parser for every front-end, its grammar) is shape/query_expr.h.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,6 +14,9 @@
 
 namespace insula::shape {
 
+class QueryExpr;
+
+// A label expression (labels joined by and, or, not and parentheses; QueryExpr::Grammar::kLabels).
 class LabelExpr {
  public:
   // Parses `text`; errors carry code "Q001" and the column in `source_name`.
@@ -28,20 +25,10 @@ class LabelExpr {
   bool matches(const ShapeTree& tree, ShapeId id) const;
   // The expression in canonical fully parenthesised form, e.g. "(room and (not corridor))".
   std::string to_string() const;
+  const QueryExpr& expr() const { return *expr_; }
 
  private:
-  enum class Op : std::uint8_t { kLabel, kNot, kAnd, kOr };
-  struct Node {
-    Op op;
-    std::uint32_t a = 0;  // child node index, or index into labels_ for kLabel
-    std::uint32_t b = 0;
-  };
-  friend class LabelParser;
-  bool eval(const ShapeTree& tree, ShapeId id, std::uint32_t node) const;
-  std::string node_string(std::uint32_t node) const;
-
-  std::vector<Node> nodes_;  // the root is the last node
-  std::vector<std::string> labels_;
+  std::shared_ptr<const QueryExpr> expr_;  // immutable, shared by copies
 };
 
 enum class Compare : std::uint8_t { kEqual, kNotEqual, kLess, kLessEqual, kGreater, kGreaterEqual };

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Dependencies point down only (design.md, "Layers"): base <- kernel <- shape <- io, lang <- apps.
-# Fails when a file includes a header of a layer above its own.
+# Dependencies point down only (docs/layers.md): base <- kernel <- shape <- io, lang <- apps.
+# Fails when a file includes a header of a layer above its own, or when a front-end (a folder of
+# src/lang) includes another front-end.
 set -u
 root=$2
 status=0
@@ -21,6 +22,12 @@ check kernel shape io lang apps
 check shape io lang apps
 check io lang apps
 check lang io apps
+for front_end in "$root"/src/lang/*/; do
+  name=$(basename "$front_end")
+  for other in "$root"/src/lang/*/; do
+    [ "$other" = "$front_end" ] || check "lang/$name" "lang/$(basename "$other")"
+  done
+done
 # CGAL stays in at most two translation units, never in a header.
 cgal=$(grep -rlE '#include <CGAL/' "$root/src" | sort)
 count=$(echo "$cgal" | grep -c . || true)

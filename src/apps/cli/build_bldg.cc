@@ -20,6 +20,9 @@
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/input_file.h"
+#include "apps/cli/interrupt.h"
+#include "apps/cli/progress.h"
+#include "apps/cli/warnings.h"
 #include "io/geojson_reader.h"
 #include "lang/bldg/builder.h"
 #include "lang/bldg/floorplan.h"
@@ -41,7 +44,7 @@ bool load_rules(const BuildOptions& options, lang::bldg::Restrictions& rules) {
   if (options.rules.empty()) return true;
   const auto text = read_input_file(options.rules);
   if (!text) {
-    print_error(options.rules + ": cannot read file");
+    print_error(options.rules + ": " + read_failure(options.rules));
     return false;
   }
   const base::Source source(options.rules, *text);
@@ -73,7 +76,8 @@ bool load_outline(const BuildOptions& options, const base::Source& source, Build
     return false;
   };
   const auto text = read_input_file(path);
-  if (!text) return fail("cannot read the outline file '" + path + "'");
+  if (!text)
+    return fail("cannot read the outline file '" + path + "': " + read_failure_reason(path));
   base::Result<io::FootprintSet> set = io::read_geojson(*text, path);
   if (!set.ok()) {
     const base::Source lot(path, *text);
@@ -215,14 +219,16 @@ std::optional<Built> plan_and_build(const BuildOptions& options, const base::Sou
   stage = Stopwatch();
   built.result = lang::bldg::build_building(building, plan.value(), rules);
   built.build_seconds = stage.seconds();
-  if (!options.quiet) {
-    for (const auto& w : plan->warnings) {
-      std::fprintf(stderr, "%s:%u:%u: warning: %s\n", source.name().c_str(), w.where.line,
-                   w.where.column, w.message.c_str());
-    }
-    for (const auto& w : built.result.warnings) {
-      std::fprintf(stderr, "%s: warning: %s\n", source.name().c_str(), w.c_str());
-    }
+  // The floor planner's and the builder's warnings carry no code of their own; BLD600 and BLD601
+  // name the two kinds, so a village's hundreds of them are capped (warnings.h).
+  for (const auto& w : plan->warnings) {
+    emit_warning("BLD600",
+                 source.name() + ":" + std::to_string(w.where.line) + ":" +
+                     std::to_string(w.where.column) + ": warning[BLD600]: " + w.message,
+                 options.quiet);
+  }
+  for (const auto& w : built.result.warnings) {
+    emit_warning("BLD601", source.name() + ": warning[BLD601]: " + w, options.quiet);
   }
   built.plan = std::move(plan.value());
   return built;
@@ -236,7 +242,7 @@ struct Parsed {
 std::optional<Parsed> parse_file(const BuildOptions& options, const std::string& path) {
   const auto text = read_input_file(path);
   if (!text) {
-    print_error(path + ": cannot read file");
+    print_error(path + ": " + read_failure(path));
     return std::nullopt;
   }
   Parsed parsed;
@@ -267,7 +273,7 @@ int build_lots(const BuildOptions& options, const Parsed& input, const Stopwatch
                const lang::bldg::Restrictions& rules, nlohmann::json& report) {
   const auto text = read_input_file(options.lot);
   if (!text) {
-    print_error(options.lot + ": cannot read file");
+    print_error(options.lot + ": " + read_failure(options.lot));
     return kExitInput;
   }
   const base::Source lot_source(options.lot, *text);
@@ -277,7 +283,9 @@ int build_lots(const BuildOptions& options, const Parsed& input, const Stopwatch
   std::map<std::string, Parsed> grammars;
   std::vector<lang::bldg::BuildResult> results;
   report["buildings"] = nlohmann::json::array();
+  Progress progress("buildings", lots->footprints.size(), options.quiet);
   for (const io::Footprint& lot : lots->footprints) {
+    if (const int code = stop_if_interrupted(); code != 0) return code;
     const Parsed* grammar = &input;
     const auto named = lot.properties.find("bldg");
     if (named != lot.properties.end() && std::holds_alternative<std::string>(named->second)) {
@@ -318,7 +326,9 @@ int build_lots(const BuildOptions& options, const Parsed& input, const Stopwatch
     add_seconds(report, *built);
     report["buildings"].push_back(std::move(one));
     results.push_back(std::move(built->result));
+    progress.advance();
   }
+  progress.finish();
   shape::Scene scene;
   for (lang::bldg::BuildResult& r : results) {
     // One material table for the scene: the builder's tables only differ by the rules' colours,

@@ -19,6 +19,8 @@
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/input_file.h"
+#include "apps/cli/interrupt.h"
+#include "apps/cli/progress.h"
 #include "io/geojson_reader.h"
 #include "io/obj_reader.h"
 #include "lang/cga/checker.h"
@@ -113,7 +115,7 @@ std::optional<Lots> read_lots(const BuildOptions& options) {
   if (options.lot.empty()) return out;
   const std::optional<std::string> text = read_input_file(options.lot);
   if (!text) {
-    std::fprintf(stderr, "%s: error: cannot read file\n", options.lot.c_str());
+    std::fprintf(stderr, "%s: error: %s\n", options.lot.c_str(), read_failure(options.lot).c_str());
     return std::nullopt;
   }
   const base::Source source(options.lot, *text);
@@ -173,7 +175,8 @@ int build_cga(const BuildOptions& options) {
   Stopwatch clock;
   const std::optional<std::string> text = read_input_file(options.input);
   if (!text) {
-    std::fprintf(stderr, "%s: error: cannot read file\n", options.input.c_str());
+    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(),
+                 read_failure(options.input).c_str());
     return kExitInput;
   }
   const base::Source source(options.input, *text);
@@ -236,10 +239,14 @@ int build_cga(const BuildOptions& options) {
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                               static_cast<std::size_t>(threads));
+    Progress progress("lots", results.size(), options.quiet);
     tbb::parallel_for(std::size_t{0}, results.size(), [&](std::size_t i) {
+      if (interrupted()) return;
       results[i] = cga::derive_lot(p, lots->lots[i], i, derive);
+      progress.advance();
     });
   }
+  if (const int code = stop_if_interrupted(); code != 0) return code;
   seconds["derive"] = clock.seconds();
 
   // Diagnostics and print() lines in lot order, whatever the thread count.

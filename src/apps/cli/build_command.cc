@@ -8,8 +8,9 @@
 
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
+#include "apps/cli/interrupt.h"
 #include "apps/cli/view_options.h"
-#include "io/atomic_file.h"
+#include "apps/cli/warnings.h"
 
 namespace insula::cli {
 namespace {
@@ -99,28 +100,29 @@ bool parse_sets(const std::vector<std::string>& sets,
 
 int finish_build(const BuildOptions& options, const shape::Scene& scene, nlohmann::json& report,
                  const Stopwatch& total) {
-  Stopwatch write_clock;
-  const std::string write_error =
-      io::write_outputs(scene, options.outputs, options.output, [&](std::size_t i) {
-        report["seconds"]["write_" + io::output_format_name(options.outputs[i])] =
-            write_clock.seconds();
-        write_clock = Stopwatch();
-      });
-  if (!write_error.empty()) {
-    std::fprintf(stderr, "insula: error: %s\n", write_error.c_str());
-    return kExitInput;
+  io::OutputTransaction own(interrupted);
+  io::OutputTransaction& transaction = options.transaction ? *options.transaction : own;
+  for (const std::string& out : options.outputs) {
+    const Stopwatch write_clock;
+    if (const std::string error = transaction.write_scene(scene, out, options.output);
+        !error.empty()) {
+      return write_failure(error);
+    }
+    report["seconds"]["write_" + io::output_format_name(out)] = write_clock.seconds();
   }
   report["seconds"]["total"] = total.seconds();
+  // A batch (`insula random`) shares the process's warning counts between its buildings, so its
+  // per-building reports leave them out.
+  if (!options.transaction) report["warning_counts"] = warning_counts();
+  if (options.amend_report) options.amend_report(report);
   if (!options.report.empty()) {
-    const std::string error = io::write_file_atomically(options.report, report.dump(2) + "\n");
-    if (!error.empty()) {
-      std::fprintf(stderr, "insula: error: %s\n", error.c_str());
-      for (const std::string& out : options.outputs) {
-        for (const std::string& file : io::files_of_output(out)) std::remove(file.c_str());
-      }
-      return kExitInput;
+    if (const std::string error = transaction.write_text(options.report, report.dump(2) + "\n");
+        !error.empty()) {
+      return write_failure(error);
     }
   }
+  if (options.transaction) return kExitDone;  // the batch commits and lists its files
+  if (const std::string error = transaction.commit(); !error.empty()) return write_failure(error);
   for (const std::string& out : options.outputs) std::printf("%s\n", out.c_str());
   return kExitDone;
 }

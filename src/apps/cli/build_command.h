@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +36,11 @@ struct BuildOptions {
   std::string report;               // --report R.json
   bool quiet = false;
   io::OutputOptions output;  // PNG view and SVG options
+  // Set by a batch (`insula random`): the outputs and the report go into its transaction, which
+  // the batch commits, and nothing is listed on stdout.
+  io::OutputTransaction* transaction = nullptr;
+  // Called on the report just before it is written.
+  std::function<void(nlohmann::json&)> amend_report;
 };
 
 void add_build_command(CLI::App& app, BuildOptions& options);
@@ -56,8 +62,9 @@ bool parse_sets(const std::vector<std::string>& sets,
                 std::vector<std::pair<std::string, shape::Value>>& out, std::string& error);
 
 // Writes the scene to every output (adding report["seconds"]["write_<format>"]), then sets
-// report["seconds"]["total"] from `total` and writes the report when asked. Returns the exit code;
-// on failure nothing is left behind (io::write_outputs is a transaction).
+// report["seconds"]["total"] from `total`, adds "warning_counts" and writes the report when asked,
+// all in one io::OutputTransaction. Returns the exit code; on failure or interruption nothing is
+// left behind and the user's earlier files are back.
 int finish_build(const BuildOptions& options, const shape::Scene& scene, nlohmann::json& report,
                  const Stopwatch& total);
 

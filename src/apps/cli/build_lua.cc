@@ -1,6 +1,7 @@
 // `insula build FILE.lua [--seed N] [--assets DIR]... [--set name=value]... [-o OUT]...
 // [--report R.json]`: runs a component program (seed 001) in the sandboxed runtime, collects the
-// tree's leaves and writes them. Assets are OBJ files read only from the --assets folders.
+// tree's leaves and writes them. Assets are OBJ files read only from the asset folders: the
+// program's folder, its assets/ folder and the --assets folders.
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -9,6 +10,7 @@
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/input_file.h"
+#include "apps/cli/interrupt.h"
 #include "io/obj_reader.h"
 #include "lang/lua/runtime.h"
 
@@ -130,6 +132,15 @@ void count_geometry(const shape::Scene& scene, nlohmann::json& report) {
   report["triangles"] = triangles;
 }
 
+// The program's own folder and its assets/ folder, then every --assets folder: the examples keep
+// their meshes beside them, so `insula build examples/lua/hotel.lua` finds them (docs/lua-api.md).
+std::vector<std::string> asset_folders(const BuildOptions& options) {
+  const fs::path own = fs::path(options.input).parent_path();
+  std::vector<std::string> folders = {own.empty() ? "." : own.string(), (own / "assets").string()};
+  folders.insert(folders.end(), options.assets.begin(), options.assets.end());
+  return folders;
+}
+
 }  // namespace
 
 int build_lua(const BuildOptions& options) {
@@ -151,11 +162,12 @@ int build_lua(const BuildOptions& options) {
   }
   const std::optional<std::string> text = read_input_file(options.input);
   if (!text) {
-    std::fprintf(stderr, "%s: error: cannot read file\n", options.input.c_str());
+    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(),
+                 read_failure(options.input).c_str());
     return kExitInput;
   }
   const base::Source source(options.input, *text);
-  const FolderAssets assets(options.assets);
+  const FolderAssets assets(asset_folders(options));
   run.assets = &assets;
   if (!options.quiet) {
     run.print = [&](const std::string& line) {
@@ -168,6 +180,7 @@ int build_lua(const BuildOptions& options) {
   const std::vector<base::Diagnostic> diagnostics = runtime.run(source);
   report["seconds"]["run"] = stage.seconds();
   print_diagnostics(diagnostics, source, options.quiet);
+  if (const int code = stop_if_interrupted(); code != 0) return code;
   if (base::has_errors(diagnostics)) return kExitInput;
   stage = Stopwatch();
   const shape::Scene scene = lua::collect_program(runtime.program());

@@ -8,6 +8,8 @@
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/input_file.h"
+#include "apps/cli/progress.h"
+#include "apps/cli/warnings.h"
 #include "base/diagnostic.h"
 #include "io/geojson_reader.h"
 
@@ -61,7 +63,8 @@ int run_check(const CheckOptions& options) {
   }
   const std::optional<std::string> text = read_input_file(options.input);
   if (!text) {
-    std::fprintf(stderr, "%s: error: cannot read file\n", options.input.c_str());
+    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(),
+                 read_failure(options.input).c_str());
     return kExitInput;
   }
   const base::Source source(options.input, *text);
@@ -75,8 +78,12 @@ int run_check(const CheckOptions& options) {
 void print_diagnostics(const std::vector<base::Diagnostic>& diagnostics, const base::Source& source,
                        bool quiet) {
   for (const base::Diagnostic& d : diagnostics) {
-    if (quiet && d.severity != base::Severity::kError) continue;
-    std::fprintf(stderr, "%s\n", base::render(d, &source).c_str());
+    if (d.severity == base::Severity::kError) {
+      clear_progress_line();
+      std::fprintf(stderr, "%s\n", base::render(d, &source).c_str());
+    } else {
+      emit_warning(d.code, base::render(d, &source), quiet);
+    }
   }
 }
 

@@ -1,5 +1,10 @@
 #include "apps/cli/input_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,6 +21,17 @@ std::optional<std::string> read_input_file(const std::string& path) {
   buffer << in.rdbuf();
   if (in.bad()) return std::nullopt;
   return buffer.str();
+}
+
+std::string read_failure_reason(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) return "Is a directory";
+  // Opened again to learn errno: read_input_file's stream does not keep it.
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  const int reason = errno;
+  if (fd < 0) return std::strerror(reason);
+  ::close(fd);
+  return "read error";
 }
 
 }  // namespace insula::cli

@@ -8,5 +8,11 @@ namespace insula::cli {
 
 // The file's bytes, or nullopt when it cannot be opened or read (a directory included).
 std::optional<std::string> read_input_file(const std::string& path);
+// Why `path` could not be read, in the system's words ("No such file or directory", "Permission
+// denied", "Is a directory").
+std::string read_failure_reason(const std::string& path);
+inline std::string read_failure(const std::string& path) {
+  return "cannot read file: " + read_failure_reason(path);
+}
 
 }  // namespace insula::cli

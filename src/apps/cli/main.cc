@@ -2,22 +2,76 @@
 // Exit codes: 0 done, 1 input error, 2 usage error, 3 internal error.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <vector>
 
 #include "apps/cli/build_command.h"
 #include "apps/cli/check_command.h"
 #include "apps/cli/exit_codes.h"
+#include "apps/cli/interrupt.h"
 #include "apps/cli/mass_command.h"
 #include "apps/cli/random_command.h"
 #include "apps/cli/transform_command.h"
+#include "apps/cli/warnings.h"
 
 namespace {
 
 constexpr const char* kDescription =
     "Insula generates buildings and cities from rules and footprints.\n"
     "Outputs are chosen by extension: .obj (+.mtl), .glb, .gltf, .city.json, .svg, .png.";
+
+// Edit distance, for suggesting the nearest verb to a mistyped one.
+std::size_t distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// A first argument that is no verb and no option: CLI11 would only say that a subcommand is
+// required, so the verbs are named here, the nearest one first when it is close.
+bool unknown_verb(const CLI::App& app, const std::string& word) {
+  if (word.empty() || word[0] == '-') return false;
+  std::string nearest;
+  std::size_t best = 3;  // suggest only within two edits
+  std::string verbs;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (sub->get_name() == word) return false;
+    verbs += (verbs.empty() ? "" : ", ") + sub->get_name();
+    if (const std::size_t d = distance(word, sub->get_name()); d < best) {
+      best = d;
+      nearest = sub->get_name();
+    }
+  }
+  std::fprintf(stderr, "insula: unknown command '%s'", word.c_str());
+  if (!nearest.empty()) std::fprintf(stderr, "; did you mean '%s'?", nearest.c_str());
+  std::fprintf(stderr, "\ncommands: %s (insula --help)\n", verbs.c_str());
+  return true;
+}
+
+// Runs the chosen verb; the verbs that write files do so under an interrupt guard, and a run that
+// was interrupted exits with 128 + the signal whatever the verb returned.
+template <typename Run>
+int run_writing(const Run& run, bool quiet) {
+  const insula::cli::InterruptGuard guard;
+  const int code = run();
+  insula::cli::finish_warnings(quiet);
+  if (insula::cli::interrupted() && code != insula::cli::kExitDone) {
+    return insula::cli::interrupt_exit_code();
+  }
+  return code;
+}
 
 int run(int argc, char** argv) {
   CLI::App app{kDescription, "insula"};
@@ -33,6 +87,7 @@ int run(int argc, char** argv) {
   insula::cli::add_transform_command(app, transform);
   insula::cli::RandomOptions random;
   insula::cli::add_random_command(app, random);
+  if (argc > 1 && unknown_verb(app, argv[1])) return insula::cli::kExitUsage;
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -45,11 +100,21 @@ int run(int argc, char** argv) {
     app.exit(e);
     return insula::cli::kExitUsage;
   }
-  if (app.got_subcommand("mass")) return insula::cli::run_mass(mass);
-  if (app.got_subcommand("check")) return insula::cli::run_check(check);
-  if (app.got_subcommand("build")) return insula::cli::run_build(build);
+  if (app.got_subcommand("mass")) {
+    return run_writing([&] { return insula::cli::run_mass(mass); }, mass.quiet);
+  }
+  if (app.got_subcommand("check")) {
+    const int code = insula::cli::run_check(check);
+    insula::cli::finish_warnings(check.quiet);
+    return code;
+  }
+  if (app.got_subcommand("build")) {
+    return run_writing([&] { return insula::cli::run_build(build); }, build.quiet);
+  }
   if (app.got_subcommand("transform")) return insula::cli::run_transform(transform);
-  if (app.got_subcommand("random")) return insula::cli::run_random(random);
+  if (app.got_subcommand("random")) {
+    return run_writing([&] { return insula::cli::run_random(random); }, random.quiet);
+  }
   return insula::cli::kExitUsage;
 }
 

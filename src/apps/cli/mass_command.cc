@@ -12,11 +12,15 @@
 
 #include "apps/cli/build_command.h"
 #include "apps/cli/exit_codes.h"
+#include "apps/cli/front_ends.h"
 #include "apps/cli/input_file.h"
+#include "apps/cli/interrupt.h"
 #include "apps/cli/mass_report.h"
+#include "apps/cli/progress.h"
 #include "apps/cli/stopwatch.h"
 #include "apps/cli/validators.h"
 #include "apps/cli/view_options.h"
+#include "apps/cli/warnings.h"
 #include "base/diagnostic.h"
 #include "io/geojson_reader.h"
 #include "io/output.h"
@@ -47,33 +51,40 @@ std::optional<double> number_property(const shape::AttributeMap& properties,
   return std::nullopt;
 }
 
+// A warning of the mass stage: its code (docs/cli.md, "Warnings") and its text.
+struct Warning {
+  std::string code;
+  std::string text;
+};
+
 std::string feature_name(const io::Footprint& footprint) {
   return "feature " + std::to_string(footprint.feature_index) + " (id \"" + footprint.id + "\")";
 }
 
 double plan_height(const MassOptions& options, const io::Footprint& footprint,
-                   std::vector<std::string>& warnings) {
+                   std::vector<Warning>& warnings) {
   if (options.height) return *options.height;
   const std::optional<double> h = number_property(footprint.properties, options.height_attr);
   if (h && std::isfinite(*h) && *h > 0 && *h < 1000) return *h;
   const bool present = footprint.properties.count(options.height_attr) > 0;
-  warnings.push_back(feature_name(footprint) + ": " +
-                     (present
-                          ? "property '" + options.height_attr + "' is not a height in (0, 1000) m"
-                          : "no '" + options.height_attr + "' property") +
-                     "; using " + shape::to_string(options.default_height) + " m");
+  warnings.push_back(
+      {present ? "MAS002" : "MAS001",
+       feature_name(footprint) + ": " +
+           (present ? "property '" + options.height_attr + "' is not a height in (0, 1000) m"
+                    : "no '" + options.height_attr + "' property") +
+           "; using " + shape::to_string(options.default_height) + " m"});
   return options.default_height;
 }
 
 kernel::RoofType plan_roof(const MassOptions& options, const io::Footprint& footprint,
-                           std::vector<std::string>& warnings) {
+                           std::vector<Warning>& warnings) {
   if (!options.roof_given) {
     auto it = footprint.properties.find("roof");
     if (it != footprint.properties.end()) {
       const std::string name = shape::to_string(it->second);
       if (std::optional<kernel::RoofType> known = kernel::roof_type_from_name(name)) return *known;
-      warnings.push_back(feature_name(footprint) + ": unknown roof '" + name + "'; using " +
-                         options.roof);
+      warnings.push_back({"MAS003", feature_name(footprint) + ": unknown roof '" + name +
+                                        "'; using " + options.roof});
     }
   }
   return kernel::roof_type_from_name(options.roof).value_or(kernel::RoofType::kHip);
@@ -88,7 +99,7 @@ double plan_pitch(const MassOptions& options, const io::Footprint& footprint) {
 }
 
 std::vector<BuildingPlan> plan_buildings(const MassOptions& options, const io::FootprintSet& set,
-                                         std::vector<std::string>& warnings) {
+                                         std::vector<Warning>& warnings) {
   std::vector<BuildingPlan> plans;
   plans.reserve(set.footprints.size());
   for (const io::Footprint& footprint : set.footprints) {
@@ -129,42 +140,31 @@ BuiltBuilding build_one(const io::Footprint& footprint, const BuildingPlan& plan
 }
 
 // Builds every footprint in parallel; results land by index, so the output does not depend on the
-// thread count.
+// thread count. After an interruption the workers build nothing more (the caller checks).
 std::vector<BuiltBuilding> build_all(const io::FootprintSet& set,
                                      const std::vector<BuildingPlan>& plans, bool quiet) {
   std::vector<BuiltBuilding> built(set.footprints.size());
-  std::atomic<std::size_t> done{0};
-  Stopwatch clock;
-  std::atomic<double> last_report{0};
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, built.size(), 64),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t i = range.begin(); i != range.end(); ++i) {
-          built[i] = build_one(set.footprints[i], plans[i]);
-        }
-        const std::size_t now = done += range.size();
-        const double t = clock.seconds();
-        double last = last_report.load();
-        if (!quiet && t - last > 1.0 && last_report.compare_exchange_strong(last, t)) {
-          std::fprintf(stderr, "insula: built %zu of %zu buildings\n", now, built.size());
-        }
-      });
+  Progress progress("buildings", built.size(), quiet);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, built.size(), 64),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        if (interrupted()) return;
+                        built[i] = build_one(set.footprints[i], plans[i]);
+                      }
+                      progress.advance(range.size());
+                    });
   return built;
 }
 
 // A footprint that gave no closed shell: an error, or a warning with --keep-going.
 void report_failed_building(const MassOptions& options, const io::Footprint& footprint,
                             const BuiltBuilding& built) {
-  std::string message = options.input + (options.keep_going ? ": warning: " : ": error: ") +
-                        feature_name(footprint) + ": no closed building could be made";
+  std::string message = feature_name(footprint) + ": no closed building could be made";
   if (!built.messages.empty()) message += ": " + built.messages.front();
-  std::fprintf(stderr, "%s\n", message.c_str());
-}
-
-void print_diagnostics(const std::vector<base::Diagnostic>& diagnostics,
-                       const base::Source& source) {
-  for (const base::Diagnostic& d : diagnostics) {
-    std::fprintf(stderr, "%s\n", base::render(d, &source).c_str());
+  if (options.keep_going) {
+    emit_warning("MAS005", options.input + ": warning[MAS005]: " + message, options.quiet);
+  } else {
+    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(), message.c_str());
   }
 }
 
@@ -229,19 +229,21 @@ int run_mass(const MassOptions& options) {
   Stopwatch read_clock;
   const std::optional<std::string> text = read_input_file(options.input);
   if (!text) {
-    std::fprintf(stderr, "%s: error: cannot read file\n", options.input.c_str());
+    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(),
+                 read_failure(options.input).c_str());
     return kExitInput;
   }
   const base::Source source(options.input, *text);
   base::Result<io::FootprintSet> set = io::read_geojson(source.text(), options.input);
-  if (!options.quiet || !set.ok()) print_diagnostics(set.diagnostics(), source);
+  print_diagnostics(set.diagnostics(), source, options.quiet);
   if (!set.ok()) return kExitInput;
   report.stage("read", read_clock.seconds());
 
   Stopwatch build_clock;
-  std::vector<std::string> warnings;
+  std::vector<Warning> warnings;
   const std::vector<BuildingPlan> plans = plan_buildings(options, set.value(), warnings);
   std::vector<BuiltBuilding> built = build_all(set.value(), plans, options.quiet);
+  if (const int code = stop_if_interrupted(); code != 0) return code;
   shape::Scene scene;
   scene.origin = set->origin;
   scene.crs = set->crs;
@@ -250,7 +252,7 @@ int run_mass(const MassOptions& options) {
   for (std::size_t i = 0; i < built.size(); ++i) {
     BuiltBuilding& b = built[i];
     for (std::string& m : b.messages)
-      warnings.push_back("building \"" + b.building.id + "\": " + m);
+      warnings.push_back({"MAS004", "building \"" + b.building.id + "\": " + m});
     if (!b.watertight) {
       ++failed;
       report_failed_building(options, set->footprints[i], b);
@@ -272,33 +274,30 @@ int run_mass(const MassOptions& options) {
   }
   report.failed = failed;
   report.stage("build", build_clock.seconds());
-  if (!options.quiet) {
-    for (const std::string& w : warnings)
-      std::fprintf(stderr, "%s: warning: %s\n", options.input.c_str(), w.c_str());
+  for (const Warning& w : warnings) {
+    emit_warning(w.code, options.input + ": warning[" + w.code + "]: " + w.text, options.quiet);
   }
-  report.warnings = warnings.size() + set.diagnostics().size();
+  report.warnings = warning_total();
+  report.warning_counts = warning_counts();
 
-  Stopwatch write_clock;
-  const std::string write_error =
-      io::write_outputs(scene, options.outputs, options.output, [&](std::size_t i) {
-        report.stage("write " + io::output_format_name(options.outputs[i]), write_clock.seconds());
-        write_clock = Stopwatch();
-      });
-  if (!write_error.empty()) {
-    std::fprintf(stderr, "insula: error: %s\n", write_error.c_str());
-    return kExitInput;
+  io::OutputTransaction transaction(interrupted);
+  for (const std::string& out : options.outputs) {
+    const Stopwatch write_clock;
+    if (const std::string error = transaction.write_scene(scene, out, options.output);
+        !error.empty()) {
+      return write_failure(error);
+    }
+    report.stage("write " + io::output_format_name(out), write_clock.seconds());
   }
   report.total_seconds = total.seconds();
   if (!options.report.empty()) {
-    const std::string error = report.write(options.report);
-    if (!error.empty()) {
-      std::fprintf(stderr, "insula: error: %s\n", error.c_str());
-      for (const std::string& out : options.outputs) {
-        for (const std::string& file : io::files_of_output(out)) std::remove(file.c_str());
-      }
-      return kExitInput;
+    if (const std::string error = transaction.write_text(options.report, report.json());
+        !error.empty()) {
+      return write_failure(error);
     }
   }
+  if (const std::string error = transaction.commit(); !error.empty()) return write_failure(error);
+  finish_warnings(options.quiet);
   if (!options.quiet) {
     std::fprintf(stderr, "insula: %zu buildings in %.2f s\n", scene.buildings.size(),
                  report.total_seconds);

@@ -2,8 +2,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/atomic_file.h"
-
 namespace insula::cli {
 
 void MassReport::count_building(const shape::Building& building, bool is_watertight) {
@@ -29,14 +27,11 @@ std::string MassReport::json() const {
   out["triangles"] = triangles;
   out["watertight"] = watertight;
   out["warnings"] = warnings;
+  out["warning_counts"] = warning_counts;
   out["failed"] = failed;
   out["threads"] = threads;
   out["seconds"] = seconds;
   return out.dump(2) + "\n";
-}
-
-std::string MassReport::write(const std::string& path) const {
-  return io::write_file_atomically(path, json());
 }
 
 }  // namespace insula::cli

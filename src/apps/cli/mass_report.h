@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,7 +19,8 @@ struct MassReport {
   std::size_t triangles = 0;
   std::size_t watertight = 0;  // buildings whose every part is a closed, outward shell
   std::size_t warnings = 0;
-  std::size_t failed = 0;  // footprints left out with --keep-going
+  std::map<std::string, std::size_t> warning_counts;  // by code: the full count, printed or not
+  std::size_t failed = 0;                             // footprints left out with --keep-going
   int threads = 1;
   double total_seconds = 0;
   std::vector<std::pair<std::string, double>> stages;  // in execution order
@@ -26,8 +28,6 @@ struct MassReport {
   void stage(std::string name, double seconds) { stages.emplace_back(std::move(name), seconds); }
   void count_building(const shape::Building& building, bool is_watertight);
   std::string json() const;
-  // Writes json() atomically; empty string on success.
-  std::string write(const std::string& path) const;
 };
 
 }  // namespace insula::cli

@@ -20,6 +20,7 @@ struct RandomOptions {
   std::string rooms;             // "MIN-MAX" rooms per part
   std::string room_list;         // comma-separated room types
   std::string output_dir;
+  std::string report;  // --report R.json: the batch's counts and timings
   int threads = 0;
   bool quiet = false;
 };

@@ -105,7 +105,8 @@ int run_transform(const TransformOptions& options) {
   }
   const std::optional<std::string> text = read_input_file(options.input);
   if (!text) {
-    std::fprintf(stderr, "%s: error: cannot read file\n", options.input.c_str());
+    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(),
+                 read_failure(options.input).c_str());
     return kExitInput;
   }
   const base::Source source(options.input, *text);

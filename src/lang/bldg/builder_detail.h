@@ -1,5 +1,6 @@
-// Internals of the 3D builder (builder.h), shared by builder_*.cc: the build context, the solids
-// every stage uses (boxes, prisms, staircase profiles) and the stage entry points.
+// Internals of the 3D builder (builder.h), shared by builder_*.cc: the build context and the stage
+// entry points. Every solid comes from the kernel (kernel/solids.h, opening_frame.h, roof_solid.h),
+// the functions the shape operations slab, stair, frame and roof use too.
 #pragma once
 
 #include <cstdint>
@@ -8,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "kernel/extrude.h"
 #include "kernel/mesh.h"
 #include "kernel/polygon.h"
+#include "kernel/solids.h"
 #include "kernel/vec.h"
 #include "lang/bldg/builder.h"
 #include "lang/bldg/floorplan.h"
@@ -78,30 +79,6 @@ struct StoreyWalls {
   std::vector<std::vector<int>> room_walls;  // per room: the wall pieces bordering it
 };
 
-// A closed parallelepiped with corner `origin` and edges u, v, w (any handedness), faces outward.
-void add_box(kernel::Mesh& mesh, Vec3 origin, Vec3 u, Vec3 v, Vec3 w, FaceTag tag);
-
-// add_box's arguments for one box of add_boxes.
-struct BoxEdges {
-  Vec3 origin;
-  Vec3 u;
-  Vec3 v;
-  Vec3 w;
-};
-// add_box for each box in order (the same vertices and faces), the mesh's arrays grown once.
-void add_boxes(kernel::Mesh& mesh, std::span<const BoxEdges> boxes, FaceTag tag);
-
-// Appends the closed prism of `polygon` between z0 and z1 (z0 < z1) with the given tags; false
-// (nothing added) when the polygon is degenerate.
-bool add_prism(kernel::Mesh& mesh, const kernel::Polygon& polygon, double z0, double z1,
-               FaceTag bottom, FaceTag top, FaceTag side);
-
-// A closed staircase solid: `steps` steps of depth `run` and rise `rise` climbing along `dir`
-// (unit, horizontal) from the foot line centred on `foot` at height z0, `width` wide; every step
-// reaches down to z0 (a massive flight, as entrance steps and stairs are built).
-void add_staircase(kernel::Mesh& mesh, Vec2 foot, Vec2 dir, double width, double z0, int steps,
-                   double run, double rise, FaceTag tag);
-
 // Stage entry points (builder_walls.cc, builder_rooms.cc, builder_roofs.cc).
 StoreyWalls build_walls(const Context& context, int storey, kernel::Mesh& mesh,
                         shape::StoreyPlan& plan);
@@ -110,9 +87,5 @@ void build_rooms(const Context& context, int storey, const StoreyWalls& walls,
 void build_stairs(const Context& context, int storey, kernel::Mesh& mesh, shape::StoreyPlan& plan);
 void build_base(const Context& context, const std::vector<StoreyWalls>& walls, kernel::Mesh& mesh);
 void build_roofs(const Context& context, std::vector<shape::Part>& parts);
-
-// The polygons of `a` minus `b` (kernel/boolean2d.h); `a` itself when `b` is empty.
-std::vector<kernel::Polygon> minus(const std::vector<kernel::Polygon>& a,
-                                   const std::vector<kernel::Polygon>& b);
 
 }  // namespace insula::lang::bldg::detail

@@ -3,24 +3,21 @@
 // group of "HipGlued" parts "in spatial contact with others, at the ground level" gets one
 // straight-skeleton roof over the polygon clustering their layouts, Fig. 10).
 //
-// Each roof comes from kernel/roof.h over the part's outline at its eaves, closed underneath by a
-// face over the wall-top vertices (plus the gable triangles kernel::add_roof returns as caps), so
-// every roof is one closed solid. The grammar gives a roof height, not a pitch: the roof is built
-// at the kernel's default pitch and its heights above the eaves are scaled so the ridge (or the
-// apex, or the mansard's top) lies `height` above the eaves; an affine scaling of z keeps every
-// face planar, so this is the same roof at the pitch that gives that height.
+// Each roof is a closed solid from kernel/roof_solid.h (the shape operation roof with closed = true
+// builds the same): the grammar gives a roof height, not a pitch, so the roof is built at the
+// kernel's default pitch and scaled to that height; a flat roof is a slab kFlatThickness thick.
 // HipGlued: parts touching along an edge are grouped (union-find over pairwise unions that give
 // one polygon), their outlines united with kernel/boolean2d.h, and one hip roof built at the
 // group's highest eaves; a lower part of the group is raised to those eaves by a filler block.
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <numeric>
 #include <string>
 #include <utility>
 
+#include "base/union_find.h"
 #include "kernel/boolean2d.h"
-#include "kernel/roof.h"
+#include "kernel/planar.h"
+#include "kernel/roof_solid.h"
 #include "lang/bldg/builder_detail.h"
 
 namespace insula::lang::bldg::detail {
@@ -46,152 +43,32 @@ kernel::RoofType roof_type(RoofKind kind) {
   return kernel::RoofType::kHip;
 }
 
-// Outer ring, then holes: the index of the vertex after `e` in its ring.
-std::vector<std::uint32_t> ring_successors(const kernel::Polygon& p) {
-  std::vector<std::uint32_t> next;
-  std::uint32_t begin = 0;
-  const auto add_ring = [&](const kernel::Ring& ring) {
-    const auto n = static_cast<std::uint32_t>(ring.size());
-    for (std::uint32_t i = 0; i < n; ++i) next.push_back(begin + (i + 1) % n);
-    begin += n;
-  };
-  add_ring(p.outer);
-  for (const kernel::Ring& hole : p.holes) add_ring(hole);
-  return next;
-}
+// A flat roof is a slab this thick (m, the kernel's fascia) over the outline grown by the overhang.
+constexpr double kFlatThickness = 0.25;
 
-// One closed roof solid over `footprint` with its eaves at `eave_z`, `height` high.
-// The compluvium (§4.1 "holed mansard"): kernel::add_roof closes the opening with a floor at the
-// eaves (OuterFloorSurface). Here that floor is removed and the roof closed underneath by the
-// footprint minus the opening, so the opening goes through the roof; its outline (the floor's
-// boundary loops) is returned so the rooms below can leave their ceilings open under it.
-std::vector<kernel::Polygon> open_compluvium(kernel::Mesh& mesh, const kernel::Polygon& footprint,
-                                             const std::vector<std::uint32_t>& wall_top,
-                                             kernel::FaceTag bottom) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    if (mesh.tag(f).semantic != SemanticClass::kOuterFloorSurface) continue;
-    const auto loop = mesh.face(f);
-    for (std::size_t i = 0; i < loop.size(); ++i) ++edges[{loop[i], loop[(i + 1) % loop.size()]}];
-  }
-  std::map<std::uint32_t, std::uint32_t> next;  // boundary edges of the opening's floor
-  for (const auto& [edge, n] : edges) {
-    if (!edges.contains({edge.second, edge.first})) next[edge.first] = edge.second;
-  }
-  std::vector<std::vector<std::uint32_t>> loops;
-  while (!next.empty()) {
-    std::vector<std::uint32_t> loop;
-    std::uint32_t v = next.begin()->first;
-    while (next.contains(v)) {
-      loop.push_back(v);
-      const std::uint32_t w = next.at(v);
-      next.erase(v);
-      v = w;
-    }
-    if (loop.size() >= 3) loops.push_back(std::move(loop));
-  }
-  if (loops.empty()) return {};
-  kernel::Polygon region = footprint;
-  std::vector<std::uint32_t> ids = wall_top;
-  std::vector<kernel::Polygon> openings;
-  for (std::vector<std::uint32_t>& loop : loops) {
-    kernel::Ring ring;
-    for (std::uint32_t v : loop) ring.push_back(kernel::drop(mesh.position(v)));
-    openings.push_back({ring, {}});
-    // A hole of the bottom region runs clockwise: the floor's boundary ran counter-clockwise.
-    std::reverse(loop.begin(), loop.end());
-    std::reverse(ring.begin(), ring.end());
-    region.holes.push_back(std::move(ring));
-    ids.insert(ids.end(), loop.begin(), loop.end());
-  }
-  kernel::Mesh opened;
-  opened.reserve(mesh.vertex_count(), mesh.face_count(), 0);
-  for (const Vec3& p : mesh.positions()) opened.add_vertex(p);
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    if (mesh.tag(f).semantic != SemanticClass::kOuterFloorSurface) {
-      opened.add_face(mesh.face(f), mesh.tag(f));
-    }
-  }
-  if (!kernel::add_region_faces(opened, region, ids, true, bottom)) return {};
-  mesh = std::move(opened);
-  return openings;
-}
-
-// A flat roof is a slab kFlatThickness thick over the outline grown by the overhang: the kernel's
-// flat roof is a single face, which over an outline without overhang would enclose no volume.
-constexpr double kFlatThickness = 0.25;  // m, the kernel's fascia
-
-kernel::Mesh flat_roof(const kernel::Polygon& footprint, double eave_z, double overhang,
-                       std::string& message) {
-  std::vector<kernel::Polygon> slab{footprint};
-  if (overhang > 0) {
-    kernel::BooleanResult grown = kernel::offset(slab, overhang);
-    if (grown.ok() && grown.polygons.size() == 1) slab = std::move(grown.polygons);
-  }
-  kernel::Mesh mesh;
-  for (const kernel::Polygon& p : slab) {
-    if (!add_prism(mesh, p, eave_z, eave_z + kFlatThickness,
-                   {SemanticClass::kOuterCeilingSurface, 0, 0}, {SemanticClass::kRoofSurface, 0, 1},
-                   {SemanticClass::kWallSurface, 0, 2})) {
-      message = "the flat roof could not be built";
-      return {};
-    }
-  }
-  return mesh;
-}
-
+// One closed roof solid over `footprint` with its eaves at `eave_z`, `height` high
+// (kernel/roof_solid.h); a holed mansard's opening is returned in `openings`.
 kernel::Mesh roof_solid(const kernel::Polygon& footprint, RoofKind kind, double height,
                         double eave_z, double overhang, std::string& message,
                         std::vector<kernel::Polygon>* openings) {
-  if (kind == RoofKind::kFlat) return flat_roof(footprint, eave_z, overhang, message);
-  kernel::Mesh mesh;
-  kernel::RoofSpec spec;
-  spec.type = roof_type(kind);
-  spec.overhang = overhang;
+  kernel::RoofSolidSpec spec;
+  spec.roof.type = roof_type(kind);
+  spec.roof.overhang = overhang;
+  spec.height = height;
+  spec.flat_thickness = kFlatThickness;
   if (kind == RoofKind::kHoledMansard && height > 0) {
     // The Roman compluvium roof: the roof band slopes down inwards... as a mansard's lower band it
     // rises from the eaves to the opening's rim `height` above them; its width (the roof's reach
     // from the outline, 0.55 x twice the area over the perimeter: 3.9 m on a 20 x 14 m part)
     // covers the rooms around a central atrium and leaves the middle open.
     const double reach = 0.55 * 2 * kernel::area(footprint) / kernel::perimeter(footprint);
-    spec.mansard_break_height = height;
-    spec.mansard_pitch_deg = std::atan2(height, reach) * 180 / 3.141592653589793;
+    spec.roof.mansard_break_height = height;
+    spec.roof.mansard_pitch_deg = std::atan2(height, reach) * 180 / 3.141592653589793;
   }
-  const kernel::RoofBuild build = kernel::add_roof(footprint, spec, eave_z, mesh);
-  if (build.status == kernel::RoofStatus::kFailed) {
-    message = build.message.empty() ? "the roof could not be built" : build.message;
-    return {};
-  }
-  if (build.status == kernel::RoofStatus::kFallback) message = build.message;
-  const std::vector<std::uint32_t> next = ring_successors(footprint);
-  if (build.wall_top.size() == next.size() && build.cap_offsets.size() == next.size() + 1) {
-    std::vector<std::uint32_t> loop;
-    for (std::uint32_t e = 0; e < next.size(); ++e) {
-      if (build.cap_offsets[e] == build.cap_offsets[e + 1]) continue;
-      loop.assign({build.wall_top[e], build.wall_top[next[e]]});
-      loop.insert(loop.end(), build.cap_indices.begin() + build.cap_offsets[e],
-                  build.cap_indices.begin() + build.cap_offsets[e + 1]);
-      mesh.add_face(loop, {SemanticClass::kWallSurface, 0, build.next_face_id});
-    }
-    const FaceTag bottom{SemanticClass::kClosureSurface, 0, build.next_face_id + 1};
-    std::vector<kernel::Polygon> opened;
-    if (build.built == kernel::RoofType::kHoledMansard) {
-      opened = open_compluvium(mesh, footprint, build.wall_top, bottom);
-    }
-    if (opened.empty()) {
-      kernel::add_region_faces(mesh, footprint, build.wall_top, true, bottom);
-    } else if (openings != nullptr) {
-      *openings = std::move(opened);
-    }
-  }
-  // Scale the heights above the eaves so the top is `height` above them (see the file comment).
-  double top = eave_z;
-  for (const Vec3& p : mesh.positions()) top = std::max(top, p.z);
-  if (top - eave_z > 1e-6 && height > 0) {
-    const double scale = height / (top - eave_z);
-    for (Vec3& p : mesh.positions()) p.z = eave_z + (p.z - eave_z) * scale;
-  }
-  return mesh;
+  kernel::RoofSolid built = kernel::build_roof_solid(footprint, spec, eave_z);
+  message = std::move(built.message);
+  if (openings != nullptr) *openings = std::move(built.openings);
+  return std::move(built.mesh);
 }
 
 // The footprint a roof stands on: normalised, without collinear vertices (a union of parts keeps
@@ -199,14 +76,6 @@ kernel::Mesh roof_solid(const kernel::Polygon& footprint, RoofKind kind, double 
 kernel::Polygon clean(const kernel::Polygon& polygon) {
   kernel::RepairResult repaired = kernel::repair(polygon, 1e-6);
   return repaired.ok ? repaired.polygon : polygon;
-}
-
-int find(std::vector<int>& parent, int i) {
-  while (parent[static_cast<std::size_t>(i)] != i) {
-    i = parent[static_cast<std::size_t>(i)] =
-        parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-  }
-  return i;
 }
 
 // Parts "in spatial contact [...] at the ground level" (§4.6): they share at least kContact of
@@ -313,23 +182,21 @@ void build_roofs(const Context& c, std::vector<shape::Part>& parts) {
                   eave_z(p), parts);
   }
   // §4.6: groups of HipGlued parts in contact.
-  std::vector<int> parent(glued.size());
-  std::iota(parent.begin(), parent.end(), 0);
+  base::UnionFind groups(glued.size());
   for (std::size_t i = 0; i < glued.size(); ++i) {
     for (std::size_t j = i + 1; j < glued.size(); ++j) {
       const auto& a = plan_parts[static_cast<std::size_t>(glued[i])].outline;
       const auto& b = plan_parts[static_cast<std::size_t>(glued[j])].outline;
       if (in_contact(a, b)) {
-        parent[static_cast<std::size_t>(find(parent, static_cast<int>(i)))] =
-            find(parent, static_cast<int>(j));
+        groups.unite(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
       }
     }
   }
   for (std::size_t root = 0; root < glued.size(); ++root) {
-    if (find(parent, static_cast<int>(root)) != static_cast<int>(root)) continue;
+    if (groups.find(static_cast<std::uint32_t>(root)) != root) continue;
     std::vector<const PlanPart*> group;
     for (std::size_t i = 0; i < glued.size(); ++i) {
-      if (find(parent, static_cast<int>(i)) == static_cast<int>(root)) {
+      if (groups.find(static_cast<std::uint32_t>(i)) == root) {
         group.push_back(&plan_parts[static_cast<std::size_t>(glued[i])]);
       }
     }
@@ -348,8 +215,10 @@ void build_roofs(const Context& c, std::vector<shape::Part>& parts) {
     kernel::Mesh fillers;
     for (const PlanPart* p : group) {
       if (eave_z(*p) < eaves - 1e-6) {
-        add_prism(fillers, p->outline, eave_z(*p), eaves, {SemanticClass::kClosureSurface, 0, 0},
-                  {SemanticClass::kClosureSurface, 0, 1}, {SemanticClass::kWallSurface, 0, 2});
+        kernel::add_prism(fillers, p->outline, eave_z(*p), eaves,
+                          {{SemanticClass::kClosureSurface, 0, 0},
+                           {SemanticClass::kClosureSurface, 0, 1},
+                           {SemanticClass::kWallSurface, 0, 2}});
       }
     }
     const std::vector<kernel::Polygon> merged = merge(outlines);

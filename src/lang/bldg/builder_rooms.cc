@@ -19,6 +19,7 @@
 #include <utility>
 
 #include "kernel/boolean2d.h"
+#include "kernel/planar.h"
 #include "lang/bldg/builder_detail.h"
 
 namespace insula::lang::bldg::detail {
@@ -28,8 +29,7 @@ namespace {
 constexpr double kSlack = 1e-6;
 
 bool boxes_overlap(const kernel::Bounds2& a, const kernel::Bounds2& b) {
-  return a.min.x <= b.max.x + kSlack && b.min.x <= a.max.x + kSlack &&
-         a.min.y <= b.max.y + kSlack && b.min.y <= a.max.y + kSlack;
+  return kernel::touches(a, b, kSlack);
 }
 
 // Do the boxes share interior (not only a side or a corner)?
@@ -77,40 +77,9 @@ class GapBoxes {
   double widest_ = 0;                 // the widest box along x
 };
 
-bool convex(const kernel::Ring& ring) {
-  const std::size_t n = ring.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 a = ring[i];
-    const Vec2 b = ring[(i + 1) % n];
-    const Vec2 c = ring[(i + 2) % n];
-    if (kernel::cross(b - a, c - b) < -1e-12) return false;
-  }
-  return n >= 3;
-}
-
-// Sutherland-Hodgman: the part of a convex ring where dot(p - origin, normal) >= d.
-// Written into `out` (cleared; its storage is reused from cut to cut).
-void clip(const kernel::Ring& ring, Vec2 origin, Vec2 normal, double d, kernel::Ring& out) {
-  out.clear();
-  const std::size_t n = ring.size();
-  out.reserve(n + 1);  // a convex ring cut by a line gains at most one vertex
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 p = ring[i];
-    const Vec2 q = ring[(i + 1) % n];
-    const double fp = kernel::dot(p - origin, normal) - d;
-    const double fq = kernel::dot(q - origin, normal) - d;
-    if (fp >= 0) out.push_back(p);
-    if ((fp >= 0) != (fq >= 0)) out.push_back(p + (q - p) * (fp / (fp - fq)));
-  }
-}
-
 // The inner face of a wall piece seen from `room`: points p of the room with
 // dot(p - origin, normal) >= d.
-struct Face {
-  Vec2 origin;
-  Vec2 normal;
-  double d = 0;
-};
+using Face = kernel::HalfPlane;
 
 Face inner_face(const WallGeometry& g, bool room_on_left) {
   return room_on_left ? Face{g.start, g.left, g.offset1} : Face{g.start, -g.left, -g.offset0};
@@ -161,7 +130,7 @@ bool reaches_into(const kernel::Ring& floor, const kernel::Ring& wall, RoomScrat
   const std::size_t m = wall.size();
   for (std::size_t e = 0; e < m && part.size() >= 3; ++e) {
     const Vec2 dir = (wall[(e + 1) % m] - wall[e]) * orient;
-    clip(part, wall[e], kernel::perp(dir), 0, scratch.probe_cut);
+    kernel::clip(part, {wall[e], kernel::perp(dir)}, scratch.probe_cut);
     std::swap(part, scratch.probe_cut);
   }
   return part.size() >= 3 && std::abs(kernel::signed_area(part)) > 1e-10;
@@ -176,7 +145,10 @@ bool reaches_into(const kernel::Ring& floor, const kernel::Ring& wall, RoomScrat
 bool convex_clear_floor(const kernel::Polygon& cell, const kernel::Bounds2& box, int room,
                         const StoreyWalls& walls, const PlanStorey& storey, RoomScratch& scratch,
                         std::vector<kernel::Polygon>& out) {
-  if (!cell.holes.empty() || !convex(cell.outer)) return false;
+  if (!cell.holes.empty() || cell.outer.size() < 3 ||
+      !kernel::is_convex(cell.outer, kernel::Winding::kCounterClockwise, 1e-12)) {
+    return false;
+  }
   std::vector<Face>& faces = scratch.faces;
   faces.clear();
   for (int i : walls.room_walls[static_cast<std::size_t>(room)]) {
@@ -190,7 +162,7 @@ bool convex_clear_floor(const kernel::Polygon& cell, const kernel::Bounds2& box,
       const double line_i = kernel::dot(faces[i].origin, faces[i].normal);
       const double line_j = kernel::dot(faces[j].origin, faces[j].normal);
       if (parallel && std::abs(line_i - line_j) < 1e-9 &&
-          std::abs(faces[i].d - faces[j].d) > 1e-9) {
+          std::abs(faces[i].offset - faces[j].offset) > 1e-9) {
         return false;
       }
     }
@@ -198,7 +170,7 @@ bool convex_clear_floor(const kernel::Polygon& cell, const kernel::Bounds2& box,
   kernel::Ring& clear = scratch.ring;
   clear.assign(cell.outer.begin(), cell.outer.end());
   for (const Face& f : faces) {
-    clip(clear, f.origin, f.normal, f.d, scratch.cut);
+    kernel::clip(clear, f, scratch.cut);
     std::swap(clear, scratch.cut);
     if (clear.size() < 3) return true;
   }
@@ -293,8 +265,8 @@ void add_footers(const std::vector<kernel::Polygon>& clear,
       double u = 0;
       const auto strip = [&](double from, double to) {
         if (to - from < depth) return;
-        add_box(mesh, kernel::lift(p + dir * from, z), kernel::lift(dir * (to - from), 0),
-                kernel::lift(n * depth, 0), Vec3{0, 0, height}, tag);
+        kernel::add_box(mesh, kernel::lift(p + dir * from, z), kernel::lift(dir * (to - from), 0),
+                        kernel::lift(n * depth, 0), Vec3{0, 0, height}, tag);
       };
       for (const auto& [b0, b1] : blocked) {
         strip(u, std::min(b0, length));
@@ -381,14 +353,10 @@ void build_rooms(const Context& c, int s, const StoreyWalls& walls, std::vector<
       }
       return out;
     };
-    // A slab over the clear floor minus `holes` (most rooms have none: no copy then).
+    // A slab over the clear floor minus `holes` (stairwells, a compluvium).
     const auto slab = [&](const std::vector<kernel::Polygon>& holes, double bottom, double top,
                           FaceTag below, FaceTag above) {
-      const std::vector<kernel::Polygon> cut =
-          holes.empty() ? std::vector<kernel::Polygon>{} : minus(clear, holes);
-      for (const kernel::Polygon& p : holes.empty() ? clear : cut) {
-        add_prism(part.mesh, p, bottom, top, below, above, inner);
-      }
+      kernel::add_slab(part.mesh, clear, holes, bottom, top, {below, above, inner});
     };
     const std::vector<kernel::Polygon> floor_cut = near(floor_holes, floor_boxes);
     const bool footers =
@@ -448,11 +416,13 @@ void build_stairs(const Context& c, int s, kernel::Mesh& mesh, shape::StoreyPlan
   for (const PlanStair& st : storey.stairs) {
     const double run = kernel::length(st.head - st.foot);
     if (!(run > 0) || !(rise > 0)) continue;
-    const int risers = st.risers > 0 ? st.risers : static_cast<int>(std::ceil(rise / 0.18));
+    const int risers = st.risers > 0 ? st.risers : kernel::stair_steps(rise, kernel::kMaxStepRise);
     // The last step's top is the upper floor's top: the flight starts on this floor's slab.
-    add_staircase(mesh, st.foot, (st.head - st.foot) / run, st.width,
-                  c.floor_z(s) + c.options.slab_thickness, risers, run / risers, rise / risers,
-                  {SemanticClass::kStair, kStairMaterial, 0});
+    kernel::add_staircase(
+        mesh,
+        {st.foot, (st.head - st.foot) / run, st.width, c.floor_z(s) + c.options.slab_thickness,
+         risers, run / risers, rise / risers},
+        {SemanticClass::kStair, kStairMaterial, 0});
     plan.stairs.push_back({st.footprint, st.foot, st.head});
     ++c.result.stats.stairs;
   }
@@ -468,9 +438,10 @@ void build_base(const Context& c, const std::vector<StoreyWalls>& walls, kernel:
   const double base = c.rules.base_height;
   if (base > 0) {
     for (const kernel::Polygon& footprint : c.plan.footprint) {
-      add_prism(mesh, footprint, 0, base, {SemanticClass::kGroundSurface, kPlinthMaterial, 0},
-                {SemanticClass::kClosureSurface, kPlinthMaterial, 1},
-                {SemanticClass::kWallSurface, kPlinthMaterial, 2});
+      kernel::add_prism(mesh, footprint, 0, base,
+                        {{SemanticClass::kGroundSurface, kPlinthMaterial, 0},
+                         {SemanticClass::kClosureSurface, kPlinthMaterial, 1},
+                         {SemanticClass::kWallSurface, kPlinthMaterial, 2}});
     }
   }
   if (c.plan.storeys.empty() || walls.empty()) return;
@@ -483,8 +454,10 @@ void build_base(const Context& c, const std::vector<StoreyWalls>& walls, kernel:
     const WallGeometry& g = walls.front().walls[static_cast<std::size_t>(e.wall)];
     const Vec2 outward = -g.left;
     const double depth = steps * c.options.step_run;
-    add_staircase(mesh, e.center + outward * depth, -outward, e.width + 0.4, 0, steps,
-                  c.options.step_run, rise / steps, {SemanticClass::kStair, kStairMaterial, 3});
+    kernel::add_staircase(mesh,
+                          {e.center + outward * depth, -outward, e.width + 0.4, 0, steps,
+                           c.options.step_run, rise / steps},
+                          {SemanticClass::kStair, kStairMaterial, 3});
   }
 }
 

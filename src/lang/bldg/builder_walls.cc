@@ -13,12 +13,13 @@
 // the facade). An outer wall is lengthened by its thickness at a reflex corner of the outline,
 // where two walls standing inside would otherwise leave a square hole.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
 
+#include "kernel/opening_frame.h"
+#include "kernel/planar.h"
 #include "kernel/polygon.h"
 #include "kernel/wall.h"
 #include "lang/bldg/builder_detail.h"
@@ -161,18 +162,6 @@ bool reflex(Vec2 incoming, Vec2 outgoing) {
   return kernel::cross(incoming, outgoing) < -1e-9;
 }
 
-// kernel::bounds of a hole-free polygon with outer ring `ring`: Bounds2::add's folds, in place.
-kernel::Bounds2 rect_bounds(const kernel::Ring& ring) {
-  kernel::Bounds2 b;
-  for (const Vec2 p : ring) {
-    b.min.x = std::min(b.min.x, p.x);
-    b.min.y = std::min(b.min.y, p.y);
-    b.max.x = std::max(b.max.x, p.x);
-    b.max.y = std::max(b.max.y, p.y);
-  }
-  return b;
-}
-
 WallGeometry place(const Outline& outer, const PlanWall& wall, double outer_thickness) {
   WallGeometry g;
   const double length = kernel::length(wall.b - wall.a);
@@ -203,7 +192,7 @@ WallGeometry place(const Outline& outer, const PlanWall& wall, double outer_thic
   g.start = wall.a - g.dir * extend_start;
   g.length = length + extend_start + extend_end;
   g.footprint = g.rect(0, g.length, g.offset0, g.offset1);
-  g.box = rect_bounds(g.footprint.outer);
+  g.box = kernel::bounds(g.footprint.outer);
   return g;
 }
 
@@ -226,43 +215,6 @@ kernel::WallFaceTags wall_tags(bool exterior, std::uint32_t& face_id) {
     tag->face_id = face_id++;
   }
   return tags;
-}
-
-// Frame portals (§4.1) on both faces of the wall: posts and a head, plus a sill piece for windows;
-// frame_width wide, standing frame_depth out of the face. A window also gets a glass pane in the
-// middle of the wall.
-void add_frames(const kernel::WallFrame& frame, double thickness, const kernel::Opening& o,
-                bool door, const BuilderOptions& options, kernel::Mesh& mesh) {
-  const double fw = options.frame_width;
-  const double fd = options.frame_depth;
-  const FaceTag tag{door ? SemanticClass::kDoor : SemanticClass::kWindow, kFrameMaterial, 0};
-  const double bottom = door ? o.sill : o.sill - fw;
-  const double top = o.sill + o.height;
-  // The portal's boxes (at most eight) and a window's pane go into the mesh together (add_boxes),
-  // the pane last; its six faces then get the glass tag.
-  std::array<BoxEdges, 9> boxes;
-  std::size_t count = 0;
-  const auto box = [&](double u0, double u1, double v0, double v1, double w0, double w1) {
-    boxes[count++] = {frame.map(u0, v0, w0), frame.u_axis * (u1 - u0), frame.v_axis * (v1 - v0),
-                      frame.normal * (w1 - w0)};
-  };
-  for (const auto& [w0, w1] : {std::pair{thickness, thickness + fd}, std::pair{-fd, 0.0}}) {
-    box(o.u - fw, o.u, bottom, top + fw, w0, w1);
-    box(o.u + o.width, o.u + o.width + fw, bottom, top + fw, w0, w1);
-    box(o.u, o.u + o.width, top, top + fw, w0, w1);
-    if (!door) box(o.u, o.u + o.width, o.sill - fw, o.sill, w0, w1);
-  }
-  if (!door) {
-    const double pane = std::min(0.02, thickness / 4);
-    boxes[count++] = {frame.map(o.u, o.sill, thickness / 2 - pane / 2), frame.u_axis * o.width,
-                      frame.v_axis * o.height, frame.normal * pane};
-  }
-  add_boxes(mesh, std::span<const BoxEdges>(boxes.data(), count), tag);
-  if (!door) {
-    for (std::size_t f = mesh.face_count() - 6; f < mesh.face_count(); ++f) {
-      mesh.tag(f) = {SemanticClass::kWindow, kGlassMaterial, 0};
-    }
-  }
 }
 
 // The wall's footprint in the plan, with gaps where doors go through it.
@@ -351,6 +303,15 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
   const std::size_t faces = 8 * storey.walls.size() + 6 * (doors + windows) + 6 * boxes;
   mesh.reserve(mesh.vertex_count() + 8 * (storey.walls.size() + doors + windows + boxes),
                mesh.face_count() + faces, 4 * (mesh.face_count() + faces));
+  // Frame portals (§4.1) on both faces of the wall; a window also gets a glass pane, a door none.
+  kernel::FrameProfile profile;
+  profile.width = c.options.frame_width;
+  profile.depth = c.options.frame_depth;
+  profile.pane = 0.02;
+  profile.leaf = 0;
+  const kernel::FrameTags door_tags{{SemanticClass::kDoor, kFrameMaterial, 0}, {}};
+  const kernel::FrameTags window_tags{{SemanticClass::kWindow, kFrameMaterial, 0},
+                                      {SemanticClass::kWindow, kGlassMaterial, 0}};
   kernel::WallSpec spec;            // reused: its vectors keep their storage from wall to wall
   kernel::WallWorkspace workspace;  // likewise the wall kernel's intermediate arrays
   spec.policy = kernel::OpeningPolicy::kSkip;
@@ -395,7 +356,11 @@ StoreyWalls build_walls(const Context& c, int s, kernel::Mesh& mesh, shape::Stor
     gaps.clear();
     for (std::size_t k : built.cut) {
       const Asked& a = wall_asked[k];
-      if (c.options.frames) add_frames(*frame, g.thickness, a.opening, a.door, c.options, mesh);
+      if (c.options.frames) {
+        kernel::add_opening_frame(mesh, *frame, g.thickness, a.opening,
+                                  a.door ? kernel::FrameKind::kDoor : kernel::FrameKind::kWindow,
+                                  profile, a.door ? door_tags : window_tags);
+      }
       if (a.door) {
         gaps.emplace_back(a.opening.u, a.opening.u + a.opening.width);
         plan_door(g, wall, a, plan);

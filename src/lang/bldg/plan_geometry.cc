@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "kernel/boolean2d.h"
+#include "kernel/planar.h"
 
 namespace insula::lang::bldg::plan {
 namespace {
@@ -15,57 +16,26 @@ using kernel::Polygon;
 using kernel::Ring;
 using kernel::Vec2;
 
-// Collinear test for consecutive vertices a, b, c: b lies on the line ac within the tolerance
-// and between a and c.
-// Squared lengths against the squared tolerance: the same tests without std::hypot, which was
-// the ring simplification's main cost.
+// Is b, between its neighbours a and c, not a corner? It is when an edge beside it is shorter
+// than kLineTolerance, or when it lies between a and c within kLineTolerance of the line ac.
 bool redundant(Vec2 a, Vec2 b, Vec2 c) {
   constexpr double kTol2 = kLineTolerance * kLineTolerance;
   const Vec2 ac = c - a;
   const Vec2 ab = b - a;
   const Vec2 bc = c - b;
   if (kernel::dot(ab, ab) < kTol2 || kernel::dot(bc, bc) < kTol2) return true;
-  // b must lie between a and c: tested before the distance, it rules out most vertices (corners)
-  // without the square root and the division.
   if (!(kernel::dot(ab, bc) > 0)) return false;
   const double len2 = kernel::dot(ac, ac);
   if (len2 < kTol2) return false;
-  const double len = std::sqrt(len2);
-  const double dist = std::abs(kernel::cross(ac, ab)) / len;
-  return dist < kLineTolerance;
-}
-
-// Index of the first vertex of `ring` (3 vertices or more) that `redundant` holds redundant,
-// ring.size() when none is. Walks the ring once carrying each edge's vector and squared length
-// from the vertex where it ends to the vertex where it starts (the same differences, so the same
-// bits), so that most vertices, corners, are settled by two cheap tests; the others go through
-// `redundant` itself.
-std::size_t first_redundant(const Ring& ring) {
-  constexpr double kTol2 = kLineTolerance * kLineTolerance;
-  const std::size_t n = ring.size();
-  Vec2 ab = ring[0] - ring[n - 1];
-  double ab2 = kernel::dot(ab, ab);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 b = ring[i];
-    const Vec2 c = ring[i + 1 < n ? i + 1 : 0];
-    const Vec2 bc = c - b;
-    const double bc2 = kernel::dot(bc, bc);
-    if (ab2 < kTol2 || bc2 < kTol2) return i;
-    if (kernel::dot(ab, bc) > 0 && redundant(ring[i == 0 ? n - 1 : i - 1], b, c)) return i;
-    ab = bc;
-    ab2 = bc2;
-  }
-  return n;
+  return std::abs(kernel::cross(ac, ab)) / std::sqrt(len2) < kLineTolerance;
 }
 
 // Erases the redundant vertex of lowest index, again and again, until none is left. After an
 // erasure at i only the vertices beside it changed neighbours, so the scan resumes at i - 1 rather
 // than at 0 (vertices 0 .. i - 2 were kept and keep their neighbours), except when the erased
 // vertex was the first or the last, which changes vertex 0's neighbour: then it restarts at 0.
-// The scan starts at the first redundant vertex (most rings have none: they are left at once).
 void simplify_ring(Ring& ring) {
-  if (ring.size() < 3) return;
-  std::size_t i = first_redundant(ring);
+  std::size_t i = 0;
   while (ring.size() >= 3 && i < ring.size()) {
     const std::size_t n = ring.size();
     if (!redundant(ring[i == 0 ? n - 1 : i - 1], ring[i], ring[i + 1 < n ? i + 1 : 0])) {
@@ -113,8 +83,8 @@ void covered_by_ring(Vec2 p, Vec2 u, double len, const Ring& ring, int other,
 // `shared_only` the caller keeps only the pieces that have a polygon on the other side, so edges
 // no other polygon covers are skipped without listing their open pieces.
 struct Neighbours {
-  const std::vector<const Polygon*>& others;
-  const std::vector<kernel::Bounds2>& boxes;
+  std::span<const Polygon* const> others;
+  std::span<const kernel::Bounds2> boxes;
   std::span<const std::uint32_t> near;
   bool shared_only = false;
 };
@@ -135,14 +105,14 @@ bool overlaps_along(Vec2 p, Vec2 u, double len, const kernel::Bounds2& box) {
 }
 
 // Appends the pieces of edge p->q (length len >= kLineTolerance, box edge_box) to `out`.
+// `covered` is the caller's scratch, its storage reused from edge to edge.
 void pieces_of_edge(Vec2 p, Vec2 q, double len, const kernel::Bounds2& edge_box,
-                    const Neighbours& nb, std::vector<EdgePiece>& out) {
-  // Scratch kept from edge to edge (every edge of every cell passes here).
-  thread_local std::vector<Interval> covered;
+                    const Neighbours& nb, std::vector<Interval>& covered,
+                    std::vector<EdgePiece>& out) {
   covered.clear();
   const Vec2 u = (q - p) / len;
   for (const std::uint32_t k : nb.near) {
-    if (!bounds_touch(edge_box, nb.boxes[k], kLineTolerance)) continue;
+    if (!kernel::touches(edge_box, nb.boxes[k], kLineTolerance)) continue;
     if (!overlaps_along(p, u, len, nb.boxes[k])) continue;
     covered_by_ring(p, u, len, nb.others[k]->outer, static_cast<int>(k), covered);
     for (const Ring& hole : nb.others[k]->holes)
@@ -175,12 +145,13 @@ void pieces_of_edge(Vec2 p, Vec2 q, double len, const kernel::Bounds2& edge_box,
 
 bool touches_any(const kernel::Bounds2& edge_box, const Neighbours& nb) {
   return std::any_of(nb.near.begin(), nb.near.end(), [&](std::uint32_t k) {
-    return bounds_touch(edge_box, nb.boxes[k], kLineTolerance);
+    return kernel::touches(edge_box, nb.boxes[k], kLineTolerance);
   });
 }
 
 // Appends the pieces of every edge of `cell` (outer ring, then holes) to `out`.
 void append_pieces(const Polygon& cell, const Neighbours& nb, std::vector<EdgePiece>& out) {
+  std::vector<Interval> covered;
   auto ring_pieces = [&](const Ring& ring) {
     const std::size_t n = ring.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -192,7 +163,7 @@ void append_pieces(const Polygon& cell, const Neighbours& nb, std::vector<EdgePi
       if (nb.shared_only && !touches_any(edge_box, nb)) continue;
       const double len = edge_length(q - p);
       if (len < kLineTolerance) continue;
-      pieces_of_edge(p, q, len, edge_box, nb, out);
+      pieces_of_edge(p, q, len, edge_box, nb, covered, out);
     }
   };
   ring_pieces(cell.outer);
@@ -200,20 +171,15 @@ void append_pieces(const Polygon& cell, const Neighbours& nb, std::vector<EdgePi
 }
 
 // The pieces of `cell`'s boundary shared with the single polygon `other` (index 0; open pieces
-// may be left out), into a scratch list reused from call to call; empty when the boxes do not
-// touch (most pairs callers ask about).
-const std::vector<EdgePiece>& pieces_against(const Polygon& cell, const kernel::Bounds2& cell_box,
-                                             const Polygon& other,
-                                             const kernel::Bounds2& other_box) {
-  thread_local std::vector<EdgePiece> pieces;
-  thread_local std::vector<const Polygon*> others(1);
-  thread_local std::vector<kernel::Bounds2> boxes(1);
+// may be left out); empty, and nothing allocated, when the boxes do not touch (most pairs callers
+// ask about).
+std::vector<EdgePiece> pieces_against(const Polygon& cell, const kernel::Bounds2& cell_box,
+                                      const Polygon& other, const kernel::Bounds2& other_box) {
+  std::vector<EdgePiece> pieces;
+  if (!kernel::touches(cell_box, other_box, kLineTolerance)) return pieces;
+  const Polygon* const others[1] = {&other};
   static constexpr std::uint32_t near[1] = {0};
-  pieces.clear();
-  if (!bounds_touch(cell_box, other_box, kLineTolerance)) return pieces;
-  others[0] = &other;
-  boxes[0] = other_box;
-  append_pieces(cell, Neighbours{others, boxes, near, true}, pieces);
+  append_pieces(cell, Neighbours{others, {&other_box, 1}, near, true}, pieces);
   return pieces;
 }
 
@@ -231,8 +197,7 @@ double area_of(const std::vector<Polygon>& region) {
 
 kernel::Bounds2 bounds_of(const std::vector<Polygon>& region) {
   kernel::Bounds2 b;
-  for (const Polygon& p : region)
-    for (Vec2 v : p.outer) b.add(v);
+  for (const Polygon& p : region) kernel::add(b, p.outer);
   return b;
 }
 
@@ -255,33 +220,27 @@ void simplify(Polygon& polygon) {
 }
 
 int wall_count(const Polygon& polygon) {
-  // Most outlines hold no redundant vertex: then simplify_ring would erase nothing.
-  const Ring& ring = polygon.outer;
-  const std::size_t n = ring.size();
-  if (n < 3 || first_redundant(ring) == n) return static_cast<int>(n);
-  thread_local Ring scratch;  // reused: the shape and walls stages count every room's walls
-  scratch.assign(polygon.outer.begin(), polygon.outer.end());
-  simplify_ring(scratch);
-  return static_cast<int>(scratch.size());
+  Ring ring = polygon.outer;
+  simplify_ring(ring);
+  return static_cast<int>(ring.size());
 }
 
 std::vector<EdgePiece> boundary_pieces(const Polygon& cell,
                                        const std::vector<const Polygon*>& others) {
   std::vector<kernel::Bounds2> boxes(others.size());
   for (std::size_t k = 0; k < others.size(); ++k)
-    if (others[k] != nullptr) boxes[k] = box_of(*others[k]);
-  return boundary_pieces(cell, box_of(cell), others, boxes);
+    if (others[k] != nullptr) boxes[k] = kernel::bounds(*others[k]);
+  return boundary_pieces(cell, kernel::bounds(cell), others, boxes);
 }
 
 std::vector<EdgePiece> boundary_pieces(const Polygon& cell, const kernel::Bounds2& cell_box,
                                        const std::vector<const Polygon*>& others,
                                        const std::vector<kernel::Bounds2>& boxes) {
   // Only the polygons whose box touches the cell's can share an edge with it (indices kept).
-  thread_local std::vector<std::uint32_t> near;
-  near.clear();
+  std::vector<std::uint32_t> near;
   for (std::size_t k = 0; k < others.size(); ++k) {
     if (others[k] == nullptr) continue;
-    if (bounds_touch(cell_box, boxes[k], kLineTolerance))
+    if (kernel::touches(cell_box, boxes[k], kLineTolerance))
       near.push_back(static_cast<std::uint32_t>(k));
   }
   std::vector<EdgePiece> out;
@@ -302,14 +261,16 @@ std::vector<EdgePiece> boundary_pieces(const Polygon& cell,
 
 std::vector<EdgePiece> shared_segments(const Polygon& cell, const Polygon& other) {
   std::vector<EdgePiece> out;
-  for (const EdgePiece& piece : pieces_against(cell, box_of(cell), other, box_of(other)))
+  for (const EdgePiece& piece :
+       pieces_against(cell, kernel::bounds(cell), other, kernel::bounds(other)))
     if (piece.other == 0) out.push_back(piece);
   return out;
 }
 
 double shared_length(const Polygon& cell, const Polygon& other) {
   double total = 0;
-  for (const EdgePiece& piece : pieces_against(cell, box_of(cell), other, box_of(other)))
+  for (const EdgePiece& piece :
+       pieces_against(cell, kernel::bounds(cell), other, kernel::bounds(other)))
     if (piece.other == 0) total += piece.length();
   return total;
 }
@@ -328,7 +289,7 @@ bool covers(const std::vector<Polygon>& outer, const Polygon& inner) {
 }
 
 bool overlaps(const Polygon& a, const Polygon& b) {
-  if (!bounds_touch(box_of(a), box_of(b), 0)) return false;
+  if (!kernel::touches(kernel::bounds(a), kernel::bounds(b), 0)) return false;
   const kernel::BooleanResult r = kernel::intersect({a}, {b});
   return r.ok() && area_of(r.polygons) > 1e-9;
 }
@@ -351,7 +312,7 @@ NearLists touching_boxes(const std::vector<kernel::Bounds2>& boxes, double margi
     const double reach = a.max.x + margin;
     // Boxes further right start past a's right side plus the margin: none of them touches a.
     for (std::size_t m = k + 1; m < n && left[m] <= reach; ++m) {
-      if (!bounds_touch(a, boxes[by_left[m]], margin)) continue;
+      if (!kernel::touches(a, boxes[by_left[m]], margin)) continue;
       pairs.push_back({by_left[k], by_left[m]});
     }
   }
@@ -451,7 +412,7 @@ void weld(const std::vector<Polygon*>& cells, double tolerance) {
   // in order and each vertex tries the touching cells in index order (the first edge wins).
   std::vector<kernel::Bounds2> boxes;
   boxes.reserve(cells.size());
-  for (const Polygon* c : cells) boxes.push_back(box_of(*c));
+  for (const Polygon* c : cells) boxes.push_back(kernel::bounds(*c));
   const NearLists lists = touching_boxes(boxes, tolerance);
   for (std::size_t i = 0; i < cells.size(); ++i) {
     auto snap_ring = [&](Ring& ring) {
@@ -461,7 +422,7 @@ void weld(const std::vector<Polygon*>& cells, double tolerance) {
         pb.max = v;
         for (std::uint32_t k = lists.start[i]; k < lists.start[i + 1]; ++k) {
           const std::size_t j = lists.near[k];
-          if (!bounds_touch(pb, boxes[j], tolerance)) continue;
+          if (!kernel::touches(pb, boxes[j], tolerance)) continue;
           if (snap_to_ring(v, cells[j]->outer, tolerance)) break;
           bool done = false;
           for (const Ring& h : cells[j]->holes) done = done || snap_to_ring(v, h, tolerance);

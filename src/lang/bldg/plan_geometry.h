@@ -75,6 +75,7 @@ inline double area_below_axis(const std::vector<kernel::Polygon>& region, double
   return twice / 2;
 }
 
+// The box of the outer rings of `region`.
 kernel::Bounds2 bounds_of(const std::vector<kernel::Polygon>& region);
 
 // Axis-parallel rectangle [x0, x1] x [y0, y1], counter-clockwise.
@@ -118,8 +119,8 @@ std::vector<EdgePiece> boundary_pieces(const kernel::Polygon& cell, const kernel
                                        const std::vector<kernel::Bounds2>& boxes);
 
 // For every polygon of a list, the others whose boxes touch its own within `margin`
-// (bounds_touch), in increasing index order: near[start[i] .. start[i + 1]) for polygon i. Found by
-// a sweep over the boxes sorted by their left side, not by testing every pair.
+// (kernel::touches), in increasing index order: near[start[i] .. start[i + 1]) for polygon i.
+// Found by a sweep over the boxes sorted by their left side, not by testing every pair.
 struct NearLists {
   std::vector<std::uint32_t> start;
   std::vector<std::uint32_t> near;
@@ -140,8 +141,9 @@ std::vector<EdgePiece> boundary_pieces(const kernel::Polygon& cell,
 // The maximal straight segments of `cell`'s boundary shared with `other` (oriented as in `cell`).
 std::vector<EdgePiece> shared_segments(const kernel::Polygon& cell, const kernel::Polygon& other);
 double shared_length(const kernel::Polygon& cell, const kernel::Polygon& other);
-// Length of the longest of shared_segments(cell, other), with both boxes given (box_of); 0 when
-// they share nothing. Allocates nothing: probing asks it for every pair of neighbouring rooms.
+// Length of the longest of shared_segments(cell, other), with both boxes given (kernel::bounds); 0
+// when they share nothing. Allocates only for a pair whose boxes touch: probing asks it for every
+// pair of neighbouring rooms.
 double longest_shared_segment(const kernel::Polygon& cell, const kernel::Bounds2& cell_box,
                               const kernel::Polygon& other, const kernel::Bounds2& other_box);
 
@@ -149,26 +151,6 @@ double longest_shared_segment(const kernel::Polygon& cell, const kernel::Bounds2
 bool covers(const std::vector<kernel::Polygon>& outer, const kernel::Polygon& inner);
 // True when the interiors of a and b overlap by more than 1e-9 m².
 bool overlaps(const kernel::Polygon& a, const kernel::Polygon& b);
-// Inline: the prefilters call it for every pair of cells of a storey.
-inline bool bounds_touch(const kernel::Bounds2& a, const kernel::Bounds2& b, double margin) {
-  return a.min.x <= b.max.x + margin && b.min.x <= a.max.x + margin &&
-         a.min.y <= b.max.y + margin && b.min.y <= a.max.y + margin;
-}
-// kernel::bounds(polygon), inline (the same minima and maxima without a call per vertex).
-inline kernel::Bounds2 box_of(const kernel::Polygon& polygon) {
-  kernel::Bounds2 b;
-  auto add_ring = [&](const kernel::Ring& ring) {
-    for (const kernel::Vec2 p : ring) {
-      b.min.x = std::min(b.min.x, p.x);
-      b.min.y = std::min(b.min.y, p.y);
-      b.max.x = std::max(b.max.x, p.x);
-      b.max.y = std::max(b.max.y, p.y);
-    }
-  };
-  add_ring(polygon.outer);
-  for (const kernel::Ring& hole : polygon.holes) add_ring(hole);
-  return b;
-}
 
 // Makes neighbouring cells agree exactly on their common boundaries. Each boolean operation
 // rounds to a grid centred on its own inputs (kernel/boolean2d.h), so two cells cut in different

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kernel/planar.h"
+
 namespace insula::lang::bldg::plan {
 namespace {
 
@@ -45,7 +47,7 @@ void occupied(OpeningIndex& index, Vec2 p, Vec2 u, std::vector<Interval>& out) {
     occupied(index.storey(), p, u, out);
     return;
   }
-  thread_local std::vector<std::uint32_t> near;
+  std::vector<std::uint32_t> near;
   const bool horizontal = u.y == 0;
   index.near(horizontal, horizontal ? p.y : p.x, 2e-4, near);
   out.clear();
@@ -78,7 +80,7 @@ StoreyCells::StoreyCells(const PlanStorey& storey) : storey_(&storey) {
   for (const PlanRoom& r : storey.rooms) others_.push_back(&r.cell);
   for (const PlanDeadZone& z : storey.dead_zones) others_.push_back(&z.cell);
   boxes_.reserve(others_.size());
-  for (const Polygon* cell : others_) boxes_.push_back(box_of(*cell));
+  for (const Polygon* cell : others_) boxes_.push_back(kernel::bounds(*cell));
   near_ = touching_boxes(boxes_, kLineTolerance);
   pieces_.resize(others_.size());
   done_.assign(others_.size(), false);
@@ -97,13 +99,11 @@ std::vector<EdgePiece> room_pieces(const PlanStorey& storey, int room) {
   // One room's pieces: the cells whose boxes touch its box found by a scan of every box (the list
   // StoreyCells' touching lists hold for it, in the same increasing order), without their
   // storey-wide sweep. The room itself is left out as a null entry.
-  thread_local std::vector<const Polygon*> others;
-  thread_local std::vector<kernel::Bounds2> boxes;
-  others.clear();
-  boxes.clear();
+  std::vector<const Polygon*> others;
+  std::vector<kernel::Bounds2> boxes;
   for (const PlanRoom& r : storey.rooms) others.push_back(&r.cell);
   for (const PlanDeadZone& z : storey.dead_zones) others.push_back(&z.cell);
-  for (const Polygon* cell : others) boxes.push_back(box_of(*cell));
+  for (const Polygon* cell : others) boxes.push_back(kernel::bounds(*cell));
   const auto i = static_cast<std::size_t>(room);
   others[i] = nullptr;
   return boundary_pieces(storey.rooms[i].cell, boxes[i], others, boxes);
@@ -120,12 +120,10 @@ std::optional<Slot> find_slot_with(const Occupied& list_occupied, Vec2 p, Vec2 q
   const double target = prefer >= 0 ? prefer : len / 2;
   if (len < width + 2 * clearance) return std::nullopt;
   const Vec2 u = (q - p) / len;
-  // Scratch kept from call to call (every door and window asks here, some several times).
-  thread_local std::vector<Interval> busy;
-  thread_local std::vector<Interval> free;
-  thread_local std::vector<Interval> next;
+  std::vector<Interval> busy;
   list_occupied(p, u, busy);
-  free.assign(1, {clearance, len - clearance});
+  std::vector<Interval> free{{clearance, len - clearance}};
+  std::vector<Interval> next;
   for (const Interval& o : busy) {
     next.clear();
     for (const Interval& f : free) {
@@ -304,16 +302,9 @@ template <typename SlotOn>
 std::optional<PlanDoor> door_with(const PlanStorey& storey, int a, int b, double width,
                                   const SlotOn& slot_on) {
   std::vector<EdgePiece> shared = shared_segments(storey.rooms[a].cell, storey.rooms[b].cell);
-  // Longest first, ties in boundary order (a stable sort: an insertion sort of the few shared
-  // segments, without std::stable_sort's buffer); each length measured once.
-  thread_local std::vector<double> lengths;
-  lengths.clear();
-  for (const EdgePiece& piece : shared) lengths.push_back(piece.length());
-  for (std::size_t i = 1; i < shared.size(); ++i)
-    for (std::size_t j = i; j > 0 && lengths[j - 1] < lengths[j]; --j) {
-      std::swap(shared[j - 1], shared[j]);
-      std::swap(lengths[j - 1], lengths[j]);
-    }
+  // Longest first, ties in boundary order.
+  std::stable_sort(shared.begin(), shared.end(),
+                   [](const EdgePiece& x, const EdgePiece& y) { return x.length() > y.length(); });
   for (const EdgePiece& piece : shared) {
     const std::optional<Slot> slot = slot_on(piece);
     if (!slot) continue;
@@ -361,7 +352,7 @@ std::vector<EdgePiece> open_air_of(const PlanStorey& storey, const std::vector<E
       kernel::Bounds2 point;
       point.min = outside;
       point.max = outside;
-      return bounds_touch(point, box_of(polygon), 1e-6) &&
+      return kernel::touches(point, kernel::bounds(polygon), 1e-6) &&
              kernel::locate(polygon, outside, 1e-7) == kernel::PointLocation::kInside;
     };
     bool covered = false;

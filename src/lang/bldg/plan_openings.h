@@ -19,9 +19,9 @@ struct Slot {
   kernel::Vec2 center;
 };
 
-// The cells of a storey, rooms then dead zones, with their boxes (box_of), taken once for stages
-// that list the boundary pieces of many rooms of the storey while the cells do not change: each
-// listing would otherwise recompute the box of every cell. Each cell's pieces are computed on
+// The cells of a storey, rooms then dead zones, with their boxes (kernel::bounds), taken once for
+// stages that list the boundary pieces of many rooms of the storey while the cells do not change:
+// each listing would otherwise recompute the box of every cell. Each cell's pieces are computed on
 // first request and kept (the windows and the walls stages ask for the same ones). Holds pointers
 // into the storey: valid while its rooms and dead zones are neither moved nor edited.
 class StoreyCells {

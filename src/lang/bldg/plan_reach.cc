@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <tuple>
 
+#include "base/union_find.h"
 #include "kernel/boolean2d.h"
 #include "lang/bldg/plan_geometry.h"
 #include "lang/bldg/plan_openings.h"
@@ -27,13 +28,9 @@ Reach reachable(const FloorPlan& plan) {
   std::vector<int> first(levels + 1, 0);  // global number of room r of storey s: first[s] + r
   for (std::size_t s = 0; s < levels; ++s)
     first[s + 1] = first[s] + static_cast<int>(plan.storeys[s].rooms.size());
-  std::vector<int> parent(static_cast<std::size_t>(first[levels]));
-  for (std::size_t g = 0; g < parent.size(); ++g) parent[g] = static_cast<int>(g);
-  auto find = [&](int g) {
-    while (parent[g] != g) g = parent[g] = parent[parent[g]];
-    return g;
-  };
-  auto join = [&](int a, int b) { parent[find(a)] = find(b); };
+  base::UnionFind groups(static_cast<std::size_t>(first[levels]));
+  auto join = [&](int a, int b) { groups.unite(std::uint32_t(a), std::uint32_t(b)); };
+  auto find = [&](int g) { return groups.find(std::uint32_t(g)); };
   for (std::size_t s = 0; s < levels; ++s) {
     const PlanStorey& storey = plan.storeys[s];
     for (const PlanDoor& d : storey.doors) join(first[s] + d.room_a, first[s] + d.room_b);
@@ -41,7 +38,7 @@ Reach reachable(const FloorPlan& plan) {
     for (const PlanStair& st : storey.stairs)
       join(first[s] + st.lower_room, first[s + 1] + st.upper_room);
   }
-  std::vector<bool> entered(parent.size(), false);  // by group root
+  std::vector<bool> entered(groups.size(), false);  // by group root
   for (const PlanDoor& e : plan.storeys[0].entrances) entered[find(e.room_a)] = true;
   for (std::size_t s = 0; s < levels; ++s) {
     reach[s].assign(plan.storeys[s].rooms.size(), false);

@@ -187,9 +187,7 @@ void split_tree(const std::vector<TreeNode>& tree, int node, std::vector<Polygon
     return;
   }
   if (n.children.empty()) return;
-  // Scratch reused from node to node: split_region reads it before the recursion below.
-  thread_local std::vector<double> weights;
-  weights.clear();
+  std::vector<double> weights;
   for (int c : n.children) weights.push_back(std::max(weight[c], 1e-12));
   std::vector<std::vector<Polygon>> cells =
       split_region(region, weights, along_x(n, x_first), step);
@@ -327,11 +325,8 @@ bool subdivide_parts(Work& work) {
 void subdivide_floor(Work& work, int floor_index) {
   WorkFloor& floor = work.floors[floor_index];
   const WorkPart& part = work.parts[floor.part];
-  // Leaf regions by room index, a scratch reused from floor to floor (and from call to call when
-  // weight borrowing redoes floors): only this floor's entries are written, emptied first.
-  thread_local std::vector<std::vector<Polygon>> regions;
-  if (regions.size() < work.rooms.size()) regions.resize(work.rooms.size());
-  for (int r : floor.rooms) regions[r].clear();
+  // Leaf regions by room index (only this floor's entries are written).
+  std::vector<std::vector<Polygon>> regions(work.rooms.size());
   const auto weight = [&](int room) { return work.rooms[room].weight; };
   if (part.has_cell)
     split_tree(floor.tree, 0, {part.cell}, node_weights(floor.tree, weight),

@@ -4,6 +4,8 @@
 #include <functional>
 #include <string_view>
 
+#include "base/union_find.h"
+#include "kernel/planar.h"
 #include "lang/bldg/plan_geometry.h"
 
 namespace insula::lang::bldg::plan {
@@ -130,20 +132,11 @@ bool try_borrow(Work& work, std::vector<DoorRequest>& doors, std::size_t index, 
 
 }  // namespace
 
-namespace {
-
-int find_set(std::vector<int>& parent, int x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
-}  // namespace
-
 int request_connections(Work& work, std::vector<DoorRequest>& doors) {
   const int n = static_cast<int>(work.rooms.size());
-  std::vector<int> parent(n);
-  for (int i = 0; i < n; ++i) parent[i] = i;
-  auto unite = [&](int a, int b) { parent[find_set(parent, a)] = find_set(parent, b); };
+  base::UnionFind groups(static_cast<std::size_t>(n));
+  auto unite = [&](int a, int b) { groups.unite(std::uint32_t(a), std::uint32_t(b)); };
+  auto find_set = [&](int x) { return groups.find(std::uint32_t(x)); };
   std::vector<std::pair<int, int>> failed;
   for (const DoorRequest& d : doors) {
     if (d.accepted) unite(d.a, d.b);
@@ -187,11 +180,11 @@ int request_connections(Work& work, std::vector<DoorRequest>& doors) {
     auto shared_of = [&](std::size_t i, std::size_t j) {
       if (shared.empty()) {
         shared.assign(m * m, -1);
-        for (int r : rooms) boxes.push_back(box_of(work.rooms[r].cell));
+        for (int r : rooms) boxes.push_back(kernel::bounds(work.rooms[r].cell));
       }
       double& cached = shared[i * m + j];
       if (cached < 0) {
-        cached = bounds_touch(boxes[i], boxes[j], kLineTolerance)
+        cached = kernel::touches(boxes[i], boxes[j], kLineTolerance)
                      ? longest_shared_segment(work.rooms[rooms[i]].cell, boxes[i],
                                               work.rooms[rooms[j]].cell, boxes[j])
                      : 0;
@@ -205,11 +198,11 @@ int request_connections(Work& work, std::vector<DoorRequest>& doors) {
       int best_a = -1;
       int best_b = -1;
       double best = 0;
-      const int main_set = find_set(parent, main_room);
+      const std::uint32_t main_set = find_set(main_room);
       in_main.assign(m, false);
       std::size_t outside = 0;
       for (std::size_t i = 0; i < m; ++i) {
-        in_main[i] = find_set(parent, rooms[i]) == main_set;
+        in_main[i] = find_set(rooms[i]) == main_set;
         if (!in_main[i]) ++outside;
       }
       if (outside == 0) break;  // the storey is one group
@@ -317,7 +310,7 @@ double longest_shared(const Work& work, int a, int b) {
   const WorkRoom& ra = work.rooms[a];
   const WorkRoom& rb = work.rooms[b];
   if (!ra.has_cell || !rb.has_cell) return 0;
-  return longest_shared_segment(ra.cell, box_of(ra.cell), rb.cell, box_of(rb.cell));
+  return longest_shared_segment(ra.cell, kernel::bounds(ra.cell), rb.cell, kernel::bounds(rb.cell));
 }
 
 bool door_fits(const Work& work, int a, int b, double width) {

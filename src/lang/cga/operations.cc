@@ -92,8 +92,11 @@ constexpr Alias kAliases[] = {
      "type=shed", 1, BlockUse::kOptional, KeyUse::kNone, "", false, "shed roof"},
     {"roofMansard", OpKind::kGeneric, "roof", "pitch mansard_pitch break_height overhang ...",
      "type=mansard", 1, BlockUse::kOptional, KeyUse::kNone, "", false, "mansard roof"},
-    {"roofFlat", OpKind::kGeneric, "roof", "overhang ... !pitch !mansard_pitch !break_height",
-     "type=flat", 0, BlockUse::kOptional, KeyUse::kNone, "", false, "flat roof"},
+    // .bldg's Flat roof is roofFlat(overhang, thickness): the slab thickness comes second.
+    {"roofFlat", OpKind::kGeneric, "roof",
+     "overhang thickness ... !pitch !mansard_pitch !break_height", "type=flat", 0,
+     BlockUse::kOptional, KeyUse::kNone, "", false,
+     "flat roof; with a thickness a closed slab that thick over the outline grown by the overhang"},
 };
 
 // Successor items that are not shape operations.

@@ -6,12 +6,13 @@
 
 #include "kernel/polygon.h"
 #include "lang/lua/bindings_internal.h"
-#include "lang/lua/query_expr.h"
 #include "shape/ops.h"
+#include "shape/query_expr.h"
 
 namespace insula::lua {
 
 using kernel::Vec3;
+using shape::QueryExpr;
 using shape::ShapeId;
 
 namespace {

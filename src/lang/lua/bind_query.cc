@@ -4,11 +4,12 @@
 #include <algorithm>
 
 #include "lang/lua/bindings_internal.h"
-#include "lang/lua/query_expr.h"
 #include "shape/query.h"
+#include "shape/query_expr.h"
 
 namespace insula::lua {
 
+using shape::QueryExpr;
 using shape::ShapeId;
 
 namespace {

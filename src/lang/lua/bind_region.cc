@@ -5,11 +5,12 @@
 #include <cmath>
 
 #include "lang/lua/bindings_internal.h"
-#include "lang/lua/query_expr.h"
+#include "shape/query_expr.h"
 
 namespace insula::lua {
 
 using kernel::Vec3;
+using shape::QueryExpr;
 using shape::ShapeId;
 
 namespace {

@@ -4,6 +4,7 @@
 // neighbours within kLineTolerance of the line joining them), on rings full of repeated and
 // nearly collinear vertices.
 #include "lang/bldg/plan_geometry.h"
+#include "kernel/planar.h"
 
 #include <gtest/gtest.h>
 
@@ -107,7 +108,7 @@ TEST(PlanGeometry, ASquareKeepsFourWallsAndItsCollinearVertexGoes) {
   EXPECT_EQ(with_mid.outer, square.outer);
 }
 
-// touching_boxes' rows hold, in increasing order, exactly the other boxes bounds_touch finds.
+// touching_boxes' rows hold, in increasing order, exactly the other boxes kernel::touches finds.
 TEST(PlanGeometry, TouchingBoxesListEveryTouchingBoxInIncreasingOrder) {
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> u(0, 1);
@@ -125,7 +126,7 @@ TEST(PlanGeometry, TouchingBoxesListEveryTouchingBoxInIncreasingOrder) {
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       std::vector<std::uint32_t> expected;
       for (std::size_t j = 0; j < boxes.size(); ++j)
-        if (j != i && plan::bounds_touch(boxes[i], boxes[j], plan::kLineTolerance))
+        if (j != i && kernel::touches(boxes[i], boxes[j], plan::kLineTolerance))
           expected.push_back(static_cast<std::uint32_t>(j));
       const auto row = lists.of(i);
       EXPECT_EQ(std::vector<std::uint32_t>(row.begin(), row.end()), expected);

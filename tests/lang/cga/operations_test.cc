@@ -28,16 +28,16 @@ TEST(CgaOperations, SignaturesFollowTheRegistry) {
   EXPECT_EQ(sig("split"), "a");
   EXPECT_EQ(sig("offset"), "n|ns");
   EXPECT_EQ(sig("setback"), "n");
-  EXPECT_EQ(sig("roofHip"), "n|nn");
-  EXPECT_EQ(sig("roofMansard"), "n|nn|nnn|nnnn");
-  EXPECT_EQ(sig("roofFlat"), "|n");
+  EXPECT_EQ(sig("roofHip"), "n|nn|nnn|nnnb|nnnbn");  // then height, closed, thickness
+  EXPECT_EQ(sig("roofMansard"), "n|nn|nnn|nnnn|nnnnn|nnnnnb|nnnnnbn");
+  EXPECT_EQ(sig("roofFlat"), "|n|nn|nnn|nnnb");  // overhang, thickness (as .bldg Flat)
   EXPECT_EQ(sig("primitiveCube"), "");
   EXPECT_EQ(sig("color"), "s|nnn|nnnn");
   // A registry operation under its own name: every parameter, the required ones first.
-  EXPECT_EQ(sig("roof"), "|s|sn|snn|snnn|snnnn");
+  EXPECT_EQ(sig("roof"), "|s|sn|snn|snnn|snnnn|snnnnn|snnnnnb|snnnnnbn");
   EXPECT_EQ(sig("slice"), "sn|sns");
   EXPECT_EQ(find_operation("BS")->max_args, kUnbounded);
-  EXPECT_EQ(find_operation("roofMansard")->max_args, 4);
+  EXPECT_EQ(find_operation("roofMansard")->max_args, 7);
 }
 
 TEST(CgaOperations, ArgumentsMapOntoRegistryParameters) {
@@ -46,7 +46,11 @@ TEST(CgaOperations, ArgumentsMapOntoRegistryParameters) {
   ASSERT_EQ(mansard->op, shape::registry().find("roof"));
   EXPECT_EQ(mansard->param_of(1)->name, "mansard_pitch");
   EXPECT_EQ(mansard->param_of(3)->name, "overhang");
-  EXPECT_EQ(mansard->param_of(4), nullptr);
+  EXPECT_EQ(mansard->param_of(4)->name, "height");
+  EXPECT_EQ(mansard->param_of(7), nullptr);
+  const OperationInfo* flat = find_operation("roofFlat");
+  EXPECT_EQ(flat->param_of(0)->name, "overhang");
+  EXPECT_EQ(flat->param_of(1)->name, "thickness");
   ASSERT_EQ(mansard->fixed.size(), 1U);
   EXPECT_EQ(mansard->fixed[0].name, "type");
   EXPECT_EQ(std::get<std::string>(mansard->fixed[0].value), "mansard");

@@ -42,9 +42,11 @@ TEST(OperationsReference, EveryOperationHasACgaAndALuaSpelling) {
     EXPECT_FALSE(lua::lua_spellings(op).empty()) << op.name;
   }
   const std::string page = reference_page();
-  EXPECT_NE(page.find("| `roof` | `roof(type, pitch, overhang, mansard_pitch, break_height)`<br>"
-                      "`roofFlat(overhang) type=flat`"),
-            std::string::npos);
+  EXPECT_NE(
+      page.find("| `roof` | `roof(type, pitch, overhang, mansard_pitch, break_height, height, "
+                "closed, thickness)`<br>`roofFlat(overhang, thickness, height, closed) "
+                "type=flat`"),
+      std::string::npos);
   EXPECT_NE(page.find("`repeatSplit(c, axis, size, {name=value, ...})`"), std::string::npos);
 }
 

@@ -84,19 +84,21 @@ TEST(RegistryFrontEnds, AmendmentWasAppliedBeforeTheTableWasBuilt) {
 TEST(RegistryFrontEnds, NewParameterIsAnArgumentOfEveryCgaRoofSpelling) {
   const auto* hip = lang::cga::find_operation("roofHip");
   ASSERT_NE(hip, nullptr);
-  EXPECT_EQ(hip->signature, "n|nn|nnn");
-  EXPECT_EQ(hip->max_args, 3);
-  EXPECT_EQ(cga_check("Lot --> roofHip(30, 0, 0.5) Roof\n"), "");
-  EXPECT_EQ(cga_check("Lot --> roofHip(30, 0, 2) Roof\n"),
-            "t.cga:1:24: error[CGA319]: argument 3 of 'roofHip' (test_cap) is 2, must be in "
+  // After roof's own height, closed and thickness.
+  EXPECT_EQ(hip->signature, "n|nn|nnn|nnnb|nnnbn|nnnbnn");
+  EXPECT_EQ(hip->max_args, 6);
+  EXPECT_EQ(cga_check("Lot --> roofHip(30, 0, 0, false, 0, 0.5) Roof\n"), "");
+  EXPECT_EQ(cga_check("Lot --> roofHip(30, 0, 0, false, 0, 2) Roof\n"),
+            "t.cga:1:37: error[CGA319]: argument 6 of 'roofHip' (test_cap) is 2, must be in "
             "[0, 1]\n");
-  EXPECT_EQ(cga_check("Lot --> roofMansard(60, 70, 2, 0, 0.5, 1) Roof\n"),
-            "t.cga:1:9: error[CGA312]: 'roofMansard' expects 1 to 5 arguments, found 6\n");
+  EXPECT_EQ(cga_check("Lot --> roofMansard(60, 70, 2, 0, 0, false, 0, 0.5, 1) Roof\n"),
+            "t.cga:1:9: error[CGA312]: 'roofMansard' expects 1 to 8 arguments, found 9\n");
 }
 
 TEST(RegistryFrontEnds, NewParameterReachesTheOperationFromCga) {
   caps_seen().clear();
-  auto program = lang::cga::testing::compile_text("Lot --> roofGable(40, 0, 0.25) Roof\n");
+  auto program =
+      lang::cga::testing::compile_text("Lot --> roofGable(40, 0, 0, false, 0, 0.25) Roof\n");
   ASSERT_NE(program, nullptr);
   const auto results =
       lang::cga::testing::derive_all(*program, {lang::cga::testing::rectangle_lot(10, 8)});
@@ -109,7 +111,7 @@ TEST(RegistryFrontEnds, NewParameterReachesTheOperationFromLua) {
   const auto r = lua::testing::run(R"lua(
     local lot = component{polygon={{0, 0}, {10, 0}, {10, 8}, {0, 8}}}
     roof(lot, "hip", 30, {test_cap=0.75})
-    roof(component{polygon={{0, 0}, {10, 0}, {10, 8}, {0, 8}}}, "hip", 30, 0, 70, 2.5, 0.5)
+    roof(component{polygon={{0, 0}, {10, 0}, {10, 8}, {0, 8}}}, "hip", 30, 0, 70, 2.5, 0, false, 0, 0.5)
   )lua");
   ASSERT_TRUE(r.ok()) << r.error();
   EXPECT_EQ(caps_seen(), (std::vector<double>{0.75, 0.5}));

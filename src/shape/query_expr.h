@@ -1,8 +1,10 @@
-// The query language of Lua component programs (seed 001 §3.3): label expressions with and/or/not
-// (shape::LabelExpr's syntax) extended with the paper's other criteria, so Fig. 3's
+// The query language of every front-end (seed 001 §3.3): label expressions with and/or/not,
+// extended with the paper's other criteria, so Fig. 3's
 //   query("wall and not parent(corridor) and occlusion(corridor) > 0")
-// is one string. Grammar (EBNF; keywords are lower case; labels with spaces are quoted with ' or
-// "):
+// is one string. One lexer and one parser serve four grammars (QueryExpr::Grammar): label
+// expressions alone (LabelExpr), one attribute test (AttributeTest), shape queries (Lua's query)
+// and face queries (Lua's fquery). Grammar (EBNF; keywords are lower case; labels with spaces are
+// quoted with ' or "):
 //   expr      = and_expr { "or" and_expr } ;
 //   and_expr  = not_expr { "and" not_expr } ;
 //   not_expr  = "not" not_expr | primary ;
@@ -15,8 +17,10 @@
 //             test, inherited values *) | label ;
 //   compare   = "==" | "!=" | "<" | "<=" | ">" | ">=" ;
 //   literal   = number | "true" | "false" | quoted string ;
+// Label expressions are expr with primary = "(" expr ")" | label; an attribute test is one
+// `name compare literal`.
 // Face queries (fquery) use the same syntax over faces: the upper-case selectors FRONT BACK LEFT
-// RIGHT TOP BOTTOM SIDE ALL (shape::face_matches) and face-id names as labels. Region queries
+// RIGHT TOP BOTTOM SIDE ALL (face_matches) and face-id names as labels. Region queries
 // (rquery) match region names as labels.
 #pragma once
 
@@ -27,10 +31,12 @@
 #include <vector>
 
 #include "base/diagnostic.h"
+#include "kernel/vec.h"
 #include "shape/query.h"
 #include "shape/shape_tree.h"
+#include "shape/value.h"
 
-namespace insula::lua {
+namespace insula::shape {
 
 class QueryExpr {
  public:
@@ -54,15 +60,24 @@ class QueryExpr {
     std::uint32_t a = 0;  // child node (kNot, kAnd, kOr, kParent, kChild, kOcclusion, kNear)
     std::uint32_t b = 0;  // second child (kAnd, kOr)
     std::string text;     // label, or attribute name
-    shape::Compare compare = shape::Compare::kEqual;
+    Compare compare = Compare::kEqual;
     double number = 0;  // threshold, distance, parent depth (0 = any)
-    shape::Value value;
+    Value value;
   };
 
-  // Parses a component query. Errors: code "Q001", column inside `text`, file `source_name`.
+  enum class Grammar : std::uint8_t {
+    kLabels,     // label expressions: labels, and, or, not, parentheses
+    kAttribute,  // exactly one attribute test
+    kShapes,     // the whole grammar above
+    kFaces,      // label expressions with face selectors (attribute tests and tree criteria not)
+  };
+
+  // Parses a query of `grammar`. Errors: code "Q002" for kAttribute, else "Q001", column inside
+  // `text`, file `source_name`.
   static base::Result<QueryExpr> parse(std::string_view text,
-                                       std::string_view source_name = "<query>");
-  // Parses a face query (upper-case selectors allowed; attribute tests and tree criteria not).
+                                       std::string_view source_name = "<query>",
+                                       Grammar grammar = Grammar::kShapes);
+  // parse with Grammar::kFaces.
   static base::Result<QueryExpr> parse_faces(std::string_view text,
                                              std::string_view source_name = "<query>");
 
@@ -70,15 +85,15 @@ class QueryExpr {
   // evaluator (the shapes matching the inner expression and their world boxes).
   class Evaluator {
    public:
-    Evaluator(const QueryExpr& expr, const shape::ShapeTree& tree);
+    Evaluator(const QueryExpr& expr, const ShapeTree& tree);
     ~Evaluator();
-    bool matches(shape::ShapeId id);
+    bool matches(ShapeId id);
 
    private:
     struct Cache;
-    bool eval(shape::ShapeId id, std::uint32_t node);
+    bool eval(ShapeId id, std::uint32_t node);
     const QueryExpr& expr_;
-    const shape::ShapeTree& tree_;
+    const ShapeTree& tree_;
     std::vector<std::unique_ptr<Cache>> caches_;  // per node, on demand
   };
 
@@ -86,6 +101,9 @@ class QueryExpr {
   bool matches_face(kernel::Vec3 normal, std::string_view face_name) const;
   // A region name against a label expression (no other criteria).
   bool matches_name(std::string_view name) const;
+  // The expression in canonical fully parenthesised form, e.g. "(room and (not corridor))"; the
+  // label-expression part of the grammar only (other nodes print as "?").
+  std::string to_string() const;
 
   const std::vector<Node>& nodes() const { return nodes_; }
   std::uint32_t root() const { return static_cast<std::uint32_t>(nodes_.size() - 1); }
@@ -96,4 +114,4 @@ class QueryExpr {
   std::vector<Node> nodes_;  // the root is the last node
 };
 
-}  // namespace insula::lua
+}  // namespace insula::shape

@@ -1,4 +1,4 @@
-#include "lang/lua/query_expr.h"
+#include "shape/query_expr.h"
 
 #include <algorithm>
 #include <cctype>
@@ -7,14 +7,21 @@
 
 #include "shape/ops.h"
 
-namespace insula::lua {
-
-using shape::ShapeId;
-using shape::ShapeTree;
+namespace insula::shape {
 
 namespace {
 
-enum class Tok : std::uint8_t { kEnd, kIdent, kString, kOpen, kClose, kComma, kNumber, kCompare };
+enum class Tok : std::uint8_t {
+  kEnd,
+  kIdent,
+  kString,
+  kOpen,
+  kClose,
+  kComma,
+  kNumber,
+  kCompare,
+  kBad,  // an unknown character or an unterminated string (the rest of the text)
+};
 
 struct Token {
   Tok kind = Tok::kEnd;
@@ -30,76 +37,84 @@ bool ident_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-' || c == '.';
 }
 
-// Tokens with their byte offsets; a bad character is reported by the parser.
+// Tokens with their byte offsets; the parser reports a kBad token where it finds one.
 class Lexer {
  public:
   explicit Lexer(std::string_view text) : text_(text) {}
 
-  // Returns false (and the offending offset in `bad`) on an unterminated string or an unknown
-  // character.
-  bool next(Token& t, std::size_t& bad) {
+  Token next() {
+    Token t;
+    scan(t);
+    return t;
+  }
+
+ private:
+  void scan(Token& t) {
     while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_])) != 0) {
       ++pos_;
     }
     t = Token{Tok::kEnd, {}, pos_, 1};
-    if (pos_ >= text_.size()) return true;
+    if (pos_ >= text_.size()) return;
     const std::size_t start = pos_;
     const char c = text_[pos_];
     if (c == '(' || c == ')' || c == ',') {
       ++pos_;
       t.kind = c == '(' ? Tok::kOpen : (c == ')' ? Tok::kClose : Tok::kComma);
       t.text = text_.substr(start, 1);
-      return true;
+      return;
     }
     if (c == '"' || c == '\'') {
       const std::size_t close = text_.find(c, start + 1);
       if (close == std::string_view::npos) {
-        bad = start;
-        return false;
+        pos_ = text_.size();
+        t = Token{Tok::kBad, text_.substr(start), start, pos_ - start};
+        return;
       }
       pos_ = close + 1;
       t = Token{Tok::kString, text_.substr(start + 1, close - start - 1), start, pos_ - start};
-      return true;
+      return;
     }
     if (ident_start(c)) {
       while (pos_ < text_.size() && ident_char(text_[pos_])) ++pos_;
       t = Token{Tok::kIdent, text_.substr(start, pos_ - start), start, pos_ - start};
-      return true;
+      return;
     }
     if (std::isdigit(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '+' || c == '.') {
       ++pos_;
+      // Letters and digits, points, and a sign after an exponent mark (1e-5).
       while (pos_ < text_.size() &&
-             (std::isalnum(static_cast<unsigned char>(text_[pos_])) != 0 || text_[pos_] == '.')) {
+             (std::isalnum(static_cast<unsigned char>(text_[pos_])) != 0 || text_[pos_] == '.' ||
+              ((text_[pos_] == '-' || text_[pos_] == '+') &&
+               (text_[pos_ - 1] == 'e' || text_[pos_ - 1] == 'E')))) {
         ++pos_;
       }
       t = Token{Tok::kNumber, text_.substr(start, pos_ - start), start, pos_ - start};
-      return true;
+      return;
     }
     if (c == '=' || c == '!' || c == '<' || c == '>' || c == '~') {
       ++pos_;
       if (pos_ < text_.size() && text_[pos_] == '=') ++pos_;
       t = Token{Tok::kCompare, text_.substr(start, pos_ - start), start, pos_ - start};
-      return true;
+      return;
     }
-    bad = start;
-    return false;
+    ++pos_;
+    t = Token{Tok::kBad, text_.substr(start, 1), start, 1};
   }
 
- private:
   std::string_view text_;
   std::size_t pos_ = 0;
 };
 
 std::string describe(const Token& t) {
   if (t.kind == Tok::kEnd) return "end of query";
+  if (t.kind == Tok::kString) return "'\"" + std::string(t.text) + "\"'";
   std::string out = "'";
   out.append(t.text);
   out += "'";
   return out;
 }
 
-bool compare_from(std::string_view text, shape::Compare& out) {
-  using shape::Compare;
+bool compare_from(std::string_view text, Compare& out) {
   if (text == "==") {
     out = Compare::kEqual;
   } else if (text == "!=" || text == "~=") {
@@ -126,8 +141,7 @@ bool parse_number(std::string_view text, double& out) {
   return ec == std::errc() && ptr == last && std::isfinite(out);
 }
 
-bool is_selector(std::string_view word, shape::FaceSelector& out) {
-  using shape::FaceSelector;
+bool is_selector(std::string_view word, FaceSelector& out) {
   static constexpr std::pair<std::string_view, FaceSelector> kSelectors[] = {
       {"FRONT", FaceSelector::kFront}, {"BACK", FaceSelector::kBack},
       {"LEFT", FaceSelector::kLeft},   {"RIGHT", FaceSelector::kRight},
@@ -147,12 +161,15 @@ bool is_selector(std::string_view word, shape::FaceSelector& out) {
 // Recursive descent, one method per production of the grammar in query_expr.h.
 class QueryParser {
  public:
-  QueryParser(std::string_view text, std::string_view source, bool faces)
-      : lexer_(text), source_(source), faces_(faces) {
+  using Grammar = QueryExpr::Grammar;
+
+  QueryParser(std::string_view text, std::string_view source, Grammar grammar)
+      : lexer_(text), source_(source), grammar_(grammar) {
     advance();
   }
 
   base::Result<QueryExpr> run() {
+    if (grammar_ == Grammar::kAttribute) return run_attribute();
     const std::uint32_t root = expr();
     if (!failed_ && current_.kind != Tok::kEnd) {
       fail("expected 'and', 'or' or end of query, found " + describe(current_));
@@ -165,14 +182,22 @@ class QueryParser {
  private:
   using Kind = QueryExpr::Kind;
 
-  void advance() {
-    std::size_t bad = 0;
-    if (!lexer_.next(current_, bad)) {
-      current_ = Token{Tok::kEnd, {}, bad, 1};
-      fail(std::string("unexpected character or unterminated string at column ") +
-           std::to_string(bad + 1));
+  base::Result<QueryExpr> run_attribute() {
+    if (current_.kind != Tok::kIdent && current_.kind != Tok::kString) {
+      fail("expected an attribute name, found " + describe(current_));
+    } else {
+      const Token name = current_;
+      advance();
+      attribute(name);
     }
+    if (!failed_ && current_.kind != Tok::kEnd) {
+      fail("expected end of query, found " + describe(current_));
+    }
+    if (failed_) return base::Result<QueryExpr>::failure({error_});
+    return std::move(out_);
   }
+
+  void advance() { current_ = lexer_.next(); }
   bool keyword(std::string_view word) const {
     return current_.kind == Tok::kIdent && current_.text == word;
   }
@@ -180,7 +205,7 @@ class QueryParser {
     if (failed_) return;
     failed_ = true;
     error_ = base::Diagnostic::error(
-        "Q001", std::move(message),
+        grammar_ == Grammar::kAttribute ? "Q002" : "Q001", std::move(message),
         base::Span::at(std::string(source_), 1, static_cast<std::uint32_t>(current_.offset + 1),
                        static_cast<std::uint32_t>(current_.length)));
   }
@@ -246,17 +271,17 @@ class QueryParser {
       advance();
       return add(make(Kind::kLabel, 0, 0, label));
     }
-    if (current_.kind != Tok::kIdent) {
+    if (current_.kind != Tok::kIdent || keyword("and") || keyword("or")) {
       fail("expected a label or '(', found " + describe(current_));
       return 0;
     }
     const Token word = current_;
     advance();
-    if (current_.kind == Tok::kOpen && !faces_) return function(word);
-    if (current_.kind == Tok::kCompare && !faces_) return attribute(word);
+    if (current_.kind == Tok::kOpen && grammar_ == Grammar::kShapes) return function(word);
+    if (current_.kind == Tok::kCompare && grammar_ == Grammar::kShapes) return attribute(word);
     QueryExpr::Node node = make(Kind::kLabel, 0, 0, std::string(word.text));
-    shape::FaceSelector selector{};
-    if (faces_ && is_selector(word.text, selector)) {
+    FaceSelector selector{};
+    if (grammar_ == Grammar::kFaces && is_selector(word.text, selector)) {
       node.kind = Kind::kFaceSelector;
       node.a = static_cast<std::uint32_t>(selector);
     }
@@ -319,7 +344,7 @@ class QueryParser {
 
   std::uint32_t attribute(const Token& name) {
     QueryExpr::Node node = make(Kind::kAttribute, 0, 0, std::string(name.text));
-    if (!compare_from(current_.text, node.compare)) {
+    if (current_.kind != Tok::kCompare || !compare_from(current_.text, node.compare)) {
       fail("expected one of == != < <= > >=, found " + describe(current_));
       return 0;
     }
@@ -343,20 +368,60 @@ class QueryParser {
 
   Lexer lexer_;
   std::string_view source_;
-  bool faces_;
+  Grammar grammar_;
   Token current_;
   bool failed_ = false;
   base::Diagnostic error_;
   QueryExpr out_;
 };
 
-base::Result<QueryExpr> QueryExpr::parse(std::string_view text, std::string_view source_name) {
-  return QueryParser(text, source_name, false).run();
+base::Result<QueryExpr> QueryExpr::parse(std::string_view text, std::string_view source_name,
+                                         Grammar grammar) {
+  return QueryParser(text, source_name, grammar).run();
 }
 
 base::Result<QueryExpr> QueryExpr::parse_faces(std::string_view text,
                                                std::string_view source_name) {
-  return QueryParser(text, source_name, true).run();
+  return parse(text, source_name, Grammar::kFaces);
+}
+
+namespace {
+
+bool plain_label(const std::string& l) {
+  return !l.empty() && ident_start(l[0]) && std::all_of(l.begin(), l.end(), ident_char) &&
+         l != "and" && l != "or" && l != "not";
+}
+
+}  // namespace
+
+std::string QueryExpr::to_string() const {
+  std::string out;
+  const auto write = [&](const auto& self, std::uint32_t index) -> void {
+    const Node& n = nodes_[index];
+    switch (n.kind) {
+      case Kind::kLabel:
+        out += plain_label(n.text) ? n.text : "\"" + n.text + "\"";
+        return;
+      case Kind::kNot:
+        out += "(not ";
+        self(self, n.a);
+        out += ")";
+        return;
+      case Kind::kAnd:
+      case Kind::kOr:
+        out += "(";
+        self(self, n.a);
+        out += n.kind == Kind::kAnd ? " and " : " or ";
+        self(self, n.b);
+        out += ")";
+        return;
+      default:
+        out += "?";
+        return;
+    }
+  };
+  if (!nodes_.empty()) write(write, root());
+  return out;
 }
 
 // ---- evaluation
@@ -368,7 +433,7 @@ struct WorldBox {
   kernel::Vec3 max;
 };
 
-WorldBox world_box(const shape::Scope& scope) {
+WorldBox world_box(const Scope& scope) {
   WorldBox b{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
   for (const kernel::Vec3& c : scope.corners()) {
     b.min = {std::min(b.min.x, c.x), std::min(b.min.y, c.y), std::min(b.min.z, c.z)};
@@ -413,7 +478,7 @@ bool QueryExpr::Evaluator::eval(ShapeId id, std::uint32_t index) {
       return eval(id, node.a) || eval(id, node.b);
     case Kind::kParent: {
       std::size_t depth = 0;
-      for (ShapeId p = tree_.parent(id); p != shape::kNoShape; p = tree_.parent(p)) {
+      for (ShapeId p = tree_.parent(id); p != kNoShape; p = tree_.parent(p)) {
         if (node.number > 0 && ++depth > static_cast<std::size_t>(node.number)) break;
         if (eval(p, node.a)) return true;
       }
@@ -429,7 +494,7 @@ bool QueryExpr::Evaluator::eval(ShapeId id, std::uint32_t index) {
     case Kind::kFlat:
       return tree_[id].is_flat();
     case Kind::kAttribute:
-      return shape::value_matches(tree_.attribute(id, node.text), node.compare, node.value);
+      return value_matches(tree_.attribute(id, node.text), node.compare, node.value);
     case Kind::kOcclusion:
     case Kind::kNear:
       break;
@@ -455,9 +520,9 @@ bool QueryExpr::Evaluator::eval(ShapeId id, std::uint32_t index) {
     }
   }
   if (node.kind == Kind::kNear) {
-    return !shape::within_distance(tree_, id, node.number, close).empty();
+    return !within_distance(tree_, id, node.number, close).empty();
   }
-  return shape::compare(shape::occlusion(tree_, id, close), node.compare, node.number);
+  return compare(occlusion(tree_, id, close), node.compare, node.number);
 }
 
 bool QueryExpr::matches_face(kernel::Vec3 normal, std::string_view face_name) const {
@@ -475,7 +540,7 @@ bool QueryExpr::eval_face(std::uint32_t index, kernel::Vec3 normal,
     case Kind::kLabel:
       return node.text == face_name;
     case Kind::kFaceSelector:
-      return shape::face_matches(static_cast<shape::FaceSelector>(node.a), normal);
+      return face_matches(static_cast<FaceSelector>(node.a), normal);
     case Kind::kNot:
       return !eval_face(node.a, normal, face_name);
     case Kind::kAnd:
@@ -487,4 +552,4 @@ bool QueryExpr::eval_face(std::uint32_t index, kernel::Vec3 normal,
   }
 }
 
-}  // namespace insula::lua
+}  // namespace insula::shape

@@ -1,0 +1,31 @@
+// SIGINT and SIGTERM during a run that writes files (docs/cli.md, "Interrupted runs"). The handler
+// only records the signal (the one async-signal-safe thing to do); the workers stop taking new work
+// when they see it, and the main thread rolls the output transaction back, so an interruption at
+// any moment leaves either all the old files or all the new ones, never a mix, a backup or a
+// temporary. While a guard lives, further signals cannot kill the process half-way through its
+// rollback; the exit code is then 128 + the signal (130 for SIGINT, 143 for SIGTERM).
+#pragma once
+
+#include <string>
+
+namespace insula::cli {
+
+class InterruptGuard {
+ public:
+  InterruptGuard();   // installs the handlers
+  ~InterruptGuard();  // restores the previous ones
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+};
+
+// True once SIGINT or SIGTERM arrived under a guard; safe from any thread.
+bool interrupted();
+// 128 + the signal number, or 0 when no signal arrived.
+int interrupt_exit_code();
+// The exit code of a failed step that writes or commits outputs: after an interruption 128 + the
+// signal (with one line saying so), else kExitInput with "insula: error: <error>".
+int write_failure(const std::string& error);
+// When interrupted: says so and gives 128 + the signal; else 0. For the checks between stages.
+int stop_if_interrupted();
+
+}  // namespace insula::cli
