@@ -312,6 +312,26 @@ OpResult Registry::run(ShapeTree& tree, ShapeId shape, std::string_view name,
   return result;
 }
 
+namespace {
+
+struct Amendments {
+  std::vector<std::function<void(std::vector<Operation>&)>> pending;
+  bool built = false;
+};
+Amendments& amendments() {
+  static Amendments kAmendments;
+  return kAmendments;
+}
+
+}  // namespace
+
+bool extend_registry(std::function<void(std::vector<Operation>&)> amend) {
+  Amendments& a = amendments();
+  if (a.built) return false;
+  a.pending.push_back(std::move(amend));
+  return true;
+}
+
 const Registry& registry() {
   static const Registry kRegistry = [] {
     std::vector<Operation> all;
@@ -321,6 +341,9 @@ const Registry& registry() {
           &stair_operations, &frame_operations, &slab_operations}) {
       for (Operation& op : (*family)()) all.push_back(std::move(op));
     }
+    Amendments& a = amendments();
+    for (const auto& amend : a.pending) amend(all);
+    a.built = true;
     return Registry(std::move(all));
   }();
   return kRegistry;
@@ -343,16 +366,55 @@ std::string param_row(const ParamDecl& p) {
   return concat({"| `", p.name, "` | ", type, " | ", value, " | ", p.doc, " |\n"});
 }
 
+// A table cell: the spellings one per line, `|` escaped.
+std::string spelling_cell(const std::vector<std::string>& spellings) {
+  std::string out;
+  for (const std::string& s : spellings) {
+    if (!out.empty()) out.append("<br>");
+    out.append("`");
+    for (char c : s) {
+      if (c == '|') out.push_back('\\');
+      out.push_back(c);
+    }
+    out.append("`");
+  }
+  return out.empty() ? "-" : out;
+}
+
+std::string spelling_table(std::span<const FrontEndSpellings> front_ends) {
+  std::string out = "\n## Spellings by front-end\n\n| operation |";
+  std::string rule = "|---|";
+  for (const FrontEndSpellings& f : front_ends) {
+    out.append(concat({" ", f.name, " |"}));
+    rule.append("---|");
+  }
+  out.append(concat({"\n", rule, "\n"}));
+  for (const Operation& op : registry().operations()) {
+    out.append(concat({"| `", op.name, "` |"}));
+    for (const FrontEndSpellings& f : front_ends) {
+      out.append(
+          concat({" ", spelling_cell(f.spell ? f.spell(op) : std::vector<std::string>{}), " |"}));
+    }
+    out.append("\n");
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string operations_reference_markdown() {
+  return operations_reference_markdown({});
+}
+
+std::string operations_reference_markdown(std::span<const FrontEndSpellings> front_ends) {
   std::string out =
       "# Shape operations\n\n"
-      "Generated from the operation registry (`src/shape/ops_*.cc`) by\n"
-      "`insula::shape::operations_reference_markdown()`; `tests/shape/operation_test.cc` fails "
-      "when\n"
-      "this file differs. Regenerate with `INSULA_REGENERATE=1 "
-      "build/tests/test_shape_operation_test`.\n\n"
+      "Generated from the operation registry (`src/shape/ops_*.cc`) and the front-ends' "
+      "spellings by\n"
+      "`insula::shape::operations_reference_markdown()`; "
+      "`tests/lang/frontends/operations_doc_test.cc`\n"
+      "fails when this file differs. Regenerate with `INSULA_REGENERATE=1 "
+      "build/tests/lang/test_lang_frontends_operations_doc_test`.\n\n"
       "Every front-end (CGA, Lua, graphs, the building grammar, PLaSM) calls these through\n"
       "`registry().run(tree, shape, name, arguments)`. Arguments are positional (declaration "
       "order)\n"
@@ -370,6 +432,7 @@ std::string operations_reference_markdown() {
       "- `OP: missing required parameter 'NAME'`\n\n"
       "An operation creates children of the shape it runs on and marks that shape inactive; a\n"
       "failed operation leaves the tree as it was.\n";
+  if (!front_ends.empty()) out.append(spelling_table(front_ends));
   for (const Operation& op : registry().operations()) {
     out.append(concat({"\n## ", op.name, "\n\n", op.doc, "\n"}));
     if (op.params.empty()) continue;

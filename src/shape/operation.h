@@ -161,7 +161,22 @@ class Registry {
 // The table of every shape operation, built once on first use (immutable afterwards).
 const Registry& registry();
 
+// Lets a program amend the table before registry() first builds it: add operations or parameters
+// of its own (a test binary proving that a new parameter reaches every front-end, a plugin).
+// Returns false, and does nothing, once the table is built. Not thread-safe: call it during
+// start-up (a static initialiser), before any front-end runs.
+bool extend_registry(std::function<void(std::vector<Operation>&)> amend);
+
 // The reference page docs/operations.md, generated from the registry.
 std::string operations_reference_markdown();
+
+// One front-end's spellings of an operation, for the reference page (empty: it has none). The
+// shape layer knows no front-end; the program that writes the page passes them in.
+struct FrontEndSpellings {
+  std::string name;  // column title: "CGA", "Lua"
+  std::function<std::vector<std::string>(const Operation&)> spell;
+};
+// The reference page with a table of every operation's spelling in each front-end.
+std::string operations_reference_markdown(std::span<const FrontEndSpellings> front_ends);
 
 }  // namespace insula::shape

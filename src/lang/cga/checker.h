@@ -5,7 +5,7 @@
 //     [0, 360] (2), the empty shape has no scope (3), a component split's index list matches its
 //     successors (4), the probabilities of a rule's parts sum to 1 (5);
 //   - duplicate rule ids in a priority set, unknown split axes and component types, unknown
-//     generic operations and wrong arities (via builtins.h and the shape operation registry),
+//     generic operations and wrong arities (operations.h: the shape operation registry),
 //     undefined identifiers in expressions;
 //   - warnings: rules unreachable from the start symbol, unused attributes, paper spellings of
 //     component types that are mapped to the canonical ones.

@@ -1,12 +1,12 @@
 // Static semantics of CGA expressions: every identifier is a grammar attribute, a name given from
-// outside (CheckOptions::known_attributes) or a shape attribute (`Shape.sx`, builtins.h); every
-// function exists with a fitting number of arguments (builtins.h); literals fold to constants so
+// outside (CheckOptions::known_attributes) or a shape attribute (`Shape.sx`, functions.h); every
+// function exists with a fitting number of arguments (functions.h); literals fold to constants so
 // the checks of §IV.B (probabilities, angles) can run on them.
 #include <cmath>
 #include <string>
 
-#include "lang/cga/builtins.h"
 #include "lang/cga/checker_internal.h"
+#include "lang/cga/functions.h"
 
 namespace insula::lang::cga::detail {
 namespace {
@@ -123,7 +123,7 @@ void Checker::check_identifier(const Expr& expr, ExprRole role) {
         expr.range);
 }
 
-// `Shape.sx`, `Scope.sy`, ...: the members of builtins.h's kShapeAttributes that take no
+// `Shape.sx`, `Scope.sy`, ...: the members of functions.h's kShapeAttributes that take no
 // argument (`Shape.occ` needs one and is a call).
 void Checker::check_member(const Expr& expr) {
   const Expr& object = *expr.operands[0];

@@ -13,8 +13,8 @@
 
 #include "base/diagnostic.h"
 #include "lang/cga/ast.h"
-#include "lang/cga/builtins.h"
 #include "lang/cga/checker.h"
+#include "lang/cga/operations.h"
 #include "shape/operation.h"
 
 namespace insula::lang::cga::detail {
@@ -72,12 +72,12 @@ class Checker {
   void check_comp(const Item& item);
   void check_rotation(const Item& item);
   void check_generic(const Item& item, const OperationInfo& info);
-  void check_registry_ranges(const Item& item);
+  void check_registry_ranges(const Item& item, const OperationInfo& info);
   void check_registry_choice(const Item& item, std::size_t index, const shape::ParamDecl& param);
   void check_axis(const Expr& expr, bool combinations);
   std::optional<CompType> check_comp_type(const Expr& expr);
   void check_plain_branches(const Item& item, std::size_t expected, const char* what);
-  void check_selector_keys(const Item& item, std::span<const std::string_view> selectors,
+  void check_selector_keys(const Item& item, const std::vector<std::string>& selectors,
                            bool indices, bool indices_only);
   void check_size_keys(const Item& item, const std::vector<Branch>& branches);
   void check_branch_items(const Branch& branch);

@@ -1,13 +1,15 @@
 // Static semantics of successors (seed 004 §IV.B constraints 1-5) and of operations: names,
-// arities, argument kinds, blocks and their keys from builtins.h; value ranges of constant
-// arguments from the shape operation registry (shape/operation.h), so no range is written twice.
+// arities, argument kinds, blocks and their keys from operations.h, which reads them (and the
+// value ranges and choices of constant arguments) from the shape operation registry
+// (shape/operation.h), so nothing about an operation is written twice.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <set>
 #include <string>
 
-#include "lang/cga/builtins.h"
 #include "lang/cga/checker_internal.h"
 #include "shape/operation.h"
 
@@ -34,6 +36,16 @@ std::string number_text(double value) {
   return text;
 }
 
+// A declared bound in a message: the short form unless it would hide the value (a minimum of
+// 1e-09 is not "0").
+std::string bound_text(double value) {
+  const std::string text = number_text(value);
+  if (std::strtod(text.c_str(), nullptr) == value) return text;
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
 std::string plural(std::size_t count, std::string_view word) {
   std::string out = std::to_string(count) + " ";
   if (count == 1) return out.append(word);
@@ -51,42 +63,17 @@ bool is_scope_rule(const Item& item) {
   return op == "translate" || op == "scale" || op == "rotate" || op == "center" || op == "insert";
 }
 
-// Operations whose string argument may be a bare word: an asset name (`I(box)`), the axes of
-// center or the part of offset (`offset(-1, inside)`). Elsewhere (color, report, print) an
-// identifier is an attribute.
+// The string arguments of shape operations may be bare words: an asset name (`I(box)`), the
+// axes of center or the part of offset (`offset(-1, inside)`). Elsewhere (color, report, print)
+// an identifier is an attribute.
 bool takes_word(const OperationInfo& info) {
-  return info.registry_op == "insert" || info.registry_op == "center" ||
-         info.registry_op == "offset";
+  return info.op != nullptr;
 }
 
 // ε, or CityEngine's `nil()`.
 bool is_empty_shape(const Item& item) {
   return item.kind == ItemKind::kEmpty || (item.kind == ItemKind::kOp && item.name == "nil");
 }
-
-// The registry parameter each constant argument of an operation is checked against (bounds
-// from shape::registry(), never restated here). Only the arguments whose meaning maps one to
-// one onto a registry parameter are listed.
-struct RangeMap {
-  std::string_view op;
-  std::string_view registry_op;
-  std::string_view params[4];
-};
-constexpr RangeMap kRangeMaps[] = {
-    {"extrude", "extrude", {"height"}},
-    {"setback", "setback", {"distance"}},
-    {"roofHip", "roof", {"pitch", "overhang"}},
-    {"roofGable", "roof", {"pitch", "overhang"}},
-    {"roofPyramid", "roof", {"pitch", "overhang"}},
-    {"roofShed", "roof", {"pitch", "overhang"}},
-    {"roofMansard", "roof", {"pitch", "mansard_pitch", "break_height", "overhang"}},
-    {"roofFlat", "roof", {"overhang", "thickness"}},
-    {"stair", "stair", {"height", "steps", "max_rise"}},
-    {"frame", "frame", {"kind", "thickness", "width", "depth"}},
-    {"slab", "slab", {"kind", "thickness"}},
-    {"offset", "offset", {"distance", "part"}},
-    {"center", "center", {"axes"}},
-};
 
 }  // namespace
 
@@ -245,7 +232,7 @@ void Checker::check_branch_items(const Branch& branch) {
   check_sequence(branch.items);
 }
 
-// Arguments by the letters of the operation's signature (builtins.h). Literal values of the
+// Arguments by the letters of the operation's signature (operations.h). Literal values of the
 // wrong kind are errors; computed values are checked by the derivation.
 void Checker::check_arguments(const Item& item, const OperationInfo& info) {
   const std::size_t count = item.args.size();
@@ -421,14 +408,15 @@ void Checker::check_comp(const Item& item) {
     }
     return;
   }
+  static const std::vector<std::string> kNone;
   const OperationInfo* info = find_operation(item.name);
-  check_selector_keys(item, info ? info->selectors : std::span<const std::string_view>{},
+  check_selector_keys(item, info ? info->selectors : kNone,
                       /*indices=*/true,
                       type && *type != CompType::kFaces && *type != CompType::kSideFaces);
 }
 
 // Every branch keyed by a distinct selector (or, for comp, a component index).
-void Checker::check_selector_keys(const Item& item, std::span<const std::string_view> selectors,
+void Checker::check_selector_keys(const Item& item, const std::vector<std::string>& selectors,
                                   bool indices, bool indices_only) {
   std::set<std::string> seen;
   for (const Branch& branch : item.branches) {
@@ -448,8 +436,7 @@ void Checker::check_selector_keys(const Item& item, std::span<const std::string_
       const bool known = std::find(selectors.begin(), selectors.end(), name) != selectors.end();
       if (!known || indices_only) {
         std::string list;
-        for (const std::string_view s : selectors)
-          list += (list.empty() ? "" : ", ") + std::string(s);
+        for (const std::string& s : selectors) list += (list.empty() ? "" : ", ") + s;
         error("CGA315",
               indices_only
                   ? "selector '" + name + "' applies to faces only; edges and vertices take indices"
@@ -526,40 +513,37 @@ void Checker::check_generic(const Item& item, const OperationInfo& info) {
   } else if (info.keys == KeyUse::kNone && item.has_block) {
     check_plain_branches(item, 1, "");
   }
-  check_registry_ranges(item);
+  check_registry_ranges(item, info);
 }
 
-// Constant arguments against the bounds the registry declares for the parameter they become.
-void Checker::check_registry_ranges(const Item& item) {
-  const auto map = std::find_if(std::begin(kRangeMaps), std::end(kRangeMaps),
-                                [&](const RangeMap& m) { return m.op == item.name; });
-  if (map == std::end(kRangeMaps)) return;
-  const shape::Operation* op = shape::registry().find(map->registry_op);
-  if (!op) return;
-  for (std::size_t i = 0; i < item.args.size() && i < std::size(map->params); ++i) {
-    if (map->params[i].empty()) break;
-    const shape::ParamDecl* param = op->param(map->params[i]);
-    if (param && param->type == shape::ParamType::kEnum) {
+// Constant arguments against the bounds and choices the registry declares for the parameter they
+// become. Arguments CGA reads its own way (the paper's axis combinations, component type
+// spellings) are checked by check_axis and check_comp_type instead.
+void Checker::check_registry_ranges(const Item& item, const OperationInfo& info) {
+  for (std::size_t i = 0; i < item.args.size(); ++i) {
+    const shape::ParamDecl* param = info.param_of(i);
+    const char letter = signature_letter(info.signature, item.args.size(), i);
+    if (param == nullptr || letter == 'a' || letter == 'c') continue;
+    if (param->type == shape::ParamType::kEnum) {
       check_registry_choice(item, i, *param);
       continue;
     }
     const std::optional<Constant> value = fold(*item.args[i]);
-    if (!param || !value || value->relative || value->floating) continue;
+    if (!value || value->relative || value->floating) continue;
     const bool low = param->min && value->value < *param->min;
     const bool high = param->max && value->value > *param->max;
     if (!low && !high) continue;
     std::string range;
     if (param->min && param->max) {
-      range = "in [" + number_text(*param->min) + ", " + number_text(*param->max) + "]";
+      range = "in [" + bound_text(*param->min) + ", " + bound_text(*param->max) + "]";
     } else if (param->min) {
-      range = ">= " + number_text(*param->min);
+      range = ">= " + bound_text(*param->min);
     } else {
-      range = "<= " + number_text(*param->max);
+      range = "<= " + bound_text(*param->max);
     }
     error("CGA319",
-          "argument " + std::to_string(i + 1) + " of " + quoted(item.name) + " (" +
-              std::string(map->params[i]) + ") is " + number_text(value->value) + ", must be " +
-              range,
+          "argument " + std::to_string(i + 1) + " of " + quoted(item.name) + " (" + param->name +
+              ") is " + number_text(value->value) + ", must be " + range,
           item.args[i]->range);
   }
 }

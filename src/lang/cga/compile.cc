@@ -7,6 +7,7 @@
 
 #include "lang/cga/checker.h"
 #include "lang/cga/eval.h"
+#include "lang/cga/operations.h"
 
 namespace insula::lang::cga {
 
@@ -44,39 +45,6 @@ constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
     {"atan", Function::kAtan},   {"atan2", Function::kAtan2}, {"p", Function::kP},
     {"float", Function::kFloat}, {"str", Function::kStr},     {"bool", Function::kBool},
     {"len", Function::kLen},
-};
-
-struct OpName {
-  std::string_view name;
-  OpCode code;
-};
-constexpr OpName kGenericOps[] = {
-    {"extrude", OpCode::kExtrude},
-    {"split", OpCode::kSplit},
-    {"comp", OpCode::kComp},
-    {"t", OpCode::kTranslate},
-    {"s", OpCode::kScale},
-    {"r", OpCode::kRotate},
-    {"center", OpCode::kCenter},
-    {"i", OpCode::kInsert},
-    {"primitiveCube", OpCode::kInsert},
-    {"offset", OpCode::kOffset},
-    {"setback", OpCode::kSetback},
-    {"roofHip", OpCode::kRoof},
-    {"roofGable", OpCode::kRoof},
-    {"roofPyramid", OpCode::kRoof},
-    {"roofShed", OpCode::kRoof},
-    {"roofMansard", OpCode::kRoof},
-    {"roofFlat", OpCode::kRoof},
-    // building elements (issue 11)
-    {"stair", OpCode::kRegistry},
-    {"frame", OpCode::kRegistry},
-    {"slab", OpCode::kRegistry},
-    {"color", OpCode::kColor},
-    {"set", OpCode::kSet},
-    {"print", OpCode::kPrint},
-    {"report", OpCode::kReport},
-    {"nil", OpCode::kEmpty},
 };
 
 // An expression that names a word: a string literal or a bare identifier (`split(x)`).
@@ -402,13 +370,6 @@ class Compiler {
       case OpKind::kComp:
         comp_args(item, c);
         return;
-      case OpKind::kTranslate:
-        c.code = OpCode::kTranslate;
-        plain_args(item, c);
-        return;
-      case OpKind::kScale:
-        scale_args(item, c);
-        return;
       case OpKind::kRotate: {
         // Rx(a) is r(a, 0, 0) and so on: three arguments, two of them constant zero.
         c.code = OpCode::kRotate;
@@ -420,91 +381,99 @@ class Compiler {
       case OpKind::kInsert:
       case OpKind::kPredefined:
         c.code = OpCode::kInsertShape;
-        asset_arg(item, c);
+        registry_args(item, c);
         return;
-      case OpKind::kGeneric:
+      default:
         break;
     }
-    for (const OpName& op : kGenericOps) {
-      if (op.name == item.name) c.code = op.code;
+    if (c.info->op == nullptr) {
+      built_in(item, c);
+      return;
     }
-    switch (c.code) {
-      case OpCode::kSplit:
-        split_args(item, c, false);
-        return;
-      case OpCode::kComp:
-        comp_args(item, c);
-        return;
-      case OpCode::kScale:
-        scale_args(item, c);
-        return;
-      case OpCode::kInsert:
-        if (item.name == "primitiveCube") {
-          c.text = "cube";
-        } else {
-          asset_arg(item, c);
-        }
-        return;
-      case OpCode::kCenter: {
-        const std::string* w = word_of(*item.args[0]);
-        c.text = w != nullptr ? lower(*w) : "";
-        if (c.text.empty() || c.text.find_first_not_of("xyz") != std::string::npos) {
-          error("CGA508", "center() expects axes such as \"xyz\" or \"x\"", item.args[0]->range);
-        }
-        return;
-      }
-      case OpCode::kRoof: {
-        const std::string type = lower(item.name.substr(4));
-        c.text = type == "hip" || type == "gable" || type == "pyramid" || type == "shed" ||
-                         type == "mansard" || type == "flat"
-                     ? type
-                     : "hip";
-        plain_args(item, c);
-        return;
-      }
-      case OpCode::kSet: {
-        const std::string* w = word_of(*item.args[0]);
-        if (w == nullptr || attr_index(*w) == kNoExpr) {
-          error("CGA508", "set() expects an attribute name first", item.args[0]->range);
-          return;
-        }
-        c.attr = attr_index(*w);
-        c.args.push_back(expr(*item.args[1]));
-        return;
-      }
-      case OpCode::kOffset: {
-        c.args.push_back(expr(*item.args[0]));
-        if (item.args.size() > 1) {
-          const std::string* w = word_of(*item.args[1]);
-          c.text = w != nullptr ? lower(*w) : "";
-          if (c.text != "inside" && c.text != "border" && c.text != "all") {
-            error("CGA508", "offset() part must be inside, border or all", item.args[1]->range);
-          }
-        }
-        return;
-      }
-      default:
-        plain_args(item, c);
-        return;
+    const std::string& op = c.info->registry_op;
+    if (op == "split") {
+      split_args(item, c, false);
+    } else if (op == "comp") {
+      comp_args(item, c);
+    } else if (op == "setback") {
+      c.code = OpCode::kSetback;
+      registry_args(item, c);
+    } else if ((op == "translate" || op == "rotate") && scope_math(item, *c.info)) {
+      // T, t and r move the scope by scope math, as shape::translate and shape::rotate do.
+      c.code = op == "translate" ? OpCode::kTranslate : OpCode::kRotate;
+      plain_args(item, c);
+    } else {
+      c.code = OpCode::kRegistry;
+      registry_args(item, c);
     }
+  }
+
+  // Whether the arguments are exactly x, y and z of translate or rotate (no pivot).
+  static bool scope_math(const Item& item, const OperationInfo& info) {
+    if (item.args.size() != 3) return false;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const shape::ParamDecl* p = info.param_of(i);
+      if (p == nullptr || p->name != std::string(1, static_cast<char>('x' + i))) return false;
+    }
+    return true;
+  }
+
+  // color, set, print, report, nil: CGA's own successor items.
+  void built_in(const Item& item, CItem& c) {
+    if (item.name == "set") {
+      c.code = OpCode::kSet;
+      const std::string* w = word_of(*item.args[0]);
+      if (w == nullptr || attr_index(*w) == kNoExpr) {
+        error("CGA508", "set() expects an attribute name first", item.args[0]->range);
+        return;
+      }
+      c.attr = attr_index(*w);
+      c.args.push_back(expr(*item.args[1]));
+      return;
+    }
+    c.code = item.name == "color"    ? OpCode::kColor
+             : item.name == "print"  ? OpCode::kPrint
+             : item.name == "report" ? OpCode::kReport
+                                     : OpCode::kEmpty;  // nil
+    plain_args(item, c);
   }
 
   void plain_args(const Item& item, CItem& c) {
     for (const ExprPtr& a : item.args) c.args.push_back(expr(*a));
   }
 
-  void asset_arg(const Item& item, CItem& c) {
-    const Expr& a = *item.args[0];
-    if (a.kind == ExprKind::kIdent && attr_index(a.text) == kNoExpr) {
-      c.text = a.text;  // I(cube): a bare name
-      return;
+  // The arguments of a registry operation, one per positional argument (operations.h maps each
+  // to its parameter): sizes into c.sizes (c.args holds kNoExpr there); a string or choice
+  // written as a bare word (`I(box)`, `center(xz)`) is that word unless it names an attribute;
+  // a constant choice must be one the registry declares.
+  void registry_args(const Item& item, CItem& c) {
+    const std::size_t count = item.args.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      const Expr& a = *item.args[i];
+      const shape::ParamDecl* p = c.info->param_of(i);
+      if (signature_letter(c.info->signature, count, i) == 'z') {
+        c.sizes.push_back(size(a, false));
+        c.args.push_back(kNoExpr);
+        continue;
+      }
+      const std::string* w = word_of(a);
+      const bool word = w != nullptr && (a.kind == ExprKind::kString || attr_index(*w) == kNoExpr);
+      if (!word || p == nullptr ||
+          (p->type != shape::ParamType::kString && p->type != shape::ParamType::kEnum)) {
+        c.args.push_back(expr(a));
+        continue;
+      }
+      if (p->type == shape::ParamType::kEnum &&
+          std::find(p->choices.begin(), p->choices.end(), lower(*w)) == p->choices.end()) {
+        std::string list;
+        for (const std::string& choice : p->choices) list += (list.empty() ? "" : ", ") + choice;
+        error("CGA508",
+              "'" + item.name + "' argument " + std::to_string(i + 1) + " (" + p->name +
+                  ") must be one of " + list,
+              a.range);
+      }
+      c.args.push_back(constant(*w, a.range));
     }
-    c.args.push_back(expr(a));
-  }
-
-  void scale_args(const Item& item, CItem& c) {
-    c.code = OpCode::kScale;
-    for (const ExprPtr& a : item.args) c.sizes.push_back(size(*a, false));
   }
 
   std::vector<shape::Axis> axes(const Expr& e, bool several) {

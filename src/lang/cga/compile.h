@@ -1,7 +1,8 @@
 // Compilation of a parsed CGA grammar (ast.h) into the form the derivation engine runs
 // (derive.h): symbols interned to integers, rules indexed by predecessor and priority level,
 // expressions flattened into a node array with names resolved (attributes, functions, shape
-// attributes) and constants folded, operations resolved through the builtins table (builtins.h),
+// attributes) and constants folded, operations resolved through operations.h (the shape
+// registry's declarations and CGA's spellings of them),
 // split sizes precomputed when constant. Compilation reports what the engine cannot run (unknown
 // operations, functions or attributes, wrong argument counts) as CGA5xx diagnostics; the checker
 // (checker.h) reports the language-level problems before it.
@@ -15,7 +16,8 @@
 
 #include "base/diagnostic.h"
 #include "lang/cga/ast.h"
-#include "lang/cga/builtins.h"
+#include "lang/cga/functions.h"
+#include "lang/cga/operations.h"
 #include "shape/operation.h"
 #include "shape/scope.h"
 #include "shape/value.h"
@@ -102,20 +104,14 @@ enum class OpCode : std::uint8_t {
   kEmpty,
   kPush,
   kPop,
-  kSplit,   // BS/Subdiv/split
-  kRepeat,  // RR/Repeat
-  kComp,    // CS/Comp/comp
-  kTranslate,
-  kScale,
-  kRotate,
-  kCenter,
+  kSplit,        // BS/Subdiv/split
+  kRepeat,       // RR/Repeat
+  kComp,         // CS/Comp/comp
+  kTranslate,    // T/t: scope math
+  kRotate,       // Rx/Ry/Rz/r: scope math
   kInsertShape,  // I / Pshape: a new terminal shape with the asset, the current shape goes on
-  kInsert,       // i / primitiveCube: the current shape's geometry becomes the asset
-  kExtrude,
-  kOffset,
   kSetback,
-  kRoof,
-  kRegistry,  // a registry operation, positional arguments in declaration order
+  kRegistry,  // any other shape operation (extrude, S/s, center, i, roofs, offset, ...)
   kColor,
   kSet,
   kPrint,
@@ -143,12 +139,11 @@ struct CItem {
   Range range;
   SymbolId symbol = kNoSymbol;          // kSymbol
   const OperationInfo* info = nullptr;  // operations
-  std::vector<std::uint32_t> args;      // expressions, positional
+  std::vector<std::uint32_t> args;      // expressions, positional (kNoExpr: a size)
   std::vector<shape::Axis> axes;        // split / repeat (RR "XY": two)
-  std::vector<CSize> sizes;             // BS sizes, RR size
+  std::vector<CSize> sizes;             // BS sizes, RR size, size arguments of registry operations
   CompKind comp = CompKind::kFaces;     // comp
   std::vector<std::int64_t> indices;    // CS index list
-  std::string text;                     // roof type, asset name, set target, axes of center
   std::uint32_t attr = 0;               // kSet: attribute index
   std::vector<CBranch> branches;
   bool has_block = false;

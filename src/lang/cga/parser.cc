@@ -36,6 +36,7 @@
 #include <string>
 
 #include "lang/cga/lexer.h"
+#include "lang/cga/operations.h"
 
 namespace insula::lang::cga {
 namespace {
@@ -405,71 +406,48 @@ class Parser {
   }
 
   // ---- operation kinds and arity (§VI) ----
-  struct OpSpec {
-    std::string_view name;
-    OpKind kind;
-    int min_args;
-    int max_args;  // -1: unbounded
-    bool block;    // a successor block is required (true) or forbidden (false)
-    bool string_first;
-  };
-  static constexpr OpSpec kOps[] = {
-      {"BS", OpKind::kSplit, 2, -1, true, true},
-      {"Subdiv", OpKind::kSplit, 2, -1, true, true},
-      {"RR", OpKind::kRepeat, 2, 2, true, true},
-      {"Repeat", OpKind::kRepeat, 2, 2, true, true},
-      {"CS", OpKind::kComp, 1, -1, true, true},
-      {"Comp", OpKind::kComp, 1, -1, true, true},
-      {"T", OpKind::kTranslate, 3, 3, false, false},
-      {"S", OpKind::kScale, 3, 3, false, false},
-      {"I", OpKind::kInsert, 1, 1, false, false},
-      {"Pshape", OpKind::kPredefined, 1, 1, false, true},
-  };
-
+  // The paper's spellings (BS, RR, CS, T, S, Rx/Ry/Rz, I, Pshape; operations.h) have a kind of
+  // their own and a strict form: their arity, block and string first argument are checked here.
   static bool is_rotation(const std::string& name) {
     return name.size() == 2 && name[0] == 'R' &&
            std::string_view("xyzXYZ").find(name[1]) != std::string_view::npos;
   }
 
   void classify(Item& item) {
-    if (is_rotation(item.name)) {
-      item.op = OpKind::kRotate;
-      item.axis = static_cast<char>(item.name[1] | 0x20);  // lower case
-      check_spec(item, OpSpec{item.name, OpKind::kRotate, 1, 1, false, false});
-      return;
-    }
-    for (const OpSpec& spec : kOps) {
-      if (spec.name == item.name) {
-        item.op = spec.kind;
-        check_spec(item, spec);
-        return;
-      }
-    }
     item.op = OpKind::kGeneric;
+    std::string name = item.name;
+    if (is_rotation(name)) name[1] = static_cast<char>(name[1] | 0x20);  // RX reads as Rx
+    const OperationInfo* info = find_operation(name);
+    if (info == nullptr || info->kind == OpKind::kGeneric) return;
+    item.op = info->kind;
+    if (info->kind == OpKind::kRotate) item.axis = name[1];
+    check_spec(item, *info);
   }
 
-  void check_spec(const Item& item, const OpSpec& spec) {
-    const int count = static_cast<int>(item.args.size());
+  void check_spec(const Item& item, const OperationInfo& info) {
+    const std::size_t count = item.args.size();
+    const bool unbounded = info.max_args == kUnbounded;
     const std::string quoted = "'" + item.name + "'";
-    if (count < spec.min_args || (spec.max_args >= 0 && count > spec.max_args)) {
-      std::string wanted = std::to_string(spec.min_args);
-      if (spec.max_args < 0) wanted = "at least " + wanted;
+    if (count < info.min_args || (!unbounded && count > info.max_args)) {
+      std::string wanted = std::to_string(info.min_args);
+      if (unbounded) wanted = "at least " + wanted;
       report("CGA201",
              quoted + " expects " + wanted + " argument" +
-                 (spec.min_args == 1 && spec.max_args == 1 ? "" : "s") + ", found " +
+                 (info.min_args == 1 && info.max_args == 1 ? "" : "s") + ", found " +
                  std::to_string(count),
              item.range);
     }
-    if (spec.block && !item.has_block) {
+    const bool block = info.block == BlockUse::kRequired;
+    if (block && !item.has_block) {
       report("CGA202", quoted + " needs a successor block '{ ... }'", item.range);
     }
-    if (!spec.block && item.has_block) {
+    if (!block && item.has_block) {
       report("CGA203", quoted + " takes no successor block", item.range);
     }
-    if (spec.string_first && count > 0 && item.args[0]->kind != ExprKind::kString) {
+    if (info.string_first && count > 0 && item.args[0]->kind != ExprKind::kString) {
       report("CGA204",
              "the first argument of " + quoted + " must be a string (" +
-                 first_argument_role(spec.kind) + ")",
+                 first_argument_role(info.kind) + ")",
              item.args[0]->range);
     }
   }

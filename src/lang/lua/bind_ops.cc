@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "lang/lua/bindings_internal.h"
+#include "lang/lua/operations.h"
 #include "shape/ops.h"
 
 namespace insula::lua {
@@ -239,14 +240,6 @@ int lua_split(lua_State* L) {
   return push_components(L, created);
 }
 
-bool is_lua_keyword(std::string_view name) {
-  static constexpr std::string_view kKeywords[] = {
-      "and",      "break",  "do",   "else", "elseif", "end",  "false", "for",
-      "function", "goto",   "if",   "in",   "local",  "nil",  "not",   "or",
-      "repeat",   "return", "then", "true", "until",  "while"};
-  return std::find(std::begin(kKeywords), std::end(kKeywords), name) != std::end(kKeywords);
-}
-
 }  // namespace
 
 void register_ops_bindings(Api& api) {
@@ -254,7 +247,7 @@ void register_ops_bindings(Api& api) {
   for (const shape::Operation& op : shape::registry().operations()) {
     if (op.name == "split") continue;  // seed 001's labelled pieces below
     // `repeat` is a Lua keyword: the function is repeatSplit (and insula["repeat"]).
-    const std::string global = is_lua_keyword(op.name) ? op.name + "Split" : op.name;
+    const std::string global = global_name(op.name);
     lua_getglobal(L, "insula");
     lua_pushstring(L, op.name.c_str());
     lua_pushcclosure(L, protect<generic_operation>, 1);

@@ -1,0 +1,524 @@
+// The derivation loop, rule choice and the successor interpreter (seed 004 §II; derive.h), with
+// CGA's built-ins that are not shape operations (color, set, print, report).
+#include "lang/cga/derive_engine.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+#include "shape/query.h"
+#include "shape/shape_tree.h"
+
+namespace insula::lang::cga::detail {
+
+namespace {
+
+std::string hex_color(double r, double g, double b, double a, bool alpha) {
+  const auto byte = [](double v) {
+    return static_cast<unsigned>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+  };
+  char text[16];
+  if (alpha) {
+    std::snprintf(text, sizeof text, "#%02x%02x%02x%02x", byte(r), byte(g), byte(b), byte(a));
+  } else {
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(r), byte(g), byte(b));
+  }
+  return text;
+}
+
+bool valid_hex_color(const std::string& s) {
+  if (s.size() != 7 && s.size() != 9) return false;
+  if (s[0] != '#') return false;
+  return std::all_of(s.begin() + 1, s.end(),
+                     [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; });
+}
+
+}  // namespace
+
+void Engine::run() {
+  try {
+    start();
+    loop();
+    out_.ok = true;
+  } catch (const DeriveError& e) {
+    out_.diagnostics.push_back(e.diagnostic);
+  } catch (const EvalError& e) {
+    base::Diagnostic d = base::Diagnostic::error("CGA603", e.message, program_.span(e.range));
+    if (rule_ != nullptr) d.notes.push_back("in " + program_.describe(*rule_));
+    d.notes.push_back("in lot '" + lot_.id + "'");
+    out_.diagnostics.push_back(std::move(d));
+  }
+  flush_warnings();
+}
+
+Value Engine::attribute(std::uint32_t attr, Range range) {
+  for (std::uint32_t n = cur_ != nullptr ? cur_->attrs : 0; n != 0; n = out_.attr_nodes[n].parent) {
+    if (out_.attr_nodes[n].attr == attr) return out_.attr_nodes[n].value;
+  }
+  return lot_value(attr, range);
+}
+
+double Engine::shape_attribute(ShapeAttr a) {
+  const State& s = *cur_;
+  switch (a) {
+    case ShapeAttr::kSx:
+      return s.scope.size.x;
+    case ShapeAttr::kSy:
+      return s.scope.size.y;
+    case ShapeAttr::kSz:
+      return s.scope.size.z;
+    case ShapeAttr::kTx:
+      return s.scope.origin.x;
+    case ShapeAttr::kTy:
+      return s.scope.origin.y;
+    case ShapeAttr::kTz:
+      return s.scope.origin.z;
+    case ShapeAttr::kArea: {
+      const Geometry& g = out_.geometry[s.geometry];
+      if (g.kind == Geometry::Kind::kMesh && g.outline) return g.area;
+      return s.scope.size.x * s.scope.size.y;
+    }
+    case ShapeAttr::kVolume:
+      return s.scope.volume();
+    case ShapeAttr::kDepth:
+      return depth_;
+    case ShapeAttr::kIndex:
+      return s.index;
+    case ShapeAttr::kTotal:
+      return s.total;
+  }
+  return 0;
+}
+
+std::string Engine::occlusion(const std::string& /*what*/, Range /*range*/) {
+  // The configuration (seed 004 §II): every pending and terminal shape of this lot but the
+  // asking one, as boxes (shape::occlusion's box approximation).
+  const Scope& self = cur_->scope;
+  const kernel::Bounds3 mine = bounds(self);
+  shape::ShapeTree tree;
+  const shape::ShapeId id = tree.add_root(self);
+  std::vector<shape::ShapeId> others;
+  const auto consider = [&](const Scope& s) {
+    const kernel::Bounds3 b = bounds(s);
+    constexpr double kTol = 1e-3;
+    if (b.min.x > mine.max.x + kTol || b.max.x < mine.min.x - kTol || b.min.y > mine.max.y + kTol ||
+        b.max.y < mine.min.y - kTol || b.min.z > mine.max.z + kTol || b.max.z < mine.min.z - kTol) {
+      return;
+    }
+    others.push_back(tree.add_root(s));
+  };
+  for (std::size_t i = 0; i < out_.terminals_store.size(); ++i)
+    consider(out_.terminals_store[i].scope);
+  for (const auto& bucket : pending_) {
+    for (const Work& w : bucket) consider(w.scope);
+  }
+  for (const Work& w : batch_) consider(w.scope);
+  const double f = shape::occlusion(tree, id, others);
+  return f <= 1e-6 ? "none" : f >= 1 - 1e-6 ? "full" : "part";
+}
+
+Value Engine::lot_value(std::uint32_t attr, Range range) {
+  if (status_[attr] == 2) return values_[attr];
+  const CAttr& a = program_.attrs[attr];
+  if (status_[attr] == 1) throw EvalError{range, "attribute '" + a.name + "' depends on itself"};
+  status_[attr] = 1;
+  Value v;
+  bool found = false;
+  for (const auto& [name, value] : options_.sets) {
+    if (name == a.name) {
+      v = value;
+      found = true;
+    }
+  }
+  if (!found) {
+    if (auto it = lot_.properties.find(a.name);
+        it != lot_.properties.end() && !shape::is_null(it->second)) {
+      v = it->second;
+      found = true;
+    }
+  }
+  if (!found && a.value != kNoExpr) {
+    State* saved = cur_;
+    cur_ = &start_state_;
+    v = evaluate(program_, a.value, *this);
+    cur_ = saved;
+  }
+  values_[attr] = v;
+  status_[attr] = 2;
+  return v;
+}
+
+std::uint32_t Engine::add_mesh(std::shared_ptr<const Mesh> mesh,
+                               std::shared_ptr<const kernel::Polygon> outline, Vec3 size) {
+  if (!mesh && !outline) return 0;
+  Geometry g;
+  g.kind = Geometry::Kind::kMesh;
+  if (outline) {
+    g.rect_like = shape::is_rectangle(*outline, size.x, size.y);
+    g.tag = mesh && !mesh->empty() ? mesh->tag(0) : FaceTag{};
+    g.area = kernel::area(*outline);
+  } else if (mesh) {
+    g.box_like = shape::is_box(*mesh, size, &g.tags);
+  }
+  g.mesh = std::move(mesh);
+  g.outline = std::move(outline);
+  return add_geometry(std::move(g));
+}
+
+Materialized Engine::materialize(const Geometry& g, Vec3 size) {
+  switch (g.kind) {
+    case Geometry::Kind::kNone:
+      return {};
+    case Geometry::Kind::kBox:
+      return {shape::box_mesh(size, g.tags), nullptr};
+    case Geometry::Kind::kRect: {
+      auto outline = std::make_shared<kernel::Polygon>(shape::rectangle_outline(size.x, size.y));
+      auto mesh = shape::flat_mesh(*outline, g.tag);
+      return {std::move(mesh), std::move(outline)};
+    }
+    case Geometry::Kind::kMesh:
+      return {g.mesh, g.outline};
+  }
+  return {};
+}
+
+kernel::Polygon Engine::oriented(std::size_t i) const {
+  kernel::Polygon polygon = lot_.polygons[i];
+  kernel::normalize(polygon);
+  if (i >= lot_.first_edges.size()) return polygon;
+  const auto& [a, b] = lot_.first_edges[i];
+  const auto near = [](kernel::Vec2 p, kernel::Vec2 q) {
+    return std::fabs(p.x - q.x) <= 1e-6 && std::fabs(p.y - q.y) <= 1e-6;
+  };
+  kernel::Ring& ring = polygon.outer;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const kernel::Vec2 p = ring[k];
+    const kernel::Vec2 q = ring[(k + 1) % ring.size()];
+    if ((near(p, a) && near(q, b)) || (near(p, b) && near(q, a))) {
+      std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(k), ring.end());
+      break;
+    }
+  }
+  return polygon;
+}
+
+void Engine::start() {
+  for (std::size_t i = 0; i < lot_.polygons.size(); ++i) {
+    shape::ShapeTree tree;
+    const shape::RootResult root = tree.create_root(oriented(i));
+    if (!root.ok()) {
+      throw DeriveError{base::Diagnostic::error(
+          "CGA606", "lot '" + lot_.id + "' polygon " + std::to_string(i) + ": " + root.error,
+          base::Span::whole(program_.source->name()))};
+    }
+    const shape::Shape& s = tree[root.id];
+    State st;
+    st.scope = s.scope;
+    st.seed = shape::child_seed(lot_seed_, static_cast<std::uint32_t>(i));
+    st.geometry = add_mesh(s.mesh, s.outline, s.scope.size);
+    if (i == 0) start_state_ = st;
+    starts_.push_back(st);
+  }
+  // Attribute values are fixed per lot, before any rule runs (CityEngine's attr semantics),
+  // with a generator of their own.
+  rng_ = shape::Rng(shape::child_seed(lot_seed_, 0xfffffffeU));
+  cur_ = &start_state_;
+  for (std::uint32_t a = 0; a < program_.attrs.size(); ++a) {
+    if (a == program_.color_attr) continue;
+    const Value v = lot_value(a, program_.attrs[a].range);
+    if (!shape::is_null(v)) out_.attributes[program_.attrs[a].name] = v;
+  }
+  for (const auto& [name, value] : lot_.properties) out_.attributes.emplace(name, value);
+  for (State& st : starts_) {
+    st.next_child = 0;
+    count_shape(program_.start);
+    push_or_terminal(st, program_.start, 0);
+  }
+  flush_batch();
+}
+
+void Engine::loop() {
+  while (true) {
+    std::size_t level = pending_.size();
+    for (std::size_t l = 0; l < pending_.size(); ++l) {
+      if (!pending_[l].empty()) {
+        level = l;
+        break;
+      }
+    }
+    if (level == pending_.size()) return;
+    const Work w = pending_[level].back();
+    pending_[level].pop_back();
+    --pending_count_;
+    process(w);
+    flush_batch();
+  }
+}
+
+void Engine::flush_batch() {
+  // Children go on the stack in reverse so the first one is derived first (depth first, in
+  // successor order: the terminal list follows the grammar's reading order).
+  for (auto it = batch_.rbegin(); it != batch_.rend(); ++it) pending_[it->level].push_back(*it);
+  pending_count_ += batch_.size();
+  out_.peak_pending = std::max(out_.peak_pending, pending_count_);
+  batch_.clear();
+}
+
+[[noreturn]] void Engine::limit_error(std::string code, std::string what) {
+  base::Span span = base::Span::whole(program_.source->name());
+  if (rule_ != nullptr) {
+    span = program_.span(rule_->id_range);
+    what += " in " + program_.describe(*rule_);
+  }
+  base::Diagnostic d = base::Diagnostic::error(std::move(code), std::move(what), span);
+  d.notes.push_back("in lot '" + lot_.id + "'");
+  throw DeriveError{std::move(d)};
+}
+
+void Engine::process(const Work& w) {
+  State st;
+  st.scope = w.scope;
+  st.seed = w.seed;
+  st.geometry = w.geometry;
+  st.attrs = w.attrs;
+  st.index = w.index;
+  st.total = w.total;
+  depth_ = w.depth;
+  cur_ = &st;
+  rng_ = shape::Rng(w.seed);
+  rule_ = nullptr;
+  for (std::uint32_t r : program_.rules_at[w.symbol][w.level]) {
+    const CRule& rule = program_.rules[r];
+    rule_ = &rule;
+    if (rule.condition != kNoExpr &&
+        !as_bool(evaluate(program_, rule.condition, *this), program_.nodes[rule.condition].range)) {
+      continue;
+    }
+    apply(rule, st);
+    return;
+  }
+  // No rule of this level applies: try the next level with rules for the symbol (§II: a
+  // shape with no applicable rule is terminal).
+  for (std::uint32_t l : program_.levels_of[w.symbol]) {
+    if (l > w.level) {
+      Work next = w;
+      next.level = static_cast<std::uint16_t>(l);
+      batch_.push_back(next);
+      return;
+    }
+  }
+  terminal(st, w.symbol);
+}
+
+double Engine::probability(const CRule& rule, std::uint32_t p) {
+  const Range range = program_.nodes[p].range;
+  const double v = as_number(evaluate(program_, p, *this), range);
+  if (!(v >= 0 && v <= 1)) {
+    base::Diagnostic d = base::Diagnostic::error(
+        "CGA605",
+        "the probability of " + program_.describe(rule) + " evaluates to " + as_text(Value(v)) +
+            ", not a number in [0, 1] (seed 004 §IV.B, constraint 1)",
+        program_.span(range));
+    d.notes.push_back("in lot '" + lot_.id + "'");
+    throw DeriveError{std::move(d)};
+  }
+  return v;
+}
+
+const CAlternative& Engine::choose(const CRule& rule) {
+  if (rule.alternatives.size() == 1) {
+    const std::uint32_t p = rule.alternatives.front().probability;
+    if (p != kNoExpr) probability(rule, p);  // checked even when there is nothing to choose
+    return rule.alternatives.front();
+  }
+  // Probabilities from the shape's generator; alternatives without one share what is left.
+  std::vector<double> weights(rule.alternatives.size(), -1.0);
+  double given = 0;
+  std::size_t missing = 0;
+  for (std::size_t i = 0; i < weights.size(); ++i) {
+    const std::uint32_t p = rule.alternatives[i].probability;
+    if (p == kNoExpr) {
+      ++missing;
+      continue;
+    }
+    weights[i] = probability(rule, p);
+    given += weights[i];
+  }
+  const double share = missing > 0 ? std::max(0.0, 1.0 - given) / static_cast<double>(missing) : 0;
+  for (double& w : weights) {
+    if (w < 0) w = share;
+  }
+  const std::size_t k = rng_.choice(weights);
+  return rule.alternatives[k < weights.size() ? k : 0];
+}
+
+void Engine::apply(const CRule& rule, State& st) {
+  ++out_.rule_applications;
+  const CAlternative& alt = choose(rule);
+  rule_scope_ = st.scope;
+  std::vector<State> stack;
+  run_items(alt.items, 0, st, stack);
+  if (!st.consumed) terminal(st, rule.predecessor);
+}
+
+void Engine::warn(const CItem& c, std::string message) {
+  const std::string name = c.info != nullptr ? std::string(c.info->name) : "operation";
+  // Registry errors name the shape operation ("roof: ..."); say the CGA name instead.
+  if (c.info != nullptr && !c.info->registry_op.empty()) {
+    const std::string prefix = std::string(c.info->registry_op) + ": ";
+    if (message.compare(0, prefix.size(), prefix) == 0) message.erase(0, prefix.size());
+  }
+  ++warnings_[{c.range.begin, name + ": " + message}];
+}
+
+void Engine::flush_warnings() {
+  for (const auto& [key, count] : warnings_) {
+    base::Diagnostic d = base::Diagnostic::warning(
+        "CGA604",
+        key.second + (count > 1 ? " (" + std::to_string(count) + " times)" : std::string()),
+        program_.span(Range{key.first, key.first + 1}));
+    out_.diagnostics.push_back(std::move(d));
+  }
+}
+
+void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State& st,
+                       std::vector<State>& stack) {
+  for (std::size_t i = from; i < items.size(); ++i) {
+    const CItem& c = items[i];
+    switch (c.code) {
+      case OpCode::kSymbol:
+        count_shape(c.symbol);
+        {
+          State child = st;
+          child.seed = shape::child_seed(st.seed, st.next_child++);
+          child.next_child = 0;
+          push_or_terminal(child, c.symbol, depth_ + 1U);
+        }
+        st.consumed = true;
+        break;
+      case OpCode::kEmpty:
+        st.consumed = true;
+        break;
+      case OpCode::kPush: {
+        State inner = st;
+        inner.seed = shape::child_seed(st.seed, st.next_child++);
+        stack.push_back(st);
+        inner.next_child = 0;
+        inner.consumed = false;
+        inner.modified = false;
+        st = inner;
+        break;
+      }
+      case OpCode::kPop:
+        if (stack.empty()) break;  // the parser balances brackets
+        if (!st.consumed && st.modified) terminal(st, rule_->predecessor);
+        st = stack.back();
+        stack.pop_back();
+        break;
+      case OpCode::kTranslate:
+        st.scope.origin = st.scope.to_world(
+            {number(c.args[0], st), number(c.args[1], st), number(c.args[2], st)});
+        touch(st);
+        break;
+      case OpCode::kRotate:
+        rotate(c, st);
+        break;
+      case OpCode::kColor:
+        color(c, st);
+        break;
+      case OpCode::kSet:
+        set_attr(st, c.attr, eval(c.args[0], st));
+        break;
+      case OpCode::kPrint:
+        print(c, st);
+        break;
+      case OpCode::kReport:
+        report(c, st);
+        break;
+      case OpCode::kInsertShape:
+        insert_shape(c, st);
+        break;
+      case OpCode::kSplit:
+      case OpCode::kRepeat:
+        split(c, st);
+        st.consumed = true;
+        break;
+      case OpCode::kComp:
+        comp(c, st);
+        st.consumed = true;
+        break;
+      case OpCode::kSetback:
+        setback(c, st);
+        st.consumed = true;
+        break;
+      default:
+        // Registry operations (kRegistry): without a block they replace the current shape
+        // (extrude, scale, center, i, roof, offset, ...), with one they feed it.
+        if (c.has_block) {
+          block_operation(c, st);
+          st.consumed = true;
+          break;
+        }
+        if (!replace(c, items, i, st, stack)) return;
+        break;
+    }
+  }
+}
+
+void Engine::rotate(const CItem& c, State& st) {
+  const Vec3 d{number(c.args[0], st), number(c.args[1], st), number(c.args[2], st)};
+  if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z)) {
+    warn(c, "angles must be finite");
+    return;
+  }
+  // As shape::rotate: intrinsic rotations about x, then y, then z, about the scope origin.
+  if (d.x != 0) st.scope = shape::rotated(st.scope, Axis::kX, d.x, {});
+  if (d.y != 0) st.scope = shape::rotated(st.scope, Axis::kY, d.y, {});
+  if (d.z != 0) st.scope = shape::rotated(st.scope, Axis::kZ, d.z, {});
+  touch(st);
+}
+
+void Engine::set_attr(State& st, std::uint32_t attr, Value value) {
+  out_.attr_nodes.push_back({st.attrs, attr, std::move(value)});
+  st.attrs = static_cast<std::uint32_t>(out_.attr_nodes.size() - 1);
+  touch(st);
+}
+
+void Engine::color(const CItem& c, State& st) {
+  std::string hex;
+  if (c.args.size() == 1) {
+    const Value v = eval(c.args[0], st);
+    hex = as_text(v);
+    if (!valid_hex_color(hex)) {
+      throw EvalError{program_.nodes[c.args[0]].range,
+                      "color() expects \"#rrggbb\" or \"#rrggbbaa\", got \"" + hex + "\""};
+    }
+    std::transform(hex.begin(), hex.end(), hex.begin(), [](char ch) {
+      return static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    });
+  } else {
+    const double a = c.args.size() == 4 ? number(c.args[3], st) : 1.0;
+    hex = hex_color(number(c.args[0], st), number(c.args[1], st), number(c.args[2], st), a,
+                    c.args.size() == 4);
+  }
+  set_attr(st, program_.color_attr, std::move(hex));
+}
+
+void Engine::print(const CItem& c, State& st) {
+  std::string line =
+      program_.source->name() + ":" + std::to_string(program_.span(c.range).line) + ": print:";
+  // Appended in two steps: GCC 12 reports a false -Wrestrict on `" " + std::string`.
+  for (std::uint32_t a : c.args) line.append(" ").append(as_text(eval(a, st)));
+  out_.prints.push_back(std::move(line));
+}
+
+void Engine::report(const CItem& c, State& st) {
+  const std::string name = as_text(eval(c.args[0], st));
+  const double value = number(c.args[1], st);
+  ReportEntry& e = out_.reports[name];
+  e.sum += value;
+  ++e.count;
+}
+
+}  // namespace insula::lang::cga::detail

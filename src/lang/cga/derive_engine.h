@@ -1,0 +1,405 @@
+// The derivation engine's state and its interpreter (derive.h has the contract): one Engine
+// derives one lot. Its methods live in files by idea: derive_engine.cc (the derivation loop,
+// rule choice, the successor interpreter and CGA's own built-ins), derive_splits.cc (split,
+// repeat, comp and setback: the operations whose pieces go to keyed successors) and
+// derive_registry.cc (every other operation, run through the shape registry). Small methods on
+// the hot path of every piece are defined here so each file inlines them.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lang/cga/derive.h"
+#include "lang/cga/eval.h"
+#include "shape/ops_fast.h"
+#include "shape/rng.h"
+
+namespace insula::lang::cga::detail {
+
+using kernel::FaceTag;
+using kernel::Mesh;
+using kernel::Vec3;
+using shape::Axis;
+using shape::Scope;
+using shape::SizeMode;
+using shape::SizeSpec;
+using shape::Value;
+
+// A pending shape (derive.h: "compact state").
+struct Work {
+  Scope scope;
+  std::uint64_t seed = 0;
+  SymbolId symbol = kNoSymbol;
+  std::uint32_t geometry = 0;
+  std::uint32_t attrs = 0;
+  std::uint32_t index = 0;  // split.index / comp.index
+  std::uint32_t total = 1;  // split.total
+  std::uint16_t depth = 0;
+  std::uint16_t level = 0;
+};
+
+// The current shape while a successor runs.
+struct State {
+  Scope scope;
+  std::uint64_t seed = 0;
+  std::uint32_t geometry = 0;
+  std::uint32_t attrs = 0;
+  std::uint32_t index = 0;
+  std::uint32_t total = 1;
+  std::uint32_t next_child = 0;  // children seeded so far (child_seed index)
+  bool consumed = false;         // replaced by a symbol, a block operation or ε
+  bool modified = false;         // changed since the last `[` (a `]` then leaves it as a leaf)
+};
+
+// A limit or evaluation error: ends the lot's derivation.
+struct DeriveError {
+  base::Diagnostic diagnostic;
+};
+
+struct Materialized {
+  std::shared_ptr<const Mesh> mesh;
+  std::shared_ptr<const kernel::Polygon> outline;
+};
+
+// Children of an operation run through the shape layer, as states.
+struct OpOutcome {
+  std::vector<State> children;
+  std::vector<std::uint32_t> pieces;
+  std::shared_ptr<const Mesh> parent_mesh;  // the operand's geometry (comp needs face normals)
+  std::string error;
+  std::string warning;
+};
+
+class Engine final : public EvalContext {
+ public:
+  Engine(const Program& program, const Lot& lot, std::size_t lot_index,
+         const DeriveOptions& options, LotResult& out)
+      : program_(program),
+        lot_(lot),
+        options_(options),
+        out_(out),
+        assets_(options.assets),
+        lot_seed_(
+            shape::child_seed(shape::mix64(options.seed), static_cast<std::uint32_t>(lot_index))),
+        rng_(lot_seed_) {
+    context_.assets = &assets_;
+    keep_ = options.keep_terminals || program.uses_occlusion;
+    out_.geometry.push_back(Geometry{});  // handle 0: none
+    out_.attr_nodes.push_back(AttrNode{});
+    out_.symbol_counts.assign(program.symbols.size(), 0);
+    pending_.resize(std::max<std::size_t>(1, program.priorities.size()));
+    values_.resize(program.attrs.size());
+    status_.resize(program.attrs.size(), 0);
+  }
+
+  void run();
+
+  // ---- EvalContext
+  Value attribute(std::uint32_t attr, Range range) override;
+
+  double shape_attribute(ShapeAttr a) override;
+
+  std::string occlusion(const std::string& /*what*/, Range /*range*/) override;
+
+  shape::Rng& rng() override { return rng_; }
+
+ private:
+  static kernel::Bounds3 bounds(const Scope& s) {
+    kernel::Bounds3 b;
+    for (const Vec3& p : s.corners()) b.add(p);
+    return b;
+  }
+
+  // ---- attributes of the lot: --set > lot property > default (evaluated once per lot)
+  Value lot_value(std::uint32_t attr, Range range);
+
+  // ---- geometry handles
+  std::uint32_t add_geometry(Geometry g) {
+    out_.geometry.push_back(std::move(g));
+    return static_cast<std::uint32_t>(out_.geometry.size() - 1);
+  }
+  static std::uint64_t tag_key(const FaceTag& t) {
+    return static_cast<std::uint64_t>(t.semantic) | (static_cast<std::uint64_t>(t.material) << 8) |
+           (static_cast<std::uint64_t>(t.face_id) << 24);
+  }
+  std::uint32_t intern_box(const std::array<FaceTag, 6>& tags) {
+    std::array<std::uint64_t, 6> key;
+    for (std::size_t i = 0; i < 6; ++i) key[i] = tag_key(tags[i]);
+    auto [it, inserted] = boxes_.emplace(key, 0);
+    if (inserted) {
+      Geometry g;
+      g.kind = Geometry::Kind::kBox;
+      g.tags = tags;
+      it->second = add_geometry(std::move(g));
+    }
+    return it->second;
+  }
+  std::uint32_t intern_rect(const FaceTag& tag) {
+    auto [it, inserted] = rects_.emplace(tag_key(tag), 0);
+    if (inserted) {
+      Geometry g;
+      g.kind = Geometry::Kind::kRect;
+      g.tag = tag;
+      it->second = add_geometry(std::move(g));
+    }
+    return it->second;
+  }
+  std::uint32_t add_mesh(std::shared_ptr<const Mesh> mesh,
+                         std::shared_ptr<const kernel::Polygon> outline, Vec3 size);
+
+ public:
+  static Materialized materialize(const Geometry& g, Vec3 size);
+
+ private:
+  // ---- the derivation loop
+  // The polygon with its outer ring rotated so the input's first edge comes first.
+  kernel::Polygon oriented(std::size_t i) const;
+
+  void start();
+
+  void loop();
+
+  void flush_batch();
+
+  void count_shape(SymbolId symbol) {
+    ++out_.shapes;
+    if (symbol != kNoSymbol) ++out_.symbol_counts[symbol];
+    if (out_.shapes > options_.limits.max_shapes) {
+      limit_error("CGA602",
+                  "shape limit of " + std::to_string(options_.limits.max_shapes) + " reached");
+    }
+  }
+
+  [[noreturn]] void limit_error(std::string code, std::string what);
+
+  void terminal(const State& st, SymbolId symbol) {
+    ++out_.terminals;
+    if (keep_) out_.terminals_store.push({st.scope, symbol, st.geometry, st.attrs});
+  }
+
+  // A new shape `symbol` from `st` at derivation depth `depth`: pending when it has rules.
+  void push_or_terminal(const State& st, SymbolId symbol, std::uint32_t depth) {
+    if (!program_.has_rules(symbol)) {
+      terminal(st, symbol);
+      return;
+    }
+    if (depth > std::min<std::uint32_t>(options_.limits.max_depth, 0xffff)) {
+      limit_error("CGA601", "derivation depth limit of " +
+                                std::to_string(options_.limits.max_depth) + " reached");
+    }
+    Work w;
+    w.scope = st.scope;
+    w.seed = st.seed;
+    w.symbol = symbol;
+    w.geometry = st.geometry;
+    w.attrs = st.attrs;
+    w.index = st.index;
+    w.total = st.total;
+    w.depth = static_cast<std::uint16_t>(depth);
+    w.level = static_cast<std::uint16_t>(program_.levels_of[symbol].front());
+    batch_.push_back(w);
+  }
+
+  void process(const Work& w);
+
+  // The value of probability expression `p` of `rule`. Seed 004 §IV.B constraint 1 asks for a
+  // probability in (0, 1]; the checker enforces it on constants (CGA301). A computed one (an
+  // attribute, a function) that is negative, NaN or above 1 is an error here (CGA605) rather
+  // than a weight silently clamped to 0; 0 itself is allowed, so an attribute can switch an
+  // alternative off (docs/cga-derivation.md, "Errors").
+  double probability(const CRule& rule, std::uint32_t p);
+
+  const CAlternative& choose(const CRule& rule);
+
+  void apply(const CRule& rule, State& st);
+
+  // ---- successor interpreter
+  Value eval(std::uint32_t e, State& st) {
+    cur_ = &st;
+    return evaluate(program_, e, *this);
+  }
+  double number(std::uint32_t e, State& st) {
+    return as_number(eval(e, st), program_.nodes[e].range);
+  }
+  SizeSpec size_of(const CSize& s, State& st) {
+    return {s.expr == kNoExpr ? s.value : number(s.expr, st), s.mode};
+  }
+
+  State child_of(State& parent, const Scope& scope, std::uint32_t geometry, std::uint32_t index,
+                 std::uint32_t total) {
+    // Operation pieces count against the shape limit too: a piece that never becomes a symbol
+    // (a failed nested split, a branch of ε) still costs work (RR("XYZ", 0.001) on a lot).
+    if (++pieces_ > options_.limits.max_shapes) {
+      limit_error("CGA602", "shape limit of " + std::to_string(options_.limits.max_shapes) +
+                                " reached (operation pieces)");
+    }
+    State c;
+    c.scope = scope;
+    c.seed = shape::child_seed(parent.seed, parent.next_child++);
+    c.geometry = geometry;
+    c.attrs = parent.attrs;
+    c.index = index;
+    c.total = total;
+    return c;
+  }
+
+  void warn(const CItem& c, std::string message);
+
+  void flush_warnings();
+
+  void run_items(const std::vector<CItem>& items, std::size_t from, State& st,
+                 std::vector<State>& stack);
+
+  void touch(State& st) {
+    st.modified = true;
+    st.consumed = false;
+  }
+
+  void rotate(const CItem& c, State& st);
+
+  void set_attr(State& st, std::uint32_t attr, Value value);
+
+  void color(const CItem& c, State& st);
+
+  void print(const CItem& c, State& st);
+
+  void report(const CItem& c, State& st);
+
+  // ---- operations through the shape layer (shape::registry() on a one-shape tree)
+  OpOutcome run_op(const State& st, std::string_view name, const std::vector<shape::ArgInput>& args,
+                   const Scope* parent = nullptr);
+
+  bool check(const CItem& c, const OpOutcome& o) {
+    if (!o.warning.empty()) warn(c, o.warning);
+    if (o.error.empty()) return true;
+    warn(c, o.error);
+    return false;
+  }
+
+  // The registry arguments of a compiled operation: each positional argument as the parameter
+  // operations.h maps it to, plus the ones its spelling fixes.
+  std::vector<shape::ArgInput> registry_args(const CItem& c, State& st);
+  OpOutcome run_registry(const CItem& c, State& st);
+
+  // Runs a replacing operation; returns false when it forked (the rest of the successor already
+  // ran once per result) or removed the shape.
+  bool replace(const CItem& c, const std::vector<CItem>& items, std::size_t i, State& st,
+               std::vector<State>& stack);
+
+  void run_branch(const CBranch& b, State& piece) {
+    std::vector<State> stack;
+    run_items(b.items, 0, piece, stack);
+    if (!piece.consumed) terminal(piece, rule_->predecessor);
+  }
+
+  // roof { ... }, offset { inside: ... | border: ... } and any registry operation with a block.
+  void block_operation(const CItem& c, State& st);
+
+  // ---- split and repeat: scope math for boxes, rectangles and pure scopes (shape/ops_fast.h),
+  // the shape layer's split for any other geometry. Buffers are reused per nesting level (a
+  // split inside a split's branch takes the next level), so the hot path does not allocate.
+  struct Scratch {
+    std::vector<SizeSpec> sizes;
+    std::vector<const CBranch*> targets;
+    std::vector<shape::Piece> pieces;
+  };
+  class Lease {
+   public:
+    explicit Lease(Engine& e) : e_(e) {
+      if (e.nest_ == e.scratch_.size()) e.scratch_.push_back(std::make_unique<Scratch>());
+      s_ = e.scratch_[e.nest_++].get();
+      s_->sizes.clear();
+      s_->targets.clear();
+    }
+    ~Lease() { --e_.nest_; }
+    Lease(const Lease&) = delete;
+    Lease& operator=(const Lease&) = delete;
+    Scratch& operator*() { return *s_; }
+    Scratch* operator->() { return s_; }
+
+   private:
+    Engine& e_;
+    Scratch* s_ = nullptr;
+  };
+
+  // Calls visit(piece state, size entry) for each piece of splitting `st` along `axis`; returns
+  // the operation's error ("" on success).
+  template <typename Visit>
+  std::string for_each_piece(State& st, Axis axis, std::span<const SizeSpec> sizes,
+                             std::vector<shape::Piece>& pieces, Visit&& visit);
+
+  // Nominal length of a size (floating sizes count their value) for repeat counting.
+  double nominal(const CSize& s, State& st, double total);
+  double pattern_length(const std::vector<CBranch>& pattern, State& st, double total);
+  void append_pattern(const std::vector<CBranch>& pattern, State& st, std::vector<SizeSpec>& sizes,
+                      std::vector<const CBranch*>& targets);
+
+  // split(axis){ size: A | { ~2: B | 1: C }* | ... }: repeat patterns expand to as many copies as
+  // fit in what the other entries leave (at least one), then sizes resolve as for BS.
+  void keyed_sizes(const CItem& c, State& st, double total, std::vector<SizeSpec>& sizes,
+                   std::vector<const CBranch*>& targets);
+
+  void split(const CItem& c, State& st);
+
+  // BS("XY", 3, 5, 7){ A | B | C } (§VI, docs/cga-language.md "Decisions"): the piece of the
+  // first axis that successor `target` got is split along each further axis in turn by the same
+  // sizes (evaluated once, on the shape the rule rewrites), and every cell of it gets `target`,
+  // as RR("XY", 3) nests repeats. The same cores as a one-axis split (for_each_piece).
+  void split_cells(const CItem& c, State& st, std::span<const SizeSpec> sizes,
+                   std::size_t axis_index, const CBranch& target);
+
+  // RR(axes, size){ A }: along each listed axis in turn (RR("XY", 3) is a grid).
+  void repeat(const CItem& c, State& st, std::size_t axis_index);
+
+  // ---- comp (seed 004 "Component Split Rule"; CityEngine selectors)
+  const CBranch* comp_target(const CItem& c, std::uint32_t piece, std::size_t ordinal,
+                             const Mesh* parent);
+
+  void comp(const CItem& c, State& st);
+
+  // ---- setback(d){ front: A | remainder: B }: one strip per edge selector, in order, each cut
+  // from what the previous ones left; the remainder successor gets what is left at the end.
+  void setback(const CItem& c, State& st);
+
+  // ---- I(asset) / Pshape(file): a new terminal shape holding the asset in the current scope
+  // (seed 004 "an insertion rule creates a given shape with the current scope"); the current
+  // shape goes on unchanged.
+  void insert_shape(const CItem& c, State& st);
+
+  const Program& program_;
+  const Lot& lot_;
+  const DeriveOptions& options_;
+  LotResult& out_;
+  BuiltinAssets assets_;
+  shape::Context context_;
+  std::uint64_t lot_seed_;
+  shape::Rng rng_;
+  bool keep_ = true;
+
+  std::vector<std::vector<Work>> pending_;  // one stack per priority level
+  std::size_t pending_count_ = 0;
+  std::vector<Work> batch_;  // shapes created by the current rule application
+  std::vector<State> starts_;
+  State start_state_;
+  State* cur_ = nullptr;
+  const CRule* rule_ = nullptr;
+  Scope rule_scope_;
+  std::uint32_t depth_ = 0;
+
+  std::vector<Value> values_;
+  std::vector<std::uint8_t> status_;  // 0 not evaluated, 1 in progress, 2 done
+  std::map<std::array<std::uint64_t, 6>, std::uint32_t> boxes_;
+  std::map<std::uint64_t, std::uint32_t> rects_;
+  std::map<std::pair<std::uint32_t, std::string>, std::size_t> warnings_;
+  std::vector<std::unique_ptr<Scratch>> scratch_;
+  std::size_t nest_ = 0;
+  std::uint64_t pieces_ = 0;
+};
+
+}  // namespace insula::lang::cga::detail

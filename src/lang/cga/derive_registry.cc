@@ -1,0 +1,148 @@
+// Operations run through the shape registry (shape::registry() on a one-shape tree): extrude,
+// scale, center, i, roofs, offset and every registry operation CGA reaches under its own name.
+// Their arguments are bound by the registry's declarations (operations.h), so nothing here
+// knows an operation's parameters.
+#include <cctype>
+
+#include "lang/cga/derive_engine.h"
+#include "shape/shape_tree.h"
+
+namespace insula::lang::cga::detail {
+
+OpOutcome Engine::run_op(const State& st, std::string_view name,
+                         const std::vector<shape::ArgInput>& args, const Scope* parent) {
+  OpOutcome out;
+  const Materialized m = materialize(out_.geometry[st.geometry], st.scope.size);
+  out.parent_mesh = m.mesh;
+  shape::ShapeTree tree;
+  shape::ShapeId id;
+  if (parent != nullptr) {
+    id = tree.add_child(tree.add_root(*parent), st.scope, m.mesh, m.outline);
+  } else {
+    id = tree.add_root(st.scope, m.mesh, m.outline);
+  }
+  const shape::OpResult r = shape::registry().run(tree, id, name, args, context_);
+  if (!r.ok()) {
+    out.error = r.error;
+    return out;
+  }
+  out.warning = r.warning;
+  for (std::size_t k = 0; k < r.children.size(); ++k) {
+    const shape::Shape& s = tree[r.children[k]];
+    State c = st;
+    c.scope = s.scope;
+    c.geometry = add_mesh(s.mesh, s.outline, s.scope.size);
+    out.children.push_back(c);
+    out.pieces.push_back(r.pieces[k]);
+  }
+  return out;
+}
+
+std::vector<shape::ArgInput> Engine::registry_args(const CItem& c, State& st) {
+  std::vector<shape::ArgInput> out = c.info->fixed;
+  std::size_t next_size = 0;
+  for (std::size_t i = 0; i < c.args.size(); ++i) {
+    const shape::ParamDecl* p = c.info->param_of(i);
+    if (p == nullptr) continue;
+    switch (p->type) {
+      case shape::ParamType::kNumber:
+      case shape::ParamType::kInteger:
+        out.push_back({p->name, number(c.args[i], st)});
+        break;
+      case shape::ParamType::kBool:
+        out.push_back({p->name, as_bool(eval(c.args[i], st), program_.nodes[c.args[i]].range)});
+        break;
+      case shape::ParamType::kString:
+        out.push_back({p->name, as_text(eval(c.args[i], st))});
+        break;
+      case shape::ParamType::kEnum: {
+        // Choices are lower case; CGA writes them in either case (center("XZ")).
+        std::string text = as_text(eval(c.args[i], st));
+        for (char& ch : text) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        out.push_back({p->name, std::move(text)});
+        break;
+      }
+      case shape::ParamType::kSize:
+        out.push_back({p->name, size_of(c.sizes[next_size++], st)});
+        break;
+      case shape::ParamType::kSizeList: {
+        std::vector<SizeSpec> sizes;
+        while (next_size < c.sizes.size()) sizes.push_back(size_of(c.sizes[next_size++], st));
+        out.push_back({p->name, std::move(sizes)});
+        return out;
+      }
+    }
+  }
+  return out;
+}
+
+OpOutcome Engine::run_registry(const CItem& c, State& st) {
+  // The operation's shape sits in the one the rule rewrites (center() centres on it).
+  return run_op(st, c.info->registry_op, registry_args(c, st), &rule_scope_);
+}
+
+bool Engine::replace(const CItem& c, const std::vector<CItem>& items, std::size_t i, State& st,
+                     std::vector<State>& stack) {
+  const OpOutcome o = run_registry(c, st);
+  if (!check(c, o)) return true;  // the shape stays as it was
+  if (o.children.size() == 1) {
+    st = o.children.front();  // a copy of st with the new scope and geometry
+    touch(st);
+    return true;
+  }
+  // Several results (an offset into separate regions): the rest of the successor runs on each.
+  for (std::size_t k = 0; k < o.children.size(); ++k) {
+    State child =
+        child_of(st, o.children[k].scope, o.children[k].geometry, static_cast<std::uint32_t>(k),
+                 static_cast<std::uint32_t>(o.children.size()));
+    child.modified = true;
+    std::vector<State> fork_stack = stack;
+    run_items(items, i + 1, child, fork_stack);
+    if (!child.consumed) terminal(child, rule_->predecessor);
+  }
+  st.consumed = true;
+  return false;
+}
+
+// An unkeyed branch takes every child; a keyed one (offset's inside, border) the children of the
+// piece its selector names.
+void Engine::block_operation(const CItem& c, State& st) {
+  const OpOutcome o = run_registry(c, st);
+  if (!check(c, o)) {
+    terminal(st, rule_->predecessor);
+    return;
+  }
+  const std::vector<std::string>& pieces = c.info->selectors;
+  const auto total = static_cast<std::uint32_t>(o.children.size());
+  for (std::uint32_t k = 0; k < total; ++k) {
+    const CBranch* target = nullptr;
+    for (const CBranch& b : c.branches) {
+      const bool match =
+          !b.has_key || (c.info->selectors_are_pieces && o.pieces[k] < pieces.size() &&
+                         b.selector == pieces[o.pieces[k]]);
+      if (match) {
+        target = &b;
+        break;
+      }
+    }
+    if (target == nullptr) continue;
+    State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, total);
+    run_branch(*target, piece);
+  }
+}
+
+void Engine::insert_shape(const CItem& c, State& st) {
+  OpOutcome o = run_op(st, c.info->registry_op, registry_args(c, st));
+  count_shape(rule_->predecessor);
+  State shape = st;
+  if (o.error.empty() && o.children.size() == 1) {
+    shape.scope = o.children.front().scope;
+    shape.geometry = o.children.front().geometry;
+  } else {
+    warn(c, o.error + "; the shape keeps its own geometry");
+  }
+  terminal(shape, rule_->predecessor);
+  st.consumed = true;
+}
+
+}  // namespace insula::lang::cga::detail

@@ -1,0 +1,293 @@
+// The operations whose pieces go to keyed successors: split and repeat (seed 004 "Basic Split
+// Rule", "Repeat Rule"; CityEngine's split with repeat patterns), comp (seed 004 "Component Split
+// Rule"; CityEngine selectors) and setback. Boxes, rectangles and pure scopes split by scope math
+// (shape/ops_fast.h, the cores of shape::split); every other geometry through the registry.
+#include <algorithm>
+
+#include "lang/cga/derive_engine.h"
+#include "shape/ops.h"
+#include "shape/query.h"
+
+namespace insula::lang::cga::detail {
+
+namespace {
+
+shape::FaceSelector face_selector(std::string_view name) {
+  if (name == "front") return shape::FaceSelector::kFront;
+  if (name == "back") return shape::FaceSelector::kBack;
+  if (name == "left") return shape::FaceSelector::kLeft;
+  if (name == "right") return shape::FaceSelector::kRight;
+  if (name == "top") return shape::FaceSelector::kTop;
+  if (name == "bottom") return shape::FaceSelector::kBottom;
+  if (name == "side") return shape::FaceSelector::kSide;
+  return shape::FaceSelector::kAll;
+}
+
+std::string_view axis_name(Axis a) {
+  return a == Axis::kX ? "x" : a == Axis::kY ? "y" : "z";
+}
+
+}  // namespace
+
+template <typename Visit>
+std::string Engine::for_each_piece(State& st, Axis axis, std::span<const SizeSpec> sizes,
+                                   std::vector<shape::Piece>& pieces, Visit&& visit) {
+  const double total = shape::component(st.scope.size, axis);
+  if (!(total > 0)) return "the scope has size 0 along the split axis";
+  const Geometry& g = out_.geometry[st.geometry];
+  const bool flat =
+      g.kind == Geometry::Kind::kRect || (g.kind == Geometry::Kind::kMesh && g.outline);
+  const bool fast = g.kind != Geometry::Kind::kMesh || (flat ? g.rect_like : g.box_like);
+  if (!fast) {
+    std::vector<shape::ArgInput> a{{"axis", std::string(axis_name(axis))},
+                                   {"sizes", std::vector<SizeSpec>(sizes.begin(), sizes.end())}};
+    OpOutcome o = run_op(st, "split", a);
+    if (!o.error.empty()) return o.error;
+    const auto n = static_cast<std::uint32_t>(o.children.size());
+    for (std::uint32_t k = 0; k < n; ++k) {
+      State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, n);
+      visit(piece, o.pieces[k]);
+    }
+    return {};
+  }
+  shape::resolve_sizes_into(total, sizes, pieces);
+  const Geometry::Kind kind = g.kind;  // copies: interning below may grow out_.geometry
+  const FaceTag tag = g.tag;
+  const std::array<FaceTag, 6> tags = g.tags;
+  const auto n = static_cast<std::uint32_t>(pieces.size());
+  for (std::uint32_t k = 0; k < n; ++k) {
+    std::uint32_t geometry = 0;
+    if (flat) {
+      geometry = intern_rect(tag);
+    } else if (kind != Geometry::Kind::kNone) {
+      geometry = intern_box(shape::split_box_tags(tags, axis, pieces[k], total));
+    }
+    State piece = child_of(st, shape::split_piece_scope(st.scope, axis, pieces[k]), geometry, k, n);
+    visit(piece, pieces[k].entry);
+  }
+  return {};
+}
+
+double Engine::nominal(const CSize& s, State& st, double total) {
+  const SizeSpec v = size_of(s, st);
+  return v.mode == SizeMode::kRelative ? v.value * total : v.value;
+}
+
+double Engine::pattern_length(const std::vector<CBranch>& pattern, State& st, double total) {
+  double sum = 0;
+  for (const CBranch& b : pattern) {
+    sum += b.repeat ? pattern_length(b.pattern, st, total) : nominal(b.size, st, total);
+  }
+  return sum;
+}
+
+void Engine::append_pattern(const std::vector<CBranch>& pattern, State& st,
+                            std::vector<SizeSpec>& sizes, std::vector<const CBranch*>& targets) {
+  for (const CBranch& b : pattern) {
+    if (b.repeat) {
+      append_pattern(b.pattern, st, sizes, targets);  // a pattern inside a pattern: once
+      continue;
+    }
+    sizes.push_back(size_of(b.size, st));
+    targets.push_back(&b);
+  }
+}
+
+void Engine::keyed_sizes(const CItem& c, State& st, double total, std::vector<SizeSpec>& sizes,
+                         std::vector<const CBranch*>& targets) {
+  double fixed = 0;
+  std::size_t repeats = 0;
+  for (const CBranch& b : c.branches) {
+    if (b.repeat) {
+      ++repeats;
+    } else {
+      fixed += nominal(b.size, st, total);
+    }
+  }
+  const double share =
+      repeats > 0 ? std::max(0.0, total - fixed) / static_cast<double>(repeats) : 0;
+  for (const CBranch& b : c.branches) {
+    if (!b.repeat) {
+      sizes.push_back(size_of(b.size, st));
+      targets.push_back(&b);
+      continue;
+    }
+    const double length = pattern_length(b.pattern, st, total);
+    std::string error;
+    const std::size_t n = length > 0 ? shape::repeat_count(share, length, error) : 1;
+    if (n == 0) throw EvalError{b.range, "repeat pattern: " + error};
+    for (std::size_t k = 0; k < n; ++k) append_pattern(b.pattern, st, sizes, targets);
+  }
+}
+
+void Engine::split(const CItem& c, State& st) {
+  if (c.code == OpCode::kRepeat) {
+    repeat(c, st, 0);
+    return;
+  }
+  Lease scratch(*this);
+  const Axis axis = c.axes.front();
+  if (!c.sizes.empty()) {  // BS(axis, sizes...){ one successor per size }
+    for (std::size_t k = 0; k < c.sizes.size(); ++k) {
+      scratch->sizes.push_back(size_of(c.sizes[k], st));
+      scratch->targets.push_back(k < c.branches.size() ? &c.branches[k] : nullptr);
+    }
+  } else {
+    keyed_sizes(c, st, shape::component(st.scope.size, axis), scratch->sizes, scratch->targets);
+  }
+  const std::vector<const CBranch*>& targets = scratch->targets;
+  const std::span<const SizeSpec> sizes = scratch->sizes;
+  const std::string error =
+      for_each_piece(st, axis, sizes, scratch->pieces, [&](State& piece, std::uint32_t entry) {
+        if (targets[entry] == nullptr) return;
+        if (c.axes.size() > 1) {
+          split_cells(c, piece, sizes, 1, *targets[entry]);
+        } else {
+          run_branch(*targets[entry], piece);
+        }
+      });
+  if (!error.empty()) {
+    warn(c, error);
+    terminal(st, rule_->predecessor);
+  }
+}
+
+void Engine::split_cells(const CItem& c, State& st, std::span<const SizeSpec> sizes,
+                         std::size_t axis_index, const CBranch& target) {
+  Lease scratch(*this);
+  const std::string error = for_each_piece(st, c.axes[axis_index], sizes, scratch->pieces,
+                                           [&](State& cell, std::uint32_t) {
+                                             if (axis_index + 1 < c.axes.size()) {
+                                               split_cells(c, cell, sizes, axis_index + 1, target);
+                                             } else {
+                                               run_branch(target, cell);
+                                             }
+                                           });
+  if (!error.empty()) {
+    warn(c, error);
+    terminal(st, rule_->predecessor);
+  }
+}
+
+void Engine::repeat(const CItem& c, State& st, std::size_t axis_index) {
+  const Axis axis = c.axes[axis_index];
+  std::string error;
+  const double size = size_of(c.sizes.front(), st).value;
+  const std::size_t n = shape::repeat_count(shape::component(st.scope.size, axis), size, error);
+  if (n > 0) {
+    Lease scratch(*this);
+    scratch->sizes.assign(n, SizeSpec{1, SizeMode::kFloating});
+    error =
+        for_each_piece(st, axis, scratch->sizes, scratch->pieces, [&](State& piece, std::uint32_t) {
+          if (axis_index + 1 < c.axes.size()) {
+            repeat(c, piece, axis_index + 1);
+          } else if (!c.branches.empty()) {
+            run_branch(c.branches.front(), piece);
+          }
+        });
+  }
+  if (!error.empty()) {
+    warn(c, error);
+    terminal(st, rule_->predecessor);
+  }
+}
+
+const CBranch* Engine::comp_target(const CItem& c, std::uint32_t piece, std::size_t ordinal,
+                                   const Mesh* parent) {
+  if (!c.indices.empty()) {  // CS(type, i, j, ...){ A | B | ... }: component i -> A, ...
+    for (std::size_t j = 0; j < c.indices.size() && j < c.branches.size(); ++j) {
+      if (c.indices[j] == piece) return &c.branches[j];
+    }
+    return nullptr;
+  }
+  const bool faces = c.comp == CompKind::kFaces || c.comp == CompKind::kSideFaces;
+  const Vec3 n = faces && parent != nullptr ? kernel::face_normal(*parent, piece) : Vec3{};
+  const bool unkeyed = std::none_of(c.branches.begin(), c.branches.end(),
+                                    [](const CBranch& b) { return b.has_key; });
+  if (unkeyed && c.branches.size() > 1) {  // positional: the k-th component to the k-th branch
+    if (c.comp == CompKind::kSideFaces && !shape::face_matches(shape::FaceSelector::kSide, n)) {
+      return nullptr;
+    }
+    return ordinal < c.branches.size() ? &c.branches[ordinal] : nullptr;
+  }
+  for (const CBranch& b : c.branches) {
+    if (!b.has_key) {
+      if (c.comp == CompKind::kSideFaces && !shape::face_matches(shape::FaceSelector::kSide, n)) {
+        continue;
+      }
+      return &b;
+    }
+    if (b.index >= 0) {
+      if (b.index == piece) return &b;
+      continue;
+    }
+    if (faces && shape::face_matches(face_selector(b.selector), n)) return &b;
+  }
+  return nullptr;
+}
+
+void Engine::comp(const CItem& c, State& st) {
+  const char* type = c.comp == CompKind::kEdges      ? "edges"
+                     : c.comp == CompKind::kVertices ? "vertices"
+                                                     : "faces";
+  OpOutcome o = run_op(st, c.info->registry_op, {{"type", std::string(type)}});
+  if (!check(c, o)) {
+    terminal(st, rule_->predecessor);
+    return;
+  }
+  const auto total = static_cast<std::uint32_t>(o.children.size());
+  std::size_t ordinal = 0;
+  for (std::uint32_t k = 0; k < total; ++k) {
+    const bool faces = c.comp == CompKind::kFaces || c.comp == CompKind::kSideFaces;
+    if (c.comp == CompKind::kSideFaces &&
+        !shape::face_matches(shape::FaceSelector::kSide,
+                             kernel::face_normal(*o.parent_mesh, o.pieces[k]))) {
+      continue;
+    }
+    const CBranch* b =
+        comp_target(c, o.pieces[k], ordinal++, faces ? o.parent_mesh.get() : nullptr);
+    if (b == nullptr) continue;
+    State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, total);
+    run_branch(*b, piece);
+  }
+}
+
+void Engine::setback(const CItem& c, State& st) {
+  // The arguments once, on the shape the rule rewrites; each strip adds its edges.
+  std::vector<shape::ArgInput> args = registry_args(c, st);
+  args.push_back({"edges", std::string()});
+  const CBranch* remainder = nullptr;
+  for (const CBranch& b : c.branches) {
+    if (b.selector == "remainder") remainder = &b;
+  }
+  State rest = st;
+  bool cut = false;
+  for (const CBranch& b : c.branches) {
+    if (b.selector == "remainder") continue;
+    args.back().value = b.selector == "street" || b.selector.empty() ? "front" : b.selector;
+    OpOutcome o = run_op(rest, c.info->registry_op, args);
+    if (!check(c, o)) continue;
+    const auto total = static_cast<std::uint32_t>(o.children.size());
+    std::vector<State> rests;
+    for (std::uint32_t k = 0; k < total; ++k) {
+      State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, total);
+      if (o.pieces[k] == 0) {
+        run_branch(b, piece);
+      } else {
+        rests.push_back(piece);
+      }
+    }
+    cut = true;
+    if (rests.empty()) return;  // the strips took everything
+    rest = rests.front();
+    // A remainder in several parts: the extra parts go to the remainder successor as they are.
+    for (std::size_t k = 1; k < rests.size(); ++k) {
+      if (remainder != nullptr) run_branch(*remainder, rests[k]);
+    }
+  }
+  if (remainder == nullptr) return;
+  State piece = cut ? rest : child_of(st, rest.scope, rest.geometry, 0, 1);
+  run_branch(*remainder, piece);
+}
+
+}  // namespace insula::lang::cga::detail

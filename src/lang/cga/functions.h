@@ -1,0 +1,156 @@
+// CGA's expression functions and shape attributes (seed 004 §III plus CityEngine's names, issue
+// 4), with their arities: the checker (static checks) and the compiler both read this one table.
+// These are not shape operations; those come from the shape registry (operations.h).
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+namespace insula::lang::cga {
+
+inline constexpr std::uint8_t kUnbounded = 255;
+
+// Expression functions (lower-case, CityEngine's names).
+struct FunctionInfo {
+  std::string_view name;
+  std::uint8_t min_args;
+  std::uint8_t max_args;
+  std::string_view signature;  // letters as OperationInfo::signature (operations.h)
+  std::string_view doc;
+};
+
+inline constexpr FunctionInfo kFunctions[] = {
+    {"rand", 0, 2, "|n|nn", "uniform in [0,1), [0,a) or [a,b) from the shape's seeded generator"},
+    {"rint", 1, 1, "n", "round to the nearest integer"},
+    {"round", 1, 1, "n", "round half away from zero"},
+    {"floor", 1, 1, "n", "largest integer <= x"},
+    {"ceil", 1, 1, "n", "smallest integer >= x"},
+    {"abs", 1, 1, "n", "absolute value"},
+    {"min", 2, kUnbounded, "nn+", "smallest argument"},
+    {"max", 2, kUnbounded, "nn+", "largest argument"},
+    {"clamp", 3, 3, "nnn", "clamp(x, lo, hi)"},
+    {"sqrt", 1, 1, "n", "square root"},
+    {"pow", 2, 2, "nn", "x to the power y"},
+    {"exp", 1, 1, "n", "e to the power x"},
+    {"ln", 1, 1, "n", "natural logarithm"},
+    {"sin", 1, 1, "n", "sine (degrees, as CityEngine)"},
+    {"cos", 1, 1, "n", "cosine (degrees)"},
+    {"tan", 1, 1, "n", "tangent (degrees)"},
+    {"asin", 1, 1, "n", "arc sine (degrees)"},
+    {"acos", 1, 1, "n", "arc cosine (degrees)"},
+    {"atan", 1, 1, "n", "arc tangent (degrees)"},
+    {"atan2", 2, 2, "nn", "atan2(y, x) (degrees)"},
+    {"p", 1, 1, "n", "true with probability x (the shape's seeded generator)"},
+    {"float", 1, 1, "v", "number from a number, bool or numeric string"},
+    {"str", 1, 1, "v", "text of a value"},
+    {"bool", 1, 1, "v", "truth of a value"},
+    {"len", 1, 1, "s", "length of a string"},
+};
+
+// Shape attributes: `Shape.sx`, `Scope.sx` (the paper writes Shape., CityEngine scope.; both
+// spellings, either case of the object name). Shape.occ("all") is a call.
+struct AttributeInfo {
+  std::string_view name;  // the member after "Shape." / "Scope."
+  std::uint8_t args;      // 0 for a value, > 0 for a member call
+  std::string_view doc;
+};
+
+inline constexpr AttributeInfo kShapeAttributes[] = {
+    {"sx", 0, "scope size along x (meters)"},
+    {"sy", 0, "scope size along y"},
+    {"sz", 0, "scope size along z"},
+    {"tx", 0, "scope origin x in the lot's frame"},
+    {"ty", 0, "scope origin y in the lot's frame"},
+    {"tz", 0, "scope origin z in the lot's frame"},
+    {"area", 0, "area of a flat shape's outline (sx * sy for a box scope)"},
+    {"volume", 0, "sx * sy * sz"},
+    {"depth", 0, "derivation depth of the shape"},
+    {"index", 0, "index of the shape among its parent's children (split.index)"},
+    {"total", 0, "number of children of the parent operation (split.total)"},
+    {"occ", 1, "occlusion: \"none\", \"part\" or \"full\"; argument \"all\" (shapes of the lot)"},
+};
+
+// Object names whose members are shape attributes.
+inline constexpr std::string_view kShapeObjects[] = {"Shape", "shape", "Scope",
+                                                     "scope", "split", "comp"};
+
+constexpr const FunctionInfo* find_function(std::string_view name) {
+  for (const FunctionInfo& fn : kFunctions) {
+    if (fn.name == name) return &fn;
+  }
+  return nullptr;
+}
+
+constexpr bool is_shape_object(std::string_view object) {
+  for (std::string_view o : kShapeObjects) {
+    if (o == object) return true;
+  }
+  return false;
+}
+
+// `object.member` (object one of kShapeObjects), e.g. ("Scope", "sx").
+constexpr const AttributeInfo* find_shape_attribute(std::string_view object,
+                                                    std::string_view member) {
+  if (!is_shape_object(object)) return nullptr;
+  for (const AttributeInfo& a : kShapeAttributes) {
+    if (a.name == member) return &a;
+  }
+  return nullptr;
+}
+
+// Whether `count` arguments fit one alternative of `signature` (operations.h describes the
+// letters, '+', '*' and '|').
+constexpr bool signature_accepts(std::string_view signature, std::size_t count) {
+  std::size_t begin = 0;
+  while (true) {
+    std::size_t end = signature.find('|', begin);
+    if (end == std::string_view::npos) end = signature.size();
+    std::size_t fixed = 0;
+    bool unbounded = false;
+    for (std::size_t i = begin; i < end; ++i) {
+      const char c = signature[i];
+      if (c == '+') {
+        unbounded = true;
+      } else if (c == '*') {
+        unbounded = true;
+        --fixed;  // the letter before '*' is optional
+      } else {
+        ++fixed;
+      }
+    }
+    if (count == fixed || (unbounded && count >= fixed)) return true;
+    if (end == signature.size()) return false;
+    begin = end + 1;
+  }
+}
+
+// The expected letter of argument `index` given `count` arguments (first matching
+// alternative), or '\0' when no alternative accepts `count`.
+constexpr char signature_letter(std::string_view signature, std::size_t count, std::size_t index) {
+  std::size_t begin = 0;
+  while (true) {
+    std::size_t end = signature.find('|', begin);
+    if (end == std::string_view::npos) end = signature.size();
+    std::string_view alt = signature.substr(begin, end - begin);
+    if (signature_accepts(alt, count)) {
+      std::size_t pos = 0;
+      char last = '\0';
+      for (std::size_t i = 0; i < alt.size(); ++i) {
+        const char c = alt[i];
+        if (c == '+' || c == '*') continue;
+        last = c;
+        if (pos == index) return c;
+        ++pos;
+      }
+      return last;  // inside the repeated tail
+    }
+    if (end == signature.size()) return '\0';
+    begin = end + 1;
+  }
+}
+
+// The self-checks of these lookups live in tests/lang/cga/operations_test.cc, not in static_asserts
+// here: GCC with -fsanitize=undefined does not treat the loops over the tables as constant
+// expressions, so a static_assert in this header broke every sanitizer build (INSULA_SANITIZE).
+
+}  // namespace insula::lang::cga
