@@ -10,6 +10,7 @@ packages=(
   libpolyclipping-dev nlohmann-json3-dev libtinygltf-dev libcli11-dev libfmt-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev libstb-dev liblua5.4-dev libpugixml-dev
   libgoogle-perftools-dev libproj-dev proj-bin
+  clang libclang-rt-dev llvm  # libFuzzer (scripts/fuzz.sh), llvm-symbolizer for sanitizer stacks
   assimp-utils libxml2-utils
 )
 # Node.js may come from elsewhere (NodeSource ships npm inside nodejs); take Debian's only if absent.

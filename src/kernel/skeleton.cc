@@ -7,15 +7,17 @@
 #include "kernel/skeleton.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_with_holes_2.h>
-#include <CGAL/create_straight_skeleton_from_polygon_with_holes_2.h>
+#include <CGAL/Straight_skeleton_builder_2.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
+#include <vector>
 
 #include "kernel/skeleton_rectilinear.h"
 
@@ -23,8 +25,6 @@ namespace insula::kernel {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using CgalPolygon = CGAL::Polygon_2<K>;
-using CgalPolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
 using CgalSkeleton = CGAL::Straight_skeleton_2<K>;
 
 constexpr std::uint32_t kUnset = 0xffffffffU;
@@ -126,9 +126,10 @@ bool segments_valid(const std::vector<Segment>& segments) {
   return true;
 }
 
-CgalPolygon to_cgal(const Ring& ring) {
-  CgalPolygon out;
-  for (const Vec2& p : ring) out.push_back(K::Point_2(p.x, p.y));
+std::vector<K::Point_2> to_cgal(const Ring& ring) {
+  std::vector<K::Point_2> out;
+  out.reserve(ring.size());
+  for (const Vec2& p : ring) out.emplace_back(p.x, p.y);
   return out;
 }
 
@@ -453,10 +454,85 @@ bool times_valid(const Skeleton& s) {
   return true;
 }
 
+// CGAL 5.5's builder finishes by merging each pair of nodes a split event made at one point
+// (FinishUp -> MergeSplitNodes): it moves the pair's four incoming bisectors to the left node and
+// frees the right one. When several split events meet at one point at one time (an 8 x 8 grid of
+// unit holes one unit apart, transposed: hole corners colliding diagonally with their
+// neighbours'), another wavefront halfedge can still end at a freed node, and the next step
+// (MergeCoincidentNodes) reads it: a heap-use-after-free, so a crash or a wrong roof depending on
+// the heap. This visitor replays those merges on CGAL's finished wavefront just before CGAL does
+// them (on_cleanup_started) and throws, so that CGAL returns no skeleton, when a face would keep a
+// halfedge ending at a freed node.
+class SplitMergeGuard : public CGAL::Dummy_straight_skeleton_builder_2_visitor<CgalSkeleton> {
+ public:
+  using HalfedgeHandle = CgalSkeleton::Halfedge_const_handle;
+  using VertexHandle = CgalSkeleton::Vertex_const_handle;
+  struct Unsafe : std::runtime_error {
+    Unsafe() : std::runtime_error("split nodes would leave a dangling halfedge") {}
+  };
+
+  // The callbacks are const in CGAL's visitor concept; the guard's records are not.
+  void on_contour_edge_entered(const HalfedgeHandle& border) const { borders_.push_back(border); }
+  void on_split_event_processed(const VertexHandle&, const VertexHandle& left,
+                                const VertexHandle& right) const {
+    pairs_.emplace_back(left, right);
+  }
+  void on_pseudo_split_event_processed(const VertexHandle&, const VertexHandle&,
+                                       const VertexHandle& left, const VertexHandle& right) const {
+    pairs_.emplace_back(left, right);
+  }
+  void on_cleanup_started() const {
+    if (!merges_safe()) throw Unsafe();
+  }
+
+ private:
+  using Vertex = CgalSkeleton::Vertex;
+  using Halfedge = CgalSkeleton::Halfedge;
+
+  bool merges_safe() const {
+    std::unordered_map<const Halfedge*, const Vertex*> moved;
+    std::unordered_set<const Vertex*> freed;
+    auto end_of = [&moved](HalfedgeHandle h) {
+      const auto it = moved.find(&*h);
+      return it == moved.end() ? &*h->vertex() : it->second;
+    };
+    for (const auto& [left, right] : pairs_) {
+      if (freed.count(&*left) != 0 || freed.count(&*right) != 0) return false;
+      const HalfedgeHandle l1 = left->primary_bisector()->opposite();
+      const HalfedgeHandle r1 = right->primary_bisector()->opposite();
+      for (const HalfedgeHandle h : {l1, r1, l1->next()->opposite(), r1->next()->opposite()}) {
+        if (end_of(h) == &*right) moved[&*h] = &*left;
+      }
+      freed.insert(&*right);
+    }
+    if (freed.empty()) return true;
+    // Every face is a loop from its contour edge; a loop that does not close is no skeleton either.
+    const std::size_t limit = 64 * (borders_.size() + pairs_.size()) + 64;
+    for (const HalfedgeHandle& border : borders_) {
+      HalfedgeHandle h = border;
+      std::size_t steps = 0;
+      do {
+        if (freed.count(end_of(h)) != 0 || ++steps > limit) return false;
+        h = h->next();
+      } while (h != border);
+    }
+    return true;
+  }
+
+  mutable std::vector<HalfedgeHandle> borders_;
+  mutable std::vector<std::pair<VertexHandle, VertexHandle>> pairs_;
+};
+
 std::optional<Skeleton> cgal_skeleton(const Polygon& polygon) {
-  CgalPolygonWithHoles input(to_cgal(polygon.outer));
-  for (const Ring& hole : polygon.holes) input.add_hole(to_cgal(hole));
-  const auto ss = CGAL::create_interior_straight_skeleton_2(input, K());
+  using Builder = CGAL::Straight_skeleton_builder_2<CGAL::Straight_skeleton_builder_traits_2<K>,
+                                                    CgalSkeleton, SplitMergeGuard>;
+  const SplitMergeGuard guard;  // the builder keeps a reference
+  Builder builder(boost::none, Builder::Traits(), guard);
+  for (std::size_t r = 0; r <= polygon.holes.size(); ++r) {
+    const std::vector<K::Point_2> ring = to_cgal(r == 0 ? polygon.outer : polygon.holes[r - 1]);
+    builder.enter_contour(ring.begin(), ring.end());
+  }
+  const auto ss = builder.construct_skeleton();
   if (!ss) return std::nullopt;
   Skeleton out;
   add_contour(polygon, out);

@@ -197,6 +197,7 @@ int lua_component(lua_State* L) {
     }
     id = create_root(L, 1);
   }
+  check_component_limit(L, "component");
   apply_spec(L, spec, std::span<const ShapeId>(&id, 1), "component",
              {"size", "position", "polygon", "holes", "elevation", "boundary"});
   push_component(L, id);
@@ -221,6 +222,7 @@ int lua_component_from_file(lua_State* L) {
   if (lua_istable(L, 2)) position = field_vec3(L, 2, "position", {}, op);
   const ShapeId id = p.tree.add_root(root_frame(position, b.size()),
                                      std::make_shared<kernel::Mesh>(std::move(mesh)));
+  check_component_limit(L, op);
   if (lua_isnoneornil(L, 2)) {
     std::string label = name;
     if (const std::size_t slash = label.find_last_of('/'); slash != std::string::npos) {

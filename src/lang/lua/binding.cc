@@ -37,6 +37,11 @@ void check_op(lua_State* L, std::string_view operation, const shape::OpResult& r
   Program& p = program(L);
   ++p.operations;
   if (!result.ok()) op_error(operation, result.error);
+  check_component_limit(L, operation);
+}
+
+void check_component_limit(lua_State* L, std::string_view operation) {
+  Program& p = program(L);
   if (p.tree.size() > p.max_components) {
     p.stopped = true;  // the located message is kept by call_body
     op_error(operation, "component limit of " + std::to_string(p.max_components) + " reached");

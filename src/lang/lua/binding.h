@@ -74,6 +74,9 @@ class Error : public std::runtime_error {
 // Throws op_error(operation, result.error) when the operation failed; counts the operation and
 // stops the program when the tree passed Limits::components.
 void check_op(lua_State* L, std::string_view operation, const shape::OpResult& result);
+// Stops the program (as a limit does) when the tree holds more components than the limit: every
+// binding that adds shapes without an operation (component, componentFromFile) calls it.
+void check_component_limit(lua_State* L, std::string_view operation);
 
 using Body = int (*)(lua_State*);
 // Runs `body`; on a thrown Error (or std::exception, reported as "internal error: ...") pushes the

@@ -1,0 +1,1 @@
+local bed = componentFromFile("no_such_asset")

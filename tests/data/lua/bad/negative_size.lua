@@ -1,0 +1,1 @@
+component { label = "box", size = { 4, -1, 3 } }

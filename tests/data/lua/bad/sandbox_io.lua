@@ -1,0 +1,2 @@
+-- The sandbox has no io library.
+local f = io.open("/etc/passwd")

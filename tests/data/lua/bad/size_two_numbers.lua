@@ -1,0 +1,1 @@
+component { label = "box", size = { 1, 1 } }

@@ -1,0 +1,4 @@
+component { label = "floor", size = { 10, 2.5, 10 } }
+for c in query("floor") do
+  split(c, "W", { label = "a", rel = 1 })
+end

@@ -1,0 +1,1 @@
+split("floor", "X", { label = "a", rel = 1 })

@@ -1,0 +1,3 @@
+-- A function that is never closed.
+function roof(c)
+  return c
