@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -63,6 +64,9 @@ bool face_matches(FaceSelector selector, kernel::Vec3 n);
 // cross normal; the parent's x for faces facing up or down), y = z cross x; its outline is the face
 // loop. pieces[i] = face index.
 OpResult comp_faces(ShapeTree& tree, ShapeId id, FaceSelector selector);
+// Face `face` of shape `id` as one such flat child (comp_faces' rule), with no bookkeeping of an
+// operation result; nullopt for a degenerate face. Lua's component-from-a-face uses it too.
+std::optional<ShapeId> add_face_child(ShapeTree& tree, ShapeId id, std::size_t face);
 // One degenerate child per distinct edge: scope x along the edge, z the mean normal of the faces
 // meeting there, size (length, 0, 0), no geometry.
 OpResult comp_edges(ShapeTree& tree, ShapeId id);

@@ -55,20 +55,24 @@ bool face_child(const Scope& parent, const Mesh& mesh, std::size_t f, Refit& out
 
 }  // namespace
 
+std::optional<ShapeId> add_face_child(ShapeTree& tree, ShapeId id, std::size_t face) {
+  const Shape& s = tree[id];
+  Refit child;
+  auto outline = std::make_shared<kernel::Polygon>();
+  if (!s.mesh || !face_child(s.scope, *s.mesh, face, child, *outline)) return std::nullopt;
+  auto child_mesh = std::make_shared<Mesh>(std::move(child.mesh));
+  return tree.add_child(id, child.scope, std::move(child_mesh), std::move(outline));
+}
+
 OpResult comp_faces(ShapeTree& tree, ShapeId id, FaceSelector selector) {
   const Shape& s = tree[id];
   if (!s.mesh) return OpResult::failure("the shape has no faces");
   const std::shared_ptr<const Mesh> mesh = s.mesh;
-  const Scope scope = s.scope;
   OpResult result;
   for (std::size_t f = 0; f < mesh->face_count(); ++f) {
     if (!face_matches(selector, kernel::face_normal(*mesh, f))) continue;
-    Refit child;
-    auto outline = std::make_shared<kernel::Polygon>();
-    if (!face_child(scope, *mesh, f, child, *outline)) continue;  // degenerate face
-    auto child_mesh = std::make_shared<Mesh>(std::move(child.mesh));
-    result.add(tree.add_child(id, child.scope, std::move(child_mesh), std::move(outline)),
-               static_cast<std::uint32_t>(f));
+    const std::optional<ShapeId> child = add_face_child(tree, id, f);
+    if (child) result.add(*child, static_cast<std::uint32_t>(f));  // else a degenerate face
   }
   return finish(tree, id, std::move(result));
 }

@@ -136,26 +136,10 @@ ShapeId create_from_face(lua_State* L, ShapeId parent, FaceRef face) {
   const char* op = "component";
   Program& p = program(L);
   if (face.id != parent) arg_error(op, 2, "the boundary face belongs to another component");
-  const shape::Shape& s = p.tree[parent];
-  const kernel::Mesh& mesh = *s.mesh;
-  shape::Scope local;
-  if (!shape::face_scope(mesh, face.face, {0, 1, 0}, {1, 0, 0}, local)) {
-    op_error(op, "face " + std::to_string(face.face) + " is degenerate");
-  }
-  kernel::Mesh loop_mesh;
-  std::vector<Vec3> loop;
-  for (std::uint32_t v : mesh.face(face.face)) loop.push_back(mesh.position(v));
-  loop_mesh.add_polygon(loop, mesh.tag(face.face));
-  shape::Refit fit = shape::refit(s.scope, loop_mesh, local.x, local.y, local.z);
-  fit.scope.size.z = 0;
-  auto outline = std::make_shared<kernel::Polygon>();
-  for (Vec3& q : fit.mesh.positions()) {
-    q.z = 0;
-    outline->outer.push_back({q.x, q.y});
-  }
+  const std::optional<ShapeId> child = shape::add_face_child(p.tree, parent, face.face);
+  if (!child) op_error(op, "face " + std::to_string(face.face) + " is degenerate");
   ++p.operations;
-  return p.tree.add_child(parent, fit.scope, std::make_shared<kernel::Mesh>(std::move(fit.mesh)),
-                          std::move(outline));
+  return *child;
 }
 
 // component(parent, {size=, position=}): a box child in the parent's scope space (§3.4.3
