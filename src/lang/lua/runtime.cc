@@ -78,14 +78,19 @@ void* allocate(void* ud, void* ptr, std::size_t osize, std::size_t nsize) {
 }
 
 // Stops the program for good: the message is located at the running Lua line and kept, so a
-// pcall that catches it re-raises it (safe_pcall).
-[[noreturn]] void stop(lua_State* L, const std::string& what, int line) {
+// pcall that catches it re-raises it (safe_pcall). Recording and raising are two calls because
+// lua_error unwinds with longjmp: a C++ temporary alive at the raise (the caller's message) would
+// never be destroyed, so the caller's message must be gone before raise_stop runs.
+void record_stop(lua_State* L, const std::string& what, int line) {
   Program& p = program(L);
-  Runtime::Guard& g = guard(L);
   if (!p.stopped) {
     p.stopped = true;
-    p.stop_message = g.short_src + ":" + std::to_string(line) + ": " + what;
+    p.stop_message = guard(L).short_src + ":" + std::to_string(line) + ": " + what;
   }
+}
+
+[[noreturn]] void raise_stop(lua_State* L) {
+  const Program& p = program(L);
   lua_pushlstring(L, p.stop_message.data(), p.stop_message.size());
   lua_error(L);
   std::abort();  // lua_error does not return
@@ -100,13 +105,15 @@ void hook(lua_State* L, lua_Debug* ar) {
   switch (ar->event) {
     case LUA_HOOKCOUNT:
       if (++g.count_events * kHookInterval > g.limits.instructions) {
-        stop(L, limit_text("instruction", g.limits.instructions), lua_line(L, 0));
+        record_stop(L, limit_text("instruction", g.limits.instructions), lua_line(L, 0));
+        raise_stop(L);
       }
       break;
     case LUA_HOOKCALL:
       if (++g.depth > g.limits.call_depth) {
-        stop(L, limit_text("call depth", static_cast<std::uint64_t>(g.limits.call_depth)),
-             lua_line(L, 1));
+        record_stop(L, limit_text("call depth", static_cast<std::uint64_t>(g.limits.call_depth)),
+                    lua_line(L, 1));
+        raise_stop(L);
       }
       break;
     case LUA_HOOKRET:
