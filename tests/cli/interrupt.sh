@@ -47,6 +47,9 @@ wait_for() {  # file, pattern: up to 60 s until the pattern shows up in the file
   done
   return 1
 }
+said_interrupted() {  # err file: 130 came from the rollback, not from a kill by the signal
+  grep -q "interrupted (SIGINT); nothing written, earlier files kept" "$1"
+}
 mass_in() {  # dir: the mass run in the background, stderr to dir.err
   "$insula" mass "$tmp/city.geojson" --roof gable -o "$1/out.glb" -o "$1/out.obj" \
     -o "$1/out.city.json" --report "$1/report.json" >/dev/null 2>"$1.err" &
@@ -100,6 +103,7 @@ for percent in 10 30 60 80 90 95 98; do
   if [ $code -eq 130 ]; then
     interrupted_runs=$((interrupted_runs + 1))
     kept_old "$dir" || fail "mass interrupted at $percent%: earlier files not kept"
+    said_interrupted "$dir.err" || fail "mass signalled at $percent%: killed, not interrupted"
   elif [ $code -eq 0 ]; then
     all_new "$dir" || fail "mass finished at $percent%: outputs not all new"
   else
@@ -108,6 +112,31 @@ for percent in 10 30 60 80 90 95 98; do
   fi
 done
 [ $interrupted_runs -gt 0 ] || fail "no run at a spread of delays was interrupted"
+
+# The end of a run (commit, the return from main, freeing the scene) under a stream of signals: a
+# signal there once killed the process after the commit (new files, exit 130 from the kill). A
+# small city, signalled without pause from a random start until the process is gone (a
+# signal before main installs the handlers kills it, which is fine: nothing was written yet).
+head -c 20000 "$tmp/city.geojson" | sed 's/,{"type": "Feature"[^]]*$//' >"$tmp/small.geojson"
+echo ']}' >>"$tmp/small.geojson"
+for run in $(seq 20); do
+  dir=$tmp/mass-end-$run
+  old_files "$dir"
+  "$insula" mass "$tmp/small.geojson" --roof gable -o "$dir/out.glb" -o "$dir/out.obj" \
+    -o "$dir/out.city.json" --report "$dir/report.json" >/dev/null 2>"$dir.err" &
+  pid=$!
+  sleep "0.0$((RANDOM % 10))"
+  while kill -INT $pid 2>/dev/null; do :; done
+  wait $pid
+  code=$?
+  if [ $code -eq 130 ]; then
+    kept_old "$dir" || fail "signals at the end, run $run: exit 130 and earlier files not kept"
+  elif [ $code -eq 0 ]; then
+    all_new "$dir" || fail "signals at the end, run $run: exit 0, outputs not all new"
+  else
+    fail "signals at the end, run $run: exit $code"
+  fi
+done
 
 # build --lot (the .bldg village path, a building per lot) and random, after the first progress line.
 awk 'BEGIN {

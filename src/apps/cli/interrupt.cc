@@ -13,37 +13,29 @@ namespace {
 std::atomic<int> received_signal{0};
 static_assert(std::atomic<int>::is_always_lock_free);
 
-struct sigaction previous_int;
-struct sigaction previous_term;
-
 extern "C" void on_signal(int signal) {
   received_signal.store(signal);
 }
 
 // A signal the caller ignores stays ignored (a background job of a script ignores SIGINT, so that
 // the terminal's Ctrl-C stops the script only).
-void install(int signal, const struct sigaction& action, struct sigaction& previous) {
+void install(int signal, const struct sigaction& action) {
+  struct sigaction previous {};
   sigaction(signal, nullptr, &previous);
   if (previous.sa_handler != SIG_IGN) sigaction(signal, &action, nullptr);
 }
 
 }  // namespace
 
-InterruptGuard::InterruptGuard() {
-  received_signal.store(0);
+void install_interrupt_handlers() {
   struct sigaction action {};
   action.sa_handler = on_signal;
   sigemptyset(&action.sa_mask);
   // Restarted system calls: a write or rename interrupted by the signal completes, and the
   // transaction decides what to keep.
   action.sa_flags = SA_RESTART;
-  install(SIGINT, action, previous_int);
-  install(SIGTERM, action, previous_term);
-}
-
-InterruptGuard::~InterruptGuard() {
-  sigaction(SIGINT, &previous_int, nullptr);
-  sigaction(SIGTERM, &previous_term, nullptr);
+  install(SIGINT, action);
+  install(SIGTERM, action);
 }
 
 bool interrupted() {

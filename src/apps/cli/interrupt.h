@@ -2,23 +2,20 @@
 // only records the signal (the one async-signal-safe thing to do); the workers stop taking new work
 // when they see it, and the main thread rolls the output transaction back, so an interruption at
 // any moment leaves either all the old files or all the new ones, never a mix, a backup or a
-// temporary. While a guard lives, further signals cannot kill the process half-way through its
-// rollback; the exit code is then 128 + the signal (130 for SIGINT, 143 for SIGTERM).
+// temporary. The handlers stay until the process exits: a signal that arrives after the commit
+// point, while the process returns from main and frees its scene, must not kill it either (the
+// new files stay and the exit code is 0), and one that arrives before cannot kill it half-way
+// through its rollback; the exit code is then 128 + the signal (130 for SIGINT, 143 for SIGTERM).
 #pragma once
 
 #include <string>
 
 namespace insula::cli {
 
-class InterruptGuard {
- public:
-  InterruptGuard();   // installs the handlers
-  ~InterruptGuard();  // restores the previous ones
-  InterruptGuard(const InterruptGuard&) = delete;
-  InterruptGuard& operator=(const InterruptGuard&) = delete;
-};
+// Installs the handlers for the rest of the process (a signal the caller ignores stays ignored).
+void install_interrupt_handlers();
 
-// True once SIGINT or SIGTERM arrived under a guard; safe from any thread.
+// True once SIGINT or SIGTERM arrived after the handlers were installed; safe from any thread.
 bool interrupted();
 // 128 + the signal number, or 0 when no signal arrived.
 int interrupt_exit_code();

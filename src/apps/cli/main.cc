@@ -60,11 +60,12 @@ bool unknown_verb(const CLI::App& app, const std::string& word) {
   return true;
 }
 
-// Runs the chosen verb; the verbs that write files do so under an interrupt guard, and a run that
-// was interrupted exits with 128 + the signal whatever the verb returned.
+// Runs the chosen verb; the verbs that write files do so with the interrupt handlers installed
+// (for good: see interrupt.h), and a run that was interrupted before its commit point exits with
+// 128 + the signal whatever the verb returned.
 template <typename Run>
 int run_writing(const Run& run, bool quiet) {
-  const insula::cli::InterruptGuard guard;
+  insula::cli::install_interrupt_handlers();
   const int code = run();
   insula::cli::finish_warnings(quiet);
   if (insula::cli::interrupted() && code != insula::cli::kExitDone) {
