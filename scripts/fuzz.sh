@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# The fuzz lane (docs/testing.md): builds every libFuzzer target with clang into build-fuzz/ and
-# runs each from its corpus (fuzz/corpus/<name> plus the examples and test catalogs) for FUZZ_SECONDS seconds
-# (60 by default). New inputs go to build-fuzz/corpus/<name>, never into the repository; a crash,
-# a leak, a timeout or a contract violation leaves its input in build-fuzz/crashes/ and fails the
-# run. `scripts/fuzz.sh lua obj` runs only those targets.
+# The fuzz lane (docs/testing.md): builds the libFuzzer targets in the sanitizer lane's build
+# (build-asan/: clang, ASan, UBSan, coverage; scripts/test_asan.sh configures it the same way) and
+# runs each from its corpus (fuzz/corpus/<name> plus the examples and test catalogs) for
+# FUZZ_SECONDS seconds (60 by default). New inputs go to build-asan/fuzz-corpus/<name>, never into
+# the repository; a crash, a leak, a timeout or a contract violation leaves its input in
+# build-asan/crashes/ and fails the run. `scripts/fuzz.sh lua obj` runs only those targets.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${FUZZ_SECONDS:-60}
@@ -11,12 +12,11 @@ all=(geojson cga bldg lua obj xml)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all[@]}")
 
-# -O1: the instrumented layers include CGAL's translation units, and the fuzzers gain little
-# from -O2 while the build would take longer (docs/testing.md, "Lanes").
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DINSULA_FUZZ=ON -DINSULA_TESTS=OFF \
-  -DINSULA_BENCH=OFF -DINSULA_TCMALLOC=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" ${FUZZ_CMAKE_ARGS:-} >/dev/null
-ninja -C build-fuzz "${targets[@]/%/_fuzz}"
+source scripts/lib/asan.sh
+build=$asan_build
+configure_asan ${FUZZ_CMAKE_ARGS:-}
+ninja -C $build "${targets[@]/%/_fuzz}"
+export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1"
 
 seeds() {  # the read-only seed folders of target $1
   case $1 in
@@ -29,21 +29,21 @@ seeds() {  # the read-only seed folders of target $1
   esac
 }
 
-mkdir -p build-fuzz/crashes
+mkdir -p $build/crashes
 status=0
 for t in "${targets[@]}"; do
-  work=build-fuzz/corpus/$t
+  work=$build/fuzz-corpus/$t
   mkdir -p "$work"
   dict=()
   [ -f "fuzz/$t.dict" ] && dict=(-dict="fuzz/$t.dict")
   # shellcheck disable=SC2046
-  if build-fuzz/fuzz/${t}_fuzz -max_total_time="$seconds" -timeout=20 -rss_limit_mb=3072 \
-    -max_len=16384 -print_final_stats=1 -artifact_prefix="build-fuzz/crashes/$t-" "${dict[@]}" \
-    "$work" $(seeds "$t") >"build-fuzz/$t.log" 2>&1; then
-    echo "fuzz $t: $(grep -E '^stat::number_of_executed_units' "build-fuzz/$t.log" | awk '{print $2}') runs in ${seconds} s, $(grep -oE 'cov: [0-9]+' "build-fuzz/$t.log" | tail -1), clean"
+  if $build/fuzz/${t}_fuzz -max_total_time="$seconds" -timeout=20 -rss_limit_mb=3072 \
+    -max_len=16384 -print_final_stats=1 -artifact_prefix="$build/crashes/$t-" "${dict[@]}" \
+    "$work" $(seeds "$t") >"$build/$t.log" 2>&1; then
+    echo "fuzz $t: $(grep -E '^stat::number_of_executed_units' "$build/$t.log" | awk '{print $2}') runs in ${seconds} s, $(grep -oE 'cov: [0-9]+' "$build/$t.log" | tail -1), clean"
   else
-    echo "fuzz $t: FAILED (build-fuzz/$t.log, input in build-fuzz/crashes/)" >&2
-    grep -E 'ERROR|_fuzz:|SUMMARY|Test unit written' "build-fuzz/$t.log" | head -20 >&2
+    echo "fuzz $t: FAILED ($build/$t.log, input in $build/crashes/)" >&2
+    grep -E 'ERROR|_fuzz:|SUMMARY|Test unit written' "$build/$t.log" | head -20 >&2
     status=1
   fi
 done

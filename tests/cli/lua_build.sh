@@ -46,6 +46,17 @@ expect_exit 0 "row_house 6 houses" "$insula" build "$examples/row_house.lua" --s
   --report "$tmp/row6.json" -q
 [ "$(field "$tmp/row6.json" components)" -gt 486 ] || fail "--set houses=6 did not add houses"
 
+# The report's instruction count, rounded up to the next 100 (it was 0 below 1000, issue 12).
+lua_instructions() {  # report: the number after "instructions":
+  sed -n 's/^ *"instructions": \([0-9]*\).*/\1/p' "$1"
+}
+echo 'local x = 1' >"$tmp/tiny.lua"
+expect_exit 0 "tiny program" "$insula" build "$tmp/tiny.lua" -o "$tmp/tiny.obj" --report "$tmp/tiny.json" -q
+[ "$(lua_instructions "$tmp/tiny.json")" = 100 ] || fail "tiny program: instructions $(lua_instructions "$tmp/tiny.json"), expected 100"
+echo 'for i = 1, 10000 do end' >"$tmp/loop10k.lua"  # FORPREP, 10,000 FORLOOPs and a few more
+expect_exit 0 "10k loop" "$insula" build "$tmp/loop10k.lua" -o "$tmp/loop10k.obj" --report "$tmp/loop10k.json" -q
+[ "$(lua_instructions "$tmp/loop10k.json")" = 10100 ] || fail "10k loop: instructions $(lua_instructions "$tmp/loop10k.json"), expected 10100"
+
 # check: compiles only.
 expect_exit 0 "check fig3" "$insula" check "$examples/fig3_floor.lua"
 printf 'local x = \n' >"$tmp/bad.lua"

@@ -48,7 +48,7 @@ struct RunOptions {
 
 // Statistics of a finished run.
 struct RunStats {
-  std::uint64_t instructions = 0;  // rounded up to the hook interval
+  std::uint64_t instructions = 0;  // Lua VM instructions, rounded up to the next 100
   std::size_t peak_memory = 0;     // Lua heap bytes
   std::uint64_t operations = 0;    // operations run by bindings
 };
