@@ -9,7 +9,9 @@ namespace {
 constexpr float kShadowStrength = 0.72F;  // ground in shadow keeps this fraction of its light
 constexpr float kShadowAlpha = 0.28F;     // opacity of a shadow on a transparent background
 constexpr int kDensityRadius = 3;  // output pixels around a sample, at least, for the density
-constexpr float kCrowded = 0.45F;  // ink density above which lines fade
+// Ink density above which lines off the silhouette band fade: parallel lines 1.5 pixels wide reach
+// it about 2.5 pixels apart; two lines crossing fill about 0.4 of the window.
+constexpr float kCrowded = 0.6F;
 
 // Screen coordinates in 24.8 fixed point. Edge functions are then exact integers, so two triangles
 // sharing an edge agree on every pixel centre and inclusive tests leave no cracks between them.
@@ -72,8 +74,9 @@ Framebuffer::Framebuffer(int width, int height)
       ink_(depth_.size(), Ink::kNone),
       shadow_(depth_.size(), 0) {}
 
-std::uint32_t Framebuffer::add_shade(Rgb colour) {
+std::uint32_t Framebuffer::add_shade(Rgb colour, std::uint32_t owner) {
   shades_.push_back(colour);
+  owners_.push_back(owner);
   return static_cast<std::uint32_t>(shades_.size());
 }
 
@@ -170,22 +173,60 @@ void Framebuffer::draw_stroke(const Stroke& stroke, float radius, float bias) {
   }
 }
 
-// Ink strength per sample: 1 where lines are apart, fading where they crowd (docs/renderer.md,
-// "Outlines"). The density is the inked fraction of the square window `radius` output pixels
-// around the sample (a summed-area table); above kCrowded the strength falls as
-// (kCrowded / density)^2, so lines packed closer than the pixels (a 200-storey tower's floor
-// lines) become a light hatch instead of a black bar.
-std::vector<float> Framebuffer::ink_strength(int factor, int radius) const {
+std::vector<std::uint8_t> Framebuffer::silhouette_band(int reach) const {
+  // First the samples beside a sample of another owner, then a square dilation by `reach`: a row
+  // pass into `rows`, a column pass back into `band`.
+  std::vector<std::uint8_t> band(ink_.size(), 0);
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      const std::uint32_t here = owner(index(x, y));
+      if (x + 1 < width_ && owner(index(x + 1, y)) != here) {
+        band[index(x, y)] = band[index(x + 1, y)] = 1;
+      }
+      if (y + 1 < height_ && owner(index(x, y + 1)) != here) {
+        band[index(x, y)] = band[index(x, y + 1)] = 1;
+      }
+    }
+  }
+  std::vector<std::uint8_t> rows(ink_.size(), 0);
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      if (band[index(x, y)] == 0) continue;
+      const int x0 = std::max(0, x - reach), x1 = std::min(width_ - 1, x + reach);
+      std::fill(rows.begin() + static_cast<std::ptrdiff_t>(index(x0, y)),
+                rows.begin() + static_cast<std::ptrdiff_t>(index(x1, y)) + 1, 1);
+    }
+  }
+  std::fill(band.begin(), band.end(), 0);
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      if (rows[index(x, y)] == 0) continue;
+      for (int yy = std::max(0, y - reach); yy <= std::min(height_ - 1, y + reach); ++yy) {
+        band[index(x, yy)] = 1;
+      }
+    }
+  }
+  return band;
+}
+
+// Ink strength per sample (docs/renderer.md, "Outlines"). Ink on the silhouette band is drawn at
+// full strength, so every outlined building shows its outline whatever lies inside it. Other
+// ink fades where it crowds: its density is the fraction of the square window `radius` output
+// pixels around the sample inked off the band (a summed-area table); above kCrowded the strength
+// falls as (kCrowded / density)^2, so lines packed closer than the pixels (a 200-storey tower's
+// floor lines) become a light hatch instead of a black bar.
+std::vector<float> Framebuffer::ink_strength(int factor, int radius, int reach) const {
   std::vector<float> strength;
   if (std::none_of(ink_.begin(), ink_.end(), [](Ink ink) { return ink != Ink::kNone; })) {
     return strength;
   }
+  const std::vector<std::uint8_t> band = silhouette_band(reach);
   const std::size_t w = static_cast<std::size_t>(width_) + 1;
   std::vector<std::uint32_t> sum(w * (static_cast<std::size_t>(height_) + 1), 0);
   for (int y = 0; y < height_; ++y) {
     std::uint32_t row = 0;
     for (int x = 0; x < width_; ++x) {
-      row += ink_[index(x, y)] != Ink::kNone ? 1U : 0U;
+      row += ink_[index(x, y)] != Ink::kNone && band[index(x, y)] == 0 ? 1U : 0U;
       sum[(static_cast<std::size_t>(y) + 1) * w + static_cast<std::size_t>(x) + 1] =
           sum[static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x) + 1] + row;
     }
@@ -195,7 +236,7 @@ std::vector<float> Framebuffer::ink_strength(int factor, int radius) const {
   for (int y = 0; y < height_; ++y) {
     const int y0 = std::max(0, y - r), y1 = std::min(height_, y + r + 1);
     for (int x = 0; x < width_; ++x) {
-      if (ink_[index(x, y)] == Ink::kNone) continue;
+      if (ink_[index(x, y)] == Ink::kNone || band[index(x, y)] != 0) continue;
       const int x0 = std::max(0, x - r), x1 = std::min(width_, x + r + 1);
       const auto at = [&](int xx, int yy) {
         return sum[static_cast<std::size_t>(yy) * w + static_cast<std::size_t>(xx)];
@@ -213,7 +254,10 @@ Image Framebuffer::resolve(int factor, const RenderOptions& options) const {
   // The window grows with the line width, so an isolated line fills about a fifth of it.
   const int radius =
       std::max(kDensityRadius, static_cast<int>(std::ceil(2 * options.outline_width)));
-  const std::vector<float> strength = ink_strength(factor, radius);
+  // The band reaches as far into a building as its silhouette strokes: their half width, plus
+  // half a sample from the edge to the centre of the sample beside it.
+  const int reach = static_cast<int>(std::ceil(options.outline_width * factor / 2.0 + 0.5));
+  const std::vector<float> strength = ink_strength(factor, radius, reach);
   Image image;
   image.width = width_ / factor;
   image.height = height_ / factor;

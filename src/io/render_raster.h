@@ -38,8 +38,10 @@ class Framebuffer {
   int width() const { return width_; }
   int height() const { return height_; }
 
-  // Adds a flat colour and returns its id for fill_triangle.
-  std::uint32_t add_shade(Rgb colour);
+  // Adds a flat colour of the building `owner` (1-based; 0 is the background) and returns its id
+  // for fill_triangle. Where owners meet on screen lies a silhouette (docs/renderer.md,
+  // "Outlines").
+  std::uint32_t add_shade(Rgb colour, std::uint32_t owner);
   // Z-buffered fill: a pixel whose centre lies inside or on the triangle and is nearer than the
   // stored depth takes `shade` (edges are inclusive so shared edges leave no gaps).
   void fill_triangle(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c,
@@ -63,9 +65,12 @@ class Framebuffer {
   template <typename Visit>
   void scan(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c, Visit&& visit) const;
   bool visible(float x, float y, float depth) const;
-  // Per sample, the opacity its ink is drawn with, from the ink density within `radius` output
-  // pixels (empty when nothing is inked).
-  std::vector<float> ink_strength(int factor, int radius) const;
+  std::uint32_t owner(std::size_t i) const { return shade_[i] == 0 ? 0 : owners_[shade_[i] - 1]; }
+  // Per sample, 1 within `reach` samples of a place where two owners meet (a silhouette).
+  std::vector<std::uint8_t> silhouette_band(int reach) const;
+  // Per sample, the opacity its ink is drawn with (empty when nothing is inked): 1 on the
+  // silhouette band, else fading with the density of the other ink within `radius` output pixels.
+  std::vector<float> ink_strength(int factor, int radius, int reach) const;
   void stamp(float x, float y, float radius, Ink ink);
 
   int width_;
@@ -75,6 +80,7 @@ class Framebuffer {
   std::vector<Ink> ink_;
   std::vector<std::uint8_t> shadow_;
   std::vector<Rgb> shades_;
+  std::vector<std::uint32_t> owners_;  // per shade
 };
 
 }  // namespace insula::io::raster

@@ -64,7 +64,8 @@ struct Context {
   Vec3 fill;
   double ground = 0;  // Z of the shadow-receiving ground plane
   double cos_crease = 1;
-  bool lines = true;  // whether the current building is large enough on screen for lines
+  bool lines = true;           // whether the current building is large enough on screen for lines
+  std::uint32_t building = 0;  // 1-based index of the current building, its shades' owner
   std::vector<Stroke> strokes;
 };
 
@@ -289,8 +290,8 @@ void draw_faces(Context& context, const Mesh& mesh, const PartData& data, double
     // Shadows: a closed part's outline is cast by its sun-facing faces alone.
     const bool cast =
         context.options.shadows && (!data.closed || cutaway || dot(n, context.sun) > 0);
-    const std::uint32_t shade_id =
-        context.framebuffer.add_shade(shade(context, mesh.tag(f), front ? n : -n));
+    const std::uint32_t shade_id = context.framebuffer.add_shade(
+        shade(context, mesh.tag(f), front ? n : -n), context.building);
     triangles.clear();
     triangulate(mesh, f, n, triangles);
     for (const Triangle& t : triangles) {
@@ -402,12 +403,13 @@ Camera fit_camera(const shape::Scene& scene, const RenderOptions& options, int w
 
 void draw_scene(const shape::Scene& scene, const RenderOptions& options, const Camera& camera,
                 Framebuffer& framebuffer) {
-  Context context{scene, options, camera, framebuffer, {}, {}, 0, 1, true, {}};
+  Context context{scene, options, camera, framebuffer, {}, {}, 0, 1, true, 0, {}};
   context.sun = direction(options.azimuth_deg + kSunAzimuthOffset, kSunElevation);
   context.fill = direction(options.azimuth_deg + kFillAzimuthOffset, kFillElevation);
   context.ground = scene_ground(scene);
   context.cos_crease = std::cos(options.crease_angle_deg * kDegree);
   for (const shape::Building& building : scene.buildings) {
+    ++context.building;
     double cut = std::numeric_limits<double>::quiet_NaN();
     if (options.cutaway) {
       cut = std::isnan(options.cut_height) ? auto_cut_height(building) : options.cut_height;
