@@ -6,6 +6,7 @@
 #include <tuple>
 #include <utility>
 
+#include "base/format.h"
 #include "lang/plasm/builtins.h"
 
 namespace insula::lang::plasm {
@@ -24,22 +25,6 @@ struct Scope {
   const Scope* parent = nullptr;
   std::map<std::string, Entry> names;  // by case-folded key
 };
-
-// Levenshtein distance between two case-folded names.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
 
 class Checker {
  public:
@@ -169,7 +154,7 @@ class Checker {
     std::string found;
     const auto consider = [&](const std::string& candidate, const std::string& shown, int depth) {
       const std::tuple<std::size_t, bool, int, std::string> cost{
-          edit_distance(key, candidate), candidate[0] != key[0], depth, candidate};
+          base::edit_distance(key, candidate), candidate[0] != key[0], depth, candidate};
       if (cost < best) {
         best = cost;
         found = shown;

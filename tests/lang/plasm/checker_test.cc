@@ -2,6 +2,9 @@
 // DEFs and builtins; suggestions; duplicates; cycles among value bindings only; builtin arity.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+
 #include "lang/plasm/builtins.h"
 #include "test_util.h"
 
@@ -22,6 +25,19 @@ TEST(PlasmChecker, BuiltinTableIsSortedAndUpperCase) {
   }
   EXPECT_EQ(find_builtin("Bezier"), nullptr);  // keys are case-folded by the caller
   EXPECT_NE(find_builtin(name_key("Bezier")), nullptr);
+}
+
+// docs/plasm-language.md lists the table's names in order, so the page follows the table.
+TEST(PlasmChecker, LanguagePageListsEveryBuiltin) {
+  std::string page =
+      testing::read_file(std::filesystem::path(INSULA_SOURCE_DIR) / "docs" / "plasm-language.md");
+  std::replace(page.begin(), page.end(), '\n', ' ');
+  std::string names = "Its names:";
+  for (const Builtin& b : builtins()) {
+    names += ' ';
+    names += b.name;
+  }
+  EXPECT_NE(page.find(names + "."), std::string::npos) << names;
 }
 
 TEST(PlasmChecker, NamesResolveCaseInsensitivelyAndInAnyOrder) {
