@@ -50,6 +50,10 @@ const std::map<std::string, std::string>& expected_first_lines() {
       {"infix_without_right",
        "infix_without_right.psm:1:14: error[PSM104]: expected an expression after the infix "
        "function 'TOP', found ';'"},
+      // Names are case-insensitive: the local arch hides the function Arch it calls.
+      {"local_hides_function",
+       "local_hides_function.psm:3:7: error[PSM305]: the value of 'arch' depends on itself: arch "
+       "-> arch"},
       {"local_cycle",
        "local_cycle.psm:2:7: error[PSM305]: the value of 'y' depends on itself: y -> z -> y"},
       {"malformed_number", "malformed_number.psm:1:9: error[PSM004]: malformed number '2x'"},
