@@ -116,6 +116,7 @@ class Parser {
    public:
     explicit Nest(Parser& parser, int extra = 0) : parser_(parser) {
       if (++parser_.depth_ + extra > kMaxNesting) {
+        --parser_.depth_;  // no destructor runs for a constructor that throws
         parser_.fail("PSM105", "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
       }
     }
@@ -241,7 +242,7 @@ class Parser {
     }
   }
 
-  // Left-associative chain of `next` joined by the operators `op_of` names; `chain` bounds the
+  // Left-associative chain of `next` joined by the operators `op_of` names; `length` bounds the
   // depth of the left-deep tree like nesting does.
   template <typename Next, typename OpOf>
   ExprPtr chain(Next next, OpOf op_of) {
