@@ -139,6 +139,22 @@ TEST(PlasmParser, ErrorsRecoverAtTheNextStatement) {
             "t.psm:2:11: error[PSM101]: expected ')' to close '(', found ';'");
 }
 
+// Each statement that nests too deep is one error, and the next statement starts from level 0.
+TEST(PlasmParser, TooDeepStatementsDoNotRaiseTheLevelOfTheNext) {
+  std::string text;
+  const auto nested = [](int depth) {
+    return "DEF a = " + std::string(static_cast<std::size_t>(depth), '(') + "1" +
+           std::string(static_cast<std::size_t>(depth), ')') + ";\n";
+  };
+  for (int i = 0; i < 49; ++i) text += nested(60);
+  text += nested(30);  // 61 levels: fine on its own
+  const auto result = parse(base::Source("t.psm", text));
+  ASSERT_FALSE(result.ok());
+  ASSERT_EQ(result.diagnostics().size(), 49U);
+  EXPECT_EQ(result.diagnostics().back().span.line, 49U);
+  EXPECT_EQ(result.diagnostics().back().code, "PSM105");
+}
+
 TEST(PlasmParser, TooManyErrorsStops) {
   std::string text;
   for (int i = 0; i < 60; ++i) text += "DEF = 1;\n";
