@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${FUZZ_SECONDS:-60}
-all=(geojson cga bldg lua obj xml)
+all=(geojson cga bldg lua obj xml plasm)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all[@]}")
 
@@ -26,6 +26,7 @@ seeds() {  # the read-only seed folders of target $1
     lua) echo fuzz/corpus/lua examples/lua tests/data/lua ;;
     obj) echo fuzz/corpus/obj examples/lua/assets tests/data/assets ;;
     xml) echo fuzz/corpus/xml tests/data/cga/transform ;;
+    plasm) echo examples/plasm tests/data/plasm ;;
   esac
 }
 

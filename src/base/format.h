@@ -3,6 +3,7 @@
 // back the same in the other and golden files do not drift apart.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -15,5 +16,9 @@ std::string shortest_number(double value);
 // `text` as a double-quoted literal: `"` and `\` are escaped with a backslash, newline and tab as
 // \n and \t; every other byte is copied as is (the lexers' escape set, base/scanner.h).
 std::string quoted_string(std::string_view text);
+
+// The Levenshtein distance between two texts (bytes), for "did you mean" suggestions (the CLI's
+// verbs, PLaSM's names).
+std::size_t edit_distance(std::string_view a, std::string_view b);
 
 }  // namespace insula::base

@@ -59,6 +59,14 @@ int run_build(const BuildOptions& options) {
   if (has_suffix(options.input, ".cga")) return build_cga(options);
   if (has_suffix(options.input, ".bldg")) return build_bldg(options);
   if (has_suffix(options.input, ".lua")) return build_lua(options);
+  if (has_suffix(options.input, ".psm")) {
+    // Issue 13 lands in stages: the front half (`insula check`) comes first.
+    std::fprintf(stderr,
+                 "insula: %s: the PLaSM evaluator is not there yet; `insula check` parses and "
+                 "checks .psm files\n",
+                 options.input.c_str());
+    return kExitInput;
+  }
   std::fprintf(stderr, "insula: %s: unknown input type (use .cga, .bldg or .lua)\n",
                options.input.c_str());
   return kExitUsage;

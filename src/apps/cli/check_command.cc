@@ -45,7 +45,8 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
       app.add_subcommand("check", "parse and check an input without building anything");
   check
       ->add_option("INPUT", options.input,
-                   "a .geojson footprint file, a .cga or .bldg grammar or a .lua program")
+                   "a .geojson footprint file, a .cga or .bldg grammar, a .lua program or a .psm "
+                   "PLaSM program")
       ->required();
   check->add_flag("-q,--quiet", options.quiet, "print errors only");
   check->add_option("--start", options.start,
@@ -69,8 +70,11 @@ int run_check(const CheckOptions& options) {
     checker = check_bldg;
   } else if (has_suffix(options.input, ".lua")) {
     checker = check_lua;
+  } else if (has_suffix(options.input, ".psm")) {
+    checker = check_plasm;
   } else {
-    std::fprintf(stderr, "insula: %s: unknown input type (use .geojson, .cga, .bldg or .lua)\n",
+    std::fprintf(stderr,
+                 "insula: %s: unknown input type (use .geojson, .cga, .bldg, .lua or .psm)\n",
                  options.input.c_str());
     return kExitUsage;
   }

@@ -24,6 +24,7 @@ std::optional<std::string> check_cga(const base::Source& source, bool quiet,
                                      const std::string& start);
 std::optional<std::string> check_bldg(const base::Source& source, bool quiet);
 std::optional<std::string> check_lua(const base::Source& source, bool quiet);
+std::optional<std::string> check_plasm(const base::Source& source, bool quiet);
 
 // Prints diagnostics rendered against `source` to stderr (warnings and notes only when !quiet).
 void print_diagnostics(const std::vector<base::Diagnostic>& diagnostics, const base::Source& source,

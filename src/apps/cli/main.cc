@@ -16,28 +16,13 @@
 #include "apps/cli/random_command.h"
 #include "apps/cli/transform_command.h"
 #include "apps/cli/warnings.h"
+#include "base/format.h"
 
 namespace {
 
 constexpr const char* kDescription =
     "Insula generates buildings and cities from rules and footprints.\n"
     "Outputs are chosen by extension: .obj (+.mtl), .glb, .gltf, .city.json, .svg, .png.";
-
-// Edit distance, for suggesting the nearest verb to a mistyped one.
-std::size_t distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
 
 // A first argument that is no verb and no option: CLI11 would only say that a subcommand is
 // required, so the verbs are named here, the nearest one first when it is close.
@@ -49,7 +34,7 @@ bool unknown_verb(const CLI::App& app, const std::string& word) {
   for (const CLI::App* sub : app.get_subcommands({})) {
     if (sub->get_name() == word) return false;
     verbs += (verbs.empty() ? "" : ", ") + sub->get_name();
-    if (const std::size_t d = distance(word, sub->get_name()); d < best) {
+    if (const std::size_t d = insula::base::edit_distance(word, sub->get_name()); d < best) {
       best = d;
       nearest = sub->get_name();
     }

@@ -1,0 +1,77 @@
+// libFuzzer target for the PLaSM front half (docs/plasm-language.md): lexer, parser, checker.
+// For any bytes:
+//   - parse() fails with at least one error, every diagnostic positioned and coded PSM, or
+//     succeeds with no error;
+//   - a parsed program dumps (ast_dump.h) to the same text when a comment is appended to the
+//     source (comments and trailing text change nothing), and the checker's diagnostics are
+//     positioned PSM3xx codes, with ok exactly when there is no error.
+// Builds as fuzz/geojson_fuzz.cc: libFuzzer with clang and INSULA_FUZZ=ON, a replay main with
+// INSULA_FUZZ_REPLAY; tests/lang/plasm/plasm_fuzz_replay_test.cc includes it with
+// INSULA_FUZZ_NO_ENTRY.
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/diagnostic.h"
+#include "lang/plasm/ast_dump.h"
+#include "lang/plasm/checker.h"
+#include "lang/plasm/parser.h"
+
+namespace insula::fuzz {
+
+// Empty when every diagnostic is positioned, has a message and a code starting with `prefix`.
+inline std::string check_diagnostics(const std::vector<base::Diagnostic>& diagnostics,
+                                     std::string_view prefix) {
+  for (const base::Diagnostic& d : diagnostics) {
+    if (d.message.empty()) return "empty diagnostic message";
+    if (d.span.line == 0 || d.span.column == 0)
+      return "diagnostic without a position: " + d.message;
+    if (d.code.rfind(prefix, 0) != 0) return "unexpected diagnostic code " + d.code;
+  }
+  return {};
+}
+
+// Empty when every contract above holds for `bytes`, else what broke.
+inline std::string check_plasm(std::string_view bytes) {
+  const base::Source source("fuzz.psm", std::string(bytes));
+  const base::Result<lang::plasm::Program> result = lang::plasm::parse(source);
+  if (!result.ok()) {
+    if (!base::has_errors(result.diagnostics())) return "failure without an error diagnostic";
+    return check_diagnostics(result.diagnostics(), "PSM");
+  }
+  if (base::has_errors(result.diagnostics())) return "success with an error diagnostic";
+  const std::string dumped = lang::plasm::dump(result.value(), source);
+  const base::Source commented("fuzz.psm", std::string(bytes) + "\n% fuzz %\n");
+  const base::Result<lang::plasm::Program> again = lang::plasm::parse(commented);
+  if (!again.ok()) return "an appended comment broke the parse";
+  if (lang::plasm::dump(again.value(), commented) != dumped)
+    return "an appended comment changed the AST";
+  const lang::plasm::CheckResult checked = lang::plasm::check(result.value(), source);
+  if (checked.ok == base::has_errors(checked.diagnostics))
+    return "check ok disagrees with its errors";
+  return check_diagnostics(checked.diagnostics, "PSM3");
+}
+
+}  // namespace insula::fuzz
+
+#ifndef INSULA_FUZZ_NO_ENTRY
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string problem =
+      insula::fuzz::check_plasm(std::string_view(reinterpret_cast<const char*>(data), size));
+  if (!problem.empty()) {
+    std::fprintf(stderr, "plasm_fuzz: %s\n", problem.c_str());
+    std::abort();
+  }
+  return 0;
+}
+#endif
+
+#ifdef INSULA_FUZZ_REPLAY
+#define INSULA_FUZZ_REPLAY_NAME "plasm_fuzz_replay"
+#define INSULA_FUZZ_REPLAY_RECURSIVE  // the test data nests its bad-input catalog
+#include "replay_main.h"
+#endif

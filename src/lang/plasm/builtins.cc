@@ -1,0 +1,131 @@
+#include "lang/plasm/builtins.h"
+
+#include <algorithm>
+#include <array>
+
+namespace insula::lang::plasm {
+namespace {
+
+// Sorted by name (find_builtin searches it by bisection; a test keeps it sorted).
+constexpr std::array kBuiltins = {
+    Builtin{"AA", kAnyArity, "AA:f:<x1, ..., xn> is <f:x1, ..., f:xn> (apply to all)"},
+    Builtin{"ABS", kAnyArity, "absolute value"},
+    Builtin{"ACOS", kAnyArity, "arc cosine"},
+    Builtin{"AL", 2, "AL:<x, <y, ...>> is <x, y, ...> (append left)"},
+    Builtin{"ALIGN", kAnyArity,
+            "ALIGN:<<axis, MIN|MED|MAX, MIN|MED|MAX>, ...>:<p, q> places q beside p"},
+    Builtin{"AND", kAnyArity, "true when every element of a sequence is true"},
+    Builtin{"AR", 2, "AR:<<x, ...>, y> is <x, ..., y> (append right)"},
+    Builtin{"ASIN", kAnyArity, "arc sine"},
+    Builtin{"ATAN", kAnyArity, "arc tangent"},
+    Builtin{"ATAN2", 2, "ATAN2:<y, x>, the angle of the point (x, y)"},
+    Builtin{"BEZIER", kAnyArity,
+            "BEZIER:Sk:<p0, ..., pn>, the coordinate functions of a Bezier map in parameter k; "
+            "control points may be functions (transfinite)"},
+    Builtin{"BOTTOM", 2, "p BOTTOM q puts q under p, centred"},
+    Builtin{"BUTLAST", kAnyArity, "a sequence without its last element"},
+    Builtin{"C", kAnyArity, "C:f:x:y is f:<x, y> (curry)"},
+    Builtin{"CAT", kAnyArity, "concatenation of a sequence of sequences"},
+    Builtin{"CIRCLE", kAnyArity, "CIRCLE:r:<n, m>, a disk of radius r"},
+    Builtin{"COMP", kAnyArity, "COMP:<f, g, ...> is f ~ g ~ ..."},
+    Builtin{"CONS", kAnyArity, "CONS:<f1, ..., fn>:x is <f1:x, ..., fn:x>, as [f1, ..., fn]"},
+    Builtin{"COS", kAnyArity, "cosine"},
+    Builtin{"CUBOID", kAnyArity, "CUBOID:<a, b, ...>, a box of those sizes at the origin"},
+    Builtin{"CYLINDER", 2, "CYLINDER:<r, h>:n, a solid cylinder"},
+    Builtin{"DIFFERENCE", kAnyArity, "DIFFERENCE:<p, q, ...>, p minus the others (as -)"},
+    Builtin{"DISTL", 2, "DISTL:<x, <y1, ..., yn>> is <<x, y1>, ..., <x, yn>>"},
+    Builtin{"DISTR", 2, "DISTR:<<x1, ..., xn>, y> is <<x1, y>, ..., <xn, y>>"},
+    Builtin{"EMBED", kAnyArity, "EMBED:n:p adds n zero coordinates to p"},
+    Builtin{"EQ", kAnyArity, "true when the elements of a sequence are equal"},
+    Builtin{"EXP", kAnyArity, "exponential"},
+    Builtin{"FALSE", kAnyArity, "the false value"},
+    Builtin{"FIRST", kAnyArity, "the first element of a sequence"},
+    Builtin{"FROMTO", 2, "FROMTO:<a, b> is <a, a+1, ..., b>, as a .. b"},
+    Builtin{"GE", kAnyArity, "GE:a:x is x >= a"},
+    Builtin{"GT", kAnyArity, "GT:a:x is x > a"},
+    Builtin{"ID", kAnyArity, "the identity function"},
+    Builtin{"INSL", kAnyArity, "INSL:f:<x1, ..., xn>, f inserted from the left"},
+    Builtin{"INSR", kAnyArity, "INSR:f:<x1, ..., xn>, f inserted from the right"},
+    Builtin{"INTERSECTION", kAnyArity, "INTERSECTION:<p, q, ...>, the common part of polyhedra"},
+    Builtin{"INTERVALS", kAnyArity, "INTERVALS:a:n, [0, a] split into n equal cells"},
+    Builtin{"ISBOOL", kAnyArity, "predicate: a truth value"},
+    Builtin{"ISFUN", kAnyArity, "predicate: a function"},
+    Builtin{"ISINT", kAnyArity, "predicate: an integer"},
+    Builtin{"ISINTPOS", kAnyArity, "predicate: an integer > 0"},
+    Builtin{"ISNAT", kAnyArity, "predicate: an integer >= 0"},
+    Builtin{"ISNUM", kAnyArity, "predicate: a number"},
+    Builtin{"ISPOL", kAnyArity, "predicate: a polyhedral complex"},
+    Builtin{"ISREAL", kAnyArity, "predicate: a number"},
+    Builtin{"ISREALPOS", kAnyArity, "predicate: a number > 0"},
+    Builtin{"ISSEQ", kAnyArity, "predicate: a sequence"},
+    Builtin{"ISSEQOF", kAnyArity,
+            "ISSEQOF:pred, predicate: a sequence whose elements satisfy pred"},
+    Builtin{"ISSTRING", kAnyArity, "predicate: a string"},
+    Builtin{"JOIN", kAnyArity, "the convex hull of a polyhedron or of a sequence of them"},
+    Builtin{"K", kAnyArity, "K:x:y is x (the constant function of x)"},
+    Builtin{"LAST", kAnyArity, "the last element of a sequence"},
+    Builtin{"LE", kAnyArity, "LE:a:x is x <= a"},
+    Builtin{"LEFT", 2, "p LEFT q puts q left of p, centred"},
+    Builtin{"LEN", kAnyArity, "the length of a sequence"},
+    Builtin{"LIST", kAnyArity, "LIST:x is <x>"},
+    Builtin{"LN", kAnyArity, "natural logarithm"},
+    Builtin{"LT", kAnyArity, "LT:a:x is x < a"},
+    Builtin{"MAP", kAnyArity,
+            "MAP:<f1, ..., fn>:domain, the domain's points through the coordinate functions"},
+    Builtin{"MAX", kAnyArity, "MAX:k:p, the greatest coordinate k of p"},
+    Builtin{"MED", kAnyArity, "MED:k:p, the middle of p along coordinate k"},
+    Builtin{"MIN", kAnyArity, "MIN:k:p, the least coordinate k of p"},
+    Builtin{"MKPOL", 3,
+            "MKPOL:<verts, cells, pols>, a polyhedral complex from its vertices and convex cells"},
+    Builtin{"NOT", kAnyArity, "logical negation"},
+    Builtin{"OFFSET", kAnyArity, "OFFSET:<d1, ..., dn>:p, the Minkowski sum of p with a box"},
+    Builtin{"OR", kAnyArity, "true when some element of a sequence is true"},
+    Builtin{"PI", kAnyArity, "the number pi"},
+    Builtin{"Q", kAnyArity, "Q:a, as QUOTE:<a>"},
+    Builtin{"QUOTE", kAnyArity, "QUOTE:<a, -b, c>, 1D cells of lengths a and c with a gap b"},
+    Builtin{"R", kAnyArity, "R:<i, j>:angle, the rotation in the plane of coordinates i and j"},
+    Builtin{"REVERSE", kAnyArity, "a sequence in reverse order"},
+    Builtin{"RIGHT", 2, "p RIGHT q puts q right of p, centred"},
+    Builtin{"S", kAnyArity, "S:<i, ...>:<s, ...>, the scaling of coordinates i, ..."},
+    Builtin{"S1", kAnyArity, "the first element (selector)"},
+    Builtin{"S2", kAnyArity, "the second element (selector)"},
+    Builtin{"S3", kAnyArity, "the third element (selector)"},
+    Builtin{"S4", kAnyArity, "the fourth element (selector)"},
+    Builtin{"S5", kAnyArity, "the fifth element (selector)"},
+    Builtin{"S6", kAnyArity, "the sixth element (selector)"},
+    Builtin{"SEL", kAnyArity, "SEL:k, the selector of the k-th element"},
+    Builtin{"SIMPLEX", kAnyArity, "SIMPLEX:d, the standard d-simplex"},
+    Builtin{"SIN", kAnyArity, "sine"},
+    Builtin{"SIZE", kAnyArity, "SIZE:k:p, the extent of p along coordinate k"},
+    Builtin{"SKELETON", kAnyArity, "SKELETON:k:p, the k-skeleton of p"},
+    Builtin{"SPHERE", kAnyArity, "SPHERE:r:<n, m>, a sphere surface of radius r"},
+    Builtin{"SPLITCELLS", kAnyArity, "the convex cells of a polyhedron, one polyhedron each"},
+    Builtin{"SQRT", kAnyArity, "square root"},
+    Builtin{"STRUCT", kAnyArity,
+            "STRUCT:<p, T:..., q, ...>, an assembly; a transformation applies to what follows"},
+    Builtin{"T", kAnyArity, "T:<i, ...>:<d, ...>, the translation of coordinates i, ..."},
+    Builtin{"TAIL", kAnyArity, "a sequence without its first element"},
+    Builtin{"TAN", kAnyArity, "tangent"},
+    Builtin{"TOP", 2, "p TOP q puts q on top of p, centred"},
+    Builtin{"TORUS", 2, "TORUS:<r1, r2>:<n, m>, a torus surface"},
+    Builtin{"TRANS", kAnyArity, "the transpose of a sequence of sequences"},
+    Builtin{"TRUE", kAnyArity, "the true value"},
+    Builtin{"TRUNCONE", 3, "TRUNCONE:<r1, r2, h>:n, a truncated cone surface"},
+    Builtin{"TT", kAnyArity, "predicate: anything"},
+    Builtin{"UNION", kAnyArity, "UNION:<p, q, ...>, the union of polyhedra (as +)"},
+    Builtin{"XOR", kAnyArity, "XOR:<p, q, ...>, the symmetric difference of polyhedra"},
+};
+
+}  // namespace
+
+std::span<const Builtin> builtins() {
+  return kBuiltins;
+}
+
+const Builtin* find_builtin(std::string_view key) {
+  const auto it = std::lower_bound(kBuiltins.begin(), kBuiltins.end(), key,
+                                   [](const Builtin& b, std::string_view k) { return b.name < k; });
+  return it != kBuiltins.end() && it->name == key ? &*it : nullptr;
+}
+
+}  // namespace insula::lang::plasm

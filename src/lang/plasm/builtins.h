@@ -1,0 +1,27 @@
+// The names every PLaSM program may use without defining them: the FL toolbox and the geometry
+// library of issue 13 (docs/plasm-language.md, "Builtins"). This table is the one list the
+// checker resolves names against and suggests from; the evaluator will implement each entry.
+#pragma once
+
+#include <span>
+#include <string_view>
+
+namespace insula::lang::plasm {
+
+// Marks a builtin whose argument is not one literal sequence of a fixed length.
+inline constexpr int kAnyArity = -1;
+
+struct Builtin {
+  std::string_view name;  // upper case, as the library reference spells it
+  // How many elements the sequence it is applied to must have (`TRUNCONE:<r1, r2, h>` is 3;
+  // `a AL b` passes <a, b>, so only arity 2 or kAnyArity may be used infix).
+  int arity = kAnyArity;
+  std::string_view summary;
+};
+
+std::span<const Builtin> builtins();
+
+// The builtin named `key` (a case-folded name), or null.
+const Builtin* find_builtin(std::string_view key);
+
+}  // namespace insula::lang::plasm

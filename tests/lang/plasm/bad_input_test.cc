@@ -1,0 +1,112 @@
+// The bad-input catalog tests/data/plasm/bad/*.psm: each file's first diagnostic (parser, then
+// checker), exactly.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "test_util.h"
+
+namespace insula::lang::plasm {
+namespace {
+
+using testing::data_dir;
+using testing::files_in;
+using testing::read_file;
+
+const std::map<std::string, std::string>& expected_first_lines() {
+  static const std::map<std::string, std::string> kExpected = {
+      {"bad_character", "bad_character.psm:1:11: error[PSM001]: unexpected character '$'"},
+      {"bad_escape", "bad_escape.psm:1:11: error[PSM005]: unknown escape sequence in string"},
+      {"builtin_arity",
+       "builtin_arity.psm:1:9: error[PSM306]: 'TRUNCONE' takes a sequence of 3 values, found 2"},
+      {"control_byte", "control_byte.psm:2:9: error[PSM001]: unexpected byte 0x01"},
+      {"cycle",
+       "cycle.psm:1:5: error[PSM305]: the value of 'a' depends on itself: a -> b -> c -> a"},
+      // DEF a = ((( ... : every '(' nests twice (parenthesis, inner expression), so the 50th
+      // parenthesis, at column 9 + 49, is the one that goes past 100 levels.
+      {"deep_parentheses",
+       "deep_parentheses.psm:1:58: error[PSM105]: nesting deeper than 100 levels"},
+      {"def_without_assign",
+       "def_without_assign.psm:1:7: error[PSM101]: expected '=' after the name 'a', found number "
+       "1"},
+      {"def_without_name",
+       "def_without_name.psm:1:5: error[PSM101]: expected identifier (the name being defined) "
+       "after 'DEF', found '='"},
+      {"duplicate_def",
+       "duplicate_def.psm:2:5: error[PSM302]: 'A' is already defined at line 1 (names are "
+       "case-insensitive)"},
+      {"duplicate_local",
+       "duplicate_local.psm:2:14: error[PSM303]: 'B' is already defined in 'f' at line 2"},
+      {"duplicate_parameter",
+       "duplicate_parameter.psm:1:19: error[PSM304]: parameter 'A' of 'f' is declared twice"},
+      {"empty_group",
+       "empty_group.psm:1:8: error[PSM101]: expected identifier (a parameter name), found ')'"},
+      {"if_two_functions",
+       "if_two_functions.psm:1:9: error[PSM107]: IF:<...> takes 3 functions (predicate, then, "
+       "else), found 2"},
+      {"if_without_sequence",
+       "if_without_sequence.psm:1:9: error[PSM106]: IF is written IF:<predicate, then, else>"},
+      {"infix_arity", ""},
+      {"infix_without_right",
+       "infix_without_right.psm:1:14: error[PSM104]: expected an expression after the infix "
+       "function 'TOP', found ';'"},
+      // Names are case-insensitive: the local arch hides the function Arch it calls.
+      {"local_hides_function",
+       "local_hides_function.psm:3:7: error[PSM305]: the value of 'arch' depends on itself: arch "
+       "-> arch"},
+      {"local_cycle",
+       "local_cycle.psm:2:7: error[PSM305]: the value of 'y' depends on itself: y -> z -> y"},
+      {"malformed_number", "malformed_number.psm:1:9: error[PSM004]: malformed number '2x'"},
+      {"missing_operand",
+       "missing_operand.psm:1:13: error[PSM104]: expected an expression, found ';'"},
+      {"missing_semicolon",
+       "missing_semicolon.psm:2:1: error[PSM101]: expected ';' after the definition of 'a', found "
+       "'DEF'"},
+      {"stray_paren",
+       "stray_paren.psm:1:1: error[PSM102]: expected 'DEF' or an expression, found ')'"},
+      {"triple_colon",
+       "triple_colon.psm:1:34: error[PSM104]: expected an expression (the predicate) after '::', "
+       "found ':'"},
+      {"unary_minus",
+       "unary_minus.psm:1:11: error[PSM103]: PLaSM has no unary minus: write -:x to negate x (or a "
+       "literal such as -1)"},
+      {"unclosed_construction",
+       "unclosed_construction.psm:1:16: error[PSM101]: expected ']' or ',' to close the "
+       "construction '[', found ';'"},
+      {"unclosed_group",
+       "unclosed_group.psm:1:18: error[PSM101]: expected ')' to close the parameter group, found "
+       "'='"},
+      {"unclosed_sequence",
+       "unclosed_sequence.psm:1:14: error[PSM101]: expected '>' or ',' to close the sequence '<', "
+       "found ';'"},
+      {"unknown_builtin",
+       "unknown_builtin.psm:1:9: error[PSM301]: unknown name 'IsReel'; did you mean 'ISREAL'?"},
+      {"unknown_local",
+       "unknown_local.psm:1:41: error[PSM301]: unknown name 'Vault_8th'; did you mean 'vault8th'?"},
+      {"unknown_name",
+       "unknown_name.psm:1:53: error[PSM301]: unknown name 'd'; did you mean 'dm'?"},
+      {"unterminated_comment",
+       "unterminated_comment.psm:2:1: error[PSM003]: unterminated comment: '%' without its closing "
+       "'%'"},
+      {"unterminated_string", "unterminated_string.psm:1:9: error[PSM002]: unterminated string"},
+      {"where_missing_comma",
+       "where_missing_comma.psm:3:3: error[PSM101]: expected 'END' or ',' after the locals of 'f', "
+       "found identifier 'c'"},
+      {"where_without_end",
+       "where_without_end.psm:3:1: error[PSM101]: expected 'END' or ',' after the locals of 'f', "
+       "found ';'"},
+  };
+  return kExpected;
+}
+
+TEST(PlasmBadInput, EveryCatalogFileHasItsExactFirstDiagnostic) {
+  const auto files = files_in(data_dir() / "bad", ".psm");
+  ASSERT_GE(files.size(), 30U);
+  insula::test::expect_catalog_first_lines(
+      files, expected_first_lines(), [](const std::filesystem::path& path) {
+        return testing::first_error(read_file(path), path.filename().string());
+      });
+}
+
+}  // namespace
+}  // namespace insula::lang::plasm

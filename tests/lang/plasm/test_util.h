@@ -1,0 +1,45 @@
+// Helpers shared by the PLaSM front-end tests.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "../../common/test_util.h"
+#include "base/diagnostic.h"
+#include "lang/plasm/ast_dump.h"
+#include "lang/plasm/checker.h"
+#include "lang/plasm/parser.h"
+
+namespace insula::lang::plasm::testing {
+
+inline std::filesystem::path data_dir() {
+  return std::filesystem::path(INSULA_TEST_DATA) / "plasm";
+}
+inline std::filesystem::path examples_dir() {
+  return std::filesystem::path(INSULA_SOURCE_DIR) / "examples" / "plasm";
+}
+
+using insula::test::files_in;
+using insula::test::read_file;
+
+// The first diagnostic of parsing and then checking `text` as `name`, rendered without source
+// lines; empty when both pass.
+inline std::string first_error(const std::string& text, const std::string& name = "t.psm") {
+  const base::Source source(name, text);
+  const auto result = parse(source);
+  if (!result.ok()) return base::render(result.diagnostics().front());
+  const CheckResult checked = check(result.value(), source);
+  if (checked.diagnostics.empty()) return {};
+  return base::render(checked.diagnostics.front());
+}
+
+// The one-line dump of the expression of `text`, a single expression statement (`;` appended).
+inline std::string expr_dump(const std::string& text) {
+  const base::Source source("t.psm", text + ";");
+  const auto result = parse(source);
+  if (!result.ok()) return "error: " + base::render(result.diagnostics().front());
+  if (result->statements.size() != 1 || result->statements[0].is_def) return "not one expression";
+  return dump(*result->statements[0].expr);
+}
+
+}  // namespace insula::lang::plasm::testing
