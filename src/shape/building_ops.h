@@ -1,12 +1,14 @@
-// Building elements as shape operations (issue 11: one engine): stairs, door and window frames and
-// floor or ceiling slabs, built by the kernel solids the .bldg builder uses (kernel/solids.h,
-// kernel/opening_frame.h), so a grammar, a Lua program and a .bldg file get the same meshes.
-// Parameters in docs/operations.md; conventions in docs/shape-model.md.
+// Building elements as shape operations (issue 11: one engine): stairs, door and window frames,
+// floor or ceiling slabs and walls with openings, built by the kernel solids the .bldg builder uses
+// (kernel/solids.h, kernel/opening_frame.h, kernel/wall.h), so a grammar, a Lua program and a .bldg
+// file get the same meshes. Parameters in docs/operations.md; conventions in docs/shape-model.md.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "kernel/opening_frame.h"
+#include "kernel/wall.h"
 #include "shape/operation.h"
 #include "shape/shape_tree.h"
 
@@ -15,6 +17,7 @@ namespace insula::shape {
 std::vector<Operation> stair_operations();
 std::vector<Operation> frame_operations();
 std::vector<Operation> slab_operations();
+std::vector<Operation> wall_operations();
 
 // --- stair (ops_stair.cc)
 // A straight massive flight over a flat shape: it is the shape's scope rectangle wide (x) and
@@ -35,5 +38,15 @@ enum class SlabKind : std::uint8_t { kFloor, kCeiling };
 // below, hanging under the shape) over a flat shape's outline, `thickness` meters (> 0); the
 // other faces ClosureSurface and InteriorWallSurface. Oriented as extrude's child (y up).
 OpResult slab(ShapeTree& tree, ShapeId id, SlabKind kind, double thickness);
+
+// --- wall (ops_wall.cc)
+// A wall `thickness` meters (> 0) thick behind a flat shape without holes (scope z from -thickness
+// to 0; the shape's outline is the wall's outline, x along the wall, y up) with `openings` (in the
+// shape's scope xy) cut through it: kernel::build_wall with the .bldg builder's margin and policy
+// (an opening that does not fit is left out and named in the result's warning). Faces: the shape's
+// side WallSurface, the back InteriorWallSurface, reveals Jamb, Sill and Lintel, the rim
+// ClosureSurface. The child's scope keeps the shape's axes.
+OpResult wall_solid(ShapeTree& tree, ShapeId id, double thickness,
+                    std::span<const kernel::Opening> openings);
 
 }  // namespace insula::shape

@@ -1,7 +1,7 @@
-// One engine (issue 11): the same roof, stair, frame and slab built by the .bldg builder, a CGA
-// grammar and a Lua program are the same solid (volume, face count, bounds), since all three
-// reach the same kernel function (the .bldg builder directly, CGA and Lua through the shape
-// registry's roof, stair, frame and slab).
+// One engine (issue 11): the same roof, stair, frame, slab and wall with openings built by the
+// .bldg builder, a CGA grammar and a Lua program are the same solid (volume, face count, bounds),
+// since all three reach the same kernel function (the .bldg builder directly, CGA and Lua through
+// the shape registry's roof, stair, frame, slab and wall).
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -153,6 +153,27 @@ lang::bldg::BuildResult build(const lang::bldg::FloorPlan& p,
   return lang::bldg::build_building(b, p, lang::bldg::Restrictions{}, options);
 }
 
+// A window of room 0 in wall 0 (the south wall, y = 0), 1.2 x 1.2 m from x = 4, 0.9 m above the
+// floor.
+lang::bldg::PlanWindow south_window() {
+  lang::bldg::PlanWindow window;
+  window.room = 0;
+  window.wall = 0;
+  window.a = {4, 0};
+  window.b = {5.2, 0};
+  window.center = {4.6, 0};
+  window.width = 1.2;
+  window.sill = 0.9;
+  window.height = 1.2;
+  return window;
+}
+
+// A Lua prelude: `front`, the south face of the 10 x 8 m lot extruded 3 m.
+constexpr const char* kLuaFacade = R"lua(
+    local lot = component{polygon={{0, 0}, {10, 0}, {10, 8}, {0, 8}}}
+    local front = comp(extrude(lot, 3)[1], "faces", "front")[1]
+  )lua";
+
 const Mesh& part_mesh(const lang::bldg::BuildResult& r, const std::string& name) {
   for (const shape::Part& p : r.building.parts) {
     if (p.name == name) return p.mesh;
@@ -236,16 +257,7 @@ TEST(OneEngine, StairIsTheSameFlight) {
 // facade, from CGA (extrude, comp, split) and from Lua (a face component).
 TEST(OneEngine, WindowFrameIsTheSameFrame) {
   lang::bldg::FloorPlan p = plan(lang::bldg::RoofKind::kFlat, 0);
-  lang::bldg::PlanWindow window;
-  window.room = 0;
-  window.wall = 0;
-  window.a = {4, 0};
-  window.b = {5.2, 0};
-  window.center = {4.6, 0};
-  window.width = 1.2;
-  window.sill = 0.9;
-  window.height = 1.2;
-  p.storeys.front().windows.push_back(window);
+  p.storeys.front().windows.push_back(south_window());
   const auto r = build(p);
   EXPECT_EQ(r.stats.windows, 1U);
   const Mesh& storey = part_mesh(r, "storey 0");
@@ -309,6 +321,87 @@ TEST(OneEngine, FloorAndCeilingSlabsAreTheSameSlabs) {
   expect_same(ceiling,
               measure(lua_mesh("slab(" + lot + ", 'ceiling', 0.1, {label='out'})"), {0, 0, 3.3}),
               "lua ceiling");
+}
+
+// A door (1 x 2.1 m, on the 0.1 m floor slab) and a window (1.2 x 1.2 m, 0.9 m above the slab)
+// in the 0.3 m south wall, 3 m high: .bldg's wall is the registry's wall over the facade, from CGA
+// (extrude, comp) and from Lua (a face component), with the openings in the facade's (u, v).
+TEST(OneEngine, WallWithOpeningsIsTheSameWall) {
+  lang::bldg::FloorPlan p = plan(lang::bldg::RoofKind::kFlat, 0);
+  lang::bldg::PlanDoor door;
+  door.room_a = 0;
+  door.wall = 0;
+  door.a = {1.5, 0};
+  door.b = {2.5, 0};
+  door.center = {2, 0};
+  door.width = 1;
+  door.height = 2.1;
+  p.storeys.front().entrances.push_back(door);
+  p.storeys.front().windows.push_back(south_window());
+  lang::bldg::BuilderOptions options;
+  options.frames = false;
+  const auto r = build(p, options);
+  EXPECT_EQ(r.stats.entrances, 1U);
+  EXPECT_EQ(r.stats.windows, 1U);
+  // The south wall is the storey's first: its faces carry the face ids 0 to 7 (one per side).
+  const Mesh& storey = part_mesh(r, "storey 0");
+  const Mesh south = select(storey, [&](std::size_t f) { return storey.tag(f).face_id < 8; });
+  EXPECT_TRUE(kernel::check(south).closed);
+  const Solid bldg = measure(south);
+  EXPECT_NEAR(bldg.volume, 0.3 * (10 * 3 - 1 * 2.1 - 1.2 * 1.2), 1e-9);
+  EXPECT_NEAR(bldg.min.y, 0, 1e-9);  // the wall stands inside, its face on the outline
+  EXPECT_NEAR(bldg.max.y, 0.3, 1e-9);
+  // The rim's 4 faces, 4 reveals per opening, the front and the back in 2 hole-free pieces each.
+  EXPECT_EQ(bldg.faces, 4U + 2 * 4 + 2 * 2);
+  const Vec3 floor{0, 0, 0.3};  // the storey stands on the 0.3 m base
+  const Mesh cga = cga_mesh(R"cga(
+    Lot --> extrude(3) comp(f) { front: Facade }
+    Facade --> wall(0.3, 1.5, 0.1, 1, 2.1, 4, 1, 1.2, 1.2)
+  )cga",
+                            0, 0, 10, 8);
+  expect_same(bldg, measure(cga, floor), "cga");
+  const std::string facade = kLuaFacade;
+  expect_same(bldg,
+              measure(lua_mesh(facade + "wall(front, 0.3, {1.5, 0.1, 1, 2.1, 4, 1, 1.2, 1.2}, "
+                                        "{label='out'})"),
+                      floor),
+              "lua");
+  // Relative sizes are fractions of the facade (10 x 3 m): the same openings.
+  expect_same(bldg,
+              measure(lua_mesh(facade + "wall(front, 0.3, {\"'0.15\", 0.1, 1, 2.1, \"'0.4\", 1, "
+                                        "\"'0.12\", \"'0.4\"}, {label='out'})"),
+                      floor),
+              "lua relative");
+}
+
+// The wall's openings are four sizes each, never floating; an opening that does not fit is left
+// out with a warning, as the .bldg builder leaves it out.
+TEST(OneEngine, WallOpeningErrors) {
+  const std::string facade = kLuaFacade;
+  const auto error = [&](const std::string& call) {
+    return lua::testing::run(facade + call).error();
+  };
+  EXPECT_EQ(error("wall(front, 0.3, {1, 0.1, 1})"),
+            "test.lua:4:3: error[LUA003]: in wall: openings take four sizes each (u, sill, width, "
+            "height); got 3");
+  EXPECT_EQ(error("wall(front, 0.3, {1, 0.1, '~1', 2})"),
+            "test.lua:4:3: error[LUA003]: in wall: opening sizes are meters or relative ('), not "
+            "floating (~); got ~1");
+  // The second window overlaps the first: the wall is the box minus the first alone.
+  const Mesh skipped = lua_mesh(facade +
+                                "wall(front, 0.3, {4, 1, 1.2, 1.2, 4.5, 1.5, 1, 1}, "
+                                "{label='out'})");
+  EXPECT_NEAR(kernel::volume(skipped), 0.3 * (10 * 3 - 1.2 * 1.2), 1e-9);
+  // CGA names the opening it left out.
+  auto program = lang::cga::testing::compile_text(R"cga(
+    Lot --> extrude(3) comp(f) { front: Facade }
+    Facade --> wall(0.3, 4, 1, 1.2, 1.2, 4.5, 1.5, 1, 1)
+  )cga");
+  ASSERT_NE(program, nullptr);
+  const auto r =
+      lang::cga::testing::derive_all(*program, {lang::cga::testing::rectangle_lot(10, 8)});
+  EXPECT_EQ(lang::cga::testing::diagnostics_text(r[0]),
+            "test.cga:3:16: warning[CGA604]: wall: opening 1 overlaps opening 0 (left out)\n");
 }
 
 }  // namespace
