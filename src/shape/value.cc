@@ -1,5 +1,6 @@
 #include "shape/value.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -13,10 +14,11 @@ std::string to_string(const Value& value) {
     char buffer[32];
     if (std::isfinite(d) && d == std::round(d) && std::fabs(d) < 1e15) {
       std::snprintf(buffer, sizeof buffer, "%.0f", d);
-    } else {
-      std::snprintf(buffer, sizeof buffer, "%.17g", d);
+      return buffer;
     }
-    return buffer;
+    // The shortest text that reads back as the same double: 0.3, not 0.29999999999999999.
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, d).ptr;
+    return std::string(buffer, end);
   }
   return "null";
 }
