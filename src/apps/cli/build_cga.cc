@@ -192,7 +192,8 @@ int build_cga(const BuildOptions& options) {
   const cga::Program& p = *program.value();
   seconds["compile"] = clock.seconds();
 
-  for (const auto& [name, value] : derive.sets) {
+  for (const auto& set : derive.sets) {
+    const std::string& name = set.first;  // clang 14 cannot capture a structured binding
     const bool declared = std::any_of(grammar->attrs.begin(), grammar->attrs.end(),
                                       [&](const cga::AttrDecl& a) { return a.name == name; });
     if (!declared) {

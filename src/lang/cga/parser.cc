@@ -136,6 +136,7 @@ class Parser {
    public:
     explicit Nest(Parser& parser, int extra = 0) : parser_(parser) {
       if (++parser_.depth_ + extra > kMaxNesting) {
+        --parser_.depth_;  // no destructor runs for a constructor that throws
         parser_.fail("CGA105", "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
       }
     }

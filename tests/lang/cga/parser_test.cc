@@ -23,6 +23,26 @@ std::vector<std::string> all_errors(const std::string& text) {
   return out;
 }
 
+std::string rule_with_parentheses(const std::string& name, int levels) {
+  return name + " --> extrude(" + std::string(static_cast<std::size_t>(levels), '(') + "1" +
+         std::string(static_cast<std::size_t>(levels), ')') + ") X\n";
+}
+
+// A rule nested too deeply is one error, and the rules after it may nest as deeply as any other
+// (the guard that throws gave its level back only from its destructor, which a constructor that
+// throws never runs: each too-deep rule lowered the limit of the rest by one).
+TEST(CgaParser, TooDeepRuleDoesNotLowerTheLimitOfTheNext) {
+  int deepest = 0;
+  while (all_errors(rule_with_parentheses("A", deepest + 1)).empty()) ++deepest;
+  ASSERT_GT(deepest, 40);  // two levels per parenthesis (operand, parenthesised expression)
+  std::string text;
+  for (int i = 0; i < 5; ++i) text += rule_with_parentheses("Bad" + std::to_string(i), deepest + 9);
+  text += rule_with_parentheses("Good", deepest);
+  const std::vector<std::string> errors = all_errors(text);
+  ASSERT_EQ(errors.size(), 5U);
+  for (const std::string& e : errors) EXPECT_NE(e.find("error[CGA105]"), std::string::npos) << e;
+}
+
 TEST(CgaParser, RulesEndWhereTheNextIdColonBegins) {
   const Grammar g = parse_ok("PRIORITY 1:\n1: A ~> B C\n2: C ~> D : 0.5 ~> E F : 0.5\nr3: F ~> G");
   ASSERT_EQ(g.sets.size(), 1U);
