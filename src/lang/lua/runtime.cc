@@ -374,6 +374,24 @@ bool starts_with(std::string_view text, std::string_view prefix) {
   return text.substr(0, prefix.size()) == prefix;
 }
 
+// The Source line (lines end at '\n') where Lua's line `lua_line` starts. Lua also ends a line at
+// a lone '\r' and counts "\r\n" and "\n\r" as one break (llex.c, inclinenumber), so a file with
+// bare carriage returns has more Lua lines than Source lines.
+std::uint32_t source_line(std::string_view text, std::uint32_t lua_line) {
+  std::uint32_t line = 1, source = 1;
+  for (std::size_t i = 0; i < text.size() && line < lua_line; ++i) {
+    const char c = text[i];
+    if (c != '\n' && c != '\r') continue;
+    if (c == '\n') ++source;
+    if (i + 1 < text.size() && (text[i + 1] == '\n' || text[i + 1] == '\r') && text[i + 1] != c) {
+      ++i;
+      if (text[i] == '\n') ++source;
+    }
+    ++line;
+  }
+  return source;
+}
+
 // A Lua error message "<short_src>:<line>: <text>" (or any other text) as a diagnostic.
 base::Diagnostic to_diagnostic(const base::Source& source, const std::string& short_src,
                                std::string message, int fallback_line, bool stopped) {
@@ -407,7 +425,8 @@ base::Diagnostic to_diagnostic(const base::Source& source, const std::string& sh
     const std::size_t colon = message.find(':');
     if (colon != std::string::npos) op = std::string_view(message).substr(3, colon - 3);
   }
-  const auto at = static_cast<std::uint32_t>(std::max(line, 0));
+  const std::uint32_t at =
+      line > 0 ? source_line(source.text(), static_cast<std::uint32_t>(line)) : 0;
   base::Span span = at > 0 ? base::Span::at(source.name(), at, column_of(source, at, op))
                            : base::Span::whole(source.name());
   return base::Diagnostic::error(code, std::move(message), std::move(span));

@@ -27,6 +27,17 @@ TEST(LuaSandbox, InfiniteLoopHitsTheInstructionLimit) {
             "test.lua:2:1: error[LUA101]: instruction limit of 2000000 reached");
 }
 
+// Lua also breaks lines at a lone carriage return; the diagnostic names the line of the file as
+// an editor shows it (found by lua_fuzz: Lua's line 53 of a one-line file, outside the program).
+TEST(LuaSandbox, LinesBrokenByCarriageReturnsMapToTheFilesLines) {
+  EXPECT_EQ(error_of("local a = 1\r\rlocal b = 2\r\n  error('boom')"),
+            "test.lua:2:3: error[LUA002]: boom");
+  EXPECT_EQ(error_of("local a = 1\n\rlocal b = 2\r\n\r  error('boom')"),
+            "test.lua:3:1: error[LUA002]: boom");
+  EXPECT_EQ(error_of("local\r\r\r\r\r\r\r\r = 1"),
+            "test.lua:1:1: error[LUA001]: <name> expected near '='");
+}
+
 TEST(LuaSandbox, PcallCannotCatchALimit) {
   EXPECT_EQ(error_of("while true do\n  pcall(function() while true do end end)\nend"),
             "test.lua:2:3: error[LUA101]: instruction limit of 2000000 reached");
