@@ -127,9 +127,12 @@ base::Result<ObjModel> Parser::run(std::string_view text) {
     diagnostics_.back().notes.push_back("too many errors; reading stopped at line " +
                                         std::to_string(line_));
   }
-  if (errors_ == 0 && faces_ == 0) {
-    diagnostics_.push_back(
-        Diagnostic::error("OBJ007", "the file has no faces", Span::whole(source_)));
+  if (errors_ == 0 && model_.mesh.face_count() == 0) {
+    // faces_ counts the dropped faces too (it numbers the file's faces).
+    diagnostics_.push_back(Diagnostic::error(
+        "OBJ007",
+        faces_ == 0 ? "the file has no faces" : "the file has no face with 3 distinct vertices",
+        Span::whole(source_)));
     ++errors_;
   }
   if (errors_ > 0) return base::Result<ObjModel>::failure(std::move(diagnostics_));

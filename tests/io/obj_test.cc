@@ -192,6 +192,15 @@ INSTANTIATE_TEST_SUITE_P(
                "bad.obj:1:3: error[OBJ005]: vertex index 1 is out of range (0 vertices defined so "
                "far)"}));
 
+// Found by obj_fuzz: every face dropped (warning OBJ101) left a model without faces.
+TEST(ObjReader, FileWhoseEveryFaceWasDroppedIsAnError) {
+  const base::Result<ObjModel> model = parse_obj("v 0 0 0\nv 1 0 0\nf 1 1 2\nf 2 2 2\n", "bad.obj");
+  ASSERT_FALSE(model.ok());
+  ASSERT_EQ(model.diagnostics().size(), 3U);  // two OBJ101 warnings, then the error
+  EXPECT_EQ(base::render(model.diagnostics().back()),
+            "bad.obj: error[OBJ007]: the file has no face with 3 distinct vertices");
+}
+
 TEST(ObjReader, WarnsAboutUnsupportedStatementsAndDegenerateFaces) {
   const base::Result<ObjModel> model =
       parse_obj("curv 0 1 1 2\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 1 2\n", "w.obj");
