@@ -8,6 +8,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${FUZZ_SECONDS:-60}
+# A fixed seed by default: CI's one-minute runs take the same path each time (so a red run is a
+# change of ours, reproducible here); FUZZ_SEED=0 lets libFuzzer pick one, for longer hunts.
+seed=${FUZZ_SEED:-1}
 all=(geojson cga bldg lua obj xml plasm)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all[@]}")
@@ -38,7 +41,7 @@ for t in "${targets[@]}"; do
   dict=()
   [ -f "fuzz/$t.dict" ] && dict=(-dict="fuzz/$t.dict")
   # shellcheck disable=SC2046
-  if $build/fuzz/${t}_fuzz -max_total_time="$seconds" -timeout=20 -rss_limit_mb=3072 \
+  if $build/fuzz/${t}_fuzz -max_total_time="$seconds" -timeout=20 -rss_limit_mb=3072 -seed="$seed" \
     -max_len=16384 -print_final_stats=1 -artifact_prefix="$build/crashes/$t-" "${dict[@]}" \
     "$work" $(seeds "$t") >"$build/$t.log" 2>&1; then
     echo "fuzz $t: $(grep -E '^stat::number_of_executed_units' "$build/$t.log" | awk '{print $2}') runs in ${seconds} s, $(grep -oE 'cov: [0-9]+' "$build/$t.log" | tail -1), clean"
