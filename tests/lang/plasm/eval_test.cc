@@ -111,6 +111,15 @@ TEST(PlasmEval, RuntimeDiagnosticsArePositioned) {
             "evaluating it)");
 }
 
+// About six levels of the depth budget per recursive call (docs: "Budgets").
+TEST(PlasmEval, DepthBudgetAllowsAFewHundredRecursiveCalls) {
+  const std::string count =
+      "DEF count (n::IsNat) = IF:<C:EQ:0, K:0, K:1 + (count ~ C:+:-1)>:n;\n"
+      "DEF a = count:300;\nDEF b = count:400;\n";
+  EXPECT_EQ(value_of(count, "a"), "300");
+  EXPECT_EQ(value_of(count, "b").substr(0, 30), "t.psm:1:28: error[PSM412]: rec");
+}
+
 TEST(PlasmEval, BudgetsBoundRunawayPrograms) {
   const std::string loop = "DEF f (n) = f:(n + 1);\nDEF v = f:0;\n";
   EXPECT_EQ(value_of(loop, "v"),
