@@ -166,6 +166,7 @@ ValuePtr Context::native(std::string label, std::size_t arity, NativeFn fn, Sequ
   f.label = std::move(label);
   f.native = fn;
   f.arity = arity;
+  f.captured = bound.size();
   f.bound = std::move(bound);
   return function(std::move(f), at);
 }

@@ -50,9 +50,13 @@ void append_summary(std::string& out, const Value& value, int level) {
     case Kind::kFunction: {
       const Function& f = value.function();
       out += "<function " + f.label;
-      if (!f.bound.empty() && f.def != nullptr)
-        out +=
-            ", " + std::to_string(f.bound.size()) + " of " + std::to_string(f.arity) + " arguments";
+      if (f.bound.size() > f.captured) {
+        out += ", ";
+        out += std::to_string(f.bound.size() - f.captured);
+        out += " of ";
+        out += std::to_string(f.arity - f.captured);
+        out += " arguments";
+      }
       out += '>';
       return;
     }

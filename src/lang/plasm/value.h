@@ -36,6 +36,9 @@ struct Function {
   Env* env = nullptr;        // closures: the scope the definition lives in
   std::size_t arity = 1;     // arguments taken before it runs (bound ones included)
   Sequence bound;
+  // How many of `bound` make the function what it is (the f and g of f ~ g) rather than being
+  // arguments it was applied to; summaries count only the latter.
+  std::size_t captured = 0;
 };
 
 // The polyhedral complex of the geometry stage; this stage creates none.
@@ -73,7 +76,8 @@ std::string kind_name(Kind kind);
 
 // The value as the goldens show it: numbers in their shortest round-trip text, TRUE/FALSE,
 // strings quoted, sequences `<1, 2, 3>` (the first 16 elements, then `... (n elements)`), functions
-// `<function fact>` or `<function f, 1 of 2 arguments>`, nesting below 8 levels as `<...>`.
+// `<function fact>` or, applied to fewer arguments than they take, `<function f, 1 of 2
+// arguments>`; nesting below 8 levels as `<...>`.
 std::string summary(const Value& value);
 
 // Deep equality: numbers, truth values, strings and sequences by value, functions by identity.

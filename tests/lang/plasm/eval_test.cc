@@ -66,6 +66,17 @@ TEST(PlasmEval, FlToolbox) {
   EXPECT_EQ(eval_expr("AA:(IsSeqOf:IsIntPos):<<1, 2>, <1, 0>, 3>"), "<TRUE, FALSE, FALSE>");
 }
 
+// Partial applications count the arguments received; what makes a function (the f and g of
+// f ~ g) is not one.
+TEST(PlasmEval, FunctionSummaries) {
+  EXPECT_EQ(eval_expr("AA:SIN"), "<function AA, 1 of 2 arguments>");
+  EXPECT_EQ(eval_expr("C:+:1"), "<function C, 2 of 3 arguments>");
+  EXPECT_EQ(eval_expr("SIN ~ COS"), "<function ~>");
+  EXPECT_EQ(eval_expr("[ID, ID]"), "<function [2]>");
+  EXPECT_EQ(eval_expr("#:2"), "<function #>");
+  EXPECT_EQ(eval_expr("CUBOID"), "<function CUBOID>");
+}
+
 TEST(PlasmEval, CurriedGroupsAndPartialApplication) {
   const std::string program =
       "DEF f (a, b::IsNum)(c::IsSeq) = a * b + LEN:c;\n"
