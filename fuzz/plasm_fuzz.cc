@@ -1,10 +1,13 @@
-// libFuzzer target for the PLaSM front half (docs/plasm-language.md): lexer, parser, checker.
+// libFuzzer target for the PLaSM front-end (docs/plasm-language.md): lexer, parser, checker,
+// evaluator.
 // For any bytes:
 //   - parse() fails with at least one error, every diagnostic positioned and coded PSM, or
 //     succeeds with no error;
 //   - a parsed program dumps (ast_dump.h) to the same text when a comment is appended to the
 //     source (comments and trailing text change nothing), and the checker's diagnostics are
-//     positioned PSM3xx codes, with ok exactly when there is no error.
+//     positioned PSM3xx codes, with ok exactly when there is no error;
+//   - a checked program evaluates (with small budgets, so no input runs long) to values or to one
+//     positioned PSM4xx diagnostic, the same one on a second run.
 // Builds as fuzz/geojson_fuzz.cc: libFuzzer with clang and INSULA_FUZZ=ON, a replay main with
 // INSULA_FUZZ_REPLAY; tests/lang/plasm/plasm_fuzz_replay_test.cc includes it with
 // INSULA_FUZZ_NO_ENTRY.
@@ -19,6 +22,7 @@
 #include "base/diagnostic.h"
 #include "lang/plasm/ast_dump.h"
 #include "lang/plasm/checker.h"
+#include "lang/plasm/eval.h"
 #include "lang/plasm/parser.h"
 
 namespace insula::fuzz {
@@ -53,7 +57,21 @@ inline std::string check_plasm(std::string_view bytes) {
   const lang::plasm::CheckResult checked = lang::plasm::check(result.value(), source);
   if (checked.ok == base::has_errors(checked.diagnostics))
     return "check ok disagrees with its errors";
-  return check_diagnostics(checked.diagnostics, "PSM3");
+  if (!checked.ok) return check_diagnostics(checked.diagnostics, "PSM3");
+  lang::plasm::Budgets budgets;
+  budgets.steps = 20'000;
+  budgets.depth = 200;
+  budgets.cells = 100'000;
+  budgets.nesting = 50;
+  const auto values = lang::plasm::value_summaries(result.value(), source, budgets);
+  const auto again_values = lang::plasm::value_summaries(result.value(), source, budgets);
+  if (values.ok() != again_values.ok()) return "evaluation is not deterministic";
+  if (values.ok())
+    return values.value() == again_values.value() ? "" : "values differ between runs";
+  if (values.diagnostics().size() != 1) return "evaluation failed without exactly one diagnostic";
+  if (base::render(values.diagnostics()[0]) != base::render(again_values.diagnostics()[0]))
+    return "evaluation errors differ between runs";
+  return check_diagnostics(values.diagnostics(), "PSM4");
 }
 
 }  // namespace insula::fuzz

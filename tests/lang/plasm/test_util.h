@@ -8,6 +8,7 @@
 #include "base/diagnostic.h"
 #include "lang/plasm/ast_dump.h"
 #include "lang/plasm/checker.h"
+#include "lang/plasm/eval.h"
 #include "lang/plasm/parser.h"
 
 namespace insula::lang::plasm::testing {
@@ -31,6 +32,33 @@ inline std::string first_error(const std::string& text, const std::string& name 
   const CheckResult checked = check(result.value(), source);
   if (checked.diagnostics.empty()) return {};
   return base::render(checked.diagnostics.front());
+}
+
+// As first_error, then evaluating every statement in order (value_summaries).
+inline std::string first_run_error(const std::string& text, const std::string& name = "t.psm",
+                                   Budgets budgets = {}) {
+  const base::Source source(name, text);
+  const auto result = parse(source);
+  if (!result.ok()) return base::render(result.diagnostics().front());
+  const CheckResult checked = check(result.value(), source);
+  if (!checked.diagnostics.empty()) return base::render(checked.diagnostics.front());
+  const auto values = value_summaries(result.value(), source, budgets);
+  if (!values.ok()) return base::render(values.diagnostics().front());
+  return {};
+}
+
+// The value summary of the top-level DEF `name` of `text` (a whole program), or its first error.
+inline std::string value_of(const std::string& text, const std::string& name,
+                            Budgets budgets = {}) {
+  const base::Source source("t.psm", text);
+  const auto result = parse(source);
+  if (!result.ok()) return "error: " + base::render(result.diagnostics().front());
+  const CheckResult checked = check(result.value(), source);
+  if (!checked.diagnostics.empty()) return "error: " + base::render(checked.diagnostics.front());
+  Evaluator evaluator(result.value(), source, budgets);
+  const auto value = evaluator.value_of(name);
+  if (!value.ok()) return base::render(value.diagnostics().front());
+  return summary(*value.value());
 }
 
 // The one-line dump of the expression of `text`, a single expression statement (`;` appended).

@@ -1,0 +1,60 @@
+// The PLaSM evaluator (docs/plasm-language.md, "Evaluation"): evaluates a program that parse()
+// and check() accepted. Strict application, lazy memoised bindings (top-level DEFs and WHERE
+// locals, order-free), arithmetic lifted pointwise to functions, the FL toolbox of builtins.
+// Evaluation is bounded by Budgets; every runtime error is one positioned PSM4xx diagnostic.
+// Builtins that need polyhedra (CUBOID, STRUCT, MAP, ...) belong to the geometry stage: calling
+// one is PSM410.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "base/diagnostic.h"
+#include "lang/plasm/ast.h"
+#include "lang/plasm/value.h"
+
+namespace insula::lang::plasm {
+
+struct Budgets {
+  // Expression evaluations and function applications, in all (PSM411).
+  std::uint64_t steps = 10'000'000;
+  // Nested evaluations and applications at once: recursion depth (PSM412).
+  int depth = 2'000;
+  // Sequence elements and bindings created, in all: the memory budget (PSM413).
+  std::uint64_t cells = 4'000'000;
+  // How deeply sequences and partial applications may nest inside one value (PSM413).
+  int nesting = 500;
+};
+
+// Evaluates the statements and DEFs of one program on demand; values stay valid as long as the
+// evaluator (closures refer to its scopes). After an error the evaluator may still be asked
+// for other values; the budgets are shared by everything it evaluates.
+class Evaluator {
+ public:
+  Evaluator(const Program& program, const base::Source& source, Budgets budgets = {});
+  ~Evaluator();
+  Evaluator(const Evaluator&) = delete;
+  Evaluator& operator=(const Evaluator&) = delete;
+
+  // The value of the top-level DEF `name` (case-insensitive); a function DEF gives its closure.
+  base::Result<ValuePtr> value_of(std::string_view name);
+  // The value of statement `index` of the program (a DEF's value or an expression's).
+  base::Result<ValuePtr> statement(std::size_t index);
+  // `function:argument`, as the program would apply it (the error, if any, points at `at`).
+  base::Result<ValuePtr> apply(const ValuePtr& function, const ValuePtr& argument, Range at = {});
+  std::uint64_t steps_used() const;
+
+ private:
+  const Program& program_;
+  std::unique_ptr<Context> context_;
+};
+
+// The golden text of a program's values: one line per statement, `name = summary` for a DEF and
+// `line N = summary` for an expression, in source order. Fails with the first runtime error.
+base::Result<std::string> value_summaries(const Program& program, const base::Source& source,
+                                          Budgets budgets = {});
+
+}  // namespace insula::lang::plasm

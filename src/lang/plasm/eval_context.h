@@ -1,0 +1,115 @@
+// The evaluator's state, shared by eval.cc and the builtin implementations (toolbox.cc): scopes,
+// budgets, and the helpers natives use to apply functions, build values and report errors.
+// Internal to lang/plasm.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/diagnostic.h"
+#include "lang/plasm/ast.h"
+#include "lang/plasm/eval.h"
+#include "lang/plasm/value.h"
+
+namespace insula::lang::plasm {
+
+// Messages are joined by appending: GCC 12 reports a false -Wrestrict on "x" + std::string chains.
+std::string text(std::initializer_list<std::string_view> parts);
+
+// Thrown inside the evaluator only; the Evaluator's entry points turn it into a failed Result.
+struct EvalError {
+  base::Diagnostic diagnostic;
+};
+
+// A name in a scope: a parameter (value set), or a DEF / WHERE local evaluated on first use.
+struct Binding {
+  enum class State { kPending, kBusy, kDone };
+  std::string key;
+  const Def* def = nullptr;
+  ValuePtr value;
+  State state = State::kPending;
+};
+
+struct Env {
+  Env* parent = nullptr;
+  std::vector<Binding> bindings;
+};
+
+// A builtin this stage implements. `arity` counts curried arguments: AA:f:x takes 2.
+struct Native {
+  std::string_view name;
+  std::size_t arity;
+  NativeFn fn;
+};
+
+// The implemented builtins (toolbox.cc); find_native gives null when `key` is none of them.
+std::span<const Native> natives();
+const Native* find_native(std::string_view key);
+// PI, TRUE and FALSE; null for other keys.
+ValuePtr find_constant(std::string_view key);
+
+class Context;
+// `#:n:x` is <x, ..., x> (n times); with `cat`, `##:n:s` concatenates n copies of the sequence s.
+ValuePtr repeat(Context& context, const ValuePtr& n, const ValuePtr& x, bool cat, Range at);
+// `from .. to`: the integers from `from` to `to` (empty when to < from); `who` names the caller.
+ValuePtr fromto(Context& context, const ValuePtr& from, const ValuePtr& to, std::string_view who,
+                Range at);
+
+class Context {
+ public:
+  Context(const base::Source& source, Budgets budgets) : source_(source), budgets_(budgets) {}
+
+  [[noreturn]] void fail(const char* code, std::string message, Range at) const;
+
+  ValuePtr eval(const Expr& expr, Env* env);
+  ValuePtr apply(const ValuePtr& function, const ValuePtr& argument, Range at);
+  // `a op b` on numbers, lifted to functions (a number beside a function acts as a constant).
+  ValuePtr binary(Op op, const ValuePtr& a, const ValuePtr& b, Range at);
+  // The value of a name: a binding of `env` or an enclosing scope, else a builtin.
+  ValuePtr lookup(const std::string& key, const std::string& text, Env* env, Range at);
+  ValuePtr force(Binding& binding, Env* env, Range at);
+
+  // Values built through the context count against the memory and nesting budgets.
+  ValuePtr sequence(Sequence elements, Range at);
+  ValuePtr function(Function function, Range at);
+  ValuePtr native(std::string label, std::size_t arity, NativeFn fn, Sequence bound, Range at);
+  Env* new_env(Env* parent, std::size_t bindings, Range at);
+  // Counts `cells` against the memory budget before they are allocated (PSM413).
+  void charge(double cells, Range at);
+
+  // Argument checks shared by the builtins; they name `who` in the message.
+  double number(const ValuePtr& v, std::string_view who, Range at) const;
+  const Sequence& seq(const ValuePtr& v, std::string_view who, Range at) const;
+  const Sequence& seq_of(const ValuePtr& v, std::size_t count, std::string_view who,
+                         Range at) const;
+  bool truth(const ValuePtr& v, std::string_view who, Range at) const;
+  // A number checked to be finite (PSM406), for arithmetic results.
+  ValuePtr result(double value, std::string_view who, Range at) const;
+
+  std::string text_of(Range range) const;
+  std::uint64_t steps() const { return steps_; }
+  Env* top() { return &top_; }
+
+ private:
+  void step(Range at);
+  ValuePtr shallow(ValuePtr value, Range at) const;  // PSM413 past the nesting budget
+  ValuePtr call(const ValuePtr& closure, const ValuePtr& argument, Range at);
+  void bind_group(Env* env, const Def& def, std::size_t group, const ValuePtr& argument, Range at);
+  void check_group(const Def& def, std::size_t group, Env* earlier, Env* bound, Range at);
+
+  friend struct DepthGuard;
+  const base::Source& source_;
+  Budgets budgets_;
+  std::uint64_t steps_ = 0;
+  std::uint64_t cells_ = 0;
+  int depth_ = 0;
+  Env top_;
+  std::vector<std::unique_ptr<Env>> envs_;
+};
+
+}  // namespace insula::lang::plasm
