@@ -146,9 +146,15 @@ class ExprPrinter {
         out_ += '\'';
         break;
     }
-    // A nested prefix gets parentheses: `--x` would be fine, but `-` followed by `->`-like
-    // spellings is not worth reasoning about.
+    // A nested prefix operator is separated by a space (`- -x`: `--x` could read as an arrow's
+    // start), not parenthesised: parentheses are a nesting level each, so a chain of prefixes
+    // the parser accepted would print as one nested twice as deep, past its limit (found by
+    // cga_fuzz). A negative number literal keeps its parentheses, so that it stays one literal.
     const Expr& inner = *e.operands[0];
+    if (inner.kind == ExprKind::kUnary && inner.unary_op != UnaryOp::kNot) {
+      out_ += ' ';
+      return operand(inner, kUnaryLevel);
+    }
     operand(inner, level_of(inner) == kUnaryLevel ? kPostfixLevel : kUnaryLevel);
   }
 

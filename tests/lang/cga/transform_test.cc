@@ -129,7 +129,7 @@ TEST(CgaPrinter, ParenthesesOnlyWherePrecedenceNeedsThem) {
       {"1: A : (a - b) - c ~> B", "1: A : a - b - c ~> B\n"},
       {"1: A : not (x == 1) or y and z ~> B", "1: A : !(x == 1) || y && z ~> B\n"},
       {"1: A : (x or y) and z ~> B", "1: A : (x || y) && z ~> B\n"},
-      {"1: A : - -x < -(2 * y) ~> B", "1: A : -(-x) < -(2 * y) ~> B\n"},
+      {"1: A : - -x < -(2 * y) ~> B", "1: A : - -x < -(2 * y) ~> B\n"},
       {"1: A : (a < b) == true ~> B", "1: A : (a < b) == true ~> B\n"},
       {"1: A : Shape.occ(\"all\") <> \"no\\\"ne\" ~> B",
        "1: A : Shape.occ(\"all\") != \"no\\\"ne\" ~> B\n"},
