@@ -110,9 +110,12 @@ done
 [ $interrupted_runs -gt 0 ] || fail "no run at a spread of delays was interrupted"
 
 # The end of a run (commit, the return from main, freeing the scene) under a stream of signals: a
-# signal there once killed the process after the commit (new files, exit 130 from the kill). A
-# small city, signalled without pause from a random start until the process is gone (a
-# signal before main installs the handlers kills it, which is fine: nothing was written yet).
+# signal there once killed the process after the commit (new files, exit 130 from the kill; seen
+# once in CI under load). The window was too short for this loop to hit it here in 20 runs with
+# the old code, so it checks the invariant (all old or all new) rather than reproducing that bug;
+# the fix is structural (interrupt.h: the handlers are never uninstalled). A small city,
+# signalled without pause from a random start until the process is gone (a signal before main
+# installs the handlers kills it, which is fine: nothing was written yet).
 head -c 20000 "$tmp/city.geojson" | sed 's/,{"type": "Feature"[^]]*$//' >"$tmp/small.geojson"
 echo ']}' >>"$tmp/small.geojson"
 for run in $(seq 20); do
