@@ -34,8 +34,9 @@ shape::Value parse_value(const std::string& text) {
 
 void add_build_command(CLI::App& app, BuildOptions& options) {
   CLI::App* build = app.add_subcommand(
-      "build", "build a grammar or program: .cga (CGA grammar), .bldg (building grammar), .lua");
-  build->add_option("INPUT", options.input, "a .cga, .bldg or .lua file")->required();
+      "build", "build a grammar or program: .cga (CGA grammar), .bldg (building grammar), .lua, "
+      ".psm (PLaSM)");
+  build->add_option("INPUT", options.input, "a .cga, .bldg, .lua or .psm file")->required();
   build->add_option("-o,--output", options.outputs,
                     "output file, format by extension (.obj .glb .gltf .city.json .svg .png); "
                     "repeatable; none: derive and report only");
@@ -59,15 +60,8 @@ int run_build(const BuildOptions& options) {
   if (has_suffix(options.input, ".cga")) return build_cga(options);
   if (has_suffix(options.input, ".bldg")) return build_bldg(options);
   if (has_suffix(options.input, ".lua")) return build_lua(options);
-  if (has_suffix(options.input, ".psm")) {
-    // Issue 13 lands in stages: the front half (`insula check`) comes first.
-    std::fprintf(stderr,
-                 "insula: %s: the PLaSM evaluator is not there yet; `insula check` parses and "
-                 "checks .psm files\n",
-                 options.input.c_str());
-    return kExitInput;
-  }
-  std::fprintf(stderr, "insula: %s: unknown input type (use .cga, .bldg or .lua)\n",
+  if (has_suffix(options.input, ".psm")) return build_plasm(options);
+  std::fprintf(stderr, "insula: %s: unknown input type (use .cga, .bldg, .lua or .psm)\n",
                options.input.c_str());
   return kExitUsage;
 }

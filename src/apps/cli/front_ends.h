@@ -15,6 +15,7 @@ namespace insula::cli {
 int build_cga(const BuildOptions& options);
 int build_bldg(const BuildOptions& options);
 int build_lua(const BuildOptions& options);
+int build_plasm(const BuildOptions& options);
 
 // `insula check`: a one-line summary of what was checked, or nullopt when the input has errors
 // (diagnostics already printed; warnings too unless `quiet`).

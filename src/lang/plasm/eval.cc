@@ -6,6 +6,7 @@
 #include "base/format.h"
 #include "lang/plasm/builtins.h"
 #include "lang/plasm/eval_context.h"
+#include "lang/plasm/geometry.h"
 
 namespace insula::lang::plasm {
 
@@ -257,11 +258,9 @@ ValuePtr Context::binary(Op op, const ValuePtr& a, const ValuePtr& b, Range at) 
   if (numeric && (a->is_function() || b->is_function()) && (a->is_function() || a->is_number()) &&
       (b->is_function() || b->is_number()))
     return native(name, 4, lifted_fn, Sequence{make_number(static_cast<int>(op)), a, b}, at);
-  if (a->kind() == Kind::kPolyhedron || b->kind() == Kind::kPolyhedron)
-    fail("PSM410",
-         text({std::string("'"), name,
-               "' of polyhedra needs the geometry stage (not implemented yet)"}),
-         at);
+  if (a->is_polyhedron() && b->is_polyhedron() &&
+      (op == Op::kAdd || op == Op::kSub || op == Op::kMul))
+    return polyhedron_binary(*this, op, a, b, at);
   fail("PSM402",
        text({std::string("'"), name, "' needs numbers or functions, found ", kind_name(a->kind()),
              " ", summary(*a), " and ", kind_name(b->kind()), " ", summary(*b)}),
@@ -305,7 +304,7 @@ ValuePtr Context::force(Binding& binding, Env* env, Range at) {
       for (const Def& local : def.locals)
         scope->bindings.push_back(Binding{local.key, &local, {}, {}});
     }
-    binding.value = eval(*def.body, scope);
+    binding.value = labelled(eval(*def.body, scope), def, env == &top_);
   } catch (...) {
     binding.state = Binding::State::kPending;
     throw;
@@ -460,7 +459,14 @@ ValuePtr Context::call(const ValuePtr& closure, const ValuePtr& x, Range at) {
     for (const Def& local : def.locals)
       scope->bindings.push_back(Binding{local.key, &local, {}, {}});
   }
-  return eval(*def.body, scope);
+  return labelled(eval(*def.body, scope), def, f.env == &top_);
+}
+
+// A polyhedron a DEF or WHERE local gives carries its name, so the output names its parts
+// (docs/plasm-language.md, "Output"); top-level DEFs name parts, locals only paths.
+ValuePtr Context::labelled(ValuePtr value, const Def& def, bool top_level) {
+  if (!value->is_polyhedron()) return value;
+  return make_polyhedron(make_labelled(value->polyhedron(), def.name, top_level));
 }
 
 Evaluator::Evaluator(const Program& program, const base::Source& source, Budgets budgets)

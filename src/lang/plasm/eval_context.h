@@ -100,6 +100,7 @@ class Context {
   ValuePtr shallow(ValuePtr value, Range at) const;  // PSM413 past the nesting budget
   ValuePtr call(const ValuePtr& closure, const ValuePtr& argument, Range at);
   void bind_group(Env* env, const Def& def, std::size_t group, const ValuePtr& argument, Range at);
+  ValuePtr labelled(ValuePtr value, const Def& def, bool top_level);
   void check_group(const Def& def, std::size_t group, Env* earlier, Env* bound, Range at);
 
   friend struct DepthGuard;

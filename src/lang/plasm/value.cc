@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "base/format.h"
+#include "lang/plasm/polyhedron.h"
 
 namespace insula::lang::plasm {
 namespace {
@@ -61,7 +62,8 @@ void append_summary(std::string& out, const Value& value, int level) {
       return;
     }
     case Kind::kPolyhedron:
-      out += "<polyhedron>";
+      out += "<polyhedron " + std::to_string(value.polyhedron()->dim) + "D, " +
+             std::to_string(cell_count(*value.polyhedron())) + " cells>";
       return;
   }
 }
@@ -88,6 +90,10 @@ ValuePtr make_sequence(Sequence elements) {
 ValuePtr make_function(Function function) {
   const int depth = depth_of(function.bound);
   return std::make_shared<const Value>(Value{std::move(function), depth});
+}
+
+ValuePtr make_polyhedron(std::shared_ptr<const Polyhedron> polyhedron) {
+  return std::make_shared<const Value>(Value{std::move(polyhedron), 0});
 }
 
 std::string kind_name(Kind kind) {

@@ -41,7 +41,7 @@ struct Function {
   std::size_t captured = 0;
 };
 
-// The polyhedral complex of the geometry stage; this stage creates none.
+// A hierarchical polyhedral complex (polyhedron.h).
 struct Polyhedron;
 
 enum class Kind { kNumber, kBool, kString, kSequence, kFunction, kPolyhedron };
@@ -63,6 +63,10 @@ struct Value {
   const std::string& string() const { return std::get<std::string>(data); }
   const Sequence& sequence() const { return std::get<Sequence>(data); }
   const Function& function() const { return std::get<Function>(data); }
+  bool is_polyhedron() const { return kind() == Kind::kPolyhedron; }
+  const std::shared_ptr<const Polyhedron>& polyhedron() const {
+    return std::get<std::shared_ptr<const Polyhedron>>(data);
+  }
 };
 
 ValuePtr make_number(double value);
@@ -70,6 +74,7 @@ ValuePtr make_bool(bool value);
 ValuePtr make_string(std::string value);
 ValuePtr make_sequence(Sequence elements);
 ValuePtr make_function(Function function);
+ValuePtr make_polyhedron(std::shared_ptr<const Polyhedron> polyhedron);
 
 // "a number", "a sequence", ... for messages.
 std::string kind_name(Kind kind);
@@ -77,7 +82,8 @@ std::string kind_name(Kind kind);
 // The value as the goldens show it: numbers in their shortest round-trip text, TRUE/FALSE,
 // strings quoted, sequences `<1, 2, 3>` (the first 16 elements, then `... (n elements)`), functions
 // `<function fact>` or, applied to fewer arguments than they take, `<function f, 1 of 2
-// arguments>`; nesting below 8 levels as `<...>`.
+// arguments>`, polyhedra `<polyhedron 3D, 6 cells>` (cells of every instance counted); nesting
+// below 8 levels as `<...>`.
 std::string summary(const Value& value);
 
 // Deep equality: numbers, truth values, strings and sequences by value, functions by identity.

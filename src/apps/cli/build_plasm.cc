@@ -1,0 +1,67 @@
+// `insula build FILE.psm [-o OUT]... [--report R.json]`: parses, checks and evaluates a PLaSM
+// program (seed 002) and writes the polyhedra its expression statements give
+// (docs/plasm-language.md, "Output").
+#include <cstdio>
+
+#include "apps/cli/exit_codes.h"
+#include "apps/cli/front_ends.h"
+#include "apps/cli/input_file.h"
+#include "apps/cli/interrupt.h"
+#include "apps/cli/stopwatch.h"
+#include "lang/plasm/checker.h"
+#include "lang/plasm/output.h"
+#include "lang/plasm/parser.h"
+
+namespace insula::cli {
+
+int build_plasm(const BuildOptions& options) {
+  const Stopwatch total;
+  if (const int code = check_build_outputs(options); code != kExitDone) return code;
+  const std::optional<std::string> text = read_input_file(options.input);
+  if (!text) {
+    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(),
+                 read_failure(options.input).c_str());
+    return kExitInput;
+  }
+  const base::Source source(options.input, *text);
+  base::Result<lang::plasm::Program> program = lang::plasm::parse(source);
+  if (!program.ok()) {
+    print_diagnostics(program.diagnostics(), source, options.quiet);
+    return kExitInput;
+  }
+  const lang::plasm::CheckResult checked = lang::plasm::check(program.value(), source);
+  print_diagnostics(checked.diagnostics, source, options.quiet);
+  if (!checked.ok) return kExitInput;
+  nlohmann::json report;
+  Stopwatch stage;
+  base::Result<lang::plasm::ProgramOutput> output =
+      lang::plasm::program_scene(program.value(), source);
+  report["seconds"]["evaluate"] = stage.seconds();
+  if (const int code = stop_if_interrupted(); code != 0) return code;
+  if (!output.ok()) {
+    print_diagnostics(output.diagnostics(), source, options.quiet);
+    return kExitInput;
+  }
+  const lang::plasm::ProgramOutput& out = output.value();
+  std::size_t parts = 0;
+  std::size_t triangles = 0;
+  for (const shape::Building& b : out.scene.buildings) {
+    parts += b.parts.size();
+    for (const shape::Part& p : b.parts) triangles += p.mesh.triangle_count();
+  }
+  if (out.stats.skipped_cells > 0 && !options.quiet)
+    std::fprintf(stderr,
+                 "%s: warning: %zu cells not drawn (points, segments, or cells in 4D and more)\n",
+                 options.input.c_str(), out.stats.skipped_cells);
+  report["input"] = options.input;
+  report["steps"] = out.steps;
+  report["buildings"] = out.scene.buildings.size();
+  report["parts"] = parts;
+  report["triangles"] = triangles;
+  report["cells"] = {{"solid", out.stats.solid_cells},
+                     {"surface", out.stats.surface_cells},
+                     {"not_drawn", out.stats.skipped_cells}};
+  return finish_build(options, out.scene, report, total);
+}
+
+}  // namespace insula::cli

@@ -1,0 +1,143 @@
+// Booleans of polyhedra (seed 002, §2: `+` and `-` on polyhedra; the library's UNION,
+// INTERSECTION, DIFFERENCE, XOR) by the kernel's 3D booleans (CGAL corefinement): the result is
+// one merged, closed, outward 2-manifold kept as a solid, where pyplasm leaves unmerged convex
+// cells classified by random rays. Operands are 3D solids: convex cells of three dimensions (a
+// conforming complex is one shell, other complexes are united cell by cell first) and earlier
+// booleans' results.
+#include <string>
+#include <utility>
+
+#include "kernel/boolean3d.h"
+#include "lang/plasm/complex_mesh.h"
+#include "lang/plasm/geometry.h"
+
+namespace insula::lang::plasm {
+namespace {
+
+[[noreturn]] void boolean_failure(Context& c, std::string_view who, const std::string& why,
+                                  Range at) {
+  c.fail("PSM415", text({"'", who, "' failed: ", why}), at);
+}
+
+kernel::Mesh combine(Context& c, const kernel::Mesh& a, const kernel::Mesh& b, kernel::BooleanOp op,
+                     std::string_view who, Range at) {
+  if (a.empty()) return op == kernel::BooleanOp::kUnion ? b : kernel::Mesh{};
+  if (b.empty()) return op == kernel::BooleanOp::kIntersection ? kernel::Mesh{} : a;
+  kernel::Boolean3dResult r = kernel::boolean3d(a, b, op);
+  if (r.status != kernel::Boolean3dStatus::kOk) boolean_failure(c, who, r.message, at);
+  return std::move(r.mesh);
+}
+
+// The closed mesh bounding a polyhedron's solid cells and solids. A conforming complex (cells
+// that meet in whole faces) is one shell at once; `cellwise` unites the cells one by one instead,
+// for complexes whose cells overlap or meet in part of a face.
+kernel::Mesh operand(Context& c, const PolyPtr& p, bool cellwise, std::string_view who, Range at) {
+  const FlatComplex flat = flatten_cells(*p);
+  if (flat.dim > 3)
+    c.fail("PSM415", text({"'", who, "' works on solids in 3D, found a polyhedron in ",
+                           std::to_string(flat.dim), "D"}),
+           at);
+  c.charge(static_cast<double>(flat.cells.size()) * 8, at);
+  MeshStats stats;
+  kernel::Mesh out;
+  if (cellwise) {
+    for (std::uint32_t k = 0; k < flat.cells.size(); ++k) {
+      const std::uint32_t one[] = {k};
+      out = combine(c, out, complex_mesh(flat, one, {}, stats), kernel::BooleanOp::kUnion, who, at);
+    }
+  } else {
+    out = complex_mesh(flat, {}, {}, stats);
+  }
+  if (stats.surface_cells + stats.skipped_cells > 0)
+    c.fail("PSM415",
+           text({"'", who, "' works on solids; an operand has ",
+                 std::to_string(stats.surface_cells + stats.skipped_cells),
+                 " cells of fewer than 3 dimensions"}),
+           at);
+  for (const kernel::Mesh& solid : flat.solids)
+    out = combine(c, out, solid, kernel::BooleanOp::kUnion, who, at);
+  return out;
+}
+
+bool malformed(const kernel::Boolean3dResult& r) {
+  return r.status == kernel::Boolean3dStatus::kSelfIntersecting ||
+         r.status == kernel::Boolean3dStatus::kNotClosed;
+}
+
+// acc op operands[i]..., retrying an operand cell by cell when its one-shell mesh is no valid
+// operand (the first operand too, while acc is still that operand's own mesh).
+kernel::Mesh fold(Context& c, const std::vector<PolyPtr>& operands, kernel::BooleanOp op,
+                  std::string_view who, Range at) {
+  kernel::Mesh acc = operand(c, operands.front(), false, who, at);
+  for (std::size_t i = 1; i < operands.size(); ++i) {
+    kernel::Mesh next = operand(c, operands[i], false, who, at);
+    if (!acc.empty() && !next.empty()) {
+      kernel::Boolean3dResult r = kernel::boolean3d(acc, next, op);
+      if (r.status == kernel::Boolean3dStatus::kOk) {
+        acc = std::move(r.mesh);
+        continue;
+      }
+      if (!malformed(r)) boolean_failure(c, who, r.message, at);
+      if (i == 1) acc = operand(c, operands.front(), true, who, at);
+      next = operand(c, operands[i], true, who, at);
+    }
+    acc = combine(c, acc, next, op, who, at);
+  }
+  return acc;
+}
+
+ValuePtr solid_value(Context& c, kernel::Mesh mesh, Range at) {
+  c.charge(static_cast<double>(mesh.face_count()), at);
+  if (mesh.empty()) return polyhedron_value(c, make_leaf(3, {}, {}), at);
+  return polyhedron_value(c, make_solid(std::move(mesh)), at);
+}
+
+std::vector<PolyPtr> operands(Context& c, const ValuePtr& v, std::string_view who, Range at) {
+  std::vector<PolyPtr> out;
+  for (const ValuePtr& e : c.seq(v, who, at)) out.push_back(polyhedron(c, e, who, at));
+  if (out.empty()) c.fail("PSM407", text({"'", who, "' of an empty sequence"}), at);
+  return out;
+}
+
+template <kernel::BooleanOp kOp>
+ValuePtr boolean_fn(Context& c, const Function& self, Args a, Range at) {
+  return solid_value(c, fold(c, operands(c, a[0], self.label, at), kOp, self.label, at), at);
+}
+
+// XOR: what lies in an odd number of the operands, (a - b) + (b - a) folded.
+ValuePtr xor_fn(Context& c, const Function&, Args a, Range at) {
+  const std::vector<PolyPtr> ps = operands(c, a[0], "XOR", at);
+  kernel::Mesh acc = fold(c, {ps.front()}, kernel::BooleanOp::kUnion, "XOR", at);
+  for (std::size_t i = 1; i < ps.size(); ++i) {
+    const kernel::Mesh next = fold(c, {ps[i]}, kernel::BooleanOp::kUnion, "XOR", at);
+    kernel::Mesh left = combine(c, acc, next, kernel::BooleanOp::kDifference, "XOR", at);
+    kernel::Mesh right = combine(c, next, acc, kernel::BooleanOp::kDifference, "XOR", at);
+    acc = combine(c, left, right, kernel::BooleanOp::kUnion, "XOR", at);
+  }
+  return solid_value(c, std::move(acc), at);
+}
+
+const Native kBoolean[] = {
+    {"DIFFERENCE", 1, boolean_fn<kernel::BooleanOp::kDifference>},
+    {"INTERSECTION", 1, boolean_fn<kernel::BooleanOp::kIntersection>},
+    {"UNION", 1, boolean_fn<kernel::BooleanOp::kUnion>},
+    {"XOR", 1, xor_fn},
+};
+
+}  // namespace
+
+ValuePtr polyhedron_binary(Context& c, Op op, const ValuePtr& a, const ValuePtr& b, Range at) {
+  const PolyPtr& p = a->polyhedron();
+  const PolyPtr& q = b->polyhedron();
+  if (op == Op::kMul) return product(c, p, q, at);
+  const char* who = op == Op::kAdd ? "+" : "-";
+  const kernel::BooleanOp kind =
+      op == Op::kAdd ? kernel::BooleanOp::kUnion : kernel::BooleanOp::kDifference;
+  return solid_value(c, fold(c, {p, q}, kind, who, at), at);
+}
+
+std::span<const Native> boolean_natives() {
+  return kBoolean;
+}
+
+}  // namespace insula::lang::plasm

@@ -1,0 +1,182 @@
+#include "lang/plasm/complex_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+#include <vector>
+
+#include "kernel/convex_hull.h"
+
+namespace insula::lang::plasm {
+namespace {
+
+using kernel::Vec2;
+using kernel::Vec3;
+
+// Mesh vertices by position, rounded to a nanometre grid: coordinates that differ by rounding
+// only (cos 2 pi against cos 0 on a closed MAP seam) become one vertex.
+class Welder {
+ public:
+  explicit Welder(kernel::Mesh& mesh) : mesh_(mesh) {}
+
+  std::uint32_t vertex(Vec3 p) {
+    const Key key{snap(p.x), snap(p.y), snap(p.z)};
+    const auto [it, added] = index_.emplace(key, 0U);
+    if (added) it->second = mesh_.add_vertex(p);
+    return it->second;
+  }
+
+ private:
+  struct Key {
+    std::int64_t x, y, z;
+    bool operator==(const Key&) const = default;
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      std::uint64_t h = static_cast<std::uint64_t>(k.x) * 0x9E3779B97F4A7C15ULL;
+      h ^= static_cast<std::uint64_t>(k.y) + 0x632BE59BD9B4E019ULL + (h << 6) + (h >> 2);
+      h ^= static_cast<std::uint64_t>(k.z) + 0x8CB92BA72F3D8DD7ULL + (h << 6) + (h >> 2);
+      return static_cast<std::size_t>(h);
+    }
+  };
+  static std::int64_t snap(double x) {
+    return std::abs(x) < 1e9 ? std::llround(x * 1e9) : static_cast<std::int64_t>(x * 1e3);
+  }
+
+  kernel::Mesh& mesh_;
+  std::unordered_map<Key, std::uint32_t, Hash> index_;
+};
+
+// A face loop up to rotation: rotated to start at its least vertex.
+std::vector<std::uint32_t> canonical(std::vector<std::uint32_t> loop) {
+  std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+  return loop;
+}
+
+std::vector<std::uint32_t> reversed(std::vector<std::uint32_t> loop) {
+  std::reverse(loop.begin(), loop.end());
+  return canonical(std::move(loop));
+}
+
+// Faces of solid cells, waiting for their twins: a face met again with the opposite side lies
+// between two cells and is dropped.
+class Boundary {
+ public:
+  void add(std::vector<std::uint32_t> loop) {
+    loop = canonical(std::move(loop));
+    const auto twin = open_.find(reversed(loop));
+    if (twin != open_.end() && twin->second > 0) {
+      if (--twin->second == 0) open_.erase(twin);
+      return;
+    }
+    ++open_[loop];
+    order_.push_back(std::move(loop));
+  }
+
+  void emit(kernel::Mesh& mesh, kernel::FaceTag tag) {
+    for (const std::vector<std::uint32_t>& loop : order_) {
+      const auto it = open_.find(loop);
+      if (it == open_.end() || it->second == 0) continue;
+      --it->second;
+      mesh.add_face(loop, tag);
+    }
+  }
+
+ private:
+  std::map<std::vector<std::uint32_t>, int> open_;
+  std::vector<std::vector<std::uint32_t>> order_;  // first-seen order keeps the output stable
+};
+
+Vec3 newell(const std::vector<Vec3>& loop) {
+  Vec3 n{};
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Vec3 a = loop[i];
+    const Vec3 b = loop[(i + 1) % loop.size()];
+    n += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+  }
+  return n;
+}
+
+// A planar cell as one convex face: its points projected into their plane, hulled, and turned
+// to face along `preferred` (the cell's own winding, or +z for cells of the plane).
+bool add_planar(const std::vector<Vec3>& points, Vec3 preferred, Welder& welder,
+                kernel::Mesh& mesh, kernel::FaceTag tag) {
+  const Vec3 origin = points.front();
+  Vec3 far = origin;
+  for (const Vec3& p : points)
+    if (length(p - origin) > length(far - origin)) far = p;
+  Vec3 normal{};
+  for (const Vec3& p : points) {
+    const Vec3 n = cross(far - origin, p - origin);
+    if (length(n) > length(normal)) normal = n;
+  }
+  const double scale = length(far - origin);
+  if (scale == 0 || length(normal) <= 1e-12 * scale * scale) return false;
+  if (dot(normal, preferred) < 0) normal = -normal;
+  const Vec3 u = normalized(far - origin);
+  const Vec3 v = normalized(cross(normalized(normal), u));
+  std::vector<Vec2> flat;
+  flat.reserve(points.size());
+  for (const Vec3& p : points) flat.push_back({dot(p - origin, u), dot(p - origin, v)});
+  const kernel::Hull2Result hull = kernel::convex_hull_2d(flat);
+  if (!hull.ok()) return false;
+  std::vector<std::uint32_t> loop;
+  for (const Vec2& q : hull.ring) loop.push_back(welder.vertex(origin + u * q.x + v * q.y));
+  loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
+  while (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
+  if (loop.size() < 3) return false;
+  mesh.add_face(loop, tag);
+  return true;
+}
+
+}  // namespace
+
+kernel::Mesh complex_mesh(const FlatComplex& flat, std::span<const std::uint32_t> cells,
+                          kernel::FaceTag tag, MeshStats& stats) {
+  kernel::Mesh mesh;
+  Welder welder(mesh);
+  Boundary boundary;
+  const std::size_t count = cells.empty() ? flat.cells.size() : cells.size();
+  std::vector<Vec3> points;
+  for (std::size_t k = 0; k < count; ++k) {
+    const Cell& cell = flat.cells[cells.empty() ? k : cells[k]];
+    if (flat.dim > 3 || cell.size() < 3) {
+      ++stats.skipped_cells;
+      continue;
+    }
+    points.clear();
+    for (std::uint32_t v : cell) {
+      const double* p = flat.point(v);
+      points.push_back({p[0], flat.dim > 1 ? p[1] : 0.0, flat.dim > 2 ? p[2] : 0.0});
+    }
+    if (flat.dim == 3 && cell.size() >= 4) {
+      const kernel::Hull3Result hull = kernel::convex_hull_3d(points);
+      if (hull.ok()) {
+        ++stats.solid_cells;
+        for (std::size_t f = 0; f < hull.mesh.face_count(); ++f) {
+          std::vector<std::uint32_t> loop;
+          for (std::uint32_t v : hull.mesh.face(f)) loop.push_back(welder.vertex(hull.mesh.position(v)));
+          loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
+          while (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
+          if (loop.size() >= 3) boundary.add(std::move(loop));
+        }
+        continue;
+      }
+      if (hull.status != kernel::HullStatus::kCoplanar) {
+        ++stats.skipped_cells;
+        continue;
+      }
+    }
+    const Vec3 preferred = flat.dim < 3 ? Vec3{0, 0, 1} : newell(points);
+    if (add_planar(points, length(preferred) > 0 ? preferred : Vec3{0, 0, 1}, welder, mesh, tag)) {
+      ++stats.surface_cells;
+    } else {
+      ++stats.skipped_cells;
+    }
+  }
+  boundary.emit(mesh, tag);
+  return mesh;
+}
+
+}  // namespace insula::lang::plasm
