@@ -7,10 +7,10 @@
 #include <memory>
 #include <numeric>
 #include <optional>
-#include <set>
 #include <string>
 
 #include "base/union_find.h"
+#include "kernel/convex_hull.h"
 
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
@@ -86,14 +86,21 @@ AffineFrame frame_upto(std::span<const double> points, int n, double tolerance, 
 }
 
 // The points' coordinates in the frame, frame.dim per point.
-std::vector<double> local_points(const AffineFrame& frame, std::span<const double> points) {
+void project(const AffineFrame& frame, const double* point, double* out) {
   const int n = frame.space_dim;
-  std::vector<double> local;
-  local.reserve(points.size() / n * frame.dim);
-  for (std::size_t i = 0; i + n <= points.size(); i += n) {
-    const std::vector<double> p = frame.local(points.subspan(i, n));
-    local.insert(local.end(), p.begin(), p.end());
+  for (int b = 0; b < frame.dim; ++b) {
+    const double* axis = frame.basis.data() + static_cast<std::size_t>(b) * n;
+    double sum = 0;
+    for (int c = 0; c < n; ++c) sum += (point[c] - frame.origin[c]) * axis[c];
+    out[b] = sum;
   }
+}
+
+std::vector<double> local_points(const AffineFrame& frame, std::span<const double> points) {
+  const std::size_t n = frame.space_dim, count = points.size() / n;
+  std::vector<double> local(count * frame.dim);
+  for (std::size_t i = 0; i < count; ++i)
+    project(frame, points.data() + i * n, local.data() + i * frame.dim);
   return local;
 }
 
@@ -185,6 +192,40 @@ std::vector<IndexSet> polygon_edges(const std::vector<double>& coords, double to
   return edges;
 }
 
+// The faces of a solid from the kernel's own quickhull (convex_hull.h), which merges coplanar
+// triangles like Qhull's 'C-' but costs a tenth of a Qhull run on a box (docs/kernel-polytopes.md).
+// Its mesh keeps the input positions exactly, so a sorted look-up names them by position again.
+std::vector<IndexSet> solid_faces(const std::vector<double>& coords, double tolerance) {
+  std::vector<Vec3> points;
+  for (std::size_t i = 0; i + 3 <= coords.size(); i += 3)
+    points.push_back({coords[i], coords[i + 1], coords[i + 2]});
+  HullOptions options;
+  options.tolerance = tolerance;
+  const Hull3Result hull = convex_hull_3d(points, options);
+  if (!hull.ok()) return {};
+  const auto key = [](Vec3 p) { return std::make_tuple(p.x, p.y, p.z); };
+  std::vector<PointIndex> sorted(points.size());
+  std::iota(sorted.begin(), sorted.end(), PointIndex{0});
+  std::sort(sorted.begin(), sorted.end(),
+            [&](PointIndex a, PointIndex b) { return key(points[a]) < key(points[b]); });
+  std::vector<PointIndex> input(hull.mesh.vertex_count());
+  for (std::uint32_t v = 0; v < input.size(); ++v) {
+    const Vec3 p = hull.mesh.position(v);
+    const auto it = std::lower_bound(sorted.begin(), sorted.end(), p,
+                                     [&](PointIndex a, Vec3 q) { return key(points[a]) < key(q); });
+    if (it == sorted.end() || key(points[*it]) != key(p)) return {};
+    input[v] = *it;
+  }
+  std::vector<IndexSet> faces;
+  for (std::size_t f = 0; f < hull.mesh.face_count(); ++f) {
+    IndexSet face;
+    for (std::uint32_t v : hull.mesh.face(f)) face.push_back(input[v]);
+    std::sort(face.begin(), face.end());
+    faces.push_back(std::move(face));
+  }
+  return faces;
+}
+
 // The facets of a j-dimensional polytope given by `coords` (j per point), as sets of positions:
 // one algorithm per dimension (the two extremes, the monotone chain, Qhull). Empty on failure.
 std::vector<IndexSet> facets_of(const std::vector<double>& coords, int j, double tolerance) {
@@ -196,6 +237,7 @@ std::vector<IndexSet> facets_of(const std::vector<double>& coords, int j, double
     return {{std::min(a, b)}, {std::max(a, b)}};
   }
   if (j == 2) return polygon_edges(coords, tolerance);
+  if (j == 3) return solid_faces(coords, tolerance);
   return qhull_facets(coords, j, tolerance).value_or(std::vector<IndexSet>{});
 }
 
@@ -212,40 +254,55 @@ class LatticeBuilder {
   // The true vertex set of the j-face whose candidate points are `members` (sorted), with
   // coordinates `coords` (j per member) in a frame of the face; nullopt when a step failed.
   std::optional<IndexSet> face(const IndexSet& members, const std::vector<double>& coords, int j) {
+    if (members.size() == static_cast<std::size_t>(j + 1)) return simplex(members);
+    const std::vector<IndexSet> facets = facets_of(coords, j, tolerance_);
+    if (facets.size() < static_cast<std::size_t>(j + 1)) return std::nullopt;
     IndexSet vertices;
-    if (j == 0) {
-      vertices = {members.front()};
-    } else {
-      const std::vector<IndexSet> facets = facets_of(coords, j, tolerance_);
-      if (facets.size() < static_cast<std::size_t>(j + 1)) return std::nullopt;
-      for (const IndexSet& positions : facets) {
-        const std::optional<IndexSet> facet = sub_face(members, coords, j, positions);
-        if (!facet) return std::nullopt;
-        vertices.insert(vertices.end(), facet->begin(), facet->end());
-      }
-      std::sort(vertices.begin(), vertices.end());
-      vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    for (const IndexSet& positions : facets) {
+      const std::optional<IndexSet> facet = sub_face(members, coords, j, positions);
+      if (!facet) return std::nullopt;
+      vertices.insert(vertices.end(), facet->begin(), facet->end());
     }
-    faces_[j].insert(vertices);
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    faces_[j].push_back(vertices);
     return vertices;
   }
 
-  std::vector<std::vector<IndexSet>> faces() const {
-    std::vector<std::vector<IndexSet>> out;
-    for (const std::set<IndexSet>& level : faces_) out.emplace_back(level.begin(), level.end());
-    return out;
+  // Every face once, each dimension's faces in lexicographic order.
+  std::vector<std::vector<IndexSet>> faces() && {
+    for (std::vector<IndexSet>& level : faces_) {
+      std::sort(level.begin(), level.end());
+      level.erase(std::unique(level.begin(), level.end()), level.end());
+    }
+    return std::move(faces_);
   }
 
  private:
+  // A face of j + 1 points spanning j dimensions is a simplex: every subset of its points is a
+  // face, so its lattice needs no geometry (most facets of hulls of scattered points).
+  IndexSet simplex(const IndexSet& members) {
+    const std::size_t count = members.size();
+    for (std::uint32_t mask = 1; mask < (1U << count); ++mask) {
+      IndexSet subset;
+      for (std::size_t b = 0; b < count; ++b) {
+        if (mask & (1U << b)) subset.push_back(members[b]);
+      }
+      faces_[subset.size() - 1].push_back(std::move(subset));
+    }
+    return members;
+  }
+
   std::optional<IndexSet> sub_face(const IndexSet& members, const std::vector<double>& coords,
                                    int j, const IndexSet& positions) {
     IndexSet sub;
+    for (PointIndex p : positions) sub.push_back(members[p]);
+    if (sub.size() == static_cast<std::size_t>(j)) return simplex(sub);
+    if (const auto it = memo_[j - 1].find(sub); it != memo_[j - 1].end()) return it->second;
     std::vector<double> sub_coords;
     for (PointIndex p : positions) {
-      sub.push_back(members[p]);
       sub_coords.insert(sub_coords.end(), coords.begin() + p * j, coords.begin() + (p + 1) * j);
     }
-    if (const auto it = memo_[j - 1].find(sub); it != memo_[j - 1].end()) return it->second;
     const AffineFrame frame = frame_upto(sub_coords, j, tolerance_, j - 1);
     if (frame.dim != j - 1) return std::nullopt;
     std::optional<IndexSet> vertices = face(sub, local_points(frame, sub_coords), j - 1);
@@ -254,8 +311,9 @@ class LatticeBuilder {
   }
 
   double tolerance_;
-  std::vector<std::map<IndexSet, IndexSet>> memo_;  // per dimension: candidate -> true vertices
-  std::vector<std::set<IndexSet>> faces_;           // per dimension, lexicographic
+  // Per dimension: candidate points -> true vertices, for the faces that are not simplices.
+  std::vector<std::map<IndexSet, IndexSet>> memo_;
+  std::vector<std::vector<IndexSet>> faces_;  // per dimension, with repeats until faces()
 };
 
 // The points that stand for themselves: of points within the tolerance of each other (in the
@@ -360,12 +418,7 @@ std::string_view hull_nd_status_message(HullNdStatus status) {
 
 std::vector<double> AffineFrame::local(std::span<const double> point) const {
   std::vector<double> out(std::max(dim, 0));
-  for (int b = 0; b < dim; ++b) {
-    double sum = 0;
-    for (int c = 0; c < space_dim; ++c)
-      sum += (point[c] - origin[c]) * basis[static_cast<std::size_t>(b) * space_dim + c];
-    out[b] = sum;
-  }
+  project(*this, point.data(), out.data());
   return out;
 }
 
@@ -396,7 +449,7 @@ PolytopeNd polytope_nd(std::span<const double> points, int n, double tolerance) 
     return result;
   }
   result.dim = frame.dim;
-  result.faces = builder.faces();
+  result.faces = std::move(builder).faces();
   return result;
 }
 
