@@ -1,11 +1,13 @@
 // Face lattices and pulling triangulations of the cells PLaSM builds: boxes of dimension 2..4 and
-// hulls of random points in the unit cube of R^3 (docs/kernel-polytopes.md gives the figures).
+// hulls of random points in the unit cube of R^3, and for comparison the surface hull alone
+// (argument 0: the box). docs/kernel-polytopes.md gives the figures.
 // Run: build/bench/hull_nd_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
 #include <random>
 #include <vector>
 
+#include "kernel/convex_hull.h"
 #include "kernel/hull_nd.h"
 
 namespace insula::kernel {
@@ -54,20 +56,16 @@ void BM_RandomHull3d(benchmark::State& state) {
 }
 BENCHMARK(BM_RandomHull3d)->Arg(20)->Arg(100);
 
+// The surface hull alone (the part of a solid's lattice that convex_hull_3d computes).
+void BM_SurfaceHull3d(benchmark::State& state) {
+  const std::vector<double> coords =
+      state.range(0) == 0 ? box(3) : random_points(static_cast<int>(state.range(0)));
+  std::vector<Vec3> points;
+  for (std::size_t i = 0; i < coords.size(); i += 3)
+    points.push_back({coords[i], coords[i + 1], coords[i + 2]});
+  for (auto _ : state) benchmark::DoNotOptimize(convex_hull_3d(points));
+}
+BENCHMARK(BM_SurfaceHull3d)->Arg(0)->Arg(100);
+
 }  // namespace
 }  // namespace insula::kernel
-#include "kernel/convex_hull.h"
-namespace insula::kernel {
-void BM_Surface(benchmark::State& state) {
-  std::vector<Vec3> v;
-  if (state.range(0) == 0) {
-    for (int i = 0; i < 8; ++i) v.push_back({double(i & 1) * 2, double((i >> 1) & 1) * 3, double(i >> 2) * 4});
-  } else {
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> u(0, 1);
-    for (int i = 0; i < 100; ++i) v.push_back({u(rng), u(rng), u(rng)});
-  }
-  for (auto _ : state) benchmark::DoNotOptimize(convex_hull_3d(v));
-}
-BENCHMARK(BM_Surface)->Arg(0)->Arg(100);
-}
