@@ -8,7 +8,7 @@ packages=(
   build-essential cmake ninja-build pkg-config clang-format
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libpolyclipping-dev nlohmann-json3-dev libtinygltf-dev libcli11-dev libfmt-dev libtbb-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libstb-dev liblua5.4-dev libpugixml-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libstb-dev liblua5.4-dev libpugixml-dev libqhull-dev
   libgoogle-perftools-dev libproj-dev proj-bin
   clang libclang-rt-dev llvm  # libFuzzer (scripts/fuzz.sh), llvm-symbolizer for sanitizer stacks
   assimp-utils libxml2-utils
