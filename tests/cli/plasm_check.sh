@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `insula check FILE.psm` (docs/plasm-language.md): every example passes with its summary line,
 # a bad program gets its exact diagnostic with the source line and caret and exit 1, -q keeps
-# errors, and `insula build FILE.psm` says in one line that the evaluator is not there yet.
+# errors, and `insula build FILE.psm` stops at the same diagnostics before writing anything.
 set -u
 insula=$1
 root=$2
@@ -49,11 +49,11 @@ code=$?
 [ $code -eq 1 ] || fail "syntax.psm exits $code"
 [ "$(cat err | grep -c error)" = 1 ] || fail "syntax.psm: $(cat err)"
 
-# No evaluator yet: build refuses in one line, exit 1, and writes nothing.
+# build runs the same checks first: the checker's error, exit 1, nothing written.
 "$insula" build column.psm -o out.obj >out 2>err
 code=$?
 [ $code -eq 1 ] || fail "build exits $code"
-[ "$(cat err)" = "insula: column.psm: the PLaSM evaluator is not there yet; \`insula check\` parses and checks .psm files" ] ||
+[ "$(head -1 err)" = "column.psm:3:36: error[PSM301]: unknown name 'd'; did you mean 'dm'?" ] ||
   fail "build message: $(cat err)"
 [ -e out.obj ] && fail "build wrote out.obj"
 

@@ -34,7 +34,8 @@ shape::Value parse_value(const std::string& text) {
 
 void add_build_command(CLI::App& app, BuildOptions& options) {
   CLI::App* build = app.add_subcommand(
-      "build", "build a grammar or program: .cga (CGA grammar), .bldg (building grammar), .lua, "
+      "build",
+      "build a grammar or program: .cga (CGA grammar), .bldg (building grammar), .lua, "
       ".psm (PLaSM)");
   build->add_option("INPUT", options.input, "a .cga, .bldg, .lua or .psm file")->required();
   build->add_option("-o,--output", options.outputs,

@@ -34,8 +34,9 @@ kernel::Mesh combine(Context& c, const kernel::Mesh& a, const kernel::Mesh& b, k
 kernel::Mesh operand(Context& c, const PolyPtr& p, bool cellwise, std::string_view who, Range at) {
   const FlatComplex flat = flatten_cells(*p);
   if (flat.dim > 3)
-    c.fail("PSM415", text({"'", who, "' works on solids in 3D, found a polyhedron in ",
-                           std::to_string(flat.dim), "D"}),
+    c.fail("PSM415",
+           text({"'", who, "' works on solids in 3D, found a polyhedron in ",
+                 std::to_string(flat.dim), "D"}),
            at);
   c.charge(static_cast<double>(flat.cells.size()) * 8, at);
   MeshStats stats;

@@ -100,8 +100,8 @@ Vec3 newell(const std::vector<Vec3>& loop) {
 
 // A planar cell as one convex face: its points projected into their plane, hulled, and turned
 // to face along `preferred` (the cell's own winding, or +z for cells of the plane).
-bool add_planar(const std::vector<Vec3>& points, Vec3 preferred, Welder& welder,
-                kernel::Mesh& mesh, kernel::FaceTag tag) {
+bool add_planar(const std::vector<Vec3>& points, Vec3 preferred, Welder& welder, kernel::Mesh& mesh,
+                kernel::FaceTag tag) {
   const Vec3 origin = points.front();
   Vec3 far = origin;
   for (const Vec3& p : points)
@@ -156,7 +156,8 @@ kernel::Mesh complex_mesh(const FlatComplex& flat, std::span<const std::uint32_t
         ++stats.solid_cells;
         for (std::size_t f = 0; f < hull.mesh.face_count(); ++f) {
           std::vector<std::uint32_t> loop;
-          for (std::uint32_t v : hull.mesh.face(f)) loop.push_back(welder.vertex(hull.mesh.position(v)));
+          for (std::uint32_t v : hull.mesh.face(f))
+            loop.push_back(welder.vertex(hull.mesh.position(v)));
           loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
           while (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
           if (loop.size() >= 3) boundary.add(std::move(loop));

@@ -152,9 +152,11 @@ ValuePtr splitcells_fn(Context& c, const Function&, Args a, Range at) {
       local.push_back(static_cast<std::uint32_t>(local.size()));
       points.insert(points.end(), flat.point(v), flat.point(v) + flat.dim);
     }
-    out.push_back(polyhedron_value(c, make_leaf(flat.dim, std::move(points), {std::move(local)}), at));
+    out.push_back(
+        polyhedron_value(c, make_leaf(flat.dim, std::move(points), {std::move(local)}), at));
   }
-  for (const kernel::Mesh& solid : flat.solids) out.push_back(polyhedron_value(c, make_solid(solid), at));
+  for (const kernel::Mesh& solid : flat.solids)
+    out.push_back(polyhedron_value(c, make_solid(solid), at));
   return c.sequence(std::move(out), at);
 }
 

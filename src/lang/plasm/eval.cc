@@ -4,7 +4,6 @@
 #include <utility>
 
 #include "base/format.h"
-#include "lang/plasm/builtins.h"
 #include "lang/plasm/eval_context.h"
 #include "lang/plasm/geometry.h"
 
@@ -100,11 +99,6 @@ ValuePtr operator_fn(Context& c, const Function& self, std::span<const ValuePtr>
   ValuePtr acc = items[0];
   for (std::size_t i = 1; i < items.size(); ++i) acc = c.binary(op, acc, items[i], at);
   return acc;
-}
-
-// A builtin of the geometry stage: named, checked, not yet evaluated.
-ValuePtr geometry_fn(Context& c, const Function& self, std::span<const ValuePtr>, Range at) {
-  c.fail("PSM410", text({"'", self.label, "' needs the geometry stage (not implemented yet)"}), at);
 }
 
 }  // namespace
@@ -275,8 +269,6 @@ ValuePtr Context::lookup(const std::string& key, const std::string& written, Env
   if (ValuePtr c = find_constant(key)) return c;
   if (const Native* n = find_native(key))
     return native(std::string(n->name), n->arity, n->fn, {}, at);
-  if (const Builtin* b = find_builtin(key))
-    return native(std::string(b->name), 1, geometry_fn, {}, at);
   fail("PSM301", text({"unknown name '", written, "'"}), at);
 }
 

@@ -44,8 +44,8 @@ std::vector<int> axes(Context& c, const ValuePtr& v, std::string_view who, Range
   for (double x : numbers(c, v, who, at)) {
     if (x != std::floor(x) || x < 1 || x > kMaxDimension)
       c.fail("PSM402",
-             text({"'", who, "' needs coordinate indices from 1 to ",
-                   std::to_string(kMaxDimension), ", found ", base::shortest_number(x)}),
+             text({"'", who, "' needs coordinate indices from 1 to ", std::to_string(kMaxDimension),
+                   ", found ", base::shortest_number(x)}),
              at);
     out.push_back(static_cast<int>(x) - 1);
   }
@@ -55,8 +55,10 @@ std::vector<int> axes(Context& c, const ValuePtr& v, std::string_view who, Range
 void cells_only(Context& c, const FlatComplex& flat, std::string_view who, Range at) {
   if (!flat.solids.empty())
     c.fail("PSM416",
-           text({"'", who, "' works on convex cells, and the result of a boolean is a solid "
-                 "without them (apply '", who, "' to the operands instead)"}),
+           text({"'", who,
+                 "' works on convex cells, and the result of a boolean is a solid "
+                 "without them (apply '",
+                 who, "' to the operands instead)"}),
            at);
 }
 
@@ -265,9 +267,8 @@ PolyPtr structure(Context& c, const Sequence& items, std::size_t from, Range at)
     }
     if (!item->is_function())
       c.fail("PSM402",
-             text({"'STRUCT' holds polyhedra and transformations, found ",
-                   kind_name(item->kind()), " ", summary(*item), " at position ",
-                   std::to_string(i + 1)}),
+             text({"'STRUCT' holds polyhedra and transformations, found ", kind_name(item->kind()),
+                   " ", summary(*item), " at position ", std::to_string(i + 1)}),
              at);
     Affine map;
     if (as_affine(c, item->function(), map, at)) {
@@ -292,8 +293,8 @@ ValuePtr embed_fn(Context& c, const Function&, Args a, Range at) {
   const auto extra = static_cast<int>(count_arg(c, a[0], kMaxDimension, "EMBED", at));
   const PolyPtr& p = polyhedron(c, a[1], "EMBED", at);
   if (p->dim + extra > kMaxDimension)
-    c.fail("PSM402", text({"'EMBED' would give more than ", std::to_string(kMaxDimension),
-                           " coordinates"}),
+    c.fail("PSM402",
+           text({"'EMBED' would give more than ", std::to_string(kMaxDimension), " coordinates"}),
            at);
   return polyhedron_value(c, make_placed(p, Affine::identity(p->dim + extra)), at);
 }

@@ -72,7 +72,8 @@ double orientation(const std::vector<const double*>& corners, int dim) {
         pivot = r;
     if (pivot != col) {
       for (int t = 0; t < dim; ++t)
-        std::swap(a[static_cast<std::size_t>(pivot * dim + t)], a[static_cast<std::size_t>(col * dim + t)]);
+        std::swap(a[static_cast<std::size_t>(pivot * dim + t)],
+                  a[static_cast<std::size_t>(col * dim + t)]);
       det = -det;
     }
     const double p = a[static_cast<std::size_t>(col * dim + col)];
@@ -105,7 +106,8 @@ Simplicial simplicial(Context& c, const FlatComplex& domain, std::string_view wh
   for (std::uint32_t v = 0; v < domain.point_count(); ++v) {
     std::vector<double> key(domain.point(v), domain.point(v) + d);
     for (double& x : key) x = x == 0.0 ? 0.0 : x;  // -0 and 0 are one point
-    index[v] = welded.emplace(std::move(key), static_cast<std::uint32_t>(welded.size())).first->second;
+    index[v] =
+        welded.emplace(std::move(key), static_cast<std::uint32_t>(welded.size())).first->second;
   }
   out.points.resize(welded.size() * d);
   std::vector<std::uint64_t> rank(welded.size());
@@ -189,8 +191,8 @@ ValuePtr point_value(Context& c, const double* x, int dim, Range at) {
 double number_result(Context& c, const ValuePtr& v, std::string_view who, Range at) {
   if (!v->is_number())
     c.fail("PSM402",
-           text({"'", who, "': a coordinate function gave ", kind_name(v->kind()), " ",
-                 summary(*v), ", not a number"}),
+           text({"'", who, "': a coordinate function gave ", kind_name(v->kind()), " ", summary(*v),
+                 ", not a number"}),
            at);
   if (!std::isfinite(v->number()))
     c.fail("PSM406", text({"'", who, "': a coordinate function gave no finite number"}), at);
@@ -215,14 +217,15 @@ ValuePtr map_fn(Context& c, const Function&, Args a, Range at) {
                at);
   } else if (!f->is_function()) {
     c.fail("PSM402",
-           text({"'MAP' needs a function or a sequence of functions, found ",
-                 kind_name(f->kind()), " ", summary(*f)}),
+           text({"'MAP' needs a function or a sequence of functions, found ", kind_name(f->kind()),
+                 " ", summary(*f)}),
            at);
   }
   if (domain.cells.empty()) return polyhedron_value(c, make_leaf(std::max(out_dim, 1), {}, {}), at);
   if (!f->is_sequence()) {
     // The dimension of the image: the length of the sequence f gives at a domain point.
-    const ValuePtr sample = c.apply(f, point_value(c, domain.point(domain.cells[0][0]), domain.dim, at), at);
+    const ValuePtr sample =
+        c.apply(f, point_value(c, domain.point(domain.cells[0][0]), domain.dim, at), at);
     out_dim = static_cast<int>(c.seq(sample, "MAP", at).size());
   }
   if (out_dim == 0 || out_dim > kMaxDimension)
@@ -234,11 +237,12 @@ ValuePtr map_fn(Context& c, const Function&, Args a, Range at) {
     const ValuePtr x = point_value(c, in, domain.dim, at);
     if (f->is_sequence()) {
       for (int i = 0; i < out_dim; ++i)
-        out[i] = number_result(c, c.apply(f->sequence()[static_cast<std::size_t>(i)], x, at),
-                               "MAP", at);
+        out[i] =
+            number_result(c, c.apply(f->sequence()[static_cast<std::size_t>(i)], x, at), "MAP", at);
       return;
     }
-    const Sequence& coords = c.seq(c.apply(f, x, at), "MAP", at);
+    const ValuePtr image = c.apply(f, x, at);
+    const Sequence& coords = c.seq(image, "MAP", at);
     if (static_cast<int>(coords.size()) != out_dim)
       c.fail("PSM402",
              text({"'MAP': the map gave ", std::to_string(coords.size()),
@@ -256,7 +260,8 @@ ValuePtr map_fn(Context& c, const Function&, Args a, Range at) {
 double control_coordinate(Context& c, const ValuePtr& p, std::size_t j, const ValuePtr& x,
                           Range at) {
   if (p->is_function()) {
-    const Sequence& coords = c.seq(c.apply(p, x, at), "BEZIER", at);
+    const ValuePtr image = c.apply(p, x, at);
+    const Sequence& coords = c.seq(image, "BEZIER", at);
     if (j >= coords.size())
       c.fail("PSM402", "'BEZIER': a control point function gave too few coordinates", at);
     return number_result(c, coords[j], "BEZIER", at);
@@ -291,8 +296,7 @@ ValuePtr bezier_fn(Context& c, const Function&, Args a, Range at) {
                  " ", summary(*a[0])}),
            at);
   const Sequence& controls = c.seq(a[1], "BEZIER", at);
-  if (controls.size() < 2)
-    c.fail("PSM402", "'BEZIER' needs at least two control points", at);
+  if (controls.size() < 2) c.fail("PSM402", "'BEZIER' needs at least two control points", at);
   std::size_t dim = 0;
   for (std::size_t i = 0; i < controls.size(); ++i) {
     const ValuePtr& p = controls[i];
@@ -360,8 +364,8 @@ std::vector<std::size_t> divisions(Context& c, const ValuePtr& v, std::size_t co
   }
   while (out.size() < count) out.push_back(1);
   if (out.size() != count)
-    c.fail("PSM402",
-           text({"'", who, "' needs ", std::to_string(count), " subdivision numbers"}), at);
+    c.fail("PSM402", text({"'", who, "' needs ", std::to_string(count), " subdivision numbers"}),
+           at);
   double cells = 1;
   for (std::size_t n : out) {
     if (n == 0) c.fail("PSM402", text({"'", who, "' needs subdivisions of at least 1"}), at);
@@ -460,8 +464,8 @@ ValuePtr cylinder_fn(Context& c, const Function&, Args a, Range at) {
 }
 
 const Native kMap[] = {
-    {"BEZIER", 2, bezier_fn},     {"CIRCLE", 2, circle_fn},     {"CYLINDER", 2, cylinder_fn},
-    {"MAP", 2, map_fn},           {"SPHERE", 2, sphere_fn},     {"TORUS", 2, torus_fn},
+    {"BEZIER", 2, bezier_fn},     {"CIRCLE", 2, circle_fn}, {"CYLINDER", 2, cylinder_fn},
+    {"MAP", 2, map_fn},           {"SPHERE", 2, sphere_fn}, {"TORUS", 2, torus_fn},
     {"TRUNCONE", 2, truncone_fn},
 };
 

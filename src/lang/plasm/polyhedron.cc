@@ -46,8 +46,7 @@ Affine Affine::widened(int k) const {
   if (k <= n) return *this;
   Affine w = identity(k);
   for (int r = 0; r < n; ++r) {
-    for (int col = 0; col < n; ++col)
-      w.m[static_cast<std::size_t>(r * (k + 1) + col)] = at(r, col);
+    for (int col = 0; col < n; ++col) w.m[static_cast<std::size_t>(r * (k + 1) + col)] = at(r, col);
     w.m[static_cast<std::size_t>(r * (k + 1) + k)] = at(r, n);
   }
   return w;
@@ -95,7 +94,8 @@ bool Affine::reverses_orientation() const {
     if (p == 0) return false;
     if (pivot != col) {
       for (int t = 0; t < n; ++t)
-        std::swap(a[static_cast<std::size_t>(pivot * n + t)], a[static_cast<std::size_t>(col * n + t)]);
+        std::swap(a[static_cast<std::size_t>(pivot * n + t)],
+                  a[static_cast<std::size_t>(col * n + t)]);
       negative = !negative;
     }
     if (p < 0) negative = !negative;
@@ -241,7 +241,8 @@ PolyPtr make_placed(const PolyPtr& part, Affine transform) {
 
 PolyPtr make_group(std::vector<Polyhedron::Child> children) {
   auto p = std::make_shared<Polyhedron>();
-  for (const Polyhedron::Child& c : children) p->dim = std::max({p->dim, c.part->dim, c.transform.n});
+  for (const Polyhedron::Child& c : children)
+    p->dim = std::max({p->dim, c.part->dim, c.transform.n});
   p->children = std::move(children);
   count(*p);
   return p;

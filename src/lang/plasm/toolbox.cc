@@ -394,7 +394,8 @@ const Native* find_native(std::string_view key) {
   static const std::unordered_map<std::string_view, const Native*> index = [] {
     std::unordered_map<std::string_view, const Native*> m;
     for (const Native& n : kNatives) m.emplace(n.name, &n);
-    for (const auto& table : {geometry_natives(), map_natives(), complex_natives(), boolean_natives()})
+    for (const auto& table :
+         {geometry_natives(), map_natives(), complex_natives(), boolean_natives()})
       for (const Native& n : table) m.emplace(n.name, &n);
     return m;
   }();

@@ -47,9 +47,8 @@ const std::map<std::string, std::string>& expected_first_lines() {
       {"if_without_sequence",
        "if_without_sequence.psm:1:9: error[PSM106]: IF is written IF:<predicate, then, else>"},
       // Any-arity builtins may be used infix; CUBOID is then the geometry stage's.
-      {"infix_arity",
-       "infix_arity.psm:1:9: error[PSM410]: 'CUBOID' needs the geometry stage (not implemented "
-       "yet)"},
+      {"infix_wrong_kind",
+       "infix_wrong_kind.psm:1:9: error[PSM402]: 'TOP' needs a polyhedron, found a number 2"},
       {"infix_without_right",
        "infix_without_right.psm:1:14: error[PSM104]: expected an expression after the infix "
        "function 'TOP', found ';'"},
@@ -109,9 +108,9 @@ const std::map<std::string, std::string>& expected_first_lines() {
       {"memory_budget",
        "memory_budget.psm:1:9: error[PSM413]: evaluation needs more than 4000000 cells of memory "
        "(the memory budget)"},
-      {"needs_geometry",
-       "needs_geometry.psm:1:12: error[PSM410]: 'CUBOID' needs the geometry stage (not "
-       "implemented yet)"},
+      {"struct_wrong_kind",
+       "struct_wrong_kind.psm:1:12: error[PSM402]: 'STRUCT' holds polyhedra and transformations, "
+       "found a number 2 at position 2"},
       {"nesting_budget",
        "nesting_budget.psm:1:9: error[PSM413]: a value nests deeper than 500 levels (the nesting "
        "budget)"},
