@@ -20,6 +20,7 @@
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
+#include "apps/cli/plasm_assets.h"
 #include "apps/cli/progress.h"
 #include "io/geojson_reader.h"
 #include "io/obj_reader.h"
@@ -203,7 +204,10 @@ int build_cga(const BuildOptions& options) {
     }
   }
   derive.keep_terminals = !options.outputs.empty();
-  const ObjAssets assets(std::filesystem::path(options.input).parent_path());
+  const std::filesystem::path grammar_dir = std::filesystem::path(options.input).parent_path();
+  const ObjAssets obj_assets(grammar_dir);
+  // PLaSM parts (FILE.psm#EXPRESSION) come from the grammar's folder, as OBJ assets do.
+  const PlasmAssets assets({grammar_dir.empty() ? "." : grammar_dir.string()}, &obj_assets);
   derive.assets = &assets;
   if (lots->lots.empty()) lots->lots.push_back(cga::default_lot(p, derive));
 

@@ -7,10 +7,12 @@
 #include <map>
 #include <mutex>
 
+#include "apps/cli/asset_folders.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
+#include "apps/cli/plasm_assets.h"
 #include "io/obj_reader.h"
 #include "lang/lua/runtime.h"
 
@@ -31,34 +33,10 @@ class FolderAssets : public shape::AssetProvider {
     const std::string key(name);
     if (auto it = cache_.find(key); it != cache_.end()) return it->second;
     fs::path relative(key);
-    if (key.empty() || relative.is_absolute() || relative.has_root_name()) {
-      error = "asset '" + key + "': only names inside the asset folders are allowed";
-      return nullptr;
-    }
-    for (const fs::path& part : relative) {
-      if (part == "..") {
-        error = "asset '" + key + "': '..' is not allowed in asset names";
-        return nullptr;
-      }
-    }
-    if (!relative.has_extension()) relative += ".obj";
-    for (const std::string& folder : folders_) {
-      std::error_code ec;
-      const fs::path root = fs::canonical(folder, ec);
-      if (ec) continue;
-      const fs::path candidate = fs::weakly_canonical(root / relative, ec);
-      if (ec || !fs::is_regular_file(candidate, ec)) continue;
-      const auto [end, unused] =
-          std::mismatch(root.begin(), root.end(), candidate.begin(), candidate.end());
-      (void)unused;
-      if (end != root.end()) {
-        error = "asset '" + key + "' leads outside its asset folder";
-        return nullptr;
-      }
-      return load(key, candidate, error);
-    }
-    error = "asset '" + key + "' not found in the asset folders";
-    return nullptr;
+    if (!relative.empty() && !relative.has_extension()) relative += ".obj";
+    const std::optional<fs::path> path = find_in_folders(folders_, relative, key, error);
+    if (!path) return nullptr;
+    return load(key, *path, error);
   }
 
  private:
@@ -167,7 +145,8 @@ int build_lua(const BuildOptions& options) {
     return kExitInput;
   }
   const base::Source source(options.input, *text);
-  const FolderAssets assets(asset_folders(options));
+  const FolderAssets obj_assets(asset_folders(options));
+  const PlasmAssets assets(asset_folders(options), &obj_assets);  // FILE.psm#EXPRESSION parts
   run.assets = &assets;
   if (!options.quiet) {
     run.print = [&](const std::string& line) {
