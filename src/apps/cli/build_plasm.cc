@@ -3,16 +3,50 @@
 // (docs/plasm-language.md, "Output").
 #include <cstdio>
 
+#include <filesystem>
+
+#include "apps/cli/asset_folders.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/stopwatch.h"
+#include "io/svg_reader.h"
 #include "lang/plasm/checker.h"
 #include "lang/plasm/output.h"
 #include "lang/plasm/parser.h"
 
 namespace insula::cli {
+namespace {
+
+// SVG drawings a program names, read from its own folder (confined like assets) by io's reader.
+lang::plasm::OutlineReader drawing_reader(const std::string& input) {
+  const std::filesystem::path own = std::filesystem::path(input).parent_path();
+  std::vector<std::string> folders = {own.empty() ? "." : own.string()};
+  return [folders](const std::string& file, std::vector<lang::plasm::Outline>& out,
+                   std::string& error) {
+    const std::optional<std::filesystem::path> path = find_in_folders(folders, file, file, error);
+    if (!path) return false;
+    const std::optional<std::string> text = read_input_file(path->string());
+    if (!text) {
+      error = "cannot read '" + file + "'";
+      return false;
+    }
+    base::Result<std::vector<io::SvgOutline>> outlines = io::read_svg(*text, file);
+    if (!outlines.ok()) {
+      error = base::render(outlines.diagnostics().front());
+      return false;
+    }
+    for (io::SvgOutline& o : outlines.value()) {
+      lang::plasm::Outline copy{std::move(o.id), {}, o.closed};
+      for (const kernel::Vec2& p : o.points) copy.xy.insert(copy.xy.end(), {p.x, p.y});
+      out.push_back(std::move(copy));
+    }
+    return true;
+  };
+}
+
+}  // namespace
 
 int build_plasm(const BuildOptions& options) {
   const Stopwatch total;
@@ -35,7 +69,7 @@ int build_plasm(const BuildOptions& options) {
   nlohmann::json report;
   Stopwatch stage;
   base::Result<lang::plasm::ProgramOutput> output =
-      lang::plasm::program_scene(program.value(), source);
+      lang::plasm::program_scene(program.value(), source, {}, drawing_reader(options.input));
   report["seconds"]["evaluate"] = stage.seconds();
   if (const int code = stop_if_interrupted(); code != 0) return code;
   if (!output.ok()) {

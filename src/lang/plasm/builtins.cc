@@ -11,6 +11,9 @@ constexpr std::array kBuiltins = {
     Builtin{"AA", kAnyArity, "AA:f:<x1, ..., xn> is <f:x1, ..., f:xn> (apply to all)"},
     Builtin{"ABS", kAnyArity, "absolute value"},
     Builtin{"ACOS", kAnyArity, "arc cosine"},
+    Builtin{"AFFINE", kAnyArity,
+            "AFFINE:<<p0, ..., pd>, <q0, ..., qd>>:p, the affine map sending each p_i to q_i "
+            "(local to global coordinates by 4 points)"},
     Builtin{"AL", 2, "AL:<x, <y, ...>> is <x, y, ...> (append left)"},
     Builtin{"ALIGN", kAnyArity,
             "ALIGN:<<axis, MIN|MED|MAX, MIN|MED|MAX>, ...>:<p, q> places q beside p"},
@@ -108,12 +111,18 @@ constexpr std::array kBuiltins = {
     Builtin{"SQRT", kAnyArity, "square root"},
     Builtin{"STRUCT", kAnyArity,
             "STRUCT:<p, T:..., q, ...>, an assembly; a transformation applies to what follows"},
+    Builtin{"SVG", kAnyArity,
+            "SVG:\"plan.svg\", a drawing's outlines as polyhedra of the plane (y up); "
+            "SVG:\"plan.svg#id\" one of them"},
     Builtin{"T", kAnyArity, "T:<i, ...>:<d, ...>, the translation of coordinates i, ..."},
     Builtin{"TAIL", kAnyArity, "a sequence without its first element"},
     Builtin{"TAN", kAnyArity, "tangent"},
     Builtin{"TOP", 2, "p TOP q puts q on top of p, centred"},
     Builtin{"TORUS", 2, "TORUS:<r1, r2>:<n, m>, a torus surface"},
     Builtin{"TRANS", kAnyArity, "the transpose of a sequence of sequences"},
+    Builtin{"TRILINEAR", kAnyArity,
+            "TRILINEAR:<q000, q100, ..., q111>:p maps p's bounding box onto the volume of those 8 "
+            "corners"},
     Builtin{"TRUE", kAnyArity, "the true value"},
     Builtin{"TRUNCONE", 3, "TRUNCONE:<r1, r2, h>:n, a truncated cone surface"},
     Builtin{"TT", kAnyArity, "predicate: anything"},

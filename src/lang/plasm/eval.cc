@@ -502,6 +502,10 @@ base::Result<ValuePtr> Evaluator::apply(const ValuePtr& function, const ValuePtr
   return guarded([&] { return context_->apply(function, argument, at); });
 }
 
+void Evaluator::set_outline_reader(OutlineReader reader) {
+  context_->outline_reader = std::move(reader);
+}
+
 std::uint64_t Evaluator::steps_used() const {
   return context_->steps();
 }

@@ -8,9 +8,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "base/diagnostic.h"
 #include "lang/plasm/ast.h"
@@ -29,6 +31,17 @@ struct Budgets {
   int nesting = 500;
 };
 
+// A drawing's outlines for SVG:"file.svg" (seed 002, §5): the app reads and parses the file
+// (lang/plasm reads no files); coordinates as the drawing has them (SVG: y down).
+struct Outline {
+  std::string id;
+  std::vector<double> xy;  // x0, y0, x1, y1, ...
+  bool closed = false;
+};
+// Fills `out` with the outlines of `file`, or returns false with `error` set.
+using OutlineReader =
+    std::function<bool(const std::string& file, std::vector<Outline>& out, std::string& error)>;
+
 // Evaluates the statements and DEFs of one program on demand; values stay valid as long as the
 // evaluator (closures refer to its scopes). After an error the evaluator may still be asked
 // for other values; the budgets are shared by everything it evaluates.
@@ -46,6 +59,8 @@ class Evaluator {
   // `function:argument`, as the program would apply it (the error, if any, points at `at`).
   base::Result<ValuePtr> apply(const ValuePtr& function, const ValuePtr& argument, Range at = {});
   std::uint64_t steps_used() const;
+  // Where SVG:"file" finds its outlines; without one, SVG fails with PSM417.
+  void set_outline_reader(OutlineReader reader);
 
  private:
   const Program& program_;

@@ -93,6 +93,7 @@ class Context {
 
   std::string text_of(Range range) const;
   std::uint64_t steps() const { return steps_; }
+  OutlineReader outline_reader;  // for SVG (geometry.h); may be empty
   Env* top() { return &top_; }
 
  private:

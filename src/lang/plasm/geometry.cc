@@ -229,6 +229,7 @@ ValuePtr transform_fn(Context& c, const Function& self, Args a, Range at) {
 }  // namespace
 
 bool as_affine(Context& c, const Function& f, Affine& out, Range at) {
+  if (affine_from_points(c, f, out, at)) return true;
   if (f.native != transform_fn || f.bound.size() != 2) return false;
   const std::string& who = f.label;
   const std::vector<int> ax = axes(c, f.bound[0], who, at);

@@ -3,6 +3,7 @@
 // geometry file contributes (geometry.cc, map.cc, complex_ops.cc, boolean.cc).
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -32,15 +33,26 @@ std::size_t count_arg(Context& c, const ValuePtr& v, std::size_t limit, std::str
 // When `f` is a transformation T:axes:values, S:axes:values or R:axes:angle with every argument
 // but the polyhedron, the map it stands for (STRUCT composes these without applying them).
 bool as_affine(Context& c, const Function& f, Affine& out, Range at);
+// The same for AFFINE:<<p0, ...>, <q0, ...>> (place.cc).
+bool affine_from_points(Context& c, const Function& f, Affine& out, Range at);
 
 // `a op b` where a polyhedron is involved: * is the Cartesian product (complex_ops.cc), + the
 // union and - the difference (boolean.cc).
 ValuePtr polyhedron_binary(Context& c, Op op, const ValuePtr& a, const ValuePtr& b, Range at);
 ValuePtr product(Context& c, const PolyPtr& p, const PolyPtr& q, Range at);
 
+// A map of points (the in point has the domain's coordinates, out receives out_dim).
+using PointMap = std::function<void(const double* in, double* out)>;
+// The cells of `domain` decomposed into simplices (one pulling triangulation in a global vertex
+// order, so shared faces split alike) and sent through `f`; simplices the map collapses are
+// dropped (map.cc).
+PolyPtr map_complex(Context& c, const FlatComplex& domain, int out_dim, const PointMap& f,
+                    std::string_view who, Range at);
+
 std::span<const Native> geometry_natives();  // geometry.cc
 std::span<const Native> map_natives();       // map.cc
 std::span<const Native> complex_natives();   // complex_ops.cc
 std::span<const Native> boolean_natives();   // boolean.cc
+std::span<const Native> place_natives();     // place.cc
 
 }  // namespace insula::lang::plasm

@@ -16,8 +16,6 @@
 namespace insula::lang::plasm {
 namespace {
 
-using PointMap = std::function<void(const double* in, double* out)>;
-
 // The k-volume of the simplex spanned by `corners` (k + 1 points of `dim` coordinates), from the
 // Gram determinant of its edge vectors; also returns its longest edge.
 double simplex_volume(const std::vector<const double*>& corners, int dim, double& longest) {
@@ -151,6 +149,8 @@ Simplicial simplicial(Context& c, const FlatComplex& domain, std::string_view wh
   return out;
 }
 
+}  // namespace
+
 // The simplices of `domain` through `f` (out_dim coordinates), without the ones the map
 // collapses (a k-simplex whose k-volume is below 1e-9 of its longest edge to the k: the pole of
 // a sphere, the centre of a circle, slivers).
@@ -179,6 +179,8 @@ PolyPtr map_complex(Context& c, const FlatComplex& domain, int out_dim, const Po
   }
   return make_leaf(out_dim, std::move(mapped), std::move(cells));
 }
+
+namespace {
 
 // The point as a PLaSM sequence of numbers.
 ValuePtr point_value(Context& c, const double* x, int dim, Range at) {

@@ -36,8 +36,9 @@ shape::Building polyhedron_building(const Polyhedron& polyhedron, const std::str
 }
 
 base::Result<ProgramOutput> program_scene(const Program& program, const base::Source& source,
-                                          Budgets budgets) {
+                                          Budgets budgets, OutlineReader outlines) {
   Evaluator evaluator(program, source, budgets);
+  evaluator.set_outline_reader(std::move(outlines));
   ProgramOutput out;
   const std::string stem = std::filesystem::path(source.name()).stem().string();
   for (std::size_t i = 0; i < program.statements.size(); ++i) {

@@ -23,8 +23,9 @@ struct ProgramOutput {
 
 // Evaluates the program and converts its polyhedra. Fails with the first runtime error, or when
 // no expression gives a polyhedron with area (PSM420).
+// `outlines` reads the drawings SVG names (none: SVG fails).
 base::Result<ProgramOutput> program_scene(const Program& program, const base::Source& source,
-                                          Budgets budgets = {});
+                                          Budgets budgets = {}, OutlineReader outlines = {});
 
 // The scene of one polyhedron, as one building named `id`.
 shape::Building polyhedron_building(const Polyhedron& polyhedron, const std::string& id,

@@ -395,7 +395,7 @@ const Native* find_native(std::string_view key) {
     std::unordered_map<std::string_view, const Native*> m;
     for (const Native& n : kNatives) m.emplace(n.name, &n);
     for (const auto& table :
-         {geometry_natives(), map_natives(), complex_natives(), boolean_natives()})
+         {geometry_natives(), map_natives(), complex_natives(), boolean_natives(), place_natives()})
       for (const Native& n : table) m.emplace(n.name, &n);
     return m;
   }();
