@@ -3,7 +3,11 @@
 // (docs/plasm-language.md, "Output").
 #include <cstdio>
 
+#include <tbb/global_control.h>
+
+#include <algorithm>
 #include <filesystem>
+#include <thread>
 
 #include "apps/cli/asset_folders.h"
 #include "apps/cli/exit_codes.h"
@@ -68,8 +72,19 @@ int build_plasm(const BuildOptions& options) {
   if (!checked.ok) return kExitInput;
   nlohmann::json report;
   Stopwatch stage;
-  base::Result<lang::plasm::ProgramOutput> output =
-      lang::plasm::program_scene(program.value(), source, {}, drawing_reader(options.input));
+  // Sequences and AA run their elements as parallel tasks; the output is the same for any
+  // --threads (docs/plasm-language.md, "Parallel evaluation").
+  const int threads = options.threads > 0
+                          ? options.threads
+                          : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  std::optional<base::Result<lang::plasm::ProgramOutput>> evaluated;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(threads));
+    evaluated.emplace(
+        lang::plasm::program_scene(program.value(), source, {}, drawing_reader(options.input)));
+  }
+  base::Result<lang::plasm::ProgramOutput>& output = *evaluated;
   report["seconds"]["evaluate"] = stage.seconds();
   if (const int code = stop_if_interrupted(); code != 0) return code;
   if (!output.ok()) {
@@ -88,6 +103,7 @@ int build_plasm(const BuildOptions& options) {
                  "%s: warning: %zu cells not drawn (points, segments, or cells in 4D and more)\n",
                  options.input.c_str(), out.stats.skipped_cells);
   report["input"] = options.input;
+  report["threads"] = threads;
   report["steps"] = out.steps;
   report["buildings"] = out.scene.buildings.size();
   report["parts"] = parts;

@@ -11,21 +11,22 @@ namespace insula::lang::plasm {
 
 // Counts one level of nested evaluation for as long as it lives (PSM412).
 struct DepthGuard {
-  DepthGuard(Context& context, Range at) : context_(context) {
-    if (++context_.depth_ > context_.budgets_.depth) {
-      --context_.depth_;
+  DepthGuard(Context& context, Range at) : context_(context), frame_(context.frame()) {
+    if (++frame_.depth > context_.budgets_.depth) {
+      --frame_.depth;
       context_.fail("PSM412",
                     text({"recursion deeper than ", std::to_string(context_.budgets_.depth),
                           " levels (the depth budget)"}),
                     at);
     }
   }
-  ~DepthGuard() { --context_.depth_; }
+  ~DepthGuard() { --frame_.depth; }
   DepthGuard(const DepthGuard&) = delete;
   DepthGuard& operator=(const DepthGuard&) = delete;
 
  private:
   Context& context_;
+  Frame& frame_;
 };
 
 namespace {
@@ -120,7 +121,8 @@ std::string Context::text_of(Range range) const {
 }
 
 void Context::step(Range at) {
-  if (++steps_ > budgets_.steps)
+  Frame& f = frame();
+  if (f.base_steps + ++f.steps > budgets_.steps)
     fail("PSM411",
          text({"evaluation takes more than ", std::to_string(budgets_.steps),
                " steps (the step budget)"}),
@@ -128,12 +130,14 @@ void Context::step(Range at) {
 }
 
 void Context::charge(double cells, Range at) {
-  if (cells > static_cast<double>(budgets_.cells - cells_))
+  Frame& f = frame();
+  const std::uint64_t used = std::min(f.base_cells + f.cells, budgets_.cells);
+  if (cells > static_cast<double>(budgets_.cells - used))
     fail("PSM413",
          text({"evaluation needs more than ", std::to_string(budgets_.cells),
                " cells of memory (the memory budget)"}),
          at);
-  cells_ += static_cast<std::uint64_t>(cells);
+  f.cells += static_cast<std::uint64_t>(cells);
 }
 
 ValuePtr Context::shallow(ValuePtr value, Range at) const {
@@ -168,8 +172,13 @@ ValuePtr Context::native(std::string label, std::size_t arity, NativeFn fn, Sequ
 
 Env* Context::new_env(Env* parent, std::size_t bindings, Range at) {
   charge(static_cast<double>(bindings + 1), at);
-  envs_.push_back(std::make_unique<Env>());
-  Env* env = envs_.back().get();
+  auto owned = std::make_unique<Env>();
+  Env* env = owned.get();
+  env->serial = next_serial_++;
+  {
+    const std::lock_guard<std::mutex> lock(envs_mutex_);
+    envs_.push_back(std::move(owned));
+  }
   env->parent = parent;
   env->bindings.reserve(bindings);
   return env;
@@ -274,6 +283,26 @@ ValuePtr Context::lookup(const std::string& key, const std::string& written, Env
 
 ValuePtr Context::force(Binding& binding, Env* env, Range at) {
   if (binding.state == Binding::State::kDone) return binding.value;
+  Frame& f = frame();
+  if (env->serial < f.first_serial) return force_shared(binding, env, f, at);
+  const Def& def = *binding.def;
+  if (binding.state == Binding::State::kBusy)
+    fail("PSM408",
+         text({"the value of '", def.name, "' depends on itself (found while evaluating it)"}), at);
+  if (!def.is_function()) binding.state = Binding::State::kBusy;
+  try {
+    binding.value = binding_value(binding, env, at);
+  } catch (...) {
+    binding.state = Binding::State::kPending;
+    throw;
+  }
+  binding.state = Binding::State::kDone;
+  return binding.value;
+}
+
+// The value a DEF or WHERE local binds: its closure, or its body evaluated in a scope of its
+// own locals.
+ValuePtr Context::binding_value(Binding& binding, Env* env, Range at) {
   const Def& def = *binding.def;
   if (def.is_function()) {
     Function f;
@@ -281,28 +310,15 @@ ValuePtr Context::force(Binding& binding, Env* env, Range at) {
     f.def = &def;
     f.env = env;
     f.arity = def.groups.size();
-    binding.value = function(std::move(f), at);
-    binding.state = Binding::State::kDone;
-    return binding.value;
+    return function(std::move(f), at);
   }
-  if (binding.state == Binding::State::kBusy)
-    fail("PSM408",
-         text({"the value of '", def.name, "' depends on itself (found while evaluating it)"}), at);
-  binding.state = Binding::State::kBusy;
-  try {
-    Env* scope = env;
-    if (!def.locals.empty()) {
-      scope = new_env(env, def.locals.size(), def.range);
-      for (const Def& local : def.locals)
-        scope->bindings.push_back(Binding{local.key, &local, {}, {}});
-    }
-    binding.value = labelled(eval(*def.body, scope), def, env == &top_);
-  } catch (...) {
-    binding.state = Binding::State::kPending;
-    throw;
+  Env* scope = env;
+  if (!def.locals.empty()) {
+    scope = new_env(env, def.locals.size(), def.range);
+    for (const Def& local : def.locals)
+      scope->bindings.push_back(Binding{local.key, &local, {}, {}});
   }
-  binding.state = Binding::State::kDone;
-  return binding.value;
+  return labelled(eval(*def.body, scope), def, env == &top_);
 }
 
 ValuePtr Context::eval(const Expr& expr, Env* env) {
@@ -332,8 +348,7 @@ ValuePtr Context::eval(const Expr& expr, Env* env) {
     case ExprKind::kConstruct:
     case ExprKind::kSequence: {
       Sequence items;
-      items.reserve(expr.operands.size());
-      for (const ExprPtr& e : expr.operands) items.push_back(eval(*e, env));
+      eval_items(expr, env, items);
       if (expr.kind == ExprKind::kSequence) return sequence(std::move(items), expr.range);
       for (std::size_t i = 0; i < items.size(); ++i) {
         if (!items[i]->is_function())

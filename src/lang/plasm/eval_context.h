@@ -3,12 +3,16 @@
 // Internal to lang/plasm.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <memory>
+#include <mutex>
 #include <span>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "base/diagnostic.h"
@@ -38,7 +42,37 @@ struct Binding {
 struct Env {
   Env* parent = nullptr;
   std::vector<Binding> bindings;
+  // Creation order: a task of a parallel section writes only the bindings of scopes created
+  // since it started (parallel.cc).
+  std::uint64_t serial = 0;
 };
+
+// One strand of evaluation (parallel.cc, docs/plasm-language.md "Parallel evaluation"): the
+// evaluator's own, or one task of a parallel section. A task counts its steps and cells from its
+// parent's totals at the fork and keeps the values of bindings of older scopes in its own memo,
+// so no two tasks write the same memory and every count is the same for any number of threads.
+struct Frame {
+  struct Memo {
+    Binding::State state = Binding::State::kPending;
+    ValuePtr value;
+    Env* env = nullptr;
+  };
+  const Frame* parent = nullptr;
+  const Context* context = nullptr;
+  std::uint64_t first_serial = 0;  // scopes with a smaller serial are older than the task
+  std::uint64_t base_steps = 0;
+  std::uint64_t steps = 0;
+  std::uint64_t base_cells = 0;
+  std::uint64_t cells = 0;
+  int depth = 0;
+  std::unordered_map<const Binding*, Memo> memo;
+};
+
+inline Frame root_frame(const Context* context) {
+  Frame f;
+  f.context = context;
+  return f;
+}
 
 // A builtin this stage implements. `arity` counts curried arguments: AA:f:x takes 2.
 struct Native {
@@ -92,7 +126,13 @@ class Context {
   ValuePtr result(double value, std::string_view who, Range at) const;
 
   std::string text_of(Range range) const;
-  std::uint64_t steps() const { return steps_; }
+  std::uint64_t steps() const { return root_.steps; }
+  // Runs task(0), ..., task(n - 1) as a parallel section (TBB): each in its own Frame, results
+  // in index order; the error of the lowest failing index is thrown after all have run
+  // (parallel.cc).
+  Sequence parallel(std::size_t n, const std::function<ValuePtr(std::size_t)>& task, Range at);
+  // The strand this thread evaluates for this context.
+  Frame& frame();
   OutlineReader outline_reader;  // for SVG (geometry.h); may be empty
   Env* top() { return &top_; }
 
@@ -102,15 +142,18 @@ class Context {
   ValuePtr call(const ValuePtr& closure, const ValuePtr& argument, Range at);
   void bind_group(Env* env, const Def& def, std::size_t group, const ValuePtr& argument, Range at);
   ValuePtr labelled(ValuePtr value, const Def& def, bool top_level);
+  ValuePtr binding_value(Binding& binding, Env* env, Range at);
+  ValuePtr force_shared(Binding& binding, Env* env, Frame& frame, Range at);
+  void eval_items(const Expr& expr, Env* env, Sequence& items);
   void check_group(const Def& def, std::size_t group, Env* earlier, Env* bound, Range at);
 
   friend struct DepthGuard;
   const base::Source& source_;
   Budgets budgets_;
-  std::uint64_t steps_ = 0;
-  std::uint64_t cells_ = 0;
-  int depth_ = 0;
+  Frame root_ = root_frame(this);
   Env top_;
+  std::atomic<std::uint64_t> next_serial_{1};
+  std::mutex envs_mutex_;
   std::vector<std::unique_ptr<Env>> envs_;
 };
 

@@ -75,6 +75,7 @@ void Affine::apply(const double* in, int in_dim, double* out) const {
     for (int col = 0; col < std::min(in_dim, n); ++col) sum += at(r, col) * in[col];
     out[r] = sum;
   }
+  for (int r = n; r < in_dim; ++r) out[r] = in[r];  // the identity on coordinates past n
 }
 
 bool Affine::reverses_orientation() const {
@@ -139,7 +140,7 @@ class Flattener {
   void add_solid(const Polyhedron& node, const Affine& to_root, std::uint32_t group) {
     kernel::Mesh mesh = *node.solid;
     if (!to_root.m.empty()) {
-      std::vector<double> out(static_cast<std::size_t>(std::max(to_root.n, 3)), 0.0);
+      std::vector<double> out(static_cast<std::size_t>(std::max(to_root.n, 3)), 0.0);  // apply's max
       for (kernel::Vec3& p : mesh.positions()) {
         const double in[3] = {p.x, p.y, p.z};
         to_root.apply(in, 3, out.data());

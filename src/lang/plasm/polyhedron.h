@@ -42,7 +42,8 @@ struct Affine {
   Affine widened(int k) const;
   // `after` applied after this map (dimensions are widened to the larger one).
   Affine then(const Affine& after) const;
-  // Maps a point of `in_dim` <= n coordinates (missing ones zero) to n coordinates in `out`.
+  // Maps a point of `in_dim` coordinates (missing ones zero) to max(n, in_dim) coordinates in
+  // `out`; coordinates past n pass unchanged (T:1:2 moves a 3D point along x only).
   void apply(const double* in, int in_dim, double* out) const;
   // The sign of the determinant of the linear part: negative for mirrors.
   bool reverses_orientation() const;

@@ -42,6 +42,11 @@ ValuePtr k_fn(Context&, const Function&, Args a, Range) {
 
 ValuePtr aa_fn(Context& c, const Function&, Args a, Range at) {
   const Sequence& s = c.seq(a[1], "AA", at);
+  // A user function over several elements: one task per element (parallel.cc).
+  if (s.size() >= 2 && a[0]->function().def != nullptr)
+    return c.sequence(c.parallel(
+                          s.size(), [&](std::size_t k) { return c.apply(a[0], s[k], at); }, at),
+                      at);
   Sequence out;
   out.reserve(s.size());
   for (const ValuePtr& x : s) out.push_back(c.apply(a[0], x, at));
