@@ -22,13 +22,7 @@ std::span<const double> cell_points(const FlatComplex& flat, const Cell& cell,
 kernel::PolytopeNd cell_polytope(Context& c, const FlatComplex& flat, const Cell& cell,
                                  std::string_view who, Range at) {
   std::vector<double> buffer;
-  kernel::PolytopeNd p = kernel::polytope_nd(cell_points(flat, cell, buffer), flat.dim);
-  if (!p.ok())
-    c.fail("PSM414",
-           text({"'", who, "': a cell has no convex hull (",
-                 kernel::hull_nd_status_message(p.status), ")"}),
-           at);
-  return p;
+  return hull(c, cell_points(flat, cell, buffer), flat.dim, who, at);
 }
 
 // The polyhedra of a value: one, or a sequence of them.
@@ -57,14 +51,10 @@ ValuePtr join_fn(Context& c, const Function&, Args a, Range at) {
   }
   if (points.empty()) return polyhedron_value(c, make_leaf(dim, {}, {}), at);
   c.charge(static_cast<double>(points.size()) / 4, at);
-  const kernel::PolytopeNd hull = kernel::polytope_nd(points, dim);
-  if (!hull.ok())
-    c.fail("PSM414",
-           text({"'JOIN': no convex hull (", kernel::hull_nd_status_message(hull.status), ")"}),
-           at);
+  const kernel::PolytopeNd joined = hull(c, points, dim, "JOIN", at);
   std::vector<double> kept;
   Cell cell;
-  for (kernel::PointIndex v : hull.vertices()) {
+  for (kernel::PointIndex v : joined.vertices()) {
     kept.insert(kept.end(), points.begin() + std::ptrdiff_t(v) * dim,
                 points.begin() + std::ptrdiff_t(v + 1) * dim);
     cell.push_back(static_cast<std::uint32_t>(cell.size()));
@@ -102,7 +92,10 @@ ValuePtr offset_fn(Context& c, const Function&, Args a, Range at) {
   const PolyPtr& p = polyhedron(c, a[1], "OFFSET", at);
   const int dim = std::max(p->dim, static_cast<int>(sizes.size()));
   if (sizes.empty() || dim > kMaxDimension)
-    c.fail("PSM402", "'OFFSET' needs one size per coordinate (at most 12)", at);
+    c.fail("PSM402",
+           text({"'OFFSET' needs one size per coordinate (at most ", std::to_string(kMaxDimension),
+                 ")"}),
+           at);
   const FlatComplex flat = flatten_cells(*p);
   cells_only(c, flat, "OFFSET", at);
   const std::size_t corners = std::size_t{1} << sizes.size();
@@ -122,14 +115,9 @@ ValuePtr offset_fn(Context& c, const Function&, Args a, Range at) {
         }
       }
     }
-    const kernel::PolytopeNd hull = kernel::polytope_nd(swept, dim);
-    if (!hull.ok())
-      c.fail("PSM414",
-             text({"'OFFSET': a swept cell has no convex hull (",
-                   kernel::hull_nd_status_message(hull.status), ")"}),
-             at);
+    const kernel::PolytopeNd swept_hull = hull(c, swept, dim, "OFFSET", at);
     Cell out;
-    for (kernel::PointIndex v : hull.vertices()) {
+    for (kernel::PointIndex v : swept_hull.vertices()) {
       out.push_back(static_cast<std::uint32_t>(points.size() / static_cast<std::size_t>(dim)));
       points.insert(points.end(), swept.begin() + std::ptrdiff_t(v) * dim,
                     swept.begin() + std::ptrdiff_t(v + 1) * dim);

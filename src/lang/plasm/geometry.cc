@@ -52,6 +52,26 @@ std::vector<int> axes(Context& c, const ValuePtr& v, std::string_view who, Range
   return out;
 }
 
+kernel::PolytopeNd hull(Context& c, std::span<const double> points, int dim, std::string_view who,
+                        Range at) {
+  const std::size_t count = points.size() / static_cast<std::size_t>(std::max(dim, 1));
+  if (dim >= 5 && count > kMaxHighHullPoints)
+    c.fail("PSM418",
+           text({"'", who, "': a convex hull of ", std::to_string(count), " points in ",
+                 std::to_string(dim), "D is too large (at most ",
+                 std::to_string(kMaxHighHullPoints), " points from 5D on)"}),
+           at);
+  kernel::PolytopeNd p = kernel::polytope_nd(points, dim);
+  if (!p.ok())
+    c.fail("PSM414",
+           text({"'", who, "': no convex hull (", kernel::hull_nd_status_message(p.status), ")"}),
+           at);
+  double faces = 0;
+  for (const auto& level : p.faces) faces += static_cast<double>(level.size());
+  c.charge(faces / 8, at);
+  return p;
+}
+
 void cells_only(Context& c, const FlatComplex& flat, std::string_view who, Range at) {
   if (!flat.solids.empty())
     c.fail("PSM416",

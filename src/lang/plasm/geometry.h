@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "kernel/hull_nd.h"
 #include "lang/plasm/eval_context.h"
 #include "lang/plasm/polyhedron.h"
 
@@ -24,6 +25,11 @@ std::vector<double> numbers(Context& c, const ValuePtr& v, std::string_view who,
 // Coordinate indices as PLaSM writes them (1-based; one number or a sequence), checked to lie in
 // 1 .. 64 and returned 0-based.
 std::vector<int> axes(Context& c, const ValuePtr& v, std::string_view who, Range at);
+// The face lattice of the convex hull of `points` (dim coordinates each) for `who`: PSM418 past
+// kMaxHighHullPoints points in 5D and more, PSM414 when there is no hull; its faces are charged
+// to the memory budget.
+kernel::PolytopeNd hull(Context& c, std::span<const double> points, int dim, std::string_view who,
+                        Range at);
 // PSM416 when `flat` holds a boolean's result: `who` works on convex cells only.
 void cells_only(Context& c, const FlatComplex& flat, std::string_view who, Range at);
 // A natural number checked to be at most `limit`.

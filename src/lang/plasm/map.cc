@@ -128,12 +128,7 @@ Simplicial simplicial(Context& c, const FlatComplex& domain, std::string_view wh
                     out.points.begin() + std::ptrdiff_t((v + 1) * d));
       order.push_back(rank[v]);
     }
-    const kernel::PolytopeNd polytope = kernel::polytope_nd(buffer, domain.dim);
-    if (!polytope.ok())
-      c.fail("PSM414",
-             text({"'", who, "': a domain cell has no convex hull (",
-                   kernel::hull_nd_status_message(polytope.status), ")"}),
-             at);
+    const kernel::PolytopeNd polytope = hull(c, buffer, domain.dim, who, at);
     for (const kernel::IndexSet& s : kernel::simplices_nd(polytope, order)) {
       Cell simplex;
       for (kernel::PointIndex v : s) simplex.push_back(ids[v]);

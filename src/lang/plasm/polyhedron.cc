@@ -140,7 +140,8 @@ class Flattener {
   void add_solid(const Polyhedron& node, const Affine& to_root, std::uint32_t group) {
     kernel::Mesh mesh = *node.solid;
     if (!to_root.m.empty()) {
-      std::vector<double> out(static_cast<std::size_t>(std::max(to_root.n, 3)), 0.0);  // apply's max
+      std::vector<double> out(static_cast<std::size_t>(std::max(to_root.n, 3)),
+                              0.0);  // apply's max
       for (kernel::Vec3& p : mesh.positions()) {
         const double in[3] = {p.x, p.y, p.z};
         to_root.apply(in, 3, out.data());
