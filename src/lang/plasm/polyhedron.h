@@ -24,7 +24,7 @@ using Cell = std::vector<std::uint32_t>;
 // Coordinates a point may have, and levels of STRUCT a polyhedron may nest (both bound the work
 // of a single builtin: a CUBOID has 2^d corners and 3^d faces, flattening walks the levels
 // recursively).
-inline constexpr int kMaxDimension = 8;
+inline constexpr int kMaxDimension = 7;
 // Points one convex hull may have in 5 and more dimensions, where the number of facets grows like
 // n^(d/2): twice a d-cube's corners, so boxes, their products and offsets always fit.
 inline constexpr std::size_t kMaxHighHullPoints = std::size_t{2} << kMaxDimension;
