@@ -24,6 +24,52 @@ struct Matrix {
 };
 
 constexpr int kCurveSegments = 8;
+constexpr int kRoundSegments = 32;  // a circle or ellipse; an arc gets its share of them
+
+// The points after `from` of the elliptic arc to `to` (SVG 1.1 appendix F.6.5: endpoint to centre
+// parameterisation; radii scaled up when too small, a zero radius is a straight segment).
+void elliptic_arc(Vec2 from, Vec2 to, const double (&arc)[5], std::vector<Vec2>& out) {
+  double rx = std::abs(arc[0]);
+  double ry = std::abs(arc[1]);
+  const double phi = arc[2] * std::numbers::pi / 180;
+  const bool large = arc[3] != 0;
+  const bool sweep = arc[4] != 0;
+  if (rx == 0 || ry == 0 || (from.x == to.x && from.y == to.y)) {
+    out.push_back(to);
+    return;
+  }
+  const double c = std::cos(phi);
+  const double s = std::sin(phi);
+  const double dx = (from.x - to.x) / 2;
+  const double dy = (from.y - to.y) / 2;
+  const double x1 = c * dx + s * dy;
+  const double y1 = -s * dx + c * dy;
+  const double lambda = x1 * x1 / (rx * rx) + y1 * y1 / (ry * ry);
+  if (lambda > 1) {
+    rx *= std::sqrt(lambda);
+    ry *= std::sqrt(lambda);
+  }
+  const double num = rx * rx * ry * ry - rx * rx * y1 * y1 - ry * ry * x1 * x1;
+  const double den = rx * rx * y1 * y1 + ry * ry * x1 * x1;
+  double k = std::sqrt(std::max(0.0, num / den));
+  if (large == sweep) k = -k;
+  const double cx1 = k * rx * y1 / ry;
+  const double cy1 = -k * ry * x1 / rx;
+  const double cx = c * cx1 - s * cy1 + (from.x + to.x) / 2;
+  const double cy = s * cx1 + c * cy1 + (from.y + to.y) / 2;
+  const double t0 = std::atan2((y1 - cy1) / ry, (x1 - cx1) / rx);
+  double dt = std::atan2((-y1 - cy1) / ry, (-x1 - cx1) / rx) - t0;
+  if (sweep && dt < 0) dt += 2 * std::numbers::pi;
+  if (!sweep && dt > 0) dt -= 2 * std::numbers::pi;
+  const int n = std::max(
+      1, static_cast<int>(std::ceil(std::abs(dt) / (2 * std::numbers::pi) * kRoundSegments)));
+  for (int i = 1; i < n; ++i) {
+    const double t = t0 + dt * i / n;
+    out.push_back({cx + rx * std::cos(t) * c - ry * std::sin(t) * s,
+                   cy + rx * std::cos(t) * s + ry * std::sin(t) * c});
+  }
+  out.push_back(to);
+}
 
 class Reader {
  public:
@@ -48,7 +94,8 @@ class Reader {
     if (!diagnostics_.empty()) return fail();
     if (outlines_.empty()) {
       diagnostics_.push_back(base::Diagnostic::error(
-          "SVG004", "no outline: the file has no polygon, polyline, line, rect or path",
+          "SVG004",
+          "no outline: the file has no polygon, polyline, line, rect, circle, ellipse or path",
           base::Span::whole(source_.name())));
       return fail();
     }
@@ -98,6 +145,18 @@ class Reader {
             !length(child, "height", h))
           return;
         add(child, m, {{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}}, true);
+      } else if (tag == "circle" || tag == "ellipse") {
+        double cx = 0, cy = 0, rx = 0, ry = 0;
+        const bool circle = tag == "circle";
+        if (!length(child, "cx", cx) || !length(child, "cy", cy) ||
+            !length(child, circle ? "r" : "rx", rx) || !length(child, circle ? "r" : "ry", ry))
+          return;
+        std::vector<Vec2> pts;
+        for (int k = 0; k < kRoundSegments; ++k) {
+          const double t = 2 * std::numbers::pi * k / kRoundSegments;
+          pts.push_back({cx + rx * std::cos(t), cy + ry * std::sin(t)});
+        }
+        if (rx > 0 && ry > 0) add(child, m, std::move(pts), true);
       } else if (tag == "path") {
         path(child, m);
       }
@@ -337,12 +396,13 @@ class Reader {
           break;
         }
         case 'A': {
-          double skip = 0;
-          for (int k = 0; k < 5; ++k)
-            if (!number(skip)) return;
+          double arc[5] = {0, 0, 0, 0, 0};  // rx, ry, x-axis rotation, large-arc, sweep
+          for (double& v : arc)
+            if (!number(v)) return;
           if (!point(rel, p)) return;
+          if (pts.empty()) pts.push_back(at);
+          elliptic_arc(at, p, arc, pts);
           at = p;
-          pts.push_back(p);
           break;
         }
         default:

@@ -1,7 +1,7 @@
 // SVG outlines (seed 002, §5: traced outlines of the site's spaces exported from a drawing program
 // to SVG and imported as PLaSM polylines and polygons). Reads the geometry elements <polygon>,
-// <polyline>, <line>, <rect> and <path> (M L H V Z, absolute and relative; C S Q T curves
-// flattened into 8 segments each; an arc A becomes the straight segment to its end point), with
+// <polyline>, <line>, <rect>, <circle>, <ellipse> (32 segments) and <path> (M L H V Z A, absolute
+// and relative; C S Q T curves flattened into 8 segments each, arcs into their share of 32), with
 // the `transform` attributes of the element and of its enclosing groups (matrix, translate,
 // scale, rotate, skewX, skewY). Coordinates stay in SVG user units with y pointing down, as
 // written; the caller scales and flips. Diagnostics are `file:line:col` with codes SVG001..

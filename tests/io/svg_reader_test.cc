@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace insula::io {
 namespace {
 
@@ -58,6 +60,24 @@ TEST(SvgReader, PathCommandsAndSubpaths) {
   EXPECT_NEAR(c[0].points[4].y, 6, 1e-12);
 }
 
+// A half circle by an arc: every point at distance 5 from the centre (5, 0), the middle at (5, -5)
+// for sweep 1 (clockwise on screen, y down); a circle element of 32 points.
+TEST(SvgReader, ArcsCirclesAndEllipses) {
+  const auto o = outlines("<path d='M 0 0 A 5 5 0 0 1 10 0'/><circle cx='1' cy='2' r='3'/>");
+  ASSERT_EQ(o.size(), 2U);
+  ASSERT_EQ(o[0].points.size(), 17U);
+  for (const kernel::Vec2& p : o[0].points) EXPECT_NEAR(std::hypot(p.x - 5, p.y), 5, 1e-9);
+  EXPECT_NEAR(o[0].points[8].x, 5, 1e-9);
+  EXPECT_NEAR(o[0].points[8].y, -5, 1e-9);
+  EXPECT_TRUE(o[1].closed);
+  ASSERT_EQ(o[1].points.size(), 32U);
+  for (const kernel::Vec2& p : o[1].points) EXPECT_NEAR(std::hypot(p.x - 1, p.y - 2), 3, 1e-9);
+  // Radii too small for the end points grow to fit: a half ellipse through both.
+  const auto small = outlines("<path d='M 0 0 a 1 1 0 0 0 4 0'/>");
+  EXPECT_NEAR(small[0].points.back().x, 4, 1e-9);
+  EXPECT_NEAR(small[0].points[8].y, 2, 1e-9);
+}
+
 TEST(SvgReader, TransformsOfElementsAndGroups) {
   const auto o = outlines(
       "<g transform='translate(10, 0)'><g transform='scale(2)'>"
@@ -82,9 +102,9 @@ TEST(SvgReader, BadInputHasExactDiagnostics) {
             "t.svg:1:7: error[SVG003]: attribute width=\"3em\" is not a number in user units");
   EXPECT_EQ(first_error("<svg><g transform='skew(3)'><rect width='1' height='1'/></g></svg>"),
             "t.svg:1:7: error[SVG003]: unknown transform 'skew'");
-  EXPECT_EQ(
-      first_error("<svg><circle r='3'/></svg>"),
-      "t.svg: error[SVG004]: no outline: the file has no polygon, polyline, line, rect or path");
+  EXPECT_EQ(first_error("<svg><circle r='0'/></svg>"),
+            "t.svg: error[SVG004]: no outline: the file has no polygon, polyline, line, rect, "
+            "circle, ellipse or path");
 }
 
 }  // namespace
