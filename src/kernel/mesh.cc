@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <tuple>
 #include <unordered_map>
 
 #include "base/union_find.h"
@@ -202,6 +203,43 @@ bool is_watertight(const Mesh& mesh, double tolerance) {
   const Mesh welded = weld(mesh, tolerance);
   const MeshCheck c = check(welded);
   return c.closed && volume(welded) > 0;
+}
+
+Mesh canonical_order(const Mesh& mesh) {
+  const std::size_t n = mesh.vertex_count();
+  std::vector<std::uint32_t> order(n);
+  for (std::uint32_t v = 0; v < n; ++v) order[v] = v;
+  const auto key = [&](std::uint32_t v) {
+    const Vec3 p = mesh.position(v);
+    return std::make_tuple(p.x, p.y, p.z);
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+  std::vector<std::uint32_t> rank(n);
+  Mesh out;
+  out.reserve(n, mesh.face_count(), 0);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    rank[order[i]] = i;
+    out.add_vertex(mesh.position(order[i]));
+  }
+  std::vector<std::vector<std::uint32_t>> loops(mesh.face_count());
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    for (std::uint32_t v : mesh.face(f)) loops[f].push_back(rank[v]);
+    std::rotate(loops[f].begin(), std::min_element(loops[f].begin(), loops[f].end()),
+                loops[f].end());
+  }
+  std::vector<std::size_t> faces(mesh.face_count());
+  for (std::size_t f = 0; f < faces.size(); ++f) faces[f] = f;
+  const auto tag_key = [&](std::size_t f) {
+    const FaceTag& t = mesh.tag(f);
+    return std::make_tuple(static_cast<int>(t.semantic), t.material, t.face_id);
+  };
+  std::stable_sort(faces.begin(), faces.end(), [&](std::size_t a, std::size_t b) {
+    if (loops[a] != loops[b]) return loops[a] < loops[b];
+    return tag_key(a) < tag_key(b);
+  });
+  for (std::size_t f : faces) out.add_face(loops[f], mesh.tag(f));
+  return out;
 }
 
 }  // namespace insula::kernel

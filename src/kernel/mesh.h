@@ -141,6 +141,12 @@ double volume(const Mesh& mesh);
 // faces left with fewer than 3 vertices.
 Mesh weld(const Mesh& mesh, double tolerance = 1e-7);
 
+// The same mesh in an order that depends only on its geometry: vertices sorted by position
+// (x, then y, then z), each face loop rotated to start at its least vertex, faces sorted by loop
+// then tag. For results whose order comes from a library's internal numbering (CGAL's
+// corefinement), so equal geometry gives equal bytes.
+Mesh canonical_order(const Mesh& mesh);
+
 struct MeshCheck {
   bool closed = false;    // every directed edge has exactly one opposite partner
   bool oriented = false;  // no directed edge is used twice (consistent orientation)

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 namespace insula::kernel {
 namespace {
 
@@ -30,6 +33,38 @@ TEST(Mesh, CubeIsClosedWithUnitVolumeAndEulerTwo) {
   EXPECT_NEAR(surface_area(cube), 6.0, 1e-12);
   EXPECT_EQ(cube.triangle_count(), 12U);
   EXPECT_TRUE(is_watertight(cube));
+}
+
+// The same cube numbered differently (vertices reversed, faces reversed in order, loops rotated)
+// gives the same canonical mesh, and the canonical mesh is still the closed unit cube.
+TEST(Mesh, CanonicalOrderDependsOnlyOnGeometry) {
+  const Mesh cube = unit_cube();
+  Mesh shuffled;
+  for (int i = 7; i >= 0; --i) shuffled.add_vertex(cube.position(static_cast<std::uint32_t>(i)));
+  for (std::size_t f = cube.face_count(); f-- > 0;) {
+    std::vector<std::uint32_t> loop;
+    for (std::uint32_t v : cube.face(f)) loop.push_back(7 - v);
+    std::rotate(loop.begin(), loop.begin() + 1, loop.end());
+    shuffled.add_face(loop, cube.tag(f));
+  }
+  const Mesh a = canonical_order(cube);
+  const Mesh b = canonical_order(shuffled);
+  ASSERT_EQ(a.vertex_count(), 8U);
+  ASSERT_EQ(a.face_count(), b.face_count());
+  for (std::uint32_t v = 0; v < 8; ++v) {
+    EXPECT_EQ(a.position(v).x, b.position(v).x);
+    EXPECT_EQ(a.position(v).y, b.position(v).y);
+    EXPECT_EQ(a.position(v).z, b.position(v).z);
+  }
+  for (std::size_t f = 0; f < a.face_count(); ++f) {
+    const auto fa = a.face(f);
+    const auto fb = b.face(f);
+    EXPECT_TRUE(std::equal(fa.begin(), fa.end(), fb.begin(), fb.end())) << f;
+    EXPECT_EQ(a.tag(f).semantic, b.tag(f).semantic);
+  }
+  EXPECT_EQ(a.position(0).x + a.position(0).y + a.position(0).z, 0.0);  // (0,0,0) first
+  EXPECT_TRUE(is_watertight(a));
+  EXPECT_NEAR(volume(a), 1.0, 1e-12);
 }
 
 TEST(Mesh, FlippedCubeHasNegativeVolume) {

@@ -90,7 +90,9 @@ kernel::Mesh fold(Context& c, const std::vector<PolyPtr>& operands, kernel::Bool
 ValuePtr solid_value(Context& c, kernel::Mesh mesh, Range at) {
   c.charge(static_cast<double>(mesh.face_count()), at);
   if (mesh.empty()) return polyhedron_value(c, make_leaf(3, {}, {}), at);
-  return polyhedron_value(c, make_solid(std::move(mesh)), at);
+  // CGAL numbers the result's vertices by its own bookkeeping: the order is made geometric, so
+  // equal solids are equal bytes whatever else the process computed before.
+  return polyhedron_value(c, make_solid(kernel::canonical_order(mesh)), at);
 }
 
 std::vector<PolyPtr> operands(Context& c, const ValuePtr& v, std::string_view who, Range at) {
