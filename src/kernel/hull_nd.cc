@@ -179,7 +179,7 @@ double cross(const double* o, const double* a, const double* b) {
 }
 
 // The edges of a convex polygon (Andrew's monotone chain), as pairs of positions. A point within
-// the tolerance of the line through its neighbours on the chain is not a corner.
+// the merging radius of the line through its neighbours on the chain is not a corner.
 std::vector<IndexSet> polygon_edges(const std::vector<double>& coords, double tolerance) {
   const std::size_t count = coords.size() / 2;
   std::vector<PointIndex> order(count);
@@ -212,7 +212,7 @@ std::vector<IndexSet> polygon_edges(const std::vector<double>& coords, double to
 }
 
 // The faces of a solid from the kernel's own quickhull (convex_hull.h), which merges coplanar
-// triangles like Qhull's 'C-' but costs a tenth of a Qhull run on a box (docs/kernel-polytopes.md).
+// triangles like Qhull's 'C-' and halves polytope_nd's time on a box (docs/kernel-polytopes.md).
 // Its mesh keeps the input positions exactly, so a sorted look-up names them by position again.
 std::vector<IndexSet> solid_faces(const std::vector<double>& coords, double tolerance) {
   std::vector<Vec3> points;
@@ -263,7 +263,7 @@ std::vector<IndexSet> facets_of(const std::vector<double>& coords, int j, double
       .value_or(std::vector<IndexSet>{});
 }
 
-// The facets of a facet F are the inclusion-maximal sets F ∩ G over the polytope's facets G that
+// The facets of a face F are the inclusion-maximal sets F ∩ G over the polytope's facets G that
 // neither hold F nor miss it: every face is the intersection of the facets holding it, so a facet
 // R of F is F ∩ G for any facet G that holds R but not F. The lattice thus follows from the
 // facets' vertex sets alone (Kaibel and Pfetsch, "Computing the face lattice of a polytope from
