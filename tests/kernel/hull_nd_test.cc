@@ -361,6 +361,28 @@ TEST(HullNd, RotatedNoisyBoxesIn4dTo6d) {
   }
 }
 
+TEST(HullNd, QhullStaysSilentWhenItFails) {
+  // Unit 4- to 6-cubes shaken by noise near the merging radius: on the 6-cube with noise 1e-10
+  // Qhull stops with a "wide merge" error on its first attempt (options 'C-r'), which it reports
+  // on its error stream; none of that may reach ours, and a later attempt must succeed.
+  std::mt19937 rng(0);
+  std::normal_distribution<double> normal;
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  for (int n = 4; n <= 6; ++n) {
+    for (double noise : {1e-12, 1e-11, 1e-10, 1e-9, 1e-8}) {
+      Points points;
+      for (int i = 0; i < (1 << n); ++i) {
+        for (int c = 0; c < n; ++c) points.push_back(((i >> c) & 1) + noise * normal(rng));
+      }
+      const PolytopeNd p = polytope_nd(points, n);
+      EXPECT_TRUE(p.ok()) << n << "D, noise " << noise;
+    }
+  }
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+}
+
 TEST(HullNd, BadInputGivesAStatus) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
