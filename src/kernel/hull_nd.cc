@@ -423,8 +423,15 @@ HullNdStatus validate(std::span<const double> points, int n) {
   return HullNdStatus::kOk;
 }
 
+// The default tolerance grows with the coordinates' size as well as the extent: rounding a
+// coordinate of size M moves it by up to about 1e-16 M, so a rotated unit cube at UTM northings
+// (5e6) has facets bent by 2e-10, and the merging radius (a hundredth of the tolerance) must stay
+// above that.
 double resolve_tolerance(std::span<const double> points, int n, double tolerance) {
-  return tolerance > 0 ? tolerance : 1e-9 * extent(points, n);
+  if (tolerance > 0) return tolerance;
+  double largest = 0;
+  for (double x : points) largest = std::max(largest, std::abs(x));
+  return 1e-9 * extent(points, n) + 1e-12 * largest;
 }
 
 // The pulling triangulation of every face reached, memoised per face.

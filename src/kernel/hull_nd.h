@@ -29,7 +29,8 @@ std::string_view hull_nd_status_message(HullNdStatus status);
 // The smallest affine subspace holding the points: origin + span of `basis` (dim orthonormal
 // vectors of n coordinates each, flattened). Points farther than `tolerance` from the subspace
 // spanned so far raise its dimension; 0 picks 1e-9 times the points' extent (the diagonal of their
-// bounding box). Gram-Schmidt with pivoting: the origin is the first point, each new axis points
+// bounding box) plus 1e-12 times their largest absolute coordinate (for the rounding of far
+// coordinates). Gram-Schmidt with pivoting: the origin is the first point, each new axis points
 // to the point farthest from the flat so far. No points, n <= 0, a count of coordinates that is no
 // multiple of n or a non-finite coordinate give dim -1.
 struct AffineFrame {

@@ -361,6 +361,31 @@ TEST(HullNd, RotatedNoisyBoxesIn4dTo6d) {
   }
 }
 
+TEST(HullNd, RotatedCubesFarFromTheOriginKeepTheirFacets) {
+  // A coordinate near 5e6 (a UTM northing) is rounded by up to 5e-10, which bends a rotated unit
+  // cube's facets by about that much: the default tolerance grows with the coordinates so they
+  // still merge (with the extent alone they split, 8 15 9 in 3D).
+  std::mt19937 rng(4);
+  for (int n = 3; n <= 5; ++n) {
+    for (int round = 0; round < 5; ++round) {
+      const std::vector<double> m = rotation(n, rng);
+      Points points;
+      for (int i = 0; i < (1 << n); ++i) {
+        for (int a = 0; a < n; ++a) {
+          double x = 0;
+          for (int c = 0; c < n; ++c) x += m[a * n + c] * ((i >> c) & 1);
+          points.push_back(x + 5e6);
+        }
+      }
+      const PolytopeNd p = polytope_nd(points, n);
+      ASSERT_TRUE(p.ok());
+      for (int k = 0; k <= n; ++k) {
+        EXPECT_EQ(p.faces[k].size(), binomial(n, k) * std::pow(2, n - k)) << n << "D, " << k;
+      }
+    }
+  }
+}
+
 TEST(HullNd, QhullStaysSilentWhenItFails) {
   // Unit 4- to 6-cubes shaken by noise near the merging radius: on the 6-cube with noise 1e-10
   // Qhull stops with a "wide merge" error on its first attempt (options 'C-r'), which it reports
