@@ -368,6 +368,74 @@ std::optional<std::vector<std::vector<IndexSet>>> lattice(std::vector<IndexSet> 
   return faces;
 }
 
+// The (j - 1)-faces inside a j-face of a lattice: those that meet it in all their vertices.
+// Counting the meetings through each vertex's faces costs the sizes of those lists, not a test of
+// every face.
+class Containment {
+ public:
+  explicit Containment(const std::vector<std::vector<IndexSet>>& faces)
+      : faces_(faces), faces_at_(faces.size()) {}
+
+  std::vector<std::uint32_t> facets(int j, const IndexSet& face) {
+    std::vector<std::vector<std::uint32_t>>& at = faces_at_[j - 1];
+    const std::vector<IndexSet>& level = faces_[j - 1];
+    if (at.empty()) {
+      at.resize(faces_.back().front().back() + 1);
+      for (std::uint32_t g = 0; g < level.size(); ++g) {
+        for (PointIndex v : level[g]) at[v].push_back(g);
+      }
+    }
+    meetings_.resize(std::max(meetings_.size(), level.size()));
+    std::vector<std::uint32_t> inside;
+    for (PointIndex v : face) {
+      for (std::uint32_t g : at[v]) {
+        if (++meetings_[g] == level[g].size()) inside.push_back(g);
+      }
+    }
+    for (PointIndex v : face) {
+      for (std::uint32_t g : at[v]) meetings_[g] = 0;
+    }
+    std::sort(inside.begin(), inside.end());
+    return inside;
+  }
+
+ private:
+  const std::vector<std::vector<IndexSet>>& faces_;
+  std::vector<std::vector<std::vector<std::uint32_t>>> faces_at_;  // per level: vertex -> faces
+  std::vector<std::uint32_t> meetings_;                            // per face of a level, zeroed
+};
+
+// The diamond property of a polytope's lattice: between a face and a face two dimensions lower
+// inside it lie exactly two faces (and every edge has two vertices). Qhull's merged facets of
+// noisy near-degenerate input in 6D once passed the ridge and Euler checks but not this one, and
+// their pulling triangulation put a ridge into three simplices (tests/data/hull_nd/diamond_6d.txt).
+bool diamonds_hold(const std::vector<std::vector<IndexSet>>& faces) {
+  Containment inside(faces);
+  const int dim = static_cast<int>(faces.size()) - 1;
+  std::vector<std::vector<std::vector<std::uint32_t>>> children(dim + 1);
+  for (int j = 1; j <= dim; ++j) {
+    for (const IndexSet& face : faces[j]) children[j].push_back(inside.facets(j, face));
+  }
+  for (const std::vector<std::uint32_t>& edge : children[1]) {
+    if (edge.size() != 2) return false;
+  }
+  std::vector<std::uint32_t> below;
+  for (int j = 2; j <= dim; ++j) {
+    for (const std::vector<std::uint32_t>& facets : children[j]) {
+      below.clear();
+      for (std::uint32_t f : facets) {
+        below.insert(below.end(), children[j - 1][f].begin(), children[j - 1][f].end());
+      }
+      std::sort(below.begin(), below.end());
+      for (std::size_t i = 0; i < below.size(); i += 2) {
+        if (i + 1 >= below.size() || below[i + 1] != below[i]) return false;
+        if (i + 2 < below.size() && below[i + 2] == below[i]) return false;
+      }
+    }
+  }
+  return true;
+}
+
 // The lattice of the full-dimensional polytope of the points `coords` (dim per point), whose
 // input indices are `members`.
 std::optional<std::vector<std::vector<IndexSet>>> face_lattice(const std::vector<double>& coords,
@@ -380,7 +448,9 @@ std::optional<std::vector<std::vector<IndexSet>>> face_lattice(const std::vector
     for (IndexSet& facet : facets) {
       for (PointIndex& i : facet) i = members[i];  // positions -> input indices, still ascending
     }
-    if (auto faces = lattice(std::move(facets), dim)) return faces;
+    // The diamond check costs about as much as the lattice; below 4D no Qhull merging needs it.
+    std::optional<std::vector<std::vector<IndexSet>>> faces = lattice(std::move(facets), dim);
+    if (faces && (dim < 4 || diamonds_hold(*faces))) return faces;
   }
   return std::nullopt;
 }
@@ -438,9 +508,8 @@ double resolve_tolerance(std::span<const double> points, int n, double tolerance
 class Puller {
  public:
   Puller(const PolytopeNd& polytope, std::span<const std::uint64_t> order)
-      : p_(polytope), order_(order) {
+      : p_(polytope), order_(order), inside_(polytope.faces) {
     for (const auto& level : p_.faces) memo_.emplace_back(level.size());
-    faces_at_.resize(p_.faces.size());
   }
 
   const std::vector<IndexSet>& simplices(int j, std::size_t f) {
@@ -455,7 +524,7 @@ class Puller {
           *std::min_element(face.begin(), face.end(), [&](PointIndex a, PointIndex b) {
             return std::make_pair(key(a), a) < std::make_pair(key(b), b);
           });
-      for (std::uint32_t g : facets_of_face(j, face)) {
+      for (std::uint32_t g : inside_.facets(j, face)) {
         const IndexSet& facet = p_.faces[j - 1][g];
         if (std::binary_search(facet.begin(), facet.end(), apex)) continue;
         for (IndexSet s : simplices(j - 1, g)) {
@@ -471,36 +540,10 @@ class Puller {
  private:
   std::uint64_t key(PointIndex i) const { return order_.empty() ? i : order_[i]; }
 
-  // The (j - 1)-faces inside a j-face: those that meet it in all their vertices. Counting the
-  // meetings through each vertex's faces costs the sizes of those lists, not a test of every face.
-  std::vector<std::uint32_t> facets_of_face(int j, const IndexSet& face) {
-    std::vector<std::vector<std::uint32_t>>& at = faces_at_[j - 1];
-    const std::vector<IndexSet>& level = p_.faces[j - 1];
-    if (at.empty()) {
-      at.resize(p_.vertices().back() + 1);
-      for (std::uint32_t g = 0; g < level.size(); ++g) {
-        for (PointIndex v : level[g]) at[v].push_back(g);
-      }
-    }
-    meetings_.resize(std::max(meetings_.size(), level.size()));
-    std::vector<std::uint32_t> inside;
-    for (PointIndex v : face) {
-      for (std::uint32_t g : at[v]) {
-        if (++meetings_[g] == level[g].size()) inside.push_back(g);
-      }
-    }
-    for (PointIndex v : face) {
-      for (std::uint32_t g : at[v]) meetings_[g] = 0;
-    }
-    std::sort(inside.begin(), inside.end());
-    return inside;
-  }
-
   const PolytopeNd& p_;
   std::span<const std::uint64_t> order_;
+  Containment inside_;
   std::vector<std::vector<std::optional<std::vector<IndexSet>>>> memo_;
-  std::vector<std::vector<std::vector<std::uint32_t>>> faces_at_;  // per level: vertex -> faces
-  std::vector<std::uint32_t> meetings_;                            // per face of a level, zeroed
 };
 
 }  // namespace

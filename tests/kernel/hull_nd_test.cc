@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <numeric>
 #include <random>
 #include <set>
+#include <sstream>
+#include <string>
 
 #include "kernel/convex_hull.h"
 
@@ -384,6 +387,35 @@ TEST(HullNd, RotatedCubesFarFromTheOriginKeepTheirFacets) {
       }
     }
   }
+}
+
+// Points from a text file of the corpus, one per line; '#' starts a comment line.
+Points read_points(const std::string& name) {
+  std::ifstream in(std::string(INSULA_TEST_DATA) + "/hull_nd/" + name);
+  Points points;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    for (double x; fields >> x;) points.push_back(x);
+  }
+  return points;
+}
+
+TEST(HullNd, BrokenDiamondsAreRetried) {
+  const Points points = read_points("diamond_6d.txt");
+  ASSERT_EQ(points.size(), 32U * 6);
+  const PolytopeNd p = polytope_nd(points, 6);
+  ASSERT_TRUE(p.ok());
+  EXPECT_EQ(p.dim, 6);
+  EXPECT_EQ(euler_sum(p), 1);
+  std::vector<std::uint64_t> reverse(32);
+  for (std::size_t i = 0; i < reverse.size(); ++i) reverse[i] = 32 - i;
+  const std::vector<IndexSet> forward = simplices_nd(p);
+  const std::vector<IndexSet> backward = simplices_nd(p, reverse);
+  expect_proper_decomposition(points, 6, forward, true);
+  expect_proper_decomposition(points, 6, backward, true);
+  EXPECT_NEAR(total_volume(points, 6, forward), total_volume(points, 6, backward), 1e-9);
 }
 
 TEST(HullNd, QhullStaysSilentWhenItFails) {
