@@ -337,6 +337,7 @@ TEST(HullNd, RotatedNoisyBoxesIn4dTo6d) {
   std::normal_distribution<double> normal;
   for (int n = 4; n <= 6; ++n) {
     for (double noise : {1e-14, 1e-12, 1e-11, 1e-8}) {
+      if (n == 6 && noise > 1e-10) continue;  // 3648 facets: half a second, 5 s under ASan
       SCOPED_TRACE(testing::Message() << n << "D, noise " << noise);
       const std::vector<double> m = rotation(n, rng);
       Points points;
@@ -419,25 +420,23 @@ TEST(HullNd, BrokenDiamondsAreRetried) {
 }
 
 TEST(HullNd, QhullStaysSilentWhenItFails) {
-  // Unit 4- to 6-cubes shaken by noise near the merging radius: on the 6-cube with noise 1e-10
-  // Qhull stops with a "wide merge" error on its first attempt (options 'C-r'), which it reports
-  // on its error stream; none of that may reach ours, and a later attempt must succeed.
+  // A unit 5-cube shaken by noise 1e-10, a few merging radii: Qhull stops with a "wide merge"
+  // error on its first attempt (options 'C-r') and reports it on its error stream; none of that
+  // may reach ours, and a later attempt must succeed.
   std::mt19937 rng(0);
   std::normal_distribution<double> normal;
+  Points points;
+  for (int i = 0; i < 32; ++i) {
+    for (int c = 0; c < 5; ++c) points.push_back(((i >> c) & 1) + 1e-10 * normal(rng));
+  }
   testing::internal::CaptureStdout();
   testing::internal::CaptureStderr();
-  for (int n = 4; n <= 6; ++n) {
-    for (double noise : {1e-12, 1e-11, 1e-10, 1e-9, 1e-8}) {
-      Points points;
-      for (int i = 0; i < (1 << n); ++i) {
-        for (int c = 0; c < n; ++c) points.push_back(((i >> c) & 1) + noise * normal(rng));
-      }
-      const PolytopeNd p = polytope_nd(points, n);
-      EXPECT_TRUE(p.ok()) << n << "D, noise " << noise;
-    }
-  }
+  const PolytopeNd p = polytope_nd(points, 5);
   EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+  ASSERT_TRUE(p.ok());
+  EXPECT_EQ(p.vertices(), iota_set(32));
+  EXPECT_EQ(euler_sum(p), 1);
 }
 
 TEST(HullNd, BadInputGivesAStatus) {
