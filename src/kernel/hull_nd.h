@@ -56,7 +56,7 @@ struct PolytopeNd {
   // that is not a vertex (inside, or on a face but not at a corner) is in no set.
   std::vector<std::vector<IndexSet>> faces;
   bool ok() const { return status == HullNdStatus::kOk; }
-  const IndexSet& vertices() const { return faces.back().front(); }  // all vertices
+  const IndexSet& vertices() const { return faces.back().front(); }  // all vertices; only if ok()
 };
 PolytopeNd polytope_nd(std::span<const double> points, int n, double tolerance = 0);
 
