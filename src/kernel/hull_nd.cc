@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -53,9 +52,8 @@ void remove_span(const AffineFrame& frame, std::vector<double>& v) {
   }
 }
 
-// The affine frame with at most `max_dim` axes: a facet's vertices span one dimension less than
-// its polytope even when Qhull merged facets that bend by up to the tolerance.
-AffineFrame frame_upto(std::span<const double> points, int n, double tolerance, int max_dim) {
+// Gram-Schmidt with pivoting: each new axis points to the point farthest from the flat so far.
+AffineFrame frame_of(std::span<const double> points, int n, double tolerance) {
   AffineFrame frame;
   frame.space_dim = n;
   if (n <= 0 || points.size() < static_cast<std::size_t>(n)) return frame;
@@ -63,7 +61,7 @@ AffineFrame frame_upto(std::span<const double> points, int n, double tolerance, 
   frame.origin.assign(points.begin(), points.begin() + n);
   frame.dim = 0;
   std::vector<double> residual(n), best(n);
-  while (frame.dim < max_dim) {
+  while (frame.dim < n) {
     double best_distance = tolerance;
     bool found = false;
     for (std::size_t i = 1; i < count; ++i) {
@@ -115,24 +113,45 @@ FILE* null_file() {
   return file;
 }
 
-// The facets of a full-dimensional hull of `count` points in R^dim (dim >= 3) from Qhull, each as
-// the set of positions of its vertices in the input; nullopt when Qhull reports an error. Qhull's
-// errors longjmp back into qh_new_qhull itself (its setjmp), never through our frames. Facets
-// whose centrums lie within the tolerance of a neighbour's hyperplane are merged ('C-'), so a
-// cube has square facets.
+// Facets (and edges of polygons) merge when they are coplanar within this fraction of the
+// tolerance. Merging within the full tolerance drops real vertices of polytopes only a few
+// tolerances thick (a unit 3-cube in R^4 with one corner lifted by 2e-9 came out as a simplex);
+// a hundredth leaves them a hundred merging radii thick.
+constexpr double kMergeFraction = 0.01;
+
+// Qhull's options, tried in turn until the facets form a polytope's lattice (lattice()). Merged
+// facets are fragile when the input's noise is close to the merging radius: Qhull then stops with
+// a "wide merge" or topology error, or reports facets whose intersections form no lattice. So:
+// merging within the merging radius ('C-'), within Qhull's own roundoff estimate (its default),
+// then triangulated ('Qt') and finally joggled ('QJ') output, which is simplicial and succeeds.
+constexpr int kQhullAttempts = 4;
+
+std::string qhull_command(int attempt, double tolerance) {
+  switch (attempt) {
+    case 0: {
+      char option[48];
+      std::snprintf(option, sizeof option, "qhull C-%.17g", tolerance);
+      return option;
+    }
+    case 1:
+      return "qhull";
+    case 2:
+      return "qhull Qt";
+    default:
+      return "qhull QJ";
+  }
+}
+
+// The facets of a full-dimensional hull of points in R^dim (dim >= 4) from Qhull, each as the set
+// of positions of its vertices in the input; nullopt when Qhull reports an error. Qhull's errors
+// longjmp back into qh_new_qhull itself (its setjmp), never through our frames.
 std::optional<std::vector<IndexSet>> qhull_facets(std::vector<double> coords, int dim,
-                                                  double tolerance) {
+                                                  std::string command) {
   const auto qh_storage = std::make_unique<qhT>();
   qhT* qh = qh_storage.get();
   FILE* quiet = null_file();
   if (quiet == nullptr) return std::nullopt;
   qh_zero(qh, quiet);
-  std::string command = "qhull";
-  if (tolerance > 0) {
-    char option[48];
-    std::snprintf(option, sizeof option, " C-%.17g", tolerance);
-    command += option;
-  }
   const int count = static_cast<int>(coords.size() / dim);
   const int exit_code =
       qh_new_qhull(qh, dim, count, coords.data(), False, command.data(), nullptr, quiet);
@@ -160,7 +179,7 @@ double cross(const double* o, const double* a, const double* b) {
 }
 
 // The edges of a convex polygon (Andrew's monotone chain), as pairs of positions. A point within
-// the tolerance of the line through its neighbours on the chain is not a corner.
+// the merging radius of the line through its neighbours on the chain is not a corner.
 std::vector<IndexSet> polygon_edges(const std::vector<double>& coords, double tolerance) {
   const std::size_t count = coords.size() / 2;
   std::vector<PointIndex> order(count);
@@ -193,7 +212,7 @@ std::vector<IndexSet> polygon_edges(const std::vector<double>& coords, double to
 }
 
 // The faces of a solid from the kernel's own quickhull (convex_hull.h), which merges coplanar
-// triangles like Qhull's 'C-' but costs a tenth of a Qhull run on a box (docs/kernel-polytopes.md).
+// triangles like Qhull's 'C-' and halves polytope_nd's time on a box (docs/kernel-polytopes.md).
 // Its mesh keeps the input positions exactly, so a sorted look-up names them by position again.
 std::vector<IndexSet> solid_faces(const std::vector<double>& coords, double tolerance) {
   std::vector<Vec3> points;
@@ -227,8 +246,10 @@ std::vector<IndexSet> solid_faces(const std::vector<double>& coords, double tole
 }
 
 // The facets of a j-dimensional polytope given by `coords` (j per point), as sets of positions:
-// one algorithm per dimension (the two extremes, the monotone chain, Qhull). Empty on failure.
-std::vector<IndexSet> facets_of(const std::vector<double>& coords, int j, double tolerance) {
+// one algorithm per dimension (the two extremes, the monotone chain, the kernel's quickhull,
+// Qhull with the attempt's options). Empty on failure.
+std::vector<IndexSet> facets_of(const std::vector<double>& coords, int j, double tolerance,
+                                int attempt) {
   if (j == 1) {
     const auto [lo, hi] = std::minmax_element(coords.begin(), coords.end());
     const auto a = static_cast<PointIndex>(lo - coords.begin());
@@ -238,83 +259,201 @@ std::vector<IndexSet> facets_of(const std::vector<double>& coords, int j, double
   }
   if (j == 2) return polygon_edges(coords, tolerance);
   if (j == 3) return solid_faces(coords, tolerance);
-  return qhull_facets(coords, j, tolerance).value_or(std::vector<IndexSet>{});
+  return qhull_facets(coords, j, qhull_command(attempt, tolerance))
+      .value_or(std::vector<IndexSet>{});
 }
 
-// Builds the face lattice top-down. A face arrives as a candidate set of points (a facet as
-// Qhull or the chain reports it, which may hold points in its relative interior or on its
-// boundary); its true vertices are the union of its facets' true vertices, so only corners
-// reach the lattice. Candidates are memoised per dimension, so a face shared by several facets is
-// decomposed once.
-class LatticeBuilder {
- public:
-  LatticeBuilder(int dim, double tolerance)
-      : tolerance_(tolerance), memo_(dim + 1), faces_(dim + 1) {}
-
-  // The true vertex set of the j-face whose candidate points are `members` (sorted), with
-  // coordinates `coords` (j per member) in a frame of the face; nullopt when a step failed.
-  std::optional<IndexSet> face(const IndexSet& members, const std::vector<double>& coords, int j) {
-    if (members.size() == static_cast<std::size_t>(j + 1)) return simplex(members);
-    const std::vector<IndexSet> facets = facets_of(coords, j, tolerance_);
-    if (facets.size() < static_cast<std::size_t>(j + 1)) return std::nullopt;
-    IndexSet vertices;
-    for (const IndexSet& positions : facets) {
-      const std::optional<IndexSet> facet = sub_face(members, coords, j, positions);
-      if (!facet) return std::nullopt;
-      vertices.insert(vertices.end(), facet->begin(), facet->end());
-    }
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    faces_[j].push_back(vertices);
-    return vertices;
+// The facets of a face F are the inclusion-maximal sets F ∩ G over the polytope's facets G that
+// neither hold F nor miss it: every face is the intersection of the facets holding it, so a facet
+// R of F is F ∩ G for any facet G that holds R but not F. The lattice thus follows from the
+// facets' vertex sets alone (Kaibel and Pfetsch, "Computing the face lattice of a polytope from
+// its vertex-facet incidences", 2002, in the plain quadratic form), and stays consistent however
+// the facets were merged: a geometric recursion into each facet could split a shared ridge
+// differently on its two sides.
+std::vector<IndexSet> sub_facets(const IndexSet& face, const std::vector<IndexSet>& facets,
+                                 const std::vector<std::vector<std::uint32_t>>& facets_at) {
+  std::vector<std::uint32_t> near;  // the facets that meet the face
+  for (PointIndex v : face) near.insert(near.end(), facets_at[v].begin(), facets_at[v].end());
+  std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+  std::vector<IndexSet> cuts;
+  IndexSet cut;
+  for (std::uint32_t g : near) {
+    cut.clear();
+    std::set_intersection(face.begin(), face.end(), facets[g].begin(), facets[g].end(),
+                          std::back_inserter(cut));
+    if (cut.size() < face.size()) cuts.push_back(cut);
   }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  std::vector<IndexSet> maximal;
+  for (const IndexSet& c : cuts) {
+    const bool covered = std::any_of(cuts.begin(), cuts.end(), [&](const IndexSet& d) {
+      return d.size() > c.size() && std::includes(d.begin(), d.end(), c.begin(), c.end());
+    });
+    if (!covered) maximal.push_back(c);
+  }
+  return maximal;
+}
 
-  // Every face once, each dimension's faces in lexicographic order.
-  std::vector<std::vector<IndexSet>> faces() && {
-    for (std::vector<IndexSet>& level : faces_) {
-      std::sort(level.begin(), level.end());
-      level.erase(std::unique(level.begin(), level.end()), level.end());
+void sort_unique(std::vector<IndexSet>& sets) {
+  std::sort(sets.begin(), sets.end());
+  sets.erase(std::unique(sets.begin(), sets.end()), sets.end());
+}
+
+// Every ridge lies in exactly two facets.
+bool ridges_pair_up(std::vector<IndexSet>& ridges) {
+  std::sort(ridges.begin(), ridges.end());
+  for (std::size_t i = 0; i < ridges.size(); i += 2) {
+    if (i + 1 >= ridges.size() || ridges[i + 1] != ridges[i]) return false;
+    if (i + 2 < ridges.size() && ridges[i + 2] == ridges[i]) return false;
+  }
+  return true;
+}
+
+// Euler's relation with the polytope itself counted: sum of (-1)^k f_k over k = 0 ... dim is 1.
+bool euler_holds(const std::vector<std::vector<IndexSet>>& faces) {
+  long sum = 0;
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    sum += (k % 2 ? -1 : 1) * static_cast<long>(faces[k].size());
+  }
+  return sum == 1;
+}
+
+// The face lattice of a dim-polytope (dim >= 1) from its facets; nullopt when the facets do not
+// form one (ridges not in pairs, Euler's relation broken). A point the facet algorithm kept on a
+// ridge or inside a facet is in no 0-face (a point inside edge ab lies on exactly the facets that
+// hold a and b), so it is dropped from every face at the end.
+std::optional<std::vector<std::vector<IndexSet>>> lattice(std::vector<IndexSet> facets, int dim) {
+  std::vector<std::vector<IndexSet>> faces(dim + 1);
+  sort_unique(facets);
+  faces[dim - 1] = facets;
+  std::vector<std::vector<std::uint32_t>> facets_at;  // point -> the facets holding it
+  for (std::uint32_t g = 0; g < facets.size(); ++g) {
+    for (PointIndex v : facets[g]) {
+      if (v >= facets_at.size()) facets_at.resize(v + 1);
+      facets_at[v].push_back(g);
     }
-    return std::move(faces_);
+  }
+  for (int j = dim - 1; j >= 1; --j) {
+    for (const IndexSet& face : faces[j]) {
+      if (face.size() == static_cast<std::size_t>(j + 1)) {
+        // A j-face of j + 1 points is a simplex: its facets are its j-subsets.
+        for (std::size_t drop = 0; drop < face.size(); ++drop) {
+          IndexSet sub = face;
+          sub.erase(sub.begin() + static_cast<std::ptrdiff_t>(drop));
+          faces[j - 1].push_back(std::move(sub));
+        }
+        continue;
+      }
+      for (IndexSet& sub : sub_facets(face, facets, facets_at))
+        faces[j - 1].push_back(std::move(sub));
+    }
+    if (j == dim - 1 && dim >= 2 && !ridges_pair_up(faces[j - 1])) return std::nullopt;
+    sort_unique(faces[j - 1]);
+  }
+  IndexSet vertices;
+  for (const IndexSet& v : faces[0]) vertices.push_back(v.front());
+  std::sort(vertices.begin(), vertices.end());
+  for (int j = 1; j < dim; ++j) {
+    for (IndexSet& face : faces[j]) {
+      std::erase_if(face, [&](PointIndex i) {
+        return !std::binary_search(vertices.begin(), vertices.end(), i);
+      });
+    }
+    sort_unique(faces[j]);
+  }
+  faces[dim] = {std::move(vertices)};
+  if (!euler_holds(faces)) return std::nullopt;
+  return faces;
+}
+
+// The (j - 1)-faces inside a j-face of a lattice: those that meet it in all their vertices.
+// Counting the meetings through each vertex's faces costs the sizes of those lists, not a test of
+// every face.
+class Containment {
+ public:
+  explicit Containment(const std::vector<std::vector<IndexSet>>& faces)
+      : faces_(faces), faces_at_(faces.size()) {}
+
+  std::vector<std::uint32_t> facets(int j, const IndexSet& face) {
+    std::vector<std::vector<std::uint32_t>>& at = faces_at_[j - 1];
+    const std::vector<IndexSet>& level = faces_[j - 1];
+    if (at.empty()) {
+      at.resize(faces_.back().front().back() + 1);
+      for (std::uint32_t g = 0; g < level.size(); ++g) {
+        for (PointIndex v : level[g]) at[v].push_back(g);
+      }
+    }
+    meetings_.resize(std::max(meetings_.size(), level.size()));
+    std::vector<std::uint32_t> inside;
+    for (PointIndex v : face) {
+      for (std::uint32_t g : at[v]) {
+        if (++meetings_[g] == level[g].size()) inside.push_back(g);
+      }
+    }
+    for (PointIndex v : face) {
+      for (std::uint32_t g : at[v]) meetings_[g] = 0;
+    }
+    std::sort(inside.begin(), inside.end());
+    return inside;
   }
 
  private:
-  // A face of j + 1 points spanning j dimensions is a simplex: every subset of its points is a
-  // face, so its lattice needs no geometry (most facets of hulls of scattered points).
-  IndexSet simplex(const IndexSet& members) {
-    const std::size_t count = members.size();
-    for (std::uint32_t mask = 1; mask < (1U << count); ++mask) {
-      IndexSet subset;
-      for (std::size_t b = 0; b < count; ++b) {
-        if (mask & (1U << b)) subset.push_back(members[b]);
-      }
-      faces_[subset.size() - 1].push_back(std::move(subset));
-    }
-    return members;
-  }
-
-  std::optional<IndexSet> sub_face(const IndexSet& members, const std::vector<double>& coords,
-                                   int j, const IndexSet& positions) {
-    IndexSet sub;
-    for (PointIndex p : positions) sub.push_back(members[p]);
-    if (sub.size() == static_cast<std::size_t>(j)) return simplex(sub);
-    if (const auto it = memo_[j - 1].find(sub); it != memo_[j - 1].end()) return it->second;
-    std::vector<double> sub_coords;
-    for (PointIndex p : positions) {
-      sub_coords.insert(sub_coords.end(), coords.begin() + p * j, coords.begin() + (p + 1) * j);
-    }
-    const AffineFrame frame = frame_upto(sub_coords, j, tolerance_, j - 1);
-    if (frame.dim != j - 1) return std::nullopt;
-    std::optional<IndexSet> vertices = face(sub, local_points(frame, sub_coords), j - 1);
-    if (vertices) memo_[j - 1].emplace(std::move(sub), *vertices);
-    return vertices;
-  }
-
-  double tolerance_;
-  // Per dimension: candidate points -> true vertices, for the faces that are not simplices.
-  std::vector<std::map<IndexSet, IndexSet>> memo_;
-  std::vector<std::vector<IndexSet>> faces_;  // per dimension, with repeats until faces()
+  const std::vector<std::vector<IndexSet>>& faces_;
+  std::vector<std::vector<std::vector<std::uint32_t>>> faces_at_;  // per level: vertex -> faces
+  std::vector<std::uint32_t> meetings_;                            // per face of a level, zeroed
 };
+
+// The diamond property of a polytope's lattice: between a face and a face two dimensions lower
+// inside it lie exactly two faces (and every edge has two vertices). Qhull's merged facets of
+// noisy near-degenerate input in 6D once passed the ridge and Euler checks but not this one, and
+// their pulling triangulation put a ridge into three simplices (tests/data/hull_nd/diamond_6d.txt).
+bool diamonds_hold(const std::vector<std::vector<IndexSet>>& faces) {
+  Containment inside(faces);
+  const int dim = static_cast<int>(faces.size()) - 1;
+  std::vector<std::vector<std::vector<std::uint32_t>>> children(dim + 1);
+  for (int j = 1; j <= dim; ++j) {
+    for (const IndexSet& face : faces[j]) children[j].push_back(inside.facets(j, face));
+  }
+  for (const std::vector<std::uint32_t>& edge : children[1]) {
+    if (edge.size() != 2) return false;
+  }
+  std::vector<std::uint32_t> below;
+  for (int j = 2; j <= dim; ++j) {
+    for (const std::vector<std::uint32_t>& facets : children[j]) {
+      below.clear();
+      for (std::uint32_t f : facets) {
+        below.insert(below.end(), children[j - 1][f].begin(), children[j - 1][f].end());
+      }
+      std::sort(below.begin(), below.end());
+      for (std::size_t i = 0; i < below.size(); i += 2) {
+        if (i + 1 >= below.size() || below[i + 1] != below[i]) return false;
+        if (i + 2 < below.size() && below[i + 2] == below[i]) return false;
+      }
+    }
+  }
+  return true;
+}
+
+// The lattice of the full-dimensional polytope of the points `coords` (dim per point), whose
+// input indices are `members`.
+std::optional<std::vector<std::vector<IndexSet>>> face_lattice(const std::vector<double>& coords,
+                                                               int dim, double tolerance,
+                                                               const IndexSet& members) {
+  const int attempts = dim >= 4 ? kQhullAttempts : 1;
+  for (int attempt = 0; attempt < attempts; ++attempt) {
+    std::vector<IndexSet> facets = facets_of(coords, dim, tolerance, attempt);
+    if (facets.size() < static_cast<std::size_t>(dim + 1)) continue;
+    for (IndexSet& facet : facets) {
+      for (PointIndex& i : facet) i = members[i];  // positions -> input indices, still ascending
+    }
+    // The diamond check costs about as much as the lattice; below 4D no Qhull merging needs it.
+    std::optional<std::vector<std::vector<IndexSet>>> faces = lattice(std::move(facets), dim);
+    if (faces && (dim < 4 || diamonds_hold(*faces))) return faces;
+  }
+  return std::nullopt;
+}
 
 // The points that stand for themselves: of points within the tolerance of each other (in the
 // frame, so distances across the flat do not count), the lowest index. Sorted.
@@ -354,15 +493,22 @@ HullNdStatus validate(std::span<const double> points, int n) {
   return HullNdStatus::kOk;
 }
 
+// The default tolerance grows with the coordinates' size as well as the extent: rounding a
+// coordinate of size M moves it by up to about 1e-16 M, so a rotated unit cube at UTM northings
+// (5e6) has facets bent by 2e-10, and the merging radius (a hundredth of the tolerance) must stay
+// above that.
 double resolve_tolerance(std::span<const double> points, int n, double tolerance) {
-  return tolerance > 0 ? tolerance : 1e-9 * extent(points, n);
+  if (tolerance > 0) return tolerance;
+  double largest = 0;
+  for (double x : points) largest = std::max(largest, std::abs(x));
+  return 1e-9 * extent(points, n) + 1e-12 * largest;
 }
 
 // The pulling triangulation of every face reached, memoised per face.
 class Puller {
  public:
   Puller(const PolytopeNd& polytope, std::span<const std::uint64_t> order)
-      : p_(polytope), order_(order) {
+      : p_(polytope), order_(order), inside_(polytope.faces) {
     for (const auto& level : p_.faces) memo_.emplace_back(level.size());
   }
 
@@ -378,10 +524,9 @@ class Puller {
           *std::min_element(face.begin(), face.end(), [&](PointIndex a, PointIndex b) {
             return std::make_pair(key(a), a) < std::make_pair(key(b), b);
           });
-      for (std::size_t g = 0; g < p_.faces[j - 1].size(); ++g) {
+      for (std::uint32_t g : inside_.facets(j, face)) {
         const IndexSet& facet = p_.faces[j - 1][g];
         if (std::binary_search(facet.begin(), facet.end(), apex)) continue;
-        if (!std::includes(face.begin(), face.end(), facet.begin(), facet.end())) continue;
         for (IndexSet s : simplices(j - 1, g)) {
           s.insert(std::upper_bound(s.begin(), s.end(), apex), apex);
           out.push_back(std::move(s));
@@ -397,6 +542,7 @@ class Puller {
 
   const PolytopeNd& p_;
   std::span<const std::uint64_t> order_;
+  Containment inside_;
   std::vector<std::vector<std::optional<std::vector<IndexSet>>>> memo_;
 };
 
@@ -428,7 +574,7 @@ AffineFrame affine_frame(std::span<const double> points, int n, double tolerance
     none.space_dim = n;
     return none;
   }
-  return frame_upto(points, n, resolve_tolerance(points, n, tolerance), n);
+  return frame_of(points, n, resolve_tolerance(points, n, tolerance));
 }
 
 PolytopeNd polytope_nd(std::span<const double> points, int n, double tolerance) {
@@ -436,20 +582,26 @@ PolytopeNd polytope_nd(std::span<const double> points, int n, double tolerance) 
   result.status = validate(points, n);
   if (!result.ok()) return result;
   const double tol = resolve_tolerance(points, n, tolerance);
-  const AffineFrame frame = frame_upto(points, n, tol, n);
+  const AffineFrame frame = frame_of(points, n, tol);
   const std::vector<double> local = local_points(frame, points);
   const IndexSet members = representatives(local, frame.dim, points.size() / n, tol);
   std::vector<double> coords;
   for (PointIndex i : members) {
     coords.insert(coords.end(), local.begin() + i * frame.dim, local.begin() + (i + 1) * frame.dim);
   }
-  LatticeBuilder builder(frame.dim, tol);
-  if (!builder.face(members, coords, frame.dim)) {
-    result.status = HullNdStatus::kFailed;
+  result.dim = frame.dim;
+  if (frame.dim == 0) {
+    result.faces = {{members}};
     return result;
   }
-  result.dim = frame.dim;
-  result.faces = std::move(builder).faces();
+  std::optional<std::vector<std::vector<IndexSet>>> faces =
+      face_lattice(coords, frame.dim, tol * kMergeFraction, members);
+  if (!faces) {
+    result.status = HullNdStatus::kFailed;
+    result.dim = -1;
+    return result;
+  }
+  result.faces = std::move(*faces);
   return result;
 }
 

@@ -1,9 +1,11 @@
 // Convex polytopes in any dimension, given by points (V-representation): their affine hull, their
 // faces of every dimension and a simplicial decomposition. PLaSM's cells (seed 002) are convex
 // hulls of points in R^n with n up to 6 and more; JOIN, SKELETON, MAP and every export need these.
-// Full-dimensional hulls come from Qhull (Barber, Dobkin, Huhdanpaa, "The Quickhull algorithm for
-// convex hulls", ACM TOMS 22, 1996; the reentrant libqhull_r); a polytope of lower dimension than
-// its space is first expressed in an orthonormal frame of its affine hull.
+// A polytope is first expressed in an orthonormal frame of its affine hull; its facets come from
+// one algorithm per dimension (the extremes in 1, Andrew's monotone chain in 2, the kernel's
+// quickhull of convex_hull.h in 3, Qhull from 4: Barber, Dobkin, Huhdanpaa, "The Quickhull
+// algorithm for convex hulls", ACM TOMS 22, 1996, the reentrant libqhull_r), and the lower faces
+// follow from the facets' vertex sets alone. docs/kernel-polytopes.md has the tolerance rules.
 //
 // Points are flat arrays of doubles, `n` per point; every result names points by their index in
 // the input. Degenerate input (no points, non-finite coordinates) gives an empty result with a
@@ -26,7 +28,11 @@ std::string_view hull_nd_status_message(HullNdStatus status);
 
 // The smallest affine subspace holding the points: origin + span of `basis` (dim orthonormal
 // vectors of n coordinates each, flattened). Points farther than `tolerance` from the subspace
-// spanned so far raise its dimension; 0 picks 1e-9 times the points' extent.
+// spanned so far raise its dimension; 0 picks 1e-9 times the points' extent (the diagonal of their
+// bounding box) plus 1e-12 times their largest absolute coordinate (for the rounding of far
+// coordinates). Gram-Schmidt with pivoting: the origin is the first point, each new axis points
+// to the point farthest from the flat so far. No points, n <= 0, a count of coordinates that is no
+// multiple of n or a non-finite coordinate give dim -1.
 struct AffineFrame {
   int space_dim = 0;           // n
   int dim = -1;                // -1 for no points, 0 for one point, ...
@@ -38,6 +44,10 @@ struct AffineFrame {
 AffineFrame affine_frame(std::span<const double> points, int n, double tolerance = 0);
 
 // The face lattice of the convex hull of the points, from vertices up to the polytope itself.
+// Points within the tolerance of each other count as one, the lowest index standing for them;
+// facets coplanar within a hundredth of the tolerance merge (a cube has 6 square facets). A
+// point count that is no multiple of n gives kFailed, as does a hull whose facets never formed a
+// lattice (not met in testing).
 struct PolytopeNd {
   HullNdStatus status = HullNdStatus::kOk;
   int dim = -1;  // the dimension of the polytope (of its affine hull)
@@ -46,7 +56,7 @@ struct PolytopeNd {
   // that is not a vertex (inside, or on a face but not at a corner) is in no set.
   std::vector<std::vector<IndexSet>> faces;
   bool ok() const { return status == HullNdStatus::kOk; }
-  const IndexSet& vertices() const { return faces.back().front(); }  // all vertices
+  const IndexSet& vertices() const { return faces.back().front(); }  // all vertices; only if ok()
 };
 PolytopeNd polytope_nd(std::span<const double> points, int n, double tolerance = 0);
 
@@ -55,7 +65,9 @@ PolytopeNd polytope_nd(std::span<const double> points, int n, double tolerance =
 // is joined to a decomposition of every facet that does not contain it, recursively. Two
 // polytopes that share a face and are decomposed with the same order decompose that face
 // identically, so a complex of cells becomes a conforming simplicial complex. An empty `order`
-// means the point index itself.
-std::vector<IndexSet> simplices_nd(const PolytopeNd& polytope, std::span<const std::uint64_t> order = {});
+// means the point index itself; otherwise it needs an entry for every vertex, or the result is
+// empty (as it is for a polytope that is not ok()).
+std::vector<IndexSet> simplices_nd(const PolytopeNd& polytope,
+                                   std::span<const std::uint64_t> order = {});
 
 }  // namespace insula::kernel

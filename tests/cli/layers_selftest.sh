@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# tests/cli/layers.sh fails on a front-end including another front-end, and on an include pointing
-# up, and passes a tree without either: run on small trees built here.
+# tests/cli/layers.sh fails on a front-end including another front-end, on an include pointing up
+# and on a kernel opening a file, and passes a tree without them: run on small trees built here.
 set -u
 root=$2
 work=$(mktemp -d)
@@ -34,6 +34,15 @@ make_tree
 echo '#include "io/output.h"' > "$work/src/shape/s.cc"
 out=$(bash "$root/tests/cli/layers.sh" unused "$work") && fail "shape including io passed"
 echo "$out" | grep -q "layer 'shape' must not include 'io/'" || fail "message: $out"
+
+make_tree
+echo 'FILE* f = fopen("k.txt", "w");' > "$work/src/kernel/k.cc"
+out=$(bash "$root/tests/cli/layers.sh" unused "$work") && fail "kernel opening a file passed"
+echo "$out" | grep -q "kernel must not do file I/O" || fail "message: $out"
+
+make_tree
+echo 'FILE* f = fopencookie(nullptr, "w", discard);' > "$work/src/kernel/k.cc"
+out=$(bash "$root/tests/cli/layers.sh" unused "$work") || fail "kernel with an in-memory stream rejected: $out"
 
 # The real tree passes.
 bash "$root/tests/cli/layers.sh" unused "$root" > /dev/null || fail "the source tree fails layers.sh"
