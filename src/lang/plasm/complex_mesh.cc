@@ -130,17 +130,64 @@ bool add_planar(const std::vector<Vec3>& points, Vec3 preferred, Welder& welder,
   return true;
 }
 
+// The outward faces of a solid convex cell as loops of indices into `points`; false with the
+// hull's status when the points bound no solid. A tetrahedron (MAP's cells) needs no hull: its
+// faces follow from the sign of its volume, unless it is nearly flat.
+bool solid_loops(const std::vector<Vec3>& points, std::vector<std::vector<std::uint32_t>>& loops,
+                 kernel::HullStatus& status) {
+  loops.clear();
+  if (points.size() == 4) {
+    const Vec3& p = points[0];
+    const double volume = dot(cross(points[1] - p, points[2] - p), points[3] - p);
+    double longest = 0;
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j)
+        longest = std::max(longest, length(points[j] - points[i]));
+    if (std::abs(volume) > 1e-9 * longest * longest * longest) {
+      loops = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+      if (volume < 0)
+        for (std::vector<std::uint32_t>& loop : loops) std::reverse(loop.begin(), loop.end());
+      return true;
+    }
+  }
+  const kernel::Hull3Result hull = kernel::convex_hull_3d(points);
+  status = hull.status;
+  if (!hull.ok()) return false;
+  // The hull keeps the input coordinates: its vertices are found among the points.
+  std::vector<std::uint32_t> local(hull.mesh.vertex_count(), 0);
+  for (std::uint32_t v = 0; v < hull.mesh.vertex_count(); ++v) {
+    const Vec3 q = hull.mesh.position(v);
+    const auto it = std::find_if(points.begin(), points.end(), [&](const Vec3& p) {
+      return p.x == q.x && p.y == q.y && p.z == q.z;
+    });
+    if (it == points.end()) {
+      status = kernel::HullStatus::kNumericalFailure;
+      return false;
+    }
+    local[v] = static_cast<std::uint32_t>(it - points.begin());
+  }
+  for (std::size_t f = 0; f < hull.mesh.face_count(); ++f) {
+    std::vector<std::uint32_t> loop;
+    for (std::uint32_t v : hull.mesh.face(f)) loop.push_back(local[v]);
+    loops.push_back(std::move(loop));
+  }
+  return true;
+}
+
 }  // namespace
 
 kernel::Mesh complex_mesh(const FlatComplex& flat, std::span<const std::uint32_t> cells,
-                          kernel::FaceTag tag, MeshStats& stats) {
+                          kernel::FaceTag tag, MeshStats& stats, HullCache* cache) {
   kernel::Mesh mesh;
   Welder welder(mesh);
   Boundary boundary;
   const std::size_t count = cells.empty() ? flat.cells.size() : cells.size();
   std::vector<Vec3> points;
+  std::vector<std::vector<std::uint32_t>> fresh;
+  if (cache != nullptr && cache->entries.size() < flat.origins) cache->entries.resize(flat.origins);
   for (std::size_t k = 0; k < count; ++k) {
-    const Cell& cell = flat.cells[cells.empty() ? k : cells[k]];
+    const std::uint32_t index = cells.empty() ? static_cast<std::uint32_t>(k) : cells[k];
+    const Cell& cell = flat.cells[index];
     if (flat.dim > 3 || cell.size() < 3) {
       ++stats.skipped_cells;
       continue;
@@ -151,20 +198,35 @@ kernel::Mesh complex_mesh(const FlatComplex& flat, std::span<const std::uint32_t
       points.push_back({p[0], flat.dim > 1 ? p[1] : 0.0, flat.dim > 2 ? p[2] : 0.0});
     }
     if (flat.dim == 3 && cell.size() >= 4) {
-      const kernel::Hull3Result hull = kernel::convex_hull_3d(points);
-      if (hull.ok()) {
+      const std::uint32_t origin =
+          cache == nullptr || flat.origin.empty() ? FlatComplex::kNoOrigin : flat.origin[index];
+      HullCache::Entry* entry = origin == FlatComplex::kNoOrigin
+                                    ? nullptr
+                                    : &cache->entries[origin & ~FlatComplex::kMirrored];
+      const bool mirrored = (origin & FlatComplex::kMirrored) != 0;
+      kernel::HullStatus status = kernel::HullStatus::kOk;
+      const std::vector<std::vector<std::uint32_t>>* loops = nullptr;
+      if (entry != nullptr && entry->known) {
+        loops = &entry->loops;
+      } else if (solid_loops(points, fresh, status)) {
+        loops = &fresh;
+        if (entry != nullptr) *entry = {true, mirrored, fresh};
+      }
+      if (loops != nullptr) {
         ++stats.solid_cells;
-        for (std::size_t f = 0; f < hull.mesh.face_count(); ++f) {
+        const bool reverse = entry != nullptr && entry->mirrored != mirrored;
+        for (const std::vector<std::uint32_t>& face : *loops) {
           std::vector<std::uint32_t> loop;
-          for (std::uint32_t v : hull.mesh.face(f))
-            loop.push_back(welder.vertex(hull.mesh.position(v)));
+          loop.reserve(face.size());
+          for (std::uint32_t v : face) loop.push_back(welder.vertex(points[v]));
+          if (reverse) std::reverse(loop.begin(), loop.end());
           loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
           while (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
           if (loop.size() >= 3) boundary.add(std::move(loop));
         }
         continue;
       }
-      if (hull.status != kernel::HullStatus::kCoplanar) {
+      if (status != kernel::HullStatus::kCoplanar) {
         ++stats.skipped_cells;
         continue;
       }
