@@ -1,5 +1,6 @@
 #include "lang/plasm/eval.h"
 
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -380,6 +381,15 @@ ValuePtr Context::apply(const ValuePtr& fv, const ValuePtr& x, Range at) {
     Function partial = f;
     partial.bound.push_back(x);
     return function(std::move(partial), at);
+  }
+  // The arguments on the stack: MAP applies coordinate functions (compositions, lifted
+  // operators, Bezier maps: a handful of arguments each) at every point of a domain.
+  constexpr std::size_t kOnStack = 8;
+  if (f.bound.size() < kOnStack) {
+    std::array<ValuePtr, kOnStack> args;
+    std::copy(f.bound.begin(), f.bound.end(), args.begin());
+    args[f.bound.size()] = x;
+    return f.native(*this, f, std::span<const ValuePtr>(args.data(), f.bound.size() + 1), at);
   }
   Sequence args = f.bound;
   args.push_back(x);
