@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <unordered_map>
 #include <vector>
 
@@ -84,7 +83,14 @@ class Boundary {
   }
 
  private:
-  std::map<std::vector<std::uint32_t>, int> open_;
+  struct LoopHash {
+    std::size_t operator()(const std::vector<std::uint32_t>& loop) const {
+      std::uint64_t h = 0xCBF29CE484222325ULL;
+      for (std::uint32_t v : loop) h = (h ^ v) * 0x100000001B3ULL;
+      return static_cast<std::size_t>(h ^ (h >> 29));
+    }
+  };
+  std::unordered_map<std::vector<std::uint32_t>, int, LoopHash> open_;
   std::vector<std::vector<std::uint32_t>> order_;  // first-seen order keeps the output stable
 };
 
