@@ -120,6 +120,16 @@ std::string Context::text_of(Range range) const {
   return text.substr(range.begin, range.end - range.begin);
 }
 
+const ValuePtr* Context::memo(NativeFn fn, const ValuePtr& a, const ValuePtr& b) const {
+  const auto it = memo_.find({fn, a.get(), b.get()});
+  return it == memo_.end() ? nullptr : &it->second.result;
+}
+
+ValuePtr Context::remember(NativeFn fn, const ValuePtr& a, const ValuePtr& b, ValuePtr result) {
+  memo_[{fn, a.get(), b.get()}] = Memo{a, b, result};
+  return result;
+}
+
 void Context::step(Range at) {
   if (++steps_ > budgets_.steps)
     fail("PSM411",

@@ -5,10 +5,12 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <map>
 #include <memory>
 #include <span>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "base/diagnostic.h"
@@ -91,6 +93,13 @@ class Context {
   // A number checked to be finite (PSM406), for arithmetic results.
   ValuePtr result(double value, std::string_view who, Range at) const;
 
+  // Results of an expensive pure builtin by the identity of its two arguments: values are
+  // immutable, so the same function applied to the same values gives the same value, and a
+  // program that maps one domain twice (Listing 6's Dome, for its ceiling and its body) maps it
+  // once. The memo holds the arguments, so their addresses stay theirs.
+  const ValuePtr* memo(NativeFn fn, const ValuePtr& a, const ValuePtr& b) const;
+  ValuePtr remember(NativeFn fn, const ValuePtr& a, const ValuePtr& b, ValuePtr result);
+
   std::string text_of(Range range) const;
   std::uint64_t steps() const { return steps_; }
   Env* top() { return &top_; }
@@ -111,6 +120,10 @@ class Context {
   int depth_ = 0;
   Env top_;
   std::vector<std::unique_ptr<Env>> envs_;
+  struct Memo {
+    ValuePtr a, b, result;
+  };
+  std::map<std::tuple<NativeFn, const Value*, const Value*>, Memo> memo_;
 };
 
 }  // namespace insula::lang::plasm

@@ -230,7 +230,7 @@ double number_result(Context& c, const ValuePtr& v, std::string_view who, Range 
 }
 
 // MAP:f:domain, f a sequence of coordinate functions or one function giving a sequence.
-ValuePtr map_fn(Context& c, const Function&, Args a, Range at) {
+ValuePtr map_values(Context& c, Args a, Range at) {
   const ValuePtr& f = a[0];
   const PolyPtr& p = polyhedron(c, a[1], "MAP", at);
   const FlatComplex domain = flatten_cells(*p);
@@ -282,6 +282,11 @@ ValuePtr map_fn(Context& c, const Function&, Args a, Range at) {
       out[i] = number_result(c, coords[static_cast<std::size_t>(i)], "MAP", at);
   };
   return polyhedron_value(c, map_complex(c, domain, out_dim, eval, "MAP", at), at);
+}
+
+ValuePtr map_fn(Context& c, const Function&, Args a, Range at) {
+  if (const ValuePtr* known = c.memo(map_fn, a[0], a[1])) return *known;
+  return c.remember(map_fn, a[0], a[1], map_values(c, a, at));
 }
 
 // ---------------------------------------------------------------- BEZIER
