@@ -191,6 +191,11 @@ kernel::Mesh complex_mesh(const FlatComplex& flat, std::span<const std::uint32_t
   std::vector<Vec3> points;
   std::vector<std::vector<std::uint32_t>> fresh;
   if (cache != nullptr && cache->entries.size() < flat.origins) cache->entries.resize(flat.origins);
+  // Without a cache, points are remembered only when all cells are asked for (not one at a time).
+  std::vector<std::uint32_t> own;
+  std::vector<std::uint32_t>* vertex =
+      cache != nullptr ? &cache->vertex : (cells.empty() ? &own : nullptr);
+  if (vertex != nullptr) vertex->resize(flat.point_count(), HullCache::kNone);
   for (std::size_t k = 0; k < count; ++k) {
     const std::uint32_t index = cells.empty() ? static_cast<std::uint32_t>(k) : cells[k];
     const Cell& cell = flat.cells[index];
@@ -224,7 +229,15 @@ kernel::Mesh complex_mesh(const FlatComplex& flat, std::span<const std::uint32_t
         for (const std::vector<std::uint32_t>& face : *loops) {
           std::vector<std::uint32_t> loop;
           loop.reserve(face.size());
-          for (std::uint32_t v : face) loop.push_back(welder.vertex(points[v]));
+          for (std::uint32_t v : face) {
+            if (vertex == nullptr) {
+              loop.push_back(welder.vertex(points[v]));
+              continue;
+            }
+            std::uint32_t& known = (*vertex)[cell[v]];
+            if (known == HullCache::kNone) known = welder.vertex(points[v]);
+            loop.push_back(known);
+          }
           if (reverse) std::reverse(loop.begin(), loop.end());
           loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
           while (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();

@@ -30,6 +30,10 @@ struct HullCache {
     std::vector<std::vector<std::uint32_t>> loops;  // outward faces, indices into the cell
   };
   std::vector<Entry> entries;  // by origin
+  // The mesh vertex of each point of the complex met so far (kNone: not yet), so a point shared
+  // by many cells is welded once; valid because all cells of a point go to one mesh.
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFU;
+  std::vector<std::uint32_t> vertex;
 };
 
 // The mesh of the cells of `flat` listed in `cells` (all of them when empty), faces tagged `tag`.

@@ -1,7 +1,9 @@
 #include "lang/plasm/eval.h"
 
-#include <array>
 #include <cmath>
+#include <cstddef>
+#include <memory>
+#include <new>
 #include <utility>
 
 #include "base/format.h"
@@ -394,12 +396,20 @@ ValuePtr Context::apply(const ValuePtr& fv, const ValuePtr& x, Range at) {
   }
   // The arguments on the stack: MAP applies coordinate functions (compositions, lifted
   // operators, Bezier maps: a handful of arguments each) at every point of a domain.
+  // Only the slots in use are constructed (an array of eight would clear and release all).
   constexpr std::size_t kOnStack = 8;
   if (f.bound.size() < kOnStack) {
-    std::array<ValuePtr, kOnStack> args;
-    std::copy(f.bound.begin(), f.bound.end(), args.begin());
-    args[f.bound.size()] = x;
-    return f.native(*this, f, std::span<const ValuePtr>(args.data(), f.bound.size() + 1), at);
+    alignas(ValuePtr) std::byte storage[kOnStack * sizeof(ValuePtr)];
+    auto* args = reinterpret_cast<ValuePtr*>(storage);
+    const std::size_t n = f.bound.size() + 1;
+    std::uninitialized_copy(f.bound.begin(), f.bound.end(), args);
+    new (args + n - 1) ValuePtr(x);
+    struct Release {
+      ValuePtr* args;
+      std::size_t n;
+      ~Release() { std::destroy_n(args, n); }
+    } release{args, n};
+    return f.native(*this, f, std::span<const ValuePtr>(args, n), at);
   }
   Sequence args = f.bound;
   args.push_back(x);
