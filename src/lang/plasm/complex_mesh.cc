@@ -47,51 +47,56 @@ class Welder {
   std::unordered_map<Key, std::uint32_t, Hash> index_;
 };
 
-// A face loop up to rotation: rotated to start at its least vertex.
-std::vector<std::uint32_t> canonical(std::vector<std::uint32_t> loop) {
-  std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
-  return loop;
-}
-
-std::vector<std::uint32_t> reversed(std::vector<std::uint32_t> loop) {
-  std::reverse(loop.begin(), loop.end());
-  return canonical(std::move(loop));
-}
-
 // Faces of solid cells, waiting for their twins: a face met again with the opposite side lies
-// between two cells and is dropped.
+// between two cells and is dropped. Loops are kept rotated to start at their least vertex, so a
+// twin is the same first vertex followed by the others in reverse; open loops are found by hash.
 class Boundary {
  public:
   void add(std::vector<std::uint32_t> loop) {
-    loop = canonical(std::move(loop));
-    const auto twin = open_.find(reversed(loop));
-    if (twin != open_.end() && twin->second > 0) {
-      if (--twin->second == 0) open_.erase(twin);
+    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+    // The last open twin goes (the earlier open copies of it stay, in first-seen order).
+    auto twin = open_.end();
+    const auto [first, last] = open_.equal_range(hash(loop, true));
+    for (auto it = first; it != last; ++it)
+      if (is_twin(loops_[it->second], loop) && (twin == open_.end() || it->second > twin->second))
+        twin = it;
+    if (twin != open_.end()) {
+      alive_[twin->second] = false;
+      open_.erase(twin);
       return;
     }
-    ++open_[loop];
-    order_.push_back(std::move(loop));
+    open_.emplace(hash(loop, false), static_cast<std::uint32_t>(loops_.size()));
+    loops_.push_back(std::move(loop));
+    alive_.push_back(true);
   }
 
   void emit(kernel::Mesh& mesh, kernel::FaceTag tag) {
-    for (const std::vector<std::uint32_t>& loop : order_) {
-      const auto it = open_.find(loop);
-      if (it == open_.end() || it->second == 0) continue;
-      --it->second;
-      mesh.add_face(loop, tag);
-    }
+    for (std::size_t i = 0; i < loops_.size(); ++i)
+      if (alive_[i]) mesh.add_face(loops_[i], tag);
   }
 
  private:
-  struct LoopHash {
-    std::size_t operator()(const std::vector<std::uint32_t>& loop) const {
-      std::uint64_t h = 0xCBF29CE484222325ULL;
-      for (std::uint32_t v : loop) h = (h ^ v) * 0x100000001B3ULL;
-      return static_cast<std::size_t>(h ^ (h >> 29));
+  // The hash of the loop, or of its reverse (also starting at the least vertex).
+  static std::uint64_t hash(const std::vector<std::uint32_t>& loop, bool reverse) {
+    std::uint64_t h = 0xCBF29CE484222325ULL;
+    const std::size_t n = loop.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t v = reverse && i > 0 ? loop[n - i] : loop[i];
+      h = (h ^ v) * 0x100000001B3ULL;
     }
-  };
-  std::unordered_map<std::vector<std::uint32_t>, int, LoopHash> open_;
-  std::vector<std::vector<std::uint32_t>> order_;  // first-seen order keeps the output stable
+    return h ^ (h >> 29);
+  }
+  static bool is_twin(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b) {
+    const std::size_t n = a.size();
+    if (b.size() != n || a[0] != b[0]) return false;
+    for (std::size_t i = 1; i < n; ++i)
+      if (a[i] != b[n - i]) return false;
+    return true;
+  }
+
+  std::unordered_multimap<std::uint64_t, std::uint32_t> open_;  // hash -> index of an open loop
+  std::vector<std::vector<std::uint32_t>> loops_;  // first-seen order keeps the output stable
+  std::vector<bool> alive_;
 };
 
 Vec3 newell(const std::vector<Vec3>& loop) {
