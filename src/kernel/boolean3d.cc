@@ -88,10 +88,25 @@ FaceTag find_tag(const Mesh* const (&inputs)[2], const std::vector<Vec3> (&norma
   return fallback;
 }
 
+bool untagged(const Mesh& mesh) {
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const FaceTag t = mesh.tag(f);
+    if (t.semantic != SemanticClass::kNone || t.material != 0 || t.face_id != 0) return false;
+  }
+  return true;
+}
+
 Mesh from_surface_mesh(const SurfaceMesh& sm, const Mesh& a, const Mesh& b) {
   Mesh out;
   const Mesh* const inputs[2] = {&a, &b};
-  const std::vector<Vec3> normals[2] = {face_normals(a), face_normals(b)};
+  // Faces of untagged operands (PLaSM's solids) get the default tag whichever face they lie on:
+  // the search, a scan of every input face per result face, is skipped.
+  const bool search = !untagged(a) || !untagged(b);
+  std::vector<Vec3> normals[2];
+  if (search) {
+    normals[0] = face_normals(a);
+    normals[1] = face_normals(b);
+  }
   std::vector<std::uint32_t> ids(sm.number_of_vertices() + sm.number_of_removed_vertices(), 0);
   for (auto v : sm.vertices()) {
     const auto& p = sm.point(v);
@@ -104,7 +119,7 @@ Mesh from_surface_mesh(const SurfaceMesh& sm, const Mesh& a, const Mesh& b) {
     const Vec3 p0 = out.position(loop[0]);
     const Vec3 n = normalized(cross(out.position(loop[1]) - p0, out.position(loop[2]) - p0));
     const Vec3 c = (p0 + out.position(loop[1]) + out.position(loop[2])) / 3;
-    out.add_face(loop, find_tag(inputs, normals, c, n));
+    out.add_face(loop, search ? find_tag(inputs, normals, c, n) : FaceTag{});
   }
   return out;
 }
