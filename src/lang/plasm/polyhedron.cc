@@ -129,9 +129,12 @@ class Flattener {
     }
     add_leaf(node, to_root, group);
     for (const Polyhedron::Child& child : node.children) {
-      const Affine placed = child.transform.n == 0 && child.transform.m.empty()
-                                ? to_root
-                                : child.transform.then(to_root);
+      Affine placed = child.transform.n == 0 && child.transform.m.empty()
+                          ? to_root
+                          : child.transform.then(to_root);
+      // A STRUCT's T:1:x or R:<1, 2>:a has fewer coordinates than its parts: it leaves the
+      // others as they are (applied narrow, it dropped them, and a box came out flat).
+      if (!placed.m.empty() && placed.n < out_.dim) placed = placed.widened(out_.dim);
       walk(*child.part, placed, group, here);
     }
   }
