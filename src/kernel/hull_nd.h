@@ -56,6 +56,7 @@ PolytopeNd polytope_nd(std::span<const double> points, int n, double tolerance =
 // polytopes that share a face and are decomposed with the same order decompose that face
 // identically, so a complex of cells becomes a conforming simplicial complex. An empty `order`
 // means the point index itself.
-std::vector<IndexSet> simplices_nd(const PolytopeNd& polytope, std::span<const std::uint64_t> order = {});
+std::vector<IndexSet> simplices_nd(const PolytopeNd& polytope,
+                                   std::span<const std::uint64_t> order = {});
 
 }  // namespace insula::kernel
