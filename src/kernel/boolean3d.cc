@@ -61,25 +61,52 @@ bool face_contains(const Mesh& mesh, std::size_t f, Vec3 normal, Vec3 p) {
   return locate(Polygon{ring, {}}, flat(p), 1e-7) != PointLocation::kOutside;
 }
 
+// The unit normals of a mesh's faces, computed once per boolean (every result face looks for
+// its input face among all of them).
+std::vector<Vec3> face_normals(const Mesh& mesh) {
+  std::vector<Vec3> normals(mesh.face_count());
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) normals[f] = face_normal(mesh, f);
+  return normals;
+}
+
 // The tag of the input face (of a, then b) whose plane holds `p` with a parallel normal, preferring
 // one that contains p.
-FaceTag find_tag(const Mesh& a, const Mesh& b, Vec3 p, Vec3 normal) {
+FaceTag find_tag(const Mesh* const (&inputs)[2], const std::vector<Vec3> (&normals)[2], Vec3 p,
+                 Vec3 normal) {
   FaceTag fallback;
   bool found = false;
-  for (const Mesh* m : {&a, &b}) {
-    for (std::size_t f = 0; f < m->face_count(); ++f) {
-      const Vec3 n = face_normal(*m, f);
+  for (int i = 0; i < 2; ++i) {
+    const Mesh& m = *inputs[i];
+    for (std::size_t f = 0; f < m.face_count(); ++f) {
+      const Vec3 n = normals[i][f];
       if (std::abs(dot(n, normal)) < 1 - 1e-6) continue;
-      if (std::abs(dot(p - m->position(m->face(f)[0]), n)) > 1e-6) continue;
-      if (face_contains(*m, f, n, p)) return m->tag(f);
-      if (!found) fallback = m->tag(f), found = true;
+      if (std::abs(dot(p - m.position(m.face(f)[0]), n)) > 1e-6) continue;
+      if (face_contains(m, f, n, p)) return m.tag(f);
+      if (!found) fallback = m.tag(f), found = true;
     }
   }
   return fallback;
 }
 
+bool untagged(const Mesh& mesh) {
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const FaceTag t = mesh.tag(f);
+    if (t.semantic != SemanticClass::kNone || t.material != 0 || t.face_id != 0) return false;
+  }
+  return true;
+}
+
 Mesh from_surface_mesh(const SurfaceMesh& sm, const Mesh& a, const Mesh& b) {
   Mesh out;
+  const Mesh* const inputs[2] = {&a, &b};
+  // Faces of untagged operands (PLaSM's solids) get the default tag whichever face they lie on:
+  // the search, a scan of every input face per result face, is skipped.
+  const bool search = !untagged(a) || !untagged(b);
+  std::vector<Vec3> normals[2];
+  if (search) {
+    normals[0] = face_normals(a);
+    normals[1] = face_normals(b);
+  }
   std::vector<std::uint32_t> ids(sm.number_of_vertices() + sm.number_of_removed_vertices(), 0);
   for (auto v : sm.vertices()) {
     const auto& p = sm.point(v);
@@ -92,7 +119,7 @@ Mesh from_surface_mesh(const SurfaceMesh& sm, const Mesh& a, const Mesh& b) {
     const Vec3 p0 = out.position(loop[0]);
     const Vec3 n = normalized(cross(out.position(loop[1]) - p0, out.position(loop[2]) - p0));
     const Vec3 c = (p0 + out.position(loop[1]) + out.position(loop[2])) / 3;
-    out.add_face(loop, find_tag(a, b, c, n));
+    out.add_face(loop, search ? find_tag(inputs, normals, c, n) : FaceTag{});
   }
   return out;
 }

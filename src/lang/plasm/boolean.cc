@@ -66,12 +66,28 @@ bool malformed(const kernel::Boolean3dResult& r) {
 }
 
 // acc op operands[i]..., retrying an operand cell by cell when its one-shell mesh is no valid
-// operand (the first operand too, while acc is still that operand's own mesh).
+// operand (the first operand too, while acc is still that operand's own mesh). A difference or a
+// union of more than two first tries acc op (the rest side by side): a - b1 - ... - bn is
+// a - (b1 + ... + bn), and when the bi are disjoint their meshes together bound that union, so
+// one boolean does the work of n (one at a time, each re-triangulated and re-checked the growing
+// result: a wall minus 100 windows took minutes). The kernel rejects the combined mesh when the bi
+// overlap, touch or nest, and then they go one by one.
 kernel::Mesh fold(Context& c, const std::vector<PolyPtr>& operands, kernel::BooleanOp op,
                   std::string_view who, Range at) {
-  kernel::Mesh acc = operand(c, operands.front(), false, who, at);
+  std::vector<kernel::Mesh> meshes;
+  for (const PolyPtr& p : operands) meshes.push_back(operand(c, p, false, who, at));
+  if ((op == kernel::BooleanOp::kDifference || op == kernel::BooleanOp::kUnion) &&
+      meshes.size() > 2 && !meshes.front().empty()) {
+    kernel::Mesh rest;
+    for (std::size_t i = 1; i < meshes.size(); ++i) rest.append(meshes[i]);
+    if (!rest.empty()) {
+      kernel::Boolean3dResult r = kernel::boolean3d(meshes.front(), rest, op);
+      if (r.status == kernel::Boolean3dStatus::kOk) return std::move(r.mesh);
+    }
+  }
+  kernel::Mesh acc = std::move(meshes.front());
   for (std::size_t i = 1; i < operands.size(); ++i) {
-    kernel::Mesh next = operand(c, operands[i], false, who, at);
+    kernel::Mesh next = std::move(meshes[i]);
     if (!acc.empty() && !next.empty()) {
       kernel::Boolean3dResult r = kernel::boolean3d(acc, next, op);
       if (r.status == kernel::Boolean3dStatus::kOk) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <unordered_map>
 #include <vector>
 
@@ -48,44 +47,56 @@ class Welder {
   std::unordered_map<Key, std::uint32_t, Hash> index_;
 };
 
-// A face loop up to rotation: rotated to start at its least vertex.
-std::vector<std::uint32_t> canonical(std::vector<std::uint32_t> loop) {
-  std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
-  return loop;
-}
-
-std::vector<std::uint32_t> reversed(std::vector<std::uint32_t> loop) {
-  std::reverse(loop.begin(), loop.end());
-  return canonical(std::move(loop));
-}
-
 // Faces of solid cells, waiting for their twins: a face met again with the opposite side lies
-// between two cells and is dropped.
+// between two cells and is dropped. Loops are kept rotated to start at their least vertex, so a
+// twin is the same first vertex followed by the others in reverse; open loops are found by hash.
 class Boundary {
  public:
   void add(std::vector<std::uint32_t> loop) {
-    loop = canonical(std::move(loop));
-    const auto twin = open_.find(reversed(loop));
-    if (twin != open_.end() && twin->second > 0) {
-      if (--twin->second == 0) open_.erase(twin);
+    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+    // The last open twin goes (the earlier open copies of it stay, in first-seen order).
+    auto twin = open_.end();
+    const auto [first, last] = open_.equal_range(hash(loop, true));
+    for (auto it = first; it != last; ++it)
+      if (is_twin(loops_[it->second], loop) && (twin == open_.end() || it->second > twin->second))
+        twin = it;
+    if (twin != open_.end()) {
+      alive_[twin->second] = false;
+      open_.erase(twin);
       return;
     }
-    ++open_[loop];
-    order_.push_back(std::move(loop));
+    open_.emplace(hash(loop, false), static_cast<std::uint32_t>(loops_.size()));
+    loops_.push_back(std::move(loop));
+    alive_.push_back(true);
   }
 
   void emit(kernel::Mesh& mesh, kernel::FaceTag tag) {
-    for (const std::vector<std::uint32_t>& loop : order_) {
-      const auto it = open_.find(loop);
-      if (it == open_.end() || it->second == 0) continue;
-      --it->second;
-      mesh.add_face(loop, tag);
-    }
+    for (std::size_t i = 0; i < loops_.size(); ++i)
+      if (alive_[i]) mesh.add_face(loops_[i], tag);
   }
 
  private:
-  std::map<std::vector<std::uint32_t>, int> open_;
-  std::vector<std::vector<std::uint32_t>> order_;  // first-seen order keeps the output stable
+  // The hash of the loop, or of its reverse (also starting at the least vertex).
+  static std::uint64_t hash(const std::vector<std::uint32_t>& loop, bool reverse) {
+    std::uint64_t h = 0xCBF29CE484222325ULL;
+    const std::size_t n = loop.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t v = reverse && i > 0 ? loop[n - i] : loop[i];
+      h = (h ^ v) * 0x100000001B3ULL;
+    }
+    return h ^ (h >> 29);
+  }
+  static bool is_twin(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b) {
+    const std::size_t n = a.size();
+    if (b.size() != n || a[0] != b[0]) return false;
+    for (std::size_t i = 1; i < n; ++i)
+      if (a[i] != b[n - i]) return false;
+    return true;
+  }
+
+  std::unordered_multimap<std::uint64_t, std::uint32_t> open_;  // hash -> index of an open loop
+  std::vector<std::vector<std::uint32_t>> loops_;  // first-seen order keeps the output stable
+  std::vector<bool> alive_;
 };
 
 Vec3 newell(const std::vector<Vec3>& loop) {
@@ -130,17 +141,69 @@ bool add_planar(const std::vector<Vec3>& points, Vec3 preferred, Welder& welder,
   return true;
 }
 
+// The outward faces of a solid convex cell as loops of indices into `points`; false with the
+// hull's status when the points bound no solid. A tetrahedron (MAP's cells) needs no hull: its
+// faces follow from the sign of its volume, unless it is nearly flat.
+bool solid_loops(const std::vector<Vec3>& points, std::vector<std::vector<std::uint32_t>>& loops,
+                 kernel::HullStatus& status) {
+  loops.clear();
+  if (points.size() == 4) {
+    const Vec3& p = points[0];
+    const double volume = dot(cross(points[1] - p, points[2] - p), points[3] - p);
+    double longest = 0;
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j)
+        longest = std::max(longest, length(points[j] - points[i]));
+    if (std::abs(volume) > 1e-9 * longest * longest * longest) {
+      loops = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+      if (volume < 0)
+        for (std::vector<std::uint32_t>& loop : loops) std::reverse(loop.begin(), loop.end());
+      return true;
+    }
+  }
+  const kernel::Hull3Result hull = kernel::convex_hull_3d(points);
+  status = hull.status;
+  if (!hull.ok()) return false;
+  // The hull keeps the input coordinates: its vertices are found among the points.
+  std::vector<std::uint32_t> local(hull.mesh.vertex_count(), 0);
+  for (std::uint32_t v = 0; v < hull.mesh.vertex_count(); ++v) {
+    const Vec3 q = hull.mesh.position(v);
+    const auto it = std::find_if(points.begin(), points.end(), [&](const Vec3& p) {
+      return p.x == q.x && p.y == q.y && p.z == q.z;
+    });
+    if (it == points.end()) {
+      status = kernel::HullStatus::kNumericalFailure;
+      return false;
+    }
+    local[v] = static_cast<std::uint32_t>(it - points.begin());
+  }
+  for (std::size_t f = 0; f < hull.mesh.face_count(); ++f) {
+    std::vector<std::uint32_t> loop;
+    for (std::uint32_t v : hull.mesh.face(f)) loop.push_back(local[v]);
+    loops.push_back(std::move(loop));
+  }
+  return true;
+}
+
 }  // namespace
 
 kernel::Mesh complex_mesh(const FlatComplex& flat, std::span<const std::uint32_t> cells,
-                          kernel::FaceTag tag, MeshStats& stats) {
+                          kernel::FaceTag tag, MeshStats& stats, HullCache* cache) {
   kernel::Mesh mesh;
   Welder welder(mesh);
   Boundary boundary;
   const std::size_t count = cells.empty() ? flat.cells.size() : cells.size();
   std::vector<Vec3> points;
+  std::vector<std::vector<std::uint32_t>> fresh;
+  if (cache != nullptr && cache->entries.size() < flat.origins) cache->entries.resize(flat.origins);
+  // Without a cache, points are remembered only when all cells are asked for (not one at a time).
+  std::vector<std::uint32_t> own;
+  std::vector<std::uint32_t>* vertex =
+      cache != nullptr ? &cache->vertex : (cells.empty() ? &own : nullptr);
+  if (vertex != nullptr) vertex->resize(flat.point_count(), HullCache::kNone);
   for (std::size_t k = 0; k < count; ++k) {
-    const Cell& cell = flat.cells[cells.empty() ? k : cells[k]];
+    const std::uint32_t index = cells.empty() ? static_cast<std::uint32_t>(k) : cells[k];
+    const Cell& cell = flat.cells[index];
     if (flat.dim > 3 || cell.size() < 3) {
       ++stats.skipped_cells;
       continue;
@@ -151,20 +214,43 @@ kernel::Mesh complex_mesh(const FlatComplex& flat, std::span<const std::uint32_t
       points.push_back({p[0], flat.dim > 1 ? p[1] : 0.0, flat.dim > 2 ? p[2] : 0.0});
     }
     if (flat.dim == 3 && cell.size() >= 4) {
-      const kernel::Hull3Result hull = kernel::convex_hull_3d(points);
-      if (hull.ok()) {
+      const std::uint32_t origin =
+          cache == nullptr || flat.origin.empty() ? FlatComplex::kNoOrigin : flat.origin[index];
+      HullCache::Entry* entry = origin == FlatComplex::kNoOrigin
+                                    ? nullptr
+                                    : &cache->entries[origin & ~FlatComplex::kMirrored];
+      const bool mirrored = (origin & FlatComplex::kMirrored) != 0;
+      kernel::HullStatus status = kernel::HullStatus::kOk;
+      const std::vector<std::vector<std::uint32_t>>* loops = nullptr;
+      if (entry != nullptr && entry->known) {
+        loops = &entry->loops;
+      } else if (solid_loops(points, fresh, status)) {
+        loops = &fresh;
+        if (entry != nullptr) *entry = {true, mirrored, fresh};
+      }
+      if (loops != nullptr) {
         ++stats.solid_cells;
-        for (std::size_t f = 0; f < hull.mesh.face_count(); ++f) {
+        const bool reverse = entry != nullptr && entry->mirrored != mirrored;
+        for (const std::vector<std::uint32_t>& face : *loops) {
           std::vector<std::uint32_t> loop;
-          for (std::uint32_t v : hull.mesh.face(f))
-            loop.push_back(welder.vertex(hull.mesh.position(v)));
+          loop.reserve(face.size());
+          for (std::uint32_t v : face) {
+            if (vertex == nullptr) {
+              loop.push_back(welder.vertex(points[v]));
+              continue;
+            }
+            std::uint32_t& known = (*vertex)[cell[v]];
+            if (known == HullCache::kNone) known = welder.vertex(points[v]);
+            loop.push_back(known);
+          }
+          if (reverse) std::reverse(loop.begin(), loop.end());
           loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
           while (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
           if (loop.size() >= 3) boundary.add(std::move(loop));
         }
         continue;
       }
-      if (hull.status != kernel::HullStatus::kCoplanar) {
+      if (status != kernel::HullStatus::kCoplanar) {
         ++stats.skipped_cells;
         continue;
       }

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "kernel/mesh.h"
 #include "lang/plasm/polyhedron.h"
@@ -20,8 +21,24 @@ struct MeshStats {
   std::size_t skipped_cells = 0;  // points, segments, cells in 4D and more, hulls that failed
 };
 
+// The faces of stored cells already hulled (FlatComplex::origin), for the complex_mesh calls of
+// one flattened complex: a column placed a hundred times is hulled once.
+struct HullCache {
+  struct Entry {
+    bool known = false;
+    bool mirrored = false;  // the placement it was hulled under reverses orientation
+    std::vector<std::vector<std::uint32_t>> loops;  // outward faces, indices into the cell
+  };
+  std::vector<Entry> entries;  // by origin
+  // The mesh vertex of each point of the complex met so far (kNone: not yet), so a point shared
+  // by many cells is welded once; valid because all cells of a point go to one mesh.
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFU;
+  std::vector<std::uint32_t> vertex;
+};
+
 // The mesh of the cells of `flat` listed in `cells` (all of them when empty), faces tagged `tag`.
+// With a cache, cells that flat.origin names are hulled once for all their instances.
 kernel::Mesh complex_mesh(const FlatComplex& flat, std::span<const std::uint32_t> cells,
-                          kernel::FaceTag tag, MeshStats& stats);
+                          kernel::FaceTag tag, MeshStats& stats, HullCache* cache = nullptr);
 
 }  // namespace insula::lang::plasm

@@ -1,6 +1,9 @@
 #include "lang/plasm/eval.h"
 
 #include <cmath>
+#include <cstddef>
+#include <memory>
+#include <new>
 #include <utility>
 
 #include "base/format.h"
@@ -118,6 +121,20 @@ std::string Context::text_of(Range range) const {
   const std::string& text = source_.text();
   if (range.begin >= range.end || range.end > text.size()) return {};
   return text.substr(range.begin, range.end - range.begin);
+}
+
+const ValuePtr* Context::memo(NativeFn fn, const ValuePtr& a, const ValuePtr& b) {
+  const NativeMemoKey key{fn, a.get(), b.get()};
+  for (const Frame* f = &frame(); f != nullptr; f = f->parent) {
+    const auto it = f->natives.find(key);
+    if (it != f->natives.end()) return &it->second.result;
+  }
+  return nullptr;
+}
+
+ValuePtr Context::remember(NativeFn fn, const ValuePtr& a, const ValuePtr& b, ValuePtr result) {
+  frame().natives[{fn, a.get(), b.get()}] = NativeMemo{a, b, result};
+  return result;
 }
 
 void Context::step(Range at) {
@@ -395,6 +412,23 @@ ValuePtr Context::apply(const ValuePtr& fv, const ValuePtr& x, Range at) {
     Function partial = f;
     partial.bound.push_back(x);
     return function(std::move(partial), at);
+  }
+  // The arguments on the stack: MAP applies coordinate functions (compositions, lifted
+  // operators, Bezier maps: a handful of arguments each) at every point of a domain.
+  // Only the slots in use are constructed (an array of eight would clear and release all).
+  constexpr std::size_t kOnStack = 8;
+  if (f.bound.size() < kOnStack) {
+    alignas(ValuePtr) std::byte storage[kOnStack * sizeof(ValuePtr)];
+    auto* args = reinterpret_cast<ValuePtr*>(storage);
+    const std::size_t n = f.bound.size() + 1;
+    std::uninitialized_copy(f.bound.begin(), f.bound.end(), args);
+    new (args + n - 1) ValuePtr(x);
+    struct Release {
+      ValuePtr* args;
+      std::size_t n;
+      ~Release() { std::destroy_n(args, n); }
+    } release{args, n};
+    return f.native(*this, f, std::span<const ValuePtr>(args, n), at);
   }
   Sequence args = f.bound;
   args.push_back(x);

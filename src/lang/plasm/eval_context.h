@@ -7,11 +7,13 @@
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <span>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -47,6 +49,13 @@ struct Env {
   std::uint64_t serial = 0;
 };
 
+// A builtin's result remembered by the identity of its two arguments (Context::memo); holding the
+// arguments keeps their addresses theirs.
+struct NativeMemo {
+  ValuePtr a, b, result;
+};
+using NativeMemoKey = std::tuple<NativeFn, const Value*, const Value*>;
+
 // One strand of evaluation (parallel.cc, docs/plasm-language.md "Parallel evaluation"): the
 // evaluator's own, or one task of a parallel section. A task counts its steps and cells from its
 // parent's totals at the fork and keeps the values of bindings of older scopes in its own memo,
@@ -66,6 +75,7 @@ struct Frame {
   std::uint64_t cells = 0;
   int depth = 0;
   std::unordered_map<const Binding*, Memo> memo;
+  std::map<NativeMemoKey, NativeMemo> natives;  // Context::memo's entries made in this strand
 };
 
 inline Frame root_frame(const Context* context) {
@@ -124,6 +134,14 @@ class Context {
   bool truth(const ValuePtr& v, std::string_view who, Range at) const;
   // A number checked to be finite (PSM406), for arithmetic results.
   ValuePtr result(double value, std::string_view who, Range at) const;
+
+  // Results of an expensive pure builtin by the identity of its two arguments: values are
+  // immutable, so the same function applied to the same values gives the same value, and a
+  // program that maps one domain twice (Listing 6's Dome, for its ceiling and its body) maps it
+  // once. Entries live in the strand that made them (a task sees its ancestors' and its own; the
+  // parent adopts a task's at the join), so what a task finds never depends on the other tasks.
+  const ValuePtr* memo(NativeFn fn, const ValuePtr& a, const ValuePtr& b);
+  ValuePtr remember(NativeFn fn, const ValuePtr& a, const ValuePtr& b, ValuePtr result);
 
   std::string text_of(Range range) const;
   std::uint64_t steps() const { return root_.steps; }

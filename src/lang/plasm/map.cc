@@ -116,6 +116,15 @@ Simplicial simplicial(Context& c, const FlatComplex& domain, std::string_view wh
   }
   std::vector<double> buffer;
   std::vector<std::uint64_t> order;
+  // Decompositions by shape: a cell that is another one moved and stretched along the axes, with
+  // its vertices in the same order, decomposes alike (the pulling triangulation depends on the
+  // face lattice and the order only, and both survive such a map). The key is the vertex count,
+  // the vertices' order and their coordinates rescaled to the cell's bounding box; the cells of a
+  // product of intervals all share one key, so one hull serves the whole domain.
+  std::map<std::vector<double>, std::vector<kernel::IndexSet>> shapes;
+  std::vector<double> key;
+  std::vector<double> lo(d);
+  std::vector<double> hi(d);
   for (const Cell& cell : domain.cells) {
     Cell ids;
     for (std::uint32_t v : cell) ids.push_back(index[v]);
@@ -128,8 +137,29 @@ Simplicial simplicial(Context& c, const FlatComplex& domain, std::string_view wh
                     out.points.begin() + std::ptrdiff_t((v + 1) * d));
       order.push_back(rank[v]);
     }
-    const kernel::PolytopeNd polytope = hull(c, buffer, domain.dim, who, at);
-    for (const kernel::IndexSet& s : kernel::simplices_nd(polytope, order)) {
+    std::fill(lo.begin(), lo.end(), 0.0);
+    std::fill(hi.begin(), hi.end(), 0.0);
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      for (std::size_t a = 0; a < d; ++a) {
+        const double x = buffer[i * d + a];
+        lo[a] = i == 0 ? x : std::min(lo[a], x);
+        hi[a] = i == 0 ? x : std::max(hi[a], x);
+      }
+    }
+    key.assign(1, static_cast<double>(ids.size()));
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      std::size_t before = 0;  // the vertex's place in the order, within the cell
+      for (std::uint64_t o : order) before += o < order[i] ? 1 : 0;
+      key.push_back(static_cast<double>(before));
+      for (std::size_t a = 0; a < d; ++a)
+        key.push_back(hi[a] > lo[a] ? (buffer[i * d + a] - lo[a]) / (hi[a] - lo[a]) : 0.0);
+    }
+    auto known = shapes.find(key);
+    if (known == shapes.end()) {
+      const kernel::PolytopeNd polytope = hull(c, buffer, domain.dim, who, at);
+      known = shapes.emplace(key, kernel::simplices_nd(polytope, order)).first;
+    }
+    for (const kernel::IndexSet& s : known->second) {
       Cell simplex;
       for (kernel::PointIndex v : s) simplex.push_back(ids[v]);
       if (static_cast<int>(simplex.size()) == domain.dim + 1) {
@@ -197,7 +227,7 @@ double number_result(Context& c, const ValuePtr& v, std::string_view who, Range 
 }
 
 // MAP:f:domain, f a sequence of coordinate functions or one function giving a sequence.
-ValuePtr map_fn(Context& c, const Function&, Args a, Range at) {
+ValuePtr map_values(Context& c, Args a, Range at) {
   const ValuePtr& f = a[0];
   const PolyPtr& p = polyhedron(c, a[1], "MAP", at);
   const FlatComplex domain = flatten_cells(*p);
@@ -249,6 +279,11 @@ ValuePtr map_fn(Context& c, const Function&, Args a, Range at) {
       out[i] = number_result(c, coords[static_cast<std::size_t>(i)], "MAP", at);
   };
   return polyhedron_value(c, map_complex(c, domain, out_dim, eval, "MAP", at), at);
+}
+
+ValuePtr map_fn(Context& c, const Function&, Args a, Range at) {
+  if (const ValuePtr* known = c.memo(map_fn, a[0], a[1])) return *known;
+  return c.remember(map_fn, a[0], a[1], map_values(c, a, at));
 }
 
 // ---------------------------------------------------------------- BEZIER

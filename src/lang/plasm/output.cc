@@ -15,13 +15,14 @@ shape::Building polyhedron_building(const Polyhedron& polyhedron, const std::str
   for (std::uint32_t k = 0; k < flat.cells.size(); ++k) cells[flat.group[k]].push_back(k);
   std::vector<std::vector<std::uint32_t>> solids(flat.groups.size());
   for (std::uint32_t k = 0; k < flat.solids.size(); ++k) solids[flat.solid_group[k]].push_back(k);
+  HullCache hulls;
   for (std::size_t g = 0; g < flat.groups.size(); ++g) {
     if (cells[g].empty() && solids[g].empty()) continue;
     shape::Part part;
     part.name = flat.groups[g].part.empty() ? id : flat.groups[g].part;
     part.kind = shape::PartKind::kBuildingPart;
     if (!flat.groups[g].path.empty()) part.attributes["plasm_path"] = flat.groups[g].path;
-    if (!cells[g].empty()) part.mesh = complex_mesh(flat, cells[g], {}, stats);
+    if (!cells[g].empty()) part.mesh = complex_mesh(flat, cells[g], {}, stats, &hulls);
     for (std::uint32_t k : solids[g]) {
       if (flat.dim > 3) {
         ++stats.skipped_cells;

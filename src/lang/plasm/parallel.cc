@@ -107,6 +107,7 @@ Sequence Context::parallel(std::size_t n, const std::function<ValuePtr(std::size
   for (Frame& f : frames) {
     parent.steps += f.steps;
     parent.cells += f.cells;
+    for (auto& [key, entry] : f.natives) parent.natives.emplace(key, std::move(entry));
     for (auto& [binding, memo] : f.memo) {
       if (memo.state != Binding::State::kDone) continue;
       auto& b = const_cast<Binding&>(*binding);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 #include <utility>
 
 namespace insula::lang::plasm {
@@ -78,7 +79,7 @@ void Affine::apply(const double* in, int in_dim, double* out) const {
   for (int r = n; r < in_dim; ++r) out[r] = in[r];  // the identity on coordinates past n
 }
 
-bool Affine::reverses_orientation() const {
+int Affine::orientation() const {
   // Gaussian elimination with partial pivoting on the linear part.
   std::vector<double> a(static_cast<std::size_t>(n * n));
   for (int r = 0; r < n; ++r)
@@ -92,7 +93,7 @@ bool Affine::reverses_orientation() const {
         pivot = r;
     }
     const double p = a[static_cast<std::size_t>(pivot * n + col)];
-    if (p == 0) return false;
+    if (p == 0) return 0;
     if (pivot != col) {
       for (int t = 0; t < n; ++t)
         std::swap(a[static_cast<std::size_t>(pivot * n + t)],
@@ -106,7 +107,7 @@ bool Affine::reverses_orientation() const {
         a[static_cast<std::size_t>(r * n + t)] -= f * a[static_cast<std::size_t>(col * n + t)];
     }
   }
-  return negative;
+  return negative ? -1 : 1;
 }
 
 namespace {
@@ -129,9 +130,12 @@ class Flattener {
     }
     add_leaf(node, to_root, group);
     for (const Polyhedron::Child& child : node.children) {
-      const Affine placed = child.transform.n == 0 && child.transform.m.empty()
-                                ? to_root
-                                : child.transform.then(to_root);
+      Affine placed = child.transform.n == 0 && child.transform.m.empty()
+                          ? to_root
+                          : child.transform.then(to_root);
+      // A STRUCT's T:1:x or R:<1, 2>:a has fewer coordinates than its parts: it leaves the
+      // others as they are (applied narrow, it dropped them, and a box came out flat).
+      if (!placed.m.empty() && placed.n < out_.dim) placed = placed.widened(out_.dim);
       walk(*child.part, placed, group, here);
     }
   }
@@ -169,16 +173,31 @@ class Flattener {
         to_root.apply(source, node.dim, target + p * dim);
       }
     }
-    for (const Cell& cell : node.cells) {
-      Cell shifted(cell);
+    std::uint32_t first = 0;
+    std::uint32_t mirrored = 0;
+    const int orientation = to_root.m.empty() ? 1 : to_root.orientation();
+    if (with_groups_) {
+      const auto [it, added] = origins_.emplace(&node, out_.origins);
+      if (added) out_.origins += static_cast<std::uint32_t>(node.cells.size());
+      first = it->second;
+      if (orientation < 0) mirrored = FlatComplex::kMirrored;
+    }
+    for (std::size_t k = 0; k < node.cells.size(); ++k) {
+      Cell shifted(node.cells[k]);
       for (std::uint32_t& v : shifted) v += base;
       out_.cells.push_back(std::move(shifted));
-      if (with_groups_) out_.group.push_back(group);
+      if (with_groups_) {
+        out_.group.push_back(group);
+        out_.origin.push_back(orientation == 0
+                                  ? FlatComplex::kNoOrigin
+                                  : (first + static_cast<std::uint32_t>(k)) | mirrored);
+      }
     }
   }
 
   FlatComplex& out_;
   bool with_groups_;
+  std::unordered_map<const Polyhedron*, std::uint32_t> origins_;  // first cell number per node
 };
 
 FlatComplex flatten_impl(const Polyhedron& polyhedron, bool with_groups) {

@@ -49,8 +49,9 @@ struct Affine {
   // Maps a point of `in_dim` coordinates (missing ones zero) to max(n, in_dim) coordinates in
   // `out`; coordinates past n pass unchanged (T:1:2 moves a 3D point along x only).
   void apply(const double* in, int in_dim, double* out) const;
-  // The sign of the determinant of the linear part: negative for mirrors.
-  bool reverses_orientation() const;
+  // The sign of the determinant of the linear part (-1, 0 or 1): negative for mirrors.
+  int orientation() const;
+  bool reverses_orientation() const { return orientation() < 0; }
 };
 
 struct Polyhedron;
@@ -94,6 +95,14 @@ struct FlatComplex {
   std::vector<Cell> cells;
   std::vector<std::uint32_t> group;  // per cell, an index into groups
   std::vector<CellGroup> groups;
+  // flatten() only: per cell, which stored cell it is an instance of (numbered over the distinct
+  // nodes, in the order first met), with kMirrored set when its placement reverses orientation,
+  // or kNoOrigin under a singular placement. An invertible affine placement keeps a convex cell's
+  // faces, so the export hulls each stored cell once.
+  static constexpr std::uint32_t kMirrored = 0x80000000U;
+  static constexpr std::uint32_t kNoOrigin = 0xFFFFFFFFU;
+  std::vector<std::uint32_t> origin;
+  std::uint32_t origins = 0;  // distinct stored cells
   // Boolean results, placed (outward still when the placement mirrors), and their groups.
   std::vector<kernel::Mesh> solids;
   std::vector<std::uint32_t> solid_group;
