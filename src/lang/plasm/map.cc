@@ -395,12 +395,13 @@ ValuePtr circle_fn(Context& c, const Function&, Args a, Range at) {
   return polyhedron_value(c, map_complex(c, grid({kTau, r}, n), 2, f, "CIRCLE", at), at);
 }
 
-// SPHERE:r:<n, m>: the sphere surface, n parallels' bands and m meridians' sectors.
+// SPHERE:r:<n, m>: the sphere surface, n parallels' bands and m meridians' sectors, from the
+// north pole down so that the surface faces outward.
 ValuePtr sphere_fn(Context& c, const Function&, Args a, Range at) {
   const double r = positive(c, a[0], "SPHERE", at);
   const std::vector<std::size_t> n = divisions(c, a[1], 2, "SPHERE", at);
   const PointMap f = [r](const double* in, double* out) {
-    const double lat = in[0] - std::numbers::pi / 2;
+    const double lat = std::numbers::pi / 2 - in[0];
     out[0] = r * std::cos(lat) * std::cos(in[1]);
     out[1] = r * std::cos(lat) * std::sin(in[1]);
     out[2] = r * std::sin(lat);
@@ -410,7 +411,8 @@ ValuePtr sphere_fn(Context& c, const Function&, Args a, Range at) {
 }
 
 // TORUS:<r1, r2>:<n, m>: the surface of a tube of radius r1 around a circle of radius r2 in the
-// xy plane, n sectors around the tube and m around the axis (docs/plasm-language.md).
+// xy plane, n sectors around the tube and m around the axis (docs/plasm-language.md); the tube
+// angle runs from the outer equator downwards, so that the surface faces outward.
 ValuePtr torus_fn(Context& c, const Function&, Args a, Range at) {
   const Sequence& radii = c.seq_of(a[0], 2, "TORUS", at);
   const double r1 = positive(c, radii[0], "TORUS", at);
@@ -420,7 +422,7 @@ ValuePtr torus_fn(Context& c, const Function&, Args a, Range at) {
     const double ring = r2 + r1 * std::cos(in[0]);
     out[0] = ring * std::cos(in[1]);
     out[1] = ring * std::sin(in[1]);
-    out[2] = r1 * std::sin(in[0]);
+    out[2] = -r1 * std::sin(in[0]);
   };
   return polyhedron_value(c, map_complex(c, grid({kTau, kTau}, n), 3, f, "TORUS", at), at);
 }

@@ -167,8 +167,12 @@ class Flattener {
         to_root.apply(source, node.dim, target + p * dim);
       }
     }
+    // A mirror turns the vertex order of a cell around; reversing it keeps the side a surface
+    // faces (the outside of a closed MAP surface stays outside).
+    const bool mirrored = !to_root.m.empty() && to_root.reverses_orientation();
     for (const Cell& cell : node.cells) {
       Cell shifted(cell);
+      if (mirrored) std::reverse(shifted.begin(), shifted.end());
       for (std::uint32_t& v : shifted) v += base;
       out_.cells.push_back(std::move(shifted));
       if (with_groups_) out_.group.push_back(group);
@@ -243,6 +247,9 @@ PolyPtr make_group(std::vector<Polyhedron::Child> children) {
   auto p = std::make_shared<Polyhedron>();
   for (const Polyhedron::Child& c : children)
     p->dim = std::max({p->dim, c.part->dim, c.transform.n});
+  // A map of fewer coordinates (T:1:2 in a STRUCT of solids) leaves the others as they are.
+  for (Polyhedron::Child& c : children)
+    if (!c.transform.m.empty() && c.transform.n < p->dim) c.transform = c.transform.widened(p->dim);
   p->children = std::move(children);
   count(*p);
   return p;
