@@ -382,6 +382,24 @@ TEST(PlasmGeometry, SphereAndTorusAreas) {
   EXPECT_GT(cone.smallest_face, 1e-9);
 }
 
+// A solid half-sphere shell: at the pole cos(PI/2) is 6e-17, not 0, so the simplices there
+// collapse only up to rounding; they are dropped all the same, none drawn as a flat face.
+TEST(PlasmGeometry, CollapsedSimplicesAtAPoleAreDropped) {
+  Checked r(
+      "DEF shell = MAP:<S3 * COS~S1 * COS~S2, S3 * COS~S1 * SIN~S2, S3 * SIN~S1>:"
+      "(INTERVALS:(PI/2):6 * INTERVALS:(2*PI):8 * (T:1:4.5 ~ QUOTE):<0.5>);");
+  const Exported e = exported(r.poly("shell"));
+  EXPECT_EQ(e.stats.surface_cells, 0U);
+  EXPECT_EQ(e.stats.skipped_cells, 0U);
+  EXPECT_TRUE(e.check.closed);
+  EXPECT_EQ(e.check.non_manifold_edges, 0U);
+  EXPECT_GT(e.smallest_face, 1e-9);
+  // Below the hemispherical shell's 2/3 pi (5^3 - 4.5^3): an inscribed polyhedron.
+  const double shell = 2.0 / 3 * kPi * (125 - 91.125);
+  EXPECT_LT(e.volume, shell);
+  EXPECT_GT(e.volume, 0.85 * shell);
+}
+
 TEST(PlasmGeometry, MapKeepsOrientationUnderAMirror) {
   Checked r(
       "DEF dom = QUOTE:<1, 1> * QUOTE:<1, 1>;"
