@@ -49,11 +49,10 @@ kernel::Mesh operand(Context& c, const PolyPtr& p, bool cellwise, std::string_vi
   } else {
     out = complex_mesh(flat, {}, {}, stats);
   }
-  if (stats.surface_cells + stats.skipped_cells > 0)
+  if (const std::size_t flat_cells = stats.surface_cells + stats.skipped_cells; flat_cells > 0)
     c.fail("PSM415",
-           text({"'", who, "' works on solids; an operand has ",
-                 std::to_string(stats.surface_cells + stats.skipped_cells),
-                 " cells of fewer than 3 dimensions"}),
+           text({"'", who, "' works on solids; an operand has ", std::to_string(flat_cells),
+                 flat_cells == 1 ? " cell" : " cells", " of fewer than 3 dimensions"}),
            at);
   for (const kernel::Mesh& solid : flat.solids)
     out = combine(c, out, solid, kernel::BooleanOp::kUnion, who, at);

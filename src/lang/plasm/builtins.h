@@ -1,9 +1,11 @@
 // The names every PLaSM program may use without defining them: the FL toolbox and the geometry
 // library of issue 13 (docs/plasm-language.md, "Builtins"). This table is the one list the
-// checker resolves names against and suggests from; the evaluator will implement each entry.
+// checker resolves names against and suggests from, and the evaluator implements each entry;
+// docs/plasm-library.md is generated from it.
 #pragma once
 
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace insula::lang::plasm {
@@ -23,5 +25,9 @@ std::span<const Builtin> builtins();
 
 // The builtin named `key` (a case-folded name), or null.
 const Builtin* find_builtin(std::string_view key);
+
+// docs/plasm-library.md: every builtin with what it is applied to and its summary, as one
+// Markdown table (tests/lang/plasm/library_doc_test.cc keeps the committed page up to date).
+std::string library_reference_markdown();
 
 }  // namespace insula::lang::plasm

@@ -255,7 +255,12 @@ kernel::Mesh complex_mesh(const FlatComplex& flat, std::span<const std::uint32_t
         continue;
       }
     }
-    const Vec3 preferred = flat.dim < 3 ? Vec3{0, 0, 1} : newell(points);
+    // A surface faces the way its cell's vertices turn; a mirror above the cell turns them the
+    // other way, so the side is taken back (the outside of a closed MAP surface stays outside).
+    Vec3 preferred = flat.dim < 3 ? Vec3{0, 0, 1} : newell(points);
+    if (!flat.origin.empty() && flat.origin[index] != FlatComplex::kNoOrigin &&
+        (flat.origin[index] & FlatComplex::kMirrored) != 0)
+      preferred = -preferred;
     if (add_planar(points, length(preferred) > 0 ? preferred : Vec3{0, 0, 1}, welder, mesh, tag)) {
       ++stats.surface_cells;
     } else {

@@ -2,8 +2,7 @@
 // and check() accepted. Strict application, lazy memoised bindings (top-level DEFs and WHERE
 // locals, order-free), arithmetic lifted pointwise to functions, the FL toolbox of builtins.
 // Evaluation is bounded by Budgets; every runtime error is one positioned PSM4xx diagnostic.
-// Builtins that need polyhedra (CUBOID, STRUCT, MAP, ...) belong to the geometry stage: calling
-// one is PSM410.
+// The builtins that make polyhedra are geometry.h's (docs/plasm-language.md, "Geometry").
 #pragma once
 
 #include <cstddef>

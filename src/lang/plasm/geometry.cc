@@ -128,7 +128,9 @@ ValuePtr quote_fn(Context& c, const Function& self, Args a, Range at) {
 
 ValuePtr intervals_fn(Context& c, const Function&, Args a, Range at) {
   const double length = c.number(a[0], "INTERVALS", at);
-  const std::size_t n = count_arg(c, a[1], 10'000'000, "INTERVALS", at);
+  // The memory budget bounds n (charged below, before anything is allocated); the limit here
+  // only keeps cell indices in 32 bits.
+  const std::size_t n = count_arg(c, a[1], 0xFFFF'FFFE, "INTERVALS", at);
   if (n == 0 || length <= 0)
     c.fail("PSM402",
            text({"'INTERVALS' needs a positive length and at least one interval, found ",

@@ -16,42 +16,43 @@
 namespace insula::lang::plasm {
 namespace {
 
-// The k-volume of the simplex spanned by `corners` (k + 1 points of `dim` coordinates), from the
-// Gram determinant of its edge vectors; also returns its longest edge.
+// The k-volume of the parallelotope on the edge vectors of the simplex spanned by `corners` (k + 1
+// points of `dim` coordinates; k! times the simplex's), as the product of the edges' lengths
+// after modified Gram-Schmidt; also returns the longest edge. Its error is rounding times the
+// edges' lengths, where the Gram determinant's square root loses half the digits: a simplex
+// collapsed up to rounding (the pole of a sphere, where cos(PI/2) is 6e-17) measured 1e-8 of
+// its size and passed for a cell.
 double simplex_volume(const std::vector<const double*>& corners, int dim, double& longest) {
   const std::size_t k = corners.size() - 1;
-  std::vector<double> edges(k * static_cast<std::size_t>(dim));
+  const auto d = static_cast<std::size_t>(dim);
+  std::vector<double> edges(k * d);
   longest = 0;
   for (std::size_t e = 0; e < k; ++e) {
     double length = 0;
-    for (int i = 0; i < dim; ++i) {
-      const double d = corners[e + 1][i] - corners[0][i];
-      edges[e * static_cast<std::size_t>(dim) + static_cast<std::size_t>(i)] = d;
-      length += d * d;
+    for (std::size_t i = 0; i < d; ++i) {
+      const double x = corners[e + 1][i] - corners[0][i];
+      edges[e * d + i] = x;
+      length += x * x;
     }
     longest = std::max(longest, std::sqrt(length));
   }
-  std::vector<double> gram(k * k);
-  for (std::size_t a = 0; a < k; ++a) {
-    for (std::size_t b = 0; b < k; ++b) {
-      double sum = 0;
-      for (int i = 0; i < dim; ++i)
-        sum += edges[a * static_cast<std::size_t>(dim) + static_cast<std::size_t>(i)] *
-               edges[b * static_cast<std::size_t>(dim) + static_cast<std::size_t>(i)];
-      gram[a * k + b] = sum;
+  double volume = 1;
+  for (std::size_t e = 0; e < k; ++e) {
+    double* v = edges.data() + e * d;
+    for (std::size_t b = 0; b < e; ++b) {
+      const double* u = edges.data() + b * d;  // unit length
+      double along = 0;
+      for (std::size_t i = 0; i < d; ++i) along += v[i] * u[i];
+      for (std::size_t i = 0; i < d; ++i) v[i] -= along * u[i];
     }
+    double norm = 0;
+    for (std::size_t i = 0; i < d; ++i) norm += v[i] * v[i];
+    norm = std::sqrt(norm);
+    volume *= norm;
+    if (norm == 0) return 0;
+    for (std::size_t i = 0; i < d; ++i) v[i] /= norm;
   }
-  double det = 1;  // Cholesky-free elimination: the Gram matrix is symmetric positive semidefinite
-  for (std::size_t col = 0; col < k; ++col) {
-    const double p = gram[col * k + col];
-    if (p <= 0) return 0;
-    det *= p;
-    for (std::size_t r = col + 1; r < k; ++r) {
-      const double f = gram[r * k + col] / p;
-      for (std::size_t t = col; t < k; ++t) gram[r * k + t] -= f * gram[col * k + t];
-    }
-  }
-  return std::sqrt(std::max(det, 0.0));
+  return volume;
 }
 
 // The sign of det(v1 - v0, ..., vd - v0) for d + 1 points of d coordinates.
@@ -427,12 +428,13 @@ ValuePtr circle_fn(Context& c, const Function&, Args a, Range at) {
   return polyhedron_value(c, map_complex(c, grid({kTau, r}, n), 2, f, "CIRCLE", at), at);
 }
 
-// SPHERE:r:<n, m>: the sphere surface, n parallels' bands and m meridians' sectors.
+// SPHERE:r:<n, m>: the sphere surface, n parallels' bands and m meridians' sectors, from the
+// north pole down so that the surface faces outward.
 ValuePtr sphere_fn(Context& c, const Function&, Args a, Range at) {
   const double r = positive(c, a[0], "SPHERE", at);
   const std::vector<std::size_t> n = divisions(c, a[1], 2, "SPHERE", at);
   const PointMap f = [r](const double* in, double* out) {
-    const double lat = in[0] - std::numbers::pi / 2;
+    const double lat = std::numbers::pi / 2 - in[0];
     out[0] = r * std::cos(lat) * std::cos(in[1]);
     out[1] = r * std::cos(lat) * std::sin(in[1]);
     out[2] = r * std::sin(lat);
@@ -442,7 +444,8 @@ ValuePtr sphere_fn(Context& c, const Function&, Args a, Range at) {
 }
 
 // TORUS:<r1, r2>:<n, m>: the surface of a tube of radius r1 around a circle of radius r2 in the
-// xy plane, n sectors around the tube and m around the axis (docs/plasm-language.md).
+// xy plane, n sectors around the tube and m around the axis (docs/plasm-language.md); the tube
+// angle runs from the outer equator downwards, so that the surface faces outward.
 ValuePtr torus_fn(Context& c, const Function&, Args a, Range at) {
   const Sequence& radii = c.seq_of(a[0], 2, "TORUS", at);
   const double r1 = positive(c, radii[0], "TORUS", at);
@@ -452,7 +455,7 @@ ValuePtr torus_fn(Context& c, const Function&, Args a, Range at) {
     const double ring = r2 + r1 * std::cos(in[0]);
     out[0] = ring * std::cos(in[1]);
     out[1] = ring * std::sin(in[1]);
-    out[2] = r1 * std::sin(in[0]);
+    out[2] = -r1 * std::sin(in[0]);
   };
   return polyhedron_value(c, map_complex(c, grid({kTau, kTau}, n), 3, f, "TORUS", at), at);
 }

@@ -264,6 +264,9 @@ PolyPtr make_group(std::vector<Polyhedron::Child> children) {
   auto p = std::make_shared<Polyhedron>();
   for (const Polyhedron::Child& c : children)
     p->dim = std::max({p->dim, c.part->dim, c.transform.n});
+  // A map of fewer coordinates (T:1:2 in a STRUCT of solids) leaves the others as they are.
+  for (Polyhedron::Child& c : children)
+    if (!c.transform.m.empty() && c.transform.n < p->dim) c.transform = c.transform.widened(p->dim);
   p->children = std::move(children);
   count(*p);
   return p;

@@ -9,6 +9,7 @@
 #include "lang/plasm/ast_dump.h"
 #include "lang/plasm/checker.h"
 #include "lang/plasm/eval.h"
+#include "lang/plasm/output.h"
 #include "lang/plasm/parser.h"
 
 namespace insula::lang::plasm::testing {
@@ -44,6 +45,18 @@ inline std::string first_run_error(const std::string& text, const std::string& n
   if (!checked.diagnostics.empty()) return base::render(checked.diagnostics.front());
   const auto values = value_summaries(result.value(), source, budgets);
   if (!values.ok()) return base::render(values.diagnostics().front());
+  return {};
+}
+
+// As first_run_error, then converting the program's polyhedra as `insula build` does
+// (program_scene: PSM420 when nothing is drawn).
+inline std::string first_build_error(const std::string& text, const std::string& name = "t.psm",
+                                     Budgets budgets = {}) {
+  if (std::string error = first_run_error(text, name, budgets); !error.empty()) return error;
+  const base::Source source(name, text);
+  const auto result = parse(source);
+  const auto scene = program_scene(result.value(), source, budgets);
+  if (!scene.ok()) return base::render(scene.diagnostics().front());
   return {};
 }
 
