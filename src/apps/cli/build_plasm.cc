@@ -81,8 +81,10 @@ int build_plasm(const BuildOptions& options) {
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                               static_cast<std::size_t>(threads));
-    evaluated.emplace(
-        lang::plasm::program_scene(program.value(), source, {}, drawing_reader(options.input)));
+    lang::plasm::Budgets budgets;
+    budgets.stop = [] { return interrupted(); };
+    evaluated.emplace(lang::plasm::program_scene(program.value(), source, budgets,
+                                                 drawing_reader(options.input)));
   }
   base::Result<lang::plasm::ProgramOutput>& output = *evaluated;
   report["seconds"]["evaluate"] = stage.seconds();

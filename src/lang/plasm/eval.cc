@@ -144,6 +144,8 @@ void Context::step(Range at) {
          text({"evaluation takes more than ", std::to_string(budgets_.steps),
                " steps (the step budget)"}),
          at);
+  if ((f.steps & 4095U) == 0 && budgets_.stop && budgets_.stop())
+    fail("PSM419", "evaluation interrupted", at);
 }
 
 void Context::charge(double cells, Range at) {

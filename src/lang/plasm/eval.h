@@ -28,6 +28,9 @@ struct Budgets {
   std::uint64_t cells = 4'000'000;
   // How deeply sequences and partial applications may nest inside one value (PSM413).
   int nesting = 500;
+  // Asked every 4096 steps; true stops the evaluation with PSM419 (the app's interrupt flag:
+  // SIGINT during a long evaluation ends it within a few milliseconds, not at its end).
+  std::function<bool()> stop;
 };
 
 // A drawing's outlines for SVG:"file.svg" (seed 002, §5): the app reads and parses the file

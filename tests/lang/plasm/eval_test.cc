@@ -151,6 +151,19 @@ TEST(PlasmEval, BudgetsBoundRunawayPrograms) {
             "t.psm:1:13: error[PSM");
 }
 
+// The app's stop flag (SIGINT) is asked every 4096 steps and ends the evaluation with PSM419.
+TEST(PlasmEval, StopFlagInterruptsEvaluation) {
+  Budgets stopping;
+  int asked = 0;
+  stopping.stop = [&asked] { return ++asked >= 2; };
+  EXPECT_EQ(value_of("DEF v = INSR:+:(AA:(C:+:1):(1 .. 10000));", "v", stopping),
+            "t.psm:1:17: error[PSM419]: evaluation interrupted");
+  EXPECT_EQ(asked, 2);
+  Budgets never;
+  never.stop = [] { return false; };
+  EXPECT_EQ(value_of("DEF v = INSR:+:(AA:(C:+:1):(1 .. 10000));", "v", never), "50015000");
+}
+
 // Every builtin of the table is implemented: none is left unknown to the evaluator.
 TEST(PlasmEval, EveryBuiltinIsImplemented) {
   std::string missing;
