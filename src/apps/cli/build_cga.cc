@@ -149,12 +149,8 @@ int build_cga(const BuildOptions& options) {
   nlohmann::json seconds;
 
   Stopwatch clock;
-  const std::optional<std::string> text = read_input_file(options.input);
-  if (!text) {
-    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(),
-                 read_failure(options.input).c_str());
-    return kExitInput;
-  }
+  const std::optional<std::string> text = read_input_or_report(options.input);
+  if (!text) return kExitInput;
   const base::Source source(options.input, *text);
   base::Result<cga::Grammar> grammar = cga::parse(source);
   print_diagnostics(grammar.diagnostics(), source, options.quiet);

@@ -138,12 +138,8 @@ int build_lua(const BuildOptions& options) {
       return kExitUsage;
     }
   }
-  const std::optional<std::string> text = read_input_file(options.input);
-  if (!text) {
-    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(),
-                 read_failure(options.input).c_str());
-    return kExitInput;
-  }
+  const std::optional<std::string> text = read_input_or_report(options.input);
+  if (!text) return kExitInput;
   const base::Source source(options.input, *text);
   const FolderAssets obj_assets(asset_folders(options));
   const PlasmAssets assets(asset_folders(options), &obj_assets);  // FILE.psm#EXPRESSION parts

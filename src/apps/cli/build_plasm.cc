@@ -55,12 +55,8 @@ lang::plasm::OutlineReader drawing_reader(const std::string& input) {
 int build_plasm(const BuildOptions& options) {
   const Stopwatch total;
   if (const int code = check_build_outputs(options); code != kExitDone) return code;
-  const std::optional<std::string> text = read_input_file(options.input);
-  if (!text) {
-    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(),
-                 read_failure(options.input).c_str());
-    return kExitInput;
-  }
+  const std::optional<std::string> text = read_input_or_report(options.input);
+  if (!text) return kExitInput;
   const base::Source source(options.input, *text);
   base::Result<lang::plasm::Program> program = lang::plasm::parse(source);
   if (!program.ok()) {

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -32,6 +33,12 @@ std::string read_failure_reason(const std::string& path) {
   if (fd < 0) return std::strerror(reason);
   ::close(fd);
   return "read error";
+}
+
+std::optional<std::string> read_input_or_report(const std::string& path) {
+  std::optional<std::string> text = read_input_file(path);
+  if (!text) std::fprintf(stderr, "%s: error: %s\n", path.c_str(), read_failure(path).c_str());
+  return text;
 }
 
 }  // namespace insula::cli

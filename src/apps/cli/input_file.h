@@ -14,5 +14,7 @@ std::string read_failure_reason(const std::string& path);
 inline std::string read_failure(const std::string& path) {
   return "cannot read file: " + read_failure_reason(path);
 }
+// read_input_file, printing `PATH: error: cannot read file: <reason>` to stderr when it fails.
+std::optional<std::string> read_input_or_report(const std::string& path);
 
 }  // namespace insula::cli

@@ -230,12 +230,8 @@ int run_mass(const MassOptions& options) {
   report.threads = threads;
 
   Stopwatch read_clock;
-  const std::optional<std::string> text = read_input_file(options.input);
-  if (!text) {
-    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(),
-                 read_failure(options.input).c_str());
-    return kExitInput;
-  }
+  const std::optional<std::string> text = read_input_or_report(options.input);
+  if (!text) return kExitInput;
   const base::Source source(options.input, *text);
   base::Result<io::FootprintSet> set = io::read_geojson(
       source.text(), options.input, geojson_options(options.crs, options.keep_going));

@@ -103,12 +103,8 @@ int run_transform(const TransformOptions& options) {
                  options.input.c_str());
     return kExitUsage;
   }
-  const std::optional<std::string> text = read_input_file(options.input);
-  if (!text) {
-    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(),
-                 read_failure(options.input).c_str());
-    return kExitInput;
-  }
+  const std::optional<std::string> text = read_input_or_report(options.input);
+  if (!text) return kExitInput;
   const base::Source source(options.input, *text);
   int exit_code = kExitInput;
   std::optional<std::string> output;
