@@ -4,10 +4,12 @@
 // cells classified by random rays. Operands are 3D solids: convex cells of three dimensions (a
 // conforming complex is one shell, other complexes are united cell by cell first) and earlier
 // booleans' results.
+#include <optional>
 #include <string>
 #include <utility>
 
 #include "kernel/boolean3d.h"
+#include "lang/plasm/boolean_prism.h"
 #include "lang/plasm/complex_mesh.h"
 #include "lang/plasm/geometry.h"
 
@@ -71,8 +73,20 @@ bool malformed(const kernel::Boolean3dResult& r) {
 // one boolean does the work of n (one at a time, each re-triangulated and re-checked the growing
 // result: a wall minus 100 windows took minutes). The kernel rejects the combined mesh when the bi
 // overlap, touch or nest, and then they go one by one.
+// The prisms' fast path (boolean_prism.h) when every operand is made of them.
+std::optional<kernel::Mesh> prisms(Context& c, const std::vector<PolyPtr>& operands,
+                                   kernel::BooleanOp op, bool exclusive, Range at) {
+  std::vector<FlatComplex> flat;
+  for (const PolyPtr& p : operands) {
+    flat.push_back(flatten_cells(*p));
+    c.charge(static_cast<double>(flat.back().cells.size()) * 8, at);
+  }
+  return prism_boolean(flat, op, exclusive);
+}
+
 kernel::Mesh fold(Context& c, const std::vector<PolyPtr>& operands, kernel::BooleanOp op,
                   std::string_view who, Range at) {
+  if (std::optional<kernel::Mesh> mesh = prisms(c, operands, op, false, at)) return *mesh;
   std::vector<kernel::Mesh> meshes;
   for (const PolyPtr& p : operands) meshes.push_back(operand(c, p, false, who, at));
   if ((op == kernel::BooleanOp::kDifference || op == kernel::BooleanOp::kUnion) &&
@@ -125,6 +139,8 @@ ValuePtr boolean_fn(Context& c, const Function& self, Args a, Range at) {
 // XOR: what lies in an odd number of the operands, (a - b) + (b - a) folded.
 ValuePtr xor_fn(Context& c, const Function&, Args a, Range at) {
   const std::vector<PolyPtr> ps = operands(c, a[0], "XOR", at);
+  if (std::optional<kernel::Mesh> mesh = prisms(c, ps, kernel::BooleanOp::kUnion, true, at))
+    return solid_value(c, std::move(*mesh), at);
   kernel::Mesh acc = fold(c, {ps.front()}, kernel::BooleanOp::kUnion, "XOR", at);
   for (std::size_t i = 1; i < ps.size(); ++i) {
     const kernel::Mesh next = fold(c, {ps[i]}, kernel::BooleanOp::kUnion, "XOR", at);

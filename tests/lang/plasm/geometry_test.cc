@@ -456,6 +456,24 @@ TEST(PlasmGeometry, DifferenceWithAThroughHole) {
   }
 }
 
+// A wall with windows through it (right prisms along y: the 2D sections' boolean, extruded) and
+// with a blind niche (not through: the 3D boolean) give the same kind of solid.
+TEST(PlasmGeometry, WallsWithWindowsAndNiches) {
+  Checked r(
+      "DEF window (i::IsNum) = T:<1, 2, 3>:<2 * i - 1.5, -1, 1>:(CUBOID:<1, 3, 1.5>);"
+      "DEF wall = DIFFERENCE:(CUBOID:<12, 0.5, 4> AL AA:window:(1 .. 5));"
+      "DEF niche = CUBOID:<12, 0.5, 4> - T:<1, 2, 3>:<1, 0.2, 1>:(CUBOID:<1, 1, 1.5>);");
+  const Exported wall = exported(r.poly("wall"));
+  EXPECT_NEAR(wall.volume, 12 * 0.5 * 4 - 5 * 1 * 0.5 * 1.5, 1e-9);
+  EXPECT_TRUE(wall.check.closed);
+  EXPECT_EQ(wall.check.non_manifold_edges, 0U);
+  EXPECT_EQ(wall.check.euler_characteristic, 2 - 2 * 5);  // genus 5
+  const Exported niche = exported(r.poly("niche"));
+  EXPECT_NEAR(niche.volume, 12 * 0.5 * 4 - 1 * 0.3 * 1.5, 1e-9);
+  EXPECT_TRUE(niche.check.closed);
+  EXPECT_EQ(niche.check.euler_characteristic, 2);
+}
+
 TEST(PlasmGeometry, UnionIntersectionXor) {
   Checked r(
       "DEF a = CUBOID:<2, 2, 2>; DEF b = T:<1, 2, 3>:<1, 1, 1>:a;"
