@@ -16,6 +16,8 @@
 namespace insula::lang::plasm {
 namespace {
 
+constexpr std::size_t kMaxCellwiseUnion = 256;
+
 [[noreturn]] void boolean_failure(Context& c, std::string_view who, const std::string& why,
                                   Range at) {
   c.fail("PSM415", text({"'", who, "' failed: ", why}), at);
@@ -44,6 +46,14 @@ kernel::Mesh operand(Context& c, const PolyPtr& p, bool cellwise, std::string_vi
   MeshStats stats;
   kernel::Mesh out;
   if (cellwise) {
+    // One 3D boolean per cell: bounded, so a large overlapping complex is an error, not minutes.
+    if (flat.cells.size() > kMaxCellwiseUnion)
+      c.fail("PSM415",
+             text({"'", who, "': an operand of ", std::to_string(flat.cells.size()),
+                   " cells that overlap or meet in part of a face is too many to unite one by one "
+                   "(at most ",
+                   std::to_string(kMaxCellwiseUnion), "; UNION its parts first)"}),
+             at);
     for (std::uint32_t k = 0; k < flat.cells.size(); ++k) {
       const std::uint32_t one[] = {k};
       out = combine(c, out, complex_mesh(flat, one, {}, stats), kernel::BooleanOp::kUnion, who, at);

@@ -116,6 +116,10 @@ const std::map<std::string, std::string>& expected_first_lines() {
        "nesting_budget.psm:1:9: error[PSM413]: a value nests deeper than 500 levels (the nesting "
        "budget)"},
       {"not_finite", "not_finite.psm:1:9: error[PSM406]: 'LN' gives no finite number here"},
+      {"overlapping_operand",
+       "overlapping_operand.psm:1:1: error[PSM415]: '-': an operand of 300 cells that overlap or "
+       "meet in part of a face is too many to unite one by one (at most 256; UNION its parts "
+       "first)"},
       {"predicate_fails",
        "predicate_fails.psm:2:9: error[PSM403]: 'fact': parameter 'n' must satisfy IsNat, found "
        "-3"},
