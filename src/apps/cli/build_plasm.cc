@@ -106,6 +106,12 @@ int build_plasm(const BuildOptions& options) {
   report["buildings"] = out.scene.buildings.size();
   report["parts"] = parts;
   report["triangles"] = triangles;
+  if (out.stats.non_manifold_parts > 0 && !options.quiet)
+    std::fprintf(stderr,
+                 "%s: warning: %zu parts hold solids that touch (edges of more than two faces; "
+                 "attribute non_manifold_edges)\n",
+                 options.input.c_str(), out.stats.non_manifold_parts);
+  report["non_manifold_parts"] = out.stats.non_manifold_parts;
   report["cells"] = {{"solid", out.stats.solid_cells},
                      {"surface", out.stats.surface_cells},
                      {"not_drawn", out.stats.skipped_cells}};

@@ -19,6 +19,9 @@ struct MeshStats {
   std::size_t solid_cells = 0;    // 3D cells
   std::size_t surface_cells = 0;  // 2D cells
   std::size_t skipped_cells = 0;  // points, segments, cells in 4D and more, hulls that failed
+  // Parts holding booleans' solids beside other solids or cells whose mesh has edges shared by
+  // more than two faces (solids that touch): marked, not merged (docs/plasm-language.md).
+  std::size_t non_manifold_parts = 0;
 };
 
 // The faces of stored cells already hulled (FlatComplex::origin), for the complex_mesh calls of

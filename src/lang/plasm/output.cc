@@ -4,6 +4,8 @@
 #include <utility>
 #include <vector>
 
+#include "kernel/mesh.h"
+
 namespace insula::lang::plasm {
 
 shape::Building polyhedron_building(const Polyhedron& polyhedron, const std::string& id,
@@ -30,6 +32,15 @@ shape::Building polyhedron_building(const Polyhedron& polyhedron, const std::str
       }
       ++stats.solid_cells;
       part.mesh.append(flat.solids[k]);
+    }
+    // A boolean's solid is a closed 2-manifold; several in one part (a boolean per cell, as
+    // Listing 8's roof does) may touch along faces or edges. Such a part is marked.
+    if (!solids[g].empty() && solids[g].size() + cells[g].size() > 1) {
+      const kernel::MeshCheck check = kernel::check(kernel::weld(part.mesh));
+      if (check.non_manifold_edges > 0) {
+        part.attributes["non_manifold_edges"] = static_cast<double>(check.non_manifold_edges);
+        ++stats.non_manifold_parts;
+      }
     }
     if (!part.mesh.empty()) building.parts.push_back(std::move(part));
   }

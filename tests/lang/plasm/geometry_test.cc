@@ -507,6 +507,26 @@ TEST(PlasmGeometry, UnionIntersectionXor) {
   EXPECT_TRUE(grid.check.closed);
 }
 
+// Solids of booleans that touch inside one part are marked (non_manifold_edges), not merged; a
+// part of one solid, or of solids apart, is not.
+TEST(PlasmGeometry, TouchingSolidsInOnePartAreMarked) {
+  const std::string text =
+      "DEF hole = T:<1, 2>:<0.25, 0.25>:(CUBOID:<0.5, 0.5, 1>);\n"
+      "STRUCT:<CUBOID:<1, 1, 1> - hole, T:1:1:(CUBOID:<1, 1, 1> - hole)>;\n"
+      "STRUCT:<CUBOID:<1, 1, 1> - hole, T:1:3:(CUBOID:<1, 1, 1> - hole)>;\n";
+  const base::Source source("touch.psm", text);
+  auto program = parse(source);
+  ASSERT_TRUE(program.ok());
+  auto out = program_scene(program.value(), source);
+  ASSERT_TRUE(out.ok()) << base::render(out.diagnostics().front());
+  ASSERT_EQ(out->scene.buildings.size(), 2U);
+  EXPECT_EQ(out->stats.non_manifold_parts, 1U);
+  const auto& touching = out->scene.buildings[0].parts;
+  ASSERT_EQ(touching.size(), 1U);
+  ASSERT_TRUE(touching[0].attributes.count("non_manifold_edges"));
+  EXPECT_EQ(out->scene.buildings[1].parts[0].attributes.count("non_manifold_edges"), 0U);
+}
+
 // Labels: each instance of a top-level DEF below the expression is a part named after it, with
 // the path of names above it.
 TEST(PlasmGeometry, PartsAreNamedAfterTopLevelDefs) {
