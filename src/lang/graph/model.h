@@ -116,7 +116,8 @@ struct Limits {
 
 struct Graph {
   const base::Source* source = nullptr;  // the file it is in
-  std::string ref;  // how it is named: the file's path, or "#name" for an inline graph
+  std::string folder;  // its file's folder, relative to the top-level graph's ("" for that one)
+  std::string ref;     // how it is named: the file's path, or "#name" for an inline graph
   std::size_t offset = 0;
   const Graph* enclosing = nullptr;  // the graph whose `subgraphs` defines it (inline only)
   std::string name;

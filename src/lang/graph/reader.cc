@@ -73,7 +73,8 @@ class Reader {
   std::vector<base::Diagnostic>& diagnostics() { return diagnostics_; }
 
   // Reads a file's graph (top-level: `format` and `version` required).
-  Graph* read_file(std::unique_ptr<base::Source> source, const std::string& ref) {
+  Graph* read_file(std::unique_ptr<base::Source> source, const std::string& ref,
+                   const std::string& folder) {
     const base::Source& src = *source;
     doc_.sources.push_back(std::move(source));
     base::Result<JsonValue> json = parse_json(src);
@@ -85,7 +86,11 @@ class Reader {
       return nullptr;
     }
     doc_.json.push_back(std::make_unique<JsonValue>(std::move(json.value())));
-    return read_graph_object(*doc_.json.back(), src, ref, nullptr, true);
+    const std::size_t first_graph = doc_.graphs.size();
+    Graph* g = read_graph_object(*doc_.json.back(), src, ref, nullptr, true);
+    // Inline graphs of this file resolve paths from the same folder.
+    for (std::size_t i = first_graph; i < doc_.graphs.size(); ++i) doc_.graphs[i]->folder = folder;
+    return g;
   }
 
   // Resolves the subgraph nodes of every graph read so far, reading the files they name (each
@@ -593,21 +598,33 @@ class Reader {
             n.graph_offset);
       return nullptr;
     }
-    namespace fs = std::filesystem;
-    // Relative to the file the node is in, then expressed relative to the top-level folder.
-    const fs::path own_dir = fs::path(src.name()).parent_path().lexically_normal();
-    const fs::path top = fs::path(root_dir).lexically_normal();
-    const fs::path target = (own_dir / fs::path(n.graph_ref)).lexically_normal();
-    const fs::path relative = top.empty() ? target : target.lexically_relative(top);
-    const bool outside =
-        fs::path(n.graph_ref).is_absolute() || relative.empty() || *relative.begin() == "..";
-    if (outside) {
+    // Relative to the folder of the file the node is in, walked component by component from the
+    // top-level graph's folder: a path that steps above it is refused, however the top-level
+    // file was named on the command line.
+    std::vector<std::string> parts;
+    for (const auto& part : std::filesystem::path(g.folder)) {
+      if (!part.empty() && part != ".") parts.push_back(part.string());
+    }
+    bool outside = std::filesystem::path(n.graph_ref).is_absolute();
+    for (const auto& part : std::filesystem::path(n.graph_ref)) {
+      const std::string p = part.string();
+      if (p.empty() || p == "." || p == "/") continue;
+      if (p != "..") {
+        parts.push_back(p);
+      } else if (parts.empty()) {
+        outside = true;
+      } else {
+        parts.pop_back();
+      }
+    }
+    if (outside || parts.empty()) {
       error("G031",
             "cannot read subgraph '" + n.graph_ref + "': it leads outside the graph's folder", src,
             n.graph_offset);
       return nullptr;
     }
-    const std::string key = relative.generic_string();
+    std::string key;
+    for (const std::string& p : parts) key += (key.empty() ? "" : "/") + p;
     if (const auto it = files_read_.find(key); it != files_read_.end()) return it->second;
     std::string text;
     std::string why;
@@ -618,9 +635,11 @@ class Reader {
       files_read_[key] = nullptr;
       return nullptr;
     }
-    const std::string shown = (top / relative).lexically_normal().generic_string();
+    const std::string shown =
+        (std::filesystem::path(root_dir) / key).lexically_normal().generic_string();
     notes_.insert(notes_.begin(), "in subgraph '" + n.id + "' (" + shown + ")");
-    Graph* read = read_file(std::make_unique<base::Source>(shown, std::move(text)), shown);
+    Graph* read = read_file(std::make_unique<base::Source>(shown, std::move(text)), shown,
+                            std::filesystem::path(key).parent_path().generic_string());
     notes_.clear();
     files_read_[key] = read;
     return read;
@@ -673,8 +692,8 @@ class Reader {
 base::Result<Document> read_graph(const base::Source& source, const FileReader& files) {
   Document doc;
   Reader reader(doc, files);
-  const Graph* root =
-      reader.read_file(std::make_unique<base::Source>(source.name(), source.text()), source.name());
+  const Graph* root = reader.read_file(std::make_unique<base::Source>(source.name(), source.text()),
+                                       source.name(), "");
   doc.root = root;
   if (root != nullptr && !base::has_errors(reader.diagnostics())) {
     reader.resolve_all(std::filesystem::path(source.name()).parent_path().string());
