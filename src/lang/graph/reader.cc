@@ -62,6 +62,10 @@ namespace {
 
 using Kind = JsonValue::Kind;
 
+// A bound on the subgraph files one graph reaches, so a reader that always finds a file (paths
+// growing into ever deeper folders) cannot keep reading.
+constexpr std::size_t kMaxSubgraphFiles = 256;
+
 constexpr const char* kTopFields[] = {"format",     "version",    "name",  "doc",   "seed",
                                       "parameters", "attributes", "nodes", "edges", "gates",
                                       "subgraphs",  "limits",     "ui"};
@@ -626,6 +630,13 @@ class Reader {
     std::string key;
     for (const std::string& p : parts) key += (key.empty() ? "" : "/") + p;
     if (const auto it = files_read_.find(key); it != files_read_.end()) return it->second;
+    if (files_read_.size() >= kMaxSubgraphFiles) {
+      error("G031",
+            "cannot read subgraph '" + n.graph_ref + "': more than " +
+                std::to_string(kMaxSubgraphFiles) + " subgraph files",
+            src, n.graph_offset);
+      return nullptr;
+    }
     std::string text;
     std::string why;
     if (!files_ || !files_(key, text, why)) {
