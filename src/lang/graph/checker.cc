@@ -7,6 +7,7 @@
 #include <set>
 
 #include "base/format.h"
+#include "lang/graph/expr.h"
 #include "lang/graph/reader.h"
 
 namespace insula::lang::graph {
@@ -16,20 +17,6 @@ std::optional<std::size_t> CheckedGraph::node(std::string_view id) const {
     if (nodes[i].node->id == id) return i;
   }
   return std::nullopt;
-}
-
-std::string nearest(std::string_view word, const std::vector<std::string>& candidates) {
-  const std::size_t limit = word.size() <= 2 ? 1 : 2;
-  std::size_t best = limit + 1;
-  std::string found;
-  for (const std::string& c : candidates) {
-    const std::size_t d = base::edit_distance(word, c);
-    if (d < best && d > 0) {
-      best = d;
-      found = c;
-    }
-  }
-  return found;
 }
 
 namespace {
@@ -120,6 +107,7 @@ class GraphChecker {
     out_.used_as_subgraph = doc_.used_by.count(&g_) > 0;
     nodes();
     edges();
+    expressions();
     infer_types();
     check_edge_types();
     gates();
@@ -521,6 +509,112 @@ class GraphChecker {
               suggestion(ref.port, names) + "; its " + side + " ports are: " + joined(names),
           ref.offset);
     return false;
+  }
+
+  // §5: every expression parses (G023), names declared things (G020, G021), reads the entity only
+  // where there is one (G022), and has types that fit its operators and its parameter (G024).
+  void expression(const CheckedNode& c, const ParamValue& v, std::optional<ValueType> wanted,
+                  bool per_entity) {
+    if (!v.expression) return;
+    const std::string text = v.value->text.substr(1);
+    const auto file_offset = [&](std::size_t at) {
+      return string_byte_offset(*g_.source, *v.value, 1 + at);
+    };
+    ExprError err;
+    const std::optional<Expr> parsed = parse_expression(text, err);
+    if (!parsed) {
+      error(err.code, err.message, file_offset(err.at));
+      return;
+    }
+    ExprScope scope;
+    scope.attribute = [this](const std::string& name) -> std::optional<ValueType> {
+      const Declaration* d = g_.attribute(name);
+      return d == nullptr ? std::nullopt : std::optional<ValueType>(d->type);
+    };
+    scope.parameter = [this](const std::string& name) -> std::optional<ValueType> {
+      const Declaration* d = g_.parameter(name);
+      return d == nullptr ? std::nullopt : std::optional<ValueType>(d->type);
+    };
+    scope.input_port = [&c](const std::string& port) {
+      return std::any_of(c.inputs.begin(), c.inputs.end(),
+                         [&](const ResolvedPort& p) { return p.name == port; });
+    };
+    for (const Declaration& d : g_.attributes) scope.attributes.push_back(d.name);
+    for (const Declaration& d : g_.parameters) scope.parameters.push_back(d.name);
+    const std::string param = "parameter '" + v.name + "' of " + describe(c);
+    const bool has_entity =
+        std::any_of(c.inputs.begin(), c.inputs.end(),
+                    [](const ResolvedPort& p) { return !p.edges.empty() || p.gate; });
+    if (!has_entity) {
+      scope.entity_readable = false;
+      scope.not_readable_because =
+          param + " has no current entity (no input port is connected) and";
+    } else if (c.collective && !per_entity) {
+      scope.entity_readable = false;
+      scope.not_readable_because = param + " is evaluated once per execution and";
+    }
+    const std::optional<ValueType> t = check_expression(*parsed, text, scope, err);
+    if (!t) {
+      error(err.code, err.message, file_offset(err.at));
+      return;
+    }
+    if (!wanted || *wanted == ValueType::kAny || *t == ValueType::kAny || *t == *wanted) return;
+    const bool numeric = *t == ValueType::kNumber || *t == ValueType::kInteger;
+    if (numeric && (*wanted == ValueType::kNumber || *wanted == ValueType::kInteger)) return;
+    if (*t == ValueType::kString && *wanted == ValueType::kEnum) return;
+    error("G024",
+          param + " needs " + expected_of(*wanted) + "; '=" + text + "' gives " + expected_of(*t),
+          file_offset(0));
+  }
+
+  static std::string expected_of(ValueType t) {
+    return t == ValueType::kInteger ? "an integer"
+           : t == ValueType::kEnum  ? "a string"
+                                    : "a " + std::string(value_type_name(t));
+  }
+
+  void expressions() {
+    for (const CheckedNode& c : out_.nodes) {
+      const Node& n = *c.node;
+      if (c.type == nullptr) {
+        for (const ParamValue& v : n.params) {
+          const Declaration* d = n.subgraph != nullptr ? n.subgraph->parameter(v.name) : nullptr;
+          expression(c, v, d ? std::optional<ValueType>(d->type) : std::nullopt, false);
+        }
+        continue;
+      }
+      for (const ParamValue& v : n.params) {
+        const ParamSpec* spec = c.type->param(v.name);
+        if (spec == nullptr) continue;
+        expression(
+            c, v, spec->registry_type.empty() ? std::optional<ValueType>(spec->type) : std::nullopt,
+            spec->per_entity);
+        // attr.set: each value is a literal or an expression of the attribute's type.
+        if (c.type->name == "attr.set" && v.name == "values" && !v.expression &&
+            v.value->kind == Kind::kObject) {
+          for (const JsonMember& m : v.value->members) {
+            const Declaration* d = g_.attribute(m.key);
+            const ParamValue inner{
+                m.key, m.key_offset, &m.value,
+                m.value.kind == Kind::kString && !m.value.text.empty() && m.value.text[0] == '='};
+            expression(c, inner, d ? std::optional<ValueType>(d->type) : std::nullopt, true);
+          }
+        }
+      }
+      for (std::size_t i = 0; i < n.augment.size(); ++i) {
+        const Augmentation& a = n.augment[i];
+        const AugmentSpec* spec = a.kind.empty() && c.type->augments.size() == 1
+                                      ? &c.type->augments[0]
+                                      : c.type->augment(a.kind);
+        if (spec == nullptr) continue;
+        for (const ParamValue& v : a.fields) {
+          const auto it = std::find_if(spec->fields.begin(), spec->fields.end(),
+                                       [&](const ParamSpec& f) { return f.name == v.name; });
+          if (it == spec->fields.end()) continue;
+          expression(c, v, std::optional<ValueType>(it->type), it->per_entity);
+        }
+      }
+    }
   }
 
   void edges() {

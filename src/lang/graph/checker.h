@@ -78,8 +78,4 @@ ExecutionOrder execution_order(const CheckedGraph& graph, bool encapsulated);
 // node `index id (type)`, cycles as `cycle a b`, and cyclic edges.
 std::string dump_order(const Document& document, const CheckResult& result);
 
-// The candidate within two edits of `word` (one for words of up to two letters), nearest first,
-// then first listed; empty when none is that close.
-std::string nearest(std::string_view word, const std::vector<std::string>& candidates);
-
 }  // namespace insula::lang::graph

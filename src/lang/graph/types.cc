@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "base/format.h"
+
 namespace insula::lang::graph {
 namespace {
 
@@ -57,6 +59,20 @@ std::optional<ValueType> value_type_named(std::string_view name) {
     if (kValueNames[i] == name) return static_cast<ValueType>(i);
   }
   return std::nullopt;
+}
+
+std::string nearest(std::string_view word, const std::vector<std::string>& candidates) {
+  const std::size_t limit = word.size() <= 2 ? 1 : 2;
+  std::size_t best = limit + 1;
+  std::string found;
+  for (const std::string& c : candidates) {
+    const std::size_t d = base::edit_distance(word, c);
+    if (d < best && d > 0) {
+      best = d;
+      found = c;
+    }
+  }
+  return found;
 }
 
 }  // namespace insula::lang::graph

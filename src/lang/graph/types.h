@@ -4,7 +4,9 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace insula::lang::graph {
 
@@ -40,5 +42,10 @@ enum class ValueType : std::uint8_t {
 
 std::string_view value_type_name(ValueType type);
 std::optional<ValueType> value_type_named(std::string_view name);
+
+// The candidate within two edits of `word` (one for words of up to two letters), nearest first,
+// then first listed; empty when none is that close. Behind every "did you mean" of the graph
+// front-end (edit distance from base/format.h, as the CLI's verbs and PLaSM's names).
+std::string nearest(std::string_view word, const std::vector<std::string>& candidates);
 
 }  // namespace insula::lang::graph
