@@ -11,7 +11,7 @@ seconds=${FUZZ_SECONDS:-60}
 # A fixed seed by default: CI's one-minute runs take the same path each time (so a red run is a
 # change of ours, reproducible here); FUZZ_SEED=0 lets libFuzzer pick one, for longer hunts.
 seed=${FUZZ_SEED:-1}
-all=(geojson cga bldg lua obj xml plasm)
+all=(geojson cga bldg lua obj xml plasm graph)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all[@]}")
 
@@ -30,6 +30,7 @@ seeds() {  # the read-only seed folders of target $1
     obj) echo fuzz/corpus/obj examples/lua/assets tests/data/assets ;;
     xml) echo fuzz/corpus/xml tests/data/cga/transform ;;
     plasm) echo examples/plasm tests/data/plasm ;;
+    graph) echo examples/graph tests/data/graph ;;
   esac
 }
 

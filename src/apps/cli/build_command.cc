@@ -62,6 +62,7 @@ int run_build(const BuildOptions& options) {
   if (has_suffix(options.input, ".bldg")) return build_bldg(options);
   if (has_suffix(options.input, ".lua")) return build_lua(options);
   if (has_suffix(options.input, ".psm")) return build_plasm(options);
+  if (has_suffix(options.input, ".graph.json")) return build_graph(options);
   std::fprintf(stderr, "insula: %s: unknown input type (use .cga, .bldg, .lua or .psm)\n",
                options.input.c_str());
   return kExitUsage;

@@ -45,8 +45,8 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
       app.add_subcommand("check", "parse and check an input without building anything");
   check
       ->add_option("INPUT", options.input,
-                   "a .geojson footprint file, a .cga or .bldg grammar, a .lua program or a .psm "
-                   "PLaSM program")
+                   "a .geojson footprint file, a .cga or .bldg grammar, a .lua program, a .psm "
+                   "PLaSM program or a .graph.json procedural content graph")
       ->required();
   check->add_flag("-q,--quiet", options.quiet, "print errors only");
   check->add_option("--start", options.start,
@@ -62,7 +62,9 @@ int run_check(const CheckOptions& options) {
   Checker checker = nullptr;
   bool cga = false;      // check_cga also takes --start
   bool geojson = false;  // so does check_geojson --crs and --keep-going
-  if (has_suffix(options.input, ".geojson") || has_suffix(options.input, ".json")) {
+  if (has_suffix(options.input, ".graph.json")) {
+    checker = check_graph;
+  } else if (has_suffix(options.input, ".geojson") || has_suffix(options.input, ".json")) {
     geojson = true;
   } else if (has_suffix(options.input, ".cga")) {
     cga = true;
@@ -73,9 +75,10 @@ int run_check(const CheckOptions& options) {
   } else if (has_suffix(options.input, ".psm")) {
     checker = check_plasm;
   } else {
-    std::fprintf(stderr,
-                 "insula: %s: unknown input type (use .geojson, .cga, .bldg, .lua or .psm)\n",
-                 options.input.c_str());
+    std::fprintf(
+        stderr,
+        "insula: %s: unknown input type (use .geojson, .cga, .bldg, .lua, .psm or .graph.json)\n",
+        options.input.c_str());
     return kExitUsage;
   }
   const std::optional<std::string> text = read_input_or_report(options.input);

@@ -16,6 +16,7 @@ int build_cga(const BuildOptions& options);
 int build_bldg(const BuildOptions& options);
 int build_lua(const BuildOptions& options);
 int build_plasm(const BuildOptions& options);
+int build_graph(const BuildOptions& options);  // says the executor comes later
 
 // `insula check`: a one-line summary of what was checked, or nullopt when the input has errors
 // (diagnostics already printed; warnings too unless `quiet`).
@@ -26,6 +27,7 @@ std::optional<std::string> check_cga(const base::Source& source, bool quiet,
 std::optional<std::string> check_bldg(const base::Source& source, bool quiet);
 std::optional<std::string> check_lua(const base::Source& source, bool quiet);
 std::optional<std::string> check_plasm(const base::Source& source, bool quiet);
+std::optional<std::string> check_graph(const base::Source& source, bool quiet);
 
 // Prints diagnostics rendered against `source` to stderr (warnings and notes only when !quiet).
 void print_diagnostics(const std::vector<base::Diagnostic>& diagnostics, const base::Source& source,

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# `insula check G.graph.json` (graph-format.md §13): the ok summary, diagnostics with carets and
+# subgraph notes, exit codes; `insula build` on a graph says the executor comes later.
+source "$(dirname "$0")/lib/common.sh"
+
+out=$("$insula" check "$root/examples/graph/street_houses.graph.json" 2>&1)
+[ $? -eq 0 ] && [ "$out" = "$root/examples/graph/street_houses.graph.json: ok: 3 graphs, 12 nodes, 10 edges, 0 cyclic edges" ] ||
+  fail "check street_houses: $out"
+for g in "$root"/examples/graph/*.graph.json "$root"/examples/graph/parts/*.graph.json; do
+  "$insula" check "$g" >/dev/null 2>"$tmp/err" || fail "$(basename "$g") does not check clean: $(cat "$tmp/err")"
+  [ -s "$tmp/err" ] && fail "$(basename "$g") has warnings: $(cat "$tmp/err")"
+done
+
+bad=$root/tests/data/graph/bad
+"$insula" check "$bad/error_in_subgraph_file.graph.json" >"$tmp/out" 2>"$tmp/err"
+[ $? -eq 1 ] || fail "a graph with an error exits 1"
+[ -s "$tmp/out" ] && fail "nothing on stdout for a failed check"
+head -1 "$tmp/err" | grep -qF "$bad/parts/broken.graph.json:3:5: error[G021]: shape.extrude: missing required parameter 'height'" ||
+  fail "error in a subgraph file: $(cat "$tmp/err")"
+# The caret line comes from the subgraph file's own text.
+sed -n 2p "$tmp/err" | grep -qF '{ "id": "bad", "type": "shape.extrude" }' || fail "subgraph source line: $(cat "$tmp/err")"
+grep -qF "note: in subgraph 'wall' ($bad/parts/broken.graph.json)" "$tmp/err" || fail "subgraph note: $(cat "$tmp/err")"
+
+# Warnings alone: exit 0, the warning on stderr, the summary on stdout.
+"$insula" check "$bad/cycle_without_exit.graph.json" >"$tmp/out" 2>"$tmp/err"
+[ $? -eq 0 ] || fail "warnings alone exit 0"
+grep -qF "warning[W001]: cycle a -> b -> a has no way out" "$tmp/err" || fail "W001 shown: $(cat "$tmp/err")"
+grep -qF "ok: 1 graph, 3 nodes, 3 edges, 1 cyclic edge" "$tmp/out" || fail "summary: $(cat "$tmp/out")"
+
+for f in "$bad"/*.graph.json; do
+  timeout 20 "$insula" check "$f" >/dev/null 2>"$tmp/err"
+  code=$?
+  [ "$code" -le 1 ] || fail "$(basename "$f"): exit $code"
+  grep -q "error\[\|warning\[" "$tmp/err" || fail "$(basename "$f"): no diagnostic"
+done
+
+# A subgraph file reached through a symbolic link out of the graph's folder is refused.
+mkdir -p "$tmp/g" "$tmp/elsewhere"
+printf '{ "format": "insula-graph", "version": 1, "nodes": [] }\n' >"$tmp/elsewhere/x.graph.json"
+ln -s "$tmp/elsewhere" "$tmp/g/link"
+printf '{ "format": "insula-graph", "version": 1, "nodes": [ { "id": "s", "type": "subgraph", "graph": "link/x.graph.json" } ] }\n' >"$tmp/g/top.graph.json"
+"$insula" check "$tmp/g/top.graph.json" >/dev/null 2>"$tmp/err"
+[ $? -eq 1 ] && grep -qF "error[G031]: cannot read subgraph 'link/x.graph.json': it leads outside the graph's folder" "$tmp/err" ||
+  fail "symbolic link out of the folder: $(cat "$tmp/err")"
+
+"$insula" build "$root/examples/graph/footprint_tiles.graph.json" -o "$tmp/tiles.obj" >"$tmp/out" 2>"$tmp/err"
+[ $? -eq 1 ] || fail "build of a graph exits 1"
+[ "$(wc -l <"$tmp/err")" -eq 1 ] && grep -qF "building graphs needs the graph executor, which comes in a later stage" "$tmp/err" ||
+  fail "build message: $(cat "$tmp/err")"
+[ -e "$tmp/tiles.obj" ] && fail "build of a graph wrote a file"
+
+finish graph_check
