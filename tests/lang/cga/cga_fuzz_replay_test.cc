@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../../common/fuzz_replay.h"
 #include "../../common/test_util.h"
 
 namespace {
@@ -38,27 +39,10 @@ TEST(CgaFuzzReplay, CorpusKeepsTheContract) {
 
 TEST(CgaFuzzReplay, TruncationsAndMutationsKeepTheContract) {
   const std::string replacements = std::string("{}[]()|:;,\"~>-'*/#<>=&\xCE\xB5\xFF") + '\0';
-  std::uint64_t state = 0x2545F4914F6CDD1DULL;  // fixed seed: deterministic
   std::size_t inputs = 0;
-  for (const auto& file : replay_files()) {
-    const std::string text = read_file(file);
-    if (text.empty()) continue;
-    const std::size_t step = std::max<std::size_t>(1, text.size() / 40);
-    for (std::size_t length = 0; length < text.size(); length += step) {
-      ASSERT_EQ(insula::fuzz::check_cga(text.substr(0, length)), "") << file << " cut " << length;
-      ++inputs;
-    }
-    for (int round = 0; round < 60; ++round) {
-      std::string mutated = text;
-      for (int k = 0; k < 2; ++k) {
-        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-        const std::size_t at = (state >> 33) % mutated.size();
-        mutated[at] = replacements[(state >> 17) % replacements.size()];
-      }
-      ASSERT_EQ(insula::fuzz::check_cga(mutated), "") << file << " mutation " << round;
-      ++inputs;
-    }
-  }
+  EXPECT_EQ(
+      insula::test::replay_variants(replay_files(), insula::fuzz::check_cga, replacements, inputs),
+      "");
   EXPECT_GT(inputs, 3000U);
 }
 
