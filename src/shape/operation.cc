@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <initializer_list>
 
 #include "shape/building_ops.h"
@@ -145,6 +146,20 @@ std::string check_value(const Operation& op, const ParamDecl& p, const ArgValue&
 }
 
 }  // namespace
+
+std::optional<SizeSpec> parse_size(std::string_view text) {
+  SizeSpec size;
+  if (!text.empty() && (text.front() == '\'' || text.front() == '~')) {
+    size.mode = text.front() == '\'' ? SizeMode::kRelative : SizeMode::kFloating;
+    text.remove_prefix(1);
+  }
+  if (text.empty()) return std::nullopt;
+  const std::string copy(text);
+  char* end = nullptr;
+  size.value = std::strtod(copy.c_str(), &end);
+  if (end != copy.c_str() + copy.size() || !std::isfinite(size.value)) return std::nullopt;
+  return size;
+}
 
 std::string to_string(const SizeSpec& size) {
   switch (size.mode) {

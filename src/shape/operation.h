@@ -32,6 +32,9 @@ struct SizeSpec {
 };
 // "2", "'0.5", "~1".
 std::string to_string(const SizeSpec& size);
+// The inverse: "2" (meters), "'0.5" (relative), "~1" (floating); nullopt for other text or a
+// non-finite number.
+std::optional<SizeSpec> parse_size(std::string_view text);
 
 enum class ParamType : std::uint8_t {
   kNumber,    // double

@@ -25,16 +25,9 @@ using shape::ShapeId;
 namespace {
 
 bool parse_size(const std::string& text, shape::SizeSpec& out) {
-  std::string_view body = text;
-  out.mode = shape::SizeMode::kAbsolute;
-  if (!body.empty() && (body.front() == '\'' || body.front() == '~')) {
-    out.mode = body.front() == '\'' ? shape::SizeMode::kRelative : shape::SizeMode::kFloating;
-    body.remove_prefix(1);
-  }
-  const std::string copy(body);
-  char* end = nullptr;
-  out.value = std::strtod(copy.c_str(), &end);
-  return !copy.empty() && end == copy.c_str() + copy.size() && std::isfinite(out.value);
+  const std::optional<shape::SizeSpec> size = shape::parse_size(text);
+  if (size) out = *size;
+  return size.has_value();
 }
 
 // One Lua value as the registry argument of `param`.

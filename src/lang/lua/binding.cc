@@ -274,20 +274,9 @@ shape::Axis check_axis(lua_State* L, int arg, std::string_view operation) {
 namespace {
 
 bool parse_size_text(const std::string& text, shape::SizeSpec& out) {
-  std::string_view body = text;
-  out.mode = shape::SizeMode::kAbsolute;
-  if (!body.empty() && body.front() == '\'') {
-    out.mode = shape::SizeMode::kRelative;
-    body.remove_prefix(1);
-  } else if (!body.empty() && body.front() == '~') {
-    out.mode = shape::SizeMode::kFloating;
-    body.remove_prefix(1);
-  }
-  if (body.empty()) return false;
-  char* end = nullptr;
-  const std::string copy(body);
-  out.value = std::strtod(copy.c_str(), &end);
-  return end == copy.c_str() + copy.size() && std::isfinite(out.value) && out.value >= 0;
+  const std::optional<shape::SizeSpec> size = shape::parse_size(text);
+  if (size) out = *size;
+  return size.has_value() && size->value >= 0;
 }
 
 }  // namespace

@@ -1,0 +1,108 @@
+// Running a checked graph (graph-format.md §9): the queue by execution index, rounds of single
+// and collective nodes, transfers with copies on divergence, blocked and leaf ports, subgraph
+// rounds with gates and attribute scoping, limits (G050, G051, G053), run-time errors (G052,
+// W010, W030, W040) and the counts of the report's `graph` section (§13).
+// docs/graph-executor.md, "Execution".
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/diagnostic.h"
+#include "kernel/polygon.h"
+#include "lang/graph/checker.h"
+#include "lang/graph/entity.h"
+#include "lang/graph/model.h"
+#include "shape/operation.h"
+#include "shape/scene.h"
+#include "shape/shape_tree.h"
+
+namespace insula::lang::graph {
+
+// A lot of `create.lots`: a footprint (local meters, world XY) and its properties.
+struct LotInput {
+  kernel::Polygon footprint;
+  shape::AttributeMap properties;
+  std::string id;
+};
+// Reads the lots of `file` ("" = the command line's --lot), or fails with a reason.
+using LotReader =
+    std::function<bool(const std::string& file, std::vector<LotInput>& lots, std::string& error)>;
+
+// Runs another front-end's program on a shape (the nodes `rule.cga`, `rule.bldg`, `rule.lua`,
+// `rule.plasm`): the app plugs the front-ends in, since one front-end never includes another.
+// Must be callable from several threads at once.
+struct RuleRequest {
+  std::string language;  // "cga", "bldg", "lua", "plasm"
+  std::string file;      // as written in the graph (relative to the graph's folder)
+  std::string start;     // start rule / function / expression; "" for the program's own
+  kernel::Polygon footprint;  // the shape's outline in world XY (flat shapes)
+  double elevation = 0;
+  shape::AttributeMap attributes;  // the entity's graph attributes (lot properties)
+  std::uint64_t seed = 0;
+};
+class RuleRunner {
+ public:
+  virtual ~RuleRunner() = default;
+  // The model, or null with `error` set.
+  virtual std::shared_ptr<const Model> run(const RuleRequest& request,
+                                           std::string& error) const = 0;
+};
+
+struct RunOptions {
+  std::optional<std::uint64_t> seed;  // --seed (overrides the graph's)
+  // --set name=value for the top-level graph's parameters, as typed on the command line.
+  std::vector<std::pair<std::string, std::string>> sets;
+  int threads = 1;
+  const shape::AssetProvider* assets = nullptr;
+  const RuleRunner* rules = nullptr;
+  LotReader lots;
+  // Polled between node executions; true stops the run (nothing is written).
+  std::function<bool()> interrupted;
+};
+
+struct PortCount {
+  std::uint64_t count = 0;
+  std::map<std::string, std::uint64_t> types;  // entity type name -> count
+};
+struct NodeRuns {
+  std::uint64_t executions = 0;
+  std::uint64_t rounds = 0;
+};
+
+// A result entity: what left a leaf port (§1), in result order.
+struct ResultEntity {
+  EntityId entity = kNoEntity;
+  std::string port;  // "node.port"
+};
+
+struct RunResult {
+  bool ok = false;
+  std::vector<base::Diagnostic> diagnostics;
+  std::uint64_t seed = 0;
+  shape::ShapeTree tree;
+  EntityStore entities;
+  std::vector<shape::Material> materials;  // index 0 = default
+  std::map<std::uint16_t, std::shared_ptr<const Texture>> textures;  // by material
+  std::vector<ResultEntity> results;
+  // The report's counts (§13), keys in first-use order where the format says so.
+  std::vector<std::string> cyclic_edges;
+  std::vector<std::pair<std::string, NodeRuns>> node_runs;  // node id ("houseA/door" inside)
+  std::vector<std::pair<std::string, PortCount>> leaves;    // in order of first arrival
+  std::map<std::string, std::uint64_t> blocked;
+  std::map<std::string, std::uint64_t> unprocessed;
+  std::map<std::string, std::uint64_t> failed;
+  // The top-level graph's attribute names by key (for reports and the export).
+  std::map<AttributeKey, std::string> attribute_names;
+};
+
+// Runs `document`'s top-level graph (checked by check()). Never throws.
+RunResult run_graph(const Document& document, const CheckResult& checked,
+                    const RunOptions& options);
+
+}  // namespace insula::lang::graph

@@ -1,0 +1,117 @@
+#include "lang/graph/shape_entities.h"
+#include "lang/graph/executor.h"
+
+#include <cmath>
+
+namespace insula::lang::graph {
+
+std::optional<EntityId> footprint_entity(NodeContext& c, std::size_t round, std::uint32_t position,
+                                         const kernel::Polygon& footprint, double elevation,
+                                         std::string& error) {
+  const shape::RootResult root = c.tree().create_root(footprint, elevation);
+  if (!root.ok()) {
+    error = root.error;
+    return std::nullopt;
+  }
+  const EntityId e = c.create(round, EntityType::kShape, position);
+  c.entities()[e].shape = root.id;
+  return e;
+}
+
+EntityId shape_child(NodeContext& c, EntityId parent, shape::ShapeId shape) {
+  const EntityId e = c.entities().derive(parent, EntityType::kShape);
+  Entity& child = c.entities()[e];
+  child.shape = shape;
+  child.material = c.entities()[parent].material;
+  return e;
+}
+
+bool run_operation(NodeContext& c, EntityId entity, const std::string& op,
+                   const std::vector<shape::ArgInput>& args, std::vector<EntityId>& children,
+                   std::vector<std::uint32_t>* pieces) {
+  const shape::ShapeId id = c.entities()[entity].shape;
+  shape::Context context;
+  context.assets = c.options().assets;
+  const shape::OpResult result = shape::registry().run(c.tree(), id, op, args, context);
+  if (!result.ok()) {
+    c.fail(entity, op + ": " + result.error);
+    return false;
+  }
+  for (std::size_t i = 0; i < result.children.size(); ++i) {
+    children.push_back(shape_child(c, entity, result.children[i]));
+    if (pieces != nullptr) pieces->push_back(result.pieces[i]);
+  }
+  return true;
+}
+
+std::optional<kernel::Polygon> world_footprint(NodeContext& c, EntityId entity,
+                                               double* elevation) {
+  const Entity& e = c.entities()[entity];
+  if (e.type != EntityType::kShape) return std::nullopt;
+  const shape::Shape& s = c.tree()[e.shape];
+  if (s.outline == nullptr || std::abs(s.scope.z.z) < 1 - 1e-9) return std::nullopt;
+  const auto to_world = [&](const kernel::Ring& ring) {
+    kernel::Ring out;
+    for (const kernel::Vec2& p : ring) {
+      const kernel::Vec3 w = s.scope.to_world({p.x, p.y, 0});
+      out.push_back({w.x, w.y});
+    }
+    return out;
+  };
+  kernel::Polygon polygon{to_world(s.outline->outer), {}};
+  for (const kernel::Ring& hole : s.outline->holes) polygon.holes.push_back(to_world(hole));
+  kernel::normalize(polygon);
+  if (elevation != nullptr) *elevation = s.scope.origin.z;
+  return polygon;
+}
+
+std::optional<shape::ArgValue> to_argument(const Value& value, const shape::ParamDecl& decl) {
+  using shape::ParamType;
+  switch (value.type()) {
+    case ValueType::kNumber:
+      if (decl.type == ParamType::kSize) return shape::SizeSpec{value.number()};
+      return value.number();
+    case ValueType::kInteger:
+      if (decl.type == ParamType::kSize) return shape::SizeSpec{value.number()};
+      return value.integer();
+    case ValueType::kBool:
+      return value.boolean();
+    case ValueType::kString:
+      if (decl.type == ParamType::kSize) {
+        const std::optional<shape::SizeSpec> size = shape::parse_size(value.text());
+        if (!size) return std::nullopt;
+        return *size;
+      }
+      return value.text();
+    case ValueType::kList: {
+      std::vector<shape::SizeSpec> sizes;
+      for (const Value& v : value.list()) {
+        std::optional<shape::SizeSpec> size;
+        if (v.is_number()) size = shape::SizeSpec{v.number()};
+        if (v.type() == ValueType::kString) size = shape::parse_size(v.text());
+        if (!size) return std::nullopt;
+        sizes.push_back(*size);
+      }
+      return sizes;
+    }
+    default:
+      return std::nullopt;
+  }
+}
+
+std::vector<shape::ArgInput> registry_arguments(NodeContext& c, std::size_t round,
+                                                const shape::Operation& op) {
+  std::vector<shape::ArgInput> args;
+  for (const shape::ParamDecl& decl : op.params) {
+    if (c.checked().type->param(decl.name) == nullptr || !c.has_param(decl.name)) continue;
+    const Value v = c.param(round, decl.name);
+    const std::optional<shape::ArgValue> arg = to_argument(v, decl);
+    if (!arg) {
+      c.error("parameter '" + decl.name + "' of " + op.name + " cannot take " + to_string(v));
+    }
+    args.push_back({decl.name, *arg});
+  }
+  return args;
+}
+
+}  // namespace insula::lang::graph
