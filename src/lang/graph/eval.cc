@@ -18,6 +18,13 @@ std::string a_type(const Value& v) {
   }
 }
 
+bool finite(const Value& v) {
+  if (v.type() == ValueType::kNumber) return std::isfinite(v.number());
+  if (v.type() != ValueType::kVec3) return true;
+  const kernel::Vec3 p = v.vec();
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
 bool both_integers(const Value& a, const Value& b) {
   return a.type() == ValueType::kInteger && b.type() == ValueType::kInteger;
 }
@@ -48,8 +55,6 @@ double sin_degrees(double x) {
   return std::sin(r * std::numbers::pi / 180);
 }
 
-class Evaluator;
-
 // The evaluated arguments of one function call.
 struct Call {
   const Expr& expr;
@@ -65,11 +70,6 @@ struct Call {
   bool integers() const {
     return std::all_of(args.begin(), args.end(),
                        [](const Value& v) { return v.type() == ValueType::kInteger; });
-  }
-  // A number result; non-finite values only come from overflow once the domain is checked.
-  std::optional<Value> number(double d) const {
-    if (!std::isfinite(d)) return fail("number overflow in '" + expr.name + "'");
-    return Value(d);
   }
   // "sqrt(-1)" for domain messages.
   std::string spelled() const {
@@ -149,14 +149,14 @@ std::optional<Value> call_tan(Call& c) {
   if (r == 0) return Value(0.0);
   if (r == 45) return Value(1.0);
   if (r == 135) return Value(-1.0);
-  return c.number(std::tan(r * std::numbers::pi / 180));
+  return Value(std::tan(r * std::numbers::pi / 180));
 }
 std::optional<Value> call_atan2(Call& c) {
   return Value(std::atan2(c.num(0), c.num(1)) * (180 / std::numbers::pi));
 }
 std::optional<Value> call_rand(Call& c) {
   if (c.args.empty()) return Value(c.env.rng().unit());
-  return c.number(c.env.rng().uniform(c.num(0), c.num(1)));
+  return Value(c.env.rng().uniform(c.num(0), c.num(1)));
 }
 std::optional<Value> call_randint(Call& c) {
   return Value(c.env.rng().integer(c.args[0].integer(), c.args[1].integer()));
@@ -165,10 +165,10 @@ std::optional<Value> call_vec(Call& c) {
   return Value(kernel::Vec3{c.num(0), c.num(1), c.num(2)});
 }
 std::optional<Value> call_dist(Call& c) {
-  return c.number(kernel::length(c.args[0].vec() - c.args[1].vec()));
+  return Value(kernel::length(c.args[0].vec() - c.args[1].vec()));
 }
 std::optional<Value> call_length(Call& c) {
-  return c.number(kernel::length(c.args[0].vec()));
+  return Value(kernel::length(c.args[0].vec()));
 }
 std::optional<Value> call_str(Call& c) {
   return Value(to_string(c.args[0]));
@@ -406,8 +406,9 @@ class Evaluator {
     }
     std::optional<kernel::Vec3> v = vector(op, l, r);
     if (v) {
-      if (!std::isfinite(v->x) || !std::isfinite(v->y) || !std::isfinite(v->z)) {
-        return fail(op == "/" ? "division by zero" : "number overflow in '" + op + "'", e.at);
+      if (!finite(*v)) {
+        const bool by_zero = op == "/" && r.number() == 0;
+        return fail(by_zero ? "division by zero" : "number overflow in '" + op + "'", e.at);
       }
       return Value(*v);
     }
@@ -497,7 +498,7 @@ class Evaluator {
     if (b == nullptr) return fail("unknown function '" + e.name + "'", e.at);
     const int n = static_cast<int>(e.args.size());
     if (n < b->min_args || n > b->max_args || (e.name == "rand" && n == 1)) {
-      return fail("'" + e.name + "' cannot take " + std::to_string(n) + " arguments", e.at);
+      return fail("wrong number of arguments to '" + e.name + "'", e.at);
     }
     Call c{e, {}, env_, error_};
     c.args.reserve(e.args.size());
@@ -507,7 +508,10 @@ class Evaluator {
       c.args.push_back(std::move(*v));
     }
     if (!check_args(c, b->args)) return std::nullopt;
-    return b->body(c);
+    std::optional<Value> v = b->body(c);
+    // Finite arguments inside each function's domain give a non-finite result only by overflow.
+    if (v && !finite(*v)) return fail("number overflow in '" + e.name + "'", e.at);
+    return v;
   }
 
   // The argument types the checker accepted for known types, again for list elements (kAny).
@@ -530,7 +534,7 @@ class Evaluator {
   }
 
   std::optional<Value> call_if(const Expr& e) {
-    if (e.args.size() != 3) return fail("'if' takes 3 arguments", e.at);
+    if (e.args.size() != 3) return fail("wrong number of arguments to 'if'", e.at);
     std::optional<Value> c = eval(e.args[0]);
     if (!c) return std::nullopt;
     if (c->type() != ValueType::kBool) return fail("'if' needs a bool, found " + a_type(*c), e.at);

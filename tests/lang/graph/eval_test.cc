@@ -322,6 +322,8 @@ TEST(GraphEval, ArithmeticErrorsPointAtTheOperation) {
       {"-1e308 - 1e308", "number overflow in '-'", 7},
       {"vec(1e308, 0, 0) * 10", "number overflow in '*'", 17},
       {"vec(1e308, 0, 0) + vec(1e308, 0, 0)", "number overflow in '+'", 17},
+      {"vec(1e308, 0, 0) / 0.5", "number overflow in '/'", 17},
+      {"vec(0, 0, 0) / 0", "division by zero", 13},
       {"length(vec(1.5e308, 1.5e308, 0))", "number overflow in 'length'", 0},
       {"rand(-1e308, 1e308)", "number overflow in 'rand'", 0},
       {"sqrt(-1)", "sqrt(-1) is not a real number", 0},
@@ -365,6 +367,23 @@ TEST(GraphEval, RunTimeTypeErrors) {
       {"size(['a'][0])", "'size' needs a list or a vec3, found a string", 0},
   };
   expect_failures(cases);
+}
+
+// evaluate() is meant for checked expressions, but an unchecked one fails cleanly too.
+TEST(GraphEval, UncheckedCallsFailCleanly) {
+  FakeEnv env;
+  for (const auto& [text, message] : {std::pair{"1 + pow(2)", "wrong number of arguments to 'pow'"},
+                                      {"1 + if(true, 1)", "wrong number of arguments to 'if'"},
+                                      {"1 + rand(1)", "wrong number of arguments to 'rand'"},
+                                      {"1 + nosuch(1)", "unknown function 'nosuch'"}}) {
+    ExprError err;
+    const std::optional<Expr> e = parse_expression(text, err);
+    ASSERT_TRUE(e) << text;
+    EvalError error;
+    EXPECT_FALSE(evaluate(*e, env, error)) << text;
+    EXPECT_EQ(error.message, message);
+    EXPECT_EQ(error.at, 4U) << text;
+  }
 }
 
 // Left-nested chains are as deep as they are long, beyond the parser's 100 levels.
