@@ -25,13 +25,13 @@ struct Value {
       data = 0.0;
 
   Value() = default;
-  Value(double v) : data(v) {}                        // NOLINT(google-explicit-constructor)
-  Value(std::int64_t v) : data(v) {}                  // NOLINT(google-explicit-constructor)
-  Value(bool v) : data(v) {}                          // NOLINT(google-explicit-constructor)
-  Value(std::string v) : data(std::move(v)) {}        // NOLINT(google-explicit-constructor)
-  Value(const char* v) : data(std::string(v)) {}      // NOLINT(google-explicit-constructor)
-  Value(kernel::Vec3 v) : data(v) {}                  // NOLINT(google-explicit-constructor)
-  Value(ValueList v)                                  // NOLINT(google-explicit-constructor)
+  Value(double v) : data(v) {}                    // NOLINT(google-explicit-constructor)
+  Value(std::int64_t v) : data(v) {}              // NOLINT(google-explicit-constructor)
+  Value(bool v) : data(v) {}                      // NOLINT(google-explicit-constructor)
+  Value(std::string v) : data(std::move(v)) {}    // NOLINT(google-explicit-constructor)
+  Value(const char* v) : data(std::string(v)) {}  // NOLINT(google-explicit-constructor)
+  Value(kernel::Vec3 v) : data(v) {}              // NOLINT(google-explicit-constructor)
+  Value(ValueList v)                              // NOLINT(google-explicit-constructor)
       : data(std::make_shared<const ValueList>(std::move(v))) {}
 
   ValueType type() const;  // kNumber, kInteger, kBool, kString, kVec3 or kList
@@ -44,6 +44,8 @@ struct Value {
   kernel::Vec3 vec() const { return std::get<kernel::Vec3>(data); }
   const ValueList& list() const { return *std::get<std::shared_ptr<const ValueList>>(data); }
 
+  // By value as §5's `==`: an integer equals the number of the same value (3 == 3.0), vec3s and
+  // lists compare element by element; other values of different types are unequal.
   friend bool operator==(const Value& a, const Value& b);
 };
 
