@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,9 +18,30 @@
 
 namespace insula::shape {
 
+// An RGBA image, 8 bits per channel, rows top to bottom (a procedural texture, seed 003 §5.1).
+struct Image {
+  std::string name;
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;
+};
+
 struct Material {
   std::string name;
   std::array<float, 4> rgba{0.8F, 0.8F, 0.8F, 1.0F};  // linear RGB + alpha
+  // A base colour texture (glTF writes it as an image; other writers keep the colour).
+  std::shared_ptr<const Image> image{};
+};
+
+// A punctual light (glTF KHR_lights_punctual), in local coordinates like the parts.
+struct Light {
+  std::string name;
+  std::string kind = "point";  // point, spot
+  kernel::Vec3 position;
+  kernel::Vec3 direction{0, 0, -1};  // spot lights
+  std::array<float, 3> color{1.0F, 1.0F, 1.0F};
+  double intensity = 1;  // candela
+  double range = 0;      // 0: unlimited
 };
 
 // A CityGML-like object type for a part.
@@ -50,6 +72,7 @@ struct Scene {
   std::string crs;                  // e.g. "EPSG:32633"; empty when unknown
   std::vector<Material> materials;  // indexed by kernel::MaterialId; index 0 = "default"
   std::vector<Building> buildings;
+  std::vector<Light> lights{};
 
   Scene();
   // The material a face shows: its own, or the default colour of its semantic class.

@@ -20,6 +20,7 @@
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
+#include "apps/cli/obj_assets.h"
 #include "apps/cli/plasm_assets.h"
 #include "apps/cli/progress.h"
 #include "io/geojson_reader.h"
@@ -34,43 +35,6 @@ namespace insula::cli {
 namespace {
 
 namespace cga = lang::cga;
-
-// OBJ assets named by I(), Pshape() and i(), read from the grammar's folder once each.
-class ObjAssets : public shape::AssetProvider {
- public:
-  explicit ObjAssets(std::filesystem::path dir) : dir_(std::move(dir)) {}
-
-  std::shared_ptr<const kernel::Mesh> find(std::string_view name,
-                                           std::string& error) const override {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    auto it = cache_.find(std::string(name));
-    if (it == cache_.end()) it = cache_.emplace(std::string(name), load(name)).first;
-    if (!it->second.mesh) error = it->second.error;
-    return it->second.mesh;
-  }
-
- private:
-  struct Entry {
-    std::shared_ptr<const kernel::Mesh> mesh;
-    std::string error;
-  };
-  Entry load(std::string_view name) const {
-    const std::filesystem::path path = dir_ / std::string(name);
-    const std::optional<std::string> text = read_input_file(path.string());
-    if (!text) return {nullptr, "asset '" + std::string(name) + "' not found in " + dir_.string()};
-    base::Result<kernel::Mesh> mesh = io::read_obj(*text, path.string());
-    if (!mesh.ok()) {
-      const std::string why =
-          mesh.diagnostics().empty() ? "unreadable" : base::render(mesh.diagnostics().front());
-      return {nullptr, "asset '" + std::string(name) + "': " + why};
-    }
-    return {std::make_shared<kernel::Mesh>(std::move(mesh.value())), {}};
-  }
-
-  std::filesystem::path dir_;
-  mutable std::mutex mutex_;
-  mutable std::map<std::string, Entry> cache_;
-};
 
 struct Lots {
   std::vector<cga::Lot> lots;

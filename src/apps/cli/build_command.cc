@@ -42,7 +42,8 @@ void add_build_command(CLI::App& app, BuildOptions& options) {
                     "output file, format by extension (.obj .glb .gltf .city.json .svg .png); "
                     "repeatable; none: derive and report only");
   build->add_option("--lot", options.lot, "GeoJSON lots (CGA) or outline footprints (.bldg)");
-  build->add_option("--seed", options.seed, "random seed (default 0)");
+  build->add_option("--seed", options.seed, "random seed (default 0; a graph's own seed)")
+      ->each([&options](const std::string&) { options.seed_given = true; });
   build->add_option("--threads", options.threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   build->add_option("--set", options.sets, "override an attribute: name=value; repeatable");

@@ -1,7 +1,4 @@
-// `insula check FILE.graph.json`: reads a procedural content graph with its subgraph files (read
-// from the graph's own folder tree only) and checks it (lang/graph: reader, catalogue, checker);
-// diagnostics in subgraph files are shown against their own text. `insula build` on a graph says
-// that the executor is not there yet.
+// `insula check FILE.graph.json` (graph_input.h reads and checks it).
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -14,17 +11,18 @@
 #include "apps/cli/input_file.h"
 #include "apps/cli/progress.h"
 #include "apps/cli/warnings.h"
+#include "apps/cli/graph_input.h"
 #include "lang/graph/checker.h"
 #include "lang/graph/reader.h"
 
 namespace insula::cli {
 
-std::optional<std::string> check_graph(const base::Source& source, bool quiet) {
+std::optional<LoadedGraph> load_graph(const base::Source& source, bool quiet) {
   namespace fs = std::filesystem;
   const fs::path own = fs::path(source.name()).parent_path();
   const std::string folder = own.empty() ? "." : own.string();
-  std::map<std::string, base::Source> texts;  // by the name diagnostics give
-  texts.emplace(source.name(), source);
+  LoadedGraph loaded;
+  loaded.texts.emplace(source.name(), source);
   const lang::graph::FileReader files = [&](const std::string& path, std::string& text,
                                             std::string& error) {
     std::string why;
@@ -40,27 +38,36 @@ std::optional<std::string> check_graph(const base::Source& source, bool quiet) {
     }
     text = *bytes;
     const std::string shown = (own / path).lexically_normal().generic_string();
-    texts.emplace(shown, base::Source(shown, text));
+    loaded.texts.emplace(shown, base::Source(shown, text));
     return true;
   };
-  const auto print = [&](const std::vector<base::Diagnostic>& diagnostics) {
-    for (const base::Diagnostic& d : diagnostics) {
-      const auto it = texts.find(d.span.file);
-      const std::string text = base::render(d, it == texts.end() ? nullptr : &it->second);
-      if (d.severity == base::Severity::kError) {
-        clear_progress_line();
-        std::fprintf(stderr, "%s\n", text.c_str());
-      } else {
-        emit_warning(d.code, text, quiet);
-      }
-    }
-  };
-  const base::Result<lang::graph::Document> document = lang::graph::read_graph(source, files);
-  print(document.diagnostics());
+  base::Result<lang::graph::Document> document = lang::graph::read_graph(source, files);
+  loaded.print(document.diagnostics(), quiet);
   if (!document.ok()) return std::nullopt;
-  const lang::graph::CheckResult checked = lang::graph::check(document.value());
-  print(checked.diagnostics);
-  if (!checked.ok) return std::nullopt;
+  loaded.document = std::make_unique<lang::graph::Document>(std::move(document.value()));
+  loaded.checked = lang::graph::check(*loaded.document);
+  loaded.print(loaded.checked.diagnostics, quiet);
+  if (!loaded.checked.ok) return std::nullopt;
+  return loaded;
+}
+
+void LoadedGraph::print(const std::vector<base::Diagnostic>& diagnostics, bool quiet) const {
+  for (const base::Diagnostic& d : diagnostics) {
+    const auto it = texts.find(d.span.file);
+    const std::string text = base::render(d, it == texts.end() ? nullptr : &it->second);
+    if (d.severity == base::Severity::kError) {
+      clear_progress_line();
+      std::fprintf(stderr, "%s\n", text.c_str());
+    } else {
+      emit_warning(d.code, text, quiet);
+    }
+  }
+}
+
+std::optional<std::string> check_graph(const base::Source& source, bool quiet) {
+  const std::optional<LoadedGraph> loaded = load_graph(source, quiet);
+  if (!loaded) return std::nullopt;
+  const lang::graph::CheckResult& checked = loaded->checked;
   std::size_t nodes = 0;
   std::size_t edges = 0;
   std::size_t cyclic = 0;
@@ -76,12 +83,5 @@ std::optional<std::string> check_graph(const base::Source& source, bool quiet) {
          plural(edges, "edge") + ", " + plural(cyclic, "cyclic edge");
 }
 
-int build_graph(const BuildOptions& options) {
-  std::fprintf(stderr,
-               "insula: %s: building graphs needs the graph executor, which comes in a later "
-               "stage; `insula check %s` reads and checks the graph now\n",
-               options.input.c_str(), options.input.c_str());
-  return kExitInput;
-}
 
 }  // namespace insula::cli

@@ -16,7 +16,7 @@ int build_cga(const BuildOptions& options);
 int build_bldg(const BuildOptions& options);
 int build_lua(const BuildOptions& options);
 int build_plasm(const BuildOptions& options);
-int build_graph(const BuildOptions& options);  // says the executor comes later
+int build_graph(const BuildOptions& options);
 
 // `insula check`: a one-line summary of what was checked, or nullopt when the input has errors
 // (diagnostics already printed; warnings too unless `quiet`).

@@ -303,6 +303,16 @@ constexpr Row kRows[] = {
     {"texture.invert", "texture", "in:texture -> out:texture", "", "", "", "invert"},
     {"texture.combine", "texture", "a:texture b:texture -> out:texture",
      "op:enum(add|subtract|multiply)", "", "", "combine"},
+    // Extensions of the format (docs/graph-executor.md, "Rule nodes"): another front-end's
+    // program run on each shape, so CGA, .bldg, Lua and PLaSM work inside graphs.
+    {"rule.cga", "rule", "in:shape -> out:shape", "file:string; start:string=\"\"", "", "",
+     "derives a CGA rule file from the shape's footprint (the lot)"},
+    {"rule.bldg", "rule", "in:shape -> out:shape", "file:string", "", "",
+     "builds a .bldg grammar on the shape's footprint"},
+    {"rule.lua", "rule", "in:shape -> out:shape", "file:string", "", "",
+     "runs a Lua program on the shape's footprint"},
+    {"rule.plasm", "rule", "in:shape -> out:shape", "file:string", "", "",
+     "a PLaSM expression FILE.psm#EXPRESSION fitted into the shape's scope"},
 };
 
 std::vector<NodeType> build() {

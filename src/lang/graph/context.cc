@@ -166,7 +166,9 @@ Value ExecutionContext::param_on(std::size_t round, std::string_view name, Entit
 Value ExecutionContext::field(std::size_t round, std::size_t item, std::string_view name,
                               EntityId entity) {
   const Augmentation& a = checked_.node->augment[item];
-  const AugmentSpec* kind = checked_.type->augment(a.kind);
+  // A node type with one augmentation kind lets items omit `kind`.
+  const AugmentSpec* kind = a.kind.empty() ? &checked_.type->augments.front()
+                                           : checked_.type->augment(a.kind);
   const ParamSpec* spec = nullptr;
   for (const ParamSpec& f : kind->fields) {
     if (f.name == name) spec = &f;
@@ -328,6 +330,15 @@ Value ExecutionContext::attribute(EntityId entity, std::string_view name) {
   const Declaration* d = g.attribute(name);
   const Value* v = entities().attribute(entity, execution_.attribute_key(std::string(name)));
   return v != nullptr ? *v : declared_default(*d, state_);
+}
+
+std::vector<std::pair<std::string, Value>> ExecutionContext::stored_attributes(EntityId entity) {
+  std::vector<std::pair<std::string, Value>> out;
+  for (const Declaration& d : execution_.graph().graph->attributes) {
+    const Value* v = entities().attribute(entity, execution_.attribute_key(d.name));
+    if (v != nullptr) out.emplace_back(d.name, *v);
+  }
+  return out;
 }
 
 std::uint16_t ExecutionContext::material(const std::string& name, std::array<float, 4> rgba) {

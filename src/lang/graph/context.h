@@ -28,7 +28,8 @@ class ExecutionContext final : public NodeContext {
   bool has_param(std::string_view name) const override;
   std::size_t augment_count() const override { return checked_.node->augment.size(); }
   std::string_view augment_kind(std::size_t item) const override {
-    return checked_.node->augment[item].kind;
+    const std::string& kind = checked_.node->augment[item].kind;
+    return kind.empty() ? std::string_view(checked_.type->augments.front().kind) : kind;
   }
   Value field(std::size_t round, std::size_t item, std::string_view name,
               EntityId entity) override;
@@ -48,6 +49,7 @@ class ExecutionContext final : public NodeContext {
   void write(EntityId entity, std::string_view name, const Value& value) override;
   void set_attribute(EntityId entity, std::string_view name, const Value& value) override;
   Value attribute(EntityId entity, std::string_view name) override;
+  std::vector<std::pair<std::string, Value>> stored_attributes(EntityId entity) override;
   std::uint16_t material(const std::string& name, std::array<float, 4> rgba) override;
   std::uint16_t textured_material(const std::shared_ptr<const Texture>& texture) override;
   void fail(EntityId entity, const std::string& message) override;

@@ -108,6 +108,11 @@ RunResult run_graph(const Document& document, const CheckResult& checked,
     out.diagnostics.push_back(diagnostic(e, false));
     return out;
   }
+  // §13: results by leaf port in order of first arrival, each port's in arrival order.
+  std::stable_sort(out.results.begin(), out.results.end(),
+                   [&state](const ResultEntity& a, const ResultEntity& b) {
+                     return state.leaf_index.at(a.port) < state.leaf_index.at(b.port);
+                   });
   for (const RunError& w : state.warnings) out.diagnostics.push_back(diagnostic(w, true));
   for (const auto& [port, count] : out.unprocessed) {
     out.diagnostics.push_back(base::Diagnostic::warning(

@@ -49,6 +49,9 @@ struct RuleRequest {
 class RuleRunner {
  public:
   virtual ~RuleRunner() = default;
+  // Reads and checks the program `request` names, once per program (called on the executor's
+  // thread before any run); false with `error` (the program's own diagnostics) stops the run.
+  virtual bool prepare(const RuleRequest& request, std::string& error) const = 0;
   // The model, or null with `error` set.
   virtual std::shared_ptr<const Model> run(const RuleRequest& request,
                                            std::string& error) const = 0;

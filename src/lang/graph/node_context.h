@@ -79,6 +79,9 @@ class NodeContext {
   virtual void write(EntityId entity, std::string_view name, const Value& value) = 0;
   // Sets graph attribute `name` (attr.set).
   virtual void set_attribute(EntityId entity, std::string_view name, const Value& value) = 0;
+  // The graph's declared attributes that `entity` or an ancestor set (defaults are not stored),
+  // in declaration order.
+  virtual std::vector<std::pair<std::string, Value>> stored_attributes(EntityId entity) = 0;
   // The value of graph attribute `name` seen by `entity` (its default when never set).
   virtual Value attribute(EntityId entity, std::string_view name) = 0;
   // The index of a run-wide material (created on first use).

@@ -1,0 +1,168 @@
+// `insula build G.graph.json [-o OUT]... [--lot LOTS.geojson] [--seed N] [--set name=value]...
+// [--report R.json] [--threads N]`: reads and checks the graph (graph_input.h), runs it
+// (lang/graph executor) with the other front-ends behind its rule nodes, and writes the result
+// entities (graph-format.md §13; docs/graph-executor.md).
+#include <oneapi/tbb/global_control.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include "apps/cli/asset_folders.h"
+#include "apps/cli/exit_codes.h"
+#include "apps/cli/front_ends.h"
+#include "apps/cli/geojson_options.h"
+#include "apps/cli/graph_input.h"
+#include "apps/cli/graph_rules.h"
+#include "apps/cli/input_file.h"
+#include "apps/cli/interrupt.h"
+#include "apps/cli/obj_assets.h"
+#include "apps/cli/plasm_assets.h"
+#include "io/geojson_reader.h"
+#include "lang/graph/output.h"
+
+namespace insula::cli {
+namespace {
+
+// Where lots come from: --lot for `file: ""`, else a file in the graph's folder. All lots share
+// the first file's origin and CRS (a second file elsewhere is an error).
+struct LotFiles {
+  const BuildOptions& options;
+  std::string folder;
+  bool read_any = false;
+  kernel::Vec3 origin;
+  std::string crs;
+
+  bool read(const std::string& file, std::vector<lang::graph::LotInput>& lots,
+            std::string& error) {
+    std::string path = options.lot;
+    if (!file.empty()) {
+      std::string why;
+      const std::optional<std::filesystem::path> found = find_in_folders({folder}, file, file, why);
+      if (!found) {
+        error = "cannot read lots '" + file + "': " + why;
+        return false;
+      }
+      path = found->string();
+    } else if (path.empty()) {
+      error = "create.lots reads the --lot file, and none was given";
+      return false;
+    }
+    const std::optional<std::string> text = read_input_file(path);
+    if (!text) {
+      error = path + ": " + read_failure(path);
+      return false;
+    }
+    base::Result<io::FootprintSet> set =
+        io::read_geojson(*text, path, geojson_options(options.crs, options.keep_going));
+    if (!set.ok()) {
+      error = set.diagnostics().empty() ? path + ": unreadable"
+                                        : base::render(set.diagnostics().front());
+      return false;
+    }
+    if (read_any && (set->origin.x != origin.x || set->origin.y != origin.y || set->crs != crs)) {
+      error = path + ": its coordinates are in another frame than the first lots file's";
+      return false;
+    }
+    read_any = true;
+    origin = set->origin;
+    crs = set->crs;
+    for (io::Footprint& f : set->footprints) {
+      for (std::size_t k = 0; k < f.polygons.size(); ++k) {
+        const std::string id = f.polygons.size() == 1 ? f.id : f.id + "#" + std::to_string(k);
+        lots.push_back({std::move(f.polygons[k]), f.properties, id});
+      }
+    }
+    return true;
+  }
+};
+
+std::vector<std::pair<std::string, std::string>> split_sets(const std::vector<std::string>& sets,
+                                                            std::string& error) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& s : sets) {
+    const std::size_t eq = s.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      error = "--set '" + s + "': expected name=value";
+      return {};
+    }
+    out.emplace_back(s.substr(0, eq), s.substr(eq + 1));
+  }
+  return out;
+}
+
+}  // namespace
+
+int build_graph(const BuildOptions& options) {
+  const Stopwatch total;
+  if (const int code = check_build_outputs(options); code != kExitDone) return code;
+  nlohmann::json seconds;
+  Stopwatch clock;
+  const std::optional<std::string> text = read_input_or_report(options.input);
+  if (!text) return kExitInput;
+  const base::Source source(options.input, *text);
+  const std::optional<LoadedGraph> loaded = load_graph(source, options.quiet);
+  if (!loaded) return kExitInput;
+  seconds["check"] = clock.seconds();
+
+  const std::filesystem::path own = std::filesystem::path(options.input).parent_path();
+  const std::string folder = own.empty() ? "." : own.string();
+  const ObjAssets obj_assets(own);
+  const PlasmAssets assets({folder}, &obj_assets);
+  std::vector<std::string> attributes;
+  for (const lang::graph::Declaration& d : loaded->document->root->attributes) {
+    attributes.push_back(d.name);
+  }
+  const FrontEndRules rules(folder, attributes, &assets);
+  LotFiles lot_files{options, folder, false, {}, {}};
+
+  lang::graph::RunOptions run;
+  if (options.seed_given) run.seed = options.seed;
+  std::string error;
+  run.sets = split_sets(options.sets, error);
+  if (!error.empty()) {
+    std::fprintf(stderr, "insula: error: %s\n", error.c_str());
+    return kExitUsage;
+  }
+  run.threads = options.threads > 0
+                    ? options.threads
+                    : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  run.assets = &assets;
+  run.rules = &rules;
+  run.lots = [&lot_files](const std::string& file, std::vector<lang::graph::LotInput>& lots,
+                          std::string& why) { return lot_files.read(file, lots, why); };
+  run.interrupted = [] { return interrupted(); };
+
+  clock = Stopwatch();
+  std::optional<lang::graph::RunResult> result;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(run.threads));
+    result.emplace(lang::graph::run_graph(*loaded->document, loaded->checked, run));
+  }
+  if (const int code = stop_if_interrupted(); code != 0) return code;
+  loaded->print(result->diagnostics, options.quiet);
+  if (!result->ok) return kExitInput;
+  seconds["run"] = clock.seconds();
+
+  clock = Stopwatch();
+  shape::Scene scene = lang::graph::to_scene(*result);
+  scene.origin = lot_files.origin;
+  scene.crs = lot_files.crs;
+  seconds["scene"] = clock.seconds();
+
+  nlohmann::json report;
+  report["input"] = options.input;
+  report["seed"] = result->seed;
+  report["threads"] = run.threads;
+  report["entities"] = result->entities.size();
+  report["results"] = result->results.size();
+  report["buildings"] = scene.buildings.size();
+  report["lights"] = scene.lights.size();
+  report["graph"] = nlohmann::json::parse(lang::graph::graph_report(*result).dump());
+  report["seconds"] = seconds;
+  return finish_build(options, scene, report, total);
+}
+
+}  // namespace insula::cli

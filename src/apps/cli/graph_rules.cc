@@ -1,0 +1,148 @@
+#include "apps/cli/graph_rules.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "apps/cli/asset_folders.h"
+#include "apps/cli/input_file.h"
+#include "lang/cga/checker.h"
+#include "lang/cga/compile.h"
+#include "lang/cga/derive.h"
+#include "lang/cga/parser.h"
+
+namespace insula::cli {
+
+namespace cga = lang::cga;
+
+struct FrontEndRules::Program {
+  std::unique_ptr<base::Source> source;
+  std::unique_ptr<cga::Grammar> grammar;
+  std::shared_ptr<const cga::Program> cga;
+  std::string error;  // why it cannot run
+};
+
+FrontEndRules::FrontEndRules(std::string folder, std::vector<std::string> attributes,
+                             const shape::AssetProvider* assets)
+    : folder_(std::move(folder)), attributes_(std::move(attributes)), assets_(assets) {
+  std::sort(attributes_.begin(), attributes_.end());
+}
+
+FrontEndRules::~FrontEndRules() = default;
+
+namespace {
+
+std::string rendered(const std::vector<base::Diagnostic>& diagnostics,
+                     const base::Source& source) {
+  std::string text;
+  for (const base::Diagnostic& d : diagnostics) {
+    if (d.severity != base::Severity::kError) continue;
+    if (!text.empty()) text += '\n';
+    text += base::render(d, &source);
+  }
+  return text;
+}
+
+std::unique_ptr<FrontEndRules::Program> read_cga(const std::string& folder,
+                                                  const lang::graph::RuleRequest& request,
+                                                  const std::vector<std::string>& attributes) {
+  auto program = std::make_unique<FrontEndRules::Program>();
+  std::string why;
+  const std::optional<std::filesystem::path> path =
+      find_in_folders({folder}, request.file, request.file, why);
+  const std::optional<std::string> text =
+      path ? read_input_file(path->string()) : std::optional<std::string>();
+  if (!text) {
+    program->error = "cannot read rule file '" + request.file + "'";
+    if (!why.empty()) program->error += ": " + why;
+    return program;
+  }
+  const std::string shown = (std::filesystem::path(folder) / request.file).lexically_normal().string();
+  program->source = std::make_unique<base::Source>(shown, *text);
+  base::Result<cga::Grammar> grammar = cga::parse(*program->source);
+  if (!grammar.ok()) {
+    program->error = rendered(grammar.diagnostics(), *program->source);
+    return program;
+  }
+  program->grammar = std::make_unique<cga::Grammar>(std::move(grammar.value()));
+  cga::CheckOptions check;
+  check.start = request.start;
+  check.known_attributes = attributes;
+  const cga::CheckResult checked = cga::check(*program->grammar, *program->source, check);
+  if (!checked.ok) {
+    program->error = rendered(checked.diagnostics, *program->source);
+    return program;
+  }
+  cga::CompileOptions compile;
+  compile.start = request.start;
+  compile.extra_attributes = attributes;
+  auto compiled = cga::compile(*program->grammar, *program->source, compile);
+  if (!compiled.ok()) {
+    program->error = rendered(compiled.diagnostics(), *program->source);
+    return program;
+  }
+  program->cga = compiled.value();
+  return program;
+}
+
+}  // namespace
+
+const FrontEndRules::Program* FrontEndRules::find(const lang::graph::RuleRequest& request) const {
+  const std::string key = request.language + ":" + request.file + "#" + request.start;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  auto it = programs_.find(key);
+  if (it == programs_.end()) {
+    std::unique_ptr<Program> program;
+    if (request.language == "cga") {
+      program = read_cga(folder_, request, attributes_);
+    } else {
+      program = std::make_unique<Program>();
+      program->error = "rule.";
+      program->error += request.language;
+      program->error += " nodes cannot run yet in this version";
+    }
+    it = programs_.emplace(key, std::move(program)).first;
+  }
+  return it->second.get();
+}
+
+bool FrontEndRules::prepare(const lang::graph::RuleRequest& request, std::string& error) const {
+  const Program* program = find(request);
+  error = program->error;
+  return error.empty();
+}
+
+std::shared_ptr<const lang::graph::Model> FrontEndRules::run(
+    const lang::graph::RuleRequest& request, std::string& error) const {
+  const Program* program = find(request);
+  if (!program->error.empty()) {
+    error = program->error;
+    return nullptr;
+  }
+  cga::Lot lot;
+  lot.polygons.push_back(request.footprint);
+  lot.properties = request.attributes;
+  cga::DeriveOptions options;
+  options.seed = request.seed;
+  options.assets = assets_;
+  std::vector<cga::LotResult> results;
+  results.push_back(cga::derive_lot(*program->cga, lot, 0, options));
+  if (!results.front().ok) {
+    error = rendered(results.front().diagnostics, *program->source);
+    return nullptr;
+  }
+  const std::vector<cga::Lot> lots{lot};
+  shape::Scene scene = cga::to_scene(*program->cga, lots, results);
+  auto model = std::make_shared<lang::graph::Model>();
+  model->materials = std::move(scene.materials);
+  for (shape::Building& b : scene.buildings) {
+    for (shape::Part& p : b.parts) {
+      if (request.elevation != 0) {
+        for (kernel::Vec3& v : p.mesh.positions()) v.z += request.elevation;
+      }
+      model->parts.push_back(std::move(p));
+    }
+  }
+  return model;
+}
+
+}  // namespace insula::cli

@@ -1,0 +1,258 @@
+#include "lang/graph/output.h"
+
+#include <map>
+
+#include "lang/graph/properties.h"
+#include "shape/scope.h"
+
+namespace insula::lang::graph {
+namespace {
+
+shape::Value export_value(const Value& v) {
+  switch (v.type()) {
+    case ValueType::kBool:
+      return v.boolean();
+    case ValueType::kString:
+      return v.text();
+    case ValueType::kNumber:
+    case ValueType::kInteger:
+      return v.number();
+    default:
+      return to_string(v);
+  }
+}
+
+nlohmann::ordered_json json_value(const Value& v) {
+  switch (v.type()) {
+    case ValueType::kBool:
+      return v.boolean();
+    case ValueType::kString:
+      return v.text();
+    case ValueType::kInteger:
+      return v.integer();
+    case ValueType::kNumber:
+      return v.number();
+    case ValueType::kVec3:
+      return {v.vec().x, v.vec().y, v.vec().z};
+    default: {
+      nlohmann::ordered_json list = nlohmann::ordered_json::array();
+      for (const Value& item : v.list()) list.push_back(json_value(item));
+      return list;
+    }
+  }
+}
+
+nlohmann::ordered_json vec(kernel::Vec3 v) { return {v.x, v.y, v.z}; }
+
+// The top-level graph's attributes visible from the entity, in declaration order.
+std::vector<std::pair<std::string, const Value*>> top_attributes(const RunResult& run,
+                                                                 EntityId id) {
+  std::vector<std::pair<std::string, const Value*>> out;
+  for (const auto& [key, name] : run.attribute_names) {
+    if (const Value* v = run.entities.attribute(id, key)) out.emplace_back(name, v);
+  }
+  return out;
+}
+
+// A part's mesh: the shape's geometry in world space, its faces showing the entity's material.
+kernel::Mesh part_mesh(const RunResult& run, const Entity& e) {
+  const shape::Shape& s = run.tree[e.shape];
+  if (s.mesh == nullptr) return {};
+  kernel::Mesh mesh = shape::mesh_to_world(*s.mesh, s.scope);
+  if (e.material != 0) {
+    kernel::Mesh tagged;
+    for (const kernel::Vec3& p : mesh.positions()) tagged.add_vertex(p);
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+      kernel::FaceTag tag = mesh.tag(f);
+      tag.material = e.material;
+      tagged.add_face(mesh.face(f), tag);
+    }
+    return tagged;
+  }
+  return mesh;
+}
+
+nlohmann::ordered_json entity_record(const RunResult& run, EntityId id, const std::string& port);
+
+}  // namespace
+
+shape::Scene to_scene(const RunResult& run) {
+  shape::Scene scene;
+  scene.materials = run.materials;
+  for (const auto& [material, texture] : run.textures) {
+    auto image = std::make_shared<shape::Image>();
+    image->name = texture->name;
+    image->width = texture->width;
+    image->height = texture->height;
+    image->rgba = texture->rgba;
+    scene.materials[material].image = image;
+  }
+  std::optional<AttributeKey> building_key;
+  for (const auto& [key, name] : run.attribute_names) {
+    if (name == "building") building_key = key;
+  }
+  std::map<std::string, std::size_t> by_value;
+  for (const ResultEntity& r : run.results) {
+    const Entity& e = run.entities[r.entity];
+    if (e.type == EntityType::kLight || e.type == EntityType::kPoint) {
+      if (e.type == EntityType::kLight) {
+        shape::Light light;
+        light.name = r.port + "#" + std::to_string(scene.lights.size());
+        light.kind = e.light->kind;
+        light.position = e.position;
+        light.color = {static_cast<float>(e.light->color.x), static_cast<float>(e.light->color.y),
+                       static_cast<float>(e.light->color.z)};
+        light.intensity = e.light->intensity;
+        light.range = e.light->range;
+        scene.lights.push_back(std::move(light));
+      }
+      continue;
+    }
+    if (e.type != EntityType::kShape) continue;
+    const Value* key = building_key ? run.entities.attribute(r.entity, *building_key) : nullptr;
+    std::size_t index = scene.buildings.size();
+    if (key != nullptr) {
+      const auto [it, added] = by_value.emplace(to_string(*key), index);
+      index = it->second;
+      if (!added) key = nullptr;
+    }
+    if (index == scene.buildings.size()) {
+      shape::Building b;
+      b.id = key != nullptr ? "building_" + to_string(*key)
+                            : "entity_" + std::to_string(r.entity);
+      for (const auto& [name, value] : top_attributes(run, r.entity)) {
+        b.attributes[name] = export_value(*value);
+      }
+      scene.buildings.push_back(std::move(b));
+    }
+    shape::Building& building = scene.buildings[index];
+    if (e.model != nullptr) {
+      // A rule node's parts: their materials appended to the scene's table.
+      std::vector<kernel::MaterialId> remap(e.model->materials.size(), 0);
+      for (std::size_t m = 1; m < e.model->materials.size(); ++m) {
+        remap[m] = static_cast<kernel::MaterialId>(scene.materials.size());
+        scene.materials.push_back(e.model->materials[m]);
+      }
+      for (const shape::Part& part : e.model->parts) {
+        shape::Part copy = part;
+        kernel::Mesh mesh;
+        for (const kernel::Vec3& p : part.mesh.positions()) mesh.add_vertex(p);
+        for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
+          kernel::FaceTag tag = part.mesh.tag(f);
+          if (tag.material < remap.size()) tag.material = remap[tag.material];
+          mesh.add_face(part.mesh.face(f), tag);
+        }
+        copy.mesh = std::move(mesh);
+        building.parts.push_back(std::move(copy));
+      }
+      continue;
+    }
+    shape::Part part;
+    part.name = r.port;
+    for (const auto& [name, value] : top_attributes(run, r.entity)) {
+      part.attributes[name] = export_value(*value);
+    }
+    part.mesh = part_mesh(run, e);
+    if (!part.mesh.empty()) building.parts.push_back(std::move(part));
+  }
+  std::erase_if(scene.buildings, [](const shape::Building& b) { return b.parts.empty(); });
+  return scene;
+}
+
+namespace {
+
+nlohmann::ordered_json entity_record(const RunResult& run, EntityId id, const std::string& port) {
+  const Entity& e = run.entities[id];
+  nlohmann::ordered_json r;
+  r["id"] = id;
+  r["type"] = std::string(entity_type_name(e.type));
+  if (!port.empty()) r["port"] = port;
+  nlohmann::ordered_json attributes = nlohmann::ordered_json::object();
+  for (const auto& [name, value] : top_attributes(run, id)) attributes[name] = json_value(*value);
+  r["attributes"] = attributes;
+  switch (e.type) {
+    case EntityType::kShape: {
+      const Measures m = measure(run.entities, run.tree, id);
+      r["area"] = m.area;
+      r["volume"] = m.volume;
+      r["faces"] = m.faces;
+      r["material"] = e.material != 0 ? run.materials[e.material].name : "";
+      if (e.model != nullptr) r["parts"] = e.model->parts.size();
+      const shape::Scope& s = run.tree[e.shape].scope;
+      r["scope"] = {{"origin", vec(s.origin)}, {"x", vec(s.x)}, {"y", vec(s.y)},
+                    {"size", vec(s.size)}};
+      break;
+    }
+    case EntityType::kPath: {
+      nlohmann::ordered_json vertices = nlohmann::ordered_json::array();
+      for (const kernel::Vec3& v : e.path->vertices) vertices.push_back(vec(v));
+      nlohmann::ordered_json edges = nlohmann::ordered_json::array();
+      double length = 0;
+      for (const auto& [a, b] : e.path->edges) {
+        edges.push_back({a, b});
+        length += kernel::length(e.path->vertices[b] - e.path->vertices[a]);
+      }
+      r["vertices"] = vertices;
+      r["edges"] = edges;
+      r["length"] = length;
+      break;
+    }
+    case EntityType::kPoint:
+      r["position"] = vec(e.position);
+      break;
+    case EntityType::kLight:
+      r["position"] = vec(e.position);
+      r["kind"] = e.light->kind;
+      r["intensity"] = e.light->intensity;
+      break;
+    case EntityType::kTexture:
+      r["name"] = e.texture->name;
+      r["text"] = e.texture->text;
+      r["width"] = e.texture->width;
+      r["height"] = e.texture->height;
+      break;
+    case EntityType::kGroup: {
+      nlohmann::ordered_json members = nlohmann::ordered_json::array();
+      for (EntityId m : e.members) members.push_back(entity_record(run, m, ""));
+      r["members"] = members;
+      break;
+    }
+    default:
+      break;
+  }
+  return r;
+}
+
+nlohmann::ordered_json counts(const std::map<std::string, std::uint64_t>& map) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& [k, v] : map) out[k] = v;
+  return out;
+}
+
+}  // namespace
+
+nlohmann::ordered_json graph_report(const RunResult& run) {
+  nlohmann::ordered_json g;
+  g["cyclic_edges"] = run.cyclic_edges;
+  nlohmann::ordered_json runs = nlohmann::ordered_json::object();
+  for (const auto& [id, n] : run.node_runs) {
+    runs[id] = {{"executions", n.executions}, {"rounds", n.rounds}};
+  }
+  g["node_runs"] = runs;
+  nlohmann::ordered_json leaves = nlohmann::ordered_json::object();
+  for (const auto& [port, count] : run.leaves) {
+    nlohmann::ordered_json types = nlohmann::ordered_json::object();
+    for (const auto& [type, n] : count.types) types[type] = n;
+    leaves[port] = {{"count", count.count}, {"types", types}};
+  }
+  g["leaves"] = leaves;
+  g["blocked"] = counts(run.blocked);
+  g["unprocessed"] = counts(run.unprocessed);
+  g["failed"] = counts(run.failed);
+  nlohmann::ordered_json entities = nlohmann::ordered_json::array();
+  for (const ResultEntity& r : run.results) entities.push_back(entity_record(run, r.entity, r.port));
+  g["entities"] = entities;
+  return g;
+}
+
+}  // namespace insula::lang::graph

@@ -1,0 +1,22 @@
+// What a graph run gives the outside (graph-format.md §13): the export scene of its result
+// entities, and the report's `graph` section.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "lang/graph/executor.h"
+#include "shape/scene.h"
+
+namespace insula::lang::graph {
+
+// Result shapes as buildings: entities sharing a value of the top-level attribute `building`
+// (when the graph declares it) form one building, in order of first appearance; every other
+// result shape is a building of its own. Each shape is a part named after its leaf port (its
+// node id), a rule node's model contributes its parts. Lights go to Scene::lights.
+shape::Scene to_scene(const RunResult& run);
+
+// The `graph` section of the report (§13): cyclic_edges, node_runs, leaves, blocked,
+// unprocessed, failed and one record per result entity.
+nlohmann::ordered_json graph_report(const RunResult& run);
+
+}  // namespace insula::lang::graph
