@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `insula check G.graph.json` (graph-format.md §13): the ok summary, diagnostics with carets and
-# subgraph notes, exit codes; `insula build` on a graph says the executor comes later.
+# subgraph notes, exit codes; `insula build` on a graph runs it.
 source "$(dirname "$0")/lib/common.sh"
 
 out=$("$insula" check "$root/examples/graph/street_houses.graph.json" 2>&1)
@@ -43,10 +43,14 @@ printf '{ "format": "insula-graph", "version": 1, "nodes": [ { "id": "s", "type"
 [ $? -eq 1 ] && grep -qF "error[G031]: cannot read subgraph 'link/x.graph.json': it leads outside the graph's folder" "$tmp/err" ||
   fail "symbolic link out of the folder: $(cat "$tmp/err")"
 
-"$insula" build "$root/examples/graph/footprint_tiles.graph.json" -o "$tmp/tiles.obj" >"$tmp/out" 2>"$tmp/err"
-[ $? -eq 1 ] || fail "build of a graph exits 1"
-[ "$(wc -l <"$tmp/err")" -eq 1 ] && grep -qF "building graphs needs the graph executor, which comes in a later stage" "$tmp/err" ||
-  fail "build message: $(cat "$tmp/err")"
-[ -e "$tmp/tiles.obj" ] && fail "build of a graph wrote a file"
+"$insula" build "$root/examples/graph/footprint_tiles.graph.json" -o "$tmp/tiles.obj" \
+  --report "$tmp/tiles.json" >"$tmp/out" 2>"$tmp/err"
+[ $? -eq 0 ] || fail "build of a graph exits 0: $(cat "$tmp/err")"
+[ -s "$tmp/tiles.obj" ] || fail "build of a graph writes the OBJ"
+node -e '
+  const g = require(process.argv[1]).graph;
+  const ok = g.leaves["faces.rest"].count === 5 && g.leaves["floors.out"].count === 4 &&
+    g.entities.length === 9 && g.node_runs.floors.rounds === 1;
+  process.exit(ok ? 0 : 1);' "$tmp/tiles.json" || fail "report: $(head -c 400 "$tmp/tiles.json")"
 
 finish graph_check

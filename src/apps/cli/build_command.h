@@ -29,7 +29,7 @@ struct BuildOptions {
   std::string lot;                   // --lot LOTS.geojson: lots / outline footprints
   std::uint64_t seed = 0;
   bool seed_given = false;  // --seed was on the command line (graphs have a seed of their own)
-  int threads = 0;                  // 0 = all cores
+  int threads = 0;          // 0 = all cores
   std::vector<std::string> sets;    // --set name=value, as given
   std::string start;                // --start SYMBOL (CGA)
   std::string rules;                // --rules FILE: restriction rules (.bldg)

@@ -34,8 +34,7 @@ struct LotFiles {
   kernel::Vec3 origin;
   std::string crs;
 
-  bool read(const std::string& file, std::vector<lang::graph::LotInput>& lots,
-            std::string& error) {
+  bool read(const std::string& file, std::vector<lang::graph::LotInput>& lots, std::string& error) {
     std::string path = options.lot;
     if (!file.empty()) {
       std::string why;

@@ -8,10 +8,10 @@
 #include "apps/cli/asset_folders.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
+#include "apps/cli/graph_input.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/progress.h"
 #include "apps/cli/warnings.h"
-#include "apps/cli/graph_input.h"
 #include "lang/graph/checker.h"
 #include "lang/graph/reader.h"
 
@@ -82,6 +82,5 @@ std::optional<std::string> check_graph(const base::Source& source, bool quiet) {
   return plural(checked.graphs.size(), "graph") + ", " + plural(nodes, "node") + ", " +
          plural(edges, "edge") + ", " + plural(cyclic, "cyclic edge");
 }
-
 
 }  // namespace insula::cli

@@ -31,8 +31,7 @@ FrontEndRules::~FrontEndRules() = default;
 
 namespace {
 
-std::string rendered(const std::vector<base::Diagnostic>& diagnostics,
-                     const base::Source& source) {
+std::string rendered(const std::vector<base::Diagnostic>& diagnostics, const base::Source& source) {
   std::string text;
   for (const base::Diagnostic& d : diagnostics) {
     if (d.severity != base::Severity::kError) continue;
@@ -43,8 +42,8 @@ std::string rendered(const std::vector<base::Diagnostic>& diagnostics,
 }
 
 std::unique_ptr<FrontEndRules::Program> read_cga(const std::string& folder,
-                                                  const lang::graph::RuleRequest& request,
-                                                  const std::vector<std::string>& attributes) {
+                                                 const lang::graph::RuleRequest& request,
+                                                 const std::vector<std::string>& attributes) {
   auto program = std::make_unique<FrontEndRules::Program>();
   std::string why;
   const std::optional<std::filesystem::path> path =
@@ -56,7 +55,8 @@ std::unique_ptr<FrontEndRules::Program> read_cga(const std::string& folder,
     if (!why.empty()) program->error += ": " + why;
     return program;
   }
-  const std::string shown = (std::filesystem::path(folder) / request.file).lexically_normal().string();
+  const std::string shown =
+      (std::filesystem::path(folder) / request.file).lexically_normal().string();
   program->source = std::make_unique<base::Source>(shown, *text);
   base::Result<cga::Grammar> grammar = cga::parse(*program->source);
   if (!grammar.ok()) {

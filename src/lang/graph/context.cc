@@ -59,12 +59,14 @@ const ParamValue* find_value(const std::vector<ParamValue>& values, std::string_
 const JsonValue& default_json(RunState& state, const std::string& text) {
   state.default_sources.push_back(std::make_unique<base::Source>("<default>", text));
   base::Result<JsonValue> parsed = parse_json(*state.default_sources.back());
-  state.default_json.push_back(std::make_unique<JsonValue>(
-      parsed.ok() ? std::move(parsed.value()) : JsonValue{}));
+  state.default_json.push_back(
+      std::make_unique<JsonValue>(parsed.ok() ? std::move(parsed.value()) : JsonValue{}));
   return *state.default_json.back();
 }
 
-std::string type_text(const Value& v) { return std::string(value_type_name(v.type())); }
+std::string type_text(const Value& v) {
+  return std::string(value_type_name(v.type()));
+}
 
 }  // namespace
 
@@ -144,7 +146,9 @@ const ParamValue* ExecutionContext::given(std::string_view name) const {
   return find_value(checked_.node->params, name);
 }
 
-bool ExecutionContext::has_param(std::string_view name) const { return given(name) != nullptr; }
+bool ExecutionContext::has_param(std::string_view name) const {
+  return given(name) != nullptr;
+}
 
 bool ExecutionContext::has_field(std::size_t item, std::string_view name) const {
   return find_value(checked_.node->augment[item].fields, name) != nullptr;
@@ -167,8 +171,8 @@ Value ExecutionContext::field(std::size_t round, std::size_t item, std::string_v
                               EntityId entity) {
   const Augmentation& a = checked_.node->augment[item];
   // A node type with one augmentation kind lets items omit `kind`.
-  const AugmentSpec* kind = a.kind.empty() ? &checked_.type->augments.front()
-                                           : checked_.type->augment(a.kind);
+  const AugmentSpec* kind =
+      a.kind.empty() ? &checked_.type->augments.front() : checked_.type->augment(a.kind);
   const ParamSpec* spec = nullptr;
   for (const ParamSpec& f : kind->fields) {
     if (f.name == name) spec = &f;
@@ -220,8 +224,8 @@ Value ExecutionContext::default_of(const ParamSpec& spec, std::size_t round, Ent
   return value;
 }
 
-Value ExecutionContext::evaluate(const ParamValue& value, const ParamSpec& spec,
-                                 std::size_t round, EntityId entity, const std::string& what) {
+Value ExecutionContext::evaluate(const ParamValue& value, const ParamSpec& spec, std::size_t round,
+                                 EntityId entity, const std::string& what) {
   const JsonValue& json = *value.value;
   if (!value.expression) {
     auto it = state_.literals.find(&json);
@@ -244,9 +248,8 @@ Value ExecutionContext::evaluate(const ParamValue& value, const ParamSpec& spec,
 Value ExecutionContext::expression(const ParsedExpression& parsed, const Graph& graph,
                                    std::size_t round, EntityId entity, std::string_view param) {
   const std::uint64_t seed = entity == kNoEntity ? state_.out.seed : entities()[entity].seed;
-  const std::uint64_t stream =
-      shape::mix64(seed ^ shape::mix64(name_hash(checked_.node->id) ^
-                                       shape::mix64(name_hash(param))));
+  const std::uint64_t stream = shape::mix64(
+      seed ^ shape::mix64(name_hash(checked_.node->id) ^ shape::mix64(name_hash(param))));
   ContextEnv env(*this, execution_, round, entity, stream);
   EvalError error;
   std::optional<Value> v = graph::evaluate(parsed.expr, env, error);
@@ -255,8 +258,8 @@ Value ExecutionContext::expression(const ParsedExpression& parsed, const Graph& 
         graph.source != nullptr && parsed.string->offset < graph.source->text().size()
             ? string_byte_offset(*graph.source, *parsed.string, parsed.skip + error.at)
             : checked_.node->offset;
-    throw RunError{"G052", error.message + " (node '" + checked_.node->id + "')", &graph,
-                   offset, execution_.notes()};
+    throw RunError{"G052", error.message + " (node '" + checked_.node->id + "')", &graph, offset,
+                   execution_.notes()};
   }
   return *v;
 }
@@ -274,9 +277,10 @@ Value ExecutionContext::typed(Value value, const ParamSpec& spec, const std::str
   if (v->is_number()) {
     const double x = v->number();
     const auto out_of_range = [&](const char* op, double bound) {
-      throw RunError{"G052", what + " must be " + op + " " + to_string(Value(bound)) + "; got " +
-                                 to_string(*v),
-                     execution_.graph().graph, offset, execution_.notes()};
+      throw RunError{
+          "G052",
+          what + " must be " + op + " " + to_string(Value(bound)) + "; got " + to_string(*v),
+          execution_.graph().graph, offset, execution_.notes()};
     };
     if (spec.min && x < *spec.min) out_of_range(">=", *spec.min);
     if (spec.max && x > *spec.max) out_of_range("<=", *spec.max);
@@ -318,9 +322,8 @@ void ExecutionContext::set_attribute(EntityId entity, std::string_view name, con
   if (d == nullptr) return;
   std::optional<Value> v = convert(value, d->type);
   if (!v) {
-    error("attribute '" + std::string(name) + "' is " +
-          std::string(value_type_name(d->type)) + "; the node gives " + type_text(value) + " " +
-          to_string(value));
+    error("attribute '" + std::string(name) + "' is " + std::string(value_type_name(d->type)) +
+          "; the node gives " + type_text(value) + " " + to_string(value));
   }
   entities().set_attribute(entity, execution_.attribute_key(std::string(name)), std::move(*v));
 }
@@ -358,9 +361,10 @@ std::uint16_t ExecutionContext::textured_material(const std::shared_ptr<const Te
 
 void ExecutionContext::fail(EntityId /*entity*/, const std::string& message) {
   const std::string who = execution_.prefix() + checked_.node->id;
-  auto [it, added] = state_.failures.try_emplace(
-      who, 0, RunError{"W040", message, execution_.graph().graph, checked_.node->id_offset,
-                       execution_.notes()});
+  auto [it, added] =
+      state_.failures.try_emplace(who, 0,
+                                  RunError{"W040", message, execution_.graph().graph,
+                                           checked_.node->id_offset, execution_.notes()});
   if (added) state_.failure_order.push_back(who);
   ++it->second.first;
   ++state_.out.failed[who];
@@ -374,15 +378,15 @@ void ExecutionContext::warning(const std::string& code, const std::string& messa
 }
 
 void ExecutionContext::error(const std::string& message) {
-  throw RunError{"G052", message + " (node '" + checked_.node->id + "')",
-                 execution_.graph().graph, checked_.node->id_offset, execution_.notes()};
+  throw RunError{"G052", message + " (node '" + checked_.node->id + "')", execution_.graph().graph,
+                 checked_.node->id_offset, execution_.notes()};
 }
 
 shape::Rng ExecutionContext::rng(EntityId entity, std::string_view stream) const {
   const std::uint64_t seed =
       entity == kNoEntity ? state_.out.seed : state_.out.entities[entity].seed;
-  return shape::Rng(shape::mix64(seed ^ shape::mix64(name_hash(checked_.node->id) ^
-                                                     shape::mix64(name_hash(stream)))));
+  return shape::Rng(shape::mix64(
+      seed ^ shape::mix64(name_hash(checked_.node->id) ^ shape::mix64(name_hash(stream)))));
 }
 
 }  // namespace insula::lang::graph

@@ -31,8 +31,7 @@ class ExecutionContext final : public NodeContext {
     const std::string& kind = checked_.node->augment[item].kind;
     return kind.empty() ? std::string_view(checked_.type->augments.front().kind) : kind;
   }
-  Value field(std::size_t round, std::size_t item, std::string_view name,
-              EntityId entity) override;
+  Value field(std::size_t round, std::size_t item, std::string_view name, EntityId entity) override;
   bool has_field(std::size_t item, std::string_view name) const override;
   Value evaluate_json(std::size_t round, const JsonValue& value, ValueType type, EntityId entity,
                       const std::string& what) override;
@@ -63,8 +62,8 @@ class ExecutionContext final : public NodeContext {
   std::uint64_t graph_seed() const override { return state_.out.seed; }
 
   // Evaluates `value` (a literal or an expression) as `spec` says, on `entity` in `round`.
-  Value evaluate(const ParamValue& value, const ParamSpec& spec, std::size_t round,
-                 EntityId entity, const std::string& what);
+  Value evaluate(const ParamValue& value, const ParamSpec& spec, std::size_t round, EntityId entity,
+                 const std::string& what);
 
  private:
   const ParamValue* given(std::string_view name) const;

@@ -6,7 +6,9 @@
 
 namespace insula::lang::graph {
 
-EntityStore::EntityStore() { attribute_nodes_.emplace_back(); }
+EntityStore::EntityStore() {
+  attribute_nodes_.emplace_back();
+}
 
 EntityId EntityStore::create(EntityType type, std::uint64_t seed) {
   Entity e;
@@ -52,7 +54,8 @@ std::vector<std::pair<AttributeKey, const Value*>> EntityStore::attributes(Entit
   std::vector<std::pair<AttributeKey, const Value*>> out;
   for (std::uint32_t n = entities_[id].attributes; n != 0; n = attribute_nodes_[n].next) {
     const AttributeKey key = attribute_nodes_[n].key;
-    const bool seen = std::any_of(out.begin(), out.end(), [&](const auto& kv) { return kv.first == key; });
+    const bool seen =
+        std::any_of(out.begin(), out.end(), [&](const auto& kv) { return kv.first == key; });
     if (!seen) out.emplace_back(key, &attribute_nodes_[n].value);
   }
   return out;

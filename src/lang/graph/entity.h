@@ -112,9 +112,7 @@ class EntityStore {
   bool descends_from(EntityId id, EntityId maybe_ancestor) const;
   // Either descends from the other (§9.10: queries skip an entity's own ancestors and
   // descendants).
-  bool related(EntityId a, EntityId b) const {
-    return descends_from(a, b) || descends_from(b, a);
-  }
+  bool related(EntityId a, EntityId b) const { return descends_from(a, b) || descends_from(b, a); }
 
  private:
   struct AttributeNode {

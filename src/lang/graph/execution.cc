@@ -104,8 +104,7 @@ void GraphExecution::run() {
 }
 
 bool GraphExecution::is_source(std::size_t node) const {
-  return std::none_of(connected_[node].begin(), connected_[node].end(),
-                      [](bool c) { return c; });
+  return std::none_of(connected_[node].begin(), connected_[node].end(), [](bool c) { return c; });
 }
 
 bool GraphExecution::inputs_ready(std::size_t node) const {
@@ -147,8 +146,7 @@ void GraphExecution::count_round(std::size_t node) {
   if (run_.rounds > static_cast<std::uint64_t>(limit)) {
     const std::string cycle = cycle_of(node);
     fail_at("G050",
-            "graph did not finish within max_rounds = " + std::to_string(limit) +
-                " node rounds; " +
+            "graph did not finish within max_rounds = " + std::to_string(limit) + " node rounds; " +
                 (cycle.empty() ? "the last was node '" + graph_.nodes[node].node->id + "'"
                                : "entities still circulate in the cycle " + cycle),
             graph_.nodes[node].node->id_offset);

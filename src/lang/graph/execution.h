@@ -16,8 +16,8 @@ namespace insula::lang::graph {
 class GraphExecution {
  public:
   GraphExecution(RunState& run, const CheckedGraph& graph, bool encapsulated,
-                 std::vector<Value> parameters, std::string prefix,
-                 std::vector<std::string> notes, int depth);
+                 std::vector<Value> parameters, std::string prefix, std::vector<std::string> notes,
+                 int depth);
 
   // Places entities at input gate `gate` (each of its ports gets them; later ports copies).
   void feed_gate(std::size_t gate, std::span<const EntityId> entities);
@@ -41,8 +41,7 @@ class GraphExecution {
   std::string label(std::size_t node, std::string_view port) const;
   // "a -> b -> a" for the node's cycle in execution order, "" when it is in none.
   std::string cycle_of(std::size_t node) const;
-  [[noreturn]] void fail_at(const std::string& code, std::string message,
-                            std::size_t offset) const;
+  [[noreturn]] void fail_at(const std::string& code, std::string message, std::size_t offset) const;
 
  private:
   bool is_source(std::size_t node) const;

@@ -11,9 +11,8 @@ namespace insula::lang::graph {
 namespace {
 
 base::Diagnostic diagnostic(const RunError& e, bool warning) {
-  base::Span span = base::Span::whole(e.graph != nullptr && e.graph->source != nullptr
-                                          ? e.graph->source->name()
-                                          : std::string());
+  base::Span span = base::Span::whole(
+      e.graph != nullptr && e.graph->source != nullptr ? e.graph->source->name() : std::string());
   if (e.graph != nullptr && e.graph->source != nullptr) {
     const auto [line, column] = e.graph->source->locate(e.offset);
     span = base::Span::at(e.graph->source->name(), line, column);
@@ -115,11 +114,11 @@ RunResult run_graph(const Document& document, const CheckResult& checked,
                    });
   for (const RunError& w : state.warnings) out.diagnostics.push_back(diagnostic(w, true));
   for (const auto& [port, count] : out.unprocessed) {
-    out.diagnostics.push_back(base::Diagnostic::warning(
-        "W010",
-        std::to_string(count) + " entit" + (count == 1 ? "y" : "ies") + " left unprocessed at '" +
-            port + "'",
-        base::Span::whole(root.source->name())));
+    out.diagnostics.push_back(base::Diagnostic::warning("W010",
+                                                        std::to_string(count) + " entit" +
+                                                            (count == 1 ? "y" : "ies") +
+                                                            " left unprocessed at '" + port + "'",
+                                                        base::Span::whole(root.source->name())));
   }
   for (const std::string& who : state.failure_order) {
     const auto& [count, first] = state.failures.at(who);

@@ -38,9 +38,9 @@ using LotReader =
 // `rule.plasm`): the app plugs the front-ends in, since one front-end never includes another.
 // Must be callable from several threads at once.
 struct RuleRequest {
-  std::string language;  // "cga", "bldg", "lua", "plasm"
-  std::string file;      // as written in the graph (relative to the graph's folder)
-  std::string start;     // start rule / function / expression; "" for the program's own
+  std::string language;       // "cga", "bldg", "lua", "plasm"
+  std::string file;           // as written in the graph (relative to the graph's folder)
+  std::string start;          // start rule / function / expression; "" for the program's own
   kernel::Polygon footprint;  // the shape's outline in world XY (flat shapes)
   double elevation = 0;
   shape::AttributeMap attributes;  // the entity's graph attributes (lot properties)
@@ -90,7 +90,7 @@ struct RunResult {
   std::uint64_t seed = 0;
   shape::ShapeTree tree;
   EntityStore entities;
-  std::vector<shape::Material> materials;  // index 0 = default
+  std::vector<shape::Material> materials;                            // index 0 = default
   std::map<std::uint16_t, std::shared_ptr<const Texture>> textures;  // by material
   std::vector<ResultEntity> results;
   // The report's counts (§13), keys in first-use order where the format says so.

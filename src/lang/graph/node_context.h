@@ -22,7 +22,6 @@ namespace insula::lang::graph {
 
 struct RunOptions;
 
-
 class NodeContext {
  public:
   virtual ~NodeContext() = default;

@@ -10,12 +10,15 @@
 namespace insula::lang::graph {
 namespace {
 
-kernel::Vec3 vec(const Value& v) { return v.type() == ValueType::kVec3 ? v.vec() : kernel::Vec3{}; }
+kernel::Vec3 vec(const Value& v) {
+  return v.type() == ValueType::kVec3 ? v.vec() : kernel::Vec3{};
+}
 
 void emit_footprint(NodeContext& c, std::size_t round, std::uint32_t position,
                     const kernel::Polygon& footprint, double elevation) {
   std::string error;
-  const std::optional<EntityId> e = footprint_entity(c, round, position, footprint, elevation, error);
+  const std::optional<EntityId> e =
+      footprint_entity(c, round, position, footprint, elevation, error);
   if (!e) c.error("cannot make a shape: " + error);
   c.emit(c.output_port("out"), *e);
 }
@@ -37,7 +40,8 @@ void circle(NodeContext& c) {
     const kernel::Vec3 center = vec(c.param(r, "center"));
     kernel::Polygon p;
     for (std::int64_t i = 0; i < segments; ++i) {
-      const double a = 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(segments);
+      const double a =
+          2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(segments);
       p.outer.push_back({center.x + radius * std::cos(a), center.y + radius * std::sin(a)});
     }
     emit_footprint(c, r, 0, p, center.z);
@@ -162,6 +166,8 @@ constexpr NodeImpl kNodes[] = {
 
 }  // namespace
 
-std::span<const NodeImpl> creation_nodes() { return kNodes; }
+std::span<const NodeImpl> creation_nodes() {
+  return kNodes;
+}
 
 }  // namespace insula::lang::graph

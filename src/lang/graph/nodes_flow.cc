@@ -98,12 +98,14 @@ void copy(NodeContext& c) {
 }
 
 constexpr NodeImpl kNodes[] = {
-    {"attr.set", set},           {"attr.transfer", transfer},     {"flow.condition", condition},
-    {"flow.switch", switch_},    {"flow.stochastic", stochastic}, {"flow.copy", copy},
+    {"attr.set", set},        {"attr.transfer", transfer},     {"flow.condition", condition},
+    {"flow.switch", switch_}, {"flow.stochastic", stochastic}, {"flow.copy", copy},
 };
 
 }  // namespace
 
-std::span<const NodeImpl> flow_nodes() { return kNodes; }
+std::span<const NodeImpl> flow_nodes() {
+  return kNodes;
+}
 
 }  // namespace insula::lang::graph

@@ -8,7 +8,9 @@
 namespace insula::lang::graph {
 namespace {
 
-std::span<const EntityId> all(NodeContext& c) { return c.input(0, c.input_port("in")); }
+std::span<const EntityId> all(NodeContext& c) {
+  return c.input(0, c.input_port("in"));
+}
 
 void count(NodeContext& c) {
   const std::span<const EntityId> in = all(c);
@@ -138,7 +140,8 @@ void aggregate(NodeContext& c) {
       double acc = op == "min" ? 1e308 : op == "max" ? -1e308 : 0;
       bool integers = true;
       for (std::size_t i : members) {
-        if (!values[i].is_number()) c.error("'value' must be a number; got " + to_string(values[i]));
+        if (!values[i].is_number())
+          c.error("'value' must be a number; got " + to_string(values[i]));
         integers = integers && values[i].type() == ValueType::kInteger;
         const double x = values[i].number();
         acc = op == "min" ? std::min(acc, x) : op == "max" ? std::max(acc, x) : acc + x;
@@ -196,14 +199,16 @@ void ungroup(NodeContext& c) {
 }
 
 constexpr NodeImpl kNodes[] = {
-    {"list.count", count},         {"list.amount_filter", amount_filter},
-    {"list.order_by", order_by},   {"list.reverse", reverse},
-    {"list.shuffle", shuffle},     {"list.aggregate", aggregate},
-    {"list.group", group},         {"list.ungroup", ungroup},
+    {"list.count", count},       {"list.amount_filter", amount_filter},
+    {"list.order_by", order_by}, {"list.reverse", reverse},
+    {"list.shuffle", shuffle},   {"list.aggregate", aggregate},
+    {"list.group", group},       {"list.ungroup", ungroup},
 };
 
 }  // namespace
 
-std::span<const NodeImpl> list_nodes() { return kNodes; }
+std::span<const NodeImpl> list_nodes() {
+  return kNodes;
+}
 
 }  // namespace insula::lang::graph

@@ -93,6 +93,8 @@ constexpr NodeImpl kNodes[] = {
 
 }  // namespace
 
-std::span<const NodeImpl> rule_nodes() { return kNodes; }
+std::span<const NodeImpl> rule_nodes() {
+  return kNodes;
+}
 
 }  // namespace insula::lang::graph

@@ -13,7 +13,9 @@
 namespace insula::lang::graph {
 namespace {
 
-const shape::Operation& operation(std::string_view name) { return *shape::registry().find(name); }
+const shape::Operation& operation(std::string_view name) {
+  return *shape::registry().find(name);
+}
 
 // A node that is one registry operation with one output port `out` (extrude, roof, insert).
 template <const char* kOp>
@@ -169,7 +171,8 @@ void op(NodeContext& c) {
 }
 
 std::array<float, 4> rgba(const Value& color) {
-  const kernel::Vec3 v = color.type() == ValueType::kVec3 ? color.vec() : kernel::Vec3{0.8, 0.8, 0.8};
+  const kernel::Vec3 v =
+      color.type() == ValueType::kVec3 ? color.vec() : kernel::Vec3{0.8, 0.8, 0.8};
   return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 1.0F};
 }
 
@@ -234,8 +237,8 @@ void actor(NodeContext& c) {
     e.path = src.path;
     e.light = src.light;
     if (name == "translate") {
-      move_other(c, out, {c.param(r, "x").number(), c.param(r, "y").number(),
-                          c.param(r, "z").number()});
+      move_other(c, out,
+                 {c.param(r, "x").number(), c.param(r, "y").number(), c.param(r, "z").number()});
     } else if (name != "scale" || e.type != EntityType::kPoint) {
       c.fail(in, std::string(name) + " moves shapes, paths and points; a " +
                      std::string(entity_type_name(e.type)) + " only by translate");
@@ -261,8 +264,8 @@ void merge(NodeContext& c) {
     }
     const shape::Scope scope = shape::fit_scope(*mesh, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
     const EntityId out = c.create(r, EntityType::kShape, 0);
-    c.entities()[out].shape =
-        c.tree().add_root(scope, std::make_shared<kernel::Mesh>(shape::mesh_to_local(*mesh, scope)));
+    c.entities()[out].shape = c.tree().add_root(
+        scope, std::make_shared<kernel::Mesh>(shape::mesh_to_local(*mesh, scope)));
     c.entities()[out].material = c.entities()[in.front()].material;
     for (const auto& [key, value] : c.entities().attributes(in.front())) {
       bool common = true;
@@ -301,7 +304,8 @@ void fit_scope(NodeContext& c) {
     std::shared_ptr<const kernel::Mesh> mesh = s.mesh;
     if (mesh != nullptr) {
       auto scaled = std::make_shared<kernel::Mesh>(*mesh);
-      for (kernel::Vec3& p : scaled->positions()) p = {p.x * factor.x, p.y * factor.y, p.z * factor.z};
+      for (kernel::Vec3& p : scaled->positions())
+        p = {p.x * factor.x, p.y * factor.y, p.z * factor.z};
       mesh = scaled;
     }
     const shape::ShapeId child = c.tree().add_child(c.entities()[in].shape, placed, mesh);
@@ -330,6 +334,8 @@ constexpr NodeImpl kNodes[] = {
 
 }  // namespace
 
-std::span<const NodeImpl> shape_nodes() { return kNodes; }
+std::span<const NodeImpl> shape_nodes() {
+  return kNodes;
+}
 
 }  // namespace insula::lang::graph

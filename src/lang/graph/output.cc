@@ -42,7 +42,9 @@ nlohmann::ordered_json json_value(const Value& v) {
   }
 }
 
-nlohmann::ordered_json vec(kernel::Vec3 v) { return {v.x, v.y, v.z}; }
+nlohmann::ordered_json vec(kernel::Vec3 v) {
+  return {v.x, v.y, v.z};
+}
 
 // The top-level graph's attributes visible from the entity, in declaration order.
 std::vector<std::pair<std::string, const Value*>> top_attributes(const RunResult& run,
@@ -118,8 +120,7 @@ shape::Scene to_scene(const RunResult& run) {
     }
     if (index == scene.buildings.size()) {
       shape::Building b;
-      b.id = key != nullptr ? "building_" + to_string(*key)
-                            : "entity_" + std::to_string(r.entity);
+      b.id = key != nullptr ? "building_" + to_string(*key) : "entity_" + std::to_string(r.entity);
       for (const auto& [name, value] : top_attributes(run, r.entity)) {
         b.attributes[name] = export_value(*value);
       }
@@ -179,8 +180,8 @@ nlohmann::ordered_json entity_record(const RunResult& run, EntityId id, const st
       r["material"] = e.material != 0 ? run.materials[e.material].name : "";
       if (e.model != nullptr) r["parts"] = e.model->parts.size();
       const shape::Scope& s = run.tree[e.shape].scope;
-      r["scope"] = {{"origin", vec(s.origin)}, {"x", vec(s.x)}, {"y", vec(s.y)},
-                    {"size", vec(s.size)}};
+      r["scope"] = {
+          {"origin", vec(s.origin)}, {"x", vec(s.x)}, {"y", vec(s.y)}, {"size", vec(s.size)}};
       break;
     }
     case EntityType::kPath: {
@@ -250,7 +251,8 @@ nlohmann::ordered_json graph_report(const RunResult& run) {
   g["unprocessed"] = counts(run.unprocessed);
   g["failed"] = counts(run.failed);
   nlohmann::ordered_json entities = nlohmann::ordered_json::array();
-  for (const ResultEntity& r : run.results) entities.push_back(entity_record(run, r.entity, r.port));
+  for (const ResultEntity& r : run.results)
+    entities.push_back(entity_record(run, r.entity, r.port));
   g["entities"] = entities;
   return g;
 }

@@ -30,8 +30,8 @@ double path_length(const PathGeometry& path) {
 
 }  // namespace
 
-std::optional<shape::Scope> entity_scope(const EntityStore& entities,
-                                         const shape::ShapeTree& tree, EntityId id) {
+std::optional<shape::Scope> entity_scope(const EntityStore& entities, const shape::ShapeTree& tree,
+                                         EntityId id) {
   const Entity& e = entities[id];
   switch (e.type) {
     case EntityType::kShape:

@@ -14,8 +14,8 @@
 namespace insula::lang::graph {
 
 // The scope of an actor: a shape's own; a path's, point's or light's axis-aligned bounds.
-std::optional<shape::Scope> entity_scope(const EntityStore& entities,
-                                         const shape::ShapeTree& tree, EntityId id);
+std::optional<shape::Scope> entity_scope(const EntityStore& entities, const shape::ShapeTree& tree,
+                                         EntityId id);
 
 // `name` (area, perimeter, volume, sx, sy, sz, pos, centroid, normal, type) of the entity, or
 // nullopt with `error` saying why it does not apply.

@@ -56,9 +56,9 @@ struct RunState {
   std::uint64_t rounds = 0;
   std::int64_t live = 0;
   std::map<const Graph*, const CheckedGraph*> checked_of;
-  std::map<const JsonValue*, ParsedExpression> expressions;  // by the JSON string
-  std::map<const JsonValue*, Value> literals;                // by the JSON literal
-  std::map<std::string, Value> catalogue_defaults;           // "type.param" -> value
+  std::map<const JsonValue*, ParsedExpression> expressions;     // by the JSON string
+  std::map<const JsonValue*, Value> literals;                   // by the JSON literal
+  std::map<std::string, Value> catalogue_defaults;              // "type.param" -> value
   std::map<std::string, ParsedExpression> default_expressions;  // "type.param" -> expression
   std::vector<std::unique_ptr<JsonValue>> default_json;
   std::vector<std::unique_ptr<base::Source>> default_sources;

@@ -44,8 +44,7 @@ bool run_operation(NodeContext& c, EntityId entity, const std::string& op,
   return true;
 }
 
-std::optional<kernel::Polygon> world_footprint(NodeContext& c, EntityId entity,
-                                               double* elevation) {
+std::optional<kernel::Polygon> world_footprint(NodeContext& c, EntityId entity, double* elevation) {
   const Entity& e = c.entities()[entity];
   if (e.type != EntityType::kShape) return std::nullopt;
   const shape::Shape& s = c.tree()[e.shape];

@@ -14,7 +14,8 @@ void GraphExecution::run_subgraph(std::size_t node, const Rounds& rounds,
   const CheckedGraph& checked = *run_.checked_of.at(&sub);
   const std::int64_t max_depth = run_.root_limits.max_subgraph_depth;
   if (depth_ + 1 > max_depth) {
-    fail_at("G053", "subgraph nesting deeper than max_subgraph_depth = " + std::to_string(max_depth),
+    fail_at("G053",
+            "subgraph nesting deeper than max_subgraph_depth = " + std::to_string(max_depth),
             n.node->id_offset);
   }
   ExecutionContext outer(*this, node, rounds, outputs);
@@ -40,8 +41,8 @@ void GraphExecution::run_subgraph(std::size_t node, const Rounds& rounds,
       parameters.push_back(outer.evaluate(*given, spec, round, outer.current(round),
                                           "parameter '" + d.name + "' of '" + n.node->id + "'"));
     }
-    GraphExecution inner(run_, checked, true, std::move(parameters),
-                         prefix_ + n.node->id + "/", notes, depth_ + 1);
+    GraphExecution inner(run_, checked, true, std::move(parameters), prefix_ + n.node->id + "/",
+                         notes, depth_ + 1);
     for (std::size_t gate = 0; gate < sub.inputs.size(); ++gate) {
       const std::span<const EntityId> entering = rounds.at(round, gate);
       for (EntityId e : entering) {
@@ -59,8 +60,9 @@ void GraphExecution::run_subgraph(std::size_t node, const Rounds& rounds,
         for (const AttributeMapping& m : n.node->attributes) {
           if (m.direction == Direction::kIn) continue;
           const Value* v = run_.out.entities.attribute(e, inner.attribute_key(m.node_attribute));
-          outer.set_attribute(e, m.to, v != nullptr ? *v
-                                                    : declared_default(*sub.attribute(m.node_attribute), run_));
+          outer.set_attribute(
+              e, m.to,
+              v != nullptr ? *v : declared_default(*sub.attribute(m.node_attribute), run_));
         }
         outputs[gate].push_back(e);
       }
