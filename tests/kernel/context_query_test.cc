@@ -1,0 +1,228 @@
+#include "kernel/context_query.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+namespace insula::kernel {
+namespace {
+
+// ---- k-means ----
+
+TEST(KMeans, TwoObviousClustersConvergeInThreePasses) {
+  // Centres start at the first two points, (0) and (1); pass 1 puts 1, 10 and 11 with the
+  // second (mean 22/3), pass 2 moves 1 to the first, pass 3 changes nothing.
+  const std::vector<Vec3> points{{0, 0, 0}, {1, 0, 0}, {10, 0, 0}, {11, 0, 0}};
+  const KMeansResult r = kmeans(points, 2, 100);
+  EXPECT_EQ(r.cluster, (std::vector<int>{0, 0, 1, 1}));
+  ASSERT_EQ(r.centers.size(), 2u);
+  EXPECT_EQ(r.centers[0], (Vec3{0.5, 0, 0}));
+  EXPECT_EQ(r.centers[1], (Vec3{10.5, 0, 0}));
+  EXPECT_EQ(r.iterations, 3);
+}
+
+TEST(KMeans, StopsAtMaxIterationsWithCentersOfTheReturnedAssignment) {
+  const std::vector<Vec3> points{{0, 0, 0}, {1, 0, 0}, {10, 0, 0}, {11, 0, 0}};
+  const KMeansResult r = kmeans(points, 2, 1);
+  EXPECT_EQ(r.cluster, (std::vector<int>{0, 1, 1, 1}));
+  EXPECT_EQ(r.centers[0], (Vec3{0, 0, 0}));
+  EXPECT_DOUBLE_EQ(r.centers[1].x, 22.0 / 3);
+  EXPECT_EQ(r.iterations, 1);
+  EXPECT_EQ(kmeans(points, 2, 0).iterations, 1);  // at least one pass
+}
+
+TEST(KMeans, TieGoesToTheLowerCluster) {
+  // (1,0,0) is as far from centre 0 at the origin as from centre 1 at (2,0,0).
+  const std::vector<Vec3> points{{0, 0, 0}, {2, 0, 0}, {1, 0, 0}};
+  const KMeansResult first = kmeans(points, 2, 1);
+  EXPECT_EQ(first.cluster, (std::vector<int>{0, 1, 0}));
+  EXPECT_EQ(first.centers[0], (Vec3{0.5, 0, 0}));
+  const KMeansResult r = kmeans(points, 2, 100);
+  EXPECT_EQ(r.cluster, (std::vector<int>{0, 1, 0}));
+  EXPECT_EQ(r.iterations, 2);
+}
+
+TEST(KMeans, EmptyClusterKeepsItsCentroid) {
+  // Both centres start at the origin: every point ties and goes to cluster 0, cluster 1 is empty
+  // and keeps the origin, which then wins the two origin points back.
+  const std::vector<Vec3> points{{0, 0, 0}, {0, 0, 0}, {5, 0, 0}};
+  const KMeansResult one = kmeans(points, 2, 1);
+  EXPECT_EQ(one.cluster, (std::vector<int>{0, 0, 0}));
+  EXPECT_DOUBLE_EQ(one.centers[0].x, 5.0 / 3);
+  EXPECT_EQ(one.centers[1], (Vec3{0, 0, 0}));
+  const KMeansResult r = kmeans(points, 2, 100);
+  EXPECT_EQ(r.cluster, (std::vector<int>{1, 1, 0}));
+  EXPECT_EQ(r.centers[0], (Vec3{5, 0, 0}));
+  EXPECT_EQ(r.centers[1], (Vec3{0, 0, 0}));
+  EXPECT_EQ(r.iterations, 3);
+}
+
+TEST(KMeans, MoreClustersThanPointsActsAsOneClusterPerPoint) {
+  const std::vector<Vec3> points{{3, 1, 0}, {-2, 4, 1}};
+  const KMeansResult r = kmeans(points, 5, 100);
+  EXPECT_EQ(r.cluster, (std::vector<int>{0, 1}));
+  EXPECT_EQ(r.centers, points);
+  EXPECT_EQ(r.iterations, 2);
+  EXPECT_TRUE(kmeans(points, 0, 100).centers.empty());
+  EXPECT_TRUE(kmeans({}, 3, 100).cluster.empty());
+}
+
+// ---- ray cast ----
+
+Mesh box(Vec3 origin, Vec3 size) {
+  Mesh m;
+  add_box(m, origin, {size.x, 0, 0}, {0, size.y, 0}, {0, 0, size.z}, {});
+  return m;
+}
+
+std::vector<Mesh> stacked_boxes() {
+  return {box({0, 0, 0}, {1, 1, 1}), box({0, 0, 2}, {1, 1, 1})};
+}
+
+TEST(RayCast, HitsTheNearestOfTwoStackedBoxes) {
+  const std::vector<Ray> rays{{{0.5, 0.5, 10}, {0, 0, -1}, 1e9}, {{5, 5, 10}, {0, 0, -1}, 1e9}};
+  const RayCastResult r = ray_cast(rays, stacked_boxes());
+  EXPECT_EQ(r.hits[0].target, 1);
+  EXPECT_EQ(r.hits[0].distance, 7);
+  EXPECT_EQ(r.hits[0].position, (Vec3{0.5, 0.5, 3}));
+  EXPECT_EQ(r.hits[1].target, -1);  // misses
+  EXPECT_EQ(r.hits[1].distance, -1);
+  EXPECT_EQ(r.target_hit, (std::vector<bool>{false, true}));
+}
+
+TEST(RayCast, SkipPredicateAndMaxDistance) {
+  const auto skip_upper = [](std::size_t, std::size_t target) { return target == 1; };
+  const std::vector<Ray> rays{{{0.5, 0.5, 10}, {0, 0, -2}, 9}, {{0.5, 0.5, 10}, {0, 0, -1}, 8.5}};
+  const RayCastResult r = ray_cast(rays, stacked_boxes(), skip_upper);
+  EXPECT_EQ(r.hits[0].target, 0);  // exactly at max_distance; direction normalised
+  EXPECT_EQ(r.hits[0].distance, 9);
+  EXPECT_EQ(r.hits[0].position, (Vec3{0.5, 0.5, 1}));
+  EXPECT_EQ(r.hits[1].target, -1);  // the lower box is 9 away, beyond 8.5
+  EXPECT_EQ(r.target_hit, (std::vector<bool>{true, false}));
+}
+
+TEST(RayCast, RayFromInsideHitsTheFarFaceAndTiesGoToTheLowerTarget) {
+  const std::vector<Mesh> twins{box({0, 0, 0}, {1, 1, 1}), box({0, 0, 0}, {1, 1, 1})};
+  const std::vector<Ray> rays{{{0.5, 0.5, 0.5}, {1, 0, 0}, 1e9}};
+  const RayCastResult r = ray_cast(rays, twins);
+  EXPECT_EQ(r.hits[0].target, 0);
+  EXPECT_EQ(r.hits[0].distance, 0.5);
+  const RayCastResult skipped =
+      ray_cast(rays, twins, [](std::size_t, std::size_t target) { return target == 0; });
+  EXPECT_EQ(skipped.hits[0].target, 1);
+}
+
+TEST(RayCast, ConcaveFaceIsTestedAsAPolygon) {
+  // An L-shaped floor: the notch at x, y in (1, 2) is not part of it.
+  Mesh l;
+  l.add_polygon(std::vector<Vec3>{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}},
+                {});
+  const std::vector<Ray> rays{{{1.5, 1.5, 1}, {0, 0, -1}, 1e9}, {{0.5, 1.5, 1}, {0, 0, -1}, 1e9}};
+  const RayCastResult r = ray_cast(rays, std::vector<Mesh>{l});
+  EXPECT_EQ(r.hits[0].target, -1);
+  EXPECT_EQ(r.hits[1].target, 0);
+  EXPECT_EQ(r.hits[1].distance, 1);
+}
+
+TEST(RayCast, TenThousandRaysAgainstTenThousandBoxesUseTheHierarchy) {
+  // Unit boxes every 2 m; each ray starts at its own box's centre (skipped) and looks along +x,
+  // so it hits the next box of its row 1.5 m away, except in the last column.
+  constexpr int kSide = 100;
+  std::vector<Mesh> boxes;
+  std::vector<Ray> rays;
+  for (int j = 0; j < kSide; ++j) {
+    for (int i = 0; i < kSide; ++i) {
+      boxes.push_back(box({2.0 * i, 2.0 * j, 0}, {1, 1, 1}));
+      rays.push_back({{2.0 * i + 0.5, 2.0 * j + 0.5, 0.5}, {1, 0, 0}, 1e9});
+    }
+  }
+  const auto own = [](std::size_t ray, std::size_t target) { return ray == target; };
+  const auto start = std::chrono::steady_clock::now();
+  const RayCastResult r = ray_cast(rays, boxes, own);
+  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+  std::cout << "10,000 rays x 10,000 boxes: " << took.count() << " ms, " << r.face_tests
+            << " face tests\n";
+  std::size_t hits = 0, targets_hit = 0;
+  for (int j = 0; j < kSide; ++j) {
+    for (int i = 0; i < kSide; ++i) {
+      const RayHit& hit = r.hits[j * kSide + i];
+      if (i + 1 < kSide) {
+        ASSERT_EQ(hit.target, j * kSide + i + 1) << i << "," << j;
+        ASSERT_EQ(hit.distance, 1.5);
+        ASSERT_EQ(hit.position, (Vec3{2.0 * i + 2, 2.0 * j + 0.5, 0.5}));
+        ++hits;
+      } else {
+        ASSERT_EQ(hit.target, -1);
+      }
+      ASSERT_EQ(r.target_hit[j * kSide + i], i > 0);
+      targets_hit += r.target_hit[j * kSide + i] ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(hits, 9900u);
+  EXPECT_EQ(targets_hit, 9900u);
+  // Brute force would make 10,000 x 60,000 face tests; the hierarchy needs a few dozen per ray.
+  EXPECT_LT(r.face_tests, 20u * rays.size());
+}
+
+// ---- occlusion ----
+
+// A 10 x 10 wall in the plane y = 0 facing -y.
+FlatShape wall() {
+  return {{{{0, 0, 0}, {10, 0, 0}, {10, 0, 10}, {0, 0, 10}}}, {0, -1, 0}};
+}
+
+BoxEdges aabb(Vec3 min, Vec3 max) {
+  return {min, {max.x - min.x, 0, 0}, {0, max.y - min.y, 0}, {0, 0, max.z - min.z}};
+}
+
+double occlusion_of_wall(const std::vector<BoxEdges>& boxes, double distance = 10) {
+  return occlusion(std::vector<FlatShape>{wall()}, boxes, distance)[0];
+}
+
+TEST(Occlusion, BoxOverTheLeftHalfInFrontCoversHalf) {
+  EXPECT_NEAR(occlusion_of_wall({aabb({0, -3, 0}, {5, -1, 10})}), 0.5, 1e-12);
+  // Reaching past the wall's edges changes nothing.
+  EXPECT_NEAR(occlusion_of_wall({aabb({-4, -3, -2}, {5, -1, 20})}), 0.5, 1e-12);
+}
+
+TEST(Occlusion, BoxesBehindOrBeyondTheDistanceDoNotOcclude) {
+  EXPECT_EQ(occlusion_of_wall({aabb({0, 1, 0}, {5, 3, 10})}), 0);      // behind
+  EXPECT_EQ(occlusion_of_wall({aabb({0, 0, 0}, {5, 2, 10})}), 0);      // touching from behind
+  EXPECT_EQ(occlusion_of_wall({aabb({0, -15, 0}, {5, -12, 10})}), 0);  // beyond 10 m
+  EXPECT_EQ(occlusion_of_wall({aabb({0, -15, 0}, {5, -12, 10})}, 0), 0);
+  // Only part of the box lies in the slab: still the full projection.
+  EXPECT_NEAR(occlusion_of_wall({aabb({0, -12, 0}, {5, -8, 10})}), 0.5, 1e-12);
+  EXPECT_NEAR(occlusion_of_wall({aabb({0, -1, 0}, {5, 1, 10})}), 0.5, 1e-12);  // straddles
+}
+
+TEST(Occlusion, OverlappingBoxesAreNotCountedTwice) {
+  // Each covers 6 x 5 = 30 of the 100 m^2; together x in [0, 10], z in [0, 5].
+  EXPECT_NEAR(occlusion_of_wall({aabb({0, -3, 0}, {6, -1, 5}), aabb({4, -5, 0}, {10, -2, 5})}), 0.5,
+              1e-12);
+}
+
+TEST(Occlusion, OrientedAndFlatBoxes) {
+  // A box turned 45 degrees about the wall normal projects to a diamond of 8 m^2.
+  const BoxEdges turned{{5, -1, 1}, {2, 0, 2}, {0, -2, 0}, {-2, 0, 2}};
+  EXPECT_NEAR(occlusion_of_wall({turned}), 0.08, 1e-12);
+  // A flat occluder (a facade scope of zero depth) parallel to the wall, 2 m in front.
+  const BoxEdges flat{{0, -2, 0}, {5, 0, 0}, {0, 0, 0}, {0, 0, 10}};
+  EXPECT_NEAR(occlusion_of_wall({flat}), 0.5, 1e-12);
+}
+
+TEST(Occlusion, SkipPredicateAndSeveralShapes) {
+  const std::vector<BoxEdges> boxes{aabb({0, -3, 0}, {5, -1, 10}), aabb({5, -3, 0}, {10, -1, 10})};
+  const FlatShape roof{{{{0, -3, 12}, {10, -3, 12}, {10, 0, 12}, {0, 0, 12}}}, {0, 0, 1}};
+  const std::vector<FlatShape> shapes{wall(), roof};
+  const std::vector<double> all = occlusion(shapes, boxes, 10);
+  EXPECT_NEAR(all[0], 1, 1e-12);
+  EXPECT_EQ(all[1], 0);  // the boxes lie below the roof
+  const auto skip = [](std::size_t shape, std::size_t box) { return shape == 0 && box == 1; };
+  EXPECT_NEAR(occlusion(shapes, boxes, 10, skip)[0], 0.5, 1e-12);
+}
+
+}  // namespace
+}  // namespace insula::kernel
