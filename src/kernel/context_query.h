@@ -106,15 +106,19 @@ struct StreetSegment {
   Vec2 b;
 };
 
-// Per face, whether some street point lies within `tolerance` degrees (clamped to [0, 90]) of
-// the face's horizontal normal seen from `base`, no farther than `max_distance`, with a sight
-// line from `base` that no occluder footprint's interior crosses. Faces whose normal lies within
-// 45 degrees of vertical (roofs, floors) never are. Exact, not sampled: each street segment is
-// clipped to the tolerance wedge and the disc of radius max_distance; along the clipped piece the
-// visibility changes only where a sight line passes an occluder vertex or the street crosses an
-// occluder edge, so one point between each two consecutive such events decides the piece (a
-// piece of zero length is its own point). Index: uniform grids over the street segments' and the
-// footprints' bounds. skip(face, occluder) leaves an occluder out for that face.
+// Per face, whether the face sees a street: whether the street points within `tolerance` degrees
+// (clamped to [0, 90]) of its horizontal normal seen from `base`, no farther than `max_distance`,
+// on sight lines from `base` that cross no occluder footprint's interior, span a positive angle
+// seen from `base`. So a street seen only along one sight line (a single point in the cone, a
+// street lying on a sight line, a gap of zero width between two footprints) does not count, and
+// tolerance 0 never passes. Faces whose normal lies within 45 degrees of vertical (roofs, floors)
+// never are. Exact, not sampled: each street segment is clipped to the tolerance wedge and the disc
+// of radius max_distance; along the clipped piece the visibility changes only where a sight line
+// passes an occluder vertex or the street crosses an occluder edge, so one point between each two
+// consecutive such events decides the stretch. Index: uniform grids over the street segments' and
+// the footprints' bounds; streets are searched in sectors of doubling radius, ending early once
+// the footprints within the radius hide the whole wedge. skip(face, occluder) leaves an occluder
+// out for that face.
 std::vector<bool> is_oriented_to(std::span<const OrientedFace> faces,
                                  std::span<const StreetSegment> streets,
                                  std::span<const Polygon> occluders, double tolerance,

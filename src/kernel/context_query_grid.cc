@@ -57,10 +57,7 @@ BoxGrid::BoxGrid(std::vector<Bounds3> boxes) : boxes_(std::move(boxes)), stamp_(
     all_.add(b.max);
     ++count;
   }
-  if (count == 0) {
-    boxes_.clear();
-    return;
-  }
+  if (count == 0) return;  // query() finds nothing: all_ stays empty
   const double side = cell_side(boxes_, all_, count);
   const Vec3 extent = all_.size();
   for (int a = 0; a < 3; ++a) {

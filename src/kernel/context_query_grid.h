@@ -26,6 +26,8 @@ class BoxGrid {
 
   const Bounds3& box(std::size_t index) const { return boxes_[index]; }
   std::size_t size() const { return boxes_.size(); }
+  // The bounds of all boxes (empty for none).
+  const Bounds3& bounds() const { return all_; }
 
  private:
   int cell_of(double value, int axis) const;
