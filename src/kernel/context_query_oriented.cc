@@ -238,30 +238,45 @@ double relative_angle(const Wedge& w, Vec2 v) {
   return std::atan2(cross(w.axis, v), dot(w.axis, v));
 }
 
-// Whether the occluders lying wholly within `radius` hide every direction of the wedge but a
-// finite number: then no street beyond `radius` is seen over a positive angle. A triangle of an
-// occluder's triangulation hides the open range of directions between its extreme vertices
-// (every such sight line crosses its interior) from the triangle's farthest vertex on; the closed
-// ranges' union must cover the wedge.
+// The closed range [lo, hi] of directions (relative to the wedge axis) whose open interior the
+// triangle hides beyond `radius`: every sight line strictly inside it crosses the triangle's
+// interior within that distance. A triangle apart from the apex hides the range between its
+// extreme vertices from its farthest vertex on; one with the apex on its boundary (a neighbour
+// touching the wall) hides the range between its other vertices at once, one holding the apex
+// every direction. False when there is no range to trust: too far, or wrapping round behind.
+bool hidden_range(const std::array<Vec2, 3>& tri, const Wedge& wedge, double radius, double& lo,
+                  double& hi) {
+  const PointLocation where = locate(Polygon{{tri[0], tri[1], tri[2]}, {}}, wedge.apex);
+  if (where == PointLocation::kInside) {
+    lo = -std::numbers::pi;
+    hi = std::numbers::pi;
+    return true;
+  }
+  lo = 1e300;
+  hi = -1e300;
+  double far = 0;
+  for (const Vec2 v : tri) {
+    const double distance = length(v - wedge.apex);
+    if (where == PointLocation::kBoundary && distance <= 1e-9) continue;  // the apex itself
+    const double angle = relative_angle(wedge, v - wedge.apex);
+    lo = std::min(lo, angle);
+    hi = std::max(hi, angle);
+    far = std::max(far, distance);
+  }
+  if (where == PointLocation::kBoundary) return hi - lo <= std::numbers::pi + 1e-12;
+  return far <= radius && hi - lo < std::numbers::pi;
+}
+
+// Whether the occluders within `radius` hide every direction of the wedge but a finite number:
+// then no street beyond `radius` is seen over a positive angle. The closed hidden ranges of their
+// triangles must cover the wedge.
 bool OrientedSearch::blocked_beyond(std::size_t face, const Wedge& wedge, double radius) {
   std::vector<std::pair<double, double>> ranges;
   occluder_grid_.query(sector_bounds(wedge, radius), [&](std::size_t o) {
     if (skip_ && skip_(face, o)) return;
     for (const std::array<Vec2, 3>& tri : triangles(o)) {
-      double lo = 1e300, hi = -1e300, far = 0;
-      for (const Vec2 v : tri) {
-        const double angle = relative_angle(wedge, v - wedge.apex);
-        lo = std::min(lo, angle);
-        hi = std::max(hi, angle);
-        far = std::max(far, length(v - wedge.apex));
-      }
-      const Polygon shape{{tri[0], tri[1], tri[2]}, {}};
-      // Behind the face (the range wraps round) or holding the apex: no range to trust.
-      if (far > radius || hi - lo >= std::numbers::pi ||
-          locate(shape, wedge.apex) != PointLocation::kOutside) {
-        continue;
-      }
-      ranges.emplace_back(lo, hi);
+      double lo = 0, hi = 0;
+      if (hidden_range(tri, wedge, radius, lo, hi)) ranges.emplace_back(lo, hi);
     }
   });
   std::sort(ranges.begin(), ranges.end());

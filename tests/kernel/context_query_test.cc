@@ -224,6 +224,27 @@ TEST(Occlusion, SkipPredicateAndSeveralShapes) {
   EXPECT_NEAR(occlusion(shapes, boxes, 10, skip)[0], 0.5, 1e-12);
 }
 
+TEST(Occlusion, SouthFacesOfTenThousandBoxes) {
+  // Unit boxes every 2 m: each south face has the box of the row before 1 m in front of it,
+  // covering it exactly, except in the first row.
+  constexpr int kSide = 100;
+  std::vector<FlatShape> faces;
+  std::vector<BoxEdges> boxes;
+  for (int j = 0; j < kSide; ++j) {
+    for (int i = 0; i < kSide; ++i) {
+      const double x = 2.0 * i, y = 2.0 * j;
+      boxes.push_back(aabb({x, y, 0}, {x + 1, y + 1, 1}));
+      faces.push_back({{{{x, y, 0}, {x + 1, y, 0}, {x + 1, y, 1}, {x, y, 1}}}, {0, -1, 0}});
+    }
+  }
+  const auto own = [](std::size_t face, std::size_t box) { return face == box; };
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<double> r = occlusion(faces, boxes, 1.5, own);
+  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+  std::cout << "10,000 faces x 10,000 boxes: " << took.count() << " ms\n";
+  for (int k = 0; k < kSide * kSide; ++k) ASSERT_NEAR(r[k], k < kSide ? 0 : 1, 1e-12) << k;
+}
+
 // ---- is oriented to ----
 
 // A wall whose bottom edge midpoint is the origin, facing -y.
@@ -289,6 +310,34 @@ TEST(IsOrientedTo, BlockedByAnOccluderUnlessSkippedOrSeenThroughAGap) {
   EXPECT_TRUE(oriented(kSouthFace, {{{-1, -20}, {0, -20}}}, {rect(0, -12, 5, -8)}, 10));
   // A street through a footprint is seen up to the footprint.
   EXPECT_TRUE(oriented(kSouthFace, {{{0.2, -5}, {0, -20}}}, {rect(-15, -12, 15, -8)}));
+}
+
+TEST(IsOrientedTo, PartyWallFacingATouchingNeighbourSeesNothing) {
+  EXPECT_FALSE(oriented(kSouthFace, kStreetInFront, {rect(-5, -10, 5, 0)}));
+  EXPECT_FALSE(oriented(kSouthFace, kStreetInFront, {rect(0, -10, 5, 0), rect(-5, -10, 0, 0)}));
+  // A neighbour touching only beside the wall's cone hides nothing.
+  EXPECT_TRUE(oriented(kSouthFace, kStreetInFront, {rect(0.5, -10, 5, 0)}, 2));
+}
+
+TEST(IsOrientedTo, TenThousandTouchingFootprints) {
+  // A solid 100 x 100 block of touching unit footprints, a street 0.5 m east of it: only the
+  // east walls of the last column see it; the others face their neighbours.
+  constexpr int kSide = 100;
+  std::vector<Polygon> footprints;
+  std::vector<OrientedFace> faces;
+  for (int j = 0; j < kSide; ++j) {
+    for (int i = 0; i < kSide; ++i) {
+      footprints.push_back(rect(i, j, i + 1, j + 1));
+      faces.push_back({{i + 1.0, j + 0.5}, {1, 0, 0}});
+    }
+  }
+  const std::vector<StreetSegment> street{{{kSide + 0.5, -10}, {kSide + 0.5, kSide + 10}}};
+  const auto own = [](std::size_t face, std::size_t footprint) { return footprint == face; };
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<bool> r = is_oriented_to(faces, street, footprints, 45, 1e9, own);
+  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+  std::cout << "10,000 party walls: " << took.count() << " ms\n";
+  for (int k = 0; k < kSide * kSide; ++k) ASSERT_EQ(r[k], k % kSide == kSide - 1) << k;
 }
 
 TEST(IsOrientedTo, RoofsAndFloorsNeverAre) {
