@@ -10,6 +10,16 @@
 namespace insula::kernel {
 namespace {
 
+// Runs f and prints how long it took: the scale tests report times without asserting them.
+template <class F>
+auto timed(const char* what, F&& f) {
+  const auto start = std::chrono::steady_clock::now();
+  auto result = f();
+  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+  std::cout << what << ": " << took.count() << " ms\n";
+  return result;
+}
+
 // ---- k-means ----
 
 TEST(KMeans, TwoObviousClustersConvergeInThreePasses) {
@@ -140,11 +150,9 @@ TEST(RayCast, TenThousandRaysAgainstTenThousandBoxesUseTheHierarchy) {
     }
   }
   const auto own = [](std::size_t ray, std::size_t target) { return ray == target; };
-  const auto start = std::chrono::steady_clock::now();
-  const RayCastResult r = ray_cast(rays, boxes, own);
-  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
-  std::cout << "10,000 rays x 10,000 boxes: " << took.count() << " ms, " << r.face_tests
-            << " face tests\n";
+  const RayCastResult r =
+      timed("10,000 rays x 10,000 boxes", [&] { return ray_cast(rays, boxes, own); });
+  std::cout << r.face_tests << " face tests\n";
   std::size_t hits = 0, targets_hit = 0;
   for (int j = 0; j < kSide; ++j) {
     for (int i = 0; i < kSide; ++i) {
@@ -238,10 +246,8 @@ TEST(Occlusion, SouthFacesOfTenThousandBoxes) {
     }
   }
   const auto own = [](std::size_t face, std::size_t box) { return face == box; };
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<double> r = occlusion(faces, boxes, 1.5, own);
-  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
-  std::cout << "10,000 faces x 10,000 boxes: " << took.count() << " ms\n";
+  const std::vector<double> r =
+      timed("10,000 faces x 10,000 boxes", [&] { return occlusion(faces, boxes, 1.5, own); });
   for (int k = 0; k < kSide * kSide; ++k) ASSERT_NEAR(r[k], k < kSide ? 0 : 1, 1e-12) << k;
 }
 
@@ -333,10 +339,9 @@ TEST(IsOrientedTo, TenThousandTouchingFootprints) {
   }
   const std::vector<StreetSegment> street{{{kSide + 0.5, -10}, {kSide + 0.5, kSide + 10}}};
   const auto own = [](std::size_t face, std::size_t footprint) { return footprint == face; };
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<bool> r = is_oriented_to(faces, street, footprints, 45, 1e9, own);
-  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
-  std::cout << "10,000 party walls: " << took.count() << " ms\n";
+  const std::vector<bool> r = timed("10,000 party walls", [&] {
+    return is_oriented_to(faces, street, footprints, 45, 1e9, own);
+  });
   for (int k = 0; k < kSide * kSide; ++k) ASSERT_EQ(r[k], k % kSide == kSide - 1) << k;
 }
 
@@ -371,10 +376,9 @@ TEST(IsOrientedTo, TwentyThousandWallsOfAGridOfBlocks) {
     }
   }
   const auto own = [](std::size_t face, std::size_t footprint) { return footprint == face / 2; };
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<bool> r = is_oriented_to(faces, streets, footprints, 20, 1e9, own);
-  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
-  std::cout << "20,000 walls, 10,000 footprints, 101 streets: " << took.count() << " ms\n";
+  const std::vector<bool> r = timed("20,000 walls, 10,000 footprints, 101 streets", [&] {
+    return is_oriented_to(faces, streets, footprints, 20, 1e9, own);
+  });
   for (int k = 0; k < kSide * kSide; ++k) {
     ASSERT_TRUE(r[2 * k]) << k;
     ASSERT_EQ(r[2 * k + 1], k % kSide == kSide - 1) << k;
@@ -437,10 +441,8 @@ TEST(NearestTargets, GridOfTenThousandSquaresTiesGoToTheLowerIndex) {
       points.push_back({{}, {{2.0 * i + 1.5, 2.0 * j + 0.5}}, {}});
     }
   }
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<NearestTarget> r = nearest_targets(points, targets);
-  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
-  std::cout << "10,000 points x 10,000 squares: " << took.count() << " ms\n";
+  const std::vector<NearestTarget> r =
+      timed("10,000 points x 10,000 squares", [&] { return nearest_targets(points, targets); });
   for (int k = 0; k < kSide * kSide; ++k) {
     ASSERT_EQ(r[k].target, k) << k;
     ASSERT_EQ(r[k].distance, 0.5);
