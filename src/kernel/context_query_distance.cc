@@ -111,9 +111,9 @@ std::vector<NearestTarget> nearest_targets(std::span<const Footprint> entities,
   detail::BoxGrid grid(std::move(boxes));
   const Bounds3 all = grid.bounds();
   const Vec3 extent = all.size();
-  const double step = std::max(
-      {extent.x / std::sqrt(static_cast<double>(std::max<std::size_t>(targets.size(), 1))),
-       extent.y / std::sqrt(static_cast<double>(std::max<std::size_t>(targets.size(), 1))), 1.0});
+  // The first search box reaches about one target spacing (at least 1 m) beyond the entity.
+  const double per_side = std::sqrt(static_cast<double>(std::max<std::size_t>(targets.size(), 1)));
+  const double step = std::max({extent.x / per_side, extent.y / per_side, 1.0});
   std::vector<NearestTarget> result(entities.size());
   for (std::size_t e = 0; e < entities.size(); ++e) {
     const Prepared entity = prepare(entities[e]);
@@ -124,7 +124,8 @@ std::vector<NearestTarget> nearest_targets(std::span<const Footprint> entities,
       const double gap = box_gap(entity.box, prepared[t].box);
       if (best.target >= 0 && gap > best.distance) return;
       const double d = footprint_distance(entity, entities[e], prepared[t], targets[t]);
-      if (best.target < 0 || d < best.distance || (d == best.distance && int(t) < best.target)) {
+      if (best.target < 0 || d < best.distance ||
+          (d == best.distance && static_cast<int>(t) < best.target)) {
         best = {static_cast<int>(t), d};
       }
     };

@@ -13,7 +13,9 @@ namespace insula::kernel {
 
 namespace {
 
-constexpr double kParameterEpsilon = 1e-12;  // pieces of a street shorter than this are points
+// Differences of street or sight-line parameters (0 to 1), and relative sines of angles, at or
+// below this count as none.
+constexpr double kParameterEpsilon = 1e-12;
 
 Vec2 rotated(Vec2 v, double radians) {
   const double c = std::cos(radians), s = std::sin(radians);

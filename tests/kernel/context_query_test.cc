@@ -175,6 +175,19 @@ TEST(RayCast, TenThousandRaysAgainstTenThousandBoxesUseTheHierarchy) {
   EXPECT_LT(r.face_tests, 20u * rays.size());
 }
 
+TEST(RayCast, DegenerateRaysAndFacesHitNothing) {
+  Mesh sliver;  // a face of zero area has no plane
+  sliver.add_polygon(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {});
+  const std::vector<Mesh> targets{sliver, box({0, 0, 0}, {1, 1, 1})};
+  const std::vector<Ray> rays{{{0.5, 0.5, 5}, {0, 0, 0}, 1e9},
+                              {{0.5, 0.5, 5}, {0, 0, -1}, std::nan("")},
+                              {{0.5, 0.5, 5}, {0, 0, -1}, -1},
+                              {{0.5, -1, 0.5}, {1, 0, 0}, 1e9}};  // parallel to the box's sides
+  const RayCastResult r = ray_cast(rays, targets);
+  for (const RayHit& hit : r.hits) EXPECT_EQ(hit.target, -1);
+  EXPECT_TRUE(ray_cast(rays, std::vector<Mesh>{}).hits[3].target == -1);
+}
+
 // ---- occlusion ----
 
 // A 10 x 10 wall in the plane y = 0 facing -y.
@@ -249,6 +262,15 @@ TEST(Occlusion, SouthFacesOfTenThousandBoxes) {
   const std::vector<double> r =
       timed("10,000 faces x 10,000 boxes", [&] { return occlusion(faces, boxes, 1.5, own); });
   for (int k = 0; k < kSide * kSide; ++k) ASSERT_NEAR(r[k], k < kSide ? 0 : 1, 1e-12) << k;
+}
+
+TEST(Occlusion, DegenerateShapesAndDistances) {
+  const std::vector<BoxEdges> boxes{aabb({0, -3, 0}, {5, -1, 10})};
+  const std::vector<FlatShape> shapes{
+      {}, {{{{0, 0, 0}, {10, 0, 0}, {20, 0, 0}}}, {0, -1, 0}}, {wall().loops, {0, 0, 0}}};
+  for (const double occluded : occlusion(shapes, boxes, 10)) EXPECT_EQ(occluded, 0);
+  EXPECT_EQ(occlusion(std::vector<FlatShape>{wall()}, boxes, std::nan(""))[0], 0);
+  EXPECT_EQ(occlusion(std::vector<FlatShape>{wall()}, boxes, -1)[0], 0);
 }
 
 // ---- is oriented to ----
