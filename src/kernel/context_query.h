@@ -76,7 +76,8 @@ RayCastResult ray_cast(std::span<const Ray> rays, std::span<const Mesh> targets,
 // ---- Occlusion query (seed 003, §6.1; Müller et al. 2006's occlusion test) ----
 
 // A flat region in 3D: the union of `loops` (hole-free polygons in one plane, such as the faces
-// of a mesh that share a face id) and its outward unit normal.
+// of a mesh that share a face id) and its outward normal (normalised on use). The plane is taken
+// through the first vertex of the first loop.
 struct FlatShape {
   std::vector<std::vector<Vec3>> loops;
   Vec3 normal;
