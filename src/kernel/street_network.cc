@@ -218,8 +218,10 @@ class MergeRound {
     if (ei[0] == ej[0] || ei[0] == ej[1] || ei[1] == ej[0] || ei[1] == ej[1]) return;
     const Vec3 a = at(ei[0]), b = at(ei[1]), c = at(ej[0]), d = at(ej[1]);
     if (!segments_cross_properly(drop(a), drop(b), drop(c), drop(d))) return;
-    const Vec2 ab = drop(b) - drop(a), cd = drop(d) - drop(c);
-    const double t = cross(drop(c) - drop(a), cd) / cross(ab, cd);
+    const Vec2 ab = drop(b) - drop(a), cd = drop(d) - drop(c), ac = drop(c) - drop(a);
+    const double t = cross(ac, cd) / cross(ab, cd), u = cross(ac, ab) / cross(ab, cd);
+    // The orientation tests can misjudge nearly collinear segments that do not meet.
+    if (!(t > 0 && t < 1 && u > 0 && u < 1)) return;
     const std::uint32_t v = welder_.add(a + (b - a) * t);
     add_split(i, v);
     add_split(j, v);
@@ -330,41 +332,51 @@ std::vector<Polygon> bounded_faces(const StreetNetwork& network, const Embedding
 
 // The part of a road's buffer in the angular gap from half-edge direction `a` counter-clockwise
 // to `b` at vertex v (angle `gap`), where the edge rectangles leave a notch: gaps wider than a
-// half turn, on the outside of a bend or at a dead end (gap = a full turn).
-void add_join(Vec2 v, Vec2 a, Vec2 b, double gap, double half, std::vector<Polygon>& pieces) {
+// half turn, on the outside of a bend or at a dead end (gap = a full turn). `reach` (> 0) is how
+// far the join may extend into both rectangles.
+void add_join(Vec2 v, Vec2 a, Vec2 b, double gap, double half, double reach,
+              std::vector<Polygon>& pieces) {
   if (gap <= std::numbers::pi * (1 + 1e-12)) return;
   const Vec2 p = v + perp(a) * half, q = v - perp(b) * half;
+  // The join's inner corner lies inside both rectangles rather than at v, the middle of their end
+  // edges: on the booleans' grid v rounds off that edge and would leave a sliver between join and
+  // rectangle, which Clipper then returns as two polygons touching along the edge.
+  const Vec2 inner = v + (a + b) * reach;
   const double s = std::sin(gap / 2);
   if (s * kStreetMiterLimit >= 1) {
     // The miter point, where the two offset lines meet behind v.
     const Vec2 miter = p - a * (half * std::tan((gap - std::numbers::pi) / 2));
-    pieces.push_back({{v, p, miter, q}, {}});
+    pieces.push_back({{inner, p, miter, q}, {}});
     return;
   }
   // Cut square at one half-width from v, across the bisector.
   const double back = half * (1 - s) / -std::cos(gap / 2);
-  pieces.push_back({{v, p, p - a * back, q - b * back, q}, {}});
+  pieces.push_back({{inner, p, p - a * back, q - b * back, q}, {}});
 }
 
 // Edge rectangles plus the joins; their union is the road surface.
 std::vector<Polygon> road_pieces(const StreetNetwork& network, const Embedding& embedding,
                                  double half) {
   std::vector<Polygon> pieces;
+  std::vector<double> lengths;
   for (const Edge& e : network.edges) {
     const Vec2 a = drop(network.vertices[e[0]]), b = drop(network.vertices[e[1]]);
     const Vec2 n = perp(normalized(b - a)) * half;
     pieces.push_back({{a - n, b - n, b + n, a + n}, {}});
+    lengths.push_back(length(b - a));
   }
   for (std::size_t v = 0; v < embedding.around.size(); ++v) {
     const auto& list = embedding.around[v];
     for (std::size_t k = 0; k < list.size(); ++k) {
       const auto& [angle, h] = list[k];
       const auto& [next_angle, next_h] = list[(k + 1) % list.size()];
-      const double gap =
-          list.size() == 1 ? 2 * std::numbers::pi
-                           : next_angle - angle + (k + 1 == list.size() ? 2 * std::numbers::pi : 0);
+      double gap = next_angle - angle;
+      if (k + 1 == list.size()) gap += 2 * std::numbers::pi;
+      if (list.size() == 1) gap = 2 * std::numbers::pi;
+      // Half of what keeps v + (a + b) * reach within both rectangles.
+      const double reach = 0.25 * std::min({half, lengths[h / 2], lengths[next_h / 2]});
       add_join(drop(network.vertices[v]), Embedding::direction(network, h),
-               Embedding::direction(network, next_h), gap, half, pieces);
+               Embedding::direction(network, next_h), gap, half, reach, pieces);
     }
   }
   return pieces;

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <random>
+#include <set>
+#include <utility>
 
 #include "kernel/boolean2d.h"
 
@@ -47,6 +50,40 @@ void expect_valid(const std::vector<Polygon>& polygons) {
     EXPECT_GT(signed_area(p.outer), 0);
     EXPECT_TRUE(repair(p, 1e-9).ok);
   }
+}
+
+// Segments ab and cd meet at a point interior to both (orientation tests alone misjudge nearly
+// collinear segments that do not meet).
+bool really_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (!segments_cross_properly(a, b, c, d)) return false;
+  const double denominator = cross(b - a, d - c);
+  const double t = cross(c - a, d - c) / denominator, u = cross(c - a, b - a) / denominator;
+  return t > 0 && t < 1 && u > 0 && u < 1;
+}
+
+// What merge_networks promises, checked pair by pair.
+void expect_planar(const StreetNetwork& m, double tolerance) {
+  const auto& v = m.vertices;
+  int near_vertices = 0, on_edge = 0, crossings = 0, repeats = 0;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (std::size_t j = i + 1; j < v.size(); ++j)
+      near_vertices += length(drop(v[i]) - drop(v[j])) <= tolerance;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+  for (std::size_t i = 0; i < m.edges.size(); ++i) {
+    const auto [a, b] = m.edges[i];
+    repeats += a == b || !seen.insert(std::minmax(a, b)).second;
+    for (std::uint32_t k = 0; k < v.size(); ++k)
+      on_edge +=
+          k != a && k != b && distance_to_segment(drop(v[k]), drop(v[a]), drop(v[b])) <= tolerance;
+    for (std::size_t j = i + 1; j < m.edges.size(); ++j) {
+      const auto [c, d] = m.edges[j];
+      crossings += really_cross(drop(v[a]), drop(v[b]), drop(v[c]), drop(v[d]));
+    }
+  }
+  EXPECT_EQ(near_vertices, 0);
+  EXPECT_EQ(on_edge, 0);
+  EXPECT_EQ(crossings, 0);
+  EXPECT_EQ(repeats, 0);
 }
 
 TEST(StreetNetwork, GridBlocksInOrderStartingAtTheirAnchor) {
@@ -151,19 +188,48 @@ TEST(StreetNetwork, MergeIsAFixedPoint) {
   const StreetNetwork twice = merge_networks({&once, 1}, 1e-3);
   EXPECT_EQ(once.vertices, twice.vertices);
   EXPECT_EQ(once.edges, twice.edges);
-  // No two edges cross any more, and every face comes out.
-  for (std::size_t i = 0; i < once.edges.size(); ++i)
-    for (std::size_t j = i + 1; j < once.edges.size(); ++j) {
-      const auto& e = once.edges[i];
-      const auto& f = once.edges[j];
-      EXPECT_FALSE(segments_cross_properly(drop(once.vertices[e[0]]), drop(once.vertices[e[1]]),
-                                           drop(once.vertices[f[0]]), drop(once.vertices[f[1]])))
-          << i << " " << j;
-    }
+  expect_planar(once, 1e-3);
+  // The five lines meet in one welded vertex and cross the square ten times: 10 + 1 + 4 + 10
+  // vertices; 10 spokes, 10 outer pieces, 10 + 4 square pieces.
+  EXPECT_EQ(once.vertices.size(), 25U);
+  EXPECT_EQ(once.edges.size(), 34U);
   const StreetSurfaces s = street_surfaces(once, 2);
   ASSERT_TRUE(s.ok());
+  EXPECT_EQ(s.blocks.size(), 10U);
   expect_tiling(s);
   expect_valid(s.blocks);
+}
+
+TEST(StreetNetwork, RandomSegmentsMergeIntoAPlanarGraph) {
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> coordinate(0, 100);
+    std::vector<StreetNetwork> parts;
+    for (int k = 0; k < 40; ++k) {
+      const Vec3 a{coordinate(random), coordinate(random), 0};
+      // Some segments end on an earlier one's end or middle, some repeat part of one.
+      Vec3 b{coordinate(random), coordinate(random), 0};
+      if (k % 5 == 1) b = parts.back().vertices[0];
+      if (k % 5 == 2) b = (parts.back().vertices[0] + parts.back().vertices[1]) * 0.5;
+      parts.push_back(polyline({a, b}));
+    }
+    const StreetNetwork m = merge_networks(parts, 1e-3);
+    SCOPED_TRACE(seed);
+    EXPECT_GT(m.edges.size(), 100U);
+    expect_planar(m, 1e-3);
+    const StreetNetwork again = merge_networks({&m, 1}, 1e-3);
+    EXPECT_EQ(again.vertices, m.vertices);
+    EXPECT_EQ(again.edges, m.edges);
+    const StreetSurfaces s = street_surfaces(m, 1);
+    ASSERT_TRUE(s.ok());
+    expect_valid(s.roads);
+    EXPECT_FALSE(s.blocks.empty());
+    const BooleanResult all = unite(s.roads, s.blocks);
+    ASSERT_TRUE(all.ok());
+    const double sum = total_area(s.roads) + total_area(s.blocks);
+    EXPECT_NEAR(total_area(all.polygons), sum, 1e-6 * sum);
+    expect_valid(s.blocks);
+  }
 }
 
 TEST(StreetNetwork, DeadEndInsideABlockIsCutOut) {
