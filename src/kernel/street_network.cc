@@ -146,12 +146,14 @@ struct Split {
 };
 
 // One round of merge_networks: weld, find crossings and vertices on edges, split. `changed` tells
-// whether the round did anything, so that the caller can stop at a fixed point.
+// whether the round did anything, so that the caller can stop at a fixed point. Used once: run()
+// hands over the result.
 class MergeRound {
  public:
-  MergeRound(double tolerance) : tolerance_(tolerance), welder_(tolerance, out_.vertices) {}
+  explicit MergeRound(double tolerance)
+      : tolerance_(tolerance), welder_(tolerance, out_.vertices) {}
 
-  StreetNetwork run(std::span<const StreetNetwork> networks, bool& changed) {
+  StreetNetwork run(std::span<const StreetNetwork> networks, bool& changed) && {
     weld(networks);
     split();
     changed = changed_;

@@ -111,6 +111,30 @@ TEST(StreetNetwork, GridBlocksInOrderStartingAtTheirAnchor) {
   expect_valid(s.blocks);
 }
 
+TEST(StreetNetwork, GeoreferencedGridKeepsItsPrecision) {
+  // UTM-sized coordinates: the same blocks, shifted.
+  const Vec3 origin{512345.25, 5412345.5, 120};
+  const StreetSurfaces s = street_surfaces(grid_network(3, 3, 50, 50, origin), 10);
+  ASSERT_TRUE(s.ok());
+  ASSERT_EQ(s.blocks.size(), 4U);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(area(s.blocks[k]), 1600, 1e-4);
+  EXPECT_NEAR(s.blocks[1].outer[0].x, origin.x + 55, 1e-6);
+  EXPECT_NEAR(s.blocks[1].outer[0].y, origin.y + 5, 1e-6);
+  EXPECT_EQ(s.z, 120);
+}
+
+TEST(StreetNetwork, RightAngleBendIsMitred) {
+  const StreetSurfaces s = road_buffer(polyline({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}}), 10);
+  ASSERT_TRUE(s.ok());
+  ASSERT_EQ(s.roads.size(), 1U);
+  // 110 x 10 along x, 10 x 100 up; the outer corner is the miter point (105, -5).
+  EXPECT_NEAR(area(s.roads[0]), 110.0 * 10.0 + 10.0 * 100.0, 1e-6);
+  EXPECT_EQ(s.roads[0].outer.size(), 6U);
+  const Bounds2 box = bounds(s.roads[0]);
+  EXPECT_EQ(box.min, (Vec2{-5, -5}));
+  EXPECT_EQ(box.max, (Vec2{105, 105}));
+}
+
 TEST(StreetNetwork, RoadBufferIsTheRoadsAlone) {
   const StreetNetwork grid = grid_network(3, 3, 50, 50);
   const StreetSurfaces buffer = road_buffer(grid, 10);
