@@ -248,6 +248,11 @@ TEST(StreetNetwork, RandomSegmentsMergeIntoAPlanarGraph) {
     ASSERT_TRUE(s.ok());
     expect_valid(s.roads);
     EXPECT_FALSE(s.blocks.empty());
+    // Deterministic: the same input gives the same rings in the same order.
+    const StreetSurfaces repeat = street_surfaces(m, 1);
+    ASSERT_EQ(repeat.blocks.size(), s.blocks.size());
+    for (std::size_t k = 0; k < s.blocks.size(); ++k)
+      EXPECT_EQ(repeat.blocks[k].outer, s.blocks[k].outer);
     const BooleanResult all = unite(s.roads, s.blocks);
     ASSERT_TRUE(all.ok());
     const double sum = total_area(s.roads) + total_area(s.blocks);
