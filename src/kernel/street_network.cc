@@ -88,8 +88,9 @@ class CellGrid {
   CellGrid(const Bounds2& box, double cell) : box_(box) {
     const double w = box.max.x - box.min.x, h = box.max.y - box.min.y;
     cell_ = std::max({cell, w / 512, h / 512, 1e-9});
-    nx_ = static_cast<int>(w / cell_) + 1;
-    ny_ = static_cast<int>(h / cell_) + 1;
+    // fmin also maps the NaN of an overflowed extent (coordinates near 1e308) to the cap.
+    nx_ = static_cast<int>(std::fmin(w / cell_, 512)) + 1;
+    ny_ = static_cast<int>(std::fmin(h / cell_, 512)) + 1;
     cells_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
   }
 
@@ -111,7 +112,7 @@ class CellGrid {
   template <typename F>
   void visit(const Bounds2& b, F f) {
     auto index = [this](double v, double lo, int n) {
-      return std::clamp(static_cast<int>(std::floor((v - lo) / cell_)), 0, n - 1);
+      return static_cast<int>(std::fmax(0, std::fmin(std::floor((v - lo) / cell_), n - 1)));
     };
     const int x0 = index(b.min.x, box_.min.x, nx_), x1 = index(b.max.x, box_.min.x, nx_);
     const int y0 = index(b.min.y, box_.min.y, ny_), y1 = index(b.max.y, box_.min.y, ny_);

@@ -423,6 +423,10 @@ TEST(StreetNetwork, DegenerateInput) {
   const StreetSurfaces far = street_surfaces(polyline({{0, 0, 0}, {1e13, 0, 0}}), 10);
   EXPECT_EQ(far.status, StreetStatus::kBooleanFailed);
   EXPECT_TRUE(far.roads.empty());
+  // Extents that overflow a double: no crash, the edges kept as given.
+  const StreetNetwork huge = polyline({{-1e308, -1e308, 0}, {1e308, 1e308, 0}, {1e308, -1e308, 0}});
+  EXPECT_EQ(merged({huge}).edges.size(), 2U);
+  EXPECT_EQ(street_surfaces(huge, 10).status, StreetStatus::kBooleanFailed);
 }
 
 TEST(StreetNetwork, DecomposeGivesEdgesAndVertices) {
