@@ -119,7 +119,8 @@ std::shared_ptr<const lang::graph::Model> FrontEndRules::run(
     return nullptr;
   }
   cga::Lot lot;
-  lot.polygons.push_back(request.footprint);
+  lot.polygons.push_back(request.outline);
+  if (request.first_edge) lot.first_edges.push_back(*request.first_edge);
   lot.properties = request.attributes;
   cga::DeriveOptions options;
   options.seed = request.seed;
@@ -136,8 +137,10 @@ std::shared_ptr<const lang::graph::Model> FrontEndRules::run(
   model->materials = std::move(scene.materials);
   for (shape::Building& b : scene.buildings) {
     for (shape::Part& p : b.parts) {
-      if (request.elevation != 0) {
-        for (kernel::Vec3& v : p.mesh.positions()) v.z += request.elevation;
+      // The lot was the shape's outline in scope space: back to the world.
+      for (kernel::Vec3& v : p.mesh.positions()) v = request.scope.to_world(v);
+      if (p.instance_of != nullptr) {
+        p.instance_transform = shape::scope_transform(request.scope) * p.instance_transform;
       }
       model->parts.push_back(std::move(p));
     }

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "kernel/mesh.h"
+#include "kernel/street_network.h"
 #include "kernel/vec.h"
 #include "lang/graph/types.h"
 #include "lang/graph/value.h"
@@ -34,11 +35,8 @@ inline AttributeKey attribute_key(std::uint64_t execution, std::size_t declarati
   return (execution << 16U) | declaration;
 }
 
-// A street network (§10 `path`): vertices and edges in world space.
-struct PathGeometry {
-  std::vector<kernel::Vec3> vertices;
-  std::vector<std::array<std::uint32_t, 2>> edges;
-};
+// A street network (§10 `path`): vertices and edges in world space (kernel/street_network.h).
+using PathGeometry = kernel::StreetNetwork;
 
 struct LightData {
   std::string kind = "point";  // point, spot

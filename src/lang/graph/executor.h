@@ -5,10 +5,12 @@
 // docs/graph-executor.md, "Execution".
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +22,7 @@
 #include "lang/graph/model.h"
 #include "shape/operation.h"
 #include "shape/scene.h"
+#include "shape/scope.h"
 #include "shape/shape_tree.h"
 
 namespace insula::lang::graph {
@@ -38,11 +41,14 @@ using LotReader =
 // `rule.plasm`): the app plugs the front-ends in, since one front-end never includes another.
 // Must be callable from several threads at once.
 struct RuleRequest {
-  std::string language;       // "cga", "bldg", "lua", "plasm"
-  std::string file;           // as written in the graph (relative to the graph's folder)
-  std::string start;          // start rule / function / expression; "" for the program's own
-  kernel::Polygon footprint;  // the shape's outline in world XY (flat shapes)
-  double elevation = 0;
+  std::string language;  // "cga", "bldg", "lua", "plasm"
+  std::string file;      // as written in the graph (relative to the graph's folder)
+  std::string start;     // start rule / function / expression; "" for the program's own
+  // The flat shape's outline in its scope's xy plane: the program's lot, in scope space; the
+  // runner places what it makes with `scope` (a facade's program sees the wall as its lot).
+  kernel::Polygon outline;
+  std::optional<std::array<kernel::Vec2, 2>> first_edge;  // the scope x axis' edge, when any
+  shape::Scope scope;
   shape::AttributeMap attributes;  // the entity's graph attributes (lot properties)
   std::uint64_t seed = 0;
 };

@@ -5,12 +5,28 @@
 // depend on --threads.
 #include <tbb/parallel_for.h>
 
+#include <cmath>
+
 #include "lang/graph/executor.h"
 #include "lang/graph/nodes.h"
 #include "lang/graph/shape_entities.h"
 
 namespace insula::lang::graph {
 namespace {
+
+// The outline's edge along the scope's x axis at y = 0 (a lot's first edge, a facade's bottom),
+// so the program's scope x follows the graph's.
+std::optional<std::array<kernel::Vec2, 2>> scope_x_edge(const kernel::Polygon& outline) {
+  const kernel::Ring& ring = outline.outer;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const kernel::Vec2 a = ring[i];
+    const kernel::Vec2 b = ring[(i + 1) % ring.size()];
+    if (std::abs(a.y) < 1e-6 && std::abs(b.y) < 1e-6 && b.x > a.x) {
+      return std::array<kernel::Vec2, 2>{a, b};
+    }
+  }
+  return std::nullopt;
+}
 
 template <const char* kLanguage>
 void rule(NodeContext& c) {
@@ -24,12 +40,14 @@ void rule(NodeContext& c) {
     q.language = kLanguage;
     q.file = c.param(r, "file").text();
     if (c.checked().type->param("start") != nullptr) q.start = c.param(r, "start").text();
-    const std::optional<kernel::Polygon> footprint = world_footprint(c, in, &q.elevation);
-    if (!footprint) {
-      c.fail(in, q.language + " rules need a flat, horizontal shape (a footprint)");
+    const shape::Shape& s = c.tree()[c.entities()[in].shape];
+    if (s.outline == nullptr) {
+      c.fail(in, q.language + " rules need a flat shape (a lot, a facade)");
       continue;
     }
-    q.footprint = *footprint;
+    q.outline = *s.outline;
+    q.scope = s.scope;
+    q.first_edge = scope_x_edge(*s.outline);
     for (const auto& [name, value] : c.stored_attributes(in)) {
       switch (value.type()) {
         case ValueType::kBool:

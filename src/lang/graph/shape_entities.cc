@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "shape/scope.h"
+
 namespace insula::lang::graph {
 
 std::optional<EntityId> footprint_entity(NodeContext& c, std::size_t round, std::uint32_t position,
@@ -16,6 +18,32 @@ std::optional<EntityId> footprint_entity(NodeContext& c, std::size_t round, std:
   const EntityId e = c.create(round, EntityType::kShape, position);
   c.entities()[e].shape = root.id;
   return e;
+}
+
+std::optional<EntityId> footprint_child(NodeContext& c, EntityId parent,
+                                        const kernel::Polygon& footprint, double elevation,
+                                        std::string& error) {
+  const shape::RootResult root = c.tree().create_root(footprint, elevation);
+  if (!root.ok()) {
+    error = root.error;
+    return std::nullopt;
+  }
+  const EntityId e = c.entities().derive(parent, EntityType::kShape);
+  c.entities()[e].shape = root.id;
+  return e;
+}
+
+kernel::Mesh world_mesh(NodeContext& c, EntityId entity) {
+  const Entity& e = c.entities()[entity];
+  kernel::Mesh out;
+  if (e.type != EntityType::kShape) return out;
+  if (e.model != nullptr) {
+    for (const shape::Part& part : e.model->parts) out.append(part.mesh);
+    return out;
+  }
+  const shape::Shape& s = c.tree()[e.shape];
+  if (s.mesh != nullptr) out = shape::mesh_to_world(*s.mesh, s.scope);
+  return out;
 }
 
 EntityId shape_child(NodeContext& c, EntityId parent, shape::ShapeId shape) {

@@ -18,6 +18,15 @@ std::optional<EntityId> footprint_entity(NodeContext& c, std::size_t round, std:
                                          const kernel::Polygon& footprint, double elevation,
                                          std::string& error);
 
+// A shape entity descending from `parent` (a path's blocks, a query's pieces) whose shape is a
+// flat root over `footprint` at `elevation`; nullopt with `error` for a degenerate footprint.
+std::optional<EntityId> footprint_child(NodeContext& c, EntityId parent,
+                                        const kernel::Polygon& footprint, double elevation,
+                                        std::string& error);
+
+// The world-space mesh of a shape entity (a rule node's model: its parts), empty for others.
+kernel::Mesh world_mesh(NodeContext& c, EntityId entity);
+
 // Runs registry operation `op` on the shape of `entity`; each child becomes a shape entity
 // descending from it (keeping its material). Returns false (after c.fail) when the operation
 // fails. `pieces` receives the operation's piece numbers.
