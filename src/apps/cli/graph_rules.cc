@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 
 #include "apps/cli/asset_folders.h"
 #include "apps/cli/input_file.h"
@@ -135,14 +136,24 @@ std::shared_ptr<const lang::graph::Model> FrontEndRules::run(
   shape::Scene scene = cga::to_scene(*program->cga, lots, results);
   auto model = std::make_shared<lang::graph::Model>();
   model->materials = std::move(scene.materials);
+  // One part per symbol and attribute set: a facade's hundreds of terminals become a dozen
+  // meshes, so a city of 10,000 lots keeps its parts countable (docs/graph-executor.md).
+  std::map<std::pair<std::string, shape::AttributeMap>, std::size_t> part_of;
   for (shape::Building& b : scene.buildings) {
     for (shape::Part& p : b.parts) {
       // The lot was the shape's outline in scope space: back to the world.
       for (kernel::Vec3& v : p.mesh.positions()) v = request.scope.to_world(v);
       if (p.instance_of != nullptr) {
         p.instance_transform = shape::scope_transform(request.scope) * p.instance_transform;
+        model->parts.push_back(std::move(p));
+        continue;
       }
-      model->parts.push_back(std::move(p));
+      const auto [it, added] = part_of.try_emplace({p.name, p.attributes}, model->parts.size());
+      if (added) {
+        model->parts.push_back(std::move(p));
+      } else {
+        model->parts[it->second].mesh.append(p.mesh);
+      }
     }
   }
   return model;

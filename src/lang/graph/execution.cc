@@ -1,6 +1,7 @@
 #include "lang/graph/execution.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include "lang/graph/context.h"
 #include "lang/graph/nodes.h"
@@ -186,9 +187,7 @@ void GraphExecution::execute(std::size_t node) {
   const CheckedNode& n = graph_.nodes[node];
   Rounds rounds;
   take_inputs(node, rounds);
-  NodeRuns& runs = run_.node_runs(prefix_ + n.node->id);
-  ++runs.executions;
-  runs.rounds += rounds.count;
+  const auto start = std::chrono::steady_clock::now();
   std::vector<std::vector<EntityId>> outputs(n.outputs.size());
   if (n.type == nullptr) {
     run_subgraph(node, rounds, outputs);
@@ -201,6 +200,10 @@ void GraphExecution::execute(std::size_t node) {
     ExecutionContext context(*this, node, rounds, outputs);
     impl->run(context);
   }
+  NodeRuns& runs = run_.node_runs(prefix_ + n.node->id);
+  ++runs.executions;
+  runs.rounds += rounds.count;
+  runs.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   transfer(node, outputs);
 }
 

@@ -82,6 +82,7 @@ struct PortCount {
 struct NodeRuns {
   std::uint64_t executions = 0;
   std::uint64_t rounds = 0;
+  double seconds = 0;  // wall time in the node's executions (its subgraph's included)
 };
 
 // A result entity: what left a leaf port (§1), in result order.

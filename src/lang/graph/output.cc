@@ -1,6 +1,8 @@
 #include "lang/graph/output.h"
 
+#include <array>
 #include <map>
+#include <tuple>
 
 #include "lang/graph/properties.h"
 #include "shape/scope.h"
@@ -76,6 +78,19 @@ kernel::Mesh part_mesh(const RunResult& run, const Entity& e) {
 
 nlohmann::ordered_json entity_record(const RunResult& run, EntityId id, const std::string& port);
 
+using MaterialKey = std::tuple<std::string, std::array<float, 4>, const shape::Image*>;
+
+// The scene's index of a material equal to `m` (name, colour, image), appended when new.
+kernel::MaterialId material_index(shape::Scene& scene,
+                                  std::map<MaterialKey, kernel::MaterialId>& known,
+                                  const shape::Material& m) {
+  const MaterialKey key{m.name, m.rgba, m.image.get()};
+  const auto [it, added] =
+      known.try_emplace(key, static_cast<kernel::MaterialId>(scene.materials.size()));
+  if (added) scene.materials.push_back(m);
+  return it->second;
+}
+
 }  // namespace
 
 shape::Scene to_scene(const RunResult& run) {
@@ -94,6 +109,7 @@ shape::Scene to_scene(const RunResult& run) {
     if (name == "building") building_key = key;
   }
   std::map<std::string, std::size_t> by_value;
+  std::map<MaterialKey, kernel::MaterialId> known;  // rule nodes' materials, each once
   for (const ResultEntity& r : run.results) {
     const Entity& e = run.entities[r.entity];
     if (e.type == EntityType::kLight || e.type == EntityType::kPoint) {
@@ -131,8 +147,7 @@ shape::Scene to_scene(const RunResult& run) {
       // A rule node's parts: their materials appended to the scene's table.
       std::vector<kernel::MaterialId> remap(e.model->materials.size(), 0);
       for (std::size_t m = 1; m < e.model->materials.size(); ++m) {
-        remap[m] = static_cast<kernel::MaterialId>(scene.materials.size());
-        scene.materials.push_back(e.model->materials[m]);
+        remap[m] = material_index(scene, known, e.model->materials[m]);
       }
       for (const shape::Part& part : e.model->parts) {
         shape::Part copy = part;
@@ -237,7 +252,7 @@ nlohmann::ordered_json graph_report(const RunResult& run) {
   g["cyclic_edges"] = run.cyclic_edges;
   nlohmann::ordered_json runs = nlohmann::ordered_json::object();
   for (const auto& [id, n] : run.node_runs) {
-    runs[id] = {{"executions", n.executions}, {"rounds", n.rounds}};
+    runs[id] = {{"executions", n.executions}, {"rounds", n.rounds}, {"seconds", n.seconds}};
   }
   g["node_runs"] = runs;
   nlohmann::ordered_json leaves = nlohmann::ordered_json::object();
