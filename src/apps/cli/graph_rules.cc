@@ -6,6 +6,9 @@
 
 #include "apps/cli/asset_folders.h"
 #include "apps/cli/input_file.h"
+#include "lang/bldg/builder.h"
+#include "lang/bldg/floorplan.h"
+#include "lang/bldg/parser.h"
 #include "lang/cga/checker.h"
 #include "lang/cga/compile.h"
 #include "lang/cga/derive.h"
@@ -19,7 +22,8 @@ struct FrontEndRules::Program {
   std::unique_ptr<base::Source> source;
   std::unique_ptr<cga::Grammar> grammar;
   std::shared_ptr<const cga::Program> cga;
-  std::string error;  // why it cannot run
+  std::unique_ptr<lang::bldg::Building> building;  // a .bldg grammar (its outline replaced)
+  std::string error;                               // why it cannot run
 };
 
 FrontEndRules::FrontEndRules(std::string folder, std::vector<std::string> attributes,
@@ -42,23 +46,31 @@ std::string rendered(const std::vector<base::Diagnostic>& diagnostics, const bas
   return text;
 }
 
-std::unique_ptr<FrontEndRules::Program> read_cga(const std::string& folder,
-                                                 const lang::graph::RuleRequest& request,
-                                                 const std::vector<std::string>& attributes) {
-  auto program = std::make_unique<FrontEndRules::Program>();
+// The program's text from the graph's folder (confined like assets), or false with the reason
+// in program.error.
+bool read_source(const std::string& folder, const lang::graph::RuleRequest& request,
+                 FrontEndRules::Program& program) {
   std::string why;
   const std::optional<std::filesystem::path> path =
       find_in_folders({folder}, request.file, request.file, why);
   const std::optional<std::string> text =
       path ? read_input_file(path->string()) : std::optional<std::string>();
   if (!text) {
-    program->error = "cannot read rule file '" + request.file + "'";
-    if (!why.empty()) program->error += ": " + why;
-    return program;
+    program.error = "cannot read rule file '" + request.file + "'";
+    if (!why.empty()) program.error += ": " + why;
+    return false;
   }
   const std::string shown =
       (std::filesystem::path(folder) / request.file).lexically_normal().string();
-  program->source = std::make_unique<base::Source>(shown, *text);
+  program.source = std::make_unique<base::Source>(shown, *text);
+  return true;
+}
+
+std::unique_ptr<FrontEndRules::Program> read_cga(const std::string& folder,
+                                                 const lang::graph::RuleRequest& request,
+                                                 const std::vector<std::string>& attributes) {
+  auto program = std::make_unique<FrontEndRules::Program>();
+  if (!read_source(folder, request, *program)) return program;
   base::Result<cga::Grammar> grammar = cga::parse(*program->source);
   if (!grammar.ok()) {
     program->error = rendered(grammar.diagnostics(), *program->source);
@@ -85,6 +97,49 @@ std::unique_ptr<FrontEndRules::Program> read_cga(const std::string& folder,
   return program;
 }
 
+std::unique_ptr<FrontEndRules::Program> read_bldg(const std::string& folder,
+                                                  const lang::graph::RuleRequest& request) {
+  auto program = std::make_unique<FrontEndRules::Program>();
+  if (!read_source(folder, request, *program)) return program;
+  base::Result<lang::bldg::Building> building = lang::bldg::parse_building(*program->source);
+  if (!building.ok()) {
+    program->error = rendered(building.diagnostics(), *program->source);
+    return program;
+  }
+  program->building = std::make_unique<lang::bldg::Building>(std::move(building.value()));
+  return program;
+}
+
+// A .bldg building on the shape's outline (the default restriction rules): its parts in scope
+// space, or null with the floor planner's diagnostics.
+std::shared_ptr<lang::graph::Model> run_bldg(const FrontEndRules::Program& program,
+                                             const lang::graph::RuleRequest& request,
+                                             std::string& error) {
+  lang::bldg::Building building = *program.building;
+  building.outline = request.outline;
+  const lang::bldg::Restrictions rules;
+  lang::bldg::FloorPlanOptions options;
+  options.file = program.source->name();
+  base::Result<lang::bldg::FloorPlan> plan = lang::bldg::make_floor_plan(building, rules, options);
+  if (!plan.ok()) {
+    error = rendered(plan.diagnostics(), *program.source);
+    return nullptr;
+  }
+  lang::bldg::BuildResult built = lang::bldg::build_building(building, plan.value(), rules);
+  auto model = std::make_shared<lang::graph::Model>();
+  model->materials = std::move(built.materials);
+  model->parts = std::move(built.building.parts);
+  return model;
+}
+
+// The lot was the shape's outline in scope space: the part goes back to the world.
+void place(shape::Part& part, const shape::Scope& scope) {
+  for (kernel::Vec3& v : part.mesh.positions()) v = scope.to_world(v);
+  if (part.instance_of != nullptr) {
+    part.instance_transform = shape::scope_transform(scope) * part.instance_transform;
+  }
+}
+
 }  // namespace
 
 const FrontEndRules::Program* FrontEndRules::find(const lang::graph::RuleRequest& request) const {
@@ -95,6 +150,8 @@ const FrontEndRules::Program* FrontEndRules::find(const lang::graph::RuleRequest
     std::unique_ptr<Program> program;
     if (request.language == "cga") {
       program = read_cga(folder_, request, attributes_);
+    } else if (request.language == "bldg") {
+      program = read_bldg(folder_, request);
     } else {
       program = std::make_unique<Program>();
       program->error = "rule.";
@@ -119,6 +176,13 @@ std::shared_ptr<const lang::graph::Model> FrontEndRules::run(
     error = program->error;
     return nullptr;
   }
+  if (program->building != nullptr) {
+    std::shared_ptr<lang::graph::Model> model = run_bldg(*program, request, error);
+    if (model != nullptr) {
+      for (shape::Part& p : model->parts) place(p, request.scope);
+    }
+    return model;
+  }
   cga::Lot lot;
   lot.polygons.push_back(request.outline);
   if (request.first_edge) lot.first_edges.push_back(*request.first_edge);
@@ -141,10 +205,8 @@ std::shared_ptr<const lang::graph::Model> FrontEndRules::run(
   std::map<std::pair<std::string, shape::AttributeMap>, std::size_t> part_of;
   for (shape::Building& b : scene.buildings) {
     for (shape::Part& p : b.parts) {
-      // The lot was the shape's outline in scope space: back to the world.
-      for (kernel::Vec3& v : p.mesh.positions()) v = request.scope.to_world(v);
+      place(p, request.scope);
       if (p.instance_of != nullptr) {
-        p.instance_transform = shape::scope_transform(request.scope) * p.instance_transform;
         model->parts.push_back(std::move(p));
         continue;
       }
