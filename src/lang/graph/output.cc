@@ -78,6 +78,24 @@ kernel::Mesh part_mesh(const RunResult& run, const Entity& e) {
 
 nlohmann::ordered_json entity_record(const RunResult& run, EntityId id, const std::string& port);
 
+// A building's parts by name and attributes: parts that agree in both become one mesh (a
+// building of four CGA facades has a dozen parts, not hundreds), so large cities stay light in
+// every format.
+using PartIndex = std::map<std::pair<std::string, shape::AttributeMap>, std::size_t>;
+
+void add_part(shape::Building& building, PartIndex& index, shape::Part part) {
+  if (part.instance_of != nullptr) {
+    building.parts.push_back(std::move(part));
+    return;
+  }
+  const auto [it, added] = index.try_emplace({part.name, part.attributes}, building.parts.size());
+  if (added) {
+    building.parts.push_back(std::move(part));
+  } else {
+    building.parts[it->second].mesh.append(part.mesh);
+  }
+}
+
 using MaterialKey = std::tuple<std::string, std::array<float, 4>, const shape::Image*>;
 
 // The scene's index of a material equal to `m` (name, colour, image), appended when new.
@@ -110,6 +128,7 @@ shape::Scene to_scene(const RunResult& run) {
   }
   std::map<std::string, std::size_t> by_value;
   std::map<MaterialKey, kernel::MaterialId> known;  // rule nodes' materials, each once
+  std::vector<PartIndex> part_index;                // per building
   for (const ResultEntity& r : run.results) {
     const Entity& e = run.entities[r.entity];
     if (e.type == EntityType::kLight || e.type == EntityType::kPoint) {
@@ -141,6 +160,7 @@ shape::Scene to_scene(const RunResult& run) {
         b.attributes[name] = export_value(*value);
       }
       scene.buildings.push_back(std::move(b));
+      part_index.emplace_back();
     }
     shape::Building& building = scene.buildings[index];
     if (e.model != nullptr) {
@@ -159,7 +179,7 @@ shape::Scene to_scene(const RunResult& run) {
           mesh.add_face(part.mesh.face(f), tag);
         }
         copy.mesh = std::move(mesh);
-        building.parts.push_back(std::move(copy));
+        add_part(building, part_index[index], std::move(copy));
       }
       continue;
     }
@@ -169,7 +189,7 @@ shape::Scene to_scene(const RunResult& run) {
       part.attributes[name] = export_value(*value);
     }
     part.mesh = part_mesh(run, e);
-    if (!part.mesh.empty()) building.parts.push_back(std::move(part));
+    if (!part.mesh.empty()) add_part(building, part_index[index], std::move(part));
   }
   std::erase_if(scene.buildings, [](const shape::Building& b) { return b.parts.empty(); });
   return scene;
