@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "lang/cga/operations.h"
+#include "lang/graph/reference.h"
 #include "lang/lua/operations.h"
 #include "shape/operation.h"
 
@@ -17,8 +18,7 @@ std::string reference_page() {
   const shape::FrontEndSpellings front_ends[] = {
       {"CGA", lang::cga::cga_spellings},
       {"Lua", lua::lua_spellings},
-      // The graph front-end (issue 12) will call the registry by name; its column fills in then.
-      {"graph (coming)", nullptr},
+      {"graph", lang::graph::graph_spellings},
   };
   return shape::operations_reference_markdown(front_ends);
 }
