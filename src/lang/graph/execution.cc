@@ -122,8 +122,32 @@ void GraphExecution::maybe_ready(std::size_t node) {
   if (active_[node] && inputs_ready(node)) ready_.insert(order_.index[node]);
 }
 
-void GraphExecution::arrive(std::size_t node, std::size_t port, EntityId entity) {
+void GraphExecution::arrive(std::size_t node, std::size_t port, EntityId entity,
+                            std::string_view from) {
   const ResolvedPort& p = graph_.nodes[node].inputs[port];
+  // §4: an edge from a wider type is accepted and each entity checked as it arrives.
+  const EntityType type = run_.out.entities[entity].type;
+  if (!is_subtype(type, p.type)) {
+    std::string message(1, '\'');
+    message += graph_.nodes[node].node->id;
+    message += '.';
+    message += p.name;
+    message += "' accepts ";
+    message += entity_type_name(p.type);
+    if (type == EntityType::kEntity) {
+      message += " entities; an entity arrived";
+    } else {
+      message += " entities; a ";
+      message += entity_type_name(type);
+      message += " entity arrived";
+    }
+    if (!from.empty()) {
+      message += " from '";
+      message += from;
+      message += '\'';
+    }
+    fail_at("G052", std::move(message), graph_.nodes[node].node->id_offset);
+  }
   if (p.blocked) {
     ++run_.out.blocked[label(node, p.name)];
     return;
@@ -222,8 +246,9 @@ void GraphExecution::transfer(std::size_t node, std::vector<std::vector<EntityId
     for (std::size_t e : port.edges) {
       const CheckedEdge& edge = graph_.edges[e];
       if (!active_[edge.to_node]) continue;
+      const std::string from = n.node->id + "." + port.name;
       for (EntityId entity : produced) {
-        arrive(edge.to_node, edge.to_port, used ? run_.out.entities.copy(entity) : entity);
+        arrive(edge.to_node, edge.to_port, used ? run_.out.entities.copy(entity) : entity, from);
       }
       used = true;
       targets.push_back(edge.to_node);

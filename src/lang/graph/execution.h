@@ -47,7 +47,8 @@ class GraphExecution {
   bool is_source(std::size_t node) const;
   bool inputs_ready(std::size_t node) const;
   void maybe_ready(std::size_t node);
-  void arrive(std::size_t node, std::size_t port, EntityId entity);
+  // `from` names the output port it left ("pick.true"; empty for a gate) for G052.
+  void arrive(std::size_t node, std::size_t port, EntityId entity, std::string_view from = {});
   void count_round(std::size_t node);
   void take_inputs(std::size_t node, Rounds& rounds);
   void execute(std::size_t node);

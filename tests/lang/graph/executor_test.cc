@@ -273,3 +273,26 @@ TEST(Executor, SubgraphNestingLimit) {
 
 }  // namespace
 }  // namespace insula::lang::graph::testing
+
+namespace insula::lang::graph::testing {
+namespace {
+
+// §4: an entity output into a shape input is accepted at check time; a non-shape arriving stops
+// the run with G052.
+TEST(Executor, NarrowerInputChecksArrivals) {
+  const TestRun t = run_text(graph(R"json(
+    "nodes": [
+      { "id": "carrier", "type": "create.entity" },
+      { "id": "groups", "type": "list.group" },
+      { "id": "members", "type": "list.ungroup" },
+      { "id": "mass", "type": "shape.extrude", "params": { "height": 3 } } ],
+    "edges": [ "carrier.out -> groups.in", "groups.out -> members.in", "members.out -> mass.in" ])json"));
+  ASSERT_FALSE(t.ok());
+  EXPECT_NE(t.errors.find("error[G052]: 'mass.in' accepts shape entities; an entity arrived from "
+                          "'members.out'"),
+            std::string::npos)
+      << t.errors;
+}
+
+}  // namespace
+}  // namespace insula::lang::graph::testing
