@@ -1,12 +1,14 @@
-// libFuzzer target for the graph front-end's first stage (docs/graph-executor.md): the positioned
-// JSON reader, the .graph.json reader and the checker.
+// libFuzzer target for the graph front-end (docs/graph-executor.md): the positioned JSON reader,
+// the .graph.json reader, the checker and the executor (under small limits).
 // For any bytes (read as a top-level graph whose subgraph files all hold the same bytes):
 //   - read_graph() fails with at least one error, every diagnostic positioned (or naming its file
 //     only for a failed subgraph file) with a G or W code, or succeeds with no error;
 //   - check() is ok exactly when it reports no error, every diagnostic positioned and coded;
 //   - when ok, every graph's two execution orders hold each active node once, indices are a
 //     permutation, and a cyclic edge stays inside its strongly connected component;
-//   - a second read and check give the same diagnostics and the same order dump.
+//   - a run is ok exactly when it reports no error, every diagnostic positioned and coded, each
+//     result entity once;
+//   - a second read, check and run give the same diagnostics, order dump and result counts.
 // Builds as fuzz/plasm_fuzz.cc: libFuzzer with clang and INSULA_FUZZ=ON, a replay main with
 // INSULA_FUZZ_REPLAY; tests/lang/graph/graph_fuzz_replay_test.cc includes it with
 // INSULA_FUZZ_NO_ENTRY.
@@ -20,6 +22,7 @@
 
 #include "base/diagnostic.h"
 #include "lang/graph/checker.h"
+#include "lang/graph/executor.h"
 #include "lang/graph/reader.h"
 
 namespace insula::fuzz {
@@ -57,6 +60,26 @@ inline std::string order_problem(const lang::graph::CheckedGraph& g,
   return {};
 }
 
+// A run under small limits: ok exactly when it reports no error, every diagnostic positioned
+// and coded, every result entity once; the transcript gets its diagnostics and result counts.
+inline std::string run_problem(const lang::graph::Document& document,
+                               const lang::graph::CheckResult& checked, std::string& transcript) {
+  lang::graph::RunOptions options;
+  options.limits_cap = lang::graph::Limits{2000, 2000, 8};
+  const lang::graph::RunResult run = lang::graph::run_graph(document, checked, options);
+  for (const base::Diagnostic& d : run.diagnostics) transcript += base::render(d) + "\n";
+  if (run.ok == base::has_errors(run.diagnostics)) return "run ok disagrees with its errors";
+  if (const std::string p = graph_diagnostics_problem(run.diagnostics); !p.empty()) return p;
+  std::vector<bool> seen(run.entities.size(), false);
+  for (const lang::graph::ResultEntity& r : run.results) {
+    if (r.entity >= seen.size() || seen[r.entity]) return "a result entity twice or unknown";
+    seen[r.entity] = true;
+  }
+  transcript += std::to_string(run.results.size()) + " results, " +
+                std::to_string(run.entities.size()) + " entities\n";
+  return {};
+}
+
 // One read and check: the problem found, and the text that a second run must repeat.
 inline std::string read_and_check(std::string_view bytes, std::string& transcript) {
   const base::Source source("fuzz.graph.json", std::string(bytes));
@@ -82,7 +105,7 @@ inline std::string read_and_check(std::string_view bytes, std::string& transcrip
     if (const std::string p = order_problem(g, g.encapsulated, true); !p.empty()) return p;
   }
   transcript += lang::graph::dump_order(doc.value(), checked);
-  return {};
+  return run_problem(doc.value(), checked, transcript);
 }
 
 // Empty when every contract above holds for `bytes`, else what broke.

@@ -98,7 +98,10 @@ void GraphExecution::run() {
   for (std::size_t i = 0; i < graph_.nodes.size(); ++i) {
     for (std::size_t p = 0; p < queues_[i].size(); ++p) {
       if (queues_[i][p].empty()) continue;
-      run_.out.unprocessed[label(i, graph_.nodes[i].inputs[p].name)] += queues_[i][p].size();
+      const std::string where = label(i, graph_.nodes[i].inputs[p].name);
+      run_.out.unprocessed[where] += queues_[i][p].size();
+      run_.unprocessed_at.try_emplace(
+          where, RunError{"W010", "", graph_.graph, graph_.nodes[i].node->id_offset, notes_});
       run_.live -= static_cast<std::int64_t>(queues_[i][p].size());
     }
   }

@@ -88,6 +88,14 @@ RunResult run_graph(const Document& document, const CheckResult& checked,
   out.materials.push_back({"default", {0.8F, 0.8F, 0.8F, 1.0F}});
   RunState state(document, checked, options, out);
   state.root_limits = root.limits;
+  if (options.limits_cap) {
+    state.root_limits.max_rounds =
+        std::min(state.root_limits.max_rounds, options.limits_cap->max_rounds);
+    state.root_limits.max_entities =
+        std::min(state.root_limits.max_entities, options.limits_cap->max_entities);
+    state.root_limits.max_subgraph_depth =
+        std::min(state.root_limits.max_subgraph_depth, options.limits_cap->max_subgraph_depth);
+  }
   for (std::size_t i = 0; i < document.graphs.size() && i < checked.graphs.size(); ++i) {
     state.checked_of[document.graphs[i].get()] = &checked.graphs[i];
   }

@@ -71,6 +71,8 @@ struct RunOptions {
   const shape::AssetProvider* assets = nullptr;
   const RuleRunner* rules = nullptr;
   LotReader lots;
+  // Lower bounds than the graph's own limits (fuzzing, previews); none: the graph's.
+  std::optional<Limits> limits_cap;
   // Polled between node executions; true stops the run (nothing is written).
   std::function<bool()> interrupted;
 };
