@@ -9,6 +9,12 @@ namespace insula::lang::graph {
 namespace {
 
 constexpr int kMaxDepth = 100;
+// Chains of binary operators and postfixes are parsed by loops, not under the nesting bound, yet
+// build left-nested trees as deep as they are long, which the type checker, the evaluator and
+// Expr's destructor walk recursively. Bounding the operators bounds that depth: a 10,000-deep
+// chain took 4 to 6 MB of stack in a Release build (the evaluator's frames hold Values), a
+// 1,000-deep one a tenth of that, which leaves room for sanitizers and nested subgraph runs.
+constexpr int kMaxOperators = 1000;
 
 bool letter(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
@@ -48,6 +54,12 @@ class Parser {
     at_ = after;
     return true;
   }
+  // Counts one more operator node; false (G023) past kMaxOperators, before the tree grows deeper.
+  bool another_operator(std::size_t where) {
+    if (++operators_ <= kMaxOperators) return true;
+    fail("expression too long (more than " + std::to_string(kMaxOperators) + " operators)", where);
+    return false;
+  }
   Expr binary(std::string op, std::size_t where, Expr l, Expr r) {
     Expr e;
     e.kind = Expr::Kind::kBinary;
@@ -71,6 +83,7 @@ class Parser {
       skip();
       const std::size_t where = at_;
       if (!word("or")) break;
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> r = conjunction();
       if (!r) return std::nullopt;
       l = binary("or", where, std::move(*l), std::move(*r));
@@ -83,6 +96,7 @@ class Parser {
       skip();
       const std::size_t where = at_;
       if (!word("and")) break;
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> r = negation();
       if (!r) return std::nullopt;
       l = binary("and", where, std::move(*l), std::move(*r));
@@ -94,6 +108,7 @@ class Parser {
     const std::size_t where = at_;
     if (word("not")) {
       if (++depth_ > kMaxDepth) return fail("expression nested deeper than 100 levels", where);
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> inner = negation();
       --depth_;
       if (!inner) return std::nullopt;
@@ -115,6 +130,7 @@ class Parser {
       if (t_.substr(at_, std::string_view(op).size()) != op) continue;
       const std::size_t where = at_;
       at_ += std::string_view(op).size();
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> r = sum();
       if (!r) return std::nullopt;
       return binary(op, where, std::move(*l), std::move(*r));
@@ -127,6 +143,7 @@ class Parser {
       skip();
       if (at_ >= t_.size() || (t_[at_] != '+' && t_[at_] != '-')) break;
       const std::size_t where = at_++;
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> r = product();
       if (!r) return std::nullopt;
       l = binary(std::string(1, t_[where]), where, std::move(*l), std::move(*r));
@@ -139,6 +156,7 @@ class Parser {
       skip();
       if (at_ >= t_.size() || (t_[at_] != '*' && t_[at_] != '/' && t_[at_] != '%')) break;
       const std::size_t where = at_++;
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> r = unary();
       if (!r) return std::nullopt;
       l = binary(std::string(1, t_[where]), where, std::move(*l), std::move(*r));
@@ -150,6 +168,7 @@ class Parser {
     if (at_ < t_.size() && t_[at_] == '-') {
       const std::size_t where = at_++;
       if (++depth_ > kMaxDepth) return fail("expression nested deeper than 100 levels", where);
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> inner = unary();
       --depth_;
       if (!inner) return std::nullopt;
@@ -169,6 +188,7 @@ class Parser {
       skip();
       if (at_ < t_.size() && t_[at_] == '.') {
         const std::size_t where = at_++;
+        if (!another_operator(where)) return std::nullopt;
         if (at_ >= t_.size() || (t_[at_] != 'x' && t_[at_] != 'y' && t_[at_] != 'z') ||
             (at_ + 1 < t_.size() && (letter(t_[at_ + 1]) || digit(t_[at_ + 1])))) {
           return fail("expected x, y or z after '.'", at_);
@@ -183,6 +203,7 @@ class Parser {
         e = std::move(m);
       } else if (at_ < t_.size() && t_[at_] == '[') {
         const std::size_t where = at_++;
+        if (!another_operator(where)) return std::nullopt;
         std::optional<Expr> index = expr();
         if (!index) return std::nullopt;
         skip();
@@ -339,6 +360,7 @@ class Parser {
   ExprError& error_;
   std::size_t at_ = 0;
   int depth_ = 0;
+  int operators_ = 0;
 };
 
 struct Function {

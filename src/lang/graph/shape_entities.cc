@@ -2,6 +2,9 @@
 #include "lang/graph/executor.h"
 
 #include <cmath>
+#include <memory>
+
+#include "shape/scope.h"
 
 namespace insula::lang::graph {
 
@@ -16,6 +19,24 @@ std::optional<EntityId> footprint_entity(NodeContext& c, std::size_t round, std:
   const EntityId e = c.create(round, EntityType::kShape, position);
   c.entities()[e].shape = root.id;
   return e;
+}
+
+EntityId merged_entity(NodeContext& c, std::size_t round, std::uint32_t position,
+                       std::span<const EntityId> sources, const kernel::Mesh& world_mesh) {
+  const shape::Scope scope = shape::fit_scope(world_mesh, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  const EntityId out = c.create(round, EntityType::kShape, position);
+  c.entities()[out].shape = c.tree().add_root(
+      scope, std::make_shared<kernel::Mesh>(shape::mesh_to_local(world_mesh, scope)));
+  c.entities()[out].material = c.entities()[sources.front()].material;
+  for (const auto& [key, value] : c.entities().attributes(sources.front())) {
+    bool common = true;
+    for (EntityId e : sources) {
+      const Value* v = c.entities().attribute(e, key);
+      common = common && v != nullptr && *v == *value;
+    }
+    if (common) c.entities().set_attribute(out, key, *value);
+  }
+  return out;
 }
 
 EntityId shape_child(NodeContext& c, EntityId parent, shape::ShapeId shape) {
@@ -44,8 +65,7 @@ bool run_operation(NodeContext& c, EntityId entity, const std::string& op,
   return true;
 }
 
-std::optional<kernel::Polygon> world_footprint(NodeContext& c, EntityId entity,
-                                               double* elevation) {
+std::optional<kernel::Polygon> world_footprint(NodeContext& c, EntityId entity, double* elevation) {
   const Entity& e = c.entities()[entity];
   if (e.type != EntityType::kShape) return std::nullopt;
   const shape::Shape& s = c.tree()[e.shape];
