@@ -63,6 +63,28 @@ TEST(MergeNodes, SeparatedBoxesStaySeparateShapesInOrder) {
   }
 }
 
+// Fig. 6's use: façade tiles of all four sides, merged by adjacency, are one shape whose tiles
+// join into one face per side (the corners are shared edges, not coplanar).
+TEST(MergeNodes, FacadeTilesAroundCornersJoinPerSide) {
+  const TestRun t = run_text(graph(R"(
+    "nodes": [
+      { "id": "lot", "type": "create.rectangle", "params": { "width": 8, "depth": 3 } },
+      { "id": "mass", "type": "shape.extrude", "params": { "height": 5 } },
+      { "id": "faces", "type": "shape.comp", "augment": [ { "faces": "side", "out": "side" } ] },
+      { "id": "tiles", "type": "shape.repeat", "params": { "axis": "x", "size": 1 } },
+      { "id": "merged", "type": "shape.adjacency_merge" } ],
+    "edges": [ "lot.out -> mass.in", "mass.out -> faces.in", "faces.side -> tiles.in",
+               "tiles.out -> merged.in" ])"));
+  ASSERT_TRUE(t.ok()) << t.errors;
+  const std::vector<EntityId> out = t.at("merged.out");
+  ASSERT_EQ(out.size(), 1U);
+  EXPECT_EQ(mesh(t, out[0]).face_count(), 4U);
+  EXPECT_NEAR(t.area(out[0]), 2 * (8 + 3) * 5, 1e-9);
+  const kernel::MeshCheck c = kernel::check(mesh(t, out[0]));
+  EXPECT_TRUE(c.oriented);
+  EXPECT_EQ(c.boundary_edges, 8U);  // the top and bottom rings, one edge per side each
+}
+
 // A box split in two and merged back has 12 faces; unify welds it into the box's 6.
 TEST(MergeNodes, UnifyJoinsASplitBox) {
   const TestRun t = run_text(graph(R"(
