@@ -9,12 +9,12 @@ namespace insula::lang::graph {
 namespace {
 
 constexpr int kMaxDepth = 100;
-// Chains of binary operators and postfixes are parsed by loops, not under the nesting bound, yet
-// build left-nested trees as deep as they are long, which the type checker, the evaluator and
-// Expr's destructor walk recursively. Bounding the operators bounds that depth: a 10,000-deep
-// chain took 4 to 6 MB of stack in a Release build (the evaluator's frames hold Values), a
-// 1,000-deep one a tenth of that, which leaves room for sanitizers and nested subgraph runs.
-constexpr int kMaxOperators = 1000;
+// Chains of binary operators and postfixes are parsed by loops, not under the nesting bound, and
+// build left-nested trees as deep as they are long. The type checker and the evaluator walk such
+// spines in loops, but Expr's copy and destructor still recurse along them; bounding the
+// operators bounds that depth: a 20,000-deep chain is copied, run and destroyed by `insula build`
+// within 2 MB of stack (docs/graph-executor.md, "Expressions").
+constexpr int kMaxOperators = 20000;
 
 bool letter(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
@@ -440,7 +440,28 @@ class TypeChecker {
   TypeChecker(std::string_view text, const ExprScope& scope, ExprError& error)
       : t_(text), scope_(scope), error_(error) {}
 
+  // Chains of binary operators and postfixes nest to the left without the parser counting a
+  // level, so their left spine is walked in a loop (as the evaluator does): recursion only
+  // follows the levels the parser bounds.
   std::optional<ValueType> type(const Expr& e) {
+    std::vector<const Expr*> spine;
+    const Expr* leaf = &e;
+    while (chained(*leaf)) {
+      spine.push_back(leaf);
+      leaf = &leaf->args[0];
+    }
+    std::optional<ValueType> t = primary(*leaf);
+    for (auto it = spine.rbegin(); t && it != spine.rend(); ++it) t = apply(**it, *t);
+    return t;
+  }
+
+ private:
+  static bool chained(const Expr& e) {
+    return e.kind == Expr::Kind::kBinary || e.kind == Expr::Kind::kMember ||
+           e.kind == Expr::Kind::kIndex;
+  }
+
+  std::optional<ValueType> primary(const Expr& e) {
     switch (e.kind) {
       case Expr::Kind::kNumber:
         return ValueType::kNumber;
@@ -477,32 +498,32 @@ class TypeChecker {
         if (*a == ValueType::kAny || numeric(*a) || *a == ValueType::kVec3) return *a;
         return mismatch(e.args[0], *a, "-", "numbers", e.at);
       }
-      case Expr::Kind::kMember: {
-        const std::optional<ValueType> a = type(e.args[0]);
-        if (!a) return std::nullopt;
-        if (*a != ValueType::kVec3 && *a != ValueType::kAny) {
-          return mismatch(e.args[0], *a, "." + e.name, "a vec3", e.at);
-        }
-        return ValueType::kNumber;
-      }
-      case Expr::Kind::kIndex: {
-        const std::optional<ValueType> a = type(e.args[0]);
-        const std::optional<ValueType> i = a ? type(e.args[1]) : std::nullopt;
-        if (!i) return std::nullopt;
-        if (*i != ValueType::kInteger && *i != ValueType::kAny) {
-          return mismatch(e.args[1], *i, "[]", "an integer index", e.at);
-        }
-        if (*a == ValueType::kVec3) return ValueType::kNumber;
-        if (*a == ValueType::kList || *a == ValueType::kAny) return ValueType::kAny;
-        return mismatch(e.args[0], *a, "[]", "a list or a vec3", e.at);
-      }
-      case Expr::Kind::kBinary:
-        return binary(e);
+      default:
+        return std::nullopt;  // chained kinds never reach here
     }
-    return std::nullopt;
   }
 
- private:
+  // A chained node whose left operand has type `a`.
+  std::optional<ValueType> apply(const Expr& e, ValueType a) {
+    if (e.kind == Expr::Kind::kMember) {
+      if (a != ValueType::kVec3 && a != ValueType::kAny) {
+        return mismatch(e.args[0], a, "." + e.name, "a vec3", e.at);
+      }
+      return ValueType::kNumber;
+    }
+    if (e.kind == Expr::Kind::kIndex) {
+      const std::optional<ValueType> i = type(e.args[1]);
+      if (!i) return std::nullopt;
+      if (*i != ValueType::kInteger && *i != ValueType::kAny) {
+        return mismatch(e.args[1], *i, "[]", "an integer index", e.at);
+      }
+      if (a == ValueType::kVec3) return ValueType::kNumber;
+      if (a == ValueType::kList || a == ValueType::kAny) return ValueType::kAny;
+      return mismatch(e.args[0], a, "[]", "a list or a vec3", e.at);
+    }
+    return binary(e, a);
+  }
+
   std::nullopt_t fail(const std::string& code, std::string message, std::size_t at) {
     if (error_.message.empty()) error_ = ExprError{code, std::move(message), at};
     return std::nullopt;
@@ -595,9 +616,9 @@ class TypeChecker {
     }
     return f->result;
   }
-  std::optional<ValueType> binary(const Expr& e) {
-    const std::optional<ValueType> l = type(e.args[0]);
-    const std::optional<ValueType> r = l ? type(e.args[1]) : std::nullopt;
+  std::optional<ValueType> binary(const Expr& e, ValueType left) {
+    const std::optional<ValueType> l = left;
+    const std::optional<ValueType> r = type(e.args[1]);
     if (!r) return std::nullopt;
     const std::string& op = e.name;
     if (op == "and" || op == "or") {
