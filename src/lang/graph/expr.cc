@@ -9,6 +9,12 @@ namespace insula::lang::graph {
 namespace {
 
 constexpr int kMaxDepth = 100;
+// Chains of binary operators and postfixes are parsed by loops, not under the nesting bound, and
+// build left-nested trees as deep as they are long. The type checker and the evaluator walk such
+// spines in loops, but Expr's copy and destructor still recurse along them; bounding the
+// operators bounds that depth: a 20,000-deep chain is copied, run and destroyed by `insula build`
+// within 2 MB of stack (docs/graph-executor.md, "Expressions").
+constexpr int kMaxOperators = 20000;
 
 bool letter(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
@@ -48,6 +54,12 @@ class Parser {
     at_ = after;
     return true;
   }
+  // Counts one more operator node; false (G023) past kMaxOperators, before the tree grows deeper.
+  bool another_operator(std::size_t where) {
+    if (++operators_ <= kMaxOperators) return true;
+    fail("expression too long (more than " + std::to_string(kMaxOperators) + " operators)", where);
+    return false;
+  }
   Expr binary(std::string op, std::size_t where, Expr l, Expr r) {
     Expr e;
     e.kind = Expr::Kind::kBinary;
@@ -71,6 +83,7 @@ class Parser {
       skip();
       const std::size_t where = at_;
       if (!word("or")) break;
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> r = conjunction();
       if (!r) return std::nullopt;
       l = binary("or", where, std::move(*l), std::move(*r));
@@ -83,6 +96,7 @@ class Parser {
       skip();
       const std::size_t where = at_;
       if (!word("and")) break;
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> r = negation();
       if (!r) return std::nullopt;
       l = binary("and", where, std::move(*l), std::move(*r));
@@ -94,6 +108,7 @@ class Parser {
     const std::size_t where = at_;
     if (word("not")) {
       if (++depth_ > kMaxDepth) return fail("expression nested deeper than 100 levels", where);
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> inner = negation();
       --depth_;
       if (!inner) return std::nullopt;
@@ -115,6 +130,7 @@ class Parser {
       if (t_.substr(at_, std::string_view(op).size()) != op) continue;
       const std::size_t where = at_;
       at_ += std::string_view(op).size();
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> r = sum();
       if (!r) return std::nullopt;
       return binary(op, where, std::move(*l), std::move(*r));
@@ -127,6 +143,7 @@ class Parser {
       skip();
       if (at_ >= t_.size() || (t_[at_] != '+' && t_[at_] != '-')) break;
       const std::size_t where = at_++;
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> r = product();
       if (!r) return std::nullopt;
       l = binary(std::string(1, t_[where]), where, std::move(*l), std::move(*r));
@@ -139,6 +156,7 @@ class Parser {
       skip();
       if (at_ >= t_.size() || (t_[at_] != '*' && t_[at_] != '/' && t_[at_] != '%')) break;
       const std::size_t where = at_++;
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> r = unary();
       if (!r) return std::nullopt;
       l = binary(std::string(1, t_[where]), where, std::move(*l), std::move(*r));
@@ -150,6 +168,7 @@ class Parser {
     if (at_ < t_.size() && t_[at_] == '-') {
       const std::size_t where = at_++;
       if (++depth_ > kMaxDepth) return fail("expression nested deeper than 100 levels", where);
+      if (!another_operator(where)) return std::nullopt;
       std::optional<Expr> inner = unary();
       --depth_;
       if (!inner) return std::nullopt;
@@ -169,6 +188,7 @@ class Parser {
       skip();
       if (at_ < t_.size() && t_[at_] == '.') {
         const std::size_t where = at_++;
+        if (!another_operator(where)) return std::nullopt;
         if (at_ >= t_.size() || (t_[at_] != 'x' && t_[at_] != 'y' && t_[at_] != 'z') ||
             (at_ + 1 < t_.size() && (letter(t_[at_ + 1]) || digit(t_[at_ + 1])))) {
           return fail("expected x, y or z after '.'", at_);
@@ -183,6 +203,7 @@ class Parser {
         e = std::move(m);
       } else if (at_ < t_.size() && t_[at_] == '[') {
         const std::size_t where = at_++;
+        if (!another_operator(where)) return std::nullopt;
         std::optional<Expr> index = expr();
         if (!index) return std::nullopt;
         skip();
@@ -339,6 +360,7 @@ class Parser {
   ExprError& error_;
   std::size_t at_ = 0;
   int depth_ = 0;
+  int operators_ = 0;
 };
 
 struct Function {
@@ -418,7 +440,28 @@ class TypeChecker {
   TypeChecker(std::string_view text, const ExprScope& scope, ExprError& error)
       : t_(text), scope_(scope), error_(error) {}
 
+  // Chains of binary operators and postfixes nest to the left without the parser counting a
+  // level, so their left spine is walked in a loop (as the evaluator does): recursion only
+  // follows the levels the parser bounds.
   std::optional<ValueType> type(const Expr& e) {
+    std::vector<const Expr*> spine;
+    const Expr* leaf = &e;
+    while (chained(*leaf)) {
+      spine.push_back(leaf);
+      leaf = &leaf->args[0];
+    }
+    std::optional<ValueType> t = primary(*leaf);
+    for (auto it = spine.rbegin(); t && it != spine.rend(); ++it) t = apply(**it, *t);
+    return t;
+  }
+
+ private:
+  static bool chained(const Expr& e) {
+    return e.kind == Expr::Kind::kBinary || e.kind == Expr::Kind::kMember ||
+           e.kind == Expr::Kind::kIndex;
+  }
+
+  std::optional<ValueType> primary(const Expr& e) {
     switch (e.kind) {
       case Expr::Kind::kNumber:
         return ValueType::kNumber;
@@ -455,32 +498,32 @@ class TypeChecker {
         if (*a == ValueType::kAny || numeric(*a) || *a == ValueType::kVec3) return *a;
         return mismatch(e.args[0], *a, "-", "numbers", e.at);
       }
-      case Expr::Kind::kMember: {
-        const std::optional<ValueType> a = type(e.args[0]);
-        if (!a) return std::nullopt;
-        if (*a != ValueType::kVec3 && *a != ValueType::kAny) {
-          return mismatch(e.args[0], *a, "." + e.name, "a vec3", e.at);
-        }
-        return ValueType::kNumber;
-      }
-      case Expr::Kind::kIndex: {
-        const std::optional<ValueType> a = type(e.args[0]);
-        const std::optional<ValueType> i = a ? type(e.args[1]) : std::nullopt;
-        if (!i) return std::nullopt;
-        if (*i != ValueType::kInteger && *i != ValueType::kAny) {
-          return mismatch(e.args[1], *i, "[]", "an integer index", e.at);
-        }
-        if (*a == ValueType::kVec3) return ValueType::kNumber;
-        if (*a == ValueType::kList || *a == ValueType::kAny) return ValueType::kAny;
-        return mismatch(e.args[0], *a, "[]", "a list or a vec3", e.at);
-      }
-      case Expr::Kind::kBinary:
-        return binary(e);
+      default:
+        return std::nullopt;  // chained kinds never reach here
     }
-    return std::nullopt;
   }
 
- private:
+  // A chained node whose left operand has type `a`.
+  std::optional<ValueType> apply(const Expr& e, ValueType a) {
+    if (e.kind == Expr::Kind::kMember) {
+      if (a != ValueType::kVec3 && a != ValueType::kAny) {
+        return mismatch(e.args[0], a, "." + e.name, "a vec3", e.at);
+      }
+      return ValueType::kNumber;
+    }
+    if (e.kind == Expr::Kind::kIndex) {
+      const std::optional<ValueType> i = type(e.args[1]);
+      if (!i) return std::nullopt;
+      if (*i != ValueType::kInteger && *i != ValueType::kAny) {
+        return mismatch(e.args[1], *i, "[]", "an integer index", e.at);
+      }
+      if (a == ValueType::kVec3) return ValueType::kNumber;
+      if (a == ValueType::kList || a == ValueType::kAny) return ValueType::kAny;
+      return mismatch(e.args[0], a, "[]", "a list or a vec3", e.at);
+    }
+    return binary(e, a);
+  }
+
   std::nullopt_t fail(const std::string& code, std::string message, std::size_t at) {
     if (error_.message.empty()) error_ = ExprError{code, std::move(message), at};
     return std::nullopt;
@@ -573,9 +616,9 @@ class TypeChecker {
     }
     return f->result;
   }
-  std::optional<ValueType> binary(const Expr& e) {
-    const std::optional<ValueType> l = type(e.args[0]);
-    const std::optional<ValueType> r = l ? type(e.args[1]) : std::nullopt;
+  std::optional<ValueType> binary(const Expr& e, ValueType left) {
+    const std::optional<ValueType> l = left;
+    const std::optional<ValueType> r = type(e.args[1]);
     if (!r) return std::nullopt;
     const std::string& op = e.name;
     if (op == "and" || op == "or") {

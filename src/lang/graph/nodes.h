@@ -20,6 +20,7 @@ struct NodeImpl {
 // Each family's table (nodes_<family>.cc).
 std::span<const NodeImpl> creation_nodes();
 std::span<const NodeImpl> shape_nodes();
+std::span<const NodeImpl> merge_nodes();
 std::span<const NodeImpl> path_nodes();
 std::span<const NodeImpl> list_nodes();
 std::span<const NodeImpl> query_nodes();

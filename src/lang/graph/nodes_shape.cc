@@ -262,19 +262,7 @@ void merge(NodeContext& c) {
       const shape::Shape& s = c.tree()[c.entities()[e].shape];
       if (s.mesh != nullptr) mesh->append(shape::mesh_to_world(*s.mesh, s.scope));
     }
-    const shape::Scope scope = shape::fit_scope(*mesh, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
-    const EntityId out = c.create(r, EntityType::kShape, 0);
-    c.entities()[out].shape = c.tree().add_root(
-        scope, std::make_shared<kernel::Mesh>(shape::mesh_to_local(*mesh, scope)));
-    c.entities()[out].material = c.entities()[in.front()].material;
-    for (const auto& [key, value] : c.entities().attributes(in.front())) {
-      bool common = true;
-      for (EntityId e : in) {
-        const Value* v = c.entities().attribute(e, key);
-        common = common && v != nullptr && *v == *value;
-      }
-      if (common) c.entities().set_attribute(out, key, *value);
-    }
+    const EntityId out = merged_entity(c, r, 0, in, *mesh);
     c.emit(c.output_port("out"), out);
   }
 }

@@ -2,6 +2,7 @@
 #include "lang/graph/executor.h"
 
 #include <cmath>
+#include <memory>
 
 #include "shape/scope.h"
 
@@ -43,6 +44,24 @@ kernel::Mesh world_mesh(NodeContext& c, EntityId entity) {
   }
   const shape::Shape& s = c.tree()[e.shape];
   if (s.mesh != nullptr) out = shape::mesh_to_world(*s.mesh, s.scope);
+  return out;
+}
+
+EntityId merged_entity(NodeContext& c, std::size_t round, std::uint32_t position,
+                       std::span<const EntityId> sources, const kernel::Mesh& world_mesh) {
+  const shape::Scope scope = shape::fit_scope(world_mesh, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  const EntityId out = c.create(round, EntityType::kShape, position);
+  c.entities()[out].shape = c.tree().add_root(
+      scope, std::make_shared<kernel::Mesh>(shape::mesh_to_local(world_mesh, scope)));
+  c.entities()[out].material = c.entities()[sources.front()].material;
+  for (const auto& [key, value] : c.entities().attributes(sources.front())) {
+    bool common = true;
+    for (EntityId e : sources) {
+      const Value* v = c.entities().attribute(e, key);
+      common = common && v != nullptr && *v == *value;
+    }
+    if (common) c.entities().set_attribute(out, key, *value);
+  }
   return out;
 }
 

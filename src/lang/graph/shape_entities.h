@@ -3,9 +3,11 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "kernel/mesh.h"
 #include "kernel/polygon.h"
 #include "lang/graph/node_context.h"
 
@@ -33,6 +35,12 @@ kernel::Mesh world_mesh(NodeContext& c, EntityId entity);
 bool run_operation(NodeContext& c, EntityId entity, const std::string& op,
                    const std::vector<shape::ArgInput>& args, std::vector<EntityId>& children,
                    std::vector<std::uint32_t>* pieces = nullptr);
+
+// A new shape entity (create(round, position)) holding `world_mesh` in a scope along the world
+// axes fitted around it, with the material of the first of `sources` and the attributes all of
+// them share (the merging nodes: shape.merge, shape.adjacency_merge).
+EntityId merged_entity(NodeContext& c, std::size_t round, std::uint32_t position,
+                       std::span<const EntityId> sources, const kernel::Mesh& world_mesh);
 
 // A descendant shape entity of `parent` for an existing shape.
 EntityId shape_child(NodeContext& c, EntityId parent, shape::ShapeId shape);

@@ -1,6 +1,7 @@
 // The expression language of §5: precedence, positions, types.
 #include <gtest/gtest.h>
 
+#include "lang/graph/eval.h"
 #include "lang/graph/expr.h"
 
 namespace insula::lang::graph {
@@ -83,6 +84,47 @@ TEST(GraphExpr, EntityReadsAreRefusedWhereThereIsNoEntity) {
   EXPECT_EQ(err.message,
             "parameter 'k' of 'c' (query.kmeans) is evaluated once per execution and cannot read "
             "'area()'");
+}
+
+// Operator chains build trees as deep as they are long: past 20,000 operators the parser stops
+// with G023 at the first operator too many, before the checker, the evaluator or the destructor
+// walk a tree deep enough to exhaust the stack. At the bound every walk still succeeds.
+TEST(GraphExpr, LongOperatorChainsAreBounded) {
+  const auto chain = [](const std::string& first, const std::string& link, std::size_t n) {
+    std::string text = first;
+    for (std::size_t i = 0; i < n; ++i) text += link;
+    return text;
+  };
+  EXPECT_EQ(typed(chain("0", "+1", 99999)),
+            "G023@40001: expression too long (more than 20000 operators)");
+  EXPECT_EQ(typed(chain("true", " or true", 30000)),
+            "G023@160005: expression too long (more than 20000 operators)");
+  EXPECT_EQ(typed(chain("[1]", "[0]", 100000)).substr(0, 10), "G023@60003");
+  EXPECT_EQ(typed(chain("1", "*1", 20000)), "integer");
+
+  class Env : public EvalEnv {
+   public:
+    Value parameter(const std::string&) override { return Value(std::int64_t{0}); }
+    std::optional<Value> attribute(const std::string&, const std::string&) override {
+      return std::nullopt;
+    }
+    std::optional<Value> property(const std::string&, std::string&) override {
+      return std::nullopt;
+    }
+    shape::Rng& rng() override { return rng_; }
+
+   private:
+    shape::Rng rng_{1};
+  };
+  const std::string text = chain("0", "+1", 20000);
+  ExprError err;
+  const std::optional<Expr> e = parse_expression(text, err);
+  ASSERT_TRUE(e) << err.message;
+  Env env;
+  EvalError eval_error;
+  const std::optional<Value> v = evaluate(*e, env, eval_error);
+  ASSERT_TRUE(v) << eval_error.message;
+  EXPECT_EQ(v->integer(), 20000);
 }
 
 }  // namespace
