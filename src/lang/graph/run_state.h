@@ -66,7 +66,7 @@ struct RunState {
   std::map<std::string, std::size_t> leaf_index;
   std::map<std::string, std::pair<std::uint64_t, RunError>> failures;  // W040 per node label
   std::vector<std::string> failure_order;
-  std::vector<RunError> warnings;  // W030, in order
+  std::vector<RunError> warnings;                  // W030, in order
   std::map<std::string, RunError> unprocessed_at;  // W010: where each port's node is
   std::set<std::string> warned;
 
