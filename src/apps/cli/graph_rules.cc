@@ -13,12 +13,14 @@
 #include "lang/cga/compile.h"
 #include "lang/cga/derive.h"
 #include "lang/cga/parser.h"
+#include "lang/lua/runtime.h"
 
 namespace insula::cli {
 
 namespace cga = lang::cga;
 
 struct FrontEndRules::Program {
+  bool lua = false;  // a Lua program: `source` run once per shape
   std::unique_ptr<base::Source> source;
   std::unique_ptr<cga::Grammar> grammar;
   std::shared_ptr<const cga::Program> cga;
@@ -132,6 +134,31 @@ std::shared_ptr<lang::graph::Model> run_bldg(const FrontEndRules::Program& progr
   return model;
 }
 
+// A Lua program with the shape's outline as its global `lot` (scope space), in a fresh sandbox.
+std::shared_ptr<lang::graph::Model> run_lua(const FrontEndRules::Program& program,
+                                            const lang::graph::RuleRequest& request,
+                                            const shape::AssetProvider* assets,
+                                            std::string& error) {
+  lua::RunOptions options;
+  options.seed = request.seed;
+  options.assets = assets;
+  options.lot = request.outline;
+  for (const auto& [name, value] : request.attributes) options.params.emplace_back(name, value);
+  lua::Runtime runtime(std::move(options));
+  const std::vector<base::Diagnostic> diagnostics = runtime.run(*program.source);
+  if (base::has_errors(diagnostics)) {
+    error = rendered(diagnostics, *program.source);
+    return nullptr;
+  }
+  shape::Scene scene = lua::collect_program(runtime.program());
+  auto model = std::make_shared<lang::graph::Model>();
+  model->materials = std::move(scene.materials);
+  for (shape::Building& b : scene.buildings) {
+    for (shape::Part& p : b.parts) model->parts.push_back(std::move(p));
+  }
+  return model;
+}
+
 // The lot was the shape's outline in scope space: the part goes back to the world.
 void place(shape::Part& part, const shape::Scope& scope) {
   for (kernel::Vec3& v : part.mesh.positions()) v = scope.to_world(v);
@@ -152,6 +179,12 @@ const FrontEndRules::Program* FrontEndRules::find(const lang::graph::RuleRequest
       program = read_cga(folder_, request, attributes_);
     } else if (request.language == "bldg") {
       program = read_bldg(folder_, request);
+    } else if (request.language == "lua") {
+      program = std::make_unique<Program>();
+      if (read_source(folder_, request, *program)) {
+        program->lua = true;
+        program->error = rendered(lua::Runtime::check(*program->source), *program->source);
+      }
     } else {
       program = std::make_unique<Program>();
       program->error = "rule.";
@@ -175,6 +208,13 @@ std::shared_ptr<const lang::graph::Model> FrontEndRules::run(
   if (!program->error.empty()) {
     error = program->error;
     return nullptr;
+  }
+  if (program->lua) {
+    std::shared_ptr<lang::graph::Model> model = run_lua(*program, request, assets_, error);
+    if (model != nullptr) {
+      for (shape::Part& p : model->parts) place(p, request.scope);
+    }
+    return model;
   }
   if (program->building != nullptr) {
     std::shared_ptr<lang::graph::Model> model = run_bldg(*program, request, error);

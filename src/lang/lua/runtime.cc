@@ -481,6 +481,13 @@ Runtime::Runtime(RunOptions options)
   }
   lua_setglobal(L_, "params");
   open_bindings(L_);
+  if (options_.lot) {
+    const shape::RootResult root = program_->tree.create_root(*options_.lot);
+    if (root.ok()) {
+      push_component(L_, root.id);
+      lua_setglobal(L_, "lot");
+    }
+  }
   guard_->L = L_;
 }
 

@@ -15,11 +15,13 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "base/diagnostic.h"
+#include "kernel/polygon.h"
 #include "lang/lua/program.h"
 #include "shape/operation.h"
 #include "shape/scene.h"
@@ -42,6 +44,10 @@ struct RunOptions {
   const shape::AssetProvider* assets = nullptr;
   // --set name=value: the global table `params` (params.name), read by insula.param().
   std::vector<std::pair<std::string, shape::Value>> params;
+  // A lot to build on (a graph's rule.lua node): a flat root from this footprint (local meters,
+  // scope x along its first edge) in the global `lot` before the program runs; none: the
+  // program makes its own roots.
+  std::optional<kernel::Polygon> lot;
   // Where print() goes (one call per printed line, without the newline); null: discarded.
   std::function<void(const std::string&)> print;
 };
