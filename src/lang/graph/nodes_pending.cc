@@ -6,6 +6,5 @@ namespace insula::lang::graph {
 
 std::span<const NodeImpl> path_nodes() { return {}; }
 std::span<const NodeImpl> query_nodes() { return {}; }
-std::span<const NodeImpl> light_texture_nodes() { return {}; }
 
 }  // namespace insula::lang::graph
