@@ -131,7 +131,8 @@ class Builder {
 
   // The glTF JSON; `buffer_uri` (when not empty) becomes the buffer's "uri".
   void write_json(JsonStream& json, std::string_view buffer_uri) const;
-  // Appends the binary buffer (vertex view, then index view), little-endian.
+  // Appends the binary buffer (vertex, index and texture coordinate views, little-endian, then
+  // the PNG images).
   void append_binary(std::string& out) const;
   std::size_t binary_size() const { return image_offset(images_.size()); }
 
