@@ -1,12 +1,14 @@
 #include "io/gltf_writer.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <span>
 #include <string>
 #include <tuple>
@@ -17,6 +19,7 @@
 #include "io/atomic_file.h"
 #include "io/float32_weld.h"
 #include "io/json_stream.h"
+#include "io/png_renderer.h"
 #include "io/triangulated.h"
 #include "kernel/uv.h"
 #include "shape/part_mesh.h"
@@ -29,6 +32,10 @@ constexpr std::uint32_t kElementArrayBuffer = 34963;
 constexpr std::uint32_t kFloat = 5126;
 constexpr std::uint32_t kUnsignedInt = 5125;
 constexpr std::uint32_t kTriangles = 4;
+constexpr std::uint32_t kLinear = 9729;
+constexpr std::uint32_t kLinearMipmapLinear = 9987;
+constexpr std::uint32_t kClampToEdge = 33071;
+constexpr std::string_view kLightsExtension = "KHR_lights_punctual";
 constexpr std::uint32_t kGlbMagic = 0x46546C67;   // "glTF"
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
 constexpr std::uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
@@ -39,6 +46,10 @@ void append_u32(std::string& out, std::uint32_t value) {
                          static_cast<char>((value >> 16) & 0xFFU),
                          static_cast<char>((value >> 24) & 0xFFU)};
   out.append(bytes, 4);
+}
+
+std::size_t padded(std::size_t size) {
+  return (size + 3) / 4 * 4;
 }
 
 std::string_view kind_name(shape::PartKind kind) {
@@ -75,8 +86,8 @@ struct PrimitiveRecord {
   std::size_t position_offset = 0;  // bytes into the vertex view; normals follow the positions
   std::size_t index_offset = 0;     // bytes into the index view
   std::size_t uv_offset = 0;        // bytes into the texture coordinate view
-  bool has_uv = false;              // TEXCOORD_0 (parts of solidGeometry with "uv_scale")
-  std::uint32_t accessor = 0;       // first of its accessors (3, or 4 with texture coordinates)
+  bool has_uv = false;  // TEXCOORD_0 (parts of solidGeometry with "uv_scale", textured materials)
+  std::uint32_t accessor = 0;  // first of its accessors (3, or 4 with texture coordinates)
   std::array<float, 3> min{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
                            std::numeric_limits<float>::max()};
   std::array<float, 3> max{std::numeric_limits<float>::lowest(),
@@ -100,6 +111,17 @@ double uv_scale(const shape::Part& part) {
   return v != nullptr && *v > 0 ? *v : 0;
 }
 
+// A material's image as PNG bytes, or empty when it has none (or a malformed one).
+std::string png_of(const shape::Material& material) {
+  const shape::Image* image = material.image.get();
+  if (image == nullptr || image->width <= 0 || image->height <= 0 ||
+      image->rgba.size() !=
+          4 * static_cast<std::size_t>(image->width) * static_cast<std::size_t>(image->height)) {
+    return {};
+  }
+  return encode_png(Image{image->width, image->height, image->rgba});
+}
+
 // Fills the binary buffer in one pass over the scene (vertex view: per primitive its positions
 // then its normals; index view after it), then writes the JSON from compact records. Object keys
 // are written in sorted order, so the text is the one nlohmann::json would print.
@@ -109,9 +131,10 @@ class Builder {
 
   // The glTF JSON; `buffer_uri` (when not empty) becomes the buffer's "uri".
   void write_json(JsonStream& json, std::string_view buffer_uri) const;
-  // Appends the binary buffer (vertex view, then index view), little-endian.
+  // Appends the binary buffer (vertex, index and texture coordinate views, little-endian, then
+  // the PNG images).
   void append_binary(std::string& out) const;
-  std::size_t binary_size() const { return 4 * (vertices_.size() + indices_.size() + uvs_.size()); }
+  std::size_t binary_size() const { return image_offset(images_.size()); }
 
  private:
   // Adds the part's primitives as a new glTF mesh (or finds its shared one); returns the mesh
@@ -125,10 +148,18 @@ class Builder {
   void add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
                    kernel::Vec3 newell, PrimitiveRecord& primitive);
 
+  void add_images();
+  // Bytes into the buffer where image `image` starts (each padded to 4 bytes after the UVs).
+  std::size_t image_offset(std::size_t image) const;
+  void fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop, kernel::Vec3 newell);
+
   void write_accessors(JsonStream& json) const;
   void write_meshes(JsonStream& json) const;
   void write_nodes(JsonStream& json) const;
   void write_materials(JsonStream& json) const;
+  void write_lights(JsonStream& json) const;
+  void write_light_node(JsonStream& json, std::size_t light) const;
+  void write_images(JsonStream& json) const;
   void write_buffers(JsonStream& json, std::string_view buffer_uri) const;
   void write_scene(JsonStream& json) const;
 
@@ -138,10 +169,16 @@ class Builder {
   std::vector<std::uint32_t> indices_;  // the index view
   std::vector<PrimitiveRecord> primitives_;
   std::vector<float> uvs_;  // the texture coordinate view (empty: no such view)
+  // Textures: one per distinct image of a material in the table, PNG-encoded; their bytes follow
+  // the texture coordinates in the buffer, each in a view of its own.
+  std::vector<std::int32_t> material_texture_;  // by table material; -1: untextured
+  std::vector<std::string> images_;             // PNG bytes by texture
+  std::vector<std::string> image_names_;
   std::vector<MeshRecord> meshes_;
   std::vector<std::int32_t> part_mesh_;  // glTF mesh of each part (-1: none), parts in scene order
   std::map<const kernel::Mesh*, std::int32_t> shared_;  // instance meshes already added
   double uv_ = 0;                                       // texture size of the part being added
+  bool fit_uv_ = false;  // the primitive being added shows an image: UVs fit each face
 
   // Scratch reused from face to face.
   FaceTriangulator triangulator_;
@@ -150,6 +187,7 @@ class Builder {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> faces_by_material_;
   Float32Weld weld_;                    // of the mesh being added
   std::vector<std::uint32_t> corners_;  // a welded face's corners (representative vertex ids)
+  std::vector<kernel::Vec2> face_uvs_;  // a textured face's planar coordinates
 };
 
 Builder::Builder(const shape::Scene& scene) : scene_(scene), materials_(scene) {
@@ -168,10 +206,32 @@ Builder::Builder(const shape::Scene& scene) : scene_(scene), materials_(scene) {
   }
   vertices_.reserve(6 * corners);
   indices_.reserve(3 * triangles);
+  add_images();
   for (const shape::Building& building : scene_.buildings) {
     for (std::size_t p = 0; p < building.parts.size(); ++p) {
       part_mesh_.push_back(add_part(building.parts[p], p));
     }
+  }
+  // No primitive, no buffer to hold the images.
+  if (primitives_.empty()) images_.clear();
+}
+
+void Builder::add_images() {
+  std::map<const shape::Image*, std::int32_t> seen;
+  for (const shape::Material& material : materials_.materials()) {
+    std::int32_t texture = -1;
+    if (material.image != nullptr) {
+      const auto [it, added] = seen.try_emplace(material.image.get(), -1);
+      if (added) {
+        if (std::string png = png_of(material); !png.empty()) {
+          it->second = static_cast<std::int32_t>(images_.size());
+          images_.push_back(std::move(png));
+          image_names_.push_back(material.image->name);
+        }
+      }
+      texture = it->second;
+    }
+    material_texture_.push_back(texture);
   }
 }
 
@@ -218,7 +278,8 @@ void Builder::add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
   primitive.position_offset = 4 * vertices_.size();
   primitive.index_offset = 4 * indices_.size();
   primitive.uv_offset = 4 * uvs_.size();
-  primitive.has_uv = uv_ > 0;
+  fit_uv_ = material_texture_[material] >= 0;
+  primitive.has_uv = uv_ > 0 || fit_uv_;
   primitive.accessor =
       primitives_.empty() ? 0 : primitives_.back().accessor + (primitives_.back().has_uv ? 4 : 3);
   normals_.clear();
@@ -256,8 +317,9 @@ void Builder::add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_
                           kernel::Vec3 newell, PrimitiveRecord& primitive) {
   const std::array<float, 3> normal = to_y_up(newell);
   const std::uint32_t base = primitive.vertex_count;
+  if (fit_uv_) fit_uvs(mesh, loop, newell);
   for (std::uint32_t vertex : loop) {
-    if (uv_ > 0) {
+    if (uv_ > 0 && !fit_uv_) {
       const kernel::Vec2 t = kernel::planar_uv(mesh.position(vertex), newell, uv_);
       uvs_.push_back(static_cast<float>(t.x));
       uvs_.push_back(static_cast<float>(t.y));
@@ -277,6 +339,29 @@ void Builder::add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_
   primitive.index_count += static_cast<std::uint32_t>(3 * triangles_.size());
 }
 
+// A textured face shows its image once: the face's planar coordinates (kernel::planar_uv, u to the
+// right and v up seen from outside) scaled to its extent, v flipped because glTF's (0, 0) is the
+// image's top-left corner. So text reads the right way round on walls, roofs and floors.
+void Builder::fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
+                      kernel::Vec3 newell) {
+  kernel::Vec2 low{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+  kernel::Vec2 high{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
+  face_uvs_.clear();
+  for (std::uint32_t vertex : loop) {
+    const kernel::Vec2 t = kernel::planar_uv(mesh.position(vertex), newell, 1);
+    low = {std::min(low.x, t.x), std::min(low.y, t.y)};
+    high = {std::max(high.x, t.x), std::max(high.y, t.y)};
+    face_uvs_.push_back(t);
+  }
+  const auto unit = [](double v, double from, double to) {
+    return to > from ? (v - from) / (to - from) : 0.0;
+  };
+  for (const kernel::Vec2 t : face_uvs_) {
+    uvs_.push_back(static_cast<float>(unit(t.x, low.x, high.x)));
+    uvs_.push_back(static_cast<float>(1 - unit(t.y, low.y, high.y)));
+  }
+}
+
 // Little-endian whatever the host (glTF 2.0, "Binary glTF Layout").
 template <typename T>
 void append_little_endian(std::string& out, const std::vector<T>& values) {
@@ -288,10 +373,20 @@ void append_little_endian(std::string& out, const std::vector<T>& values) {
   }
 }
 
+std::size_t Builder::image_offset(std::size_t image) const {
+  std::size_t offset = 4 * (vertices_.size() + indices_.size() + uvs_.size());
+  for (std::size_t i = 0; i < image; ++i) offset += padded(images_[i].size());
+  return offset;
+}
+
 void Builder::append_binary(std::string& out) const {
   append_little_endian(out, vertices_);
   append_little_endian(out, indices_);
   append_little_endian(out, uvs_);
+  for (const std::string& png : images_) {
+    out += png;
+    out.append(padded(png.size()) - png.size(), '\0');
+  }
 }
 
 void write_vec3(JsonStream& json, const std::array<float, 3>& v) {
@@ -386,20 +481,95 @@ void Builder::write_nodes(JsonStream& json) const {
     json.end_object();
     node += building.parts.size() + 1;
   }
+  for (std::size_t i = 0; i < scene_.lights.size(); ++i) write_light_node(json, i);
   json.end_array();
 }
 
 void Builder::write_materials(JsonStream& json) const {
   json.key("materials").begin_array();
-  for (const shape::Material& material : materials_.materials()) {
+  for (std::size_t m = 0; m < materials_.materials().size(); ++m) {
+    const shape::Material& material = materials_.materials()[m];
     const auto& c = material.rgba;
     json.begin_object();
     if (c[3] < 1.0F) json.key("alphaMode").string("BLEND");
     json.key("name").string(material.name);
     json.key("pbrMetallicRoughness").begin_object().key("baseColorFactor").begin_array();
     for (float channel_value : c) json.number(channel(channel_value));
-    json.end_array().key("metallicFactor").number(0.0).key("roughnessFactor").number(0.9);
+    json.end_array();
+    if (material_texture_[m] >= 0) {
+      json.key("baseColorTexture").begin_object().key("index").integer(material_texture_[m]);
+      json.end_object();
+    }
+    json.key("metallicFactor").number(0.0).key("roughnessFactor").number(0.9);
     json.end_object().end_object();
+  }
+  json.end_array();
+}
+
+std::string light_name(const shape::Light& light, std::size_t index) {
+  return light.name.empty() ? "light" + std::to_string(index) : light.name;
+}
+
+// The rotation taking glTF's light direction, -Z, to `direction` (local Z-up), as a unit
+// quaternion (x, y, z, w): half-way vector construction, 180 degrees about +Y when opposite.
+std::array<double, 4> spot_rotation(kernel::Vec3 direction) {
+  kernel::Vec3 d = kernel::normalized(kernel::Vec3{direction.x, direction.z, -direction.y});
+  if (!std::isfinite(d.x + d.y + d.z) || kernel::length(d) == 0) d = {0, -1, 0};
+  // (0, 0, -1) x d and 1 + (0, 0, -1) . d
+  const std::array<double, 4> q = {d.y, -d.x, 0, 1 - d.z};
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[3] * q[3]);
+  if (n < 1e-12) return {0, 1, 0, 0};
+  return {q[0] / n, q[1] / n, 0, q[3] / n};
+}
+
+// KHR_lights_punctual: intensity in candela, range only when limited (the extension forbids 0),
+// spot cones at the extension's defaults written out.
+void Builder::write_lights(JsonStream& json) const {
+  json.key("extensions").begin_object().key(kLightsExtension).begin_object();
+  json.key("lights").begin_array();
+  for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
+    const shape::Light& light = scene_.lights[i];
+    json.begin_object().key("color").begin_array();
+    for (float c : light.color) json.number(channel(c));
+    json.end_array().key("intensity").number(light.intensity);
+    json.key("name").string(light_name(light, i));
+    if (light.range > 0) json.key("range").number(light.range);
+    const bool spot = light.kind == "spot";
+    if (spot) {
+      json.key("spot").begin_object().key("innerConeAngle").number(0.0);
+      json.key("outerConeAngle").number(std::numbers::pi / 4).end_object();
+    }
+    json.key("type").string(spot ? "spot" : "point").end_object();
+  }
+  json.end_array().end_object().end_object();
+  json.key("extensionsUsed").begin_array().string(kLightsExtension).end_array();
+}
+
+// A light's node: placed like the vertices, (x, y, z) -> (x, z, -y), but in doubles (a node's
+// translation is not float32-bound).
+void Builder::write_light_node(JsonStream& json, std::size_t index) const {
+  const shape::Light& light = scene_.lights[index];
+  json.begin_object().key("extensions").begin_object().key(kLightsExtension).begin_object();
+  json.key("light").integer(index).end_object().end_object();
+  json.key("name").string(light_name(light, index));
+  if (light.kind == "spot") {
+    json.key("rotation").begin_array();
+    for (double c : spot_rotation(light.direction)) json.number(c + 0.0);
+    json.end_array();
+  }
+  const kernel::Vec3 p = light.position;
+  json.key("translation").begin_array();
+  json.number(p.x + 0.0).number(p.z + 0.0).number(-p.y + 0.0).end_array().end_object();
+}
+
+// One image per texture, stored in the buffer; one sampler for all: clamped, since each face
+// shows its image once.
+void Builder::write_images(JsonStream& json) const {
+  const std::size_t first_view = 2 + (uvs_.empty() ? 0 : 1);
+  json.key("images").begin_array();
+  for (std::size_t i = 0; i < images_.size(); ++i) {
+    json.begin_object().key("bufferView").integer(first_view + i);
+    json.key("mimeType").string("image/png").key("name").string(image_names_[i]).end_object();
   }
   json.end_array();
 }
@@ -417,6 +587,10 @@ void Builder::write_buffers(JsonStream& json, std::string_view buffer_uri) const
     json.key("byteOffset").integer(vertex_bytes + 4 * indices_.size());
     json.key("byteStride").integer(8).key("target").integer(kArrayBuffer).end_object();
   }
+  for (std::size_t i = 0; i < images_.size(); ++i) {
+    json.begin_object().key("buffer").integer(0).key("byteLength").integer(images_[i].size());
+    json.key("byteOffset").integer(image_offset(i)).end_object();
+  }
   json.end_array();
   json.key("buffers").begin_array().begin_object().key("byteLength").integer(binary_size());
   if (!buffer_uri.empty()) json.key("uri").string(buffer_uri);
@@ -432,13 +606,14 @@ void Builder::write_scene(JsonStream& json) const {
   json.key("units").string("m");
   json.key("world_from_gltf").string("(x, y, z) = (X + origin[0], -Z + origin[1], Y + origin[2])");
   json.end_object().key("name").string("Insula");
-  if (!scene_.buildings.empty()) {
+  if (!scene_.buildings.empty() || !scene_.lights.empty()) {
     json.key("nodes").begin_array();
     std::size_t node = 0;
     for (const shape::Building& building : scene_.buildings) {
       node += building.parts.size();
       json.integer(node++);
     }
+    for (std::size_t i = 0; i < scene_.lights.size(); ++i) json.integer(node++);
     json.end_array();
   }
   json.end_object().end_array();
@@ -452,13 +627,28 @@ void Builder::write_json(JsonStream& json, std::string_view buffer_uri) const {
   if (has_meshes) write_accessors(json);
   json.key("asset").begin_object().key("generator").string("Insula");
   json.key("version").string("2.0").end_object();
+  const bool has_images = !images_.empty();
+  if (has_meshes) write_buffers(json, buffer_uri);
+  if (!scene_.lights.empty()) write_lights(json);
+  if (has_images) write_images(json);
   if (has_meshes) {
-    write_buffers(json, buffer_uri);
     write_materials(json);
     write_meshes(json);
   }
-  if (!scene_.buildings.empty()) write_nodes(json);
+  if (!scene_.buildings.empty() || !scene_.lights.empty()) write_nodes(json);
+  if (has_images) {
+    json.key("samplers").begin_array().begin_object().key("magFilter").integer(kLinear);
+    json.key("minFilter").integer(kLinearMipmapLinear).key("wrapS").integer(kClampToEdge);
+    json.key("wrapT").integer(kClampToEdge).end_object().end_array();
+  }
   write_scene(json);
+  if (has_images) {
+    json.key("textures").begin_array();
+    for (std::size_t i = 0; i < images_.size(); ++i) {
+      json.begin_object().key("sampler").integer(0).key("source").integer(i).end_object();
+    }
+    json.end_array();
+  }
   json.end_object();
 }
 
@@ -477,10 +667,6 @@ std::string base64(const std::string& bytes) {
     }
   }
   return out;
-}
-
-std::size_t padded(std::size_t size) {
-  return (size + 3) / 4 * 4;
 }
 
 // A chunk's length (padded to 4 bytes) and type; the caller appends the data and the padding.

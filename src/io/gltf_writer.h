@@ -7,7 +7,9 @@
 // kernel::triangulate (concave faces stay right) and shaded flat: each face has its own vertices
 // carrying its normal; vertices float32 cannot tell apart are written as one, and faces
 // contracted over them, so closed shells stay closed (io/float32_weld.h). Indices are
-// UNSIGNED_INT. Output is deterministic.
+// UNSIGNED_INT. Scene lights become KHR_lights_punctual lights with a node each; material images
+// become embedded PNG textures, their faces getting TEXCOORD_0 that fit the image to each face.
+// Output is deterministic.
 #pragma once
 
 #include <filesystem>

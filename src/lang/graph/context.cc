@@ -353,8 +353,20 @@ std::uint16_t ExecutionContext::material(const std::string& name, std::array<flo
   return static_cast<std::uint16_t>(materials.size() - 1);
 }
 
+// One material per texture image (texture.text's default name is shared by every sign, and
+// each sign shows its own text): named after the texture, numbered when the name repeats.
 std::uint16_t ExecutionContext::textured_material(const std::shared_ptr<const Texture>& texture) {
-  const std::uint16_t m = material("texture_" + texture->name, {1, 1, 1, 1});
+  for (const auto& [m, t] : state_.out.textures) {
+    if (t == texture) return m;
+  }
+  std::string name = "texture_" + texture->name;
+  for (std::size_t k = 2; std::any_of(state_.out.materials.begin(), state_.out.materials.end(),
+                                      [&](const shape::Material& m) { return m.name == name; });
+       ++k) {
+    name = "texture_" + texture->name + "_" + std::to_string(k);
+  }
+  state_.out.materials.push_back({name, {1, 1, 1, 1}});
+  const auto m = static_cast<std::uint16_t>(state_.out.materials.size() - 1);
   state_.out.textures[m] = texture;
   return m;
 }
