@@ -69,13 +69,32 @@ struct Context {
   std::vector<Stroke> strokes;
 };
 
-Rgb shade(const Context& context, const kernel::FaceTag& tag, Vec3 normal) {
+// A face's colour in the view: its material's, times the mean colour of the material's image
+// when it has one (the view draws no textures; a sign still shows as its dominant colour).
+std::array<float, 4> view_colour(const Context& context, const kernel::FaceTag& tag) {
   const shape::Material material = context.scene.material_for(tag);
+  std::array<float, 4> rgba = material.rgba;
+  const shape::Image* image = material.image.get();
+  if (image != nullptr && !image->rgba.empty()) {
+    std::array<double, 3> sum{};
+    const std::size_t pixels = image->rgba.size() / 4;
+    for (std::size_t p = 0; p < pixels; ++p) {
+      for (std::size_t c = 0; c < 3; ++c) sum[c] += image->rgba[p * 4 + c];
+    }
+    for (std::size_t c = 0; c < 3; ++c) {
+      rgba[c] *= static_cast<float>(sum[c] / (255.0 * static_cast<double>(pixels)));
+    }
+  }
+  return rgba;
+}
+
+Rgb shade(const Context& context, const kernel::FaceTag& tag, Vec3 normal) {
+  const std::array<float, 4> colour = view_colour(context, tag);
   const float sky = kAmbient * static_cast<float>(0.8 + 0.2 * normal.z);
   const float sun = kDiffuse * static_cast<float>(std::max(0.0, dot(normal, context.sun)));
   const float fill = kFill * static_cast<float>(std::max(0.0, dot(normal, context.fill)));
   const float light = sky + sun + fill;
-  return {material.rgba[0] * light, material.rgba[1] * light, material.rgba[2] * light};
+  return {colour[0] * light, colour[1] * light, colour[2] * light};
 }
 
 // Ground-plane image of p along the sun direction.
@@ -270,7 +289,7 @@ PartData analyse(const Context& context, const Mesh& mesh) {
     const Vec3 n = drawable(mesh, f) ? kernel::face_normal(mesh, f) : Vec3{};
     data.normals[f] = finite(n) ? n : Vec3{};
     data.front[f] = dot(data.normals[f], context.camera.forward) < 0 ? 1 : 0;
-    const auto rgba = context.scene.material_for(mesh.tag(f)).rgba;
+    const auto rgba = view_colour(context, mesh.tag(f));
     data.colour[f] = {rgba[0], rgba[1], rgba[2]};
   }
   return data;
