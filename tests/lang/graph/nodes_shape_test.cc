@@ -209,6 +209,22 @@ TEST(ShapeNodes, FitScope) {
   EXPECT_EQ(t.run->unprocessed.at("xy.target"), 1U);
 }
 
+// A target without extent (a point) places the shape at its position, unscaled.
+TEST(ShapeNodes, FitScopeToAPoint) {
+  const TestRun t = run_text(graph_text(R"(
+    "nodes": [ { "id": "unit", "type": "create.rectangle", "params": { "width": 2, "depth": 1 } },
+               { "id": "cube", "type": "shape.extrude", "params": { "height": 3 } },
+               { "id": "here", "type": "create.points", "params": { "points": [[5, 6, 7]] } },
+               { "id": "fit", "type": "shape.fit_scope" } ],
+    "edges": [ "unit.out -> cube.in", "cube.out -> fit.in", "here.out -> fit.target" ])"));
+  ASSERT_TRUE(t.ok()) << t.errors;
+  ASSERT_EQ(t.at("fit.out").size(), 1U);
+  EXPECT_NEAR(t.volume(t.at("fit.out")[0]), 6.0, 1e-9);
+  const shape::Scope s = t.scope(t.at("fit.out")[0]);
+  EXPECT_EQ(s.origin, (kernel::Vec3{5, 6, 7}));
+  EXPECT_NEAR(s.size.x * s.size.y * s.size.z, 6.0, 1e-9);
+}
+
 // All faces in one shape; attributes every input shares are kept, others dropped.
 TEST(ShapeNodes, MergeKeepsCommonAttributes) {
   const TestRun t = run_text(graph_text(R"(
@@ -303,8 +319,8 @@ TEST(ShapeNodes, TransformsOfPointsAndPaths) {
   EXPECT_TRUE(t.at("turn.out").empty());
   EXPECT_EQ(t.failed("turn"), 1U);
   EXPECT_TRUE(
-      t.says("warning[W040]: node 'turn': 1 entity dropped; rotate moves shapes, paths and "
-             "points; a point only by translate"))
+      t.says("warning[W040]: node 'turn': 1 entity dropped; rotate needs a shape; a point "
+             "can only be translated\n"))
       << t.errors;
 }
 
