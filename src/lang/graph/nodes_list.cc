@@ -1,6 +1,7 @@
 // List operations (graph-format.md §11 "List operations"): collective nodes that decide by
 // looking at the whole list; order is kept wherever the format does not say otherwise.
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 #include "lang/graph/nodes.h"
@@ -138,18 +139,32 @@ void aggregate(NodeContext& c) {
       result = Value(op == "sum" ? sum : sum / static_cast<double>(members.size()));
     } else {
       double acc = op == "min" ? 1e308 : op == "max" ? -1e308 : 0;
+      // Integers are summed and compared exactly (a double loses them past 2^53).
       bool integers = true;
+      bool overflow = false;
+      std::int64_t sum = 0;
+      std::int64_t lo = std::numeric_limits<std::int64_t>::max();
+      std::int64_t hi = std::numeric_limits<std::int64_t>::min();
       for (std::size_t i : members) {
         if (!values[i].is_number())
           c.error("'value' must be a number; got " + to_string(values[i]));
         integers = integers && values[i].type() == ValueType::kInteger;
+        if (integers) {
+          const std::int64_t n = values[i].integer();
+          overflow = overflow || __builtin_add_overflow(sum, n, &sum);
+          lo = std::min(lo, n);
+          hi = std::max(hi, n);
+        }
         const double x = values[i].number();
         acc = op == "min" ? std::min(acc, x) : op == "max" ? std::max(acc, x) : acc + x;
       }
-      if (op == "average") {
-        result = Value(acc / static_cast<double>(members.size()));
+      if (op == "average" || !integers) {
+        result = Value(op == "average" ? acc / static_cast<double>(members.size()) : acc);
+      } else if (op == "sum") {
+        if (overflow) c.error("integer overflow in the sum of 'value'");
+        result = Value(sum);
       } else {
-        result = integers ? Value(static_cast<std::int64_t>(acc)) : Value(acc);
+        result = Value(op == "min" ? lo : hi);
       }
     }
     for (std::size_t i : members) c.write(in[i], "result", result);

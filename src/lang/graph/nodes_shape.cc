@@ -240,8 +240,9 @@ void actor(NodeContext& c) {
       move_other(c, out,
                  {c.param(r, "x").number(), c.param(r, "y").number(), c.param(r, "z").number()});
     } else if (name != "scale" || e.type != EntityType::kPoint) {
-      c.fail(in, std::string(name) + " moves shapes, paths and points; a " +
-                     std::string(entity_type_name(e.type)) + " only by translate");
+      // A point has no size, so scaling leaves it as it is; nothing else but a shape turns.
+      c.fail(in, std::string(name) + " needs a shape; a " + std::string(entity_type_name(e.type)) +
+                     " can only be translated");
       continue;
     }
     c.emit(c.output_port("out"), out);
@@ -279,8 +280,10 @@ void fit_scope(NodeContext& c) {
     const std::string axes = c.param(r, "axes").text();
     shape::Scope placed = *goal;
     kernel::Vec3 factor{1, 1, 1};
+    // An axis the target has no extent on (a point, a flat face's z) keeps the shape's size,
+    // so fitting to a point places the shape there unscaled.
     const auto fit = [&](char axis, double own, double& want, double& f) {
-      if (axes.find(axis) != std::string::npos && own > 0) {
+      if (axes.find(axis) != std::string::npos && own > 0 && want > 0) {
         f = want / own;
       } else {
         want = own;

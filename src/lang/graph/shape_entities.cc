@@ -81,7 +81,9 @@ bool run_operation(NodeContext& c, EntityId entity, const std::string& op,
   context.assets = c.options().assets;
   const shape::OpResult result = shape::registry().run(c.tree(), id, op, args, context);
   if (!result.ok()) {
-    c.fail(entity, op + ": " + result.error);
+    // Registry messages mostly name their operation already ("extrude: needs a flat shape").
+    const bool named = result.error.starts_with(op + ":");
+    c.fail(entity, named ? result.error : op + ": " + result.error);
     return false;
   }
   for (std::size_t i = 0; i < result.children.size(); ++i) {

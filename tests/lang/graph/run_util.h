@@ -30,6 +30,20 @@ struct TestRun {
   }
   double area(EntityId e) const { return measure(run->entities, run->tree, e).area; }
   double volume(EntityId e) const { return measure(run->entities, run->tree, e).volume; }
+  shape::Scope scope(EntityId e) const { return *entity_scope(run->entities, run->tree, e); }
+  const Entity& entity(EntityId e) const { return run->entities[e]; }
+  // The node's execution counts (zero when it never ran).
+  NodeRuns runs(const std::string& id) const {
+    for (const auto& [node, n] : run->node_runs) {
+      if (node == id) return n;
+    }
+    return {};
+  }
+  std::uint64_t failed(const std::string& node) const {
+    const auto it = run->failed.find(node);
+    return it == run->failed.end() ? 0 : it->second;
+  }
+  bool says(const std::string& text) const { return errors.find(text) != std::string::npos; }
   // The value of top-level attribute `name` stored on the entity or an ancestor, or null.
   const Value* attribute(EntityId e, const std::string& name) const {
     for (const auto& [key, n] : run->attribute_names) {
@@ -38,6 +52,11 @@ struct TestRun {
     return nullptr;
   }
 };
+
+// A top-level graph of format version 1 around `body` (its members without braces).
+inline std::string graph_text(const std::string& body) {
+  return R"({"format": "insula-graph", "version": 1, )" + body + "}";
+}
 
 inline TestRun run_text(const std::string& json, RunOptions options = {}) {
   TestRun t;

@@ -1,0 +1,165 @@
+// Entity creation nodes (graph-format.md §11 "Entity creation"): geometry, order, node attributes,
+// impulses and the lots of create.lots with W030.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "run_util.h"
+
+namespace insula::lang::graph::testing {
+namespace {
+
+TEST(CreateNodes, RectangleFromItsOrigin) {
+  const TestRun t = run_text(graph_text(R"(
+    "nodes": [ { "id": "r", "type": "create.rectangle",
+                 "params": { "width": 20, "depth": 10, "origin": [5, -5, 2] } } ])"));
+  ASSERT_TRUE(t.ok()) << t.errors;
+  const std::vector<EntityId> out = t.at("r.out");
+  ASSERT_EQ(out.size(), 1U);
+  EXPECT_DOUBLE_EQ(t.area(out[0]), 200.0);
+  const shape::Scope s = t.scope(out[0]);
+  EXPECT_EQ(s.origin, (kernel::Vec3{5, -5, 2}));
+  EXPECT_EQ(s.x, (kernel::Vec3{1, 0, 0}));
+  EXPECT_EQ(s.z, (kernel::Vec3{0, 0, 1}));
+  EXPECT_DOUBLE_EQ(s.size.x, 20.0);
+  EXPECT_DOUBLE_EQ(s.size.y, 10.0);
+}
+
+TEST(CreateNodes, CircleIsARegularPolygon) {
+  const TestRun t = run_text(graph_text(R"(
+    "nodes": [ { "id": "sq", "type": "create.circle", "params": { "radius": 1, "segments": 4 } },
+               { "id": "c", "type": "create.circle", "params": { "radius": 2, "center": [10, 0, 0] } } ])"));
+  ASSERT_TRUE(t.ok()) << t.errors;
+  EXPECT_NEAR(t.area(t.at("sq.out").at(0)), 2.0, 1e-12);  // a square with diagonal 2
+  const double n = 32;
+  EXPECT_NEAR(t.area(t.at("c.out").at(0)), 0.5 * n * 4 * std::sin(2 * std::numbers::pi / n), 1e-9);
+  const shape::Scope s = t.scope(t.at("c.out").at(0));
+  EXPECT_NEAR(s.center().x, 10.0, 1e-9);
+}
+
+TEST(CreateNodes, PolygonVerticesAndElevation) {
+  TestRun t = run_text(graph_text(R"(
+    "nodes": [ { "id": "l", "type": "create.polygon",
+                 "params": { "vertices": [[0,0,3], [4,0,3], [4,2,3], [2,2,3], [2,4,3], [0,4,3]] } } ])"));
+  ASSERT_TRUE(t.ok()) << t.errors;
+  EXPECT_DOUBLE_EQ(t.area(t.at("l.out").at(0)), 12.0);
+  EXPECT_DOUBLE_EQ(t.scope(t.at("l.out").at(0)).origin.z, 3.0);
+  t = run_text(graph_text(R"(
+    "nodes": [ { "id": "l", "type": "create.polygon", "params": { "vertices": [[0,0], [4], [4,2]] } } ])"));
+  ASSERT_FALSE(t.ok());
+  EXPECT_TRUE(t.says("error[G052]: a vertex must be [x, y] or [x, y, z] (node 'l')")) << t.errors;
+  t = run_text(graph_text(R"(
+    "nodes": [ { "id": "l", "type": "create.polygon", "params": { "vertices": [[0,0], [4,2]] } } ])"));
+  EXPECT_TRUE(t.says("error[G052]: a polygon needs at least 3 vertices (node 'l')")) << t.errors;
+}
+
+// Rows of cells from the origin, `gap` apart; index, ix, iy mapped to graph attributes.
+TEST(CreateNodes, GridRowByRow) {
+  const TestRun t = run_text(graph_text(R"(
+    "attributes": { "i": { "type": "integer", "default": -1 }, "x": { "type": "integer", "default": -1 },
+                    "y": { "type": "integer", "default": -1 } },
+    "nodes": [ { "id": "g", "type": "create.grid",
+                 "params": { "columns": 3, "rows": 2, "cell_width": 4, "cell_depth": 2, "gap": 1,
+                             "origin": [10, 0, 0] },
+                 "attributes": { "index": "i", "ix": "x", "iy": "y" } } ])"));
+  ASSERT_TRUE(t.ok()) << t.errors;
+  const std::vector<EntityId> cells = t.at("g.out");
+  ASSERT_EQ(cells.size(), 6U);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    EXPECT_DOUBLE_EQ(t.area(cells[k]), 8.0);
+    EXPECT_EQ(t.attribute(cells[k], "i")->integer(), static_cast<std::int64_t>(k));
+    EXPECT_EQ(t.attribute(cells[k], "x")->integer(), static_cast<std::int64_t>(k % 3));
+    EXPECT_EQ(t.attribute(cells[k], "y")->integer(), static_cast<std::int64_t>(k / 3));
+  }
+  EXPECT_EQ(t.scope(cells[4]).origin, (kernel::Vec3{15, 3, 0}));
+}
+
+TEST(CreateNodes, PointsInOrder) {
+  const TestRun t = run_text(graph_text(R"(
+    "attributes": { "i": { "type": "integer", "default": -1 } },
+    "nodes": [ { "id": "p", "type": "create.points", "params": { "points": [[1,2,3], [4,5,6]] },
+                 "attributes": { "index": "i" } } ])"));
+  ASSERT_TRUE(t.ok()) << t.errors;
+  const std::vector<EntityId> out = t.at("p.out");
+  ASSERT_EQ(out.size(), 2U);
+  EXPECT_EQ(t.entity(out[0]).type, EntityType::kPoint);
+  EXPECT_EQ(t.entity(out[1]).position, (kernel::Vec3{4, 5, 6}));
+  EXPECT_EQ(t.attribute(out[1], "i")->integer(), 1);
+}
+
+// Carriers; as impulses, each makes the impulsed node run one round and pass on its attributes.
+TEST(CreateNodes, EntitiesAndImpulses) {
+  const TestRun t = run_text(graph_text(R"(
+    "attributes": { "i": { "type": "integer", "default": -1 } },
+    "nodes": [ { "id": "none", "type": "create.entity", "params": { "count": 0 } },
+               { "id": "e", "type": "create.entity", "params": { "count": 3 },
+                 "attributes": { "index": "i" } },
+               { "id": "r", "type": "create.rectangle",
+                 "params": { "width": "= 1 + @i", "depth": 1 } } ],
+    "edges": [ "e.out -> r.impulse" ])"));
+  ASSERT_TRUE(t.ok()) << t.errors;
+  EXPECT_TRUE(t.at("none.out").empty());
+  const std::vector<EntityId> out = t.at("r.out");
+  ASSERT_EQ(out.size(), 3U);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_DOUBLE_EQ(t.area(out[k]), 1.0 + static_cast<double>(k));
+    EXPECT_EQ(t.attribute(out[k], "i")->integer(), static_cast<std::int64_t>(k));
+  }
+  EXPECT_EQ(t.runs("r").rounds, 3U);
+}
+
+// Declared properties become attributes (a GeoJSON number into an integer attribute); others
+// and degenerate lots are W030, once per message.
+TEST(CreateNodes, LotsWithTheirProperties) {
+  RunOptions options;
+  std::string asked = "?";
+  options.lots = [&asked](const std::string& file, std::vector<LotInput>& lots, std::string&) {
+    asked = file;
+    LotInput a;
+    a.footprint.outer = {{0, 0}, {10, 0}, {10, 20}, {0, 20}};
+    a.properties = {{"levels", 3.0}, {"zone", std::string("x")}, {"use", std::string("shop")}};
+    LotInput flat;
+    flat.footprint.outer = {{0, 0}, {1, 0}, {2, 0}};
+    flat.id = "flat";
+    LotInput b;
+    b.footprint.outer = {{20, 0}, {25, 0}, {25, 5}, {20, 5}};
+    b.properties = {{"zone", std::string("y")}};
+    lots = {a, flat, b};
+    return true;
+  };
+  const TestRun t = run_text(graph_text(R"(
+    "attributes": { "levels": { "type": "integer", "default": 1 },
+                    "use": { "type": "string", "default": "" },
+                    "i": { "type": "integer", "default": -1 } },
+    "nodes": [ { "id": "lots", "type": "create.lots", "attributes": { "index": "i" } } ])"),
+                             options);
+  ASSERT_TRUE(t.ok()) << t.errors;
+  EXPECT_EQ(asked, "");
+  const std::vector<EntityId> out = t.at("lots.out");
+  ASSERT_EQ(out.size(), 2U);
+  EXPECT_DOUBLE_EQ(t.area(out[0]), 200.0);
+  EXPECT_EQ(t.attribute(out[0], "levels")->type(), ValueType::kInteger);
+  EXPECT_EQ(t.attribute(out[0], "levels")->integer(), 3);
+  EXPECT_EQ(t.attribute(out[0], "use")->text(), "shop");
+  EXPECT_EQ(t.attribute(out[1], "levels"), nullptr);
+  EXPECT_EQ(t.attribute(out[1], "i")->integer(), 2);  // the skipped lot keeps its number
+  EXPECT_TRUE(
+      t.says("warning[W030]: GeoJSON property 'zone' is not a declared attribute; ignored "
+             "(node 'lots')"))
+      << t.errors;
+  EXPECT_EQ(t.errors.find("'zone'"), t.errors.rfind("'zone'")) << t.errors;
+  EXPECT_TRUE(t.says("warning[W030]: lot 'flat': ")) << t.errors;
+}
+
+TEST(CreateNodes, LotsWithoutAReader) {
+  const TestRun t = run_text(graph_text(R"("nodes": [ { "id": "lots", "type": "create.lots" } ])"));
+  ASSERT_FALSE(t.ok());
+  EXPECT_TRUE(
+      t.says("error[G052]: no lots: give --lot LOTS.geojson or the parameter 'file' "
+             "(node 'lots')"))
+      << t.errors;
+}
+
+}  // namespace
+}  // namespace insula::lang::graph::testing
