@@ -145,10 +145,14 @@ int build_graph(const BuildOptions& options) {
   if (!result->ok) return kExitInput;
   seconds["run"] = clock.seconds();
 
+  // The export scene only when something is written: a report-only run measures the graph.
   clock = Stopwatch();
-  shape::Scene scene = lang::graph::to_scene(*result);
-  scene.origin = lot_files.origin;
-  scene.crs = lot_files.crs;
+  shape::Scene scene;
+  if (!options.outputs.empty()) {
+    scene = lang::graph::to_scene(*result);
+    scene.origin = lot_files.origin;
+    scene.crs = lot_files.crs;
+  }
   seconds["scene"] = clock.seconds();
 
   nlohmann::json report;
@@ -157,8 +161,10 @@ int build_graph(const BuildOptions& options) {
   report["threads"] = run.threads;
   report["entities"] = result->entities.size();
   report["results"] = result->results.size();
-  report["buildings"] = scene.buildings.size();
-  report["lights"] = scene.lights.size();
+  if (!options.outputs.empty()) {
+    report["buildings"] = scene.buildings.size();
+    report["lights"] = scene.lights.size();
+  }
   report["graph"] = nlohmann::json::parse(lang::graph::graph_report(*result).dump());
   report["seconds"] = seconds;
   return finish_build(options, scene, report, total);
