@@ -8,30 +8,36 @@
 
 namespace insula::lang::graph {
 
-std::optional<EntityId> footprint_entity(NodeContext& c, std::size_t round, std::uint32_t position,
-                                         const kernel::Polygon& footprint, double elevation,
-                                         std::string& error) {
+namespace {
+
+// The flat root over `footprint` for a shape entity `make()` returns, or nullopt with `error`.
+template <typename Make>
+std::optional<EntityId> footprint_shape(NodeContext& c, const kernel::Polygon& footprint,
+                                        double elevation, std::string& error, Make make) {
   const shape::RootResult root = c.tree().create_root(footprint, elevation);
   if (!root.ok()) {
     error = root.error;
     return std::nullopt;
   }
-  const EntityId e = c.create(round, EntityType::kShape, position);
+  const EntityId e = make();
   c.entities()[e].shape = root.id;
   return e;
+}
+
+}  // namespace
+
+std::optional<EntityId> footprint_entity(NodeContext& c, std::size_t round, std::uint32_t position,
+                                         const kernel::Polygon& footprint, double elevation,
+                                         std::string& error) {
+  return footprint_shape(c, footprint, elevation, error,
+                         [&] { return c.create(round, EntityType::kShape, position); });
 }
 
 std::optional<EntityId> footprint_child(NodeContext& c, EntityId parent,
                                         const kernel::Polygon& footprint, double elevation,
                                         std::string& error) {
-  const shape::RootResult root = c.tree().create_root(footprint, elevation);
-  if (!root.ok()) {
-    error = root.error;
-    return std::nullopt;
-  }
-  const EntityId e = c.entities().derive(parent, EntityType::kShape);
-  c.entities()[e].shape = root.id;
-  return e;
+  return footprint_shape(c, footprint, elevation, error,
+                         [&] { return c.entities().derive(parent, EntityType::kShape); });
 }
 
 kernel::Mesh world_mesh(NodeContext& c, EntityId entity) {
