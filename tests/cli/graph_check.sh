@@ -6,9 +6,20 @@ source "$(dirname "$0")/lib/common.sh"
 out=$("$insula" check "$root/examples/graph/street_houses.graph.json" 2>&1)
 [ $? -eq 0 ] && [ "$out" = "$root/examples/graph/street_houses.graph.json: ok: 3 graphs, 12 nodes, 10 edges, 0 cyclic edges" ] ||
   fail "check street_houses: $out"
-for g in "$root"/examples/graph/*.graph.json "$root"/examples/graph/parts/*.graph.json; do
+for g in "$root"/examples/graph/*.graph.json "$root"/examples/graph/*/*.graph.json; do
   "$insula" check "$g" >/dev/null 2>"$tmp/err" || fail "$(basename "$g") does not check clean: $(cat "$tmp/err")"
   [ -s "$tmp/err" ] && fail "$(basename "$g") has warnings: $(cat "$tmp/err")"
+done
+
+# Every example runs clean (no error, no warning, nothing failed or left unprocessed).
+for g in "$root"/examples/graph/*.graph.json "$root"/examples/graph/*/*.graph.json; do
+  case "$g" in */parts/*) continue ;; esac  # subgraph files: run through their users
+  "$insula" build "$g" --report "$tmp/run.json" >/dev/null 2>"$tmp/err" ||
+    fail "$(basename "$g") does not run: $(cat "$tmp/err")"
+  [ -s "$tmp/err" ] && fail "$(basename "$g") warns when run: $(cat "$tmp/err")"
+  node -e 'const g = require(process.argv[1]).graph;
+           process.exit(Object.keys(g.failed).length + Object.keys(g.unprocessed).length ? 1 : 0);' \
+    "$tmp/run.json" || fail "$(basename "$g"): failed or unprocessed entities"
 done
 
 bad=$root/tests/data/graph/bad
