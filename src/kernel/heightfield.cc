@@ -137,6 +137,18 @@ void level_roads(Heightfield& f, std::span<const Polygon> roads, double margin, 
   const Nearest near = nearest_polygons(f, roads, reach + margin);
   std::vector<char> road(f.z.size(), 0);
   for (std::size_t k = 0; k < f.z.size(); ++k) road[k] = near.distance[k] <= reach ? 1 : 0;
+  f.road.resize(f.cells(), 0);
+  for (int j = 0; j + 1 < f.ny; ++j) {
+    for (int i = 0; i + 1 < f.nx; ++i) {
+      const Vec2 centre = f.point(i, j) + Vec2{f.dx / 2, f.dy / 2};
+      for (const Polygon& surface : roads) {
+        if (usable(surface) && locate(surface, centre) == PointLocation::kInside) {
+          f.road[static_cast<std::size_t>(j) * (f.nx - 1) + i] = 1;
+          break;
+        }
+      }
+    }
+  }
   // Along the road: the mean of road samples within the window.
   const double radius = std::max(2 * margin, std::max(f.dx, f.dy));
   const int ri = static_cast<int>(radius / f.dx);
@@ -351,7 +363,7 @@ std::vector<double> level(Heightfield& f, const Levelling& l) {
   return plateau;
 }
 
-Mesh heightfield_mesh(const Heightfield& f) {
+Mesh heightfield_mesh(const Heightfield& f, MaterialId ground, MaterialId road) {
   Mesh mesh;
   if (f.nx < 2 || f.ny < 2) return mesh;
   const std::size_t cells = f.cells();
@@ -362,10 +374,12 @@ Mesh heightfield_mesh(const Heightfield& f) {
       mesh.add_vertex({p.x, p.y, f.at(i, j)});
     }
   }
-  const FaceTag tag{SemanticClass::kGroundSurface, 0, 0};
   const auto nx = static_cast<std::uint32_t>(f.nx);
+  std::size_t cell = 0;
   for (std::uint32_t j = 0; j + 1 < static_cast<std::uint32_t>(f.ny); ++j) {
-    for (std::uint32_t i = 0; i + 1 < nx; ++i) {
+    for (std::uint32_t i = 0; i + 1 < nx; ++i, ++cell) {
+      const bool on_road = !f.road.empty() && f.road[cell] != 0;
+      const FaceTag tag{SemanticClass::kGroundSurface, on_road ? road : ground, 0};
       const std::uint32_t a = j * nx + i;
       mesh.add_face({a, a + 1, a + nx + 1}, tag);
       mesh.add_face({a, a + nx + 1, a + nx}, tag);

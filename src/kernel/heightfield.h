@@ -24,6 +24,9 @@ struct Heightfield {
   int nx = 0;  // samples along x (columns) and y (rows), at least 2 each
   int ny = 0;
   std::vector<double> z;  // row by row: sample (i, j) is z[j * nx + i]
+  // Cells whose centre lies inside a road levelled into the field (level()), row by row like the
+  // cells; empty when no road was.
+  std::vector<std::uint8_t> road;
 
   double& at(int i, int j) { return z[static_cast<std::size_t>(j) * nx + i]; }
   double at(int i, int j) const { return z[static_cast<std::size_t>(j) * nx + i]; }
@@ -80,7 +83,8 @@ struct Levelling {
 std::vector<double> level(Heightfield& field, const Levelling& levelling);
 
 // Two triangles per cell (the diagonal from (i, j) to (i + 1, j + 1)), counter-clockwise seen
-// from above, tagged kGroundSurface with face id 0; vertices are the samples, row by row.
-Mesh heightfield_mesh(const Heightfield& field);
+// from above, tagged kGroundSurface with face id 0 and material `ground`, or `road` for road
+// cells; vertices are the samples, row by row.
+Mesh heightfield_mesh(const Heightfield& field, MaterialId ground = 0, MaterialId road = 0);
 
 }  // namespace insula::kernel

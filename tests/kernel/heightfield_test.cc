@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace insula::kernel {
@@ -159,6 +160,16 @@ TEST(Heightfield, RoadsAreLevelledAcrossAndFollowTheTerrainAlong) {
     EXPECT_NEAR(height_at(f, x, 26), height_at(f, x, 34), 0.2) << x;
     EXPECT_NEAR(height_at(f, x, 30), 0.1 * x, 0.3) << x;
   }
+  // Cells whose centre is inside the road (y 27..33; 25 and 35 are on its edge: four rows of
+  // 100) are drawn as road.
+  ASSERT_EQ(f.road.size(), f.cells());
+  EXPECT_EQ(std::count(f.road.begin(), f.road.end(), 1), 400);
+  const Mesh mesh = heightfield_mesh(f, 1, 2);
+  std::size_t road_faces = 0;
+  for (std::size_t k = 0; k < mesh.face_count(); ++k)
+    road_faces += mesh.tag(k).material == 2 ? 1 : 0;
+  EXPECT_EQ(road_faces, 800U);
+  EXPECT_EQ(mesh.tag(0).material, 1);
 }
 
 TEST(Heightfield, MeshHasTwoTrianglesPerCellFacingUp) {

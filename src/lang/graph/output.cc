@@ -111,7 +111,8 @@ kernel::MaterialId material_index(shape::Scene& scene,
   return it->second;
 }
 
-// A terrain is a building of its own with one part, `terrain`: its surface in a grass colour.
+// A terrain is a building of its own with one part, `terrain`: its surface in a grass colour,
+// the cells of levelled roads in asphalt.
 shape::Building terrain_building(const RunResult& run, EntityId id, shape::Scene& scene,
                                  std::map<MaterialKey, kernel::MaterialId>& known) {
   shape::Building b;
@@ -123,10 +124,13 @@ shape::Building terrain_building(const RunResult& run, EntityId id, shape::Scene
     b.attributes[name] = export_value(*value);
     part.attributes[name] = export_value(*value);
   }
-  part.mesh = kernel::heightfield_mesh(*run.entities[id].terrain);
+  const kernel::Heightfield& field = *run.entities[id].terrain;
   const kernel::MaterialId grass =
       material_index(scene, known, {"terrain", {0.42F, 0.55F, 0.30F, 1.0F}});
-  for (std::size_t f = 0; f < part.mesh.face_count(); ++f) part.mesh.tag(f).material = grass;
+  const kernel::MaterialId road =
+      field.road.empty() ? grass
+                         : material_index(scene, known, {"road", {0.32F, 0.33F, 0.35F, 1.0F}});
+  part.mesh = kernel::heightfield_mesh(field, grass, road);
   b.parts.push_back(std::move(part));
   return b;
 }

@@ -130,6 +130,17 @@ TEST(Terrain, ReportAndSceneShowTheSurface) {
     EXPECT_EQ(scene.materials[b.parts[0].mesh.tag(0).material].name, "terrain");
   }
   EXPECT_EQ(terrains, 2U);  // keep.out and rough.out
+  // The levelled terrain draws its road cells (centres 11..19 inside y 10..20: 5 rows of 100)
+  // as road.
+  std::size_t road_faces = 0;
+  for (const shape::Building& b : scene.buildings) {
+    if (b.id != "terrain_" + std::to_string(t.at("keep.out")[0])) continue;
+    const kernel::Mesh& mesh = b.parts[0].mesh;
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+      road_faces += scene.materials[mesh.tag(f).material].name == "road" ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(road_faces, 1000U);
   // 5 lots + 5 masses; paths and points are not drawn.
   EXPECT_EQ(scene.buildings.size(), 12U);
 }
