@@ -313,6 +313,21 @@ constexpr Row kRows[] = {
      "runs a Lua program on the shape's footprint"},
     {"rule.plasm", "rule", "in:shape -> out:shape", "file:string", "", "",
      "a PLaSM expression FILE.psm#EXPRESSION fitted into the shape's scope"},
+    // Extensions of the format (docs/graph-executor.md, "Terrain"): the surfaces of seed 003
+    // §5.1 (noise, smoothing, levelling) as a `terrain` entity, and actors placed on it.
+    {"terrain.create", "terrain", "-> out:terrain",
+     "width:number>=0; depth:number>=0; cell:number=2>=0; origin:vec3=[0,0,0]; height:number=0", "",
+     "", "a flat heightfield of width x depth metres, samples at most `cell` apart"},
+    {"terrain.noise", "terrain", "in:terrain -> out:terrain",
+     "amplitude:number>=0; wavelength:number>=0; octaves:integer=4>=1<=16; seed:integer=0", "", "",
+     "adds fractal gradient noise (within +-amplitude; each octave half the last)"},
+    {"terrain.smooth", "terrain", "in:terrain -> out:terrain", "iterations:integer=1>=0<=1000", "",
+     "", "binomial 3x3 smoothing passes"},
+    {"terrain.level", "terrain", "in:terrain* shapes:shape*? roads:shape*? -> out:terrain",
+     "margin:number=5>=0", "", "",
+     "flat under each footprint (its mean height), roads flat across, blended over `margin`"},
+    {"terrain.place", "terrain", "in:T<actor* terrain:terrain* -> out:T", "", "", "",
+     "shapes onto the terrain at their footprint's centroid; path vertices, points, lights"},
 };
 
 std::vector<NodeType> build() {

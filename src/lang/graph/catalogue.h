@@ -44,7 +44,8 @@ struct AugmentSpec {
 
 struct NodeType {
   std::string name;
-  std::string category;  // "creation", "shape", "path", "list", "query", "flow", "light", "texture"
+  std::string category;  // "creation", "shape", "path", "list", "query", "flow", "light",
+                         // "texture", "rule", "terrain"
   std::vector<PortSpec> inputs;
   std::vector<PortSpec> outputs;  // fixed ports, before augmentation ports
   std::vector<ParamSpec> params;

@@ -2,8 +2,8 @@
 // its type, the entity it descends from (lineage, §9.10), its random seed (§9.9), the head of a
 // persistent attribute chain shared with its ancestors and copies (§7: "attributes are always
 // copied from the ancestors to their descendants"; stored once, looked up along the chain), and
-// its payload: a shape in the run's shape tree, a street network, a point, a light, a texture or
-// a group's members (docs/graph-executor.md, "Entities").
+// its payload: a shape in the run's shape tree, a street network, a point, a light, a texture,
+// a group's members or a terrain's heightfield (docs/graph-executor.md, "Entities").
 #pragma once
 
 #include <array>
@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "kernel/heightfield.h"
 #include "kernel/mesh.h"
 #include "kernel/street_network.h"
 #include "kernel/vec.h"
@@ -81,6 +82,8 @@ struct Entity {
   std::shared_ptr<const Texture> texture;
   // group
   std::vector<EntityId> members;
+  // terrain (world XY and z; docs/graph-executor.md, "Terrain")
+  std::shared_ptr<const kernel::Heightfield> terrain;
 };
 
 // Every entity of a run, never freed during it (a run is a batch). Not thread-safe for writes.

@@ -27,6 +27,7 @@ std::span<const NodeImpl> query_nodes();
 std::span<const NodeImpl> flow_nodes();
 std::span<const NodeImpl> light_texture_nodes();
 std::span<const NodeImpl> rule_nodes();
+std::span<const NodeImpl> terrain_nodes();
 
 // The implementation of `type`, or null.
 const NodeImpl* find_node_impl(std::string_view type);

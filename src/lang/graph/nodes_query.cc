@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "kernel/context_query.h"
-#include "kernel/convex_hull.h"
 #include "lang/graph/nodes.h"
 #include "lang/graph/properties.h"
 #include "lang/graph/shape_entities.h"
@@ -103,19 +102,6 @@ void occlusion(NodeContext& c) {
     c.write(shapes[i], "occlusion", Value(covered[i]));
     c.emit(c.output_port(covered[i] >= threshold ? "occluded" : "visible"), shapes[i]);
   }
-}
-
-// The XY footprint of a shape: its world outline when flat and horizontal, else the convex
-// hull of its geometry's XY projection.
-kernel::Polygon ground_footprint(NodeContext& c, EntityId e) {
-  if (std::optional<kernel::Polygon> flat = world_footprint(c, e)) return *flat;
-  const kernel::Mesh mesh = world_mesh(c, e);
-  std::vector<kernel::Vec2> points;
-  for (const kernel::Vec3& p : mesh.positions()) points.push_back({p.x, p.y});
-  kernel::Polygon polygon;
-  const kernel::Hull2Result hull = kernel::convex_hull_2d(points);
-  if (hull.status == kernel::HullStatus::kOk) polygon.outer = hull.ring;
-  return polygon;
 }
 
 std::vector<kernel::StreetSegment> street_segments(NodeContext& c, std::span<const EntityId> in) {

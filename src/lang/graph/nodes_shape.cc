@@ -198,8 +198,8 @@ void set_texture(NodeContext& c) {
   }
 }
 
-// Shapes through the registry; paths, points and lights moved directly (their scope is the
-// world's axes, so scope and world spaces agree).
+// Shapes through the registry; paths, points, lights and terrains moved directly (their scope
+// is the world's axes, so scope and world spaces agree).
 void move_other(NodeContext& c, EntityId out, kernel::Vec3 by) {
   Entity& e = c.entities()[out];
   e.position = e.position + by;
@@ -207,6 +207,12 @@ void move_other(NodeContext& c, EntityId out, kernel::Vec3 by) {
     auto path = std::make_shared<PathGeometry>(*e.path);
     for (kernel::Vec3& v : path->vertices) v = v + by;
     e.path = path;
+  }
+  if (e.terrain != nullptr) {
+    auto field = std::make_shared<kernel::Heightfield>(*e.terrain);
+    field->origin = field->origin + kernel::Vec2{by.x, by.y};
+    for (double& z : field->z) z += by.z;
+    e.terrain = field;
   }
 }
 
@@ -236,6 +242,7 @@ void actor(NodeContext& c) {
     e.position = src.position;
     e.path = src.path;
     e.light = src.light;
+    e.terrain = src.terrain;
     if (name == "translate") {
       move_other(c, out,
                  {c.param(r, "x").number(), c.param(r, "y").number(), c.param(r, "z").number()});

@@ -1,9 +1,11 @@
 #include "lang/graph/output.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <tuple>
 
+#include "kernel/heightfield.h"
 #include "lang/graph/properties.h"
 #include "shape/scope.h"
 
@@ -109,6 +111,30 @@ kernel::MaterialId material_index(shape::Scene& scene,
   return it->second;
 }
 
+// A terrain is a building of its own with one part, `terrain`: its surface in a grass colour,
+// the cells of levelled roads in asphalt.
+shape::Building terrain_building(const RunResult& run, EntityId id, shape::Scene& scene,
+                                 std::map<MaterialKey, kernel::MaterialId>& known) {
+  shape::Building b;
+  b.id = "terrain_" + std::to_string(id);
+  shape::Part part;
+  part.name = "terrain";
+  part.kind = shape::PartKind::kOther;
+  for (const auto& [name, value] : top_attributes(run, id)) {
+    b.attributes[name] = export_value(*value);
+    part.attributes[name] = export_value(*value);
+  }
+  const kernel::Heightfield& field = *run.entities[id].terrain;
+  const kernel::MaterialId grass =
+      material_index(scene, known, {"terrain", {0.42F, 0.55F, 0.30F, 1.0F}});
+  const kernel::MaterialId road =
+      field.road.empty() ? grass
+                         : material_index(scene, known, {"road", {0.32F, 0.33F, 0.35F, 1.0F}});
+  part.mesh = kernel::heightfield_mesh(field, grass, road);
+  b.parts.push_back(std::move(part));
+  return b;
+}
+
 }  // namespace
 
 shape::Scene to_scene(const RunResult& run) {
@@ -143,6 +169,11 @@ shape::Scene to_scene(const RunResult& run) {
         light.range = e.light->range;
         scene.lights.push_back(std::move(light));
       }
+      continue;
+    }
+    if (e.type == EntityType::kTerrain) {
+      scene.buildings.push_back(terrain_building(run, r.entity, scene, known));
+      part_index.emplace_back();
       continue;
     }
     if (e.type != EntityType::kShape) continue;
@@ -247,6 +278,15 @@ nlohmann::ordered_json entity_record(const RunResult& run, EntityId id, const st
       r["width"] = e.texture->width;
       r["height"] = e.texture->height;
       break;
+    case EntityType::kTerrain: {
+      const kernel::Heightfield& f = *e.terrain;
+      const auto [lo, hi] = std::minmax_element(f.z.begin(), f.z.end());
+      r["cells"] = f.cells();
+      r["size"] = {f.width(), f.depth()};
+      r["min_height"] = *lo;
+      r["max_height"] = *hi;
+      break;
+    }
     case EntityType::kGroup: {
       nlohmann::ordered_json members = nlohmann::ordered_json::array();
       for (EntityId m : e.members) members.push_back(entity_record(run, m, ""));

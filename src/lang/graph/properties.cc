@@ -1,5 +1,6 @@
 #include "lang/graph/properties.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "kernel/mesh.h"
@@ -42,6 +43,15 @@ std::optional<shape::Scope> entity_scope(const EntityStore& entities, const shap
     case EntityType::kLight: {
       shape::Scope s;
       s.origin = e.position;
+      return s;
+    }
+    case EntityType::kTerrain: {
+      // Its bounds: the grid's extent and the lowest and highest sample.
+      const kernel::Heightfield& f = *e.terrain;
+      const auto [lo, hi] = std::minmax_element(f.z.begin(), f.z.end());
+      shape::Scope s;
+      s.origin = {f.origin.x, f.origin.y, *lo};
+      s.size = {f.width(), f.depth(), *hi - *lo};
       return s;
     }
     default:

@@ -13,7 +13,8 @@
 
 namespace insula::lang::graph {
 
-// The scope of an actor: a shape's own; a path's, point's or light's axis-aligned bounds.
+// The scope of an actor: a shape's own; a path's, point's, light's or terrain's axis-aligned
+// bounds.
 std::optional<shape::Scope> entity_scope(const EntityStore& entities, const shape::ShapeTree& tree,
                                          EntityId id);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 
+#include "kernel/convex_hull.h"
 #include "shape/scope.h"
 
 namespace insula::lang::graph {
@@ -116,6 +117,17 @@ std::optional<kernel::Polygon> world_footprint(NodeContext& c, EntityId entity, 
   for (const kernel::Ring& hole : s.outline->holes) polygon.holes.push_back(to_world(hole));
   kernel::normalize(polygon);
   if (elevation != nullptr) *elevation = s.scope.origin.z;
+  return polygon;
+}
+
+kernel::Polygon ground_footprint(NodeContext& c, EntityId e) {
+  if (std::optional<kernel::Polygon> flat = world_footprint(c, e)) return *flat;
+  const kernel::Mesh mesh = world_mesh(c, e);
+  std::vector<kernel::Vec2> points;
+  for (const kernel::Vec3& p : mesh.positions()) points.push_back({p.x, p.y});
+  kernel::Polygon polygon;
+  const kernel::Hull2Result hull = kernel::convex_hull_2d(points);
+  if (hull.status == kernel::HullStatus::kOk) polygon.outer = hull.ring;
   return polygon;
 }
 

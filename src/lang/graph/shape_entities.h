@@ -49,6 +49,10 @@ EntityId shape_child(NodeContext& c, EntityId parent, shape::ShapeId shape);
 std::optional<kernel::Polygon> world_footprint(NodeContext& c, EntityId entity,
                                                double* elevation = nullptr);
 
+// The XY footprint of a shape entity: its world outline when flat and horizontal, else the
+// convex hull of its geometry's XY projection (empty when that has no area).
+kernel::Polygon ground_footprint(NodeContext& c, EntityId entity);
+
 // A graph value as a registry argument for `decl` (sizes from their notation "'0.5", "~1").
 std::optional<shape::ArgValue> to_argument(const Value& value, const shape::ParamDecl& decl);
 

@@ -7,8 +7,8 @@
 namespace insula::lang::graph {
 namespace {
 
-constexpr std::array<std::string_view, 8> kEntityNames = {"entity", "actor", "shape",   "path",
-                                                          "point",  "light", "texture", "group"};
+constexpr std::array<std::string_view, 9> kEntityNames = {
+    "entity", "actor", "shape", "path", "point", "light", "texture", "group", "terrain"};
 constexpr std::array<std::string_view, 8> kValueNames = {"number", "integer", "bool", "string",
                                                          "vec3",   "list",    "enum", "any"};
 
@@ -18,6 +18,7 @@ EntityType parent(EntityType type) {
     case EntityType::kPath:
     case EntityType::kPoint:
     case EntityType::kLight:
+    case EntityType::kTerrain:
       return EntityType::kActor;
     default:
       return EntityType::kEntity;

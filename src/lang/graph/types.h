@@ -10,7 +10,8 @@
 
 namespace insula::lang::graph {
 
-// entity > actor > {shape, path, point, light}; entity > texture; entity > group.
+// entity > actor > {shape, path, point, light, terrain}; entity > texture; entity > group.
+// `terrain` (a heightfield) extends §10 (docs/graph-executor.md, "Terrain").
 enum class EntityType : std::uint8_t {
   kEntity,
   kActor,
@@ -19,7 +20,8 @@ enum class EntityType : std::uint8_t {
   kPoint,
   kLight,
   kTexture,
-  kGroup
+  kGroup,
+  kTerrain
 };
 
 std::string_view entity_type_name(EntityType type);

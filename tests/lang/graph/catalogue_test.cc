@@ -14,9 +14,10 @@ namespace {
 TEST(GraphCatalogue, HasEveryTypeOfTheFormatOnce) {
   std::set<std::string> names;
   for (const NodeType& t : catalogue()) EXPECT_TRUE(names.insert(t.name).second) << t.name;
-  // 54 catalogue types (with `subgraph` the 55 executable types of §11, and `note`) and the
-  // four rule nodes Insula adds (docs/graph-executor.md, "Rule nodes").
-  EXPECT_EQ(names.size(), 58U);
+  // 54 catalogue types (with `subgraph` the 55 executable types of §11, and `note`), the
+  // four rule nodes Insula adds (docs/graph-executor.md, "Rule nodes") and the five terrain
+  // nodes ("Terrain").
+  EXPECT_EQ(names.size(), 63U);
   for (const char* name : {"create.lots", "shape.op", "path.to_shapes", "list.ungroup",
                            "query.is_oriented_to", "flow.stochastic", "texture.combine"}) {
     EXPECT_NE(find_node_type(name), nullptr) << name;
@@ -76,6 +77,11 @@ TEST(GraphTypes, Lattice) {
   EXPECT_EQ(common_supertype(EntityType::kShape, EntityType::kPath), EntityType::kActor);
   EXPECT_EQ(common_supertype(EntityType::kShape, EntityType::kGroup), EntityType::kEntity);
   EXPECT_EQ(common_supertype(EntityType::kPoint, EntityType::kPoint), EntityType::kPoint);
+  EXPECT_TRUE(is_subtype(EntityType::kTerrain, EntityType::kActor));
+  EXPECT_FALSE(is_subtype(EntityType::kTerrain, EntityType::kShape));
+  EXPECT_EQ(common_supertype(EntityType::kTerrain, EntityType::kPath), EntityType::kActor);
+  EXPECT_EQ(entity_type_named("terrain"), EntityType::kTerrain);
+  EXPECT_EQ(entity_type_name(EntityType::kTerrain), "terrain");
 }
 
 TEST(GraphJson, PositionsOfValuesKeysAndStringCharacters) {
