@@ -16,6 +16,7 @@
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
+#include "apps/cli/mass_plan.h"
 #include "apps/cli/mass_report.h"
 #include "apps/cli/progress.h"
 #include "apps/cli/stopwatch.h"
@@ -34,127 +35,110 @@ namespace {
 const std::vector<std::string> kRoofNames = {"flat",    "shed",    "gable",        "hip",
                                              "pyramid", "mansard", "holed_mansard"};
 
-// What one footprint becomes, decided before the parallel build so warnings stay in input order.
-struct BuildingPlan {
-  kernel::MassSpec spec;
-};
-
-std::optional<double> number_property(const shape::AttributeMap& properties,
-                                      const std::string& name) {
-  auto it = properties.find(name);
-  if (it == properties.end()) return std::nullopt;
-  if (const double* d = std::get_if<double>(&it->second)) return *d;
-  if (const std::string* s = std::get_if<std::string>(&it->second)) {
-    char* end = nullptr;
-    const double d = std::strtod(s->c_str(), &end);
-    if (end != s->c_str() && *end == '\0') return d;
-  }
-  return std::nullopt;
-}
-
-// A warning of the mass stage: its code (docs/cli.md, "Warnings") and its text.
-struct Warning {
-  std::string code;
-  std::string text;
-};
-
-std::string feature_name(const io::Footprint& footprint) {
-  return "feature " + std::to_string(footprint.feature_index) + " (id \"" + footprint.id + "\")";
-}
-
-double plan_height(const MassOptions& options, const io::Footprint& footprint,
-                   std::vector<Warning>& warnings) {
-  if (options.height) return *options.height;
-  const std::optional<double> h = number_property(footprint.properties, options.height_attr);
-  if (h && std::isfinite(*h) && *h > 0 && *h < 1000) return *h;
-  const bool present = footprint.properties.count(options.height_attr) > 0;
-  warnings.push_back(
-      {present ? "MAS002" : "MAS001",
-       feature_name(footprint) + ": " +
-           (present ? "property '" + options.height_attr + "' is not a height in (0, 1000) m"
-                    : "no '" + options.height_attr + "' property") +
-           "; using " + shape::to_string(options.default_height) + " m"});
-  return options.default_height;
-}
-
-kernel::RoofType plan_roof(const MassOptions& options, const io::Footprint& footprint,
-                           std::vector<Warning>& warnings) {
-  if (!options.roof_given) {
-    auto it = footprint.properties.find("roof");
-    if (it != footprint.properties.end()) {
-      const std::string name = shape::to_string(it->second);
-      if (std::optional<kernel::RoofType> known = kernel::roof_type_from_name(name)) return *known;
-      warnings.push_back({"MAS003", feature_name(footprint) + ": unknown roof '" + name +
-                                        "'; using " + options.roof});
-    }
-  }
-  return kernel::roof_type_from_name(options.roof).value_or(kernel::RoofType::kHip);
-}
-
-double plan_pitch(const MassOptions& options, const io::Footprint& footprint) {
-  if (!options.pitch_given) {
-    const std::optional<double> p = number_property(footprint.properties, "pitch");
-    if (p && *p > 0 && *p < 89) return *p;
-  }
-  return options.pitch_deg;
-}
-
-std::vector<BuildingPlan> plan_buildings(const MassOptions& options, const io::FootprintSet& set,
-                                         std::vector<Warning>& warnings) {
-  std::vector<BuildingPlan> plans;
-  plans.reserve(set.footprints.size());
-  for (const io::Footprint& footprint : set.footprints) {
-    BuildingPlan plan;
-    plan.spec.wall_height = plan_height(options, footprint, warnings);
-    plan.spec.roof = plan_roof(options, footprint, warnings);
-    plan.spec.pitch_deg = plan_pitch(options, footprint);
-    plan.spec.overhang = options.overhang;
-    plans.push_back(plan);
-  }
-  return plans;
-}
-
 struct BuiltBuilding {
   shape::Building building;
   std::vector<std::string> messages;  // fallbacks and failures, reported in input order
   bool watertight = true;
+  double top = 0;  // highest point built
 };
 
-BuiltBuilding build_one(const io::Footprint& footprint, const BuildingPlan& plan) {
+void paint(const FootprintPlan& plan, kernel::Mesh& mesh) {
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    kernel::FaceTag& tag = mesh.tag(f);
+    if (tag.semantic == kernel::SemanticClass::kWallSurface) {
+      tag.material = plan.wall_material;
+    } else if (tag.semantic == kernel::SemanticClass::kRoofSurface ||
+               tag.semantic == kernel::SemanticClass::kOuterCeilingSurface) {
+      tag.material = plan.roof_material;
+    }
+  }
+}
+
+BuiltBuilding build_one(const io::Footprint& footprint, const FootprintPlan& plan) {
   BuiltBuilding out;
   out.building.id = footprint.id;
   out.building.attributes = footprint.properties;
+  kernel::RoofType built_roof = plan.spec.roof;
   for (std::size_t i = 0; i < footprint.polygons.size(); ++i) {
     kernel::MassResult mass = kernel::build_mass(footprint.polygons[i], plan.spec);
     if (!mass.message.empty()) out.messages.push_back(mass.message);
+    built_roof = mass.roof;
     shape::Part part;
     part.name =
         footprint.polygons.size() == 1 ? footprint.id : footprint.id + "-part-" + std::to_string(i);
     part.kind = shape::PartKind::kBuildingPart;
     part.mesh = std::move(mass.mesh);
+    paint(plan, part.mesh);
     // build_mass promises shared vertices, so the topological check needs no welding.
     out.watertight = out.watertight && !part.mesh.empty() && kernel::check(part.mesh).closed &&
                      kernel::volume(part.mesh) > 0;
+    if (!part.mesh.empty()) out.top = std::max(out.top, part.mesh.bounds().max.z);
     out.building.parts.push_back(std::move(part));
   }
+  add_form_attributes(plan.form, built_roof, out.top, out.building.attributes);
   return out;
 }
 
 // Builds every footprint in parallel; results land by index, so the output does not depend on the
 // thread count. After an interruption the workers build nothing more (the caller checks).
-std::vector<BuiltBuilding> build_all(const io::FootprintSet& set,
-                                     const std::vector<BuildingPlan>& plans, bool quiet) {
+std::vector<BuiltBuilding> build_all(const io::FootprintSet& set, const MassPlan& plan,
+                                     bool quiet) {
   std::vector<BuiltBuilding> built(set.footprints.size());
   Progress progress("buildings", built.size(), quiet);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, built.size(), 64),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t i = range.begin(); i != range.end(); ++i) {
                         if (interrupted()) return;
-                        built[i] = build_one(set.footprints[i], plans[i]);
+                        // An outline replaced by its building:part features is not built.
+                        if (plan.footprints[i].replaced) continue;
+                        built[i] = build_one(set.footprints[i], plan.footprints[i]);
                       }
                       progress.advance(range.size());
                     });
   return built;
+}
+
+// A building of the scene and the feature it came from (an outline, for joined parts).
+struct Assembled {
+  BuiltBuilding built;
+  std::size_t feature = 0;
+};
+
+// S3DB: the building:part features of a replaced outline become the parts of one building named
+// after the outline, with its properties; every other footprint is a building of its own.
+std::vector<Assembled> assemble(const io::FootprintSet& set, const MassPlan& plan,
+                                std::vector<BuiltBuilding>& built) {
+  std::vector<std::vector<std::size_t>> parts_of(built.size());
+  for (std::size_t i = 0; i < built.size(); ++i) {
+    if (plan.footprints[i].outline) parts_of[*plan.footprints[i].outline].push_back(i);
+  }
+  std::vector<Assembled> out;
+  for (std::size_t i = 0; i < built.size(); ++i) {
+    if (plan.footprints[i].outline) continue;
+    if (!plan.footprints[i].replaced) {
+      out.push_back({std::move(built[i]), i});
+      continue;
+    }
+    Assembled joined;
+    joined.feature = i;
+    joined.built.building.id = set.footprints[i].id;
+    joined.built.building.attributes = set.footprints[i].properties;
+    for (const std::size_t p : parts_of[i]) {
+      BuiltBuilding& part = built[p];
+      joined.built.watertight = joined.built.watertight && part.watertight;
+      joined.built.top = std::max(joined.built.top, part.top);
+      for (std::string& m : part.messages) {
+        joined.built.messages.push_back("part \"" + part.building.id + "\": " + m);
+      }
+      for (shape::Part& mesh_part : part.building.parts) {
+        mesh_part.attributes = part.building.attributes;
+        joined.built.building.parts.push_back(std::move(mesh_part));
+      }
+    }
+    joined.built.building.attributes["insula:height"] = joined.built.top;
+    out.push_back(std::move(joined));
+  }
+  return out;
 }
 
 // A footprint that gave no closed shell: an error, or a warning with --keep-going.
@@ -194,12 +178,23 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
       mass->add_option("--height", options.height, "wall height in meters for every building")
           ->check(finite_range(0.5, 1000.0));
   mass->add_option("--height-attr", options.height_attr,
-                   "feature property holding the wall height (default 'height')")
+                   "property holding the wall height of features that are not OpenStreetMap "
+                   "buildings (default 'height'; OSM features follow Simple 3D Buildings)")
       ->excludes(height);
+  mass->add_option("--levels-attr", options.levels_attr,
+                   "property holding the number of storeys, times --storey-height, when no "
+                   "height is given")
+      ->excludes(height);
+  mass->add_option("--storey-height", options.storey_height,
+                   "meters per storey for building:levels, roof:levels and --levels-attr "
+                   "(default 3)")
+      ->check(finite_range(1.0, 20.0));
   mass->add_option("--default-height", options.default_height,
                    "wall height when a feature has no usable height (default 10)")
       ->check(finite_range(0.5, 1000.0));
   mass->add_option("--report", options.report, "write a JSON report (counts, timings)");
+  mass->add_flag("--report-buildings", options.report_buildings,
+                 "list every building in the report: its heights, roof and their sources");
   mass->add_option("--threads", options.threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   mass->add_flag("-q,--quiet", options.quiet, "no progress or warnings on stderr");
@@ -244,31 +239,40 @@ int run_mass(const MassOptions& options) {
 
   Stopwatch build_clock;
   std::vector<Warning> warnings;
-  const std::vector<BuildingPlan> plans = plan_buildings(options, set.value(), warnings);
-  std::vector<BuiltBuilding> built = build_all(set.value(), plans, options.quiet);
+  const MassPlan plan = plan_mass(options, set.value(), warnings);
+  std::vector<BuiltBuilding> built = build_all(set.value(), plan, options.quiet);
   if (const int code = stop_if_interrupted(); code != 0) return code;
   shape::Scene scene;
   scene.origin = set->origin;
   scene.crs = set->crs;
-  scene.buildings.reserve(built.size());
+  scene.materials = plan.materials;
+  std::vector<Assembled> buildings = assemble(set.value(), plan, built);
+  scene.buildings.reserve(buildings.size());
   std::size_t failed = 0;
-  for (std::size_t i = 0; i < built.size(); ++i) {
-    BuiltBuilding& b = built[i];
+  for (Assembled& a : buildings) {
+    BuiltBuilding& b = a.built;
     for (std::string& m : b.messages)
       warnings.push_back({"MAS004", "building \"" + b.building.id + "\": " + m});
     if (!b.watertight) {
       ++failed;
-      report_failed_building(options, set->footprints[i], b);
+      report_failed_building(options, set->footprints[a.feature], b);
       if (options.keep_going) continue;
     }
     report.count_building(b.building, b.watertight);
+    if (options.report_buildings) report.describe_building(b.building);
     scene.buildings.push_back(std::move(b.building));
+  }
+  report.overlaps = plan.overlap_summary.pairs;
+  if (plan.overlap_summary.pairs > 0) {
+    report.largest_overlap = {set->footprints[plan.overlap_summary.largest_first].id,
+                              set->footprints[plan.overlap_summary.largest_second].id,
+                              plan.overlap_summary.largest_area};
   }
   if (failed > 0 && !options.keep_going) {
     std::fprintf(
         stderr,
         "insula: %zu of %zu buildings failed; nothing written (--keep-going leaves them out)\n",
-        failed, built.size());
+        failed, buildings.size());
     return kExitInput;
   }
   if (scene.buildings.empty()) {

@@ -15,6 +15,36 @@ void MassReport::count_building(const shape::Building& building, bool is_waterti
   }
 }
 
+void MassReport::describe_building(const shape::Building& building) {
+  nlohmann::ordered_json entry;
+  entry["id"] = building.id;
+  const auto attribute = [&](const shape::AttributeMap& attributes, const char* key) {
+    auto it = attributes.find(key);
+    if (it == attributes.end()) return nlohmann::ordered_json();
+    if (const double* d = std::get_if<double>(&it->second)) return nlohmann::ordered_json(*d);
+    return nlohmann::ordered_json(shape::to_string(it->second));
+  };
+  const auto describe = [&](const shape::AttributeMap& attributes, nlohmann::ordered_json& out) {
+    for (const char* key : {"insula:height", "insula:eave_height", "insula:min_height",
+                            "insula:height_source", "insula:roof", "insula:roof_source"}) {
+      nlohmann::ordered_json value = attribute(attributes, key);
+      if (!value.is_null()) out[std::string(key).substr(7)] = value;
+    }
+  };
+  describe(building.attributes, entry);
+  // Parts joined from building:part features carry their own sources.
+  nlohmann::ordered_json joined = nlohmann::ordered_json::array();
+  for (const shape::Part& part : building.parts) {
+    if (part.attributes.count("insula:height") == 0) continue;
+    nlohmann::ordered_json p;
+    p["name"] = part.name;
+    describe(part.attributes, p);
+    joined.push_back(std::move(p));
+  }
+  if (!joined.empty()) entry["parts"] = std::move(joined);
+  building_entries.push_back(entry.dump());
+}
+
 std::string MassReport::json() const {
   nlohmann::ordered_json seconds;
   seconds["total"] = total_seconds;
@@ -30,10 +60,23 @@ std::string MassReport::json() const {
   out["warning_counts"] = warning_counts;
   out["failed"] = failed;
   out["invalid"] = invalid;
+  out["overlaps"] = overlaps;
+  if (largest_overlap) {
+    out["largest_overlap"] = {{"first", largest_overlap->first},
+                              {"second", largest_overlap->second},
+                              {"area", largest_overlap->area}};
+  }
   out["crs"] = crs.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(crs);
   if (!source_crs.empty()) out["reprojected_from"] = source_crs;
   out["threads"] = threads;
   out["seconds"] = seconds;
+  if (!building_entries.empty()) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const std::string& entry : building_entries) {
+      list.push_back(nlohmann::ordered_json::parse(entry));
+    }
+    out["buildings_made"] = std::move(list);
+  }
   return out.dump(2) + "\n";
 }
 

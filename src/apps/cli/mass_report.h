@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,16 +21,25 @@ struct MassReport {
   std::size_t watertight = 0;  // buildings whose every part is a closed, outward shell
   std::size_t warnings = 0;
   std::map<std::string, std::size_t> warning_counts;  // by code: the full count, printed or not
-  std::size_t failed = 0;   // footprints left out with --keep-going: no closed building
-  std::size_t invalid = 0;  // features left out with --keep-going: invalid geometry
-  std::string crs;          // the CRS of the outputs' world coordinates; empty: unknown
-  std::string source_crs;   // the input's CRS when it was reprojected
+  std::size_t failed = 0;    // footprints left out with --keep-going: no closed building
+  std::size_t invalid = 0;   // features left out with --keep-going: invalid geometry
+  std::size_t overlaps = 0;  // pairs of footprints drawn over each other (mass_plan.h)
+  struct LargestOverlap {
+    std::string first, second;  // building ids
+    double area = 0;            // square meters
+  };
+  std::optional<LargestOverlap> largest_overlap;
+  std::vector<std::string> building_entries;  // JSON objects, with --report-buildings
+  std::string crs;         // the CRS of the outputs' world coordinates; empty: unknown
+  std::string source_crs;  // the input's CRS when it was reprojected
   int threads = 1;
   double total_seconds = 0;
   std::vector<std::pair<std::string, double>> stages;  // in execution order
 
   void stage(std::string name, double seconds) { stages.emplace_back(std::move(name), seconds); }
   void count_building(const shape::Building& building, bool is_watertight);
+  // Adds the building's id, parts and insula:* attributes (mass_plan.h) as a report entry.
+  void describe_building(const shape::Building& building);
   std::string json() const;
 };
 

@@ -1,0 +1,180 @@
+#include "apps/cli/mass_plan.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "apps/cli/mass_command.h"
+#include "kernel/polygon_overlaps.h"
+#include "kernel/roof_rise.h"
+
+namespace insula::cli {
+namespace {
+
+io::BuildingTagOptions tag_options(const MassOptions& options) {
+  io::BuildingTagOptions tags;
+  tags.height = options.height;
+  tags.height_attr = options.height_attr;
+  tags.levels_attr = options.levels_attr;
+  tags.storey_height = options.storey_height;
+  tags.default_height = options.default_height;
+  if (options.roof_given) tags.roof = options.roof;
+  tags.default_roof = options.roof;
+  tags.pitch_deg = options.pitch_deg;
+  tags.pitch_given = options.pitch_given;
+  return tags;
+}
+
+// The highest rise of the roof over any polygon of the footprint.
+io::RoofRise rise_over(const io::Footprint& footprint) {
+  return [&footprint](const std::string& roof, double pitch_deg) {
+    const kernel::RoofType type =
+        kernel::roof_type_from_name(roof).value_or(kernel::RoofType::kHip);
+    double rise = 0;
+    for (const kernel::Polygon& polygon : footprint.polygons) {
+      rise = std::max(rise, kernel::roof_rise(polygon, type, pitch_deg));
+    }
+    return rise;
+  };
+}
+
+kernel::MassSpec mass_spec(const MassOptions& options, const io::BuildingForm& form,
+                           const io::Footprint& footprint, std::vector<Warning>& warnings) {
+  kernel::MassSpec spec;
+  spec.ground_z = form.base;
+  spec.wall_height = form.eave - form.base;
+  spec.pitch_deg = form.pitch_deg;
+  spec.overhang = options.overhang;
+  if (std::optional<kernel::RoofType> type = kernel::roof_type_from_name(form.roof)) {
+    spec.roof = *type;
+  } else {
+    spec.roof = kernel::RoofType::kHip;
+    warnings.push_back({"MAS003", feature_name(footprint) + ": roof '" + form.roof +
+                                      "' cannot be built; using hip"});
+  }
+  // The roof's rise as the data gives it, as a pitch over this footprint.
+  if (form.roof_height && spec.roof != kernel::RoofType::kFlat) {
+    const double rise_at_45 = rise_over(footprint)(form.roof, 45.0);
+    if (rise_at_45 > 0) {
+      spec.pitch_deg = std::clamp(
+          std::atan(*form.roof_height / rise_at_45) * 180.0 / std::numbers::pi, 1.0, 85.0);
+    }
+  }
+  return spec;
+}
+
+// S3DB: building:part features inside a building outline are built instead of it. A part
+// belongs to the outline that holds most of its area, when that is at least half of it.
+void assign_parts(const io::FootprintSet& set, MassPlan& plan,
+                  const std::vector<kernel::Overlap>& overlaps) {
+  std::vector<double> best(set.footprints.size(), 0);
+  for (const kernel::Overlap& overlap : overlaps) {
+    for (const auto& [part, outline] :
+         {std::pair{overlap.first, overlap.second}, std::pair{overlap.second, overlap.first}}) {
+      const io::BuildingForm& p = plan.footprints[part].form;
+      const io::BuildingForm& o = plan.footprints[outline].form;
+      if (!p.is_part || !o.osm || o.is_part) continue;
+      double part_area = 0;
+      for (const kernel::Polygon& polygon : set.footprints[part].polygons) {
+        part_area += kernel::area(polygon);
+      }
+      if (overlap.area < 0.5 * part_area || overlap.area <= best[part]) continue;
+      best[part] = overlap.area;
+      plan.footprints[part].outline = outline;
+    }
+  }
+  for (FootprintPlan& footprint : plan.footprints) {
+    if (footprint.outline) plan.footprints[*footprint.outline].replaced = true;
+  }
+}
+
+std::string material_key(const std::string& name) {
+  std::string key = "osm-";
+  for (const char c : name) {
+    key += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '_';
+  }
+  return key;
+}
+
+// One material per colour name, in order of first use.
+void assign_materials(MassPlan& plan) {
+  plan.materials = shape::Scene().materials;
+  std::map<std::string, kernel::MaterialId> ids;
+  const auto material = [&](const std::optional<std::array<float, 3>>& colour,
+                            const std::string& name) -> kernel::MaterialId {
+    if (!colour) return 0;
+    const std::string key = material_key(name);
+    auto [it, added] = ids.emplace(key, static_cast<kernel::MaterialId>(plan.materials.size()));
+    if (added) plan.materials.push_back({key, {(*colour)[0], (*colour)[1], (*colour)[2], 1.0F}});
+    return it->second;
+  };
+  for (FootprintPlan& footprint : plan.footprints) {
+    footprint.wall_material = material(footprint.form.wall_colour, footprint.form.wall_colour_name);
+    footprint.roof_material = material(footprint.form.roof_colour, footprint.form.roof_colour_name);
+  }
+}
+
+OverlapSummary summarize_overlaps(const MassPlan& plan) {
+  OverlapSummary summary;
+  for (const kernel::Overlap& overlap : plan.overlaps) {
+    const FootprintPlan& a = plan.footprints[overlap.first];
+    const FootprintPlan& b = plan.footprints[overlap.second];
+    const auto owner = [&](const FootprintPlan& f, std::size_t index) {
+      return f.outline.value_or(index);
+    };
+    if (owner(a, overlap.first) == owner(b, overlap.second)) continue;  // one building's parts
+    ++summary.pairs;
+    if (overlap.area > summary.largest_area) {
+      summary.largest_area = overlap.area;
+      summary.largest_first = overlap.first;
+      summary.largest_second = overlap.second;
+    }
+  }
+  return summary;
+}
+
+}  // namespace
+
+std::string feature_name(const io::Footprint& footprint) {
+  return "feature " + std::to_string(footprint.feature_index) + " (id \"" + footprint.id + "\")";
+}
+
+MassPlan plan_mass(const MassOptions& options, const io::FootprintSet& set,
+                   std::vector<Warning>& warnings) {
+  const io::BuildingTagOptions tags = tag_options(options);
+  MassPlan plan;
+  plan.footprints.reserve(set.footprints.size());
+  for (const io::Footprint& footprint : set.footprints) {
+    std::vector<io::TagWarning> tag_warnings;
+    FootprintPlan entry;
+    entry.form =
+        io::read_building_form(footprint.properties, tags, rise_over(footprint), tag_warnings);
+    for (io::TagWarning& w : tag_warnings) {
+      warnings.push_back({w.code, feature_name(footprint) + ": " + w.text});
+    }
+    entry.spec = mass_spec(options, entry.form, footprint, warnings);
+    plan.footprints.push_back(std::move(entry));
+  }
+  std::vector<std::vector<kernel::Polygon>> regions;
+  regions.reserve(set.footprints.size());
+  for (const io::Footprint& footprint : set.footprints) regions.push_back(footprint.polygons);
+  plan.overlaps = kernel::find_overlaps(regions);
+  assign_parts(set, plan, plan.overlaps);
+  plan.overlap_summary = summarize_overlaps(plan);
+  assign_materials(plan);
+  return plan;
+}
+
+void add_form_attributes(const io::BuildingForm& form, kernel::RoofType built_roof, double top,
+                         shape::AttributeMap& attributes) {
+  attributes["insula:height"] = top;
+  attributes["insula:eave_height"] = form.eave;
+  attributes["insula:min_height"] = form.base;
+  attributes["insula:height_source"] = std::string(io::source_name(form.height_source));
+  attributes["insula:roof"] = std::string(kernel::roof_type_name(built_roof));
+  attributes["insula:roof_source"] = std::string(io::source_name(form.roof_source));
+}
+
+}  // namespace insula::cli

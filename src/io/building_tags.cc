@@ -1,0 +1,332 @@
+// The form of a building from its footprint's properties: S3DB for OpenStreetMap features, named
+// attributes for registers (docs/osm-buildings.md gives every rule in order).
+#include "io/building_tags.h"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+
+#include "kernel/roof.h"
+
+namespace insula::io {
+namespace {
+
+// Walls this low are kept under a roof that takes (almost) the whole height: the kernel needs
+// walls, and a 10 cm plinth is invisible at the scale of a building.
+constexpr double kMinimumWall = 0.1;
+
+const shape::Value* find(const shape::AttributeMap& properties, std::string_view key) {
+  auto it = properties.find(key);
+  return it == properties.end() ? nullptr : &it->second;
+}
+
+// The property as text: a number as written by shape::to_string, a string as is; nullopt when
+// missing or null.
+std::optional<std::string> text_of(const shape::AttributeMap& properties, std::string_view key) {
+  const shape::Value* value = find(properties, key);
+  if (value == nullptr || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
+  return shape::to_string(*value);
+}
+
+// A length property: a JSON number is meters, a string goes through parse_length.
+std::optional<double> length_of(const shape::Value& value) {
+  if (const double* d = std::get_if<double>(&value)) {
+    return std::isfinite(*d) ? std::optional<double>(*d) : std::nullopt;
+  }
+  if (const std::string* s = std::get_if<std::string>(&value)) return parse_length(*s);
+  return std::nullopt;
+}
+
+std::optional<double> levels_of(const shape::Value& value) {
+  if (const double* d = std::get_if<double>(&value)) {
+    return std::isfinite(*d) ? std::optional<double>(*d) : std::nullopt;
+  }
+  if (const std::string* s = std::get_if<std::string>(&value)) return parse_levels(*s);
+  return std::nullopt;
+}
+
+std::string quoted(const shape::Value& value) {
+  std::string text = "'";
+  text += shape::to_string(value);
+  text += "'";
+  return text;
+}
+
+class FormReader {
+ public:
+  FormReader(const shape::AttributeMap& properties, const BuildingTagOptions& options,
+             std::vector<TagWarning>& warnings)
+      : properties_(properties), options_(options), warnings_(warnings) {}
+
+  BuildingForm read(const RoofRise& roof_rise) {
+    classify();
+    read_base();
+    read_roof();
+    read_heights();
+    if (total_height_) split_total_height(roof_rise);
+    read_colours();
+    return form_;
+  }
+
+ private:
+  // The message is given in pieces: gcc 12 sees false overlaps (-Wrestrict) in chains of
+  // "literal" + std::string.
+  void warn(const char* code, std::initializer_list<std::string_view> pieces) {
+    const std::string_view c(code);
+    if (c == "MAS002" || c == "MAS007") height_warning_ = warnings_.size();
+    std::string text;
+    for (const std::string_view piece : pieces) text += piece;
+    warnings_.push_back({code, std::move(text)});
+  }
+
+  // A length tag: its value in meters, or nullopt (with a warning when present but unreadable
+  // or outside (minimum, 1000) m).
+  std::optional<double> length_tag(std::string_view key, double minimum, const char* code) {
+    const shape::Value* value = find(properties_, key);
+    if (value == nullptr || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
+    const std::optional<double> meters = length_of(*value);
+    if (meters && *meters > minimum && *meters < 1000) return meters;
+    warn(code, {key, "=", quoted(*value), " is not a length in ", minimum < 0 ? "[0" : "(",
+                minimum < 0 ? "" : shape::to_string(minimum), ", 1000) m; ignored"});
+    return std::nullopt;
+  }
+
+  // A level count: nullopt (with a warning) when present but unreadable or not above `minimum`.
+  std::optional<double> levels_tag(std::string_view key, double minimum, const char* code) {
+    const shape::Value* value = find(properties_, key);
+    if (value == nullptr || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
+    const std::optional<double> levels = levels_of(*value);
+    if (levels && *levels > minimum && *levels < 300) return levels;
+    warn(code, {key, "=", quoted(*value), " is not a level count", minimum < 0 ? "" : " above ",
+                minimum < 0 ? "" : shape::to_string(minimum), "; ignored"});
+    return std::nullopt;
+  }
+
+  void classify() {
+    const std::optional<std::string> building = text_of(properties_, "building");
+    const std::optional<std::string> part = text_of(properties_, "building:part");
+    form_.osm = (building && *building != "no") || (part && *part != "no");
+    form_.is_part = part && *part != "no";
+    form_.walls = !((building && *building == "roof") || (part && *part == "roof"));
+  }
+
+  void read_base() {
+    if (!form_.osm) return;
+    if (std::optional<double> min_height = length_tag("min_height", -1e-9, "MAS006")) {
+      form_.base = *min_height;
+    } else if (std::optional<double> min_level =
+                   levels_tag("building:min_level", -1e-9, "MAS006")) {
+      form_.base = *min_level * options_.storey_height;
+    }
+  }
+
+  void read_roof() {
+    if (options_.roof) {
+      form_.roof = *options_.roof;
+      form_.roof_source = ValueSource::kOption;
+    } else if (const shape::Value* shape = find(properties_, "roof:shape")) {
+      if (std::optional<std::string> name = s3db_roof_name(shape::to_string(*shape))) {
+        form_.roof = *name;
+        form_.roof_source = ValueSource::kTag;
+      } else {
+        form_.roof = form_.osm ? "flat" : options_.default_roof;
+        warn("MAS003", {"unknown roof:shape=", quoted(*shape), "; using ", form_.roof});
+      }
+    } else if (const shape::Value* roof = find(properties_, "roof"); roof && !form_.osm) {
+      const std::string name = shape::to_string(*roof);
+      if (kernel::roof_type_from_name(name)) {
+        form_.roof = name;
+        form_.roof_source = ValueSource::kAttribute;
+      } else {
+        form_.roof = options_.default_roof;
+        warn("MAS003", {"unknown roof ", quoted(*roof), "; using ", form_.roof});
+      }
+    } else {
+      // S3DB: an OpenStreetMap building without roof:shape has a flat roof.
+      form_.roof = form_.osm ? "flat" : options_.default_roof;
+    }
+    read_pitch();
+    read_roof_height();
+    read_direction();
+  }
+
+  void read_pitch() {
+    form_.pitch_deg = options_.pitch_deg;
+    if (options_.pitch_given) return;
+    const char* key = form_.osm ? "roof:angle" : "pitch";
+    const shape::Value* value = find(properties_, key);
+    if (value == nullptr) return;
+    const std::optional<double> degrees = levels_of(*value);
+    if (degrees && *degrees > 0 && *degrees < 89) {
+      form_.pitch_deg = *degrees;
+    } else {
+      warn("MAS006", {key, "=", quoted(*value), " is not an angle in (0, 89) degrees; ignored"});
+    }
+  }
+
+  void read_roof_height() {
+    if (form_.roof == "flat") return;
+    if (std::optional<double> height = length_tag("roof:height", 0, "MAS006")) {
+      form_.roof_height = *height;
+    } else if (std::optional<double> levels = levels_tag("roof:levels", 0, "MAS006")) {
+      form_.roof_height = *levels * options_.storey_height;
+    }
+    roof_height_given_ = form_.roof_height.has_value();
+  }
+
+  void read_direction() {
+    if (const shape::Value* value = find(properties_, "roof:direction")) {
+      form_.direction_deg = parse_direction(shape::to_string(*value));
+      if (!form_.direction_deg) {
+        warn("MAS006", {"roof:direction=", quoted(*value), " is not a compass direction; ignored"});
+      }
+    }
+    if (const std::optional<std::string> value = text_of(properties_, "roof:orientation")) {
+      if (*value == "along") {
+        form_.orientation = RoofOrientation::kAlong;
+      } else if (*value == "across") {
+        form_.orientation = RoofOrientation::kAcross;
+      } else {
+        warn("MAS006", {"roof:orientation='", *value, "' is neither along nor across; ignored"});
+      }
+    }
+  }
+
+  void read_heights() {
+    if (options_.height) {
+      set_eave(form_.base + *options_.height, ValueSource::kOption);
+      return;
+    }
+    if (form_.osm) {
+      total_height_ = length_tag("height", 0, "MAS002");
+      if (total_height_ && *total_height_ <= form_.base) {
+        warn("MAS002", {"height ", shape::to_string(*total_height_), " m is not above min_height ",
+                        shape::to_string(form_.base), " m; ignored"});
+        total_height_.reset();
+      }
+      if (total_height_) {
+        form_.height_source = ValueSource::kTag;
+        return;
+      }
+      if (levels_height("building:levels")) return;
+    } else {
+      if (std::optional<double> height = length_tag(options_.height_attr, 0, "MAS002")) {
+        set_eave(form_.base + *height, ValueSource::kAttribute);
+        return;
+      }
+    }
+    if (!options_.levels_attr.empty() && levels_height(options_.levels_attr)) return;
+    set_eave(form_.base + options_.default_height, ValueSource::kDefault);
+    std::string fallback = "using ";
+    fallback += shape::to_string(options_.default_height);
+    fallback += " m";
+    if (height_warning_) {
+      // The height that could not be read already has its warning: say what replaced it.
+      std::string& text = warnings_[*height_warning_].text;
+      text.replace(text.rfind("ignored"), std::string::npos, fallback);
+      return;
+    }
+    if (form_.osm) {
+      warn("MAS001", {"no height or building:levels tag; ", fallback});
+    } else {
+      warn("MAS001", {"no '", options_.height_attr, "' property; ", fallback});
+    }
+  }
+
+  // Levels x storey height from the ground (S3DB counts building:levels from the ground;
+  // building:min_level levels are left out below the part).
+  bool levels_height(const std::string& key) {
+    const std::optional<double> levels = levels_tag(key, 0, "MAS007");
+    if (!levels) return false;
+    const double eave = *levels * options_.storey_height;
+    if (eave <= form_.base) {
+      warn("MAS007", {key, "=", shape::to_string(*levels), " ends below min_height ",
+                      shape::to_string(form_.base), " m; ignored"});
+      return false;
+    }
+    set_eave(eave, ValueSource::kLevels);
+    return true;
+  }
+
+  void set_eave(double eave, ValueSource source) {
+    form_.eave = eave;
+    form_.height_source = source;
+  }
+
+  // S3DB's height is the top of the roof: the walls get what the roof leaves.
+  void split_total_height(const RoofRise& roof_rise) {
+    const double span = *total_height_ - form_.base;
+    double rise = 0;
+    if (form_.roof != "flat") {
+      if (roof_height_given_) {
+        rise = *form_.roof_height;
+        if (rise > span) {
+          warn("MAS008", {"roof:height ", shape::to_string(rise), " m is more than the ",
+                          shape::to_string(span), " m of the building; the roof is made ",
+                          shape::to_string(std::max(span - kMinimumWall, span / 2)), " m"});
+        }
+      } else {
+        // A roof of the default pitch takes at most half a building given by its total height.
+        rise = std::min(roof_rise(form_.roof, form_.pitch_deg), span / 2);
+      }
+      rise = std::min(rise, std::max(span - kMinimumWall, span / 2));
+      form_.roof_height = rise;
+    }
+    form_.eave = *total_height_ - rise;
+  }
+
+  void read_colours() {
+    read_colour("building:colour", "building:material", form_.wall_colour, form_.wall_colour_name);
+    read_colour("roof:colour", "roof:material", form_.roof_colour, form_.roof_colour_name);
+  }
+
+  void read_colour(const char* colour_key, const char* material_key,
+                   std::optional<std::array<float, 3>>& colour, std::string& name) {
+    if (const std::optional<std::string> value = text_of(properties_, colour_key)) {
+      colour = parse_colour(*value);
+      if (colour) {
+        name = *value;
+        return;
+      }
+      warn("MAS006", {colour_key, "='", *value, "' is not a colour; ignored"});
+    }
+    if (const std::optional<std::string> value = text_of(properties_, material_key)) {
+      colour = material_colour(*value);
+      if (colour) name = *value;
+    }
+  }
+
+  const shape::AttributeMap& properties_;
+  const BuildingTagOptions& options_;
+  std::vector<TagWarning>& warnings_;
+  BuildingForm form_;
+  std::optional<double> total_height_;
+  bool roof_height_given_ = false;
+  std::optional<std::size_t> height_warning_;  // the last MAS002/MAS007 of this feature
+};
+
+}  // namespace
+
+std::string_view source_name(ValueSource source) {
+  switch (source) {
+    case ValueSource::kOption:
+      return "option";
+    case ValueSource::kTag:
+      return "tag";
+    case ValueSource::kAttribute:
+      return "attribute";
+    case ValueSource::kLevels:
+      return "levels";
+    case ValueSource::kDefault:
+      return "default";
+  }
+  return "default";
+}
+
+BuildingForm read_building_form(const shape::AttributeMap& properties,
+                                const BuildingTagOptions& options, const RoofRise& roof_rise,
+                                std::vector<TagWarning>& warnings) {
+  return FormReader(properties, options, warnings).read(roof_rise);
+}
+
+}  // namespace insula::io

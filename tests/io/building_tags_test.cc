@@ -1,0 +1,217 @@
+// The form of a building from S3DB tags and register attributes: heights with units, levels,
+// roof shapes and heights, parts, colours, and where each value came from.
+#include "io/building_tags.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace insula::io {
+namespace {
+
+using shape::AttributeMap;
+
+// A roof that rises 4 m at any pitch over any footprint.
+double rise_4(const std::string& /*roof*/, double /*pitch*/) {
+  return 4.0;
+}
+
+BuildingForm form_of(const AttributeMap& properties, std::vector<TagWarning>& warnings,
+                     const BuildingTagOptions& options = {}) {
+  return read_building_form(properties, options, rise_4, warnings);
+}
+
+BuildingForm form_of(const AttributeMap& properties, const BuildingTagOptions& options = {}) {
+  std::vector<TagWarning> warnings;
+  return form_of(properties, warnings, options);
+}
+
+TEST(ParseLength, MetersFeetAndInches) {
+  EXPECT_DOUBLE_EQ(*parse_length("12"), 12.0);
+  EXPECT_DOUBLE_EQ(*parse_length(" 12.5 m"), 12.5);
+  EXPECT_DOUBLE_EQ(*parse_length("12m"), 12.0);
+  EXPECT_DOUBLE_EQ(*parse_length("3,5"), 3.5);
+  EXPECT_NEAR(*parse_length("40 ft"), 12.192, 1e-12);
+  EXPECT_NEAR(*parse_length("12'6\""), 12 * 0.3048 + 6 * 0.0254, 1e-12);
+  EXPECT_NEAR(*parse_length("12' 6\""), 12 * 0.3048 + 6 * 0.0254, 1e-12);
+  EXPECT_NEAR(*parse_length("12 ft 6 in"), 12 * 0.3048 + 6 * 0.0254, 1e-12);
+  for (const char* bad : {"", "tall", "-5", "12 m 3", "12;15", "12 furlongs", "1.2.3", "m"}) {
+    EXPECT_FALSE(parse_length(bad).has_value()) << bad;
+  }
+}
+
+TEST(ParseDirection, DegreesAndCompassPoints) {
+  EXPECT_DOUBLE_EQ(*parse_direction("135"), 135.0);
+  EXPECT_DOUBLE_EQ(*parse_direction("N"), 0.0);
+  EXPECT_DOUBLE_EQ(*parse_direction("ssw"), 202.5);
+  EXPECT_DOUBLE_EQ(*parse_direction("450"), 90.0);
+  EXPECT_FALSE(parse_direction("up").has_value());
+}
+
+TEST(ParseColour, HexAndCssNames) {
+  const std::array<float, 3> white = *parse_colour("white");
+  EXPECT_FLOAT_EQ(white[0], 1.0F);
+  EXPECT_EQ(*parse_colour("#fff"), white);
+  EXPECT_EQ(*parse_colour("#FFFFFF"), white);
+  const std::array<float, 3> red = *parse_colour("Red");
+  EXPECT_FLOAT_EQ(red[0], 1.0F);
+  EXPECT_FLOAT_EQ(red[1], 0.0F);
+  // sRGB 0x80 is linear 0.2158.
+  EXPECT_NEAR((*parse_colour("grey"))[0], 0.2158F, 1e-4);
+  EXPECT_EQ(*parse_colour("light grey"), *parse_colour("lightgrey"));
+  EXPECT_FALSE(parse_colour("#12345").has_value());
+  EXPECT_FALSE(parse_colour("blurple").has_value());
+  EXPECT_TRUE(material_colour("brick").has_value());
+  EXPECT_FALSE(material_colour("unobtainium").has_value());
+}
+
+TEST(S3dbRoofName, EveryDocumentedShape) {
+  const std::vector<std::pair<const char*, const char*>> names = {
+      {"flat", "flat"},       {"skillion", "shed"},
+      {"gabled", "gable"},    {"half-hipped", "half_hipped"},
+      {"hipped", "hip"},      {"pyramidal", "pyramid"},
+      {"gambrel", "gambrel"}, {"mansard", "mansard"},
+      {"dome", "dome"},       {"onion", "onion"},
+      {"round", "round"},     {"saltbox", "saltbox"}};
+  for (const auto& [s3db, kernel] : names) EXPECT_EQ(s3db_roof_name(s3db), kernel) << s3db;
+  EXPECT_FALSE(s3db_roof_name("zigzag").has_value());
+}
+
+// The issue's example: height=12, roof:shape=gabled, roof:height=3 is 12 m high with its eaves at
+// 9 m.
+TEST(BuildingForm, HeightIsTheTopOfTheRoof) {
+  const BuildingForm form = form_of(
+      {{"building", "house"}, {"height", "12"}, {"roof:shape", "gabled"}, {"roof:height", "3"}});
+  EXPECT_TRUE(form.osm);
+  EXPECT_EQ(form.roof, "gable");
+  EXPECT_DOUBLE_EQ(form.eave, 9.0);
+  EXPECT_DOUBLE_EQ(*form.roof_height, 3.0);
+  EXPECT_EQ(form.height_source, ValueSource::kTag);
+  EXPECT_EQ(form.roof_source, ValueSource::kTag);
+}
+
+TEST(BuildingForm, HeightWithoutRoofHeightTakesThePitchedRise) {
+  const BuildingForm form =
+      form_of({{"building", "yes"}, {"height", "14 m"}, {"roof:shape", "hipped"}});
+  EXPECT_DOUBLE_EQ(form.eave, 10.0);  // 14 - the roof's 4 m rise
+  // A roof never takes more than half a building given by its total height.
+  const BuildingForm low =
+      form_of({{"building", "yes"}, {"height", "6"}, {"roof:shape", "hipped"}});
+  EXPECT_DOUBLE_EQ(low.eave, 3.0);
+}
+
+TEST(BuildingForm, OsmWithoutRoofShapeIsFlatUnlessTheCommandLineSaysOtherwise) {
+  EXPECT_EQ(form_of({{"building", "yes"}, {"height", "9"}}).roof, "flat");
+  EXPECT_DOUBLE_EQ(form_of({{"building", "yes"}, {"height", "9"}}).eave, 9.0);
+  BuildingTagOptions options;
+  options.roof = "gable";
+  const BuildingForm form = form_of({{"building", "yes"}, {"height", "9"}}, options);
+  EXPECT_EQ(form.roof, "gable");
+  EXPECT_EQ(form.roof_source, ValueSource::kOption);
+  EXPECT_DOUBLE_EQ(form.eave, 5.0);
+}
+
+TEST(BuildingForm, LevelsTimesStoreyHeight) {
+  const BuildingForm form = form_of({{"building", "yes"},
+                                     {"building:levels", "4"},
+                                     {"roof:shape", "gabled"},
+                                     {"roof:levels", 1.0}});
+  EXPECT_DOUBLE_EQ(form.eave, 12.0);
+  EXPECT_DOUBLE_EQ(*form.roof_height, 3.0);
+  EXPECT_EQ(form.height_source, ValueSource::kLevels);
+  BuildingTagOptions options;
+  options.storey_height = 2.5;
+  EXPECT_DOUBLE_EQ(form_of({{"building", "yes"}, {"building:levels", 4.0}}, options).eave, 10.0);
+}
+
+TEST(BuildingForm, MinHeightAndMinLevelLiftTheBase) {
+  const BuildingForm part =
+      form_of({{"building:part", "yes"}, {"min_height", "5"}, {"height", "20"}});
+  EXPECT_TRUE(part.is_part);
+  EXPECT_DOUBLE_EQ(part.base, 5.0);
+  EXPECT_DOUBLE_EQ(part.eave, 20.0);
+  const BuildingForm levels =
+      form_of({{"building:part", "yes"}, {"building:min_level", "2"}, {"building:levels", "5"}});
+  EXPECT_DOUBLE_EQ(levels.base, 6.0);
+  EXPECT_DOUBLE_EQ(levels.eave, 15.0);
+}
+
+TEST(BuildingForm, BuildingRoofHasNoWalls) {
+  EXPECT_FALSE(form_of({{"building", "roof"}, {"height", "3"}}).walls);
+  EXPECT_TRUE(form_of({{"building", "yes"}, {"height", "3"}}).walls);
+}
+
+TEST(BuildingForm, RoofDirectionOrientationAndAngle) {
+  const BuildingForm form = form_of({{"building", "yes"},
+                                     {"roof:shape", "skillion"},
+                                     {"roof:direction", "SE"},
+                                     {"roof:orientation", "across"},
+                                     {"roof:angle", "20"}});
+  EXPECT_EQ(form.roof, "shed");
+  EXPECT_DOUBLE_EQ(*form.direction_deg, 135.0);
+  EXPECT_EQ(form.orientation, RoofOrientation::kAcross);
+  EXPECT_DOUBLE_EQ(form.pitch_deg, 20.0);
+}
+
+TEST(BuildingForm, ColoursAndMaterials) {
+  const BuildingForm form = form_of(
+      {{"building", "yes"}, {"building:colour", "#a0522d"}, {"roof:material", "roof_tiles"}});
+  ASSERT_TRUE(form.wall_colour && form.roof_colour);
+  EXPECT_EQ(form.wall_colour_name, "#a0522d");
+  EXPECT_EQ(form.roof_colour_name, "roof_tiles");
+}
+
+TEST(BuildingForm, UnreadableValuesWarnOnceAndFallBack) {
+  std::vector<TagWarning> warnings;
+  const BuildingForm form = form_of({{"building", "yes"},
+                                     {"height", "tall"},
+                                     {"roof:shape", "zigzag"},
+                                     {"building:colour", "blurple"}},
+                                    warnings);
+  EXPECT_DOUBLE_EQ(form.eave, 10.0);
+  EXPECT_EQ(form.height_source, ValueSource::kDefault);
+  EXPECT_EQ(form.roof, "flat");
+  ASSERT_EQ(warnings.size(), 3U);
+  EXPECT_EQ(warnings[0].code, "MAS003");
+  EXPECT_EQ(warnings[0].text, "unknown roof:shape='zigzag'; using flat");
+  EXPECT_EQ(warnings[1].code, "MAS002");
+  EXPECT_EQ(warnings[1].text, "height='tall' is not a length in (0, 1000) m; using 10 m");
+  EXPECT_EQ(warnings[2].code, "MAS006");
+}
+
+TEST(BuildingForm, RegisterAttributes) {
+  BuildingTagOptions options;
+  options.height_attr = "hoehe";
+  options.levels_attr = "Floors";
+  // A register's height attribute is the wall height; its roof is the --roof default.
+  const BuildingForm tall = form_of({{"hoehe", 8.5}}, options);
+  EXPECT_FALSE(tall.osm);
+  EXPECT_DOUBLE_EQ(tall.eave, 8.5);
+  EXPECT_EQ(tall.height_source, ValueSource::kAttribute);
+  EXPECT_EQ(tall.roof, "hip");
+  const BuildingForm floors = form_of({{"Floors", 3.0}}, options);
+  EXPECT_DOUBLE_EQ(floors.eave, 9.0);
+  EXPECT_EQ(floors.height_source, ValueSource::kLevels);
+  // Zero floors: a warning and the default height.
+  std::vector<TagWarning> warnings;
+  const BuildingForm zero = form_of({{"Floors", 0.0}}, warnings, options);
+  EXPECT_DOUBLE_EQ(zero.eave, 10.0);
+  EXPECT_EQ(zero.height_source, ValueSource::kDefault);
+  ASSERT_EQ(warnings.size(), 1U);
+  EXPECT_EQ(warnings[0].code, "MAS007");
+  EXPECT_EQ(warnings[0].text, "Floors='0' is not a level count above 0; using 10 m");
+}
+
+TEST(BuildingForm, RoofTallerThanTheBuildingIsCapped) {
+  std::vector<TagWarning> warnings;
+  const BuildingForm form = form_of(
+      {{"building", "yes"}, {"height", "5"}, {"roof:shape", "gabled"}, {"roof:height", "8"}},
+      warnings);
+  EXPECT_NEAR(form.eave, 0.1, 1e-12);
+  EXPECT_NEAR(*form.roof_height, 4.9, 1e-12);
+  ASSERT_EQ(warnings.size(), 1U);
+  EXPECT_EQ(warnings[0].code, "MAS008");
+}
+
+}  // namespace
+}  // namespace insula::io
