@@ -111,8 +111,15 @@ void assign_materials(MassPlan& plan) {
     return it->second;
   };
   for (FootprintPlan& footprint : plan.footprints) {
-    footprint.wall_material = material(footprint.form.wall_colour, footprint.form.wall_colour_name);
-    footprint.roof_material = material(footprint.form.roof_colour, footprint.form.roof_colour_name);
+    io::BuildingForm& form = footprint.form;
+    footprint.wall_material = material(form.wall_colour, form.wall_colour_name);
+    // The flat roofs of mapped buildings are mostly gravel, bitumen or membranes: grey, not the
+    // terracotta of pitched roofs (docs/osm-buildings.md, "Colours").
+    if (!form.roof_colour && form.osm && footprint.spec.roof == kernel::RoofType::kFlat) {
+      form.roof_colour = io::material_colour("gravel");
+      form.roof_colour_name = "flat_roof";
+    }
+    footprint.roof_material = material(form.roof_colour, form.roof_colour_name);
   }
 }
 

@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# `insula mass` on OpenStreetMap Simple 3D Buildings tags and register attributes, checked on the
+# built geometry by feature (docs/osm-buildings.md): heights with units, the roof height taken from
+# the total height, parts replacing their outline, parts above ground, colours into materials,
+# where each value came from, warnings, overlaps.
+source "$(dirname "$0")/lib/common.sh"
+
+data=$root/tests/data/s3db/tags.geojson
+expect_exit 0 "mass on S3DB tags" "$insula" mass "$data" -o "$tmp/t.city.json" -o "$tmp/t.obj" \
+  -o "$tmp/t.glb" --height-attr hoehe --levels-attr Floors --report "$tmp/r.json" \
+  --report-buildings
+validate_cityjson "CityJSON schema" "$tmp/t.city.json"
+validate_gltf "glTF validator" "$tmp/t.glb"
+
+grep -q "warning\[MAS002\]: feature 8 (id \"tall\"): height='tall' is not a length in (0, 1000) m; using 10 m" \
+  "$tmp/err.txt" || fail "unreadable height: one positioned warning naming the default"
+grep -q "warning\[MAS007\]: feature 12 (id \"zero_floors\"): Floors='0' is not a level count above 0; using 10 m" \
+  "$tmp/err.txt" || fail "zero floors: a warning and the default"
+
+node -e '
+const fs = require("fs");
+const city = JSON.parse(fs.readFileSync(process.argv[1]));
+const report = JSON.parse(fs.readFileSync(process.argv[2]));
+const [sx, sy, sz] = city.transform.scale, [, , tz] = city.transform.translate;
+const problems = [];
+const check = (ok, what) => { if (!ok) problems.push(what); };
+const objects = city.CityObjects;
+// The z range of an object and its children, and the z of every vertex of each semantic class.
+function zs(id) {
+  const o = objects[id];
+  const out = {min: Infinity, max: -Infinity, wallTops: [], roof: 0, walls: 0};
+  for (const g of o.geometry || []) {
+    const surfaces = g.semantics ? g.semantics.surfaces : [];
+    g.boundaries[0].forEach((face, f) => {
+      const kind = surfaces[g.semantics.values[0][f]].type;
+      if (kind === "RoofSurface") out.roof++;
+      if (kind === "WallSurface") out.walls++;
+      for (const ring of face) for (const v of ring) {
+        const z = city.vertices[v][2] * sz + tz;
+        out.min = Math.min(out.min, z); out.max = Math.max(out.max, z);
+        if (kind === "WallSurface") out.wallTops.push(z);
+      }
+    });
+  }
+  for (const child of o.children || []) {
+    const c = zs(child);
+    out.min = Math.min(out.min, c.min); out.max = Math.max(out.max, c.max);
+    out.wallTops.push(...c.wallTops); out.roof += c.roof; out.walls += c.walls;
+  }
+  return out;
+}
+const near = (a, b) => Math.abs(a - b) < 1e-3;
+// height=12, roof:shape=gabled, roof:height=3: 12 m high, eaves at 9 m, gable walls up to 12 m.
+const gabled = zs("gabled");
+check(near(gabled.min, 0) && near(gabled.max, 12), "gabled: 0..12 m, got " + gabled.min + ".." + gabled.max);
+check(gabled.wallTops.some((z) => near(z, 12)) && gabled.wallTops.some((z) => near(z, 9)),
+      "gabled: eave walls end at 9 m and gable walls reach 12 m");
+const attrs = objects.gabled.attributes;
+check(attrs["insula:eave_height"] === 9 && attrs["insula:height_source"] === "tag" &&
+      attrs["insula:roof"] === "gable" && attrs["insula:roof_source"] === "tag" && attrs.height === "12",
+      "gabled: where the values came from, beside the input properties");
+// building:levels=4, roof:levels=1: 12 m of walls under a 3 m roof.
+const levels = zs("levels");
+check(near(levels.max, 15) && objects.levels.attributes["insula:height_source"] === "levels", "levels: 15 m");
+// The outline is replaced by its parts; the tower part floats 10 m up.
+check(!objects.church.geometry || objects.church.geometry.length === 0, "church outline not built");
+check((objects.church.children || []).length === 2, "church: two parts, got " + JSON.stringify(objects.church.children));
+check(!objects.nave && !objects.tower, "parts are parts of the outline, not buildings");
+const church = zs("church");
+check(near(church.min, 0) && near(church.max, 30), "church: 0..30 m");
+const towerId = objects.church.children.find((c) => zs(c).min > 1);
+check(towerId && near(zs(towerId).min, 10) && near(zs(towerId).max, 30), "tower part 10..30 m");
+// A part outside every outline is a building of its own, 5 m above the ground.
+const bridge = zs("bridge");
+check(near(bridge.min, 5) && near(bridge.max, 8), "bridge: 5..8 m, got " + bridge.min + ".." + bridge.max);
+// 40 ft.
+check(near(zs("feet").max, 12.192), "feet: 12.192 m");
+// Registers: --height-attr hoehe is the wall height, --levels-attr Floors x 3 m.
+check(objects.register.attributes["insula:eave_height"] === 7.5 &&
+      objects.register.attributes["insula:height_source"] === "attribute", "register: hoehe");
+check(objects.floors.attributes["insula:eave_height"] === 9 &&
+      objects.floors.attributes["insula:height_source"] === "levels", "floors: 3 x 3 m");
+// The report: overlaps and one entry per building.
+check(report.overlaps === 1 && report.largest_overlap.first === "floors" &&
+      report.largest_overlap.second === "duplicate" && near(report.largest_overlap.area, 36),
+      "one overlapping pair (36 m2): " + JSON.stringify(report.largest_overlap));
+const made = report.buildings_made;
+check(made.length === report.buildings && made.find((b) => b.id === "church").parts.length === 2,
+      "--report-buildings lists every building and the church parts");
+check(made.find((b) => b.id === "tall").height_source === "default", "tall: default height");
+if (problems.length) { console.log(problems.join("\n")); process.exit(1); }
+' "$tmp/t.city.json" "$tmp/r.json" || fail "geometry and attributes by feature"
+
+# Colours become materials: the wall of "gabled" is sienna #a0522d (linear 0.3515 0.0844 0.0273).
+grep -A3 "newmtl osm-_a0522d" "$tmp/t.mtl" | grep -q "Kd 0.351" || fail "building:colour into the MTL"
+grep -q "newmtl osm-darkred" "$tmp/t.mtl" || fail "roof:colour into the MTL"
+
+finish s3db_tags
