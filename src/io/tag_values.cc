@@ -124,7 +124,7 @@ std::optional<std::string> s3db_roof_name(std::string_view shape) {
     std::string_view kernel;
   };
   // S3DB's documented shapes, then values common in the data that have a close kernel shape.
-  static constexpr std::array<Name, 17> kNames = {{
+  static constexpr std::array<Name, 22> kNames = {{
       {"flat", "flat"},
       {"skillion", "shed"},
       {"gabled", "gable"},
@@ -142,6 +142,11 @@ std::optional<std::string> s3db_roof_name(std::string_view shape) {
       {"hipped-and-gabled", "half_hipped"},
       {"lean_to", "shed"},
       {"shed", "shed"},
+      {"half_hipped", "half_hipped"},
+      {"gable", "gable"},
+      {"hip", "hip"},
+      {"pyramid", "pyramid"},
+      {"pitched", "gable"},
   }};
   const std::string word = lower(trim(shape));
   for (const Name& name : kNames) {
