@@ -240,6 +240,8 @@ int run_mass(const MassOptions& options) {
   Stopwatch build_clock;
   std::vector<Warning> warnings;
   const MassPlan plan = plan_mass(options, set.value(), warnings);
+  report.stage("plan", build_clock.seconds());
+  build_clock = Stopwatch();
   std::vector<BuiltBuilding> built = build_all(set.value(), plan, options.quiet);
   if (const int code = stop_if_interrupted(); code != 0) return code;
   shape::Scene scene;
