@@ -1,6 +1,7 @@
 #include "kernel/mass.h"
 
 #include <cmath>
+#include <string>
 
 #include "kernel/roof_detail.h"
 #include "kernel/skeleton.h"
@@ -70,7 +71,7 @@ MassResult try_build(const Polygon& footprint, const MassSpec& spec, const RoofS
   std::vector<std::uint32_t> ground(c.size());
   for (std::uint32_t k = 0; k < c.size(); ++k) ground[k] = first_ground + k;
   if (!roof_detail::add_region(c, ground, {SemanticClass::kGroundSurface, 0, 0}, true, mesh)) {
-    result.message = "ground face could not be triangulated";
+    result.message = "ground: the ground face could not be triangulated";
     result.mesh = Mesh();
     return result;
   }
@@ -78,15 +79,27 @@ MassResult try_build(const Polygon& footprint, const MassSpec& spec, const RoofS
   result.roof = build.built;
   result.message = build.message;
   if (build.status == RoofStatus::kFailed) {
+    result.message = "roof: " + build.message;
     result.mesh = Mesh();
     return result;
   }
   if (!walls_above_ground(mesh, build, spec.ground_z)) {
-    result.message = "walls would end below the ground";
+    result.message = "walls: the walls would end below the ground";
     result.mesh = Mesh();
     return result;
   }
   add_walls(c, first_ground, build, mesh, build.next_face_id);
+  // The shell is checked here rather than trusted: an open roof must not reach the caller as a
+  // building, and the message names the stage (docs/kernel-roofs.md, "Near-rectangles").
+  const MeshCheck closure = check(mesh);
+  if (!closure.closed || !closure.oriented) {
+    result.message = "closure: the " + std::string(roof_type_name(build.built)) +
+                     " roof and walls leave " + std::to_string(closure.boundary_edges) +
+                     " open and " + std::to_string(closure.non_manifold_edges) +
+                     " non-manifold edges";
+    result.mesh = Mesh();
+    return result;
+  }
   result.status = build.status == RoofStatus::kOk ? MassStatus::kOk : MassStatus::kFallback;
   return result;
 }

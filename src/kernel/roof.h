@@ -33,6 +33,11 @@ enum class RoofType : std::uint8_t {
   kHoledMansard,  // mansard whose top is left open at the break line (a compluvium)
 };
 
+// Every roof type, in enum order.
+inline constexpr RoofType kRoofTypes[] = {
+    RoofType::kFlat,    RoofType::kShed,    RoofType::kGable,       RoofType::kHip,
+    RoofType::kPyramid, RoofType::kMansard, RoofType::kHoledMansard};
+
 // "flat", "shed", "gable", "hip", "pyramid", "mansard", "holed_mansard".
 std::string_view roof_type_name(RoofType type);
 // Accepts the names above, case-insensitive; "holedmansard" and "compluvium" too.

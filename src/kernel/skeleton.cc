@@ -300,88 +300,92 @@ class Converter {
 // occur (Aichholzer et al. 1995), so each step collapses the edge that vanishes first. O(n^2); for
 // the small convex footprints that dominate city data it avoids CGAL's exact fallbacks, which the
 // simultaneous events of rectangles trigger.
+//
+// The wavefront is kept as lines, not as moving vertices: edge e at time t is the line
+// dot(n_e, x) = c_e + t, and an edge vanishes where its line and its two neighbours' lines meet
+// (three offset lines concurrent: a 3 x 3 system that stays well conditioned when the neighbours
+// are antiparallel or nearly so). A vertex between nearly antiparallel edges, the end of a
+// near-rectangle's ridge, races along the ridge at a speed of 2 / angle; extrapolating its
+// position from a velocity, or treating the pair as parallel below a threshold, put the far end
+// of the ridge micrometres off and left a sliver of the roof open (docs/kernel-roofs.md,
+// "Near-rectangles").
 class ConvexSkeleton {
  public:
   explicit ConvexSkeleton(Skeleton& out) : out_(out) {}
 
   bool run() {
     const std::uint32_t n = out_.contour_count;
+    // Lines relative to the first vertex, so their constants stay small for georeferenced input.
+    origin_ = out_.vertices[0].position;
     for (std::uint32_t k = 0; k < n; ++k) {
-      edges_.push_back({out_.vertices[k].position, out_.vertices[(k + 1) % n].position, {}, {}});
-    }
-    for (std::uint32_t k = 0; k < n; ++k) {
-      active_.push_back(make_vertex(out_.vertices[k].position, 0, (k + n - 1) % n, k));
+      const Vec2 a = out_.vertices[k].position - origin_;
+      const Vec2 b = out_.vertices[(k + 1) % n].position - origin_;
+      const Vec2 normal = perp(normalized(b - a));
+      lines_.push_back({normal, dot(normal, a), {}, {}});
+      active_.push_back(k);
     }
     faces_.assign(n, {});
-    double time = 0;
-    while (active_.size() > 3 && !frozen_) {
-      const auto [index, t] = next_event();
-      if (index == kUnset) return false;
-      time = t;
-      collapse(index, time);
+    while (active_.size() > 3) {
+      std::uint32_t best = kUnset;
+      Event best_event;
+      for (std::uint32_t i = 0; i < active_.size(); ++i) {
+        const Event event = collapse_of(i);
+        if (!event.valid) return false;
+        if (best == kUnset || event.time < best_event.time) best = i, best_event = event;
+      }
+      collapse(best, best_event);
     }
-    if (!frozen_) {
-      const auto [index, t] = next_event();
-      if (index == kUnset) return false;
-      time = t;
-    }
-    finish(time);
+    // The last three edges meet in one node (the triangle's incentre).
+    const Event last = collapse_of(0);
+    if (!last.valid) return false;
+    const std::uint32_t node = node_at(last.point, std::max(last.time, time_));
+    for (std::uint32_t i = 0; i < 3; ++i) close_face(active_[i], node, node);
     return store_faces(faces_, out_);
   }
 
  private:
-  struct Edge {
-    Vec2 a, b;
-    std::vector<std::uint32_t> left_nodes, right_nodes;  // nodes its end points passed through
+  struct Line {
+    Vec2 normal;  // unit, pointing inward
+    double offset = 0;
+    std::vector<std::uint32_t> left_nodes, right_nodes;  // nodes its end points passed
   };
-  struct Active {
-    Vec2 origin;    // position extrapolated back to time 0
-    Vec2 velocity;  // moves both incident edges inward at unit speed
-    std::uint32_t left_edge, right_edge;
+  struct Event {
+    Vec2 point;  // relative to origin_
+    double time = 0;
+    bool valid = false;
   };
 
-  Vec2 inward_normal(std::uint32_t e) const { return perp(normalized(edges_[e].b - edges_[e].a)); }
-
-  Active make_vertex(Vec2 p, double time, std::uint32_t left, std::uint32_t right) {
-    const Vec2 n1 = inward_normal(left);
-    const Vec2 n2 = inward_normal(right);
-    const double c = 1 + dot(n1, n2);
-    if (c < 1e-12) {
-      // Antiparallel neighbours: what is left of the polygon has no width and ends now.
-      frozen_ = true;
-      return {p, {}, left, right};
-    }
-    const Vec2 v = (n1 + n2) / c;
-    return {p - v * time, v, left, right};
+  // Where active edge i vanishes: its line and its neighbours' lines, each moved inward by t, meet.
+  Event collapse_of(std::uint32_t i) const {
+    const auto m = static_cast<std::uint32_t>(active_.size());
+    const Line& l = lines_[active_[(i + m - 1) % m]];
+    const Line& e = lines_[active_[i]];
+    const Line& r = lines_[active_[(i + 1) % m]];
+    // (n_l - n_e) . x = c_l - c_e and (n_r - n_e) . x = c_r - c_e; then t = n_e . x - c_e.
+    const Vec2 u = l.normal - e.normal;
+    const Vec2 v = r.normal - e.normal;
+    const double det = cross(u, v);
+    Event event;
+    if (!(std::abs(det) > 1e-12)) return event;
+    const double cu = l.offset - e.offset;
+    const double cv = r.offset - e.offset;
+    event.point = Vec2{cu * v.y - cv * u.y, cv * u.x - cu * v.x} / det;
+    event.time = dot(e.normal, event.point) - e.offset;
+    event.valid =
+        std::isfinite(event.time) && std::isfinite(event.point.x) && std::isfinite(event.point.y);
+    return event;
   }
 
-  // Index i of the active vertex whose right edge vanishes first, and when.
-  std::pair<std::uint32_t, double> next_event() const {
-    std::uint32_t best = kUnset;
-    double best_time = 1e300;
-    for (std::uint32_t i = 0; i < active_.size(); ++i) {
-      const Active& a = active_[i];
-      const Active& b = active_[(i + 1) % active_.size()];
-      const Vec2 d = edges_[a.right_edge].b - edges_[a.right_edge].a;
-      const double rate = dot(b.velocity - a.velocity, d);
-      if (rate >= 0) continue;
-      const double t = -dot(b.origin - a.origin, d) / rate;
-      if (t < best_time) best_time = t, best = i;
-    }
-    return {best, best_time};
-  }
-
-  // A node at p and time, merged with an existing one at the same place (simultaneous events).
-  // The tolerance is a micrometre per metre of time: when a near-rectangle's remainder freezes
-  // (antiparallel neighbours), the far end's two vertices still lie up to ~1e-7 m apart and would
-  // otherwise become two nodes with a sliver face between them, and an open roof.
+  // A node at p (relative to origin_) and time, merged with an existing one at the same place
+  // (simultaneous events, e.g. the centre of a square or a regular polygon).
   std::uint32_t node_at(Vec2 p, double time) {
-    const double tolerance = 1e-6 * (1 + time);
+    const Vec2 q = p + origin_;
+    const double tolerance = 1e-9 * (1 + time);
     for (std::uint32_t v = out_.contour_count; v < out_.vertices.size(); ++v) {
       const SkeletonVertex& s = out_.vertices[v];
-      if (std::abs(s.time - time) < tolerance && length(s.position - p) < tolerance) return v;
+      if (std::abs(s.time - time) < tolerance && length(s.position - q) < tolerance) return v;
     }
-    out_.vertices.push_back({p, time});
+    out_.vertices.push_back({q, time});
     return static_cast<std::uint32_t>(out_.vertices.size() - 1);
   }
 
@@ -395,41 +399,31 @@ class ConvexSkeleton {
     };
     push(e);
     push((e + 1) % n);
-    for (std::uint32_t v : edges_[e].right_nodes) push(v);
+    for (std::uint32_t v : lines_[e].right_nodes) push(v);
     push(last_right);
     push(last_left);
-    for (auto it = edges_[e].left_nodes.rbegin(); it != edges_[e].left_nodes.rend(); ++it)
+    for (auto it = lines_[e].left_nodes.rbegin(); it != lines_[e].left_nodes.rend(); ++it)
       push(*it);
   }
 
-  void collapse(std::uint32_t i, double time) {
-    const std::uint32_t j = (i + 1) % static_cast<std::uint32_t>(active_.size());
-    const Active a = active_[i];
-    const Active b = active_[j];
-    const Vec2 p = (a.origin + a.velocity * time + b.origin + b.velocity * time) / 2;
-    const std::uint32_t node = node_at(p, time);
-    close_face(a.right_edge, node, node);
-    edges_[a.left_edge].right_nodes.push_back(node);
-    edges_[b.right_edge].left_nodes.push_back(node);
-    active_[i] = make_vertex(p, time, a.left_edge, b.right_edge);
-    active_.erase(active_.begin() + j);
-  }
-
-  // At `time` the rest collapses: a triangle to its incentre, a zero-width remainder to its
-  // segment. Each remaining edge ends at the nodes where its two end points stop.
-  void finish(double time) {
-    std::vector<std::uint32_t> nodes;
-    for (const Active& v : active_) nodes.push_back(node_at(v.origin + v.velocity * time, time));
-    for (std::size_t i = 0; i < active_.size(); ++i) {
-      close_face(active_[i].right_edge, nodes[(i + 1) % nodes.size()], nodes[i]);
-    }
+  void collapse(std::uint32_t i, const Event& event) {
+    const auto m = static_cast<std::uint32_t>(active_.size());
+    // Events come in time order; rounding may put one a hair before the previous one.
+    time_ = std::max(time_, event.time);
+    const std::uint32_t node = node_at(event.point, time_);
+    const std::uint32_t e = active_[i];
+    close_face(e, node, node);
+    lines_[active_[(i + m - 1) % m]].right_nodes.push_back(node);
+    lines_[active_[(i + 1) % m]].left_nodes.push_back(node);
+    active_.erase(active_.begin() + i);
   }
 
   Skeleton& out_;
-  std::vector<Edge> edges_;
-  std::vector<Active> active_;
+  Vec2 origin_;
+  std::vector<Line> lines_;
+  std::vector<std::uint32_t> active_;  // edges still on the wavefront, in ring order
   std::vector<std::vector<std::uint32_t>> faces_;
-  bool frozen_ = false;
+  double time_ = 0;
 };
 
 bool strictly_convex(const Polygon& polygon) {
