@@ -28,8 +28,23 @@ bool add_stair(Work& work, FloorPlan& plan, int level, int lower, int upper,
 // they fit (when `repair`); the rest listed in FloorPlan::unreachable_rooms with the reason
 // (plan_reach.cc).
 void guarantee_reachability(Work& work, FloorPlan& plan, bool repair);
+// An entrance door on the longest open-air wall of ground-storey room `room` that fits one (a
+// piece of the footprint no door reaches, after fake-concave split it); false when none fits.
+bool add_entrance(Work& work, FloorPlan& plan, int room);
 // Windows on open-air walls, as many as asked where they fit.
 void place_windows(Work& work, FloorPlan& plan);
+// Rooms that fit the lot (plan_fit.cc): true when no disc of diameter `width` fits in `cell`.
+bool narrower_than(const kernel::Polygon& cell, double width);
+// Merges room `x` of storey `level` into the neighbour (among `allowed`, all when empty) it
+// shares the longest wall with, same part first; its doors, entrance and stairs go with it, a
+// door between the two is removed, rooms are renumbered. False when no neighbour unites with it.
+bool merge_room(Work& work, FloorPlan& plan, int level, int x, const std::vector<bool>& allowed,
+                const std::string& why);
+// Turns room `x` into a dead zone, with its openings and stairs removed.
+void drop_room(Work& work, FloorPlan& plan, int level, int x, const std::string& why);
+// Every room below Restrictions::min_room_area or min_room_width merged into a neighbour, or
+// dropped when it touches none (smallest first).
+void fit_rooms(Work& work, FloorPlan& plan);
 // Walls from the final cells, wall indices of every opening, rooms' neighbours (plan_walls.cc).
 void build_walls(Work& work, FloorPlan& plan);
 

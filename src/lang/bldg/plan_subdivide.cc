@@ -2,6 +2,7 @@
 // §3.2 and Fig. 2): weights back-propagate from rooms to their containers and parts, and every
 // container's region is cut among its children by plan_treemap.h.
 #include <algorithm>
+#include <cstdio>
 
 #include "kernel/boolean2d.h"
 #include "lang/bldg/plan_geometry.h"
@@ -245,12 +246,18 @@ std::vector<Polygon> settle_pieces(std::vector<std::vector<Polygon>>& regions,
 
 }  // namespace
 
-void warn(Work& work, std::string message, Location where) {
-  work.warnings.push_back({std::move(message), where});
+void warn(Work& work, std::string message, Location where, std::string code) {
+  work.warnings.push_back({std::move(message), where, std::move(code)});
 }
 
 double door_width_between(const Work& work, int part_a, int part_b) {
   return std::min(work.door_widths[part_a], work.door_widths[part_b]);
+}
+
+std::string meters(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  return buf;
 }
 
 std::string room_name(const Work& work, int room) {
