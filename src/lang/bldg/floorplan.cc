@@ -205,6 +205,10 @@ base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrict
   work.file = options.file;
   if (!check_outline(building, work, errors, options.file))
     return base::Result<FloorPlan>::failure(std::move(errors));
+  // Seed 000's treemap cuts along the axes of the building's frame: a turned lot is planned in the
+  // frame of its walls and the plan turned back.
+  const plan::PlanFrame frame = plan::lot_frame(work.outline);
+  plan::into_frame(work.outline, frame);
   plan::build_work(building, restrictions, work, errors);
   if (work.levels == 0 && errors.empty()) {
     errors.push_back(base::Diagnostic::error(
@@ -279,6 +283,7 @@ base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrict
   plan::build_walls(work, out);
   out.warnings = std::move(work.warnings);
   out.adaptations = work.adaptations;
+  plan::out_of_frame(out, frame);
   return out;
 }
 

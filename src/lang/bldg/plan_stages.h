@@ -10,6 +10,19 @@
 
 namespace insula::lang::bldg::plan {
 
+// The frame a lot is planned in (plan_frame.cc): turned by `angle` (radians, within +-45 degrees)
+// about `pivot` from the lot's, so the direction most of its walls run along is the x axis.
+struct PlanFrame {
+  double angle = 0;
+  kernel::Vec2 pivot;
+  bool rotated() const { return angle != 0; }
+};
+// The frame of `outline`'s dominant wall direction; not rotated for an axis-aligned outline.
+PlanFrame lot_frame(const kernel::Polygon& outline);
+// Turns a lot outline into the frame, and every coordinate of a plan made there back out of it.
+void into_frame(kernel::Polygon& outline, const PlanFrame& frame);
+void out_of_frame(FloorPlan& plan, const PlanFrame& frame);
+
 // Doors between rooms, on their longest shared segment (§3.3); requests that lost their fit are
 // dropped with a warning.
 void place_doors(Work& work, FloorPlan& plan, const std::vector<DoorRequest>& doors);

@@ -384,5 +384,41 @@ TEST(AnyLot, EveryBundledGrammarFitsEveryLot) {
   RecordProperty("rooms", total.rooms);
 }
 
+// A lot turned by 11 degrees is planned in the frame of its walls: every wall of the plan runs
+// along or across the lot's edges, and the rooms are those of the same lot unturned (seed 000's
+// axis-aligned treemap in the building's frame, docs/bldg-floorplan.md).
+TEST(AnyLot, TurnedLotIsPlannedAlongItsWalls) {
+  const std::filesystem::path path =
+      std::filesystem::path(INSULA_SOURCE_DIR) / "examples" / "bldg" / "two_storey.bldg";
+  Building b = testing::parse_ok(testing::read_file(path), "two_storey.bldg");
+  const Restrictions rules;
+  const base::Result<FloorPlan> straight = make_floor_plan(b, rules);
+  ASSERT_TRUE(straight.ok());
+  const double turn = 11 * std::numbers::pi / 180;
+  b.outline = place(box(12, 10), turn, {250, -40});
+  const base::Result<FloorPlan> turned = make_floor_plan(b, rules);
+  ASSERT_TRUE(turned.ok()) << turned.diagnostics()[0].message;
+  ASSERT_EQ(turned->storeys.size(), straight->storeys.size());
+  for (std::size_t level = 0; level < turned->storeys.size(); ++level) {
+    const PlanStorey& s = turned->storeys[level];
+    for (const PlanWall& w : s.walls) {
+      const double a = std::atan2(w.b.y - w.a.y, w.b.x - w.a.x) - turn;
+      const double off = std::abs(std::remainder(a, std::numbers::pi / 2));
+      // The lot's corners are rounded to millimetres: its edges are off by up to 1e-4 radians.
+      EXPECT_LT(off, 2e-4) << "storey " << level << " wall at " << a * 180 / std::numbers::pi;
+    }
+    std::vector<double> areas;
+    std::vector<double> expected;
+    for (const PlanRoom& r : s.rooms) areas.push_back(kernel::area(r.cell));
+    for (const PlanRoom& r : straight->storeys[level].rooms)
+      expected.push_back(kernel::area(r.cell));
+    std::sort(areas.begin(), areas.end());
+    std::sort(expected.begin(), expected.end());
+    ASSERT_EQ(areas.size(), expected.size());
+    for (std::size_t i = 0; i < areas.size(); ++i) EXPECT_NEAR(areas[i], expected[i], 1e-3);
+    EXPECT_EQ(s.doors.size(), straight->storeys[level].doors.size());
+  }
+}
+
 }  // namespace
 }  // namespace insula::lang::bldg
