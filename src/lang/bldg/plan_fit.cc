@@ -1,10 +1,9 @@
 // Rooms that fit the lot (past seed 000, whose buildings stand on the outlines they were written
 // for): a grammar applied to any lot may leave rooms too small or too narrow to use, or rooms no
-// door can reach. Such a room joins the neighbouring room it shares the longest wall with (its
-// doors, entrance and stairs go with it); a room touching no other room becomes a dead zone.
+// door can reach. Such a room joins a neighbouring room (its doors, entrance and stairs go with
+// it); a room touching no other room becomes a dead zone.
 // docs/bldg-floorplan.md, "Rooms that fit".
 #include <algorithm>
-#include <cstdio>
 
 #include "kernel/boolean2d.h"
 #include "lang/bldg/plan_geometry.h"
@@ -17,7 +16,7 @@ using kernel::Polygon;
 
 // Renumbers the rooms of storey `level` after room `gone` left it (its openings already moved to
 // `into`, an index before the removal): indices above `gone` shift down by one.
-void remeters(Work& work, FloorPlan& plan, int level, int gone, int into) {
+void renumber(Work& work, FloorPlan& plan, int level, int gone, int into) {
   auto fix = [&](int& room) {
     if (room == gone) room = into;
     if (room > gone) --room;
@@ -106,7 +105,7 @@ bool merge_room(Work& work, FloorPlan& plan, int level, int x, const std::vector
     std::erase_if(storey.doors, [&](const PlanDoor& d) {
       return (d.room_a == x && d.room_b == c.room) || (d.room_a == c.room && d.room_b == x);
     });
-    remeters(work, plan, level, x, c.room);
+    renumber(work, plan, level, x, c.room);
     weld_storey(storey);
     ++work.adaptations.rooms_merged;
   }
@@ -125,7 +124,7 @@ void drop_room(Work& work, FloorPlan& plan, int level, int x, const std::string&
   if (level > 0)
     std::erase_if(plan.storeys[level - 1].stairs,
                   [&](const PlanStair& s) { return s.upper_room == x; });
-  remeters(work, plan, level, x, -1);
+  renumber(work, plan, level, x, -1);
   ++work.adaptations.rooms_dropped;
 }
 
@@ -134,8 +133,8 @@ void fit_rooms(Work& work, FloorPlan& plan) {
   for (std::size_t level = 0; level < plan.storeys.size(); ++level) {
     PlanStorey& storey = plan.storeys[level];
     // The smallest offending room first: it is the one a neighbour absorbs most easily, and its
-    // neighbour may then be large enough.
-    // Each round merges or drops a room: at most as many rounds as rooms.
+    // neighbour may then be large enough. Each round merges or drops a room: at most as many
+    // rounds as rooms.
     const std::size_t rounds = storey.rooms.size();
     for (std::size_t round = 0; round < rounds; ++round) {
       int worst = -1;

@@ -384,6 +384,47 @@ TEST(AnyLot, EveryBundledGrammarFitsEveryLot) {
   RecordProperty("rooms", total.rooms);
 }
 
+// A room below the minimum joins the neighbour it shares a wall with: one room holding both
+// cells, the neighbour's name, the merged room listed, its entrance kept, the merge counted and
+// warned about once (BLD602).
+TEST(AnyLot, SmallRoomJoinsItsNeighbour) {
+  const Building b = testing::parse_ok(
+      "h -> building(\"Row\", [(0, 0), (10, 0), (10, 4), (0, 4)]) : {p, e0, d0}\n"
+      "p -> buildingpart(Flat, 1) : {f}\n"
+      "f -> floor(horizontal) : {s, b1, b2}\n"
+      "s -> room(store, small)\n"
+      "b1 -> room(living, big)\n"
+      "b2 -> room(bedroom, big)\n"
+      "e0 -> entrance(s)\n"
+      "d0 -> door(b1, b2)\n");
+  Restrictions rules;
+  rules.min_room_area = 10;  // the store gets 9.24 m² (about 40 x 1.5 / 6.5, Fig. 3's rounds)
+  const base::Result<FloorPlan> plan = make_floor_plan(b, rules);
+  ASSERT_TRUE(plan.ok()) << plan.diagnostics()[0].message;
+  const PlanStorey& s = plan->storeys[0];
+  ASSERT_EQ(s.rooms.size(), 2u);
+  EXPECT_EQ(s.rooms[0].symbol, "b1");
+  EXPECT_EQ(s.rooms[0].merged, std::vector<std::string>{"s"});
+  // Both cells in one: the two rooms still tile the lot, and the merged room asks for both areas.
+  EXPECT_NEAR(kernel::area(s.rooms[0].cell) + kernel::area(s.rooms[1].cell), 40, 1e-6);
+  EXPECT_NEAR(kernel::area(s.rooms[0].cell), 40 * 4 / 6.5, 0.01);
+  EXPECT_NEAR(s.rooms[0].target_area, kernel::area(s.rooms[0].cell), 1e-4);
+  ASSERT_EQ(s.entrances.size(), 1u);
+  EXPECT_EQ(s.entrances[0].room_a, 0);
+  EXPECT_FALSE(s.entrances[0].added);
+  ASSERT_EQ(s.doors.size(), 1u);
+  EXPECT_EQ(plan->adaptations.rooms_merged, 1);
+  EXPECT_EQ(plan->adaptations.rooms_dropped, 0);
+  int warned = 0;
+  for (const PlanWarning& w : plan->warnings)
+    if (w.code == "BLD602") {
+      ++warned;
+      EXPECT_EQ(w.message,
+                "room 's' has 9.24 m² on this lot, below the minimum 10.00 m²; merged into 'b1'");
+    }
+  EXPECT_EQ(warned, 1);
+}
+
 // A lot turned by 11 degrees is planned in the frame of its walls: every wall of the plan runs
 // along or across the lot's edges, and the rooms are those of the same lot unturned (seed 000's
 // axis-aligned treemap in the building's frame, docs/bldg-floorplan.md).
