@@ -243,6 +243,7 @@ std::optional<Built> plan_and_build(const BuildOptions& options, const base::Sou
   Stopwatch stage;
   lang::bldg::FloorPlanOptions plan_options;
   plan_options.file = source.name();
+  plan_options.on_lot = !lot.empty();
   base::Result<FloorPlan> plan = lang::bldg::make_floor_plan(building, rules, plan_options);
   if (!plan.ok() && skipped != nullptr && lot_error(plan.diagnostics().front())) {
     *skipped = plan.diagnostics().front();

@@ -203,6 +203,7 @@ base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrict
   std::vector<base::Diagnostic> errors;
   Work work;
   work.file = options.file;
+  work.sliver = options.on_lot ? 2 * restrictions.min_room_width : 0;
   if (!check_outline(building, work, errors, options.file))
     return base::Result<FloorPlan>::failure(std::move(errors));
   // Seed 000's treemap cuts along the axes of the building's frame: a turned lot is planned in the

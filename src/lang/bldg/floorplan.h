@@ -206,6 +206,11 @@ struct FloorPlanOptions {
   // Rooms below Restrictions::min_room_area or min_room_width merged into a neighbour or dropped
   // ("Rooms that fit"). On by default.
   bool fit_rooms = true;
+  // The outline is a lot the grammar was not written for (`insula build --lot`, a geojson()
+  // outline): a cut of a floor's divisions that would leave a room slab thinner than twice
+  // Restrictions::min_room_width while the other axis would not is made along the other axis
+  // ("Rooms that fit"). Off: the grammar's axes are kept as written.
+  bool on_lot = false;
 };
 
 // Makes the floor plan. Fails (with `file:line:col` diagnostics) when the outline is not a valid

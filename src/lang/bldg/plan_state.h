@@ -62,7 +62,9 @@ struct Work {
   std::vector<WorkFloor> floors;
   std::vector<WorkRoom> rooms;
   std::vector<PlanWarning> warnings;
-  PlanAdaptations adaptations;      // what was merged, dropped and added to fit the lot
+  PlanAdaptations adaptations;  // what was merged, dropped and added to fit the lot
+  // On a lot (FloorPlanOptions::on_lot): a room slab thinner than this turns the cut (m; 0 off).
+  double sliver = 0;
   std::vector<double> door_widths;  // default door width per part (floorplan.h)
   double clearance = 0;  // kept free at each end of a door or window (wall junctions, jambs)
   int levels = 0;        // storeys of the tallest non-disposable part

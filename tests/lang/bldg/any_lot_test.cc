@@ -341,7 +341,9 @@ TEST(AnyLot, EveryBundledGrammarFitsEveryLot) {
       b.outline_feature.clear();
       ++t.plans;
       const std::string where = name + " on lot " + std::to_string(i) + " (" + lots[i].kind + ")";
-      const base::Result<FloorPlan> plan = make_floor_plan(b, rules);
+      FloorPlanOptions on_lot;
+      on_lot.on_lot = true;
+      const base::Result<FloorPlan> plan = make_floor_plan(b, rules, on_lot);
       if (!plan.ok()) {
         ++t.skipped;
         const base::Diagnostic& d = plan.diagnostics().front();
