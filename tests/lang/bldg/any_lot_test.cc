@@ -430,6 +430,33 @@ TEST(AnyLot, SmallRoomJoinsItsNeighbour) {
   EXPECT_EQ(warned, 1);
 }
 
+// On a thin lot (3.5 x 24 m) two_storey's hall and kitchen, side by side in the grammar, would be
+// strips 1.75 m wide along the lot: on a lot the cut turns, and each takes the lot's whole width.
+// Planned as written (not on a lot), the grammar keeps its axes.
+TEST(AnyLot, ThinLotCutsRoomsAcross) {
+  const std::filesystem::path path =
+      std::filesystem::path(INSULA_SOURCE_DIR) / "examples" / "bldg" / "two_storey.bldg";
+  Building b = testing::parse_ok(testing::read_file(path), "two_storey.bldg");
+  b.outline = box(3.5, 24);
+  const Restrictions rules;
+  FloorPlanOptions on_lot;
+  on_lot.on_lot = true;
+  const base::Result<FloorPlan> lot = make_floor_plan(b, rules, on_lot);
+  const base::Result<FloorPlan> as_written = make_floor_plan(b, rules);
+  ASSERT_TRUE(lot.ok()) << lot.diagnostics()[0].message;
+  ASSERT_TRUE(as_written.ok()) << as_written.diagnostics()[0].message;
+  for (const char* name : {"hall", "kitchen"}) {
+    const PlanStorey& s = lot->storeys[0];
+    const int i = find_room(s, name);
+    ASSERT_GE(i, 0) << name;
+    EXPECT_TRUE(holds_width(s.rooms[i].cell, 3.4)) << name;
+    const PlanStorey& w = as_written->storeys[0];
+    const int j = find_room(w, name);
+    ASSERT_GE(j, 0) << name;
+    EXPECT_FALSE(holds_width(w.rooms[j].cell, 2.0)) << name;
+  }
+}
+
 // A lot turned by 11 degrees is planned in the frame of its walls: every wall of the plan runs
 // along or across the lot's edges, and the rooms are those of the same lot unturned (seed 000's
 // axis-aligned treemap in the building's frame, docs/bldg-floorplan.md).
