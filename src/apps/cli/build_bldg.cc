@@ -35,6 +35,7 @@ namespace {
 
 using lang::bldg::Building;
 using lang::bldg::FloorPlan;
+using lang::bldg::Location;
 
 void print_error(const std::string& message) {
   std::fprintf(stderr, "insula: error: %s\n", message.c_str());
@@ -138,6 +139,7 @@ nlohmann::json room_report(const lang::bldg::PlanStorey& storey, const lang::bld
     }
     r["floor_area"] = std::get<double>(part.attributes.at("area"));
   }
+  if (!room.merged.empty()) r["merged"] = room.merged;
   r["neighbors"] = nlohmann::json::array();
   for (int n : room.neighbors) {
     r["neighbors"].push_back(storey.rooms[static_cast<std::size_t>(n)].symbol);
@@ -157,6 +159,18 @@ nlohmann::json door_report(const lang::bldg::PlanStorey& storey, const lang::bld
   j["width"] = d.width;
   j["added"] = d.added;
   return j;
+}
+
+// What the floor plan changed to fit the grammar to the lot (docs/bldg-floorplan.md, "Rooms that
+// fit").
+nlohmann::json adaptations_report(const lang::bldg::PlanAdaptations& a) {
+  return {{"rooms_merged", a.rooms_merged}, {"rooms_dropped", a.rooms_dropped},
+          {"doors_added", a.doors_added},   {"entrances_added", a.entrances_added},
+          {"stairs_added", a.stairs_added}, {"transitions_dropped", a.transitions_dropped}};
+}
+
+void add_adaptations(nlohmann::json& total, const nlohmann::json& one) {
+  for (const auto& [key, value] : one.items()) total[key] = total.value(key, 0) + value.get<int>();
 }
 
 nlohmann::json plan_report(const FloorPlan& plan, const lang::bldg::BuildResult& built) {
@@ -197,6 +211,7 @@ nlohmann::json plan_report(const FloorPlan& plan, const lang::bldg::BuildResult&
   report["counts"] = {{"rooms", s.rooms},         {"walls", s.walls},     {"doors", s.doors},
                       {"entrances", s.entrances}, {"windows", s.windows}, {"stairs", s.stairs},
                       {"roofs", s.roofs}};
+  report["adaptations"] = adaptations_report(plan.adaptations);
   report["vertices"] = s.vertices;
   report["triangles"] = s.triangles;
   report["warnings"] = nlohmann::json::array();
@@ -213,16 +228,33 @@ struct Built {
   double build_seconds = 0;
 };
 
-// `lot` names the lot the building stands on in its warnings (empty: an inline outline).
+// A lot the floor plan cannot use: an outline that is no polygon, or one that cannot hold the
+// grammar (PLAN007). --keep-going skips such a lot; grammar errors still stop the run.
+bool lot_error(const base::Diagnostic& d) {
+  return d.code == "PLAN004" || d.code == "PLAN007";
+}
+
+// `lot` names the lot the building stands on in its warnings (empty: an inline outline). With
+// `skipped` given (a lot under --keep-going), a lot error is not printed but returned there.
 std::optional<Built> plan_and_build(const BuildOptions& options, const base::Source& source,
                                     const Building& building, const lang::bldg::Restrictions& rules,
-                                    const std::string& lot) {
+                                    const std::string& lot,
+                                    std::optional<base::Diagnostic>* skipped = nullptr) {
   Stopwatch stage;
   lang::bldg::FloorPlanOptions plan_options;
   plan_options.file = source.name();
+  plan_options.on_lot = !lot.empty();
   base::Result<FloorPlan> plan = lang::bldg::make_floor_plan(building, rules, plan_options);
+  if (!plan.ok() && skipped != nullptr && lot_error(plan.diagnostics().front())) {
+    *skipped = plan.diagnostics().front();
+    return std::nullopt;
+  }
   print_diagnostics(plan.diagnostics(), source, options.quiet);
-  if (!plan.ok()) return std::nullopt;
+  if (!plan.ok()) {
+    if (!lot.empty() && lot_error(plan.diagnostics().front()))
+      print_error(lot + " cannot be built; --keep-going skips such lots");
+    return std::nullopt;
+  }
   Built built;
   built.plan_seconds = stage.seconds();
   stage = Stopwatch();
@@ -231,11 +263,13 @@ std::optional<Built> plan_and_build(const BuildOptions& options, const base::Sou
   // The floor planner's and the builder's warnings carry no code of their own; BLD600 and BLD601
   // name the two kinds, so a village's hundreds of them are capped (warnings.h). On a lot, each
   // names the lot, so a user finds the building among thousands.
+  // Rooms merged or dropped to fit the lot have their own code (BLD602), capped apart.
   const std::string on = lot.empty() ? "" : lot + ": ";
   for (const auto& w : plan->warnings) {
-    emit_warning("BLD600",
+    const std::string code = w.code.empty() ? "BLD600" : w.code;
+    emit_warning(code,
                  source.name() + ":" + std::to_string(w.where.line) + ":" +
-                     std::to_string(w.where.column) + ": warning[BLD600]: " + on + w.message,
+                     std::to_string(w.where.column) + ": warning[" + code + "]: " + on + w.message,
                  options.quiet);
   }
   for (const auto& w : built.result.warnings) {
@@ -293,6 +327,18 @@ int build_lots(const BuildOptions& options, const Parsed& input, const Stopwatch
   print_diagnostics(lots.diagnostics(), lot_source, options.quiet);
   if (!lots.ok()) return kExitInput;
   report["invalid_lots"] = lots->skipped_invalid;
+  // Lots that cannot hold their grammar, left out under --keep-going, each with its reason.
+  report["skipped_lots"] = nlohmann::json::array();
+  report["adaptations"] = adaptations_report({});
+  const auto skip = [&](const io::Footprint& lot, const std::string& file, Location where,
+                        const std::string& reason) {
+    emit_warning("BLD603",
+                 file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
+                     ": warning[BLD603]: " + lot_name(lot) + ": skipped: " + reason,
+                 options.quiet);
+    report["skipped_lots"].push_back(
+        {{"id", lot.id}, {"feature", lot.feature_index}, {"reason", reason}});
+  };
   std::map<std::string, Parsed> grammars;
   std::vector<lang::bldg::BuildResult> results;
   report["buildings"] = nlohmann::json::array();
@@ -313,19 +359,35 @@ int build_lots(const BuildOptions& options, const Parsed& input, const Stopwatch
       grammar = &grammars.at(path);
     }
     if (lot.polygons.size() != 1) {
-      print_error(options.lot + ": feature '" + lot.id + "' is a MultiPolygon of " +
-                  std::to_string(lot.polygons.size()) + " polygons; a building needs one");
+      const std::string why = "feature '" + lot.id + "' is a MultiPolygon of " +
+                              std::to_string(lot.polygons.size()) +
+                              " polygons; a building needs one";
+      if (options.keep_going) {
+        skip(lot, options.lot, {}, why);
+        progress.advance();
+        continue;
+      }
+      print_error(options.lot + ": " + why + " (--keep-going skips it)");
       return kExitInput;
     }
     Building building = grammar->building;
     building.outline = lot.polygons.front();
     building.symbol = lot.id;
+    std::optional<base::Diagnostic> skipped;
     std::optional<Built> built =
-        plan_and_build(options, *grammar->source, building, rules, lot_name(lot));
+        plan_and_build(options, *grammar->source, building, rules, lot_name(lot),
+                       options.keep_going ? &skipped : nullptr);
+    if (skipped) {
+      skip(lot, grammar->source->name(), {skipped->span.line, skipped->span.column},
+           skipped->message);
+      progress.advance();
+      continue;
+    }
     if (!built) return kExitInput;
     nlohmann::json one = plan_report(built->plan, built->result);
     one["id"] = lot.id;
     one["grammar"] = grammar->source->name();
+    add_adaptations(report["adaptations"], one["adaptations"]);
     for (const char* key :
          {"rooms", "doors", "entrances", "windows", "stairs", "unreachable_rooms"}) {
       for (nlohmann::json item : one[key]) {

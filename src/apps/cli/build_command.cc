@@ -52,7 +52,8 @@ void add_build_command(CLI::App& app, BuildOptions& options) {
   build->add_option("--assets", options.assets, "asset folder a program may read (.lua)");
   build->add_option("--report", options.report, "write a JSON report (counts, timings)");
   build->add_flag("--keep-going", options.keep_going,
-                  "leave out invalid --lot features (each with a warning) instead of failing");
+                  "leave out invalid --lot features and lots that cannot hold a .bldg grammar "
+                  "(each with a warning) instead of failing");
   add_crs_option(*build, options.crs);
   build->add_flag("-q,--quiet", options.quiet, "no progress or warnings on stderr");
   add_view_options(*build, options.output);

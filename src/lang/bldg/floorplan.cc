@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "kernel/boolean2d.h"
 #include "lang/bldg/plan_geometry.h"
@@ -20,6 +21,40 @@ using plan::Work;
 
 base::Span span_at(const std::string& file, Location where) {
   return where.line > 0 ? base::Span::at(file, where.line, where.column) : base::Span::whole(file);
+}
+
+// Surveyed outlines bend their walls by centimetres between many short edges; a wall holds a door
+// only where it is straight, so a vertex within kStraighten of the segment joining its neighbours
+// is removed, the closest first ("Rooms that fit"). Kept only when the ring stays valid.
+constexpr double kStraighten = 0.05;
+
+void straighten_ring(kernel::Ring& ring) {
+  while (ring.size() > 3) {
+    const std::size_t n = ring.size();
+    std::size_t best = n;
+    double best_d = kStraighten;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d =
+          kernel::distance_to_segment(ring[i], ring[(i + n - 1) % n], ring[(i + 1) % n]);
+      if (d < best_d) {
+        best_d = d;
+        best = i;
+      }
+    }
+    if (best == n) return;
+    ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(best));
+  }
+}
+
+void straighten(kernel::Polygon& outline) {
+  kernel::Polygon p = outline;
+  straighten_ring(p.outer);
+  for (kernel::Ring& h : p.holes) straighten_ring(h);
+  const kernel::RepairResult checked = kernel::repair(p);
+  if (!checked.ok || checked.polygon.outer.size() != p.outer.size() ||
+      checked.polygon.holes.size() != p.holes.size())
+    return;
+  outline = std::move(p);
 }
 
 bool check_outline(const Building& building, Work& work, std::vector<base::Diagnostic>& errors,
@@ -48,7 +83,15 @@ bool check_outline(const Building& building, Work& work, std::vector<base::Diagn
   }
   work.outline = repaired.polygon;
   plan::simplify(work.outline);
+  straighten(work.outline);
   return true;
+}
+
+// PLAN007: the lot cannot hold the grammar (`insula build --keep-going` skips it with this reason).
+base::Diagnostic cannot_hold(const std::string& file, const Building& building,
+                             const std::string& why) {
+  return base::Diagnostic::error("PLAN007", "the lot cannot hold this grammar: " + why,
+                                 span_at(file, building.where));
 }
 
 // Storeys, parts and rooms of the plan from the work state (fake-concave: disposable parts and
@@ -160,8 +203,13 @@ base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrict
   std::vector<base::Diagnostic> errors;
   Work work;
   work.file = options.file;
+  work.sliver = options.on_lot ? 2 * restrictions.min_room_width : 0;
   if (!check_outline(building, work, errors, options.file))
     return base::Result<FloorPlan>::failure(std::move(errors));
+  // Seed 000's treemap cuts along the axes of the building's frame: a turned lot is planned in the
+  // frame of its walls and the plan turned back.
+  const plan::PlanFrame frame = plan::lot_frame(work.outline);
+  plan::into_frame(work.outline, frame);
   plan::build_work(building, restrictions, work, errors);
   if (work.levels == 0 && errors.empty()) {
     errors.push_back(base::Diagnostic::error(
@@ -186,13 +234,20 @@ base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrict
     plan::fit_doors(work, doors, start);
   }
 
+  // A part with no area: the lot cannot hold the grammar. A room with none is dropped (its
+  // neighbours hold its floor).
+  for (const plan::WorkPart& part : work.parts) {
+    if (part.disposable() || part.has_cell) continue;
+    errors.push_back(cannot_hold(options.file, building,
+                                 "building part '" + part.node->symbol + "' gets no area"));
+    return base::Result<FloorPlan>::failure(std::move(errors));
+  }
   for (const plan::WorkRoom& room : work.rooms) {
     if (room.division == nullptr || room.has_cell || work.parts[room.part].disposable()) continue;
-    errors.push_back(base::Diagnostic::error(
-        "PLAN006", "room '" + room.division->symbol + "' gets no area in the floor plan",
-        span_at(options.file, room.division->where)));
+    ++work.adaptations.rooms_dropped;
+    plan::warn(work, "room '" + room.division->symbol + "' gets no area on this lot; dropped",
+               room.division->where, "BLD602");
   }
-  if (!errors.empty()) return base::Result<FloorPlan>::failure(std::move(errors));
 
   FloorPlan out;
   assemble(work, out);  // §3.4: the last subdivision, fake-concave suppression
@@ -203,11 +258,33 @@ base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrict
     plan::adapt_room_shapes(work, out);
     weld_storeys(out);
   }
+  if (options.fit_rooms) plan::fit_rooms(work, out);
   plan::place_stairs(work, out);
   plan::guarantee_reachability(work, out, options.guarantee_reachability);
+  // Never a broken building: a storey left without rooms, or a room still unreachable after
+  // doors, stairs and merges, means the lot cannot hold the grammar.
+  if (options.guarantee_reachability) {
+    for (const PlanStorey& storey : out.storeys)
+      if (storey.rooms.empty()) {
+        errors.push_back(cannot_hold(options.file, building,
+                                     "no room of " + plan::meters(restrictions.min_room_area) +
+                                         " m² and " + plan::meters(restrictions.min_room_width) +
+                                         " m wide fits on storey " + std::to_string(storey.level)));
+        return base::Result<FloorPlan>::failure(std::move(errors));
+      }
+    if (!out.unreachable_rooms.empty()) {
+      const PlanUnreachable& u = out.unreachable_rooms.front();
+      errors.push_back(cannot_hold(options.file, building,
+                                   "room '" + u.symbol + "' on storey " + std::to_string(u.storey) +
+                                       " cannot be reached: " + u.reason));
+      return base::Result<FloorPlan>::failure(std::move(errors));
+    }
+  }
   plan::place_windows(work, out);
   plan::build_walls(work, out);
   out.warnings = std::move(work.warnings);
+  out.adaptations = work.adaptations;
+  plan::out_of_frame(out, frame);
   return out;
 }
 

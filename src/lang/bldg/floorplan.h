@@ -65,6 +65,8 @@ struct PlanRoom {
   int windows_asked = 0;
   bool entrance_asked = false;
   std::vector<int> neighbors;  // storey-local indices of rooms connected by a door (sorted)
+  // Symbols of the rooms merged into this one to fit the lot ("Rooms that fit"), in merge order.
+  std::vector<std::string> merged;
 };
 
 // A straight piece of a cell boundary with one room on its left (the cell is counter-clockwise)
@@ -168,7 +170,19 @@ struct PlanPart {
 
 struct PlanWarning {
   std::string message;
-  Location where;  // of the transition or division concerned; line 0 when none
+  Location where;    // of the transition or division concerned; line 0 when none
+  std::string code;  // empty for most; BLD602 for rooms merged or dropped to fit the lot
+};
+
+// What the engine changed to fit the grammar to its lot (docs/bldg-floorplan.md, "Rooms that
+// fit"), counted per building for the report.
+struct PlanAdaptations {
+  int rooms_merged = 0;         // a room too small, too narrow or unreachable joined a neighbour
+  int rooms_dropped = 0;        // a room that got no area, or too small with no neighbour
+  int doors_added = 0;          // by the reachability guarantee
+  int entrances_added = 0;      // the building had none
+  int stairs_added = 0;         // by the reachability guarantee
+  int transitions_dropped = 0;  // grammar doors, entrances or stairs that found no place
 };
 
 struct FloorPlan {
@@ -180,6 +194,7 @@ struct FloorPlan {
   std::vector<PlanStorey> storeys;
   std::vector<PlanUnreachable> unreachable_rooms;
   std::vector<PlanWarning> warnings;  // transitions dropped, rooms shrunk, walls not reached, ...
+  PlanAdaptations adaptations;
 };
 
 struct FloorPlanOptions {
@@ -188,6 +203,14 @@ struct FloorPlanOptions {
   // rooms are listed either way). On by default.
   bool adapt_room_shapes = true;
   bool guarantee_reachability = true;
+  // Rooms below Restrictions::min_room_area or min_room_width merged into a neighbour or dropped
+  // ("Rooms that fit"). On by default.
+  bool fit_rooms = true;
+  // The outline is a lot the grammar was not written for (`insula build --lot`, a geojson()
+  // outline): a cut of a floor's divisions that would leave a room slab thinner than twice
+  // Restrictions::min_room_width while the other axis would not is made along the other axis
+  // ("Rooms that fit"). Off: the grammar's axes are kept as written.
+  bool on_lot = false;
 };
 
 // Makes the floor plan. Fails (with `file:line:col` diagnostics) when the outline is not a valid

@@ -140,6 +140,10 @@ struct Restrictions {
   double door_min_width = 0.9;
   double door_height = 2.1;
   double borrow_limit = 0.25;  // max fraction of a room's weight lent away
+  // Rooms that fit (docs/bldg-floorplan.md): a room's cell must hold min_room_area m² and a disc
+  // of diameter min_room_width m; a room below either is merged into a neighbour or dropped.
+  double min_room_area = 2.0;
+  double min_room_width = 1.0;
   double outer_wall_thickness = 0.3;
   double inner_wall_thickness = 0.12;
   double storey_height = 3.0;

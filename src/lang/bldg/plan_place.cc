@@ -14,12 +14,6 @@ namespace {
 
 using kernel::Polygon;
 
-std::string meters(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
-}
-
 // Default width of an entrance door into part `part` (model.h, Restrictions::entrance_width).
 double entrance_width(const Work& work, int part) {
   const Restrictions& r = *work.restrictions;
@@ -129,6 +123,7 @@ void place_doors(Work& work, FloorPlan& plan, const std::vector<DoorRequest>& do
     std::optional<PlanDoor> door =
         door_between(*index, a.plan_index, b.plan_index, d.width, work.clearance);
     if (!door) {
+      if (d.transition != nullptr) ++work.adaptations.transitions_dropped;
       if (d.transition != nullptr)
         warn(work,
              "door '" + d.transition->symbol + "' finds no free place on the wall between '" +
@@ -141,6 +136,7 @@ void place_doors(Work& work, FloorPlan& plan, const std::vector<DoorRequest>& do
       door->where = d.transition->where;
     } else {
       door->added = true;
+      ++work.adaptations.doors_added;
       warn(work,
            "door added between '" + room_name(work, d.a) + "' and '" + room_name(work, d.b) +
                "' so that every room can be reached",
@@ -165,6 +161,7 @@ void place_entrances(Work& work, FloorPlan& plan) {
     }
     std::optional<PlanDoor> door = entrance_for(plan, room.plan_index, e.width, work.clearance);
     if (!door) {
+      ++work.adaptations.transitions_dropped;
       warn(work,
            "room '" + room_name(work, e.room) + "' has no open-air wall of " +
                meters(e.width + 2 * work.clearance) + " m for its entrance; dropped",
@@ -199,10 +196,27 @@ void place_entrances(Work& work, FloorPlan& plan) {
                                 work.clearance);
   door.height = work.restrictions->door_height;
   door.added = true;
+  ++work.adaptations.entrances_added;
   plan.storeys[0].entrances.push_back(door);
   warn(work,
        "the building has no entrance; one was added to room '" + ground.rooms[best].symbol + "'",
        ground.rooms[best].where);
+}
+
+bool add_entrance(Work& work, FloorPlan& plan, int room) {
+  const PlanStorey& ground = plan.storeys[0];
+  std::optional<PlanDoor> door =
+      entrance_for(plan, room, entrance_width(work, ground.rooms[room].part_index), work.clearance);
+  if (!door) return false;
+  door->height = work.restrictions->door_height;
+  door->added = true;
+  ++work.adaptations.entrances_added;
+  plan.storeys[0].entrances.push_back(*door);
+  warn(work,
+       "entrance added to room '" + ground.rooms[room].symbol +
+           "': no door reaches it from the building's other entrances",
+       ground.rooms[room].where);
+  return true;
 }
 
 void place_windows(Work& work, FloorPlan& plan) {

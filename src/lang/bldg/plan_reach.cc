@@ -47,12 +47,6 @@ Reach reachable(const FloorPlan& plan) {
   return reach;
 }
 
-std::string meters(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
-}
-
 // Adds one door from an unreachable room to a reachable neighbour; true when it did.
 bool add_doors(Work& work, FloorPlan& plan, Reach& reach) {
   bool progress = false;
@@ -76,6 +70,7 @@ bool add_doors(Work& work, FloorPlan& plan, Reach& reach) {
         if (!door) continue;
         door->height = work.restrictions->door_height;
         door->added = true;
+        ++work.adaptations.doors_added;
         storey.doors.push_back(*door);
         reach[s][u] = true;
         progress = true;
@@ -110,6 +105,7 @@ bool add_stairs(Work& work, FloorPlan& plan, const Reach& reach) {
     std::sort(pairs.begin(), pairs.end());
     for (const auto& [a, l, u] : pairs) {
       if (!add_stair(work, plan, static_cast<int>(s - 1), l, u, "", {}, true)) continue;
+      ++work.adaptations.stairs_added;
       warn(work,
            "stair added from '" + below.rooms[l].symbol + "' up to '" +
                plan.storeys[s].rooms[u].symbol + "' so that storey " + std::to_string(s) +
@@ -118,6 +114,36 @@ bool add_stairs(Work& work, FloorPlan& plan, const Reach& reach) {
       return true;
     }
   }
+  return false;
+}
+
+// Past doors and stairs ("Rooms that fit"): one room no door reaches joins a reachable neighbour
+// it shares a wall with; true when one did (room indices changed).
+bool merge_unreachable(Work& work, FloorPlan& plan, const Reach& reach) {
+  for (std::size_t s = 0; s < plan.storeys.size(); ++s)
+    for (std::size_t u = 0; u < plan.storeys[s].rooms.size(); ++u)
+      if (!reach[s][u] && merge_room(work, plan, static_cast<int>(s), static_cast<int>(u), reach[s],
+                                     "cannot be reached by a door on this lot"))
+        return true;
+  return false;
+}
+
+// A ground-storey room that no door can reach (a piece of the footprint on its own) gets its own
+// entrance: the unreachable room with the longest open-air wall that holds one. True when added.
+bool add_island_entrance(Work& work, FloorPlan& plan, const Reach& reach) {
+  if (plan.storeys.empty()) return false;
+  const PlanStorey& ground = plan.storeys[0];
+  std::vector<std::pair<double, int>> candidates;
+  for (std::size_t u = 0; u < ground.rooms.size(); ++u) {
+    if (reach[0][u]) continue;
+    double longest = 0;
+    for (const EdgePiece& p : open_air_pieces(ground, static_cast<int>(u), plan.footprint))
+      longest = std::max(longest, p.length());
+    if (longest > 0) candidates.push_back({-longest, static_cast<int>(u)});
+  }
+  std::sort(candidates.begin(), candidates.end());
+  for (const auto& [len, u] : candidates)
+    if (add_entrance(work, plan, u)) return true;
   return false;
 }
 
@@ -151,6 +177,14 @@ void guarantee_reachability(Work& work, FloorPlan& plan, bool repair) {
     reach = reachable(plan);
     if (!progress) {
       progress = add_stairs(work, plan, reach);
+      reach = reachable(plan);
+    }
+    if (!progress) {
+      progress = merge_unreachable(work, plan, reach);
+      reach = reachable(plan);
+    }
+    if (!progress) {
+      progress = add_island_entrance(work, plan, reach);
       reach = reachable(plan);
     }
     if (!progress) break;

@@ -169,6 +169,7 @@ void place_stairs(Work& work, FloorPlan& plan) {
     }
     if (!add_stair(work, plan, work.rooms[lower].level, work.rooms[lower].plan_index,
                    work.rooms[upper].plan_index, t.symbol, t.where, false)) {
+      ++work.adaptations.transitions_dropped;
       warn(work,
            "stair '" + t.symbol + "' does not fit inside both '" + t.from + "' and '" + t.to +
                "' clear of their doors; dropped",

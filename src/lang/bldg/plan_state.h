@@ -62,6 +62,9 @@ struct Work {
   std::vector<WorkFloor> floors;
   std::vector<WorkRoom> rooms;
   std::vector<PlanWarning> warnings;
+  PlanAdaptations adaptations;  // what was merged, dropped and added to fit the lot
+  // On a lot (FloorPlanOptions::on_lot): a room slab thinner than this turns the cut (m; 0 off).
+  double sliver = 0;
   std::vector<double> door_widths;  // default door width per part (floorplan.h)
   double clearance = 0;  // kept free at each end of a door or window (wall junctions, jambs)
   int levels = 0;        // storeys of the tallest non-disposable part
@@ -84,9 +87,11 @@ bool subdivide_parts(Work& work);
 void subdivide_floor(Work& work, int floor);
 void subdivide_all(Work& work);
 
-void warn(Work& work, std::string message, Location where = {});
+void warn(Work& work, std::string message, Location where = {}, std::string code = {});
 // Default width of a door between rooms of parts a and b (the narrower part's).
 double door_width_between(const Work& work, int part_a, int part_b);
 std::string room_name(const Work& work, int room);
+// A length for messages: two decimals ("1.40").
+std::string meters(double v);
 
 }  // namespace insula::lang::bldg::plan

@@ -2,6 +2,7 @@
 // §3.2 and Fig. 2): weights back-propagate from rooms to their containers and parts, and every
 // container's region is cut among its children by plan_treemap.h.
 #include <algorithm>
+#include <cstdio>
 
 #include "kernel/boolean2d.h"
 #include "lang/bldg/plan_geometry.h"
@@ -177,9 +178,33 @@ bool wider_than_tall(const Polygon& region) {
   return b.max.x - b.min.x >= b.max.y - b.min.y;
 }
 
+// The axis a node cuts along. On a lot the grammar was not written for, the axis it states (or the
+// alternation gives) can cut rooms into strips along a thin lot ("Rooms that fit"): when it
+// leaves a child's slab thinner than `sliver` (0: never) and the other axis leaves every child
+// thicker, the other axis is taken. Slabs are measured on the region's box: along the axis, the
+// child's share of it; across, the box's other side.
+bool cut_along_x(const TreeNode& n, bool x_first, const std::vector<Polygon>& region,
+                 const std::vector<double>& weights, double sliver) {
+  const bool stated = along_x(n, x_first);
+  if (sliver <= 0 || weights.size() < 2) return stated;
+  const kernel::Bounds2 box = bounds_of(region);
+  const double w = box.max.x - box.min.x;
+  const double h = box.max.y - box.min.y;
+  double total = 0;
+  for (double k : weights) total += k;
+  auto thinnest = [&](bool x) {
+    const double along = x ? w : h;
+    double m = x ? h : w;
+    for (double k : weights) m = std::min(m, along * k / total);
+    return m;
+  };
+  const double kept = thinnest(stated);
+  return kept < sliver && thinnest(!stated) > kept ? !stated : stated;
+}
+
 // Recursive treemap: `region` is cut among `node`'s children; leaves receive their pieces.
 void split_tree(const std::vector<TreeNode>& tree, int node, std::vector<Polygon> region,
-                const std::vector<double>& weight, double step, bool x_first,
+                const std::vector<double>& weight, double step, bool x_first, double sliver,
                 std::vector<std::vector<Polygon>>& leaf_regions) {
   const TreeNode& n = tree[node];
   if (n.leaf >= 0) {
@@ -190,9 +215,10 @@ void split_tree(const std::vector<TreeNode>& tree, int node, std::vector<Polygon
   std::vector<double> weights;
   for (int c : n.children) weights.push_back(std::max(weight[c], 1e-12));
   std::vector<std::vector<Polygon>> cells =
-      split_region(region, weights, along_x(n, x_first), step);
+      split_region(region, weights, cut_along_x(n, x_first, region, weights, sliver), step);
   for (std::size_t i = 0; i < n.children.size(); ++i)
-    split_tree(tree, n.children[i], std::move(cells[i]), weight, step, x_first, leaf_regions);
+    split_tree(tree, n.children[i], std::move(cells[i]), weight, step, x_first, sliver,
+               leaf_regions);
 }
 
 // Keeps each leaf's largest piece and merges the others into the neighbouring leaf that shares
@@ -245,12 +271,18 @@ std::vector<Polygon> settle_pieces(std::vector<std::vector<Polygon>>& regions,
 
 }  // namespace
 
-void warn(Work& work, std::string message, Location where) {
-  work.warnings.push_back({std::move(message), where});
+void warn(Work& work, std::string message, Location where, std::string code) {
+  work.warnings.push_back({std::move(message), where, std::move(code)});
 }
 
 double door_width_between(const Work& work, int part_a, int part_b) {
   return std::min(work.door_widths[part_a], work.door_widths[part_b]);
+}
+
+std::string meters(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  return buf;
 }
 
 std::string room_name(const Work& work, int room) {
@@ -300,8 +332,9 @@ bool subdivide_parts(Work& work) {
     return sum;
   };
   std::vector<std::vector<Polygon>> regions(work.parts.size());
+  // Parts keep their axes: fake-concave shapes (an L, a U) are made by them.
   split_tree(work.part_tree, 0, {work.outline}, node_weights(work.part_tree, weight),
-             work.restrictions->step, wider_than_tall(work.outline), regions);
+             work.restrictions->step, wider_than_tall(work.outline), 0, regions);
   std::vector<Polygon> cells;
   std::vector<bool> has_cell;
   const std::vector<Polygon> left = settle_pieces(regions, cells, has_cell);
@@ -330,7 +363,7 @@ void subdivide_floor(Work& work, int floor_index) {
   const auto weight = [&](int room) { return work.rooms[room].weight; };
   if (part.has_cell)
     split_tree(floor.tree, 0, {part.cell}, node_weights(floor.tree, weight),
-               work.restrictions->step, wider_than_tall(part.cell), regions);
+               work.restrictions->step, wider_than_tall(part.cell), work.sliver, regions);
   std::vector<std::vector<Polygon>> mine;
   mine.reserve(floor.rooms.size());
   for (int r : floor.rooms) mine.push_back(std::move(regions[r]));

@@ -335,6 +335,7 @@ void fit_doors(Work& work, std::vector<DoorRequest>& doors, std::size_t start) {
     d.accepted = ok;
     d.borrowed = ok;
     if (!ok && d.transition != nullptr) {
+      ++work.adaptations.transitions_dropped;
       const double got = longest_shared(work, d.a, d.b);
       warn(work,
            "door '" + d.transition->symbol + "' between '" + room_name(work, d.a) + "' and '" +

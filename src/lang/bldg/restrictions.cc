@@ -42,6 +42,8 @@ const Key kKeys[] = {
     {"door_min_width", [](Restrictions& r) -> double& { return r.door_min_width; }, 0.3, 5, false},
     {"door_height", [](Restrictions& r) -> double& { return r.door_height; }, 1, 10, false},
     {"borrow_limit", [](Restrictions& r) -> double& { return r.borrow_limit; }, 0, 0.9, false},
+    {"min_room_area", [](Restrictions& r) -> double& { return r.min_room_area; }, 0, 100, false},
+    {"min_room_width", [](Restrictions& r) -> double& { return r.min_room_width; }, 0, 10, false},
     {"outer_wall_thickness", [](Restrictions& r) -> double& { return r.outer_wall_thickness; }, 0, 2, true},
     {"inner_wall_thickness", [](Restrictions& r) -> double& { return r.inner_wall_thickness; }, 0, 2, true},
     {"storey_height", [](Restrictions& r) -> double& { return r.storey_height; }, 2, 20, false},

@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <queue>
 #include <string>
 #include <vector>
 
@@ -22,6 +21,7 @@
 #include "lang/bldg/floorplan.h"
 #include "lang/bldg/plan_geometry.h"
 #include "lang/bldg/stochastic.h"
+#include "plan_test_util.h"
 
 namespace insula::lang::bldg {
 namespace {
@@ -32,18 +32,7 @@ using kernel::Vec2;
 // Room areas match their targets up to the boolean grid (1e-6 m along cuts of a few metres).
 constexpr double kAreaTolerance = 5e-5;
 
-struct Rng {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  int uniform(int lo, int hi) { return lo + static_cast<int>(next() % (hi - lo + 1)); }
-  double real(double lo, double hi) { return lo + (hi - lo) * (next() >> 11) * 0x1.0p-53; }
-  bool chance(double p) { return real(0, 1) < p; }
-};
+using testing::Rng;
 
 struct Generator {
   Rng rng;
@@ -302,33 +291,7 @@ std::string check(const Building& b, const FloorPlan& plan, const Restrictions& 
     }
   }
   // Reachability, recomputed here from doors and stairs.
-  std::vector<std::vector<bool>> seen(plan.storeys.size());
-  for (std::size_t i = 0; i < plan.storeys.size(); ++i)
-    seen[i].assign(plan.storeys[i].rooms.size(), false);
-  std::queue<std::pair<int, int>> q;
-  for (const PlanDoor& e : plan.storeys[0].entrances) {
-    seen[0][e.room_a] = true;
-    q.push({0, e.room_a});
-  }
-  while (!q.empty()) {
-    const auto [l, room] = q.front();
-    q.pop();
-    auto visit = [&](int level, int x) {
-      if (!seen[level][x]) {
-        seen[level][x] = true;
-        q.push({level, x});
-      }
-    };
-    for (const PlanDoor& d : plan.storeys[l].doors) {
-      if (d.room_a == room) visit(l, d.room_b);
-      if (d.room_b == room) visit(l, d.room_a);
-    }
-    for (const PlanStair& st : plan.storeys[l].stairs)
-      if (st.lower_room == room) visit(l + 1, st.upper_room);
-    if (l > 0)
-      for (const PlanStair& st : plan.storeys[l - 1].stairs)
-        if (st.upper_room == room) visit(l - 1, st.lower_room);
-  }
+  const std::vector<std::vector<bool>> seen = testing::reached_rooms(plan);
   std::size_t unreachable = 0;
   for (const auto& level : seen) unreachable += std::count(level.begin(), level.end(), false);
   if (unreachable != plan.unreachable_rooms.size()) return "unreachable rooms misreported";
@@ -366,7 +329,14 @@ TEST(FloorPlanRandom, ThousandBuildingsKeepEveryProperty) {
     Generator g{Rng{seed}};
     const Building b = g.make();
     const base::Result<FloorPlan> result = make_floor_plan(b, r);
-    ASSERT_TRUE(result.ok()) << "seed " << seed << ": " << result.diagnostics()[0].message;
+    if (!result.ok()) {
+      // A building whose thin parts hold no stair cannot be made whole: the one failure allowed,
+      // with its reason (docs/bldg-floorplan.md, "Rooms that fit").
+      ASSERT_EQ(result.diagnostics()[0].code, "PLAN007")
+          << "seed " << seed << ": " << result.diagnostics()[0].message;
+      ++with_unreachable;
+      continue;
+    }
     const FloorPlan& plan = result.value();
     bool walls_asked = false;
     for (const PlanStorey& s : plan.storeys) {
@@ -466,8 +436,10 @@ TEST(FloorPlanRandom, ConcaveAndHoledOutlinesKeepTheTiling) {
     b.outline = star;
     const base::Result<FloorPlan> result = make_floor_plan(b, r);
     if (!result.ok()) {
-      // Only a room squeezed out of a piece of the outline may fail, and it says so.
-      ASSERT_EQ(result.diagnostics()[0].code, "PLAN006") << "seed " << seed;
+      // Only a lot that cannot hold the program may fail (a part squeezed out, a storey no stair
+      // reaches), and it says why.
+      ASSERT_EQ(result.diagnostics()[0].code, "PLAN007") << "seed " << seed;
+      ++with_unreachable;
       continue;
     }
     if (!result->unreachable_rooms.empty()) ++with_unreachable;
