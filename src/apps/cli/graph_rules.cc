@@ -122,6 +122,7 @@ std::shared_ptr<lang::graph::Model> run_bldg(const FrontEndRules::Program& progr
   const lang::bldg::Restrictions rules;
   lang::bldg::FloorPlanOptions options;
   options.file = program.source->name();
+  options.on_lot = true;  // the shape's outline is a lot the grammar was not written for
   base::Result<lang::bldg::FloorPlan> plan = lang::bldg::make_floor_plan(building, rules, options);
   if (!plan.ok()) {
     error = rendered(plan.diagnostics(), *program.source);
