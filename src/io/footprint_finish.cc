@@ -591,6 +591,8 @@ void FootprintBuilder::finish_features(const Location& crs_at) {
       Footprint footprint;
       footprint.feature_index = i;
       repair(i, footprint);
+      // The input rings are no longer needed: a country's worth of them would double the peak.
+      std::vector<kernel::Polygon>().swap(feature.polygons);
       if (feature.failed) continue;
       footprint.properties = std::move(feature.properties);
       result_.footprints.push_back(std::move(footprint));
