@@ -52,6 +52,13 @@ for broken in missing_node:OSM003:"way 102" unclosed_multipolygon:OSM004:"relati
     "$tmp/$file.json" || fail "$file --keep-going: 1 building, 1 invalid"
 done
 
+# `check` reads as mass does.
+expect_exit 0 "check osm" "$insula" check "$tmp/b.osm.pbf"
+grep -qx "$tmp/b.osm.pbf: ok: 4 footprints, in EPSG:32633 (reprojected from OGC:CRS84)" "$tmp/out.txt" ||
+  { fail "check osm: summary"; cat "$tmp/out.txt"; }
+expect_exit 1 "check broken osm" "$insula" check "$osm/missing_node.osm"
+grep -qF "missing_node.osm: error[OSM003]: way 102: " "$tmp/err.txt" || { fail "check broken osm: message"; cat "$tmp/err.txt"; }
+
 # A truncated .osm.pbf: one error, exit 1, no output, even with --keep-going.
 head -c 300 "$tmp/b.osm.pbf" >"$tmp/cut.osm.pbf"
 expect_exit 1 "truncated pbf" "$insula" mass "$tmp/cut.osm.pbf" -o "$tmp/cut.obj" --keep-going
