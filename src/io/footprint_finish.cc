@@ -599,9 +599,12 @@ void FootprintBuilder::finish_features(const Location& crs_at) {
     }
   }
   if (errors_ == 0 && result_.footprints.empty()) {
-    report(base::Severity::kError, "GEO006", "no polygon features", whole_input(),
-           {std::to_string(features_.size()) + " feature" + (features_.size() == 1 ? "" : "s") +
-            " read; the warnings above say why each was skipped"});
+    report(
+        base::Severity::kError, "GEO006", "no polygon features", whole_input(),
+        {features_.empty() && !empty_note_.empty()
+             ? empty_note_
+             : std::to_string(features_.size()) + " feature" + (features_.size() == 1 ? "" : "s") +
+                   " read; the warnings above say why each was skipped"});
   }
   if (errors_ == 0) assign_ids();
   result_.skipped_invalid = static_cast<std::size_t>(std::count_if(

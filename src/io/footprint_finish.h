@@ -165,6 +165,7 @@ class FootprintBuilder {
   std::string options_name_;  // "GeoJsonOptions": names options in messages
   std::vector<RawFootprint> features_;
   std::string declared_crs_;  // the input's CRS: "EPSG:N" or "OGC:CRS84"; empty: none named
+  std::string empty_note_;    // GEO006's note when the input has no features at all
   FootprintSet result_;
   std::size_t errors_ = 0;
   bool stopped_ = false;

@@ -89,7 +89,7 @@ class FirstProblem : public osmium::area::ProblemReporter {
   void report_invalid_location(osmium::object_id_type way_id,
                                osmium::object_id_type node_id) override {
     note("OSM003", "node " + std::to_string(node_id) + " of way " + std::to_string(way_id) +
-                       " is not in the file (no location)");
+                       " has no location (not in the file, or beyond +-180 x +-90)");
   }
 
  private:
@@ -225,7 +225,7 @@ class BuildingCollector
         feature.code = "OSM003";
         feature.problem = "node " + std::to_string(node.ref()) +
                           (feature.relation ? " of way " + std::to_string(way->id()) : "") +
-                          " is not in the file (no location)";
+                          " has no location (not in the file, or beyond +-180 x +-90)";
         return true;
       }
     }
@@ -328,7 +328,11 @@ namespace {
 class OsmBuilder : public FootprintBuilder {
  public:
   OsmBuilder(const std::string& path, const OsmOptions& options)
-      : FootprintBuilder(path, options, "OsmOptions"), path_(path), osm_options_(options) {}
+      : FootprintBuilder(path, options, "OsmOptions"), path_(path), osm_options_(options) {
+    empty_note_ =
+        "the file has no closed way or multipolygon relation tagged building or "
+        "building:part";
+  }
 
   base::Result<FootprintSet> run() {
     declared_crs_ = "OGC:CRS84";  // OpenStreetMap is WGS 84 longitude/latitude

@@ -172,7 +172,8 @@ TEST(OsmReader, BrokenElementsAreNamedAndSkippedWithKeepGoing) {
   };
   const Case cases[] = {
       {"missing_node.osm", "OSM003",
-       "missing_node.osm: error[OSM003]: way 102: node 999 is not in the file (no location)"},
+       "missing_node.osm: error[OSM003]: way 102: node 999 has no location (not in the file, or "
+       "beyond +-180 x +-90)"},
       {"unclosed_multipolygon.osm", "OSM004",
        "unclosed_multipolygon.osm: error[OSM004]: relation 203: no polygon could be assembled: a "
        "ring is not closed: it ends at node 24 of way 115 (13.3802783, 52.5191952)"},

@@ -1,5 +1,7 @@
 #include "apps/cli/footprint_input.h"
 
+#include <algorithm>
+
 #include "apps/cli/front_ends.h"
 #include "apps/cli/input_file.h"
 #include "io/osm_reader.h"
@@ -12,8 +14,13 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
     io::OsmOptions osm;
     static_cast<io::FootprintOptions&>(osm) = options;
     base::Result<io::FootprintSet> set = io::read_osm(path, osm);
-    // No text to quote: OSM messages name the element, XML syntax errors their line.
-    print_diagnostics(set.diagnostics(), base::Source(path, ""), quiet);
+    // OSM messages name the element; only an XML syntax error has a line to quote, and only
+    // then is the text read.
+    const bool positioned = std::any_of(set.diagnostics().begin(), set.diagnostics().end(),
+                                        [](const base::Diagnostic& d) { return d.span.line > 0; });
+    const std::optional<std::string> text =
+        positioned ? read_input_file(path) : std::optional<std::string>();
+    print_diagnostics(set.diagnostics(), base::Source(path, text.value_or("")), quiet);
     if (!set.ok()) return std::nullopt;
     return std::move(set.value());
   }
