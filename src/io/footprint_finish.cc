@@ -256,6 +256,12 @@ void FootprintBuilder::resolve_crs(const Location& crs_at) {
     }
   }
   if (target.empty() && given_buildable && source != given_info->name) target = given_info->name;
+  if (!declared_crs_.empty() && given_info && !given_buildable) {
+    report(base::Severity::kWarning, "GEO007",
+           options_name_ + "::crs " + given_info->name + " ignored: the input names its CRS (" +
+               declared_crs_ + ")",
+           crs_at);
+  }
   const std::optional<CrsInfo> info = describe_crs(source, error);
   if (!info) {
     if (target.empty()) {

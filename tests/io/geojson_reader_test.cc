@@ -457,6 +457,15 @@ TEST(GeoJsonReader, WebMercatorGivesTheSameBuildingsAsLonLat) {
       EXPECT_NEAR(area_b / area_a, 1.0, 0.005) << a.id;
     }
   }
+  // A --crs that cannot be built in says nothing about a file that names its CRS: ignored, said.
+  GeoJsonOptions ignored;
+  ignored.crs = "EPSG:4326";
+  const auto named = read_geojson(mercator_text, "block_3857", ignored);
+  ASSERT_TRUE(named.ok());
+  EXPECT_EQ(named->source_crs, "EPSG:3857");
+  EXPECT_EQ(headlines(named.diagnostics()),
+            std::vector<std::string>{"block_3857:3:9: warning[GEO007]: GeoJsonOptions::crs "
+                                     "EPSG:4326 ignored: the input names its CRS (EPSG:3857)"});
   // --out-crs builds in another CRS in ground meters; Web Mercator is refused as one.
   GeoJsonOptions out;
   out.out_crs = "EPSG:25833";
