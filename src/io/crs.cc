@@ -46,6 +46,28 @@ Pj horizontal(PJ_CONTEXT* ctx, Pj crs) {
   return crs;
 }
 
+// Web Mercator under the unofficial codes web maps used before EPSG:3857 existed.
+std::string official_name(const std::string& name) {
+  for (const char* alias : {"EPSG:900913", "EPSG:102100", "EPSG:102113", "EPSG:3785"}) {
+    if (name == alias) return "EPSG:3857";
+  }
+  return name;
+}
+
+// Normal-aspect Mercator projections (Web Mercator, EPSG methods 1024, 1026, 9804, 9805) keep
+// angles but scale lengths by 1 / cos(latitude): their meters are not ground meters.
+bool is_mercator(PJ_CONTEXT* ctx, PJ* crs) {
+  const Pj op(proj_crs_get_coordoperation(ctx, crs));
+  const char* method = nullptr;
+  if (!op || !proj_coordoperation_get_method_info(ctx, op.get(), &method, nullptr, nullptr) ||
+      method == nullptr) {
+    return false;
+  }
+  const std::string text = upper(method);
+  return text.find("MERCATOR") != std::string::npos &&
+         text.find("TRANSVERSE") == std::string::npos && text.find("OBLIQUE") == std::string::npos;
+}
+
 }  // namespace
 
 std::optional<CrsInfo> describe_crs(const std::string& name, std::string& error) {
@@ -54,7 +76,8 @@ std::optional<CrsInfo> describe_crs(const std::string& name, std::string& error)
     error = "PROJ could not start";
     return std::nullopt;
   }
-  Pj crs(proj_create(ctx.get(), name.c_str()));
+  const std::string official = official_name(upper(name));
+  Pj crs(proj_create(ctx.get(), official.c_str()));
   if (crs && !proj_is_crs(crs.get())) crs.reset();
   if (!crs) {
     error = "PROJ does not know the CRS '" + name + "'";
@@ -76,12 +99,13 @@ std::optional<CrsInfo> describe_crs(const std::string& name, std::string& error)
     return std::nullopt;
   }
   CrsInfo info;
-  info.name = upper(name);
+  info.name = official;
   const char* title = proj_get_name(crs.get());
   info.title = title != nullptr ? title : "";
   info.geographic = geographic;
   info.unit = unit != nullptr ? unit : "";
-  info.metric = !geographic && to_unit == 1.0;
+  info.mercator = !geographic && is_mercator(ctx.get(), crs.get());
+  info.metric = !geographic && to_unit == 1.0 && !info.mercator;
   return info;
 }
 
@@ -92,6 +116,11 @@ std::string buildable_crs(const std::string& name) {
   if (info->metric) return "";
   const std::string what = info->name + " (" + info->title + ")";
   if (info->geographic) return what + " is geographic (degrees); name a projected CRS in meters";
+  if (info->mercator) {
+    return what +
+           " is a Mercator projection, whose meters grow with latitude (1 / cos(latitude)); "
+           "name a projected CRS in ground meters";
+  }
   return what + " measures in " + info->unit + "; name a projected CRS in meters";
 }
 

@@ -13,18 +13,21 @@
 namespace insula::io {
 
 struct CrsInfo {
-  std::string name;         // as asked for, upper-cased: "EPSG:32633", "OGC:CRS84"
+  std::string name;         // as asked for, upper-cased: "EPSG:32633", "OGC:CRS84"; Web
+                            // Mercator's unofficial codes (EPSG:900913, 102100...) become EPSG:3857
   std::string title;        // PROJ's name: "WGS 84 / UTM zone 33N"
   bool geographic = false;  // axes are longitude and latitude in degrees
   std::string unit;         // the horizontal axis unit: "degree", "metre", "US survey foot"
-  bool metric = false;      // projected with axes in meters: footprints can be built in it
+  bool mercator = false;    // a normal-aspect Mercator (Web Mercator): meters x 1 / cos(latitude)
+  bool metric = false;      // projected, in ground meters: footprints can be built in it
 };
 
 // What PROJ's database knows of `name` ("EPSG:N", "urn:ogc:def:crs:EPSG::N", "OGC:CRS84"...);
 // nullopt with `error` set when PROJ does not know it or it is not a 2D horizontal CRS.
 std::optional<CrsInfo> describe_crs(const std::string& name, std::string& error);
 
-// Empty when footprints can be built in `name` (a projected CRS in meters), else why not
+// Empty when footprints can be built in `name` (a projected CRS in ground meters: not Web
+// Mercator), else why not
 // ("EPSG:4326 (WGS 84) is geographic (degrees); name a projected CRS in meters").
 std::string buildable_crs(const std::string& name);
 

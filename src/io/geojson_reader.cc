@@ -1,21 +1,16 @@
 // GeoJSON footprint reader (RFC 7946 structure, GeoJSON-2008 "crs" member). Stages: byte
 // pre-scan (empty input, nesting depth) -> nlohmann::json DOM parse -> structure walk collecting
-// world-coordinate rings per feature -> CRS choice and reprojection (io/crs.h) -> origin choice
-// and shift -> kernel::repair() and the simplicity builders need -> id de-duplication.
+// world-coordinate rings per feature -> the finishing steps shared with the OSM reader
+// (io/footprint_finish.h: CRS and reprojection, origin shift, repair, id de-duplication).
 // nlohmann::json keeps no positions, so diagnostics find theirs again with a small scanner over the
 // (by then known valid) text: feature starts are listed once, deeper paths are scanned from the
 // feature start only when a diagnostic needs them.
 #include "io/geojson_reader.h"
 
-#include "io/crs.h"
-#include "kernel/skeleton.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <nlohmann/json.hpp>
-#include <set>
 #include <utility>
 
 namespace insula::io {
@@ -23,7 +18,7 @@ namespace {
 
 using base::Diagnostic;
 using nlohmann::json;
-constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+constexpr std::size_t kNone = kNoIndex;
 
 // ---------------------------------------------------------------------------------------------
 // Byte-level scanning. Works on any bytes (the depth scan runs before parsing); never reads past
@@ -232,21 +227,8 @@ std::string type_name(const json& value) {
   }
 }
 
-std::string quote_text(std::string_view text) {
-  constexpr std::size_t kMax = 40;
-  std::string out = "\"";
-  out.append(text.substr(0, kMax));
-  if (text.size() > kMax) out += "...";
-  return out + "\"";
-}
-
 std::string compact(const json& value) {
   return value.dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
-std::string number_text(double v) {
-  if (std::abs(v) < 1e15 && v == std::floor(v)) return std::to_string(static_cast<long long>(v));
-  return compact(json(v));
 }
 
 // A numeric or non-empty string id, as text.
@@ -299,88 +281,46 @@ std::string ring_label(const Where& where) {
   return out;
 }
 
-// Where two rings of a polygon meet, or one ring meets itself, other than at the shared vertex of
-// consecutive edges. O(n^2), only run to explain a polygon kernel::is_simple_polygon rejected.
-struct Touch {
-  std::size_t ring_a = 0;  // 0: the outer ring, k: hole k
-  std::size_t ring_b = 0;
-  kernel::Vec2 point;
-};
-
-bool on_segment(kernel::Vec2 a, kernel::Vec2 b, kernel::Vec2 p) {
-  return kernel::cross(b - a, p - a) == 0 && std::min(a.x, b.x) <= p.x &&
-         p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
-}
-
-std::optional<Touch> find_touch(const kernel::Polygon& polygon) {
-  std::vector<const kernel::Ring*> rings{&polygon.outer};
-  for (const kernel::Ring& hole : polygon.holes) rings.push_back(&hole);
-  for (std::size_t ra = 0; ra < rings.size(); ++ra) {
-    const kernel::Ring& a = *rings[ra];
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      const kernel::Vec2 p = a[i];
-      const kernel::Vec2 q = a[(i + 1) % a.size()];
-      for (std::size_t rb = ra; rb < rings.size(); ++rb) {
-        const kernel::Ring& b = *rings[rb];
-        for (std::size_t j = rb == ra ? i + 1 : 0; j < b.size(); ++j) {
-          if (rb == ra && (j == i + 1 || (i == 0 && j + 1 == b.size()))) continue;
-          const kernel::Vec2 u = b[j];
-          const kernel::Vec2 v = b[(j + 1) % b.size()];
-          for (const kernel::Vec2 point : {u, v}) {
-            if (on_segment(p, q, point)) return Touch{ra, rb, point};
-          }
-          for (const kernel::Vec2 point : {p, q}) {
-            if (on_segment(u, v, point)) return Touch{ra, rb, point};
-          }
-        }
-      }
-    }
-  }
-  return std::nullopt;
-}
-
+// What the GeoJSON reader keeps of a feature besides its RawFootprint (FootprintBuilder's
+// features_[index]): where it is in the text, for diagnostics.
 struct FeatureState {
   std::size_t index = 0;
-  std::size_t offset = kNone;             // text offset of the feature (or bare geometry) value
-  bool bare_geometry = false;             // paths start at the geometry itself
-  std::string label;                      // "feature 3" or "feature 3 (id \"b12\")"
-  std::string id;                         // empty: none in the file
-  std::vector<PathStep> id_path;          // where the id came from
-  std::vector<kernel::Polygon> polygons;  // world coordinates, closing vertex dropped
-  std::vector<Where> polygon_where;
-  shape::AttributeMap properties;
-  bool failed = false;
+  std::size_t offset = kNone;     // text offset of the feature (or bare geometry) value
+  bool bare_geometry = false;     // paths start at the geometry itself
+  std::vector<PathStep> id_path;  // where the id came from
 };
 
 // ---------------------------------------------------------------------------------------------
 
-class Reader {
+class Reader : public FootprintBuilder {
  public:
   Reader(std::string_view text, const std::string& name, const GeoJsonOptions& options)
-      : text_(text), name_(name), options_(options), locator_(text) {}
+      : FootprintBuilder(name, options, "GeoJsonOptions"),
+        text_(text),
+        geo_options_(options),
+        locator_(text) {}
 
   base::Result<FootprintSet> run();
 
  private:
-  struct Pending {
-    std::size_t offset;
-    Diagnostic diagnostic;
-  };
-
   // Diagnostics ----------------------------------------------------------------------------
+  Location at(std::size_t offset);
+  Location locate(std::size_t feature, const FootprintPlace& place) override;
   void report(base::Severity severity, const char* code, std::string message, std::size_t offset,
-              std::vector<std::string> notes = {});
+              std::vector<std::string> notes = {}) {
+    FootprintBuilder::report(severity, code, std::move(message), at(offset), std::move(notes));
+  }
   void feature_issue(FeatureState& feature, bool is_error, const char* code,
                      const std::string& message, const std::vector<PathStep>& path,
                      std::vector<std::string> notes = {});
   std::vector<PathStep> geometry_path(const FeatureState& feature, const Where& where) const;
-  base::Span span_at(std::size_t offset);
 
   // Stages ---------------------------------------------------------------------------------
   bool prescan();
   std::optional<json> parse();
   void read_top_level(const json& doc);
   void read_crs(const json& doc);
+  FeatureState& add_feature(std::size_t offset);
   void read_feature(const json& value, std::size_t index, std::size_t offset);
   void read_geometry(FeatureState& feature, const json& geometry);
   void read_properties(FeatureState& feature, const json& value);
@@ -390,62 +330,31 @@ class Reader {
                                         const Where& where);
   std::optional<kernel::Vec2> read_position(FeatureState& feature, const json& position,
                                             Where where);
-  bool looks_like_degrees() const;
-  kernel::Bounds2 valid_bounds() const;
-  void resolve_crs();
-  void to_geographic_range();
-  void reproject_all(const std::string& from, const std::string& to);
-  void reject_touching_rings(FeatureState& feature, std::size_t p, const kernel::Polygon& repaired);
-  void choose_origin();
-  void repair(FeatureState& feature, Footprint& footprint);
-  void assign_ids();
-  base::Result<FootprintSet> finish();
-  std::vector<std::string> local_note() const;
 
   std::string_view text_;
-  const std::string& name_;
-  const GeoJsonOptions& options_;
+  const GeoJsonOptions& geo_options_;
   TextLocator locator_;
   std::optional<base::Source> source_;  // built on the first positioned diagnostic
-  std::vector<Pending> pending_;
-  std::size_t errors_ = 0;
-  std::size_t warnings_ = 0;
-  std::size_t suppressed_warnings_ = 0;
-  bool stopped_ = false;
   bool warned_extra_dimensions_ = false;
-  bool hinted_skip_ = false;
-  std::string declared_crs_;  // from the "crs" member: "EPSG:N" or "OGC:CRS84"
   std::size_t crs_offset_ = kNone;
   std::size_t root_offset_ = 0;
-  std::vector<FeatureState> features_;
-  FootprintSet result_;
+  std::vector<FeatureState> states_;  // parallel to features_
 };
 
-base::Span Reader::span_at(std::size_t offset) {
-  if (offset == kNone) return base::Span::whole(name_);
+FootprintBuilder::Location Reader::at(std::size_t offset) {
+  if (offset == kNone) return whole_input();
   if (!source_) source_.emplace(name_, std::string(text_));
   const auto [line, column] = source_->locate(offset);
-  return base::Span::at(name_, line, column);
+  return {offset, base::Span::at(name_, line, column)};
 }
 
-void Reader::report(base::Severity severity, const char* code, std::string message,
-                    std::size_t offset, std::vector<std::string> notes) {
-  if (stopped_) return;
-  if (severity == base::Severity::kWarning && warnings_ >= options_.max_warnings) {
-    ++suppressed_warnings_;
-    return;
-  }
-  Diagnostic d = severity == base::Severity::kError
-                     ? Diagnostic::error(code, std::move(message), span_at(offset))
-                     : Diagnostic::warning(code, std::move(message), span_at(offset));
-  d.notes = std::move(notes);
-  if (severity == base::Severity::kError && ++errors_ >= options_.max_errors) {
-    d.notes.push_back("too many errors (GeoJsonOptions::max_errors = " +
-                      std::to_string(options_.max_errors) + "); stopped reading");
-    stopped_ = true;
-  }
-  if (severity == base::Severity::kWarning) ++warnings_;
-  pending_.push_back({offset, std::move(d)});
+FootprintBuilder::Location Reader::locate(std::size_t feature, const FootprintPlace& place) {
+  const FeatureState& state = states_[feature];
+  if (state.offset == kNone) return whole_input();
+  const std::vector<PathStep> path =
+      place.id ? state.id_path
+               : geometry_path(state, Where{place.polygon, place.ring, place.position});
+  return at(locator_.follow(state.offset, path));
 }
 
 void Reader::feature_issue(FeatureState& feature, bool is_error, const char* code,
@@ -453,22 +362,8 @@ void Reader::feature_issue(FeatureState& feature, bool is_error, const char* cod
                            std::vector<std::string> notes) {
   const std::size_t offset =
       feature.offset == kNone ? kNone : locator_.follow(feature.offset, path);
-  const std::string flag = options_.skip_invalid_flag.empty() ? "GeoJsonOptions::skip_invalid"
-                                                              : options_.skip_invalid_flag;
-  if (is_error) {
-    // Skipping: one warning per feature, its first error; the rest would repeat "skipped".
-    if (options_.skip_invalid && feature.failed) return;
-    if (options_.skip_invalid) {
-      notes.push_back("feature skipped (" + flag + ")");
-    } else if (!hinted_skip_ && !options_.skip_invalid_flag.empty()) {
-      notes.push_back(flag + " skips invalid features, each with a warning");
-      hinted_skip_ = true;
-    }
-    feature.failed = true;
-  }
-  const bool as_error = is_error && !options_.skip_invalid;
-  report(as_error ? base::Severity::kError : base::Severity::kWarning, code,
-         feature.label + ": " + message, offset, std::move(notes));
+  FootprintBuilder::feature_issue(feature.index, is_error, code, message, at(offset),
+                                  std::move(notes));
 }
 
 std::vector<PathStep> Reader::geometry_path(const FeatureState& feature, const Where& where) const {
@@ -488,9 +383,9 @@ bool Reader::prescan() {
     report(base::Severity::kError, "GEO002", "file is empty; expected a GeoJSON object", kNone);
     return false;
   }
-  if (const auto deep = find_too_deep(text_, options_.max_depth)) {
+  if (const auto deep = find_too_deep(text_, geo_options_.max_depth)) {
     report(base::Severity::kError, "GEO003",
-           "arrays and objects nest deeper than " + std::to_string(options_.max_depth) +
+           "arrays and objects nest deeper than " + std::to_string(geo_options_.max_depth) +
                " levels (GeoJsonOptions::max_depth)",
            *deep);
     return false;
@@ -561,10 +456,8 @@ void Reader::read_top_level(const json& doc) {
   } else if (name == "Feature") {
     read_feature(doc, 0, root_offset_);
   } else if (name == "Polygon" || name == "MultiPolygon") {
-    FeatureState& feature = features_.emplace_back();
-    feature.offset = root_offset_;
+    FeatureState& feature = add_feature(root_offset_);
     feature.bare_geometry = true;
-    feature.label = "feature 0";
     read_geometry(feature, doc);
   } else {
     report(base::Severity::kError, "GEO004",
@@ -601,11 +494,21 @@ void Reader::read_crs(const json& doc) {
   }
 }
 
-void Reader::read_feature(const json& value, std::size_t index, std::size_t offset) {
-  FeatureState& feature = features_.emplace_back();
+// A new feature, numbered by its position in the file (a bare geometry is feature 0).
+FeatureState& Reader::add_feature(std::size_t offset) {
+  const std::size_t index = features_.size();
+  RawFootprint& raw = features_.emplace_back();
+  raw.name = raw.label = "feature " + std::to_string(index);
+  raw.fallback_id = "feature-" + std::to_string(index);
+  FeatureState& feature = states_.emplace_back();
   feature.index = index;
   feature.offset = offset;
-  feature.label = "feature " + std::to_string(index);
+  return feature;
+}
+
+void Reader::read_feature(const json& value, std::size_t /*index*/, std::size_t offset) {
+  FeatureState& feature = add_feature(offset);
+  RawFootprint& raw = features_[feature.index];
   if (!value.is_object()) {
     feature_issue(feature, true, "GEO015", "is " + type_name(value) + "; expected an object", {});
     return;
@@ -613,7 +516,7 @@ void Reader::read_feature(const json& value, std::size_t index, std::size_t offs
   const json* props = member(value, "properties");
   if (const json* id = member(value, "id"); id != nullptr && !id->is_null()) {
     if (auto text = id_text(*id)) {
-      feature.id = *text;
+      raw.id = *text;
       feature.id_path = {{"id", 0}};
     } else {
       feature_issue(feature, false, "GEO018",
@@ -623,13 +526,13 @@ void Reader::read_feature(const json& value, std::size_t index, std::size_t offs
   }
   for (const char* key : {"id", "name"}) {
     const json* alt = props != nullptr ? member(*props, key) : nullptr;
-    if (!feature.id.empty() || alt == nullptr) continue;
+    if (!raw.id.empty() || alt == nullptr) continue;
     if (auto text = id_text(*alt)) {
-      feature.id = *text;
+      raw.id = *text;
       feature.id_path = {{"properties", 0}, {key, 0}};
     }
   }
-  if (!feature.id.empty()) feature.label += " (id " + quote_text(feature.id) + ")";
+  if (!raw.id.empty()) raw.label += " (id " + quote_text(raw.id) + ")";
   const json* type = member(value, "type");
   if (type == nullptr || !type->is_string() || type->get_ref<const std::string&>() != "Feature") {
     feature_issue(feature, true, "GEO015",
@@ -668,7 +571,7 @@ void Reader::read_properties(FeatureState& feature, const json& value) {
     } else if (!item.is_null()) {
       converted = compact(item);
     }
-    feature.properties.insert_or_assign(key, std::move(converted));
+    features_[feature.index].properties.insert_or_assign(key, std::move(converted));
   }
 }
 
@@ -716,17 +619,16 @@ void Reader::read_geometry(FeatureState& feature, const json& geometry) {
   }
   if (name == "Polygon") {
     if (auto polygon = read_polygon(feature, *coordinates, Where{})) {
-      feature.polygons.push_back(std::move(*polygon));
-      feature.polygon_where.push_back(Where{});
+      features_[feature.index].polygons.push_back(std::move(*polygon));
     }
     return;
   }
+  features_[feature.index].multi = true;
   for (std::size_t i = 0; i < coordinates->size() && !stopped_; ++i) {
     Where where;
     where.polygon = i;
     if (auto polygon = read_polygon(feature, (*coordinates)[i], where)) {
-      feature.polygons.push_back(std::move(*polygon));
-      feature.polygon_where.push_back(where);
+      features_[feature.index].polygons.push_back(std::move(*polygon));
     }
   }
 }
@@ -824,11 +726,11 @@ std::optional<kernel::Vec2> Reader::read_position(FeatureState& feature, const j
       return std::nullopt;
     }
     xyz[c] = v.get<double>();
-    if (!std::isfinite(xyz[c]) || std::abs(xyz[c]) > options_.max_abs_coordinate) {
+    if (!std::isfinite(xyz[c]) || std::abs(xyz[c]) > geo_options_.max_abs_coordinate) {
       feature_issue(feature, true, "GEO013",
                     label + " coordinate " +
                         (std::isfinite(xyz[c]) ? number_text(xyz[c]) + " is beyond +-" +
-                                                     number_text(options_.max_abs_coordinate) +
+                                                     number_text(geo_options_.max_abs_coordinate) +
                                                      " m (GeoJsonOptions::max_abs_coordinate)"
                                                : std::string("is not finite")),
                     geometry_path(feature, where));
@@ -846,390 +748,12 @@ std::optional<kernel::Vec2> Reader::read_position(FeatureState& feature, const j
   return kernel::Vec2{xyz[0], xyz[1]};
 }
 
-// Stage 4: CRS (docs/geojson.md, "Coordinates, units and CRS"). Longitude/latitude without a
-// "crs" member gives itself away by fitting in +-180 x +-90 while every footprint spans less than
-// 0.05 units (5 cm if it were meters, a few kilometres in degrees): no real building is 5 cm wide,
-// and a hand-made file in meters near (0, 0) stays in meters.
-bool Reader::looks_like_degrees() const {
-  bool any = false;
-  for (const FeatureState& feature : features_) {
-    if (feature.failed) continue;
-    for (const kernel::Polygon& polygon : feature.polygons) {
-      const kernel::Bounds2 box = kernel::bounds(polygon);
-      const bool degrees = std::abs(box.min.x) <= 180 && std::abs(box.max.x) <= 180 &&
-                           std::abs(box.min.y) <= 90 && std::abs(box.max.y) <= 90 &&
-                           box.max.x - box.min.x < 0.05 && box.max.y - box.min.y < 0.05;
-      if (!degrees) return false;
-      any = true;
-    }
-  }
-  return any;
-}
-
-void Reader::resolve_crs() {
-  std::string error;
-  if (!options_.crs.empty()) {
-    if (const std::string why = buildable_crs(options_.crs); !why.empty()) {
-      report(base::Severity::kError, "GEO007", "GeoJsonOptions::crs: " + why, kNone);
-      return;
-    }
-  }
-  std::string source = declared_crs_;
-  if (source.empty()) {
-    if (!looks_like_degrees()) {
-      result_.crs = options_.crs;  // meters in no named CRS: in the caller's, if it names one
-      return;
-    }
-    source = "OGC:CRS84";  // RFC 7946: GeoJSON without a "crs" member is WGS 84 lon/lat
-  }
-  const std::optional<CrsInfo> info = describe_crs(source, error);
-  if (!info) {
-    if (options_.crs.empty()) {
-      report(base::Severity::kWarning, "GEO007",
-             "crs " + source + ": " + error + "; coordinates taken as meters", crs_offset_);
-      result_.crs = source;
-    } else {
-      report(base::Severity::kError, "GEO007",
-             "crs " + source + ": " + error + "; cannot reproject to " + options_.crs, crs_offset_);
-    }
-    return;
-  }
-  if (info->geographic) to_geographic_range();
-  if (errors_ > 0) return;
-  std::string target = options_.crs;
-  if (target.empty() && !info->geographic) {
-    if (!info->metric) {
-      report(base::Severity::kError, "GEO007",
-             "crs " + info->name + " (" + info->title + ") measures in " + info->unit +
-                 "; footprints are built in meters: name a projected CRS in meters to "
-                 "reproject to (--crs EPSG:N)",
-             crs_offset_);
-      return;
-    }
-    result_.crs = info->name;
-    return;
-  }
-  if (target.empty()) {
-    const kernel::Bounds2 box = valid_bounds();
-    if (box.empty()) return;
-    target = utm_crs(0.5 * (box.min.x + box.max.x), 0.5 * (box.min.y + box.max.y));
-  }
-  const std::optional<CrsInfo> to = describe_crs(target, error);
-  if (to && to->name == info->name) {
-    result_.crs = info->name;
-    return;
-  }
-  reproject_all(info->name, to ? to->name : target);
-}
-
-// Degrees in a geographic CRS: a coordinate beyond +-180 x +-90 says the file's "crs" member is
-// wrong (often meters under an EPSG:4326 label); guessing would misplace the building.
-void Reader::to_geographic_range() {
-  for (FeatureState& feature : features_) {
-    if (feature.failed) continue;
-    for (std::size_t p = 0; p < feature.polygons.size() && !feature.failed; ++p) {
-      const kernel::Polygon& polygon = feature.polygons[p];
-      for (std::size_t r = 0; r <= polygon.holes.size() && !feature.failed; ++r) {
-        const kernel::Ring& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
-        for (std::size_t i = 0; i < ring.size(); ++i) {
-          if (std::abs(ring[i].x) <= 180 && std::abs(ring[i].y) <= 90) continue;
-          Where where = feature.polygon_where[p];
-          where.ring = r;
-          where.position = i;
-          feature_issue(feature, true, "GEO008",
-                        ring_label(where) + " position " + std::to_string(i) + " (" +
-                            number_text(ring[i].x) + ", " + number_text(ring[i].y) +
-                            ") is not a longitude/latitude, but crs " + declared_crs_ +
-                            " is geographic (degrees)",
-                        geometry_path(feature, where));
-          break;
-        }
-      }
-    }
-  }
-}
-
-void Reader::reproject_all(const std::string& from, const std::string& to) {
-  std::vector<kernel::Vec2> points;
-  for (const FeatureState& feature : features_) {
-    if (feature.failed) continue;
-    for (const kernel::Polygon& polygon : feature.polygons) {
-      points.insert(points.end(), polygon.outer.begin(), polygon.outer.end());
-      for (const kernel::Ring& hole : polygon.holes) {
-        points.insert(points.end(), hole.begin(), hole.end());
-      }
-    }
-  }
-  if (const std::string error = io::reproject(from, to, points); !error.empty()) {
-    report(base::Severity::kError, "GEO007", error, crs_offset_);
-    return;
-  }
-  std::size_t next = 0;
-  for (FeatureState& feature : features_) {
-    if (feature.failed) continue;
-    for (std::size_t p = 0; p < feature.polygons.size(); ++p) {
-      kernel::Polygon& polygon = feature.polygons[p];
-      for (std::size_t r = 0; r <= polygon.holes.size(); ++r) {
-        kernel::Ring& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
-        for (std::size_t i = 0; i < ring.size(); ++i) {
-          const kernel::Vec2 q = points[next++];
-          if (std::isfinite(q.x) && std::isfinite(q.y)) {
-            ring[i] = q;
-          } else if (!feature.failed) {
-            Where where = feature.polygon_where[p];
-            where.ring = r;
-            where.position = i;
-            feature_issue(feature, true, "GEO008",
-                          ring_label(where) + " position " + std::to_string(i) +
-                              " could not be reprojected from " + from + " to " + to,
-                          geometry_path(feature, where));
-          }
-        }
-      }
-    }
-  }
-  result_.crs = to;
-  result_.source_crs = from;
-}
-
-// The bounding box of the features still valid, in world coordinates.
-kernel::Bounds2 Reader::valid_bounds() const {
-  kernel::Bounds2 box;
-  for (const FeatureState& feature : features_) {
-    if (feature.failed) continue;
-    for (const kernel::Polygon& polygon : feature.polygons) {
-      const kernel::Bounds2 b = kernel::bounds(polygon);
-      box.add(b.min);
-      box.add(b.max);
-    }
-  }
-  return box;
-}
-
-// Stage 5: origin. The bounding-box centre rounded down to whole meters: local coordinates stay
-// within half the data's extent (which float32 outputs such as glTF need), and world - origin is
-// exact whenever origin and world lie within a factor of 2 of each other (Sterbenz), which holds
-// for any dataset smaller than its distance from (0, 0): UTM tiles, national grids.
-void Reader::choose_origin() {
-  const kernel::Bounds2 box = valid_bounds();
-  if (options_.origin) {
-    result_.origin = {options_.origin->x, options_.origin->y, 0};
-  } else if (!box.empty() &&
-             (std::max(std::abs(box.min.x), std::abs(box.max.x)) > options_.shift_threshold ||
-              std::max(std::abs(box.min.y), std::abs(box.max.y)) > options_.shift_threshold)) {
-    result_.origin = {std::floor(0.5 * box.min.x + 0.5 * box.max.x),
-                      std::floor(0.5 * box.min.y + 0.5 * box.max.y), 0};
-  }
-}
-
-bool has_three_distinct(const kernel::Ring& ring) {
-  const auto second =
-      std::find_if(ring.begin(), ring.end(), [&](kernel::Vec2 v) { return v != ring[0]; });
-  return second != ring.end() && std::any_of(second, ring.end(), [&](kernel::Vec2 v) {
-           return v != ring[0] && v != *second;
-         });
-}
-
-const char* repair_code(kernel::PolygonIssueKind kind) {
-  switch (kind) {
-    case kernel::PolygonIssueKind::kTooFewVertices:
-      return "GEO020";
-    case kernel::PolygonIssueKind::kZeroArea:
-      return "GEO021";
-    case kernel::PolygonIssueKind::kSelfIntersection:
-      return "GEO022";
-    case kernel::PolygonIssueKind::kRingsIntersect:
-      return "GEO023";
-    case kernel::PolygonIssueKind::kHoleOutside:
-      return "GEO024";
-    case kernel::PolygonIssueKind::kDuplicateVertex:
-      return "GEO025";
-    case kernel::PolygonIssueKind::kCollinearVertex:
-      return "GEO026";
-    case kernel::PolygonIssueKind::kNonFinite:
-    case kernel::PolygonIssueKind::kWrongOrientation:
-      break;
-  }
-  return "GEO013";
-}
-
-// Stage 6: repair in local coordinates (small numbers keep the kernel's tolerance meaningful).
-// Orientation fixes are silent: RFC 7946 asks readers to accept either winding. Repeated repairs
-// of one kind in one polygon are reported once with a count.
-void Reader::repair(FeatureState& feature, Footprint& footprint) {
-  const kernel::Vec2 origin{result_.origin.x, result_.origin.y};
-  for (std::size_t p = 0; p < feature.polygons.size(); ++p) {
-    kernel::Polygon& polygon = feature.polygons[p];
-    for (kernel::Vec2& v : polygon.outer) v -= origin;
-    for (kernel::Ring& hole : polygon.holes) {
-      for (kernel::Vec2& v : hole) v -= origin;
-    }
-    kernel::RepairResult repaired = kernel::repair(polygon, options_.repair_tolerance);
-    std::map<kernel::PolygonIssueKind, std::size_t> repeats;
-    for (const kernel::PolygonIssue& issue : repaired.issues) {
-      if (issue.repaired) ++repeats[issue.kind];
-    }
-    for (const kernel::PolygonIssue& issue : repaired.issues) {
-      // Orientation is free in GeoJSON; repairs of a rejected polygon are noise.
-      if (issue.kind == kernel::PolygonIssueKind::kWrongOrientation) continue;
-      if (issue.repaired && !repaired.ok) continue;
-      const char* code = repair_code(issue.kind);
-      std::string message =
-          ring_label(Where{feature.polygon_where[p].polygon}) + ": " + issue.message;
-      if (issue.kind == kernel::PolygonIssueKind::kTooFewVertices && !issue.repaired &&
-          issue.ring == 0 && has_three_distinct(polygon.outer)) {
-        // Collinear and spike removal left too little: the ring was a line all along.
-        code = "GEO021";
-        message = ring_label(Where{feature.polygon_where[p].polygon}) +
-                  ": outer ring: zero area (its positions lie on one line)";
-      }
-      if (issue.repaired) {
-        std::size_t& count = repeats[issue.kind];
-        if (count == 0) continue;  // reported with the first of its kind
-        if (count > 1) message += " (and " + std::to_string(count - 1) + " more like it)";
-        count = 0;
-      }
-      Where where = feature.polygon_where[p];
-      where.ring = issue.ring >= 0 ? static_cast<std::size_t>(issue.ring) : kNone;
-      where.position = issue.vertex >= 0 ? static_cast<std::size_t>(issue.vertex) : kNone;
-      feature_issue(feature, !issue.repaired, code, message, geometry_path(feature, where),
-                    local_note());
-    }
-    if (!repaired.ok) continue;
-    if (!kernel::is_simple_polygon(repaired.polygon)) {
-      reject_touching_rings(feature, p, repaired.polygon);
-      continue;
-    }
-    const kernel::Ring& written = polygon.outer;
-    const auto second = std::find_if(written.begin(), written.end(),
-                                     [&](kernel::Vec2 v) { return v != written[0]; });
-    footprint.first_edges.push_back({written[0], second == written.end() ? written[0] : *second});
-    footprint.outer_clockwise.push_back(kernel::signed_area(written) < 0);
-    footprint.polygons.push_back(std::move(repaired.polygon));
-  }
-}
-
-std::vector<std::string> Reader::local_note() const {
-  if (result_.origin.x == 0 && result_.origin.y == 0) return {};
-  return {"coordinates in this message are local: world = local + (" +
-          number_text(result_.origin.x) + ", " + number_text(result_.origin.y) + ")"};
-}
-
-// kernel::repair() accepts rings that touch at one point (valid in OGC simple features), but walls
-// and roofs cannot be built on them (kernel::is_simple_polygon): rejected here, so that `check`
-// and every builder agree, with where they touch.
-void Reader::reject_touching_rings(FeatureState& feature, std::size_t p,
-                                   const kernel::Polygon& repaired) {
-  const Where polygon_where = feature.polygon_where[p];
-  std::string message = ring_label(Where{polygon_where.polygon}) + ": ";
-  Where where = polygon_where;
-  if (const std::optional<Touch> touch = find_touch(repaired)) {
-    const auto name = [](std::size_t ring) {
-      return ring == 0 ? std::string("the outer ring") : "hole " + std::to_string(ring);
-    };
-    message += touch->ring_a == touch->ring_b
-                   ? name(touch->ring_a) + " touches itself"
-                   : name(touch->ring_b) + " touches " + name(touch->ring_a);
-    message += " at (" + number_text(touch->point.x) + ", " + number_text(touch->point.y) + ")";
-    // The file position nearest the touching point, on the touching ring where there is a tie
-    // (repair may have dropped or reordered positions).
-    const kernel::Polygon& written = feature.polygons[p];
-    double best = std::numeric_limits<double>::infinity();
-    std::vector<std::size_t> order{touch->ring_b};
-    for (std::size_t r = 0; r <= written.holes.size(); ++r) order.push_back(r);
-    for (const std::size_t r : order) {
-      if (r > written.holes.size()) continue;
-      const kernel::Ring& ring = r == 0 ? written.outer : written.holes[r - 1];
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        const kernel::Vec2 d = ring[i] - touch->point;
-        if (kernel::dot(d, d) < best) {
-          best = kernel::dot(d, d);
-          where.ring = r;
-          where.position = i;
-        }
-      }
-    }
-  } else {
-    message += "rings touch or fold back on themselves";
-  }
-  message += "; footprint rings must not meet (walls and roofs need a simple outline)";
-  feature_issue(feature, true, "GEO027", message, geometry_path(feature, where), local_note());
-}
-
-// Stage 7: ids. File order decides: the first feature keeps an id, later ones are renamed.
-void Reader::assign_ids() {
-  std::set<std::string, std::less<>> used;
-  for (const FeatureState& feature : features_) {
-    if (!feature.id.empty()) used.insert(feature.id);
-  }
-  std::set<std::string, std::less<>> taken;
-  std::map<std::string, std::size_t, std::less<>> first_user;
-  for (Footprint& footprint : result_.footprints) {
-    FeatureState& feature = features_[footprint.feature_index];
-    std::string id = feature.id.empty() ? "feature-" + std::to_string(feature.index) : feature.id;
-    if (taken.count(id) != 0) {
-      std::string renamed;
-      for (std::size_t n = 2;
-           renamed.empty() || taken.count(renamed) != 0 || used.count(renamed) != 0; ++n) {
-        renamed = id + "-" + std::to_string(n);
-      }
-      feature_issue(feature, false, "GEO019",
-                    "id " + quote_text(id) + " is already used by feature " +
-                        std::to_string(first_user[id]) + "; renamed to " + quote_text(renamed),
-                    feature.id_path);
-      id = renamed;
-    }
-    first_user.emplace(id, feature.index);
-    taken.insert(id);
-    footprint.id = std::move(id);
-  }
-}
-
 base::Result<FootprintSet> Reader::run() {
   std::optional<json> doc;
   if (prescan()) doc = parse();
   if (doc) read_top_level(*doc);
-  if (errors_ == 0) resolve_crs();
-  if (errors_ == 0) {
-    choose_origin();
-    for (FeatureState& feature : features_) {
-      if (feature.failed || feature.polygons.empty() || stopped_) continue;
-      Footprint footprint;
-      footprint.feature_index = feature.index;
-      repair(feature, footprint);
-      if (feature.failed) continue;
-      footprint.properties = std::move(feature.properties);
-      result_.footprints.push_back(std::move(footprint));
-    }
-  }
-  if (errors_ == 0 && result_.footprints.empty()) {
-    report(base::Severity::kError, "GEO006", "no polygon features", kNone,
-           {std::to_string(features_.size()) + " feature" + (features_.size() == 1 ? "" : "s") +
-            " read; the warnings above say why each was skipped"});
-  }
-  if (errors_ == 0) assign_ids();
-  result_.skipped_invalid = static_cast<std::size_t>(std::count_if(
-      features_.begin(), features_.end(), [](const FeatureState& f) { return f.failed; }));
-  return finish();
-}
-
-// Diagnostics in file order (those without a position last), then the count of unlisted warnings.
-base::Result<FootprintSet> Reader::finish() {
-  std::stable_sort(pending_.begin(), pending_.end(),
-                   [](const Pending& a, const Pending& b) { return a.offset < b.offset; });
-  std::vector<Diagnostic> diagnostics;
-  diagnostics.reserve(pending_.size() + 1);
-  for (Pending& p : pending_) diagnostics.push_back(std::move(p.diagnostic));
-  if (suppressed_warnings_ > 0) {
-    diagnostics.push_back(
-        Diagnostic::warning("",
-                            std::to_string(suppressed_warnings_) +
-                                " more warnings not listed (GeoJsonOptions::max_warnings = " +
-                                std::to_string(options_.max_warnings) + ")",
-                            base::Span::whole(name_)));
-  }
-  if (errors_ > 0) return base::Result<FootprintSet>::failure(std::move(diagnostics));
-  return base::Result<FootprintSet>(std::move(result_), std::move(diagnostics));
+  finish_features(at(crs_offset_));
+  return result();
 }
 
 }  // namespace

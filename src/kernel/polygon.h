@@ -88,4 +88,25 @@ struct RepairResult {
 RepairResult repair(const Polygon& polygon, double tolerance = 1e-7);
 std::vector<PolygonIssue> validate(const Polygon& polygon, double tolerance = 1e-7);
 
+// Rings that pass twice through the same point (docs/kernel-polygons.md, "Touching rings"): each
+// is cut there into two loops, repeatedly. Outer loops winding like their ring become polygons of
+// their own (two buildings meeting at a corner); loops winding the other way, inside one of them,
+// become its holes (a courtyard pinched off at one point); holes split into holes. Anything else
+// (a loop crossing over at the point, nested loops of one winding, a hole pinching off an island)
+// is ambiguous and left as it was, for repair() to report. Exact coordinate equality; consecutive
+// repeats are ignored, as are cuts that would leave a loop of fewer than 3 vertices or no area (a
+// spike: repair() removes those).
+struct TouchSplit {
+  std::vector<Polygon> polygons;  // the input unchanged when `points` is empty
+  std::vector<Vec2> points;       // where the cuts were made
+};
+TouchSplit split_touching_rings(const Polygon& polygon);
+
+// For a polygon repair() accepts whose rings still meet at single points (a hole touching the
+// outer ring or another hole): moves each hole vertex lying on another ring `distance` into its
+// hole along its corner's bisector, then each outer vertex lying on a hole `distance` outwards.
+// Expects normalized orientation (outer counter-clockwise, holes clockwise). Returns the
+// original positions of the moved vertices; the caller checks the result is simple.
+std::vector<Vec2> separate_touching_rings(Polygon& polygon, double distance);
+
 }  // namespace insula::kernel

@@ -604,3 +604,131 @@ std::vector<PolygonIssue> validate(const Polygon& polygon, double tolerance) {
 }
 
 }  // namespace insula::kernel
+
+namespace insula::kernel {
+namespace {
+
+Ring without_consecutive_repeats(const Ring& ring) {
+  Ring out;
+  for (const Vec2 v : ring) {
+    if (out.empty() || out.back() != v) out.push_back(v);
+  }
+  while (out.size() > 1 && out.front() == out.back()) out.pop_back();
+  return out;
+}
+
+// Cuts `ring` at a repeated point into loops, recursively; `points` collects the cut points.
+void cut_loops(const Ring& ring, std::vector<Ring>& loops, std::vector<Vec2>& points) {
+  const std::size_t n = ring.size();
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::tie(ring[a].x, ring[a].y, a) < std::tie(ring[b].x, ring[b].y, b);
+  });
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    const std::size_t i = order[k], j = order[k + 1];
+    if (ring[i] != ring[j]) continue;
+    Ring a(ring.begin() + long(i), ring.begin() + long(j));
+    Ring b(ring.begin() + long(j), ring.end());
+    b.insert(b.end(), ring.begin(), ring.begin() + long(i));
+    if (a.size() < 3 || b.size() < 3 || signed_area(a) == 0 || signed_area(b) == 0) continue;
+    points.push_back(ring[i]);
+    cut_loops(a, loops, points);
+    cut_loops(b, loops, points);
+    return;
+  }
+  loops.push_back(ring);
+}
+
+}  // namespace
+
+TouchSplit split_touching_rings(const Polygon& polygon) {
+  TouchSplit result;
+  result.polygons.push_back(polygon);
+  const Ring outer = without_consecutive_repeats(polygon.outer);
+  const double sign = signed_area(outer) < 0 ? -1 : 1;
+  std::vector<Ring> outer_loops;
+  std::vector<Vec2> points;
+  cut_loops(outer, outer_loops, points);
+  std::vector<Ring> pieces;
+  std::vector<Ring> holes;
+  for (Ring& loop : outer_loops) (signed_area(loop) * sign > 0 ? pieces : holes).push_back(loop);
+  for (const Ring& hole : polygon.holes) {
+    const Ring clean = without_consecutive_repeats(hole);
+    std::vector<Ring> loops;
+    const std::size_t before = points.size();
+    cut_loops(clean, loops, points);
+    if (points.size() == before) {
+      holes.push_back(hole);  // untouched: repair() judges it as written
+      continue;
+    }
+    const double hole_sign = signed_area(clean) < 0 ? -1 : 1;
+    for (Ring& loop : loops) {
+      if (signed_area(loop) * hole_sign < 0) return result;  // an island in a hole
+      holes.push_back(std::move(loop));
+    }
+  }
+  if (points.empty()) return result;
+  // Same-winding loops nested in each other overlap: no single reading.
+  constexpr double kTol = 0;
+  for (std::size_t a = 0; a < pieces.size(); ++a) {
+    for (std::size_t b = 0; b < pieces.size(); ++b) {
+      if (a != b && ring_in_ring(pieces[a], pieces[b], kTol) == PointLocation::kInside) {
+        return result;
+      }
+    }
+  }
+  std::vector<Polygon> out(pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i) out[i].outer = pieces[i];
+  for (Ring& hole : holes) {
+    std::size_t home = pieces.size();
+    for (std::size_t i = 0; i < pieces.size() && home == pieces.size(); ++i) {
+      if (ring_in_ring(hole, pieces[i], kTol) == PointLocation::kInside) home = i;
+    }
+    if (home == pieces.size()) return result;  // a reversed loop outside: the ring crosses over
+    out[home].holes.push_back(std::move(hole));
+  }
+  result.polygons = std::move(out);
+  result.points = std::move(points);
+  return result;
+}
+
+std::vector<Vec2> separate_touching_rings(Polygon& polygon, double distance) {
+  std::vector<Vec2> moved;
+  const std::size_t rings = polygon.holes.size() + 1;
+  auto ring_at = [&](std::size_t r) -> Ring& {
+    return r == 0 ? polygon.outer : polygon.holes[r - 1];
+  };
+  auto on_other_ring = [&](std::size_t r, Vec2 p) {
+    for (std::size_t o = 0; o < rings; ++o) {
+      if (o == r) continue;
+      const Ring& other = ring_at(o);
+      for (std::size_t i = 0; i < other.size(); ++i) {
+        if (distance_to_segment(p, other[i], other[(i + 1) % other.size()]) == 0) return true;
+      }
+    }
+    return false;
+  };
+  // Holes first: a hole shrinking by `distance` changes the building least. Then outer vertices
+  // still on a hole (a reflex corner of the outline touching a hole's edge).
+  for (std::size_t pass = 0; pass < 2; ++pass) {
+    for (std::size_t r = pass == 0 ? 1 : 0; r < (pass == 0 ? rings : 1); ++r) {
+      Ring& ring = ring_at(r);
+      const std::size_t n = ring.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!on_other_ring(r, ring[i])) continue;
+        // The empty side is on the right of every edge (outer counter-clockwise, holes
+        // clockwise): move along the bisector of the two right-hand normals.
+        const Vec2 in = normalized(ring[i] - ring[(i + n - 1) % n]);
+        const Vec2 out = normalized(ring[(i + 1) % n] - ring[i]);
+        Vec2 direction = Vec2{in.y, -in.x} + Vec2{out.y, -out.x};
+        if (length(direction) < 1e-9) direction = Vec2{in.y, -in.x};
+        moved.push_back(ring[i]);
+        ring[i] += normalized(direction) * distance;
+      }
+    }
+  }
+  return moved;
+}
+
+}  // namespace insula::kernel

@@ -102,31 +102,44 @@ expect_exit 0 "overwrite" "$insula" mass "$example" -o "$tmp/keep.obj" --quiet
 grep -q "^o " "$tmp/keep.obj" || fail "a successful run replaces the file"
 ls "$tmp" | grep -q insula-backup && fail "backup files left behind"
 
-# An invalid footprint (a hole touching the outer ring at a vertex: a valid OGC polygon no roof
-# can be built on) is an error naming the feature, where and why, and suggesting --keep-going;
-# `check` says the same. --keep-going leaves it out with one positioned warning, counted.
+# An invalid footprint (a sliver: 10 m x 0.2 m) is an error naming the feature, where and why, and
+# suggesting --keep-going; `check` says the same. --keep-going leaves it out with one positioned
+# warning, counted.
 printf '%s' '{"type":"FeatureCollection","features":[
   {"type":"Feature","id":"ok","properties":{"height":8},"geometry":{"type":"Polygon","coordinates":[[[30,0],[40,0],[40,10],[30,10],[30,0]]]}},
-  {"type":"Feature","id":"pinched","properties":{"height":8},"geometry":{"type":"Polygon","coordinates":[[[0,0],[20,0],[20,20],[0,20],[0,0]],[[0,0],[5,5],[5,10],[2,8],[0,0]]]}}]}'   >"$tmp/pinched.geojson"
-pinched_error='pinched.geojson:3:143: error[GEO027]: feature 1 (id "pinched"): polygon: hole 1 touches the outer ring at (0, 0); footprint rings must not meet (walls and roofs need a simple outline)'
-expect_exit 1 "invalid footprint" "$insula" mass "$tmp/pinched.geojson" -o "$tmp/p.obj"
-grep -qF "$pinched_error" "$tmp/err.txt" || { fail "invalid footprint: message"; cat "$tmp/err.txt"; }
+  {"type":"Feature","id":"thin","properties":{"height":8},"geometry":{"type":"Polygon","coordinates":[[[0,0],[10,0],[10,0.2],[0,0.2],[0,0]]]}}]}' >"$tmp/thin.geojson"
+thin_error='thin.geojson:3:103: error[GEO028]: feature 1 (id "thin"): polygon: a sliver (area 2 m2, width about 0.196 m = 2 * area / perimeter; footprints need at least 1 m2 and 0.5 m)'
+expect_exit 1 "invalid footprint" "$insula" mass "$tmp/thin.geojson" -o "$tmp/p.obj"
+grep -qF "$thin_error" "$tmp/err.txt" || { fail "invalid footprint: message"; cat "$tmp/err.txt"; }
 grep -qF "note: --keep-going skips invalid features, each with a warning" "$tmp/err.txt" ||
   { fail "invalid footprint: --keep-going suggested"; cat "$tmp/err.txt"; }
 [ -e "$tmp/p.obj" ] && fail "invalid footprint: nothing written"
-expect_exit 1 "check agrees with mass" "$insula" check "$tmp/pinched.geojson"
-grep -qF "$pinched_error" "$tmp/err.txt" || { fail "check: message"; cat "$tmp/err.txt"; }
-expect_exit 0 "--keep-going" "$insula" mass "$tmp/pinched.geojson" -o "$tmp/p.obj" --keep-going --report "$tmp/p.json"
-[ "$(grep -c 'warning\[GEO027\]' "$tmp/err.txt")" = 1 ] || { fail "--keep-going: one warning"; cat "$tmp/err.txt"; }
-grep -qF "pinched.geojson:3:143: warning[GEO027]: feature 1 (id \"pinched\")" "$tmp/err.txt" ||
+expect_exit 1 "check agrees with mass" "$insula" check "$tmp/thin.geojson"
+grep -qF "$thin_error" "$tmp/err.txt" || { fail "check: message"; cat "$tmp/err.txt"; }
+expect_exit 0 "--keep-going" "$insula" mass "$tmp/thin.geojson" -o "$tmp/p.obj" --keep-going --report "$tmp/p.json"
+[ "$(grep -c 'warning\[GEO028\]' "$tmp/err.txt")" = 1 ] || { fail "--keep-going: one warning"; cat "$tmp/err.txt"; }
+grep -qF "${thin_error/error/warning}" "$tmp/err.txt" ||
   { fail "--keep-going: positioned warning"; cat "$tmp/err.txt"; }
 node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
          if (r.buildings !== 1 || r.invalid !== 1 || r.failed !== 0 || r.watertight !== 1) {
            console.log(JSON.stringify(r)); process.exit(1); }' "$tmp/p.json" ||
   fail "--keep-going report"
-expect_exit 0 "check --keep-going" "$insula" check "$tmp/pinched.geojson" --keep-going
-grep -qx "$tmp/pinched.geojson: ok: 1 footprints, 1 invalid skipped" "$tmp/out.txt" ||
+expect_exit 0 "check --keep-going" "$insula" check "$tmp/thin.geojson" --keep-going
+grep -qx "$tmp/thin.geojson: ok: 1 footprints, 1 invalid skipped" "$tmp/out.txt" ||
   { fail "check --keep-going summary"; cat "$tmp/out.txt"; }
+# A hole touching the outer ring at a vertex (issue 19: it used to stop the file) is repaired
+# with one warning, and every roof closes over it.
+printf '%s' '{"type":"FeatureCollection","features":[
+  {"type":"Feature","id":"ok","properties":{"height":8},"geometry":{"type":"Polygon","coordinates":[[[30,0],[40,0],[40,10],[30,10],[30,0]]]}},
+  {"type":"Feature","id":"pinched","properties":{"height":8},"geometry":{"type":"Polygon","coordinates":[[[0,0],[20,0],[20,20],[0,20],[0,0]],[[0,0],[5,5],[5,10],[2,8],[0,0]]]}}]}' >"$tmp/pinched.geojson"
+for roof in flat hip gable mansard; do
+  expect_exit 0 "pinched, $roof" "$insula" mass "$tmp/pinched.geojson" -o "$tmp/p.obj" --roof $roof --report "$tmp/p.json"
+  grep -qF 'pinched.geojson:3:143: warning[GEO027]: feature 1 (id "pinched"): polygon: rings touch at (0, 0); separated them by moving the touching vertex 0.01 m' "$tmp/err.txt" ||
+    { fail "pinched: repair warning"; cat "$tmp/err.txt"; }
+  node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+           if (r.buildings !== 2 || r.watertight !== 2) { console.log(JSON.stringify(r)); process.exit(1); }' \
+    "$tmp/p.json" || fail "pinched, $roof: 2 watertight buildings"
+done
 # A bow-tie among good footprints in UTM: skipped, not fatal.
 expect_exit 0 "bow-tie with --keep-going" "$insula" mass "$root/tests/data/bad/utm_bowtie.geojson" \
   -o "$tmp/bt.obj" --keep-going --report "$tmp/bt.json"
@@ -186,8 +199,19 @@ node -e '
     if (!(Math.abs(a[id].ground - b[id].ground) <= 0.005 * b[id].ground && b[id].ground > 1 &&
           Math.abs(a[id].top - b[id].top) <= 0.01)) { console.log(id, a[id], b[id]); process.exit(1); }
   }' "$tmp/ll.city.json" "$tmp/utm.city.json" || fail "lon/lat block: buildings differ from the UTM run"
-expect_exit 2 "--crs must be projected" "$insula" mass "$geo/block_lonlat.geojson" -o "$tmp/x.obj" --crs EPSG:4326
-grep -q "is geographic (degrees); name a projected CRS in meters" "$tmp/err.txt" || { fail "--crs EPSG:4326 message"; cat "$tmp/err.txt"; }
+expect_exit 2 "--out-crs must be projected" "$insula" mass "$geo/block_lonlat.geojson" -o "$tmp/x.obj" --out-crs EPSG:4326
+grep -q "is geographic (degrees); name a projected CRS in meters" "$tmp/err.txt" || { fail "--out-crs EPSG:4326 message"; cat "$tmp/err.txt"; }
+expect_exit 2 "--out-crs must be in ground meters" "$insula" mass "$geo/block_lonlat.geojson" -o "$tmp/x.obj" --out-crs EPSG:3857
+grep -q "is a Mercator projection" "$tmp/err.txt" || { fail "--out-crs EPSG:3857 message"; cat "$tmp/err.txt"; }
+expect_exit 2 "--crs must be known" "$insula" mass "$geo/block_lonlat.geojson" -o "$tmp/x.obj" --crs EPSG:999999
+# Web Mercator is reprojected to UTM (areas: geojson_reader_test.cc), and the CityJSON says so.
+expect_exit 0 "Web Mercator block" "$insula" mass "$geo/block_3857.geojson" -o "$tmp/wm.city.json" --quiet
+node -e '
+  const c = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  if (c.metadata.referenceSystem !== "https://www.opengis.net/def/crs/EPSG/0/32633") {
+    console.log(c.metadata.referenceSystem); process.exit(1);
+  }' \
+  "$tmp/wm.city.json" || fail "Web Mercator block: not built in UTM 33N"
 printf '%s' '{"type":"Polygon","coordinates":[[[500000,5400000],[500020,5400000],[500020,5400015],[500000,5400015],[500000,5400000]]]}' >"$tmp/nocrs.geojson"
 expect_exit 0 "--crs states the CRS of meters" "$insula" mass "$tmp/nocrs.geojson" -o "$tmp/c.city.json" --crs EPSG:25832 --quiet
 node -e 'const c = JSON.parse(require("fs").readFileSync(process.argv[1]));

@@ -2,12 +2,15 @@
 // policy, and the bad-input catalog in tests/data/bad (one file per case, exact first line).
 #include "io/geojson_reader.h"
 
+#include "kernel/skeleton.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -289,8 +292,8 @@ std::string crs_of(const std::string& crs_member, std::vector<std::string>* warn
 
 TEST(GeoJsonReader, CrsNamesAreReducedToEpsgCodes) {
   EXPECT_EQ(crs_of(R"({"type": "name", "properties": {"name": "EPSG:25833"}})"), "EPSG:25833");
-  EXPECT_EQ(crs_of(R"({"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG:6.6:3857"}})"),
-            "EPSG:3857");
+  EXPECT_EQ(crs_of(R"({"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG:6.6:32631"}})"),
+            "EPSG:32631");
   EXPECT_EQ(crs_of(R"({"type": "name", "properties": {"name": )"
                    R"("http://www.opengis.net/def/crs/EPSG/0/2056"}})"),
             "EPSG:2056");
@@ -370,16 +373,12 @@ TEST(GeoJsonReader, CrsOptionStatesTheCrsOfMetersAndReprojectsNamedCrs) {
   EXPECT_EQ(moved.crs, "EPSG:25833");
   EXPECT_EQ(moved.source_crs, "EPSG:25832");
   EXPECT_GT(std::abs(moved.first.x - 700000), 1000);
-  // A CRS footprints cannot be built in.
+  // --crs EPSG:4326 states that the file's numbers are degrees: these are not.
   options.crs = "EPSG:4326";
   EXPECT_EQ(outcome(read(meters, options)).crs,
-            "failed: test.geojson: error[GEO007]: GeoJsonOptions::crs: EPSG:4326 (WGS 84) is "
-            "geographic (degrees); name a projected CRS in meters");
-  // A projected CRS in feet cannot be built in without reprojecting.
-  EXPECT_EQ(crs_of_failure(R"({"type": "name", "properties": {"name": "EPSG:2263"}})"),
-            "test.geojson:1:38: error[GEO007]: crs EPSG:2263 (NAD83 / New York Long Island "
-            "(ftUS)) measures in US survey foot; footprints are built in meters: name a projected "
-            "CRS in meters to reproject to (--crs EPSG:N)");
+            "failed: test.geojson:1:38: error[GEO008]: feature 0: polygon ring 0 position 0 "
+            "(500010.25, 5400020.5) is not a longitude/latitude, but crs EPSG:4326 is geographic "
+            "(degrees)");
   // OGC CRS84 named in the file, with coordinates that are not degrees.
   EXPECT_EQ(crs_of_failure(R"({"type": "name", "properties": {"name": )"
                            R"("urn:ogc:def:crs:OGC:1.3:CRS84"}})"),
@@ -425,6 +424,76 @@ TEST(GeoJsonReader, LonLatBlockGivesTheSameBuildingsAsItsUtmVersion) {
 
 // ---- Policies ----------------------------------------------------------------------------------
 
+TEST(GeoJsonReader, WebMercatorGivesTheSameBuildingsAsLonLat) {
+  // Issue 19 item 3: Web Mercator meters are not ground meters (x 1.64 at 52.5 degrees): the
+  // block in EPSG:3857 (make_block_utm.sh) is reprojected to UTM like its lon/lat original.
+  const std::filesystem::path folder = std::filesystem::path(INSULA_TEST_DATA) / "geo";
+  const auto lonlat = read_geojson(read_text(folder / "block_lonlat.geojson"), "block_lonlat");
+  const std::string mercator_text = read_text(folder / "block_3857.geojson");
+  const auto mercator = read_geojson(mercator_text, "block_3857");
+  ASSERT_TRUE(lonlat.ok());
+  ASSERT_TRUE(mercator.ok()) << headlines(mercator.diagnostics()).front();
+  EXPECT_EQ(mercator->crs, "EPSG:32633");
+  EXPECT_EQ(mercator->source_crs, "EPSG:3857");
+  // The same file without its "crs" member, stated with --crs; and an unofficial alias.
+  std::string bare = mercator_text;
+  const std::size_t crs_at = bare.find("\"crs\"");
+  bare.erase(crs_at, bare.find("\"generator\"") - crs_at);
+  GeoJsonOptions stated;
+  stated.crs = "EPSG:900913";
+  const auto bare_read = read_geojson(bare, "bare", stated);
+  ASSERT_TRUE(bare_read.ok()) << headlines(bare_read.diagnostics()).front();
+  EXPECT_EQ(bare_read->crs, "EPSG:32633");
+  EXPECT_EQ(bare_read->source_crs, "EPSG:3857");
+  for (const auto* other : {&mercator.value(), &bare_read.value()}) {
+    ASSERT_EQ(other->footprints.size(), lonlat->footprints.size());
+    for (std::size_t i = 0; i < other->footprints.size(); ++i) {
+      const Footprint& a = lonlat->footprints[i];
+      const Footprint& b = other->footprints[i];
+      EXPECT_EQ(a.id, b.id);
+      double area_a = 0, area_b = 0;
+      for (const kernel::Polygon& p : a.polygons) area_a += kernel::area(p);
+      for (const kernel::Polygon& p : b.polygons) area_b += kernel::area(p);
+      EXPECT_NEAR(area_b / area_a, 1.0, 0.005) << a.id;
+    }
+  }
+  // A --crs that cannot be built in says nothing about a file that names its CRS: ignored, said.
+  GeoJsonOptions ignored;
+  ignored.crs = "EPSG:4326";
+  const auto named = read_geojson(mercator_text, "block_3857", ignored);
+  ASSERT_TRUE(named.ok());
+  EXPECT_EQ(named->source_crs, "EPSG:3857");
+  EXPECT_EQ(headlines(named.diagnostics()),
+            std::vector<std::string>{"block_3857:3:9: warning[GEO007]: GeoJsonOptions::crs "
+                                     "EPSG:4326 ignored: the input names its CRS (EPSG:3857)"});
+  // --out-crs builds in another CRS in ground meters; Web Mercator is refused as one.
+  GeoJsonOptions out;
+  out.out_crs = "EPSG:25833";
+  const auto etrs = read_geojson(mercator_text, "block_3857", out);
+  ASSERT_TRUE(etrs.ok());
+  EXPECT_EQ(etrs->crs, "EPSG:25833");
+  out.out_crs = "EPSG:3857";
+  const auto refused = read_geojson(mercator_text, "block_3857", out);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(headlines(refused.diagnostics()).front(),
+            "block_3857: error[GEO007]: GeoJsonOptions::out_crs: EPSG:3857 (WGS 84 / "
+            "Pseudo-Mercator) is a Mercator projection, whose meters grow with latitude (1 / "
+            "cos(latitude)); name a projected CRS in ground meters");
+}
+
+TEST(GeoJsonReader, ProjectedFeetAreReprojectedToUtm) {
+  // NAD83 / New York Long Island in US survey feet: a 100 ft square near Manhattan.
+  const std::string feet =
+      collection({feature("", "{}", polygon(square(988000, 200000, 100, 100)))},
+                 R"("crs": {"type": "name", "properties": {"name": "EPSG:2263"}}, )");
+  const auto result = read(feet);
+  ASSERT_TRUE(result.ok()) << headlines(result.diagnostics()).front();
+  EXPECT_EQ(result->crs, "EPSG:32618");
+  EXPECT_EQ(result->source_crs, "EPSG:2263");
+  constexpr double kFoot = 1200.0 / 3937.0;
+  EXPECT_NEAR(kernel::area(result->footprints[0].polygons[0]), 100 * 100 * kFoot * kFoot, 2.0);
+}
+
 TEST(GeoJsonReader, FootprintsKeepTheFirstEdgeAndOrientationAsWritten) {
   // Clockwise outer ring starting at (10, 0): normalization reverses it, the file's order stays.
   const auto result = read(collection({
@@ -445,10 +514,11 @@ TEST(GeoJsonReader, FootprintsKeepTheFirstEdgeAndOrientationAsWritten) {
   EXPECT_EQ(ccw.outer_clockwise, std::vector<bool>{false});
 }
 
-TEST(GeoJsonReader, TouchingRingsAreRejectedWithWhereAndWhy) {
-  // A hole touching the outer ring at a vertex, and two holes touching at one point: valid OGC
-  // polygons (kernel::repair accepts one touching point per pair of rings) that walls and roofs
-  // cannot be built on. A ring touching itself is already an error of kernel::repair (GEO022).
+TEST(GeoJsonReader, TouchingRingsAreRepairedCountedAndWarnedOncePerKind) {
+  // Issue 19 item 5: rings meeting at one point are unambiguous and repaired. A hole touching the
+  // outer ring and two holes touching: the touching hole vertex moves 1 cm into its hole. A ring
+  // through one point twice: cut there, into two polygons (a figure eight) or a polygon and a
+  // hole (a courtyard pinched off at (10, 0)), which then touches and is separated the same way.
   const std::string text = collection({
       feature(R"("id": "ok", )", "{}", polygon(square(30, 0, 10, 10))),
       feature(R"("id": "pinched", )", "{}",
@@ -456,17 +526,63 @@ TEST(GeoJsonReader, TouchingRingsAreRejectedWithWhereAndWhy) {
       feature(
           R"("id": "holes", )", "{}",
           polygon(square(50, 0, 20, 10) + ", " + square(52, 2, 4, 4) + ", " + square(56, 6, 4, 2))),
+      feature(R"("id": "eight", )", "{}",
+              polygon("[[100, 0], [110, 0], [110, 10], [120, 10], [120, 20], [110, 20], "
+                      "[110, 10], [100, 10], [100, 0]]")),
+      feature(R"("id": "loop", )", "{}",
+              polygon("[[200, 0], [210, 0], [208, 5], [212, 5], [210, 0], [220, 0], [220, 20], "
+                      "[200, 20], [200, 0]]")),
+      feature(R"("id": "triangle", )", "{}", polygon("[[300, 0], [310, 0], [300, 10], [300, 0]]")),
   });
-  const auto failed = read(text);
-  ASSERT_FALSE(failed.ok());
-  EXPECT_EQ(headlines(failed.diagnostics()),
+  const auto result = read(text);
+  ASSERT_TRUE(result.ok()) << headlines(result.diagnostics()).front();
+  std::map<std::string, const Footprint*> ids;
+  for (const Footprint& f : result->footprints) ids[f.id] = &f;
+  ASSERT_EQ(ids.size(), 6u);
+  const double hole = 22.5;  // the pinched hole's shoelace area
+  ASSERT_EQ(ids["pinched"]->polygons.size(), 1u);
+  ASSERT_EQ(ids["pinched"]->polygons[0].holes.size(), 1u);
+  EXPECT_NEAR(kernel::area(ids["pinched"]->polygons[0]), 400 - hole, 0.1);
+  EXPECT_TRUE(kernel::is_simple_polygon(ids["pinched"]->polygons[0]));
+  EXPECT_NEAR(kernel::area(ids["holes"]->polygons[0]), 200 - 16 - 8, 0.1);
+  EXPECT_TRUE(kernel::is_simple_polygon(ids["holes"]->polygons[0]));
+  ASSERT_EQ(ids["eight"]->polygons.size(), 2u);
+  EXPECT_EQ(kernel::area(ids["eight"]->polygons[0]) + kernel::area(ids["eight"]->polygons[1]),
+            200.0);
+  ASSERT_EQ(ids["loop"]->polygons.size(), 1u);
+  ASSERT_EQ(ids["loop"]->polygons[0].holes.size(), 1u);
+  EXPECT_NEAR(kernel::area(ids["loop"]->polygons[0]), 400 - 10, 0.1);
+  EXPECT_TRUE(kernel::is_simple_polygon(ids["loop"]->polygons[0]));
+  EXPECT_EQ(kernel::area(ids["triangle"]->polygons[0]), 50.0);
+  EXPECT_EQ(result->repairs, (std::map<std::string, std::size_t>{{"collinear_vertex", 1},
+                                                                 {"separated_touching_rings", 3},
+                                                                 {"split_touching_ring", 2}}));
+  // One warning per kind, however many repairs.
+  EXPECT_EQ(headlines(result.diagnostics()),
             (std::vector<std::string>{
-                "test.geojson:3:151: error[GEO027]: feature 1 (id \"pinched\"): polygon: hole 1 "
-                "touches the outer ring at (0, 0); footprint rings must not meet (walls and roofs "
-                "need a simple outline)",
-                "test.geojson:4:199: error[GEO027]: feature 2 (id \"holes\"): polygon: hole 2 "
-                "touches hole 1 at (56, 6); footprint rings must not meet (walls and roofs need a "
-                "simple outline)"}));
+                "test.geojson:3:151: warning[GEO027]: feature 1 (id \"pinched\"): polygon: rings "
+                "touch at (0, 0); separated them by moving the touching vertex 0.01 m",
+                "test.geojson:5:123: warning[GEO027]: feature 3 (id \"eight\"): polygon: a ring "
+                "passes twice through (110, 10); split there into 2 polygons",
+                "test.geojson:6:102: warning[GEO026]: feature 4 (id \"loop\"): polygon: outer "
+                "ring: vertex 0 lies on the line through its neighbours (removed)"}));
+}
+
+TEST(GeoJsonReader, CrossingsSliversAndUnsplittableTouchesAreSkippedWithTheirReason) {
+  const std::string text = collection({
+      feature(R"("id": "ok", )", "{}", polygon(square(30, 0, 10, 10))),
+      // Edges crossing: a bow-tie.
+      feature(R"("id": "bowtie", )", "{}", polygon("[[0, 0], [10, 10], [10, 0], [0, 10], [0, 0]]")),
+      // Two passes through (10, 10) that cross there: no single reading.
+      feature(R"("id": "crossing", )", "{}",
+              polygon("[[0, 0], [10, 10], [20, 20], [20, 0], [10, 10], [0, 20], [0, 0]]")),
+      // 10 m x 0.2 m: width 2 * area / perimeter = 0.196 m.
+      feature(R"("id": "thin", )", "{}", polygon(square(60, 0, 10, 0.2))),
+      // 0.04 m2.
+      feature(R"("id": "tiny", )", "{}", polygon(square(80, 0, 0.2, 0.2))),
+  });
+  const auto strict = read(text);
+  EXPECT_FALSE(strict.ok());
   GeoJsonOptions options;
   options.skip_invalid = true;
   options.skip_invalid_flag = "--keep-going";
@@ -474,11 +590,43 @@ TEST(GeoJsonReader, TouchingRingsAreRejectedWithWhereAndWhy) {
   ASSERT_TRUE(skipped.ok());
   ASSERT_EQ(skipped->footprints.size(), 1u);
   EXPECT_EQ(skipped->footprints[0].id, "ok");
-  EXPECT_EQ(skipped->skipped_invalid, 2u);
-  ASSERT_EQ(skipped.diagnostics().size(), 2u);
-  EXPECT_EQ(skipped.diagnostics()[0].severity, Severity::kWarning);
-  EXPECT_EQ(skipped.diagnostics()[0].notes,
-            std::vector<std::string>{"feature skipped (--keep-going)"});
+  EXPECT_EQ(skipped->skipped_invalid, 4u);
+  EXPECT_EQ(skipped->skipped_by_code,
+            (std::map<std::string, std::size_t>{{"GEO022", 2}, {"GEO028", 2}}));
+  const std::vector<std::string> lines = headlines(skipped.diagnostics());
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0],
+            "test.geojson:3:104: warning[GEO022]: feature 1 (id \"bowtie\"): polygon: outer ring: "
+            "edges 0-1 and 2-3 cross at (5, 5)");
+  EXPECT_EQ(lines[1].substr(0, lines[1].find("polygon:")),
+            "test.geojson:4:106: warning[GEO022]: feature 2 (id \"crossing\"): ");
+  EXPECT_EQ(lines[2],
+            "test.geojson:5:101: warning[GEO028]: feature 3 (id \"thin\"): polygon: a sliver "
+            "(area 2 m2, width about 0.196 m = 2 * area / perimeter; footprints need at least 1 "
+            "m2 and 0.5 m)");
+  EXPECT_EQ(lines[3].substr(0, lines[3].find(" (area")),
+            "test.geojson:6:101: warning[GEO028]: feature 4 (id \"tiny\"): polygon: a sliver");
+  for (const base::Diagnostic& d : skipped.diagnostics()) {
+    EXPECT_EQ(d.notes.back(), "feature skipped (--keep-going)");
+  }
+}
+
+TEST(GeoJsonReader, ALongRingIsRead) {
+  // 1,232 vertices on a circle of radius 20 m.
+  std::ostringstream ring;
+  ring.precision(17);
+  constexpr int kN = 1232;
+  ring << "[";
+  for (int i = 0; i <= kN; ++i) {
+    const double a = 2 * M_PI * (i % kN) / kN;
+    ring << (i ? ", [" : "[") << 20 * std::cos(a) << ", " << 20 * std::sin(a) << "]";
+  }
+  ring << "]";
+  const auto result = read(polygon(ring.str()));
+  ASSERT_TRUE(result.ok()) << headlines(result.diagnostics()).front();
+  ASSERT_EQ(result->footprints.size(), 1u);
+  EXPECT_EQ(result->footprints[0].polygons[0].outer.size(), std::size_t{kN});
+  EXPECT_NEAR(kernel::area(result->footprints[0].polygons[0]), M_PI * 400, 0.1);
 }
 
 TEST(GeoJsonReader, WithoutSkippingTheFirstFeatureErrorSuggestsTheFlag) {
@@ -617,10 +765,9 @@ const CatalogCase kCatalog[] = {
     {"hole_crosses_shell.geojson", false,
      "hole_crosses_shell.geojson:40:13: error[GEO023]: feature 0 (id \"hx\"): polygon: hole 1 "
      "crosses outer ring: edge 1-0 of hole 1 and edge 1-2 of outer ring cross at (10, 2)"},
-    {"hole_touches_shell.geojson", false,
-     "hole_touches_shell.geojson:36:13: error[GEO027]: feature 0 (id \"pinched\"): polygon: hole 1 "
-     "touches the outer ring at (0, 0); footprint rings must not meet (walls and roofs need a "
-     "simple outline)"},
+    {"hole_touches_shell.geojson", true,
+     "hole_touches_shell.geojson:36:13: warning[GEO027]: feature 0 (id \"pinched\"): polygon: "
+     "rings touch at (0, 0); separated them by moving the touching vertex 0.01 m"},
     {"hole_outside.geojson", false,
      "hole_outside.geojson:35:11: error[GEO024]: feature 0 (id \"h\"): polygon: hole 1 lies "
      "outside the outer ring"},

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/cli/exit_codes.h"
+#include "apps/cli/footprint_input.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
@@ -316,16 +317,9 @@ void add_seconds(nlohmann::json& report, const Built& built) {
 // polygon as outline. Buildings are named after the features.
 int build_lots(const BuildOptions& options, const Parsed& input, const Stopwatch& total,
                const lang::bldg::Restrictions& rules, nlohmann::json& report) {
-  const auto text = read_input_file(options.lot);
-  if (!text) {
-    print_error(options.lot + ": " + read_failure(options.lot));
-    return kExitInput;
-  }
-  const base::Source lot_source(options.lot, *text);
-  base::Result<io::FootprintSet> lots =
-      io::read_geojson(*text, options.lot, geojson_options(options.crs, options.keep_going));
-  print_diagnostics(lots.diagnostics(), lot_source, options.quiet);
-  if (!lots.ok()) return kExitInput;
+  std::optional<io::FootprintSet> lots =
+      read_footprints(options.lot, geojson_options(options.crs, options.keep_going), options.quiet);
+  if (!lots) return kExitInput;
   report["invalid_lots"] = lots->skipped_invalid;
   // Lots that cannot hold their grammar, left out under --keep-going, each with its reason.
   report["skipped_lots"] = nlohmann::json::array();

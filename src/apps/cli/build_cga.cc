@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "apps/cli/exit_codes.h"
+#include "apps/cli/footprint_input.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
@@ -49,16 +50,9 @@ struct Lots {
 std::optional<Lots> read_lots(const BuildOptions& options) {
   Lots out;
   if (options.lot.empty()) return out;
-  const std::optional<std::string> text = read_input_file(options.lot);
-  if (!text) {
-    std::fprintf(stderr, "%s: error: %s\n", options.lot.c_str(), read_failure(options.lot).c_str());
-    return std::nullopt;
-  }
-  const base::Source source(options.lot, *text);
-  base::Result<io::FootprintSet> set = io::read_geojson(
-      source.text(), options.lot, geojson_options(options.crs, options.keep_going));
-  print_diagnostics(set.diagnostics(), source, options.quiet);
-  if (!set.ok()) return std::nullopt;
+  std::optional<io::FootprintSet> set =
+      read_footprints(options.lot, geojson_options(options.crs, options.keep_going), options.quiet);
+  if (!set) return std::nullopt;
   out.origin = set->origin;
   out.crs = set->crs;
   out.source_crs = set->source_crs;

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/cli/crs_flags.h"
 #include "apps/cli/stopwatch.h"
 #include "io/output.h"
 #include "shape/scene.h"
@@ -35,7 +36,7 @@ struct BuildOptions {
   std::string rules;                // --rules FILE: restriction rules (.bldg)
   std::vector<std::string> assets;  // --assets DIR: asset folders a program may read (.lua)
   std::string report;               // --report R.json
-  std::string crs;                  // --crs EPSG:N: the CRS lots are built in (geojson_options.h)
+  CrsFlags crs;                     // --crs, --out-crs (geojson_options.h)
   bool keep_going = false;          // --keep-going: skip invalid lot features with a warning
   bool quiet = false;
   io::OutputOptions output;  // PNG view and SVG options

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "apps/cli/exit_codes.h"
+#include "apps/cli/footprint_input.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
@@ -13,6 +14,7 @@
 #include "apps/cli/warnings.h"
 #include "base/diagnostic.h"
 #include "io/geojson_reader.h"
+#include "io/osm_reader.h"
 
 namespace insula::cli {
 namespace {
@@ -22,13 +24,12 @@ bool has_suffix(const std::string& text, const std::string& suffix) {
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// A one-line summary of what was checked, or nullopt when the input has errors. Reads as `mass`
-// and `build --lot` do, so the three agree on every file.
-std::optional<std::string> check_geojson(const base::Source& source, const CheckOptions& options) {
-  base::Result<io::FootprintSet> set = io::read_geojson(
-      source.text(), source.name(), geojson_options(options.crs, options.keep_going));
-  print_diagnostics(set.diagnostics(), source, options.quiet);
-  if (!set.ok()) return std::nullopt;
+// A one-line summary of what was checked, or nullopt when the input has errors. Reads GeoJSON
+// and OpenStreetMap files as `mass` and `build --lot` do, so the three agree on every file.
+std::optional<std::string> check_footprints(const CheckOptions& options) {
+  const std::optional<io::FootprintSet> set = read_footprints(
+      options.input, geojson_options(options.crs, options.keep_going), options.quiet);
+  if (!set) return std::nullopt;
   std::string summary = std::to_string(set->footprints.size()) + " footprints";
   if (set->skipped_invalid > 0) {
     summary += ", " + std::to_string(set->skipped_invalid) + " invalid skipped";
@@ -45,7 +46,8 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
       app.add_subcommand("check", "parse and check an input without building anything");
   check
       ->add_option("INPUT", options.input,
-                   "a .geojson footprint file, a .cga or .bldg grammar, a .lua program, a .psm "
+                   "a .geojson, .osm or .osm.pbf footprint file, a .cga or .bldg grammar, a .lua "
+                   "program, a .psm "
                    "PLaSM program or a .graph.json procedural content graph")
       ->required();
   check->add_flag("-q,--quiet", options.quiet, "print errors only");
@@ -53,19 +55,21 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
                     "CGA: derive from this symbol instead of the first rule of the lowest "
                     "priority set (reachability is checked from it)");
   check->add_flag("--keep-going", options.keep_going,
-                  "GeoJSON: skip invalid features with a warning, as mass and build do");
+                  "footprints: skip invalid features with a warning, as mass and build do");
   add_crs_option(*check, options.crs);
 }
 
 int run_check(const CheckOptions& options) {
   using Checker = std::optional<std::string> (*)(const base::Source&, bool);
   Checker checker = nullptr;
-  bool cga = false;      // check_cga also takes --start
-  bool geojson = false;  // so does check_geojson --crs and --keep-going
-  if (has_suffix(options.input, ".graph.json")) {
+  bool cga = false;         // check_cga also takes --start
+  bool footprints = false;  // check_footprints takes --crs and --keep-going
+  if (io::is_osm_path(options.input)) {
+    footprints = true;
+  } else if (has_suffix(options.input, ".graph.json")) {
     checker = check_graph;
   } else if (has_suffix(options.input, ".geojson") || has_suffix(options.input, ".json")) {
-    geojson = true;
+    footprints = true;
   } else if (has_suffix(options.input, ".cga")) {
     cga = true;
   } else if (has_suffix(options.input, ".bldg")) {
@@ -77,16 +81,21 @@ int run_check(const CheckOptions& options) {
   } else {
     std::fprintf(
         stderr,
-        "insula: %s: unknown input type (use .geojson, .cga, .bldg, .lua, .psm or .graph.json)\n",
+        "insula: %s: unknown input type (use .geojson, .osm, .osm.pbf, .cga, .bldg, .lua, .psm "
+        "or .graph.json)\n",
         options.input.c_str());
     return kExitUsage;
   }
-  const std::optional<std::string> text = read_input_or_report(options.input);
-  if (!text) return kExitInput;
-  const base::Source source(options.input, *text);
-  const std::optional<std::string> summary = cga ? check_cga(source, options.quiet, options.start)
-                                             : geojson ? check_geojson(source, options)
-                                                       : checker(source, options.quiet);
+  std::optional<std::string> summary;
+  if (footprints) {
+    summary = check_footprints(options);
+  } else {
+    const std::optional<std::string> text = read_input_or_report(options.input);
+    if (!text) return kExitInput;
+    const base::Source source(options.input, *text);
+    summary =
+        cga ? check_cga(source, options.quiet, options.start) : checker(source, options.quiet);
+  }
   if (!summary) return kExitInput;
   if (!options.quiet) std::printf("%s: ok: %s\n", options.input.c_str(), summary->c_str());
   return kExitDone;

@@ -8,13 +8,15 @@ namespace CLI {
 class App;
 }
 
+#include "apps/cli/crs_flags.h"
+
 namespace insula::cli {
 
 struct CheckOptions {
   std::string input;
   bool quiet = false;
   std::string start;        // --start SYMBOL: the CGA start symbol (other front-ends ignore it)
-  std::string crs;          // --crs EPSG:N (GeoJSON)
+  CrsFlags crs;             // --crs, --out-crs (GeoJSON, OSM)
   bool keep_going = false;  // --keep-going: skip invalid features, as mass and build do (GeoJSON)
 };
 

@@ -1,33 +1,45 @@
-// The GeoJSON reading flags shared by `mass`, `build --lot` and `check`: --crs, and what
-// --keep-going means to the reader (docs/geojson.md, "Coordinates, units and CRS" and "Repair
-// policy").
+// The footprint reading flags shared by `mass`, `build --lot` and `check`: --crs, --out-crs, and
+// what --keep-going means to the readers (docs/geojson.md, "Coordinates, units and CRS" and
+// "Repair policy"; docs/osm.md).
 #pragma once
 
 #include <CLI/CLI.hpp>
 
 #include <string>
 
+#include "apps/cli/crs_flags.h"
 #include "io/crs.h"
 #include "io/geojson_reader.h"
 
 namespace insula::cli {
 
-inline void add_crs_option(CLI::App& command, std::string& crs) {
+inline void add_crs_option(CLI::App& command, CrsFlags& flags) {
   command
-      .add_option("--crs", crs,
-                  "CRS to build in, EPSG:N (projected, meters): lon/lat and other input is "
-                  "reprojected to it (default: lon/lat goes to its UTM zone); input in meters "
-                  "whose file names no CRS is taken to be in it")
+      .add_option("--crs", flags.crs,
+                  "CRS of input that names none, EPSG:N (lon/lat, Web Mercator and feet are "
+                  "reprojected to the local UTM zone); for lon/lat input or a file naming its "
+                  "CRS, a projected CRS in meters is the CRS to build in")
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            std::string error;
+            return io::describe_crs(text, error) ? std::string() : error;
+          },
+          "EPSG:N"));
+  command
+      .add_option("--out-crs", flags.out_crs,
+                  "CRS to build in and write, EPSG:N (projected, in ground meters; default: the "
+                  "input's when it is one, else the UTM zone of the data)")
       ->check(CLI::Validator([](const std::string& text) { return io::buildable_crs(text); },
                              "EPSG:N"));
 }
 
 // `keep_going`: invalid features are skipped with a warning; otherwise the first feature error
 // suggests --keep-going when the command has it (`has_keep_going`).
-inline io::GeoJsonOptions geojson_options(const std::string& crs, bool keep_going,
+inline io::GeoJsonOptions geojson_options(const CrsFlags& flags, bool keep_going,
                                           bool has_keep_going = true) {
   io::GeoJsonOptions options;
-  options.crs = crs;
+  options.crs = flags.crs;
+  options.out_crs = flags.out_crs;
   options.skip_invalid = keep_going;
   if (has_keep_going) options.skip_invalid_flag = "--keep-going";
   return options;

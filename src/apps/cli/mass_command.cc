@@ -12,6 +12,7 @@
 
 #include "apps/cli/build_command.h"
 #include "apps/cli/exit_codes.h"
+#include "apps/cli/footprint_input.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
@@ -225,13 +226,9 @@ int run_mass(const MassOptions& options) {
   report.threads = threads;
 
   Stopwatch read_clock;
-  const std::optional<std::string> text = read_input_or_report(options.input);
-  if (!text) return kExitInput;
-  const base::Source source(options.input, *text);
-  base::Result<io::FootprintSet> set = io::read_geojson(
-      source.text(), options.input, geojson_options(options.crs, options.keep_going));
-  print_diagnostics(set.diagnostics(), source, options.quiet);
-  if (!set.ok()) return kExitInput;
+  std::optional<io::FootprintSet> set = read_footprints(
+      options.input, geojson_options(options.crs, options.keep_going), options.quiet);
+  if (!set) return kExitInput;
   report.stage("read", read_clock.seconds());
   report.invalid = set->skipped_invalid;
   report.crs = set->crs;

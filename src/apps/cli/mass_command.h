@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/cli/crs_flags.h"
 #include "io/output.h"
 
 namespace CLI {
@@ -29,7 +30,7 @@ struct MassOptions {
   int threads = 0;
   bool quiet = false;
   bool keep_going = false;
-  std::string crs;           // --crs EPSG:N
+  CrsFlags crs;              // --crs, --out-crs
   io::OutputOptions output;  // PNG view and SVG options
   // Set when the flag was given on the command line; a given flag wins over feature properties.
   bool roof_given = false;

@@ -1,0 +1,36 @@
+#include "apps/cli/footprint_input.h"
+
+#include <algorithm>
+
+#include "apps/cli/front_ends.h"
+#include "apps/cli/input_file.h"
+#include "io/osm_reader.h"
+
+namespace insula::cli {
+
+std::optional<io::FootprintSet> read_footprints(const std::string& path,
+                                                const io::GeoJsonOptions& options, bool quiet) {
+  if (io::is_osm_path(path)) {
+    io::OsmOptions osm;
+    static_cast<io::FootprintOptions&>(osm) = options;
+    base::Result<io::FootprintSet> set = io::read_osm(path, osm);
+    // OSM messages name the element; only an XML syntax error has a line to quote, and only
+    // then is the text read.
+    const bool positioned = std::any_of(set.diagnostics().begin(), set.diagnostics().end(),
+                                        [](const base::Diagnostic& d) { return d.span.line > 0; });
+    const std::optional<std::string> text =
+        positioned ? read_input_file(path) : std::optional<std::string>();
+    print_diagnostics(set.diagnostics(), base::Source(path, text.value_or("")), quiet);
+    if (!set.ok()) return std::nullopt;
+    return std::move(set.value());
+  }
+  const std::optional<std::string> text = read_input_or_report(path);
+  if (!text) return std::nullopt;
+  const base::Source source(path, *text);
+  base::Result<io::FootprintSet> set = io::read_geojson(source.text(), path, options);
+  print_diagnostics(set.diagnostics(), source, quiet);
+  if (!set.ok()) return std::nullopt;
+  return std::move(set.value());
+}
+
+}  // namespace insula::cli

@@ -1,0 +1,18 @@
+// Footprints from a file, for every verb that takes them (`mass`, `build --lot`): OpenStreetMap
+// data (.osm, .osm.pbf, ...: io::is_osm_path) through io::read_osm, anything else as GeoJSON
+// through io::read_geojson, with the same options (docs/osm.md, docs/geojson.md).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "io/geojson_reader.h"
+
+namespace insula::cli {
+
+// Prints the reader's diagnostics (warnings unless `quiet`); nullopt when the file could not be
+// read or has errors (the caller exits with code 1).
+std::optional<io::FootprintSet> read_footprints(const std::string& path,
+                                                const io::GeoJsonOptions& options, bool quiet);
+
+}  // namespace insula::cli

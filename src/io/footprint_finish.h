@@ -1,0 +1,200 @@
+// The steps every footprint reader ends with, shared by GeoJSON (io/geojson_reader.h) and
+// OpenStreetMap (io/osm_reader.h) input: CRS choice and reprojection to ground meters, origin
+// shift, repair (kernel::repair, touching rings, slivers), ids, and the capped, skip-aware
+// diagnostics. A reader collects RawFootprints in world coordinates and calls finish_features();
+// docs/geojson.md ("Coordinates, units and CRS", "Repair policy") gives the rules.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/diagnostic.h"
+#include "kernel/polygon.h"
+#include "kernel/vec.h"
+#include "shape/value.h"
+
+namespace insula::io {
+
+struct Footprint {
+  // GeoJSON: the feature's "id" member, else properties.id, else properties.name, else
+  // "feature-<index>". OSM: "way/123" or "relation/456". Unique within a FootprintSet: a repeated
+  // id is renamed "<id>-2", "<id>-3"... with a warning.
+  std::string id;
+  // Local coordinates (world - origin) in meters, normalized (outer ring counter-clockwise, holes
+  // clockwise, no closing vertex) and repaired. One entry per polygon of a MultiPolygon (or of an
+  // OSM multipolygon, or per loop of a ring split where it touched itself), in input order.
+  std::vector<kernel::Polygon> polygons;
+  // What the input said before normalization, per polygon (same order and frame as `polygons`):
+  // the outer ring's first edge as written (its first position and the next distinct one), and
+  // whether that ring ran clockwise. Lets a front-end orient a lot by the file's first edge
+  // without reading the input again.
+  std::vector<std::array<kernel::Vec2, 2>> first_edges;
+  std::vector<bool> outer_clockwise;
+  // GeoJSON properties: numbers -> double, bool, string, null -> monostate; nested objects and
+  // arrays as compact JSON strings. OSM: every tag verbatim as a string, plus "osm_type" and
+  // "osm_id" (docs/osm.md).
+  shape::AttributeMap properties;
+  // 0-based position in the input (the FeatureCollection; for OSM, the order footprints were
+  // assembled in).
+  std::size_t feature_index = 0;
+};
+
+struct FootprintSet {
+  // world = local + origin. x and y are whole meters; z is always 0.
+  kernel::Vec3 origin;
+  // The CRS of the world coordinates ("EPSG:32633"): the input's CRS when it is in ground meters,
+  // the --out-crs asked for, or the UTM zone geographic and non-metric input was reprojected to;
+  // empty when nothing names one.
+  std::string crs;
+  // The CRS the input's coordinates were in when they were reprojected ("OGC:CRS84" for
+  // longitude/latitude); empty when nothing was reprojected.
+  std::string source_crs;
+  std::vector<Footprint> footprints;
+  // Features left out because they were invalid (FootprintOptions::skip_invalid).
+  std::size_t skipped_invalid = 0;
+  // The same, by the code of the error that skipped each ("GEO022": a self-crossing ring,
+  // "GEO028": a sliver, ...; docs/geojson.md lists them).
+  std::map<std::string, std::size_t> skipped_by_code;
+  // Repairs made, by kind: "duplicate_vertex", "collinear_vertex", "spike", "dropped_hole",
+  // "split_touching_ring", "separated_touching_rings" (docs/geojson.md, "Repair policy"). Each
+  // kind is warned about once per read; the counts are complete.
+  std::map<std::string, std::size_t> repairs;
+};
+
+// What every footprint reader accepts (GeoJsonOptions and OsmOptions extend it).
+struct FootprintOptions {
+  // When set, local = world - origin for this origin (z ignored): lets several files share one
+  // local frame. When unset, see shift_threshold.
+  std::optional<kernel::Vec2> origin;
+  // Data whose bounding box lies within +-shift_threshold meters of (0, 0) keeps origin (0, 0, 0);
+  // otherwise the origin is the bounding-box centre rounded down to whole meters.
+  double shift_threshold = 1e4;
+  // Tolerance in meters handed to kernel::repair() (duplicate / collinear vertices).
+  double repair_tolerance = 1e-7;
+  // Slivers: a polygon with less area (m2) or a smaller width estimate 2 * area / perimeter (m)
+  // is an error (GEO028). 0 turns the test off.
+  double min_area = 1.0;
+  double min_width = 0.5;
+  // How far a hole's vertex that touches another ring is moved into its hole (GEO027 repair).
+  double touch_separation = 0.01;
+  // false: any invalid feature makes the whole read fail (exit code 1 for the CLI).
+  // true: invalid features are dropped, each with one warning giving its first error.
+  bool skip_invalid = false;
+  // How a user asks for skip_invalid ("--keep-going"): named in the note of skipped features
+  // and, when skip_invalid is off, suggested under the first feature error.
+  std::string skip_invalid_flag;
+  // The input's CRS when it names none ("--crs"), or, for input that names its own CRS or is
+  // longitude/latitude, the CRS to build in when it is a projected CRS in ground meters (the
+  // older meaning, kept). docs/geojson.md gives the whole rule.
+  std::string crs;
+  // The CRS to build in ("--out-crs", "EPSG:N", projected, in ground meters).
+  std::string out_crs;
+  // Stop after this many errors; further warnings past max_warnings are counted, not listed.
+  std::size_t max_errors = 50;
+  std::size_t max_warnings = 100;
+};
+
+// A footprint as a reader found it, before CRS, origin, repair and ids.
+struct RawFootprint {
+  std::string name;   // "feature 3", "way 123": names it in other footprints' messages
+  std::string label;  // starts its messages: "feature 3 (id \"b12\")", "way 123"
+  std::string id;     // empty: `fallback_id`
+  std::string fallback_id;
+  // World coordinates in the input's CRS, no closing vertex, as written.
+  std::vector<kernel::Polygon> polygons;
+  bool multi = false;  // a MultiPolygon: messages say "polygon K" rather than "polygon"
+  shape::AttributeMap properties;
+  bool failed = false;
+};
+
+constexpr std::size_t kNoIndex = std::numeric_limits<std::size_t>::max();
+
+// Where in a raw footprint a message points; kNoIndex fields are absent.
+struct FootprintPlace {
+  std::size_t polygon = kNoIndex;
+  std::size_t ring = kNoIndex;  // 0: the outer ring, k: hole k
+  std::size_t position = kNoIndex;
+  bool id = false;  // the id rather than the geometry
+};
+
+// "1.5", "17", "1e+300": shortest text that reads back as `v`.
+std::string number_text(double v);
+// `text` in double quotes, cut after 40 bytes.
+std::string quote_text(std::string_view text);
+
+// The shared diagnostics and finishing steps. A reader derives from it, fills `features_` (and
+// `declared_crs_` when the input names its CRS), reports its own problems through report() and
+// feature_issue(), then calls finish_features() and result().
+class FootprintBuilder {
+ public:
+  FootprintBuilder(std::string source_name, const FootprintOptions& options,
+                   std::string options_name);
+  virtual ~FootprintBuilder() = default;
+  FootprintBuilder(const FootprintBuilder&) = delete;
+  FootprintBuilder& operator=(const FootprintBuilder&) = delete;
+
+ protected:
+  // Where a diagnostic points: `order` sorts diagnostics (GeoJSON: the byte offset; kNoIndex:
+  // last), `span` is rendered.
+  struct Location {
+    std::size_t order = kNoIndex;
+    base::Span span;
+  };
+  virtual Location locate(std::size_t feature, const FootprintPlace& place) = 0;
+  Location whole_input() const { return {kNoIndex, base::Span::whole(name_)}; }
+
+  void report(base::Severity severity, const char* code, std::string message, const Location& where,
+              std::vector<std::string> notes = {});
+  // A problem with feature `index`. An error fails the feature; under skip_invalid it becomes one
+  // warning per feature (its first error) and the feature is skipped.
+  void feature_issue(std::size_t index, bool is_error, const char* code, const std::string& message,
+                     const Location& where, std::vector<std::string> notes = {});
+
+  // CRS -> origin -> repair -> ids, into result_. `crs_at` is where the input names its CRS.
+  void finish_features(const Location& crs_at);
+  base::Result<FootprintSet> result();
+
+  std::string name_;
+  const FootprintOptions& options_;
+  std::string options_name_;  // "GeoJsonOptions": names options in messages
+  std::vector<RawFootprint> features_;
+  std::string declared_crs_;  // the input's CRS: "EPSG:N" or "OGC:CRS84"; empty: none named
+  std::string empty_note_;    // GEO006's note when the input has no features at all
+  FootprintSet result_;
+  std::size_t errors_ = 0;
+  bool stopped_ = false;
+
+ private:
+  struct Pending {
+    std::size_t order;
+    base::Diagnostic diagnostic;
+  };
+  bool looks_like_degrees() const;
+  kernel::Bounds2 valid_bounds() const;
+  void resolve_crs(const Location& crs_at);
+  void to_geographic_range();
+  void reproject_all(const std::string& from, const std::string& to, const Location& crs_at);
+  void choose_origin();
+  void repair(std::size_t index, Footprint& footprint);
+  void repair_piece(std::size_t index, std::size_t p, kernel::Polygon piece, Footprint& footprint);
+  void note_repair(std::size_t index, std::size_t p, const char* kind, const char* code,
+                   const std::string& message, const FootprintPlace& place, std::size_t count);
+  void reject_touching_rings(std::size_t index, std::size_t p, const kernel::Polygon& repaired);
+  void assign_ids();
+  std::string polygon_label(std::size_t index, std::size_t p) const;
+  std::vector<std::string> local_note() const;
+
+  std::vector<Pending> pending_;
+  std::size_t warnings_ = 0;
+  std::size_t suppressed_warnings_ = 0;
+  bool hinted_skip_ = false;
+  std::map<std::string, bool, std::less<>> warned_repair_;
+};
+
+}  // namespace insula::io

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# `insula mass` and `insula build --lot` on OpenStreetMap files (docs/osm.md): .osm and .osm.pbf
+# (converted here by osmium-tool) give the same buildings, in UTM 33N; broken elements give one
+# error naming the element and exit 1 with no output, or with --keep-going a warning and the good
+# buildings; a truncated .osm.pbf fails whatever --keep-going says.
+source "$(dirname "$0")/lib/common.sh"
+
+osm=$root/tests/data/osm
+osmium cat -O -o "$tmp/b.osm.pbf" "$osm/buildings.osm" || fail "osmium cat"
+
+for input in "$osm/buildings.osm" "$tmp/b.osm.pbf"; do
+  name=$(basename "$input")
+  expect_exit 0 "mass $name" "$insula" mass "$input" -o "$tmp/$name.city.json" -o "$tmp/$name.obj" \
+    --report "$tmp/$name.json" --quiet
+  node -e '
+    const fs = require("fs");
+    const r = JSON.parse(fs.readFileSync(process.argv[1]));
+    const c = JSON.parse(fs.readFileSync(process.argv[2]));
+    const ids = Object.keys(c.CityObjects).filter((id) => c.CityObjects[id].type !== "BuildingPart").sort();
+    const attrs = c.CityObjects["way/101"] && c.CityObjects["way/101"].attributes;
+    const ok = r.buildings === 4 && r.watertight === 4 && r.crs === "EPSG:32633" &&
+               c.metadata.referenceSystem === "https://www.opengis.net/def/crs/EPSG/0/32633" &&
+               ids.join() === "relation/201,relation/202,way/101,way/121" &&
+               attrs && attrs["roof:shape"] === "gabled" && attrs["osm_id"] === "101";
+    if (!ok) { console.log(JSON.stringify(r), ids, JSON.stringify(attrs)); process.exit(1); }' \
+    "$tmp/$name.json" "$tmp/$name.city.json" || fail "mass $name: report and CityJSON"
+done
+diff <(grep -v '^mtllib' "$tmp/buildings.osm.obj") <(grep -v '^mtllib' "$tmp/b.osm.pbf.obj") >/dev/null ||
+  fail ".osm and .osm.pbf give different OBJ"
+
+# Lots from a .osm.pbf (tags are strings: this grammar reads none).
+printf 'Lot --> extrude(6) Mass\n' >"$tmp/lots.cga"
+expect_exit 0 "build --lot pbf" "$insula" build "$tmp/lots.cga" --lot "$tmp/b.osm.pbf" \
+  --report "$tmp/lots.json" -o "$tmp/lots.obj" -q
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+         if (r.lots !== 4) { console.log(JSON.stringify(r)); process.exit(1); }' "$tmp/lots.json" ||
+  fail "build --lot pbf: 4 lots"
+expect_exit 0 "bldg build --lot osm" "$insula" build "$root/examples/bldg/two_storey.bldg" \
+  --lot "$osm/buildings.osm" -o "$tmp/bldg.obj" -q
+
+# Broken elements: the error names the element; --keep-going keeps the good building.
+for broken in missing_node:OSM003:"way 102" unclosed_multipolygon:OSM004:"relation 203" open_way:OSM002:"way 104"; do
+  IFS=: read -r file code element <<<"$broken"
+  expect_exit 1 "$file" "$insula" mass "$osm/$file.osm" -o "$tmp/$file.obj"
+  grep -qF "$file.osm: error[$code]: $element: " "$tmp/err.txt" || { fail "$file: message"; cat "$tmp/err.txt"; }
+  [ -e "$tmp/$file.obj" ] && fail "$file: partial output"
+  expect_exit 0 "$file --keep-going" "$insula" mass "$osm/$file.osm" -o "$tmp/$file.obj" --keep-going \
+    --report "$tmp/$file.json"
+  grep -qF "$file.osm: warning[$code]: $element: " "$tmp/err.txt" || { fail "$file: warning"; cat "$tmp/err.txt"; }
+  node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+           if (r.buildings !== 1 || r.invalid !== 1) { console.log(JSON.stringify(r)); process.exit(1); }' \
+    "$tmp/$file.json" || fail "$file --keep-going: 1 building, 1 invalid"
+done
+
+# `check` reads as mass does.
+expect_exit 0 "check osm" "$insula" check "$tmp/b.osm.pbf"
+grep -qx "$tmp/b.osm.pbf: ok: 4 footprints, in EPSG:32633 (reprojected from OGC:CRS84)" "$tmp/out.txt" ||
+  { fail "check osm: summary"; cat "$tmp/out.txt"; }
+expect_exit 1 "check broken osm" "$insula" check "$osm/missing_node.osm"
+grep -qF "missing_node.osm: error[OSM003]: way 102: " "$tmp/err.txt" || { fail "check broken osm: message"; cat "$tmp/err.txt"; }
+
+# A truncated .osm.pbf: one error, exit 1, no output, even with --keep-going.
+head -c 300 "$tmp/b.osm.pbf" >"$tmp/cut.osm.pbf"
+expect_exit 1 "truncated pbf" "$insula" mass "$tmp/cut.osm.pbf" -o "$tmp/cut.obj" --keep-going
+grep -qF "cut.osm.pbf: error[OSM001]: not a valid .osm.pbf file (truncated or damaged?)" "$tmp/err.txt" ||
+  { fail "truncated pbf: message"; cat "$tmp/err.txt"; }
+[ -e "$tmp/cut.obj" ] && fail "truncated pbf: partial output"
+
+finish osm
