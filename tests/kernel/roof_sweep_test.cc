@@ -163,12 +163,22 @@ Ring star_outline(int points, double outer, double inner) {
 
 // The documented fallbacks of shapes a concave outline does not define.
 std::set<RoofType> concave_allowed(RoofType asked, bool star) {
+  // A star's tips have no antiparallel neighbours to end a ridge: its gables become hips.
+  const RoofType gable = star ? RoofType::kHip : RoofType::kGable;
   switch (asked) {
     case RoofType::kPyramid:
       return {RoofType::kHip};
     case RoofType::kGable:
-      // A star's tips have no antiparallel neighbours to end a ridge.
-      return star ? std::set<RoofType>{RoofType::kHip} : std::set<RoofType>{asked};
+    case RoofType::kHalfHipped:
+    case RoofType::kSaltbox:
+    case RoofType::kRound:
+      return {gable};
+    case RoofType::kGambrel:
+      return {RoofType::kMansard};
+    case RoofType::kDome:
+    case RoofType::kOnion:
+      // A star is star-shaped about its centre; an L, T or U may or may not be about its centroid.
+      return star ? std::set<RoofType>{asked} : std::set<RoofType>{asked, RoofType::kHip};
     default:
       return {asked};
   }

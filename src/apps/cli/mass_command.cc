@@ -31,8 +31,9 @@
 namespace insula::cli {
 namespace {
 
-const std::vector<std::string> kRoofNames = {"flat",    "shed",    "gable",        "hip",
-                                             "pyramid", "mansard", "holed_mansard"};
+const std::vector<std::string> kRoofNames = {
+    "flat",    "shed",        "gable",   "hip",   "pyramid", "mansard", "holed_mansard",
+    "gambrel", "half_hipped", "saltbox", "round", "dome",    "onion"};
 
 // What one footprint becomes, decided before the parallel build so warnings stay in input order.
 struct BuildingPlan {
