@@ -277,8 +277,8 @@ bool plan_dome(RoofPlan& plan, bool onion) {
   // (scale of the outline, height as a fraction of the top); the dome a quarter circle.
   std::vector<std::pair<double, double>> profile;
   if (onion) {
-    profile = {{1.12, 0.07}, {1.22, 0.17}, {1.24, 0.28}, {1.16, 0.4}, {0.98, 0.52},
-               {0.74, 0.63}, {0.5, 0.73},  {0.3, 0.82},  {0.15, 0.9}, {0.06, 0.96}};
+    profile = {{1.1, 0.05},  {1.22, 0.13}, {1.28, 0.22}, {1.27, 0.3},  {1.18, 0.4},  {1.0, 0.49},
+               {0.75, 0.57}, {0.5, 0.64},  {0.3, 0.71},  {0.17, 0.78}, {0.09, 0.86}, {0.04, 0.93}};
   } else {
     constexpr int kRings = 8;
     for (int k = 1; k < kRings; ++k) {
@@ -287,8 +287,8 @@ bool plan_dome(RoofPlan& plan, bool onion) {
     }
   }
   // A hemisphere over a circle: the top as high as the centroid is far from the edges (an onion
-  // half as high again).
-  const double top = nearest * (onion ? 1.5 : 1.0);
+  // twice as high, its spire included).
+  const double top = nearest * (onion ? 2.0 : 1.0);
   const std::uint32_t n = c.size();
   CustomRoof& roof = plan.custom;
   std::vector<std::uint32_t> below(n);
