@@ -127,6 +127,28 @@ TEST(RoofShapes, GableHeightAndOrientation) {
   for (const Vec3& p : highest(north.mesh)) EXPECT_NEAR(p.y, 5, 1e-9);
 }
 
+// A rectangle barely longer than wide, with overhang: the overhanging eave polygon (gable ends
+// flush) is wider than long, and its skeleton used to put the gables on the other edges, so the
+// gable fell back to hip. Quadrilaterals now take the ridge from the footprint.
+TEST(RoofShapes, OverhangDoesNotTurnOrLoseTheGable) {
+  const double a = 0.4;
+  const Polygon p{{{0, 0},
+                   {6.5 * std::cos(a), 6.5 * std::sin(a)},
+                   {6.5 * std::cos(a) - 6 * std::sin(a), 6.5 * std::sin(a) + 6 * std::cos(a)},
+                   {-6 * std::sin(a), 6 * std::cos(a)}},
+                  {}};
+  MassSpec spec;
+  spec.overhang = 0.5;
+  const MassResult r = build(p, RoofType::kGable, spec);
+  expect_closed(r);
+  EXPECT_EQ(r.status, MassStatus::kOk) << r.message;
+  EXPECT_EQ(r.roof, RoofType::kGable);
+  // The ridge joins the midpoints of the 6 m ends (lifted), parallel to the 6.5 m sides.
+  const std::vector<Vec3> ridge = highest(r.mesh);
+  ASSERT_EQ(ridge.size(), 2U);
+  EXPECT_NEAR(length(drop(ridge[0]) - drop(ridge[1])), 6.5, 1e-9);
+}
+
 TEST(RoofShapes, HeightOverridesThePitch) {
   for (RoofType t : {RoofType::kHip, RoofType::kPyramid, RoofType::kMansard, RoofType::kGambrel,
                      RoofType::kHalfHipped, RoofType::kSaltbox, RoofType::kRound, RoofType::kDome,
