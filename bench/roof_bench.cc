@@ -3,6 +3,8 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <iterator>
+#include <string>
 
 #include "kernel/mass.h"
 #include "kernel/roof.h"
@@ -78,6 +80,23 @@ void BM_MassHip(benchmark::State& state, Polygon footprint) {
 }
 BENCHMARK_CAPTURE(BM_MassHip, l_shape_8, l_shape8())->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_MassHip, rectangle, Polygon{{{0, 0}, {14, 0}, {14, 8}, {0, 8}}, {}})
+    ->Unit(benchmark::kMicrosecond);
+
+// Every roof type over a rotated 14 x 8 m rectangle (the S3DB shapes included), argument =
+// RoofType.
+void BM_MassEveryRoof(benchmark::State& state) {
+  MassSpec spec;
+  spec.wall_height = 9;
+  spec.roof = static_cast<RoofType>(state.range(0));
+  const Polygon footprint{{{0, 0}, {13.74, 2.67}, {12.21, 10.52}, {-1.53, 7.85}}, {}};
+  for (auto _ : state) {
+    MassResult r = build_mass(footprint, spec);
+    benchmark::DoNotOptimize(r.mesh.face_count());
+  }
+  state.SetLabel(std::string(roof_type_name(spec.roof)));
+}
+BENCHMARK(BM_MassEveryRoof)
+    ->DenseRange(0, static_cast<int>(std::size(kRoofTypes)) - 1)
     ->Unit(benchmark::kMicrosecond);
 
 // The eave outline of Table 2's heaviest generated building (group 5, building 4): an H of 12

@@ -1,10 +1,13 @@
 #include "kernel/mass.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "kernel/roof_detail.h"
+#include "kernel/roof_solid.h"
 #include "kernel/skeleton.h"
+#include "kernel/solids.h"
 
 namespace insula::kernel {
 namespace {
@@ -18,6 +21,9 @@ RoofSpec roof_spec(const MassSpec& spec) {
   r.mansard_break_height = spec.mansard_break_height;
   r.shed_edge = spec.shed_edge;
   r.fascia = spec.fascia;
+  r.height = spec.height;
+  r.direction_deg = spec.direction_deg;
+  r.orientation = spec.orientation;
   return r;
 }
 
@@ -104,6 +110,86 @@ MassResult try_build(const Polygon& footprint, const MassSpec& spec, const RoofS
   return result;
 }
 
+constexpr double kPostSide = 0.25;       // meters, the square posts of a roof without walls
+constexpr double kSlabThickness = 0.25;  // flat and shed roofs on posts
+
+void retag(Mesh& mesh, std::size_t first_face, SemanticClass from, SemanticClass to) {
+  for (std::size_t f = first_face; f < mesh.face_count(); ++f) {
+    if (mesh.tag(f).semantic == from) mesh.tag(f).semantic = to;
+  }
+}
+
+// S3DB building=roof: the roof as a closed solid on a post under each outer-ring corner
+// (docs/kernel-roofs.md, "Roofs on posts"). The roof's underside is flat at the eave (at the
+// soffit with overhang); flat and shed roofs are slabs under their surface.
+MassResult roof_on_posts(const Polygon& footprint, const MassSpec& spec, const RoofSpec& roof) {
+  MassResult result;
+  const double eave_z = spec.ground_z + spec.wall_height;
+  roof_detail::RoofPlan plan;
+  if (!roof_detail::plan_roof(footprint, roof, plan)) {
+    result.message = "roof: " + plan.message;
+    return result;
+  }
+  Mesh& mesh = result.mesh;
+  // Height of the roof's underside above eave_z - kSlabThickness at p (flat and shed slabs).
+  const auto rise = [&](Vec2 p) {
+    return plan.type == RoofType::kShed ? plan.slope * roof_detail::shed_distance(plan, p) : 0.0;
+  };
+  const bool slab = plan.type == RoofType::kFlat || plan.type == RoofType::kShed;
+  if (slab) {
+    const PrismTags tags{{SemanticClass::kOuterCeilingSurface, 0, 1},
+                         {SemanticClass::kRoofSurface, 0, 2},
+                         {SemanticClass::kRoofSurface, 0, 3}};
+    if (!add_prism(mesh, footprint, eave_z - kSlabThickness, eave_z, tags)) {
+      result.message = "roof: the slab could not be built";
+      result.mesh = Mesh();
+      return result;
+    }
+    for (Vec3& p : mesh.positions()) p.z += rise(drop(p));  // a shear keeps faces planar
+  } else {
+    RoofSolidSpec solid_spec;
+    solid_spec.roof = roof;
+    RoofSolid solid = build_roof_solid(footprint, solid_spec, eave_z);
+    if (solid.status == RoofStatus::kFailed) {
+      result.message = "roof: " + solid.message;
+      return result;
+    }
+    mesh = std::move(solid.mesh);
+    // A roof without walls has no wall surfaces: its gable ends belong to the roof, its bottom is
+    // seen from below.
+    retag(mesh, 0, SemanticClass::kWallSurface, SemanticClass::kRoofSurface);
+    retag(mesh, 0, SemanticClass::kClosureSurface, SemanticClass::kOuterCeilingSurface);
+  }
+  double underside = 1e300;
+  for (const Vec3& p : mesh.positions()) underside = std::min(underside, p.z);
+  const Ring& outer = footprint.outer;
+  for (std::size_t k = 0; k < outer.size(); ++k) {
+    // A square in the corner, along the edge that leaves it.
+    const Vec2 u = normalized(outer[(k + 1) % outer.size()] - outer[k]) * kPostSide;
+    const Vec2 v = perp(u);
+    const Polygon post{{outer[k], outer[k] + u, outer[k] + u + v, outer[k] + v}, {}};
+    double top = underside;
+    if (slab) {
+      double lowest = 1e300;
+      for (const Vec2& q : post.outer) lowest = std::min(lowest, rise(q));
+      top = eave_z - kSlabThickness + lowest;
+    }
+    if (!(top > spec.ground_z + 0.01)) {
+      result.message = "posts: the roof's underside is not above the ground";
+      result.mesh = Mesh();
+      return result;
+    }
+    const PrismTags tags{{SemanticClass::kGroundSurface, 0, 0},
+                         {SemanticClass::kClosureSurface, 0, 0},
+                         {SemanticClass::kNone, 0, 0}};
+    add_prism(mesh, post, spec.ground_z, top, tags);
+  }
+  result.roof = plan.type;
+  result.message = plan.message;
+  result.status = plan.status == RoofStatus::kOk ? MassStatus::kOk : MassStatus::kFallback;
+  return result;
+}
+
 }  // namespace
 
 MassResult build_mass(const Polygon& footprint, const MassSpec& spec) {
@@ -115,6 +201,7 @@ MassResult build_mass(const Polygon& footprint, const MassSpec& spec) {
   Polygon clean;
   if (!prepare(footprint, clean, failed.message)) return failed;
   const RoofSpec roof = roof_spec(spec);
+  if (!spec.walls) return roof_on_posts(clean, spec, roof);
   MassResult result = try_build(clean, spec, roof);
   if (result.status != MassStatus::kFailed || roof.overhang <= 0) return result;
   // A large overhang on a steep roof can bring the soffit down to the ground: drop the overhang.

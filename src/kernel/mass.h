@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "kernel/mesh.h"
@@ -25,6 +26,14 @@ struct MassSpec {
   double mansard_break_height = 2.5;
   int shed_edge = -1;
   double fascia = 0.25;
+  std::optional<double> height = std::nullopt;             // see RoofSpec::height
+  std::optional<double> direction_deg = std::nullopt;      // see RoofSpec::direction_deg
+  RidgeOrientation orientation = RidgeOrientation::kAuto;  // see RoofSpec::orientation
+  // false: S3DB building=roof, a roof on posts without walls: the roof as a closed solid (its
+  // surface, gable ends and a flat underside at the eave; flat and shed roofs a slab 0.25 m thick
+  // under their surface) and a 0.25 m square post from the ground up to it under each outer-ring
+  // corner, each post its own closed shell in the same mesh.
+  bool walls = true;
 };
 
 enum class MassStatus : std::uint8_t {

@@ -22,14 +22,50 @@ using roof_detail::GableEnd;
 using roof_detail::RoofPlan;
 
 namespace {
-
 constexpr double kPi = 3.14159265358979323846;
 // Gable ends need the two neighbouring edges to run back from the end within this angle of
 // antiparallel, so the end closes a ridge (docs/kernel-roofs.md, "Gable").
 constexpr double kGableParallelDeg = 30;
-// Quadrilaterals whose opposite-edge sums differ by at most this fraction take the square rule for
-// their ridge (docs/kernel-roofs.md, "Square footprints").
-constexpr double kNearSquare = 0.05;
+}  // namespace
+
+namespace roof_detail {
+
+// Signed distance of `p` from the supporting line of contour edge e, positive on the interior side.
+double edge_distance(const Contour& c, std::uint32_t e, Vec2 p) {
+  const Vec2 a = c.points[e];
+  const Vec2 d = c.points[c.next(e)] - a;
+  return cross(d, p - a) / length(d);
+}
+
+// The ridge point of a gable on edge e: on e's line, equally far from the lines of the
+// neighbouring edges, strictly inside the edge. Nothing unless those neighbours run back from e
+// within kGableParallelDeg of antiparallel (the edge closes the end of a wing).
+std::optional<GableEnd> gable_apex(const Contour& c, std::uint32_t e) {
+  const std::uint32_t prev = c.prev(e);
+  const std::uint32_t next = c.next(e);
+  const Vec2 dp = normalized(c.points[e] - c.points[prev]);
+  const Vec2 dn = normalized(c.points[c.next(next)] - c.points[next]);
+  if (dot(dp, dn) > -std::cos(kGableParallelDeg * kPi / 180)) return std::nullopt;
+  const Vec2 a = c.points[e];
+  const Vec2 b = c.points[next];
+  const double f0 = edge_distance(c, prev, a) - edge_distance(c, next, a);
+  const double f1 = edge_distance(c, prev, b) - edge_distance(c, next, b);
+  if (f0 == f1) return std::nullopt;
+  const double t = f0 / (f0 - f1);
+  if (!(t > 1e-6 && t < 1 - 1e-6)) return std::nullopt;
+  const Vec2 apex = a + (b - a) * t;
+  const double time = edge_distance(c, prev, apex);
+  if (!(time > 1e-9)) return std::nullopt;
+  return GableEnd{e, 0, apex, time};
+}
+
+}  // namespace roof_detail
+
+using roof_detail::edge_distance;
+using roof_detail::gable_apex;
+
+namespace {
+
 // Skeleton nodes closer than this fraction of the footprint's extent are one node.
 constexpr double kNodeMerge = 1e-6;
 
@@ -39,13 +75,6 @@ constexpr double kPyramidReflexDeg = 1;
 
 double tan_deg(double degrees) {
   return std::tan(degrees * kPi / 180);
-}
-
-// Signed distance of `p` from the supporting line of contour edge e, positive on the interior side.
-double edge_distance(const Contour& c, std::uint32_t e, Vec2 p) {
-  const Vec2 a = c.points[e];
-  const Vec2 d = c.points[c.next(e)] - a;
-  return cross(d, p - a) / length(d);
 }
 
 // Offsets every edge e outward (to its right) by distances[e] >= 0 with mitred corners, so vertex
@@ -76,28 +105,6 @@ bool offset_contour(const Contour& c, const std::vector<double>& distances, Cont
     if (dot(before, after) <= 0) return false;
   }
   return is_simple_polygon(out.polygon());
-}
-
-// The ridge point of a gable on edge e: on e's line, equally far from the lines of the
-// neighbouring edges, strictly inside the edge. Nothing unless those neighbours run back from e
-// within kGableParallelDeg of antiparallel (the edge closes the end of a wing).
-std::optional<GableEnd> gable_apex(const Contour& c, std::uint32_t e) {
-  const std::uint32_t prev = c.prev(e);
-  const std::uint32_t next = c.next(e);
-  const Vec2 dp = normalized(c.points[e] - c.points[prev]);
-  const Vec2 dn = normalized(c.points[c.next(next)] - c.points[next]);
-  if (dot(dp, dn) > -std::cos(kGableParallelDeg * kPi / 180)) return std::nullopt;
-  const Vec2 a = c.points[e];
-  const Vec2 b = c.points[next];
-  const double f0 = edge_distance(c, prev, a) - edge_distance(c, next, a);
-  const double f1 = edge_distance(c, prev, b) - edge_distance(c, next, b);
-  if (f0 == f1) return std::nullopt;
-  const double t = f0 / (f0 - f1);
-  if (!(t > 1e-6 && t < 1 - 1e-6)) return std::nullopt;
-  const Vec2 apex = a + (b - a) * t;
-  const double time = edge_distance(c, prev, apex);
-  if (!(time > 1e-9)) return std::nullopt;
-  return GableEnd{e, 0, apex, time};
 }
 
 // Groups of skeleton nodes contracted to one node, each represented by its lowest id.
@@ -283,28 +290,20 @@ bool plan_pyramid(RoofPlan& plan) {
   return true;
 }
 
-// A quadrilateral without holes whose two pairs of opposite edges have nearly equal total
-// lengths. Exactly equal sums (Pitot) are the quadrilaterals with an incircle (square, rhombus,
-// kite), whose skeleton meets in one node and has no ridge to end in a gable; within the
-// tolerance the skeleton's ridge, if any, is too short for its direction to matter to a user.
-bool near_square(const Contour& c) {
-  if (c.ring_starts.size() != 2 || c.size() != 4) return false;
-  const auto edge = [&](std::uint32_t e) { return length(c.points[c.next(e)] - c.points[e]); };
-  const double a = edge(0) + edge(2);
-  const double b = edge(1) + edge(3);
-  return std::abs(a - b) <= kNearSquare * std::max(a, b);
-}
-
-// The two-slope gable over a quadrilateral with its ends at edges 1 and 3, so the ridge runs
-// parallel to edge 0 (docs/kernel-roofs.md, "Square footprints"), as a roof skeleton: faces 0 and 2
-// meet along the ridge between the two gable apexes, faces 1 and 3 are the gable triangles. Each
-// apex is equally far from the lines of edges 0 and 2, so lifting by time * slope keeps both
-// slopes planar.
-bool plan_quad_gable(RoofPlan& plan, double overhang) {
-  if (!plan_eave(plan, overhang, {1, 3})) return false;
+// The two-slope gable over a quadrilateral with its slopes on edges r and r + 2 and its ends at
+// edges r + 1 and r + 3 (r from quad_slope_pair: roof:direction, roof:orientation, the square rule
+// of docs/kernel-roofs.md, "Square footprints", or the longer pair), as a roof skeleton: the two
+// slope faces meet along the ridge between the two gable apexes, the end faces are the gable
+// triangles. Each apex is equally far from the lines of the slope edges, so lifting by
+// time * slope keeps both slopes planar.
+bool plan_quad_gable(RoofPlan& plan, const RoofSpec& spec, double overhang) {
+  if (plan.footprint.ring_starts.size() != 2 || plan.footprint.size() != 4) return false;
+  const std::uint32_t r = roof_detail::quad_slope_pair(plan.footprint, spec);
+  const std::uint32_t e1 = r + 1, e3 = (r + 3) % 4;
+  if (!plan_eave(plan, overhang, {e1, e3})) return false;
   const Contour& c = plan.eave;
-  std::optional<GableEnd> end1 = gable_apex(c, 1);
-  std::optional<GableEnd> end3 = gable_apex(c, 3);
+  std::optional<GableEnd> end1 = gable_apex(c, e1);
+  std::optional<GableEnd> end3 = gable_apex(c, e3);
   if (!end1 || !end3) return false;
   end1->node = 4;
   end3->node = 5;
@@ -312,11 +311,19 @@ bool plan_quad_gable(RoofPlan& plan, double overhang) {
   for (const Vec2& p : c.points) s.vertices.push_back({p, 0});
   s.vertices.push_back({end1->apex, end1->time});
   s.vertices.push_back({end3->apex, end3->time});
-  s.face_indices = {0, 1, 4, 5, 1, 2, 4, 2, 3, 5, 4, 3, 0, 5};
-  s.face_offsets = {0, 4, 7, 11, 14};
+  std::vector<std::vector<std::uint32_t>> faces(4);
+  faces[r] = {r, r + 1, 4, 5};
+  faces[e1] = {e1, (e1 + 1) % 4, 4};
+  faces[r + 2] = {r + 2, (r + 3) % 4, 5, 4};
+  faces[e3] = {e3, (e3 + 1) % 4, 5};
+  s.face_offsets = {0};
+  for (const auto& f : faces) {
+    s.face_indices.insert(s.face_indices.end(), f.begin(), f.end());
+    s.face_offsets.push_back(static_cast<std::uint32_t>(s.face_indices.size()));
+  }
   s.ring_starts = c.ring_starts;
   s.contour_count = 4;
-  for (std::uint32_t e : {0U, 2U}) {
+  for (std::uint32_t e : {r, r + 2}) {
     Polygon slope;
     for (std::uint32_t v : s.face(e)) slope.outer.push_back(s.vertices[v].position);
     if (!is_simple_polygon(slope)) return false;
@@ -326,11 +333,16 @@ bool plan_quad_gable(RoofPlan& plan, double overhang) {
   return true;
 }
 
+// Quadrilaterals take the quad gable, so their ridge follows roof:direction / roof:orientation
+// and an overhang cannot turn it (a 6 x 6.5 m footprint whose eaves overhang becomes wider than
+// long); other footprints and quadrilaterals it cannot build take the skeleton's ridges.
 bool plan_gable(RoofPlan& plan, const RoofSpec& spec) {
-  if (near_square(plan.footprint) && plan_quad_gable(plan, spec.overhang)) return true;
+  if (plan_quad_gable(plan, spec, spec.overhang)) return true;
+  plan.reason = "skeleton: the straight skeleton could not be computed";
   auto base = roof_skeleton(plan.footprint.polygon());
   if (!base) return false;
   std::vector<GableEnd> gables = find_gables(*base, plan.footprint);
+  plan.reason = "roof faces: no footprint edge ends a ridge as a gable";
   if (gables.empty()) return false;
   std::vector<std::uint32_t> edges;
   for (const GableEnd& g : gables) edges.push_back(g.edge);
@@ -342,6 +354,7 @@ bool plan_gable(RoofPlan& plan, const RoofSpec& spec) {
   }
   // Gable ends stay flush with their wall; the eaves overhang. The skeleton of that eave polygon
   // must still end its ridges at the same edges.
+  plan.reason = "roof faces: the overhanging eaves do not end their ridges at the same gables";
   if (!plan_eave(plan, spec.overhang, edges)) return false;
   plan.skeleton = roof_skeleton(plan.eave.polygon());
   if (!plan.skeleton) return false;
@@ -363,10 +376,44 @@ std::uint32_t longest_outer_edge(const Contour& c) {
 }
 
 // Everything that can fail for one roof type; false when this type cannot be built.
+bool is_custom(RoofType type) {
+  return type >= RoofType::kGambrel;
+}
+
+// The shed plane: rising from the edge asked or the longest outer edge, or, with roof:direction,
+// falling toward that azimuth from the footprint's highest point (docs/kernel-roofs.md, "Shed
+// direction").
+void plan_shed(RoofPlan& plan, const RoofSpec& spec) {
+  const Contour& c = plan.footprint;
+  if (spec.direction_deg) {
+    const double a = *spec.direction_deg * kPi / 180;
+    plan.shed_normal = Vec2{-std::sin(a), -std::cos(a)};  // uphill
+    plan.shed_origin = c.points[0];
+    for (std::uint32_t k = 0; k < c.ring_starts[1]; ++k) {
+      if (dot(plan.shed_normal, c.points[k] - plan.shed_origin) < 0) plan.shed_origin = c.points[k];
+    }
+  } else {
+    const int asked = spec.shed_edge;
+    const std::uint32_t e = asked >= 0 && static_cast<std::uint32_t>(asked) < c.ring_starts[1]
+                                ? static_cast<std::uint32_t>(asked)
+                                : longest_outer_edge(c);
+    plan.shed_origin = c.points[e];
+    plan.shed_normal = perp(normalized(c.points[c.next(e)] - c.points[e]));
+  }
+  if (spec.height) {
+    double far = 0;
+    for (std::uint32_t k = 0; k < c.ring_starts[1]; ++k) {
+      far = std::max(far, roof_detail::shed_distance(plan, c.points[k]));
+    }
+    if (far > 0) plan.slope = *spec.height / far;
+  }
+}
+
 bool plan_type(RoofPlan& plan, const RoofSpec& spec, RoofType type, double overhang) {
   plan.type = type;
   plan.skeleton.reset();
   plan.gables.clear();
+  plan.reason.clear();
   plan.slope = type == RoofType::kFlat ? 0 : tan_deg(spec.pitch_deg);
   plan.eave_slope = eave_slope(spec, type);
   plan.fascia = 0;
@@ -375,22 +422,28 @@ bool plan_type(RoofPlan& plan, const RoofSpec& spec, RoofType type, double overh
     with_overhang.overhang = overhang;
     return plan_gable(plan, with_overhang);
   }
+  if (is_custom(type)) {
+    plan_eave(plan, 0, {});
+    plan.reason = "roof faces: the footprint is not a quadrilateral with two opposite ends";
+    if (type == RoofType::kDome || type == RoofType::kOnion) {
+      plan.reason = "roof faces: the footprint is not star-shaped about its centroid";
+    }
+    return roof_detail::plan_custom(plan, spec);
+  }
+  plan.reason = "roof faces: the eave polygon of the overhang is not simple";
   if (!plan_eave(plan, overhang, {})) return false;
   if ((type == RoofType::kFlat || type == RoofType::kShed) && overhang > 0) {
     plan.fascia = spec.fascia;
   }
-  if (type == RoofType::kShed) {
-    const int asked = spec.shed_edge;
-    plan.shed_edge = asked >= 0 && static_cast<std::uint32_t>(asked) < plan.footprint.ring_starts[1]
-                         ? static_cast<std::uint32_t>(asked)
-                         : longest_outer_edge(plan.footprint);
-  }
+  if (type == RoofType::kShed) plan_shed(plan, spec);
+  plan.reason = "roof faces: the footprint is not convex";
   if (type == RoofType::kPyramid) return plan_pyramid(plan);
   if (type == RoofType::kMansard || type == RoofType::kHoledMansard) {
     plan.upper_slope = tan_deg(std::max(0.0, spec.pitch_deg));
     plan.break_time = overhang + spec.mansard_break_height / plan.eave_slope;
   }
   if (uses_skeleton(type)) {
+    plan.reason = "skeleton: the straight skeleton could not be computed";
     plan.skeleton = roof_skeleton(plan.eave.polygon());
     return plan.skeleton.has_value();
   }
@@ -403,21 +456,40 @@ bool spec_valid(const RoofSpec& spec, std::string& why) {
     why = "pitch must be in (0, 89] degrees";
   } else if (!(spec.overhang >= 0 && spec.overhang < 1e3)) {
     why = "overhang must be >= 0 m";
-  } else if ((spec.type == RoofType::kMansard || spec.type == RoofType::kHoledMansard) &&
+  } else if ((spec.type == RoofType::kMansard || spec.type == RoofType::kHoledMansard ||
+              spec.type == RoofType::kGambrel) &&
              !(spec.mansard_pitch_deg > 0 && spec.mansard_pitch_deg <= 89 &&
                spec.mansard_break_height > 0)) {
     why = "mansard needs a lower pitch in (0, 89] degrees and a break height > 0";
   } else if (!(spec.fascia > 0)) {
     why = "fascia must be > 0 m";
+  } else if (spec.height && !(*spec.height > 0 && *spec.height < 1e4)) {
+    why = "roof height must be in (0, 10000) m";
+  } else if (spec.direction_deg && !std::isfinite(*spec.direction_deg)) {
+    why = "roof direction must be a finite angle";
   } else {
     return true;
   }
   return false;
 }
 
-// Requested type, then hip, then flat (docs/kernel-roofs.md, "Fallbacks").
-std::array<RoofType, 3> fallback_chain(RoofType asked) {
-  return {asked, RoofType::kHip, RoofType::kFlat};
+// Requested type, then the shape's own fallback, then hip, then flat (docs/kernel-roofs.md,
+// "Fallbacks").
+std::array<RoofType, 4> fallback_chain(RoofType asked) {
+  RoofType second = RoofType::kHip;
+  switch (asked) {
+    case RoofType::kGambrel:
+      second = RoofType::kMansard;
+      break;
+    case RoofType::kHalfHipped:
+    case RoofType::kSaltbox:
+    case RoofType::kRound:
+      second = RoofType::kGable;
+      break;
+    default:
+      break;
+  }
+  return {asked, second, RoofType::kHip, RoofType::kFlat};
 }
 
 }  // namespace
@@ -438,6 +510,18 @@ std::string_view roof_type_name(RoofType type) {
       return "mansard";
     case RoofType::kHoledMansard:
       return "holed_mansard";
+    case RoofType::kGambrel:
+      return "gambrel";
+    case RoofType::kHalfHipped:
+      return "half_hipped";
+    case RoofType::kSaltbox:
+      return "saltbox";
+    case RoofType::kRound:
+      return "round";
+    case RoofType::kDome:
+      return "dome";
+    case RoofType::kOnion:
+      return "onion";
   }
   return "flat";
 }
@@ -445,11 +529,23 @@ std::string_view roof_type_name(RoofType type) {
 std::optional<RoofType> roof_type_from_name(std::string_view name) {
   std::string lower(name);
   for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  for (RoofType t : {RoofType::kFlat, RoofType::kShed, RoofType::kGable, RoofType::kHip,
-                     RoofType::kPyramid, RoofType::kMansard, RoofType::kHoledMansard}) {
+  for (RoofType t : kRoofTypes) {
     if (lower == roof_type_name(t)) return t;
   }
-  if (lower == "holedmansard" || lower == "compluvium") return RoofType::kHoledMansard;
+  // Other spellings, OpenStreetMap's roof:shape values among them.
+  static constexpr std::pair<std::string_view, RoofType> kAliases[] = {
+      {"holedmansard", RoofType::kHoledMansard},
+      {"compluvium", RoofType::kHoledMansard},
+      {"gabled", RoofType::kGable},
+      {"hipped", RoofType::kHip},
+      {"pyramidal", RoofType::kPyramid},
+      {"skillion", RoofType::kShed},
+      {"half-hipped", RoofType::kHalfHipped},
+      {"halfhipped", RoofType::kHalfHipped},
+      {"half_hip", RoofType::kHalfHipped}};
+  for (const auto& [alias, type] : kAliases) {
+    if (lower == alias) return type;
+  }
   return std::nullopt;
 }
 
@@ -490,7 +586,7 @@ std::uint32_t Contour::prev(std::uint32_t k) const {
 }
 
 double shed_distance(const RoofPlan& plan, Vec2 p) {
-  return edge_distance(plan.footprint, plan.shed_edge, p);
+  return dot(plan.shed_normal, p - plan.shed_origin);
 }
 
 bool plan_roof(const Polygon& footprint, const RoofSpec& spec, RoofPlan& plan) {
@@ -506,21 +602,28 @@ bool plan_roof(const Polygon& footprint, const RoofSpec& spec, RoofPlan& plan) {
                    " m makes the eave polygon self-intersect; built without overhang";
     overhang = 0;
   }
-  RoofType previous = spec.type;
+  std::vector<RoofType> tried;
+  std::string why;  // the stage and finding that stopped the asked type
   for (RoofType type : fallback_chain(spec.type)) {
-    if (type != spec.type && type == previous) continue;
+    if (std::find(tried.begin(), tried.end(), type) != tried.end()) continue;
+    tried.push_back(type);
     if (plan_type(plan, spec, type, overhang)) {
       if (type != spec.type) {
         if (!plan.message.empty()) plan.message += "; ";
         plan.message += std::string(roof_type_name(spec.type)) + " roof could not be built; " +
                         std::string(roof_type_name(type)) + " roof instead";
+        if (!why.empty()) plan.message += " (" + why + ")";
+      }
+      if (is_custom(type) && overhang > 0) {
+        if (!plan.message.empty()) plan.message += "; ";
+        plan.message += std::string(roof_type_name(type)) + " roofs are built without overhang";
       }
       plan.status = plan.message.empty() ? RoofStatus::kOk : RoofStatus::kFallback;
       return true;
     }
-    previous = type;
+    if (why.empty()) why = plan.reason;
   }
-  plan.message = "no roof could be built";
+  plan.message = "no roof could be built" + (why.empty() ? "" : " (" + why + ")");
   return false;
 }
 
@@ -539,7 +642,23 @@ RoofBuild add_roof(const Polygon& footprint, const RoofSpec& spec, double eave_z
     build.message = plan.message;
     return build;
   }
+  const std::size_t first_vertex = mesh.vertex_count();
   roof_detail::emit_roof(plan, eave_z, mesh, build);
+  if (spec.height && plan.type != RoofType::kFlat && plan.type != RoofType::kShed) {
+    // z scaled about the eave keeps every face planar: the same roof at the pitch giving the
+    // height (a shed's slope is set from it in planning, keeping its fascia's thickness).
+    double top = eave_z;
+    for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
+      top = std::max(top, mesh.position(static_cast<std::uint32_t>(v)).z);
+    }
+    if (top - eave_z > 1e-9) {
+      const double k = *spec.height / (top - eave_z);
+      for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
+        Vec3& p = mesh.positions()[v];
+        p.z = eave_z + (p.z - eave_z) * k;
+      }
+    }
+  }
   build.status = plan.status;
   build.built = plan.type;
   build.message = plan.message;

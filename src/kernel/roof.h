@@ -1,9 +1,10 @@
 // Roofs over arbitrary polygons with holes: flat, shed, gable, hip, pyramid, mansard and the Roman
 // holed mansard (a compluvium: seed 000, Table 3, "Hip type with a central descending hole").
-// Hip, gable and mansard come from the interior straight skeleton (skeleton.h): each skeleton face
-// lifted by height = time * tan(pitch) is one planar roof face (seed 000, §4.6). The rules chosen
-// for gables, pyramids on concave input, shed direction, the mansard break, the opening and the
-// fallbacks are in docs/kernel-roofs.md.
+// Gambrel, half-hipped, saltbox, round, dome and onion are the remaining shapes of OpenStreetMap's
+// Simple 3D Buildings. Hip, gable and mansard come from the interior straight skeleton
+// (skeleton.h): each skeleton face lifted by height = time * tan(pitch) is one planar roof face
+// (seed 000, §4.6). The rules chosen for gables, pyramids on concave input, shed direction, the
+// mansard break, the opening and the fallbacks are in docs/kernel-roofs.md.
 //
 // Heights: `eave_z` is the height (meters) at which the roof surface passes over the footprint's
 // edges (the low edge for a shed). With overhang > 0 the roof continues beyond the footprint down
@@ -31,17 +32,34 @@ enum class RoofType : std::uint8_t {
   kPyramid,
   kMansard,
   kHoledMansard,  // mansard whose top is left open at the break line (a compluvium)
+  // OpenStreetMap's Simple 3D Buildings shapes (docs/kernel-roofs.md, "S3DB shapes"): on
+  // quadrilaterals, two-sided profiles across a ridge; elsewhere their documented fallbacks.
+  kGambrel,     // two slopes per side with gable ends (a barn)
+  kHalfHipped,  // gable whose ridge ends are clipped by small hips
+  kSaltbox,     // gable with an off-centre ridge: one side longer and lower
+  kRound,       // barrel vault along the ridge
+  kDome,        // over a footprint star-shaped about its centroid
+  kOnion,       // bulging dome with a pointed top
 };
 
 // Every roof type, in enum order.
 inline constexpr RoofType kRoofTypes[] = {
-    RoofType::kFlat,    RoofType::kShed,    RoofType::kGable,       RoofType::kHip,
-    RoofType::kPyramid, RoofType::kMansard, RoofType::kHoledMansard};
+    RoofType::kFlat,       RoofType::kShed,    RoofType::kGable,        RoofType::kHip,
+    RoofType::kPyramid,    RoofType::kMansard, RoofType::kHoledMansard, RoofType::kGambrel,
+    RoofType::kHalfHipped, RoofType::kSaltbox, RoofType::kRound,        RoofType::kDome,
+    RoofType::kOnion};
 
-// "flat", "shed", "gable", "hip", "pyramid", "mansard", "holed_mansard".
+// "flat", "shed", "gable", "hip", "pyramid", "mansard", "holed_mansard", "gambrel",
+// "half_hipped", "saltbox", "round", "dome", "onion".
 std::string_view roof_type_name(RoofType type);
-// Accepts the names above, case-insensitive; "holedmansard" and "compluvium" too.
+// Accepts the names above, case-insensitive; "holedmansard" and "compluvium" too, and the
+// OpenStreetMap roof:shape spellings: "gabled", "hipped", "pyramidal", "skillion" (shed),
+// "half-hipped", "half_hip", "halfhipped".
 std::optional<RoofType> roof_type_from_name(std::string_view name);
+
+// S3DB roof:orientation: the ridge along the longest side of a quadrilateral footprint (the
+// default), or across it.
+enum class RidgeOrientation : std::uint8_t { kAuto, kAlong, kAcross };
 
 struct RoofSpec {
   RoofType type = RoofType::kHip;
@@ -58,6 +76,17 @@ struct RoofSpec {
   // Vertical thickness (meters, > 0) of the roof edge of flat and shed roofs with overhang: their
   // soffit runs that far below the roof surface, closed by a vertical fascia.
   double fascia = 0.25;
+  // Roof height (meters) above the eave; when set it overrides pitch_deg: every pitched type is
+  // built as asked and its heights above eave_z scaled so its top is this high (for hip and gable
+  // that is the pitch giving this ridge height); a shed's high edge; a dome's or onion's top.
+  // Ignored by flat roofs.
+  std::optional<double> height = std::nullopt;
+  // S3DB roof:direction: compass azimuth (degrees clockwise from north, +y) the main roof face
+  // looks toward (downhill). Shed: the roof falls toward it on any footprint. Gable, gambrel,
+  // half-hipped, saltbox, round on a quadrilateral: the ridge runs perpendicular to it.
+  std::optional<double> direction_deg = std::nullopt;
+  // S3DB roof:orientation on quadrilaterals (ignored when direction_deg is set).
+  RidgeOrientation orientation = RidgeOrientation::kAuto;
 };
 
 enum class RoofStatus : std::uint8_t {

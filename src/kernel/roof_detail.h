@@ -36,10 +36,23 @@ struct GableEnd {
   double time = 0;  // distance of `apex` from the neighbouring edges' lines
 };
 
+// A roof given directly as faces (the S3DB shapes of roof_shapes.cc). Point ids below the
+// footprint's vertex count are the eave vertices; id k above is points[k - count], with z in
+// meters above the eave.
+struct CustomRoof {
+  std::vector<Vec3> points;
+  std::vector<std::uint32_t> face_indices;
+  std::vector<std::uint32_t> face_offsets{0};
+  // Per footprint edge, the point ids closing the wall above it, from the edge's end back to its
+  // start (RoofBuild::cap_indices).
+  std::vector<std::vector<std::uint32_t>> caps;
+};
+
 struct RoofPlan {
   RoofType type = RoofType::kFlat;
   RoofStatus status = RoofStatus::kOk;
   std::string message;
+  std::string reason;  // why the type being planned could not be built: "stage: finding"
   Contour footprint;
   Contour eave;                 // footprint offset by `offsets` (== footprint without overhang)
   std::vector<double> offsets;  // per edge, meters
@@ -49,12 +62,25 @@ struct RoofPlan {
   double upper_slope = 0;       // mansard top
   double break_time = 0;        // mansard break, as skeleton time of the eave polygon
   double fascia = 0;            // flat and shed with overhang
-  std::uint32_t shed_edge = 0;  // footprint edge the shed rises from
-  Vec2 apex;                    // pyramid
+  Vec2 shed_origin;             // the shed rises at `slope` along shed_normal from this point
+  Vec2 shed_normal;
+  Vec2 apex;  // pyramid
   double apex_time = 0;
   std::optional<Skeleton> skeleton;  // of the eave polygon
   std::vector<GableEnd> gables;
+  CustomRoof custom;  // gambrel, half-hipped, saltbox, round, dome, onion
 };
+
+// Which pair of opposite edges of a quadrilateral carries the slopes: edges r and r + 2 for the
+// returned r in {0, 1}, so the ridge runs along them (roof_shapes.cc): from direction_deg, else
+// orientation, else (kAuto) the square rule or the longer pair.
+std::uint32_t quad_slope_pair(const Contour& c, const RoofSpec& spec);
+// The S3DB shapes; false when the footprint does not define them (the caller falls back).
+bool plan_custom(RoofPlan& plan, const RoofSpec& spec);
+// Signed distance of `p` from the supporting line of contour edge e, positive inside.
+double edge_distance(const Contour& c, std::uint32_t e, Vec2 p);
+// The ridge point of a gable on edge e, see roof.cc.
+std::optional<GableEnd> gable_apex(const Contour& c, std::uint32_t e);
 
 bool plan_roof(const Polygon& footprint, const RoofSpec& spec, RoofPlan& plan);
 // Signed distance from the shed's low edge line, positive inside.

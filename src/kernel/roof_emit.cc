@@ -101,6 +101,34 @@ class RoofEmitter {
       case RoofType::kHoledMansard:
         emit_mansard(plan_, low_z_, low_z_, eave_, mesh_, face_id_);
         return;
+      case RoofType::kGambrel:
+      case RoofType::kHalfHipped:
+      case RoofType::kSaltbox:
+      case RoofType::kRound:
+      case RoofType::kDome:
+      case RoofType::kOnion:
+        emit_custom();
+        return;
+    }
+  }
+
+  // The S3DB shapes, planned as faces over the eave vertices (never overhanging).
+  void emit_custom() {
+    const CustomRoof& roof = plan_.custom;
+    const std::uint32_t n = plan_.footprint.size();
+    std::vector<std::uint32_t> ids(eave_.begin(), eave_.end());
+    for (const Vec3& p : roof.points) ids.push_back(mesh_.add_vertex({p.x, p.y, low_z_ + p.z}));
+    std::vector<std::uint32_t> loop;
+    for (std::size_t f = 0; f + 1 < roof.face_offsets.size(); ++f) {
+      loop.clear();
+      for (std::uint32_t k = roof.face_offsets[f]; k < roof.face_offsets[f + 1]; ++k) {
+        loop.push_back(ids[roof.face_indices[k]]);
+      }
+      mesh_.add_face(loop, {SemanticClass::kRoofSurface, 0, face_id_++});
+    }
+    for (std::uint32_t e = 0; e < n && e < roof.caps.size(); ++e) {
+      for (std::uint32_t k : roof.caps[e]) build_.cap_indices.push_back(ids[k]);
+      build_.cap_offsets[e + 1] = static_cast<std::uint32_t>(roof.caps[e].size());
     }
   }
 

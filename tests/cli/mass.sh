@@ -77,7 +77,7 @@ grep -q "insula 0" "$tmp/out.txt" || fail "--version prints the version"
 expect_exit 2 "no verb" "$insula"
 expect_exit 2 "unknown flag" "$insula" mass "$example" -o "$tmp/x.obj" --no-such-flag
 expect_exit 2 "unknown output format" "$insula" mass "$example" -o "$tmp/x.dwg"
-expect_exit 2 "bad roof" "$insula" mass "$example" -o "$tmp/x.obj" --roof dome
+expect_exit 2 "bad roof" "$insula" mass "$example" -o "$tmp/x.obj" --roof banana
 expect_exit 1 "missing input" "$insula" mass "$tmp/nope.geojson" -o "$tmp/x.obj"
 grep -q "nope.geojson" "$tmp/err.txt" || fail "missing input names the file"
 expect_exit 1 "output into a missing directory" "$insula" mass "$example" -o "$tmp/x.obj" \

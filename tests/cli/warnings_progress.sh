@@ -35,7 +35,7 @@ expect_exit 0 "mass --quiet" "$insula" mass "$tmp/noheights.geojson" -o "$tmp/m.
 [ -s "$tmp/err.txt" ] && { fail "mass --quiet printed"; cat "$tmp/err.txt"; }
 
 # Unknown roofs: another code, capped on its own.
-lots 25 '"height": 5, "roof": "dome"' >"$tmp/domes.geojson"
+lots 25 '"height": 5, "roof": "banana"' >"$tmp/domes.geojson"
 expect_exit 0 "mass with unknown roofs" "$insula" mass "$tmp/domes.geojson" -o "$tmp/d.glb"
 [ "$(grep -c "warning\[MAS003\]" "$tmp/err.txt")" -eq 10 ] || fail "roofs: not 10 warning lines"
 grep -qx "insula: and 15 more like it (code MAS003)" "$tmp/err.txt" || fail "roofs: no summary line"

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "footprints.h"
 #include "kernel/triangulate.h"
 
 #include <algorithm>
@@ -56,14 +57,7 @@ Polygon courtyard() {
 Polygon irregular() {
   return {{{0, 0}, {9, -1}, {14, 4}, {8, 6}, {9, 11}, {1, 9}, {3, 5}}, {}};
 }
-Polygon circle(int n, double r) {
-  Polygon p;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * kPi * i / n;
-    p.outer.push_back({r * std::cos(a), r * std::sin(a)});
-  }
-  return p;
-}
+using testing_footprints::circle;
 Polygon nearly_collinear() {
   return {{{0, 0}, {5, 1e-6}, {10, 0}, {10, 6}, {5, 6.000001}, {0, 6}}, {}};
 }

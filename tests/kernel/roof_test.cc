@@ -66,7 +66,7 @@ TEST(Roof, NamesRoundTrip) {
     EXPECT_EQ(roof_type_from_name(roof_type_name(t)), t);
   }
   EXPECT_EQ(roof_type_from_name("Compluvium"), RoofType::kHoledMansard);
-  EXPECT_FALSE(roof_type_from_name("dome").has_value());
+  EXPECT_FALSE(roof_type_from_name("cone").has_value());
 }
 
 TEST(Roof, EavesAreTheFootprintEdgesForEveryType) {
@@ -219,7 +219,9 @@ TEST(Roof, PyramidOnATFallsBackToHip) {
   const Polygon t{{{2, 0}, {4, 0}, {4, 1}, {6, 1}, {6, 5}, {0, 5}, {0, 1}, {2, 1}}, {}};
   const RoofResult r = build_roof(t, spec, 3);
   EXPECT_EQ(r.status, RoofStatus::kFallback);
-  EXPECT_EQ(r.message, "pyramid roof could not be built; hip roof instead");
+  EXPECT_EQ(r.message,
+            "pyramid roof could not be built; hip roof instead (roof faces: the footprint is not "
+            "convex)");
   EXPECT_FALSE(r.mesh.empty());
 }
 

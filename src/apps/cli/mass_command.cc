@@ -33,8 +33,9 @@
 namespace insula::cli {
 namespace {
 
-const std::vector<std::string> kRoofNames = {"flat",    "shed",    "gable",        "hip",
-                                             "pyramid", "mansard", "holed_mansard"};
+const std::vector<std::string> kRoofNames = {
+    "flat",    "shed",        "gable",   "hip",   "pyramid", "mansard", "holed_mansard",
+    "gambrel", "half_hipped", "saltbox", "round", "dome",    "onion"};
 
 struct BuiltBuilding {
   shape::Building building;

@@ -1,0 +1,364 @@
+// The remaining shapes of OpenStreetMap's Simple 3D Buildings (docs/kernel-roofs.md, "S3DB
+// shapes"), planned as explicit faces: on a quadrilateral, two-sided profiles across a ridge
+// (gambrel, saltbox, round) and the half-hipped gable; over a footprint star-shaped about its
+// centroid, a dome or an onion of scaled copies of the outline.
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include "kernel/roof_detail.h"
+
+namespace insula::kernel::roof_detail {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr std::uint32_t kQuad = 4;
+
+// f(p) = dot(g, p) + h.
+struct Linear {
+  Vec2 g;
+  double h = 0;
+  double at(Vec2 p) const { return dot(g, p) + h; }
+};
+
+Linear distance_function(const Contour& c, std::uint32_t e) {
+  const Vec2 a = c.points[e];
+  const Vec2 n = perp(normalized(c.points[c.next(e)] - a));
+  return {n, -dot(n, a)};
+}
+
+// Sutherland-Hodgman: the part of `poly` where f >= 0, a point within `tolerance` of the line
+// counting as on it. Without the tolerance a ridge that runs along a cut line (a rectangle's
+// crest, where both are the same line up to rounding) would be cut at a random point, which
+// the neighbouring face does not have.
+std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Linear& f, double tolerance) {
+  std::vector<Vec2> out;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Vec2 p = poly[i];
+    const Vec2 q = poly[(i + 1) % poly.size()];
+    const double fp = f.at(p), fq = f.at(q);
+    const bool p_in = fp >= -tolerance, q_in = fq >= -tolerance;
+    if (p_in) out.push_back(p);
+    if (p_in != q_in && std::abs(fp) > tolerance && std::abs(fq) > tolerance) {
+      out.push_back(p + (q - p) * (fp / (fp - fq)));
+    }
+  }
+  return out;
+}
+
+// A roof's points, merged within a tolerance so faces clipped separately share their vertices.
+class PointSet {
+ public:
+  PointSet(const Contour& c, double tolerance) : tolerance_(tolerance), count_(c.size()) {
+    for (const Vec2& p : c.points) points_.push_back(lift(p, 0));
+  }
+  std::uint32_t id(Vec3 p) {
+    for (std::uint32_t k = 0; k < points_.size(); ++k) {
+      if (length(drop(points_[k]) - drop(p)) <= tolerance_) return k;
+    }
+    points_.push_back(p);
+    return static_cast<std::uint32_t>(points_.size() - 1);
+  }
+  void move_to(CustomRoof& roof) const {
+    roof.points.assign(points_.begin() + count_, points_.end());
+  }
+  std::span<const Vec3> all() const { return points_; }
+
+ private:
+  double tolerance_;
+  std::uint32_t count_;
+  std::vector<Vec3> points_;
+};
+
+double extent(const Contour& c) {
+  Vec2 lo = c.points[0], hi = lo;
+  for (const Vec2& p : c.points) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  return length(hi - lo);
+}
+
+void add_face(CustomRoof& roof, std::vector<std::uint32_t> loop) {
+  loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
+  while (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
+  if (loop.size() < 3) return;
+  roof.face_indices.insert(roof.face_indices.end(), loop.begin(), loop.end());
+  roof.face_offsets.push_back(static_cast<std::uint32_t>(roof.face_indices.size()));
+}
+
+// The wall above end edge e is closed by every roof point on it, from its end back to its start.
+std::vector<std::uint32_t> cap_on_edge(const Contour& c, std::uint32_t e,
+                                       std::span<const Vec3> points, double tolerance) {
+  const Vec2 a = c.points[e];
+  const Vec2 d = c.points[c.next(e)] - a;
+  const Linear f = distance_function(c, e);
+  std::vector<std::pair<double, std::uint32_t>> on;
+  for (std::uint32_t k = c.size(); k < points.size(); ++k) {
+    const Vec2 p = drop(points[k]);
+    const double s = dot(p - a, d) / dot(d, d);
+    if (std::abs(f.at(p)) <= tolerance && s > 0 && s < 1) on.emplace_back(-s, k);
+  }
+  std::sort(on.begin(), on.end());
+  std::vector<std::uint32_t> cap;
+  for (const auto& [s, k] : on) cap.push_back(k);
+  return cap;
+}
+
+// One side of a profile roof: heights rise from the slope edge as z = z_k + slope_k * (d - t_k)
+// on [t_k, t_{k+1}), d the distance from the edge; the last piece runs on to the ridge.
+struct Piece {
+  double t = 0, z = 0, slope = 0;
+};
+
+struct QuadFrame {
+  std::uint32_t side_a = 0, side_b = 2;  // slope edges
+  double half_width = 0;                 // plan distance from a slope edge to the ridge
+};
+
+bool quad_frame(const Contour& c, const RoofSpec& spec, QuadFrame& frame) {
+  if (c.ring_starts.size() != 2 || c.size() != kQuad) return false;
+  const std::uint32_t r = quad_slope_pair(c, spec);
+  frame.side_a = r;
+  frame.side_b = r + 2;
+  const std::optional<GableEnd> end1 = gable_apex(c, r + 1);
+  const std::optional<GableEnd> end3 = gable_apex(c, (r + 3) % kQuad);
+  if (!end1 || !end3) return false;
+  frame.half_width = std::min(end1->time, end3->time);
+  return frame.half_width > 0;
+}
+
+// Faces of a two-sided profile roof: side A where ka * d_a <= kb * d_b, side B the rest.
+void profile_faces(const Contour& c, const QuadFrame& frame, const std::vector<Piece>& a,
+                   const std::vector<Piece>& b, double ka, double kb, CustomRoof& roof) {
+  const double tolerance = 1e-7 * extent(c);
+  PointSet points(c, tolerance);
+  const Linear da = distance_function(c, frame.side_a);
+  const Linear db = distance_function(c, frame.side_b);
+  const std::vector<Vec2> quad(c.points.begin(), c.points.end());
+  const auto side = [&](const Linear& mine, const Linear& other, double km, double ko,
+                        const std::vector<Piece>& profile) {
+    const Linear split{other.g * ko - mine.g * km, other.h * ko - mine.h * km};
+    const std::vector<Vec2> region = clip(quad, split, tolerance);
+    for (std::size_t k = 0; k < profile.size(); ++k) {
+      const Piece& piece = profile[k];
+      std::vector<Vec2> poly = clip(region, {mine.g, mine.h - piece.t}, tolerance);
+      if (k + 1 < profile.size()) {
+        poly = clip(poly, {-mine.g, profile[k + 1].t - mine.h}, tolerance);
+      }
+      std::vector<std::uint32_t> loop;
+      for (const Vec2& p : poly) {
+        loop.push_back(points.id(lift(p, piece.z + piece.slope * (mine.at(p) - piece.t))));
+      }
+      add_face(roof, std::move(loop));
+    }
+  };
+  side(da, db, ka, kb, a);
+  side(db, da, kb, ka, b);
+  roof.caps.assign(kQuad, {});
+  for (std::uint32_t e : {frame.side_a + 1, (frame.side_a + 3) % kQuad}) {
+    roof.caps[e] = cap_on_edge(c, e, points.all(), tolerance);
+  }
+  points.move_to(roof);
+}
+
+// Gambrel: the mansard's two slopes with gable ends. The break lies where the lower slope has
+// risen mansard_break_height, but at most 60 % of the way to the ridge.
+bool plan_gambrel(RoofPlan& plan, const RoofSpec& spec) {
+  QuadFrame frame;
+  if (!quad_frame(plan.footprint, spec, frame)) return false;
+  const double lower = std::tan(spec.mansard_pitch_deg * kPi / 180);
+  const double upper = plan.slope;
+  const double t = std::min(spec.mansard_break_height / lower, 0.6 * frame.half_width);
+  const std::vector<Piece> profile = {{0, 0, lower}, {t, t * lower, upper}};
+  profile_faces(plan.footprint, frame, profile, profile, 1, 1, plan.custom);
+  return true;
+}
+
+// Saltbox: the ridge a third of the way across, the short side twice as steep as the long one
+// (which has the pitch); both eaves at the same height. The long side faces direction_deg when
+// given, else it rises from the second slope edge.
+bool plan_saltbox(RoofPlan& plan, const RoofSpec& spec) {
+  QuadFrame frame;
+  if (!quad_frame(plan.footprint, spec, frame)) return false;
+  if (spec.direction_deg) {
+    const double a = *spec.direction_deg * kPi / 180;
+    const Vec2 downhill{std::sin(a), std::cos(a)};
+    const Contour& c = plan.footprint;
+    const auto outward = [&](std::uint32_t e) {
+      return -perp(normalized(c.points[c.next(e)] - c.points[e]));
+    };
+    if (dot(outward(frame.side_a), downhill) > dot(outward(frame.side_b), downhill)) {
+      std::swap(frame.side_a, frame.side_b);
+    }
+  }
+  const double s = plan.slope;
+  profile_faces(plan.footprint, frame, {{0, 0, 2 * s}}, {{0, 0, s}}, 2, 1, plan.custom);
+  return true;
+}
+
+// Round: a barrel vault whose cross-section is a quarter circle on each side (a half circle over
+// the width; height = half the width before RoofSpec::height scales it), in 6 planar strips per
+// side.
+bool plan_round(RoofPlan& plan, const RoofSpec& spec) {
+  QuadFrame frame;
+  if (!quad_frame(plan.footprint, spec, frame)) return false;
+  constexpr int kStrips = 6;
+  const double w = frame.half_width;
+  std::vector<Piece> profile;
+  for (int k = 0; k < kStrips; ++k) {
+    const double a0 = kPi / 2 * k / kStrips, a1 = kPi / 2 * (k + 1) / kStrips;
+    const double t0 = w * (1 - std::cos(a0)), t1 = w * (1 - std::cos(a1));
+    profile.push_back({t0, w * std::sin(a0), w * (std::sin(a1) - std::sin(a0)) / (t1 - t0)});
+  }
+  profile.push_back({w, w, 0});  // a crest where the ridge runs wider than the narrower end
+  profile_faces(plan.footprint, frame, profile, profile, 1, 1, plan.custom);
+  return true;
+}
+
+// Half-hipped: the gable's end walls stop halfway up, where a small hip at the roof's pitch
+// takes over and meets the ridge set back from the end.
+bool plan_half_hipped(RoofPlan& plan, const RoofSpec& spec) {
+  const Contour& c = plan.footprint;
+  if (c.ring_starts.size() != 2 || c.size() != kQuad) return false;
+  const std::uint32_t r = quad_slope_pair(c, spec);
+  const std::uint32_t e1 = r + 1, e3 = (r + 3) % kQuad;
+  const std::optional<GableEnd> g1 = gable_apex(c, e1);
+  const std::optional<GableEnd> g3 = gable_apex(c, e3);
+  if (!g1 || !g3) return false;
+  const Vec2 along = g3->apex - g1->apex;
+  const double ridge = length(along);
+  if (!(g1->time / 2 + g3->time / 2 < 0.9 * ridge)) return false;
+  const Linear da = distance_function(c, r);
+  const Linear db = distance_function(c, r + 2);
+  const double s = plan.slope;
+  PointSet points(c, 1e-7 * extent(c));
+  // The point of end edge e where the distance from slope edge f is tau.
+  const auto clip_point = [&](std::uint32_t e, const Linear& f, double tau) {
+    const Vec2 a = c.points[e];
+    const Vec2 b = c.points[c.next(e)];
+    const double fa = f.at(a), fb = f.at(b);
+    return points.id(lift(a + (b - a) * ((tau - fa) / (fb - fa)), tau * s));
+  };
+  const auto ridge_end = [&](const GableEnd& g, Vec2 inward) {
+    const Vec2 p = g.apex + inward * (g.time / 2 / ridge);
+    return points.id(lift(p, da.at(p) * s));
+  };
+  const std::uint32_t c1a = clip_point(e1, da, g1->time / 2);
+  const std::uint32_t c1b = clip_point(e1, db, g1->time / 2);
+  const std::uint32_t c3b = clip_point(e3, db, g3->time / 2);
+  const std::uint32_t c3a = clip_point(e3, da, g3->time / 2);
+  const std::uint32_t r1 = ridge_end(*g1, along);
+  const std::uint32_t r3 = ridge_end(*g3, -along);
+  CustomRoof& roof = plan.custom;
+  add_face(roof, {r, r + 1, c1a, r1, r3, c3a});
+  add_face(roof, {r + 2, (r + 3) % kQuad, c3b, r3, r1, c1b});
+  add_face(roof, {c1a, c1b, r1});
+  add_face(roof, {c3b, c3a, r3});
+  roof.caps.assign(kQuad, {});
+  roof.caps[e1] = {c1b, c1a};
+  roof.caps[e3] = {c3a, c3b};
+  points.move_to(roof);
+  return true;
+}
+
+// Dome and onion: copies of the outline scaled about its centroid, stacked on a profile; each
+// band between two copies is a trapezoid per edge, so planar. Defined when the centroid sees
+// every edge from its inner side (the footprint is star-shaped about it).
+bool plan_dome(RoofPlan& plan, bool onion) {
+  const Contour& c = plan.footprint;
+  if (c.ring_starts.size() != 2) return false;
+  const Vec2 center = centroid(c.polygon());
+  double nearest = 1e300;
+  for (std::uint32_t e = 0; e < c.size(); ++e) {
+    nearest = std::min(nearest, edge_distance(c, e, center));
+  }
+  if (!(nearest > 1e-3 * extent(c))) return false;
+  // (scale of the outline, height as a fraction of the top); the dome a quarter circle.
+  std::vector<std::pair<double, double>> profile;
+  if (onion) {
+    profile = {{1.1, 0.05},  {1.22, 0.13}, {1.28, 0.22}, {1.27, 0.3},  {1.18, 0.4},  {1.0, 0.49},
+               {0.75, 0.57}, {0.5, 0.64},  {0.3, 0.71},  {0.17, 0.78}, {0.09, 0.86}, {0.04, 0.93}};
+  } else {
+    constexpr int kRings = 8;
+    for (int k = 1; k < kRings; ++k) {
+      const double a = kPi / 2 * k / kRings;
+      profile.emplace_back(std::cos(a), std::sin(a));
+    }
+  }
+  // A hemisphere over a circle: the top as high as the centroid is far from the edges (an onion
+  // twice as high, its spire included).
+  const double top = nearest * (onion ? 2.0 : 1.0);
+  const std::uint32_t n = c.size();
+  CustomRoof& roof = plan.custom;
+  std::vector<std::uint32_t> below(n);
+  for (std::uint32_t k = 0; k < n; ++k) below[k] = k;
+  std::vector<std::uint32_t> ring(n);
+  for (const auto& [scale, z] : profile) {
+    for (std::uint32_t k = 0; k < n; ++k) {
+      ring[k] = n + static_cast<std::uint32_t>(roof.points.size());
+      roof.points.push_back(lift(center + (c.points[k] - center) * scale, z * top));
+    }
+    for (std::uint32_t k = 0; k < n; ++k) {
+      const std::uint32_t j = (k + 1) % n;
+      add_face(roof, {below[k], below[j], ring[j], ring[k]});
+    }
+    below = ring;
+  }
+  const std::uint32_t apex = n + static_cast<std::uint32_t>(roof.points.size());
+  roof.points.push_back(lift(center, top));
+  for (std::uint32_t k = 0; k < n; ++k) add_face(roof, {below[k], below[(k + 1) % n], apex});
+  roof.caps.assign(n, {});
+  return true;
+}
+
+}  // namespace
+
+std::uint32_t quad_slope_pair(const Contour& c, const RoofSpec& spec) {
+  const auto dir = [&](std::uint32_t e) {
+    return normalized(c.points[(e + 1) % kQuad] - c.points[e]);
+  };
+  const auto len = [&](std::uint32_t e) { return length(c.points[(e + 1) % kQuad] - c.points[e]); };
+  if (spec.direction_deg) {
+    // The ridge runs perpendicular to the downhill direction, along the slope edges.
+    const double a = *spec.direction_deg * kPi / 180;
+    const Vec2 downhill{std::sin(a), std::cos(a)};
+    const double across0 = std::abs(dot(dir(0), downhill)) + std::abs(dot(dir(2), downhill));
+    const double across1 = std::abs(dot(dir(1), downhill)) + std::abs(dot(dir(3), downhill));
+    return across0 <= across1 ? 0 : 1;
+  }
+  const double pair0 = len(0) + len(2), pair1 = len(1) + len(3);
+  const std::uint32_t along = pair0 >= pair1 ? 0 : 1;
+  switch (spec.orientation) {
+    case RidgeOrientation::kAlong:
+      return along;
+    case RidgeOrientation::kAcross:
+      return 1 - along;
+    case RidgeOrientation::kAuto:
+      break;
+  }
+  // Within 5 % of a square the first edge decides (docs/kernel-roofs.md, "Square footprints").
+  return std::abs(pair0 - pair1) <= 0.05 * std::max(pair0, pair1) ? 0 : along;
+}
+
+bool plan_custom(RoofPlan& plan, const RoofSpec& spec) {
+  plan.custom = CustomRoof();
+  switch (plan.type) {
+    case RoofType::kGambrel:
+      return plan_gambrel(plan, spec);
+    case RoofType::kSaltbox:
+      return plan_saltbox(plan, spec);
+    case RoofType::kRound:
+      return plan_round(plan, spec);
+    case RoofType::kHalfHipped:
+      return plan_half_hipped(plan, spec);
+    case RoofType::kDome:
+      return plan_dome(plan, false);
+    case RoofType::kOnion:
+      return plan_dome(plan, true);
+    default:
+      return false;
+  }
+}
+
+}  // namespace insula::kernel::roof_detail

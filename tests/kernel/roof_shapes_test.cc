@@ -1,0 +1,317 @@
+// The S3DB roof shapes (gambrel, half-hipped, saltbox, round, dome, onion), roof height, direction
+// and orientation, and roofs on posts (building=roof), checked by their geometry through
+// build_mass (docs/kernel-roofs.md, "S3DB shapes").
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "footprints.h"
+#include "kernel/mass.h"
+
+namespace insula::kernel {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kEave = 6;
+
+Polygon rectangle(double l, double w) {
+  return {{{0, 0}, {l, 0}, {l, w}, {0, w}}, {}};
+}
+using testing_footprints::circle;
+Polygon l_shape() {
+  return {{{0, 0}, {14, 0}, {14, 6}, {6, 6}, {6, 12}, {0, 12}}, {}};
+}
+Polygon u_shape() {
+  return {{{0, 0}, {18, 0}, {18, 14}, {12, 14}, {12, 6}, {6, 6}, {6, 14}, {0, 14}}, {}};
+}
+
+MassResult build(const Polygon& p, RoofType type, const MassSpec& base = {}) {
+  MassSpec spec = base;
+  spec.wall_height = kEave;
+  spec.roof = type;
+  return build_mass(p, spec);
+}
+
+void expect_closed(const MassResult& r) {
+  ASSERT_NE(r.status, MassStatus::kFailed) << r.message;
+  const MeshCheck c = check(r.mesh);
+  EXPECT_TRUE(c.closed);
+  EXPECT_TRUE(c.oriented);
+  EXPECT_GT(volume(r.mesh), 0);
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    const Vec3 n = face_normal(r.mesh, f);
+    const Vec3 p0 = r.mesh.position(r.mesh.face(f)[0]);
+    for (std::uint32_t v : r.mesh.face(f)) {
+      ASSERT_NEAR(dot(r.mesh.position(v) - p0, n), 0, 1e-7) << "face " << f << " not planar";
+    }
+  }
+}
+
+// Vertices of roof faces.
+std::vector<Vec3> roof_points(const Mesh& m) {
+  std::set<std::uint32_t> ids;
+  for (std::size_t f = 0; f < m.face_count(); ++f) {
+    if (m.tag(f).semantic != SemanticClass::kRoofSurface) continue;
+    for (std::uint32_t v : m.face(f)) ids.insert(v);
+  }
+  std::vector<Vec3> out;
+  for (std::uint32_t v : ids) out.push_back(m.position(v));
+  return out;
+}
+
+double top(const Mesh& m) {
+  double z = -1e300;
+  for (const Vec3& p : m.positions()) z = std::max(z, p.z);
+  return z;
+}
+
+// The vertices within 1 mm of the top.
+std::vector<Vec3> highest(const Mesh& m) {
+  std::vector<Vec3> out;
+  const double z = top(m);
+  for (const Vec3& p : m.positions()) {
+    if (p.z > z - 1e-3) out.push_back(p);
+  }
+  return out;
+}
+
+int count(const Mesh& m, SemanticClass semantic) {
+  int n = 0;
+  for (std::size_t f = 0; f < m.face_count(); ++f) n += m.tag(f).semantic == semantic;
+  return n;
+}
+
+TEST(RoofShapes, NamesIncludeTheS3dbSpellings) {
+  for (RoofType t : kRoofTypes) EXPECT_EQ(roof_type_from_name(roof_type_name(t)), t);
+  const std::vector<std::pair<std::string, RoofType>> s3db = {
+      {"flat", RoofType::kFlat},
+      {"skillion", RoofType::kShed},
+      {"gabled", RoofType::kGable},
+      {"half-hipped", RoofType::kHalfHipped},
+      {"hipped", RoofType::kHip},
+      {"pyramidal", RoofType::kPyramid},
+      {"gambrel", RoofType::kGambrel},
+      {"mansard", RoofType::kMansard},
+      {"dome", RoofType::kDome},
+      {"onion", RoofType::kOnion},
+      {"round", RoofType::kRound},
+      {"saltbox", RoofType::kSaltbox},
+      {"Half_Hipped", RoofType::kHalfHipped}};
+  for (const auto& [name, type] : s3db) EXPECT_EQ(roof_type_from_name(name), type) << name;
+  EXPECT_FALSE(roof_type_from_name("cone").has_value());
+}
+
+TEST(RoofShapes, GableHeightAndOrientation) {
+  MassSpec spec;
+  spec.height = 3;
+  const MassResult along = build(rectangle(10, 6), RoofType::kGable, spec);
+  expect_closed(along);
+  EXPECT_NEAR(top(along.mesh), kEave + 3, 1e-9);
+  for (const Vec3& p : highest(along.mesh)) EXPECT_NEAR(p.y, 3, 1e-9);  // ridge along x (10 m)
+  EXPECT_EQ(highest(along.mesh).size(), 2U);
+
+  spec.orientation = RidgeOrientation::kAcross;
+  const MassResult across = build(rectangle(10, 6), RoofType::kGable, spec);
+  expect_closed(across);
+  EXPECT_NEAR(top(across.mesh), kEave + 3, 1e-9);
+  for (const Vec3& p : highest(across.mesh)) EXPECT_NEAR(p.x, 5, 1e-9);  // ridge along y (6 m)
+
+  // roof:direction 0 (north-facing slope): the ridge runs east-west whatever the orientation.
+  spec.direction_deg = 0;
+  const MassResult north = build(rectangle(6, 10), RoofType::kGable, spec);
+  expect_closed(north);
+  for (const Vec3& p : highest(north.mesh)) EXPECT_NEAR(p.y, 5, 1e-9);
+}
+
+// A rectangle barely longer than wide, with overhang: the overhanging eave polygon (gable ends
+// flush) is wider than long, and its skeleton used to put the gables on the other edges, so the
+// gable fell back to hip. Quadrilaterals now take the ridge from the footprint.
+TEST(RoofShapes, OverhangDoesNotTurnOrLoseTheGable) {
+  const double a = 0.4;
+  const Polygon p{{{0, 0},
+                   {6.5 * std::cos(a), 6.5 * std::sin(a)},
+                   {6.5 * std::cos(a) - 6 * std::sin(a), 6.5 * std::sin(a) + 6 * std::cos(a)},
+                   {-6 * std::sin(a), 6 * std::cos(a)}},
+                  {}};
+  MassSpec spec;
+  spec.overhang = 0.5;
+  const MassResult r = build(p, RoofType::kGable, spec);
+  expect_closed(r);
+  EXPECT_EQ(r.status, MassStatus::kOk) << r.message;
+  EXPECT_EQ(r.roof, RoofType::kGable);
+  // The ridge joins the midpoints of the 6 m ends (lifted), parallel to the 6.5 m sides.
+  const std::vector<Vec3> ridge = highest(r.mesh);
+  ASSERT_EQ(ridge.size(), 2U);
+  EXPECT_NEAR(length(drop(ridge[0]) - drop(ridge[1])), 6.5, 1e-9);
+}
+
+TEST(RoofShapes, HeightOverridesThePitch) {
+  for (RoofType t : {RoofType::kHip, RoofType::kPyramid, RoofType::kMansard, RoofType::kGambrel,
+                     RoofType::kHalfHipped, RoofType::kSaltbox, RoofType::kRound, RoofType::kDome,
+                     RoofType::kOnion, RoofType::kShed}) {
+    MassSpec spec;
+    spec.height = 4.5;
+    const MassResult r = build(rectangle(12, 8), t, spec);
+    SCOPED_TRACE(std::string(roof_type_name(t)));
+    expect_closed(r);
+    EXPECT_EQ(r.roof, t);
+    EXPECT_NEAR(top(r.mesh), kEave + 4.5, 1e-9);
+  }
+}
+
+TEST(RoofShapes, ShedFallsTowardItsDirection) {
+  MassSpec spec;
+  spec.direction_deg = 90;  // looks east: low edge east, high edge west
+  spec.height = 2;
+  const MassResult r = build(rectangle(10, 6), RoofType::kShed, spec);
+  expect_closed(r);
+  for (const Vec3& p : roof_points(r.mesh)) EXPECT_NEAR(p.z, kEave + 2 * (10 - p.x) / 10, 1e-9);
+  // Any footprint: on the L, north-facing, the southern edge is the high one.
+  spec.direction_deg = 0;
+  const MassResult l = build(l_shape(), RoofType::kShed, spec);
+  expect_closed(l);
+  for (const Vec3& p : roof_points(l.mesh)) EXPECT_NEAR(p.z, kEave + 2 * (12 - p.y) / 12, 1e-9);
+}
+
+TEST(RoofShapes, GambrelHasTwoSlopesPerSideAndGableEnds) {
+  const MassResult r = build(rectangle(12, 8), RoofType::kGambrel);
+  expect_closed(r);
+  EXPECT_EQ(r.status, MassStatus::kOk);
+  EXPECT_EQ(count(r.mesh, SemanticClass::kRoofSurface), 4);
+  EXPECT_EQ(count(r.mesh, SemanticClass::kWallSurface), 4);
+  // Lower slope 70 degrees up to the 2.5 m break, upper 30 degrees to the ridge at y = 4.
+  const double t = 2.5 / std::tan(70 * kPi / 180);
+  const double ridge = kEave + 2.5 + (4 - t) * std::tan(30 * kPi / 180);
+  std::set<long> levels;
+  for (const Vec3& p : roof_points(r.mesh)) levels.insert(std::lround((p.z - kEave) * 1000));
+  EXPECT_EQ(levels, (std::set<long>{0, 2500, std::lround((ridge - kEave) * 1000)}));
+  for (const Vec3& p : highest(r.mesh)) EXPECT_NEAR(p.y, 4, 1e-9);
+}
+
+TEST(RoofShapes, HalfHippedClipsTheGableHalfwayUp) {
+  const MassResult r = build(rectangle(12, 8), RoofType::kHalfHipped);
+  expect_closed(r);
+  EXPECT_EQ(count(r.mesh, SemanticClass::kRoofSurface), 4);  // 2 slopes, 2 small hips
+  const double h = 4 * std::tan(30 * kPi / 180);
+  EXPECT_NEAR(top(r.mesh), kEave + h, 1e-9);
+  // The ridge is set back from each end by the hip's run (2 m at the same pitch).
+  for (const Vec3& p : highest(r.mesh))
+    EXPECT_TRUE(std::abs(p.x - 2) < 1e-9 || std::abs(p.x - 10) < 1e-9);
+  // Each end wall is a pentagon up to half the roof height.
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    if (r.mesh.tag(f).semantic != SemanticClass::kWallSurface || r.mesh.face(f).size() != 6) {
+      continue;
+    }
+    double z = 0;
+    for (std::uint32_t v : r.mesh.face(f)) z = std::max(z, r.mesh.position(v).z);
+    EXPECT_NEAR(z, kEave + h / 2, 1e-9);
+  }
+}
+
+TEST(RoofShapes, SaltboxHasItsRidgeAThirdAcross) {
+  const MassResult r = build(rectangle(12, 9), RoofType::kSaltbox);
+  expect_closed(r);
+  EXPECT_EQ(count(r.mesh, SemanticClass::kRoofSurface), 2);
+  // The long side (6 m) at the pitch; the short side (3 m) twice as steep.
+  EXPECT_NEAR(top(r.mesh), kEave + 6 * std::tan(30 * kPi / 180), 1e-9);
+  for (const Vec3& p : highest(r.mesh))
+    EXPECT_TRUE(std::abs(p.y - 3) < 1e-9 || std::abs(p.y - 6) < 1e-9);
+  // With a direction, the long side faces it: south-facing puts the ridge 3 m from the north.
+  MassSpec spec;
+  spec.direction_deg = 180;
+  const MassResult south = build(rectangle(12, 9), RoofType::kSaltbox, spec);
+  expect_closed(south);
+  for (const Vec3& p : highest(south.mesh)) EXPECT_NEAR(p.y, 6, 1e-9);
+}
+
+TEST(RoofShapes, RoundIsAHalfCylinder) {
+  const MassResult r = build(rectangle(12, 8), RoofType::kRound);
+  expect_closed(r);
+  EXPECT_GE(count(r.mesh, SemanticClass::kRoofSurface), 12);
+  // Every roof vertex lies on the circle of radius 4 over the ridge line y = 4.
+  for (const Vec3& p : roof_points(r.mesh)) {
+    EXPECT_NEAR(std::hypot(p.y - 4, p.z - kEave), 4, 1e-9);
+  }
+  EXPECT_NEAR(top(r.mesh), kEave + 4, 1e-9);
+}
+
+TEST(RoofShapes, DomeOverACircleIsAHemisphere) {
+  const MassResult r = build(circle(48, 5), RoofType::kDome);
+  expect_closed(r);
+  for (const Vec3& p : roof_points(r.mesh)) {
+    const double radial = std::hypot(p.x, p.y);
+    // The rings scale the 48-gon's corners (radius 5), the top is its inradius: within 0.6 %.
+    EXPECT_NEAR(std::hypot(radial, p.z - kEave), 5, 0.03);
+  }
+  EXPECT_NEAR(top(r.mesh), kEave + 5 * std::cos(kPi / 48), 1e-6);
+  // Cylinder plus hemisphere, both of the inscribed 48-gon; the 8 rings cost a few percent.
+  const double rr = 5 * std::cos(kPi / 48);
+  const double expected = kPi * rr * rr * kEave + 2.0 / 3 * kPi * rr * rr * rr;
+  EXPECT_NEAR(volume(r.mesh), expected, 0.03 * expected);
+}
+
+TEST(RoofShapes, OnionBulgesBeyondTheWalls) {
+  const MassResult r = build(circle(32, 4), RoofType::kOnion);
+  expect_closed(r);
+  double widest = 0;
+  for (const Vec3& p : roof_points(r.mesh)) widest = std::max(widest, std::hypot(p.x, p.y));
+  EXPECT_GT(widest, 4 * 1.2);
+  EXPECT_NEAR(top(r.mesh), kEave + 2 * 4 * std::cos(kPi / 32), 1e-6);
+}
+
+TEST(RoofShapes, UndefinedFootprintsFallBackWithAMessage) {
+  const MassResult gambrel = build(l_shape(), RoofType::kGambrel);
+  expect_closed(gambrel);
+  EXPECT_EQ(gambrel.status, MassStatus::kFallback);
+  EXPECT_EQ(gambrel.roof, RoofType::kMansard);
+  EXPECT_EQ(gambrel.message,
+            "gambrel roof could not be built; mansard roof instead (roof faces: the footprint is "
+            "not a quadrilateral with two opposite ends)");
+  for (RoofType t : {RoofType::kRound, RoofType::kSaltbox, RoofType::kHalfHipped}) {
+    const MassResult r = build(l_shape(), t);
+    expect_closed(r);
+    EXPECT_EQ(r.roof, RoofType::kGable);
+    EXPECT_EQ(r.status, MassStatus::kFallback);
+  }
+  const MassResult dome = build(u_shape(), RoofType::kDome);
+  expect_closed(dome);
+  EXPECT_EQ(dome.roof, RoofType::kHip);
+  EXPECT_NE(dome.message.find("not star-shaped"), std::string::npos) << dome.message;
+}
+
+TEST(RoofShapes, RoofOnPostsHasNoWalls) {
+  for (RoofType t : kRoofTypes) {
+    MassSpec spec;
+    spec.walls = false;
+    const MassResult r = build(rectangle(10, 6), t, spec);
+    SCOPED_TRACE(std::string(roof_type_name(t)));
+    ASSERT_NE(r.status, MassStatus::kFailed) << r.message;
+    const MeshCheck c = check(r.mesh);
+    EXPECT_TRUE(c.closed);
+    EXPECT_TRUE(c.oriented);
+    EXPECT_EQ(c.components, 5U);  // the roof and 4 posts
+    EXPECT_EQ(count(r.mesh, SemanticClass::kWallSurface), 0);
+    EXPECT_GT(volume(r.mesh), 0);
+    // Every post stands on the ground and reaches the roof's underside.
+    int on_ground = 0;
+    for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+      if (r.mesh.tag(f).semantic != SemanticClass::kGroundSurface) continue;
+      ++on_ground;
+      for (std::uint32_t v : r.mesh.face(f)) EXPECT_NEAR(r.mesh.position(v).z, 0, 1e-12);
+    }
+    EXPECT_EQ(on_ground, 4);
+  }
+  // A gable on posts: the slab's underside at the eave, the posts 0.25 m square up to it.
+  MassSpec spec;
+  spec.walls = false;
+  const MassResult gable = build(rectangle(10, 6), RoofType::kGable, spec);
+  const double roof_volume = 10 * 6 * 3 * std::tan(30 * kPi / 180) / 2;
+  EXPECT_NEAR(volume(gable.mesh), roof_volume + 4 * 0.25 * 0.25 * kEave, 1e-9);
+}
+
+}  // namespace
+}  // namespace insula::kernel
