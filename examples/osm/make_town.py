@@ -16,7 +16,7 @@ def rot(pts, cx, cy, deg):
     a = math.radians(deg); c, s = math.cos(a), math.sin(a)
     return [(cx + (x - cx) * c - (y - cy) * s, cy + (x - cx) * s + (y - cy) * c) for x, y in pts]
 # A church: the outline is replaced by its parts (nave, tower with a spire-like pyramid, apse).
-way(rect(0, 0, 34, 14), {"building": "church", "name": "St. Example", "height": "48"})
+way(rect(-7, 0, 41, 14), {"building": "church", "name": "St. Example", "height": "48"})
 way(rect(0, 0, 28, 14), {"building:part": "yes", "height": "17", "roof:shape": "gabled",
                           "roof:height": "7", "building:colour": "#efe8d8", "roof:colour": "#7a4030"})
 way(rect(28, 3, 6, 8), {"building:part": "yes", "height": "12", "roof:shape": "hipped",
@@ -51,7 +51,7 @@ way(rect(126, 15, 10, 5), {"building:part": "yes", "min_height": "6", "height": 
                             "building:colour": "#9aa0a6"})
 # A carport: a roof on posts.
 way(rect(78, -30, 6, 5), {"building": "roof", "height": "3", "roof:shape": "skillion",
-                           "roof:direction": "E"})
+                           "roof:height": "0.6", "roof:direction": "E"})
 # A rotated house with a round (barrel) roof and one with an onion on a tower.
 way(rot(rect(90, -34, 8, 14), 94, -27, 11), {"building": "yes", "height": "8", "roof:shape": "round",
                                               "roof:height": "3"})

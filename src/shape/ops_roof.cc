@@ -49,6 +49,15 @@ OpResult roof(ShapeTree& tree, ShapeId id, const kernel::RoofSpec& spec, const R
       built.status == kernel::RoofStatus::kFallback ? std::move(built.message) : std::string());
 }
 
+// Every kernel roof type by name, in the kernel's order.
+std::vector<std::string> roof_type_names() {
+  std::vector<std::string> names;
+  for (const kernel::RoofType type : kernel::kRoofTypes) {
+    names.emplace_back(kernel::roof_type_name(type));
+  }
+  return names;
+}
+
 std::vector<Operation> roof_operations() {
   std::vector<Operation> ops;
   ops.push_back(
@@ -59,7 +68,7 @@ std::vector<Operation> roof_operations() {
          ParamType::kEnum,
          "roof type",
          ArgValue{std::string("hip")},
-         {"flat", "shed", "gable", "hip", "pyramid", "mansard", "holed_mansard"},
+         roof_type_names(),
          {},
          {}},
         {"pitch", ParamType::kNumber, "slope (degrees)", ArgValue{30.0}, {}, 0.0, 89.0},

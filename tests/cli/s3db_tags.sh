@@ -32,7 +32,8 @@ function zs(id) {
   for (const g of o.geometry || []) {
     const surfaces = g.semantics ? g.semantics.surfaces : [];
     g.boundaries[0].forEach((face, f) => {
-      const kind = surfaces[g.semantics.values[0][f]].type;
+      const value = g.type === "Solid" ? g.semantics.values[0][f] : g.semantics.values[f];
+      const kind = value === null ? "" : surfaces[value].type;  // posts have no class
       if (kind === "RoofSurface") out.roof++;
       if (kind === "WallSurface") out.walls++;
       for (const ring of face) for (const v of ring) {
@@ -73,6 +74,10 @@ check(towerId && near(zs(towerId).min, 10) && near(zs(towerId).max, 30), "tower 
 // A part outside every outline is a building of its own, 5 m above the ground.
 const bridge = zs("bridge");
 check(near(bridge.min, 5) && near(bridge.max, 8), "bridge: 5..8 m, got " + bridge.min + ".." + bridge.max);
+// building=roof: a roof on posts, no walls, standing on the ground.
+const carport = zs("carport");
+check(carport.walls === 0 && carport.roof > 0 && near(carport.min, 0) && near(carport.max, 3),
+      "carport: roof on posts, no walls, 0..3 m: " + JSON.stringify({walls: carport.walls, min: carport.min, max: carport.max}));
 // 40 ft.
 check(near(zs("feet").max, 12.192), "feet: 12.192 m");
 // Registers: --height-attr hoehe is the wall height, --levels-attr Floors x 3 m.
@@ -94,5 +99,22 @@ if (problems.length) { console.log(problems.join("\n")); process.exit(1); }
 # Colours become materials: the wall of "gabled" is sienna #a0522d (linear 0.3515 0.0844 0.0273).
 grep -A3 "newmtl osm-_a0522d" "$tmp/t.mtl" | grep -q "Kd 0.351" || fail "building:colour into the MTL"
 grep -q "newmtl osm-darkred" "$tmp/t.mtl" || fail "roof:colour into the MTL"
+
+# The OpenStreetMap example, read directly: every building closed, the church's outline replaced by
+# its three parts, every S3DB roof shape built as tagged.
+expect_exit 0 "the OSM example" "$insula" mass "$root/examples/osm/town.osm" -o "$tmp/town.glb" \
+  -o "$tmp/town.city.json" --report "$tmp/town.json" --report-buildings --quiet
+validate_gltf "glTF validator (OSM example)" "$tmp/town.glb"
+validate_cityjson "CityJSON schema (OSM example)" "$tmp/town.city.json"
+node -e '
+const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+const roofs = new Set();
+for (const b of r.buildings_made) for (const p of b.parts || [b]) roofs.add(p.roof);
+const want = ["gable", "hip", "pyramid", "half_hipped", "gambrel", "saltbox", "mansard", "dome",
+              "round", "onion", "shed", "flat"];
+const church = r.buildings_made.find((b) => b.id === "way/2001");
+const ok = r.buildings === 15 && r.watertight === 15 && r.failed === 0 && church.parts.length === 3 &&
+           want.every((w) => roofs.has(w)) && Object.keys(r.warning_counts).length === 0;
+if (!ok) { console.log(JSON.stringify(r)); process.exit(1); }' "$tmp/town.json" || fail "OSM example report"
 
 finish s3db_tags

@@ -168,8 +168,9 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
       ->required();
   auto* roof =
       mass->add_option("--roof", options.roof,
-                       "roof type: flat, shed, gable, hip, pyramid, mansard, holed_mansard "
-                       "(default hip; else the feature's 'roof' property)")
+                       "roof type: flat, shed, gable, hip, pyramid, mansard, holed_mansard, "
+                       "gambrel, half_hipped, saltbox, round, dome, onion (default: hip; "
+                       "OpenStreetMap features: roof:shape, else flat; others: their 'roof')")
           ->check(CLI::IsMember(kRoofNames));
   auto* pitch = mass->add_option("--pitch", options.pitch_deg,
                                  "roof pitch in degrees (default 30; else the feature's 'pitch')")

@@ -4,7 +4,6 @@
 #include <cctype>
 #include <cmath>
 #include <map>
-#include <numbers>
 
 #include "apps/cli/mass_command.h"
 #include "kernel/polygon_overlaps.h"
@@ -54,14 +53,13 @@ kernel::MassSpec mass_spec(const MassOptions& options, const io::BuildingForm& f
     warnings.push_back({"MAS003", feature_name(footprint) + ": roof '" + form.roof +
                                       "' cannot be built; using hip"});
   }
-  // The roof's rise as the data gives it, as a pitch over this footprint.
-  if (form.roof_height && spec.roof != kernel::RoofType::kFlat) {
-    const double rise_at_45 = rise_over(footprint)(form.roof, 45.0);
-    if (rise_at_45 > 0) {
-      spec.pitch_deg = std::clamp(
-          std::atan(*form.roof_height / rise_at_45) * 180.0 / std::numbers::pi, 1.0, 85.0);
-    }
-  }
+  spec.height = form.roof_height;
+  spec.direction_deg = form.direction_deg;
+  spec.orientation =
+      form.orientation == io::RoofOrientation::kAlong    ? kernel::RidgeOrientation::kAlong
+      : form.orientation == io::RoofOrientation::kAcross ? kernel::RidgeOrientation::kAcross
+                                                         : kernel::RidgeOrientation::kAuto;
+  spec.walls = form.walls;
   return spec;
 }
 
