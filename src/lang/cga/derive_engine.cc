@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -118,6 +119,19 @@ std::string Engine::occlusion(const std::string& /*what*/, Range /*range*/) {
   return f <= 1e-6 ? "none" : f >= 1 - 1e-6 ? "full" : "part";
 }
 
+namespace {
+
+std::optional<Value> number_from_text(const std::string& text) {
+  double number = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
+  if (error != std::errc{} || end != text.data() + text.size() || !std::isfinite(number)) {
+    return std::nullopt;
+  }
+  return Value{number};
+}
+
+}  // namespace
+
 Value Engine::lot_value(std::uint32_t attr, Range range) {
   if (status_[attr] == 2) return values_[attr];
   const CAttr& a = program_.attrs[attr];
@@ -138,11 +152,19 @@ Value Engine::lot_value(std::uint32_t attr, Range range) {
       found = true;
     }
   }
-  if (!found && a.value != kNoExpr) {
+  if (a.value != kNoExpr && (!found || std::holds_alternative<std::string>(v))) {
     State* saved = cur_;
     cur_ = &start_state_;
-    v = evaluate(program_, a.value, *this);
+    const Value fallback = evaluate(program_, a.value, *this);
     cur_ = saved;
+    if (!found) {
+      v = fallback;
+    } else if (std::holds_alternative<double>(fallback)) {
+      // OpenStreetMap tags and many registers give numbers as text ("12"): an attr declared
+      // with a number takes such a text as that number (CityEngine converts object attributes
+      // to the rule attribute's type too); other text stays text and fails where it is used.
+      v = number_from_text(std::get<std::string>(v)).value_or(v);
+    }
   }
   values_[attr] = v;
   status_[attr] = 2;

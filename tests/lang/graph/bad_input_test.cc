@@ -93,7 +93,8 @@ const std::map<std::string, std::string>& expected() {
        "negative_seed.graph.json:1:64: error[G002]: field 'seed' must be an integer >= 0"},
       {"not_a_choice.graph",
        "not_a_choice.graph.json:4:63: error[G025]: shape.roof: parameter 'type' must be one of "
-       "flat, shed, gable, hip, pyramid, mansard, holed_mansard; got 'dome'"},
+       "flat, shed, gable, hip, pyramid, mansard, holed_mansard, gambrel, half_hipped, saltbox, "
+       "round, dome, onion; got 'bana'"},
       {"out_of_range.graph",
        "out_of_range.graph.json:4:68: error[G025]: shape.extrude: parameter 'height' must be >= "
        "0; got -3"},
