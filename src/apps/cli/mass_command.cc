@@ -233,6 +233,8 @@ int run_mass(const MassOptions& options) {
   if (!set) return kExitInput;
   report.stage("read", read_clock.seconds());
   report.invalid = set->skipped_invalid;
+  report.invalid_by_code = set->skipped_by_code;
+  report.repairs = set->repairs;
   report.crs = set->crs;
   report.source_crs = set->source_crs;
 

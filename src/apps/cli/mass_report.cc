@@ -60,6 +60,8 @@ std::string MassReport::json() const {
   out["warning_counts"] = warning_counts;
   out["failed"] = failed;
   out["invalid"] = invalid;
+  out["invalid_by_code"] = invalid_by_code;
+  out["repairs"] = repairs;
   out["overlaps"] = overlaps;
   if (largest_overlap) {
     out["largest_overlap"] = {{"first", largest_overlap->first},
