@@ -414,7 +414,7 @@ void FootprintBuilder::note_repair(std::size_t index, std::size_t p, const char*
   std::string text = polygon_label(index, p) + ": " + message;
   if (count > 1) text += " (and " + std::to_string(count - 1) + " more like it)";
   std::vector<std::string> notes = local_note();
-  notes.push_back("later repairs of this kind are counted, not listed (FootprintSet::repairs)");
+  notes.push_back("later repairs of this kind are counted, not listed (the report's \"repairs\")");
   feature_issue(index, false, code, text, locate(index, place), std::move(notes));
 }
 
