@@ -25,6 +25,7 @@
 
 #include "gltf_read.h"
 #include "io/gltf_writer.h"
+#include "io/obj_writer.h"
 #include "kernel/mass.h"
 
 namespace insula::io {
@@ -182,6 +183,126 @@ TEST(GltfShell, RandomConvexAndConcaveFootprintsStayClosed) {
   }
   for (RoofType roof : {RoofType::kHip, RoofType::kGable, RoofType::kMansard}) {
     expect_closed_shells(mass_scene(footprints, roof), std::string(kernel::roof_type_name(roof)));
+  }
+}
+
+// Issue 19 item 6 through the writers: rotated rectangles and near-rectangles rounded to
+// millimetres, and turned L, T and U shapes, with every roof type and as roofs on posts, are
+// closed, consistently oriented shells in the GLB (float32) and in the OBJ (6 decimals). The
+// kernel's own sweep (tests/kernel/roof_sweep_test.cc) runs 10,000 footprints in doubles.
+Polygon turned(const std::vector<Vec2>& corners, double angle, Vec2 at, std::mt19937& rng,
+               double jitter) {
+  std::uniform_real_distribution<double> shake(-jitter, jitter);
+  Polygon p;
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (const Vec2& q : corners) {
+    const double x = q.x + shake(rng), y = q.y + shake(rng);
+    p.outer.push_back({std::round((at.x + c * x - s * y) * 1000) / 1000,
+                       std::round((at.y + s * x + c * y) * 1000) / 1000});
+  }
+  return p;
+}
+
+std::vector<Polygon> surveyed_footprints() {
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<Polygon> out;
+  for (int i = 0; i < 400; ++i) {
+    const double w = 6 + 24 * unit(rng), d = 5 + 15 * unit(rng);
+    const Vec2 at = site(out.size());
+    out.push_back(turned({{0, 0}, {w, 0}, {w, d}, {0, d}}, 2 * kPi * unit(rng),
+                         {at.x + 4100, at.y - 2700}, rng, i % 2 == 0 ? 0.0 : 0.03));
+  }
+  for (int i = 0; i < 120; ++i) {
+    const double w = 12 + 10 * unit(rng), d = 10 + 8 * unit(rng);
+    const std::vector<std::vector<Vec2>> shapes = {
+        {{0, 0}, {w, 0}, {w, d * 0.45}, {w * 0.4, d * 0.45}, {w * 0.4, d}, {0, d}},
+        {{w * 0.35, 0},
+         {w * 0.65, 0},
+         {w * 0.65, d * 0.6},
+         {w, d * 0.6},
+         {w, d},
+         {0, d},
+         {0, d * 0.6},
+         {w * 0.35, d * 0.6}},
+        {{0, 0},
+         {w, 0},
+         {w, d},
+         {w * 0.7, d},
+         {w * 0.7, d * 0.4},
+         {w * 0.3, d * 0.4},
+         {w * 0.3, d},
+         {0, d}}};
+    const Vec2 at = site(out.size());
+    out.push_back(turned(shapes[static_cast<std::size_t>(i % 3)], 2 * kPi * unit(rng),
+                         {at.x + 4100, at.y - 2700}, rng, 0.0));
+  }
+  return out;
+}
+
+// Each OBJ object (`o`) welded by its printed coordinates: every directed edge of its faces
+// has exactly one partner running the other way.
+std::size_t obj_unpaired_edges(const std::string& obj) {
+  std::vector<std::string> vertices;
+  std::map<std::string, std::uint32_t> ids;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  std::size_t unpaired = 0;
+  const auto close_object = [&]() {
+    for (const auto& [edge, count] : directed) {
+      const auto reverse = directed.find({edge.second, edge.first});
+      if (count != 1 || reverse == directed.end() || reverse->second != 1) ++unpaired;
+    }
+    directed.clear();
+  };
+  std::size_t start = 0;
+  while (start < obj.size()) {
+    const std::size_t end = std::min(obj.find('\n', start), obj.size());
+    const std::string line = obj.substr(start, end - start);
+    start = end + 1;
+    if (line.rfind("v ", 0) == 0) {
+      vertices.push_back(line.substr(2));
+    } else if (line.rfind("o ", 0) == 0) {
+      close_object();
+    } else if (line.rfind("f ", 0) == 0) {
+      std::vector<std::uint32_t> loop;
+      std::size_t at = 2;
+      while (at < line.size()) {
+        const std::size_t next = std::min(line.find(' ', at), line.size());
+        const std::string& text = vertices[std::stoul(line.substr(at, next - at)) - 1];
+        loop.push_back(ids.emplace(text, static_cast<std::uint32_t>(ids.size())).first->second);
+        at = next + 1;
+      }
+      for (std::size_t k = 0; k < loop.size(); ++k)
+        ++directed[{loop[k], loop[(k + 1) % loop.size()]}];
+    }
+  }
+  close_object();
+  return unpaired;
+}
+
+TEST(GltfShell, SurveyedRectanglesAndTurnedLTUAreClosedInGlbAndObjForEveryRoof) {
+  const std::vector<Polygon> footprints = surveyed_footprints();
+  for (const RoofType roof : kernel::kRoofTypes) {
+    for (const bool walls : {true, false}) {
+      shape::Scene scene;
+      kernel::MassSpec spec;
+      spec.roof = roof;
+      spec.wall_height = 7;
+      spec.walls = walls;
+      for (std::size_t i = 0; i < footprints.size(); ++i) {
+        kernel::MassResult r = kernel::build_mass(footprints[i], spec);
+        ASSERT_NE(r.status, kernel::MassStatus::kFailed)
+            << kernel::roof_type_name(roof) << " " << i << ": " << r.message;
+        shape::Building building;
+        building.id = std::to_string(i);
+        building.parts.push_back({"shell", shape::PartKind::kBuildingPart, {}, std::move(r.mesh)});
+        scene.buildings.push_back(std::move(building));
+      }
+      const std::string what =
+          std::string(kernel::roof_type_name(roof)) + (walls ? "" : " on posts");
+      expect_closed_shells(scene, what);
+      EXPECT_EQ(obj_unpaired_edges(obj_text(scene, "x.mtl").obj), 0U) << what;
+    }
   }
 }
 
