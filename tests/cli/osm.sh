@@ -54,6 +54,16 @@ node -e '
   if (Math.abs(top("way/101") - 12) > 1e-3 || Math.abs(top("relation/202") - 7) > 1e-3) {
     console.log(top("way/101"), top("relation/202")); process.exit(1);
   }' "$tmp/heights.city.json" || fail "build --lot osm: height=12 extrudes 12 m, no height 7 m"
+# A graph's create.lots reads the same OpenStreetMap file.
+cat >"$tmp/lots.graph.json" <<'JSON'
+{ "format": "insula-graph", "version": 1,
+  "nodes": [ { "id": "lots", "type": "create.lots" },
+             { "id": "mass", "type": "shape.extrude", "params": { "height": 6 } } ],
+  "edges": [ "lots.out -> mass.in" ] }
+JSON
+expect_exit 0 "graph build --lot osm" "$insula" build "$tmp/lots.graph.json" --lot "$tmp/b.osm.pbf" \
+  --report "$tmp/graph.json" -o "$tmp/graph.obj" -q
+grep -c "^o " "$tmp/graph.obj" | grep -qx 4 || fail "graph build --lot osm: 4 lots extruded"
 expect_exit 0 "bldg build --lot osm" "$insula" build "$root/examples/bldg/two_storey.bldg" \
   --lot "$osm/buildings.osm" -o "$tmp/bldg.obj" -q
 

@@ -11,6 +11,7 @@
 
 #include "apps/cli/asset_folders.h"
 #include "apps/cli/exit_codes.h"
+#include "apps/cli/footprint_input.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/graph_input.h"
@@ -20,6 +21,7 @@
 #include "apps/cli/obj_assets.h"
 #include "apps/cli/plasm_assets.h"
 #include "io/geojson_reader.h"
+#include "io/osm_reader.h"
 #include "lang/graph/output.h"
 
 namespace insula::cli {
@@ -48,13 +50,17 @@ struct LotFiles {
       error = "create.lots reads the --lot file, and none was given";
       return false;
     }
-    const std::optional<std::string> text = read_input_file(path);
-    if (!text) {
+    const io::GeoJsonOptions reading = geojson_options(options.crs, options.keep_going);
+    std::optional<base::Result<io::FootprintSet>> read;
+    if (io::is_osm_path(path)) {
+      read = read_osm_footprints(path, reading);
+    } else if (const std::optional<std::string> text = read_input_file(path)) {
+      read = io::read_geojson(*text, path, reading);
+    } else {
       error = path + ": " + read_failure(path);
       return false;
     }
-    base::Result<io::FootprintSet> set =
-        io::read_geojson(*text, path, geojson_options(options.crs, options.keep_going));
+    base::Result<io::FootprintSet>& set = *read;
     if (!set.ok()) {
       error = set.diagnostics().empty() ? path + ": unreadable"
                                         : base::render(set.diagnostics().front());

@@ -8,12 +8,17 @@
 
 namespace insula::cli {
 
+base::Result<io::FootprintSet> read_osm_footprints(const std::string& path,
+                                                   const io::GeoJsonOptions& options) {
+  io::OsmOptions osm;
+  static_cast<io::FootprintOptions&>(osm) = options;
+  return io::read_osm(path, osm);
+}
+
 std::optional<io::FootprintSet> read_footprints(const std::string& path,
                                                 const io::GeoJsonOptions& options, bool quiet) {
   if (io::is_osm_path(path)) {
-    io::OsmOptions osm;
-    static_cast<io::FootprintOptions&>(osm) = options;
-    base::Result<io::FootprintSet> set = io::read_osm(path, osm);
+    base::Result<io::FootprintSet> set = read_osm_footprints(path, options);
     // OSM messages name the element; only an XML syntax error has a line to quote, and only
     // then is the text read.
     const bool positioned = std::any_of(set.diagnostics().begin(), set.diagnostics().end(),

@@ -15,4 +15,9 @@ namespace insula::cli {
 std::optional<io::FootprintSet> read_footprints(const std::string& path,
                                                 const io::GeoJsonOptions& options, bool quiet);
 
+// The footprints of an OpenStreetMap file read with `options`; its diagnostics are left to the
+// caller.
+base::Result<io::FootprintSet> read_osm_footprints(const std::string& path,
+                                                   const io::GeoJsonOptions& options);
+
 }  // namespace insula::cli

@@ -217,7 +217,7 @@ constexpr Row kRows[] = {
     {"create.entity", "creation", "-> out:entity", "count:integer=1>=0", "index", "",
      "empty carriers"},
     {"create.lots", "creation", "-> out:shape", "file:string=\"\"", "index", "",
-     "one flat shape per GeoJSON polygon"},
+     "one flat shape per footprint polygon (GeoJSON, .osm, .osm.pbf)"},
     {"shape.extrude", "shape", "in:shape -> out:shape", "", "", "extrude", "registry extrude"},
     {"shape.split", "shape", "in:shape ->", "", "index count", "split sizes",
      "registry split; one port per slice"},
