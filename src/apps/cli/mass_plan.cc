@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <map>
 
 #include "apps/cli/mass_command.h"
@@ -39,20 +38,14 @@ io::RoofRise rise_over(const io::Footprint& footprint) {
   };
 }
 
-kernel::MassSpec mass_spec(const MassOptions& options, const io::BuildingForm& form,
-                           const io::Footprint& footprint, std::vector<Warning>& warnings) {
+kernel::MassSpec mass_spec(const MassOptions& options, const io::BuildingForm& form) {
   kernel::MassSpec spec;
   spec.ground_z = form.base;
   spec.wall_height = form.eave - form.base;
   spec.pitch_deg = form.pitch_deg;
   spec.overhang = options.overhang;
-  if (std::optional<kernel::RoofType> type = kernel::roof_type_from_name(form.roof)) {
-    spec.roof = *type;
-  } else {
-    spec.roof = kernel::RoofType::kHip;
-    warnings.push_back({"MAS003", feature_name(footprint) + ": roof '" + form.roof +
-                                      "' cannot be built; using hip"});
-  }
+  // read_building_form names only kernel roofs (unknown names are its MAS003 warnings).
+  spec.roof = kernel::roof_type_from_name(form.roof).value_or(kernel::RoofType::kHip);
   spec.height = form.roof_height;
   spec.direction_deg = form.direction_deg;
   spec.orientation =
@@ -159,7 +152,7 @@ MassPlan plan_mass(const MassOptions& options, const io::FootprintSet& set,
     for (io::TagWarning& w : tag_warnings) {
       warnings.push_back({w.code, feature_name(footprint) + ": " + w.text});
     }
-    entry.spec = mass_spec(options, entry.form, footprint, warnings);
+    entry.spec = mass_spec(options, entry.form);
     plan.footprints.push_back(std::move(entry));
   }
   std::vector<std::vector<kernel::Polygon>> regions;
