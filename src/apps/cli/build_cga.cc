@@ -139,7 +139,8 @@ int build_cga(const BuildOptions& options) {
 
   clock = Stopwatch();
   cga::CompileOptions compile_options;
-  compile_options.start = options.start;
+  // The checker's choice (--start, else the dialect's default start rule).
+  compile_options.start = checked.start_symbol;
   compile_options.extra_attributes = check_options.known_attributes;
   auto program = cga::compile(grammar.value(), source, compile_options);
   print_diagnostics(program.diagnostics(), source, options.quiet);

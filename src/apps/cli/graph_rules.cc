@@ -88,7 +88,7 @@ std::unique_ptr<FrontEndRules::Program> read_cga(const std::string& folder,
     return program;
   }
   cga::CompileOptions compile;
-  compile.start = request.start;
+  compile.start = checked.start_symbol;
   compile.extra_attributes = attributes;
   auto compiled = cga::compile(*program->grammar, *program->source, compile);
   if (!compiled.ok()) {

@@ -32,6 +32,11 @@ enum class ExprKind {
   kCall,    // operands[0] is the callee (identifier or member), operands[1..] the arguments
   kUnary,   // unary_op, operands[0]
   kBinary,  // binary_op, operands[0] and operands[1]
+  // CityEngine's dialect (docs/cityengine-dialect.md §2):
+  kCase,    // operands: condition, value, condition, value, ..., else value (odd count)
+  kChance,  // operands: percentage, value, percentage, value, ..., else value (odd count)
+  kArray,   // operands: the elements (`[1, 2, 3]`)
+  kIndex,   // operands[0] indexed by operands[1] (`a[i]`)
 };
 
 // kRelative is `2r` (§II: size proportional to the scope), kFloating is `~2` (a size that
@@ -68,7 +73,10 @@ enum class OpKind {
   kGeneric
 };
 
-enum class ItemKind { kSymbol, kEmpty, kPush, kPop, kOp };
+// kCase and kChance are CityEngine's conditional and stochastic successors
+// (`case c : A else : B`, `30% : A else : B`): branches whose key is the condition or the
+// percentage, the last one (`else`) without a key. They always end their sequence.
+enum class ItemKind { kSymbol, kEmpty, kPush, kPop, kOp, kCase, kChance };
 
 struct Branch;
 
@@ -78,9 +86,10 @@ struct Item {
   Range range;
   std::string name;  // symbol, or the operation name as written
   OpKind op = OpKind::kGeneric;
-  char axis = 0;  // kRotate: 'x', 'y' or 'z'
-  std::vector<ExprPtr> args;
-  bool has_block = false;  // `{ ... }` written after the arguments
+  char axis = 0;              // kRotate: 'x', 'y' or 'z'
+  std::vector<ExprPtr> args;  // operation arguments; a symbol's rule arguments (`Floor(3)`)
+  bool has_block = false;     // `{ ... }` written after the arguments
+  bool terminal = false;      // kSymbol written `Name.` (CityEngine: a leaf, no rule wanted)
   std::vector<Branch> branches;
 };
 
@@ -103,8 +112,19 @@ struct Alternative {
   ExprPtr probability;  // null when omitted
 };
 
+// `@Name` or `@Name(arg, key = arg, ...)` before a CityEngine declaration: metadata for tools
+// (the studio's parameter panel, --set checks), no effect on derivation.
+struct Annotation {
+  Range range;
+  std::string name;
+  std::vector<std::string> keys;  // "" for a positional argument; parallel to args
+  std::vector<ExprPtr> args;
+};
+
 struct Rule {
   Range range;
+  std::vector<std::string> params;  // CityEngine's parametric rules `Name(a, b) --> ...`
+  std::vector<Annotation> annotations;
   std::string id;  // as written ("3", "r12"); empty for an unnamed `Pred --> ...` rule
   Range id_range;
   std::string predecessor;
@@ -126,11 +146,45 @@ struct AttrDecl {
   std::string name;
   Range name_range;
   ExprPtr value;
+  std::vector<Annotation> annotations;
 };
+
+// CityEngine's functions `name(a, b) = expr` and `const name = expr` (a function without
+// parameters that cannot be overridden).
+struct FunctionDecl {
+  Range range;
+  std::string name;
+  Range name_range;
+  std::vector<std::string> params;
+  ExprPtr body;
+  bool is_const = false;
+  std::vector<Annotation> annotations;
+};
+
+// `import alias : "file.cga"` with an optional list after the path: `(a, b)` protects those
+// attributes from the importer's values, `(a = expr)` overrides them, `()` protects all.
+struct ImportDecl {
+  Range range;
+  std::string alias;
+  Range alias_range;
+  std::string path;
+  Range path_range;
+  bool has_list = false;
+  std::vector<std::string> protected_attrs;
+  std::vector<std::pair<std::string, ExprPtr>> overrides;
+  std::vector<Annotation> annotations;
+};
+
+enum class Dialect { kSeed004, kCityEngine };
 
 struct Grammar {
   std::string file;
+  Dialect dialect = Dialect::kSeed004;
+  std::string version;  // CityEngine's `version "2019.0"`, empty when absent
   std::vector<AttrDecl> attrs;
+  std::vector<FunctionDecl> functions;
+  std::vector<ImportDecl> imports;
+  std::vector<std::string> styles;  // `style Name` sections, in order (rules of Default kept)
   std::vector<PrioritySet> sets;
 };
 

@@ -55,9 +55,26 @@ class Dumper {
 
   std::string grammar(const Grammar& g) {
     out_ = "(grammar " + quoted(g.file);
-    for (const AttrDecl& attr : g.attrs) {
-      line(1, "(attr " + attr.name + at(attr.range) + " " + dump(*attr.value) + ")");
+    if (g.dialect == Dialect::kCityEngine) line(1, "(dialect cityengine)");
+    if (!g.version.empty()) line(1, "(version " + quoted(g.version) + ")");
+    for (const ImportDecl& imp : g.imports) {
+      std::string text = cat({"(import ", imp.alias, " ", quoted(imp.path)});
+      if (imp.has_list) text += " list";
+      for (const std::string& name : imp.protected_attrs) text += " (protect " + name + ")";
+      for (const auto& [name, value] : imp.overrides) {
+        text += cat({" (override ", name, " ", dump(*value), ")"});
+      }
+      line(1, text + at(imp.range) + annotations(imp.annotations) + ")");
     }
+    for (const AttrDecl& attr : g.attrs) {
+      line(1, "(attr " + attr.name + at(attr.range) + " " + dump(*attr.value) +
+                  annotations(attr.annotations) + ")");
+    }
+    for (const FunctionDecl& fn : g.functions) {
+      line(1, cat({fn.is_const ? "(const " : "(function ", fn.name, params(fn.params), " ",
+                   dump(*fn.body), at(fn.range), annotations(fn.annotations), ")"}));
+    }
+    for (const std::string& style : g.styles) line(1, "(style " + style + ")");
     for (const PrioritySet& set : g.sets) priority_set(set);
     out_ += ")\n";
     return std::move(out_);
@@ -67,6 +84,27 @@ class Dumper {
   std::string at(Range range) const {
     const auto [l, c] = source_.locate(range.begin);
     return " @" + std::to_string(l) + ":" + std::to_string(c);
+  }
+
+  static std::string params(const std::vector<std::string>& names) {
+    if (names.empty()) return "";
+    std::string out = " (params";
+    for (const std::string& n : names) out.append(" ").append(n);
+    return out + ")";
+  }
+
+  static std::string annotations(const std::vector<Annotation>& list) {
+    std::string out;
+    for (const Annotation& a : list) {
+      out += " (@" + a.name;
+      for (std::size_t i = 0; i < a.args.size(); ++i) {
+        out += ' ';
+        if (!a.keys[i].empty()) out.append(a.keys[i]).append("=");
+        out += dump(*a.args[i]);
+      }
+      out += ')';
+    }
+    return out;
   }
 
   void line(int depth, const std::string& text) {
@@ -85,6 +123,8 @@ class Dumper {
   void rule(const Rule& r) {
     std::string head = "(rule " + (r.id.empty() ? std::string("_") : r.id) + at(r.range) +
                        " (pred " + r.predecessor + ")";
+    head += params(r.params);
+    head += annotations(r.annotations);
     if (r.condition) head += " (cond " + dump(*r.condition) + ")";
     line(2, head);
     for (const Alternative& alt : r.alternatives) {
@@ -99,8 +139,17 @@ class Dumper {
 
   void item(const Item& it, int depth) {
     switch (it.kind) {
-      case ItemKind::kSymbol:
-        return line(depth, "(sym " + it.name + at(it.range) + ")");
+      case ItemKind::kSymbol: {
+        std::string text = cat({"(sym ", it.name, it.terminal ? "." : "", at(it.range)});
+        for (const ExprPtr& arg : it.args) text.append(" ").append(dump(*arg));
+        return line(depth, text + ")");
+      }
+      case ItemKind::kCase:
+      case ItemKind::kChance:
+        line(depth, std::string(it.kind == ItemKind::kCase ? "(case" : "(chance") + at(it.range));
+        for (const Branch& branch : it.branches) this->branch(branch, depth + 1);
+        out_ += ')';
+        return;
       case ItemKind::kEmpty:
         return line(depth, "(eps" + at(it.range) + ")");
       case ItemKind::kPush:
@@ -156,6 +205,18 @@ std::string dump(const Expr& expr) {
       return "(. " + dump(*expr.operands[0]) + " " + expr.text + ")";
     case ExprKind::kCall: {
       std::string out = "(call";
+      for (const ExprPtr& operand : expr.operands) {
+        out += ' ';
+        out += dump(*operand);
+      }
+      return out + ")";
+    }
+    case ExprKind::kCase:
+    case ExprKind::kChance:
+    case ExprKind::kArray:
+    case ExprKind::kIndex: {
+      constexpr std::string_view kHeads[] = {"(case", "(chance", "(array", "(index"};
+      std::string out(kHeads[static_cast<int>(expr.kind) - static_cast<int>(ExprKind::kCase)]);
       for (const ExprPtr& operand : expr.operands) {
         out += ' ';
         out += dump(*operand);

@@ -81,7 +81,10 @@ CheckResult Checker::run() {
   for (const PrioritySet& set : grammar_.sets) {
     for (const Rule& rule : set.rules) result_.rules.push_back(CheckedRule{&rule, set.priority});
   }
+  declare_rule_arities();
+  declare_functions();
   declare_attributes();
+  check_functions();
   check_priority_sets();
   check_rule_ids();
   for (const PrioritySet& set : grammar_.sets) {
@@ -232,6 +235,15 @@ void Checker::choose_start() {
   }
   if (options_.start.empty()) {
     result_.start_symbol = lowest->rules.front().predecessor;
+    // CityEngine: the first `@StartRule`, else a rule named Lot (docs/cityengine-dialect.md).
+    if (cityengine()) {
+      const std::vector<std::string> marked = start_rules();
+      if (!marked.empty()) {
+        result_.start_symbol = marked.front();
+      } else if (rule_arities_.count("Lot")) {
+        result_.start_symbol = "Lot";
+      }
+    }
     return;
   }
   const bool found =
@@ -272,6 +284,11 @@ void Checker::compute_reachability() {
 
   std::unordered_set<std::string_view> seen{result_.start_symbol};
   std::vector<std::string_view> queue{result_.start_symbol};
+  // Every rule CityEngine offers as a start rule is derived from on some lot.
+  const std::vector<std::string> marked = start_rules();
+  for (const std::string& start : marked) {
+    if (seen.insert(start).second) queue.push_back(start);
+  }
   while (!queue.empty()) {
     const std::string_view symbol = queue.back();
     queue.pop_back();

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "lang/cga/checker_internal.h"
+#include "lang/cga/cityengine_names.h"
 #include "lang/cga/functions.h"
 
 namespace insula::lang::cga::detail {
@@ -99,7 +100,13 @@ void Checker::check_expr(const Expr& expr, ExprRole role) {
       for (const ExprPtr& operand : expr.operands) check_expr(*operand);
       return;
     case ExprKind::kBinary:
+    case ExprKind::kCase:
+    case ExprKind::kChance:
       for (const ExprPtr& operand : expr.operands) check_expr(*operand);
+      return;
+    case ExprKind::kArray:
+    case ExprKind::kIndex:
+      error("CGA902", "CityEngine arrays are not supported", expr.range);
       return;
   }
 }
@@ -108,6 +115,16 @@ void Checker::check_expr(const Expr& expr, ExprRole role) {
 // --set). Where an operation accepts a bare word (an axis, an asset), an unknown identifier is
 // that word and the operation's check decides (checker_successors.cc).
 void Checker::check_identifier(const Expr& expr, ExprRole role) {
+  if (is_parameter(expr.text)) return;
+  if (auto fn = functions_.find(expr.text); fn != functions_.end()) {
+    if (!fn->second->params.empty()) {
+      error("CGA312",
+            "function '" + expr.text + "' takes " + std::to_string(fn->second->params.size()) +
+                " argument" + (fn->second->params.size() == 1 ? "" : "s") + ", found none",
+            expr.range);
+    }
+    return;
+  }
   if (attributes_.count(expr.text)) {
     used_attributes_.insert(expr.text);
     if (current_attribute_) attribute_deps_[current_attribute_->name].insert(expr.text);
@@ -127,6 +144,13 @@ void Checker::check_identifier(const Expr& expr, ExprRole role) {
 // argument (`Shape.occ` needs one and is a call).
 void Checker::check_member(const Expr& expr) {
   const Expr& object = *expr.operands[0];
+  if (cityengine() && object.kind == ExprKind::kIdent) {
+    const std::string name = object.text + "." + expr.text;
+    if (contains(kUnsupportedFunctions, name)) {
+      error("CGA902", "CityEngine function '" + name + "' is not supported", expr.range);
+      return;
+    }
+  }
   if (object.kind != ExprKind::kIdent || !is_shape_object(object.text)) {
     if (object.kind == ExprKind::kIdent && !attributes_.count(object.text) &&
         !known_.count(object.text)) {
@@ -152,6 +176,7 @@ void Checker::check_member(const Expr& expr) {
 }
 
 void Checker::check_call(const Expr& expr) {
+  if (check_user_call(expr)) return;
   const Expr& callee = *expr.operands[0];
   const std::size_t count = expr.operands.size() - 1;
   if (callee.kind == ExprKind::kMember) {
@@ -168,7 +193,9 @@ void Checker::check_call(const Expr& expr) {
     }
   } else if (callee.kind == ExprKind::kIdent) {
     const FunctionInfo* info = find_function(callee.text);
-    if (!info) {
+    if (!info && cityengine() && contains(kUnsupportedFunctions, callee.text)) {
+      error("CGA902", "CityEngine function '" + callee.text + "' is not supported", callee.range);
+    } else if (!info) {
       error("CGA321", "unknown function '" + callee.text + "'", callee.range);
     } else if (!signature_accepts(info->signature, count)) {
       error("CGA312",

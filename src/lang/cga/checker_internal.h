@@ -82,6 +82,18 @@ class Checker {
   void check_size_keys(const Item& item, const std::vector<Branch>& branches);
   void check_branch_items(const Branch& branch);
 
+  // ---- checker_cityengine.cc (CityEngine's dialect: functions, parameters, chains, annotations)
+  bool cityengine() const { return grammar_.dialect == Dialect::kCityEngine; }
+  void declare_functions();
+  void check_functions();
+  void check_annotations(const std::vector<Annotation>& annotations);
+  void declare_rule_arities();
+  void check_symbol_call(const Item& item);
+  void check_chain(const Item& item);
+  bool check_user_call(const Expr& expr);
+  bool is_parameter(std::string_view name) const;
+  std::vector<std::string> start_rules() const;
+
   // ---- checker_exprs.cc
   void check_call(const Expr& expr);
   void check_member(const Expr& expr);
@@ -99,6 +111,10 @@ class Checker {
   // The attribute whose default is being checked (for the dependency graph), or null.
   const AttrDecl* current_attribute_ = nullptr;
   std::map<std::string, std::set<std::string>, std::less<>> attribute_deps_;
+  std::map<std::string, const FunctionDecl*, std::less<>> functions_;
+  // Parameter counts of each rule name (CityEngine overloads rules by their number of parameters).
+  std::map<std::string, std::set<std::size_t>, std::less<>> rule_arities_;
+  const std::vector<std::string>* params_ = nullptr;  // of the rule or function being checked
 };
 
 }  // namespace insula::lang::cga::detail

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "lang/cga/checker_internal.h"
+#include "lang/cga/cityengine_names.h"
 #include "shape/operation.h"
 
 namespace insula::lang::cga::detail {
@@ -78,9 +79,12 @@ bool is_empty_shape(const Item& item) {
 }  // namespace
 
 void Checker::check_rule(const Rule& rule) {
+  params_ = &rule.params;
+  check_annotations(rule.annotations);
   if (rule.condition) check_expr(*rule.condition);
   for (const Alternative& alt : rule.alternatives) check_sequence(alt.items);
   check_probabilities(rule);
+  params_ = nullptr;
 }
 
 // §IV.B constraint 1 (each probability in (0, 1]) and constraint 5 (the parts of a rule with
@@ -162,6 +166,12 @@ void Checker::check_empty_shape(const std::vector<Item>& items) {
     if (!is_empty_shape(items[e])) continue;
     for (std::size_t s = 0; s < items.size(); ++s) {
       if (region[s] != region[e] || !is_scope_rule(items[s])) continue;
+      if (cityengine()) {  // CityEngine deletes the shape whatever came before NIL
+        warning("CGA406", "'NIL' removes the shape the operations before it changed",
+                items[e].range);
+        reported = true;
+        break;
+      }
       error("CGA303",
             "the empty shape has no scope, but the scope rule " + quoted(items[s].name) +
                 " is in the same successor (seed 004 §IV.B, constraint 3)",
@@ -177,10 +187,24 @@ void Checker::check_empty_shape(const std::vector<Item>& items) {
 }
 
 void Checker::check_item(const Item& item) {
+  if (item.kind == ItemKind::kSymbol) {
+    if (cityengine()) check_symbol_call(item);
+    return;
+  }
+  if (item.kind == ItemKind::kCase || item.kind == ItemKind::kChance) return check_chain(item);
   if (item.kind != ItemKind::kOp) return;
   const OperationInfo* info = find_operation(item.name);
   if (!info) {
-    error("CGA311", "unknown operation '" + item.name + "'", item.range);
+    if (cityengine() && contains(kDetailOperations, item.name)) {
+      warning("CGA903",
+              "CityEngine operation '" + item.name +
+                  "' is not supported yet; it is skipped (the model lacks only that detail)",
+              item.range);
+    } else if (cityengine() && contains(kUnsupportedOperations, item.name)) {
+      error("CGA901", "CityEngine operation '" + item.name + "' is not supported", item.range);
+    } else {
+      error("CGA311", "unknown operation '" + item.name + "'", item.range);
+    }
     for (const ExprPtr& arg : item.args) check_expr(*arg, ExprRole::kBareWord);
     for (const Branch& branch : item.branches) check_branch_items(branch);
     return;

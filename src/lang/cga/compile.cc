@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <optional>
 
 #include "lang/cga/checker.h"
+#include "lang/cga/cityengine_names.h"
 #include "lang/cga/eval.h"
 #include "lang/cga/operations.h"
 
@@ -66,7 +68,9 @@ class Compiler {
   }
 
   base::Result<std::shared_ptr<const Program>> run(const CompileOptions& options) {
+    declare_functions();
     declare_attributes(options.extra_attributes);
+    compile_functions();
     collect_levels();
     for (const PrioritySet& set : grammar_.sets) {
       const std::uint32_t level = level_of(set.priority);
@@ -157,6 +161,12 @@ class Compiler {
       case ExprKind::kBool:
         return constant(e.boolean, e.range);
       case ExprKind::kIdent: {
+        if (const std::uint32_t p = parameter(e.text); p != kNoExpr) {
+          return add(ENode{ECode::kParam, 0, p, e.range, {}});
+        }
+        if (auto fn = function_ids_.find(e.text); fn != function_ids_.end()) {
+          return add(ENode{ECode::kCall, 0, fn->second, e.range, {}});
+        }
         const std::uint32_t a = attr_index(e.text);
         if (a == kNoExpr) {
           error("CGA501", "unknown attribute '" + e.text + "'", e.range);
@@ -185,6 +195,17 @@ class Compiler {
         return fold(
             ENode{ECode::kBinary, static_cast<std::uint8_t>(e.binary_op), 0, e.range, {a, b}});
       }
+      case ExprKind::kCase:
+      case ExprKind::kChance: {
+        std::vector<std::uint32_t> kids;
+        for (const ExprPtr& operand : e.operands) kids.push_back(expr(*operand));
+        const ECode code = e.kind == ExprKind::kCase ? ECode::kCase : ECode::kChance;
+        return add(ENode{code, 0, 0, e.range, std::move(kids)});
+      }
+      case ExprKind::kArray:
+      case ExprKind::kIndex:
+        error("CGA513", "CityEngine arrays are not supported", e.range);
+        return constant(Value{}, e.range);
     }
     return constant(Value{}, e.range);
   }
@@ -247,6 +268,16 @@ class Compiler {
       return add(ENode{ECode::kOcc, 0, 0, e.range, kids});
     }
     if (callee.kind == ExprKind::kIdent) {
+      if (auto fn = function_ids_.find(callee.text); fn != function_ids_.end()) {
+        if (program_->functions[fn->second].params != argc) {
+          error("CGA504",
+                "'" + callee.text + "' takes " +
+                    std::to_string(program_->functions[fn->second].params) + " arguments",
+                e.range);
+          return constant(Value{}, e.range);
+        }
+        return add(ENode{ECode::kCall, 0, fn->second, e.range, kids});
+      }
       if (const FunctionInfo* info = find_function(callee.text)) {
         if (!signature_accepts(info->signature, argc)) {
           error("CGA504",
@@ -319,6 +350,19 @@ class Compiler {
       case ItemKind::kSymbol:
         c.code = OpCode::kSymbol;
         c.symbol = symbol(item.name);
+        c.terminal = item.terminal;
+        for (const ExprPtr& arg : item.args) c.args.push_back(expr(*arg));
+        return c;
+      case ItemKind::kCase:
+      case ItemKind::kChance:
+        c.code = item.kind == ItemKind::kCase ? OpCode::kCase : OpCode::kChance;
+        for (const Branch& b : item.branches) {
+          CBranch out;
+          out.range = b.range;
+          if (b.key) out.condition = expr(*b.key);
+          out.items = items(b.items);
+          c.branches.push_back(std::move(out));
+        }
         return c;
       case ItemKind::kEmpty:
         c.code = OpCode::kEmpty;
@@ -333,6 +377,11 @@ class Compiler {
         break;
     }
     c.info = find_operation(item.name);
+    if (c.info == nullptr && grammar_.dialect == Dialect::kCityEngine &&
+        contains(kDetailOperations, item.name)) {
+      c.code = OpCode::kNoOp;  // warned by the checker (CGA903)
+      return c;
+    }
     if (c.info == nullptr) {
       error("CGA506", "unknown operation '" + item.name + "'", item.range);
       c.code = OpCode::kEmpty;
@@ -590,6 +639,8 @@ class Compiler {
     r.id_range = rule.id.empty() ? rule.predecessor_range : rule.id_range;
     r.predecessor = symbol(rule.predecessor);
     r.level = level;
+    r.params = static_cast<std::uint32_t>(rule.params.size());
+    params_ = &rule.params;
     if (rule.condition) r.condition = expr(*rule.condition);
     for (const Alternative& alt : rule.alternatives) {
       CAlternative a;
@@ -598,6 +649,7 @@ class Compiler {
       if (alt.probability) a.probability = expr(*alt.probability);
       r.alternatives.push_back(std::move(a));
     }
+    params_ = nullptr;
     program_->rules.push_back(std::move(r));
   }
 
@@ -642,9 +694,38 @@ class Compiler {
     program_->start = first->predecessor;
   }
 
+  // ---- CityEngine's functions and parameters
+  // Ids first, bodies after, so functions may call each other (and themselves) in any order.
+  void declare_functions() {
+    for (const FunctionDecl& fn : grammar_.functions) {
+      if (function_ids_.count(fn.name)) continue;  // the checker reports duplicates
+      function_ids_.emplace(fn.name, static_cast<std::uint32_t>(program_->functions.size()));
+      program_->functions.push_back(
+          {fn.name, static_cast<std::uint32_t>(fn.params.size()), kNoExpr, fn.range});
+    }
+  }
+  void compile_functions() {
+    for (const FunctionDecl& fn : grammar_.functions) {
+      CFunction& target = program_->functions[function_ids_.at(fn.name)];
+      if (target.body != kNoExpr) continue;
+      params_ = &fn.params;
+      target.body = expr(*fn.body);
+      params_ = nullptr;
+    }
+  }
+  std::uint32_t parameter(std::string_view name) const {
+    if (params_ == nullptr) return kNoExpr;
+    for (std::size_t i = 0; i < params_->size(); ++i) {
+      if ((*params_)[i] == name) return static_cast<std::uint32_t>(i);
+    }
+    return kNoExpr;
+  }
+
   const Grammar& grammar_;
   std::shared_ptr<Program> program_;
   std::vector<base::Diagnostic> diagnostics_;
+  std::map<std::string, std::uint32_t, std::less<>> function_ids_;
+  const std::vector<std::string>* params_ = nullptr;
 };
 
 }  // namespace

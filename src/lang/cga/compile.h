@@ -38,6 +38,10 @@ enum class ECode : std::uint8_t {
   kFunction,   // function a (Function), arguments kids
   kUnary,      // op (UnaryOp), kids[0]
   kBinary,     // op (BinaryOp), kids[0], kids[1]
+  kParam,      // parameter a of the rule or function being evaluated (EvalContext::frame)
+  kCall,       // function a of the grammar (Program::functions), arguments kids
+  kCase,       // kids: condition, value, ..., else value (CityEngine's `case`)
+  kChance,     // kids: percentage, value, ..., else value (CityEngine's `30% : v else : w`)
 };
 
 enum class ShapeAttr : std::uint8_t {
@@ -116,6 +120,9 @@ enum class OpCode : std::uint8_t {
   kSet,
   kPrint,
   kReport,
+  kNoOp,    // a CityEngine operation skipped with warning CGA903 (texture coordinates, labels)
+  kCase,    // branches keyed by conditions; the last one (`else`) has none
+  kChance,  // branches keyed by percentages; the last one (`else`) takes the rest
 };
 
 enum class CompKind : std::uint8_t { kFaces, kSideFaces, kEdges, kVertices };
@@ -126,10 +133,11 @@ struct CItem;
 struct CBranch {
   Range range;
   bool has_key = false;
-  CSize size;               // split sizes
-  std::string selector;     // comp / offset / setback selector ("front", "inside", ...)
-  std::int64_t index = -1;  // comp index key
-  bool repeat = false;      // `{ ... }*`
+  CSize size;                         // split sizes
+  std::string selector;               // comp / offset / setback selector ("front", "inside", ...)
+  std::int64_t index = -1;            // comp index key
+  std::uint32_t condition = kNoExpr;  // kCase / kChance: the condition or the percentage
+  bool repeat = false;                // `{ ... }*`
   std::vector<CBranch> pattern;
   std::vector<CItem> items;
 };
@@ -137,7 +145,8 @@ struct CBranch {
 struct CItem {
   OpCode code = OpCode::kSymbol;
   Range range;
-  SymbolId symbol = kNoSymbol;          // kSymbol
+  SymbolId symbol = kNoSymbol;          // kSymbol (args: the rule's arguments)
+  bool terminal = false;                // kSymbol written `Name.`: a leaf even with rules
   const OperationInfo* info = nullptr;  // operations
   std::vector<std::uint32_t> args;      // expressions, positional (kNoExpr: a size)
   std::vector<shape::Axis> axes;        // split / repeat (RR "XY": two)
@@ -162,7 +171,16 @@ struct CRule {
   SymbolId predecessor = kNoSymbol;
   std::uint32_t level = 0;  // index into Program::priorities
   std::uint32_t condition = kNoExpr;
+  std::uint32_t params = 0;  // CityEngine's parametric rules: arguments in the frame
   std::vector<CAlternative> alternatives;
+};
+
+// A function of the grammar (CityEngine's `f(a, b) = expr`, `const c = expr`).
+struct CFunction {
+  std::string name;
+  std::uint32_t params = 0;
+  std::uint32_t body = kNoExpr;
+  Range range;
 };
 
 struct CAttr {
@@ -181,6 +199,7 @@ struct Program {
   std::vector<std::vector<std::vector<std::uint32_t>>> rules_at;
   std::vector<std::vector<std::uint32_t>> levels_of;
   std::vector<CAttr> attrs;
+  std::vector<CFunction> functions;
   std::uint32_t color_attr = 0;  // the hidden attribute color() sets
   std::vector<ENode> nodes;
   std::vector<shape::Value> consts;

@@ -159,6 +159,10 @@ class Builder {
         case ItemKind::kPush:
         case ItemKind::kPop:
           break;
+        case ItemKind::kCase:
+        case ItemKind::kChance:
+          for (const Branch& b : it.branches) branch(b, edge);
+          break;
         case ItemKind::kOp:
           edge.operations.push_back(it.name);
           if ((it.op == OpKind::kPredefined || it.op == OpKind::kInsert) && it.args.size() == 1) {

@@ -154,9 +154,12 @@ Value Engine::lot_value(std::uint32_t attr, Range range) {
   }
   if (a.value != kNoExpr && (!found || std::holds_alternative<std::string>(v))) {
     State* saved = cur_;
+    const std::span<const Value> saved_frame = frame;
     cur_ = &start_state_;
+    frame = {};
     const Value fallback = evaluate(program_, a.value, *this);
     cur_ = saved;
+    frame = saved_frame;
     if (!found) {
       v = fallback;
     } else if (std::holds_alternative<double>(fallback)) {
@@ -306,8 +309,10 @@ void Engine::process(const Work& w) {
   st.attrs = w.attrs;
   st.index = w.index;
   st.total = w.total;
+  st.frame = w.frame;
   depth_ = w.depth;
   cur_ = &st;
+  frame = frame_of(w.frame);
   rng_ = shape::Rng(w.seed);
   rule_ = nullptr;
   for (std::uint32_t r : program_.rules_at[w.symbol][w.level]) {
@@ -415,9 +420,21 @@ void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State&
           State child = st;
           child.seed = shape::child_seed(st.seed, st.next_child++);
           child.next_child = 0;
-          push_or_terminal(child, c.symbol, depth_ + 1U);
+          child.frame = c.args.empty() ? 0 : new_frame(c.args, st);
+          if (c.terminal) {
+            terminal(child, c.symbol);
+          } else {
+            push_or_terminal(child, c.symbol, depth_ + 1U);
+          }
         }
         st.consumed = true;
+        break;
+      case OpCode::kCase:
+      case OpCode::kChance:
+        // A chain ends its sequence (parser_cityengine.cc): the chosen branch finishes it.
+        run_items(choose_branch(c, st).items, 0, st, stack);
+        return;
+      case OpCode::kNoOp:
         break;
       case OpCode::kEmpty:
         st.consumed = true;
@@ -486,6 +503,37 @@ void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State&
         break;
     }
   }
+}
+
+std::uint32_t Engine::new_frame(const std::vector<std::uint32_t>& args, State& st) {
+  std::vector<Value> values;
+  values.reserve(args.size());
+  for (std::uint32_t a : args) values.push_back(eval(a, st));
+  // eval() may have pointed `frame` into frame_values_: the vector grows only after it is used.
+  for (Value& v : values) frame_values_.push_back(std::move(v));
+  frame_begin_.push_back(frame_values_.size());
+  frame = frame_of(st.frame);
+  return static_cast<std::uint32_t>(frame_begin_.size() - 2);
+}
+
+// `case c : ... else : ...` takes the first branch whose condition holds; `30% : ... else : ...`
+// draws from the shape's generator (the same shape and seed always take the same branch).
+const CBranch& Engine::choose_branch(const CItem& c, State& st) {
+  if (c.code == OpCode::kCase) {
+    for (const CBranch& b : c.branches) {
+      if (b.condition == kNoExpr) return b;
+      if (as_bool(eval(b.condition, st), program_.nodes[b.condition].range)) return b;
+    }
+    return c.branches.back();
+  }
+  double draw = rng_.unit() * 100.0;
+  for (const CBranch& b : c.branches) {
+    if (b.condition == kNoExpr) return b;
+    const double percent = number(b.condition, st);
+    if (draw < percent) return b;
+    draw -= percent;
+  }
+  return c.branches.back();
 }
 
 void Engine::rotate(const CItem& c, State& st) {

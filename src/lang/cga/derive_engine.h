@@ -40,6 +40,7 @@ struct Work {
   std::uint32_t attrs = 0;
   std::uint32_t index = 0;  // split.index / comp.index
   std::uint32_t total = 1;  // split.total
+  std::uint32_t frame = 0;  // the rule's arguments (Engine::frames_; 0: none)
   std::uint16_t depth = 0;
   std::uint16_t level = 0;
 };
@@ -52,6 +53,7 @@ struct State {
   std::uint32_t attrs = 0;
   std::uint32_t index = 0;
   std::uint32_t total = 1;
+  std::uint32_t frame = 0;       // the arguments of the rule being applied
   std::uint32_t next_child = 0;  // children seeded so far (child_seed index)
   bool consumed = false;         // replaced by a symbol, a block operation or ε
   bool modified = false;         // changed since the last `[` (a `]` then leaves it as a leaf)
@@ -201,6 +203,7 @@ class Engine final : public EvalContext {
     w.attrs = st.attrs;
     w.index = st.index;
     w.total = st.total;
+    w.frame = st.frame;
     w.depth = static_cast<std::uint16_t>(depth);
     w.level = static_cast<std::uint16_t>(program_.levels_of[symbol].front());
     batch_.push_back(w);
@@ -222,8 +225,16 @@ class Engine final : public EvalContext {
   // ---- successor interpreter
   Value eval(std::uint32_t e, State& st) {
     cur_ = &st;
+    frame = frame_of(st.frame);
     return evaluate(program_, e, *this);
   }
+
+  // ---- rule arguments (CityEngine's parametric rules): frame k holds
+  // frame_values_[frame_begin_[k] .. frame_begin_[k + 1]); frame 0 is empty.
+  std::span<const Value> frame_of(std::uint32_t f) const {
+    return {frame_values_.data() + frame_begin_[f], frame_begin_[f + 1] - frame_begin_[f]};
+  }
+  std::uint32_t new_frame(const std::vector<std::uint32_t>& args, State& st);
   double number(std::uint32_t e, State& st) {
     return as_number(eval(e, st), program_.nodes[e].range);
   }
@@ -246,6 +257,7 @@ class Engine final : public EvalContext {
     c.attrs = parent.attrs;
     c.index = index;
     c.total = total;
+    c.frame = parent.frame;
     return c;
   }
 
@@ -262,6 +274,8 @@ class Engine final : public EvalContext {
   }
 
   void rotate(const CItem& c, State& st);
+
+  const CBranch& choose_branch(const CItem& c, State& st);
 
   void set_attr(State& st, std::uint32_t attr, Value value);
 
@@ -394,6 +408,8 @@ class Engine final : public EvalContext {
 
   std::vector<Value> values_;
   std::vector<std::uint8_t> status_;  // 0 not evaluated, 1 in progress, 2 done
+  std::vector<Value> frame_values_;
+  std::vector<std::size_t> frame_begin_{0, 0};
   std::map<std::array<std::uint64_t, 6>, std::uint32_t> boxes_;
   std::map<std::uint64_t, std::uint32_t> rects_;
   std::map<std::pair<std::uint32_t, std::string>, std::size_t> warnings_;

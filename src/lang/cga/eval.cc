@@ -209,6 +209,35 @@ Value apply_function(Function f, const std::vector<Value>& args, Range range) {
   }
 }
 
+namespace {
+
+// A function of the grammar, evaluated in the caller's shape with its own arguments.
+Value call(const Program& program, const ENode& n, EvalContext& context) {
+  const CFunction& fn = program.functions[n.a];
+  std::vector<Value> args;
+  args.reserve(n.kids.size());
+  for (std::uint32_t k : n.kids) args.push_back(evaluate(program, k, context));
+  if (context.call_depth >= kMaxCallDepth) {
+    fail(n.range, "function '" + fn.name + "' nested " + std::to_string(kMaxCallDepth) +
+                      " calls deep (a function that calls itself without end?)");
+  }
+  const std::span<const Value> saved = context.frame;
+  context.frame = args;
+  ++context.call_depth;
+  try {
+    Value result = evaluate(program, fn.body, context);
+    --context.call_depth;
+    context.frame = saved;
+    return result;
+  } catch (...) {
+    --context.call_depth;
+    context.frame = saved;
+    throw;
+  }
+}
+
+}  // namespace
+
 Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context) {
   const ENode& n = program.nodes[expr];
   switch (n.code) {
@@ -245,6 +274,31 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
       }
       if (f == Function::kP) return context.rng().unit() < as_number(args[0], n.range);
       return apply_function(f, args, n.range);
+    }
+    case ECode::kParam:
+      if (n.a >= context.frame.size()) fail(n.range, "internal: parameter outside its rule");
+      return context.frame[n.a];
+    case ECode::kCall:
+      return call(program, n, context);
+    case ECode::kCase: {
+      const std::size_t last = n.kids.size() - 1;
+      for (std::size_t i = 0; i < last; i += 2) {
+        const ENode& condition = program.nodes[n.kids[i]];
+        if (as_bool(evaluate(program, n.kids[i], context), condition.range)) {
+          return evaluate(program, n.kids[i + 1], context);
+        }
+      }
+      return evaluate(program, n.kids[last], context);
+    }
+    case ECode::kChance: {
+      const std::size_t last = n.kids.size() - 1;
+      double draw = context.rng().unit() * 100.0;
+      for (std::size_t i = 0; i < last; i += 2) {
+        const double percent = as_number(evaluate(program, n.kids[i], context), n.range);
+        if (draw < percent) return evaluate(program, n.kids[i + 1], context);
+        draw -= percent;
+      }
+      return evaluate(program, n.kids[last], context);
     }
   }
   return Value{};

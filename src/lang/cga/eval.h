@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -50,7 +51,15 @@ class EvalContext {
   // "none", "part" or "full" for Shape.occ(`what`).
   virtual std::string occlusion(const std::string& what, Range range) = 0;
   virtual shape::Rng& rng() = 0;
+
+  // The arguments of the rule or function being evaluated (ECode::kParam reads them).
+  std::span<const shape::Value> frame;
+  std::uint32_t call_depth = 0;  // nested function calls (recursion is bounded)
 };
+
+// Deepest nesting of function calls before evaluation stops with an error (a function calling
+// itself without end).
+inline constexpr std::uint32_t kMaxCallDepth = 200;
 
 // Evaluates node `expr` of `program`.
 shape::Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context);

@@ -34,7 +34,7 @@ constexpr base::Spelling<Tok> kOperators[] = {
     {"+", Tok::kPlus},        {"-", Tok::kMinus},    {"*", Tok::kStar},
     {"/", Tok::kSlash},       {"%", Tok::kPercent},  {"~", Tok::kTilde},
     {"'", Tok::kQuote},       {"=", Tok::kAssign},   {"<", Tok::kLt},
-    {">", Tok::kGt},          {"!", Tok::kNot},
+    {">", Tok::kGt},          {"!", Tok::kNot},      {"@", Tok::kAt},
 };
 
 // 'text' (built by appending: GCC 12 reports a false -Wrestrict on "'" + std::string).
@@ -56,7 +56,7 @@ class Lexer : public base::TokenLexer<Lexer, LexOutput, Tok> {
     const char c = scan_.peek();
     if (base::is_ident_start(c)) {
       lex_identifier();
-    } else if (base::is_digit(c)) {
+    } else if (base::is_digit(c) || (c == '.' && base::is_digit(scan_.at(begin + 1)))) {
       lex_number();
     } else if (c == '"') {
       push_string(Tok::kString);

@@ -53,6 +53,7 @@ enum class Tok {
   kLe,
   kGt,
   kGe,
+  kAt,  // @ (CityEngine's annotations)
 };
 
 struct Token {

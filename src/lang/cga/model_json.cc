@@ -26,7 +26,8 @@ std::string_view operation_name(OpKind kind) {
 }
 
 std::string_view item_kind_name(ItemKind kind) {
-  constexpr std::string_view kNames[] = {"symbol", "empty", "push", "pop", "operation"};
+  constexpr std::string_view kNames[] = {"symbol",    "empty", "push",  "pop",
+                                         "operation", "case",  "chance"};
   return kNames[static_cast<int>(kind)];
 }
 
@@ -129,7 +130,21 @@ class Writer {
   void item(const Item& it) {
     out_.begin_object();
     field("kind", item_kind_name(it.kind));
-    if (it.kind == ItemKind::kSymbol) field("name", it.name);
+    if (it.kind == ItemKind::kSymbol) {
+      field("name", it.name);
+      if (!it.args.empty()) {
+        out_.key("arguments");
+        out_.begin_array();
+        for (const ExprPtr& a : it.args) expr(*a);
+        out_.end_array();
+      }
+      if (it.terminal) {
+        out_.key("terminal");
+        out_.boolean(true);
+      }
+    }
+    if (it.kind == ItemKind::kCase || it.kind == ItemKind::kChance)
+      branches("branches", it.branches);
     if (it.kind == ItemKind::kOp) {
       field("operation", operation_name(it.op));
       field("name", it.name);
@@ -212,6 +227,18 @@ class Writer {
         out_.key("right");
         expr(*e.operands[1]);
         break;
+      case ExprKind::kCase:
+      case ExprKind::kChance:
+      case ExprKind::kArray:
+      case ExprKind::kIndex: {
+        constexpr std::string_view kKinds[] = {"case", "chance", "array", "index"};
+        field("kind", kKinds[static_cast<int>(e.kind) - static_cast<int>(ExprKind::kCase)]);
+        out_.key("operands");
+        out_.begin_array();
+        for (const ExprPtr& operand : e.operands) expr(*operand);
+        out_.end_array();
+        break;
+      }
     }
     range("range", e.range);
     out_.end_object();

@@ -185,6 +185,13 @@ class Writer {
       case ItemKind::kSymbol:
         typed("successors", "SymbolShape", it.range);
         out_.attribute("symbol", it.name);
+        if (it.terminal) out_.attribute("terminal", "true");
+        for (const ExprPtr& a : it.args) expr("arguments", *a);
+        break;
+      case ItemKind::kCase:
+      case ItemKind::kChance:
+        typed("successors", it.kind == ItemKind::kCase ? "CaseChain" : "ChanceChain", it.range);
+        for (const Branch& b : it.branches) branch("branches", b);
         break;
       case ItemKind::kEmpty:
         typed("successors", "EmptyShape", it.range);
@@ -256,6 +263,17 @@ class Writer {
         expr("left", *e.operands[0]);
         expr("right", *e.operands[1]);
         break;
+      case ExprKind::kCase:
+      case ExprKind::kChance:
+      case ExprKind::kArray:
+      case ExprKind::kIndex: {
+        constexpr std::string_view kTypes[] = {"CaseExpression", "ChanceExpression", "ArrayLiteral",
+                                               "IndexAccess"};
+        typed(feature, kTypes[static_cast<int>(e.kind) - static_cast<int>(ExprKind::kCase)],
+              e.range);
+        for (const ExprPtr& operand : e.operands) expr("operands", *operand);
+        break;
+      }
     }
     out_.close();
   }

@@ -17,6 +17,7 @@ namespace {
 // Precedence levels of parser.cc, low to high. An operand printed inside an operator of level L
 // needs parentheses when its own level is below what the parser accepts at that position.
 enum Level : int {
+  kSelectLevel = 0,  // CityEngine's `case` / percentage chains: only at an expression's start
   kOrLevel = 1,
   kAndLevel = 2,
   kNotLevel = 3,
@@ -66,9 +67,26 @@ int level_of(const Expr& expr) {
       return binary_level(expr.binary_op);
     case ExprKind::kNumber:
       return expr.number < 0 ? kUnaryLevel : kPostfixLevel;
+    case ExprKind::kCase:
+    case ExprKind::kChance:
+      return kSelectLevel;
     default:
       return kPostfixLevel;
   }
+}
+
+std::string print_expr(const Expr& expr);
+
+// A stochastic branch's key as CityEngine's parser recognises it: a number, a (qualified) name or
+// a parenthesised expression, then `%`.
+std::string percentage(const Expr& key) {
+  const bool bare = (key.kind == ExprKind::kNumber && key.number >= 0) ||
+                    key.kind == ExprKind::kIdent ||
+                    (key.kind == ExprKind::kMember && key.operands[0]->kind == ExprKind::kIdent);
+  std::string out = bare ? "" : "(";
+  out += print_expr(key);
+  out += bare ? "%" : ")%";
+  return out;
 }
 
 class ExprPrinter {
@@ -104,7 +122,43 @@ class ExprPrinter {
       case ExprKind::kBinary:
         binary(e);
         return;
+      case ExprKind::kCase:
+      case ExprKind::kChance:
+        select(e);
+        return;
+      case ExprKind::kArray:
+        out_ += '[';
+        for (std::size_t i = 0; i < e.operands.size(); ++i) {
+          if (i > 0) out_ += ", ";
+          expr(*e.operands[i]);
+        }
+        out_ += ']';
+        return;
+      case ExprKind::kIndex:
+        operand(*e.operands[0], kPostfixLevel);
+        out_ += '[';
+        expr(*e.operands[1]);
+        out_ += ']';
+        return;
     }
+  }
+
+  // `case c : v ... else : w` and `30% : v ... else : w` (CityEngine).
+  void select(const Expr& e) {
+    const std::size_t pairs = e.operands.size() / 2;
+    for (std::size_t i = 0; i < pairs; ++i) {
+      if (i > 0) out_ += ' ';
+      if (e.kind == ExprKind::kCase) {
+        out_ += "case ";
+        expr(*e.operands[2 * i]);
+      } else {
+        out_ += percentage(*e.operands[2 * i]);
+      }
+      out_ += " : ";
+      expr(*e.operands[2 * i + 1]);
+    }
+    out_ += " else : ";
+    expr(*e.operands.back());
   }
 
  private:
@@ -176,21 +230,78 @@ class ExprPrinter {
 class GrammarPrinter {
  public:
   std::string run(const Grammar& g) {
+    cityengine_ = g.dialect == Dialect::kCityEngine;
+    if (cityengine_) declarations(g);
     for (const AttrDecl& attr : g.attrs) {
+      annotations(attr.annotations);
       out_ += "attr " + attr.name + " = " + print(*attr.value) + ";\n";
+    }
+    for (const FunctionDecl& fn : g.functions) {
+      annotations(fn.annotations);
+      out_ += (fn.is_const ? "const " : "") + fn.name;
+      if (!fn.params.empty() || !fn.is_const) params(fn.params);
+      out_ += " = " + print(*fn.body) + ";\n";
     }
     for (const PrioritySet& set : g.sets) {
       if (!out_.empty()) out_ += '\n';
       if (!set.implicit) out_ += "PRIORITY " + std::to_string(set.priority) + ":\n";
       for (const Rule& rule : set.rules) this->rule(rule);
     }
+    for (const std::string& style : g.styles) out_ += "style " + style + "\n";
     return std::move(out_);
   }
 
  private:
+  void declarations(const Grammar& g) {
+    if (!g.version.empty()) out_ += "version " + string_literal(g.version) + "\n";
+    for (const ImportDecl& imp : g.imports) {
+      annotations(imp.annotations);
+      out_ += "import " + imp.alias + " : " + string_literal(imp.path);
+      if (imp.has_list) {
+        std::vector<std::string> entries = imp.protected_attrs;
+        for (const auto& [name, value] : imp.overrides)
+          entries.push_back(name + " = " + print(*value));
+        out_ += " (";
+        for (std::size_t i = 0; i < entries.size(); ++i) {
+          if (i > 0) out_ += ", ";
+          out_ += entries[i];
+        }
+        out_ += ')';
+      }
+      out_ += '\n';
+    }
+  }
+
+  void annotations(const std::vector<Annotation>& list) {
+    for (const Annotation& a : list) {
+      out_ += "@" + a.name;
+      if (!a.args.empty()) {
+        out_ += '(';
+        for (std::size_t i = 0; i < a.args.size(); ++i) {
+          if (i > 0) out_ += ", ";
+          if (!a.keys[i].empty()) out_ += a.keys[i] + " = ";
+          out_ += print(*a.args[i]);
+        }
+        out_ += ')';
+      }
+      out_ += '\n';
+    }
+  }
+
+  void params(const std::vector<std::string>& names) {
+    out_ += '(';
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (i > 0) out_ += ", ";
+      out_ += names[i];
+    }
+    out_ += ')';
+  }
+
   void rule(const Rule& r) {
-    if (r.id.empty()) {
+    annotations(r.annotations);
+    if (r.id.empty() || cityengine_) {
       out_ += r.predecessor;
+      if (!r.params.empty()) params(r.params);
     } else {
       out_ += r.id + ": " + r.predecessor;
       if (r.condition) {
@@ -230,9 +341,33 @@ class GrammarPrinter {
     switch (it.kind) {
       case ItemKind::kSymbol:
         out_ += it.name;
+        if (!it.args.empty()) {
+          out_ += '(';
+          for (std::size_t i = 0; i < it.args.size(); ++i) {
+            if (i > 0) out_ += ", ";
+            out_ += print(*it.args[i]);
+          }
+          out_ += ')';
+        }
+        if (it.terminal) out_ += '.';
+        return;
+      case ItemKind::kCase:
+      case ItemKind::kChance:
+        for (std::size_t i = 0; i < it.branches.size(); ++i) {
+          const Branch& b = it.branches[i];
+          if (i > 0) out_ += ' ';
+          if (!b.key) {
+            out_ += "else :";
+          } else if (it.kind == ItemKind::kCase) {
+            out_ += "case " + print(*b.key) + " :";
+          } else {
+            out_ += percentage(*b.key) + " :";
+          }
+          items(b.items);
+        }
         return;
       case ItemKind::kEmpty:
-        out_ += "\xCE\xB5";  // ε, the paper's spelling
+        out_ += cityengine_ ? "NIL" : "\xCE\xB5";  // ε, the paper's spelling
         return;
       case ItemKind::kPush:
         out_ += '[';
@@ -277,7 +412,14 @@ class GrammarPrinter {
   }
 
   std::string out_;
+  bool cityengine_ = false;
 };
+
+std::string print_expr(const Expr& expr) {
+  ExprPrinter printer;
+  printer.expr(expr);
+  return printer.take();
+}
 
 }  // namespace
 
@@ -307,9 +449,7 @@ bool is_identifier(const std::string& name) {
 }
 
 std::string print(const Expr& expr) {
-  ExprPrinter printer;
-  printer.expr(expr);
-  return printer.take();
+  return print_expr(expr);
 }
 
 std::string print(const Grammar& grammar) {

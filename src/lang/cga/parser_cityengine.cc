@@ -1,0 +1,518 @@
+// CityEngine's dialect of CGA (issue 20; docs/cityengine-dialect.md), read into the same grammar
+// model as seed 004's syntax (ast.h):
+//
+//   file       = [ "version" STRING ] { { annotation } item } EOF ;
+//   annotation = "@" IDENT [ "(" [ arg { "," arg } ] ")" ] ;   arg = [ IDENT "=" ] expr ;
+//   item       = "import" IDENT ":" STRING [ "(" [ import_arg { "," import_arg } ] ")" ]
+//              | "attr" IDENT [ params ] "=" expr
+//              | "const" IDENT [ params ] "=" expr
+//              | "style" IDENT [ "extends" IDENT ]
+//              | IDENT [ params ] "-->" body            (* a rule *)
+//              | IDENT [ params ] "=" expr ;            (* a function *)
+//   import_arg = IDENT [ "=" expr ] ;                    (* protect, or override *)
+//   params     = "(" [ param { "," param } ] ")" ;      param = [ type ] IDENT ;
+//   body       = select | { successor } ;
+//   select     = "case" expr ":" body { "case" expr ":" body } "else" ":" body
+//              | chance ":" body { chance ":" body } "else" ":" body ;
+//   chance     = ( NUMBER | name | "(" expr ")" ) "%" ;
+//   successor  = "NIL" | "[" | "]" | name "." | name [ "(" args ")" [ block [ "*" ] ] ] ;
+//   name       = IDENT { "." IDENT } ;                   (* no space around the dots *)
+//
+// A rule's body ends where the next declaration starts (no terminator). A chain of `case` or
+// percentage branches ends with its `else` branch; a branch body that starts with `case` (or a
+// percentage) is a nested chain, so nesting needs no brackets. Expressions add `case`/percentage
+// chains as values, arrays `[a, b]` and indexing `a[i]` (parser_internal.h).
+#include <cctype>
+#include <set>
+
+#include "lang/cga/parser_internal.h"
+
+namespace insula::lang::cga::detail {
+
+namespace {
+
+bool is_arrow(Tok kind) {
+  return kind == Tok::kLongArrow || kind == Tok::kArrow;
+}
+
+bool is_type_word(std::string_view word) {
+  return word == "float" || word == "string" || word == "bool";
+}
+
+}  // namespace
+
+// ---- top level
+
+void Parser::ce_top_level() {
+  std::vector<Annotation> annotations = ce_annotations();
+  if (at_word("version") && at(Tok::kString, 1)) return ce_version();
+  if (at_word("import") && at(Tok::kIdent, 1)) return ce_import(std::move(annotations));
+  if (at(Tok::kAttr)) return ce_attr(std::move(annotations), false);
+  if (at_word("const") && at(Tok::kIdent, 1)) return ce_attr(std::move(annotations), true);
+  if (at_word("style") && at(Tok::kIdent, 1)) {
+    advance();
+    grammar_.styles.push_back(advance().text);
+    if (at_word("extends") && at(Tok::kIdent, 1)) {
+      advance();
+      advance();
+    }
+    return;
+  }
+  if (at(Tok::kIdent)) return ce_rule_or_function(std::move(annotations));
+  if (accept(Tok::kSemicolon)) return;
+  fail("CGA102",
+       "expected a rule, a function, 'attr', 'const' or 'import', found " + describe(peek()));
+}
+
+bool Parser::ce_starts_top_level() const {
+  if (at(Tok::kAt) || at(Tok::kAttr)) return true;
+  if ((at_word("version") && at(Tok::kString, 1)) || (at_word("import") && at(Tok::kIdent, 1)) ||
+      (at_word("const") && at(Tok::kIdent, 1)) || (at_word("style") && at(Tok::kIdent, 1))) {
+    return true;
+  }
+  if (!at(Tok::kIdent)) return false;
+  if (is_arrow(peek(1).kind) || at(Tok::kAssign, 1)) return true;
+  if (!at(Tok::kLParen, 1)) return false;
+  const std::size_t after = after_parens(pos_ + 1);
+  return after < tokens_.size() &&
+         (is_arrow(tokens_[after].kind) || tokens_[after].kind == Tok::kAssign);
+}
+
+// The index of the token after the parenthesis group opening at `from` (tokens_.size() when it
+// is never closed). A rule head `Name(a, b) -->` and a call `Name(a, b) X` differ only there.
+std::size_t Parser::after_parens(std::size_t from) const {
+  int depth = 0;
+  for (std::size_t i = from; i < tokens_.size(); ++i) {
+    const Tok kind = tokens_[i].kind;
+    if (kind == Tok::kLParen) ++depth;
+    if (kind == Tok::kRParen && --depth == 0) return i + 1;
+    if (kind == Tok::kEnd || kind == Tok::kLBrace || kind == Tok::kRBrace) break;
+  }
+  return tokens_.size();
+}
+
+// Skips to the next line that starts a declaration.
+void Parser::ce_synchronize() {
+  if (pos_ == item_start_ && !at(Tok::kEnd)) advance();
+  while (!at(Tok::kEnd)) {
+    if (peek().line_start && ce_starts_top_level()) return;
+    advance();
+  }
+}
+
+std::vector<Annotation> Parser::ce_annotations() {
+  std::vector<Annotation> annotations;
+  while (at(Tok::kAt)) {
+    Annotation a;
+    const std::uint32_t begin = advance().range.begin;
+    a.name = expect(Tok::kIdent, " (the annotation name) after '@'").text;
+    if (accept(Tok::kLParen) && !accept(Tok::kRParen)) {
+      do {
+        std::string key;
+        if (at(Tok::kIdent) && at(Tok::kAssign, 1)) {
+          key = advance().text;
+          advance();
+        }
+        a.keys.push_back(std::move(key));
+        a.args.push_back(parse_expr());
+      } while (accept(Tok::kComma));
+      expect(Tok::kRParen, " to close the annotation's arguments");
+    }
+    a.range = from(begin);
+    annotations.push_back(std::move(a));
+  }
+  return annotations;
+}
+
+void Parser::ce_version() {
+  advance();
+  const Token& version = advance();
+  if (!grammar_.version.empty()) {
+    report("CGA112", "a second 'version' line (the first said \"" + grammar_.version + "\")",
+           version.range);
+  }
+  grammar_.version = version.text;
+}
+
+void Parser::ce_import(std::vector<Annotation> annotations) {
+  ImportDecl decl;
+  decl.annotations = std::move(annotations);
+  const std::uint32_t begin = advance().range.begin;
+  const Token& alias = advance();
+  decl.alias = alias.text;
+  decl.alias_range = alias.range;
+  if (at(Tok::kLParen)) {  // `import alias (styleA, styleB) : "file"`: styles are not kept
+    pos_ = after_parens(pos_);
+    if (pos_ >= tokens_.size()) pos_ = tokens_.size() - 1;
+  }
+  expect(Tok::kColon, " after the import's alias");
+  const Token& path = expect(Tok::kString, " (the rule file's path) after 'import alias :'");
+  decl.path = path.text;
+  decl.path_range = path.range;
+  if (accept(Tok::kLParen)) {
+    decl.has_list = true;
+    if (!accept(Tok::kRParen)) {
+      do {
+        const Token& name = expect(Tok::kIdent, " (an attribute name) in the import's list");
+        if (accept(Tok::kAssign)) {
+          decl.overrides.emplace_back(name.text, parse_expr());
+        } else {
+          decl.protected_attrs.push_back(name.text);
+        }
+      } while (accept(Tok::kComma));
+      expect(Tok::kRParen, " to close the import's list");
+    }
+  }
+  decl.range = from(begin);
+  grammar_.imports.push_back(std::move(decl));
+}
+
+// `attr name = expr`, `const name = expr` and their parameterised forms (functions).
+void Parser::ce_attr(std::vector<Annotation> annotations, bool is_const) {
+  const std::uint32_t begin = advance().range.begin;
+  if (at(Tok::kIdent) && at(Tok::kLParen, 1)) {
+    const Token& name = advance();
+    FunctionDecl fn;
+    fn.name = name.text;
+    fn.name_range = name.range;
+    fn.params = ce_params();
+    expect(Tok::kAssign, " after the function's parameters");
+    fn.body = parse_expr();
+    fn.is_const = is_const;
+    fn.annotations = std::move(annotations);
+    fn.range = from(begin);
+    if (grammar_.styles.empty()) grammar_.functions.push_back(std::move(fn));
+    return;
+  }
+  const Token& name = expect(Tok::kIdent, is_const ? " after 'const'" : " after 'attr'");
+  expect(Tok::kAssign, " after the name");
+  ExprPtr value = parse_expr();
+  if (!grammar_.styles.empty()) return;  // docs/cityengine-dialect.md: the Default style is kept
+  if (is_const) {
+    FunctionDecl fn;
+    fn.name = name.text;
+    fn.name_range = name.range;
+    fn.body = std::move(value);
+    fn.is_const = true;
+    fn.annotations = std::move(annotations);
+    fn.range = from(begin);
+    grammar_.functions.push_back(std::move(fn));
+    return;
+  }
+  AttrDecl decl;
+  decl.name = name.text;
+  decl.name_range = name.range;
+  decl.value = std::move(value);
+  decl.annotations = std::move(annotations);
+  decl.range = from(begin);
+  grammar_.attrs.push_back(std::move(decl));
+}
+
+void Parser::ce_rule_or_function(std::vector<Annotation> annotations) {
+  const Token& name = advance();
+  const std::uint32_t begin = name.range.begin;
+  std::vector<std::string> params;
+  if (at(Tok::kLParen)) params = ce_params();
+  if (is_arrow(peek().kind)) {
+    Rule rule;
+    rule.predecessor = name.text;
+    rule.predecessor_range = name.range;
+    rule.id_range = name.range;
+    rule.params = std::move(params);
+    rule.annotations = std::move(annotations);
+    Alternative alternative;
+    const Token& arrow = advance();
+    alternative.arrow = arrow.text;
+    alternative.items = ce_body();
+    alternative.range = from(arrow.range.begin);
+    rule.alternatives.push_back(std::move(alternative));
+    rule.range = from(begin);
+    if (grammar_.styles.empty()) current_set(begin).rules.push_back(std::move(rule));
+    return;
+  }
+  if (accept(Tok::kAssign)) {
+    FunctionDecl fn;
+    fn.name = name.text;
+    fn.name_range = name.range;
+    fn.params = std::move(params);
+    fn.body = parse_expr();
+    fn.annotations = std::move(annotations);
+    fn.range = from(begin);
+    if (grammar_.styles.empty()) grammar_.functions.push_back(std::move(fn));
+    return;
+  }
+  fail("CGA101", "expected '-->' (a rule) or '=' (a function) after '" + name.text + "', found " +
+                     describe(peek()));
+}
+
+std::vector<std::string> Parser::ce_params() {
+  std::vector<std::string> params;
+  expect(Tok::kLParen, "");
+  if (accept(Tok::kRParen)) return params;
+  do {
+    // An optional type: `float h`, `string[] names`.
+    if (at(Tok::kIdent) && is_type_word(peek().text) &&
+        (at(Tok::kIdent, 1) || at(Tok::kLBracket, 1))) {
+      advance();
+      if (accept(Tok::kLBracket)) expect(Tok::kRBracket, " after '[' in an array type");
+    }
+    params.push_back(expect(Tok::kIdent, " (a parameter name)").text);
+  } while (accept(Tok::kComma));
+  expect(Tok::kRParen, " to close the parameter list");
+  return params;
+}
+
+// ---- bodies
+
+bool Parser::ce_starts_item() const {
+  switch (peek().kind) {
+    case Tok::kEpsilon:
+    case Tok::kLBracket:
+    case Tok::kRBracket:
+      return true;
+    case Tok::kIdent:
+      if (at_word("case") || at_word("else")) return false;
+      return !ce_starts_top_level();
+    default:
+      return false;
+  }
+}
+
+// `30% :`, `prob% :`, `(a + b)% :`.
+bool Parser::ce_at_chance() const {
+  std::size_t i = pos_;
+  if (at(Tok::kNumber)) {
+    ++i;
+  } else if (at(Tok::kIdent)) {
+    ++i;
+    while (i + 1 < tokens_.size() && tokens_[i].kind == Tok::kDot &&
+           tokens_[i + 1].kind == Tok::kIdent) {
+      i += 2;
+    }
+  } else if (at(Tok::kLParen)) {
+    i = after_parens(pos_);
+  } else {
+    return false;
+  }
+  return i + 1 < tokens_.size() && tokens_[i].kind == Tok::kPercent &&
+         tokens_[i + 1].kind == Tok::kColon;
+}
+
+std::vector<Item> Parser::ce_body() {
+  Nest nest(*this);
+  std::vector<Item> items;
+  std::vector<Range> open;
+  while (true) {
+    // A chain right at the start of a body is that body (nesting); later, a `case` or a
+    // percentage belongs to the chain around it.
+    if (items.empty() && at_word("case")) {
+      items.push_back(ce_select_item(ItemKind::kCase));
+      break;
+    }
+    if (items.empty() && ce_at_chance()) {
+      items.push_back(ce_select_item(ItemKind::kChance));
+      break;
+    }
+    if (!ce_starts_item()) break;
+    items.push_back(parse_item());
+    track_brackets(items.back(), open);
+  }
+  for (const Range& range : open) report("CGA107", "'[' is never closed by ']'", range);
+  if (items.empty()) {
+    fail("CGA103",
+         "expected a successor (a shape, an operation, 'NIL', '[', ']', 'case' or a "
+         "percentage), found " +
+             describe(peek()));
+  }
+  return items;
+}
+
+Item Parser::ce_select_item(ItemKind kind) {
+  Item item;
+  item.kind = kind;
+  item.name = kind == ItemKind::kCase ? "case" : "%";
+  const std::uint32_t begin = peek().range.begin;
+  const char* what = kind == ItemKind::kCase ? "condition" : "percentage";
+  while (kind == ItemKind::kCase ? at_word("case") : ce_at_chance()) {
+    Branch branch;
+    const std::uint32_t branch_begin = peek().range.begin;
+    if (kind == ItemKind::kCase) {
+      advance();
+      branch.key = parse_expr();
+    } else {
+      branch.key = parse_unary();
+      expect(Tok::kPercent, "");
+    }
+    expect(Tok::kColon, std::string(" after the ") + what);
+    branch.items = ce_body();
+    branch.range = from(branch_begin);
+    item.branches.push_back(std::move(branch));
+  }
+  if (!at_word("else")) {
+    fail("CGA111", std::string("expected 'else :' to end the ") +
+                       (kind == ItemKind::kCase ? "'case'" : "percentage") + " chain, found " +
+                       describe(peek()));
+  }
+  Branch otherwise;
+  const std::uint32_t else_begin = advance().range.begin;
+  expect(Tok::kColon, " after 'else'");
+  otherwise.items = ce_body();
+  otherwise.range = from(else_begin);
+  item.branches.push_back(std::move(otherwise));
+  item.range = from(begin);
+  return item;
+}
+
+// `alias.Name`: dots glued to identifiers on both sides.
+std::string Parser::ce_qualified_name() {
+  std::string name = advance().text;
+  while (at(Tok::kDot) && at(Tok::kIdent, 1) &&
+         tokens_[pos_].range.begin == tokens_[pos_ - 1].range.end &&
+         tokens_[pos_ + 1].range.begin == tokens_[pos_].range.end) {
+    advance();
+    name += '.';
+    name += advance().text;
+  }
+  return name;
+}
+
+// A successor shape (`Facade`, `Floor(3)`, `imp.Lot`, terminal `Leaf.`) or an operation. Which
+// of `Name(...)` is an operation and which a rule call is decided once every rule is known
+// (resolve_calls in run()): parsed as an operation here.
+Item Parser::ce_symbol_or_operation() {
+  if (at(Tok::kLParen, 1)) return parse_operation();
+  Item item;
+  const std::uint32_t begin = peek().range.begin;
+  item.kind = ItemKind::kSymbol;
+  item.name = ce_qualified_name();
+  if (at(Tok::kLParen)) {
+    advance();
+    if (!at(Tok::kRParen)) {
+      do {
+        item.args.push_back(parse_expr());
+      } while (accept(Tok::kComma));
+    }
+    expect(Tok::kRParen, " to close the arguments of '" + item.name + "'");
+  } else if (at(Tok::kDot)) {
+    advance();
+    item.terminal = true;
+  }
+  item.range = from(begin);
+  return item;
+}
+
+// `Name(args)` parsed as an operation is a rule call when a rule of that name exists or no
+// operation does (an imported `alias.Rule(...)`, or a rule the checker reports as undefined).
+void Parser::ce_resolve_calls() {
+  std::set<std::string, std::less<>> rules;
+  for (const PrioritySet& set : grammar_.sets) {
+    for (const Rule& rule : set.rules) rules.insert(rule.predecessor);
+  }
+  // A repeat's parts live in `pattern`, everything else in `items`.
+  const auto walk = [&](auto& self, Branch& branch) -> void {
+    for (Item& item : branch.items) {
+      if (item.kind == ItemKind::kOp && !item.has_block &&
+          (rules.count(item.name) || find_operation(item.name) == nullptr)) {
+        item.kind = ItemKind::kSymbol;
+        item.op = OpKind::kGeneric;
+      }
+      for (Branch& inner : item.branches) self(self, inner);
+    }
+    for (Branch& part : branch.pattern) self(self, part);
+  };
+  for (PrioritySet& set : grammar_.sets) {
+    for (Rule& rule : set.rules) {
+      for (Alternative& alternative : rule.alternatives) {
+        Branch whole;
+        whole.items = std::move(alternative.items);
+        walk(walk, whole);
+        alternative.items = std::move(whole.items);
+      }
+    }
+  }
+}
+
+// ---- expressions
+
+ExprPtr Parser::ce_select_expr() {
+  const bool is_case = at_word("case");
+  const std::uint32_t begin = peek().range.begin;
+  ExprPtr expr = make(is_case ? ExprKind::kCase : ExprKind::kChance, Range{begin, begin});
+  while (is_case ? at_word("case") : ce_at_chance()) {
+    if (is_case) {
+      advance();
+      expr->operands.push_back(parse_expr());
+    } else {
+      expr->operands.push_back(parse_unary());
+      expect(Tok::kPercent, "");
+    }
+    expect(Tok::kColon, is_case ? " after the condition" : " after the percentage");
+    expr->operands.push_back(parse_expr());
+  }
+  if (!at_word("else")) {
+    fail("CGA111", std::string("expected 'else :' to end the ") +
+                       (is_case ? "'case'" : "percentage") + " chain, found " + describe(peek()));
+  }
+  advance();
+  expect(Tok::kColon, " after 'else'");
+  expr->operands.push_back(parse_expr());
+  expr->range = from(begin);
+  return expr;
+}
+
+// ---- dialect detection
+
+Dialect detect_dialect(const std::vector<Token>& tokens) {
+  const auto kind = [&](std::size_t i) { return i < tokens.size() ? tokens[i].kind : Tok::kEnd; };
+  const auto word = [&](std::size_t i, std::string_view w) {
+    return kind(i) == Tok::kIdent && tokens[i].text == w;
+  };
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const Token& t = tokens[i];
+    switch (t.kind) {
+      case Tok::kPriority:
+      case Tok::kTildeArrow:
+        return Dialect::kSeed004;
+      case Tok::kAt:
+        return Dialect::kCityEngine;
+      case Tok::kDot:  // a terminal `Leaf.` (a member access is glued to its name)
+        if (i > 0 && tokens[i - 1].kind == Tok::kIdent &&
+            !(kind(i + 1) == Tok::kIdent && tokens[i + 1].range.begin == t.range.end)) {
+          return Dialect::kCityEngine;
+        }
+        break;
+      case Tok::kNumber:
+        if (kind(i + 1) == Tok::kPercent && kind(i + 2) == Tok::kColon) {
+          return Dialect::kCityEngine;
+        }
+        if (t.line_start && kind(i + 1) == Tok::kColon) return Dialect::kSeed004;
+        break;
+      case Tok::kIdent:
+        if (i == 0 && t.text == "version" && kind(1) == Tok::kString) return Dialect::kCityEngine;
+        if (t.text == "case" || (t.text == "else" && kind(i + 1) == Tok::kColon)) {
+          return Dialect::kCityEngine;
+        }
+        if (!t.line_start) break;
+        if ((word(i, "import") || word(i, "const")) && kind(i + 1) == Tok::kIdent) {
+          return Dialect::kCityEngine;
+        }
+        if (kind(i + 1) == Tok::kAssign) return Dialect::kCityEngine;  // a function
+        if (kind(i + 1) == Tok::kColon && kind(i + 2) == Tok::kIdent) return Dialect::kSeed004;
+        if (kind(i + 1) == Tok::kLParen) {
+          int depth = 0;
+          std::size_t j = i + 1;
+          for (; j < tokens.size(); ++j) {
+            if (tokens[j].kind == Tok::kLParen) ++depth;
+            if (tokens[j].kind == Tok::kRParen && --depth == 0) break;
+          }
+          if (is_arrow(kind(j + 1)) || kind(j + 1) == Tok::kAssign) return Dialect::kCityEngine;
+        }
+        break;
+      default:
+        break;
+    }
+  }
+  return Dialect::kSeed004;
+}
+
+}  // namespace insula::lang::cga::detail
