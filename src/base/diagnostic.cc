@@ -16,8 +16,45 @@ std::pair<std::uint32_t, std::uint32_t> Source::locate(std::size_t offset) const
   offset = std::min(offset, text_.size());
   auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
   const std::size_t index = static_cast<std::size_t>(it - line_starts_.begin()) - 1;
-  return {static_cast<std::uint32_t>(index + 1),
+  const std::size_t first = parts_.empty() ? 0 : part_at(offset).first_line;
+  return {static_cast<std::uint32_t>(index - first + 1),
           static_cast<std::uint32_t>(offset - line_starts_[index] + 1)};
+}
+
+std::size_t Source::append(std::string name, std::string_view text) {
+  if (parts_.empty()) parts_.push_back({name_, 0, 0});
+  if (!text_.empty() && text_.back() != '\n') {
+    text_ += '\n';
+    line_starts_.push_back(text_.size());
+  }
+  const std::size_t begin = text_.size();
+  parts_.push_back({std::move(name), begin, line_starts_.size() - 1});
+  text_.append(text);
+  for (std::size_t i = begin; i < text_.size(); ++i) {
+    if (text_[i] == '\n') line_starts_.push_back(i + 1);
+  }
+  return begin;
+}
+
+const Source::Part& Source::part_at(std::size_t offset) const {
+  auto it = std::upper_bound(parts_.begin(), parts_.end(), offset,
+                             [](std::size_t o, const Part& p) { return o < p.begin; });
+  return *(it - 1);
+}
+
+const std::string& Source::name_at(std::size_t offset) const {
+  return parts_.empty() ? name_ : part_at(std::min(offset, text_.size())).name;
+}
+
+std::string_view Source::line_of(const std::string& file, std::uint32_t line) const {
+  if (parts_.empty()) return this->line(line);  // one file: whatever name the span gives
+  for (std::size_t k = 0; k < parts_.size(); ++k) {
+    if (parts_[k].name != file) continue;
+    const std::size_t last = k + 1 < parts_.size() ? parts_[k + 1].first_line : line_starts_.size();
+    if (line == 0 || parts_[k].first_line + line > last) return {};
+    return this->line(static_cast<std::uint32_t>(parts_[k].first_line + line));
+  }
+  return {};
 }
 
 std::string_view Source::line(std::uint32_t line) const {
@@ -72,7 +109,7 @@ constexpr std::size_t kContextBefore = 60;
 
 // The source line and a caret (with tildes across the span on that line).
 std::string caret_lines(const Span& span, const Source& source) {
-  std::string_view text = source.line(span.line);
+  std::string_view text = source.line_of(span.file, span.line);
   if (text.empty() && span.line > 1) return {};
   std::size_t column = std::max<std::uint32_t>(span.column, 1);
   std::size_t end_column = span.end_line == span.line ? span.end_column : 0;

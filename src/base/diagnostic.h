@@ -19,14 +19,32 @@ class Source {
   const std::string& name() const { return name_; }
   const std::string& text() const { return text_; }
   // 1-based line and column (column counts bytes) of a byte offset; offsets past the end clamp.
+  // In a source with appended files, the line counts from the start of the offset's file.
   std::pair<std::uint32_t, std::uint32_t> locate(std::size_t offset) const;
   // The text of a 1-based line without its line break; empty when out of range.
   std::string_view line(std::uint32_t line) const;
 
+  // A source of several files (a CGA rule file and the files it imports): `text` is appended
+  // after a line break and positions in it are reported in file `name`. Returns the offset of its
+  // first byte.
+  std::size_t append(std::string name, std::string_view text);
+  // The file holding byte `offset` (name() when nothing was appended).
+  const std::string& name_at(std::size_t offset) const;
+  // Line `line` (1-based) of file `file`; empty when out of range or no such file.
+  std::string_view line_of(const std::string& file, std::uint32_t line) const;
+
  private:
+  struct Part {
+    std::string name;
+    std::size_t begin = 0;       // byte offset of the file's first byte
+    std::size_t first_line = 0;  // index into line_starts_ of its first line
+  };
+  const Part& part_at(std::size_t offset) const;
+
   std::string name_;
   std::string text_;
   std::vector<std::size_t> line_starts_;
+  std::vector<Part> parts_;  // empty: one file
 };
 
 // A range in a named file; line 0 means "the whole file" (no position known).

@@ -10,7 +10,7 @@ namespace insula::base {
 Span span_of(const Source& source, std::size_t begin, std::size_t end) {
   const auto [line, column] = source.locate(begin);
   const auto [end_line, end_column] = source.locate(std::max(end, begin + 1));
-  return Span{source.name(), line, column, end_line, end_column};
+  return Span{source.name_at(begin), line, column, end_line, end_column};
 }
 
 void Scanner::error(std::string_view code, std::string message, std::size_t begin,

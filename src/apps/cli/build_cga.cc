@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "apps/cli/cga_source.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/footprint_input.h"
 #include "apps/cli/front_ends.h"
@@ -109,8 +110,9 @@ int build_cga(const BuildOptions& options) {
   Stopwatch clock;
   const std::optional<std::string> text = read_input_or_report(options.input);
   if (!text) return kExitInput;
-  const base::Source source(options.input, *text);
-  base::Result<cga::Grammar> grammar = cga::parse(source);
+  CgaSource loaded = load_cga(options.input, *text);
+  const base::Source& source = *loaded.source;
+  base::Result<cga::Grammar>& grammar = loaded.grammar;
   print_diagnostics(grammar.diagnostics(), source, options.quiet);
   if (!grammar.ok()) return kExitInput;
   seconds["parse"] = clock.seconds();

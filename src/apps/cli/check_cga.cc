@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "apps/cli/cga_source.h"
 #include "apps/cli/front_ends.h"
 #include "lang/cga/checker.h"
 #include "lang/cga/parser.h"
@@ -13,9 +14,11 @@ std::optional<std::string> check_cga(const base::Source& source, bool quiet) {
   return check_cga(source, quiet, std::string());
 }
 
-std::optional<std::string> check_cga(const base::Source& source, bool quiet,
+std::optional<std::string> check_cga(const base::Source& file, bool quiet,
                                      const std::string& start) {
-  base::Result<lang::cga::Grammar> grammar = lang::cga::parse(source);
+  const CgaSource loaded = load_cga(file.name(), file.text());
+  const base::Source& source = *loaded.source;
+  const base::Result<lang::cga::Grammar>& grammar = loaded.grammar;
   if (!grammar.ok()) {
     print_diagnostics(grammar.diagnostics(), source, quiet);
     return std::nullopt;

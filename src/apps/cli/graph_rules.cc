@@ -1,4 +1,5 @@
 #include "apps/cli/graph_rules.h"
+#include "apps/cli/cga_source.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -73,7 +74,9 @@ std::unique_ptr<FrontEndRules::Program> read_cga(const std::string& folder,
                                                  const std::vector<std::string>& attributes) {
   auto program = std::make_unique<FrontEndRules::Program>();
   if (!read_source(folder, request, *program)) return program;
-  base::Result<cga::Grammar> grammar = cga::parse(*program->source);
+  CgaSource loaded = load_cga(program->source->name(), program->source->text());
+  program->source = std::move(loaded.source);
+  base::Result<cga::Grammar>& grammar = loaded.grammar;
   if (!grammar.ok()) {
     program->error = rendered(grammar.diagnostics(), *program->source);
     return program;

@@ -57,6 +57,10 @@ struct Expr {
 
 using ExprPtr = std::unique_ptr<Expr>;
 
+// `world.up.flatTop`, `material.color`, `x` as text: a name or a chain of member accesses on
+// names; empty for any other expression.
+std::string dotted_name(const Expr& expr);
+
 // Operations recognised by name. The paper's spellings and their long forms map to one kind:
 // BS/Subdiv -> kSplit, RR/Repeat -> kRepeat, CS/Comp -> kComp, T -> kTranslate, S -> kScale,
 // Rx/Ry/Rz -> kRotate, I -> kInsert, Pshape -> kPredefined. Every other name is kGeneric
@@ -99,6 +103,7 @@ struct Item {
 struct Branch {
   Range range;
   ExprPtr key;
+  bool merged = false;  // CityEngine's `top = Roof`: the selected components as one shape
   bool repeat = false;
   std::vector<Branch> pattern;
   std::vector<Item> items;

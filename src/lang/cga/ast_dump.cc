@@ -178,7 +178,7 @@ class Dumper {
 
   void branch(const Branch& b, int depth) {
     std::string head = std::string(b.repeat ? "(pattern" : "(branch") + at(b.range);
-    if (b.key) head += " (key " + dump(*b.key) + ")";
+    if (b.key) head += (b.merged ? " (merged-key " : " (key ") + dump(*b.key) + ")";
     line(depth, head);
     for (const Branch& inner : b.pattern) branch(inner, depth + 1);
     for (const Item& it : b.items) item(it, depth + 1);

@@ -132,9 +132,9 @@ void Checker::declare_attributes() {
 // (as the compiler does), so `name` is defined in every expression of the grammar.
 void Checker::collect_set_targets() {
   const auto visit = [&](const Item& item) {
-    if (item.kind == ItemKind::kOp && item.name == "set" && !item.args.empty() &&
-        (item.args[0]->kind == ExprKind::kIdent || item.args[0]->kind == ExprKind::kString)) {
-      known_.insert(item.args[0]->text);
+    if (item.kind == ItemKind::kOp && item.name == "set" && !item.args.empty()) {
+      if (item.args[0]->kind == ExprKind::kString) known_.insert(item.args[0]->text);
+      if (const std::string name = dotted_name(*item.args[0]); !name.empty()) known_.insert(name);
     }
   };
   for (const PrioritySet& set : grammar_.sets) {

@@ -117,13 +117,13 @@ void Checker::check_chain(const Item& item) {
 // A call of a function of the grammar: true when `expr` is one (and checked here).
 bool Checker::check_user_call(const Expr& expr) {
   const Expr& callee = *expr.operands[0];
-  if (callee.kind != ExprKind::kIdent) return false;
-  auto it = functions_.find(callee.text);
+  const std::string name = dotted_name(callee);  // `f(x)`, an imported `alias.f(x)`
+  auto it = functions_.find(name);
   if (it == functions_.end()) return false;
   const std::size_t count = expr.operands.size() - 1;
   if (it->second->params.size() != count) {
     error("CGA312",
-          "function '" + callee.text + "' takes " + std::to_string(it->second->params.size()) +
+          "function '" + name + "' takes " + std::to_string(it->second->params.size()) +
               " argument" + (it->second->params.size() == 1 ? "" : "s") + ", found " +
               std::to_string(count),
           callee.range);

@@ -82,6 +82,8 @@ void Checker::check_expr(const Expr& expr, ExprRole role) {
       check_identifier(expr, role);
       return;
     case ExprKind::kMember:
+      // CityEngine's words with dots: `world.up`, `scope.xy` as operation arguments.
+      if (cityengine() && role == ExprRole::kBareWord && !dotted_name(expr).empty()) return;
       check_member(expr);
       return;
     case ExprKind::kCall:
@@ -144,6 +146,13 @@ void Checker::check_identifier(const Expr& expr, ExprRole role) {
 // argument (`Shape.occ` needs one and is a call).
 void Checker::check_member(const Expr& expr) {
   const Expr& object = *expr.operands[0];
+  // An attribute whose name has dots (set(material.colormap, ...), set(trim.vertical, ...)).
+  if (const std::string dotted = dotted_name(expr);
+      cityengine() && (attributes_.count(dotted) || known_.count(dotted))) {
+    used_attributes_.insert(dotted);
+    return;
+  }
+  if (cityengine() && functions_.count(dotted_name(expr))) return;  // an imported constant
   if (cityengine() && object.kind == ExprKind::kIdent) {
     const std::string name = object.text + "." + expr.text;
     if (contains(kUnsupportedFunctions, name)) {
@@ -195,6 +204,11 @@ void Checker::check_call(const Expr& expr) {
     const FunctionInfo* info = find_function(callee.text);
     if (!info && cityengine() && contains(kUnsupportedFunctions, callee.text)) {
       error("CGA902", "CityEngine function '" + callee.text + "' is not supported", callee.range);
+      // Its arguments are often words (convert(x, scope, world, pos, ...)): names only.
+      for (std::size_t i = 1; i < expr.operands.size(); ++i) {
+        check_expr(*expr.operands[i], ExprRole::kBareWord);
+      }
+      return;
     } else if (!info) {
       error("CGA321", "unknown function '" + callee.text + "'", callee.range);
     } else if (!signature_accepts(info->signature, count)) {

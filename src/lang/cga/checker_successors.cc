@@ -278,7 +278,7 @@ void Checker::check_arguments(const Item& item, const OperationInfo& info) {
         break;
       case 'i':
         // set(name, value) declares `name` when no attr does (collect_set_targets).
-        if (arg.kind != ExprKind::kIdent && arg.kind != ExprKind::kString) {
+        if (arg.kind != ExprKind::kString && dotted_name(arg).empty()) {
           error("CGA320", which + " must be an attribute name", arg.range);
         }
         break;

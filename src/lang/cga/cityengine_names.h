@@ -132,9 +132,6 @@ inline constexpr std::string_view kUnsupportedFunctions[] = {
     "geometry.uMax",
     "geometry.vMin",
     "geometry.vMax",
-    "log10",
-    "isnan",
-    "isinf",
     "isNull",
     "hash",
 };

@@ -31,28 +31,69 @@ std::string Program::describe(const CRule& rule) const {
 namespace {
 
 constexpr std::pair<std::string_view, ShapeAttr> kShapeAttrs[] = {
-    {"sx", ShapeAttr::kSx},       {"sy", ShapeAttr::kSy},         {"sz", ShapeAttr::kSz},
-    {"tx", ShapeAttr::kTx},       {"ty", ShapeAttr::kTy},         {"tz", ShapeAttr::kTz},
-    {"area", ShapeAttr::kArea},   {"volume", ShapeAttr::kVolume}, {"depth", ShapeAttr::kDepth},
-    {"index", ShapeAttr::kIndex}, {"total", ShapeAttr::kTotal},
+    {"sx", ShapeAttr::kSx},        {"sy", ShapeAttr::kSy},       {"sz", ShapeAttr::kSz},
+    {"tx", ShapeAttr::kTx},        {"ty", ShapeAttr::kTy},       {"tz", ShapeAttr::kTz},
+    {"elevation", ShapeAttr::kTz}, {"area", ShapeAttr::kArea},   {"volume", ShapeAttr::kVolume},
+    {"depth", ShapeAttr::kDepth},  {"index", ShapeAttr::kIndex}, {"total", ShapeAttr::kTotal},
 };
 
 constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
-    {"rand", Function::kRand},   {"rint", Function::kRint},   {"round", Function::kRound},
-    {"floor", Function::kFloor}, {"ceil", Function::kCeil},   {"abs", Function::kAbs},
-    {"min", Function::kMin},     {"max", Function::kMax},     {"clamp", Function::kClamp},
-    {"sqrt", Function::kSqrt},   {"pow", Function::kPow},     {"exp", Function::kExp},
-    {"ln", Function::kLn},       {"sin", Function::kSin},     {"cos", Function::kCos},
-    {"tan", Function::kTan},     {"asin", Function::kAsin},   {"acos", Function::kAcos},
-    {"atan", Function::kAtan},   {"atan2", Function::kAtan2}, {"p", Function::kP},
-    {"float", Function::kFloat}, {"str", Function::kStr},     {"bool", Function::kBool},
+    {"rand", Function::kRand},
+    {"rint", Function::kRint},
+    {"round", Function::kRound},
+    {"floor", Function::kFloor},
+    {"ceil", Function::kCeil},
+    {"abs", Function::kAbs},
+    {"min", Function::kMin},
+    {"max", Function::kMax},
+    {"clamp", Function::kClamp},
+    {"sqrt", Function::kSqrt},
+    {"pow", Function::kPow},
+    {"exp", Function::kExp},
+    {"ln", Function::kLn},
+    {"sin", Function::kSin},
+    {"cos", Function::kCos},
+    {"tan", Function::kTan},
+    {"asin", Function::kAsin},
+    {"acos", Function::kAcos},
+    {"atan", Function::kAtan},
+    {"atan2", Function::kAtan2},
+    {"p", Function::kP},
+    {"float", Function::kFloat},
+    {"str", Function::kStr},
+    {"bool", Function::kBool},
     {"len", Function::kLen},
+    {"find", Function::kFind},
+    {"substring", Function::kSubstring},
+    {"count", Function::kCount},
+    {"replace", Function::kReplace},
+    {"getPrefix", Function::kGetPrefix},
+    {"getSuffix", Function::kGetSuffix},
+    {"listSize", Function::kListSize},
+    {"listItem", Function::kListItem},
+    {"listFirst", Function::kListFirst},
+    {"listLast", Function::kListLast},
+    {"listRange", Function::kListRange},
+    {"listIndex", Function::kListIndex},
+    {"listCount", Function::kListCount},
+    {"listAdd", Function::kListAdd},
+    {"listRandom", Function::kListRandom},
+    {"log10", Function::kLog10},
+    {"isnan", Function::kIsNan},
+    {"isinf", Function::kIsInf},
 };
 
 // An expression that names a word: a string literal or a bare identifier (`split(x)`).
 const std::string* word_of(const Expr& e) {
   if (e.kind == ExprKind::kString || e.kind == ExprKind::kIdent) return &e.text;
   return nullptr;
+}
+
+// The attribute set(name, value) assigns: a string, a name, or CityEngine's dotted names
+// (`material.colormap`, `trim.vertical`).
+std::string set_target(const Expr& e) {
+  if (e.kind == ExprKind::kString) return e.text;
+  return dotted_name(e);
 }
 
 std::string lower(std::string text) {
@@ -116,9 +157,9 @@ class Compiler {
   void declare_set_targets(const std::vector<Item>& items) {
     for (const Item& item : items) {
       if (item.kind == ItemKind::kOp && item.name == "set" && !item.args.empty()) {
-        if (const std::string* w = word_of(*item.args[0]);
-            w != nullptr && program_->find_attr(*w) == nullptr) {
-          program_->attrs.push_back({*w, kNoExpr, item.range});
+        if (const std::string name = set_target(*item.args[0]);
+            !name.empty() && program_->find_attr(name) == nullptr) {
+          program_->attrs.push_back({name, kNoExpr, item.range});
         }
       }
       for (const Branch& b : item.branches) declare_branch_targets(b);
@@ -237,6 +278,12 @@ class Compiler {
 
   std::uint32_t member(const Expr& e) {
     const Expr& object = *e.operands[0];
+    if (const std::uint32_t a = attr_index(dotted_name(e)); a != kNoExpr) {
+      return add(ENode{ECode::kAttr, 0, a, e.range, {}});
+    }
+    if (auto fn = function_ids_.find(dotted_name(e)); fn != function_ids_.end()) {
+      return add(ENode{ECode::kCall, 0, fn->second, e.range, {}});  // an imported constant
+    }
     if (object.kind == ExprKind::kIdent) {
       if (const AttributeInfo* info = find_shape_attribute(object.text, e.text);
           info != nullptr && info->args == 0) {
@@ -266,6 +313,16 @@ class Compiler {
       }
       program_->uses_occlusion = true;
       return add(ENode{ECode::kOcc, 0, 0, e.range, kids});
+    }
+    if (auto fn = function_ids_.find(dotted_name(callee)); fn != function_ids_.end()) {
+      if (program_->functions[fn->second].params != argc) {
+        error("CGA504",
+              "'" + dotted_name(callee) + "' takes " +
+                  std::to_string(program_->functions[fn->second].params) + " arguments",
+              e.range);
+        return constant(Value{}, e.range);
+      }
+      return add(ENode{ECode::kCall, 0, fn->second, e.range, kids});
     }
     if (callee.kind == ExprKind::kIdent) {
       if (auto fn = function_ids_.find(callee.text); fn != function_ids_.end()) {
@@ -471,12 +528,14 @@ class Compiler {
   void built_in(const Item& item, CItem& c) {
     if (item.name == "set") {
       c.code = OpCode::kSet;
-      const std::string* w = word_of(*item.args[0]);
-      if (w == nullptr || attr_index(*w) == kNoExpr) {
+      const std::string name = set_target(*item.args[0]);
+      // CityEngine's set(material.color, "#...") is color("#...").
+      const std::uint32_t attr = name == "material.color" ? program_->color_attr : attr_index(name);
+      if (name.empty() || attr == kNoExpr) {
         error("CGA508", "set() expects an attribute name first", item.args[0]->range);
         return;
       }
-      c.attr = attr_index(*w);
+      c.attr = attr;
       c.args.push_back(expr(*item.args[1]));
       return;
     }

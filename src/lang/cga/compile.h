@@ -83,7 +83,25 @@ enum class Function : std::uint8_t {
   kFloat,
   kStr,
   kBool,
-  kLen
+  kLen,
+  kFind,
+  kSubstring,
+  kCount,
+  kReplace,
+  kGetPrefix,
+  kGetSuffix,
+  kListSize,
+  kListItem,
+  kListFirst,
+  kListLast,
+  kListRange,
+  kListIndex,
+  kListCount,
+  kListAdd,
+  kListRandom,
+  kLog10,
+  kIsNan,
+  kIsInf,
 };
 
 struct ENode {

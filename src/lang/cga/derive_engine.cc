@@ -467,6 +467,10 @@ void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State&
         color(c, st);
         break;
       case OpCode::kSet:
+        if (c.attr == program_.color_attr) {  // set(material.color, v): checked as color(v)
+          color(c, st);
+          break;
+        }
         set_attr(st, c.attr, eval(c.args[0], st));
         break;
       case OpCode::kPrint:

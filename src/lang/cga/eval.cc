@@ -136,8 +136,120 @@ Value apply_binary(BinaryOp op, const Value& a, const Value& b, Range range) {
 }
 
 bool is_random(Function f) {
-  return f == Function::kRand || f == Function::kP;
+  return f == Function::kRand || f == Function::kP || f == Function::kListRandom;
 }
+
+namespace {
+
+// A CityEngine string list: items each ended by ';' (a last item without ';' counts too).
+std::vector<std::string> list_items(const std::string& list) {
+  std::vector<std::string> items;
+  std::size_t begin = 0;
+  while (begin < list.size()) {
+    std::size_t end = list.find(';', begin);
+    if (end == std::string::npos) end = list.size();
+    items.push_back(list.substr(begin, end - begin));
+    begin = end + 1;
+  }
+  return items;
+}
+
+std::string list_of(const std::vector<std::string>& items, std::size_t begin, std::size_t end) {
+  std::string out;
+  for (std::size_t i = begin; i < end && i < items.size(); ++i) out.append(items[i]).append(";");
+  return out;
+}
+
+std::size_t occurrences(const std::string& s, const std::string& match) {
+  if (match.empty()) return 0;
+  std::size_t n = 0;
+  for (std::size_t at = s.find(match); at != std::string::npos;
+       at = s.find(match, at + match.size())) {
+    ++n;
+  }
+  return n;
+}
+
+// A count or index argument: a whole number, clamped to [0, size].
+std::size_t index_arg(double x, std::size_t size) {
+  if (!(x > 0)) return 0;
+  return std::min(size, static_cast<std::size_t>(std::floor(x)));
+}
+
+Value string_function(Function f, const std::vector<Value>& args, Range range) {
+  const auto text = [&](std::size_t i) { return as_text(args[i]); };
+  const auto x = [&](std::size_t i) { return number_arg(args, i, range); };
+  switch (f) {
+    case Function::kFind: {
+      const std::string s = text(0);
+      const std::string match = text(1);
+      const std::size_t nth = args.size() > 2 ? index_arg(x(2), s.size()) : 0;
+      std::size_t at = s.find(match);
+      for (std::size_t k = 0; k < nth && at != std::string::npos; ++k) at = s.find(match, at + 1);
+      return at == std::string::npos ? -1.0 : static_cast<double>(at);
+    }
+    case Function::kSubstring: {
+      const std::string s = text(0);
+      const std::size_t begin = index_arg(x(1), s.size());
+      const std::size_t end = index_arg(x(2), s.size());
+      return end > begin ? s.substr(begin, end - begin) : std::string();
+    }
+    case Function::kCount:
+      return static_cast<double>(occurrences(text(0), text(1)));
+    case Function::kReplace: {
+      std::string s = text(0);
+      const std::string from = text(1);
+      const std::string to = text(2);
+      if (from.empty()) return s;
+      for (std::size_t at = s.find(from); at != std::string::npos;
+           at = s.find(from, at + to.size())) {
+        s.replace(at, from.size(), to);
+      }
+      return s;
+    }
+    case Function::kGetPrefix: {
+      const std::string s = text(0);
+      const std::size_t at = s.find(text(1));
+      return at == std::string::npos ? s : s.substr(0, at);
+    }
+    case Function::kGetSuffix: {
+      const std::string s = text(0);
+      const std::string match = text(1);
+      const std::size_t at = match.empty() ? std::string::npos : s.rfind(match);
+      return at == std::string::npos ? s : s.substr(at + match.size());
+    }
+    default:
+      break;
+  }
+  const std::vector<std::string> items = list_items(text(0));
+  switch (f) {
+    case Function::kListSize:
+      return static_cast<double>(items.size());
+    case Function::kListItem: {
+      const double i = x(1);
+      if (!(i >= 0) || i >= static_cast<double>(items.size())) return std::string();
+      return items[static_cast<std::size_t>(i)];
+    }
+    case Function::kListFirst:
+      return items.empty() ? std::string() : items.front();
+    case Function::kListLast:
+      return items.empty() ? std::string() : items.back();
+    case Function::kListRange:
+      return list_of(items, index_arg(x(1), items.size()), index_arg(x(2), items.size()));
+    case Function::kListIndex: {
+      const auto it = std::find(items.begin(), items.end(), text(1));
+      return it == items.end() ? -1.0 : static_cast<double>(it - items.begin());
+    }
+    case Function::kListCount:
+      return static_cast<double>(std::count(items.begin(), items.end(), text(1)));
+    case Function::kListAdd:
+      return list_of(items, 0, items.size()) + text(1) + ";";
+    default:
+      fail(range, "internal: not a string function");
+  }
+}
+
+}  // namespace
 
 Value apply_function(Function f, const std::vector<Value>& args, Range range) {
   const auto x = [&](std::size_t i) { return number_arg(args, i, range); };
@@ -204,6 +316,28 @@ Value apply_function(Function f, const std::vector<Value>& args, Range range) {
     case Function::kLen:
       if (!is_string(args[0])) fail(range, "len() expects a string");
       return static_cast<double>(std::get<std::string>(args[0]).size());
+    case Function::kLog10:
+      if (!(x(0) > 0)) fail(range, "log10 of a number <= 0");
+      return std::log10(x(0));
+    case Function::kIsNan:
+      return std::isnan(x(0));
+    case Function::kIsInf:
+      return std::isinf(x(0));
+    case Function::kFind:
+    case Function::kSubstring:
+    case Function::kCount:
+    case Function::kReplace:
+    case Function::kGetPrefix:
+    case Function::kGetSuffix:
+    case Function::kListSize:
+    case Function::kListItem:
+    case Function::kListFirst:
+    case Function::kListLast:
+    case Function::kListRange:
+    case Function::kListIndex:
+    case Function::kListCount:
+    case Function::kListAdd:
+      return string_function(f, args, range);
     default:
       fail(range, "internal: random function evaluated without a generator");
   }
@@ -273,6 +407,13 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
         return context.rng().uniform(lo, hi);
       }
       if (f == Function::kP) return context.rng().unit() < as_number(args[0], n.range);
+      if (f == Function::kListRandom) {
+        const std::vector<std::string> items = list_items(as_text(args[0]));
+        if (items.empty()) return std::string();
+        return items[std::min(
+            items.size() - 1,
+            static_cast<std::size_t>(context.rng().unit() * static_cast<double>(items.size())))];
+      }
       return apply_function(f, args, n.range);
     }
     case ECode::kParam:

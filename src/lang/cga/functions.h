@@ -45,6 +45,26 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"str", 1, 1, "v", "text of a value"},
     {"bool", 1, 1, "v", "truth of a value"},
     {"len", 1, 1, "s", "length of a string"},
+    // CityEngine's string and string-list functions (docs/cityengine-dialect.md §5); a list is
+    // a string of items each ended by ';' ("a;b;c;").
+    {"find", 2, 3, "ss|ssn", "index of the n-th (default 0th) occurrence of a text, -1 if none"},
+    {"substring", 3, 3, "snn", "substring(s, begin, end): the characters begin .. end - 1"},
+    {"count", 2, 2, "ss", "how often a text occurs in a string"},
+    {"replace", 3, 3, "sss", "replace(s, old, new): every occurrence replaced"},
+    {"getPrefix", 2, 2, "ss", "the text before the first occurrence of a match (all if none)"},
+    {"getSuffix", 2, 2, "ss", "the text after the last occurrence of a match (all if none)"},
+    {"listSize", 1, 1, "s", "number of items of a list"},
+    {"listItem", 2, 2, "sn", "item i (0-based) of a list, \"\" past the end"},
+    {"listFirst", 1, 1, "s", "first item of a list"},
+    {"listLast", 1, 1, "s", "last item of a list"},
+    {"listRange", 3, 3, "snn", "listRange(l, begin, end): items begin .. end - 1 as a list"},
+    {"listIndex", 2, 2, "ss", "index of the first item equal to a text, -1 if none"},
+    {"listCount", 2, 2, "ss", "how many items equal a text"},
+    {"listAdd", 2, 2, "ss", "the list with an item appended"},
+    {"listRandom", 1, 1, "s", "an item of a list drawn from the shape's seeded generator"},
+    {"log10", 1, 1, "n", "logarithm to base 10"},
+    {"isnan", 1, 1, "n", "whether x is not a number"},
+    {"isinf", 1, 1, "n", "whether x is infinite"},
 };
 
 // Shape attributes: `Shape.sx`, `Scope.sx` (the paper writes Shape., CityEngine scope.; both
@@ -62,6 +82,7 @@ inline constexpr AttributeInfo kShapeAttributes[] = {
     {"tx", 0, "scope origin x in the lot's frame"},
     {"ty", 0, "scope origin y in the lot's frame"},
     {"tz", 0, "scope origin z in the lot's frame"},
+    {"elevation", 0, "height of the scope origin above the lot (CityEngine's scope.elevation)"},
     {"area", 0, "area of a flat shape's outline (sx * sy for a box scope)"},
     {"volume", 0, "sx * sy * sz"},
     {"depth", 0, "derivation depth of the shape"},

@@ -167,6 +167,10 @@ class Writer {
     for (const Branch& b : list) {
       out_.begin_object();
       optional_expr("key", b.key);
+      if (b.merged) {
+        out_.key("merged");
+        out_.boolean(true);
+      }
       out_.key("repeat");
       out_.boolean(b.repeat);
       branches("pattern", b.pattern);

@@ -218,6 +218,7 @@ class Writer {
     out_.open(feature);
     located(b.range);
     if (b.repeat) out_.attribute("repeat", "true");
+    if (b.merged) out_.attribute("merged", "true");
     if (b.key) expr("key", *b.key);
     for (const Branch& inner : b.pattern) branch("pattern", inner);
     for (const Item& it : b.items) item(it);

@@ -136,6 +136,10 @@ ExprPtr Parser::parse_probability() {
 
 }  // namespace detail
 
+base::Result<Grammar> parse(const base::Source& source, Dialect dialect) {
+  return detail::Parser(source, lex(source), dialect).run();
+}
+
 base::Result<Grammar> parse(const base::Source& source) {
   LexOutput lexed = lex(source);
   const Dialect dialect = detail::detect_dialect(lexed.tokens);

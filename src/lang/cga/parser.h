@@ -19,5 +19,7 @@ inline constexpr int kMaxErrors = 50;
 // each one), sorted by position, each `file:line:col` at the offending token. Never throws,
 // never prints; any byte sequence is accepted as input.
 base::Result<Grammar> parse(const base::Source& source);
+// The same in a given dialect (an imported rule file is CityEngine's whatever it contains).
+base::Result<Grammar> parse(const base::Source& source, Dialect dialect);
 
 }  // namespace insula::lang::cga

@@ -25,6 +25,7 @@
 #include <cctype>
 #include <set>
 
+#include "lang/cga/cityengine_names.h"
 #include "lang/cga/parser_internal.h"
 
 namespace insula::lang::cga::detail {
@@ -37,6 +38,22 @@ bool is_arrow(Tok kind) {
 
 bool is_type_word(std::string_view word) {
   return word == "float" || word == "string" || word == "bool";
+}
+
+// CityEngine argument forms that Insula runs as the plain form (docs/cityengine-dialect.md,
+// "Differences"): `extrude(type, d)` extrudes along the face normal (the same as world.up on a
+// lot, CityEngine's common case), `split(axis, adjust|noAdjust)` splits as split(axis).
+void drop_form_words(Item& item) {
+  static constexpr std::string_view kExtrudeTypes[] = {"world.y", "world.up", "world.up.flatTop",
+                                                       "face.normal", "vertex.normal"};
+  if (item.name == "extrude" && item.args.size() == 2 &&
+      contains(kExtrudeTypes, dotted_name(*item.args[0]))) {
+    item.args.erase(item.args.begin());
+  }
+  if (item.name == "split" && item.args.size() == 2) {
+    const std::string word = dotted_name(*item.args[1]);
+    if (word == "adjust" || word == "noAdjust") item.args.pop_back();
+  }
 }
 
 }  // namespace
@@ -411,11 +428,14 @@ void Parser::ce_resolve_calls() {
   // A repeat's parts live in `pattern`, everything else in `items`.
   const auto walk = [&](auto& self, Branch& branch) -> void {
     for (Item& item : branch.items) {
+      const bool cityengine_op =
+          contains(kUnsupportedOperations, item.name) || contains(kDetailOperations, item.name);
       if (item.kind == ItemKind::kOp && !item.has_block &&
-          (rules.count(item.name) || find_operation(item.name) == nullptr)) {
+          (rules.count(item.name) || (find_operation(item.name) == nullptr && !cityengine_op))) {
         item.kind = ItemKind::kSymbol;
         item.op = OpKind::kGeneric;
       }
+      if (item.kind == ItemKind::kOp) drop_form_words(item);
       for (Branch& inner : item.branches) self(self, inner);
     }
     for (Branch& part : branch.pattern) self(self, part);

@@ -290,6 +290,12 @@ class Parser {
     std::vector<Branch> branches;
     do {
       branches.push_back(parse_branch());
+      if (branches.back().repeat || !branches.back().items.empty() || branches.back().key) continue;
+      // CityEngine's group without `*` (`split(x){ { a : A | b : B } | ... }`): its parts
+      // stand in the enclosing block.
+      std::vector<Branch> group = std::move(branches.back().pattern);
+      branches.pop_back();
+      for (Branch& part : group) branches.push_back(std::move(part));
     } while (accept(Tok::kBar) || accept(Tok::kComma));
     expect(Tok::kRBrace, " or '|' in the successor block");
     return branches;
@@ -299,13 +305,22 @@ class Parser {
     Branch branch;
     const std::uint32_t begin = peek().range.begin;
     if (at(Tok::kLBrace)) {
-      branch.repeat = true;
       branch.pattern = parse_block();
+      if (cityengine() && !at(Tok::kStar)) {  // a group: parse_block splices its parts
+        branch.range = from(begin);
+        return branch;
+      }
+      branch.repeat = true;
       expect(Tok::kStar, " after a repeat pattern '{ ... }'");
     } else {
       if (branch_has_key()) {
         branch.key = parse_expr();
-        expect(Tok::kColon, " after the size or selector of a branch");
+        // CityEngine: `selector = successor` puts every selected component in one shape.
+        if (cityengine() && accept(Tok::kAssign)) {
+          branch.merged = true;
+        } else {
+          expect(Tok::kColon, " after the size or selector of a branch");
+        }
       }
       branch.items = parse_successor();
     }
@@ -338,6 +353,9 @@ class Parser {
           break;
         case Tok::kColon:
           if (depth == 0) return true;
+          break;
+        case Tok::kAssign:
+          if (depth == 0 && cityengine()) return true;
           break;
         case Tok::kEnd:
         case Tok::kTildeArrow:
@@ -487,7 +505,8 @@ class Parser {
 
   ExprPtr parse_comparison() {
     ExprPtr left = parse_additive();
-    if (at(Tok::kAssign)) fail("CGA101", "expected '==' to compare, found '='");
+    // (CityEngine's `top = Roof` branch key ends at its `=`.)
+    if (at(Tok::kAssign) && !cityengine()) fail("CGA101", "expected '==' to compare, found '='");
     const std::optional<BinaryOp> op = comparison_op(peek().kind);
     if (!op) return left;
     advance();
@@ -525,6 +544,11 @@ class Parser {
 
   ExprPtr parse_unary() {
     UnaryOp op;
+    if (cityengine() && at(Tok::kPlus)) {  // CityEngine accepts a unary plus (`d/2 + +x`)
+      Nest nest(*this);
+      advance();
+      return parse_unary();
+    }
     if (at(Tok::kMinus)) {
       op = UnaryOp::kNegate;
     } else if (at(Tok::kTilde)) {

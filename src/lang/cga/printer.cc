@@ -406,7 +406,7 @@ class GrammarPrinter {
     if (b.key) {
       out_ += ' ';
       out_ += print(*b.key);
-      out_ += ':';
+      out_ += b.merged ? " =" : ":";
     }
     items(b.items);
   }

@@ -1,0 +1,318 @@
+// CityEngine's dialect of CGA (issue 20): the second reader, its checks, its derivation and
+// imports. Rule texts here are our own, written in the style of the real files the dialect page
+// counts (docs/cityengine-dialect.md).
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "base/text_encoding.h"
+#include "derive_util.h"
+#include "lang/cga/ast_dump.h"
+#include "lang/cga/checker.h"
+#include "lang/cga/imports.h"
+#include "lang/cga/printer.h"
+#include "test_util.h"
+
+namespace insula::lang::cga {
+namespace {
+
+using testing::compile_text;
+using testing::derive_all;
+using testing::diagnostics_text;
+using testing::rectangle_lot;
+using testing::symbol_count;
+
+constexpr const char* kHouse = R"(version "2019.0"
+/** File: house.cga */
+@Group("Mass", 1) @Order(1) @Range(min = 3, max = 30)
+attr height = 12
+@Enum("flat", "hip") @Description("roof form")
+attr roofType = "hip"
+const floorH = 3.5
+tileW(n) = scope.sx / n
+
+@StartRule
+Lot -->
+	extrude(world.up, height)
+	comp(f) { top = Roof | side : Facade(split.index) | bottom : NIL }
+
+Roof -->
+	case roofType == "hip" : roofHip(30) RoofTiles.
+	else : RoofFlat.
+
+Facade(idx) -->
+	split(y) { ~floorH : Floor(idx) }*
+
+Floor(i) -->
+	case scope.sx < 4 : Wall.
+	else :
+		split(x) { ~2 : 30% : Window else : Wall. | 1 : Wall. }*
+Window --> color("#334455") Glass.
+)";
+
+Grammar parse_ok(const std::string& text, const std::string& name = "house.cga") {
+  const base::Source source(name, text);
+  base::Result<Grammar> g = parse(source);
+  EXPECT_TRUE(g.ok()) << (g.diagnostics().empty() ? "" : base::render(g.diagnostics().front()));
+  return g.ok() ? std::move(g.value()) : Grammar{};
+}
+
+std::string check_text(const std::string& text) {
+  const base::Source source("t.cga", text);
+  base::Result<Grammar> g = parse(source);
+  if (!g.ok()) return base::render(g.diagnostics().front()) + "\n";
+  std::string out;
+  for (const base::Diagnostic& d : check(g.value(), source).diagnostics) {
+    out += base::render(d) + "\n";
+  }
+  return out;
+}
+
+TEST(CityEngineDialect, IsDetectedFromWhatSeed004Lacks) {
+  EXPECT_EQ(parse_ok(kHouse).dialect, Dialect::kCityEngine);
+  EXPECT_EQ(parse_ok("Lot --> extrude(3) A\n").dialect, Dialect::kSeed004);
+  EXPECT_EQ(parse_ok("Lot --> extrude(3) A.\n").dialect, Dialect::kCityEngine);
+  EXPECT_EQ(parse_ok("f(x) = x * 2\nLot --> extrude(f(2)) A\n").dialect, Dialect::kCityEngine);
+  EXPECT_EQ(parse_ok("1: Lot ~> extrude(3) A\n").dialect, Dialect::kSeed004);
+}
+
+TEST(CityEngineDialect, KeepsEveryDeclarationAndAnnotation) {
+  const base::Source source("house.cga", kHouse);
+  const Grammar g = parse_ok(kHouse);
+  EXPECT_EQ(g.version, "2019.0");
+  ASSERT_EQ(g.attrs.size(), 2U);
+  ASSERT_EQ(g.attrs[0].annotations.size(), 3U);
+  EXPECT_EQ(g.attrs[0].annotations[2].name, "Range");
+  EXPECT_EQ(g.attrs[0].annotations[2].keys, (std::vector<std::string>{"min", "max"}));
+  ASSERT_EQ(g.functions.size(), 2U);
+  EXPECT_TRUE(g.functions[0].is_const);
+  EXPECT_EQ(g.functions[1].params, std::vector<std::string>{"n"});
+  const std::string dump_text = dump(g, source);
+  // The `=` branch, the parameters, the chains and the terminals.
+  EXPECT_NE(dump_text.find("(merged-key top)"), std::string::npos) << dump_text;
+  EXPECT_NE(dump_text.find("(rule _ @19:1 (pred Facade) (params idx)"), std::string::npos)
+      << dump_text;
+  EXPECT_NE(dump_text.find("(case @16:"), std::string::npos) << dump_text;
+  EXPECT_NE(dump_text.find("(chance @25:"), std::string::npos) << dump_text;
+  EXPECT_NE(dump_text.find("(sym RoofTiles. @16:"), std::string::npos) << dump_text;
+  // extrude(world.up, h) is run as extrude(h) (docs/cityengine-dialect.md, Differences).
+  EXPECT_NE(dump_text.find("(op extrude @12:2 (height))"), std::string::npos) << dump_text;
+}
+
+TEST(CityEngineDialect, PrintsBackToTheSameModel) {
+  const base::Source source("house.cga", kHouse);
+  const Grammar g = parse_ok(kHouse);
+  const std::string printed = print(g);
+  const base::Source again("printed.cga", printed);
+  base::Result<Grammar> reparsed = parse(again);
+  ASSERT_TRUE(reparsed.ok()) << printed << base::render(reparsed.diagnostics().front());
+  // Same model apart from positions.
+  const auto strip = [](std::string text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (text[i] == '@' && i + 1 < text.size() && std::isdigit(text[i + 1])) {
+        while (i + 1 < text.size() && text[i + 1] != ' ' && text[i + 1] != ')') ++i;
+        continue;
+      }
+      out += text[i];
+    }
+    return out;
+  };
+  const auto body = [&](const std::string& text) { return strip(text.substr(text.find('\n'))); };
+  EXPECT_EQ(body(dump(reparsed.value(), again)), body(dump(g, source))) << printed;
+}
+
+TEST(CityEngineDialect, ChecksWhatTheDialectAdds) {
+  EXPECT_EQ(check_text("Lot --> A(1, 2)\nA(x) --> B.\n"),
+            "t.cga:1:9: error[CGA331]: rule 'A' takes 1 parameter, called with 2\n");
+  EXPECT_EQ(check_text("Lot --> 60% : A. 50% : B. else : C.\n"),
+            "t.cga:1:9: error[CGA332]: the percentages sum to 110, more than 100\n");
+  EXPECT_EQ(check_text("Lot --> case scope.sx > 3 : A.\n"),
+            "t.cga:2:1: error[CGA111]: expected 'else :' to end the 'case' chain, found end of "
+            "file\n");
+  EXPECT_EQ(check_text("Lot --> envelope(world.up, 30, 12, 45) A.\n"),
+            "t.cga:1:9: error[CGA901]: CityEngine operation 'envelope' is not supported\n");
+  EXPECT_EQ(check_text("attr y = convert(x, scope, world, pos, 0, 0, 0)\nLot --> print(y) A.\n"),
+            "t.cga:1:10: error[CGA902]: CityEngine function 'convert' is not supported\n");
+  EXPECT_EQ(check_text("Lot --> projectUV(0) A.\n"),
+            "t.cga:1:9: warning[CGA903]: CityEngine operation 'projectUV' is not supported "
+            "yet; it is skipped (the model lacks only that detail)\n");
+  EXPECT_EQ(check_text("@Colour\nattr c = \"#ff0000\"\nLot --> color(c) A.\n"),
+            "t.cga:1:1: warning[CGA430]: unknown annotation '@Colour' (kept, no effect)\n");
+  EXPECT_EQ(check_text("f(a) = a\nLot --> extrude(f) A.\n"),
+            "t.cga:2:17: error[CGA312]: function 'f' takes 1 argument, found none\n");
+}
+
+TEST(CityEngineDialect, StartsFromTheMarkedStartRule) {
+  const base::Source source("t.cga", "Helper --> A.\n@StartRule\nBuilding --> Helper\n");
+  base::Result<Grammar> g = parse(source);
+  ASSERT_TRUE(g.ok());
+  EXPECT_EQ(check(g.value(), source).start_symbol, "Building");
+}
+
+TEST(CityEngineDialect, DerivesCasesParametersFunctionsAndTerminals) {
+  CompileOptions lot_start;
+  lot_start.start = "Lot";
+  auto p = compile_text(kHouse, lot_start);
+  ASSERT_TRUE(p);
+  DeriveOptions options;
+  const auto r = derive_all(*p, {rectangle_lot(12, 10)}, options);
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  // extrude 12, floors of about 3.5 m: 3 per facade, 4 facades; a hip roof.
+  EXPECT_EQ(symbol_count(*p, r[0], "Floor"), 12U);
+  EXPECT_EQ(symbol_count(*p, r[0], "RoofTiles"), 1U);
+  EXPECT_EQ(symbol_count(*p, r[0], "RoofFlat"), 0U);
+  // Each tile is a Window (30%) or a Wall; every Window ends in Glass.
+  const std::uint64_t windows = symbol_count(*p, r[0], "Window");
+  EXPECT_EQ(symbol_count(*p, r[0], "Glass"), windows);
+  EXPECT_GT(windows, 0U);
+  EXPECT_GT(symbol_count(*p, r[0], "Wall"), windows);
+}
+
+TEST(CityEngineDialect, PercentagesFollowTheirWeights) {
+  auto p = compile_text("Lot --> split(x) { 1 : Tile }*\nTile --> 30% : A. 20% : B. else : C.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(2000, 1)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  const double a = static_cast<double>(symbol_count(*p, r[0], "A"));
+  const double b = static_cast<double>(symbol_count(*p, r[0], "B"));
+  const double c = static_cast<double>(symbol_count(*p, r[0], "C"));
+  EXPECT_EQ(a + b + c, 2000);
+  EXPECT_NEAR(a / 2000, 0.3, 0.04);
+  EXPECT_NEAR(b / 2000, 0.2, 0.04);
+  EXPECT_NEAR(c / 2000, 0.5, 0.04);
+}
+
+TEST(CityEngineDialect, RuleArgumentsReachTheRule) {
+  // Each piece gets its own index; the rule reads it to choose a height.
+  auto p = compile_text(R"(Lot --> split(x) { 2 : Part(split.index) }*
+Part(i) --> extrude(h(i)) Mass.
+h(i) = case i == 0 : 3 else : 3 + i * 2
+)");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(6, 2)}, [] {
+    DeriveOptions o;
+    o.keep_terminals = true;
+    return o;
+  }());
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  std::vector<double> heights;
+  for (std::size_t i = 0; i < r[0].terminals_store.size(); ++i) {
+    heights.push_back(r[0].terminals_store[i].scope.size.y);  // y along the extrusion
+  }
+  ASSERT_EQ(heights.size(), 3U);
+  EXPECT_NEAR(heights[0], 3, 1e-9);
+  EXPECT_NEAR(heights[1], 5, 1e-9);
+  EXPECT_NEAR(heights[2], 7, 1e-9);
+}
+
+TEST(CityEngineDialect, EndlessRecursionInAFunctionIsAnError) {
+  auto p = compile_text("f(x) = f(x + 1)\nLot --> extrude(f(0)) A.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(4, 4)});
+  EXPECT_FALSE(r[0].ok);
+  EXPECT_NE(diagnostics_text(r[0]).find("error[CGA603]: function 'f' nested 200 calls deep"),
+            std::string::npos)
+      << diagnostics_text(r[0]);
+}
+
+TEST(CityEngineDialect, StringAndListFunctions) {
+  auto p = compile_text(R"(attr l = "oak;elm;fir;"
+Lot --> print(listSize(l), listItem(l, 1), listIndex(l, "fir"), listRange(l, 1, 3),
+              find("a.b.c", ".", 1), substring("window", 1, 4), count("abab", "ab"),
+              replace("a-b-c", "-", "+"), getPrefix("door.obj", "."),
+              getSuffix("a/b/door.obj", "/")) A.
+)");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(4, 4)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  ASSERT_EQ(r[0].prints.size(), 1U);
+  EXPECT_EQ(r[0].prints[0], "test.cga:2: print: 3 elm 2 elm;fir; 3 ind 2 a+b+c door door.obj");
+}
+
+// ---- imports
+
+std::map<std::string, std::string> files() {
+  return {
+      {"lib/windows.cga",
+       "attr height = 2\nattr depth = 0.3\nconst frame = 0.1\n"
+       "Window --> s('1, height, depth) Glass.\n"},
+      {"lib/loop.cga", "import again : \"loop.cga\"\nX --> Y.\n"},
+  };
+}
+
+base::Result<Grammar> load(base::Source& source) {
+  base::Result<Grammar> g = parse(source);
+  if (!g.ok()) return g;
+  Grammar grammar = std::move(g.value());
+  const std::map<std::string, std::string> on_disk = files();
+  const ImportLoader loader = [&](const std::string& path, const std::string& /*from*/,
+                                  std::string& error) -> std::optional<ImportedFile> {
+    const std::string name = "lib/" + path;
+    auto it = on_disk.find(name);
+    if (it == on_disk.end()) {
+      error = "no such file";
+      return std::nullopt;
+    }
+    return ImportedFile{name, it->second};
+  };
+  std::vector<base::Diagnostic> diags = resolve_imports(grammar, source, loader);
+  if (base::has_errors(diags)) return base::Result<Grammar>::failure(std::move(diags));
+  return base::Result<Grammar>(std::move(grammar), std::move(diags));
+}
+
+TEST(CityEngineImports, NamesComeUnderTheAliasAndAttributesPropagate) {
+  base::Source source("main.cga",
+                      "import win : \"windows.cga\" (depth = 0.5)\nattr height = 3\n"
+                      "Lot --> extrude(win.frame * 100) split(x) { 2 : win.Window }*\n");
+  base::Result<Grammar> g = load(source);
+  ASSERT_TRUE(g.ok()) << base::render(g.diagnostics().front());
+  const CheckResult checked = check(g.value(), source);
+  ASSERT_TRUE(checked.ok) << base::render(checked.diagnostics.front());
+  auto program = compile(g.value(), source, {});
+  ASSERT_TRUE(program.ok()) << base::render(program.diagnostics().front());
+  DeriveOptions options;
+  options.keep_terminals = true;
+  const LotResult r = derive_lot(*program.value(), rectangle_lot(6, 4), 0, options);
+  ASSERT_TRUE(r.ok) << testing::diagnostics_text(r);
+  // The importer's height (3, not the library's 2) and the override's depth (0.5).
+  ASSERT_EQ(r.terminals_store.size(), 3U);
+  EXPECT_NEAR(r.terminals_store[0].scope.size.y, 3, 1e-9);
+  EXPECT_NEAR(r.terminals_store[0].scope.size.z, 0.5, 1e-9);
+  EXPECT_EQ(program.value()->symbol_name(r.terminals_store[0].symbol), "Glass");
+}
+
+TEST(CityEngineImports, ErrorsPointIntoTheRightFile) {
+  base::Source missing("main.cga", "import w : \"nowhere.cga\"\nLot --> A.\n");
+  base::Result<Grammar> g = load(missing);
+  ASSERT_FALSE(g.ok());
+  EXPECT_EQ(base::render(g.diagnostics().front()),
+            "main.cga:1:12: error[CGA340]: cannot import \"nowhere.cga\": no such file");
+  base::Source cycle("main.cga", "import l : \"loop.cga\"\nLot --> l.X\n");
+  g = load(cycle);
+  ASSERT_FALSE(g.ok());
+  EXPECT_EQ(base::render(g.diagnostics().front()),
+            "lib/loop.cga:1:16: error[CGA341]: \"loop.cga\" imports itself (through "
+            "lib/loop.cga)");
+}
+
+// ---- files as they are found
+
+TEST(CityEngineFiles, WindowsEncodingAndByteOrderMark) {
+  bool converted = false;
+  // "Geländer" in Windows-1252, and a euro sign (0x80).
+  EXPECT_EQ(base::utf8_text("Gel\xE4nder \x80", converted), "Gel\xC3\xA4nder \xE2\x82\xAC");
+  EXPECT_TRUE(converted);
+  EXPECT_EQ(base::utf8_text("\xEF\xBB\xBFLot --> A.", converted), "Lot --> A.");
+  EXPECT_FALSE(converted);
+  EXPECT_TRUE(base::is_utf8("Gel\xC3\xA4nder"));
+  EXPECT_FALSE(base::is_utf8("\xC3"));          // truncated
+  EXPECT_FALSE(base::is_utf8("\xC0\xAF"));      // overlong
+  EXPECT_FALSE(base::is_utf8("\xED\xA0\x80"));  // a surrogate
+  // CRLF line endings read as LF ones.
+  const Grammar g = parse_ok("version \"2015.2\"\r\nLot -->\r\n\textrude(3)\r\n\tA.\r\n");
+  EXPECT_EQ(g.sets.front().rules.front().alternatives.front().items.size(), 2U);
+}
+
+}  // namespace
+}  // namespace insula::lang::cga
