@@ -58,6 +58,21 @@ Fit fit_to_scope(Vec3 scope, const kernel::Bounds3& b, InsertMode mode) {
   return fit;
 }
 
+// Whether numerical clean-up has anything to merge. Small assets (the built-in cube, most
+// façade parts) are checked pair by pair, which costs a fraction of a weld; larger ones are
+// welded anyway.
+bool has_close_vertices(const kernel::Mesh& mesh, double tolerance) {
+  constexpr std::size_t kPairwise = 64;
+  const std::vector<Vec3>& p = mesh.positions();
+  if (p.size() > kPairwise) return true;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      if (kernel::length(p[i] - p[j]) <= tolerance) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 OpResult insert(ShapeTree& tree, ShapeId id, const kernel::Mesh& asset,
@@ -81,7 +96,10 @@ OpResult insert(ShapeTree& tree, ShapeId id, const kernel::Mesh& asset,
   const kernel::Transform place =
       kernel::compose(kernel::scaling(fit.factor), kernel::translation(-b.min));
   kernel::Mesh placed = kernel::transformed(*source, place);
-  if (options.cleanup) placed = kernel::weld(placed, 1e-6 * kernel::length(fit.size));
+  const double tolerance = 1e-6 * kernel::length(fit.size);
+  if (options.cleanup && has_close_vertices(placed, tolerance)) {
+    placed = kernel::weld(placed, tolerance);
+  }
   result.add(tree.add_child(id, s.scope.sub(fit.offset, fit.size),
                             std::make_shared<kernel::Mesh>(std::move(placed))),
              0);
