@@ -1,6 +1,7 @@
 #include "io/asset_search.h"
 
 #include <algorithm>
+#include <cctype>
 #include <system_error>
 
 namespace insula::io {
@@ -51,6 +52,39 @@ std::optional<fs::path> inside(const fs::path& file, const fs::path& base) {
   return rest;
 }
 
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// `relative` under `base` with every component matched ignoring ASCII letter case where no
+// entry has its exact spelling (the alphabetically first of several that differ only in case).
+std::optional<fs::path> find_ignoring_case(const fs::path& base, const fs::path& relative) {
+  fs::path at = base;
+  for (const fs::path& part : relative) {
+    if (part == ".") continue;
+    if (part == "..") {
+      at = at.parent_path();
+      continue;
+    }
+    std::error_code ec;
+    if (fs::exists(at / part, ec)) {
+      at /= part;
+      continue;
+    }
+    const std::string want = lower(part.string());
+    std::optional<fs::path> match;
+    for (fs::directory_iterator it(at, ec), end; !ec && it != end; it.increment(ec)) {
+      if (lower(it->path().filename().string()) != want) continue;
+      if (!match || it->path() < *match) match = it->path();
+    }
+    if (!match) return std::nullopt;
+    at = *match;
+  }
+  if (!is_file(at)) return std::nullopt;
+  return at.lexically_normal();
+}
+
 }  // namespace
 
 std::string generic_asset_name(std::string_view name) {
@@ -69,39 +103,54 @@ AssetSearch::AssetSearch(const fs::path& rule_file, const fs::path& workspace) {
   }
 }
 
-std::vector<fs::path> AssetSearch::candidates(std::string_view name) const {
+std::vector<std::pair<fs::path, fs::path>> AssetSearch::places(std::string_view name) const {
   const std::string generic = generic_asset_name(name);
-  std::vector<fs::path> out;
+  std::vector<std::pair<fs::path, fs::path>> out;
   if (generic.empty()) return out;
-  auto add = [&](const fs::path& p) {
-    const fs::path n = p.lexically_normal();
-    if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+  auto add = [&](const fs::path& base, const fs::path& relative) {
+    const fs::path n = (base / relative).lexically_normal();
+    const bool seen = std::any_of(out.begin(), out.end(), [&](const auto& p) {
+      return (p.first / p.second).lexically_normal() == n;
+    });
+    if (!seen) out.emplace_back(base, relative);
   };
   if (generic.front() == '/') {
     // A workspace path. Its project may also be the rule file's own project outside the
     // workspace (--workspace elsewhere): "/<project name>/..." then means that project.
     const fs::path rest = fs::path(generic).relative_path();
-    add(workspace_ / rest);
+    add(workspace_, rest);
     if (project_ && !rest.empty() && *rest.begin() == project_->filename()) {
       fs::path tail;
       for (auto it = std::next(rest.begin()); it != rest.end(); ++it) tail /= *it;
-      add(*project_ / tail);
+      add(*project_, tail);
     }
     return out;
   }
   const fs::path relative(generic);
-  add(folder_ / relative);
+  add(folder_, relative);
   if (project_) {
-    add(*project_ / "assets" / relative);
-    add(*project_ / "rules" / relative);
-    add(*project_ / relative);
+    add(*project_ / "assets", relative);
+    add(*project_ / "rules", relative);
+    add(*project_, relative);
   }
   return out;
 }
 
+std::vector<fs::path> AssetSearch::candidates(std::string_view name) const {
+  std::vector<fs::path> out;
+  for (const auto& [base, relative] : places(name))
+    out.push_back((base / relative).lexically_normal());
+  return out;
+}
+
 std::optional<fs::path> AssetSearch::resolve(std::string_view name) const {
-  for (const fs::path& candidate : candidates(name)) {
+  const auto tried = places(name);
+  for (const auto& [base, relative] : tried) {
+    const fs::path candidate = (base / relative).lexically_normal();
     if (is_file(candidate)) return candidate;
+  }
+  for (const auto& [base, relative] : tried) {
+    if (auto found = find_ignoring_case(base, relative)) return found;
   }
   return std::nullopt;
 }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace insula::io {
@@ -21,8 +22,9 @@ class AssetSearch {
   explicit AssetSearch(const std::filesystem::path& rule_file,
                        const std::filesystem::path& workspace = {});
 
-  // The existing regular file `name` denotes, trying candidates() in order; nullopt when none
-  // exists or the name is empty. Backslashes count as '/', for rule files written on Windows.
+  // The existing regular file `name` denotes, trying candidates() in order, then the same places
+  // ignoring letter case (rule files written on Windows, whose file names ignore it); nullopt
+  // when none exists or the name is empty. Backslashes count as '/', for the same reason.
   std::optional<std::filesystem::path> resolve(std::string_view name) const;
   // Every place resolve() tries for `name`, in order, existing or not (for "looked in" messages).
   std::vector<std::filesystem::path> candidates(std::string_view name) const;
@@ -38,6 +40,10 @@ class AssetSearch {
   std::string workspace_name(const std::filesystem::path& file) const;
 
  private:
+  // (base, relative) per candidate: the case-insensitive pass matches only below the base.
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> places(
+      std::string_view name) const;
+
   std::filesystem::path folder_;
   std::optional<std::filesystem::path> project_;
   std::filesystem::path workspace_;

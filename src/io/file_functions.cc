@@ -228,7 +228,14 @@ std::optional<ImageSize> read_image_size(const fs::path& path) {
 }
 
 bool FileFunctions::file_exists(std::string_view path) const {
-  return search_.resolve(path).has_value();
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (auto it = exists_.find(path); it != exists_.end()) return it->second;
+  }
+  const bool exists = search_.resolve(path).has_value();  // outside the lock: it reads folders
+  const std::lock_guard<std::mutex> lock(mutex_);
+  exists_.emplace(std::string(path), exists);
+  return exists;
 }
 
 const std::vector<FileFunctions::Listed>& FileFunctions::listing() const {

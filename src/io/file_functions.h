@@ -76,6 +76,7 @@ class FileFunctions {
   mutable std::mutex mutex_;
   mutable std::once_flag listed_;
   mutable std::vector<Listed> files_;
+  mutable std::map<std::string, bool, std::less<>> exists_;
   mutable std::map<std::string, std::string, std::less<>> searches_;
   mutable std::map<std::filesystem::path, std::optional<ImageSize>> images_;
 };

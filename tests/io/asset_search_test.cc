@@ -71,6 +71,20 @@ TEST_F(AssetSearchTest, BackslashesAndDotDot) {
   EXPECT_EQ(search.resolve("facade"), std::nullopt);  // a folder is not a file
 }
 
+// CityEngine runs on Windows: "Facade/Win.OBJ" finds facade/win.obj when nothing has the exact
+// spelling, in every place of the search; the exact spelling wins.
+TEST_F(AssetSearchTest, LetterCaseIsIgnoredWhenNothingMatchesExactly) {
+  touch(ws_ / "City" / "assets" / "facade" / "win.obj");
+  touch(ws_ / "Lib" / "assets" / "Tree.glb");
+  const AssetSearch search(rule_);
+  EXPECT_EQ(search.resolve("Facade/Win.OBJ"), ws_ / "City" / "assets" / "facade" / "win.obj");
+  EXPECT_EQ(search.resolve("/lib/ASSETS/tree.glb"), ws_ / "Lib" / "assets" / "Tree.glb");
+  touch(ws_ / "City" / "assets" / "Facade" / "Win.OBJ");
+  EXPECT_EQ(search.resolve("Facade/Win.OBJ"), ws_ / "City" / "assets" / "Facade" / "Win.OBJ");
+  EXPECT_EQ(search.resolve("FACADE/WIN.OBJ"), ws_ / "City" / "assets" / "Facade" / "Win.OBJ");
+  EXPECT_EQ(search.resolve("facade/door.obj"), std::nullopt);
+}
+
 TEST_F(AssetSearchTest, WorkspacePaths) {
   touch(ws_ / "Lib" / "assets" / "tree.glb");
   touch(ws_ / "City" / "assets" / "door.obj");
