@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -158,7 +159,9 @@ void add_node(const aiScene& scene, const aiNode& node, const aiMatrix4x4& paren
       out.add_vertex({p.x, p.y, p.z});
     }
     kernel::FaceTag tag;
-    tag.material = static_cast<kernel::MaterialId>(mesh.mMaterialIndex + 1);
+    const bool known = mesh.mMaterialIndex < scene.mNumMaterials &&
+                       mesh.mMaterialIndex < std::numeric_limits<kernel::MaterialId>::max();
+    tag.material = known ? static_cast<kernel::MaterialId>(mesh.mMaterialIndex + 1) : 0;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mNumIndices != 3) continue;  // points and lines
