@@ -110,10 +110,21 @@ struct RoofForm {
 OpResult roof(ShapeTree& tree, ShapeId id, const kernel::RoofSpec& spec, const RoofForm& form = {});
 
 // --- insert (ops_insert.cc)
-// A child in the same scope whose geometry is `asset` (asset space = scope space: y up) with its
-// bounding box scaled to the scope size; an axis of size 0 takes the mean scale of the others, so
-// proportions are kept, and the child's scope size on that axis becomes the asset's scaled size.
-OpResult insert(ShapeTree& tree, ShapeId id, const kernel::Mesh& asset);
+// CGA i()'s insert modes (CityEngine's alignSizeAndPosition, keepSizeAndPosition,
+// keepSizeAlignPosition).
+enum class InsertMode : std::uint8_t { kFit, kKeepSizeAndPosition, kKeepSizeAlignPosition };
+struct InsertOptions {
+  bool z_up = false;  // the asset is z up: turned -90 degrees about x first
+  InsertMode mode = InsertMode::kFit;
+  bool cleanup = true;  // merge vertices closer than 1e-6 of the asset's diagonal
+};
+// A child whose geometry is `asset` (asset space = scope space: y up) fitted as CGA i() fits it
+// (docs/assets.md, "Fitting"): kFit scales the bounding box onto the scope; scope axes of size 0
+// keep proportions (one zero axis: the mean of the other two scales; two: the one scale, and the
+// scope moves by the scaled asset offset on those axes; three: the asset's own size and
+// position). An empty asset inserts a child without geometry (CityEngine inserts nothing).
+OpResult insert(ShapeTree& tree, ShapeId id, const kernel::Mesh& asset,
+                const InsertOptions& options = {});
 
 // --- helpers shared by the families (ops_common.cc)
 // A closed box [0, size] in scope space, faces outward; `tags` per side in the order

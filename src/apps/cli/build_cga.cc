@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "apps/cli/assets.h"
 #include "apps/cli/cga_source.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/footprint_input.h"
@@ -22,9 +23,9 @@
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
-#include "apps/cli/obj_assets.h"
 #include "apps/cli/plasm_assets.h"
 #include "apps/cli/progress.h"
+#include "io/asset_search.h"
 #include "io/geojson_reader.h"
 #include "io/obj_reader.h"
 #include "lang/cga/checker.h"
@@ -162,9 +163,12 @@ int build_cga(const BuildOptions& options) {
   }
   derive.keep_terminals = !options.outputs.empty();
   const std::filesystem::path grammar_dir = std::filesystem::path(options.input).parent_path();
-  const ObjAssets obj_assets(grammar_dir);
-  // PLaSM parts (FILE.psm#EXPRESSION) come from the grammar's folder, as OBJ assets do.
-  const PlasmAssets assets({grammar_dir.empty() ? "." : grammar_dir.string()}, &obj_assets);
+  // Assets as CityEngine finds them (docs/assets.md); a missing one inserts nothing and is
+  // reported once after the derivation.
+  const io::AssetSearch search(options.input, options.workspace);
+  const io::AssetLibrary library(search, io::AssetLibrary::Missing::kNothing);
+  // PLaSM parts (FILE.psm#EXPRESSION) come from the grammar's folder.
+  const PlasmAssets assets({grammar_dir.empty() ? "." : grammar_dir.string()}, &library);
   derive.assets = &assets;
   if (lots->lots.empty()) lots->lots.push_back(cga::default_lot(p, derive));
 
@@ -205,6 +209,7 @@ int build_cga(const BuildOptions& options) {
   seconds["scene"] = clock.seconds();
 
   nlohmann::json report = report_json(p, results, lots->lots.size());
+  report_missing_assets(library, options.input, options.quiet, report);
   report["threads"] = threads;
   report["seed"] = options.seed;
   if (!options.lot.empty()) {

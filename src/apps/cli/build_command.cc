@@ -50,6 +50,11 @@ void add_build_command(CLI::App& app, BuildOptions& options) {
   build->add_option("--start", options.start, "start symbol (CGA)");
   build->add_option("--rules", options.rules, "restriction rules file (.bldg)");
   build->add_option("--assets", options.assets, "asset folder a program may read (.lua)");
+  build
+      ->add_option("--workspace", options.workspace,
+                   "CityEngine workspace that '/Project/...' asset names start from (.cga, "
+                   ".graph.json; default: the parent of the project folder)")
+      ->check(CLI::ExistingDirectory);
   build->add_option("--report", options.report, "write a JSON report (counts, timings)");
   build->add_flag("--keep-going", options.keep_going,
                   "leave out invalid --lot features and lots that cannot hold a .bldg grammar "

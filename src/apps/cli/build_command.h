@@ -35,9 +35,10 @@ struct BuildOptions {
   std::string start;                // --start SYMBOL (CGA)
   std::string rules;                // --rules FILE: restriction rules (.bldg)
   std::vector<std::string> assets;  // --assets DIR: asset folders a program may read (.lua)
-  std::string report;               // --report R.json
-  CrsFlags crs;                     // --crs, --out-crs (geojson_options.h)
-  bool keep_going = false;          // --keep-going: skip invalid lot features with a warning
+  std::string workspace;    // --workspace DIR: where CGA's "/Project/..." names start (assets.md)
+  std::string report;       // --report R.json
+  CrsFlags crs;             // --crs, --out-crs (geojson_options.h)
+  bool keep_going = false;  // --keep-going: skip invalid lot features with a warning
   bool quiet = false;
   io::OutputOptions output;  // PNG view and SVG options
   // Set by a batch (`insula random`): the outputs and the report go into its transaction, which

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "apps/cli/asset_folders.h"
+#include "apps/cli/assets.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/footprint_input.h"
 #include "apps/cli/front_ends.h"
@@ -18,8 +19,8 @@
 #include "apps/cli/graph_rules.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
-#include "apps/cli/obj_assets.h"
 #include "apps/cli/plasm_assets.h"
+#include "io/asset_search.h"
 #include "io/geojson_reader.h"
 #include "io/osm_reader.h"
 #include "lang/graph/output.h"
@@ -113,8 +114,10 @@ int build_graph(const BuildOptions& options) {
 
   const std::filesystem::path own = std::filesystem::path(options.input).parent_path();
   const std::string folder = own.empty() ? "." : own.string();
-  const ObjAssets obj_assets(own);
-  const PlasmAssets assets({folder}, &obj_assets);
+  const io::AssetSearch search(options.input, options.workspace);
+  // A graph's missing asset stays an error of the node that asks for it.
+  const io::AssetLibrary library(search, io::AssetLibrary::Missing::kError);
+  const PlasmAssets assets({folder}, &library);
   std::vector<std::string> attributes;
   for (const lang::graph::Declaration& d : loaded->document->root->attributes) {
     attributes.push_back(d.name);

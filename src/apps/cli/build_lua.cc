@@ -1,65 +1,23 @@
 // `insula build FILE.lua [--seed N] [--assets DIR]... [--set name=value]... [-o OUT]...
 // [--report R.json]`: runs a component program (seed 001) in the sandboxed runtime, collects the
-// tree's leaves and writes them. Assets are OBJ files read only from the asset folders: the
-// program's folder, its assets/ folder and the --assets folders.
+// tree's leaves and writes them. Assets (OBJ, GLB/glTF, FBX, DAE) are read only from the asset
+// folders: the program's folder, its assets/ folder and the --assets folders.
 #include <cstdio>
 #include <filesystem>
-#include <map>
-#include <mutex>
 
 #include "apps/cli/asset_folders.h"
+#include "apps/cli/assets.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/plasm_assets.h"
-#include "io/obj_reader.h"
 #include "lang/lua/runtime.h"
 
 namespace insula::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-// OBJ assets by name, confined to the asset folders: a name is a relative path (".obj" added when
-// it has no extension); absolute names, ".." and symbolic links leading out of the folder are
-// refused (docs/lua-api.md, "Sandbox").
-class FolderAssets : public shape::AssetProvider {
- public:
-  explicit FolderAssets(std::vector<std::string> folders) : folders_(std::move(folders)) {}
-
-  std::shared_ptr<const kernel::Mesh> find(std::string_view name,
-                                           std::string& error) const override {
-    const std::string key(name);
-    if (auto it = cache_.find(key); it != cache_.end()) return it->second;
-    fs::path relative(key);
-    if (!relative.empty() && !relative.has_extension()) relative += ".obj";
-    const std::optional<fs::path> path = find_in_folders(folders_, relative, key, error);
-    if (!path) return nullptr;
-    return load(key, *path, error);
-  }
-
- private:
-  std::shared_ptr<const kernel::Mesh> load(const std::string& key, const fs::path& path,
-                                           std::string& error) const {
-    const std::optional<std::string> text = read_input_file(path.string());
-    if (!text) {
-      error = "cannot read asset '" + key + "'";
-      return nullptr;
-    }
-    base::Result<kernel::Mesh> mesh = io::read_obj(*text, path.filename().string());
-    if (!mesh) {
-      error = "asset '" + key + "': " + base::render(mesh.diagnostics().front());
-      return nullptr;
-    }
-    auto shared = std::make_shared<const kernel::Mesh>(std::move(mesh.value()));
-    cache_.emplace(key, shared);
-    return shared;
-  }
-
-  std::vector<std::string> folders_;
-  mutable std::map<std::string, std::shared_ptr<const kernel::Mesh>> cache_;
-};
 
 // --set values: limit_* entries set the runtime limits, the others become params.<name>.
 bool apply_sets(const BuildOptions& options, lua::RunOptions& run, std::string& error) {
@@ -141,8 +99,8 @@ int build_lua(const BuildOptions& options) {
   const std::optional<std::string> text = read_input_or_report(options.input);
   if (!text) return kExitInput;
   const base::Source source(options.input, *text);
-  const FolderAssets obj_assets(asset_folders(options));
-  const PlasmAssets assets(asset_folders(options), &obj_assets);  // FILE.psm#EXPRESSION parts
+  const io::AssetLibrary library = folder_assets(asset_folders(options));
+  const PlasmAssets assets(asset_folders(options), &library);  // FILE.psm#EXPRESSION parts
   run.assets = &assets;
   if (!options.quiet) {
     run.print = [&](const std::string& line) {

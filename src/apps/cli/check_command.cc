@@ -56,6 +56,11 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
                     "priority set (reachability is checked from it)");
   check->add_flag("--keep-going", options.keep_going,
                   "footprints: skip invalid features with a warning, as mass and build do");
+  check
+      ->add_option("--workspace", options.workspace,
+                   "CGA: the CityEngine workspace that '/Project/...' names start from "
+                   "(default: the parent of the project folder)")
+      ->check(CLI::ExistingDirectory);
   add_crs_option(*check, options.crs);
 }
 

@@ -18,6 +18,7 @@ struct CheckOptions {
   std::string start;        // --start SYMBOL: the CGA start symbol (other front-ends ignore it)
   CrsFlags crs;             // --crs, --out-crs (GeoJSON, OSM)
   bool keep_going = false;  // --keep-going: skip invalid features, as mass and build do (GeoJSON)
+  std::string workspace;    // --workspace DIR: where CGA's "/Project/..." names start (assets.md)
 };
 
 void add_check_command(CLI::App& app, CheckOptions& options);
