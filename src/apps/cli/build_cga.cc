@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "apps/cli/assets.h"
+#include "apps/cli/cga_files.h"
 #include "apps/cli/cga_source.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/footprint_input.h"
@@ -111,7 +112,7 @@ int build_cga(const BuildOptions& options) {
   Stopwatch clock;
   const std::optional<std::string> text = read_input_or_report(options.input);
   if (!text) return kExitInput;
-  CgaSource loaded = load_cga(options.input, *text);
+  CgaSource loaded = load_cga(options.input, *text, options.workspace);
   const base::Source& source = *loaded.source;
   base::Result<cga::Grammar>& grammar = loaded.grammar;
   print_diagnostics(grammar.diagnostics(), source, options.quiet);
@@ -170,6 +171,9 @@ int build_cga(const BuildOptions& options) {
   // PLaSM parts (FILE.psm#EXPRESSION) come from the grammar's folder.
   const PlasmAssets assets({grammar_dir.empty() ? "." : grammar_dir.string()}, &library);
   derive.assets = &assets;
+  const io::FileFunctions file_functions(search, library);
+  const CgaFiles files(file_functions);
+  derive.files = &files;
   if (lots->lots.empty()) lots->lots.push_back(cga::default_lot(p, derive));
 
   clock = Stopwatch();

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "base/text_encoding.h"
+#include "io/asset_search.h"
 #include "lang/cga/imports.h"
 #include "lang/cga/parser.h"
 
@@ -28,37 +29,10 @@ std::optional<std::string> read_bytes(const fs::path& path) {
   return text.str();
 }
 
-// The nearest folder at or above `dir` that looks like a CityEngine project.
-std::optional<fs::path> project_of(fs::path dir) {
-  std::error_code ec;
-  for (; !dir.empty(); dir = dir.parent_path()) {
-    if (fs::is_directory(dir / "rules", ec) || fs::is_directory(dir / "assets", ec)) return dir;
-    if (dir == dir.parent_path()) break;
-  }
-  return std::nullopt;
-}
-
 }  // namespace
 
-std::vector<std::string> import_candidates(const std::string& name, const std::string& from) {
-  std::vector<std::string> out;
-  const fs::path dir = fs::absolute(fs::path(from)).parent_path();
-  if (!name.empty() && name.front() == '/') {
-    const fs::path tail = fs::path(name).relative_path();
-    for (fs::path up = dir; !up.empty(); up = up.parent_path()) {
-      out.push_back((up / tail).lexically_normal().string());
-      if (up == up.parent_path()) break;
-    }
-    return out;
-  }
-  out.push_back((dir / name).lexically_normal().string());
-  if (const std::optional<fs::path> project = project_of(dir)) {
-    out.push_back((*project / "rules" / name).lexically_normal().string());
-  }
-  return out;
-}
-
-CgaSource load_cga(const std::string& path, const std::string& bytes) {
+CgaSource load_cga(const std::string& path, const std::string& bytes,
+                   const std::string& workspace) {
   bool converted = false;
   CgaSource out{std::make_unique<base::Source>(path, base::utf8_text(bytes, converted)),
                 base::Result<lang::cga::Grammar>::failure({})};
@@ -72,21 +46,22 @@ CgaSource load_cga(const std::string& path, const std::string& bytes) {
   }
   lang::cga::Grammar grammar = std::move(parsed.value());
   const lang::cga::ImportLoader loader =
-      [&notes](const std::string& name, const std::string& from,
-               std::string& error) -> std::optional<lang::cga::ImportedFile> {
-    const std::vector<std::string> candidates = import_candidates(name, from);
-    for (const std::string& candidate : candidates) {
-      std::error_code ec;
-      if (!fs::is_regular_file(candidate, ec)) continue;
-      std::optional<std::string> text = read_bytes(candidate);
-      if (!text) continue;
-      bool was_converted = false;
-      lang::cga::ImportedFile file{candidate, base::utf8_text(*text, was_converted)};
-      if (was_converted) notes.push_back(encoding_note(candidate));
-      return file;
+      [&](const std::string& name, const std::string& from,
+          std::string& error) -> std::optional<lang::cga::ImportedFile> {
+    const io::AssetSearch search(from, workspace);
+    if (const std::optional<fs::path> found = search.resolve(name)) {
+      if (std::optional<std::string> text = read_bytes(*found)) {
+        bool was_converted = false;
+        const std::string shown = found->lexically_normal().string();
+        lang::cga::ImportedFile file{shown, base::utf8_text(*text, was_converted)};
+        if (was_converted) notes.push_back(encoding_note(shown));
+        return file;
+      }
     }
     error = "no such file (looked for";
-    for (const std::string& candidate : candidates) error.append(" ").append(candidate);
+    for (const fs::path& candidate : search.candidates(name)) {
+      error.append(" ").append(candidate.string());
+    }
     error += ")";
     return std::nullopt;
   };

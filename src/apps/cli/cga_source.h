@@ -19,14 +19,10 @@ struct CgaSource {
   base::Result<lang::cga::Grammar> grammar;
 };
 
-// Parses `bytes` read from `path` and merges its imports. Diagnostics (errors make the result a
-// failure) include a warning when the file was not UTF-8.
-CgaSource load_cga(const std::string& path, const std::string& bytes);
-
-// Where `import alias : "name"` finds `name` from rule file `from`: relative to `from`'s folder,
-// then to the project's `rules/` folder (the nearest folder above `from` holding `rules/` or
-// `assets/`); a name starting with `/` (a workspace path, `/ESRI.lib/rules/x.cga`) is looked up
-// under each folder above `from`. Returns the candidates in that order.
-std::vector<std::string> import_candidates(const std::string& name, const std::string& from);
+// Parses `bytes` read from `path` and merges its imports, found as assets are (io::AssetSearch
+// from the importing file, '/'-names under `workspace`; docs/assets.md). Diagnostics (errors make
+// the result a failure) include a warning for each file that was not UTF-8.
+CgaSource load_cga(const std::string& path, const std::string& bytes,
+                   const std::string& workspace = {});
 
 }  // namespace insula::cli

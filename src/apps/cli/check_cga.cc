@@ -11,12 +11,12 @@
 namespace insula::cli {
 
 std::optional<std::string> check_cga(const base::Source& source, bool quiet) {
-  return check_cga(source, quiet, std::string());
+  return check_cga(source, quiet, std::string(), std::string());
 }
 
-std::optional<std::string> check_cga(const base::Source& file, bool quiet,
-                                     const std::string& start) {
-  const CgaSource loaded = load_cga(file.name(), file.text());
+std::optional<std::string> check_cga(const base::Source& file, bool quiet, const std::string& start,
+                                     const std::string& workspace) {
+  const CgaSource loaded = load_cga(file.name(), file.text(), workspace);
   const base::Source& source = *loaded.source;
   const base::Result<lang::cga::Grammar>& grammar = loaded.grammar;
   if (!grammar.ok()) {

@@ -98,8 +98,8 @@ int run_check(const CheckOptions& options) {
     const std::optional<std::string> text = read_input_or_report(options.input);
     if (!text) return kExitInput;
     const base::Source source(options.input, *text);
-    summary =
-        cga ? check_cga(source, options.quiet, options.start) : checker(source, options.quiet);
+    summary = cga ? check_cga(source, options.quiet, options.start, options.workspace)
+                  : checker(source, options.quiet);
   }
   if (!summary) return kExitInput;
   if (!options.quiet) std::printf("%s: ok: %s\n", options.input.c_str(), summary->c_str());

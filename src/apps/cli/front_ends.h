@@ -21,9 +21,10 @@ int build_graph(const BuildOptions& options);
 // `insula check`: a one-line summary of what was checked, or nullopt when the input has errors
 // (diagnostics already printed; warnings too unless `quiet`).
 std::optional<std::string> check_cga(const base::Source& source, bool quiet);
-// The same with `insula check --start SYMBOL` (empty: the grammar's own start symbol).
+// The same with `insula check --start SYMBOL` (empty: the grammar's own start symbol) and
+// `--workspace DIR` (where imports and assets named "/Project/..." are found; empty: default).
 std::optional<std::string> check_cga(const base::Source& source, bool quiet,
-                                     const std::string& start);
+                                     const std::string& start, const std::string& workspace);
 std::optional<std::string> check_bldg(const base::Source& source, bool quiet);
 std::optional<std::string> check_lua(const base::Source& source, bool quiet);
 std::optional<std::string> check_plasm(const base::Source& source, bool quiet);

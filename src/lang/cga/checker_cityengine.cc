@@ -35,10 +35,11 @@ std::string count_text(const std::set<std::size_t>& counts) {
 
 void Checker::declare_functions() {
   for (const FunctionDecl& fn : grammar_.functions) {
-    auto [it, inserted] = functions_.emplace(fn.name, &fn);
+    auto [it, inserted] = functions_[fn.name].emplace(fn.params.size(), &fn);
     if (!inserted) {
       error("CGA330",
-            "function '" + fn.name + "' is defined twice (first at line " +
+            "function '" + fn.name + "' with " + std::to_string(fn.params.size()) +
+                " parameters is defined twice (first at line " +
                 std::to_string(source_.locate(it->second->name_range.begin).first) + ")",
             fn.name_range);
     }
@@ -78,6 +79,7 @@ void Checker::declare_rule_arities() {
 // a leaf (CityEngine warns; Insula lists it among the terminals).
 void Checker::check_symbol_call(const Item& item) {
   for (const ExprPtr& arg : item.args) check_expr(*arg);
+  if (item.terminal) return;  // `Name.` labels a leaf: no rule is called
   auto it = rule_arities_.find(item.name);
   if (it == rule_arities_.end() || it->second.count(item.args.size())) return;
   error("CGA331",
@@ -118,18 +120,31 @@ void Checker::check_chain(const Item& item) {
 bool Checker::check_user_call(const Expr& expr) {
   const Expr& callee = *expr.operands[0];
   const std::string name = dotted_name(callee);  // `f(x)`, an imported `alias.f(x)`
-  auto it = functions_.find(name);
-  if (it == functions_.end()) return false;
+  if (!functions_.count(name)) return false;
   const std::size_t count = expr.operands.size() - 1;
-  if (it->second->params.size() != count) {
+  if (function(name, count) == nullptr) {
     error("CGA312",
-          "function '" + name + "' takes " + std::to_string(it->second->params.size()) +
-              " argument" + (it->second->params.size() == 1 ? "" : "s") + ", found " +
+          "function '" + name + "' takes " + arities(name) + " arguments, found " +
               std::to_string(count),
           callee.range);
   }
   for (std::size_t i = 1; i < expr.operands.size(); ++i) check_expr(*expr.operands[i]);
   return true;
+}
+
+const FunctionDecl* Checker::function(std::string_view name, std::size_t count) const {
+  auto it = functions_.find(name);
+  if (it == functions_.end()) return nullptr;
+  auto fn = it->second.find(count);
+  return fn == it->second.end() ? nullptr : fn->second;
+}
+
+std::string Checker::arities(std::string_view name) const {
+  std::set<std::size_t> counts;
+  if (auto it = functions_.find(name); it != functions_.end()) {
+    for (const auto& [count, fn] : it->second) counts.insert(count);
+  }
+  return count_text(counts);
 }
 
 bool Checker::is_parameter(std::string_view name) const {

@@ -118,11 +118,10 @@ void Checker::check_expr(const Expr& expr, ExprRole role) {
 // that word and the operation's check decides (checker_successors.cc).
 void Checker::check_identifier(const Expr& expr, ExprRole role) {
   if (is_parameter(expr.text)) return;
-  if (auto fn = functions_.find(expr.text); fn != functions_.end()) {
-    if (!fn->second->params.empty()) {
+  if (functions_.count(expr.text)) {
+    if (function(expr.text, 0) == nullptr) {
       error("CGA312",
-            "function '" + expr.text + "' takes " + std::to_string(fn->second->params.size()) +
-                " argument" + (fn->second->params.size() == 1 ? "" : "s") + ", found none",
+            "function '" + expr.text + "' takes " + arities(expr.text) + " arguments, found none",
             expr.range);
     }
     return;
@@ -152,7 +151,7 @@ void Checker::check_member(const Expr& expr) {
     used_attributes_.insert(dotted);
     return;
   }
-  if (cityengine() && functions_.count(dotted_name(expr))) return;  // an imported constant
+  if (cityengine() && function(dotted_name(expr), 0) != nullptr) return;  // imported constant
   if (cityengine() && object.kind == ExprKind::kIdent) {
     const std::string name = object.text + "." + expr.text;
     if (contains(kUnsupportedFunctions, name)) {

@@ -92,6 +92,9 @@ class Checker {
   void check_chain(const Item& item);
   bool check_user_call(const Expr& expr);
   bool is_parameter(std::string_view name) const;
+  // The grammar's function `name` taking `count` arguments; null when there is none.
+  const FunctionDecl* function(std::string_view name, std::size_t count) const;
+  std::string arities(std::string_view name) const;  // "1 or 2
   std::vector<std::string> start_rules() const;
 
   // ---- checker_exprs.cc
@@ -111,7 +114,8 @@ class Checker {
   // The attribute whose default is being checked (for the dependency graph), or null.
   const AttrDecl* current_attribute_ = nullptr;
   std::map<std::string, std::set<std::string>, std::less<>> attribute_deps_;
-  std::map<std::string, const FunctionDecl*, std::less<>> functions_;
+  // CityEngine overloads functions by their number of parameters: name -> count -> function.
+  std::map<std::string, std::map<std::size_t, const FunctionDecl*>, std::less<>> functions_;
   // Parameter counts of each rule name (CityEngine overloads rules by their number of parameters).
   std::map<std::string, std::set<std::size_t>, std::less<>> rule_arities_;
   const std::vector<std::string>* params_ = nullptr;  // of the rule or function being checked

@@ -210,6 +210,14 @@ void Checker::check_item(const Item& item) {
     return;
   }
   const std::size_t count = item.args.size();
+  // CityEngine's r(scopeOrigin | scopeCenter, x, y, z): the angles are numbers.
+  if (cityengine() && item.name == "r" && count == 4) {
+    const std::string pivot = dotted_name(*item.args[0]);
+    if (pivot == "scopeOrigin" || pivot == "scopeCenter") {
+      for (std::size_t i = 1; i < count; ++i) check_expr(*item.args[i]);
+      return;
+    }
+  }
   if (!signature_accepts(info->signature, count)) {
     std::string wanted = std::to_string(info->min_args);
     if (info->max_args == kUnbounded) {
@@ -295,7 +303,9 @@ void Checker::check_arguments(const Item& item, const OperationInfo& info) {
         if (arg.kind == ExprKind::kString || arg.kind == ExprKind::kBool) {
           error("CGA320", which + " must be a number", arg.range);
         } else {
-          check_expr(arg, letter == 'z' ? ExprRole::kSize : ExprRole::kValue);
+          // CityEngine's t('1, 0, 0) moves by the scope's size: a size there too.
+          const bool size = letter == 'z' || (cityengine() && info.registry_op == "translate");
+          check_expr(arg, size ? ExprRole::kSize : ExprRole::kValue);
         }
         break;
       default:

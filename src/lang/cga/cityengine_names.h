@@ -63,16 +63,11 @@ inline constexpr std::string_view kUnsupportedOperations[] = {
 
 // Functions of CityEngine that Insula does not evaluate yet: error CGA902.
 inline constexpr std::string_view kUnsupportedFunctions[] = {
-    "fileRandom",
-    "fileExists",
-    "fileSearch",
     "filesSearch",
     "fileName",
     "fileBasename",
     "fileDirectory",
     "fileExtension",
-    "assetInfo",
-    "imageInfo",
     "assetBestSize",
     "assetBestRatio",
     "assetFitSize",

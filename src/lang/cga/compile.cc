@@ -81,6 +81,11 @@ constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
     {"log10", Function::kLog10},
     {"isnan", Function::kIsNan},
     {"isinf", Function::kIsInf},
+    {"fileExists", Function::kFileExists},
+    {"fileSearch", Function::kFileSearch},
+    {"fileRandom", Function::kFileRandom},
+    {"assetInfo", Function::kAssetInfo},
+    {"imageInfo", Function::kImageInfo},
 };
 
 // An expression that names a word: a string literal or a bare identifier (`split(x)`).
@@ -205,8 +210,8 @@ class Compiler {
         if (const std::uint32_t p = parameter(e.text); p != kNoExpr) {
           return add(ENode{ECode::kParam, 0, p, e.range, {}});
         }
-        if (auto fn = function_ids_.find(e.text); fn != function_ids_.end()) {
-          return add(ENode{ECode::kCall, 0, fn->second, e.range, {}});
+        if (const std::uint32_t fn = function_id(e.text, 0); fn != kNoExpr) {
+          return add(ENode{ECode::kCall, 0, fn, e.range, {}});
         }
         const std::uint32_t a = attr_index(e.text);
         if (a == kNoExpr) {
@@ -281,8 +286,8 @@ class Compiler {
     if (const std::uint32_t a = attr_index(dotted_name(e)); a != kNoExpr) {
       return add(ENode{ECode::kAttr, 0, a, e.range, {}});
     }
-    if (auto fn = function_ids_.find(dotted_name(e)); fn != function_ids_.end()) {
-      return add(ENode{ECode::kCall, 0, fn->second, e.range, {}});  // an imported constant
+    if (const std::uint32_t fn = function_id(dotted_name(e), 0); fn != kNoExpr) {
+      return add(ENode{ECode::kCall, 0, fn, e.range, {}});  // an imported constant
     }
     if (object.kind == ExprKind::kIdent) {
       if (const AttributeInfo* info = find_shape_attribute(object.text, e.text);
@@ -314,27 +319,17 @@ class Compiler {
       program_->uses_occlusion = true;
       return add(ENode{ECode::kOcc, 0, 0, e.range, kids});
     }
-    if (auto fn = function_ids_.find(dotted_name(callee)); fn != function_ids_.end()) {
-      if (program_->functions[fn->second].params != argc) {
+    if (function_ids_.count(dotted_name(callee))) {
+      const std::uint32_t fn = function_id(dotted_name(callee), argc);
+      if (fn == kNoExpr) {
         error("CGA504",
-              "'" + dotted_name(callee) + "' takes " +
-                  std::to_string(program_->functions[fn->second].params) + " arguments",
+              "'" + dotted_name(callee) + "' takes no " + std::to_string(argc) + " arguments",
               e.range);
         return constant(Value{}, e.range);
       }
-      return add(ENode{ECode::kCall, 0, fn->second, e.range, kids});
+      return add(ENode{ECode::kCall, 0, fn, e.range, kids});
     }
     if (callee.kind == ExprKind::kIdent) {
-      if (auto fn = function_ids_.find(callee.text); fn != function_ids_.end()) {
-        if (program_->functions[fn->second].params != argc) {
-          error("CGA504",
-                "'" + callee.text + "' takes " +
-                    std::to_string(program_->functions[fn->second].params) + " arguments",
-                e.range);
-          return constant(Value{}, e.range);
-        }
-        return add(ENode{ECode::kCall, 0, fn->second, e.range, kids});
-      }
       if (const FunctionInfo* info = find_function(callee.text)) {
         if (!signature_accepts(info->signature, argc)) {
           error("CGA504",
@@ -504,14 +499,45 @@ class Compiler {
     } else if (op == "setback") {
       c.code = OpCode::kSetback;
       registry_args(item, c);
+    } else if (op == "rotate" && item.args.size() == 4 && pivot_word(*item.args[0])) {
+      // CityEngine's r(scopeOrigin | scopeCenter, x, y, z).
+      c.code = OpCode::kRotate;
+      c.about_center = dotted_name(*item.args[0]) == "scopeCenter";
+      for (std::size_t i = 1; i < 4; ++i) c.args.push_back(expr(*item.args[i]));
     } else if ((op == "translate" || op == "rotate") && scope_math(item, *c.info)) {
       // T, t and r move the scope by scope math, as shape::translate and shape::rotate do.
       c.code = op == "translate" ? OpCode::kTranslate : OpCode::kRotate;
-      plain_args(item, c);
+      if (op == "translate") {
+        translate_args(item, c);
+      } else {
+        plain_args(item, c);
+      }
     } else {
       c.code = OpCode::kRegistry;
       registry_args(item, c);
     }
+  }
+
+  // t(x, y, z): CityEngine's `'d` is d times the scope's size on that axis (t(0, 0, '-1)).
+  void translate_args(const Item& item, CItem& c) {
+    constexpr ShapeAttr kSizes[] = {ShapeAttr::kSx, ShapeAttr::kSy, ShapeAttr::kSz};
+    for (std::size_t i = 0; i < item.args.size(); ++i) {
+      const Expr& a = *item.args[i];
+      if (a.kind != ExprKind::kUnary || a.unary_op != UnaryOp::kRelative) {
+        c.args.push_back(expr(a));
+        continue;
+      }
+      const std::uint32_t share = expr(*a.operands[0]);
+      const std::uint32_t size =
+          add(ENode{ECode::kShapeAttr, 0, static_cast<std::uint32_t>(kSizes[i]), a.range, {}});
+      c.args.push_back(add(ENode{
+          ECode::kBinary, static_cast<std::uint8_t>(BinaryOp::kMul), 0, a.range, {share, size}}));
+    }
+  }
+
+  static bool pivot_word(const Expr& e) {
+    const std::string word = dotted_name(e);
+    return word == "scopeCenter" || word == "scopeOrigin";
   }
 
   // Whether the arguments are exactly x, y and z of translate or rotate (no pivot).
@@ -757,15 +783,23 @@ class Compiler {
   // Ids first, bodies after, so functions may call each other (and themselves) in any order.
   void declare_functions() {
     for (const FunctionDecl& fn : grammar_.functions) {
-      if (function_ids_.count(fn.name)) continue;  // the checker reports duplicates
-      function_ids_.emplace(fn.name, static_cast<std::uint32_t>(program_->functions.size()));
+      auto [it, inserted] = function_ids_[fn.name].emplace(
+          fn.params.size(), static_cast<std::uint32_t>(program_->functions.size()));
+      if (!inserted) continue;  // the checker reports duplicates
       program_->functions.push_back(
           {fn.name, static_cast<std::uint32_t>(fn.params.size()), kNoExpr, fn.range});
     }
   }
+  // The function `name` taking `count` arguments (CityEngine overloads by count), or kNoExpr.
+  std::uint32_t function_id(std::string_view name, std::size_t count) const {
+    auto it = function_ids_.find(name);
+    if (it == function_ids_.end()) return kNoExpr;
+    auto fn = it->second.find(count);
+    return fn == it->second.end() ? kNoExpr : fn->second;
+  }
   void compile_functions() {
     for (const FunctionDecl& fn : grammar_.functions) {
-      CFunction& target = program_->functions[function_ids_.at(fn.name)];
+      CFunction& target = program_->functions[function_id(fn.name, fn.params.size())];
       if (target.body != kNoExpr) continue;
       params_ = &fn.params;
       target.body = expr(*fn.body);
@@ -783,7 +817,7 @@ class Compiler {
   const Grammar& grammar_;
   std::shared_ptr<Program> program_;
   std::vector<base::Diagnostic> diagnostics_;
-  std::map<std::string, std::uint32_t, std::less<>> function_ids_;
+  std::map<std::string, std::map<std::size_t, std::uint32_t>, std::less<>> function_ids_;
   const std::vector<std::string>* params_ = nullptr;
 };
 

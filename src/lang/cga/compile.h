@@ -102,6 +102,11 @@ enum class Function : std::uint8_t {
   kLog10,
   kIsNan,
   kIsInf,
+  kFileExists,
+  kFileSearch,
+  kFileRandom,
+  kAssetInfo,
+  kImageInfo,
 };
 
 struct ENode {
@@ -174,6 +179,7 @@ struct CItem {
   std::uint32_t attr = 0;               // kSet: attribute index
   std::vector<CBranch> branches;
   bool has_block = false;
+  bool about_center = false;  // CityEngine's r(scopeCenter, x, y, z)
 };
 
 struct CAlternative {

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,23 @@ struct DeriveLimits {
   std::uint64_t max_shapes = 10000000;
 };
 
+// CityEngine's file and asset functions (fileExists, fileSearch, fileRandom, assetInfo,
+// imageInfo), answered by the app: the front-end reads no files. Thread-safe (lots derive in
+// parallel). Without one, those functions are an evaluation error.
+class FileQueries {
+ public:
+  virtual ~FileQueries() = default;
+  virtual bool exists(const std::string& path) const = 0;
+  // A `;`-ended list of the matching files ("" when none); sets `error` on a bad query.
+  virtual std::string search(const std::string& query, std::string& error) const = 0;
+  // The entry at floor(random * count) of search(query).
+  virtual std::string random(const std::string& query, double random, std::string& error) const = 0;
+  virtual std::optional<double> asset_info(const std::string& path, const std::string& what,
+                                           std::string& error) const = 0;
+  virtual std::optional<double> image_info(const std::string& path, const std::string& what,
+                                           std::string& error) const = 0;
+};
+
 struct DeriveOptions {
   std::uint64_t seed = 0;
   DeriveLimits limits;
@@ -47,6 +65,7 @@ struct DeriveOptions {
   bool keep_terminals = true;
   // Assets for I(), Pshape() and i(); "cube" is built in. May be null (only "cube" resolves).
   const shape::AssetProvider* assets = nullptr;
+  const FileQueries* files = nullptr;
 };
 
 // A lot: one or more footprint polygons (a GeoJSON Polygon or MultiPolygon, local meters) and the

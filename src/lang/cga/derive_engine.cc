@@ -119,6 +119,36 @@ std::string Engine::occlusion(const std::string& /*what*/, Range /*range*/) {
   return f <= 1e-6 ? "none" : f >= 1 - 1e-6 ? "full" : "part";
 }
 
+Value Engine::file_function(Function f, const std::vector<Value>& args, Range range) {
+  const FileQueries* files = options_.files;
+  const std::string first = as_text(args[0]);
+  if (files == nullptr) throw EvalError{range, "file functions need files (none given)"};
+  std::string error;
+  std::optional<double> number;
+  switch (f) {
+    case Function::kFileExists:
+      return files->exists(first);
+    case Function::kFileSearch: {
+      std::string list = files->search(first, error);
+      if (!error.empty()) throw EvalError{range, error};
+      return list;
+    }
+    case Function::kFileRandom: {
+      std::string pick = files->random(first, rng_.unit(), error);
+      if (!error.empty()) throw EvalError{range, error};
+      return pick;
+    }
+    case Function::kAssetInfo:
+      number = files->asset_info(first, as_text(args[1]), error);
+      break;
+    default:
+      number = files->image_info(first, as_text(args[1]), error);
+      break;
+  }
+  if (!number) throw EvalError{range, error};
+  return *number;
+}
+
 namespace {
 
 std::optional<Value> number_from_text(const std::string& text) {
@@ -546,10 +576,12 @@ void Engine::rotate(const CItem& c, State& st) {
     warn(c, "angles must be finite");
     return;
   }
-  // As shape::rotate: intrinsic rotations about x, then y, then z, about the scope origin.
-  if (d.x != 0) st.scope = shape::rotated(st.scope, Axis::kX, d.x, {});
-  if (d.y != 0) st.scope = shape::rotated(st.scope, Axis::kY, d.y, {});
-  if (d.z != 0) st.scope = shape::rotated(st.scope, Axis::kZ, d.z, {});
+  // As shape::rotate: intrinsic rotations about x, then y, then z, about the scope origin (or
+  // its centre: CityEngine's r(scopeCenter, ...)).
+  const Vec3 pivot = c.about_center ? st.scope.size * 0.5 : Vec3{};
+  if (d.x != 0) st.scope = shape::rotated(st.scope, Axis::kX, d.x, pivot);
+  if (d.y != 0) st.scope = shape::rotated(st.scope, Axis::kY, d.y, pivot);
+  if (d.z != 0) st.scope = shape::rotated(st.scope, Axis::kZ, d.z, pivot);
   touch(st);
 }
 

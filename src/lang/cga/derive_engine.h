@@ -111,6 +111,8 @@ class Engine final : public EvalContext {
 
   shape::Rng& rng() override { return rng_; }
 
+  Value file_function(Function f, const std::vector<Value>& args, Range range) override;
+
  private:
   static kernel::Bounds3 bounds(const Scope& s) {
     kernel::Bounds3 b;

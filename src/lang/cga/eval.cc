@@ -136,7 +136,13 @@ Value apply_binary(BinaryOp op, const Value& a, const Value& b, Range range) {
 }
 
 bool is_random(Function f) {
-  return f == Function::kRand || f == Function::kP || f == Function::kListRandom;
+  return f == Function::kRand || f == Function::kP || f == Function::kListRandom ||
+         is_file_function(f);
+}
+
+bool is_file_function(Function f) {
+  return f == Function::kFileExists || f == Function::kFileSearch || f == Function::kFileRandom ||
+         f == Function::kAssetInfo || f == Function::kImageInfo;
 }
 
 namespace {
@@ -407,6 +413,7 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
         return context.rng().uniform(lo, hi);
       }
       if (f == Function::kP) return context.rng().unit() < as_number(args[0], n.range);
+      if (is_file_function(f)) return context.file_function(f, args, n.range);
       if (f == Function::kListRandom) {
         const std::vector<std::string> items = list_items(as_text(args[0]));
         if (items.empty()) return std::string();

@@ -39,7 +39,9 @@ shape::Value apply_unary(UnaryOp op, const shape::Value& v, Range range);
 shape::Value apply_binary(BinaryOp op, const shape::Value& a, const shape::Value& b, Range range);
 // Functions that need no random generator (everything but rand and p).
 shape::Value apply_function(Function f, const std::vector<shape::Value>& args, Range range);
+// Whether `f` needs the derivation (a random generator or the app's files): never folded.
 bool is_random(Function f);
+bool is_file_function(Function f);
 
 // What an expression may read while deriving: the shape's scope and attributes, its random
 // generator, and the lot-level attribute values. Implemented by the engine.
@@ -51,6 +53,9 @@ class EvalContext {
   // "none", "part" or "full" for Shape.occ(`what`).
   virtual std::string occlusion(const std::string& what, Range range) = 0;
   virtual shape::Rng& rng() = 0;
+  // fileExists, fileSearch, fileRandom, assetInfo, imageInfo (derive.h, FileQueries).
+  virtual shape::Value file_function(Function f, const std::vector<shape::Value>& args,
+                                     Range range) = 0;
 
   // The arguments of the rule or function being evaluated (ECode::kParam reads them).
   std::span<const shape::Value> frame;

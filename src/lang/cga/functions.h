@@ -65,6 +65,12 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"log10", 1, 1, "n", "logarithm to base 10"},
     {"isnan", 1, 1, "n", "whether x is not a number"},
     {"isinf", 1, 1, "n", "whether x is infinite"},
+    // CityEngine's file functions (docs/assets.md), answered by the app's asset search.
+    {"fileExists", 1, 1, "s", "whether the file exists (asset search order)"},
+    {"fileSearch", 1, 1, "s", "the matching files of the workspace as a list"},
+    {"fileRandom", 1, 1, "s", "one matching file, drawn from the shape's seeded generator"},
+    {"assetInfo", 2, 2, "ss", "size (sx sy sz) or lowest corner (tx ty tz) of an asset"},
+    {"imageInfo", 2, 2, "ss", "width (sx) or height (sy) of an image in pixels"},
 };
 
 // Shape attributes: `Shape.sx`, `Scope.sx` (the paper writes Shape., CityEngine scope.; both

@@ -560,6 +560,8 @@ class Parser {
     }
     Nest nest(*this);
     const std::uint32_t begin = advance().range.begin;
+    // CityEngine's size prefixes take the whole sum after them (`~h*0.8 : A`, `'1 - d`).
+    if (cityengine() && op != UnaryOp::kNegate) return make_unary(op, begin, parse_additive());
     return make_unary(op, begin, parse_unary());
   }
 
