@@ -124,8 +124,7 @@ bool Checker::check_user_call(const Expr& expr) {
   const std::size_t count = expr.operands.size() - 1;
   if (function(name, count) == nullptr) {
     error("CGA312",
-          "function '" + name + "' takes " + arities(name) + " arguments, found " +
-              std::to_string(count),
+          "function '" + name + "' takes " + arities(name) + ", found " + std::to_string(count),
           callee.range);
   }
   for (std::size_t i = 1; i < expr.operands.size(); ++i) check_expr(*expr.operands[i]);
@@ -144,7 +143,8 @@ std::string Checker::arities(std::string_view name) const {
   if (auto it = functions_.find(name); it != functions_.end()) {
     for (const auto& [count, fn] : it->second) counts.insert(count);
   }
-  return count_text(counts);
+  return count_text(counts) +
+         (counts.size() == 1 && *counts.begin() == 1 ? " argument" : " arguments");
 }
 
 bool Checker::is_parameter(std::string_view name) const {

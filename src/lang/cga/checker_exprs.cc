@@ -120,8 +120,7 @@ void Checker::check_identifier(const Expr& expr, ExprRole role) {
   if (is_parameter(expr.text)) return;
   if (functions_.count(expr.text)) {
     if (function(expr.text, 0) == nullptr) {
-      error("CGA312",
-            "function '" + expr.text + "' takes " + arities(expr.text) + " arguments, found none",
+      error("CGA312", "function '" + expr.text + "' takes " + arities(expr.text) + ", found none",
             expr.range);
     }
     return;
