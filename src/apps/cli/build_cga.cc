@@ -139,6 +139,11 @@ int build_cga(const BuildOptions& options) {
   const cga::CheckResult checked = cga::check(grammar.value(), source, check_options);
   print_diagnostics(checked.diagnostics, source, options.quiet);
   if (!checked.ok) return kExitInput;
+  if (checked.start_symbol.empty()) {
+    std::fprintf(stderr, "%s: error: no rule to start from (every rule takes parameters)\n",
+                 options.input.c_str());
+    return kExitInput;
+  }
   seconds["check"] = clock.seconds();
 
   clock = Stopwatch();

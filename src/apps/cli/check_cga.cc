@@ -19,10 +19,8 @@ std::optional<std::string> check_cga(const base::Source& file, bool quiet, const
   const CgaSource loaded = load_cga(file.name(), file.text(), workspace);
   const base::Source& source = *loaded.source;
   const base::Result<lang::cga::Grammar>& grammar = loaded.grammar;
-  if (!grammar.ok()) {
-    print_diagnostics(grammar.diagnostics(), source, quiet);
-    return std::nullopt;
-  }
+  print_diagnostics(grammar.diagnostics(), source, quiet);
+  if (!grammar.ok()) return std::nullopt;
   lang::cga::CheckOptions options;
   options.start = start;
   const lang::cga::CheckResult checked = lang::cga::check(grammar.value(), source, options);

@@ -235,13 +235,28 @@ void Checker::choose_start() {
   }
   if (options_.start.empty()) {
     result_.start_symbol = lowest->rules.front().predecessor;
-    // CityEngine: the first `@StartRule`, else a rule named Lot (docs/cityengine-dialect.md).
+    // CityEngine: the first `@StartRule`, else a rule named Lot, else the first rule; only rules
+    // without parameters can start (docs/cityengine-dialect.md).
     if (cityengine()) {
       const std::vector<std::string> marked = start_rules();
-      if (!marked.empty()) {
-        result_.start_symbol = marked.front();
-      } else if (rule_arities_.count("Lot")) {
-        result_.start_symbol = "Lot";
+      const auto startable = [&](const std::string& name) {
+        auto it = rule_arities_.find(name);
+        return it != rule_arities_.end() && it->second.count(0);
+      };
+      result_.start_symbol.clear();
+      for (const std::string& name : marked) {
+        if (result_.start_symbol.empty() && startable(name)) result_.start_symbol = name;
+      }
+      if (result_.start_symbol.empty() && startable("Lot")) result_.start_symbol = "Lot";
+      for (const CheckedRule& r : result_.rules) {
+        if (result_.start_symbol.empty() && r.rule->params.empty()) {
+          result_.start_symbol = r.rule->predecessor;
+        }
+      }
+      if (result_.start_symbol.empty()) {  // a library, for other files to import
+        diagnostics_.push_back(base::Diagnostic::warning(
+            "CGA433", "every rule takes parameters: none can start a derivation",
+            base::Span::whole(source_.name())));
       }
     }
     return;
@@ -251,6 +266,11 @@ void Checker::choose_start() {
                   [&](const CheckedRule& r) { return r.rule->predecessor == options_.start; });
   if (!found) {
     file_error("CGA314", "the start symbol '" + options_.start + "' is the predecessor of no rule");
+    return;
+  }
+  if (cityengine() && !rule_arities_.at(options_.start).count(0)) {
+    file_error("CGA314", "the start rule '" + options_.start +
+                             "' takes parameters; a derivation starts from a rule without");
     return;
   }
   result_.start_symbol = options_.start;
@@ -318,6 +338,8 @@ void Checker::report_unused() {
   for (const AttrDecl& attr : grammar_.attrs) {
     if (attributes_.at(attr.name) != &attr) continue;
     if (used_attributes_.count(attr.name)) continue;
+    // An imported library's attributes (alias.name) need not all be used by one importer.
+    if (cityengine() && attr.name.find('.') != std::string::npos) continue;
     if (std::find(std::begin(kReadByDerivation), std::end(kReadByDerivation), attr.name) !=
         std::end(kReadByDerivation)) {
       continue;

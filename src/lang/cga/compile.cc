@@ -388,9 +388,12 @@ class Compiler {
     return out;
   }
 
-  SymbolId symbol(const std::string& name) {
+  // CityEngine overloads rules by their number of parameters (`Wall --> Wall(0.3)` next to
+  // `Wall(t) --> ...`): each count is a symbol of its own, all shown by the rule's name.
+  SymbolId symbol(const std::string& name, std::size_t arity = 0) {
+    const std::string key = arity == 0 ? name : name + "/" + std::to_string(arity);
     auto [it, inserted] =
-        program_->symbol_ids.emplace(name, static_cast<SymbolId>(program_->symbols.size()));
+        program_->symbol_ids.emplace(key, static_cast<SymbolId>(program_->symbols.size()));
     if (inserted) program_->symbols.push_back(name);
     return it->second;
   }
@@ -401,7 +404,7 @@ class Compiler {
     switch (item.kind) {
       case ItemKind::kSymbol:
         c.code = OpCode::kSymbol;
-        c.symbol = symbol(item.name);
+        c.symbol = symbol(item.name, item.terminal ? 0 : item.args.size());
         c.terminal = item.terminal;
         for (const ExprPtr& arg : item.args) c.args.push_back(expr(*arg));
         return c;
@@ -722,7 +725,7 @@ class Compiler {
     r.id = rule.id;
     r.range = rule.range;
     r.id_range = rule.id.empty() ? rule.predecessor_range : rule.id_range;
-    r.predecessor = symbol(rule.predecessor);
+    r.predecessor = symbol(rule.predecessor, rule.params.size());
     r.level = level;
     r.params = static_cast<std::uint32_t>(rule.params.size());
     params_ = &rule.params;

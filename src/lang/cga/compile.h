@@ -215,7 +215,8 @@ struct CAttr {
 
 struct Program {
   std::shared_ptr<const base::Source> source;
-  std::vector<std::string> symbols;
+  std::vector<std::string> symbols;  // names as shown (a rule's name, whatever its arity)
+  // By name; CityEngine's rules with k > 0 parameters by "name/k" (compile.cc, symbol()).
   std::unordered_map<std::string, SymbolId> symbol_ids;
   std::vector<std::uint32_t> priorities;  // distinct priority numbers, ascending (levels)
   std::vector<CRule> rules;

@@ -28,6 +28,14 @@ std::string hex_color(double r, double g, double b, double a, bool alpha) {
   return text;
 }
 
+// "#rgb" and "#rgba" (CSS's short forms, which CityEngine files use) as "#rrggbb[aa]".
+std::string long_hex(const std::string& s) {
+  if ((s.size() != 4 && s.size() != 5) || s[0] != '#') return s;
+  std::string out = "#";
+  for (std::size_t i = 1; i < s.size(); ++i) out.append(2, s[i]);
+  return out;
+}
+
 bool valid_hex_color(const std::string& s) {
   if (s.size() != 7 && s.size() != 9) return false;
   if (s[0] != '#') return false;
@@ -595,10 +603,11 @@ void Engine::color(const CItem& c, State& st) {
   std::string hex;
   if (c.args.size() == 1) {
     const Value v = eval(c.args[0], st);
-    hex = as_text(v);
+    hex = long_hex(as_text(v));
     if (!valid_hex_color(hex)) {
-      throw EvalError{program_.nodes[c.args[0]].range,
-                      "color() expects \"#rrggbb\" or \"#rrggbbaa\", got \"" + hex + "\""};
+      throw EvalError{
+          program_.nodes[c.args[0]].range,
+          "color() expects \"#rrggbb\", \"#rrggbbaa\" or \"#rgb\", got \"" + as_text(v) + "\""};
     }
     std::transform(hex.begin(), hex.end(), hex.begin(), [](char ch) {
       return static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
