@@ -151,6 +151,10 @@ void Checker::check_member(const Expr& expr) {
     return;
   }
   if (cityengine() && function(dotted_name(expr), 0) != nullptr) return;  // imported constant
+  if (cityengine() && dotted_name(expr) == "geometry." + expr.text &&
+      is_geometry_function(expr.text)) {
+    return;
+  }
   if (cityengine() && object.kind == ExprKind::kIdent) {
     const std::string name = object.text + "." + expr.text;
     if (contains(kUnsupportedFunctions, name)) {
@@ -185,6 +189,17 @@ void Checker::check_member(const Expr& expr) {
 void Checker::check_call(const Expr& expr) {
   if (check_user_call(expr)) return;
   const Expr& callee = *expr.operands[0];
+  if (cityengine() && callee.kind == ExprKind::kMember && dotted_name(callee) ==
+                                                              "geometry." + callee.text &&
+      is_geometry_function(callee.text)) {
+    if (expr.operands.size() > 1) {
+      error("CGA902",
+            "CityEngine function 'geometry." + callee.text +
+                "' with a component selector is not supported",
+            callee.range);
+    }
+    return;
+  }
   const std::size_t count = expr.operands.size() - 1;
   if (callee.kind == ExprKind::kMember) {
     const Expr& object = *callee.operands[0];

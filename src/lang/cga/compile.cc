@@ -289,6 +289,9 @@ class Compiler {
     if (const std::uint32_t fn = function_id(dotted_name(e), 0); fn != kNoExpr) {
       return add(ENode{ECode::kCall, 0, fn, e.range, {}});  // an imported constant
     }
+    if (const std::optional<ShapeAttr> g = geometry_function(e)) {
+      return add(ENode{ECode::kShapeAttr, 0, static_cast<std::uint32_t>(*g), e.range, {}});
+    }
     if (object.kind == ExprKind::kIdent) {
       if (const AttributeInfo* info = find_shape_attribute(object.text, e.text);
           info != nullptr && info->args == 0) {
@@ -318,6 +321,9 @@ class Compiler {
       }
       program_->uses_occlusion = true;
       return add(ENode{ECode::kOcc, 0, 0, e.range, kids});
+    }
+    if (const std::optional<ShapeAttr> g = geometry_function(callee); g && argc == 0) {
+      return add(ENode{ECode::kShapeAttr, 0, static_cast<std::uint32_t>(*g), e.range, {}});
     }
     if (function_ids_.count(dotted_name(callee))) {
       const std::uint32_t fn = function_id(dotted_name(callee), argc);
@@ -536,6 +542,16 @@ class Compiler {
       c.args.push_back(add(ENode{
           ECode::kBinary, static_cast<std::uint8_t>(BinaryOp::kMul), 0, a.range, {share, size}}));
     }
+  }
+
+  // CityEngine's geometry.area() and friends (functions.h, kGeometryFunctions).
+  static std::optional<ShapeAttr> geometry_function(const Expr& e) {
+    if (e.kind != ExprKind::kMember || dotted_name(e) != "geometry." + e.text) return std::nullopt;
+    if (e.text == "area") return ShapeAttr::kSurfaceArea;
+    if (e.text == "volume") return ShapeAttr::kMeshVolume;
+    if (e.text == "nVertices") return ShapeAttr::kVertexCount;
+    if (e.text == "nFaces") return ShapeAttr::kFaceCount;
+    return std::nullopt;
   }
 
   static bool pivot_word(const Expr& e) {

@@ -55,7 +55,12 @@ enum class ShapeAttr : std::uint8_t {
   kVolume,
   kDepth,
   kIndex,
-  kTotal
+  kTotal,
+  // CityEngine's geometry.* functions, from the shape's mesh:
+  kSurfaceArea,  // geometry.area(): every face
+  kMeshVolume,   // geometry.volume(): enclosed volume (0 when open)
+  kVertexCount,  // geometry.nVertices()
+  kFaceCount,    // geometry.nFaces()
 };
 
 enum class Function : std::uint8_t {

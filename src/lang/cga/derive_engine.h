@@ -106,6 +106,8 @@ class Engine final : public EvalContext {
   Value attribute(std::uint32_t attr, Range range) override;
 
   double shape_attribute(ShapeAttr a) override;
+  // geometry.area(), volume(), nVertices(), nFaces() of the shape's mesh.
+  double geometry_measure(ShapeAttr a, const State& s) const;
 
   std::string occlusion(const std::string& /*what*/, Range /*range*/) override;
 
