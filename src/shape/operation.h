@@ -52,6 +52,10 @@ using ArgValue =
 // How a value is written in the docs and error messages: "2", "'0.5", "x", "[2, ~1]".
 std::string to_string(const ArgValue& value);
 
+// A kEnum choice that stands for any whole number >= 0, bound as its decimal text (CityEngine's
+// alignScopeToGeometry takes a face index or a selector word in one argument).
+inline constexpr std::string_view kIndexChoice = "N";
+
 struct ParamDecl {
   std::string name;
   ParamType type = ParamType::kNumber;
