@@ -21,10 +21,10 @@ OpResult cleanup_geometry(ShapeTree& tree, ShapeId id, std::string_view componen
   options.edges = all || components == "edges";
   options.vertices = all || components == "vertices";
   auto mesh = std::make_shared<kernel::Mesh>(kernel::cleanup(*s.mesh, options));
-  // Merging and dropping never move a vertex beyond the tolerance, so the scope still fits; the
-  // outline of a flat shape is rebuilt only when it no longer matches (merged vertices).
+  // Merging and dropping never move a vertex beyond the tolerance, so the scope still fits; a
+  // hole-free flat shape's outline is its one face again.
   std::shared_ptr<const kernel::Polygon> outline = s.outline;
-  if (outline && tolerance > 0 && mesh->face_count() == 1) {
+  if (outline && outline->holes.empty() && mesh->face_count() == 1) {
     auto o = std::make_shared<kernel::Polygon>();
     for (std::uint32_t v : mesh->face(0)) o->outer.push_back(kernel::drop(mesh->position(v)));
     outline = std::move(o);

@@ -461,8 +461,10 @@ std::vector<Operation> scope_operations() {
        "Turns the scope to a face of the geometry: x along one of its edges, the up axis along its "
        "normal (a flat shape keeps the normal on z); the geometry stays put and the scope is "
        "refitted to it.",
-       {enum_param("up", "scope axis that takes the face normal (on volumes)", "yUp",
-                   {"yUp", "zUp"}),
+       {enum_param("up",
+                   "scope axis that takes the face normal on volumes (CGA's yUp, zUp: enum words "
+                   "are read in any case)",
+                   "yup", {"yup", "zup"}),
         enum_param("face",
                    "face index N (0-based), the largest face, any face, or the world.lowest one",
                    "0", {std::string(kIndexChoice), "largest", "any", "world.lowest"}),
@@ -471,7 +473,7 @@ std::vector<Operation> scope_operations() {
                    "world.lowest one",
                    "0", {std::string(kIndexChoice), "longest", "world.lowest"})},
        [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
-         return align_scope_to_geometry(t, id, a.string("up") == "zUp" ? Axis::kZ : Axis::kY,
+         return align_scope_to_geometry(t, id, a.string("up") == "zup" ? Axis::kZ : Axis::kY,
                                         pick_from(a.string("face")), pick_from(a.string("edge")));
        }});
   ops.push_back({"rotateScope",

@@ -128,7 +128,7 @@ TEST(AlignScopeToGeometry, LongestEdgeOfAFlatShape) {
   ASSERT_NEAR(tree[root].scope.size.x, 2, 1e-9);  // the root's x runs along the first edge
   const ShapeId a =
       run(tree, root, "alignScopeToGeometry",
-          {{"", std::string("yUp")}, {"", std::int64_t{0}}, {"", std::string("longest")}});
+          {{"", std::string("yup")}, {"", std::int64_t{0}}, {"", std::string("longest")}});
   const Shape& s = tree[a];
   ASSERT_TRUE(s.is_flat());
   EXPECT_NEAR(std::fabs(s.scope.x.y), 1, 1e-12);
@@ -151,7 +151,7 @@ TEST(AlignScopeToGeometry, LargestFaceOfAMassTakesTheUpAxis) {
   expect_fits(tree[a]);
   // zUp puts the normal of face 1 (+x) on z.
   const ShapeId z = run(tree, box, "alignScopeToGeometry",
-                        {{"up", std::string("zUp")}, {"face", std::int64_t{1}}});
+                        {{"up", std::string("zup")}, {"face", std::int64_t{1}}});
   expect_near(tree[z].scope.z, {1, 0, 0});
   expect_near(tree[z].scope.size, {tree[z].scope.size.x, tree[z].scope.size.y, 10}, 1e-9);
 }
