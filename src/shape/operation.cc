@@ -373,8 +373,9 @@ const Registry& registry() {
     for (auto* family :
          {&extrude_operations, &split_operations, &comp_operations, &transform_operations,
           &offset_operations, &roof_operations, &insert_operations, &scope_operations,
-          &inner_rectangle_operations, &cleanup_operations, &component_operations,
-          &stair_operations, &frame_operations, &slab_operations, &wall_operations}) {
+          &inner_rectangle_operations, &cleanup_operations, &primitive_operations,
+          &component_operations, &stair_operations, &frame_operations, &slab_operations,
+          &wall_operations}) {
       for (Operation& op : (*family)()) all.push_back(std::move(op));
     }
     Amendments& a = amendments();

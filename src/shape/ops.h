@@ -31,6 +31,7 @@ std::vector<Operation> insert_operations();
 std::vector<Operation> scope_operations();
 std::vector<Operation> inner_rectangle_operations();
 std::vector<Operation> cleanup_operations();
+std::vector<Operation> primitive_operations();
 
 // --- extrude (ops_extrude.cc)
 // A flat shape (footprint or face) becomes a prism of `height` meters (> 0) along its normal. The
@@ -161,6 +162,13 @@ SetbackPart part_from(std::string_view name);
 // scope (`along_edge` false) or to the outline's longest edge; children the rectangle (piece 0,
 // scope x along the rectangle's side) and the rest (piece 1), as `part` keeps.
 OpResult inner_rectangle(ShapeTree& tree, ShapeId id, bool along_edge, SetbackPart part);
+
+// --- primitives (ops_primitive.cc)
+enum class PrimitiveKind : std::uint8_t { kCube, kCylinder, kQuad };
+// Replaces the geometry by a box, an upright prism of `sides` sides or an upward rectangle (a
+// flat child). `dims` (width, height, depth; all zero: fill the scope as insert() does) in
+// CityEngine's frame: height along the up axis (a flat shape's normal).
+OpResult primitive(ShapeTree& tree, ShapeId id, PrimitiveKind kind, int sides, kernel::Vec3 dims);
 
 // --- cleanupGeometry (ops_cleanup.cc)
 // kernel::cleanup with CityEngine's tolerance scale (0..1: up to 1 m, 10 degrees, 1 m²) on the

@@ -438,5 +438,53 @@ TEST(CleanupGeometry, KeepsAClosedMeshClosedAndDropsDegenerateFacesOfAnOpenOne) 
   EXPECT_NEAR(kernel::surface_area(*tree[k].mesh), 1, 1e-12);
 }
 
+TEST(Primitives, FillTheScopeOrStandInItsCentre) {
+  ShapeTree tree;
+  // On a flat 4 x 2 lot the cube's height is the mean of the lot's sides and runs up.
+  const ShapeId lot_id = lot(tree, {{{0, 0}, {4, 0}, {4, 2}, {0, 2}}, {}});
+  const ShapeId cube = run(tree, lot_id, "primitiveCube");
+  expect_near(tree[cube].scope.size, {4, 3, 2}, 1e-9);
+  expect_near(tree[cube].scope.y, {0, 0, 1});
+  EXPECT_NEAR(kernel::volume(*tree[cube].mesh), 24, 1e-9);
+  EXPECT_TRUE(kernel::is_watertight(*tree[cube].mesh));
+  expect_fits(tree[cube]);
+  // Sized: in the xz centre of a 10 m box, on its floor.
+  Scope scope;
+  scope.size = {10, 10, 10};
+  const ShapeId box = tree.add_root(scope, box_mesh(scope.size, mass_box_tags()));
+  const ShapeId small = run(tree, box, "primitiveCube", {{"", 1.0}, {"", 2.0}, {"", 3.0}});
+  expect_near(tree[small].scope.origin, {4.5, 0, 3.5});
+  expect_near(tree[small].scope.size, {1, 2, 3});
+  // An octagonal prism of radius 1 and height 2.
+  const ShapeId cyl =
+      run(tree, box, "primitiveCylinder", {{"", std::int64_t{8}}, {"", 1.0}, {"", 2.0}});
+  const kernel::Mesh& m = *tree[cyl].mesh;
+  EXPECT_EQ(m.face_count(), 10U);
+  EXPECT_NEAR(kernel::volume(m), 8 * std::sin(std::numbers::pi / 4), 1e-9);
+  EXPECT_TRUE(kernel::is_watertight(m));
+  expect_near(tree[cyl].scope.size, {2, 2, 2}, 1e-9);
+  expect_near(tree[cyl].scope.origin, {4, 0, 4}, 1e-9);
+  // On a lot the cylinder stands up.
+  const ShapeId upright =
+      run(tree, lot(tree, {{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}}), "primitiveCylinder");
+  expect_near(tree[upright].scope.size, {4, 4, 4}, 1e-9);
+  expect_near(tree[upright].scope.y, {0, 0, 1});
+  EXPECT_EQ(tree[upright].mesh->face_count(), 18U);
+  // A quad on a box's floor is a flat shape facing the box's up axis.
+  Scope b;
+  b.size = {4, 3, 2};
+  const ShapeId low = tree.add_root(b, box_mesh(b.size, mass_box_tags()));
+  const ShapeId quad = run(tree, low, "primitiveQuad");
+  ASSERT_TRUE(tree[quad].is_flat());
+  expect_near(tree[quad].scope.z, {0, 1, 0});
+  expect_near(tree[quad].scope.size, {4, 2, 0});
+  EXPECT_NEAR(kernel::area(*tree[quad].outline), 8, 1e-12);
+  expect_near(tree[quad].scope.to_world({0, 2, 0}), {0, 0, 0});
+  EXPECT_EQ(registry().run(tree, box, "primitiveCube", {{"", 1.0}, {"", 0.0}, {"", 2.0}}).error,
+            "primitiveCube: sizes must all be > 0 (or none given)");
+  EXPECT_EQ(registry().run(tree, box, "primitiveCylinder", {{"sides", std::int64_t{2}}}).error,
+            "primitiveCylinder: parameter 'sides' must be >= 3; got 2");
+}
+
 }  // namespace
 }  // namespace insula::shape

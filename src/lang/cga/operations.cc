@@ -81,8 +81,6 @@ constexpr Alias kAliases[] = {
      false, "center the scope on the scope of the shape the rule rewrites"},
     {"i", OpKind::kGeneric, "insert", "asset ...", "", 1, BlockUse::kNone, KeyUse::kNone, "", false,
      ""},
-    {"primitiveCube", OpKind::kGeneric, "insert", "", "asset=cube", 0, BlockUse::kNone,
-     KeyUse::kNone, "", false, "replace the geometry by a box filling the scope"},
     {"offset", OpKind::kGeneric, "offset", "distance part ...", "", 1, BlockUse::kOptional,
      KeyUse::kSelector, "pieces:part", false, ""},
     {"setback", OpKind::kGeneric, "setback", "distance ... !edges", "", 1, BlockUse::kRequired,

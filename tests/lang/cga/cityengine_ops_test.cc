@@ -182,5 +182,22 @@ TEST(CityEngineOps, CleanupGeometryDropsCollinearVerticesAndKeepsTaggedEdges) {
   EXPECT_NEAR(kernel::volume(*g.mesh), 240, 1e-9);
 }
 
+TEST(CityEngineOps, PrimitivesReplaceTheGeometry) {
+  const LotResult r = derive_one(
+      "Lot --> split(x){ 4: primitiveCube() A | 4: primitiveCylinder(8, 1, 2) B | 4: "
+      "primitiveQuad(2, 2) C }\n",
+      rectangle_lot(12, 4));
+  ASSERT_EQ(r.terminals_store.size(), 3U);
+  const Terminal& a = r.terminals_store[0];
+  expect_near(a.scope.size, {4, 4, 4}, 1e-9);
+  EXPECT_NEAR(kernel::volume(*r.geometry[a.geometry].mesh), 64, 1e-9);
+  const Terminal& b = r.terminals_store[1];
+  EXPECT_NEAR(kernel::volume(*r.geometry[b.geometry].mesh), 8 * std::sin(std::numbers::pi / 4),
+              1e-9);
+  const Terminal& c = r.terminals_store[2];
+  expect_near(c.scope.size, {2, 2, 0}, 1e-9);
+  expect_near(c.scope.origin, {9, 1, 0}, 1e-9);
+}
+
 }  // namespace
 }  // namespace insula::lang::cga

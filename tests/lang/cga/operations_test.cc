@@ -31,7 +31,7 @@ TEST(CgaOperations, SignaturesFollowTheRegistry) {
   EXPECT_EQ(sig("roofHip"), "n|nn|nnn|nnnb|nnnbn");  // then height, closed, thickness
   EXPECT_EQ(sig("roofMansard"), "n|nn|nnn|nnnn|nnnnn|nnnnnb|nnnnnbn");
   EXPECT_EQ(sig("roofFlat"), "|n|nn|nnn|nnnb");  // overhang, thickness (as .bldg Flat)
-  EXPECT_EQ(sig("primitiveCube"), "");
+  EXPECT_EQ(sig("primitiveCube"), "|n|nn|nnn");  // width, height, depth (0: fill the scope)
   EXPECT_EQ(sig("color"), "s|nnn|nnnn");
   // A registry operation under its own name: every parameter, the required ones first.
   EXPECT_EQ(sig("roof"), "|s|sn|snn|snnn|snnnn|snnnnn|snnnnnb|snnnnnbn");
