@@ -98,6 +98,10 @@ class AssetProvider {
 
 struct Context {
   const AssetProvider* assets = nullptr;
+  // CityEngine's object frame (the initial shape's scope) for operations that take a frame; null:
+  // the scope of the tree's root. A front-end that runs operations in a tree of its own (CGA's
+  // derivation) passes the lot's scope here.
+  const Scope* object = nullptr;
 };
 
 // An operation's outcome: the shapes it created (in a documented order), or an error message.

@@ -60,10 +60,26 @@ OpResult split(ShapeTree& tree, ShapeId id, Axis axis, std::span<const SizeSpec>
 OpResult repeat(ShapeTree& tree, ShapeId id, Axis axis, double size);
 
 // --- comp (ops_comp.cc)
-enum class FaceSelector : std::uint8_t { kFront, kBack, kLeft, kRight, kTop, kBottom, kSide, kAll };
+enum class FaceSelector : std::uint8_t {
+  kFront,
+  kBack,
+  kLeft,
+  kRight,
+  kTop,
+  kBottom,
+  kSide,
+  kAll,
+  kVertical,
+  kHorizontal,
+  kAslant,
+  kNutant
+};
 // Whether a face with unit normal `n` (scope space) is selected: each face belongs to the scope
 // direction its normal is closest to (front +z, back -z, left -x, right +x, top +y, bottom -y;
-// ties prefer y, then z); side = front, back, left or right.
+// ties prefer y, then z); side = front, back, left or right. CityEngine's slope classes go by the
+// angle a between the normal and the scope's xz plane: horizontal |a| > 78.75 degrees, aslant
+// 11.25 < a <= 78.75 (facing up), vertical |a| <= 11.25, nutant -78.75 <= a < -11.25 (facing
+// down).
 bool face_matches(FaceSelector selector, kernel::Vec3 n);
 // One flat child per selected face: scope z = outward normal, x horizontal along the face (up
 // cross normal; the parent's x for faces facing up or down), y = z cross x; its outline is the face
@@ -100,7 +116,8 @@ enum class Frame : std::uint8_t { kScope, kPivot, kObject, kWorld };
 // Turns the scope parallel to the frame's axes ("xyz"), or one axis ("x", "y", "z") with the
 // others the projections of the current ones; the geometry stays where it is and the scope is
 // refitted to it. A flat shape whose normal the new scope does not keep on z loses its outline.
-OpResult align_scope_to_axes(ShapeTree& tree, ShapeId id, Frame frame, char axis);
+OpResult align_scope_to_axes(ShapeTree& tree, ShapeId id, Frame frame, char axis,
+                             const Scope* object = nullptr);
 // Which face and edge alignScopeToGeometry takes: an index, or CityEngine's selector words.
 struct GeometryPick {
   enum class Kind : std::uint8_t { kIndex, kLargest, kAny, kLongest, kLowest } kind = Kind::kIndex;
@@ -121,8 +138,11 @@ OpResult mirror(ShapeTree& tree, ShapeId id, bool x, bool y, bool z);
 // the vector (angles, applied about the frame's x, y, z in turn, about the scope origin) is added.
 // Geometry moves with the scope. Insula keeps no pivot apart from the scope, so kPivot is kScope,
 // and absolute in the scope frame is relative (with a warning).
-OpResult translate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, kernel::Vec3 v);
-OpResult rotate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, kernel::Vec3 degrees);
+// `object` is the object frame's scope (null: the tree root's).
+OpResult translate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, kernel::Vec3 v,
+                      const Scope* object = nullptr);
+OpResult rotate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, kernel::Vec3 degrees,
+                   const Scope* object = nullptr);
 // The frame parameter's choices and value ("scope", "pivot", "object", "world").
 Frame frame_from(std::string_view name);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 
 #include "shape/ops.h"
 
@@ -13,6 +14,23 @@ using kernel::Vec3;
 
 bool face_matches(FaceSelector selector, Vec3 n) {
   if (selector == FaceSelector::kAll) return true;
+  if (selector >= FaceSelector::kVertical) {
+    const double len = length(n);
+    if (len == 0) return false;
+    const double sine = n.y / len;  // of the angle between the normal and the xz plane
+    const double edge = std::sin(11.25 * std::numbers::pi / 180);
+    const double steep = std::sin(78.75 * std::numbers::pi / 180);
+    switch (selector) {
+      case FaceSelector::kHorizontal:
+        return std::fabs(sine) > steep;
+      case FaceSelector::kAslant:
+        return sine > edge && sine <= steep;
+      case FaceSelector::kNutant:
+        return sine < -edge && sine >= -steep;
+      default:
+        return std::fabs(sine) <= edge;
+    }
+  }
   const double ax = std::fabs(n.x);
   const double ay = std::fabs(n.y);
   const double az = std::fabs(n.z);
@@ -148,14 +166,15 @@ std::vector<Operation> comp_operations() {
          ParamType::kEnum,
          "which faces (faces only)",
          ArgValue{std::string("all")},
-         {"front", "back", "left", "right", "top", "bottom", "side", "all"},
+         {"front", "back", "left", "right", "top", "bottom", "side", "all", "vertical",
+          "horizontal", "aslant", "nutant"},
          {},
          {}}},
        [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
          const std::string& type = a.string("type");
          if (type == "edges") return comp_edges(t, id);
          if (type == "vertices") return comp_vertices(t, id);
-         static constexpr std::array<std::pair<std::string_view, FaceSelector>, 8> kSelectors = {{
+         static constexpr std::array<std::pair<std::string_view, FaceSelector>, 12> kSelectors = {{
              {"front", FaceSelector::kFront},
              {"back", FaceSelector::kBack},
              {"left", FaceSelector::kLeft},
@@ -164,6 +183,10 @@ std::vector<Operation> comp_operations() {
              {"bottom", FaceSelector::kBottom},
              {"side", FaceSelector::kSide},
              {"all", FaceSelector::kAll},
+             {"vertical", FaceSelector::kVertical},
+             {"horizontal", FaceSelector::kHorizontal},
+             {"aslant", FaceSelector::kAslant},
+             {"nutant", FaceSelector::kNutant},
          }};
          FaceSelector selector = FaceSelector::kAll;
          for (const auto& [name, value] : kSelectors) {

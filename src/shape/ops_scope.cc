@@ -46,11 +46,16 @@ void to_scope_axes(bool flat, const Axes& a, Scope& scope) {
   }
 }
 
-Axes frame_axes(const ShapeTree& tree, ShapeId id, Frame frame) {
+Axes frame_axes(const ShapeTree& tree, ShapeId id, Frame frame, const Scope* object) {
   switch (frame) {
     case Frame::kWorld:
       return {};
     case Frame::kObject:
+      if (object != nullptr) {
+        // A root scope of zero depth is a footprint: its normal is z.
+        if (object->size.z == 0) return {object->origin, object->x, object->z, -object->y};
+        return {object->origin, object->x, object->y, object->z};
+      }
       return ce_axes(tree[tree.root_of(id)]);
     case Frame::kScope:
     case Frame::kPivot:
@@ -226,9 +231,10 @@ Frame frame_from(std::string_view name) {
   return Frame::kScope;
 }
 
-OpResult align_scope_to_axes(ShapeTree& tree, ShapeId id, Frame frame, char axis) {
+OpResult align_scope_to_axes(ShapeTree& tree, ShapeId id, Frame frame, char axis,
+                             const Scope* object) {
   const Shape& s = tree[id];
-  const Axes f = frame_axes(tree, id, frame);
+  const Axes f = frame_axes(tree, id, frame, object);
   const Axes cur = ce_axes(s);
   Axes a = f;
   if (axis == 'y') {
@@ -353,10 +359,11 @@ OpResult mirror(ShapeTree& tree, ShapeId id, bool x, bool y, bool z) {
   return relabelled_child(tree, id, s.scope, std::move(mesh), std::move(outline));
 }
 
-OpResult translate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, Vec3 v) {
+OpResult translate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, Vec3 v,
+                      const Scope* object) {
   if (!finite(v)) return OpResult::failure("offset must be finite");
   const Shape& s = tree[id];
-  const Axes f = frame_axes(tree, id, frame);
+  const Axes f = frame_axes(tree, id, frame, object);
   const bool own = frame == Frame::kScope || frame == Frame::kPivot;
   Scope scope = s.scope;
   const Vec3 d = f.x * v.x + f.up * v.y + f.z * v.z;
@@ -369,7 +376,8 @@ OpResult translate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, V
                           absolute && own ? kAbsAsRel : std::string());
 }
 
-OpResult rotate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, Vec3 degrees) {
+OpResult rotate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, Vec3 degrees,
+                   const Scope* object) {
   if (!finite(degrees)) return OpResult::failure("angles must be finite");
   const Shape& s = tree[id];
   const bool own = frame == Frame::kScope || frame == Frame::kPivot;
@@ -378,7 +386,7 @@ OpResult rotate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, Vec3
     if (absolute && r.ok()) r.warning = kAbsAsRel;
     return r;
   }
-  const Axes f = frame_axes(tree, id, frame);
+  const Axes f = frame_axes(tree, id, frame, object);
   Axes a = absolute ? f : ce_axes(s);
   if (absolute) {
     // CityEngine's ordered rotation from the frame: about x, then the turned y, then the turned z.
@@ -446,7 +454,7 @@ std::vector<Operation> scope_operations() {
        {enum_param("axis", "xyz: all three axes; x, y or z: that axis only (y = up)", "xyz",
                    {"xyz", "x", "y", "z", "world.xyz", "world.x", "world.y", "world.z",
                     "object.xyz", "object.x", "object.y", "object.z"})},
-       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context& context) {
          std::string_view axis = a.string("axis");
          Frame frame = Frame::kWorld;
          if (axis.starts_with("object.")) frame = Frame::kObject;
@@ -454,7 +462,7 @@ std::vector<Operation> scope_operations() {
            axis.remove_prefix(dot + 1);
          }
          const char which = axis == "xyz" ? 'a' : axis.front();
-         return align_scope_to_axes(t, id, frame, which);
+         return align_scope_to_axes(t, id, frame, which, context.object);
        }});
   ops.push_back(
       {"alignScopeToGeometry",

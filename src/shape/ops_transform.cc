@@ -139,12 +139,12 @@ std::vector<Operation> transform_operations() {
        "Moves the scope along its own axes (CGA T); the child shares the geometry.",
        {number_param("x", "meters along scope x", 0), number_param("y", "meters along scope y", 0),
         number_param("z", "meters along scope z", 0), mode_param("translation"), frame_param()},
-       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context& context) {
          const Vec3 v{a.number("x"), a.number("y"), a.number("z")};
          const Frame frame = frame_from(a.string("frame"));
          const bool absolute = a.string("mode") == "abs";
          if (!absolute && frame == Frame::kScope) return translate(t, id, v);
-         return translate_in(t, id, absolute, frame, v);
+         return translate_in(t, id, absolute, frame, v, context.object);
        }});
   ops.push_back(
       {"rotate",
@@ -161,7 +161,7 @@ std::vector<Operation> transform_operations() {
          {}},
         mode_param("rotation"),
         frame_param()},
-       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context& context) {
          const Vec3 v{a.number("x"), a.number("y"), a.number("z")};
          const Frame frame = frame_from(a.string("frame"));
          const bool absolute = a.string("mode") == "abs";
@@ -169,7 +169,7 @@ std::vector<Operation> transform_operations() {
            if (a.string("pivot") == "center") {
              return OpResult::failure("pivot center needs mode rel in the scope frame");
            }
-           return rotate_in(t, id, absolute, frame, v);
+           return rotate_in(t, id, absolute, frame, v, context.object);
          }
          return rotate(t, id, v, a.string("pivot") == "center" ? Pivot::kCenter : Pivot::kOrigin);
        }});

@@ -486,5 +486,66 @@ TEST(Primitives, FillTheScopeOrStandInItsCentre) {
             "primitiveCylinder: parameter 'sides' must be >= 3; got 2");
 }
 
+// A unit quad at `at` facing `n` (unit), as one face of `mesh`.
+void add_quad(kernel::Mesh& mesh, Vec3 at, Vec3 n) {
+  Vec3 u =
+      kernel::normalized(kernel::cross(std::fabs(n.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}, n));
+  const Vec3 v = kernel::cross(n, u);
+  mesh.add_polygon(std::vector<Vec3>{at, at + u, at + u + v, at + v}, {});
+}
+
+TEST(CompSelectors, SlopeClassesByAngleToTheScopeXzPlane) {
+  kernel::Mesh m;
+  const double r = std::sqrt(0.5);
+  add_quad(m, {0, 5, 0}, {0, 1, 0});                          // 0: up, horizontal
+  add_quad(m, {2, 5, 2}, {0, r, r});                          // 1: 45 degrees up, aslant
+  add_quad(m, {4, 5, 4}, {1, 0, 0});                          // 2: vertical
+  add_quad(m, {6, 5, 6}, {0, -r, r});                         // 3: 45 degrees down, nutant
+  add_quad(m, {8, 5, 8}, {0, -1, 0});                         // 4: down, horizontal
+  add_quad(m, {9, 5, 9}, {0, std::sin(0.1), std::cos(0.1)});  // 5: 5.7 degrees up, vertical
+  const auto pieces = [&](const char* selector) {
+    ShapeTree tree;
+    Scope scope;
+    scope.size = {10, 10, 10};
+    const ShapeId id = tree.add_root(scope, std::make_shared<kernel::Mesh>(m));
+    const OpResult result = registry().run(tree, id, "comp", {{"select", std::string(selector)}});
+    EXPECT_TRUE(result.ok()) << result.error;
+    return result.pieces;
+  };
+  using V = std::vector<std::uint32_t>;
+  EXPECT_EQ(pieces("horizontal"), (V{0, 4}));
+  EXPECT_EQ(pieces("aslant"), (V{1}));
+  EXPECT_EQ(pieces("vertical"), (V{2, 5}));
+  EXPECT_EQ(pieces("nutant"), (V{3}));
+}
+
+TEST(ObjectFrame, TheContextNamesTheInitialShape) {
+  ShapeTree tree;
+  Scope scope;
+  scope.size = {2, 2, 2};
+  const ShapeId id = tree.add_root(scope, box_mesh(scope.size, mass_box_tags()));
+  // A footprint scope turned 90 degrees: x north, normal up.
+  Scope object;
+  object.origin = {5, 5, 0};
+  object.x = {0, 1, 0};
+  object.y = {-1, 0, 0};
+  object.z = {0, 0, 1};
+  object.size = {10, 10, 0};
+  Context context;
+  context.object = &object;
+  const OpResult r = registry().run(
+      tree, id, "translate",
+      {{"x", 2.0}, {"y", 1.0}, {"mode", std::string("abs")}, {"frame", std::string("object")}},
+      context);
+  ASSERT_TRUE(r.ok()) << r.error;
+  // Object x is north, object y is the footprint's normal (up).
+  expect_near(tree[r.children[0]].scope.origin, {5, 7, 1});
+  const OpResult a =
+      registry().run(tree, id, "alignScopeToAxes", {{"", std::string("object.xyz")}}, context);
+  ASSERT_TRUE(a.ok()) << a.error;
+  expect_near(tree[a.children[0]].scope.x, {0, 1, 0});
+  expect_near(tree[a.children[0]].scope.y, {0, 0, 1});
+}
+
 }  // namespace
 }  // namespace insula::shape

@@ -199,5 +199,20 @@ TEST(CityEngineOps, PrimitivesReplaceTheGeometry) {
   expect_near(c.scope.origin, {9, 1, 0}, 1e-9);
 }
 
+TEST(CityEngineOps, CompSlopeSelectors) {
+  auto p = compile_text(R"(
+Lot --> extrude(4) comp(f){ horizontal: H | vertical: V }
+H --> roofHip(30) comp(f){ aslant: S | nutant: N | horizontal: B }
+)");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 6)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(symbol_count(*p, r[0], "H"), 2U);  // top and bottom
+  EXPECT_EQ(symbol_count(*p, r[0], "V"), 4U);
+  // Each hip roof's four slopes face up at 30 degrees: aslant.
+  EXPECT_EQ(symbol_count(*p, r[0], "S"), 8U);
+  EXPECT_EQ(symbol_count(*p, r[0], "N"), 0U);
+}
+
 }  // namespace
 }  // namespace insula::lang::cga

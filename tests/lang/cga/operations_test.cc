@@ -65,7 +65,10 @@ TEST(CgaOperations, ArgumentsMapOntoRegistryParameters) {
 TEST(CgaOperations, SelectorsAreTheRegistryChoices) {
   using V = std::vector<std::string>;
   EXPECT_EQ(find_operation("comp")->selectors,
-            (V{"front", "back", "left", "right", "top", "bottom", "side", "all"}));
+            (V{"front", "back", "left", "right", "top", "bottom", "side", "all", "vertical",
+               "horizontal", "aslant", "nutant"}));
+  EXPECT_EQ(find_operation("shapeU")->selectors, (V{"shape", "remainder"}));
+  EXPECT_TRUE(find_operation("innerRectangle")->selectors_are_pieces);
   EXPECT_EQ(find_operation("setback")->selectors,
             (V{"front", "back", "left", "right", "side", "all", "street", "remainder"}));
   EXPECT_EQ(find_operation("offset")->selectors, (V{"inside", "border"}));
