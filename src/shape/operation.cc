@@ -374,8 +374,8 @@ const Registry& registry() {
          {&extrude_operations, &split_operations, &comp_operations, &transform_operations,
           &offset_operations, &roof_operations, &insert_operations, &scope_operations,
           &inner_rectangle_operations, &cleanup_operations, &primitive_operations,
-          &component_operations, &stair_operations, &frame_operations, &slab_operations,
-          &wall_operations}) {
+          &convexify_operations, &component_operations, &stair_operations, &frame_operations,
+          &slab_operations, &wall_operations}) {
       for (Operation& op : (*family)()) all.push_back(std::move(op));
     }
     Amendments& a = amendments();

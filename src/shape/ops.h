@@ -32,6 +32,7 @@ std::vector<Operation> scope_operations();
 std::vector<Operation> inner_rectangle_operations();
 std::vector<Operation> cleanup_operations();
 std::vector<Operation> primitive_operations();
+std::vector<Operation> convexify_operations();
 
 // --- extrude (ops_extrude.cc)
 // A flat shape (footprint or face) becomes a prism of `height` meters (> 0) along its normal. The
@@ -182,6 +183,11 @@ SetbackPart part_from(std::string_view name);
 // scope (`along_edge` false) or to the outline's longest edge; children the rectangle (piece 0,
 // scope x along the rectangle's side) and the rest (piece 1), as `part` keeps.
 OpResult inner_rectangle(ShapeTree& tree, ShapeId id, bool along_edge, SetbackPart part);
+
+// --- convexify and trim (ops_convexify.cc)
+// One flat child per convex piece of a flat shape (kernel convex_partition); `max_length` > 0
+// keeps only cut lines shorter than it.
+OpResult convexify(ShapeTree& tree, ShapeId id, double max_length);
 
 // --- primitives (ops_primitive.cc)
 enum class PrimitiveKind : std::uint8_t { kCube, kCylinder, kQuad };

@@ -547,5 +547,63 @@ TEST(ObjectFrame, TheContextNamesTheInitialShape) {
   expect_near(tree[a.children[0]].scope.y, {0, 0, 1});
 }
 
+bool is_convex(const kernel::Ring& ring) {
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 a = ring[i];
+    const Vec2 b = ring[(i + 1) % ring.size()];
+    const Vec2 c = ring[(i + 2) % ring.size()];
+    if (kernel::cross(b - a, c - b) < -1e-9) return false;
+  }
+  return true;
+}
+
+TEST(Convexify, ConvexPiecesTileTheShape) {
+  ShapeTree tree;
+  const ShapeId l = lot(tree, {{{0, 0}, {10, 0}, {10, 5}, {4, 5}, {4, 10}, {0, 10}}, {}});
+  const OpResult r = registry().run(tree, l, "convexify", {});
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(r.children.size(), 2U);  // one reflex corner: two pieces
+  double area = 0;
+  for (ShapeId c : r.children) {
+    EXPECT_TRUE(is_convex(tree[c].outline->outer));
+    area += kernel::area(*tree[c].outline);
+  }
+  EXPECT_NEAR(area, 70, 1e-9);
+  // A square with a square hole: convex pieces around the hole.
+  const ShapeId h =
+      lot(tree, {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{4, 4}, {4, 6}, {6, 6}, {6, 4}}}});
+  const OpResult rh = registry().run(tree, h, "convexify", {});
+  ASSERT_TRUE(rh.ok()) << rh.error;
+  double ah = 0;
+  for (ShapeId c : rh.children) {
+    EXPECT_TRUE(is_convex(tree[c].outline->outer));
+    ah += kernel::area(*tree[c].outline);
+  }
+  EXPECT_NEAR(ah, 96, 1e-9);
+  EXPECT_GE(rh.children.size(), 4U);
+  // maxLength 1: every cut line is longer, so the L stays whole.
+  const ShapeId k = lot(tree, {{{0, 0}, {10, 0}, {10, 5}, {4, 5}, {4, 10}, {0, 10}}, {}});
+  const OpResult rk = registry().run(tree, k, "convexify", {{"", 1.0}});
+  ASSERT_EQ(rk.children.size(), 1U);
+  EXPECT_NEAR(kernel::area(*tree[rk.children[0]].outline), 70, 1e-9);
+  Scope scope;
+  scope.size = {1, 1, 1};
+  const ShapeId box = tree.add_root(scope, box_mesh(scope.size, mass_box_tags()));
+  EXPECT_EQ(registry().run(tree, box, "convexify", {}).error,
+            "convexify: needs a flat shape (a footprint or a face)");
+}
+
+TEST(Trim, IsAcceptedWithAWarning) {
+  ShapeTree tree;
+  Scope scope;
+  scope.size = {1, 2, 3};
+  const ShapeId box = tree.add_root(scope, box_mesh(scope.size, mass_box_tags()));
+  const OpResult r = registry().run(tree, box, "trim", {});
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r.warning, "trim planes are not made in Insula: trim() leaves the shape unchanged");
+  EXPECT_EQ(tree[r.children[0]].mesh, tree[box].mesh);
+  expect_near(tree[r.children[0]].scope.size, {1, 2, 3});
+}
+
 }  // namespace
 }  // namespace insula::shape

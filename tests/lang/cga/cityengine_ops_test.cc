@@ -214,5 +214,26 @@ H --> roofHip(30) comp(f){ aslant: S | nutant: N | horizontal: B }
   EXPECT_EQ(symbol_count(*p, r[0], "N"), 0U);
 }
 
+TEST(CityEngineOps, ConvexifyAndTrim) {
+  auto p = compile_text("Lot --> convexify() extrude(3) trim() A\n");
+  ASSERT_TRUE(p);
+  const auto r =
+      derive_all(*p, {polygon_lot({{0, 0}, {10, 0}, {10, 5}, {4, 5}, {4, 10}, {0, 10}})});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(symbol_count(*p, r[0], "A"), 2U);
+  double volume = 0;
+  for (std::size_t i = 0; i < r[0].terminals_store.size(); ++i) {
+    const Geometry& g = r[0].geometry[r[0].terminals_store[i].geometry];
+    ASSERT_TRUE(g.mesh);
+    EXPECT_TRUE(kernel::is_watertight(*g.mesh));
+    volume += kernel::volume(*g.mesh);
+  }
+  EXPECT_NEAR(volume, 210, 1e-9);
+  EXPECT_NE(diagnostics_text(r[0]).find(
+                "trim: trim planes are not made in Insula: trim() leaves the shape unchanged"),
+            std::string::npos)
+      << diagnostics_text(r[0]);
+}
+
 }  // namespace
 }  // namespace insula::lang::cga
