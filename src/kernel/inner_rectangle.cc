@@ -56,6 +56,11 @@ bool crosses_interior(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi, double eps) {
 bool rectangle_inside(const Polygon& polygon, const std::vector<Segment>& segments, Vec2 lo,
                       Vec2 hi, double eps) {
   for (const Segment& s : segments) {
+    // Cheap rejection first: a segment beside the rectangle touches nothing.
+    if (std::max(s.a.x, s.b.x) <= lo.x || std::min(s.a.x, s.b.x) >= hi.x ||
+        std::max(s.a.y, s.b.y) <= lo.y || std::min(s.a.y, s.b.y) >= hi.y) {
+      continue;
+    }
     if (crosses_interior(s.a, s.b, lo, hi, eps)) return false;
     if (s.a.x > lo.x + eps && s.a.x < hi.x - eps && s.a.y > lo.y + eps && s.a.y < hi.y - eps) {
       return false;
@@ -120,10 +125,23 @@ std::optional<Rect2> largest_inner_rectangle(const Polygon& polygon, int steps) 
   Rect2 best{};
   double best_area = 0;
   std::vector<std::size_t> stack;
+  std::vector<double> crossings;
   for (std::size_t j = 0; j < ny; ++j) {
+    // Cell centres of this row inside by the even-odd rule (holes included): the boundary
+    // crossings of the row's centre line left of the centre.
+    const double yc = (ys[j] + ys[j + 1]) / 2;
+    crossings.clear();
+    for (const Segment& s : segments) {
+      if ((s.a.y > yc) != (s.b.y > yc)) {
+        crossings.push_back(s.a.x + (yc - s.a.y) / (s.b.y - s.a.y) * (s.b.x - s.a.x));
+      }
+    }
+    std::sort(crossings.begin(), crossings.end());
     for (std::size_t i = 0; i < nx; ++i) {
-      const Vec2 c{(xs[i] + xs[i + 1]) / 2, (ys[j] + ys[j + 1]) / 2};
-      const bool free = !blocked[j * nx + i] && locate(polygon, c, 0) == PointLocation::kInside;
+      const double xc = (xs[i] + xs[i + 1]) / 2;
+      const auto left =
+          std::lower_bound(crossings.begin(), crossings.end(), xc) - crossings.begin();
+      const bool free = !blocked[j * nx + i] && left % 2 == 1;
       height[i] = free ? height[i] + (ys[j + 1] - ys[j]) : 0;
     }
     // Largest rectangle under the histogram of column heights (columns of unequal widths).
@@ -163,7 +181,7 @@ std::optional<Rect2> largest_inner_rectangle(const Polygon& polygon, int steps) 
       const int side = (last + k) % 4;
       double lo = 0;
       double hi = extent;
-      for (int it = 0; it < 60; ++it) {
+      for (int it = 0; it < 44; ++it) {
         const double mid = (lo + hi) / 2;
         (fits(moved(r, side, mid)) ? lo : hi) = mid;
       }
@@ -175,7 +193,7 @@ std::optional<Rect2> largest_inner_rectangle(const Polygon& polygon, int steps) 
   if (!fits(best)) best = {best.min + Vec2{eps, eps}, best.max - Vec2{eps, eps}};
   best = grown(best, 3);
   for (double delta = extent / steps; delta > extent * 1e-7; delta /= 2) {
-    for (int round = 0; round < 64; ++round) {
+    for (int round = 0; round < 16; ++round) {
       bool improved = false;
       for (int side = 0; side < 4; ++side) {
         const Rect2 candidate = grown(moved(best, side, -delta), side);
