@@ -355,6 +355,16 @@ TEST(InnerRectangle, LargestRectangleOfAnLAndOfATriangle) {
   const auto s = kernel::largest_inner_rectangle({{{0, 0}, {4, 0}, {0, 8}}, {}}, 7);
   ASSERT_TRUE(s);
   EXPECT_NEAR(s->area(), 8, 1e-3);
+  // A circle (a 1000-gon of radius 20) holds the square of area 2 r^2 = 800.
+  Polygon circle;
+  for (int k = 0; k < 1000; ++k) {
+    const double a = 2 * std::numbers::pi * k / 1000;
+    circle.outer.push_back({20 * std::cos(a), 20 * std::sin(a)});
+  }
+  const auto c = kernel::largest_inner_rectangle(circle);
+  ASSERT_TRUE(c);
+  EXPECT_NEAR(c->area(), 800, 0.1);
+  EXPECT_NEAR(c->max.x - c->min.x, c->max.y - c->min.y, 0.05);
   // A hole in the middle of a square: the best rectangle runs beside it.
   const auto h = kernel::largest_inner_rectangle(
       {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{4, 4}, {4, 6}, {6, 6}, {6, 4}}}});
