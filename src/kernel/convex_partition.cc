@@ -2,14 +2,16 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
+#include "kernel/face_loops.h"
 #include "kernel/triangulate.h"
 
 namespace insula::kernel {
 
 namespace {
 
-using Loop = std::vector<std::uint32_t>;
+using Loop = IndexLoop;
 
 bool convex(const std::vector<Vec2>& p, const Loop& loop, double eps) {
   for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -19,17 +21,6 @@ bool convex(const std::vector<Vec2>& p, const Loop& loop, double eps) {
     if (cross(b - a, c - b) < -eps) return false;
   }
   return true;
-}
-
-// Joins `a` (running u -> v) and `b` (running v -> u) along their shared edge.
-Loop joined(const Loop& a, const Loop& b, std::uint32_t u, std::uint32_t v) {
-  const auto at = [](const Loop& l, std::uint32_t x) {
-    return static_cast<std::size_t>(std::find(l.begin(), l.end(), x) - l.begin());
-  };
-  Loop out;
-  for (std::size_t k = 0, i = at(a, v); k < a.size(); ++k) out.push_back(a[(i + k) % a.size()]);
-  for (std::size_t k = 1, i = at(b, u); k + 1 < b.size(); ++k) out.push_back(b[(i + k) % b.size()]);
-  return out;
 }
 
 }  // namespace
@@ -60,23 +51,13 @@ std::vector<Ring> convex_partition(const Polygon& polygon, double max_length) {
       }
       for (const auto& [edge, list] : edges) {
         if (list.size() != 2 || !alive[list[0]] || !alive[list[1]]) continue;
-        const Loop& la = pieces[list[0]];
-        const Loop& lb = pieces[list[1]];
-        std::size_t shared = 0;
-        for (std::uint32_t x : la) shared += std::count(lb.begin(), lb.end(), x) > 0 ? 1 : 0;
-        if (shared != 2) continue;  // they touch elsewhere too: joining would pinch
-        std::uint32_t u = edge.first;
-        std::uint32_t v = edge.second;
-        const auto next = [](const Loop& l, std::uint32_t x) {
-          const auto it = std::find(l.begin(), l.end(), x);
-          return l[static_cast<std::size_t>(it - l.begin() + 1) % l.size()];
-        };
-        if (next(la, u) != v) std::swap(u, v);
-        if (next(la, u) != v || next(lb, v) != u) continue;
-        Loop out = joined(la, lb, u, v);
-        const bool go = pass == 0 ? length(p[u] - p[v]) >= max_length : convex(p, out, eps);
+        std::optional<Loop> out =
+            join_along(pieces[list[0]], pieces[list[1]], edge.first, edge.second);
+        if (!out) continue;
+        const Vec2 d = p[edge.first] - p[edge.second];
+        const bool go = pass == 0 ? length(d) >= max_length : convex(p, *out, eps);
         if (!go) continue;
-        pieces[list[0]] = std::move(out);
+        pieces[list[0]] = std::move(*out);
         alive[list[1]] = false;
         merged = true;
       }

@@ -4,13 +4,16 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <vector>
+
+#include "kernel/face_loops.h"
 
 namespace insula::kernel {
 
 namespace {
 
-using Loop = std::vector<std::uint32_t>;
+using Loop = IndexLoop;
 
 struct Face {
   Loop loop;
@@ -113,28 +116,9 @@ void merge_coplanar(std::vector<Face>& faces, const std::vector<Vec3>& p, double
       const Vec3 na = normalized(newell(p, fa.loop));
       const Vec3 nb = normalized(newell(p, fb.loop));
       if (dot(na, nb) < cos_limit) continue;
-      std::size_t shared = 0;
-      for (std::uint32_t v : fa.loop) {
-        shared += std::count(fb.loop.begin(), fb.loop.end(), v) > 0 ? 1 : 0;
-      }
-      if (shared != 2) continue;  // more than one common edge or vertex: a merge could pinch
-      // fa runs u -> v along the edge, fb v -> u; join fa from v round to u with fb's inside.
-      const auto at = [](const Loop& l, std::uint32_t v) {
-        return static_cast<std::size_t>(std::find(l.begin(), l.end(), v) - l.begin());
-      };
-      std::uint32_t u = edge.first;
-      std::uint32_t v = edge.second;
-      if (fa.loop[(at(fa.loop, u) + 1) % fa.loop.size()] != v) std::swap(u, v);
-      if (fa.loop[(at(fa.loop, u) + 1) % fa.loop.size()] != v) continue;
-      if (fb.loop[(at(fb.loop, v) + 1) % fb.loop.size()] != u) continue;  // opposite orientation
-      Loop out;
-      for (std::size_t k = 0, i = at(fa.loop, v); k < fa.loop.size(); ++k) {
-        out.push_back(fa.loop[(i + k) % fa.loop.size()]);
-      }
-      for (std::size_t k = 1, i = at(fb.loop, u); k + 1 < fb.loop.size(); ++k) {
-        out.push_back(fb.loop[(i + k) % fb.loop.size()]);
-      }
-      fa.loop = std::move(out);
+      std::optional<Loop> out = join_along(fa.loop, fb.loop, edge.first, edge.second);
+      if (!out) continue;  // pinched, or the faces run the same way along the edge
+      fa.loop = std::move(*out);
       fb.alive = false;
       merged = true;
     }
