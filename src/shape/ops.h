@@ -92,6 +92,10 @@ std::optional<ShapeId> add_face_child(ShapeTree& tree, ShapeId id, std::size_t f
 // One degenerate child per distinct edge: scope x along the edge, z the mean normal of the faces
 // meeting there, size (length, 0, 0), no geometry.
 OpResult comp_edges(ShapeTree& tree, ShapeId id);
+// One degenerate child per edge of every face, in face and loop order (CityEngine's fe): scope x
+// along the edge as the loop runs, y the face's normal, z pointing out of the face in its plane,
+// size (length, 0, 0). pieces[i] counts the face edges over all faces.
+OpResult comp_face_edges(ShapeTree& tree, ShapeId id);
 // One point child per distinct vertex: the parent's axes, size 0, no geometry.
 OpResult comp_vertices(ShapeTree& tree, ShapeId id);
 

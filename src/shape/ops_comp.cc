@@ -132,6 +132,34 @@ OpResult comp_edges(ShapeTree& tree, ShapeId id) {
   return finish(tree, id, std::move(result));
 }
 
+OpResult comp_face_edges(ShapeTree& tree, ShapeId id) {
+  const Shape& s = tree[id];
+  if (!s.mesh) return OpResult::failure("the shape has no edges");
+  const std::shared_ptr<const Mesh> mesh = s.mesh;
+  const Scope scope = s.scope;
+  OpResult result;
+  std::uint32_t index = 0;
+  for (std::size_t f = 0; f < mesh->face_count(); ++f) {
+    const Vec3 n = kernel::face_normal(*mesh, f);
+    const auto loop = mesh->face(f);
+    for (std::size_t i = 0; i < loop.size(); ++i, ++index) {
+      const Vec3 a = mesh->position(loop[i]);
+      const Vec3 d = mesh->position(loop[(i + 1) % loop.size()]) - a;
+      // x along the edge in loop order, y the face's normal, z out of the face in its plane.
+      const Vec3 z = cross(d, n);
+      if (length(n) < 0.5 || length(z) < 1e-12) continue;
+      Scope child = scope;
+      child.origin = scope.to_world(a);
+      child.x = scope.direction_to_world(normalized(d));
+      child.z = scope.direction_to_world(normalized(z));
+      child.y = cross(child.z, child.x);
+      child.size = {length(d), 0, 0};
+      result.add(tree.add_child(id, child), index);
+    }
+  }
+  return finish(tree, id, std::move(result));
+}
+
 OpResult comp_vertices(ShapeTree& tree, ShapeId id) {
   const Shape& s = tree[id];
   if (!s.mesh) return OpResult::failure("the shape has no vertices");
@@ -153,13 +181,15 @@ std::vector<Operation> comp_operations() {
   std::vector<Operation> ops;
   ops.push_back(
       {"comp",
-       "Splits a shape into its faces (by selector), edges or vertices (CGA comp); faces become "
-       "flat shapes with z = outward normal, edges line scopes, vertices point scopes.",
+       "Splits a shape into its faces (by selector), edges, vertices or face edges (CGA comp); "
+       "faces become flat shapes with z = outward normal, edges and face edges line scopes (a "
+       "face edge: x along the face's loop, y its normal, z out of the face), vertices point "
+       "scopes.",
        {{"type",
          ParamType::kEnum,
          "component kind",
          ArgValue{std::string("faces")},
-         {"faces", "edges", "vertices"},
+         {"faces", "edges", "vertices", "faceedges"},
          {},
          {}},
         {"select",
@@ -174,6 +204,7 @@ std::vector<Operation> comp_operations() {
          const std::string& type = a.string("type");
          if (type == "edges") return comp_edges(t, id);
          if (type == "vertices") return comp_vertices(t, id);
+         if (type == "faceedges") return comp_face_edges(t, id);
          static constexpr std::array<std::pair<std::string_view, FaceSelector>, 12> kSelectors = {{
              {"front", FaceSelector::kFront},
              {"back", FaceSelector::kBack},

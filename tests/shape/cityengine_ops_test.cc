@@ -529,6 +529,31 @@ TEST(CompSelectors, SlopeClassesByAngleToTheScopeXzPlane) {
   EXPECT_EQ(pieces("nutant"), (V{3}));
 }
 
+TEST(CompFaceEdges, OneLineScopePerEdgeOfEveryFace) {
+  ShapeTree tree;
+  Scope scope;
+  scope.size = {2, 3, 4};
+  const ShapeId box = tree.add_root(scope, box_mesh(scope.size, mass_box_tags()));
+  const OpResult r = registry().run(tree, box, "comp", {{"type", std::string("faceedges")}});
+  ASSERT_TRUE(r.ok()) << r.error;
+  ASSERT_EQ(r.children.size(), 24U);  // 6 faces x 4 edges: shared edges once per face
+  double total = 0;
+  std::size_t up = 0;
+  for (ShapeId c : r.children) {
+    const Scope& e = tree[c].scope;
+    total += e.size.x;
+    EXPECT_NEAR(kernel::dot(kernel::cross(e.x, e.y), e.z), 1, 1e-12);
+    if (e.y.y < 0.5) continue;
+    // An edge of the top face: z points away from the face's centre, in its plane.
+    ++up;
+    const Vec3 mid = e.origin + e.x * (e.size.x / 2);
+    EXPECT_NEAR(e.z.y, 0, 1e-12);
+    EXPECT_GT(kernel::dot(e.z, mid - Vec3{1, 3, 2}), 0);
+  }
+  EXPECT_NEAR(total, 72, 1e-9);  // the faces' perimeters
+  EXPECT_EQ(up, 4U);
+}
+
 TEST(ObjectFrame, TheContextNamesTheInitialShape) {
   ShapeTree tree;
   Scope scope;
