@@ -57,6 +57,10 @@ std::vector<Piece> resolve_sizes(double total, std::span<const SizeSpec> sizes);
 // faces tagged FloorSurface / CeilingSurface for y cuts and InteriorWallSurface otherwise); a
 // flat shape's outline is clipped in its plane (x or y only).
 OpResult split(ShapeTree& tree, ShapeId id, Axis axis, std::span<const SizeSpec> sizes);
+// CGA splitArea: a flat shape split along x or y so that the pieces have the resolved *areas*
+// (sizes as in resolve_sizes with the shape's area as the total); cut positions by bisection on
+// the area left of them, then split().
+OpResult split_area(ShapeTree& tree, ShapeId id, Axis axis, std::span<const SizeSpec> sizes);
 // As many pieces of about `size` meters (> 0) as fit: n = max(1, floor(S / size)), each S / n.
 OpResult repeat(ShapeTree& tree, ShapeId id, Axis axis, double size);
 

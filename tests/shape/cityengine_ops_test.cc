@@ -628,6 +628,37 @@ TEST(Convexify, ConvexPiecesTileTheShape) {
             "convexify: needs a flat shape (a footprint or a face)");
 }
 
+TEST(SplitArea, PiecesHaveTheGivenAreas) {
+  ShapeTree tree;
+  const ShapeId rect = lot(tree, {{{0, 0}, {10, 0}, {10, 4}, {0, 4}}, {}});
+  const OpResult r = registry().run(
+      tree, rect, "splitArea",
+      {{"", std::string("x")},
+       {"", std::vector<SizeSpec>{{10, SizeMode::kAbsolute}, {1, SizeMode::kFloating}}}});
+  ASSERT_TRUE(r.ok()) << r.error;
+  ASSERT_EQ(r.children.size(), 2U);
+  EXPECT_NEAR(kernel::area(*tree[r.children[0]].outline), 10, 1e-9);
+  EXPECT_NEAR(tree[r.children[0]].scope.size.x, 2.5, 1e-9);
+  EXPECT_NEAR(kernel::area(*tree[r.children[1]].outline), 30, 1e-9);
+  EXPECT_EQ(r.pieces, (std::vector<std::uint32_t>{0, 1}));
+  // A right triangle halved by area: the cut is at 4 - 2 sqrt(2), not at the middle.
+  const ShapeId tri = lot(tree, {{{0, 0}, {4, 0}, {0, 4}}, {}});
+  const OpResult t = registry().run(
+      tree, tri, "splitArea",
+      {{"", std::string("x")},
+       {"", std::vector<SizeSpec>{{0.5, SizeMode::kRelative}, {1, SizeMode::kFloating}}}});
+  ASSERT_TRUE(t.ok()) << t.error;
+  ASSERT_EQ(t.children.size(), 2U);
+  EXPECT_NEAR(kernel::area(*tree[t.children[0]].outline), 4, 1e-9);
+  EXPECT_NEAR(kernel::area(*tree[t.children[1]].outline), 4, 1e-9);
+  EXPECT_NEAR(tree[t.children[0]].scope.size.x, 4 - 2 * std::sqrt(2.0), 1e-9);
+  Scope scope;
+  scope.size = {1, 1, 1};
+  const ShapeId box = tree.add_root(scope, box_mesh(scope.size, mass_box_tags()));
+  EXPECT_EQ(registry().run(tree, box, "splitArea", {{"", std::string("x")}, {"", 1.0}}).error,
+            "splitArea: needs a flat shape (a footprint or a face)");
+}
+
 TEST(Trim, IsAcceptedWithAWarning) {
   ShapeTree tree;
   Scope scope;

@@ -214,6 +214,15 @@ H --> roofHip(30) comp(f){ aslant: S | nutant: N | horizontal: B }
   EXPECT_EQ(symbol_count(*p, r[0], "N"), 0U);
 }
 
+TEST(CityEngineOps, SplitAreaInItsPositionalForm) {
+  // CityEngine's keyed block (`splitArea(x){ 10: A | ~1: B }`) is the reader's; the registry's
+  // positional form runs today.
+  const LotResult r = derive_one("Lot --> splitArea(x, 10, ~1) A\n", rectangle_lot(10, 4));
+  ASSERT_EQ(r.terminals_store.size(), 2U);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[0]), 10, 1e-9);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[1]), 30, 1e-9);
+}
+
 TEST(CityEngineOps, ConvexifyAndTrim) {
   auto p = compile_text("Lot --> convexify() extrude(3) trim() A\n");
   ASSERT_TRUE(p);
