@@ -72,6 +72,15 @@ std::string expected_kind(const ParamDecl& p) {
   return {};
 }
 
+bool takes_index(const ParamDecl& p) {
+  return std::find(p.choices.begin(), p.choices.end(), kIndexChoice) != p.choices.end();
+}
+
+bool is_index_text(std::string_view s) {
+  return !s.empty() && s.size() < 16 &&
+         std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 // Converts `value` to the parameter's type, or returns false.
 bool coerce(const ParamDecl& p, const ArgValue& value, ArgValue& out) {
   const auto* d = std::get_if<double>(&value);
@@ -85,8 +94,17 @@ bool coerce(const ParamDecl& p, const ArgValue& value, ArgValue& out) {
         return out = static_cast<std::int64_t>(*d), true;
       }
       return i != nullptr && (out = *i, true);
-    case ParamType::kString:
     case ParamType::kEnum:
+      if (takes_index(p)) {
+        std::int64_t n = -1;
+        if (i != nullptr) n = *i;
+        if (d != nullptr && std::isfinite(*d) && *d == std::trunc(*d) && std::fabs(*d) < 9e15) {
+          n = static_cast<std::int64_t>(*d);
+        }
+        if (n >= 0) return out = std::to_string(n), true;
+      }
+      return std::holds_alternative<std::string>(value) && (out = value, true);
+    case ParamType::kString:
       return std::holds_alternative<std::string>(value) && (out = value, true);
     case ParamType::kBool:
       return std::holds_alternative<bool>(value) && (out = value, true);
@@ -124,7 +142,9 @@ std::vector<double> checked_numbers(const ArgValue& value) {
 std::string check_value(const Operation& op, const ParamDecl& p, const ArgValue& value) {
   if (p.type == ParamType::kEnum) {
     const auto& s = std::get<std::string>(value);
-    if (std::find(p.choices.begin(), p.choices.end(), s) == p.choices.end()) {
+    const bool index = takes_index(p) && is_index_text(s);
+    if (!index && (s == kIndexChoice ||
+                   std::find(p.choices.begin(), p.choices.end(), s) == p.choices.end())) {
       return concat({op.name, ": parameter '", p.name, "' must be one of ", join(p.choices, ", "),
                      "; got '", s, "'"});
     }
@@ -352,8 +372,10 @@ const Registry& registry() {
     std::vector<Operation> all;
     for (auto* family :
          {&extrude_operations, &split_operations, &comp_operations, &transform_operations,
-          &offset_operations, &roof_operations, &insert_operations, &component_operations,
-          &stair_operations, &frame_operations, &slab_operations, &wall_operations}) {
+          &offset_operations, &roof_operations, &insert_operations, &scope_operations,
+          &inner_rectangle_operations, &cleanup_operations, &primitive_operations,
+          &convexify_operations, &component_operations, &stair_operations, &frame_operations,
+          &slab_operations, &wall_operations}) {
       for (Operation& op : (*family)()) all.push_back(std::move(op));
     }
     Amendments& a = amendments();

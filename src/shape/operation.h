@@ -52,6 +52,10 @@ using ArgValue =
 // How a value is written in the docs and error messages: "2", "'0.5", "x", "[2, ~1]".
 std::string to_string(const ArgValue& value);
 
+// A kEnum choice that stands for any whole number >= 0, bound as its decimal text (CityEngine's
+// alignScopeToGeometry takes a face index or a selector word in one argument).
+inline constexpr std::string_view kIndexChoice = "N";
+
 struct ParamDecl {
   std::string name;
   ParamType type = ParamType::kNumber;
@@ -94,6 +98,10 @@ class AssetProvider {
 
 struct Context {
   const AssetProvider* assets = nullptr;
+  // CityEngine's object frame (the initial shape's scope) for operations that take a frame; null:
+  // the scope of the tree's root. A front-end that runs operations in a tree of its own (CGA's
+  // derivation) passes the lot's scope here.
+  const Scope* object = nullptr;
 };
 
 // An operation's outcome: the shapes it created (in a documented order), or an error message.

@@ -10,6 +10,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kernel/mesh.h"
@@ -27,6 +28,11 @@ std::vector<Operation> transform_operations();
 std::vector<Operation> offset_operations();
 std::vector<Operation> roof_operations();
 std::vector<Operation> insert_operations();
+std::vector<Operation> scope_operations();
+std::vector<Operation> inner_rectangle_operations();
+std::vector<Operation> cleanup_operations();
+std::vector<Operation> primitive_operations();
+std::vector<Operation> convexify_operations();
 
 // --- extrude (ops_extrude.cc)
 // A flat shape (footprint or face) becomes a prism of `height` meters (> 0) along its normal. The
@@ -51,14 +57,34 @@ std::vector<Piece> resolve_sizes(double total, std::span<const SizeSpec> sizes);
 // faces tagged FloorSurface / CeilingSurface for y cuts and InteriorWallSurface otherwise); a
 // flat shape's outline is clipped in its plane (x or y only).
 OpResult split(ShapeTree& tree, ShapeId id, Axis axis, std::span<const SizeSpec> sizes);
+// CGA splitArea: a flat shape split along x or y so that the pieces have the resolved *areas*
+// (sizes as in resolve_sizes with the shape's area as the total); cut positions by bisection on
+// the area left of them, then split().
+OpResult split_area(ShapeTree& tree, ShapeId id, Axis axis, std::span<const SizeSpec> sizes);
 // As many pieces of about `size` meters (> 0) as fit: n = max(1, floor(S / size)), each S / n.
 OpResult repeat(ShapeTree& tree, ShapeId id, Axis axis, double size);
 
 // --- comp (ops_comp.cc)
-enum class FaceSelector : std::uint8_t { kFront, kBack, kLeft, kRight, kTop, kBottom, kSide, kAll };
+enum class FaceSelector : std::uint8_t {
+  kFront,
+  kBack,
+  kLeft,
+  kRight,
+  kTop,
+  kBottom,
+  kSide,
+  kAll,
+  kVertical,
+  kHorizontal,
+  kAslant,
+  kNutant
+};
 // Whether a face with unit normal `n` (scope space) is selected: each face belongs to the scope
 // direction its normal is closest to (front +z, back -z, left -x, right +x, top +y, bottom -y;
-// ties prefer y, then z); side = front, back, left or right.
+// ties prefer y, then z); side = front, back, left or right. CityEngine's slope classes go by the
+// angle a between the normal and the scope's xz plane: horizontal |a| > 78.75 degrees, aslant
+// 11.25 < a <= 78.75 (facing up), vertical |a| <= 11.25, nutant -78.75 <= a < -11.25 (facing
+// down).
 bool face_matches(FaceSelector selector, kernel::Vec3 n);
 // One flat child per selected face: scope z = outward normal, x horizontal along the face (up
 // cross normal; the parent's x for faces facing up or down), y = z cross x; its outline is the face
@@ -70,6 +96,10 @@ std::optional<ShapeId> add_face_child(ShapeTree& tree, ShapeId id, std::size_t f
 // One degenerate child per distinct edge: scope x along the edge, z the mean normal of the faces
 // meeting there, size (length, 0, 0), no geometry.
 OpResult comp_edges(ShapeTree& tree, ShapeId id);
+// One degenerate child per edge of every face, in face and loop order (CityEngine's fe): scope x
+// along the edge as the loop runs, y the face's normal, z pointing out of the face in its plane,
+// size (length, 0, 0). pieces[i] counts the face edges over all faces.
+OpResult comp_face_edges(ShapeTree& tree, ShapeId id);
 // One point child per distinct vertex: the parent's axes, size 0, no geometry.
 OpResult comp_vertices(ShapeTree& tree, ShapeId id);
 
@@ -87,6 +117,44 @@ OpResult scale(ShapeTree& tree, ShapeId id, SizeSpec x, SizeSpec y, SizeSpec z);
 // (CGA center). `axes` holds 'x', 'y', 'z'.
 OpResult center(ShapeTree& tree, ShapeId id, std::string_view axes);
 
+// --- CityEngine's scope operations (ops_scope.cc; docs/operations-cityengine.md). CityEngine names
+// a shape's axes x, y (up) and z = x cross y; a volume's scope has them as they are, a flat shape's
+// (Insula keeps a flat shape's normal on scope z) as x, z and -y. The world frame is x east, y up
+// (world +Z), z south; the object frame is the root shape's scope read the same way.
+enum class Frame : std::uint8_t { kScope, kPivot, kObject, kWorld };
+// Turns the scope parallel to the frame's axes ("xyz"), or one axis ("x", "y", "z") with the
+// others the projections of the current ones; the geometry stays where it is and the scope is
+// refitted to it. A flat shape whose normal the new scope does not keep on z loses its outline.
+OpResult align_scope_to_axes(ShapeTree& tree, ShapeId id, Frame frame, char axis,
+                             const Scope* object = nullptr);
+// Which face and edge alignScopeToGeometry takes: an index, or CityEngine's selector words.
+struct GeometryPick {
+  enum class Kind : std::uint8_t { kIndex, kLargest, kAny, kLongest, kLowest } kind = Kind::kIndex;
+  std::size_t index = 0;
+};
+// x along the picked edge of the picked face, `up` (y or z) along the face's normal (a flat shape
+// keeps the normal on z whatever `up` says), the scope refitted around the unmoved geometry.
+OpResult align_scope_to_geometry(ShapeTree& tree, ShapeId id, Axis up, GeometryPick face,
+                                 GeometryPick edge);
+// Turns only the scope (intrinsic x, y, z degrees), then refits it to the unmoved geometry.
+OpResult rotate_scope(ShapeTree& tree, ShapeId id, kernel::Vec3 degrees);
+// Moves the scope origin to corner `corner` (bit 0 x, bit 1 y, bit 2 z) with the axes permuted by
+// `axis_map` ("xyz", "yzx", "zxy") and pointing into the box; the box and the geometry stay put.
+OpResult set_pivot(ShapeTree& tree, ShapeId id, std::string_view axis_map, int corner);
+// Mirrors the geometry inside the scope on the chosen axes (faces kept outward); scope unchanged.
+OpResult mirror(ShapeTree& tree, ShapeId id, bool x, bool y, bool z);
+// CityEngine's translate/rotate: `absolute` sets the origin (rotation) in the frame, otherwise
+// the vector (angles, applied about the frame's x, y, z in turn, about the scope origin) is added.
+// Geometry moves with the scope. Insula keeps no pivot apart from the scope, so kPivot is kScope,
+// and absolute in the scope frame is relative (with a warning).
+// `object` is the object frame's scope (null: the tree root's).
+OpResult translate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, kernel::Vec3 v,
+                      const Scope* object = nullptr);
+OpResult rotate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, kernel::Vec3 degrees,
+                   const Scope* object = nullptr);
+// The frame parameter's choices and value ("scope", "pivot", "object", "world").
+Frame frame_from(std::string_view name);
+
 // --- offset and setback (ops_offset.cc)
 enum class OffsetPart : std::uint8_t { kInside, kBorder, kAll };
 // Offsets a flat shape's outline by `distance` meters (negative shrinks: CGA offset). Children:
@@ -97,6 +165,50 @@ enum class EdgeSelector : std::uint8_t { kFront, kBack, kLeft, kRight, kSide, kA
 // outward normal in the scope's xy plane is closest to -y front, +y back, -x left, +x right).
 // Children: the setback strip (piece 0) and the remainder (piece 1), each omitted when empty.
 OpResult setback(ShapeTree& tree, ShapeId id, double distance, EdgeSelector edges);
+
+// Per-side strip depths (meters, 0: no strip) for edges classified as setback's.
+struct EdgeDepths {
+  double front = 0;
+  double back = 0;
+  double left = 0;
+  double right = 0;
+};
+enum class SetbackPart : std::uint8_t { kShape, kRemainder, kAll };
+// The general setback (CGA shapeL, shapeU, shapeO): strips of each edge's depth; children the
+// strips' union clipped to the shape (piece 0) and the remainder (piece 1), as `part` keeps.
+OpResult setback(ShapeTree& tree, ShapeId id, const EdgeDepths& depths, SetbackPart part);
+// `region` (in `id`'s scope xy) as a flat child of `id` with its scope fitted to the region, the
+// tag of `id`'s first face, recorded in `result` as `piece`.
+void add_flat_region(ShapeTree& tree, ShapeId id, const kernel::Polygon& region,
+                     std::uint32_t piece, OpResult& result);
+
+// The `part` parameter of shapeL/U/O and innerRectangle: shape, remainder or all.
+ParamDecl part_param();
+SetbackPart part_from(std::string_view name);
+
+// --- innerRectangle (ops_inner_rectangle.cc)
+// The largest rectangle inside a flat shape (kernel inner_rectangle.h), its sides parallel to the
+// scope (`along_edge` false) or to the outline's longest edge; children the rectangle (piece 0,
+// scope x along the rectangle's side) and the rest (piece 1), as `part` keeps.
+OpResult inner_rectangle(ShapeTree& tree, ShapeId id, bool along_edge, SetbackPart part);
+
+// --- convexify and trim (ops_convexify.cc)
+// One flat child per convex piece of a flat shape (kernel convex_partition); `max_length` > 0
+// keeps only cut lines shorter than it.
+OpResult convexify(ShapeTree& tree, ShapeId id, double max_length);
+
+// --- primitives (ops_primitive.cc)
+enum class PrimitiveKind : std::uint8_t { kCube, kCylinder, kQuad };
+// Replaces the geometry by a box, an upright prism of `sides` sides or an upward rectangle (a
+// flat child). `dims` (width, height, depth; all zero: fill the scope as insert() does) in
+// CityEngine's frame: height along the up axis (a flat shape's normal).
+OpResult primitive(ShapeTree& tree, ShapeId id, PrimitiveKind kind, int sides, kernel::Vec3 dims);
+
+// --- cleanupGeometry (ops_cleanup.cc)
+// kernel::cleanup with CityEngine's tolerance scale (0..1: up to 1 m, 10 degrees, 1 m²) on the
+// chosen components ("all", "vertices", "edges", "faces"); scope unchanged.
+OpResult cleanup_geometry(ShapeTree& tree, ShapeId id, std::string_view components,
+                          double tolerance);
 
 // --- roof (ops_roof.cc)
 // How the roof is finished beyond the kernel spec (the .bldg builder's roofs: kernel roof_solid.h).
@@ -153,6 +265,11 @@ Refit refit(const Scope& parent, const kernel::Mesh& mesh, kernel::Vec3 x, kerne
 // with the axes x, y, z as the only child (piece 0), `id` finished, `warning` passed on.
 OpResult replace_with(ShapeTree& tree, ShapeId id, const kernel::Mesh& mesh, kernel::Vec3 x,
                       kernel::Vec3 y, kernel::Vec3 z, std::string warning = {});
+// One child of `id` with `id`'s labels, the given scope and geometry (scope rules: the same
+// grammar symbol moved), `warning` passed on; `id` finished.
+OpResult relabelled_child(ShapeTree& tree, ShapeId id, const Scope& scope,
+                          std::shared_ptr<const kernel::Mesh> mesh,
+                          std::shared_ptr<const kernel::Polygon> outline, std::string warning = {});
 // Marks `id` inactive (it was replaced by its children) and returns `result`.
 OpResult finish(ShapeTree& tree, ShapeId id, OpResult result);
 

@@ -133,6 +133,19 @@ OpResult replace_with(ShapeTree& tree, ShapeId id, const Mesh& mesh, Vec3 x, Vec
   return finish(tree, id, std::move(result));
 }
 
+OpResult relabelled_child(ShapeTree& tree, ShapeId id, const Scope& scope,
+                          std::shared_ptr<const Mesh> mesh,
+                          std::shared_ptr<const kernel::Polygon> outline, std::string warning) {
+  const ShapeId child = tree.add_child(id, scope, std::move(mesh), std::move(outline));
+  // The moved shape is the same grammar symbol: keep its labels (they are not inherited by
+  // children in general, seed 001 §3.1, but a scope rule does not make a new kind of shape).
+  tree[child].labels = tree[id].labels;
+  OpResult r;
+  r.add(child, 0);
+  r.warning = std::move(warning);
+  return finish(tree, id, std::move(r));
+}
+
 OpResult finish(ShapeTree& tree, ShapeId id, OpResult result) {
   if (result.ok() && !result.children.empty()) tree.deactivate(id);
   return result;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 
 #include "shape/ops.h"
 
@@ -13,6 +14,23 @@ using kernel::Vec3;
 
 bool face_matches(FaceSelector selector, Vec3 n) {
   if (selector == FaceSelector::kAll) return true;
+  if (selector >= FaceSelector::kVertical) {
+    const double len = length(n);
+    if (len == 0) return false;
+    const double sine = n.y / len;  // of the angle between the normal and the xz plane
+    const double edge = std::sin(11.25 * std::numbers::pi / 180);
+    const double steep = std::sin(78.75 * std::numbers::pi / 180);
+    switch (selector) {
+      case FaceSelector::kHorizontal:
+        return std::fabs(sine) > steep;
+      case FaceSelector::kAslant:
+        return sine > edge && sine <= steep;
+      case FaceSelector::kNutant:
+        return sine < -edge && sine >= -steep;
+      default:
+        return std::fabs(sine) <= edge;
+    }
+  }
   const double ax = std::fabs(n.x);
   const double ay = std::fabs(n.y);
   const double az = std::fabs(n.z);
@@ -114,6 +132,34 @@ OpResult comp_edges(ShapeTree& tree, ShapeId id) {
   return finish(tree, id, std::move(result));
 }
 
+OpResult comp_face_edges(ShapeTree& tree, ShapeId id) {
+  const Shape& s = tree[id];
+  if (!s.mesh) return OpResult::failure("the shape has no edges");
+  const std::shared_ptr<const Mesh> mesh = s.mesh;
+  const Scope scope = s.scope;
+  OpResult result;
+  std::uint32_t index = 0;
+  for (std::size_t f = 0; f < mesh->face_count(); ++f) {
+    const Vec3 n = kernel::face_normal(*mesh, f);
+    const auto loop = mesh->face(f);
+    for (std::size_t i = 0; i < loop.size(); ++i, ++index) {
+      const Vec3 a = mesh->position(loop[i]);
+      const Vec3 d = mesh->position(loop[(i + 1) % loop.size()]) - a;
+      // x along the edge in loop order, y the face's normal, z out of the face in its plane.
+      const Vec3 z = cross(d, n);
+      if (length(n) < 0.5 || length(z) < 1e-12) continue;
+      Scope child = scope;
+      child.origin = scope.to_world(a);
+      child.x = scope.direction_to_world(normalized(d));
+      child.z = scope.direction_to_world(normalized(z));
+      child.y = cross(child.z, child.x);
+      child.size = {length(d), 0, 0};
+      result.add(tree.add_child(id, child), index);
+    }
+  }
+  return finish(tree, id, std::move(result));
+}
+
 OpResult comp_vertices(ShapeTree& tree, ShapeId id) {
   const Shape& s = tree[id];
   if (!s.mesh) return OpResult::failure("the shape has no vertices");
@@ -135,27 +181,31 @@ std::vector<Operation> comp_operations() {
   std::vector<Operation> ops;
   ops.push_back(
       {"comp",
-       "Splits a shape into its faces (by selector), edges or vertices (CGA comp); faces become "
-       "flat shapes with z = outward normal, edges line scopes, vertices point scopes.",
+       "Splits a shape into its faces (by selector), edges, vertices or face edges (CGA comp); "
+       "faces become flat shapes with z = outward normal, edges and face edges line scopes (a "
+       "face edge: x along the face's loop, y its normal, z out of the face), vertices point "
+       "scopes.",
        {{"type",
          ParamType::kEnum,
          "component kind",
          ArgValue{std::string("faces")},
-         {"faces", "edges", "vertices"},
+         {"faces", "edges", "vertices", "faceedges"},
          {},
          {}},
         {"select",
          ParamType::kEnum,
          "which faces (faces only)",
          ArgValue{std::string("all")},
-         {"front", "back", "left", "right", "top", "bottom", "side", "all"},
+         {"front", "back", "left", "right", "top", "bottom", "side", "all", "vertical",
+          "horizontal", "aslant", "nutant"},
          {},
          {}}},
        [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
          const std::string& type = a.string("type");
          if (type == "edges") return comp_edges(t, id);
          if (type == "vertices") return comp_vertices(t, id);
-         static constexpr std::array<std::pair<std::string_view, FaceSelector>, 8> kSelectors = {{
+         if (type == "faceedges") return comp_face_edges(t, id);
+         static constexpr std::array<std::pair<std::string_view, FaceSelector>, 12> kSelectors = {{
              {"front", FaceSelector::kFront},
              {"back", FaceSelector::kBack},
              {"left", FaceSelector::kLeft},
@@ -164,6 +214,10 @@ std::vector<Operation> comp_operations() {
              {"bottom", FaceSelector::kBottom},
              {"side", FaceSelector::kSide},
              {"all", FaceSelector::kAll},
+             {"vertical", FaceSelector::kVertical},
+             {"horizontal", FaceSelector::kHorizontal},
+             {"aslant", FaceSelector::kAslant},
+             {"nutant", FaceSelector::kNutant},
          }};
          FaceSelector selector = FaceSelector::kAll;
          for (const auto& [name, value] : kSelectors) {

@@ -11,10 +11,8 @@ namespace insula::shape {
 using kernel::Polygon;
 using kernel::Vec2;
 
-namespace {
-
-void add_region(ShapeTree& tree, ShapeId id, const Polygon& region, std::uint32_t piece,
-                OpResult& result) {
+void add_flat_region(ShapeTree& tree, ShapeId id, const Polygon& region, std::uint32_t piece,
+                     OpResult& result) {
   const Shape& s = tree[id];
   const kernel::Bounds2 b = kernel::bounds(region);
   auto outline = std::make_shared<Polygon>(region);
@@ -28,24 +26,24 @@ void add_region(ShapeTree& tree, ShapeId id, const Polygon& region, std::uint32_
   result.add(tree.add_child(id, scope, std::move(mesh), std::move(outline)), piece);
 }
 
+namespace {
+
 std::string boolean_error(kernel::BooleanStatus status) {
   return "2D boolean failed: " + std::string(kernel::to_string(status));
 }
 
-bool edge_selected(EdgeSelector selector, Vec2 outward) {
-  if (selector == EdgeSelector::kAll) return true;
-  const bool along_y = std::fabs(outward.y) >= std::fabs(outward.x);
-  if (along_y) {
-    return (selector == EdgeSelector::kFront && outward.y < 0) ||
-           (selector == EdgeSelector::kBack && outward.y > 0);
+// The strip depth of an edge by its outward direction in scope xy: the direction closest to -y
+// is front, +y back, -x left, +x right (ties go to front and back).
+double depth_of(const EdgeDepths& depths, Vec2 outward) {
+  if (std::fabs(outward.y) >= std::fabs(outward.x)) {
+    return outward.y < 0 ? depths.front : depths.back;
   }
-  return selector == EdgeSelector::kSide || (selector == EdgeSelector::kLeft && outward.x < 0) ||
-         (selector == EdgeSelector::kRight && outward.x > 0);
+  return outward.x < 0 ? depths.left : depths.right;
 }
 
-// Quads reaching `distance` inward from every selected edge. The region lies left of every edge
-// (outer ring counter-clockwise, holes clockwise), so inward is the left normal.
-std::vector<Polygon> edge_strips(const Polygon& outline, double distance, EdgeSelector selector) {
+// Quads reaching inward from every edge by its depth (none where it is 0). The region lies left
+// of every edge (outer ring counter-clockwise, holes clockwise), so inward is the left normal.
+std::vector<Polygon> edge_strips(const Polygon& outline, const EdgeDepths& depths) {
   std::vector<Polygon> strips;
   const auto add_ring = [&](const kernel::Ring& ring) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
@@ -54,8 +52,9 @@ std::vector<Polygon> edge_strips(const Polygon& outline, double distance, EdgeSe
       const Vec2 d = kernel::normalized(b - a);
       if (kernel::length(d) == 0) continue;
       const Vec2 inward = kernel::perp(d);
-      if (!edge_selected(selector, -inward)) continue;
-      strips.push_back({{a, b, b + inward * distance, a + inward * distance}, {}});
+      const double depth = depth_of(depths, -inward);
+      if (!(depth > 0)) continue;
+      strips.push_back({{a, b, b + inward * depth, a + inward * depth}, {}});
     }
   };
   add_ring(outline.outer);
@@ -78,30 +77,65 @@ OpResult offset(ShapeTree& tree, ShapeId id, double distance, OffsetPart part) {
   if (!border.ok()) return OpResult::failure(boolean_error(border.status));
   OpResult result;
   if (part != OffsetPart::kBorder) {
-    for (const Polygon& p : inside.polygons) add_region(tree, id, p, 0, result);
+    for (const Polygon& p : inside.polygons) add_flat_region(tree, id, p, 0, result);
   }
   if (part != OffsetPart::kInside) {
-    for (const Polygon& p : border.polygons) add_region(tree, id, p, 1, result);
+    for (const Polygon& p : border.polygons) add_flat_region(tree, id, p, 1, result);
   }
   return finish(tree, id, std::move(result));
 }
 
 OpResult setback(ShapeTree& tree, ShapeId id, double distance, EdgeSelector edges) {
-  const Shape& s = tree[id];
-  if (!s.is_flat()) return OpResult::failure("needs a flat shape (a footprint or a face)");
+  if (!tree[id].is_flat()) return OpResult::failure("needs a flat shape (a footprint or a face)");
   if (!(distance > 0) || !std::isfinite(distance)) {
     return OpResult::failure("distance must be > 0");
   }
+  const bool all = edges == EdgeSelector::kAll;
+  const bool side = all || edges == EdgeSelector::kSide;
+  EdgeDepths depths;
+  depths.front = all || edges == EdgeSelector::kFront ? distance : 0;
+  depths.back = all || edges == EdgeSelector::kBack ? distance : 0;
+  depths.left = side || edges == EdgeSelector::kLeft ? distance : 0;
+  depths.right = side || edges == EdgeSelector::kRight ? distance : 0;
+  return setback(tree, id, depths, SetbackPart::kAll);
+}
+
+OpResult setback(ShapeTree& tree, ShapeId id, const EdgeDepths& depths, SetbackPart part) {
+  const Shape& s = tree[id];
+  if (!s.is_flat()) return OpResult::failure("needs a flat shape (a footprint or a face)");
+  for (double d : {depths.front, depths.back, depths.left, depths.right}) {
+    if (!(d >= 0) || !std::isfinite(d)) return OpResult::failure("depths must be finite and >= 0");
+  }
   const std::vector<Polygon> original{*s.outline};
-  const std::vector<Polygon> strips = edge_strips(*s.outline, distance, edges);
+  const std::vector<Polygon> strips = edge_strips(*s.outline, depths);
   const kernel::BooleanResult band = kernel::intersect(original, strips);
   const kernel::BooleanResult rest = kernel::subtract(original, strips);
   if (!band.ok()) return OpResult::failure(boolean_error(band.status));
   if (!rest.ok()) return OpResult::failure(boolean_error(rest.status));
   OpResult result;
-  for (const Polygon& p : band.polygons) add_region(tree, id, p, 0, result);
-  for (const Polygon& p : rest.polygons) add_region(tree, id, p, 1, result);
+  if (part != SetbackPart::kRemainder) {
+    for (const Polygon& p : band.polygons) add_flat_region(tree, id, p, 0, result);
+  }
+  if (part != SetbackPart::kShape) {
+    for (const Polygon& p : rest.polygons) add_flat_region(tree, id, p, 1, result);
+  }
   return finish(tree, id, std::move(result));
+}
+
+ParamDecl part_param() {
+  return {"part",
+          ParamType::kEnum,
+          "which parts to keep",
+          ArgValue{std::string("all")},
+          {"shape", "remainder", "all"},
+          {},
+          {}};
+}
+
+SetbackPart part_from(std::string_view name) {
+  if (name == "shape") return SetbackPart::kShape;
+  if (name == "remainder") return SetbackPart::kRemainder;
+  return SetbackPart::kAll;
 }
 
 std::vector<Operation> offset_operations() {
@@ -151,6 +185,48 @@ std::vector<Operation> offset_operations() {
          }
          return setback(t, id, a.number("distance"), edges);
        }});
+  // CityEngine's L, U and O shapes: setbacks of the front and the named sides, in its order.
+  struct Band {
+    const char* name;
+    const char* doc;
+    std::vector<std::string> sides;
+  };
+  const Band bands[] = {
+      {"shapeL",
+       "An L along the front and left edges of a flat shape (CGA shapeL)",
+       {"front", "left"}},
+      {"shapeU",
+       "A U along the front, right and left edges of a flat shape (CGA shapeU)",
+       {"front", "right", "left"}},
+      {"shapeO",
+       "An O along every edge of a flat shape, front, right, back, left (CGA shapeO)",
+       {"front", "right", "back", "left"}}};
+  for (const Band& band : bands) {
+    Operation op{band.name,
+                 std::string(band.doc) +
+                     ": strips as deep as given along the edges facing each side (as setback "
+                     "classifies them), clipped to the shape; children the band (piece 0) and "
+                     "the remainder (piece 1).",
+                 {},
+                 {}};
+    for (const std::string& side : band.sides) {
+      op.params.push_back({side + "Width",
+                           ParamType::kNumber,
+                           "strip depth along the " + side + " edges (meters, 0: none)",
+                           std::nullopt,
+                           {},
+                           0.0,
+                           {}});
+    }
+    op.params.push_back(part_param());
+    op.execute = [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+      const auto width = [&](const char* name) { return a.has(name) ? a.number(name) : 0.0; };
+      EdgeDepths depths{width("frontWidth"), width("backWidth"), width("leftWidth"),
+                        width("rightWidth")};
+      return setback(t, id, depths, part_from(a.string("part")));
+    };
+    ops.push_back(std::move(op));
+  }
   return ops;
 }
 

@@ -190,6 +190,65 @@ Axis axis_of(const Arguments& a) {
 
 }  // namespace
 
+namespace {
+
+// The signed area of `ring` clipped to coordinate `axis` (0: x, 1: y) below `t`
+// (Sutherland-Hodgman against one half-plane: exact for any ring, degenerate edges add nothing).
+double area_below(const kernel::Ring& ring, int axis, double t) {
+  const auto c = [axis](kernel::Vec2 p) { return axis == 0 ? p.x : p.y; };
+  kernel::Ring out;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const kernel::Vec2 a = ring[i];
+    const kernel::Vec2 b = ring[(i + 1) % ring.size()];
+    const bool ina = c(a) <= t;
+    const bool inb = c(b) <= t;
+    if (ina) out.push_back(a);
+    if (ina != inb) out.push_back(a + (b - a) * ((t - c(a)) / (c(b) - c(a))));
+  }
+  return out.size() < 3 ? 0 : kernel::signed_area(out);
+}
+
+double area_below(const kernel::Polygon& polygon, int axis, double t) {
+  double area = area_below(polygon.outer, axis, t);
+  for (const kernel::Ring& hole : polygon.holes) area += area_below(hole, axis, t);
+  return area;
+}
+
+}  // namespace
+
+OpResult split_area(ShapeTree& tree, ShapeId id, Axis axis, std::span<const SizeSpec> sizes) {
+  const Shape& s = tree[id];
+  if (!s.is_flat()) return OpResult::failure("needs a flat shape (a footprint or a face)");
+  if (axis == Axis::kZ) return OpResult::failure("a flat shape splits along x or y only");
+  const int k = axis == Axis::kX ? 0 : 1;
+  const double extent = s.scope.extent(axis);
+  const double total = area_below(*s.outline, k, extent + 1);
+  if (!(total > 0)) return OpResult::failure("the shape has no area");
+  // Pieces in area units, then each boundary where the area left of it reaches the running sum.
+  const std::vector<Piece> pieces = resolve_sizes(total, sizes);
+  if (pieces.empty()) return finish(tree, id, {});
+  std::vector<SizeSpec> lengths;
+  double previous = 0;
+  for (const Piece& p : pieces) {
+    const double target = p.start + p.size;
+    double lo = previous;
+    double hi = extent;
+    if (target >= total * (1 - 1e-12)) {
+      lo = hi;
+    } else {
+      for (int it = 0; it < 64; ++it) {
+        const double mid = (lo + hi) / 2;
+        (area_below(*s.outline, k, mid) < target ? lo : hi) = mid;
+      }
+    }
+    lengths.push_back({lo - previous, SizeMode::kAbsolute});
+    previous = lo;
+  }
+  OpResult r = split(tree, id, axis, lengths);
+  for (std::uint32_t& piece : r.pieces) piece = pieces[piece].entry;  // length i is area piece i
+  return r;
+}
+
 std::vector<Operation> split_operations() {
   std::vector<Operation> ops;
   ops.push_back(
@@ -200,6 +259,15 @@ std::vector<Operation> split_operations() {
         {"sizes", ParamType::kSizeList, "piece sizes along the axis", std::nullopt, {}, 0.0, {}}},
        [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
          return split(t, id, axis_of(a), a.sizes("sizes"));
+       }});
+  ops.push_back(
+      {"splitArea",
+       "Splits a flat shape along a scope axis into pieces of the given areas: absolute (m²), "
+       "relative ('r: a share of the area) and floating (~) (CGA splitArea); piece i of the "
+       "result is size entry pieces[i].",
+       {axis_param(), {"sizes", ParamType::kSizeList, "piece areas", std::nullopt, {}, 0.0, {}}},
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+         return split_area(t, id, axis_of(a), a.sizes("sizes"));
        }});
   ops.push_back(
       {"repeat",

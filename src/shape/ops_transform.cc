@@ -2,6 +2,7 @@
 // shares its parent's geometry (or a stretched copy for scale), so the parent stays queryable.
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include "shape/ops.h"
 
@@ -11,18 +12,6 @@ using kernel::Mesh;
 using kernel::Vec3;
 
 namespace {
-
-// A child with the parent's labels, a new scope and the given geometry.
-OpResult moved(ShapeTree& tree, ShapeId id, const Scope& scope, std::shared_ptr<const Mesh> mesh,
-               std::shared_ptr<const kernel::Polygon> outline) {
-  const ShapeId child = tree.add_child(id, scope, std::move(mesh), std::move(outline));
-  // The moved shape is the same grammar symbol: keep its labels (they are not inherited by
-  // children in general, seed 001 §3.1, but a scope rule does not make a new kind of shape).
-  tree[child].labels = tree[id].labels;
-  OpResult r;
-  r.add(child, 0);
-  return finish(tree, id, std::move(r));
-}
 
 bool finite(Vec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -39,7 +28,7 @@ OpResult translate(ShapeTree& tree, ShapeId id, Vec3 offset) {
   const Shape& s = tree[id];
   Scope scope = s.scope;
   scope.origin = scope.to_world(offset);
-  return moved(tree, id, scope, s.mesh, s.outline);
+  return relabelled_child(tree, id, scope, s.mesh, s.outline);
 }
 
 OpResult rotate(ShapeTree& tree, ShapeId id, Vec3 degrees, Pivot pivot) {
@@ -51,7 +40,7 @@ OpResult rotate(ShapeTree& tree, ShapeId id, Vec3 degrees, Pivot pivot) {
   if (degrees.x != 0) scope = rotated(scope, Axis::kX, degrees.x, p);
   if (degrees.y != 0) scope = rotated(scope, Axis::kY, degrees.y, p);
   if (degrees.z != 0) scope = rotated(scope, Axis::kZ, degrees.z, p);
-  return moved(tree, id, scope, s.mesh, s.outline);
+  return relabelled_child(tree, id, scope, s.mesh, s.outline);
 }
 
 OpResult scale(ShapeTree& tree, ShapeId id, SizeSpec x, SizeSpec y, SizeSpec z) {
@@ -86,7 +75,7 @@ OpResult scale(ShapeTree& tree, ShapeId id, SizeSpec x, SizeSpec y, SizeSpec z) 
       outline = std::move(o);
     }
   }
-  return moved(tree, id, scope, std::move(mesh), std::move(outline));
+  return relabelled_child(tree, id, scope, std::move(mesh), std::move(outline));
 }
 
 OpResult center(ShapeTree& tree, ShapeId id, std::string_view axes) {
@@ -100,13 +89,35 @@ OpResult center(ShapeTree& tree, ShapeId id, std::string_view axes) {
   }
   Scope scope = s.scope;
   scope.origin = scope.to_world(shift);
-  return moved(tree, id, scope, s.mesh, s.outline);
+  return relabelled_child(tree, id, scope, s.mesh, s.outline);
 }
 
 namespace {
 
 ParamDecl number_param(std::string name, std::string doc, double fallback) {
   return {std::move(name), ParamType::kNumber, std::move(doc), ArgValue{fallback}, {}, {}, {}};
+}
+
+// CityEngine's translate(mode, frame, ...) and rotate(mode, frame, ...).
+ParamDecl mode_param(std::string_view what) {
+  return {"mode",
+          ParamType::kEnum,
+          "rel adds to the " + std::string(what) + ", abs sets it in the frame",
+          ArgValue{std::string("rel")},
+          {"rel", "abs"},
+          {},
+          {}};
+}
+
+ParamDecl frame_param() {
+  return {"frame",
+          ParamType::kEnum,
+          "axes the values are in: the scope's (pivot: the same in Insula), the root shape's "
+          "(object) or the world's (x east, y up, z south)",
+          ArgValue{std::string("scope")},
+          {"scope", "pivot", "object", "world"},
+          {},
+          {}};
 }
 
 ParamDecl size_param(std::string name, std::string doc) {
@@ -127,9 +138,13 @@ std::vector<Operation> transform_operations() {
       {"translate",
        "Moves the scope along its own axes (CGA T); the child shares the geometry.",
        {number_param("x", "meters along scope x", 0), number_param("y", "meters along scope y", 0),
-        number_param("z", "meters along scope z", 0)},
-       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
-         return translate(t, id, {a.number("x"), a.number("y"), a.number("z")});
+        number_param("z", "meters along scope z", 0), mode_param("translation"), frame_param()},
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context& context) {
+         const Vec3 v{a.number("x"), a.number("y"), a.number("z")};
+         const Frame frame = frame_from(a.string("frame"));
+         const bool absolute = a.string("mode") == "abs";
+         if (!absolute && frame == Frame::kScope) return translate(t, id, v);
+         return translate_in(t, id, absolute, frame, v, context.object);
        }});
   ops.push_back(
       {"rotate",
@@ -143,10 +158,20 @@ std::vector<Operation> transform_operations() {
          ArgValue{std::string("origin")},
          {"origin", "center"},
          {},
-         {}}},
-       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
-         return rotate(t, id, {a.number("x"), a.number("y"), a.number("z")},
-                       a.string("pivot") == "center" ? Pivot::kCenter : Pivot::kOrigin);
+         {}},
+        mode_param("rotation"),
+        frame_param()},
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context& context) {
+         const Vec3 v{a.number("x"), a.number("y"), a.number("z")};
+         const Frame frame = frame_from(a.string("frame"));
+         const bool absolute = a.string("mode") == "abs";
+         if (absolute || frame != Frame::kScope) {
+           if (a.string("pivot") == "center") {
+             return OpResult::failure("pivot center needs mode rel in the scope frame");
+           }
+           return rotate_in(t, id, absolute, frame, v, context.object);
+         }
+         return rotate(t, id, v, a.string("pivot") == "center" ? Pivot::kCenter : Pivot::kOrigin);
        }});
   ops.push_back({"scale",
                  "Sets the scope size (CGA S): meters, or relative ('r) to the current size; "

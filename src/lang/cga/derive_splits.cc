@@ -20,6 +20,10 @@ shape::FaceSelector face_selector(std::string_view name) {
   if (name == "top") return shape::FaceSelector::kTop;
   if (name == "bottom") return shape::FaceSelector::kBottom;
   if (name == "side") return shape::FaceSelector::kSide;
+  if (name == "vertical") return shape::FaceSelector::kVertical;
+  if (name == "horizontal") return shape::FaceSelector::kHorizontal;
+  if (name == "aslant") return shape::FaceSelector::kAslant;
+  if (name == "nutant") return shape::FaceSelector::kNutant;
   return shape::FaceSelector::kAll;
 }
 

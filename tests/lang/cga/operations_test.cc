@@ -31,7 +31,7 @@ TEST(CgaOperations, SignaturesFollowTheRegistry) {
   EXPECT_EQ(sig("roofHip"), "n|nn|nnn|nnnb|nnnbn");  // then height, closed, thickness
   EXPECT_EQ(sig("roofMansard"), "n|nn|nnn|nnnn|nnnnn|nnnnnb|nnnnnbn");
   EXPECT_EQ(sig("roofFlat"), "|n|nn|nnn|nnnb");  // overhang, thickness (as .bldg Flat)
-  EXPECT_EQ(sig("primitiveCube"), "");
+  EXPECT_EQ(sig("primitiveCube"), "|n|nn|nnn");  // width, height, depth (0: fill the scope)
   EXPECT_EQ(sig("color"), "s|nnn|nnnn");
   // A registry operation under its own name: every parameter, the required ones first.
   EXPECT_EQ(sig("roof"), "|s|sn|snn|snnn|snnnn|snnnnn|snnnnnb|snnnnnbn");
@@ -65,7 +65,10 @@ TEST(CgaOperations, ArgumentsMapOntoRegistryParameters) {
 TEST(CgaOperations, SelectorsAreTheRegistryChoices) {
   using V = std::vector<std::string>;
   EXPECT_EQ(find_operation("comp")->selectors,
-            (V{"front", "back", "left", "right", "top", "bottom", "side", "all"}));
+            (V{"front", "back", "left", "right", "top", "bottom", "side", "all", "vertical",
+               "horizontal", "aslant", "nutant"}));
+  EXPECT_EQ(find_operation("shapeU")->selectors, (V{"shape", "remainder"}));
+  EXPECT_TRUE(find_operation("innerRectangle")->selectors_are_pieces);
   EXPECT_EQ(find_operation("setback")->selectors,
             (V{"front", "back", "left", "right", "side", "all", "street", "remainder"}));
   EXPECT_EQ(find_operation("offset")->selectors, (V{"inside", "border"}));

@@ -1,0 +1,248 @@
+// CityEngine's scope and footprint operations spelled in CGA (docs/operations-cityengine.md): one
+// derivation per operation, asserting the terminals' scopes and areas.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include "derive_util.h"
+#include "kernel/mesh.h"
+
+namespace insula::lang::cga {
+namespace {
+
+using kernel::Vec3;
+using testing::compile_text;
+using testing::derive_all;
+using testing::diagnostics_text;
+using testing::rectangle_lot;
+using testing::symbol_count;
+
+void expect_near(Vec3 a, Vec3 b, double tolerance = 1e-9) {
+  EXPECT_NEAR(a.x, b.x, tolerance);
+  EXPECT_NEAR(a.y, b.y, tolerance);
+  EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+Lot polygon_lot(std::vector<kernel::Vec2> ring) {
+  Lot lot;
+  lot.id = "lot";
+  lot.polygons.push_back({std::move(ring), {}});
+  return lot;
+}
+
+// A w x d lot turned 30 degrees about world Z.
+Lot turned_lot(double w, double d) {
+  const double c = std::cos(std::numbers::pi / 6);
+  const double s = std::sin(std::numbers::pi / 6);
+  return polygon_lot({{0, 0}, {w * c, w * s}, {w * c - d * s, w * s + d * c}, {-d * s, d * c}});
+}
+
+// Derives `text` on `lot` and returns the single lot's result (failures fail the test).
+LotResult derive_one(const std::string& text, const Lot& lot) {
+  auto p = compile_text(text);
+  if (!p) return {};
+  auto r = derive_all(*p, {lot});
+  EXPECT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  return std::move(r[0]);
+}
+
+// The area of a flat terminal: its outline's, or its scope's for a rectangle.
+double flat_area(const LotResult& r, const Terminal& t) {
+  const Geometry& g = r.geometry[t.geometry];
+  if (g.kind == Geometry::Kind::kMesh && g.outline) return kernel::area(*g.outline);
+  return t.scope.size.x * t.scope.size.y;
+}
+
+TEST(CityEngineOps, AlignScopeToAxesTurnsTheMassToTheWorld) {
+  const LotResult r = derive_one("Lot --> extrude(10) alignScopeToAxes() A\n", turned_lot(20, 5));
+  ASSERT_EQ(r.terminals_store.size(), 1U);
+  const shape::Scope& s = r.terminals_store[0].scope;
+  expect_near(s.x, {1, 0, 0});
+  expect_near(s.y, {0, 0, 1});
+  EXPECT_NEAR(s.size.y, 10, 1e-9);
+  const double c = std::cos(std::numbers::pi / 6);
+  EXPECT_NEAR(s.size.x, 20 * c + 5 * 0.5, 1e-9);
+  // One axis: y stays up and x keeps the lot's direction.
+  const LotResult y = derive_one("Lot --> extrude(10) alignScopeToAxes(y) A\n", turned_lot(20, 5));
+  expect_near(y.terminals_store[0].scope.x, {c, 0.5, 0});
+  EXPECT_NEAR(y.terminals_store[0].scope.size.x, 20, 1e-9);
+}
+
+TEST(CityEngineOps, AlignScopeToGeometryTakesTheLongestEdge) {
+  const LotResult r =
+      derive_one("Lot --> alignScopeToGeometry(yUp, 0, \"longest\") A\n", rectangle_lot(2, 10));
+  ASSERT_EQ(r.terminals_store.size(), 1U);
+  expect_near(r.terminals_store[0].scope.size, {10, 2, 0}, 1e-9);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[0]), 20, 1e-9);
+  // A face index the mass does not have is an error at derivation time.
+  auto p = compile_text("Lot --> extrude(3) alignScopeToGeometry(yUp, 9) A\n");
+  ASSERT_TRUE(p);
+  const auto bad = derive_all(*p, {rectangle_lot(2, 10)});
+  EXPECT_NE(diagnostics_text(bad[0]).find(
+                "alignScopeToGeometry: face index 9 is out of range (the shape has 6 faces)"),
+            std::string::npos)
+      << diagnostics_text(bad[0]);
+}
+
+TEST(CityEngineOps, RotateScopeRefitsAroundTheUnmovedMass) {
+  const LotResult r =
+      derive_one("Lot --> extrude(10) rotateScope(0, 45, 0) A\n", rectangle_lot(10, 10));
+  const shape::Scope& s = r.terminals_store[0].scope;
+  EXPECT_NEAR(s.size.x, 10 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(s.size.y, 10, 1e-9);
+  EXPECT_NEAR(s.volume(), 2000, 1e-6);
+}
+
+TEST(CityEngineOps, SetPivotMovesTheOriginToACorner) {
+  const LotResult r = derive_one("Lot --> extrude(3) setPivot(xyz, 1) A\n", rectangle_lot(2, 4));
+  const shape::Scope& s = r.terminals_store[0].scope;
+  // The mass scope is 2 x 3 x 4; corner 1 is far along x, so x and z trade places.
+  expect_near(s.size, {4, 3, 2}, 1e-9);
+  // The mass's z points from the lot's back edge (y = 4) to its front: the origin is at y = 4.
+  expect_near(s.origin, {2, 4, 0}, 1e-9);
+}
+
+TEST(CityEngineOps, MirrorKeepsTheScope) {
+  const LotResult r = derive_one("Lot --> extrude(2) mirror(true, false, false) A\n",
+                                 polygon_lot({{0, 0}, {4, 0}, {0, 2}}));
+  const Terminal& t = r.terminals_store[0];
+  expect_near(t.scope.size, {4, 2, 2}, 1e-9);
+  const Geometry& g = r.geometry[t.geometry];
+  ASSERT_TRUE(g.mesh);
+  EXPECT_NEAR(kernel::volume(*g.mesh), 8, 1e-9);
+  EXPECT_TRUE(kernel::is_watertight(*g.mesh));
+}
+
+TEST(CityEngineOps, TranslateAndRotateInTheWorldFrame) {
+  const LotResult base = derive_one("Lot --> extrude(5) A\n", turned_lot(8, 4));
+  const LotResult t =
+      derive_one("Lot --> extrude(5) translate(rel, world, 0, 3, 0) A\n", turned_lot(8, 4));
+  expect_near(t.terminals_store[0].scope.origin,
+              base.terminals_store[0].scope.origin + Vec3{0, 0, 3}, 1e-9);
+  const LotResult a =
+      derive_one("Lot --> extrude(5) translate(abs, world, 1, 2, 3) A\n", rectangle_lot(8, 4));
+  expect_near(a.terminals_store[0].scope.origin, {1, -3, 2}, 1e-9);
+  const LotResult r =
+      derive_one("Lot --> extrude(5) rotate(rel, world, 0, 90, 0) A\n", rectangle_lot(8, 4));
+  expect_near(r.terminals_store[0].scope.x, {0, 1, 0});
+  expect_near(r.terminals_store[0].scope.y, {0, 0, 1});
+}
+
+TEST(CityEngineOps, ShapeLUOSplitALotIntoBandAndRemainder) {
+  const std::string rules = R"(
+Lot --> shapeL(3, 2){ shape: A | remainder: B }
+)";
+  auto p = compile_text(rules);
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 8)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(symbol_count(*p, r[0], "A"), 1U);
+  EXPECT_EQ(symbol_count(*p, r[0], "B"), 1U);
+  ASSERT_EQ(r[0].terminals_store.size(), 2U);
+  EXPECT_NEAR(flat_area(r[0], r[0].terminals_store[0]), 40, 1e-9);
+  EXPECT_NEAR(flat_area(r[0], r[0].terminals_store[1]), 40, 1e-9);
+
+  const LotResult u =
+      derive_one("Lot --> shapeU(3, 1, 2){ shape: A | remainder: B }\n", rectangle_lot(10, 8));
+  ASSERT_EQ(u.terminals_store.size(), 2U);
+  EXPECT_NEAR(flat_area(u, u.terminals_store[0]), 45, 1e-9);
+  expect_near(u.terminals_store[1].scope.size, {7, 5, 0}, 1e-9);
+
+  const LotResult o =
+      derive_one("Lot --> shapeO(1, 1, 1, 1){ shape: A | remainder: NIL }\n", rectangle_lot(10, 8));
+  ASSERT_EQ(o.terminals_store.size(), 1U);
+  EXPECT_NEAR(flat_area(o, o.terminals_store[0]), 32, 1e-9);
+}
+
+TEST(CityEngineOps, InnerRectangleOfAnLShapedLot) {
+  const LotResult r =
+      derive_one("Lot --> innerRectangle(scope){ shape: Court | remainder: Rest }\n",
+                 polygon_lot({{0, 0}, {10, 0}, {10, 5}, {4, 5}, {4, 10}, {0, 10}}));
+  ASSERT_EQ(r.terminals_store.size(), 2U);
+  expect_near(r.terminals_store[0].scope.size, {10, 5, 0}, 1e-9);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[1]), 20, 1e-9);
+}
+
+TEST(CityEngineOps, CleanupGeometryDropsCollinearVerticesAndKeepsTaggedEdges) {
+  const Lot lot = polygon_lot({{0, 0}, {5, 0}, {10, 0}, {10, 6}, {0, 6}});
+  const LotResult flat = derive_one("Lot --> cleanupGeometry(all, 0) A\n", lot);
+  const Geometry& f = flat.geometry[flat.terminals_store[0].geometry];
+  ASSERT_TRUE(f.mesh);
+  EXPECT_EQ(f.mesh->vertex_count(), 4U);  // the collinear corner at (5, 0) is gone
+  EXPECT_NEAR(kernel::surface_area(*f.mesh), 60, 1e-9);
+  // The extruded lot's two front walls are separate faces (ids per lot edge): as CityEngine,
+  // cleanup keeps the edge between them, and the solid stays closed.
+  const LotResult mass = derive_one("Lot --> extrude(4) cleanupGeometry(all, 0.1) A\n", lot);
+  const Geometry& g = mass.geometry[mass.terminals_store[0].geometry];
+  ASSERT_TRUE(g.mesh);
+  EXPECT_EQ(g.mesh->face_count(), 7U);
+  EXPECT_TRUE(kernel::is_watertight(*g.mesh));
+  EXPECT_NEAR(kernel::volume(*g.mesh), 240, 1e-9);
+}
+
+TEST(CityEngineOps, PrimitivesReplaceTheGeometry) {
+  const LotResult r = derive_one(
+      "Lot --> split(x){ 4: primitiveCube() A | 4: primitiveCylinder(8, 1, 2) B | 4: "
+      "primitiveQuad(2, 2) C }\n",
+      rectangle_lot(12, 4));
+  ASSERT_EQ(r.terminals_store.size(), 3U);
+  const Terminal& a = r.terminals_store[0];
+  expect_near(a.scope.size, {4, 4, 4}, 1e-9);
+  EXPECT_NEAR(kernel::volume(*r.geometry[a.geometry].mesh), 64, 1e-9);
+  const Terminal& b = r.terminals_store[1];
+  EXPECT_NEAR(kernel::volume(*r.geometry[b.geometry].mesh), 8 * std::sin(std::numbers::pi / 4),
+              1e-9);
+  const Terminal& c = r.terminals_store[2];
+  expect_near(c.scope.size, {2, 2, 0}, 1e-9);
+  expect_near(c.scope.origin, {9, 1, 0}, 1e-9);
+}
+
+TEST(CityEngineOps, CompSlopeSelectors) {
+  auto p = compile_text(R"(
+Lot --> extrude(4) comp(f){ horizontal: H | vertical: V }
+H --> roofHip(30) comp(f){ aslant: S | nutant: N | horizontal: B }
+)");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 6)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(symbol_count(*p, r[0], "H"), 2U);  // top and bottom
+  EXPECT_EQ(symbol_count(*p, r[0], "V"), 4U);
+  // Each hip roof's four slopes face up at 30 degrees: aslant.
+  EXPECT_EQ(symbol_count(*p, r[0], "S"), 8U);
+  EXPECT_EQ(symbol_count(*p, r[0], "N"), 0U);
+}
+
+TEST(CityEngineOps, SplitAreaInItsPositionalForm) {
+  // CityEngine's keyed block (`splitArea(x){ 10: A | ~1: B }`) is the reader's; the registry's
+  // positional form runs today.
+  const LotResult r = derive_one("Lot --> splitArea(x, 10, ~1) A\n", rectangle_lot(10, 4));
+  ASSERT_EQ(r.terminals_store.size(), 2U);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[0]), 10, 1e-9);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[1]), 30, 1e-9);
+}
+
+TEST(CityEngineOps, ConvexifyAndTrim) {
+  auto p = compile_text("Lot --> convexify() extrude(3) trim() A\n");
+  ASSERT_TRUE(p);
+  const auto r =
+      derive_all(*p, {polygon_lot({{0, 0}, {10, 0}, {10, 5}, {4, 5}, {4, 10}, {0, 10}})});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(symbol_count(*p, r[0], "A"), 2U);
+  double volume = 0;
+  for (std::size_t i = 0; i < r[0].terminals_store.size(); ++i) {
+    const Geometry& g = r[0].geometry[r[0].terminals_store[i].geometry];
+    ASSERT_TRUE(g.mesh);
+    EXPECT_TRUE(kernel::is_watertight(*g.mesh));
+    volume += kernel::volume(*g.mesh);
+  }
+  EXPECT_NEAR(volume, 210, 1e-9);
+  EXPECT_NE(diagnostics_text(r[0]).find(
+                "trim: trim planes are not made in Insula: trim() leaves the shape unchanged"),
+            std::string::npos)
+      << diagnostics_text(r[0]);
+}
+
+}  // namespace
+}  // namespace insula::lang::cga
