@@ -71,6 +71,12 @@ bool takes_word(const OperationInfo& info) {
   return info.op != nullptr;
 }
 
+// An enum parameter that also takes a whole number (shape::kIndexChoice).
+bool takes_index(const shape::ParamDecl* p) {
+  return p != nullptr &&
+         std::find(p->choices.begin(), p->choices.end(), shape::kIndexChoice) != p->choices.end();
+}
+
 // ε, or CityEngine's `nil()`.
 bool is_empty_shape(const Item& item) {
   return item.kind == ItemKind::kEmpty || (item.kind == ItemKind::kOp && item.name == "nil");
@@ -291,6 +297,9 @@ void Checker::check_arguments(const Item& item, const OperationInfo& info) {
         }
         break;
       case 's':
+        if (arg.kind == ExprKind::kNumber && takes_index(info.param_of(i))) {
+          break;  // a face or edge index where a word may stand (alignScopeToGeometry)
+        }
         if (arg.kind == ExprKind::kNumber || arg.kind == ExprKind::kBool ||
             (arg.kind == ExprKind::kUnary && fold(arg))) {
           error("CGA320", which + " must be a string", arg.range);

@@ -610,6 +610,12 @@ class Compiler {
         continue;
       }
       const std::string* w = word_of(a);
+      // CityEngine's dotted words (alignScopeToGeometry(yUp, 0, world.lowest)).
+      const std::string dotted = a.kind == ExprKind::kMember ? dotted_name(a) : std::string();
+      if (w == nullptr && p != nullptr && p->type == shape::ParamType::kEnum &&
+          std::find(p->choices.begin(), p->choices.end(), lower(dotted)) != p->choices.end()) {
+        w = &dotted;
+      }
       const bool word = w != nullptr && (a.kind == ExprKind::kString || attr_index(*w) == kNoExpr);
       if (!word || p == nullptr ||
           (p->type != shape::ParamType::kString && p->type != shape::ParamType::kEnum)) {

@@ -650,9 +650,16 @@ void Engine::print(const CItem& c, State& st) {
 
 void Engine::report(const CItem& c, State& st) {
   const std::string name = as_text(eval(c.args[0], st));
-  const double value = number(c.args[1], st);
+  const Value value = eval(c.args[1], st);
+  if (!std::holds_alternative<double>(value) && !std::holds_alternative<bool>(value)) {
+    // CityEngine reports texts too: each distinct text is counted under "name=text".
+    ReportEntry& e = out_.reports[name + "=" + as_text(value)];
+    e.sum += 1;
+    ++e.count;
+    return;
+  }
   ReportEntry& e = out_.reports[name];
-  e.sum += value;
+  e.sum += as_number(value, program_.nodes[c.args[1]].range);
   ++e.count;
 }
 

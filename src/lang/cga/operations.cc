@@ -128,7 +128,8 @@ constexpr BuiltIn kBuiltIns[] = {
     {"set", 2, 2, "iv",
      "set an attribute for this shape and its descendants (material, or an attr)"},
     {"print", 1, kUnbounded, "v+", "print the values to stderr while deriving (debugging)"},
-    {"report", 2, 2, "sn", "add a number to the report's per-name sum and count"},
+    {"report", 2, 2, "sv",
+     "add a number to the report's per-name sum and count (a text counts under \"name=text\")"},
     {"nil", 0, 0, "", "remove the shape (as epsilon)"},
 };
 

@@ -598,6 +598,11 @@ class Parser {
       }
       expect(Tok::kRParen, " to close the argument list");
       call->range.end = prev_end_;
+      if (cityengine() && at(Tok::kLBrace)) {  // comp(fe){ sel : value } as a value (2019.0)
+        fail("CGA902",
+             "CityEngine's comp() function (an array of values per component) is "
+             "not supported");
+      }
       expr = std::move(call);
     }
     return expr;

@@ -159,7 +159,7 @@ TEST(CityEngineDialect, DerivesCasesParametersFunctionsAndTerminals) {
   const auto r = derive_all(*p, {rectangle_lot(12, 10)}, options);
   ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
   // extrude 12, floors of about 3.5 m: 3 per facade, 4 facades; a hip roof.
-  EXPECT_EQ(symbol_count(*p, r[0], "Floor"), 12U);
+  EXPECT_EQ(symbol_count(*p, r[0], "Floor/1"), 12U);  // Floor(i): one parameter
   EXPECT_EQ(symbol_count(*p, r[0], "RoofTiles"), 1U);
   EXPECT_EQ(symbol_count(*p, r[0], "RoofFlat"), 0U);
   // Each tile is a Window (30%) or a Wall; every Window ends in Glass.
