@@ -449,7 +449,9 @@ class Compiler {
       return c;
     }
     c.has_block = item.has_block;
-    if (!signature_accepts(c.info->signature, item.args.size())) {
+    const bool pivoted_rotation =  // CityEngine's r(scopeCenter, x, y, z)
+        item.args.size() == 4 && c.info->registry_op == "rotate" && pivot_word(*item.args[0]);
+    if (!pivoted_rotation && !signature_accepts(c.info->signature, item.args.size())) {
       error("CGA504",
             "'" + item.name + "' cannot take " + std::to_string(item.args.size()) + " argument" +
                 (item.args.size() == 1 ? "" : "s"),
