@@ -189,9 +189,8 @@ void Checker::check_member(const Expr& expr) {
 void Checker::check_call(const Expr& expr) {
   if (check_user_call(expr)) return;
   const Expr& callee = *expr.operands[0];
-  if (cityengine() && callee.kind == ExprKind::kMember && dotted_name(callee) ==
-                                                              "geometry." + callee.text &&
-      is_geometry_function(callee.text)) {
+  if (cityengine() && callee.kind == ExprKind::kMember &&
+      dotted_name(callee) == "geometry." + callee.text && is_geometry_function(callee.text)) {
     if (expr.operands.size() > 1) {
       error("CGA902",
             "CityEngine function 'geometry." + callee.text +
