@@ -86,6 +86,20 @@ floors=$(json "$tmp/town.json" 'd["symbols"].get("Floor", 0)')
 # lot 2 (10 x 8, 6 m): 3 sides x 2 floors + front upper 3 m x 1 floor = 7.
 [ "$floors" = 18 ] || fail "floors: $floors ($(json "$tmp/town.json" 'd["symbols"]'))"
 
+# --set is checked against @Range and @Enum.
+"$insula" build "$ws/Town/rules/town.cga" --set height=12 --set roofKind=gable -q >/dev/null 2>&1 ||
+  fail "--set inside @Range/@Enum refused"
+if "$insula" build "$ws/Town/rules/town.cga" --set height=50 -q 2>"$tmp/set_err" >/dev/null; then
+  fail "--set height=50 outside @Range(3, 40) accepted"
+fi
+grep -q "town.cga: error: --set height=50: outside @Range 3 .. 40" "$tmp/set_err" ||
+  fail "@Range message: $(cat "$tmp/set_err")"
+if "$insula" build "$ws/Town/rules/town.cga" --set roofKind=dome -q 2>"$tmp/set_err" >/dev/null; then
+  fail "--set roofKind=dome outside @Enum accepted"
+fi
+grep -q 'error: --set roofKind=dome: not one of @Enum "hip", "gable"' "$tmp/set_err" ||
+  fail "@Enum message: $(cat "$tmp/set_err")"
+
 # A missing import is an error at its line and column, and nothing is written.
 sed 's|"lib/windows.cga"|"lib/nowhere.cga"|' "$ws/Town/rules/town.cga" >"$ws/Town/rules/bad.cga"
 if "$insula" build "$ws/Town/rules/bad.cga" -o "$tmp/bad.glb" 2>"$tmp/bad_err" >/dev/null; then

@@ -29,6 +29,7 @@
 #include "io/asset_search.h"
 #include "io/geojson_reader.h"
 #include "io/obj_reader.h"
+#include "lang/cga/annotations.h"
 #include "lang/cga/checker.h"
 #include "lang/cga/compile.h"
 #include "lang/cga/derive.h"
@@ -165,6 +166,15 @@ int build_cga(const BuildOptions& options) {
       std::fprintf(stderr, "%s: error: --set '%s': the grammar declares no attr '%s'\n",
                    options.input.c_str(), name.c_str(), name.c_str());
       return kExitInput;
+    }
+    // CityEngine's @Range / @Enum bound the values a user may give (docs/cga-cityengine.md).
+    for (const cga::AttrDecl& a : grammar->attrs) {
+      if (a.name != name) continue;
+      if (const std::optional<std::string> why = cga::annotation_violation(a, set.second)) {
+        std::fprintf(stderr, "%s: error: --set %s=%s: %s\n", options.input.c_str(), name.c_str(),
+                     shape::to_string(set.second).c_str(), why->c_str());
+        return kExitInput;
+      }
     }
   }
   derive.keep_terminals = !options.outputs.empty();

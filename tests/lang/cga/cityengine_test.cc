@@ -7,6 +7,7 @@
 
 #include "base/text_encoding.h"
 #include "derive_util.h"
+#include "lang/cga/annotations.h"
 #include "lang/cga/ast_dump.h"
 #include "lang/cga/checker.h"
 #include "lang/cga/imports.h"
@@ -228,6 +229,20 @@ Lot --> print(listSize(l), listItem(l, 1), listIndex(l, "fir"), listRange(l, 1, 
   ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
   ASSERT_EQ(r[0].prints.size(), 1U);
   EXPECT_EQ(r[0].prints[0], "test.cga:2: print: 3 elm 2 elm;fir; 3 ind 2 a+b+c door door.obj");
+}
+
+TEST(CityEngineDialect, AnnotationsBoundAttributeValues) {
+  const Grammar g = parse_ok(kHouse);
+  const AttrDecl& height = g.attrs[0];  // @Range(min = 3, max = 30)
+  const AttrDecl& roof = g.attrs[1];    // @Enum("flat", "hip")
+  EXPECT_FALSE(annotation_violation(height, shape::Value{12.0}));
+  EXPECT_EQ(annotation_violation(height, shape::Value{31.0}).value_or(""),
+            "outside @Range 3 .. 30");
+  EXPECT_FALSE(annotation_violation(roof, shape::Value{std::string("flat")}));
+  EXPECT_EQ(annotation_violation(roof, shape::Value{std::string("dome")}).value_or(""),
+            "not one of @Enum \"flat\", \"hip\"");
+  const Grammar loose = parse_ok("@Range(min = 0, max = 1, restricted = false)\nattr a = 0.5\n");
+  EXPECT_FALSE(annotation_violation(loose.attrs[0], shape::Value{7.0}));
 }
 
 // ---- imports
