@@ -292,6 +292,9 @@ class Compiler {
     if (const std::optional<ShapeAttr> g = geometry_function(e)) {
       return add(ENode{ECode::kShapeAttr, 0, static_cast<std::uint32_t>(*g), e.range, {}});
     }
+    if (object.kind == ExprKind::kIdent && e.text == "sel" && is_shape_object(object.text)) {
+      return add(ENode{ECode::kCompSel, 0, 0, e.range, {}});
+    }
     if (object.kind == ExprKind::kIdent) {
       if (const AttributeInfo* info = find_shape_attribute(object.text, e.text);
           info != nullptr && info->args == 0) {

@@ -42,6 +42,7 @@ enum class ECode : std::uint8_t {
   kCall,       // function a of the grammar (Program::functions), arguments kids
   kCase,       // kids: condition, value, ..., else value (CityEngine's `case`)
   kChance,     // kids: percentage, value, ..., else value (CityEngine's `30% : v else : w`)
+  kCompSel,    // comp.sel: the selector text of the comp branch the shape came from
 };
 
 enum class ShapeAttr : std::uint8_t {

@@ -368,6 +368,7 @@ void Engine::process(const Work& w) {
   st.index = w.index;
   st.total = w.total;
   st.frame = w.frame;
+  st.selector = w.selector;
   depth_ = w.depth;
   cur_ = &st;
   frame = frame_of(w.frame);

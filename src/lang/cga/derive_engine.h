@@ -38,9 +38,10 @@ struct Work {
   SymbolId symbol = kNoSymbol;
   std::uint32_t geometry = 0;
   std::uint32_t attrs = 0;
-  std::uint32_t index = 0;  // split.index / comp.index
-  std::uint32_t total = 1;  // split.total
-  std::uint32_t frame = 0;  // the rule's arguments (Engine::frames_; 0: none)
+  std::uint32_t index = 0;                // split.index / comp.index
+  std::uint32_t total = 1;                // split.total
+  std::uint32_t frame = 0;                // the rule's arguments (Engine::frames_; 0: none)
+  const std::string* selector = nullptr;  // comp.sel (a CBranch's selector of the program)
   std::uint16_t depth = 0;
   std::uint16_t level = 0;
 };
@@ -53,10 +54,11 @@ struct State {
   std::uint32_t attrs = 0;
   std::uint32_t index = 0;
   std::uint32_t total = 1;
-  std::uint32_t frame = 0;       // the arguments of the rule being applied
-  std::uint32_t next_child = 0;  // children seeded so far (child_seed index)
-  bool consumed = false;         // replaced by a symbol, a block operation or ε
-  bool modified = false;         // changed since the last `[` (a `]` then leaves it as a leaf)
+  std::uint32_t frame = 0;                // the arguments of the rule being applied
+  const std::string* selector = nullptr;  // comp.sel
+  std::uint32_t next_child = 0;           // children seeded so far (child_seed index)
+  bool consumed = false;                  // replaced by a symbol, a block operation or ε
+  bool modified = false;  // changed since the last `[` (a `]` then leaves it as a leaf)
 };
 
 // A limit or evaluation error: ends the lot's derivation.
@@ -106,6 +108,9 @@ class Engine final : public EvalContext {
   Value attribute(std::uint32_t attr, Range range) override;
 
   double shape_attribute(ShapeAttr a) override;
+  std::string comp_selector() override {
+    return cur_ != nullptr && cur_->selector != nullptr ? *cur_->selector : std::string();
+  }
   // geometry.area(), volume(), nVertices(), nFaces() of the shape's mesh.
   double geometry_measure(ShapeAttr a, const State& s) const;
 
@@ -208,6 +213,7 @@ class Engine final : public EvalContext {
     w.index = st.index;
     w.total = st.total;
     w.frame = st.frame;
+    w.selector = st.selector;
     w.depth = static_cast<std::uint16_t>(depth);
     w.level = static_cast<std::uint16_t>(program_.levels_of[symbol].front());
     batch_.push_back(w);
@@ -262,6 +268,7 @@ class Engine final : public EvalContext {
     c.index = index;
     c.total = total;
     c.frame = parent.frame;
+    c.selector = parent.selector;
     return c;
   }
 

@@ -252,6 +252,7 @@ void Engine::comp(const CItem& c, State& st) {
         comp_target(c, o.pieces[k], ordinal++, faces ? o.parent_mesh.get() : nullptr);
     if (b == nullptr) continue;
     State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, total);
+    piece.selector = &b->selector;
     run_branch(*b, piece);
   }
 }

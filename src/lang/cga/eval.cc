@@ -423,6 +423,8 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
       }
       return apply_function(f, args, n.range);
     }
+    case ECode::kCompSel:
+      return context.comp_selector();
     case ECode::kParam:
       if (n.a >= context.frame.size()) fail(n.range, "internal: parameter outside its rule");
       return context.frame[n.a];

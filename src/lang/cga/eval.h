@@ -50,6 +50,8 @@ class EvalContext {
   virtual ~EvalContext() = default;
   virtual shape::Value attribute(std::uint32_t attr, Range range) = 0;
   virtual double shape_attribute(ShapeAttr attr) = 0;
+  // comp.sel: the selector of the comp branch the shape came from ("" when none).
+  virtual std::string comp_selector() = 0;
   // "none", "part" or "full" for Shape.occ(`what`).
   virtual std::string occlusion(const std::string& what, Range range) = 0;
   virtual shape::Rng& rng() = 0;

@@ -94,6 +94,7 @@ inline constexpr AttributeInfo kShapeAttributes[] = {
     {"depth", 0, "derivation depth of the shape"},
     {"index", 0, "index of the shape among its parent's children (split.index)"},
     {"total", 0, "number of children of the parent operation (split.total)"},
+    {"sel", 0, "selector of the comp branch the shape came from (\"front\", \"side\"; comp.sel)"},
     {"occ", 1, "occlusion: \"none\", \"part\" or \"full\"; argument \"all\" (shapes of the lot)"},
 };
 

@@ -245,6 +245,18 @@ TEST(CityEngineDialect, AnnotationsBoundAttributeValues) {
   EXPECT_FALSE(annotation_violation(loose.attrs[0], shape::Value{7.0}));
 }
 
+TEST(CityEngineDialect, CompSelIsTheSelectorThatTookTheShape) {
+  auto p = compile_text(
+      "Lot --> extrude(6) comp(f) { front : F | side : F | top : F. | bottom : NIL }\n"
+      "F --> print(comp.sel) X.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 8)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  std::map<std::string, int> seen;
+  for (const std::string& line : r[0].prints) ++seen[line.substr(line.rfind(' ') + 1)];
+  EXPECT_EQ(seen, (std::map<std::string, int>{{"front", 1}, {"side", 3}}));
+}
+
 // ---- imports
 
 std::map<std::string, std::string> files() {
