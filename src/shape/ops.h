@@ -77,7 +77,9 @@ enum class FaceSelector : std::uint8_t {
   kVertical,
   kHorizontal,
   kAslant,
-  kNutant
+  kNutant,
+  kBorder,  // faces with an edge no other face shares (the geometry's border)
+  kInside,  // the other faces
 };
 // Whether a face with unit normal `n` (scope space) is selected: each face belongs to the scope
 // direction its normal is closest to (front +z, back -z, left -x, right +x, top +y, bottom -y;
@@ -85,7 +87,12 @@ enum class FaceSelector : std::uint8_t {
 // angle a between the normal and the scope's xz plane: horizontal |a| > 78.75 degrees, aslant
 // 11.25 < a <= 78.75 (facing up), vertical |a| <= 11.25, nutant -78.75 <= a < -11.25 (facing
 // down).
+// kBorder and kInside depend on the mesh, not the normal: face_matches is false for them; see
+// border_faces.
 bool face_matches(FaceSelector selector, kernel::Vec3 n);
+// Per face of `mesh`: whether one of its edges belongs to no other face (positions welded first),
+// CityEngine's `border` components (`inside` are the rest): after an offset, the ring's faces.
+std::vector<bool> border_faces(const kernel::Mesh& mesh);
 // One flat child per selected face: scope z = outward normal, x horizontal along the face (up
 // cross normal; the parent's x for faces facing up or down), y = z cross x; its outline is the face
 // loop. pieces[i] = face index.

@@ -14,6 +14,7 @@ using kernel::Vec3;
 
 bool face_matches(FaceSelector selector, Vec3 n) {
   if (selector == FaceSelector::kAll) return true;
+  if (selector == FaceSelector::kBorder || selector == FaceSelector::kInside) return false;
   if (selector >= FaceSelector::kVertical) {
     const double len = length(n);
     if (len == 0) return false;
@@ -82,13 +83,41 @@ std::optional<ShapeId> add_face_child(ShapeTree& tree, ShapeId id, std::size_t f
   return tree.add_child(id, child.scope, std::move(child_mesh), std::move(outline));
 }
 
+std::vector<bool> border_faces(const Mesh& mesh) {
+  const Mesh welded = kernel::weld(mesh);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (std::size_t f = 0; f < welded.face_count(); ++f) {
+    const auto loop = welded.face(f);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const std::uint32_t a = loop[i];
+      const std::uint32_t b = loop[(i + 1) % loop.size()];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  std::vector<bool> border(welded.face_count(), false);
+  for (std::size_t f = 0; f < welded.face_count(); ++f) {
+    const auto loop = welded.face(f);
+    for (std::size_t i = 0; i < loop.size() && !border[f]; ++i) {
+      const std::uint32_t a = loop[i];
+      const std::uint32_t b = loop[(i + 1) % loop.size()];
+      border[f] = uses[{std::min(a, b), std::max(a, b)}] == 1;
+    }
+  }
+  return border;
+}
+
 OpResult comp_faces(ShapeTree& tree, ShapeId id, FaceSelector selector) {
   const Shape& s = tree[id];
   if (!s.mesh) return OpResult::failure("the shape has no faces");
   const std::shared_ptr<const Mesh> mesh = s.mesh;
+  const bool by_border = selector == FaceSelector::kBorder || selector == FaceSelector::kInside;
+  const std::vector<bool> border = by_border ? border_faces(*mesh) : std::vector<bool>();
   OpResult result;
   for (std::size_t f = 0; f < mesh->face_count(); ++f) {
-    if (!face_matches(selector, kernel::face_normal(*mesh, f))) continue;
+    if (by_border ? border[f] != (selector == FaceSelector::kBorder)
+                  : !face_matches(selector, kernel::face_normal(*mesh, f))) {
+      continue;
+    }
     const std::optional<ShapeId> child = add_face_child(tree, id, f);
     if (child) result.add(*child, static_cast<std::uint32_t>(f));  // else a degenerate face
   }
@@ -197,7 +226,7 @@ std::vector<Operation> comp_operations() {
          "which faces (faces only)",
          ArgValue{std::string("all")},
          {"front", "back", "left", "right", "top", "bottom", "side", "all", "vertical",
-          "horizontal", "aslant", "nutant"},
+          "horizontal", "aslant", "nutant", "border", "inside"},
          {},
          {}}},
        [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
@@ -205,7 +234,7 @@ std::vector<Operation> comp_operations() {
          if (type == "edges") return comp_edges(t, id);
          if (type == "vertices") return comp_vertices(t, id);
          if (type == "faceedges") return comp_face_edges(t, id);
-         static constexpr std::array<std::pair<std::string_view, FaceSelector>, 12> kSelectors = {{
+         static constexpr std::array<std::pair<std::string_view, FaceSelector>, 14> kSelectors = {{
              {"front", FaceSelector::kFront},
              {"back", FaceSelector::kBack},
              {"left", FaceSelector::kLeft},
@@ -218,6 +247,8 @@ std::vector<Operation> comp_operations() {
              {"horizontal", FaceSelector::kHorizontal},
              {"aslant", FaceSelector::kAslant},
              {"nutant", FaceSelector::kNutant},
+             {"border", FaceSelector::kBorder},
+             {"inside", FaceSelector::kInside},
          }};
          FaceSelector selector = FaceSelector::kAll;
          for (const auto& [name, value] : kSelectors) {

@@ -96,6 +96,10 @@ bool Engine::replace(const CItem& c, const std::vector<CItem>& items, std::size_
         child_of(st, o.children[k].scope, o.children[k].geometry, static_cast<std::uint32_t>(k),
                  static_cast<std::uint32_t>(o.children.size()));
     child.modified = true;
+    // An offset's pieces remember which they are (comp's `inside` / `border` read it).
+    if (c.info->selectors_are_pieces && o.pieces[k] < c.info->selectors.size()) {
+      child.selector = &c.info->selectors[o.pieces[k]];
+    }
     std::vector<State> fork_stack = stack;
     run_items(items, i + 1, child, fork_stack);
     if (!child.consumed) terminal(child, rule_->predecessor);

@@ -24,6 +24,8 @@ shape::FaceSelector face_selector(std::string_view name) {
   if (name == "horizontal") return shape::FaceSelector::kHorizontal;
   if (name == "aslant") return shape::FaceSelector::kAslant;
   if (name == "nutant") return shape::FaceSelector::kNutant;
+  if (name == "border") return shape::FaceSelector::kBorder;
+  if (name == "inside") return shape::FaceSelector::kInside;
   return shape::FaceSelector::kAll;
 }
 
@@ -197,7 +199,7 @@ void Engine::repeat(const CItem& c, State& st, std::size_t axis_index) {
 }
 
 const CBranch* Engine::comp_target(const CItem& c, std::uint32_t piece, std::size_t ordinal,
-                                   const Mesh* parent) {
+                                   const Mesh* parent, const std::vector<bool>* border) {
   if (!c.indices.empty()) {  // CS(type, i, j, ...){ A | B | ... }: component i -> A, ...
     for (std::size_t j = 0; j < c.indices.size() && j < c.branches.size(); ++j) {
       if (c.indices[j] == piece) return &c.branches[j];
@@ -225,7 +227,16 @@ const CBranch* Engine::comp_target(const CItem& c, std::uint32_t piece, std::siz
       if (b.index == piece) return &b;
       continue;
     }
-    if (faces && shape::face_matches(face_selector(b.selector), n)) return &b;
+    const shape::FaceSelector selector = face_selector(b.selector);
+    if (faces &&
+        (selector == shape::FaceSelector::kBorder || selector == shape::FaceSelector::kInside)) {
+      if (border != nullptr && piece < border->size() &&
+          (*border)[piece] == (selector == shape::FaceSelector::kBorder)) {
+        return &b;
+      }
+      continue;
+    }
+    if (faces && shape::face_matches(selector, n)) return &b;
   }
   return nullptr;
 }
@@ -240,6 +251,18 @@ void Engine::comp(const CItem& c, State& st) {
     return;
   }
   const auto total = static_cast<std::uint32_t>(o.children.size());
+  // CityEngine's border / inside selectors need the faces' neighbours: computed when used.
+  const bool by_border = std::any_of(c.branches.begin(), c.branches.end(), [](const CBranch& b) {
+    return b.selector == "border" || b.selector == "inside";
+  });
+  std::vector<bool> border =
+      by_border && o.parent_mesh ? shape::border_faces(*o.parent_mesh) : std::vector<bool>();
+  // A piece of an offset (CityEngine keeps both in one shape; Insula forks them) is all inside or
+  // all border, as its faces were in CityEngine's shape.
+  if (by_border && st.selector != nullptr &&
+      (*st.selector == "inside" || *st.selector == "border")) {
+    border.assign(border.size(), *st.selector == "border");
+  }
   std::size_t ordinal = 0;
   for (std::uint32_t k = 0; k < total; ++k) {
     const bool faces = c.comp == CompKind::kFaces || c.comp == CompKind::kSideFaces;
@@ -249,7 +272,7 @@ void Engine::comp(const CItem& c, State& st) {
       continue;
     }
     const CBranch* b =
-        comp_target(c, o.pieces[k], ordinal++, faces ? o.parent_mesh.get() : nullptr);
+        comp_target(c, o.pieces[k], ordinal++, faces ? o.parent_mesh.get() : nullptr, &border);
     if (b == nullptr) continue;
     State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, total);
     piece.selector = &b->selector;

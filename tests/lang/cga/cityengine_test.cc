@@ -257,6 +257,19 @@ TEST(CityEngineDialect, CompSelIsTheSelectorThatTookTheShape) {
   EXPECT_EQ(seen, (std::map<std::string, int>{{"front", 1}, {"side", 3}}));
 }
 
+TEST(CityEngineDialect, CompInsideAndBorderAfterAnOffset) {
+  // The courtyard is inside, the ring's faces border; report() sums the ring's area.
+  auto p = compile_text(
+      "Lot --> offset(-3) comp(f) { inside : Court. | border : Wing }\n"
+      "Wing --> report(\"ring\", geometry.area()) W.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 10)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(symbol_count(*p, r[0], "Court"), 1U);
+  ASSERT_TRUE(r[0].reports.count("ring"));
+  EXPECT_NEAR(r[0].reports.at("ring").sum, 100 - 16, 1e-6);
+}
+
 // ---- imports
 
 std::map<std::string, std::string> files() {
