@@ -573,6 +573,11 @@ void Checker::check_registry_ranges(const Item& item, const OperationInfo& info)
     }
     const std::optional<Constant> value = fold(*item.args[i]);
     if (!value || value->relative || value->floating) continue;
+    // CityEngine extrudes a negative height behind the face (derive_registry.cc).
+    if (cityengine() && info.registry_op == "extrude" && param->name == "height" &&
+        value->value < 0) {
+      continue;
+    }
     const bool low = param->min && value->value < *param->min;
     const bool high = param->max && value->value > *param->max;
     if (!low && !high) continue;

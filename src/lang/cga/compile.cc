@@ -114,6 +114,7 @@ class Compiler {
   }
 
   base::Result<std::shared_ptr<const Program>> run(const CompileOptions& options) {
+    program_->cityengine = grammar_.dialect == Dialect::kCityEngine;
     declare_functions();
     declare_attributes(options.extra_attributes);
     compile_functions();

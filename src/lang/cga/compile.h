@@ -236,6 +236,7 @@ struct Program {
   std::vector<shape::Value> consts;
   SymbolId start = kNoSymbol;
   bool uses_occlusion = false;
+  bool cityengine = false;  // read from CityEngine's dialect (derive_registry.cc: extrude(-d))
 
   bool has_rules(SymbolId s) const { return s < levels_of.size() && !levels_of[s].empty(); }
   std::string_view symbol_name(SymbolId s) const { return symbols[s]; }

@@ -311,6 +311,7 @@ class Engine final : public EvalContext {
   // operations.h maps it to, plus the ones its spelling fixes.
   std::vector<shape::ArgInput> registry_args(const CItem& c, State& st);
   OpOutcome run_registry(const CItem& c, State& st);
+  OpOutcome extrude_behind(const State& st, std::vector<shape::ArgInput>& args);
 
   // Runs a replacing operation; returns false when it forked (the rest of the successor already
   // ran once per result) or removed the shape.

@@ -78,7 +78,24 @@ std::vector<shape::ArgInput> Engine::registry_args(const CItem& c, State& st) {
 
 OpOutcome Engine::run_registry(const CItem& c, State& st) {
   // The operation's shape sits in the one the rule rewrites (center() centres on it).
-  return run_op(st, c.info->registry_op, registry_args(c, st), &rule_scope_);
+  std::vector<shape::ArgInput> args = registry_args(c, st);
+  if (program_.cityengine && c.info->registry_op == "extrude") return extrude_behind(st, args);
+  return run_op(st, c.info->registry_op, args, &rule_scope_);
+}
+
+// CityEngine's extrude(-d) makes the prism behind the face: the registry's extrude of d, moved
+// back by d along the extrusion (the child's scope y).
+OpOutcome Engine::extrude_behind(const State& st, std::vector<shape::ArgInput>& args) {
+  double* height = nullptr;
+  for (shape::ArgInput& a : args) {
+    if (a.name == "height") height = std::get_if<double>(&a.value);
+  }
+  if (height == nullptr || !(*height < 0)) return run_op(st, "extrude", args, &rule_scope_);
+  const double depth = -*height;
+  *height = depth;
+  OpOutcome o = run_op(st, "extrude", args, &rule_scope_);
+  for (State& child : o.children) child.scope.origin = child.scope.to_world({0, -depth, 0});
+  return o;
 }
 
 bool Engine::replace(const CItem& c, const std::vector<CItem>& items, std::size_t i, State& st,

@@ -270,6 +270,19 @@ TEST(CityEngineDialect, CompInsideAndBorderAfterAnOffset) {
   EXPECT_NEAR(r[0].reports.at("ring").sum, 100 - 16, 1e-6);
 }
 
+TEST(CityEngineDialect, NegativeExtrusionGoesBehindTheFace) {
+  auto p = compile_text("version \"2019.0\"\nLot --> extrude(-2) Slab.\n");
+  ASSERT_TRUE(p);
+  DeriveOptions options;
+  options.keep_terminals = true;
+  const auto r = derive_all(*p, {rectangle_lot(6, 4)}, options);
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  ASSERT_EQ(r[0].terminals_store.size(), 1U);
+  const shape::Scope& scope = r[0].terminals_store[0].scope;
+  EXPECT_NEAR(scope.size.y, 2, 1e-9);     // the extrusion axis
+  EXPECT_NEAR(scope.origin.z, -2, 1e-9);  // from 2 m below the lot up to it
+}
+
 // ---- imports
 
 std::map<std::string, std::string> files() {
