@@ -12,4 +12,17 @@ std::string dotted_name(const Expr& expr) {
   return object;
 }
 
+ExprPtr clone(const Expr& expr) {
+  auto copy = std::make_unique<Expr>();
+  copy->kind = expr.kind;
+  copy->range = expr.range;
+  copy->number = expr.number;
+  copy->boolean = expr.boolean;
+  copy->text = expr.text;
+  copy->unary_op = expr.unary_op;
+  copy->binary_op = expr.binary_op;
+  for (const ExprPtr& operand : expr.operands) copy->operands.push_back(clone(*operand));
+  return copy;
+}
+
 }  // namespace insula::lang::cga

@@ -61,6 +61,10 @@ using ExprPtr = std::unique_ptr<Expr>;
 // names; empty for any other expression.
 std::string dotted_name(const Expr& expr);
 
+// A deep copy of `expr` (an import's override given to the imported attribute keeps the
+// importing file's model intact).
+ExprPtr clone(const Expr& expr);
+
 // Operations recognised by name. The paper's spellings and their long forms map to one kind:
 // BS/Subdiv -> kSplit, RR/Repeat -> kRepeat, CS/Comp -> kComp, T -> kTranslate, S -> kScale,
 // Rx/Ry/Rz -> kRotate, I -> kInsert, Pshape -> kPredefined. Every other name is kGeneric

@@ -11,35 +11,19 @@ namespace insula::lang::cga {
 
 // Operations that change only what Insula does not model yet: skipped with warning CGA903.
 inline constexpr std::string_view kDetailOperations[] = {
-    "setupProjection", "projectUV",     "texture",       "translateUV",    "scaleUV",
-    "rotateUV",        "tileUV",        "normalizeUV",   "deleteUV",       "label",
-    "setNormals",      "softenNormals", "deleteHoles",   "reduceGeometry", "setMaterial",
-    "resetMaterials",  "trim",          "resetGeometry", "deleteTags",     "tag",
+    "setupProjection", "projectUV",      "texture",     "translateUV",
+    "scaleUV",         "rotateUV",       "tileUV",      "normalizeUV",
+    "deleteUV",        "label",          "setNormals",  "softenNormals",
+    "deleteHoles",     "reduceGeometry", "setMaterial", "resetMaterials",
+    "resetGeometry",   "deleteTags",     "tag",
 };
 
 // Operations that change geometry and are not implemented: error CGA901.
 inline constexpr std::string_view kUnsupportedOperations[] = {
-    "alignScopeToAxes",
-    "alignScopeToGeometry",
-    "rotateScope",
-    "setPivot",
-    "mirror",
     "mirrorScope",
-    "rotate",
-    "translate",
-    "innerRectangle",
-    "innerRect",
-    "shapeL",
-    "shapeU",
-    "shapeO",
-    "primitiveCylinder",
-    "primitiveQuad",
     "primitiveDisk",
     "primitiveSphere",
     "primitiveCone",
-    "cleanupGeometry",
-    "convexify",
-    "splitArea",
     "scatter",
     "envelope",
     "roofRidge",

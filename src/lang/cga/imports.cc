@@ -162,14 +162,14 @@ class Renamer {
 
 // Propagation: the imported attribute `alias.x` takes the importer's `x` unless protected;
 // an override `(x = expr)` gives it `expr`.
-void propagate(Grammar& imported, ImportDecl& decl, const Grammar& importer) {
+void propagate(Grammar& imported, const ImportDecl& decl, const Grammar& importer) {
   const std::string prefix = decl.alias + ".";
   for (AttrDecl& a : imported.attrs) {
     const std::string name = a.name.substr(prefix.size());
     bool overridden = false;
-    for (auto& [key, value] : decl.overrides) {
+    for (const auto& [key, value] : decl.overrides) {
       if (key == name && value) {
-        a.value = std::move(value);
+        a.value = clone(*value);
         overridden = true;
       }
     }

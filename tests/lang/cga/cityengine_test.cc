@@ -10,7 +10,9 @@
 #include "lang/cga/annotations.h"
 #include "lang/cga/ast_dump.h"
 #include "lang/cga/checker.h"
+#include "lang/cga/cityengine_names.h"
 #include "lang/cga/imports.h"
+#include "lang/cga/operations.h"
 #include "lang/cga/printer.h"
 #include "test_util.h"
 
@@ -142,6 +144,16 @@ TEST(CityEngineDialect, ChecksWhatTheDialectAdds) {
             "t.cga:1:1: warning[CGA430]: unknown annotation '@Colour' (kept, no effect)\n");
   EXPECT_EQ(check_text("f(a) = a\nLot --> extrude(f) A.\n"),
             "t.cga:2:17: error[CGA312]: function 'f' takes 1 argument, found none\n");
+}
+
+TEST(CityEngineDialect, UnsupportedTablesNameNoOperationInsulaHas) {
+  // A name the registry (or CGA) runs must not be reported as unsupported or skipped.
+  for (std::string_view name : kUnsupportedOperations) {
+    EXPECT_EQ(find_operation(name), nullptr) << name;
+  }
+  for (std::string_view name : kDetailOperations) EXPECT_EQ(find_operation(name), nullptr) << name;
+  for (std::string_view name : kUnsupportedFunctions)
+    EXPECT_EQ(find_function(name), nullptr) << name;
 }
 
 TEST(CityEngineDialect, StartsFromTheMarkedStartRule) {
@@ -320,6 +332,9 @@ TEST(CityEngineImports, NamesComeUnderTheAliasAndAttributesPropagate) {
                       "Lot --> extrude(win.frame * 100) split(x) { 2 : win.Window }*\n");
   base::Result<Grammar> g = load(source);
   ASSERT_TRUE(g.ok()) << base::render(g.diagnostics().front());
+  // The importing file's model keeps its override (printing or dumping it stays possible).
+  ASSERT_EQ(g.value().imports.size(), 1U);
+  ASSERT_TRUE(g.value().imports[0].overrides.at(0).second);
   const CheckResult checked = check(g.value(), source);
   ASSERT_TRUE(checked.ok) << base::render(checked.diagnostics.front());
   auto program = compile(g.value(), source, {});
