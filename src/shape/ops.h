@@ -80,7 +80,14 @@ enum class FaceSelector : std::uint8_t {
   kNutant,
   kBorder,  // faces with an edge no other face shares (the geometry's border)
   kInside,  // the other faces
+  // CityEngine's roof edge classes (edges only; ops_comp_select.cc):
+  kEave,    // horizontal, at the low side of a roof plane
+  kHip,     // sloped, where two roof planes meet at a convex angle
+  kValley,  // sloped, where two roof planes meet at a concave angle
+  kRidge,   // horizontal, where two roof planes meet at their tops
 };
+// The selector a CGA keyword names ("front", "ridge", ...); nullopt for any other word.
+std::optional<FaceSelector> face_selector_named(std::string_view name);
 // Whether a face with unit normal `n` (scope space) is selected: each face belongs to the scope
 // direction its normal is closest to (front +z, back -z, left -x, right +x, top +y, bottom -y;
 // ties prefer y, then z); side = front, back, left or right. CityEngine's slope classes go by the
@@ -100,15 +107,32 @@ OpResult comp_faces(ShapeTree& tree, ShapeId id, FaceSelector selector);
 // Face `face` of shape `id` as one such flat child (comp_faces' rule), with no bookkeeping of an
 // operation result; nullopt for a degenerate face. Lua's component-from-a-face uses it too.
 std::optional<ShapeId> add_face_child(ShapeTree& tree, ShapeId id, std::size_t face);
-// One degenerate child per distinct edge: scope x along the edge, z the mean normal of the faces
-// meeting there, size (length, 0, 0), no geometry.
-OpResult comp_edges(ShapeTree& tree, ShapeId id);
+// One degenerate child per selected distinct edge (mesh_edges order; pieces[i] = that order): scope
+// x along the edge, z the mean normal of the faces meeting there, size (length, 0, 0), no geometry.
+OpResult comp_edges(ShapeTree& tree, ShapeId id, FaceSelector selector = FaceSelector::kAll);
 // One degenerate child per edge of every face, in face and loop order (CityEngine's fe): scope x
 // along the edge as the loop runs, y the face's normal, z pointing out of the face in its plane,
 // size (length, 0, 0). pieces[i] counts the face edges over all faces.
 OpResult comp_face_edges(ShapeTree& tree, ShapeId id);
-// One point child per distinct vertex: the parent's axes, size 0, no geometry.
-OpResult comp_vertices(ShapeTree& tree, ShapeId id);
+// One point child per selected distinct vertex: the parent's axes, size 0, no geometry.
+OpResult comp_vertices(ShapeTree& tree, ShapeId id, FaceSelector selector = FaceSelector::kAll);
+
+// --- comp selectors on edges and vertices (ops_comp_select.cc)
+// A distinct edge of a welded mesh and the faces that use it.
+struct MeshEdge {
+  std::uint32_t a = 0;  // welded vertex indices, a < b
+  std::uint32_t b = 0;
+  std::vector<std::uint32_t> faces;
+};
+// Every distinct edge of `welded`, ordered by (a, b): comp(e)'s component order.
+std::vector<MeshEdge> mesh_edges(const kernel::Mesh& welded);
+// Per component of `welded` (mesh_edges order for edges, vertex index for vertices): whether
+// `selector` picks it. An edge's or vertex's direction is the sum of the normals of the faces
+// meeting there (CityEngine: "the y-normals of the components"); border ones touch a face no other
+// face meets across them. The roof classes apply to edges only.
+std::vector<bool> select_edges(const kernel::Mesh& welded, std::span<const MeshEdge> edges,
+                               FaceSelector selector);
+std::vector<bool> select_vertices(const kernel::Mesh& welded, FaceSelector selector);
 
 // --- transforms (ops_transform.cc); each makes one child sharing the geometry
 // Moves the scope by `offset` meters along its own axes (CGA T).

@@ -14,7 +14,7 @@ using kernel::Vec3;
 
 bool face_matches(FaceSelector selector, Vec3 n) {
   if (selector == FaceSelector::kAll) return true;
-  if (selector == FaceSelector::kBorder || selector == FaceSelector::kInside) return false;
+  if (selector >= FaceSelector::kBorder) return false;  // by the mesh, not by the normal
   if (selector >= FaceSelector::kVertical) {
     const double len = length(n);
     if (len == 0) return false;
@@ -124,29 +124,21 @@ OpResult comp_faces(ShapeTree& tree, ShapeId id, FaceSelector selector) {
   return finish(tree, id, std::move(result));
 }
 
-OpResult comp_edges(ShapeTree& tree, ShapeId id) {
+OpResult comp_edges(ShapeTree& tree, ShapeId id, FaceSelector selector) {
   const Shape& s = tree[id];
   if (!s.mesh) return OpResult::failure("the shape has no edges");
   const Mesh welded = kernel::weld(*s.mesh);
-  // Undirected edge -> sum of the normals of the faces meeting there (ordered map: stable order).
-  std::map<std::pair<std::uint32_t, std::uint32_t>, Vec3> edges;
-  for (std::size_t f = 0; f < welded.face_count(); ++f) {
-    const auto loop = welded.face(f);
-    const Vec3 n = kernel::face_normal(welded, f);
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      const std::uint32_t a = loop[i];
-      const std::uint32_t b = loop[(i + 1) % loop.size()];
-      edges[{std::min(a, b), std::max(a, b)}] += n;
-    }
-  }
+  const std::vector<MeshEdge> edges = mesh_edges(welded);
+  const std::vector<bool> selected = select_edges(welded, edges, selector);
   const Scope scope = s.scope;
   OpResult result;
-  std::uint32_t index = 0;
-  for (const auto& [edge, normal_sum] : edges) {
-    const Vec3 a = welded.position(edge.first);
-    const Vec3 b = welded.position(edge.second);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!selected[e]) continue;
+    const Vec3 a = welded.position(edges[e].a);
+    const Vec3 b = welded.position(edges[e].b);
+    Vec3 n;
+    for (std::uint32_t f : edges[e].faces) n += kernel::face_normal(welded, f);
     Scope local;
-    Vec3 n = normal_sum;
     if (length(cross(n, b - a)) < 1e-12) n = cross(b - a, {0, 1, 0});  // no usable face normal
     if (length(cross(n, b - a)) < 1e-12) n = cross(b - a, {1, 0, 0});
     if (!make_frame(b - a, n, local.x, local.y, local.z)) continue;
@@ -156,7 +148,7 @@ OpResult comp_edges(ShapeTree& tree, ShapeId id) {
     child.y = scope.direction_to_world(local.y);
     child.z = scope.direction_to_world(local.z);
     child.size = {length(b - a), 0, 0};
-    result.add(tree.add_child(id, child), index++);
+    result.add(tree.add_child(id, child), static_cast<std::uint32_t>(e));
   }
   return finish(tree, id, std::move(result));
 }
@@ -189,7 +181,7 @@ OpResult comp_face_edges(ShapeTree& tree, ShapeId id) {
   return finish(tree, id, std::move(result));
 }
 
-OpResult comp_vertices(ShapeTree& tree, ShapeId id) {
+OpResult comp_vertices(ShapeTree& tree, ShapeId id, FaceSelector selector) {
   const Shape& s = tree[id];
   if (!s.mesh) return OpResult::failure("the shape has no vertices");
   const Mesh welded = kernel::weld(*s.mesh);
@@ -197,10 +189,11 @@ OpResult comp_vertices(ShapeTree& tree, ShapeId id) {
   for (std::size_t f = 0; f < welded.face_count(); ++f) {
     for (std::uint32_t v : welded.face(f)) used[v] = true;
   }
+  const std::vector<bool> selected = select_vertices(welded, selector);
   const Scope scope = s.scope;
   OpResult result;
   for (std::uint32_t v = 0; v < welded.vertex_count(); ++v) {
-    if (!used[v]) continue;
+    if (!used[v] || !selected[v]) continue;
     result.add(tree.add_child(id, scope.sub(welded.position(v), {})), v);
   }
   return finish(tree, id, std::move(result));
@@ -223,37 +216,20 @@ std::vector<Operation> comp_operations() {
          {}},
         {"select",
          ParamType::kEnum,
-         "which faces (faces only)",
+         "which components (the roof classes eave, hip, valley, ridge: edges only; face edges: "
+         "all)",
          ArgValue{std::string("all")},
          {"front", "back", "left", "right", "top", "bottom", "side", "all", "vertical",
-          "horizontal", "aslant", "nutant", "border", "inside"},
+          "horizontal", "aslant", "nutant", "border", "inside", "eave", "hip", "valley", "ridge"},
          {},
          {}}},
        [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
          const std::string& type = a.string("type");
-         if (type == "edges") return comp_edges(t, id);
-         if (type == "vertices") return comp_vertices(t, id);
+         const FaceSelector selector =
+             face_selector_named(a.string("select")).value_or(FaceSelector::kAll);
+         if (type == "edges") return comp_edges(t, id, selector);
+         if (type == "vertices") return comp_vertices(t, id, selector);
          if (type == "faceedges") return comp_face_edges(t, id);
-         static constexpr std::array<std::pair<std::string_view, FaceSelector>, 14> kSelectors = {{
-             {"front", FaceSelector::kFront},
-             {"back", FaceSelector::kBack},
-             {"left", FaceSelector::kLeft},
-             {"right", FaceSelector::kRight},
-             {"top", FaceSelector::kTop},
-             {"bottom", FaceSelector::kBottom},
-             {"side", FaceSelector::kSide},
-             {"all", FaceSelector::kAll},
-             {"vertical", FaceSelector::kVertical},
-             {"horizontal", FaceSelector::kHorizontal},
-             {"aslant", FaceSelector::kAslant},
-             {"nutant", FaceSelector::kNutant},
-             {"border", FaceSelector::kBorder},
-             {"inside", FaceSelector::kInside},
-         }};
-         FaceSelector selector = FaceSelector::kAll;
-         for (const auto& [name, value] : kSelectors) {
-           if (name == a.string("select")) selector = value;
-         }
          return comp_faces(t, id, selector);
        }});
   return ops;

@@ -78,7 +78,7 @@ class Checker {
   std::optional<CompType> check_comp_type(const Expr& expr);
   void check_plain_branches(const Item& item, std::size_t expected, const char* what);
   void check_selector_keys(const Item& item, const std::vector<std::string>& selectors,
-                           bool indices, bool indices_only);
+                           bool indices);
   void check_size_keys(const Item& item, const std::vector<Branch>& branches);
   void check_branch_items(const Branch& branch);
 

@@ -453,14 +453,21 @@ void Checker::check_comp(const Item& item) {
   }
   static const std::vector<std::string> kNone;
   const OperationInfo* info = find_operation(item.name);
-  check_selector_keys(item, info ? info->selectors : kNone,
-                      /*indices=*/true,
-                      type && *type != CompType::kFaces && *type != CompType::kSideFaces);
+  check_selector_keys(item, info ? info->selectors : kNone, /*indices=*/true);
+  if (type == CompType::kEdges) return;
+  for (const Branch& branch : item.branches) {  // CityEngine's roof edge classes
+    const Expr* key = branch.key.get();
+    if (key != nullptr && key->kind == ExprKind::kIdent &&
+        (key->text == "eave" || key->text == "hip" || key->text == "valley" ||
+         key->text == "ridge")) {
+      error("CGA315", "selector '" + key->text + "' applies to edges only (comp(e))", key->range);
+    }
+  }
 }
 
 // Every branch keyed by a distinct selector (or, for comp, a component index).
 void Checker::check_selector_keys(const Item& item, const std::vector<std::string>& selectors,
-                                  bool indices, bool indices_only) {
+                                  bool indices) {
   std::set<std::string> seen;
   for (const Branch& branch : item.branches) {
     if (branch.repeat) {
@@ -477,14 +484,12 @@ void Checker::check_selector_keys(const Item& item, const std::vector<std::strin
     if (key.kind == ExprKind::kIdent || key.kind == ExprKind::kString) {
       name = key.text;
       const bool known = std::find(selectors.begin(), selectors.end(), name) != selectors.end();
-      if (!known || indices_only) {
+      if (!known) {
         std::string list;
         for (const std::string& s : selectors) list += (list.empty() ? "" : ", ") + s;
         error("CGA315",
-              indices_only
-                  ? "selector '" + name + "' applies to faces only; edges and vertices take indices"
-                  : "unknown selector '" + name + "' for " + quoted(item.name) + " (expected " +
-                        list + (indices ? " or an index" : "") + ")",
+              "unknown selector '" + name + "' for " + quoted(item.name) + " (expected " + list +
+                  (indices ? " or an index" : "") + ")",
               key.range);
         continue;
       }
@@ -552,7 +557,7 @@ void Checker::check_generic(const Item& item, const OperationInfo& info) {
   } else if (info.keys == KeyUse::kSize) {
     check_size_keys(item, item.branches);
   } else if (info.keys == KeyUse::kSelector && item.has_block) {
-    check_selector_keys(item, info.selectors, false, false);
+    check_selector_keys(item, info.selectors, false);
   } else if (info.keys == KeyUse::kNone && item.has_block) {
     check_plain_branches(item, 1, "");
   }

@@ -13,20 +13,7 @@ namespace insula::lang::cga::detail {
 namespace {
 
 shape::FaceSelector face_selector(std::string_view name) {
-  if (name == "front") return shape::FaceSelector::kFront;
-  if (name == "back") return shape::FaceSelector::kBack;
-  if (name == "left") return shape::FaceSelector::kLeft;
-  if (name == "right") return shape::FaceSelector::kRight;
-  if (name == "top") return shape::FaceSelector::kTop;
-  if (name == "bottom") return shape::FaceSelector::kBottom;
-  if (name == "side") return shape::FaceSelector::kSide;
-  if (name == "vertical") return shape::FaceSelector::kVertical;
-  if (name == "horizontal") return shape::FaceSelector::kHorizontal;
-  if (name == "aslant") return shape::FaceSelector::kAslant;
-  if (name == "nutant") return shape::FaceSelector::kNutant;
-  if (name == "border") return shape::FaceSelector::kBorder;
-  if (name == "inside") return shape::FaceSelector::kInside;
-  return shape::FaceSelector::kAll;
+  return shape::face_selector_named(name).value_or(shape::FaceSelector::kAll);
 }
 
 std::string_view axis_name(Axis a) {
@@ -199,7 +186,8 @@ void Engine::repeat(const CItem& c, State& st, std::size_t axis_index) {
 }
 
 const CBranch* Engine::comp_target(const CItem& c, std::uint32_t piece, std::size_t ordinal,
-                                   const Mesh* parent, const std::vector<bool>* border) {
+                                   const Mesh* parent, const std::vector<bool>* border,
+                                   const std::vector<std::vector<bool>>* selected) {
   if (!c.indices.empty()) {  // CS(type, i, j, ...){ A | B | ... }: component i -> A, ...
     for (std::size_t j = 0; j < c.indices.size() && j < c.branches.size(); ++j) {
       if (c.indices[j] == piece) return &c.branches[j];
@@ -237,9 +225,35 @@ const CBranch* Engine::comp_target(const CItem& c, std::uint32_t piece, std::siz
       continue;
     }
     if (faces && shape::face_matches(selector, n)) return &b;
+    const std::size_t branch = static_cast<std::size_t>(&b - c.branches.data());
+    if (!faces && selected != nullptr && piece < (*selected)[branch].size() &&
+        (*selected)[branch][piece]) {
+      return &b;
+    }
   }
   return nullptr;
 }
+
+namespace {
+
+// Per branch of an edge or vertex split keyed by selectors: which components it picks (the
+// registry's own selection, shape/ops_comp_select.cc, on the same welded mesh).
+std::vector<std::vector<bool>> edge_or_vertex_selections(const CItem& c, const Mesh& parent) {
+  std::vector<std::vector<bool>> selected(c.branches.size());
+  const Mesh welded = kernel::weld(parent);
+  const std::vector<shape::MeshEdge> edges =
+      c.comp == CompKind::kEdges ? shape::mesh_edges(welded) : std::vector<shape::MeshEdge>();
+  for (std::size_t b = 0; b < c.branches.size(); ++b) {
+    const CBranch& branch = c.branches[b];
+    if (!branch.has_key || branch.index >= 0) continue;
+    const shape::FaceSelector selector = face_selector(branch.selector);
+    selected[b] = c.comp == CompKind::kEdges ? shape::select_edges(welded, edges, selector)
+                                             : shape::select_vertices(welded, selector);
+  }
+  return selected;
+}
+
+}  // namespace
 
 void Engine::comp(const CItem& c, State& st) {
   const char* type = c.comp == CompKind::kEdges      ? "edges"
@@ -263,16 +277,19 @@ void Engine::comp(const CItem& c, State& st) {
       (*st.selector == "inside" || *st.selector == "border")) {
     border.assign(border.size(), *st.selector == "border");
   }
+  const bool faces = c.comp == CompKind::kFaces || c.comp == CompKind::kSideFaces;
+  const std::vector<std::vector<bool>> selected = !faces && o.parent_mesh
+                                                      ? edge_or_vertex_selections(c, *o.parent_mesh)
+                                                      : std::vector<std::vector<bool>>();
   std::size_t ordinal = 0;
   for (std::uint32_t k = 0; k < total; ++k) {
-    const bool faces = c.comp == CompKind::kFaces || c.comp == CompKind::kSideFaces;
     if (c.comp == CompKind::kSideFaces &&
         !shape::face_matches(shape::FaceSelector::kSide,
                              kernel::face_normal(*o.parent_mesh, o.pieces[k]))) {
       continue;
     }
-    const CBranch* b =
-        comp_target(c, o.pieces[k], ordinal++, faces ? o.parent_mesh.get() : nullptr, &border);
+    const CBranch* b = comp_target(c, o.pieces[k], ordinal++, faces ? o.parent_mesh.get() : nullptr,
+                                   &border, &selected);
     if (b == nullptr) continue;
     State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, total);
     piece.selector = &b->selector;

@@ -3,6 +3,7 @@
 // counts (docs/cityengine-dialect.md).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 
 #include "base/text_encoding.h"
@@ -293,6 +294,36 @@ TEST(CityEngineDialect, NegativeExtrusionGoesBehindTheFace) {
   const shape::Scope& scope = r[0].terminals_store[0].scope;
   EXPECT_NEAR(scope.size.y, 2, 1e-9);     // the extrusion axis
   EXPECT_NEAR(scope.origin.z, -2, 1e-9);  // from 2 m below the lot up to it
+}
+
+TEST(CityEngineDialect, RoofEdgesByClass) {
+  auto p = compile_text(
+      "Lot --> extrude(6) comp(f) { top : Top | side : W. }\n"
+      "Top --> roofHip(30) comp(e) { ridge : R | hip : H | eave : E | valley : V }\n"
+      "R --> report(\"ridge\", scope.sx)\nH --> report(\"hip\", scope.sx)\n"
+      "E --> report(\"eave\", scope.sx)\nV --> report(\"valley\", scope.sx)\n");
+  ASSERT_TRUE(p);
+  Lot l_lot;
+  l_lot.id = "l";
+  l_lot.polygons.push_back({{{0, 0}, {20, 0}, {20, 8}, {8, 8}, {8, 16}, {0, 16}}, {}});
+  const auto r = derive_all(*p, {rectangle_lot(20, 10), l_lot});
+  ASSERT_TRUE(r[0].ok && r[1].ok) << diagnostics_text(r[0]) << diagnostics_text(r[1]);
+  // 20 x 10 at 30 degrees: a 10 m ridge, four hips from 5 m in and 5 tan 30 up, the perimeter.
+  const double hip = std::sqrt(50 + 25.0 / 3);
+  const auto& rect = r[0].reports;
+  EXPECT_EQ(rect.at("ridge").count, 1U);
+  EXPECT_NEAR(rect.at("ridge").sum, 10, 1e-6);
+  EXPECT_EQ(rect.at("hip").count, 4U);
+  EXPECT_NEAR(rect.at("hip").sum, 4 * hip, 1e-6);
+  EXPECT_NEAR(rect.at("eave").sum, 60, 1e-6);
+  EXPECT_EQ(rect.count("valley"), 0U);
+  // The L (arms 8 m wide): one valley at the inner corner, five hips, two ridges, six eaves.
+  const auto& l = r[1].reports;
+  EXPECT_EQ(l.at("valley").count, 1U);
+  EXPECT_EQ(l.at("hip").count, 5U);
+  EXPECT_EQ(l.at("ridge").count, 2U);
+  EXPECT_EQ(l.at("eave").count, 6U);
+  EXPECT_NEAR(l.at("eave").sum, 72, 1e-6);
 }
 
 // ---- imports

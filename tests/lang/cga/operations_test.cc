@@ -64,9 +64,10 @@ TEST(CgaOperations, ArgumentsMapOntoRegistryParameters) {
 
 TEST(CgaOperations, SelectorsAreTheRegistryChoices) {
   using V = std::vector<std::string>;
-  EXPECT_EQ(find_operation("comp")->selectors,
-            (V{"front", "back", "left", "right", "top", "bottom", "side", "all", "vertical",
-               "horizontal", "aslant", "nutant", "border", "inside"}));
+  EXPECT_EQ(
+      find_operation("comp")->selectors,
+      (V{"front", "back", "left", "right", "top", "bottom", "side", "all", "vertical", "horizontal",
+         "aslant", "nutant", "border", "inside", "eave", "hip", "valley", "ridge"}));
   EXPECT_EQ(find_operation("shapeU")->selectors, (V{"shape", "remainder"}));
   EXPECT_TRUE(find_operation("innerRectangle")->selectors_are_pieces);
   EXPECT_EQ(find_operation("setback")->selectors,
