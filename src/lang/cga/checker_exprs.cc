@@ -151,10 +151,7 @@ void Checker::check_member(const Expr& expr) {
     return;
   }
   if (cityengine() && function(dotted_name(expr), 0) != nullptr) return;  // imported constant
-  if (cityengine() && dotted_name(expr) == "geometry." + expr.text &&
-      is_geometry_function(expr.text)) {
-    return;
-  }
+  if (cityengine() && geometry_query_of(expr) != nullptr) return;
   if (cityengine() && object.kind == ExprKind::kIdent) {
     const std::string name = object.text + "." + expr.text;
     if (contains(kUnsupportedFunctions, name)) {
@@ -186,17 +183,48 @@ void Checker::check_member(const Expr& expr) {
   }
 }
 
+// CityEngine's geometry.* functions (shape/geometry_queries.h): the argument each takes, a
+// selector word where it is one.
+void Checker::check_geometry_call(const Expr& expr, const shape::GeometryQueryInfo& query) {
+  const std::string name = "geometry." + std::string(query.name);
+  const std::size_t count = expr.operands.size() - 1;
+  const bool takes = query.argument != shape::QueryArgument::kNone;
+  if (count > (takes ? 1U : 0U) || (count == 0 && takes && !query.optional_argument)) {
+    error("CGA312",
+          "'" + name + "' expects " + (takes ? "1 argument" : std::string("no argument")) +
+              ", found " + std::to_string(count),
+          expr.range);
+    return;
+  }
+  if (count == 0) return;
+  const Expr& arg = *expr.operands[1];
+  if (query.argument == shape::QueryArgument::kTolerance) {
+    check_expr(arg);
+    return;
+  }
+  const std::string word = dotted_name(arg);
+  if (query.argument == shape::QueryArgument::kFaceSelector) {
+    if (word.find('.') != std::string::npos) {
+      error("CGA902",
+            "CityEngine function '" + name + "' with selector '" + word + "' is not supported",
+            arg.range);
+    } else if (word != "surface" && !geometry_face_selector(word)) {
+      error("CGA315", "unknown selector '" + word + "' for '" + name + "'", arg.range);
+    }
+    return;
+  }
+  if (!shape::angle_type_named(word)) {
+    error("CGA315",
+          "unknown angle type '" + word + "' for '" + name + "' (maxSlope, azimuth or zenith)",
+          arg.range);
+  }
+}
+
 void Checker::check_call(const Expr& expr) {
   if (check_user_call(expr)) return;
   const Expr& callee = *expr.operands[0];
-  if (cityengine() && callee.kind == ExprKind::kMember &&
-      dotted_name(callee) == "geometry." + callee.text && is_geometry_function(callee.text)) {
-    if (expr.operands.size() > 1) {
-      error("CGA902",
-            "CityEngine function 'geometry." + callee.text +
-                "' with a component selector is not supported",
-            callee.range);
-    }
+  if (const shape::GeometryQueryInfo* query = cityengine() ? geometry_query_of(callee) : nullptr) {
+    check_geometry_call(expr, *query);
     return;
   }
   const std::size_t count = expr.operands.size() - 1;

@@ -14,6 +14,7 @@
 #include "base/diagnostic.h"
 #include "lang/cga/ast.h"
 #include "lang/cga/checker.h"
+#include "lang/cga/geometry_functions.h"
 #include "lang/cga/operations.h"
 #include "shape/operation.h"
 
@@ -99,6 +100,7 @@ class Checker {
 
   // ---- checker_exprs.cc
   void check_call(const Expr& expr);
+  void check_geometry_call(const Expr& expr, const shape::GeometryQueryInfo& query);
   void check_member(const Expr& expr);
   void check_identifier(const Expr& expr, ExprRole role);
 

@@ -9,6 +9,7 @@
 #include "lang/cga/checker.h"
 #include "lang/cga/cityengine_names.h"
 #include "lang/cga/eval.h"
+#include "lang/cga/geometry_functions.h"
 #include "lang/cga/operations.h"
 
 namespace insula::lang::cga {
@@ -290,8 +291,8 @@ class Compiler {
     if (const std::uint32_t fn = function_id(dotted_name(e), 0); fn != kNoExpr) {
       return add(ENode{ECode::kCall, 0, fn, e.range, {}});  // an imported constant
     }
-    if (const std::optional<ShapeAttr> g = geometry_function(e)) {
-      return add(ENode{ECode::kShapeAttr, 0, static_cast<std::uint32_t>(*g), e.range, {}});
+    if (const shape::GeometryQueryInfo* query = geometry_query_of(e)) {
+      return geometry(*query, nullptr, e.range);
     }
     if (object.kind == ExprKind::kIdent && e.text == "sel" && is_shape_object(object.text)) {
       return add(ENode{ECode::kCompSel, 0, 0, e.range, {}});
@@ -315,6 +316,9 @@ class Compiler {
   std::uint32_t call(const Expr& e) {
     const Expr& callee = *e.operands[0];
     const std::size_t argc = e.operands.size() - 1;
+    if (const shape::GeometryQueryInfo* query = geometry_query_of(callee); query && argc <= 1) {
+      return geometry(*query, argc == 1 ? e.operands[1].get() : nullptr, e.range);
+    }
     std::vector<std::uint32_t> kids;
     for (std::size_t i = 1; i < e.operands.size(); ++i) kids.push_back(expr(*e.operands[i]));
     if (callee.kind == ExprKind::kMember && callee.text == "occ" &&
@@ -325,9 +329,6 @@ class Compiler {
       }
       program_->uses_occlusion = true;
       return add(ENode{ECode::kOcc, 0, 0, e.range, kids});
-    }
-    if (const std::optional<ShapeAttr> g = geometry_function(callee); g && argc == 0) {
-      return add(ENode{ECode::kShapeAttr, 0, static_cast<std::uint32_t>(*g), e.range, {}});
     }
     if (function_ids_.count(dotted_name(callee))) {
       const std::uint32_t fn = function_id(dotted_name(callee), argc);
@@ -550,14 +551,22 @@ class Compiler {
     }
   }
 
-  // CityEngine's geometry.area() and friends (functions.h, kGeometryFunctions).
-  static std::optional<ShapeAttr> geometry_function(const Expr& e) {
-    if (e.kind != ExprKind::kMember || dotted_name(e) != "geometry." + e.text) return std::nullopt;
-    if (e.text == "area") return ShapeAttr::kSurfaceArea;
-    if (e.text == "volume") return ShapeAttr::kMeshVolume;
-    if (e.text == "nVertices") return ShapeAttr::kVertexCount;
-    if (e.text == "nFaces") return ShapeAttr::kFaceCount;
-    return std::nullopt;
+  // CityEngine's geometry.area(top) and friends (geometry_functions.h): the selector or angle
+  // type is a word fixed here, a tolerance an expression.
+  std::uint32_t geometry(const shape::GeometryQueryInfo& query, const Expr* arg, Range range) {
+    ENode node{ECode::kGeometry, 0, static_cast<std::uint32_t>(query.query), range, {}};
+    if (arg != nullptr && query.argument == shape::QueryArgument::kTolerance) {
+      node.kids.push_back(expr(*arg));
+    } else if (arg != nullptr && query.argument == shape::QueryArgument::kAngleType) {
+      node.op = static_cast<std::uint8_t>(
+          shape::angle_type_named(dotted_name(*arg)).value_or(shape::AngleType::kMaxSlope));
+    } else if (arg != nullptr) {
+      node.op = static_cast<std::uint8_t>(
+          geometry_face_selector(dotted_name(*arg)).value_or(shape::FaceSelector::kAll));
+    } else {
+      node.op = static_cast<std::uint8_t>(shape::FaceSelector::kAll);
+    }
+    return add(std::move(node));
   }
 
   static bool pivot_word(const Expr& e) {

@@ -43,6 +43,8 @@ enum class ECode : std::uint8_t {
   kCase,       // kids: condition, value, ..., else value (CityEngine's `case`)
   kChance,     // kids: percentage, value, ..., else value (CityEngine's `30% : v else : w`)
   kCompSel,    // comp.sel: the selector text of the comp branch the shape came from
+  kGeometry,   // CityEngine's geometry.*: query a (shape::GeometryQuery), its selector or angle
+               // type op, kids: the tolerance when it takes one
 };
 
 enum class ShapeAttr : std::uint8_t {
@@ -57,11 +59,6 @@ enum class ShapeAttr : std::uint8_t {
   kDepth,
   kIndex,
   kTotal,
-  // CityEngine's geometry.* functions, from the shape's mesh:
-  kSurfaceArea,  // geometry.area(): every face
-  kMeshVolume,   // geometry.volume(): enclosed volume (0 when open)
-  kVertexCount,  // geometry.nVertices()
-  kFaceCount,    // geometry.nFaces()
 };
 
 enum class Function : std::uint8_t {

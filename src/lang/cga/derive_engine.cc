@@ -96,28 +96,15 @@ double Engine::shape_attribute(ShapeAttr a) {
       return s.index;
     case ShapeAttr::kTotal:
       return s.total;
-    case ShapeAttr::kSurfaceArea:
-    case ShapeAttr::kMeshVolume:
-    case ShapeAttr::kVertexCount:
-    case ShapeAttr::kFaceCount:
-      return geometry_measure(a, s);
   }
   return 0;
 }
 
-double Engine::geometry_measure(ShapeAttr a, const State& s) const {
+double Engine::geometry(shape::GeometryQuery query, std::uint8_t option, double tolerance) {
+  const State& s = *cur_;
   const Materialized m = materialize(out_.geometry[s.geometry], s.scope.size);
   if (!m.mesh) return 0;
-  switch (a) {
-    case ShapeAttr::kSurfaceArea:
-      return kernel::surface_area(*m.mesh);
-    case ShapeAttr::kMeshVolume:
-      return std::fabs(kernel::volume(*m.mesh));
-    case ShapeAttr::kVertexCount:
-      return static_cast<double>(m.mesh->vertex_count());
-    default:
-      return static_cast<double>(m.mesh->face_count());
-  }
+  return shape::geometry_query(*m.mesh, s.scope, query, option, tolerance);
 }
 
 std::string Engine::occlusion(const std::string& /*what*/, Range /*range*/) {

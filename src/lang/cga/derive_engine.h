@@ -111,8 +111,7 @@ class Engine final : public EvalContext {
   std::string comp_selector() override {
     return cur_ != nullptr && cur_->selector != nullptr ? *cur_->selector : std::string();
   }
-  // geometry.area(), volume(), nVertices(), nFaces() of the shape's mesh.
-  double geometry_measure(ShapeAttr a, const State& s) const;
+  double geometry(shape::GeometryQuery query, std::uint8_t option, double tolerance) override;
 
   std::string occlusion(const std::string& /*what*/, Range /*range*/) override;
 

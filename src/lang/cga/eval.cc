@@ -425,6 +425,14 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
     }
     case ECode::kCompSel:
       return context.comp_selector();
+    case ECode::kGeometry: {
+      const double tolerance =
+          n.kids.empty() ? 0 : as_number(evaluate(program, n.kids[0], context), n.range);
+      const auto query = static_cast<shape::GeometryQuery>(n.a);
+      const double value = context.geometry(query, n.op, tolerance);
+      if (shape::is_test(query)) return value != 0;
+      return value;
+    }
     case ECode::kParam:
       if (n.a >= context.frame.size()) fail(n.range, "internal: parameter outside its rule");
       return context.frame[n.a];

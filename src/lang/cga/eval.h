@@ -12,6 +12,7 @@
 
 #include "lang/cga/ast.h"
 #include "lang/cga/compile.h"
+#include "shape/geometry_queries.h"
 #include "shape/rng.h"
 #include "shape/scope.h"
 #include "shape/value.h"
@@ -50,6 +51,8 @@ class EvalContext {
   virtual ~EvalContext() = default;
   virtual shape::Value attribute(std::uint32_t attr, Range range) = 0;
   virtual double shape_attribute(ShapeAttr attr) = 0;
+  // CityEngine's geometry.* (shape/geometry_queries.h) on the shape's geometry.
+  virtual double geometry(shape::GeometryQuery query, std::uint8_t option, double tolerance) = 0;
   // comp.sel: the selector of the comp branch the shape came from ("" when none).
   virtual std::string comp_selector() = 0;
   // "none", "part" or "full" for Shape.occ(`what`).

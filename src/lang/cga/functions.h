@@ -98,26 +98,6 @@ inline constexpr AttributeInfo kShapeAttributes[] = {
     {"occ", 1, "occlusion: \"none\", \"part\" or \"full\"; argument \"all\" (shapes of the lot)"},
 };
 
-// CityEngine's `geometry.*` functions on the shape's mesh (called with no argument; the forms
-// with a component selector are not supported yet).
-struct GeometryFunction {
-  std::string_view name;
-  std::string_view doc;
-};
-inline constexpr GeometryFunction kGeometryFunctions[] = {
-    {"area", "surface area of every face of the shape's geometry"},
-    {"volume", "volume the geometry encloses (0 when it is not closed)"},
-    {"nVertices", "number of vertices"},
-    {"nFaces", "number of faces"},
-};
-
-constexpr bool is_geometry_function(std::string_view name) {
-  for (const GeometryFunction& f : kGeometryFunctions) {
-    if (f.name == name) return true;
-  }
-  return false;
-}
-
 // Object names whose members are shape attributes.
 inline constexpr std::string_view kShapeObjects[] = {"Shape", "shape", "Scope",
                                                      "scope", "split", "comp"};

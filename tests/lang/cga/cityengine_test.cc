@@ -15,6 +15,7 @@
 #include "lang/cga/imports.h"
 #include "lang/cga/operations.h"
 #include "lang/cga/printer.h"
+#include "shape/geometry_queries.h"
 #include "test_util.h"
 
 namespace insula::lang::cga {
@@ -153,8 +154,12 @@ TEST(CityEngineDialect, UnsupportedTablesNameNoOperationInsulaHas) {
     EXPECT_EQ(find_operation(name), nullptr) << name;
   }
   for (std::string_view name : kDetailOperations) EXPECT_EQ(find_operation(name), nullptr) << name;
-  for (std::string_view name : kUnsupportedFunctions)
+  for (std::string_view name : kUnsupportedFunctions) {
     EXPECT_EQ(find_function(name), nullptr) << name;
+    if (name.starts_with("geometry.")) {
+      EXPECT_EQ(shape::find_geometry_query(name.substr(9)), nullptr) << name;
+    }
+  }
 }
 
 TEST(CityEngineDialect, StartsFromTheMarkedStartRule) {
@@ -324,6 +329,47 @@ TEST(CityEngineDialect, RoofEdgesByClass) {
   EXPECT_EQ(l.at("ridge").count, 2U);
   EXPECT_EQ(l.at("eave").count, 6U);
   EXPECT_NEAR(l.at("eave").sum, 72, 1e-6);
+}
+
+TEST(CityEngineDialect, GeometryFunctions) {
+  auto p = compile_text(
+      "version \"2024.0\"\n"
+      "Lot --> report(\"rect\", geometry.isRectangular(5)) report(\"concave\", "
+      "geometry.isConcave()) extrude(6) Mass\n"
+      "Mass --> report(\"h\", geometry.height()) report(\"top\", geometry.area(top))\n"
+      "  report(\"side\", geometry.area(side)) report(\"edges\", geometry.nEdges())\n"
+      "  report(\"closed\", geometry.isClosedSurface()) comp(f) { top : Top }\n"
+      "Top --> roofGable(45) comp(f) { aslant : Plane }\n"
+      "Plane --> report(\"slope\", geometry.angle(maxSlope)) report(\"azimuth\", "
+      "geometry.angle(azimuth)) report(\"planar\", geometry.isPlanar(1))\n");
+  ASSERT_TRUE(p);
+  Lot l_lot;
+  l_lot.id = "l";
+  l_lot.polygons.push_back({{{0, 0}, {20, 0}, {20, 8}, {8, 8}, {8, 16}, {0, 16}}, {}});
+  const auto r = derive_all(*p, {rectangle_lot(20, 10), l_lot});
+  ASSERT_TRUE(r[0].ok && r[1].ok) << diagnostics_text(r[0]) << diagnostics_text(r[1]);
+  const auto& rect = r[0].reports;
+  EXPECT_EQ(rect.at("rect").sum, 1);
+  EXPECT_EQ(rect.at("concave").sum, 0);
+  EXPECT_NEAR(rect.at("h").sum, 6, 1e-9);
+  EXPECT_NEAR(rect.at("top").sum, 200, 1e-9);
+  EXPECT_NEAR(rect.at("side").sum, 6 * 60, 1e-9);
+  EXPECT_EQ(rect.at("edges").sum, 12);
+  EXPECT_EQ(rect.at("closed").sum, 1);
+  // A gable on 20 x 10: two planes at 45 degrees, one falling south (180), one north (0).
+  EXPECT_EQ(rect.at("slope").count, 2U);
+  EXPECT_NEAR(rect.at("slope").sum, 90, 1e-6);
+  EXPECT_NEAR(rect.at("azimuth").sum, 180, 1e-6);
+  EXPECT_EQ(rect.at("planar").sum, 2);
+  EXPECT_EQ(r[1].reports.at("rect").sum, 0);
+  EXPECT_EQ(r[1].reports.at("concave").sum, 1);
+  EXPECT_EQ(check_text("version \"2024.0\"\nLot --> report(\"a\", geometry.area(ridge)) X.\n"),
+            "t.cga:2:35: error[CGA315]: unknown selector 'ridge' for 'geometry.area'\n");
+  EXPECT_EQ(check_text("version \"2024.0\"\nLot --> report(\"a\", geometry.angle(up)) X.\n"),
+            "t.cga:2:36: error[CGA315]: unknown angle type 'up' for 'geometry.angle' (maxSlope, "
+            "azimuth or zenith)\n");
+  EXPECT_EQ(check_text("version \"2024.0\"\nLot --> report(\"a\", geometry.isPlanar()) X.\n"),
+            "t.cga:2:21: error[CGA312]: 'geometry.isPlanar' expects 1 argument, found 0\n");
 }
 
 // ---- imports
