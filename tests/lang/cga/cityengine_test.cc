@@ -301,6 +301,14 @@ TEST(CityEngineDialect, NegativeExtrusionGoesBehindTheFace) {
   EXPECT_NEAR(scope.origin.z, -2, 1e-9);  // from 2 m below the lot up to it
 }
 
+// An L of two 8 m wide arms, 20 by 16 m.
+Lot l_lot() {
+  Lot lot;
+  lot.id = "l";
+  lot.polygons.push_back({{{0, 0}, {20, 0}, {20, 8}, {8, 8}, {8, 16}, {0, 16}}, {}});
+  return lot;
+}
+
 TEST(CityEngineDialect, RoofEdgesByClass) {
   auto p = compile_text(
       "Lot --> extrude(6) comp(f) { top : Top | side : W. }\n"
@@ -308,10 +316,7 @@ TEST(CityEngineDialect, RoofEdgesByClass) {
       "R --> report(\"ridge\", scope.sx)\nH --> report(\"hip\", scope.sx)\n"
       "E --> report(\"eave\", scope.sx)\nV --> report(\"valley\", scope.sx)\n");
   ASSERT_TRUE(p);
-  Lot l_lot;
-  l_lot.id = "l";
-  l_lot.polygons.push_back({{{0, 0}, {20, 0}, {20, 8}, {8, 8}, {8, 16}, {0, 16}}, {}});
-  const auto r = derive_all(*p, {rectangle_lot(20, 10), l_lot});
+  const auto r = derive_all(*p, {rectangle_lot(20, 10), l_lot()});
   ASSERT_TRUE(r[0].ok && r[1].ok) << diagnostics_text(r[0]) << diagnostics_text(r[1]);
   // 20 x 10 at 30 degrees: a 10 m ridge, four hips from 5 m in and 5 tan 30 up, the perimeter.
   const double hip = std::sqrt(50 + 25.0 / 3);
@@ -343,10 +348,7 @@ TEST(CityEngineDialect, GeometryFunctions) {
       "Plane --> report(\"slope\", geometry.angle(maxSlope)) report(\"azimuth\", "
       "geometry.angle(azimuth)) report(\"planar\", geometry.isPlanar(1))\n");
   ASSERT_TRUE(p);
-  Lot l_lot;
-  l_lot.id = "l";
-  l_lot.polygons.push_back({{{0, 0}, {20, 0}, {20, 8}, {8, 8}, {8, 16}, {0, 16}}, {}});
-  const auto r = derive_all(*p, {rectangle_lot(20, 10), l_lot});
+  const auto r = derive_all(*p, {rectangle_lot(20, 10), l_lot()});
   ASSERT_TRUE(r[0].ok && r[1].ok) << diagnostics_text(r[0]) << diagnostics_text(r[1]);
   const auto& rect = r[0].reports;
   EXPECT_EQ(rect.at("rect").sum, 1);
