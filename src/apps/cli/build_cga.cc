@@ -141,7 +141,9 @@ int build_cga(const BuildOptions& options) {
   print_diagnostics(checked.diagnostics, source, options.quiet);
   if (!checked.ok) return kExitInput;
   if (checked.start_symbol.empty()) {
-    std::fprintf(stderr, "%s: error: no rule to start from (every rule takes parameters)\n",
+    std::fprintf(stderr,
+                 "%s: error: no rule to start from (a library: no rules, or every rule takes "
+                 "parameters; give --start or build a file that imports it)\n",
                  options.input.c_str());
     return kExitInput;
   }

@@ -229,6 +229,12 @@ void Checker::choose_start() {
     if (set.rules.empty()) continue;
     if (!lowest || set.priority < lowest->priority) lowest = &set;
   }
+  if (!lowest && cityengine() && options_.start.empty()) {  // constants for others to import
+    diagnostics_.push_back(
+        base::Diagnostic::warning("CGA433", "the file has no rules: none can start a derivation",
+                                  base::Span::whole(source_.name())));
+    return;
+  }
   if (!lowest) {
     file_error("CGA314", "the grammar has no rules");
     return;

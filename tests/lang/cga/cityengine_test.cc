@@ -167,6 +167,9 @@ TEST(CityEngineDialect, StartsFromTheMarkedStartRule) {
   base::Result<Grammar> g = parse(source);
   ASSERT_TRUE(g.ok());
   EXPECT_EQ(check(g.value(), source).start_symbol, "Building");
+  // A file of constants only is a library others import, as in CityEngine: a warning, no start.
+  EXPECT_EQ(check_text("version \"2023.1\"\nconst floorH = 3.2\n"),
+            "t.cga: warning[CGA433]: the file has no rules: none can start a derivation\n");
 }
 
 TEST(CityEngineDialect, DerivesCasesParametersFunctionsAndTerminals) {
