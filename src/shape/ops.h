@@ -185,6 +185,23 @@ OpResult rotate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, kern
                    const Scope* object = nullptr);
 // The frame parameter's choices and value ("scope", "pivot", "object", "world").
 Frame frame_from(std::string_view name);
+// CityEngine's comp selectors in a frame: `object.front` ... `object.side` (the lot's scope read
+// as CityEngine's) and `world.north south east west up down side` (world.south is the world
+// frame's +z, CityEngine's "front"). The frame and the face selector a word names, or nullopt.
+struct FrameSelector {
+  Frame frame = Frame::kWorld;
+  FaceSelector selector = FaceSelector::kAll;
+};
+std::optional<FrameSelector> frame_selector_named(std::string_view word);
+// Every word frame_selector_named knows, for the comp operation's declaration.
+std::vector<std::string> frame_selector_words();
+// Whether a face with world-space unit normal `n` matches `selector` in its frame; `object` is
+// the object frame's scope (null: the world's).
+bool face_matches_in_frame(const FrameSelector& selector, kernel::Vec3 n, const Scope* object);
+// comp_faces with a selector in the world or object frame (frame_selector_named); `object` is
+// the object frame's scope.
+OpResult comp_faces_in_frame(ShapeTree& tree, ShapeId id, const FrameSelector& selector,
+                             const Scope* object);
 
 // --- offset and setback (ops_offset.cc)
 enum class OffsetPart : std::uint8_t { kInside, kBorder, kAll };

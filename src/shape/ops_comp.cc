@@ -124,6 +124,22 @@ OpResult comp_faces(ShapeTree& tree, ShapeId id, FaceSelector selector) {
   return finish(tree, id, std::move(result));
 }
 
+OpResult comp_faces_in_frame(ShapeTree& tree, ShapeId id, const FrameSelector& selector,
+                             const Scope* object) {
+  const Shape& s = tree[id];
+  if (!s.mesh) return OpResult::failure("the shape has no faces");
+  const std::shared_ptr<const Mesh> mesh = s.mesh;
+  const Scope scope = s.scope;
+  OpResult result;
+  for (std::size_t f = 0; f < mesh->face_count(); ++f) {
+    const Vec3 n = scope.direction_to_world(kernel::face_normal(*mesh, f));
+    if (!face_matches_in_frame(selector, n, object)) continue;
+    const std::optional<ShapeId> child = add_face_child(tree, id, f);
+    if (child) result.add(*child, static_cast<std::uint32_t>(f));
+  }
+  return finish(tree, id, std::move(result));
+}
+
 OpResult comp_edges(ShapeTree& tree, ShapeId id, FaceSelector selector) {
   const Shape& s = tree[id];
   if (!s.mesh) return OpResult::failure("the shape has no edges");
@@ -199,6 +215,18 @@ OpResult comp_vertices(ShapeTree& tree, ShapeId id, FaceSelector selector) {
   return finish(tree, id, std::move(result));
 }
 
+namespace {
+
+std::vector<std::string> comp_selector_words() {
+  std::vector<std::string> words = {
+      "front",      "back",   "left",   "right",  "top",    "bottom", "side", "all",    "vertical",
+      "horizontal", "aslant", "nutant", "border", "inside", "eave",   "hip",  "valley", "ridge"};
+  for (std::string& word : frame_selector_words()) words.push_back(std::move(word));
+  return words;
+}
+
+}  // namespace
+
 std::vector<Operation> comp_operations() {
   std::vector<Operation> ops;
   ops.push_back(
@@ -219,12 +247,15 @@ std::vector<Operation> comp_operations() {
          "which components (the roof classes eave, hip, valley, ridge: edges only; face edges: "
          "all)",
          ArgValue{std::string("all")},
-         {"front", "back", "left", "right", "top", "bottom", "side", "all", "vertical",
-          "horizontal", "aslant", "nutant", "border", "inside", "eave", "hip", "valley", "ridge"},
+         comp_selector_words(),
          {},
          {}}},
-       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context& context) {
          const std::string& type = a.string("type");
+         if (const std::optional<FrameSelector> in_frame = frame_selector_named(a.string("select"));
+             in_frame && type == "faces") {
+           return comp_faces_in_frame(t, id, *in_frame, context.object);
+         }
          const FaceSelector selector =
              face_selector_named(a.string("select")).value_or(FaceSelector::kAll);
          if (type == "edges") return comp_edges(t, id, selector);

@@ -3,10 +3,12 @@
 // where it is in the world (mirror and translate/rotate excepted). Choices and differences from
 // CityEngine: docs/operations-cityengine.md.
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 
 #include "shape/ops.h"
 
@@ -223,6 +225,52 @@ const char* const kAbsAsRel =
     "abs in the scope or pivot frame is read as rel (Insula keeps no pivot apart from the scope)";
 
 }  // namespace
+
+namespace {
+
+constexpr std::array<std::pair<std::string_view, FaceSelector>, 7> kWorldWords = {{
+    {"world.north", FaceSelector::kBack},
+    {"world.south", FaceSelector::kFront},
+    {"world.east", FaceSelector::kRight},
+    {"world.west", FaceSelector::kLeft},
+    {"world.up", FaceSelector::kTop},
+    {"world.down", FaceSelector::kBottom},
+    {"world.side", FaceSelector::kSide},
+}};
+constexpr std::array<std::string_view, 7> kObjectWords = {"front", "back",   "left", "right",
+                                                          "top",   "bottom", "side"};
+
+}  // namespace
+
+std::optional<FrameSelector> frame_selector_named(std::string_view word) {
+  for (const auto& [name, selector] : kWorldWords) {
+    if (name == word) return FrameSelector{Frame::kWorld, selector};
+  }
+  if (word.starts_with("object.")) {
+    const std::string_view side = word.substr(7);
+    if (std::find(kObjectWords.begin(), kObjectWords.end(), side) != kObjectWords.end()) {
+      return FrameSelector{Frame::kObject, face_selector_named(side).value()};
+    }
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> frame_selector_words() {
+  std::vector<std::string> words;
+  for (std::string_view side : kObjectWords) words.push_back("object." + std::string(side));
+  for (const auto& [name, selector] : kWorldWords) words.emplace_back(name);
+  return words;
+}
+
+bool face_matches_in_frame(const FrameSelector& selector, Vec3 n, const Scope* object) {
+  Axes axes;  // the world's
+  if (selector.frame == Frame::kObject && object != nullptr) {
+    axes = object->size.z == 0 ? Axes{object->origin, object->x, object->z, -object->y}
+                               : Axes{object->origin, object->x, object->y, object->z};
+  }
+  // The normal in CityEngine's reading of the frame: x, y up, z.
+  return face_matches(selector.selector, {dot(n, axes.x), dot(n, axes.up), dot(n, axes.z)});
+}
 
 Frame frame_from(std::string_view name) {
   if (name == "world") return Frame::kWorld;

@@ -481,8 +481,9 @@ void Checker::check_selector_keys(const Item& item, const std::vector<std::strin
     }
     const Expr& key = *branch.key;
     std::string name;
-    if (key.kind == ExprKind::kIdent || key.kind == ExprKind::kString) {
-      name = key.text;
+    if (key.kind == ExprKind::kIdent || key.kind == ExprKind::kString ||
+        (key.kind == ExprKind::kMember && !dotted_name(key).empty())) {
+      name = key.kind == ExprKind::kMember ? dotted_name(key) : key.text;
       const bool known = std::find(selectors.begin(), selectors.end(), name) != selectors.end();
       if (!known) {
         std::string list;

@@ -731,6 +731,8 @@ class Compiler {
         out.index = static_cast<std::int64_t>(key.number);
       } else if (const std::string* w = word_of(key); w != nullptr && is_selector(info, *w)) {
         out.selector = *w;
+      } else if (key.kind == ExprKind::kMember && is_selector(info, dotted_name(key))) {
+        out.selector = dotted_name(key);  // world.up, object.front
       } else {
         error("CGA510",
               "'" + std::string(info.name) + "' has no selector '" +

@@ -290,6 +290,7 @@ void Engine::start() {
     if (i == 0) start_state_ = st;
     starts_.push_back(st);
   }
+  context_.object = &start_state_.scope;  // CityEngine's object frame: the initial shape's scope
   // Attribute values are fixed per lot, before any rule runs (CityEngine's attr semantics),
   // with a generator of their own.
   rng_ = shape::Rng(shape::child_seed(lot_seed_, 0xfffffffeU));

@@ -215,6 +215,11 @@ const CBranch* Engine::comp_target(const CItem& c, std::uint32_t piece, std::siz
       if (b.index == piece) return &b;
       continue;
     }
+    const std::size_t branch = static_cast<std::size_t>(&b - c.branches.data());
+    if (selected != nullptr && !(*selected)[branch].empty()) {  // precomputed: edges, frames
+      if (piece < (*selected)[branch].size() && (*selected)[branch][piece]) return &b;
+      continue;
+    }
     const shape::FaceSelector selector = face_selector(b.selector);
     if (faces &&
         (selector == shape::FaceSelector::kBorder || selector == shape::FaceSelector::kInside)) {
@@ -225,16 +230,28 @@ const CBranch* Engine::comp_target(const CItem& c, std::uint32_t piece, std::siz
       continue;
     }
     if (faces && shape::face_matches(selector, n)) return &b;
-    const std::size_t branch = static_cast<std::size_t>(&b - c.branches.data());
-    if (!faces && selected != nullptr && piece < (*selected)[branch].size() &&
-        (*selected)[branch][piece]) {
-      return &b;
-    }
   }
   return nullptr;
 }
 
 namespace {
+
+// Per branch of a face split keyed by a world.* or object.* selector: which faces it picks.
+std::vector<std::vector<bool>> frame_selections(const CItem& c, const Mesh& parent,
+                                                const Scope& scope, const Scope* object) {
+  std::vector<std::vector<bool>> selected(c.branches.size());
+  for (std::size_t b = 0; b < c.branches.size(); ++b) {
+    const std::optional<shape::FrameSelector> in_frame =
+        shape::frame_selector_named(c.branches[b].selector);
+    if (!in_frame) continue;
+    selected[b].resize(parent.face_count());
+    for (std::size_t f = 0; f < parent.face_count(); ++f) {
+      const Vec3 n = scope.direction_to_world(kernel::face_normal(parent, f));
+      selected[b][f] = shape::face_matches_in_frame(*in_frame, n, object);
+    }
+  }
+  return selected;
+}
 
 // Per branch of an edge or vertex split keyed by selectors: which components it picks (the
 // registry's own selection, shape/ops_comp_select.cc, on the same welded mesh).
@@ -278,9 +295,11 @@ void Engine::comp(const CItem& c, State& st) {
     border.assign(border.size(), *st.selector == "border");
   }
   const bool faces = c.comp == CompKind::kFaces || c.comp == CompKind::kSideFaces;
-  const std::vector<std::vector<bool>> selected = !faces && o.parent_mesh
-                                                      ? edge_or_vertex_selections(c, *o.parent_mesh)
-                                                      : std::vector<std::vector<bool>>();
+  std::vector<std::vector<bool>> selected;
+  if (o.parent_mesh) {
+    selected = faces ? frame_selections(c, *o.parent_mesh, st.scope, context_.object)
+                     : edge_or_vertex_selections(c, *o.parent_mesh);
+  }
   std::size_t ordinal = 0;
   for (std::uint32_t k = 0; k < total; ++k) {
     if (c.comp == CompKind::kSideFaces &&

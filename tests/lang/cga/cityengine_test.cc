@@ -339,6 +339,30 @@ TEST(CityEngineDialect, RoofEdgesByClass) {
   EXPECT_NEAR(l.at("eave").sum, 72, 1e-6);
 }
 
+TEST(CityEngineDialect, WorldAndObjectSelectors) {
+  // A lot whose first edge runs north: its object front faces east, whatever the world says.
+  auto p = compile_text(
+      "version \"2024.0\"\n"
+      "Lot --> extrude(6) [ comp(f) { world.up : U } ] [ comp(f) { world.west : W } ]\n"
+      "  [ comp(f) { object.front : F } ] comp(f) { world.side : S }\n"
+      "U --> report(\"up\", geometry.area())\nW --> report(\"west\", scope.tx)\n"
+      "F --> report(\"object front\", scope.tx)\nS --> report(\"side\", 1)\n");
+  ASSERT_TRUE(p);
+  Lot lot;
+  lot.id = "north";
+  lot.polygons.push_back({{{0, 0}, {0, 10}, {-8, 10}, {-8, 0}}, {}});
+  const auto r = derive_all(*p, {lot});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  const auto& reports = r[0].reports;
+  EXPECT_EQ(reports.at("up").count, 1U);
+  EXPECT_NEAR(reports.at("up").sum, 80, 1e-9);
+  EXPECT_EQ(reports.at("west").count, 1U);
+  EXPECT_NEAR(reports.at("west").sum, -8, 1e-9);
+  EXPECT_EQ(reports.at("object front").count, 1U);
+  EXPECT_NEAR(reports.at("object front").sum, 0, 1e-9);
+  EXPECT_EQ(reports.at("side").count, 4U);
+}
+
 TEST(CityEngineDialect, GeometryFunctions) {
   auto p = compile_text(
       "version \"2024.0\"\n"
