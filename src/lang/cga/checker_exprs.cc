@@ -220,6 +220,27 @@ void Checker::check_geometry_call(const Expr& expr, const shape::GeometryQueryIn
   }
 }
 
+// CityEngine's occlusion queries: inside/overlaps/touches([intra|inter|all[, label]]).
+void Checker::check_occlusion_query(const Expr& expr) {
+  const std::string& name = expr.operands[0]->text;
+  const std::size_t count = expr.operands.size() - 1;
+  if (count > 2) {
+    error("CGA312", "'" + name + "' expects at most 2 arguments, found " + std::to_string(count),
+          expr.range);
+    return;
+  }
+  if (count >= 1) {
+    const std::string target = dotted_name(*expr.operands[1]);
+    if (target != "intra" && target != "inter" && target != "all") {
+      error("CGA315",
+            "the target of '" + name + "' is intra, inter or all, found " +
+                (target.empty() ? std::string("an expression") : "'" + target + "'"),
+            expr.operands[1]->range);
+    }
+  }
+  if (count == 2) check_expr(*expr.operands[2]);
+}
+
 void Checker::check_call(const Expr& expr) {
   if (check_user_call(expr)) return;
   const Expr& callee = *expr.operands[0];
@@ -240,6 +261,10 @@ void Checker::check_call(const Expr& expr) {
                 ", found " + std::to_string(count),
             callee.range);
     }
+  } else if (callee.kind == ExprKind::kIdent && cityengine() &&
+             (callee.text == "inside" || callee.text == "overlaps" || callee.text == "touches")) {
+    check_occlusion_query(expr);
+    return;
   } else if (callee.kind == ExprKind::kIdent) {
     const FunctionInfo* info = find_function(callee.text);
     if (!info && cityengine() && contains(kUnsupportedFunctions, callee.text)) {

@@ -100,6 +100,7 @@ class Checker {
 
   // ---- checker_exprs.cc
   void check_call(const Expr& expr);
+  void check_occlusion_query(const Expr& expr);
   void check_geometry_call(const Expr& expr, const shape::GeometryQueryInfo& query);
   void check_member(const Expr& expr);
   void check_identifier(const Expr& expr, ExprRole role);

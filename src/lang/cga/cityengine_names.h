@@ -11,11 +11,11 @@ namespace insula::lang::cga {
 
 // Operations that change only what Insula does not model yet: skipped with warning CGA903.
 inline constexpr std::string_view kDetailOperations[] = {
-    "setupProjection", "projectUV",      "texture",     "translateUV",
-    "scaleUV",         "rotateUV",       "tileUV",      "normalizeUV",
-    "deleteUV",        "label",          "setNormals",  "softenNormals",
-    "deleteHoles",     "reduceGeometry", "setMaterial", "resetMaterials",
-    "resetGeometry",   "deleteTags",     "tag",
+    "setupProjection", "projectUV",   "texture",        "translateUV",
+    "scaleUV",         "rotateUV",    "tileUV",         "normalizeUV",
+    "deleteUV",        "setNormals",  "softenNormals",  "deleteHoles",
+    "reduceGeometry",  "setMaterial", "resetMaterials", "resetGeometry",
+    "deleteTags",      "tag",
 };
 
 // Operations that change geometry and are not implemented: error CGA901.
@@ -62,9 +62,6 @@ inline constexpr std::string_view kUnsupportedFunctions[] = {
     "assetApproxRatio",
     "convert",
     "getGeoCoord",
-    "inside",
-    "overlaps",
-    "touches",
     "minimumDistance",
     "contextCompare",
     "contextCount",

@@ -319,6 +319,10 @@ class Compiler {
     if (const shape::GeometryQueryInfo* query = geometry_query_of(callee); query && argc <= 1) {
       return geometry(*query, argc == 1 ? e.operands[1].get() : nullptr, e.range);
     }
+    if (const std::optional<OcclusionRelation> relation = occlusion_relation(callee);
+        relation && program_->cityengine && argc <= 2) {
+      return occlusion_query(*relation, e);
+    }
     std::vector<std::uint32_t> kids;
     for (std::size_t i = 1; i < e.operands.size(); ++i) kids.push_back(expr(*e.operands[i]));
     if (callee.kind == ExprKind::kMember && callee.text == "occ" &&
@@ -569,6 +573,28 @@ class Compiler {
     return add(std::move(node));
   }
 
+  // CityEngine's inside/overlaps/touches([target[, label]]).
+  static std::optional<OcclusionRelation> occlusion_relation(const Expr& callee) {
+    if (callee.kind != ExprKind::kIdent) return std::nullopt;
+    if (callee.text == "inside") return OcclusionRelation::kInside;
+    if (callee.text == "overlaps") return OcclusionRelation::kOverlaps;
+    if (callee.text == "touches") return OcclusionRelation::kTouches;
+    return std::nullopt;
+  }
+
+  std::uint32_t occlusion_query(OcclusionRelation relation, const Expr& e) {
+    program_->uses_occlusion_queries = true;
+    ENode node{ECode::kOcclusion, static_cast<std::uint8_t>(relation), 0, e.range, {}};
+    if (e.operands.size() > 1) {
+      const std::string target = dotted_name(*e.operands[1]);
+      node.a = static_cast<std::uint32_t>(target == "intra"   ? OcclusionTarget::kIntra
+                                          : target == "inter" ? OcclusionTarget::kInter
+                                                              : OcclusionTarget::kAll);
+    }
+    if (e.operands.size() > 2) node.kids.push_back(expr(*e.operands[2]));
+    return add(std::move(node));
+  }
+
   static bool pivot_word(const Expr& e) {
     const std::string word = dotted_name(e);
     return word == "scopeCenter" || word == "scopeOrigin";
@@ -602,6 +628,7 @@ class Compiler {
     c.code = item.name == "color"    ? OpCode::kColor
              : item.name == "print"  ? OpCode::kPrint
              : item.name == "report" ? OpCode::kReport
+             : item.name == "label"  ? OpCode::kLabel
                                      : OpCode::kEmpty;  // nil
     plain_args(item, c);
   }

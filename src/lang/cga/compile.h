@@ -43,6 +43,8 @@ enum class ECode : std::uint8_t {
   kCase,       // kids: condition, value, ..., else value (CityEngine's `case`)
   kChance,     // kids: percentage, value, ..., else value (CityEngine's `30% : v else : w`)
   kCompSel,    // comp.sel: the selector text of the comp branch the shape came from
+  kOcclusion,  // CityEngine's inside/overlaps/touches: op the relation (OcclusionRelation), a
+               // the target (OcclusionTarget), kids: the label when given
   kGeometry,   // CityEngine's geometry.*: query a (shape::GeometryQuery), its selector or angle
                // type op, kids: the tolerance when it takes one
 };
@@ -112,6 +114,9 @@ enum class Function : std::uint8_t {
   kImageInfo,
 };
 
+enum class OcclusionRelation : std::uint8_t { kInside, kOverlaps, kTouches };
+enum class OcclusionTarget : std::uint8_t { kAll, kIntra, kInter };
+
 struct ENode {
   ECode code = ECode::kConst;
   std::uint8_t op = 0;
@@ -146,6 +151,7 @@ enum class OpCode : std::uint8_t {
   kSet,
   kPrint,
   kReport,
+  kLabel,   // CityEngine's label("name"): the shape becomes an occluder under that name
   kNoOp,    // a CityEngine operation skipped with warning CGA903 (texture coordinates, labels)
   kCase,    // branches keyed by conditions; the last one (`else`) has none
   kChance,  // branches keyed by percentages; the last one (`else`) takes the rest
@@ -233,6 +239,9 @@ struct Program {
   std::vector<shape::Value> consts;
   SymbolId start = kNoSymbol;
   bool uses_occlusion = false;
+  // CityEngine's occlusion queries: the derivation runs twice (derive.cc), the second pass asking
+  // about the shapes of the first.
+  bool uses_occlusion_queries = false;
   bool cityengine = false;  // read from CityEngine's dialect (derive_registry.cc: extrude(-d))
 
   bool has_rules(SymbolId s) const { return s < levels_of.size() && !levels_of[s].empty(); }

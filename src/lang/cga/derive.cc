@@ -64,7 +64,23 @@ std::shared_ptr<const Mesh> BuiltinAssets::find(std::string_view name, std::stri
 LotResult derive_lot(const Program& program, const Lot& lot, std::size_t lot_index,
                      const DeriveOptions& options) {
   LotResult out;
+  if (!program.uses_occlusion_queries) {
+    detail::Engine engine(program, lot, lot_index, options, out);
+    engine.run();
+    return out;
+  }
+  // CityEngine's occlusion queries: a first pass in which every query is false makes the shapes
+  // the second pass asks about (CGA reference, "Context and occlusion queries").
+  std::vector<detail::Occluder> occluders;
+  {
+    LotResult first;
+    detail::Engine engine(program, lot, lot_index, options, first);
+    engine.run();
+    if (!first.ok) return first;
+    occluders = engine.take_occluders();
+  }
   detail::Engine engine(program, lot, lot_index, options, out);
+  engine.set_occluders(&occluders);
   engine.run();
   return out;
 }

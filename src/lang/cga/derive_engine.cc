@@ -134,6 +134,82 @@ std::string Engine::occlusion(const std::string& /*what*/, Range /*range*/) {
   return f <= 1e-6 ? "none" : f >= 1 - 1e-6 ? "full" : "part";
 }
 
+std::vector<std::uint64_t> Engine::lineage_seeds(std::uint32_t entry) const {
+  std::vector<std::uint64_t> seeds;
+  for (; entry != 0; entry = lineage_[entry].first) seeds.push_back(lineage_[entry].second);
+  return seeds;
+}
+
+void Engine::add_occluder(const State& st, std::string label) {
+  made_occluders_.push_back({std::move(label), st.scope, st.seed, lineage_seeds(st.lineage)});
+}
+
+namespace {
+
+// The six faces of a box scope as flat scopes (a face's contact with another box is planar).
+std::array<Scope, 6> box_faces(const Scope& s) {
+  std::array<Scope, 6> faces;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      Vec3 offset;
+      Vec3 size = s.size;
+      set_component(size, static_cast<shape::Axis>(axis), 0);
+      if (side == 1)
+        set_component(offset, static_cast<shape::Axis>(axis),
+                      s.extent(static_cast<shape::Axis>(axis)));
+      faces[static_cast<std::size_t>(axis * 2 + side)] = s.sub(offset, size);
+    }
+  }
+  return faces;
+}
+
+// The fraction of `a`'s scope box that `b`'s covers (shape::occlusion's box approximation).
+double covered(const Scope& a, const Scope& b) {
+  shape::ShapeTree tree;
+  const shape::ShapeId id = tree.add_root(a);
+  return shape::occlusion(tree, id, {tree.add_root(b)});
+}
+
+}  // namespace
+
+// CityEngine's inside / overlaps / touches, on scope boxes: against the previous pass's occluders
+// with the label (any when ""), never the asking shape's own ancestors or descendants. Insula
+// derives each lot on its own, so `inter` finds nothing (docs/cga-cityengine.md).
+bool Engine::occlusion_query(OcclusionRelation relation, OcclusionTarget target,
+                             const std::string& label) {
+  if (occluders_ == nullptr || target == OcclusionTarget::kInter) return false;
+  const State& self = *cur_;
+  const std::vector<std::uint64_t> mine = lineage_seeds(self.lineage);
+  constexpr double kEps = 1e-6;
+  for (const Occluder& o : *occluders_) {
+    if (!label.empty() && o.label != label) continue;
+    if (std::find(mine.begin(), mine.end(), o.seed) != mine.end()) continue;  // an ancestor
+    if (std::find(o.lineage.begin(), o.lineage.end(), self.seed) != o.lineage.end()) continue;
+    const double f = covered(self.scope, o.scope);
+    switch (relation) {
+      case OcclusionRelation::kInside:
+        if (f >= 1 - kEps) return true;
+        break;
+      case OcclusionRelation::kOverlaps:
+        if (f > kEps || covered(o.scope, self.scope) > kEps) return true;
+        break;
+      case OcclusionRelation::kTouches: {
+        // Overlap, or planar contact: a face of a flat shape (covered() counts boxes within a
+        // millimetre of its plane), or a face of the box of a volume, covered in part.
+        if (f > kEps) return true;
+        const bool flat =
+            self.scope.size.x <= 0 || self.scope.size.y <= 0 || self.scope.size.z <= 0;
+        if (flat) break;
+        for (const Scope& face : box_faces(self.scope)) {
+          if (covered(face, o.scope) > kEps) return true;
+        }
+        break;
+      }
+    }
+  }
+  return false;
+}
+
 Value Engine::file_function(Function f, const std::vector<Value>& args, Range range) {
   const FileQueries* files = options_.files;
   const std::string first = as_text(args[0]);
@@ -287,6 +363,7 @@ void Engine::start() {
     st.scope = s.scope;
     st.seed = shape::child_seed(lot_seed_, static_cast<std::uint32_t>(i));
     st.geometry = add_mesh(s.mesh, s.outline, s.scope.size);
+    if (track_lineage_) st.lineage = add_lineage(0, st.seed);
     if (i == 0) start_state_ = st;
     starts_.push_back(st);
   }
@@ -357,6 +434,7 @@ void Engine::process(const Work& w) {
   st.total = w.total;
   st.frame = w.frame;
   st.selector = w.selector;
+  st.lineage = w.lineage;
   depth_ = w.depth;
   cur_ = &st;
   frame = frame_of(w.frame);
@@ -466,6 +544,7 @@ void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State&
         {
           State child = st;
           child.seed = shape::child_seed(st.seed, st.next_child++);
+          if (track_lineage_) child.lineage = add_lineage(st.lineage, child.seed);
           child.next_child = 0;
           child.frame = c.args.empty() ? 0 : new_frame(c.args, st);
           if (c.terminal) {
@@ -489,6 +568,7 @@ void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State&
       case OpCode::kPush: {
         State inner = st;
         inner.seed = shape::child_seed(st.seed, st.next_child++);
+        if (track_lineage_) inner.lineage = add_lineage(st.lineage, inner.seed);
         stack.push_back(st);
         inner.next_child = 0;
         inner.consumed = false;
@@ -525,6 +605,9 @@ void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State&
         break;
       case OpCode::kReport:
         report(c, st);
+        break;
+      case OpCode::kLabel:
+        if (track_lineage_) add_occluder(st, as_text(eval(c.args[0], st)));
         break;
       case OpCode::kInsertShape:
         insert_shape(c, st);

@@ -44,6 +44,7 @@ struct Work {
   const std::string* selector = nullptr;  // comp.sel (a CBranch's selector of the program)
   std::uint16_t depth = 0;
   std::uint16_t level = 0;
+  std::uint32_t lineage = 0;  // State::lineage
 };
 
 // The current shape while a successor runs.
@@ -58,7 +59,18 @@ struct State {
   const std::string* selector = nullptr;  // comp.sel
   std::uint32_t next_child = 0;           // children seeded so far (child_seed index)
   bool consumed = false;                  // replaced by a symbol, a block operation or ε
-  bool modified = false;  // changed since the last `[` (a `]` then leaves it as a leaf)
+  bool modified = false;      // changed since the last `[` (a `]` then leaves it as a leaf)
+  std::uint32_t lineage = 0;  // Engine::lineage_ entry (occlusion queries only; 0: untracked)
+};
+
+// A shape CityEngine's occlusion queries ask about: a label()led shape, or a closed leaf
+// (label ""). `lineage` holds the seeds from the initial shape down to it, so that a query
+// skips its own ancestors and descendants as CityEngine does.
+struct Occluder {
+  std::string label;
+  Scope scope;
+  std::uint64_t seed = 0;
+  std::vector<std::uint64_t> lineage;
 };
 
 // A limit or evaluation error: ends the lot's derivation.
@@ -94,6 +106,8 @@ class Engine final : public EvalContext {
         rng_(lot_seed_) {
     context_.assets = &assets_;
     keep_ = options.keep_terminals || program.uses_occlusion;
+    track_lineage_ = program.uses_occlusion_queries;
+    lineage_.push_back({0, 0});           // entry 0: untracked
     out_.geometry.push_back(Geometry{});  // handle 0: none
     out_.attr_nodes.push_back(AttrNode{});
     out_.symbol_counts.assign(program.symbols.size(), 0);
@@ -103,6 +117,10 @@ class Engine final : public EvalContext {
   }
 
   void run();
+  // CityEngine's two passes (derive.cc): the first pass's occluders answer the second's queries;
+  // without them every query is false, as in CityEngine's first pass.
+  void set_occluders(const std::vector<Occluder>* occluders) { occluders_ = occluders; }
+  std::vector<Occluder> take_occluders() { return std::move(made_occluders_); }
 
   // ---- EvalContext
   Value attribute(std::uint32_t attr, Range range) override;
@@ -190,6 +208,9 @@ class Engine final : public EvalContext {
 
   void terminal(const State& st, SymbolId symbol) {
     ++out_.terminals;
+    if (track_lineage_ && st.scope.size.x > 0 && st.scope.size.y > 0 && st.scope.size.z > 0) {
+      add_occluder(st, "");  // a closed leaf
+    }
     if (keep_) out_.terminals_store.push({st.scope, symbol, st.geometry, st.attrs});
   }
 
@@ -213,6 +234,7 @@ class Engine final : public EvalContext {
     w.total = st.total;
     w.frame = st.frame;
     w.selector = st.selector;
+    w.lineage = st.lineage;
     w.depth = static_cast<std::uint16_t>(depth);
     w.level = static_cast<std::uint16_t>(program_.levels_of[symbol].front());
     batch_.push_back(w);
@@ -262,6 +284,7 @@ class Engine final : public EvalContext {
     State c;
     c.scope = scope;
     c.seed = shape::child_seed(parent.seed, parent.next_child++);
+    if (track_lineage_) c.lineage = add_lineage(parent.lineage, c.seed);
     c.geometry = geometry;
     c.attrs = parent.attrs;
     c.index = index;
@@ -407,6 +430,20 @@ class Engine final : public EvalContext {
   std::uint64_t lot_seed_;
   shape::Rng rng_;
   bool keep_ = true;
+  // Occlusion queries (CityEngine): lineage entries (parent entry, seed), the occluders this pass
+  // made, and the previous pass's that queries test against.
+  bool track_lineage_ = false;
+  std::vector<std::pair<std::uint32_t, std::uint64_t>> lineage_;
+  std::vector<Occluder> made_occluders_;
+  const std::vector<Occluder>* occluders_ = nullptr;
+  std::uint32_t add_lineage(std::uint32_t parent, std::uint64_t seed) {
+    lineage_.emplace_back(parent, seed);
+    return static_cast<std::uint32_t>(lineage_.size() - 1);
+  }
+  std::vector<std::uint64_t> lineage_seeds(std::uint32_t entry) const;
+  void add_occluder(const State& st, std::string label);
+  bool occlusion_query(OcclusionRelation relation, OcclusionTarget target,
+                       const std::string& label) override;
 
   std::vector<std::vector<Work>> pending_;  // one stack per priority level
   std::size_t pending_count_ = 0;

@@ -425,6 +425,10 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
     }
     case ECode::kCompSel:
       return context.comp_selector();
+    case ECode::kOcclusion:
+      return context.occlusion_query(
+          static_cast<OcclusionRelation>(n.op), static_cast<OcclusionTarget>(n.a),
+          n.kids.empty() ? std::string() : as_text(evaluate(program, n.kids[0], context)));
     case ECode::kGeometry: {
       const double tolerance =
           n.kids.empty() ? 0 : as_number(evaluate(program, n.kids[0], context), n.range);

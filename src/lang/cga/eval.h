@@ -51,6 +51,10 @@ class EvalContext {
   virtual ~EvalContext() = default;
   virtual shape::Value attribute(std::uint32_t attr, Range range) = 0;
   virtual double shape_attribute(ShapeAttr attr) = 0;
+  // CityEngine's inside/overlaps/touches: whether the shape stands so to an occluder of `target`
+  // (labelled `label`; "" any).
+  virtual bool occlusion_query(OcclusionRelation relation, OcclusionTarget target,
+                               const std::string& label) = 0;
   // CityEngine's geometry.* (shape/geometry_queries.h) on the shape's geometry.
   virtual double geometry(shape::GeometryQuery query, std::uint8_t option, double tolerance) = 0;
   // comp.sel: the selector of the comp branch the shape came from ("" when none).

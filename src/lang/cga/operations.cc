@@ -131,6 +131,8 @@ constexpr BuiltIn kBuiltIns[] = {
     {"report", 2, 2, "sv",
      "add a number to the report's per-name sum and count (a text counts under \"name=text\")"},
     {"nil", 0, 0, "", "remove the shape (as epsilon)"},
+    {"label", 1, 1, "s",
+     "mark the shape as an occluder under this label (CityEngine's touches/inside/overlaps)"},
 };
 
 std::vector<std::string_view> words(std::string_view text) {

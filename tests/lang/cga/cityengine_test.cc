@@ -363,6 +363,42 @@ TEST(CityEngineDialect, WorldAndObjectSelectors) {
   EXPECT_EQ(reports.at("side").count, 4U);
 }
 
+TEST(CityEngineDialect, OcclusionQueriesWithLabels) {
+  // Two labelled blocks side by side: of each block's four walls the one against the other block
+  // touches it (its own block is its ancestor and does not count); the tower inside the front
+  // block's box is inside a "block"; nothing is "inter" (one lot).
+  auto p = compile_text(
+      "version \"2024.0\"\n"
+      "Lot --> split(x) { 5 : Mass(\"a\") | 5 : Mass(\"b\") }\n"
+      "Mass(n) --> extrude(6) label(\"block\") comp(f) { side : Wall }\n"
+      "Wall --> case touches(intra, \"block\") : Inner.\n"
+      "  case touches(inter, \"block\") : Neighbour.\n"
+      "  else : Outer.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 8)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(symbol_count(*p, r[0], "Inner"), 2U);
+  EXPECT_EQ(symbol_count(*p, r[0], "Outer"), 6U);
+  EXPECT_EQ(symbol_count(*p, r[0], "Neighbour"), 0U);
+  auto inside = compile_text(
+      "version \"2024.0\"\n"
+      "Lot --> split(x) { 6 : extrude(9) label(\"hall\") Hall. | ~1 : Yard }\n"
+      "Yard --> extrude(3) split(x) { ~1 : Probe | ~1 : Probe }\n"
+      "Probe --> t(-2, 0, 0) s(1, 1, 1) Box\n"
+      "Box --> case inside(all, \"hall\") : In. case overlaps(all, \"hall\") : Part.\n"
+      "  else : Out.\n");
+  ASSERT_TRUE(inside);
+  const auto q = derive_all(*inside, {rectangle_lot(10, 8)});
+  ASSERT_TRUE(q[0].ok) << diagnostics_text(q[0]);
+  // The yard runs from x = 6 to 10; its probes start at 6 and 8, moved 2 m back: 4..5 lies in
+  // the hall, 6..7 outside it.
+  EXPECT_EQ(symbol_count(*inside, q[0], "In"), 1U);
+  EXPECT_EQ(symbol_count(*inside, q[0], "Out"), 1U);
+  EXPECT_EQ(check_text("version \"2024.0\"\nA --> case touches(near) : B. else : C.\n"),
+            "t.cga:2:20: error[CGA315]: the target of 'touches' is intra, inter or all, found "
+            "'near'\n");
+}
+
 TEST(CityEngineDialect, GeometryFunctions) {
   auto p = compile_text(
       "version \"2024.0\"\n"
