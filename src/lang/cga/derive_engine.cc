@@ -557,9 +557,10 @@ void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State&
         break;
       case OpCode::kCase:
       case OpCode::kChance:
-        // A chain ends its sequence (parser_cityengine.cc): the chosen branch finishes it.
+        // The chosen branch goes on with the shape; a chain ends its sequence
+        // (parser_cityengine.cc) but inside `[ ]`, where the `]` comes after it.
         run_items(choose_branch(c, st).items, 0, st, stack);
-        return;
+        break;
       case OpCode::kNoOp:
         break;
       case OpCode::kEmpty:

@@ -330,6 +330,15 @@ std::vector<Item> Parser::ce_body() {
       items.push_back(ce_select_item(ItemKind::kChance));
       break;
     }
+    if (select_in_bracket_ > 0 && open.empty() && at(Tok::kRBracket)) break;
+    // `[ case c : A else : B ]`: the chain ends at the bracket that closes it.
+    if (!items.empty() && items.back().kind == ItemKind::kPush &&
+        (at_word("case") || ce_at_chance())) {
+      ++select_in_bracket_;
+      items.push_back(ce_select_item(at_word("case") ? ItemKind::kCase : ItemKind::kChance));
+      --select_in_bracket_;
+      continue;
+    }
     if (!ce_starts_item()) break;
     items.push_back(parse_item());
     track_brackets(items.back(), open);

@@ -683,6 +683,8 @@ class Parser {
   std::size_t item_start_ = 0;  // first token of the top-level item being parsed
   std::uint32_t prev_end_ = 0;
   int depth_ = 0;
+  // Inside `[ case ... ]` (CityEngine): a `]` the branch did not open ends the branch's body.
+  int select_in_bracket_ = 0;
   Grammar grammar_;
 };
 

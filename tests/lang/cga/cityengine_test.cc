@@ -363,6 +363,20 @@ TEST(CityEngineDialect, WorldAndObjectSelectors) {
   EXPECT_EQ(reports.at("side").count, 4U);
 }
 
+TEST(CityEngineDialect, ChainInsideBrackets) {
+  // `[ case ... ]`: the chain's branch runs on the pushed shape; after `]` the rule goes on.
+  auto p = compile_text(
+      "version \"2020.0\"\nattr on = true\n"
+      "Lot --> extrude(3) [ case on : A. else : NIL ] [ case !on : B. else : NIL ] C.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 8)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(symbol_count(*p, r[0], "A"), 1U);
+  EXPECT_EQ(symbol_count(*p, r[0], "B"), 0U);
+  EXPECT_EQ(symbol_count(*p, r[0], "C"), 1U);
+  EXPECT_EQ(r[0].terminals, 2U);
+}
+
 TEST(CityEngineDialect, OcclusionQueriesWithLabels) {
   // Two labelled blocks side by side: of each block's four walls the one against the other block
   // touches it (its own block is its ancestor and does not count); the tower inside the front
