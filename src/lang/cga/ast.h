@@ -98,6 +98,8 @@ struct Item {
   std::vector<ExprPtr> args;  // operation arguments; a symbol's rule arguments (`Floor(3)`)
   bool has_block = false;     // `{ ... }` written after the arguments
   bool terminal = false;      // kSymbol written `Name.` (CityEngine: a leaf, no rule wanted)
+  // CityEngine's `split(u|v, unitSpace|uvSpace, uvSet)`, read as split(x|y) (the checker warns).
+  bool along_uv = false;
   std::vector<Branch> branches;
 };
 

@@ -199,6 +199,13 @@ void Checker::check_item(const Item& item) {
   }
   if (item.kind == ItemKind::kCase || item.kind == ItemKind::kChance) return check_chain(item);
   if (item.kind != ItemKind::kOp) return;
+  if (item.along_uv) {
+    warning("CGA904",
+            "split along texture coordinates: Insula's shapes carry none here, so this splits "
+            "along the scope's " +
+                item.args[0]->text + " axis in meters",
+            item.range);
+  }
   const OperationInfo* info = find_operation(item.name);
   if (!info) {
     if (cityengine() && contains(kDetailOperations, item.name)) {

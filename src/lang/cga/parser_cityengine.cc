@@ -54,6 +54,17 @@ void drop_form_words(Item& item) {
     const std::string word = dotted_name(*item.args[1]);
     if (word == "adjust" || word == "noAdjust") item.args.pop_back();
   }
+  // `split(u|v, unitSpace|uvSpace, uvSet)`: along texture coordinates, which a lot has none of;
+  // Insula splits along the scope's x (u) or y (v) instead (docs/cga-cityengine.md).
+  if (item.name == "split" && item.args.size() == 3) {
+    const std::string axis = dotted_name(*item.args[0]);
+    const std::string space = dotted_name(*item.args[1]);
+    if ((axis == "u" || axis == "v") && (space == "unitSpace" || space == "uvSpace")) {
+      item.args.resize(1);
+      item.args[0]->text = axis == "u" ? "x" : "y";
+      item.along_uv = true;
+    }
+  }
 }
 
 }  // namespace

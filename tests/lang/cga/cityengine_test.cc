@@ -377,6 +377,22 @@ TEST(CityEngineDialect, ChainInsideBrackets) {
   EXPECT_EQ(r[0].terminals, 2U);
 }
 
+TEST(CityEngineDialect, SplitAlongTextureCoordinatesSaysWhatItDoes) {
+  EXPECT_EQ(check_text("version \"2020.0\"\nLot --> split(v, unitSpace, 0) { 2 : A. | ~1 : B. }\n"),
+            "t.cga:2:9: warning[CGA904]: split along texture coordinates: Insula's shapes carry "
+            "none here, so this splits along the scope's y axis in meters\n");
+  auto p =
+      compile_text("version \"2020.0\"\nLot --> split(v, unitSpace, 0) { 2 : A. | ~1 : B. }\n");
+  ASSERT_TRUE(p);
+  DeriveOptions options;
+  options.keep_terminals = true;
+  const auto r = derive_all(*p, {rectangle_lot(10, 8)}, options);
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  ASSERT_EQ(r[0].terminals_store.size(), 2U);
+  EXPECT_NEAR(r[0].terminals_store[0].scope.size.y, 2, 1e-9);
+  EXPECT_NEAR(r[0].terminals_store[1].scope.size.y, 6, 1e-9);
+}
+
 TEST(CityEngineDialect, OcclusionQueriesWithLabels) {
   // Two labelled blocks side by side: of each block's four walls the one against the other block
   // touches it (its own block is its ancestor and does not count); the tower inside the front
