@@ -185,6 +185,12 @@ OpResult rotate_in(ShapeTree& tree, ShapeId id, bool absolute, Frame frame, kern
                    const Scope* object = nullptr);
 // The frame parameter's choices and value ("scope", "pivot", "object", "world").
 Frame frame_from(std::string_view name);
+// CityEngine's convert(): the position (or intrinsic x-y-z orientation, degrees) `v` given in
+// frame `from` expressed in frame `to`, each frame read as CityEngine's (x, y up, z). `scope` is
+// the asking shape's, `object` the initial shape's (null: the world); a scope of zero depth is a
+// flat shape's (its normal on z).
+kernel::Vec3 convert_between_frames(Frame from, Frame to, bool orientation, kernel::Vec3 v,
+                                    const Scope& scope, const Scope* object);
 // CityEngine's comp selectors in a frame: `object.front` ... `object.side` (the lot's scope read
 // as CityEngine's) and `world.north south east west up down side` (world.south is the world
 // frame's +z, CityEngine's "front"). The frame and the face selector a word names, or nullopt.

@@ -272,6 +272,58 @@ bool face_matches_in_frame(const FrameSelector& selector, Vec3 n, const Scope* o
   return face_matches(selector.selector, {dot(n, axes.x), dot(n, axes.up), dot(n, axes.z)});
 }
 
+namespace {
+
+Axes scope_axes(const Scope& s) {
+  if (s.size.z == 0) return {s.origin, s.x, s.z, -s.y};
+  return {s.origin, s.x, s.y, s.z};
+}
+
+Axes axes_of(Frame frame, const Scope& scope, const Scope* object) {
+  if (frame == Frame::kWorld || (frame == Frame::kObject && object == nullptr)) return {};
+  return scope_axes(frame == Frame::kObject ? *object : scope);
+}
+
+// Columns c0, c1, c2 of a rotation; (R v) = v.x c0 + v.y c1 + v.z c2.
+using Basis = std::array<Vec3, 3>;
+
+Vec3 apply(const Basis& b, Vec3 v) {
+  return b[0] * v.x + b[1] * v.y + b[2] * v.z;
+}
+
+Basis rotation_xyz(Vec3 degrees) {  // intrinsic x, then y, then z
+  const kernel::Transform rx = kernel::rotation({1, 0, 0}, degrees.x);
+  const kernel::Transform ry = kernel::rotation({0, 1, 0}, degrees.y);
+  const kernel::Transform rz = kernel::rotation({0, 0, 1}, degrees.z);
+  const kernel::Transform r = rx * ry * rz;
+  return {r.x, r.y, r.z};
+}
+
+Vec3 angles_xyz(const Basis& r) {  // the inverse of rotation_xyz (r = columns)
+  constexpr double kDeg = 180 / std::numbers::pi;
+  const double b = std::asin(std::clamp(r[2].x, -1.0, 1.0));
+  const double a = std::atan2(-r[2].y, r[2].z);
+  const double c = std::atan2(-r[1].x, r[0].x);
+  return {a * kDeg, b * kDeg, c * kDeg};
+}
+
+}  // namespace
+
+Vec3 convert_between_frames(Frame from, Frame to, bool orientation, Vec3 v, const Scope& scope,
+                            const Scope* object) {
+  const Axes f = axes_of(from, scope, object);
+  const Axes t = axes_of(to, scope, object);
+  const Basis from_basis = {f.x, f.up, f.z};
+  const auto in_to = [&](Vec3 w) { return Vec3{dot(w, t.x), dot(w, t.up), dot(w, t.z)}; };
+  if (!orientation) return in_to(f.origin + apply(from_basis, v) - t.origin);
+  const Basis r = rotation_xyz(v);
+  Basis world;
+  for (std::size_t i = 0; i < 3; ++i) world[i] = apply(from_basis, r[i]);
+  Basis relative;
+  for (std::size_t i = 0; i < 3; ++i) relative[i] = in_to(world[i]);
+  return angles_xyz(relative);
+}
+
 Frame frame_from(std::string_view name) {
   if (name == "world") return Frame::kWorld;
   if (name == "object") return Frame::kObject;

@@ -673,3 +673,50 @@ TEST(Trim, IsAcceptedWithAWarning) {
 
 }  // namespace
 }  // namespace insula::shape
+
+namespace insula::shape {
+namespace {
+
+TEST(ConvertBetweenFrames, PositionsAndOrientations) {
+  // A volume scope 5 m east, 2 m north, turned 90 degrees about the vertical: its x points north.
+  Scope scope;
+  scope.origin = {5, 2, 0};
+  scope.x = {0, 1, 0};
+  scope.y = {0, 0, 1};
+  scope.z = {1, 0, 0};
+  scope.size = {4, 3, 2};
+  // Its origin in the world (x east, y up, z south).
+  const kernel::Vec3 origin =
+      convert_between_frames(Frame::kScope, Frame::kWorld, false, {0, 0, 0}, scope, nullptr);
+  EXPECT_NEAR(origin.x, 5, 1e-12);
+  EXPECT_NEAR(origin.y, 0, 1e-12);
+  EXPECT_NEAR(origin.z, -2, 1e-12);
+  // A point 1 m along its x is 1 m further north (world z - 1).
+  const kernel::Vec3 ahead =
+      convert_between_frames(Frame::kScope, Frame::kWorld, false, {1, 0, 0}, scope, nullptr);
+  EXPECT_NEAR(ahead.z, -3, 1e-12);
+  // And back.
+  const kernel::Vec3 back =
+      convert_between_frames(Frame::kWorld, Frame::kScope, false, ahead, scope, nullptr);
+  EXPECT_NEAR(back.x, 1, 1e-12);
+  EXPECT_NEAR(back.y, 0, 1e-12);
+  EXPECT_NEAR(back.z, 0, 1e-12);
+  // Its orientation against the world: a quarter turn about the vertical (y).
+  const kernel::Vec3 turn =
+      convert_between_frames(Frame::kScope, Frame::kWorld, true, {0, 0, 0}, scope, nullptr);
+  EXPECT_NEAR(turn.x, 0, 1e-9);
+  EXPECT_NEAR(std::fabs(turn.y), 90, 1e-9);
+  EXPECT_NEAR(turn.z, 0, 1e-9);
+  // Orientation round trip through the world.
+  const kernel::Vec3 angles{-10, 70, 15};
+  const kernel::Vec3 w =
+      convert_between_frames(Frame::kScope, Frame::kWorld, true, angles, scope, nullptr);
+  const kernel::Vec3 again =
+      convert_between_frames(Frame::kWorld, Frame::kScope, true, w, scope, nullptr);
+  EXPECT_NEAR(again.x, angles.x, 1e-9);
+  EXPECT_NEAR(again.y, angles.y, 1e-9);
+  EXPECT_NEAR(again.z, angles.z, 1e-9);
+}
+
+}  // namespace
+}  // namespace insula::shape
