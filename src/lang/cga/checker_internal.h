@@ -99,6 +99,7 @@ class Checker {
 
   // ---- checker_exprs.cc
   void check_call(const Expr& expr);
+  void check_comp_function(const Expr& expr);
   void check_member(const Expr& expr);
   void check_identifier(const Expr& expr, ExprRole role);
 

@@ -455,7 +455,8 @@ void Checker::check_comp(const Item& item) {
   const OperationInfo* info = find_operation(item.name);
   check_selector_keys(item, info ? info->selectors : kNone,
                       /*indices=*/true,
-                      type && *type != CompType::kFaces && *type != CompType::kSideFaces);
+                      type && *type != CompType::kFaces && *type != CompType::kSideFaces &&
+                          *type != CompType::kFaceEdges);
 }
 
 // Every branch keyed by a distinct selector (or, for comp, a component index).

@@ -19,6 +19,7 @@
 namespace insula::lang::cga {
 namespace {
 
+using testing::check_text;
 using testing::compile_text;
 using testing::derive_all;
 using testing::diagnostics_text;
@@ -58,17 +59,6 @@ Grammar parse_ok(const std::string& text, const std::string& name = "house.cga")
   base::Result<Grammar> g = parse(source);
   EXPECT_TRUE(g.ok()) << (g.diagnostics().empty() ? "" : base::render(g.diagnostics().front()));
   return g.ok() ? std::move(g.value()) : Grammar{};
-}
-
-std::string check_text(const std::string& text) {
-  const base::Source source("t.cga", text);
-  base::Result<Grammar> g = parse(source);
-  if (!g.ok()) return base::render(g.diagnostics().front()) + "\n";
-  std::string out;
-  for (const base::Diagnostic& d : check(g.value(), source).diagnostics) {
-    out += base::render(d) + "\n";
-  }
-  return out;
 }
 
 TEST(CityEngineDialect, IsDetectedFromWhatSeed004Lacks) {
