@@ -107,6 +107,24 @@ Lot -->
   EXPECT_EQ(p, expected);
 }
 
+TEST(CityEngineArrays, CompOperationSplitsFaceEdges) {
+  const auto program = compile_text(R"(version "2023.0"
+Lot --> comp(fe) { front : F | back = B | side : S }
+F --> report("F", scope.sx)
+B --> report("B", scope.sx)
+S --> report("S", scope.sx)
+)");
+  ASSERT_TRUE(program);
+  const std::vector<LotResult> r = derive_all(*program, {l_lot()});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(r[0].reports.at("F").count, 1U);
+  EXPECT_NEAR(r[0].reports.at("F").sum, 12, 1e-9);
+  EXPECT_EQ(r[0].reports.at("B").count, 2U);
+  EXPECT_NEAR(r[0].reports.at("B").sum, 8 + 4, 1e-9);
+  EXPECT_EQ(r[0].reports.at("S").count, 3U);
+  EXPECT_NEAR(r[0].reports.at("S").sum, 4 + 6 + 10, 1e-9);
+}
+
 // Strip and remainder areas of a setback on the 20 x 15 m rectangle (edges 20, 15, 20, 15).
 std::map<std::string, double> setback_areas(const std::string& setback) {
   const auto program = compile_text("version \"2023.0\"\nLot --> " + setback +
