@@ -113,6 +113,7 @@ void Checker::check_expr(const Expr& expr, ExprRole role) {
       return;
     case ExprKind::kArray:
     case ExprKind::kIndex:
+    case ExprKind::kRange:
       for (const ExprPtr& operand : expr.operands) check_expr(*operand);
       return;
     case ExprKind::kComp:

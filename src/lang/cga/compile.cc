@@ -271,6 +271,12 @@ class Compiler {
       }
       case ExprKind::kComp:
         return comp_function(e);
+      case ExprKind::kRange: {
+        std::vector<std::uint32_t> kids;
+        for (const ExprPtr& operand : e.operands) kids.push_back(expr(*operand));
+        return fold(ENode{ECode::kFunction, 0, static_cast<std::uint32_t>(Function::kRange),
+                          e.range, std::move(kids)});
+      }
     }
     return constant(Value{}, e.range);
   }

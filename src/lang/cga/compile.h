@@ -133,6 +133,7 @@ enum class Function : std::uint8_t {
   kListFromArray,
   kReadStringTable,
   kReadFloatTable,
+  kRange,  // the colon operator `a:b`, `a:s:b` (no name: only inside `[ ]`)
 };
 
 struct ENode {

@@ -347,7 +347,7 @@ Value Engine::comp_function(std::uint32_t index, Range range) {
   for (std::uint32_t k = 0; k < total; ++k) {
     items.push_back(k < values.size() && values[k] ? *values[k] : default_element(element));
   }
-  return make_array(element, 1, items.size(), std::move(items));
+  return make_row(element, std::move(items));
 }
 
 bool Engine::edge_selected(const std::string& selector, const State& st, Vec3 outward) const {

@@ -61,8 +61,8 @@ std::vector<Block> row_blocks(const std::vector<Value>& values, std::optional<El
   for (const Value& v : values) {
     Block b;
     if (const ArrayPtr* a = std::get_if<ArrayPtr>(&v)) {
-      if ((*a)->items.empty()) continue;  // an empty array adds nothing
       check_type(type, (*a)->type, range);
+      if ((*a)->items.empty()) continue;  // an empty array adds nothing
       b.rows = (*a)->rows;
       b.columns = (*a)->columns;
       b.items = &(*a)->items;
@@ -162,7 +162,64 @@ Value transposed(const Array& a) {
 
 Value strings_of(const std::vector<std::string>& items) {
   std::vector<shape::Value> out(items.begin(), items.end());
-  return make_array(ElementType::kString, 1, out.size(), std::move(out));
+  return make_row(ElementType::kString, std::move(out));
+}
+
+// The positions an index names: a number, or an array of numbers (row by row) or of booleans
+// (the positions that are true). `shape` gets the dimensions of a numeric index array.
+std::vector<double> positions(const Value& index, Range range, std::size_t& rows,
+                              std::size_t& columns) {
+  rows = columns = 1;
+  const ArrayPtr* p = std::get_if<ArrayPtr>(&index);
+  if (p == nullptr) return {as_number(index, range)};
+  const Array& a = **p;
+  std::vector<double> out;
+  if (a.type == ElementType::kBool) {
+    for (std::size_t i = 0; i < a.items.size(); ++i) {
+      if (std::get<bool>(a.items[i])) out.push_back(static_cast<double>(i));
+    }
+    columns = out.size();
+    return out;
+  }
+  if (a.type != ElementType::kFloat) fail(range, "an index array must be a float[] or bool[]");
+  for (const shape::Value& v : a.items) out.push_back(std::get<double>(v));
+  rows = a.rows;
+  columns = a.columns;
+  return out;
+}
+
+template <typename Element>
+Value index_by_arrays(const Array& a, std::span<const Value> indices, Range range,
+                      Element&& element) {
+  std::vector<shape::Value> items;
+  std::size_t rows = 1;
+  std::size_t columns = 1;
+  if (indices.size() == 1) {  // linear; the result has the index array's shape
+    for (double i : positions(indices[0], range, rows, columns)) {
+      items.push_back(
+          element(position(i, a.items.size()), "index " + shape::to_string(shape::Value(i)) +
+                                                   " is outside the array's " +
+                                                   std::to_string(a.items.size()) + " elements"));
+    }
+  } else {  // rows x columns of the picked rows and columns
+    std::size_t r1 = 0, c1 = 0, r2 = 0, c2 = 0;
+    const std::vector<double> picked_rows = positions(indices[0], range, r1, c1);
+    const std::vector<double> picked_columns = positions(indices[1], range, r2, c2);
+    for (double r : picked_rows) {
+      for (double c : picked_columns) {
+        const std::optional<std::size_t> row = position(r, a.rows);
+        const std::optional<std::size_t> column = position(c, a.columns);
+        items.push_back(
+            element(row && column ? std::optional(*row * a.columns + *column) : std::nullopt,
+                    "index [" + shape::to_string(shape::Value(r)) + ", " +
+                        shape::to_string(shape::Value(c)) + "] is outside the array's " +
+                        std::to_string(a.rows) + " x " + std::to_string(a.columns) + " elements"));
+      }
+    }
+    rows = picked_rows.size();
+    columns = picked_columns.size();
+  }
+  return make_array(a.type, rows, columns, std::move(items));
 }
 
 }  // namespace
@@ -210,34 +267,41 @@ Value index_array(const Value& array, std::span<const Value> indices, Range rang
   const ArrayPtr* p = std::get_if<ArrayPtr>(&array);
   if (p == nullptr) fail(range, "cannot index a " + std::string(type_name(array)));
   const Array& a = **p;
-  for (const Value& i : indices) {
-    if (std::holds_alternative<ArrayPtr>(i)) {
-      fail(range, "indexing with an array of indices is not supported");
-    }
-  }
-  std::optional<std::size_t> at;
-  std::string where;
-  if (indices.size() == 1) {
+  const shape::Value fallback = default_element(a.type);
+  std::string outside;  // the first index outside the array
+  const auto element = [&](std::optional<std::size_t> at, const std::string& where) {
+    if (at) return a.items[*at];
+    if (outside.empty()) outside = where;
+    return fallback;
+  };
+  const bool by_arrays = std::any_of(indices.begin(), indices.end(), [](const Value& i) {
+    return std::holds_alternative<ArrayPtr>(i);
+  });
+  Value out;
+  if (!by_arrays && indices.size() == 1) {
     const double i = as_number(indices[0], range);
-    at = position(i, a.items.size());
-    where = "index " + as_text(i) + " is outside the array's " + std::to_string(a.items.size()) +
-            " elements";
-  } else {
+    out = from_shape(
+        element(position(i, a.items.size()), "index " + as_text(i) + " is outside the array's " +
+                                                 std::to_string(a.items.size()) + " elements"));
+  } else if (!by_arrays) {
     const double r = as_number(indices[0], range);
     const double c = as_number(indices[1], range);
     const std::optional<std::size_t> row = position(r, a.rows);
     const std::optional<std::size_t> column = position(c, a.columns);
-    if (row && column) at = *row * a.columns + *column;
-    where = "index [" + as_text(r) + ", " + as_text(c) + "] is outside the array's " +
-            std::to_string(a.rows) + " x " + std::to_string(a.columns) + " elements";
+    out = from_shape(
+        element(row && column ? std::optional(*row * a.columns + *column) : std::nullopt,
+                "index [" + as_text(r) + ", " + as_text(c) + "] is outside the array's " +
+                    std::to_string(a.rows) + " x " + std::to_string(a.columns) + " elements"));
+  } else {
+    out = index_by_arrays(a, indices, range, element);
   }
-  if (at) return from_shape(a.items[*at]);
-  const shape::Value fallback = default_element(a.type);
-  warning = where + "; the value is " +
-            (std::holds_alternative<std::string>(fallback) ? std::string("\"\"")
-                                                           : shape::to_string(fallback)) +
-            " (CityEngine's default)";
-  return from_shape(fallback);
+  if (!outside.empty()) {
+    warning = outside + "; the value is " +
+              (std::holds_alternative<std::string>(fallback) ? std::string("\"\"")
+                                                             : shape::to_string(fallback)) +
+              " (CityEngine's default)";
+  }
+  return out;
 }
 
 bool is_array_function(Function f) {
@@ -254,6 +318,7 @@ bool is_array_function(Function f) {
     case Function::kStringArray:
     case Function::kListToArray:
     case Function::kListFromArray:
+    case Function::kRange:
       return true;
     default:
       return false;
@@ -270,6 +335,24 @@ Value array_function(Function f, const std::vector<Value>& args, Range range) {
                                                          : ElementType::kString;
       if (args.empty()) return make_array(to, 0, 0, {});
       return converted(array_arg(args, 0, "floatArray", range), to);
+    }
+    case Function::kRange: {
+      const double base = as_number(args.front(), range);
+      const double step = args.size() == 3 ? as_number(args[1], range) : 1.0;
+      const double limit = as_number(args.back(), range);
+      std::vector<shape::Value> items;
+      if (!std::isfinite(base) || !std::isfinite(step) || !std::isfinite(limit)) {
+        fail(range, "the colon operator needs finite numbers");
+      }
+      for (double i = 0; step != 0; ++i) {
+        const double v = base + i * step;
+        if (step > 0 ? v > limit : v < limit) break;
+        if (items.size() == kMaxElements) {
+          fail(range, "an array of more than " + std::to_string(kMaxElements) + " elements");
+        }
+        items.emplace_back(v);
+      }
+      return make_row(ElementType::kFloat, std::move(items));
     }
     case Function::kListToArray: {
       std::vector<std::string> items;

@@ -235,8 +235,9 @@ class Writer {
       case ExprKind::kChance:
       case ExprKind::kArray:
       case ExprKind::kIndex:
-      case ExprKind::kComp: {
-        constexpr std::string_view kKinds[] = {"case", "chance", "array", "index", "comp"};
+      case ExprKind::kComp:
+      case ExprKind::kRange: {
+        constexpr std::string_view kKinds[] = {"case", "chance", "array", "index", "comp", "range"};
         field("kind", kKinds[static_cast<int>(e.kind) - static_cast<int>(ExprKind::kCase)]);
         if (e.kind == ExprKind::kArray && e.boolean) field("rows", "true");
         if (e.kind == ExprKind::kComp) field("operators", e.text);

@@ -268,9 +268,10 @@ class Writer {
       case ExprKind::kChance:
       case ExprKind::kArray:
       case ExprKind::kIndex:
-      case ExprKind::kComp: {
+      case ExprKind::kComp:
+      case ExprKind::kRange: {
         constexpr std::string_view kTypes[] = {"CaseExpression", "ChanceExpression", "ArrayLiteral",
-                                               "IndexAccess", "CompFunction"};
+                                               "IndexAccess",    "CompFunction",     "Range"};
         typed(feature, kTypes[static_cast<int>(e.kind) - static_cast<int>(ExprKind::kCase)],
               e.range);
         if (e.kind == ExprKind::kArray && e.boolean) out_.attribute("rows", "true");

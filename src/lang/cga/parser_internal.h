@@ -574,8 +574,8 @@ class Parser {
       if (accept(Tok::kLBracket)) {  // CityEngine's array index `a[i]`, `a[r, c]`
         ExprPtr index = make(ExprKind::kIndex, expr->range);
         index->operands.push_back(std::move(expr));
-        index->operands.push_back(parse_expr());
-        if (accept(Tok::kComma)) index->operands.push_back(parse_expr());
+        index->operands.push_back(parse_element());
+        if (accept(Tok::kComma)) index->operands.push_back(parse_element());
         expect(Tok::kRBracket, " to close the index");
         index->range.end = prev_end_;
         expr = std::move(index);
@@ -606,6 +606,19 @@ class Parser {
       expr = std::move(call);
     }
     return expr;
+  }
+
+  // An element inside `[ ]`: an expression, or CityEngine's colon operator `a:b`, `a:s:b`.
+  ExprPtr parse_element() {
+    ExprPtr first = parse_expr();
+    if (!at(Tok::kColon)) return first;
+    ExprPtr range = make(ExprKind::kRange, first->range);
+    range->operands.push_back(std::move(first));
+    while (range->operands.size() < 3 && accept(Tok::kColon)) {
+      range->operands.push_back(parse_expr());
+    }
+    range->range.end = prev_end_;
+    return range;
   }
 
   // CityEngine's comp function: `comp(type) { selector : value | selector = value | ... }`.
@@ -691,7 +704,7 @@ class Parser {
         std::vector<ExprPtr> rows;
         if (!at(Tok::kRBracket)) {
           while (true) {
-            array->operands.push_back(parse_expr());
+            array->operands.push_back(parse_element());
             if (accept(Tok::kComma)) continue;
             if (!accept(Tok::kSemicolon)) break;
             ExprPtr row = make(ExprKind::kArray, Range{array->operands.front()->range.begin,

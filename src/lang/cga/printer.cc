@@ -143,6 +143,12 @@ class ExprPrinter {
       case ExprKind::kComp:
         comp_function(e);
         return;
+      case ExprKind::kRange:
+        for (std::size_t i = 0; i < e.operands.size(); ++i) {
+          if (i > 0) out_ += ':';
+          operand(*e.operands[i], kPostfixLevel);
+        }
+        return;
     }
   }
 

@@ -47,6 +47,11 @@ ArrayPtr make_array(ElementType type, std::size_t rows, std::size_t columns,
   return a;
 }
 
+ArrayPtr make_row(ElementType type, std::vector<shape::Value> items) {
+  const std::size_t columns = items.size();
+  return make_array(type, 1, columns, std::move(items));
+}
+
 namespace {
 
 std::string joined(const Array& a, bool quote) {

@@ -41,6 +41,8 @@ const ElementType* element_type_of(const shape::Value& v);
 // An array of `rows` x `columns` elements (row-major) of `type`.
 ArrayPtr make_array(ElementType type, std::size_t rows, std::size_t columns,
                     std::vector<shape::Value> items);
+// A 1-D array (one row) of `items`.
+ArrayPtr make_row(ElementType type, std::vector<shape::Value> items);
 
 // CityEngine's printed form: "(3)[1,2,3]" for one row, "(2x2)[1,2;3,4]" for more (CityEngine
 // prints 2-D arrays over several lines; one line keeps print() and report lines whole).

@@ -87,6 +87,38 @@ Lot -->
   EXPECT_EQ(p, expected);
 }
 
+TEST(CityEngineArrays, ColonOperatorAndIndexArrays) {
+  // The examples of CityEngine's reference pages func_colon and func_index.
+  const std::vector<std::string> p = prints(R"(version "2023.0"
+const a = [1, 2, 3, 4]
+const m = [1, 2, 3; 4, 5, 6; 7, 8, 9]
+Lot -->
+	print([2:4]) print([0.5:3]) print([4:2]) print([1:0.5:3]) print([4:-1:2])
+	print([0:2; 3, 3, 3]) print(a[[0, 2]]) print(a[3:-1:1]) print(a[[true, false, true]])
+	print(m[1, [0, 2]]) print(m[[0, 0, 1], 2]) print(m[0:2, [0, 2]]) print(m[[0; 3; 6]])
+	print(findFirst(m[0:2, 1], 8)) print(a[sortIndices([3, 1, 2, 0])])
+)",
+                                            rectangle_lot(10, 10));
+  const std::vector<std::string> expected = {"(3)[2,3,4]",   "(3)[0.5,1.5,2.5]",
+                                             "(0)[]",        "(5)[1,1.5,2,2.5,3]",
+                                             "(3)[4,3,2]",   "(2x3)[0,1,2;3,3,3]",
+                                             "(2)[1,3]",     "(3)[4,3,2]",
+                                             "(2)[1,3]",     "(2)[4,6]",
+                                             "(3x1)[3;3;6]", "(3x2)[1,3;4,6;7,9]",
+                                             "(3x1)[1;4;7]", "2",
+                                             "(4)[4,2,3,1]"};
+  EXPECT_EQ(p, expected);
+  // Logical indices past the end give the default, with the warning.
+  const auto program = compile_text(
+      "version \"2023.0\"\nconst a = [1, 2]\nLot --> print(a[[false, true, true]]) X.\n");
+  ASSERT_TRUE(program);
+  const std::vector<LotResult> r = derive_all(*program, {rectangle_lot(10, 10)});
+  ASSERT_EQ(r[0].prints.size(), 1U);
+  EXPECT_EQ(r[0].prints[0], "test.cga:3: print: (2)[2,0]");
+  EXPECT_NE(diagnostics_text(r[0]).find("warning[CGA604]: index 2 is outside the array's 2"),
+            std::string::npos);
+}
+
 TEST(CityEngineArrays, CompFunctionGivesOneValuePerFaceEdgeOfAnLLot) {
   // The L's edges in order: 12 (facing -y: front), 4 (+x: right), 8 (+y: back), 6 (+x: right),
   // 4 (+y: back), 10 (-x: left).
