@@ -349,4 +349,27 @@ std::optional<double> FileFunctions::image_info(std::string_view path, std::stri
   return attribute == "sx" ? size->width : size->height;
 }
 
+std::optional<std::string> FileFunctions::read_text(std::string_view path,
+                                                    std::string& error) const {
+  const std::optional<fs::path> file = search_.resolve(path);
+  if (!file) {
+    error = "file '" + std::string(path) + "' not found";
+    return std::nullopt;
+  }
+  const std::lock_guard<std::mutex> lock(mutex_);
+  auto it = texts_.find(*file);
+  if (it == texts_.end()) {
+    std::ifstream in(*file, std::ios::binary);
+    std::optional<std::string> text;
+    if (in) {
+      std::ostringstream bytes;
+      bytes << in.rdbuf();
+      text = bytes.str();
+    }
+    it = texts_.emplace(*file, std::move(text)).first;
+  }
+  if (!it->second) error = "cannot read '" + std::string(path) + "'";
+  return it->second;
+}
+
 }  // namespace insula::io

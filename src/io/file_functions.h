@@ -60,6 +60,10 @@ class FileFunctions {
   std::optional<double> image_info(std::string_view path, std::string_view attribute,
                                    std::string& error) const;
 
+  // The bytes of a text file (readStringTable, readFloatTable), read once per resolved file.
+  // nullopt with `error` when the file is not found or unreadable.
+  std::optional<std::string> read_text(std::string_view path, std::string& error) const;
+
  private:
   struct Listed {
     std::filesystem::path path;
@@ -79,6 +83,7 @@ class FileFunctions {
   mutable std::map<std::string, bool, std::less<>> exists_;
   mutable std::map<std::string, std::string, std::less<>> searches_;
   mutable std::map<std::filesystem::path, std::optional<ImageSize>> images_;
+  mutable std::map<std::filesystem::path, std::optional<std::string>> texts_;
 };
 
 }  // namespace insula::io

@@ -231,6 +231,14 @@ enum class SetbackPart : std::uint8_t { kShape, kRemainder, kAll };
 // The general setback (CGA shapeL, shapeU, shapeO): strips of each edge's depth; children the
 // strips' union clipped to the shape (piece 0) and the remainder (piece 1), as `part` keeps.
 OpResult setback(ShapeTree& tree, ShapeId id, const EdgeDepths& depths, SetbackPart part);
+// The same with a depth per edge of the outline (CGA setback(float[])): the outer ring's edges
+// from its first vertex, then each hole's; 0 or a missing entry: no strip; extra entries are
+// ignored (as CityEngine).
+OpResult setback(ShapeTree& tree, ShapeId id, std::span<const double> edge_depths,
+                 SetbackPart part);
+// The side an edge faces by its outward direction in scope xy, as setback classifies it: the
+// direction closest to -y is front, +y back, -x left, +x right (ties go to front and back).
+EdgeSelector edge_side(kernel::Vec2 outward);
 // `region` (in `id`'s scope xy) as a flat child of `id` with its scope fitted to the region, the
 // tag of `id`'s first face, recorded in `result` as `piece`.
 void add_flat_region(ShapeTree& tree, ShapeId id, const kernel::Polygon& region,

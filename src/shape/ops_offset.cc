@@ -32,37 +32,74 @@ std::string boolean_error(kernel::BooleanStatus status) {
   return "2D boolean failed: " + std::string(kernel::to_string(status));
 }
 
-// The strip depth of an edge by its outward direction in scope xy: the direction closest to -y
-// is front, +y back, -x left, +x right (ties go to front and back).
 double depth_of(const EdgeDepths& depths, Vec2 outward) {
-  if (std::fabs(outward.y) >= std::fabs(outward.x)) {
-    return outward.y < 0 ? depths.front : depths.back;
+  switch (edge_side(outward)) {
+    case EdgeSelector::kFront:
+      return depths.front;
+    case EdgeSelector::kBack:
+      return depths.back;
+    case EdgeSelector::kLeft:
+      return depths.left;
+    default:
+      return depths.right;
   }
-  return outward.x < 0 ? depths.left : depths.right;
 }
 
-// Quads reaching inward from every edge by its depth (none where it is 0). The region lies left
-// of every edge (outer ring counter-clockwise, holes clockwise), so inward is the left normal.
-std::vector<Polygon> edge_strips(const Polygon& outline, const EdgeDepths& depths) {
-  std::vector<Polygon> strips;
-  const auto add_ring = [&](const kernel::Ring& ring) {
-    for (std::size_t i = 0; i < ring.size(); ++i) {
+// Calls visit(a, b, inward unit normal, edge index) for every edge of the outline, outer ring
+// first. The region lies left of every edge (outer ring counter-clockwise, holes clockwise), so
+// inward is the left normal. Degenerate edges keep their index but are not visited.
+template <typename Visit>
+void for_each_edge(const Polygon& outline, Visit&& visit) {
+  std::size_t index = 0;
+  const auto ring_edges = [&](const kernel::Ring& ring) {
+    for (std::size_t i = 0; i < ring.size(); ++i, ++index) {
       const Vec2 a = ring[i];
       const Vec2 b = ring[(i + 1) % ring.size()];
       const Vec2 d = kernel::normalized(b - a);
       if (kernel::length(d) == 0) continue;
-      const Vec2 inward = kernel::perp(d);
-      const double depth = depth_of(depths, -inward);
-      if (!(depth > 0)) continue;
-      strips.push_back({{a, b, b + inward * depth, a + inward * depth}, {}});
+      visit(a, b, kernel::perp(d), index);
     }
   };
-  add_ring(outline.outer);
-  for (const auto& hole : outline.holes) add_ring(hole);
+  ring_edges(outline.outer);
+  for (const auto& hole : outline.holes) ring_edges(hole);
+}
+
+// Quads reaching inward from every edge by its depth (none where it is 0).
+template <typename DepthOf>
+std::vector<Polygon> edge_strips(const Polygon& outline, DepthOf&& depth_of_edge) {
+  std::vector<Polygon> strips;
+  for_each_edge(outline, [&](Vec2 a, Vec2 b, Vec2 inward, std::size_t index) {
+    const double depth = depth_of_edge(-inward, index);
+    if (depth > 0) strips.push_back({{a, b, b + inward * depth, a + inward * depth}, {}});
+  });
   return strips;
 }
 
+OpResult cut_strips(ShapeTree& tree, ShapeId id, const std::vector<Polygon>& strips,
+                    SetbackPart part) {
+  const std::vector<Polygon> original{*tree[id].outline};
+  const kernel::BooleanResult band = kernel::intersect(original, strips);
+  const kernel::BooleanResult rest = kernel::subtract(original, strips);
+  if (!band.ok()) return OpResult::failure(boolean_error(band.status));
+  if (!rest.ok()) return OpResult::failure(boolean_error(rest.status));
+  OpResult result;
+  if (part != SetbackPart::kRemainder) {
+    for (const Polygon& p : band.polygons) add_flat_region(tree, id, p, 0, result);
+  }
+  if (part != SetbackPart::kShape) {
+    for (const Polygon& p : rest.polygons) add_flat_region(tree, id, p, 1, result);
+  }
+  return finish(tree, id, std::move(result));
+}
+
 }  // namespace
+
+EdgeSelector edge_side(Vec2 outward) {
+  if (std::fabs(outward.y) >= std::fabs(outward.x)) {
+    return outward.y < 0 ? EdgeSelector::kFront : EdgeSelector::kBack;
+  }
+  return outward.x < 0 ? EdgeSelector::kLeft : EdgeSelector::kRight;
+}
 
 OpResult offset(ShapeTree& tree, ShapeId id, double distance, OffsetPart part) {
   const Shape& s = tree[id];
@@ -106,20 +143,22 @@ OpResult setback(ShapeTree& tree, ShapeId id, const EdgeDepths& depths, SetbackP
   for (double d : {depths.front, depths.back, depths.left, depths.right}) {
     if (!(d >= 0) || !std::isfinite(d)) return OpResult::failure("depths must be finite and >= 0");
   }
-  const std::vector<Polygon> original{*s.outline};
-  const std::vector<Polygon> strips = edge_strips(*s.outline, depths);
-  const kernel::BooleanResult band = kernel::intersect(original, strips);
-  const kernel::BooleanResult rest = kernel::subtract(original, strips);
-  if (!band.ok()) return OpResult::failure(boolean_error(band.status));
-  if (!rest.ok()) return OpResult::failure(boolean_error(rest.status));
-  OpResult result;
-  if (part != SetbackPart::kRemainder) {
-    for (const Polygon& p : band.polygons) add_flat_region(tree, id, p, 0, result);
+  const std::vector<Polygon> strips =
+      edge_strips(*s.outline, [&](Vec2 outward, std::size_t) { return depth_of(depths, outward); });
+  return cut_strips(tree, id, strips, part);
+}
+
+OpResult setback(ShapeTree& tree, ShapeId id, std::span<const double> edge_depths,
+                 SetbackPart part) {
+  const Shape& s = tree[id];
+  if (!s.is_flat()) return OpResult::failure("needs a flat shape (a footprint or a face)");
+  for (double d : edge_depths) {
+    if (!(d >= 0) || !std::isfinite(d)) return OpResult::failure("depths must be finite and >= 0");
   }
-  if (part != SetbackPart::kShape) {
-    for (const Polygon& p : rest.polygons) add_flat_region(tree, id, p, 1, result);
-  }
-  return finish(tree, id, std::move(result));
+  const std::vector<Polygon> strips = edge_strips(*s.outline, [&](Vec2, std::size_t index) {
+    return index < edge_depths.size() ? edge_depths[index] : 0.0;
+  });
+  return cut_strips(tree, id, strips, part);
 }
 
 ParamDecl part_param() {
@@ -184,6 +223,29 @@ std::vector<Operation> offset_operations() {
            if (name == a.string("edges")) edges = value;
          }
          return setback(t, id, a.number("distance"), edges);
+       }});
+  ops.push_back(
+      {"setbackEdges",
+       "Cuts a strip along each edge of a flat shape as deep as that edge's entry of the depths "
+       "(outer ring from its first vertex, then the holes; CGA setback(float[])); children the "
+       "strips' union (piece 0) and the remainder (piece 1), as `part` keeps.",
+       {{"depths",
+         ParamType::kSizeList,
+         "strip depth per edge (meters, 0: none; missing entries: none)",
+         std::nullopt,
+         {},
+         0.0,
+         {}},
+        part_param()},
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+         std::vector<double> depths;
+         for (const SizeSpec& d : a.sizes("depths")) {
+           if (d.mode != SizeMode::kAbsolute) {
+             return OpResult::failure("depths must be meters, not relative or floating sizes");
+           }
+           depths.push_back(d.value);
+         }
+         return setback(t, id, depths, part_from(a.string("part")));
        }});
   // CityEngine's L, U and O shapes: setbacks of the front and the named sides, in its order.
   struct Band {

@@ -61,5 +61,32 @@ TEST(Setback, FrontStripAndRemainder) {
   EXPECT_EQ(setback(tree, root.id, 0, EdgeSelector::kAll).error, "distance must be > 0");
 }
 
+TEST(Setback, EdgesTakeADepthEach) {
+  ShapeTree tree;
+  // An L: edges 12 (y = 0), 4, 8, 6, 4, 10 (x = 0), counter-clockwise from the origin.
+  const RootResult root =
+      tree.create_root({{{0, 0}, {12, 0}, {12, 4}, {4, 4}, {4, 10}, {0, 10}}, {}});
+  const std::vector<SizeSpec> depths = {{1, SizeMode::kAbsolute}, {0, SizeMode::kAbsolute},
+                                        {0, SizeMode::kAbsolute}, {0, SizeMode::kAbsolute},
+                                        {0, SizeMode::kAbsolute}, {2, SizeMode::kAbsolute}};
+  const OpResult r = registry().run(tree, root.id, "setbackEdges", {{"depths", depths}});
+  ASSERT_TRUE(r.ok()) << r.error;
+  // 12 x 1 along y = 0 and 2 x 10 along x = 0 overlap in a 2 x 1 corner.
+  EXPECT_NEAR(total_area(tree, r, 0), 12 + 20 - 2, 1e-9);
+  EXPECT_NEAR(total_area(tree, r, 1), 72 - 30, 1e-9);
+  // Only as many edges as entries; extra entries are ignored.
+  const std::vector<double> first = {0, 3};
+  EXPECT_NEAR(total_area(tree, setback(tree, root.id, first, SetbackPart::kShape), 0), 12, 1e-9);
+  const std::vector<double> extra = {0, 0, 0, 0, 0, 0, 5};
+  EXPECT_TRUE(setback(tree, root.id, extra, SetbackPart::kAll).children.size() == 1U);
+  const std::vector<double> negative = {-1};
+  EXPECT_EQ(setback(tree, root.id, negative, SetbackPart::kAll).error,
+            "depths must be finite and >= 0");
+  const OpResult relative =
+      registry().run(tree, root.id, "setbackEdges",
+                     {{"depths", std::vector<SizeSpec>{{0.5, SizeMode::kRelative}}}});
+  EXPECT_EQ(relative.error, "setbackEdges: depths must be meters, not relative or floating sizes");
+}
+
 }  // namespace
 }  // namespace insula::shape

@@ -1,5 +1,6 @@
-// CGA's file functions (fileExists, fileSearch, fileRandom, assetInfo, imageInfo) answered by
-// io::FileFunctions, the asset search the grammar's inserts use (docs/assets.md).
+// CGA's file functions (fileExists, fileSearch, fileRandom, assetInfo, imageInfo, readStringTable,
+// readFloatTable) answered by io::FileFunctions, the asset search the grammar's inserts use
+// (docs/assets.md).
 #pragma once
 
 #include "io/file_functions.h"
@@ -25,6 +26,9 @@ class CgaFiles final : public lang::cga::FileQueries {
   std::optional<double> image_info(const std::string& path, const std::string& what,
                                    std::string& error) const override {
     return files_.image_info(path, what, error);
+  }
+  std::optional<std::string> read_text(const std::string& path, std::string& error) const override {
+    return files_.read_text(path, error);
   }
 
  private:

@@ -35,8 +35,11 @@ enum class ExprKind {
   // CityEngine's dialect (docs/cityengine-dialect.md §2):
   kCase,    // operands: condition, value, condition, value, ..., else value (odd count)
   kChance,  // operands: percentage, value, percentage, value, ..., else value (odd count)
-  kArray,   // operands: the elements (`[1, 2, 3]`)
-  kIndex,   // operands[0] indexed by operands[1] (`a[i]`)
+  kArray,   // operands: the elements (`[1, 2, 3]`); boolean: `;` rows, each operand a kArray row
+  kIndex,   // operands[0] indexed by operands[1] (`a[i]`) or operands[1], operands[2] (`a[r, c]`)
+  kComp,    // comp function `comp(fe){ sel : v | sel = w }`: operands[0] the component type, then
+            // selector, value, selector, value, ...; text: each branch's operator, ':' or '='
+  kRange,   // the colon operator inside `[ ]`: base, limit (`1:5`) or base, step, limit (`1:2:9`)
 };
 
 // kRelative is `2r` (§II: size proportional to the scope), kFloating is `~2` (a size that

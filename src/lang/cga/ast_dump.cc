@@ -214,9 +214,14 @@ std::string dump(const Expr& expr) {
     case ExprKind::kCase:
     case ExprKind::kChance:
     case ExprKind::kArray:
-    case ExprKind::kIndex: {
-      constexpr std::string_view kHeads[] = {"(case", "(chance", "(array", "(index"};
+    case ExprKind::kIndex:
+    case ExprKind::kComp:
+    case ExprKind::kRange: {
+      constexpr std::string_view kHeads[] = {"(case",  "(chance", "(array",
+                                             "(index", "(comp",   "(range"};
       std::string out(kHeads[static_cast<int>(expr.kind) - static_cast<int>(ExprKind::kCase)]);
+      if (expr.kind == ExprKind::kArray && expr.boolean) out += ";";
+      if (expr.kind == ExprKind::kComp) out += " " + expr.text;
       for (const ExprPtr& operand : expr.operands) {
         out += ' ';
         out += dump(*operand);

@@ -394,7 +394,7 @@ std::optional<CompTypeSpelling> comp_type_of(std::string_view text) {
       {"edge", CompType::kEdges, true},           {"vertex", CompType::kVertices, true},
       {"verticles", CompType::kVertices, true},   {"vertices's", CompType::kVertices, true},
       {"side faces", CompType::kSideFaces, true}, {"side_faces", CompType::kSideFaces, true},
-      {"sideface", CompType::kSideFaces, true},
+      {"sideface", CompType::kSideFaces, true},   {"fe", CompType::kFaceEdges, false},
   };
   for (const Entry& entry : kTypes) {
     if (entry.text == text) return CompTypeSpelling{entry.type, entry.nonstandard};
@@ -412,6 +412,8 @@ std::string_view comp_type_name(CompType type) {
       return "vertices";
     case CompType::kSideFaces:
       return "sidefaces";
+    case CompType::kFaceEdges:
+      return "fe";
   }
   return "faces";
 }

@@ -70,7 +70,7 @@ std::optional<std::string> canonical_axis(std::string_view text);
 
 // Component types of CS/Comp/comp (§II "faces", "edges", "vertices", "side faces"; §VI writes
 // "faces", "edges", "verticles", "sidefaces"; CityEngine's "f", "e", "v").
-enum class CompType { kFaces, kEdges, kVertices, kSideFaces };
+enum class CompType { kFaces, kEdges, kVertices, kSideFaces, kFaceEdges };
 struct CompTypeSpelling {
   CompType type = CompType::kFaces;
   // The text is one of the paper's non-canonical spellings ("edge", "verticles", "side faces",

@@ -3,6 +3,7 @@
 // function exists with a fitting number of arguments (functions.h); literals fold to constants so
 // the checks of §IV.B (probabilities, angles) can run on them.
 #include <cmath>
+#include <set>
 #include <string>
 
 #include "lang/cga/checker_internal.h"
@@ -20,6 +21,10 @@ std::string arity_text(std::uint8_t min_args, std::uint8_t max_args) {
 
 std::string plural(std::size_t count, const char* word) {
   return std::to_string(count) + " " + word + (count == 1 ? "" : "s");
+}
+
+bool is_edge_side(std::string_view name) {
+  return name == "front" || name == "back" || name == "left" || name == "right" || name == "side";
 }
 
 std::optional<double> arithmetic(BinaryOp op, double a, double b) {
@@ -108,8 +113,66 @@ void Checker::check_expr(const Expr& expr, ExprRole role) {
       return;
     case ExprKind::kArray:
     case ExprKind::kIndex:
-      error("CGA902", "CityEngine arrays are not supported", expr.range);
+    case ExprKind::kRange:
+      for (const ExprPtr& operand : expr.operands) check_expr(*operand);
       return;
+    case ExprKind::kComp:
+      check_comp_function(expr);
+      return;
+  }
+}
+
+// CityEngine's comp function: a component type, selectors as the comp operation's (plus
+// `street.*` and `object.*` on face edges), and a value per branch.
+void Checker::check_comp_function(const Expr& expr) {
+  const Expr& type = *expr.operands[0];
+  const std::optional<CompTypeSpelling> spelling =
+      type.kind == ExprKind::kIdent ? comp_type_of(type.text) : std::nullopt;
+  const CompType kind = spelling.has_value() ? spelling.value().type : CompType::kSideFaces;
+  if (kind == CompType::kSideFaces) {
+    error("CGA309", "unknown component type of comp() (expected f, e, v or fe)", type.range);
+  }
+  const bool face_edges = kind == CompType::kFaceEdges;
+  const OperationInfo* comp = find_operation("comp");
+  std::set<std::string> seen;
+  for (std::size_t i = 1; i + 1 < expr.operands.size(); i += 2) {
+    const Expr& key = *expr.operands[i];
+    std::string name = dotted_name(key);
+    const std::size_t dot = name.find('.');
+    const std::string side = dot == std::string::npos ? name : name.substr(dot + 1);
+    const bool frame = dot != std::string::npos &&
+                       (name.compare(0, dot, "street") == 0 || name.compare(0, dot, "object") == 0);
+    if (const std::optional<Constant> index = fold(key)) {
+      if (index->relative || index->floating || index->value < 0 ||
+          index->value != std::floor(index->value)) {
+        error("CGA315", "a component index must be a whole number >= 0", key.range);
+      }
+      name = std::to_string(index->value);
+    } else if (frame && (face_edges || name.compare(0, dot, "street") == 0)) {
+      if (!face_edges || !is_edge_side(side)) {
+        error("CGA902",
+              "comp selector '" + name +
+                  "' is supported on face edges (fe) only, with front, back, left, right or side",
+              key.range);
+      }
+    } else if (comp == nullptr || !is_selector(*comp, name)) {
+      error("CGA315",
+            "unknown selector of comp() (a comp selector such as front, side or all, or a "
+            "component index)",
+            key.range);
+    } else if (face_edges && name != "all" && !is_edge_side(name)) {
+      error("CGA315", "face edges (fe) take front, back, left, right, side, all or an index",
+            key.range);
+    } else if (kind != CompType::kFaces && dot != std::string::npos) {
+      error("CGA315", "selector '" + name + "' applies to faces only", key.range);
+    } else if (kind != CompType::kEdges &&
+               (name == "eave" || name == "hip" || name == "valley" || name == "ridge")) {
+      error("CGA315", "selector '" + name + "' applies to edges only (comp(e))", key.range);
+    }
+    if (!name.empty() && !seen.insert(name).second) {
+      error("CGA315", "selector '" + name + "' appears twice", key.range);
+    }
+    check_expr(*expr.operands[i + 1]);
   }
 }
 

@@ -15,7 +15,6 @@
 namespace insula::lang::cga {
 
 using shape::SizeMode;
-using shape::Value;
 
 const CAttr* Program::find_attr(std::string_view name) const {
   for (const CAttr& a : attrs) {
@@ -87,6 +86,20 @@ constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
     {"fileRandom", Function::kFileRandom},
     {"assetInfo", Function::kAssetInfo},
     {"imageInfo", Function::kImageInfo},
+    {"size", Function::kSize},
+    {"nRows", Function::kNRows},
+    {"nColumns", Function::kNColumns},
+    {"findFirst", Function::kFindFirst},
+    {"findLast", Function::kFindLast},
+    {"sortIndices", Function::kSortIndices},
+    {"transpose", Function::kTranspose},
+    {"floatArray", Function::kFloatArray},
+    {"boolArray", Function::kBoolArray},
+    {"stringArray", Function::kStringArray},
+    {"listToArray", Function::kListToArray},
+    {"listFromArray", Function::kListFromArray},
+    {"readStringTable", Function::kReadStringTable},
+    {"readFloatTable", Function::kReadFloatTable},
 };
 
 // An expression that names a word: a string literal or a bare identifier (`split(x)`).
@@ -251,11 +264,105 @@ class Compiler {
         return add(ENode{code, 0, 0, e.range, std::move(kids)});
       }
       case ExprKind::kArray:
-      case ExprKind::kIndex:
-        error("CGA513", "CityEngine arrays are not supported", e.range);
-        return constant(Value{}, e.range);
+        return array(e);
+      case ExprKind::kIndex: {
+        std::vector<std::uint32_t> kids;
+        for (const ExprPtr& operand : e.operands) kids.push_back(expr(*operand));
+        return add(ENode{ECode::kIndex, 0, 0, e.range, std::move(kids)});
+      }
+      case ExprKind::kComp:
+        return comp_function(e);
+      case ExprKind::kRange: {
+        std::vector<std::uint32_t> kids;
+        for (const ExprPtr& operand : e.operands) kids.push_back(expr(*operand));
+        return fold(ENode{ECode::kFunction, 0, static_cast<std::uint32_t>(Function::kRange),
+                          e.range, std::move(kids)});
+      }
     }
     return constant(Value{}, e.range);
+  }
+
+  // An array literal; one of constants is built once, here.
+  std::uint32_t array(const Expr& e) {
+    ENode n{ECode::kArray, static_cast<std::uint8_t>(e.boolean ? 1 : 0), 0, e.range, {}};
+    std::vector<std::vector<Value>> groups;
+    bool constant_elements = true;
+    const auto row = [&](const Expr& r) {
+      std::vector<std::uint32_t> kids;
+      groups.emplace_back();
+      for (const ExprPtr& operand : r.operands) {
+        kids.push_back(expr(*operand));
+        constant_elements = constant_elements && is_const(kids.back());
+        if (constant_elements) groups.back().push_back(const_value(kids.back()));
+      }
+      return kids;
+    };
+    if (e.boolean) {
+      for (const ExprPtr& r : e.operands) {
+        n.kids.push_back(add(ENode{ECode::kArray, 0, 0, r->range, row(*r)}));
+      }
+    } else {
+      n.kids = row(e);
+    }
+    if (constant_elements) {
+      try {
+        return constant(array_literal(groups, e.range), e.range);
+      } catch (const EvalError&) {
+        // not foldable: evaluate (and report) when derived
+      }
+    }
+    return add(std::move(n));
+  }
+
+  // CityEngine's comp function: compiled as a comp operation whose branches carry values.
+  std::uint32_t comp_function(const Expr& e) {
+    CItem c;
+    c.code = OpCode::kComp;
+    c.range = e.range;
+    c.info = find_operation("comp");
+    const std::string* w = word_of(*e.operands[0]);
+    if (const std::optional<CompTypeSpelling> type = comp_type_of(w != nullptr ? *w : "")) {
+      c.comp = comp_kind(type->type);
+    } else {
+      error("CGA508", "unknown component type of comp()", e.operands[0]->range);
+    }
+    for (std::size_t i = 1; i + 1 < e.operands.size(); i += 2) {
+      const Expr& key = *e.operands[i];
+      CBranch b;
+      b.range = Range{key.range.begin, e.operands[i + 1]->range.end};
+      b.has_key = true;
+      b.merged = e.text[i / 2] == '=';
+      if (key.kind == ExprKind::kNumber && key.number >= 0 &&
+          key.number == std::floor(key.number)) {
+        b.index = static_cast<std::int64_t>(key.number);
+      } else {
+        b.selector = dotted_name(key);
+      }
+      b.condition = expr(*e.operands[i + 1]);
+      c.branches.push_back(std::move(b));
+    }
+    program_->comp_functions.push_back(std::move(c));
+    return add(ENode{ECode::kCompFunc,
+                     0,
+                     static_cast<std::uint32_t>(program_->comp_functions.size() - 1),
+                     e.range,
+                     {}});
+  }
+
+  static CompKind comp_kind(CompType type) {
+    switch (type) {
+      case CompType::kFaces:
+        return CompKind::kFaces;
+      case CompType::kSideFaces:
+        return CompKind::kSideFaces;
+      case CompType::kEdges:
+        return CompKind::kEdges;
+      case CompType::kVertices:
+        return CompKind::kVertices;
+      case CompType::kFaceEdges:
+        return CompKind::kFaceEdges;
+    }
+    return CompKind::kFaces;
   }
 
   // Folds operators over constants (errors such as 1/0 stay for run time, at their position).
@@ -724,10 +831,7 @@ class Compiler {
                 "' (faces, sidefaces, edges, vertices)",
             item.args[0]->range);
     } else {
-      c.comp = type->type == CompType::kFaces       ? CompKind::kFaces
-               : type->type == CompType::kSideFaces ? CompKind::kSideFaces
-               : type->type == CompType::kEdges     ? CompKind::kEdges
-                                                    : CompKind::kVertices;
+      c.comp = comp_kind(type->type);
     }
     for (std::size_t i = 1; i < item.args.size(); ++i) {
       const std::uint32_t e = expr(*item.args[i]);

@@ -18,6 +18,7 @@
 #include "lang/cga/ast.h"
 #include "lang/cga/functions.h"
 #include "lang/cga/operations.h"
+#include "lang/cga/value.h"
 #include "shape/operation.h"
 #include "shape/scope.h"
 #include "shape/value.h"
@@ -47,6 +48,10 @@ enum class ECode : std::uint8_t {
                // the target (OcclusionTarget), kids: the label when given
   kGeometry,   // CityEngine's geometry.*: query a (shape::GeometryQuery), its selector or angle
                // type op, kids: the tolerance when it takes one
+  // CityEngine's arrays:
+  kArray,     // a literal: kids are its values (op 0), or its `;` rows, each a kArray (op 1)
+  kIndex,     // kids[0][kids[1]] or kids[0][kids[1], kids[2]]
+  kCompFunc,  // comp(f){ sel : value | ... } as a value: Program::comp_functions[a]
 };
 
 enum class ShapeAttr : std::uint8_t {
@@ -112,6 +117,22 @@ enum class Function : std::uint8_t {
   kFileRandom,
   kAssetInfo,
   kImageInfo,
+  // CityEngine's array functions (eval_arrays.cc)
+  kSize,
+  kNRows,
+  kNColumns,
+  kFindFirst,
+  kFindLast,
+  kSortIndices,
+  kTranspose,
+  kFloatArray,
+  kBoolArray,
+  kStringArray,
+  kListToArray,
+  kListFromArray,
+  kReadStringTable,
+  kReadFloatTable,
+  kRange,  // the colon operator `a:b`, `a:s:b` (no name: only inside `[ ]`)
 };
 
 enum class OcclusionRelation : std::uint8_t { kInside, kOverlaps, kTouches };
@@ -157,7 +178,8 @@ enum class OpCode : std::uint8_t {
   kChance,  // branches keyed by percentages; the last one (`else`) takes the rest
 };
 
-enum class CompKind : std::uint8_t { kFaces, kSideFaces, kEdges, kVertices };
+// kFaceEdges: CityEngine's fe, every edge of every face in face order (shared edges twice).
+enum class CompKind : std::uint8_t { kFaces, kSideFaces, kEdges, kVertices, kFaceEdges };
 
 struct CItem;
 
@@ -165,11 +187,13 @@ struct CItem;
 struct CBranch {
   Range range;
   bool has_key = false;
-  CSize size;                         // split sizes
-  std::string selector;               // comp / offset / setback selector ("front", "inside", ...)
-  std::int64_t index = -1;            // comp index key
-  std::uint32_t condition = kNoExpr;  // kCase / kChance: the condition or the percentage
-  bool repeat = false;                // `{ ... }*`
+  CSize size;               // split sizes
+  std::string selector;     // comp / offset / setback selector ("front", "inside", ...)
+  std::int64_t index = -1;  // comp index key
+  // kCase / kChance: the condition or the percentage; a comp function's branch: its value
+  std::uint32_t condition = kNoExpr;
+  bool merged = false;  // CityEngine's `sel = ...`: the selected components as one shape
+  bool repeat = false;  // `{ ... }*`
   std::vector<CBranch> pattern;
   std::vector<CItem> items;
 };
@@ -236,7 +260,10 @@ struct Program {
   std::vector<CFunction> functions;
   std::uint32_t color_attr = 0;  // the hidden attribute color() sets
   std::vector<ENode> nodes;
-  std::vector<shape::Value> consts;
+  std::vector<Value> consts;
+  // CityEngine's comp functions (ECode::kCompFunc): code kComp, branches keyed by selector, each
+  // branch's `condition` the value of the components it takes.
+  std::vector<CItem> comp_functions;
   SymbolId start = kNoSymbol;
   bool uses_occlusion = false;
   // CityEngine's occlusion queries: the derivation runs twice (derive.cc), the second pass asking

@@ -92,7 +92,7 @@ Lot default_lot(const Program& program, const DeriveOptions& options) {
     }
     const CAttr* a = program.find_attr(name);
     if (a != nullptr && a->value != kNoExpr && program.nodes[a->value].code == ECode::kConst) {
-      const shape::Value& v = program.consts[program.nodes[a->value].a];
+      const Value& v = program.consts[program.nodes[a->value].a];
       if (std::holds_alternative<double>(v)) return std::get<double>(v);
     }
     return 20.0;
@@ -195,7 +195,8 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
           if (color.empty()) color = std::get<std::string>(node.value);
           continue;
         }
-        part.attributes.emplace(program.attrs[node.attr].name, node.value);  // nearest wins
+        part.attributes.emplace(program.attrs[node.attr].name,
+                                to_shape(node.value));  // nearest wins
       }
       part.mesh = shape::mesh_to_world(*m.mesh, term.scope);
       if (!color.empty()) {

@@ -40,8 +40,8 @@ struct DeriveLimits {
 };
 
 // CityEngine's file and asset functions (fileExists, fileSearch, fileRandom, assetInfo,
-// imageInfo), answered by the app: the front-end reads no files. Thread-safe (lots derive in
-// parallel). Without one, those functions are an evaluation error.
+// imageInfo, readStringTable, readFloatTable), answered by the app: the front-end reads no files.
+// Thread-safe (lots derive in parallel). Without one, those functions are an evaluation error.
 class FileQueries {
  public:
   virtual ~FileQueries() = default;
@@ -54,6 +54,9 @@ class FileQueries {
                                            std::string& error) const = 0;
   virtual std::optional<double> image_info(const std::string& path, const std::string& what,
                                            std::string& error) const = 0;
+  // The text of a file (readStringTable, readFloatTable); nullopt with `error` when unreadable.
+  virtual std::optional<std::string> read_text(const std::string& path,
+                                               std::string& error) const = 0;
 };
 
 struct DeriveOptions {
@@ -104,7 +107,7 @@ struct Terminal {
 struct AttrNode {
   std::uint32_t parent = 0;
   std::uint32_t attr = 0;
-  shape::Value value;
+  Value value;
 };
 
 struct ReportEntry {
@@ -136,11 +139,11 @@ struct LotResult {
   std::vector<std::uint64_t> symbol_counts;    // by SymbolId: shapes created with that symbol
   std::vector<std::string> prints;             // print() lines, in derivation order
   std::map<std::string, ReportEntry> reports;  // report() sums
-  shape::AttributeMap attributes;              // the lot's resolved attr values + properties
-  std::size_t peak_pending = 0;                // largest number of pending shapes at once
-  TerminalStore terminals_store;               // when keep_terminals
-  std::vector<Geometry> geometry;              // handle 0: no geometry
-  std::vector<AttrNode> attr_nodes;            // node 0: the empty chain
+  shape::AttributeMap attributes;    // the lot's resolved attr values + properties (arrays as text)
+  std::size_t peak_pending = 0;      // largest number of pending shapes at once
+  TerminalStore terminals_store;     // when keep_terminals
+  std::vector<Geometry> geometry;    // handle 0: no geometry
+  std::vector<AttrNode> attr_nodes;  // node 0: the empty chain
 };
 
 // Derives lot number `lot_index` (seeds it as child_seed(mix64(options.seed), lot_index)). Never

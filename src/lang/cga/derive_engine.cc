@@ -217,6 +217,12 @@ Value Engine::file_function(Function f, const std::vector<Value>& args, Range ra
   std::string error;
   std::optional<double> number;
   switch (f) {
+    case Function::kReadStringTable:
+    case Function::kReadFloatTable: {
+      const std::optional<std::string> text = files->read_text(first, error);
+      if (!text) throw EvalError{range, error};
+      return read_table(*text, f == Function::kReadFloatTable);
+    }
     case Function::kFileExists:
       return files->exists(first);
     case Function::kFileSearch: {
@@ -262,14 +268,14 @@ Value Engine::lot_value(std::uint32_t attr, Range range) {
   bool found = false;
   for (const auto& [name, value] : options_.sets) {
     if (name == a.name) {
-      v = value;
+      v = from_shape(value);
       found = true;
     }
   }
   if (!found) {
     if (auto it = lot_.properties.find(a.name);
         it != lot_.properties.end() && !shape::is_null(it->second)) {
-      v = it->second;
+      v = from_shape(it->second);
       found = true;
     }
   }
@@ -375,7 +381,9 @@ void Engine::start() {
   for (std::uint32_t a = 0; a < program_.attrs.size(); ++a) {
     if (a == program_.color_attr) continue;
     const Value v = lot_value(a, program_.attrs[a].range);
-    if (!shape::is_null(v)) out_.attributes[program_.attrs[a].name] = v;
+    if (!std::holds_alternative<std::monostate>(v)) {
+      out_.attributes[program_.attrs[a].name] = to_shape(v);
+    }
   }
   for (const auto& [name, value] : lot_.properties) out_.attributes.emplace(name, value);
   for (State& st : starts_) {

@@ -29,7 +29,6 @@ using shape::Axis;
 using shape::Scope;
 using shape::SizeMode;
 using shape::SizeSpec;
-using shape::Value;
 
 // A pending shape (derive.h: "compact state").
 struct Work {
@@ -136,6 +135,12 @@ class Engine final : public EvalContext {
   shape::Rng& rng() override { return rng_; }
 
   Value file_function(Function f, const std::vector<Value>& args, Range range) override;
+
+  Value comp_function(std::uint32_t index, Range range) override;
+
+  void warning(Range range, std::string message) override {
+    ++warnings_[{range.begin, std::move(message)}];
+  }
 
  private:
   static kernel::Bounds3 bounds(const Scope& s) {
@@ -412,9 +417,23 @@ class Engine final : public EvalContext {
 
   void comp(const CItem& c, State& st);
 
+  // Calls visit(component, branch, k) for each component k (of `total`, in the operation's
+  // order) a branch of comp `c` takes; false when the operation failed (warned).
+  template <typename Visit>
+  bool for_each_component(const CItem& c, State& st, std::uint32_t& total, Visit&& visit);
+  // The branch of a face edge (fe) split that takes face edge `piece` facing `outward` (world).
+  const CBranch* face_edge_target(const CItem& c, std::uint32_t piece, const State& st,
+                                  Vec3 outward) const;
+
   // ---- setback(d){ front: A | remainder: B }: one strip per edge selector, in order, each cut
   // from what the previous ones left; the remainder successor gets what is left at the end.
   void setback(const CItem& c, State& st);
+  // setback(float[]): a depth per edge of the outline; each branch takes the edges its selector
+  // picks among those earlier branches left, all strips cut from the shape as it was.
+  void setback_per_edge(const CItem& c, State& st, const Array& depths);
+  // Whether CityEngine's edge selector `selector` (front, street.left, all, ...) picks an edge
+  // of `st` (flat) with outward direction `outward` (world).
+  bool edge_selected(const std::string& selector, const State& st, Vec3 outward) const;
 
   // ---- I(asset) / Pshape(file): a new terminal shape holding the asset in the current scope
   // (seed 004 "an insertion rule creates a given shape with the current scope"); the current

@@ -3,6 +3,8 @@
 // Rule"; CityEngine selectors) and setback. Boxes, rectangles and pure scopes split by scope math
 // (shape/ops_fast.h, the cores of shape::split); every other geometry through the registry.
 #include <algorithm>
+#include <map>
+#include <optional>
 
 #include "lang/cga/derive_engine.h"
 #include "shape/ops.h"
@@ -272,16 +274,15 @@ std::vector<std::vector<bool>> edge_or_vertex_selections(const CItem& c, const M
 
 }  // namespace
 
-void Engine::comp(const CItem& c, State& st) {
-  const char* type = c.comp == CompKind::kEdges      ? "edges"
-                     : c.comp == CompKind::kVertices ? "vertices"
-                                                     : "faces";
+template <typename Visit>
+bool Engine::for_each_component(const CItem& c, State& st, std::uint32_t& total, Visit&& visit) {
+  const char* type = c.comp == CompKind::kEdges       ? "edges"
+                     : c.comp == CompKind::kVertices  ? "vertices"
+                     : c.comp == CompKind::kFaceEdges ? "faceedges"
+                                                      : "faces";
   OpOutcome o = run_op(st, c.info->registry_op, {{"type", std::string(type)}});
-  if (!check(c, o)) {
-    terminal(st, rule_->predecessor);
-    return;
-  }
-  const auto total = static_cast<std::uint32_t>(o.children.size());
+  if (!check(c, o)) return false;
+  total = static_cast<std::uint32_t>(o.children.size());
   // CityEngine's border / inside selectors need the faces' neighbours: computed when used.
   const bool by_border = std::any_of(c.branches.begin(), c.branches.end(), [](const CBranch& b) {
     return b.selector == "border" || b.selector == "inside";
@@ -296,9 +297,10 @@ void Engine::comp(const CItem& c, State& st) {
   }
   const bool faces = c.comp == CompKind::kFaces || c.comp == CompKind::kSideFaces;
   std::vector<std::vector<bool>> selected;
-  if (o.parent_mesh) {
-    selected = faces ? frame_selections(c, *o.parent_mesh, st.scope, context_.object)
-                     : edge_or_vertex_selections(c, *o.parent_mesh);
+  if (o.parent_mesh && faces) {
+    selected = frame_selections(c, *o.parent_mesh, st.scope, context_.object);
+  } else if (o.parent_mesh && c.comp != CompKind::kFaceEdges) {
+    selected = edge_or_vertex_selections(c, *o.parent_mesh);
   }
   std::size_t ordinal = 0;
   for (std::uint32_t k = 0; k < total; ++k) {
@@ -307,18 +309,113 @@ void Engine::comp(const CItem& c, State& st) {
                              kernel::face_normal(*o.parent_mesh, o.pieces[k]))) {
       continue;
     }
-    const CBranch* b = comp_target(c, o.pieces[k], ordinal++, faces ? o.parent_mesh.get() : nullptr,
-                                   &border, &selected);
+    const CBranch* b = c.comp == CompKind::kFaceEdges
+                           ? face_edge_target(c, o.pieces[k], st, o.children[k].scope.z)
+                           : comp_target(c, o.pieces[k], ordinal++,
+                                         faces ? o.parent_mesh.get() : nullptr, &border, &selected);
     if (b == nullptr) continue;
     State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, total);
     piece.selector = &b->selector;
-    run_branch(*b, piece);
+    visit(piece, *b, k);
+  }
+  return true;
+}
+
+const CBranch* Engine::face_edge_target(const CItem& c, std::uint32_t piece, const State& st,
+                                        Vec3 outward) const {
+  for (const CBranch& b : c.branches) {
+    if (!b.has_key || b.selector == "all") return &b;
+    if (b.index >= 0 ? b.index == piece : edge_selected(b.selector, st, outward)) return &b;
+  }
+  return nullptr;
+}
+
+void Engine::comp(const CItem& c, State& st) {
+  std::uint32_t total = 0;
+  if (!for_each_component(c, st, total, [&](State& piece, const CBranch& b, std::uint32_t) {
+        run_branch(b, piece);
+      })) {
+    terminal(st, rule_->predecessor);
   }
 }
 
+// One value per component; `sel = value` evaluates once, on the first component it takes; the
+// components no branch takes get the type's default (docs/cga-cityengine.md, "Arrays").
+Value Engine::comp_function(std::uint32_t index, Range range) {
+  const CItem& c = program_.comp_functions[index];
+  State* const caller = cur_;
+  const std::span<const Value> caller_frame = frame;
+  State st = *caller;  // a copy: the components' seeds do not move the shape's own
+  std::uint32_t total = 0;
+  std::vector<std::optional<shape::Value>> values;
+  std::map<const CBranch*, shape::Value> merged;
+  std::optional<ElementType> type;
+  const bool ok =
+      for_each_component(c, st, total, [&](State& piece, const CBranch& b, std::uint32_t k) {
+        shape::Value v;
+        if (auto it = merged.find(&b); it != merged.end()) {
+          v = it->second;
+        } else {
+          cur_ = &piece;
+          frame = caller_frame;  // the values read the caller's parameters
+          const Value raw = evaluate(program_, b.condition, *this);
+          v = to_shape(raw);
+          const ElementType* t =
+              std::holds_alternative<ArrayPtr>(raw) ? nullptr : element_type_of(v);
+          if (t == nullptr || (type && *type != *t)) {
+            throw EvalError{
+                program_.nodes[b.condition].range,
+                "the values of comp() must all be floats, bools or strings of one type, "
+                "found a " +
+                    std::string(type_name(raw))};
+          }
+          type = *t;
+          if (b.merged) merged.emplace(&b, v);
+        }
+        values.resize(total);
+        values[k] = std::move(v);
+      });
+  cur_ = caller;
+  frame = caller_frame;
+  if (!ok) throw EvalError{range, "comp(): the shape has no such components"};
+  std::vector<shape::Value> items;
+  items.reserve(total);
+  const ElementType element = type.value_or(ElementType::kFloat);
+  for (std::uint32_t k = 0; k < total; ++k) {
+    items.push_back(k < values.size() && values[k] ? *values[k] : default_element(element));
+  }
+  return make_row(element, std::move(items));
+}
+
+bool Engine::edge_selected(const std::string& selector, const State& st, Vec3 outward) const {
+  std::string side = selector;
+  const Scope* axes = &st.scope;
+  // street.* falls back to object.* without the lot's streetWidth (CityEngine does the same
+  // without that attribute map); object.* classifies in the lot's own scope.
+  if (side.rfind("street.", 0) == 0 || side.rfind("object.", 0) == 0) {
+    side = side.substr(side.find('.') + 1);
+    axes = &start_state_.scope;
+  }
+  const Vec3 local = axes->direction_to_local(outward);
+  const shape::EdgeSelector facing = shape::edge_side({local.x, local.y});
+  if (side == "side") {
+    return facing == shape::EdgeSelector::kLeft || facing == shape::EdgeSelector::kRight;
+  }
+  return (side == "front" && facing == shape::EdgeSelector::kFront) ||
+         (side == "back" && facing == shape::EdgeSelector::kBack) ||
+         (side == "left" && facing == shape::EdgeSelector::kLeft) ||
+         (side == "right" && facing == shape::EdgeSelector::kRight);
+}
+
 void Engine::setback(const CItem& c, State& st) {
-  // The arguments once, on the shape the rule rewrites; each strip adds its edges.
-  std::vector<shape::ArgInput> args = registry_args(c, st);
+  // The distance once, on the shape the rule rewrites; each strip adds its edges.
+  const Value distance = eval(c.args.front(), st);
+  if (const ArrayPtr* depths = std::get_if<ArrayPtr>(&distance)) {
+    setback_per_edge(c, st, **depths);
+    return;
+  }
+  std::vector<shape::ArgInput> args = c.info->fixed;
+  args.push_back({"distance", as_number(distance, program_.nodes[c.args.front()].range)});
   args.push_back({"edges", std::string()});
   const CBranch* remainder = nullptr;
   for (const CBranch& b : c.branches) {
@@ -352,6 +449,65 @@ void Engine::setback(const CItem& c, State& st) {
   if (remainder == nullptr) return;
   State piece = cut ? rest : child_of(st, rest.scope, rest.geometry, 0, 1);
   run_branch(*remainder, piece);
+}
+
+void Engine::setback_per_edge(const CItem& c, State& st, const Array& depths) {
+  if (depths.type != ElementType::kFloat) {
+    throw EvalError{program_.nodes[c.args.front()].range,
+                    "setback() takes a distance or a float[], got a " +
+                        std::string(array_type_name(depths.type))};
+  }
+  const Geometry& g = out_.geometry[st.geometry];
+  const Materialized m = materialize(g, st.scope.size);
+  if (!m.outline) {
+    warn(c, "needs a flat shape (a footprint or a face)");
+    terminal(st, rule_->predecessor);
+    return;
+  }
+  // The outline's edges in setback's order (outer ring, then holes) with their outward
+  // directions in world space.
+  std::vector<Vec3> outward;
+  const auto ring_edges = [&](const kernel::Ring& ring) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const kernel::Vec2 d = ring[(i + 1) % ring.size()] - ring[i];
+      outward.push_back(st.scope.direction_to_world(kernel::normalized(Vec3{d.y, -d.x, 0})));
+    }
+  };
+  ring_edges(m.outline->outer);
+  for (const kernel::Ring& hole : m.outline->holes) ring_edges(hole);
+  std::vector<bool> taken(outward.size(), false);
+  std::vector<SizeSpec> all(outward.size(), SizeSpec{0, SizeMode::kAbsolute});
+  const CBranch* remainder = nullptr;
+  for (const CBranch& b : c.branches) {
+    if (b.selector == "remainder") {
+      remainder = &b;
+      continue;
+    }
+    std::vector<SizeSpec> mine(outward.size(), SizeSpec{0, SizeMode::kAbsolute});
+    for (std::size_t i = 0; i < outward.size() && i < depths.items.size(); ++i) {
+      const bool picked = !b.has_key || b.selector == "all" ||
+                          (b.index >= 0 ? b.index == static_cast<std::int64_t>(i)
+                                        : edge_selected(b.selector, st, outward[i]));
+      if (!picked || taken[i]) continue;
+      taken[i] = true;
+      mine[i].value = all[i].value = std::get<double>(depths.items[i]);
+    }
+    OpOutcome o = run_op(st, "setbackEdges", {{"depths", mine}, {"part", std::string("shape")}});
+    if (!check(c, o)) continue;
+    const auto total = static_cast<std::uint32_t>(o.children.size());
+    for (std::uint32_t k = 0; k < total; ++k) {
+      State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, total);
+      run_branch(b, piece);
+    }
+  }
+  if (remainder == nullptr) return;
+  OpOutcome o = run_op(st, "setbackEdges", {{"depths", all}, {"part", std::string("remainder")}});
+  if (!check(c, o)) return;
+  const auto total = static_cast<std::uint32_t>(o.children.size());
+  for (std::uint32_t k = 0; k < total; ++k) {
+    State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, total);
+    run_branch(*remainder, piece);
+  }
 }
 
 }  // namespace insula::lang::cga::detail

@@ -7,8 +7,6 @@
 
 namespace insula::lang::cga {
 
-using shape::Value;
-
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -18,6 +16,10 @@ bool is_number(const Value& v) {
 }
 bool is_string(const Value& v) {
   return std::holds_alternative<std::string>(v);
+}
+const Array* array_of(const Value& v) {
+  const ArrayPtr* a = std::get_if<ArrayPtr>(&v);
+  return a != nullptr ? a->get() : nullptr;
 }
 
 [[noreturn]] void fail(Range range, std::string message) {
@@ -38,6 +40,15 @@ Value compare(BinaryOp op, const Value& a, const Value& b, Range range) {
   } else if (is_string(a) && is_string(b)) {
     order = std::get<std::string>(a).compare(std::get<std::string>(b));
     order = order < 0 ? -1 : (order > 0 ? 1 : 0);
+  } else if (array_of(a) != nullptr && array_of(b) != nullptr) {
+    if (op == BinaryOp::kEq || op == BinaryOp::kNe) {
+      const bool same = equal(*array_of(a), *array_of(b));
+      return op == BinaryOp::kEq ? same : !same;
+    }
+    if (array_of(a)->type == ElementType::kBool || array_of(b)->type == ElementType::kBool) {
+      fail(range, "cannot order bool arrays");
+    }
+    order = compare(*array_of(a), *array_of(b));
   } else if (op == BinaryOp::kEq || op == BinaryOp::kNe) {
     // Different types are unequal; booleans compare by value.
     const bool equal = a == b;
@@ -86,6 +97,7 @@ double number_arg(const std::vector<Value>& args, std::size_t i, Range range) {
 }  // namespace
 
 std::string_view type_name(const Value& value) {
+  if (const Array* a = array_of(value)) return array_type_name(a->type);
   if (std::holds_alternative<double>(value)) return "number";
   if (std::holds_alternative<std::string>(value)) return "string";
   if (std::holds_alternative<bool>(value)) return "bool";
@@ -105,7 +117,8 @@ bool as_bool(const Value& value, Range range) {
 }
 
 std::string as_text(const Value& value) {
-  return shape::to_string(value);
+  if (const Array* a = array_of(value)) return print_text(*a);
+  return shape::to_string(to_shape(value));
 }
 
 Value apply_unary(UnaryOp op, const Value& v, Range range) {
@@ -131,6 +144,10 @@ Value apply_binary(BinaryOp op, const Value& a, const Value& b, Range range) {
       if (is_string(a) || is_string(b)) return as_text(a) + as_text(b);
       [[fallthrough]];
     default:
+      if (array_of(a) != nullptr || array_of(b) != nullptr) {
+        fail(range, "arithmetic on a " + std::string(type_name(array_of(a) ? a : b)) +
+                        " (CityEngine's element-wise operators .+ .- .* ./ are not supported)");
+      }
       return arithmetic(op, as_number(a, range), as_number(b, range), range);
   }
 }
@@ -142,7 +159,8 @@ bool is_random(Function f) {
 
 bool is_file_function(Function f) {
   return f == Function::kFileExists || f == Function::kFileSearch || f == Function::kFileRandom ||
-         f == Function::kAssetInfo || f == Function::kImageInfo;
+         f == Function::kAssetInfo || f == Function::kImageInfo ||
+         f == Function::kReadStringTable || f == Function::kReadFloatTable;
 }
 
 namespace {
@@ -319,6 +337,15 @@ Value apply_function(Function f, const std::vector<Value>& args, Range range) {
     case Function::kBool:
       if (const std::string* s = std::get_if<std::string>(&args[0])) return !s->empty();
       return as_bool(args[0], range);
+    case Function::kFindFirst:
+    case Function::kFindLast:
+      if (is_string(args[0])) {  // the utility library's string forms
+        const std::string text = as_text(args[0]);
+        const std::string match = as_text(args[1]);
+        const std::size_t at = f == Function::kFindFirst ? text.find(match) : text.rfind(match);
+        return at == std::string::npos ? -1.0 : static_cast<double>(at);
+      }
+      return array_function(f, args, range);
     case Function::kLen:
       if (!is_string(args[0])) fail(range, "len() expects a string");
       return static_cast<double>(std::get<std::string>(args[0]).size());
@@ -345,6 +372,7 @@ Value apply_function(Function f, const std::vector<Value>& args, Range range) {
     case Function::kListAdd:
       return string_function(f, args, range);
     default:
+      if (is_array_function(f)) return array_function(f, args, range);
       fail(range, "internal: random function evaluated without a generator");
   }
 }
@@ -374,6 +402,23 @@ Value call(const Program& program, const ENode& n, EvalContext& context) {
     context.frame = saved;
     throw;
   }
+}
+
+// A literal's rows (op 1: each kid a row node) or its one row (op 0).
+Value array_node(const Program& program, const ENode& n, EvalContext& context) {
+  std::vector<std::vector<Value>> groups;
+  const auto row = [&](const ENode& r) {
+    std::vector<Value> values;
+    values.reserve(r.kids.size());
+    for (std::uint32_t k : r.kids) values.push_back(evaluate(program, k, context));
+    groups.push_back(std::move(values));
+  };
+  if (n.op == 0) {
+    row(n);
+  } else {
+    for (std::uint32_t k : n.kids) row(program.nodes[k]);
+  }
+  return array_literal(groups, n.range);
 }
 
 }  // namespace
@@ -452,6 +497,21 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
       }
       return evaluate(program, n.kids[last], context);
     }
+    case ECode::kArray:
+      return array_node(program, n, context);
+    case ECode::kIndex: {
+      const Value array = evaluate(program, n.kids[0], context);
+      std::vector<Value> indices;
+      for (std::size_t k = 1; k < n.kids.size(); ++k) {
+        indices.push_back(evaluate(program, n.kids[k], context));
+      }
+      std::string warning;
+      Value v = index_array(array, indices, n.range, warning);
+      if (!warning.empty()) context.warning(n.range, std::move(warning));
+      return v;
+    }
+    case ECode::kCompFunc:
+      return context.comp_function(n.a, n.range);
     case ECode::kChance: {
       const std::size_t last = n.kids.size() - 1;
       double draw = context.rng().unit() * 100.0;

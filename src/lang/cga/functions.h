@@ -71,6 +71,23 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"fileRandom", 1, 1, "s", "one matching file, drawn from the shape's seeded generator"},
     {"assetInfo", 2, 2, "ss", "size (sx sy sz) or lowest corner (tx ty tz) of an asset"},
     {"imageInfo", 2, 2, "ss", "width (sx) or height (sy) of an image in pixels"},
+    // CityEngine's arrays (float[], bool[], string[]; docs/cga-cityengine.md, "Arrays").
+    {"size", 1, 1, "v", "number of elements of an array"},
+    {"nRows", 1, 1, "v", "number of rows of an array"},
+    {"nColumns", 1, 1, "v", "number of columns of an array"},
+    {"findFirst", 2, 3, "vv|vvn",
+     "index of the first element equal to a value (within epsilon), -1 if none; in a string, "
+     "the first position of a text"},
+    {"findLast", 2, 3, "vv|vvn", "as findFirst, the last one"},
+    {"sortIndices", 1, 1, "v", "per row, the indices of the elements in ascending order"},
+    {"transpose", 1, 1, "v", "rows as columns"},
+    {"floatArray", 0, 1, "|v", "an array converted to numbers (an empty one without argument)"},
+    {"boolArray", 0, 1, "|v", "an array converted to booleans (an empty one without argument)"},
+    {"stringArray", 0, 1, "|v", "an array converted to texts (an empty one without argument)"},
+    {"listToArray", 1, 1, "s", "the items of a string list as a string[]"},
+    {"listFromArray", 1, 1, "v", "an array as a string list"},
+    {"readStringTable", 1, 1, "s", "a CSV file (asset search) as a 2-D string[]"},
+    {"readFloatTable", 1, 1, "s", "a CSV file as a 2-D float[] (NaN where a cell is no number)"},
 };
 
 // Shape attributes: `Shape.sx`, `Scope.sx` (the paper writes Shape., CityEngine scope.; both

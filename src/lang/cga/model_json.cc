@@ -234,9 +234,13 @@ class Writer {
       case ExprKind::kCase:
       case ExprKind::kChance:
       case ExprKind::kArray:
-      case ExprKind::kIndex: {
-        constexpr std::string_view kKinds[] = {"case", "chance", "array", "index"};
+      case ExprKind::kIndex:
+      case ExprKind::kComp:
+      case ExprKind::kRange: {
+        constexpr std::string_view kKinds[] = {"case", "chance", "array", "index", "comp", "range"};
         field("kind", kKinds[static_cast<int>(e.kind) - static_cast<int>(ExprKind::kCase)]);
+        if (e.kind == ExprKind::kArray && e.boolean) field("rows", "true");
+        if (e.kind == ExprKind::kComp) field("operators", e.text);
         out_.key("operands");
         out_.begin_array();
         for (const ExprPtr& operand : e.operands) expr(*operand);

@@ -267,11 +267,15 @@ class Writer {
       case ExprKind::kCase:
       case ExprKind::kChance:
       case ExprKind::kArray:
-      case ExprKind::kIndex: {
+      case ExprKind::kIndex:
+      case ExprKind::kComp:
+      case ExprKind::kRange: {
         constexpr std::string_view kTypes[] = {"CaseExpression", "ChanceExpression", "ArrayLiteral",
-                                               "IndexAccess"};
+                                               "IndexAccess",    "CompFunction",     "Range"};
         typed(feature, kTypes[static_cast<int>(e.kind) - static_cast<int>(ExprKind::kCase)],
               e.range);
+        if (e.kind == ExprKind::kArray && e.boolean) out_.attribute("rows", "true");
+        if (e.kind == ExprKind::kComp) out_.attribute("operators", e.text);
         for (const ExprPtr& operand : e.operands) expr("operands", *operand);
         break;
       }

@@ -571,10 +571,11 @@ class Parser {
     while (at(Tok::kDot) || at(Tok::kLParen) ||
            (cityengine() && at(Tok::kLBracket) && !peek().line_start)) {
       Nest nest(*this, ++chain);
-      if (accept(Tok::kLBracket)) {  // CityEngine's array index `a[i]`
+      if (accept(Tok::kLBracket)) {  // CityEngine's array index `a[i]`, `a[r, c]`
         ExprPtr index = make(ExprKind::kIndex, expr->range);
         index->operands.push_back(std::move(expr));
-        index->operands.push_back(parse_expr());
+        index->operands.push_back(parse_element());
+        if (accept(Tok::kComma)) index->operands.push_back(parse_element());
         expect(Tok::kRBracket, " to close the index");
         index->range.end = prev_end_;
         expr = std::move(index);
@@ -599,13 +600,51 @@ class Parser {
       expect(Tok::kRParen, " to close the argument list");
       call->range.end = prev_end_;
       if (cityengine() && at(Tok::kLBrace)) {  // comp(fe){ sel : value } as a value (2019.0)
-        fail("CGA902",
-             "CityEngine's comp() function (an array of values per component) is "
-             "not supported");
+        expr = comp_function(std::move(call));
+        continue;
       }
       expr = std::move(call);
     }
     return expr;
+  }
+
+  // An element inside `[ ]`: an expression, or CityEngine's colon operator `a:b`, `a:s:b`.
+  ExprPtr parse_element() {
+    ExprPtr first = parse_expr();
+    if (!at(Tok::kColon)) return first;
+    ExprPtr range = make(ExprKind::kRange, first->range);
+    range->operands.push_back(std::move(first));
+    while (range->operands.size() < 3 && accept(Tok::kColon)) {
+      range->operands.push_back(parse_expr());
+    }
+    range->range.end = prev_end_;
+    return range;
+  }
+
+  // CityEngine's comp function: `comp(type) { selector : value | selector = value | ... }`.
+  ExprPtr comp_function(ExprPtr call) {
+    const Expr& callee = *call->operands[0];
+    if (callee.kind != ExprKind::kIdent || callee.text != "comp" || call->operands.size() != 2) {
+      fail("CGA902", callee.kind == ExprKind::kIdent && callee.text == "comp"
+                         ? "CityEngine's comp() function with a scope alignment is not supported"
+                         : "a '{' block after a function call (only comp() takes one)");
+    }
+    ExprPtr comp = make(ExprKind::kComp, call->range);
+    comp->operands.push_back(std::move(call->operands[1]));
+    expect(Tok::kLBrace, "");
+    do {
+      comp->operands.push_back(parse_expr());
+      if (accept(Tok::kAssign)) {
+        comp->text += '=';
+      } else {
+        expect(Tok::kColon, " or '=' after the selector of a comp() branch");
+        comp->text += ':';
+      }
+      comp->operands.push_back(parse_expr());
+    } while (accept(Tok::kBar));
+    expect(Tok::kRBrace, " or '|' in the block of comp()");
+    comp->range.end = prev_end_;
+    return comp;
   }
 
   ExprPtr parse_primary() {
@@ -660,14 +699,31 @@ class Parser {
         if (!cityengine()) break;
         Nest nest(*this);
         const std::uint32_t begin = advance().range.begin;
+        // `[a, b; c, d]`: rows separated by `;` (CityEngine 2020.0), each a kArray of its own.
         ExprPtr array = make(ExprKind::kArray, Range{begin, begin});
+        std::vector<ExprPtr> rows;
         if (!at(Tok::kRBracket)) {
-          do {
-            array->operands.push_back(parse_expr());
-          } while (accept(Tok::kComma) || accept(Tok::kSemicolon));
+          while (true) {
+            array->operands.push_back(parse_element());
+            if (accept(Tok::kComma)) continue;
+            if (!accept(Tok::kSemicolon)) break;
+            ExprPtr row = make(ExprKind::kArray, Range{array->operands.front()->range.begin,
+                                                       array->operands.back()->range.end});
+            row->operands = std::move(array->operands);
+            array->operands.clear();
+            rows.push_back(std::move(row));
+          }
         }
         expect(Tok::kRBracket, " to close the array");
         array->range = from(begin);
+        if (!rows.empty()) {
+          ExprPtr last = make(ExprKind::kArray, Range{array->operands.front()->range.begin,
+                                                      array->operands.back()->range.end});
+          last->operands = std::move(array->operands);
+          rows.push_back(std::move(last));
+          array->operands = std::move(rows);
+          array->boolean = true;
+        }
         return array;
       }
       default:

@@ -128,19 +128,54 @@ class ExprPrinter {
         return;
       case ExprKind::kArray:
         out_ += '[';
-        for (std::size_t i = 0; i < e.operands.size(); ++i) {
-          if (i > 0) out_ += ", ";
-          expr(*e.operands[i]);
-        }
+        elements(e);
         out_ += ']';
         return;
       case ExprKind::kIndex:
         operand(*e.operands[0], kPostfixLevel);
         out_ += '[';
-        expr(*e.operands[1]);
+        for (std::size_t i = 1; i < e.operands.size(); ++i) {
+          if (i > 1) out_ += ", ";
+          expr(*e.operands[i]);
+        }
         out_ += ']';
         return;
+      case ExprKind::kComp:
+        comp_function(e);
+        return;
+      case ExprKind::kRange:
+        for (std::size_t i = 0; i < e.operands.size(); ++i) {
+          if (i > 0) out_ += ':';
+          operand(*e.operands[i], kPostfixLevel);
+        }
+        return;
     }
+  }
+
+  // An array's elements, or its rows separated by `;`.
+  void elements(const Expr& e) {
+    for (std::size_t i = 0; i < e.operands.size(); ++i) {
+      if (i > 0) out_ += e.boolean ? "; " : ", ";
+      if (e.boolean) {
+        elements(*e.operands[i]);
+      } else {
+        expr(*e.operands[i]);
+      }
+    }
+  }
+
+  // `comp(fe) { front : 1 | back = 2 }`.
+  void comp_function(const Expr& e) {
+    out_ += "comp(";
+    expr(*e.operands[0]);
+    out_ += ") { ";
+    for (std::size_t i = 1; i + 1 < e.operands.size(); i += 2) {
+      if (i > 1) out_ += " | ";
+      expr(*e.operands[i]);
+      out_ += e.text[i / 2] == '=' ? " = " : " : ";
+      expr(*e.operands[i + 1]);
+    }
+    out_ += " }";
   }
 
   // `case c : v ... else : w` and `30% : v ... else : w` (CityEngine).

@@ -21,6 +21,7 @@
 namespace insula::lang::cga {
 namespace {
 
+using testing::check_text;
 using testing::compile_text;
 using testing::derive_all;
 using testing::diagnostics_text;
@@ -60,17 +61,6 @@ Grammar parse_ok(const std::string& text, const std::string& name = "house.cga")
   base::Result<Grammar> g = parse(source);
   EXPECT_TRUE(g.ok()) << (g.diagnostics().empty() ? "" : base::render(g.diagnostics().front()));
   return g.ok() ? std::move(g.value()) : Grammar{};
-}
-
-std::string check_text(const std::string& text) {
-  const base::Source source("t.cga", text);
-  base::Result<Grammar> g = parse(source);
-  if (!g.ok()) return base::render(g.diagnostics().front()) + "\n";
-  std::string out;
-  for (const base::Diagnostic& d : check(g.value(), source).diagnostics) {
-    out += base::render(d) + "\n";
-  }
-  return out;
 }
 
 TEST(CityEngineDialect, IsDetectedFromWhatSeed004Lacks) {
@@ -337,6 +327,15 @@ TEST(CityEngineDialect, RoofEdgesByClass) {
   EXPECT_EQ(l.at("ridge").count, 2U);
   EXPECT_EQ(l.at("eave").count, 6U);
   EXPECT_NEAR(l.at("eave").sum, 72, 1e-6);
+  // The comp function takes the same classes: one value per edge of the hip roof.
+  auto values = compile_text(
+      "version \"2024.0\"\nLot --> extrude(6) comp(f) { top : Top }\n"
+      "Top --> roofHip(30) print(comp(e) { ridge : 1 | hip : 2 | eave : 3 })\n");
+  ASSERT_TRUE(values);
+  const auto v = derive_all(*values, {rectangle_lot(20, 10)});
+  ASSERT_TRUE(v[0].ok) << diagnostics_text(v[0]);
+  ASSERT_EQ(v[0].prints.size(), 1U);
+  EXPECT_NE(v[0].prints[0].find("(9)[3,3,2,3,2,3,2,2,1]"), std::string::npos) << v[0].prints[0];
 }
 
 TEST(CityEngineDialect, WorldAndObjectSelectors) {

@@ -70,6 +70,20 @@ TEST(LuaOps, RegistryOperations) {
             "480.0\t4\t3\t3.3333333333333\t48.0\t32.0\t20.0\t60.0\t2\t2.0\t4.0\t1.0\t1.0\t4.0");
 }
 
+TEST(LuaOps, SetbackEdgesTakesADepthPerEdge) {
+  // The registry's per-edge setback (CGA's setback(float[])): 10 x 8, strips 1 m along the first
+  // edge and 3 m along the third.
+  const auto r = run(R"lua(
+    local parts = setbackEdges(component{polygon={{0, 0}, {10, 0}, {10, 8}, {0, 8}}}, {1, 0, 3},
+                               {pieces={{label="strip"}, {label="rest"}}})
+    local strip = 0
+    for _, s in ipairs(query("strip")) do strip = strip + s.area end
+    print(#parts, strip, query("rest")[1].area)
+  )lua");
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(r.printed, (std::vector<std::string>{"3\t40.0\t40.0"}));
+}
+
 TEST(LuaOps, FacesBecomeTwoDimensionalComponents) {
   const auto r = run(R"lua(
     local room = component{size={4, 3, 5}, label="room"}
