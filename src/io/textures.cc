@@ -59,7 +59,7 @@ std::shared_ptr<const shape::Image> decode_texture(std::string name, std::string
   return image;
 }
 
-std::vector<TextureFailure> load_textures(shape::Scene& scene, const AssetSearch& search) {
+std::vector<TextureFailure> load_textures(shape::Scene& scene, const TextureResolver& resolve) {
   std::vector<TextureFailure> failures;
   std::map<std::string, std::shared_ptr<const shape::Image>, std::less<>> loaded;
   for (shape::Material& material : scene.materials) {
@@ -67,28 +67,39 @@ std::vector<TextureFailure> load_textures(shape::Scene& scene, const AssetSearch
     auto [it, added] = loaded.try_emplace(material.texture, nullptr);
     if (added) {
       std::string error;
-      if (const auto file = search.resolve(material.texture)) {
+      if (const auto file = resolve(material.texture, error)) {
         std::ifstream in(*file, std::ios::binary);
         std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         if (in.bad()) {
-          error = "cannot read '" + file->string() + "'";
+          error = std::string("cannot read '").append(file->string()).append("'");
         } else {
           const std::string name = file->filename().string();
           it->second = decode_texture(name, std::move(bytes), error);
-          if (!error.empty()) error = "'" + file->string() + "': " + error;
+          if (!error.empty())
+            error = std::string("'").append(file->string()).append("': ").append(error);
         }
-      } else {
-        std::string places;
-        for (const auto& p : search.candidates(material.texture)) {
-          places += (places.empty() ? "" : ", ") + p.string();
-        }
-        error = "not found (looked in " + places + ")";
       }
       if (!error.empty()) failures.push_back({material.texture, error});
     }
     material.image = it->second;
   }
   return failures;
+}
+
+std::vector<TextureFailure> load_textures(shape::Scene& scene, const AssetSearch& search) {
+  return load_textures(
+      scene,
+      [&](std::string_view name, std::string& error) -> std::optional<std::filesystem::path> {
+        std::optional<std::filesystem::path> file = search.resolve(name);
+        if (!file) {
+          std::string places;
+          for (const auto& p : search.candidates(name)) {
+            places.append(places.empty() ? "" : ", ").append(p.string());
+          }
+          error = std::string("not found (looked in ").append(places).append(")");
+        }
+        return file;
+      });
 }
 
 }  // namespace insula::io

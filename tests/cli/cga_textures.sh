@@ -35,7 +35,7 @@ cat >"$tmp/lot.geojson" <<'EOF2'
 {"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
  "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 0], [10, 8], [0, 8], [0, 0]]]}}]}
 EOF2
-mkdir -p "$tmp/out"
+mkdir -p "$tmp/out" "$tmp/lua"
 "$insula" check "$tmp/project/rules/facade.cga" >"$tmp/check.txt" 2>&1 ||
   fail "check: $(cat "$tmp/check.txt")"
 grep -q "CGA903" "$tmp/check.txt" && fail "texturing operations are no longer skipped: $(cat "$tmp/check.txt")"
@@ -184,5 +184,22 @@ check_uv "translateUV(0, 3, 3) normalizeUV(0, uv, separatePerFace)" "0.000 1.000
 check_uv "normalizeUV(0, uvUniform, collectiveAllFaces)" "0.000 1.000 0.000 0.400"
 check_uv "deleteUV(0)" "none"
 check_uv "deleteUV(0) projectUV(0)" "0.000 5.000 0.000 2.000"
+
+# The same operations from Lua (one registry): a 10 x 6 m front face textured from the asset
+# folder, 2 m x 3 m per repeat.
+cat >"$tmp/facade.lua" <<'EOF2'
+local box = component { size = { 10, 6, 8 }, label = "box" }
+local front = comp(box, "faces", "front")
+local textured = texture(front, "images/checker.png")
+projectUV(setupProjection(textured, 0, "scope.xy", 2, 3), 0)
+EOF2
+"$insula" build "$tmp/facade.lua" --assets "$tmp/project/assets" -o "$tmp/lua/facade.obj" -q \
+  2>"$tmp/lua.err" >/dev/null || fail "Lua build: $(cat "$tmp/lua.err")"
+grep -q '^map_Kd checker.png$' "$tmp/lua/facade.mtl" || fail "Lua map_Kd: $(cat "$tmp/lua/facade.mtl")"
+[ "$(python3 -c "
+import sys
+vt=[list(map(float,l.split()[1:3])) for l in open(sys.argv[1]) if l.startswith('vt ')]
+print(' '.join('%.3f' % f(c[i] for c in vt) for i in range(2) for f in (min, max)) if vt else 'none')" "$tmp/lua/facade.obj")" = "0.000 5.000 0.000 2.000" ] ||
+  fail "Lua texture coordinates: $(grep '^vt' "$tmp/lua/facade.obj" | head -4)"
 
 finish cga_textures
