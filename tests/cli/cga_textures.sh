@@ -23,13 +23,14 @@ open(sys.argv[1], "wb").write(png)
 EOF2
 
 # A 10 x 8 m lot extruded 6 m: the front façade (10 x 6 m) textured 2 m x 3 m per repeat; the
-# other walls red with a texture that does not exist; a roof without texture.
+# other walls red with a colour map (set, as texture() does) that does not exist; a roof without
+# texture.
 cat >"$tmp/project/rules/facade.cga" <<'EOF2'
 version "2023.0"
 @StartRule
 Lot --> extrude(6) comp(f) { front : Facade | side : Wall | top : Roof. }
 Facade --> setupProjection(0, scope.xy, 2, 3) projectUV(0) texture("images/checker.png") Bricks.
-Wall --> color("#ff0000") setupProjection(0, scope.xy, '1, '1) projectUV(0) texture("images/missing.png") Painted.
+Wall --> color("#ff0000") setupProjection(0, scope.xy, '1, '1) projectUV(0) set(material.colormap, "images/missing.png") Painted.
 EOF2
 cat >"$tmp/lot.geojson" <<'EOF2'
 {"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
