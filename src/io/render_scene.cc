@@ -141,6 +141,7 @@ struct TexturedFace {
     const kernel::Vec2 uv = context.uv->at(c.right * a + c.up * b + c.forward * t);
     const auto texel = [](double x, int size) {
       const double f = x - std::floor(x);
+      if (!std::isfinite(f)) return 0;  // coordinates beyond double precision
       return std::clamp(static_cast<int>(f * size), 0, size - 1);
     };
     const int tx = texel(uv.x, image.width);
