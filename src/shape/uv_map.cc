@@ -16,6 +16,18 @@ UvMap UvMap::then(double a, double b, double c, double d, double e, double f) co
   return out;
 }
 
+UvMap UvMap::moved(const kernel::Transform& t) const {
+  // t(p) = R p + t.t with R's columns t.x, t.y, t.z orthonormal: the map of q is this map's of
+  // R^T (q - t.t), so each gradient turns by R and the constant loses its value at t.t.
+  const auto turn = [&](kernel::Vec3 g) { return t.x * g.x + t.y * g.y + t.z * g.z; };
+  UvMap out;
+  out.du = turn(du);
+  out.u0 = u0 - dot(out.du, t.t);
+  out.dv = turn(dv);
+  out.v0 = v0 - dot(out.dv, t.t);
+  return out;
+}
+
 std::string uv_set_attribute(int set) {
   return "#uv" + std::to_string(set);
 }

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "kernel/mesh.h"
+#include "kernel/transform.h"
 #include "kernel/vec.h"
 #include "shape/value.h"
 
@@ -27,6 +28,9 @@ struct UvMap {
   kernel::Vec2 at(kernel::Vec3 p) const { return {dot(du, p) + u0, dot(dv, p) + v0}; }
   // The map followed by (u, v) -> (a u + b v + c, d u + e v + f).
   UvMap then(double a, double b, double c, double d, double e, double f) const;
+  // The same coordinates for geometry moved by the rigid transform `t` (a rule's model placed on
+  // its lot): the map of t(p) is this map's of p.
+  UvMap moved(const kernel::Transform& t) const;
   friend bool operator==(const UvMap&, const UvMap&) = default;
 };
 

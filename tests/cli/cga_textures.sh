@@ -203,4 +203,34 @@ vt=[list(map(float,l.split()[1:3])) for l in open(sys.argv[1]) if l.startswith('
 print(' '.join('%.3f' % f(c[i] for c in vt) for i in range(2) for f in (min, max)) if vt else 'none')" "$tmp/lua/facade.obj")" = "0.000 5.000 0.000 2.000" ] ||
   fail "Lua texture coordinates: $(grep '^vt' "$tmp/lua/facade.obj" | head -4)"
 
+# A graph's CGA rule node (examples/graph/rules with its shop replaced): the model placed on the
+# graph's lot keeps its texture coordinates (the façade: u 0..2 at '0.5, v 0..1 at '1) and the
+# image beside the rule file is written with the OBJ.
+mkdir -p "$tmp/graph/out"
+cp "$root"/examples/graph/rules/* "$tmp/graph/"
+cp "$tmp/project/assets/images/checker.png" "$tmp/graph/"
+cat >"$tmp/graph/shop.cga" <<'EOF2'
+version "2023.0"
+attr height = 7
+attr shop_color = "#7b2d26"
+@StartRule
+Lot --> extrude(height) comp(f) { front : Front | side : Wall. | top : Roof. }
+Front --> setupProjection(0, scope.xy, '0.5, '1) projectUV(0) texture("checker.png") Bricks.
+EOF2
+"$insula" build "$tmp/graph/rules.graph.json" -o "$tmp/graph/out/rules.obj" -q 2>"$tmp/graph.err" >/dev/null ||
+  fail "graph build: $(cat "$tmp/graph.err")"
+grep -q '^map_Kd checker.png$' "$tmp/graph/out/rules.mtl" || fail "graph map_Kd"
+python3 - "$tmp/graph/out/rules.obj" >"$tmp/graph.txt" 2>&1 <<'EOF2' || fail "graph OBJ: $(cat "$tmp/graph.txt")"
+import sys
+vt, bricks = [], []
+for line in open(sys.argv[1]):
+    f = line.split()
+    if f and f[0] == "vt": vt.append((float(f[1]), float(f[2])))
+    if f and f[0] == "g": group = f[1]
+    if f and f[0] == "f" and ".Bricks." in "." + group + ".":
+        bricks += [vt[int(c.split("/")[1]) - 1] for c in f[1:] if "/" in c]
+print(" ".join("%.3f" % g(c[i] for c in bricks) for i in range(2) for g in (min, max)) if bricks else "none")
+EOF2
+[ "$(cat "$tmp/graph.txt")" = "0.000 2.000 0.000 1.000" ] || fail "graph texture coordinates: $(cat "$tmp/graph.txt")"
+
 finish cga_textures

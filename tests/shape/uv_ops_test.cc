@@ -215,5 +215,16 @@ TEST(UvOps, TextureSetsTheColormapAndCollectGivesTheParts) {
   EXPECT_NEAR(u_max, 5, 1e-9);
 }
 
+TEST(UvMap, MovedWithItsGeometry) {
+  const UvMap map{{0.5, 0, 0}, 1, {0, 0, 1}, 0};  // u = x / 2 + 1, v = z
+  // A quarter turn about z, then 10 m east: the old point (2, 0, 3) lands on (10, 2, 3).
+  const kernel::Transform t{{0, 1, 0}, {-1, 0, 0}, {0, 0, 1}, {10, 0, 0}};
+  const Vec2 before = map.at({2, 0, 3});
+  const Vec2 after = map.moved(t).at({10, 2, 3});
+  EXPECT_NEAR(after.x, before.x, 1e-12);
+  EXPECT_NEAR(after.y, before.y, 1e-12);
+  EXPECT_NEAR(before.x, 2, 1e-12);
+}
+
 }  // namespace
 }  // namespace insula::shape
