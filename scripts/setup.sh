@@ -13,6 +13,7 @@ packages=(
   libosmium2-dev libprotozero-dev zlib1g-dev libbz2-dev libexpat1-dev osmium-tool  # .osm/.osm.pbf input
   clang libclang-rt-dev llvm  # libFuzzer (scripts/fuzz.sh), llvm-symbolizer for sanitizer stacks
   assimp-utils libxml2-utils
+  chromium  # the browser check of textured GLBs (tools/render_gltf_browser.mjs, three.js)
 )
 # Node.js may come from elsewhere (NodeSource ships npm inside nodejs); take Debian's only if absent.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
@@ -29,7 +30,8 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-if [ ! -d tools/node_modules/gltf-validator ] || [ ! -d tools/node_modules/ajv ]; then
-  echo "setup: installing npm test tools (gltf-validator, ajv)" >&2
+if [ ! -d tools/node_modules/gltf-validator ] || [ ! -d tools/node_modules/ajv ] ||
+  [ ! -d tools/node_modules/playwright-core ] || [ ! -d tools/node_modules/three ]; then
+  echo "setup: installing npm test tools (gltf-validator, ajv, playwright-core, three)" >&2
   (cd tools && npm ci --no-audit --no-fund --silent 2>/dev/null || npm install --no-audit --no-fund --silent)
 fi

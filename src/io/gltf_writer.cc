@@ -35,6 +35,7 @@ constexpr std::uint32_t kTriangles = 4;
 constexpr std::uint32_t kLinear = 9729;
 constexpr std::uint32_t kLinearMipmapLinear = 9987;
 constexpr std::uint32_t kClampToEdge = 33071;
+constexpr std::uint32_t kRepeat = 10497;
 constexpr std::string_view kLightsExtension = "KHR_lights_punctual";
 constexpr std::uint32_t kGlbMagic = 0x46546C67;   // "glTF"
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
@@ -86,7 +87,8 @@ struct PrimitiveRecord {
   std::size_t position_offset = 0;  // bytes into the vertex view; normals follow the positions
   std::size_t index_offset = 0;     // bytes into the index view
   std::size_t uv_offset = 0;        // bytes into the texture coordinate view
-  bool has_uv = false;  // TEXCOORD_0 (parts of solidGeometry with "uv_scale", textured materials)
+  // TEXCOORD_0 (parts with a uv map, parts of solidGeometry with "uv_scale", textured materials)
+  bool has_uv = false;
   std::uint32_t accessor = 0;  // first of its accessors (3, or 4 with texture coordinates)
   std::array<float, 3> min{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
                            std::numeric_limits<float>::max()};
@@ -114,7 +116,9 @@ double uv_scale(const shape::Part& part) {
 // A material's image as PNG bytes, or empty when it has none (or a malformed one).
 std::string png_of(const shape::Material& material) {
   const shape::Image* image = material.image.get();
-  if (image == nullptr || image->width <= 0 || image->height <= 0 ||
+  if (image == nullptr) return {};
+  if (!image->encoded.empty()) return image->encoded;  // a file's bytes, embedded as they are
+  if (image->width <= 0 || image->height <= 0 ||
       image->rgba.size() !=
           4 * static_cast<std::size_t>(image->width) * static_cast<std::size_t>(image->height)) {
     return {};
@@ -140,7 +144,7 @@ class Builder {
   // Adds the part's primitives as a new glTF mesh (or finds its shared one); returns the mesh
   // index, or -1 when no face produced a triangle.
   std::int32_t add_part(const shape::Part& part, std::size_t index);
-  std::uint32_t add_primitives(const kernel::Mesh& mesh, double uv);
+  std::uint32_t add_primitives(const kernel::Mesh& mesh, double uv, const shape::Part& part);
   void add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
                      std::span<const std::pair<std::uint32_t, std::uint32_t>> faces);
   void add_face(const kernel::Mesh& mesh, std::size_t face, PrimitiveRecord& primitive);
@@ -162,6 +166,16 @@ class Builder {
   void write_images(JsonStream& json) const;
   void write_buffers(JsonStream& json, std::string_view buffer_uri) const;
   void write_scene(JsonStream& json) const;
+  // The wrap modes of the samplers, in sampler order: clamped first when used, then repeat.
+  std::vector<std::uint32_t> sampler_wraps() const {
+    std::vector<std::uint32_t> wraps;
+    if (std::count(image_repeats_.begin(), image_repeats_.end(), false) > 0) {
+      wraps.push_back(kClampToEdge);
+    }
+    if (std::count(image_repeats_.begin(), image_repeats_.end(), true) > 0)
+      wraps.push_back(kRepeat);
+    return wraps;
+  }
 
   const shape::Scene& scene_;
   MaterialTable materials_;
@@ -172,12 +186,15 @@ class Builder {
   // Textures: one per distinct image of a material in the table, PNG-encoded; their bytes follow
   // the texture coordinates in the buffer, each in a view of its own.
   std::vector<std::int32_t> material_texture_;  // by table material; -1: untextured
-  std::vector<std::string> images_;             // PNG bytes by texture
+  std::vector<std::string> images_;             // PNG (or a file's JPEG) bytes by texture
   std::vector<std::string> image_names_;
+  std::vector<std::string> image_types_;  // MIME types
+  std::vector<bool> image_repeats_;       // a file's image repeats over a uv map
   std::vector<MeshRecord> meshes_;
   std::vector<std::int32_t> part_mesh_;  // glTF mesh of each part (-1: none), parts in scene order
   std::map<const kernel::Mesh*, std::int32_t> shared_;  // instance meshes already added
   double uv_ = 0;                                       // texture size of the part being added
+  const shape::Part* uv_part_ = nullptr;                // the part being added when it has a uv map
   bool fit_uv_ = false;  // the primitive being added shows an image: UVs fit each face
 
   // Scratch reused from face to face.
@@ -227,6 +244,9 @@ void Builder::add_images() {
           it->second = static_cast<std::int32_t>(images_.size());
           images_.push_back(std::move(png));
           image_names_.push_back(material.image->name);
+          const bool file = !material.image->encoded.empty();
+          image_types_.push_back(file ? material.image->mime_type : "image/png");
+          image_repeats_.push_back(file);
         }
       }
       texture = it->second;
@@ -236,24 +256,28 @@ void Builder::add_images() {
 }
 
 std::int32_t Builder::add_part(const shape::Part& part, std::size_t index) {
-  if (part.instance_of) {
+  // Instances share a mesh, unless a uv map gives each its own texture coordinates.
+  const bool shared = part.instance_of && !part.uv;
+  if (shared) {
     if (auto it = shared_.find(part.instance_of.get()); it != shared_.end()) return it->second;
   }
   const auto first = static_cast<std::uint32_t>(primitives_.size());
   const std::uint32_t count =
-      add_primitives(part.instance_of ? *part.instance_of : part.mesh, uv_scale(part));
+      add_primitives(part.instance_of ? *part.instance_of : part.mesh, uv_scale(part), part);
   std::int32_t mesh = -1;
   if (count > 0) {
     mesh = static_cast<std::int32_t>(meshes_.size());
     meshes_.push_back({part_name(part, index), first, count});
   }
-  if (part.instance_of) shared_[part.instance_of.get()] = mesh;
+  if (shared) shared_[part.instance_of.get()] = mesh;
   return mesh;
 }
 
 // One primitive per material, materials in index order, faces in mesh order within each.
-std::uint32_t Builder::add_primitives(const kernel::Mesh& mesh, double uv) {
+std::uint32_t Builder::add_primitives(const kernel::Mesh& mesh, double uv,
+                                      const shape::Part& part) {
   uv_ = uv;
+  uv_part_ = part.uv ? &part : nullptr;
   weld_.run(mesh);
   faces_by_material_.clear();
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
@@ -279,7 +303,7 @@ void Builder::add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
   primitive.index_offset = 4 * indices_.size();
   primitive.uv_offset = 4 * uvs_.size();
   fit_uv_ = material_texture_[material] >= 0;
-  primitive.has_uv = uv_ > 0 || fit_uv_;
+  primitive.has_uv = uv_part_ != nullptr || uv_ > 0 || fit_uv_;
   primitive.accessor =
       primitives_.empty() ? 0 : primitives_.back().accessor + (primitives_.back().has_uv ? 4 : 3);
   normals_.clear();
@@ -317,9 +341,21 @@ void Builder::add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_
                           kernel::Vec3 newell, PrimitiveRecord& primitive) {
   const std::array<float, 3> normal = to_y_up(newell);
   const std::uint32_t base = primitive.vertex_count;
-  if (fit_uv_) fit_uvs(mesh, loop, newell);
+  if (uv_part_ != nullptr) {
+    // The part's map is over world positions; an instance's mesh is placed first. glTF's v runs
+    // down the image, CityEngine's up.
+    for (std::uint32_t vertex : loop) {
+      const kernel::Vec3 p = mesh.position(vertex);
+      const kernel::Vec2 t = uv_part_->uv->at(
+          uv_part_->instance_of ? kernel::apply_point(uv_part_->instance_transform, p) : p);
+      uvs_.push_back(static_cast<float>(t.x));
+      uvs_.push_back(static_cast<float>(1 - t.y));
+    }
+  } else if (fit_uv_) {
+    fit_uvs(mesh, loop, newell);
+  }
   for (std::uint32_t vertex : loop) {
-    if (uv_ > 0 && !fit_uv_) {
+    if (uv_ > 0 && !fit_uv_ && uv_part_ == nullptr) {
       const kernel::Vec2 t = kernel::planar_uv(mesh.position(vertex), newell, uv_);
       uvs_.push_back(static_cast<float>(t.x));
       uvs_.push_back(static_cast<float>(t.y));
@@ -562,14 +598,14 @@ void Builder::write_light_node(JsonStream& json, std::size_t index) const {
   json.number(p.x + 0.0).number(p.z + 0.0).number(-p.y + 0.0).end_array().end_object();
 }
 
-// One image per texture, stored in the buffer; one sampler for all: clamped, since each face
-// shows its image once.
+// One image per texture, stored in the buffer (a file's bytes with their MIME type, a procedural
+// image as PNG).
 void Builder::write_images(JsonStream& json) const {
   const std::size_t first_view = 2 + (uvs_.empty() ? 0 : 1);
   json.key("images").begin_array();
   for (std::size_t i = 0; i < images_.size(); ++i) {
     json.begin_object().key("bufferView").integer(first_view + i);
-    json.key("mimeType").string("image/png").key("name").string(image_names_[i]).end_object();
+    json.key("mimeType").string(image_types_[i]).key("name").string(image_names_[i]).end_object();
   }
   json.end_array();
 }
@@ -637,15 +673,25 @@ void Builder::write_json(JsonStream& json, std::string_view buffer_uri) const {
   }
   if (!scene_.buildings.empty() || !scene_.lights.empty()) write_nodes(json);
   if (has_images) {
-    json.key("samplers").begin_array().begin_object().key("magFilter").integer(kLinear);
-    json.key("minFilter").integer(kLinearMipmapLinear).key("wrapS").integer(kClampToEdge);
-    json.key("wrapT").integer(kClampToEdge).end_object().end_array();
+    // A procedural image shows once per face (clamped); a file's image repeats over a uv map.
+    // Only the samplers some texture uses are written.
+    json.key("samplers").begin_array();
+    for (std::uint32_t wrap : sampler_wraps()) {
+      json.begin_object().key("magFilter").integer(kLinear);
+      json.key("minFilter").integer(kLinearMipmapLinear).key("wrapS").integer(wrap);
+      json.key("wrapT").integer(wrap).end_object();
+    }
+    json.end_array();
   }
   write_scene(json);
   if (has_images) {
     json.key("textures").begin_array();
     for (std::size_t i = 0; i < images_.size(); ++i) {
-      json.begin_object().key("sampler").integer(0).key("source").integer(i).end_object();
+      const std::vector<std::uint32_t> wraps = sampler_wraps();
+      const std::uint32_t wrap = image_repeats_[i] ? kRepeat : kClampToEdge;
+      const auto sampler = std::find(wraps.begin(), wraps.end(), wrap) - wraps.begin();
+      json.begin_object().key("sampler").integer(sampler);
+      json.key("source").integer(i).end_object();
     }
     json.end_array();
   }

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <map>
+#include <set>
 #include <system_error>
 #include <utility>
 
@@ -39,11 +40,19 @@ FaceGroups group_faces(const kernel::Mesh& mesh, const MaterialTable& materials)
   return groups;
 }
 
-// Writes a part's vertices then its faces; `first_vertex` is the 1-based OBJ index of its vertex 0.
+// Writes a part's vertices (and texture coordinates, one per vertex, when it has a uv map) then its
+// faces; `first_vertex` / `first_uv` are the 1-based OBJ indices of its vertex 0 / its first vt.
 void append_part(std::string& out, const shape::Scene& scene, const std::string& building_name,
                  const shape::Part& part, std::size_t part_index, const MaterialTable& materials,
-                 std::size_t first_vertex) {
+                 std::size_t first_vertex, std::size_t first_uv) {
   for (const kernel::Vec3& p : part.mesh.positions()) append_vertex(out, p + scene.origin);
+  if (part.uv) {
+    for (const kernel::Vec3& p : part.mesh.positions()) {
+      const kernel::Vec2 t = part.uv->at(p);
+      out += "vt " + format_decimal(t.x, kCoordinateDecimals) + " " +
+             format_decimal(t.y, kCoordinateDecimals) + "\n";
+    }
+  }
   const std::string part_name = safe_name(part.name, "part" + std::to_string(part_index));
   for (const auto& [key, faces] : group_faces(part.mesh, materials)) {
     out += "g " + building_name + "." + part_name + "." +
@@ -54,6 +63,7 @@ void append_part(std::string& out, const shape::Scene& scene, const std::string&
       for (std::uint32_t vertex : part.mesh.face(f)) {
         out += ' ';
         out += std::to_string(first_vertex + vertex);
+        if (part.uv) out += '/' + std::to_string(first_uv + vertex);
       }
       out += '\n';
     }
@@ -69,7 +79,25 @@ void append_header(std::string& out, const shape::Scene& scene, std::string_view
   out += "mtllib " + std::string(mtl_file_name) + "\n";
 }
 
-std::string mtl_text(const MaterialTable& materials) {
+// The file name each image read from a file gets beside the OBJ: its own, made unique.
+std::map<const shape::Image*, std::string> texture_files(const MaterialTable& materials) {
+  std::map<const shape::Image*, std::string> files;
+  std::set<std::string> taken;
+  for (const shape::Material& material : materials.materials()) {
+    const shape::Image* image = material.image.get();
+    if (image == nullptr || image->encoded.empty() || files.contains(image)) continue;
+    std::string name = safe_name(image->name, "texture");
+    for (int k = 2; taken.contains(name); ++k) {
+      name = std::to_string(k) + "_" + safe_name(image->name, "texture");
+    }
+    taken.insert(name);
+    files[image] = name;
+  }
+  return files;
+}
+
+std::string mtl_text(const MaterialTable& materials,
+                     const std::map<const shape::Image*, std::string>& textures) {
   std::string out = "# Insula MTL export: Kd is the material's linear RGB colour, d its alpha\n";
   for (const shape::Material& material : materials.materials()) {
     const auto channel = [&](std::size_t i) { return format_decimal(material.rgba[i], 6); };
@@ -79,6 +107,9 @@ std::string mtl_text(const MaterialTable& materials) {
     out += "Ks 0 0 0\n";
     out += "d " + channel(3) + "\n";
     out += "illum 1\n";
+    if (auto it = textures.find(material.image.get()); it != textures.end()) {
+      out += "map_Kd " + it->second + "\n";
+    }
   }
   return out;
 }
@@ -107,17 +138,21 @@ ObjText obj_text(const shape::Scene& input, std::string_view mtl_file_name) {
   ObjText text;
   append_header(text.obj, scene, mtl_file_name);
   std::size_t next_vertex = 1;
+  std::size_t next_uv = 1;
   for (std::size_t b = 0; b < scene.buildings.size(); ++b) {
     const shape::Building& building = scene.buildings[b];
     const std::string building_name = safe_name(building.id, "building" + std::to_string(b));
     text.obj += "o " + building_name + "\n";
     for (std::size_t p = 0; p < building.parts.size(); ++p) {
       const shape::Part& part = building.parts[p];
-      append_part(text.obj, scene, building_name, part, p, materials, next_vertex);
+      append_part(text.obj, scene, building_name, part, p, materials, next_vertex, next_uv);
       next_vertex += part.mesh.vertex_count();
+      if (part.uv) next_uv += part.mesh.vertex_count();
     }
   }
-  text.mtl = mtl_text(materials);
+  const std::map<const shape::Image*, std::string> files = texture_files(materials);
+  text.mtl = mtl_text(materials, files);
+  for (const auto& [image, name] : files) text.textures.emplace_back(name, image->encoded);
   return text;
 }
 
@@ -126,13 +161,24 @@ std::string write_obj(const shape::Scene& scene, const std::filesystem::path& ob
   mtl_path.replace_extension(".mtl");
   // The real file name, even with blanks: Blender and assimp read mtllib to the end of the line.
   const ObjText text = obj_text(scene, mtl_path.filename().string());
-  if (std::string error = write_file_atomically(mtl_path, text.mtl); !error.empty()) return error;
-  if (std::string error = write_file_atomically(obj_path, text.obj); !error.empty()) {
-    std::error_code ignored;
-    std::filesystem::remove(mtl_path, ignored);
+  std::vector<std::filesystem::path> written;
+  const auto write = [&](const std::filesystem::path& path, const std::string& bytes) {
+    std::string error = write_file_atomically(path, bytes);
+    if (error.empty()) {
+      written.push_back(path);
+    } else {
+      std::error_code ignored;
+      for (const auto& p : written) std::filesystem::remove(p, ignored);
+    }
     return error;
+  };
+  for (const auto& [name, bytes] : text.textures) {
+    if (std::string error = write(obj_path.parent_path() / name, bytes); !error.empty()) {
+      return error;
+    }
   }
-  return {};
+  if (std::string error = write(mtl_path, text.mtl); !error.empty()) return error;
+  return write(obj_path, text.obj);
 }
 
 }  // namespace insula::io

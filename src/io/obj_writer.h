@@ -2,12 +2,16 @@
 // `g` group per part and face class/material (`g <building>.<part>.<Class>`), each with `usemtl`.
 // Faces stay n-gons in their mesh orientation (counter-clockwise seen from outside). Vertices are
 // written in world coordinates (local + Scene::origin) with 6 decimals (1 µm, trailing zeros
-// trimmed), so projected coordinates such as UTM survive. Output is deterministic.
+// trimmed), so projected coordinates such as UTM survive. A part with a uv map (Part::uv) gets one
+// `vt` per vertex and faces `f v/vt`; a material showing an image read from a file gets `map_Kd`
+// with the image copied beside the OBJ. Output is deterministic.
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "shape/scene.h"
 
@@ -16,13 +20,16 @@ namespace insula::io {
 struct ObjText {
   std::string obj;
   std::string mtl;
+  // Image files the MTL's map_Kd names (textures read from files, copied beside the OBJ so the
+  // folder opens textured anywhere): (file name, bytes).
+  std::vector<std::pair<std::string, std::string>> textures;
 };
 
 // The OBJ and MTL texts of `scene`; the OBJ refers to the MTL as `mtl_file_name`.
 ObjText obj_text(const shape::Scene& scene, std::string_view mtl_file_name);
 
-// Writes `obj_path` and the .mtl beside it (same stem), atomically: on failure neither file is
-// left. Returns an empty string on success, else a message naming the file.
+// Writes `obj_path`, the .mtl beside it (same stem) and the texture images, atomically: on failure
+// none of the files is left. Returns an empty string on success, else a message naming the file.
 std::string write_obj(const shape::Scene& scene, const std::filesystem::path& obj_path);
 
 // `value` in fixed notation with at most `decimals` decimals, trailing zeros (and a trailing point)

@@ -121,6 +121,18 @@ void Framebuffer::fill_triangle(const ScreenPoint& a, const ScreenPoint& b, cons
   });
 }
 
+void Framebuffer::fill_triangle(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c,
+                                const std::function<std::uint32_t(float, float)>& shade_at) {
+  scan(a, b, c, [&](std::size_t i, float z) {
+    if (z < depth_[i]) {
+      depth_[i] = z;
+      const auto x = static_cast<float>(i % static_cast<std::size_t>(width_)) + 0.5F;
+      const auto y = static_cast<float>(i / static_cast<std::size_t>(width_)) + 0.5F;
+      shade_[i] = shade_at(x, y);
+    }
+  });
+}
+
 void Framebuffer::fill_shadow(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c) {
   scan(a, b, c, [&](std::size_t i, float) { shadow_[i] = 1; });
 }

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -46,6 +47,9 @@ class Framebuffer {
   // stored depth takes `shade` (edges are inclusive so shared edges leave no gaps).
   void fill_triangle(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c,
                      std::uint32_t shade);
+  // The same with a shade per pixel: shade_at(x, y) at the pixel centre (a textured face).
+  void fill_triangle(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c,
+                     const std::function<std::uint32_t(float, float)>& shade_at);
   // Marks pixels whose centre lies inside or on the triangle as ground shadow (depth ignored).
   void fill_shadow(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c);
   // Draws a stroke `radius` pixels wide on each side of its centre line, where the centre line is

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "kernel/mesh.h"
@@ -67,6 +69,9 @@ struct Context {
   bool lines = true;           // whether the current building is large enough on screen for lines
   std::uint32_t building = 0;  // 1-based index of the current building, its shades' owner
   std::vector<Stroke> strokes;
+  const shape::UvMap* uv = nullptr;  // the current part's texture coordinates, if any
+  // Shades of textured pixels by (owner, quantised colour): a texture adds as many as it shows.
+  std::unordered_map<std::uint64_t, std::uint32_t> texel_shades{};
 };
 
 // A face's colour in the view: its material's, times the mean colour of the material's image
@@ -88,13 +93,82 @@ std::array<float, 4> view_colour(const Context& context, const kernel::FaceTag& 
   return rgba;
 }
 
-Rgb shade(const Context& context, const kernel::FaceTag& tag, Vec3 normal) {
-  const std::array<float, 4> colour = view_colour(context, tag);
+float light_of(const Context& context, Vec3 normal) {
   const float sky = kAmbient * static_cast<float>(0.8 + 0.2 * normal.z);
   const float sun = kDiffuse * static_cast<float>(std::max(0.0, dot(normal, context.sun)));
   const float fill = kFill * static_cast<float>(std::max(0.0, dot(normal, context.fill)));
-  const float light = sky + sun + fill;
+  return sky + sun + fill;
+}
+
+Rgb shade(const Context& context, const kernel::FaceTag& tag, Vec3 normal) {
+  const std::array<float, 4> colour = view_colour(context, tag);
+  const float light = light_of(context, normal);
   return {colour[0] * light, colour[1] * light, colour[2] * light};
+}
+
+// sRGB texel values to linear (IEC 61966-2-1).
+const std::array<float, 256>& linear_table() {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> t{};
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const double c = static_cast<double>(i) / 255.0;
+      t[i] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    }
+    return t;
+  }();
+  return table;
+}
+
+// A textured face as the view shows it: per pixel, the point of the face's plane under the pixel
+// centre, its texture coordinates, the nearest texel (repeating) times the material's colour and
+// the face's light. Colours are quantised to 12 bits per channel to share shades.
+struct TexturedFace {
+  const Context& context;
+  const shape::Image& image;
+  std::array<float, 4> tint;
+  float light = 1;
+  Vec3 normal;
+  double plane = 0;  // dot(normal, p) of the face's points
+
+  Rgb colour_at(float sx, float sy) const {
+    const Camera& c = context.camera;
+    const double a = (sx - c.half_width) / c.scale + c.u0;
+    const double b = c.v0 - (sy - c.half_height) / c.scale;
+    const double facing = dot(normal, c.forward);
+    const double t = std::abs(facing) > 1e-9
+                         ? (plane - a * dot(normal, c.right) - b * dot(normal, c.up)) / facing
+                         : c.depth0;
+    const kernel::Vec2 uv = context.uv->at(c.right * a + c.up * b + c.forward * t);
+    const auto texel = [](double x, int size) {
+      const double f = x - std::floor(x);
+      if (!std::isfinite(f)) return 0;  // coordinates beyond double precision
+      return std::clamp(static_cast<int>(f * size), 0, size - 1);
+    };
+    const int tx = texel(uv.x, image.width);
+    const int ty = image.height - 1 - texel(uv.y, image.height);  // rows run top to bottom
+    const std::size_t i =
+        4 * (static_cast<std::size_t>(ty) * static_cast<std::size_t>(image.width) +
+             static_cast<std::size_t>(tx));
+    const auto& linear = linear_table();
+    return {linear[image.rgba[i]] * tint[0] * light, linear[image.rgba[i + 1]] * tint[1] * light,
+            linear[image.rgba[i + 2]] * tint[2] * light};
+  }
+};
+
+std::uint32_t texel_shade(Context& context, Rgb colour) {
+  const auto q = [](float v) {
+    return static_cast<std::uint64_t>(std::lround(std::clamp(v, 0.0F, 1.0F) * 4095.0F));
+  };
+  const std::uint64_t key = static_cast<std::uint64_t>(context.building) << 36 |
+                            q(colour[0]) << 24 | q(colour[1]) << 12 | q(colour[2]);
+  auto [it, added] = context.texel_shades.try_emplace(key, 0);
+  if (added) {
+    it->second = context.framebuffer.add_shade(
+        {static_cast<float>(q(colour[0])) / 4095.0F, static_cast<float>(q(colour[1])) / 4095.0F,
+         static_cast<float>(q(colour[2])) / 4095.0F},
+        context.building);
+  }
+  return it->second;
 }
 
 // Ground-plane image of p along the sun direction.
@@ -163,10 +237,17 @@ int clip_below(const Triangle& t, double cut, std::array<Vec3, 4>& out,
   return n;
 }
 
-void fill(Context& context, Vec3 a, Vec3 b, Vec3 c, std::uint32_t shade_id, bool cast) {
+void fill(Context& context, Vec3 a, Vec3 b, Vec3 c, std::uint32_t shade_id, bool cast,
+          const TexturedFace* textured) {
   const Camera& camera = context.camera;
-  context.framebuffer.fill_triangle(camera.project(a), camera.project(b), camera.project(c),
-                                    shade_id);
+  if (textured != nullptr) {
+    context.framebuffer.fill_triangle(
+        camera.project(a), camera.project(b), camera.project(c),
+        [&](float x, float y) { return texel_shade(context, textured->colour_at(x, y)); });
+  } else {
+    context.framebuffer.fill_triangle(camera.project(a), camera.project(b), camera.project(c),
+                                      shade_id);
+  }
   if (cast) {
     context.framebuffer.fill_shadow(camera.project(shadow_point(context, a)),
                                     camera.project(shadow_point(context, b)),
@@ -313,16 +394,30 @@ void draw_faces(Context& context, const Mesh& mesh, const PartData& data, double
         shade(context, mesh.tag(f), front ? n : -n), context.building);
     triangles.clear();
     triangulate(mesh, f, n, triangles);
+    // A face of a part with texture coordinates whose material shows an image samples it.
+    std::optional<TexturedFace> textured;
+    if (context.uv != nullptr && !triangles.empty()) {
+      const shape::Material material = context.scene.material_for(mesh.tag(f));
+      const shape::Image* image = material.image.get();
+      if (image != nullptr && image->width > 0 && image->height > 0 &&
+          image->rgba.size() == 4 * static_cast<std::size_t>(image->width) *
+                                    static_cast<std::size_t>(image->height)) {
+        textured.emplace(TexturedFace{context, *image, material.rgba,
+                                      light_of(context, front ? n : -n), n,
+                                      dot(n, triangles.front().v[0])});
+      }
+    }
+    const TexturedFace* texture = textured ? &*textured : nullptr;
     for (const Triangle& t : triangles) {
       if (!cutaway) {
-        fill(context, t.v[0], t.v[1], t.v[2], shade_id, cast);
+        fill(context, t.v[0], t.v[1], t.v[2], shade_id, cast, texture);
         continue;
       }
       section.clear();
       const int count = clip_below(t, cut, clipped, section);
       for (int i = 1; i + 1 < count; ++i) {
         fill(context, clipped[0], clipped[static_cast<std::size_t>(i)],
-             clipped[static_cast<std::size_t>(i + 1)], shade_id, cast);
+             clipped[static_cast<std::size_t>(i + 1)], shade_id, cast, texture);
       }
       if (section.size() == 2 && context.lines) {
         add_stroke(context, section[0], section[1], Ink::kSection);
@@ -434,7 +529,10 @@ void draw_scene(const shape::Scene& scene, const RenderOptions& options, const C
       cut = std::isnan(options.cut_height) ? auto_cut_height(building) : options.cut_height;
     }
     context.lines = screen_size(building, camera) >= kMinOutlinedSize * options.supersample;
-    for (const shape::Part& part : building.parts) draw_part(context, part.mesh, cut);
+    for (const shape::Part& part : building.parts) {
+      context.uv = part.uv ? &*part.uv : nullptr;
+      draw_part(context, part.mesh, cut);
+    }
   }
   // Strokes go last so their depth test sees every face. Section lines are drawn wider: they are
   // the cut, the strongest line of an architectural drawing.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 namespace insula::shape {
 
@@ -30,6 +31,28 @@ std::map<const kernel::Mesh*, int> mesh_uses(const ShapeTree& tree, const Collec
   return uses;
 }
 
+// The texturing operations' state (shape/uv_map.h) becomes the part's uv map and, for a colour
+// map, a white material showing it on every face (CityEngine's default colour when textured).
+// Returns the material, or nullopt without a colour map.
+std::optional<kernel::MaterialId> texture_state(Part& part, Scene& scene) {
+  if (auto it = part.attributes.find(uv_set_attribute(0)); it != part.attributes.end()) {
+    part.uv = decode_uv_map(it->second);
+  }
+  std::erase_if(part.attributes, [](const auto& a) { return a.first.starts_with("#uv"); });
+  const auto it = part.attributes.find(kColormapAttribute);
+  const auto* texture =
+      it != part.attributes.end() ? std::get_if<std::string>(&it->second) : nullptr;
+  if (texture == nullptr || texture->empty()) return std::nullopt;
+  std::size_t m = 0;
+  while (m < scene.materials.size() && scene.materials[m].texture != *texture) ++m;
+  if (m == scene.materials.size()) {
+    Material material{*texture, {1, 1, 1, 1}};
+    material.texture = *texture;
+    scene.materials.push_back(std::move(material));
+  }
+  return static_cast<kernel::MaterialId>(m);
+}
+
 }  // namespace
 
 Scene collect(const ShapeTree& tree, const CollectOptions& options) {
@@ -51,11 +74,15 @@ Scene collect(const ShapeTree& tree, const CollectOptions& options) {
       const std::string_view label = tree.first_label(id);
       part.name = label.empty() ? "shape_" + std::to_string(id) : std::string(label);
       part.attributes = tree.resolved_attributes(id);
-      if (auto it = uses.find(s.mesh.get()); it != uses.end() && it->second > 1) {
+      const std::optional<kernel::MaterialId> textured = texture_state(part, scene);
+      if (auto it = uses.find(s.mesh.get()); it != uses.end() && it->second > 1 && !textured) {
         part.instance_of = s.mesh;
         part.instance_transform = scope_transform(s.scope);
       } else {
         part.mesh = mesh_to_world(*s.mesh, s.scope);
+        for (std::size_t f = 0; textured && f < part.mesh.face_count(); ++f) {
+          part.mesh.tag(f).material = *textured;
+        }
       }
       building.parts.push_back(std::move(part));
     }

@@ -132,6 +132,10 @@ struct Operation {
   std::string doc;  // one line
   std::vector<ParamDecl> params;
   ExecuteFn execute;
+  // Inherited attributes the operation reads from the shape and sets on its children (texture
+  // projections, uv sets, the colour map): a front-end that keeps attributes in a store of its
+  // own (CGA's derivation) passes these in and takes the children's values back.
+  std::vector<std::string> state{};
   const ParamDecl* param(std::string_view name) const;
 };
 

@@ -33,6 +33,7 @@ std::vector<Operation> inner_rectangle_operations();
 std::vector<Operation> cleanup_operations();
 std::vector<Operation> primitive_operations();
 std::vector<Operation> convexify_operations();
+std::vector<Operation> uv_operations();  // ops_uv.cc: CityEngine's texturing operations
 
 // --- extrude (ops_extrude.cc)
 // A flat shape (footprint or face) becomes a prism of `height` meters (> 0) along its normal. The

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,16 +15,23 @@
 #include "kernel/transform.h"
 #include "kernel/vec.h"
 #include "shape/plan.h"
+#include "shape/uv_map.h"
 #include "shape/value.h"
 
 namespace insula::shape {
 
-// An RGBA image, 8 bits per channel, rows top to bottom (a procedural texture, seed 003 §5.1).
+// An RGBA image, 8 bits per channel, rows top to bottom (a procedural texture, seed 003 §5.1; or
+// an image file a grammar's texture() names, decoded).
 struct Image {
   std::string name;
   int width = 0;
   int height = 0;
   std::vector<std::uint8_t> rgba;
+  // For an image read from a file: its bytes as found and their type ("image/png",
+  // "image/jpeg"), which writers embed or copy as they are. Such an image repeats over the uv
+  // map of the faces showing it; one without (a procedural image) shows once per face.
+  std::string encoded{};
+  std::string mime_type{};
 };
 
 struct Material {
@@ -31,6 +39,9 @@ struct Material {
   std::array<float, 4> rgba{0.8F, 0.8F, 0.8F, 1.0F};  // linear RGB + alpha
   // A base colour texture (glTF writes it as an image; other writers keep the colour).
   std::shared_ptr<const Image> image{};
+  // The image file a grammar names (CityEngine's material.colormap), as written; io's
+  // load_textures finds it and sets `image`. Empty: none.
+  std::string texture{};
 };
 
 // A punctual light (glTF KHR_lights_punctual), in local coordinates like the parts.
@@ -58,6 +69,9 @@ struct Part {
   // (`{}` on members added later lets older aggregate initialisers omit them without warnings.)
   std::shared_ptr<const kernel::Mesh> instance_of{};
   kernel::Transform instance_transform{};
+  // Texture coordinates (uv set 0, CityEngine's projectUV; shape/uv_map.h) of a point of the
+  // mesh: writers evaluate it per vertex. Empty: none (writers may make their own).
+  std::optional<UvMap> uv{};
 };
 
 struct Building {

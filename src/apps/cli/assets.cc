@@ -30,4 +30,15 @@ void report_missing_assets(const io::AssetLibrary& library, const std::string& i
   }
 }
 
+void report_missing_textures(const std::vector<io::TextureFailure>& failures,
+                             const std::string& input, bool quiet, nlohmann::json& report) {
+  for (const io::TextureFailure& f : failures) {
+    const base::Diagnostic d = base::Diagnostic::warning(
+        "AST101", "texture '" + f.name + "': " + f.error + "; its faces show their colour only",
+        base::Span::whole(input));
+    emit_warning(d.code, base::render(d), quiet);
+    report["missing_textures"][f.name] = f.error;
+  }
+}
+
 }  // namespace insula::cli

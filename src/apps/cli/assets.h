@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/asset_library.h"
+#include "io/textures.h"
 
 namespace insula::cli {
 
@@ -20,5 +21,10 @@ io::AssetLibrary folder_assets(const std::vector<std::string>& folders);
 // empty, and report["missing_assets"] = {name: requests} when there are any.
 void report_missing_assets(const io::AssetLibrary& library, const std::string& input, bool quiet,
                            nlohmann::json& report);
+
+// One warning (AST101) per texture that could not be had (its faces keep their colour), and
+// report["missing_textures"] = {name: reason} when there are any.
+void report_missing_textures(const std::vector<io::TextureFailure>& failures,
+                             const std::string& input, bool quiet, nlohmann::json& report);
 
 }  // namespace insula::cli

@@ -227,10 +227,13 @@ int build_cga(const BuildOptions& options) {
     scene.origin = lots->origin;
     scene.crs = lots->crs;
   }
+  // Textures are found as assets are; a missing one leaves its faces their colour.
+  const std::vector<io::TextureFailure> textures = io::load_textures(scene, search);
   seconds["scene"] = clock.seconds();
 
   nlohmann::json report = report_json(p, results, lots->lots.size());
   report_missing_assets(library, options.input, options.quiet, report);
+  report_missing_textures(textures, options.input, options.quiet, report);
   report["threads"] = threads;
   report["seed"] = options.seed;
   if (!options.lot.empty()) {

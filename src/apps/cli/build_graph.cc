@@ -162,6 +162,8 @@ int build_graph(const BuildOptions& options) {
     scene.origin = lot_files.origin;
     scene.crs = lot_files.crs;
   }
+  // Rule files' textures are found from the graph's folder, as their assets are.
+  const std::vector<io::TextureFailure> textures = io::load_textures(scene, search);
   seconds["scene"] = clock.seconds();
 
   nlohmann::json report;
@@ -175,6 +177,7 @@ int build_graph(const BuildOptions& options) {
     report["lights"] = scene.lights.size();
   }
   report["graph"] = nlohmann::json::parse(lang::graph::graph_report(*result).dump());
+  report_missing_textures(textures, options.input, options.quiet, report);
   report["seconds"] = seconds;
   return finish_build(options, scene, report, total);
 }

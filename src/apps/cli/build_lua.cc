@@ -116,8 +116,15 @@ int build_lua(const BuildOptions& options) {
   if (const int code = stop_if_interrupted(); code != 0) return code;
   if (base::has_errors(diagnostics)) return kExitInput;
   stage = Stopwatch();
-  const shape::Scene scene = lua::collect_program(runtime.program());
+  shape::Scene scene = lua::collect_program(runtime.program());
+  // texture() images come from the asset folders, as the program's assets do.
+  const std::vector<std::string> folders = asset_folders(options);
+  const std::vector<io::TextureFailure> textures =
+      io::load_textures(scene, [&](std::string_view name, std::string& why) {
+        return find_in_folders(folders, std::filesystem::path(name), std::string(name), why);
+      });
   report["seconds"]["collect"] = stage.seconds();
+  report_missing_textures(textures, options.input, options.quiet, report);
   const lua::RunStats stats = runtime.stats();
   report["input"] = options.input;
   report["seed"] = options.seed;

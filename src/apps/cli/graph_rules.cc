@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <tuple>
 
 #include "apps/cli/asset_folders.h"
 #include "apps/cli/input_file.h"
@@ -166,6 +167,7 @@ std::shared_ptr<lang::graph::Model> run_lua(const FrontEndRules::Program& progra
 // The lot was the shape's outline in scope space: the part goes back to the world.
 void place(shape::Part& part, const shape::Scope& scope) {
   for (kernel::Vec3& v : part.mesh.positions()) v = scope.to_world(v);
+  if (part.uv) part.uv = part.uv->moved(shape::scope_transform(scope));
   if (part.instance_of != nullptr) {
     part.instance_transform = shape::scope_transform(scope) * part.instance_transform;
   }
@@ -246,7 +248,8 @@ std::shared_ptr<const lang::graph::Model> FrontEndRules::run(
   model->materials = std::move(scene.materials);
   // One part per symbol and attribute set: a facade's hundreds of terminals become a dozen
   // meshes, so a city of 10,000 lots keeps its parts countable (docs/graph-executor.md).
-  std::map<std::pair<std::string, shape::AttributeMap>, std::size_t> part_of;
+  // Parts with texture coordinates join only parts with the same map.
+  std::map<std::tuple<std::string, shape::AttributeMap, std::string>, std::size_t> part_of;
   for (shape::Building& b : scene.buildings) {
     for (shape::Part& p : b.parts) {
       place(p, request.scope);
@@ -254,7 +257,8 @@ std::shared_ptr<const lang::graph::Model> FrontEndRules::run(
         model->parts.push_back(std::move(p));
         continue;
       }
-      const auto [it, added] = part_of.try_emplace({p.name, p.attributes}, model->parts.size());
+      const auto [it, added] = part_of.try_emplace(
+          {p.name, p.attributes, p.uv ? shape::encode(*p.uv) : std::string()}, model->parts.size());
       if (added) {
         model->parts.push_back(std::move(p));
       } else {

@@ -1,7 +1,7 @@
 // CityEngine's operations and functions that Insula does not run yet (issue 20 item 6:
 // "unsupported is said, never skipped"). A name here is known to be CityEngine's, so the checker
 // says "not supported" (CGA901 / CGA902) instead of "unknown". Operations whose loss only costs
-// detail (texture coordinates, labels, normals) are warnings (CGA903): the model is still made,
+// detail (labels, normals) are warnings (CGA903): the model is still made,
 // without that detail. docs/cityengine-dialect.md keeps the coverage table.
 #pragma once
 
@@ -11,11 +11,9 @@ namespace insula::lang::cga {
 
 // Operations that change only what Insula does not model yet: skipped with warning CGA903.
 inline constexpr std::string_view kDetailOperations[] = {
-    "setupProjection", "projectUV",   "texture",        "translateUV",
-    "scaleUV",         "rotateUV",    "tileUV",         "normalizeUV",
-    "deleteUV",        "setNormals",  "softenNormals",  "deleteHoles",
-    "reduceGeometry",  "setMaterial", "resetMaterials", "resetGeometry",
-    "deleteTags",      "tag",
+    "setNormals",     "softenNormals", "deleteHoles",
+    "reduceGeometry", "setMaterial",   "resetMaterials",
+    "resetGeometry",  "deleteTags",    "tag",
 };
 
 // Operations that change geometry and are not implemented: error CGA901.

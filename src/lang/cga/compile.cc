@@ -167,6 +167,19 @@ class Compiler {
         for (const Alternative& alt : rule.alternatives) declare_set_targets(alt.items);
       }
     }
+    for (const shape::Operation& op : shape::registry().operations()) {
+      for (const std::string& name : op.state) {
+        std::uint32_t index = attr_index(name);
+        if (index == kNoExpr) {
+          index = static_cast<std::uint32_t>(program_->attrs.size());
+          program_->attrs.push_back({name, kNoExpr, {}});
+        }
+        if (std::find(program_->state_attrs.begin(), program_->state_attrs.end(), index) ==
+            program_->state_attrs.end()) {
+          program_->state_attrs.push_back(index);
+        }
+      }
+    }
     // Defaults compile after every name is known (one attr may use another).
     for (const AttrDecl& a : grammar_.attrs) {
       CAttr& target = program_->attrs[attr_index(a.name)];

@@ -259,6 +259,9 @@ struct Program {
   std::vector<CAttr> attrs;
   std::vector<CFunction> functions;
   std::uint32_t color_attr = 0;  // the hidden attribute color() sets
+  // Attributes registry operations keep as state (shape::Operation::state: uv sets, projections,
+  // the colour map), handed to and taken back from the operations that declare them.
+  std::vector<std::uint32_t> state_attrs;
   std::vector<ENode> nodes;
   std::vector<Value> consts;
   // CityEngine's comp functions (ECode::kCompFunc): code kComp, branches keyed by selector, each

@@ -5,6 +5,8 @@
 
 #include <bit>
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include "lang/cga/derive_engine.h"
 #include "shape/ops.h"
@@ -175,7 +177,9 @@ std::array<float, 4> rgba_of(const std::string& hex) {
 shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
                       const std::vector<LotResult>& results) {
   shape::Scene scene;
-  std::map<std::string, kernel::MaterialId> materials;
+  // By (colour, colour map): a textured material without a colour is white (CityEngine's).
+  std::map<std::pair<std::string, std::string>, kernel::MaterialId> materials;
+  const std::string uv0 = shape::uv_set_attribute(0);
   for (std::size_t i = 0; i < results.size() && i < lots.size(); ++i) {
     const LotResult& r = results[i];
     shape::Building building;
@@ -195,16 +199,33 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
           if (color.empty()) color = std::get<std::string>(node.value);
           continue;
         }
-        part.attributes.emplace(program.attrs[node.attr].name,
-                                to_shape(node.value));  // nearest wins
+        const std::string& name = program.attrs[node.attr].name;
+        if (name.starts_with("#uv")) {  // texture state, not a user attribute
+          if (name == uv0 && !part.attributes.contains(name)) {
+            part.uv = shape::decode_uv_map(to_shape(node.value));
+            part.attributes.emplace(name, shape::Value{});  // seen: an older set stays hidden
+          }
+          continue;
+        }
+        part.attributes.emplace(name, to_shape(node.value));  // nearest wins
+      }
+      std::erase_if(part.attributes, [](const auto& a) { return a.first.starts_with("#uv"); });
+      std::string texture;
+      if (auto it = part.attributes.find(shape::kColormapAttribute); it != part.attributes.end()) {
+        if (const auto* text = std::get_if<std::string>(&it->second)) texture = *text;
       }
       part.mesh = shape::mesh_to_world(*m.mesh, term.scope);
-      if (!color.empty()) {
-        part.attributes["color"] = color;
-        auto [it, inserted] = materials.emplace(color, 0);
+      if (!color.empty()) part.attributes["color"] = color;
+      if (!color.empty() || !texture.empty()) {
+        auto [it, inserted] = materials.emplace(std::pair{color, texture}, 0);
         if (inserted) {
           it->second = static_cast<kernel::MaterialId>(scene.materials.size());
-          scene.materials.push_back({color, rgba_of(color)});
+          shape::Material material{
+              color.empty() ? texture : color,
+              color.empty() ? std::array<float, 4>{1, 1, 1, 1} : rgba_of(color)};
+          if (!texture.empty() && !color.empty()) material.name = color + "_" + texture;
+          material.texture = texture;
+          scene.materials.push_back(std::move(material));
         }
         for (std::size_t f = 0; f < part.mesh.face_count(); ++f)
           part.mesh.tag(f).material = it->second;

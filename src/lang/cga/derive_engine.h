@@ -326,6 +326,8 @@ class Engine final : public EvalContext {
   // ---- operations through the shape layer (shape::registry() on a one-shape tree)
   OpOutcome run_op(const State& st, std::string_view name, const std::vector<shape::ArgInput>& args,
                    const Scope* parent = nullptr);
+  // The values of Program::state_attrs the shape sees (null where none is set).
+  std::vector<Value> state_values(const State& st) const;
 
   bool check(const CItem& c, const OpOutcome& o) {
     if (!o.warning.empty()) warn(c, o.warning);

@@ -2,6 +2,7 @@
 // scale, center, i, roofs, offset and every registry operation CGA reaches under its own name.
 // Their arguments are bound by the registry's declarations (operations.h), so nothing here
 // knows an operation's parameters.
+#include <algorithm>
 #include <cctype>
 
 #include "lang/cga/derive_engine.h"
@@ -21,6 +22,19 @@ OpOutcome Engine::run_op(const State& st, std::string_view name,
   } else {
     id = tree.add_root(st.scope, m.mesh, m.outline);
   }
+  // State the operation keeps in attributes (texture projections, uv sets) goes in from the
+  // shape's attribute chain and comes back onto each child's.
+  const shape::Operation* op = shape::registry().find(name);
+  const bool stateful = op != nullptr && !op->state.empty();
+  std::vector<shape::Value> before;
+  if (stateful) {
+    for (const Value& v : state_values(st)) before.push_back(to_shape(v));
+    for (std::size_t k = 0; k < before.size(); ++k) {
+      if (!shape::is_null(before[k])) {
+        tree.set_attribute(id, program_.attrs[program_.state_attrs[k]].name, before[k]);
+      }
+    }
+  }
   const shape::OpResult r = shape::registry().run(tree, id, name, args, context_);
   if (!r.ok()) {
     out.error = r.error;
@@ -32,10 +46,31 @@ OpOutcome Engine::run_op(const State& st, std::string_view name,
     State c = st;
     c.scope = s.scope;
     c.geometry = add_mesh(s.mesh, s.outline, s.scope.size);
+    for (std::size_t a = 0; stateful && a < before.size(); ++a) {
+      const std::uint32_t attr = program_.state_attrs[a];
+      const shape::Value* v = tree.attribute(r.children[k], program_.attrs[attr].name);
+      if (v != nullptr && *v != before[a]) {
+        out_.attr_nodes.push_back({c.attrs, attr, from_shape(*v)});
+        c.attrs = static_cast<std::uint32_t>(out_.attr_nodes.size() - 1);
+      }
+    }
     out.children.push_back(c);
     out.pieces.push_back(r.pieces[k]);
   }
   return out;
+}
+
+std::vector<Value> Engine::state_values(const State& st) const {
+  std::vector<Value> values(program_.state_attrs.size());
+  std::vector<bool> found(values.size(), false);
+  for (std::uint32_t n = st.attrs; n != 0; n = out_.attr_nodes[n].parent) {
+    const AttrNode& node = out_.attr_nodes[n];
+    const auto it = std::find(program_.state_attrs.begin(), program_.state_attrs.end(), node.attr);
+    if (it == program_.state_attrs.end()) continue;
+    const auto k = static_cast<std::size_t>(it - program_.state_attrs.begin());
+    if (!found[k]) values[k] = node.value, found[k] = true;  // the nearest wins
+  }
+  return values;
 }
 
 std::vector<shape::ArgInput> Engine::registry_args(const CItem& c, State& st) {

@@ -8,6 +8,7 @@
 #include "kernel/heightfield.h"
 #include "lang/graph/properties.h"
 #include "shape/scope.h"
+#include "shape/uv_map.h"
 
 namespace insula::lang::graph {
 namespace {
@@ -83,14 +84,16 @@ nlohmann::ordered_json entity_record(const RunResult& run, EntityId id, const st
 // A building's parts by name and attributes: parts that agree in both become one mesh (a
 // building of four CGA facades has a dozen parts, not hundreds), so large cities stay light in
 // every format.
-using PartIndex = std::map<std::pair<std::string, shape::AttributeMap>, std::size_t>;
+// Parts with texture coordinates (a CGA rule's projectUV) join only parts with the same map.
+using PartIndex = std::map<std::tuple<std::string, shape::AttributeMap, std::string>, std::size_t>;
 
 void add_part(shape::Building& building, PartIndex& index, shape::Part part) {
   if (part.instance_of != nullptr) {
     building.parts.push_back(std::move(part));
     return;
   }
-  const auto [it, added] = index.try_emplace({part.name, part.attributes}, building.parts.size());
+  const auto [it, added] = index.try_emplace(
+      {part.name, part.attributes, part.uv ? shape::encode(*part.uv) : ""}, building.parts.size());
   if (added) {
     building.parts.push_back(std::move(part));
   } else {
