@@ -283,6 +283,33 @@ void Checker::check_geometry_call(const Expr& expr, const shape::GeometryQueryIn
   }
 }
 
+// CityEngine's convert(coordinate, from, to, type, x, y, z) and convert(from, to, type, float[]).
+void Checker::check_convert(const Expr& expr) {
+  const std::size_t count = expr.operands.size() - 1;
+  if (count != 7 && count != 4) {
+    error("CGA312",
+          "'convert' expects 7 arguments (or 4 with a float[]), found " + std::to_string(count),
+          expr.range);
+    return;
+  }
+  const std::size_t first = count == 7 ? 2 : 1;
+  const auto word = [&](std::size_t i, std::initializer_list<std::string_view> choices,
+                        const char* what) {
+    const std::string text = dotted_name(*expr.operands[i]);
+    if (std::find(choices.begin(), choices.end(), text) == choices.end()) {
+      std::string list;
+      for (std::string_view c : choices) list += (list.empty() ? "" : ", ") + std::string(c);
+      error("CGA315", std::string("the ") + what + " of 'convert' is one of " + list,
+            expr.operands[i]->range);
+    }
+  };
+  if (count == 7) word(1, {"x", "y", "z"}, "coordinate");
+  word(first, {"scope", "pivot", "object", "world"}, "system to convert from");
+  word(first + 1, {"scope", "pivot", "object", "world"}, "system to convert to");
+  word(first + 2, {"pos", "orient"}, "type");
+  for (std::size_t i = first + 3; i <= count; ++i) check_expr(*expr.operands[i]);
+}
+
 // CityEngine's occlusion queries: inside/overlaps/touches([intra|inter|all[, label]]).
 void Checker::check_occlusion_query(const Expr& expr) {
   const std::string& name = expr.operands[0]->text;
@@ -324,6 +351,9 @@ void Checker::check_call(const Expr& expr) {
                 ", found " + std::to_string(count),
             callee.range);
     }
+  } else if (callee.kind == ExprKind::kIdent && cityengine() && callee.text == "convert") {
+    check_convert(expr);
+    return;
   } else if (callee.kind == ExprKind::kIdent && cityengine() &&
              (callee.text == "inside" || callee.text == "overlaps" || callee.text == "touches")) {
     check_occlusion_query(expr);

@@ -101,6 +101,7 @@ class Checker {
   // ---- checker_exprs.cc
   void check_call(const Expr& expr);
   void check_occlusion_query(const Expr& expr);
+  void check_convert(const Expr& expr);
   void check_geometry_call(const Expr& expr, const shape::GeometryQueryInfo& query);
   void check_comp_function(const Expr& expr);
   void check_member(const Expr& expr);

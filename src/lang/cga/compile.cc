@@ -439,6 +439,10 @@ class Compiler {
     if (const shape::GeometryQueryInfo* query = geometry_query_of(callee); query && argc <= 1) {
       return geometry(*query, argc == 1 ? e.operands[1].get() : nullptr, e.range);
     }
+    if (callee.kind == ExprKind::kIdent && callee.text == "convert" && program_->cityengine &&
+        (argc == 7 || argc == 4)) {
+      return convert(e);
+    }
     if (const std::optional<OcclusionRelation> relation = occlusion_relation(callee);
         relation && program_->cityengine && argc <= 2) {
       return occlusion_query(*relation, e);
@@ -689,6 +693,30 @@ class Compiler {
           geometry_face_selector(dotted_name(*arg)).value_or(shape::FaceSelector::kAll));
     } else {
       node.op = static_cast<std::uint8_t>(shape::FaceSelector::kAll);
+    }
+    return add(std::move(node));
+  }
+
+  // convert(coordinate, from, to, type, x, y, z) or convert(from, to, type, coordinates[]); the
+  // checker has vetted the words.
+  std::uint32_t convert(const Expr& e) {
+    const bool tuple = e.operands.size() == 8;
+    const std::size_t first = tuple ? 2 : 1;
+    const auto frame = [&](std::size_t i) {
+      return static_cast<std::uint32_t>(shape::frame_from(dotted_name(*e.operands[i])));
+    };
+    const std::string coordinate = tuple ? dotted_name(*e.operands[1]) : std::string();
+    ENode node{ECode::kConvert,
+               static_cast<std::uint8_t>(coordinate == "x"   ? 0
+                                         : coordinate == "y" ? 1
+                                         : coordinate == "z" ? 2
+                                                             : 3),
+               frame(first) | frame(first + 1) << 2 |
+                   (dotted_name(*e.operands[first + 2]) == "orient" ? 1U : 0U) << 4,
+               e.range,
+               {}};
+    for (std::size_t i = first + 3; i < e.operands.size(); ++i) {
+      node.kids.push_back(expr(*e.operands[i]));
     }
     return add(std::move(node));
   }

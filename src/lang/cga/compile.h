@@ -46,6 +46,8 @@ enum class ECode : std::uint8_t {
   kCompSel,    // comp.sel: the selector text of the comp branch the shape came from
   kOcclusion,  // CityEngine's inside/overlaps/touches: op the relation (OcclusionRelation), a
                // the target (OcclusionTarget), kids: the label when given
+  kConvert,    // CityEngine's convert(): a = from | to << 2 | orient << 4 (shape::Frame), op the
+               // component 0..2 (3: all, as a float[3]); kids: x, y, z, or one float[3]
   kGeometry,   // CityEngine's geometry.*: query a (shape::GeometryQuery), its selector or angle
                // type op, kids: the tolerance when it takes one
   // CityEngine's arrays:

@@ -465,6 +465,9 @@ class Engine final : public EvalContext {
   void add_occluder(const State& st, std::string label);
   bool occlusion_query(OcclusionRelation relation, OcclusionTarget target,
                        const std::string& label) override;
+  Vec3 convert(shape::Frame from, shape::Frame to, bool orientation, Vec3 v) override {
+    return shape::convert_between_frames(from, to, orientation, v, cur_->scope, context_.object);
+  }
 
   std::vector<std::vector<Work>> pending_;  // one stack per priority level
   std::size_t pending_count_ = 0;

@@ -470,6 +470,28 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
     }
     case ECode::kCompSel:
       return context.comp_selector();
+    case ECode::kConvert: {
+      kernel::Vec3 v;
+      if (n.kids.size() == 3) {
+        v = {as_number(evaluate(program, n.kids[0], context), n.range),
+             as_number(evaluate(program, n.kids[1], context), n.range),
+             as_number(evaluate(program, n.kids[2], context), n.range)};
+      } else {
+        const Value coordinates = evaluate(program, n.kids[0], context);
+        const auto* array = std::get_if<ArrayPtr>(&coordinates);
+        if (array == nullptr || (*array)->type != ElementType::kFloat ||
+            (*array)->items.size() != 3) {
+          fail(n.range, "convert() takes a float[] of 3 coordinates");
+        }
+        v = {std::get<double>((*array)->items[0]), std::get<double>((*array)->items[1]),
+             std::get<double>((*array)->items[2])};
+      }
+      const kernel::Vec3 r =
+          context.convert(static_cast<shape::Frame>(n.a & 3),
+                          static_cast<shape::Frame>(n.a >> 2 & 3), (n.a >> 4 & 1) != 0, v);
+      if (n.op == 3) return make_row(ElementType::kFloat, {r.x, r.y, r.z});
+      return n.op == 0 ? r.x : n.op == 1 ? r.y : r.z;
+    }
     case ECode::kOcclusion:
       return context.occlusion_query(
           static_cast<OcclusionRelation>(n.op), static_cast<OcclusionTarget>(n.a),

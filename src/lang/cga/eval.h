@@ -14,6 +14,7 @@
 #include "lang/cga/compile.h"
 #include "lang/cga/value.h"
 #include "shape/geometry_queries.h"
+#include "shape/ops.h"
 #include "shape/rng.h"
 #include "shape/scope.h"
 
@@ -72,6 +73,10 @@ class EvalContext {
   virtual double shape_attribute(ShapeAttr attr) = 0;
   // CityEngine's inside/overlaps/touches: whether the shape stands so to an occluder of `target`
   // (labelled `label`; "" any).
+  // CityEngine's convert(): `v` from frame `from` into frame `to` (positions, or orientations
+  // in degrees), the frames the shape's own (shape::convert_between_frames).
+  virtual kernel::Vec3 convert(shape::Frame from, shape::Frame to, bool orientation,
+                               kernel::Vec3 v) = 0;
   virtual bool occlusion_query(OcclusionRelation relation, OcclusionTarget target,
                                const std::string& label) = 0;
   // CityEngine's geometry.* (shape/geometry_queries.h) on the shape's geometry.

@@ -127,8 +127,8 @@ TEST(CityEngineDialect, ChecksWhatTheDialectAdds) {
             "file\n");
   EXPECT_EQ(check_text("Lot --> envelope(world.up, 30, 12, 45) A.\n"),
             "t.cga:1:9: error[CGA901]: CityEngine operation 'envelope' is not supported\n");
-  EXPECT_EQ(check_text("attr y = convert(x, scope, world, pos, 0, 0, 0)\nLot --> print(y) A.\n"),
-            "t.cga:1:10: error[CGA902]: CityEngine function 'convert' is not supported\n");
+  EXPECT_EQ(check_text("attr y = getGeoCoord(lat)\nLot --> print(y) A.\n"),
+            "t.cga:1:10: error[CGA902]: CityEngine function 'getGeoCoord' is not supported\n");
   EXPECT_EQ(check_text("Lot --> softenNormals(30) A.\n"),
             "t.cga:1:9: warning[CGA903]: CityEngine operation 'softenNormals' is not supported "
             "yet; it is skipped (the model lacks only that detail)\n");
@@ -427,6 +427,28 @@ TEST(CityEngineDialect, OcclusionQueriesWithLabels) {
   EXPECT_EQ(check_text("version \"2024.0\"\nA --> case touches(near) : B. else : C.\n"),
             "t.cga:2:20: error[CGA315]: the target of 'touches' is intra, inter or all, found "
             "'near'\n");
+}
+
+TEST(CityEngineDialect, ConvertBetweenFrames) {
+  // A 10 x 8 lot moved 3 m up: the scope origin in world coordinates (x east, y up, z south;
+  // the volume's z points south, so its origin is on the lot's north edge, z = -8), a point 2 m
+  // along the scope's x, the whole triple as a float[3], and a bad system.
+  auto p = compile_text(
+      "version \"2024.0\"\nLot --> extrude(6) t(0, 3, 0) print(convert(x, scope, world, pos, "
+      "2, 0, 0)) print(convert(y, scope, world, pos, 0, 0, 0)) print(convert(scope, world, pos, "
+      "[0, 0, 0])) print(convert(y, scope, object, orient, 0, 0, 0)) X.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 8)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  ASSERT_EQ(r[0].prints.size(), 4U);
+  EXPECT_NE(r[0].prints[0].find(": 2"), std::string::npos) << r[0].prints[0];
+  EXPECT_NE(r[0].prints[1].find(": 3"), std::string::npos) << r[0].prints[1];
+  EXPECT_NE(r[0].prints[2].find("(3)[0,3,-8]"), std::string::npos) << r[0].prints[2];
+  EXPECT_NE(r[0].prints[3].find(": 0"), std::string::npos) << r[0].prints[3];
+  EXPECT_EQ(
+      check_text("version \"2024.0\"\nLot --> print(convert(x, scope, earth, pos, 0, 0, 0)) X.\n"),
+      "t.cga:2:33: error[CGA315]: the system to convert to of 'convert' is one of scope, pivot, "
+      "object, world\n");
 }
 
 TEST(CityEngineDialect, GeometryFunctions) {
