@@ -45,15 +45,18 @@ inline constexpr std::string_view kUnsupportedOperations[] = {
 
 // Functions of CityEngine that Insula does not evaluate yet: error CGA902.
 inline constexpr std::string_view kUnsupportedFunctions[] = {
-    "filesSearch",    "fileName",        "fileBasename",        "fileDirectory",  "fileExtension",
-    "assetBestSize",  "assetBestRatio",  "assetFitSize",        "assetsSortSize", "assetsSortRatio",
-    "imageBestRatio", "assetApproxSize", "assetApproxRatio",    "getGeoCoord",    "minimumDistance",
-    "contextCompare", "contextCount",    "getObjectAttr",       "colorRGBToHex",  "colorHSVToHex",
-    "colorHexToH",    "colorHexToS",     "colorHexToV",         "colorHexToR",    "colorHexToG",
-    "colorHexToB",    "colorHexToO",     "colorRamp",           "readTextFile",   "sortRowIndices",
-    "setElems",       "isTagged",        "geometry.isOriented", "geometry.du",    "geometry.dv",
-    "geometry.uMin",  "geometry.uMax",   "geometry.vMin",       "geometry.vMax",  "isNull",
-    "hash",
+    "filesSearch",      "fileName",       "fileBasename",
+    "fileDirectory",    "fileExtension",  "assetBestSize",
+    "assetBestRatio",   "assetFitSize",   "assetsSortSize",
+    "assetsSortRatio",  "imageBestRatio", "assetApproxSize",
+    "assetApproxRatio", "getGeoCoord",    "minimumDistance",
+    "contextCompare",   "contextCount",   "getObjectAttr",
+
+    "colorRamp",        "readTextFile",   "sortRowIndices",
+    "setElems",         "isTagged",       "geometry.isOriented",
+    "geometry.du",      "geometry.dv",    "geometry.uMin",
+    "geometry.uMax",    "geometry.vMin",  "geometry.vMax",
+    "isNull",           "hash",
 };
 
 constexpr bool contains(const auto& table, std::string_view name) {

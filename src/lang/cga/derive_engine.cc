@@ -8,42 +8,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "lang/cga/colors.h"
 #include "shape/query.h"
 #include "shape/shape_tree.h"
 
 namespace insula::lang::cga::detail {
-
-namespace {
-
-std::string hex_color(double r, double g, double b, double a, bool alpha) {
-  const auto byte = [](double v) {
-    return static_cast<unsigned>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
-  };
-  char text[16];
-  if (alpha) {
-    std::snprintf(text, sizeof text, "#%02x%02x%02x%02x", byte(r), byte(g), byte(b), byte(a));
-  } else {
-    std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(r), byte(g), byte(b));
-  }
-  return text;
-}
-
-// "#rgb" and "#rgba" (CSS's short forms, which CityEngine files use) as "#rrggbb[aa]".
-std::string long_hex(const std::string& s) {
-  if ((s.size() != 4 && s.size() != 5) || s[0] != '#') return s;
-  std::string out = "#";
-  for (std::size_t i = 1; i < s.size(); ++i) out.append(2, s[i]);
-  return out;
-}
-
-bool valid_hex_color(const std::string& s) {
-  if (s.size() != 7 && s.size() != 9) return false;
-  if (s[0] != '#') return false;
-  return std::all_of(s.begin() + 1, s.end(),
-                     [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; });
-}
-
-}  // namespace
 
 void Engine::run() {
   try {

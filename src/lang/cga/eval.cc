@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <numbers>
 
+#include "lang/cga/colors.h"
+
 namespace insula::lang::cga {
 
 namespace {
@@ -371,6 +373,40 @@ Value apply_function(Function f, const std::vector<Value>& args, Range range) {
     case Function::kListCount:
     case Function::kListAdd:
       return string_function(f, args, range);
+    case Function::kColorRGBToHex:
+      return hex_color(x(0), x(1), x(2), 1, false);
+    case Function::kColorHSVToHex: {
+      const auto [r, g, b] = rgb_of_hsv(x(0), x(1), x(2));
+      return hex_color(r, g, b, 1, false);
+    }
+    case Function::kColorHexToR:
+    case Function::kColorHexToG:
+    case Function::kColorHexToB:
+    case Function::kColorHexToO:
+    case Function::kColorHexToH:
+    case Function::kColorHexToS:
+    case Function::kColorHexToV: {
+      const auto rgba = rgba_of_hex(as_text(args[0]));
+      if (!rgba) fail(range, "'" + as_text(args[0]) + "' is not a colour (\"#rrggbb\")");
+      const auto& c = *rgba;
+      const auto hsv = hsv_of_rgb(c[0], c[1], c[2]);
+      switch (f) {
+        case Function::kColorHexToR:
+          return c[0];
+        case Function::kColorHexToG:
+          return c[1];
+        case Function::kColorHexToB:
+          return c[2];
+        case Function::kColorHexToO:
+          return c[3];
+        case Function::kColorHexToH:
+          return hsv[0];
+        case Function::kColorHexToS:
+          return hsv[1];
+        default:
+          return hsv[2];
+      }
+    }
     default:
       if (is_array_function(f)) return array_function(f, args, range);
       fail(range, "internal: random function evaluated without a generator");

@@ -429,6 +429,22 @@ TEST(CityEngineDialect, OcclusionQueriesWithLabels) {
             "'near'\n");
 }
 
+TEST(CityEngineDialect, ColourFunctions) {
+  auto p = compile_text(
+      "version \"2024.0\"\nLot --> print(colorRGBToHex(1, 0.5, 0)) print(colorHSVToHex(120, 1, "
+      "0.5)) print(colorHexToH(\"#00ff00\")) print(colorHexToS(\"#808080\")) "
+      "print(colorHexToV(\"#ff8000\")) print(colorHexToB(\"#00f\")) X.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 8)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  ASSERT_EQ(r[0].prints.size(), 6U);
+  const std::vector<std::string> expected = {"#ff8000", "#008000", "120", "0", "1", "1"};
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const std::string& line = r[0].prints[i];
+    EXPECT_EQ(line.substr(line.rfind(' ') + 1), expected[i]) << line;
+  }
+}
+
 TEST(CityEngineDialect, ConvertBetweenFrames) {
   // A 10 x 8 lot moved 3 m up: the scope origin in world coordinates (x east, y up, z south;
   // the volume's z points south, so its origin is on the lot's north edge, z = -8), a point 2 m
