@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <vector>
 
@@ -19,7 +20,7 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180;
 
-constexpr std::array<GeometryQueryInfo, 12> kQueries = {{
+constexpr std::array<GeometryQueryInfo, 13> kQueries = {{
     {"area", GeometryQuery::kArea, QueryArgument::kFaceSelector, true,
      "surface area of the faces a comp selector picks (default: all)"},
     {"volume", GeometryQuery::kVolume, QueryArgument::kNone, false,
@@ -37,6 +38,8 @@ constexpr std::array<GeometryQueryInfo, 12> kQueries = {{
      "length of the edges that belong to one face only"},
     {"isClosedSurface", GeometryQuery::kIsClosedSurface, QueryArgument::kNone, false,
      "true when every edge is shared by exactly two faces"},
+    {"isOriented", GeometryQuery::kIsOriented, QueryArgument::kNone, false,
+     "true when every edge two faces share runs one way in one and the other way in the other"},
     {"isConcave", GeometryQuery::kIsConcave, QueryArgument::kNone, false,
      "true when some face is not convex"},
     {"isPlanar", GeometryQuery::kIsPlanar, QueryArgument::kTolerance, false,
@@ -142,6 +145,19 @@ std::pair<double, double> steepest(const Mesh& mesh, const Scope& scope) {
   return {slope, azimuth};
 }
 
+// Whether no directed edge is used twice: neighbouring faces agree on which side is out.
+bool oriented(const Mesh& mesh) {
+  const Mesh welded = kernel::weld(mesh);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (std::size_t f = 0; f < welded.face_count(); ++f) {
+    const auto loop = welded.face(f);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      if (++uses[{loop[i], loop[(i + 1) % loop.size()]}] > 1) return false;
+    }
+  }
+  return welded.face_count() > 0;
+}
+
 double edge_measure(const Mesh& mesh, GeometryQuery query) {
   const Mesh welded = kernel::weld(mesh);
   const std::vector<MeshEdge> edges = mesh_edges(welded);
@@ -206,6 +222,8 @@ double geometry_query(const Mesh& mesh, const Scope& scope, GeometryQuery query,
         if (!kernel::is_convex(face_in_plane(mesh, f), kernel::Winding::kEither, 1e-12)) return 1;
       }
       return 0;
+    case GeometryQuery::kIsOriented:
+      return oriented(mesh) ? 1 : 0;
     case GeometryQuery::kIsPlanar:
       return planar(mesh, tolerance) ? 1 : 0;
     case GeometryQuery::kIsRectangular:

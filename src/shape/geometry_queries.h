@@ -24,6 +24,7 @@ enum class GeometryQuery : std::uint8_t {
   kAngle,            // angle(maxSlope | azimuth | zenith), degrees
   kBoundaryLength,   // boundaryLength(): edges of one face only
   kIsClosedSurface,  // isClosedSurface(): every edge shared by exactly two faces
+  kIsOriented,       // isOriented(): faces sharing an edge run it in opposite directions
   kIsConcave,        // isConcave(): some face is not convex
   kIsPlanar,         // isPlanar(tolerance degrees): every face in one plane
   kIsRectangular,    // isRectangular(tolerance degrees): one face, four right angles

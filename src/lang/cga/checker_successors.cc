@@ -491,6 +491,11 @@ void Checker::check_selector_keys(const Item& item, const std::vector<std::strin
     if (key.kind == ExprKind::kIdent || key.kind == ExprKind::kString ||
         (key.kind == ExprKind::kMember && !dotted_name(key).empty())) {
       name = key.kind == ExprKind::kMember ? dotted_name(key) : key.text;
+      // setback's `street.front`: without street data CityEngine reads the lot's own sides.
+      if (name.starts_with("street.") &&
+          std::find(selectors.begin(), selectors.end(), "street") != selectors.end()) {
+        name = name.substr(7);
+      }
       const bool known = std::find(selectors.begin(), selectors.end(), name) != selectors.end();
       if (!known) {
         std::string list;

@@ -53,8 +53,7 @@ inline constexpr std::string_view kUnsupportedFunctions[] = {
     "contextCompare",   "contextCount",   "getObjectAttr",
 
     "colorRamp",        "readTextFile",   "sortRowIndices",
-    "setElems",         "isTagged",       "geometry.isOriented",
-    "geometry.du",      "geometry.dv",    "geometry.uMin",
+    "setElems",         "isTagged",       "geometry.du",      "geometry.dv",    "geometry.uMin",
     "geometry.uMax",    "geometry.vMin",  "geometry.vMax",
     "isNull",           "hash",
 };

@@ -914,6 +914,10 @@ class Compiler {
         out.selector = *w;
       } else if (key.kind == ExprKind::kMember && is_selector(info, dotted_name(key))) {
         out.selector = dotted_name(key);  // world.up, object.front
+      } else if (const std::string word = dotted_name(key); word.starts_with("street.") &&
+                                                            is_selector(info, "street") &&
+                                                            is_selector(info, word.substr(7))) {
+        out.selector = word.substr(7);  // setback's street.front: the lot's own front
       } else {
         error("CGA510",
               "'" + std::string(info.name) + "' has no selector '" +

@@ -429,6 +429,20 @@ TEST(CityEngineDialect, OcclusionQueriesWithLabels) {
             "'near'\n");
 }
 
+TEST(CityEngineDialect, SetbackStreetSidesAreTheLotsSides) {
+  // No street data: street.front is the lot's front edge (its first), street.back its back.
+  auto p = compile_text(
+      "version \"2020.0\"\nLot --> setback(3) { street.front : F | street.back : B | remainder "
+      ": R }\nF --> report(\"front\", geometry.area())\nB --> report(\"back\", "
+      "geometry.area())\nR --> report(\"rest\", geometry.area())\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(20, 10)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_NEAR(r[0].reports.at("front").sum, 60, 1e-6);
+  EXPECT_NEAR(r[0].reports.at("back").sum, 60, 1e-6);
+  EXPECT_NEAR(r[0].reports.at("rest").sum, 80, 1e-6);
+}
+
 TEST(CityEngineDialect, ColourFunctions) {
   auto p = compile_text(
       "version \"2024.0\"\nLot --> print(colorRGBToHex(1, 0.5, 0)) print(colorHSVToHex(120, 1, "
@@ -474,7 +488,8 @@ TEST(CityEngineDialect, GeometryFunctions) {
       "geometry.isConcave()) extrude(6) Mass\n"
       "Mass --> report(\"h\", geometry.height()) report(\"top\", geometry.area(top))\n"
       "  report(\"side\", geometry.area(side)) report(\"edges\", geometry.nEdges())\n"
-      "  report(\"closed\", geometry.isClosedSurface()) comp(f) { top : Top }\n"
+      "  report(\"closed\", geometry.isClosedSurface()) report(\"oriented\", "
+      "geometry.isOriented()) comp(f) { top : Top }\n"
       "Top --> roofGable(45) comp(f) { aslant : Plane }\n"
       "Plane --> report(\"slope\", geometry.angle(maxSlope)) report(\"azimuth\", "
       "geometry.angle(azimuth)) report(\"planar\", geometry.isPlanar(1))\n");
@@ -489,6 +504,7 @@ TEST(CityEngineDialect, GeometryFunctions) {
   EXPECT_NEAR(rect.at("side").sum, 6 * 60, 1e-9);
   EXPECT_EQ(rect.at("edges").sum, 12);
   EXPECT_EQ(rect.at("closed").sum, 1);
+  EXPECT_EQ(rect.at("oriented").sum, 1);
   // A gable on 20 x 10: two planes at 45 degrees, one falling south (180), one north (0).
   EXPECT_EQ(rect.at("slope").count, 2U);
   EXPECT_NEAR(rect.at("slope").sum, 90, 1e-6);
