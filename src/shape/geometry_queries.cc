@@ -38,8 +38,8 @@ constexpr std::array<GeometryQueryInfo, 13> kQueries = {{
      "length of the edges that belong to one face only"},
     {"isClosedSurface", GeometryQuery::kIsClosedSurface, QueryArgument::kNone, false,
      "true when every edge is shared by exactly two faces"},
-    {"isOriented", GeometryQuery::kIsOriented, QueryArgument::kNone, false,
-     "true when every edge two faces share runs one way in one and the other way in the other"},
+    {"isOriented", GeometryQuery::kIsOriented, QueryArgument::kFaceSelector, false,
+     "true when every face faces as the selector says (comp's face selectors, world.*, object.*)"},
     {"isConcave", GeometryQuery::kIsConcave, QueryArgument::kNone, false,
      "true when some face is not convex"},
     {"isPlanar", GeometryQuery::kIsPlanar, QueryArgument::kTolerance, false,
@@ -114,17 +114,28 @@ bool planar(const Mesh& mesh, double tolerance) {
   return true;
 }
 
-double area(const Mesh& mesh, FaceSelector selector) {
+// Which faces a face option (face_option_named) picks.
+std::vector<bool> picked_faces(const Mesh& mesh, std::uint8_t option, const Scope& scope,
+                               const Scope* object) {
+  std::vector<bool> picked(mesh.face_count(), false);
+  if (option >= kFrameOption) {
+    const std::vector<std::string> words = frame_selector_words();
+    const std::optional<FrameSelector> frame =
+        frame_selector_named(words[std::min<std::size_t>(option - kFrameOption, words.size() - 1)]);
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+      picked[f] = face_matches_in_frame(
+          *frame, scope.direction_to_world(kernel::face_normal(mesh, f)), object);
+    }
+    return picked;
+  }
+  const auto selector = static_cast<FaceSelector>(option);
   const bool by_border = selector == FaceSelector::kBorder || selector == FaceSelector::kInside;
   const std::vector<bool> border = by_border ? border_faces(mesh) : std::vector<bool>();
-  double sum = 0;
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    const bool picked =
-        by_border ? (f < border.size() && border[f] == (selector == FaceSelector::kBorder))
-                  : face_matches(selector, kernel::face_normal(mesh, f));
-    if (picked) sum += kernel::face_area(mesh, f);
+    picked[f] = by_border ? (f < border.size() && border[f] == (selector == FaceSelector::kBorder))
+                          : face_matches(selector, kernel::face_normal(mesh, f));
   }
-  return sum;
+  return picked;
 }
 
 // The steepest face's slope against the horizontal (degrees) and the azimuth it falls towards.
@@ -143,19 +154,6 @@ std::pair<double, double> steepest(const Mesh& mesh, const Scope& scope) {
     azimuth = std::fmod(std::atan2(east, north) / kDegree + 360, 360);
   }
   return {slope, azimuth};
-}
-
-// Whether no directed edge is used twice: neighbouring faces agree on which side is out.
-bool oriented(const Mesh& mesh) {
-  const Mesh welded = kernel::weld(mesh);
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
-  for (std::size_t f = 0; f < welded.face_count(); ++f) {
-    const auto loop = welded.face(f);
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      if (++uses[{loop[i], loop[(i + 1) % loop.size()]}] > 1) return false;
-    }
-  }
-  return welded.face_count() > 0;
 }
 
 double edge_measure(const Mesh& mesh, GeometryQuery query) {
@@ -195,11 +193,31 @@ std::optional<AngleType> angle_type_named(std::string_view name) {
   return std::nullopt;
 }
 
+std::optional<std::uint8_t> face_option_named(std::string_view word) {
+  if (word == "surface") return static_cast<std::uint8_t>(FaceSelector::kAll);
+  // Without street data CityEngine reads street.* as the initial shape's own sides.
+  const std::string frame_word =
+      word.starts_with("street.") ? "object." + std::string(word.substr(7)) : std::string(word);
+  const std::vector<std::string> words = frame_selector_words();
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (words[i] == frame_word) return static_cast<std::uint8_t>(kFrameOption + i);
+  }
+  const std::optional<FaceSelector> selector = face_selector_named(word);
+  if (!selector || *selector >= FaceSelector::kEave) return std::nullopt;
+  return static_cast<std::uint8_t>(*selector);
+}
+
 double geometry_query(const Mesh& mesh, const Scope& scope, GeometryQuery query,
-                      std::uint8_t option, double tolerance) {
+                      std::uint8_t option, double tolerance, const Scope* object) {
   switch (query) {
-    case GeometryQuery::kArea:
-      return area(mesh, static_cast<FaceSelector>(option));
+    case GeometryQuery::kArea: {
+      const std::vector<bool> picked = picked_faces(mesh, option, scope, object);
+      double sum = 0;
+      for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+        if (picked[f]) sum += kernel::face_area(mesh, f);
+      }
+      return sum;
+    }
     case GeometryQuery::kVolume:
       return std::fabs(kernel::volume(mesh));
     case GeometryQuery::kVertices:
@@ -222,8 +240,12 @@ double geometry_query(const Mesh& mesh, const Scope& scope, GeometryQuery query,
         if (!kernel::is_convex(face_in_plane(mesh, f), kernel::Winding::kEither, 1e-12)) return 1;
       }
       return 0;
-    case GeometryQuery::kIsOriented:
-      return oriented(mesh) ? 1 : 0;
+    case GeometryQuery::kIsOriented: {
+      const std::vector<bool> picked = picked_faces(mesh, option, scope, object);
+      return !picked.empty() && std::all_of(picked.begin(), picked.end(), [](bool b) { return b; })
+                 ? 1
+                 : 0;
+    }
     case GeometryQuery::kIsPlanar:
       return planar(mesh, tolerance) ? 1 : 0;
     case GeometryQuery::kIsRectangular:

@@ -24,7 +24,7 @@ enum class GeometryQuery : std::uint8_t {
   kAngle,            // angle(maxSlope | azimuth | zenith), degrees
   kBoundaryLength,   // boundaryLength(): edges of one face only
   kIsClosedSurface,  // isClosedSurface(): every edge shared by exactly two faces
-  kIsOriented,       // isOriented(): faces sharing an edge run it in opposite directions
+  kIsOriented,       // isOriented(selector): every face picked by the face selector
   kIsConcave,        // isConcave(): some face is not convex
   kIsPlanar,         // isPlanar(tolerance degrees): every face in one plane
   kIsRectangular,    // isRectangular(tolerance degrees): one face, four right angles
@@ -50,9 +50,15 @@ const GeometryQueryInfo* find_geometry_query(std::string_view name);
 enum class AngleType : std::uint8_t { kMaxSlope, kAzimuth, kZenith };
 std::optional<AngleType> angle_type_named(std::string_view name);
 
-// What the query answers (numbers; tests 1 or 0). `option` is the FaceSelector or AngleType the
-// query takes, `tolerance` its degrees.
+// The option of a face selector argument (area, isOriented): comp's face selectors and `surface`
+// (all) as their FaceSelector; the world.*/object.* frame words (street.* read as object.*) from
+// kFrameOption on. nullopt for any other word (the roof edge classes among them).
+inline constexpr std::uint8_t kFrameOption = 64;
+std::optional<std::uint8_t> face_option_named(std::string_view word);
+
+// What the query answers (numbers; tests 1 or 0). `option` is the face option or AngleType the
+// query takes, `tolerance` its degrees, `object` the object frame's scope (null: the world's).
 double geometry_query(const kernel::Mesh& mesh, const Scope& scope, GeometryQuery query,
-                      std::uint8_t option, double tolerance);
+                      std::uint8_t option, double tolerance, const Scope* object = nullptr);
 
 }  // namespace insula::shape

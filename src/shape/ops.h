@@ -193,8 +193,9 @@ Frame frame_from(std::string_view name);
 kernel::Vec3 convert_between_frames(Frame from, Frame to, bool orientation, kernel::Vec3 v,
                                     const Scope& scope, const Scope* object);
 // CityEngine's comp selectors in a frame: `object.front` ... `object.side` (the lot's scope read
-// as CityEngine's) and `world.north south east west up down side` (world.south is the world
-// frame's +z, CityEngine's "front"). The frame and the face selector a word names, or nullopt.
+// as CityEngine's; `street.*` the same, CityEngine's reading without street data) and
+// `world.north south east west up down side` (world.south is the world frame's +z, CityEngine's
+// "front"). The frame and the face selector a word names, or nullopt.
 struct FrameSelector {
   Frame frame = Frame::kWorld;
   FaceSelector selector = FaceSelector::kAll;

@@ -246,7 +246,8 @@ std::optional<FrameSelector> frame_selector_named(std::string_view word) {
   for (const auto& [name, selector] : kWorldWords) {
     if (name == word) return FrameSelector{Frame::kWorld, selector};
   }
-  if (word.starts_with("object.")) {
+  // street.*: without street data CityEngine reads the initial shape's own sides (object.*).
+  if (word.starts_with("object.") || word.starts_with("street.")) {
     const std::string_view side = word.substr(7);
     if (std::find(kObjectWords.begin(), kObjectWords.end(), side) != kObjectWords.end()) {
       return FrameSelector{Frame::kObject, face_selector_named(side).value()};
@@ -259,6 +260,7 @@ std::vector<std::string> frame_selector_words() {
   std::vector<std::string> words;
   for (std::string_view side : kObjectWords) words.push_back("object." + std::string(side));
   for (const auto& [name, selector] : kWorldWords) words.emplace_back(name);
+  for (std::string_view side : kObjectWords) words.push_back("street." + std::string(side));
   return words;
 }
 

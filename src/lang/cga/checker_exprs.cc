@@ -267,11 +267,7 @@ void Checker::check_geometry_call(const Expr& expr, const shape::GeometryQueryIn
   }
   const std::string word = dotted_name(arg);
   if (query.argument == shape::QueryArgument::kFaceSelector) {
-    if (word.find('.') != std::string::npos) {
-      error("CGA902",
-            "CityEngine function '" + name + "' with selector '" + word + "' is not supported",
-            arg.range);
-    } else if (word != "surface" && !geometry_face_selector(word)) {
+    if (!shape::face_option_named(word)) {
       error("CGA315", "unknown selector '" + word + "' for '" + name + "'", arg.range);
     }
     return;

@@ -698,8 +698,8 @@ class Compiler {
       node.op = static_cast<std::uint8_t>(
           shape::angle_type_named(dotted_name(*arg)).value_or(shape::AngleType::kMaxSlope));
     } else if (arg != nullptr) {
-      node.op = static_cast<std::uint8_t>(
-          geometry_face_selector(dotted_name(*arg)).value_or(shape::FaceSelector::kAll));
+      node.op = shape::face_option_named(dotted_name(*arg))
+                    .value_or(static_cast<std::uint8_t>(shape::FaceSelector::kAll));
     } else {
       node.op = static_cast<std::uint8_t>(shape::FaceSelector::kAll);
     }

@@ -73,7 +73,7 @@ double Engine::geometry(shape::GeometryQuery query, std::uint8_t option, double 
   const State& s = *cur_;
   const Materialized m = materialize(out_.geometry[s.geometry], s.scope.size);
   if (!m.mesh) return 0;
-  return shape::geometry_query(*m.mesh, s.scope, query, option, tolerance);
+  return shape::geometry_query(*m.mesh, s.scope, query, option, tolerance, context_.object);
 }
 
 std::string Engine::occlusion(const std::string& /*what*/, Range /*range*/) {

@@ -14,8 +14,5 @@ namespace insula::lang::cga {
 
 // The query `e` names when it is `geometry.<name>` (a member, or a call's callee); else null.
 const shape::GeometryQueryInfo* geometry_query_of(const Expr& e);
-// The face selector a geometry.area() argument names: comp's face selectors and `surface` (all);
-// the roof edge classes are not face selectors.
-std::optional<shape::FaceSelector> geometry_face_selector(std::string_view word);
 
 }  // namespace insula::lang::cga

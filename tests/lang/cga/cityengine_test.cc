@@ -488,11 +488,13 @@ TEST(CityEngineDialect, GeometryFunctions) {
       "geometry.isConcave()) extrude(6) Mass\n"
       "Mass --> report(\"h\", geometry.height()) report(\"top\", geometry.area(top))\n"
       "  report(\"side\", geometry.area(side)) report(\"edges\", geometry.nEdges())\n"
-      "  report(\"closed\", geometry.isClosedSurface()) report(\"oriented\", "
-      "geometry.isOriented()) comp(f) { top : Top }\n"
+      "  report(\"closed\", geometry.isClosedSurface()) report(\"top area\", "
+      "geometry.area(world.up)) comp(f) { top : Top }\n"
       "Top --> roofGable(45) comp(f) { aslant : Plane }\n"
       "Plane --> report(\"slope\", geometry.angle(maxSlope)) report(\"azimuth\", "
-      "geometry.angle(azimuth)) report(\"planar\", geometry.isPlanar(1))\n");
+      "geometry.angle(azimuth)) report(\"planar\", geometry.isPlanar(1))\n"
+      "  report(\"up\", geometry.isOriented(world.up)) report(\"south\", "
+      "geometry.isOriented(world.south))\n");
   ASSERT_TRUE(p);
   const auto r = derive_all(*p, {rectangle_lot(20, 10), l_lot()});
   ASSERT_TRUE(r[0].ok && r[1].ok) << diagnostics_text(r[0]) << diagnostics_text(r[1]);
@@ -504,12 +506,15 @@ TEST(CityEngineDialect, GeometryFunctions) {
   EXPECT_NEAR(rect.at("side").sum, 6 * 60, 1e-9);
   EXPECT_EQ(rect.at("edges").sum, 12);
   EXPECT_EQ(rect.at("closed").sum, 1);
-  EXPECT_EQ(rect.at("oriented").sum, 1);
+  EXPECT_NEAR(rect.at("top area").sum, 200, 1e-9);
   // A gable on 20 x 10: two planes at 45 degrees, one falling south (180), one north (0).
   EXPECT_EQ(rect.at("slope").count, 2U);
   EXPECT_NEAR(rect.at("slope").sum, 90, 1e-6);
   EXPECT_NEAR(rect.at("azimuth").sum, 180, 1e-6);
   EXPECT_EQ(rect.at("planar").sum, 2);
+  // At 45 degrees a plane's normal is as much up as south: comp's tie rule makes it face up.
+  EXPECT_EQ(rect.at("up").sum, 2);
+  EXPECT_EQ(rect.at("south").sum, 0);
   EXPECT_EQ(r[1].reports.at("rect").sum, 0);
   EXPECT_EQ(r[1].reports.at("concave").sum, 1);
   EXPECT_EQ(check_text("version \"2024.0\"\nLot --> report(\"a\", geometry.area(ridge)) X.\n"),

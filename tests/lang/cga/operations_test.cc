@@ -65,13 +65,14 @@ TEST(CgaOperations, ArgumentsMapOntoRegistryParameters) {
 TEST(CgaOperations, SelectorsAreTheRegistryChoices) {
   using V = std::vector<std::string>;
   EXPECT_EQ(find_operation("comp")->selectors,
-            (V{"front",       "back",         "left",       "right",         "top",
-               "bottom",      "side",         "all",        "vertical",      "horizontal",
-               "aslant",      "nutant",       "border",     "inside",        "eave",
-               "hip",         "valley",       "ridge",      "object.front",  "object.back",
-               "object.left", "object.right", "object.top", "object.bottom", "object.side",
-               "world.north", "world.south",  "world.east", "world.west",    "world.up",
-               "world.down",  "world.side"}));
+            (V{"front",        "back",         "left",          "right",         "top",
+               "bottom",       "side",         "all",           "vertical",      "horizontal",
+               "aslant",       "nutant",       "border",        "inside",        "eave",
+               "hip",          "valley",       "ridge",         "object.front",  "object.back",
+               "object.left",  "object.right", "object.top",    "object.bottom", "object.side",
+               "world.north",  "world.south",  "world.east",    "world.west",    "world.up",
+               "world.down",   "world.side",   "street.front",  "street.back",   "street.left",
+               "street.right", "street.top",   "street.bottom", "street.side"}));
   EXPECT_EQ(find_operation("shapeU")->selectors, (V{"shape", "remainder"}));
   EXPECT_TRUE(find_operation("innerRectangle")->selectors_are_pieces);
   EXPECT_EQ(find_operation("setback")->selectors,
