@@ -508,6 +508,11 @@ void Checker::check_selector_keys(const Item& item, const std::vector<std::strin
       }
     } else {
       const std::optional<Constant> value = fold(key);
+      if (indices && !value && cityengine() && key.kind != ExprKind::kMember) {
+        // CityEngine: an index computed per shape (`comp(f) { n + 1 = Door | ... }`).
+        check_expr(key);
+        continue;
+      }
       if (!indices || !value || value->relative || value->floating || value->value < 0.0 ||
           value->value != std::floor(value->value)) {
         error("CGA315",

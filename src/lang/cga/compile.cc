@@ -910,6 +910,9 @@ class Compiler {
       if (key.kind == ExprKind::kNumber && key.number >= 0 &&
           key.number == std::floor(key.number)) {
         out.index = static_cast<std::int64_t>(key.number);
+      } else if (grammar_.dialect == Dialect::kCityEngine && key.kind != ExprKind::kIdent &&
+                 key.kind != ExprKind::kString && key.kind != ExprKind::kMember) {
+        out.index_expr = expr(key);  // evaluated on the shape the comp splits
       } else if (const std::string* w = word_of(key); w != nullptr && is_selector(info, *w)) {
         out.selector = *w;
       } else if (key.kind == ExprKind::kMember && is_selector(info, dotted_name(key))) {

@@ -199,9 +199,10 @@ struct CItem;
 struct CBranch {
   Range range;
   bool has_key = false;
-  CSize size;               // split sizes
-  std::string selector;     // comp / offset / setback selector ("front", "inside", ...)
-  std::int64_t index = -1;  // comp index key
+  CSize size;                          // split sizes
+  std::string selector;                // comp / offset / setback selector ("front", "inside", ...)
+  std::int64_t index = -1;             // comp index key
+  std::uint32_t index_expr = kNoExpr;  // CityEngine: a comp index computed per shape
   // kCase / kChance: the condition or the percentage; a comp function's branch: its value
   std::uint32_t condition = kNoExpr;
   bool merged = false;  // CityEngine's `sel = ...`: the selected components as one shape

@@ -415,7 +415,8 @@ class Engine final : public EvalContext {
   // ---- comp (seed 004 "Component Split Rule"; CityEngine selectors)
   const CBranch* comp_target(const CItem& c, std::uint32_t piece, std::size_t ordinal,
                              const Mesh* parent, const std::vector<bool>* border,
-                             const std::vector<std::vector<bool>>* selected);
+                             const std::vector<std::vector<bool>>* selected,
+                             const std::vector<std::int64_t>* computed = nullptr);
 
   void comp(const CItem& c, State& st);
 

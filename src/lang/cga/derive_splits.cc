@@ -189,7 +189,8 @@ void Engine::repeat(const CItem& c, State& st, std::size_t axis_index) {
 
 const CBranch* Engine::comp_target(const CItem& c, std::uint32_t piece, std::size_t ordinal,
                                    const Mesh* parent, const std::vector<bool>* border,
-                                   const std::vector<std::vector<bool>>* selected) {
+                                   const std::vector<std::vector<bool>>* selected,
+                                   const std::vector<std::int64_t>* computed) {
   if (!c.indices.empty()) {  // CS(type, i, j, ...){ A | B | ... }: component i -> A, ...
     for (std::size_t j = 0; j < c.indices.size() && j < c.branches.size(); ++j) {
       if (c.indices[j] == piece) return &c.branches[j];
@@ -213,11 +214,15 @@ const CBranch* Engine::comp_target(const CItem& c, std::uint32_t piece, std::siz
       }
       return &b;
     }
+    const std::size_t branch = static_cast<std::size_t>(&b - c.branches.data());
+    if (b.index_expr != kNoExpr) {  // an index computed on the shape (CityEngine)
+      if (computed != nullptr && (*computed)[branch] == piece) return &b;
+      continue;
+    }
     if (b.index >= 0) {
       if (b.index == piece) return &b;
       continue;
     }
-    const std::size_t branch = static_cast<std::size_t>(&b - c.branches.data());
     if (selected != nullptr && !(*selected)[branch].empty()) {  // precomputed: edges, frames
       if (piece < (*selected)[branch].size() && (*selected)[branch][piece]) return &b;
       continue;
@@ -302,6 +307,12 @@ bool Engine::for_each_component(const CItem& c, State& st, std::uint32_t& total,
   } else if (o.parent_mesh && c.comp != CompKind::kFaceEdges) {
     selected = edge_or_vertex_selections(c, *o.parent_mesh);
   }
+  std::vector<std::int64_t> computed(c.branches.size(), -1);
+  for (std::size_t b = 0; b < c.branches.size(); ++b) {
+    if (c.branches[b].index_expr != kNoExpr) {
+      computed[b] = static_cast<std::int64_t>(std::llround(number(c.branches[b].index_expr, st)));
+    }
+  }
   std::size_t ordinal = 0;
   for (std::uint32_t k = 0; k < total; ++k) {
     if (c.comp == CompKind::kSideFaces &&
@@ -309,10 +320,11 @@ bool Engine::for_each_component(const CItem& c, State& st, std::uint32_t& total,
                              kernel::face_normal(*o.parent_mesh, o.pieces[k]))) {
       continue;
     }
-    const CBranch* b = c.comp == CompKind::kFaceEdges
-                           ? face_edge_target(c, o.pieces[k], st, o.children[k].scope.z)
-                           : comp_target(c, o.pieces[k], ordinal++,
-                                         faces ? o.parent_mesh.get() : nullptr, &border, &selected);
+    const CBranch* b =
+        c.comp == CompKind::kFaceEdges
+            ? face_edge_target(c, o.pieces[k], st, o.children[k].scope.z)
+            : comp_target(c, o.pieces[k], ordinal++, faces ? o.parent_mesh.get() : nullptr, &border,
+                          &selected, &computed);
     if (b == nullptr) continue;
     State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, total);
     piece.selector = &b->selector;

@@ -297,9 +297,8 @@ TEST(CityEngineDialect, NegativeExtrusionGoesBehindTheFace) {
 
 // An L of two 8 m wide arms, 20 by 16 m.
 Lot l_lot() {
-  Lot lot;
-  lot.id = "l";
-  lot.polygons.push_back({{{0, 0}, {20, 0}, {20, 8}, {8, 8}, {8, 16}, {0, 16}}, {}});
+  Lot lot = rectangle_lot(20, 16, "l");
+  lot.polygons.front().outer = {{0, 0}, {20, 0}, {20, 8}, {8, 8}, {8, 16}, {0, 16}};
   return lot;
 }
 
@@ -441,6 +440,19 @@ TEST(CityEngineDialect, SetbackStreetSidesAreTheLotsSides) {
   EXPECT_NEAR(r[0].reports.at("front").sum, 60, 1e-6);
   EXPECT_NEAR(r[0].reports.at("back").sum, 60, 1e-6);
   EXPECT_NEAR(r[0].reports.at("rest").sum, 80, 1e-6);
+}
+
+TEST(CityEngineDialect, CompIndexComputedPerShape) {
+  // `n + 1` is evaluated on the shape comp splits: face 3 (of the six) takes the door.
+  auto p = compile_text(
+      "version \"2020.0\"\nattr n = 2\nLot --> extrude(6) comp(f) { n + 1 : Door | all : Wall }\n"
+      "Door --> report(\"door\", comp.index) D.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 8)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(symbol_count(*p, r[0], "Door"), 1U);
+  EXPECT_EQ(symbol_count(*p, r[0], "Wall"), 5U);
+  EXPECT_EQ(r[0].reports.at("door").sum, 3);
 }
 
 TEST(CityEngineDialect, ColourFunctions) {
