@@ -133,7 +133,7 @@ class Compiler {
  public:
   Compiler(const Grammar& grammar, const base::Source& source) : grammar_(grammar) {
     program_ = std::make_shared<Program>();
-    program_->source = std::make_shared<base::Source>(source.name(), source.text());
+    program_->source = std::make_shared<base::Source>(source);  // with its imported parts
   }
 
   base::Result<std::shared_ptr<const Program>> run(const CompileOptions& options) {
@@ -210,6 +210,13 @@ class Compiler {
   void declare_branch_targets(const Branch& b) {
     declare_set_targets(b.items);
     for (const Branch& p : b.pattern) declare_branch_targets(p);
+  }
+
+  // A bare word that is a parameter, a constant, a function or an attribute is that value,
+  // else the word itself (center(xz), texture(woodTex) reading an imported file's constant).
+  bool names_a_value(const std::string& name) {
+    return parameter(name) != kNoExpr || function_id(name, 0) != kNoExpr ||
+           attr_index(name) != kNoExpr;
   }
 
   std::uint32_t attr_index(std::string_view name) const {
@@ -616,6 +623,7 @@ class Compiler {
     switch (item.op) {
       case OpKind::kSplit:
         split_args(item, c, true);
+        c.along_uv = item.along_uv;
         return;
       case OpKind::kRepeat:
         split_args(item, c, false);
@@ -647,6 +655,7 @@ class Compiler {
     const std::string& op = c.info->registry_op;
     if (op == "split") {
       split_args(item, c, false);
+      c.along_uv = item.along_uv;
     } else if (op == "comp") {
       comp_args(item, c);
     } else if (op == "setback") {
@@ -815,7 +824,7 @@ class Compiler {
           std::find(p->choices.begin(), p->choices.end(), lower(dotted)) != p->choices.end()) {
         w = &dotted;
       }
-      const bool word = w != nullptr && (a.kind == ExprKind::kString || attr_index(*w) == kNoExpr);
+      const bool word = w != nullptr && (a.kind == ExprKind::kString || !names_a_value(*w));
       if (!word || p == nullptr ||
           (p->type != shape::ParamType::kString && p->type != shape::ParamType::kEnum)) {
         c.args.push_back(expr(a));

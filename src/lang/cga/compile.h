@@ -226,6 +226,7 @@ struct CItem {
   std::vector<CBranch> branches;
   bool has_block = false;
   bool about_center = false;  // CityEngine's r(scopeCenter, x, y, z)
+  bool along_uv = false;      // CityEngine's split(u | v, ...): along Insula's scope x | y
 };
 
 struct CAlternative {

@@ -94,6 +94,8 @@ struct Geometry {
   double area = 0;                                 // kMesh flat: outline area
   std::shared_ptr<const kernel::Mesh> mesh;        // kMesh
   std::shared_ptr<const kernel::Polygon> outline;  // kMesh flat
+
+  bool flat() const { return kind == Kind::kRect || (kind == Kind::kMesh && outline); }
 };
 
 struct Terminal {

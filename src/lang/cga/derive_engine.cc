@@ -42,16 +42,16 @@ double Engine::shape_attribute(ShapeAttr a) {
   switch (a) {
     case ShapeAttr::kSx:
       return s.scope.size.x;
-    case ShapeAttr::kSy:
-      return s.scope.size.y;
+    case ShapeAttr::kSy:  // a lot's CityEngine y is its normal (State::lot_axes)
+      return lot_axes(s) ? s.scope.size.z : s.scope.size.y;
     case ShapeAttr::kSz:
-      return s.scope.size.z;
+      return lot_axes(s) ? s.scope.size.y : s.scope.size.z;
     case ShapeAttr::kTx:
-      return s.scope.origin.x;
+      return program_.cityengine ? object_position(s).x : s.scope.origin.x;
     case ShapeAttr::kTy:
-      return s.scope.origin.y;
+      return program_.cityengine ? object_position(s).y : s.scope.origin.y;
     case ShapeAttr::kTz:
-      return s.scope.origin.z;
+      return program_.cityengine ? object_position(s).z : s.scope.origin.z;
     case ShapeAttr::kArea: {
       const Geometry& g = out_.geometry[s.geometry];
       if (g.kind == Geometry::Kind::kMesh && g.outline) return g.area;
@@ -67,6 +67,20 @@ double Engine::shape_attribute(ShapeAttr a) {
       return s.total;
   }
   return 0;
+}
+
+// CityEngine's scope.t: the origin in the object's coordinates, which are the initial shape's
+// scope read as CityEngine reads a lot (x, its normal, −y). A lot's CityEngine origin is the
+// corner where its z (Insula's −y) starts.
+Vec3 Engine::object_position(const State& s) const {
+  const auto ce_origin = [](const Scope& scope, bool lot) {
+    return lot ? scope.origin + scope.y * scope.size.y : scope.origin;
+  };
+  const Scope& o = start_state_.scope;
+  const bool flat = o.size.z == 0;
+  const Vec3 d = ce_origin(s.scope, lot_axes(s)) - ce_origin(o, flat);
+  const Vec3 t{dot(d, o.x), dot(d, flat ? o.z : o.y), dot(d, flat ? -o.y : o.z)};
+  return t + Vec3{0, 0, 0};  // no -0 in print()
 }
 
 double Engine::geometry(shape::GeometryQuery query, std::uint8_t option, double tolerance) {
@@ -339,6 +353,7 @@ void Engine::start() {
     st.seed = shape::child_seed(lot_seed_, static_cast<std::uint32_t>(i));
     st.geometry = add_mesh(s.mesh, s.outline, s.scope.size);
     if (track_lineage_) st.lineage = add_lineage(0, st.seed);
+    st.lot_axes = program_.cityengine;
     if (i == 0) start_state_ = st;
     starts_.push_back(st);
   }
@@ -412,6 +427,7 @@ void Engine::process(const Work& w) {
   st.frame = w.frame;
   st.selector = w.selector;
   st.lineage = w.lineage;
+  st.lot_axes = w.lot_axes;
   depth_ = w.depth;
   cur_ = &st;
   frame = frame_of(w.frame);
@@ -560,11 +576,13 @@ void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State&
         st = stack.back();
         stack.pop_back();
         break;
-      case OpCode::kTranslate:
-        st.scope.origin = st.scope.to_world(
-            {number(c.args[0], st), number(c.args[1], st), number(c.args[2], st)});
+      case OpCode::kTranslate: {
+        Vec3 d{number(c.args[0], st), number(c.args[1], st), number(c.args[2], st)};
+        if (lot_axes(st)) d = {d.x, -d.z, d.y};  // CityEngine's (x, normal, −y)
+        st.scope.origin = st.scope.to_world(d);
         touch(st);
         break;
+      }
       case OpCode::kRotate:
         rotate(c, st);
         break;
@@ -657,9 +675,12 @@ void Engine::rotate(const CItem& c, State& st) {
   // As shape::rotate: intrinsic rotations about x, then y, then z, about the scope origin (or
   // its centre: CityEngine's r(scopeCenter, ...)).
   const Vec3 pivot = c.about_center ? st.scope.size * 0.5 : Vec3{};
+  // On a lot CityEngine's y is the normal (Insula's z) and its z is Insula's −y.
+  const bool lot = lot_axes(st);
   if (d.x != 0) st.scope = shape::rotated(st.scope, Axis::kX, d.x, pivot);
-  if (d.y != 0) st.scope = shape::rotated(st.scope, Axis::kY, d.y, pivot);
-  if (d.z != 0) st.scope = shape::rotated(st.scope, Axis::kZ, d.z, pivot);
+  if (d.y != 0) st.scope = shape::rotated(st.scope, lot ? Axis::kZ : Axis::kY, d.y, pivot);
+  if (d.z != 0)
+    st.scope = shape::rotated(st.scope, lot ? Axis::kY : Axis::kZ, lot ? -d.z : d.z, pivot);
   touch(st);
 }
 
@@ -691,8 +712,8 @@ void Engine::color(const CItem& c, State& st) {
 }
 
 void Engine::print(const CItem& c, State& st) {
-  std::string line =
-      program_.source->name() + ":" + std::to_string(program_.span(c.range).line) + ": print:";
+  const base::Span at = program_.span(c.range);  // an imported file's rule prints its own name
+  std::string line = at.file + ":" + std::to_string(at.line) + ": print:";
   // Appended in two steps: GCC 12 reports a false -Wrestrict on `" " + std::string`.
   for (std::uint32_t a : c.args) line.append(" ").append(as_text(eval(a, st)));
   out_.prints.push_back(std::move(line));

@@ -44,6 +44,7 @@ struct Work {
   std::uint16_t depth = 0;
   std::uint16_t level = 0;
   std::uint32_t lineage = 0;  // State::lineage
+  bool lot_axes = false;      // State::lot_axes
 };
 
 // The current shape while a successor runs.
@@ -60,6 +61,10 @@ struct State {
   bool consumed = false;                  // replaced by a symbol, a block operation or ε
   bool modified = false;      // changed since the last `[` (a `]` then leaves it as a leaf)
   std::uint32_t lineage = 0;  // Engine::lineage_ entry (occlusion queries only; 0: untracked)
+  // CityEngine names a lot's axes with y its normal, a face component's with z its normal
+  // (Insula: z for both). True while a flat shape descends from the lot (or from
+  // alignScopeToGeometry(yUp)) and not from comp: Engine::lot_axes() maps CityEngine's y and z.
+  bool lot_axes = false;
 };
 
 // A shape CityEngine's occlusion queries ask about: a label()led shape, or a closed leaf
@@ -125,6 +130,7 @@ class Engine final : public EvalContext {
   Value attribute(std::uint32_t attr, Range range) override;
 
   double shape_attribute(ShapeAttr a) override;
+  Vec3 object_position(const State& s) const;
   std::string comp_selector() override {
     return cur_ != nullptr && cur_->selector != nullptr ? *cur_->selector : std::string();
   }
@@ -240,6 +246,7 @@ class Engine final : public EvalContext {
     w.frame = st.frame;
     w.selector = st.selector;
     w.lineage = st.lineage;
+    w.lot_axes = st.lot_axes;
     w.depth = static_cast<std::uint16_t>(depth);
     w.level = static_cast<std::uint16_t>(program_.levels_of[symbol].front());
     batch_.push_back(w);
@@ -296,8 +303,16 @@ class Engine final : public EvalContext {
     c.total = total;
     c.frame = parent.frame;
     c.selector = parent.selector;
+    c.lot_axes = parent.lot_axes;
     return c;
   }
+
+  // A flat shape whose CityEngine axes are a lot's (State::lot_axes): CityEngine's y is its
+  // normal (Insula's z) and CityEngine's z runs along Insula's −y.
+  bool lot_axes(const State& st) const { return st.lot_axes && out_.geometry[st.geometry].flat(); }
+  // A registry operation's axis arguments (s, center, mirror, translate in the scope frame)
+  // from CityEngine's lot axes to Insula's.
+  static void to_lot_axes(std::string_view op, std::vector<shape::ArgInput>& args);
 
   void warn(const CItem& c, std::string message);
 
@@ -401,6 +416,9 @@ class Engine final : public EvalContext {
                    std::vector<const CBranch*>& targets);
 
   void split(const CItem& c, State& st);
+  // CityEngine's split(z) of a lot, laid out along Insula's y (docs/operations-cityengine.md).
+  static std::vector<std::uint32_t> mirror_pieces(double total, std::vector<SizeSpec>& sizes,
+                                                  std::vector<const CBranch*>& targets);
 
   // BS("XY", 3, 5, 7){ A | B | C } (§VI, docs/cga-language.md "Decisions"): the piece of the
   // first axis that successor `target` got is split along each further axis in turn by the same

@@ -114,8 +114,39 @@ std::vector<shape::ArgInput> Engine::registry_args(const CItem& c, State& st) {
 OpOutcome Engine::run_registry(const CItem& c, State& st) {
   // The operation's shape sits in the one the rule rewrites (center() centres on it).
   std::vector<shape::ArgInput> args = registry_args(c, st);
-  if (program_.cityengine && c.info->registry_op == "extrude") return extrude_behind(st, args);
-  return run_op(st, c.info->registry_op, args, &rule_scope_);
+  const std::string& op = c.info->registry_op;
+  if (!program_.cityengine) return run_op(st, op, args, &rule_scope_);
+  if (op == "extrude") return extrude_behind(st, args);
+  if (lot_axes(st)) to_lot_axes(op, args);
+  OpOutcome o = run_op(st, op, args, &rule_scope_);
+  if (op == "alignScopeToGeometry") {  // yUp names a flat shape's normal y, as on a lot
+    bool y_up = true;
+    for (const shape::ArgInput& a : args) {
+      if (a.name == "up") y_up = std::get<std::string>(a.value) != "zup";
+    }
+    for (State& child : o.children) child.lot_axes = y_up;
+  }
+  return o;
+}
+
+void Engine::to_lot_axes(std::string_view op, std::vector<shape::ArgInput>& args) {
+  const bool moves = op == "translate";
+  const bool sizes = op == "scale" || op == "mirror";
+  for (const shape::ArgInput& a : args) {  // translate in the world or object frame: no change
+    if (moves && a.name == "frame" && std::get<std::string>(a.value) != "scope") return;
+  }
+  for (shape::ArgInput& a : args) {
+    if (op == "center" && a.name == "axes") {
+      std::string& axes = std::get<std::string>(a.value);
+      for (char& ch : axes) ch = ch == 'y' ? 'z' : ch == 'z' ? 'y' : ch;
+      std::sort(axes.begin(), axes.end());
+    } else if ((moves || sizes) && a.name == "y") {
+      a.name = "z";
+    } else if ((moves || sizes) && a.name == "z") {
+      a.name = "y";  // CityEngine's z is Insula's −y: a move along it turns round
+      if (moves) a.value = -std::get<double>(a.value);
+    }
+  }
 }
 
 // CityEngine's extrude(-d) makes the prism behind the face: the registry's extrude of d, moved

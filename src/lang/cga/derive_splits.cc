@@ -30,8 +30,7 @@ std::string Engine::for_each_piece(State& st, Axis axis, std::span<const SizeSpe
   const double total = shape::component(st.scope.size, axis);
   if (!(total > 0)) return "the scope has size 0 along the split axis";
   const Geometry& g = out_.geometry[st.geometry];
-  const bool flat =
-      g.kind == Geometry::Kind::kRect || (g.kind == Geometry::Kind::kMesh && g.outline);
+  const bool flat = g.flat();
   const bool fast = g.kind != Geometry::Kind::kMesh || (flat ? g.rect_like : g.box_like);
   if (!fast) {
     std::vector<shape::ArgInput> a{{"axis", std::string(axis_name(axis))},
@@ -121,20 +120,33 @@ void Engine::split(const CItem& c, State& st) {
     return;
   }
   Lease scratch(*this);
-  const Axis axis = c.axes.front();
+  Axis axis = c.axes.front();
+  bool mirrored = false;
+  if (lot_axes(st) && axis != Axis::kX &&
+      !c.along_uv) {  // CityEngine's y is the lot's normal, its z is −y
+    mirrored = axis == Axis::kZ;
+    axis = mirrored ? Axis::kY : Axis::kZ;
+  }
+  const double total = shape::component(st.scope.size, axis);
   if (!c.sizes.empty()) {  // BS(axis, sizes...){ one successor per size }
     for (std::size_t k = 0; k < c.sizes.size(); ++k) {
       scratch->sizes.push_back(size_of(c.sizes[k], st));
       scratch->targets.push_back(k < c.branches.size() ? &c.branches[k] : nullptr);
     }
   } else {
-    keyed_sizes(c, st, shape::component(st.scope.size, axis), scratch->sizes, scratch->targets);
+    keyed_sizes(c, st, total, scratch->sizes, scratch->targets);
   }
+  std::vector<std::uint32_t> order;
+  if (mirrored && total > 0) order = mirror_pieces(total, scratch->sizes, scratch->targets);
   const std::vector<const CBranch*>& targets = scratch->targets;
   const std::span<const SizeSpec> sizes = scratch->sizes;
   const std::string error =
       for_each_piece(st, axis, sizes, scratch->pieces, [&](State& piece, std::uint32_t entry) {
         if (targets[entry] == nullptr) return;
+        if (!order.empty()) {  // split.index and split.total count CityEngine's pieces
+          piece.index = order[entry];
+          piece.total = order.back();
+        }
         if (c.axes.size() > 1) {
           split_cells(c, piece, sizes, 1, *targets[entry]);
         } else {
@@ -145,6 +157,35 @@ void Engine::split(const CItem& c, State& st) {
     warn(c, error);
     terminal(st, rule_->predecessor);
   }
+}
+
+// The pieces resolve in CityEngine's order (the first at the scope's far side in Insula's y,
+// where CityEngine's z starts) and come back as absolute sizes in Insula's order, a shortfall
+// as a leading gap with no target. Returns each entry's index in CityEngine's order, and last
+// the number of pieces.
+std::vector<std::uint32_t> Engine::mirror_pieces(double total, std::vector<SizeSpec>& sizes,
+                                                 std::vector<const CBranch*>& targets) {
+  const std::vector<shape::Piece> pieces = shape::resolve_sizes(total, sizes);
+  const std::vector<const CBranch*> forward = targets;
+  sizes.clear();
+  targets.clear();
+  std::vector<std::uint32_t> order;
+  double cursor = 0;
+  for (std::size_t k = pieces.size(); k-- > 0;) {
+    const shape::Piece& p = pieces[k];
+    const double start = total - p.start - p.size;
+    if (start > cursor + 1e-9) {
+      sizes.push_back({start - cursor, SizeMode::kAbsolute});
+      targets.push_back(nullptr);
+      order.push_back(0);
+    }
+    sizes.push_back({p.size, SizeMode::kAbsolute});
+    targets.push_back(forward[p.entry]);
+    order.push_back(static_cast<std::uint32_t>(k));
+    cursor = start + p.size;
+  }
+  order.push_back(static_cast<std::uint32_t>(pieces.size()));
+  return order;
 }
 
 void Engine::split_cells(const CItem& c, State& st, std::span<const SizeSpec> sizes,
@@ -328,6 +369,7 @@ bool Engine::for_each_component(const CItem& c, State& st, std::uint32_t& total,
     if (b == nullptr) continue;
     State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, total);
     piece.selector = &b->selector;
+    piece.lot_axes = false;  // CityEngine's components have their normal on z, as Insula's
     visit(piece, *b, k);
   }
   return true;

@@ -356,10 +356,51 @@ TEST(CityEngineDialect, WorldAndObjectSelectors) {
   EXPECT_EQ(reports.at("up").count, 1U);
   EXPECT_NEAR(reports.at("up").sum, 80, 1e-9);
   EXPECT_EQ(reports.at("west").count, 1U);
-  EXPECT_NEAR(reports.at("west").sum, -8, 1e-9);
+  // scope.tx is in the object's coordinates: x runs north from the lot's CityEngine origin,
+  // and the west face starts at its north end.
+  EXPECT_NEAR(reports.at("west").sum, 10, 1e-9);
   EXPECT_EQ(reports.at("object front").count, 1U);
   EXPECT_NEAR(reports.at("object front").sum, 0, 1e-9);
   EXPECT_EQ(reports.at("side").count, 4U);
+}
+
+TEST(CityEngineDialect, ALotHasItsNormalOnY) {
+  // CityEngine's lot: scope y is the normal (sy = 0), z runs from the far side of Insula's y;
+  // t, s and split name those axes; a façade from comp keeps y up its face.
+  auto p = compile_text(
+      "version \"2019.0\"\n"
+      "Lot --> report(\"lot sy\", scope.sy) report(\"lot sz\", scope.sz)\n"
+      "  split(z) { 4 : Front | ~1 : Back }\n"
+      "Front --> report(\"front tz\", scope.tz) t(0, 2, 0) s('0.5, 0, '1) Raised\n"
+      "Raised --> report(\"raised ty\", scope.ty) report(\"raised sx\", scope.sx)\n"
+      "  extrude(3) comp(f) { front : Face }\n"
+      "Face --> report(\"face sy\", scope.sy) split(y) { 1 : Band. | ~1 : Rest. }\n"
+      "Back --> report(\"back tz\", scope.tz) report(\"back sz\", scope.sz)\n");
+  ASSERT_TRUE(p);
+  DeriveOptions options;
+  options.keep_terminals = true;
+  const auto r = derive_all(*p, {rectangle_lot(20, 10)}, options);
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  const auto& reports = r[0].reports;
+  EXPECT_EQ(reports.at("lot sy").sum, 0);
+  EXPECT_EQ(reports.at("lot sz").sum, 10);
+  EXPECT_EQ(reports.at("front tz").sum, 0);  // the first piece starts where z starts
+  EXPECT_EQ(reports.at("back tz").sum, 4);
+  EXPECT_EQ(reports.at("back sz").sum, 6);
+  EXPECT_EQ(reports.at("raised ty").sum, 2);  // t's y is up
+  EXPECT_EQ(reports.at("raised sx").sum, 10);
+  EXPECT_EQ(reports.at("face sy").sum, 3);  // a façade's y runs up it
+  std::size_t bands = 0;
+  for (std::size_t i = 0; i < r[0].terminals_store.size(); ++i) {
+    const Terminal& t = r[0].terminals_store[i];
+    if (t.symbol != p->symbol_ids.at("Band")) continue;
+    ++bands;
+    // The front piece lies at Insula's far y (CityEngine's z = -y starts there) and was raised
+    // by 2 m: the band is the lowest metre of its 3 m wall.
+    EXPECT_NEAR(t.scope.origin.z, 2, 1e-9);
+    EXPECT_NEAR(t.scope.size.y, 1, 1e-9);
+  }
+  EXPECT_EQ(bands, 1U);
 }
 
 TEST(CityEngineDialect, ChainInsideBrackets) {
