@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180;
 
-constexpr std::array<GeometryQueryInfo, 13> kQueries = {{
+constexpr std::array<GeometryQueryInfo, 14> kQueries = {{
     {"area", GeometryQuery::kArea, QueryArgument::kFaceSelector, true,
      "surface area of the faces a comp selector picks (default: all)"},
     {"volume", GeometryQuery::kVolume, QueryArgument::kNone, false,
@@ -36,6 +36,8 @@ constexpr std::array<GeometryQueryInfo, 13> kQueries = {{
      "from north) or zenith (90 - maxSlope), in degrees"},
     {"boundaryLength", GeometryQuery::kBoundaryLength, QueryArgument::kNone, false,
      "length of the edges that belong to one face only"},
+    {"nHoles", GeometryQuery::kHoles, QueryArgument::kNone, false,
+     "number of holes in the faces (a courtyard in a lot is one)"},
     {"isClosedSurface", GeometryQuery::kIsClosedSurface, QueryArgument::kNone, false,
      "true when every edge is shared by exactly two faces"},
     {"isOriented", GeometryQuery::kIsOriented, QueryArgument::kFaceSelector, false,
@@ -208,8 +210,11 @@ std::optional<std::uint8_t> face_option_named(std::string_view word) {
 }
 
 double geometry_query(const Mesh& mesh, const Scope& scope, GeometryQuery query,
-                      std::uint8_t option, double tolerance, const Scope* object) {
+                      std::uint8_t option, double tolerance, const Scope* object,
+                      const kernel::Polygon* outline) {
   switch (query) {
+    case GeometryQuery::kHoles:
+      return outline != nullptr ? static_cast<double>(outline->holes.size()) : 0;
     case GeometryQuery::kArea: {
       const std::vector<bool> picked = picked_faces(mesh, option, scope, object);
       double sum = 0;

@@ -23,6 +23,7 @@ enum class GeometryQuery : std::uint8_t {
   kHeight,           // height(): extent along the world's vertical
   kAngle,            // angle(maxSlope | azimuth | zenith), degrees
   kBoundaryLength,   // boundaryLength(): edges of one face only
+  kHoles,            // nHoles(): holes in the faces (a flat shape's outline's)
   kIsClosedSurface,  // isClosedSurface(): every edge shared by exactly two faces
   kIsOriented,       // isOriented(selector): every face picked by the face selector
   kIsConcave,        // isConcave(): some face is not convex
@@ -57,8 +58,10 @@ inline constexpr std::uint8_t kFrameOption = 64;
 std::optional<std::uint8_t> face_option_named(std::string_view word);
 
 // What the query answers (numbers; tests 1 or 0). `option` is the face option or AngleType the
-// query takes, `tolerance` its degrees, `object` the object frame's scope (null: the world's).
+// query takes, `tolerance` its degrees, `object` the object frame's scope (null: the world's),
+// `outline` a flat shape's outline (its holes are the faces' holes: the mesh has none).
 double geometry_query(const kernel::Mesh& mesh, const Scope& scope, GeometryQuery query,
-                      std::uint8_t option, double tolerance, const Scope* object = nullptr);
+                      std::uint8_t option, double tolerance, const Scope* object = nullptr,
+                      const kernel::Polygon* outline = nullptr);
 
 }  // namespace insula::shape

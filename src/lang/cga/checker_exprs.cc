@@ -222,6 +222,10 @@ void Checker::check_member(const Expr& expr) {
       return;
     }
   }
+  if (cityengine() && object.kind == ExprKind::kIdent && object.text == "geometry") {
+    error("CGA321", "unknown function 'geometry." + expr.text + "'", expr.range);
+    return;
+  }
   if (object.kind != ExprKind::kIdent || !is_shape_object(object.text)) {
     if (object.kind == ExprKind::kIdent && !attributes_.count(object.text) &&
         !known_.count(object.text)) {

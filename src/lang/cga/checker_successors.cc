@@ -497,6 +497,11 @@ void Checker::check_selector_keys(const Item& item, const std::vector<std::strin
         name = name.substr(7);
       }
       const bool known = std::find(selectors.begin(), selectors.end(), name) != selectors.end();
+      if (!known && indices && cityengine() &&
+          (attributes_.count(name) || known_.count(name) || function(name, 0) != nullptr)) {
+        check_expr(key);  // CityEngine: a constant or attribute holding the index
+        continue;
+      }
       if (!known) {
         std::string list;
         for (const std::string& s : selectors) list += (list.empty() ? "" : ", ") + s;
@@ -511,6 +516,18 @@ void Checker::check_selector_keys(const Item& item, const std::vector<std::strin
       if (indices && !value && cityengine() && key.kind != ExprKind::kMember) {
         // CityEngine: an index computed per shape (`comp(f) { n + 1 = Door | ... }`).
         check_expr(key);
+        continue;
+      }
+      if (indices && value && cityengine() && !value->relative && !value->floating &&
+          value->value >= 0.0 && value->value != std::floor(value->value)) {
+        warning("CGA323",
+                "component index " + number_text(value->value) +
+                    " is not a whole number: read as " + number_text(std::round(value->value)),
+                key.range);
+        name = number_text(std::round(value->value));
+        if (!seen.insert(name).second) {
+          error("CGA315", "selector '" + name + "' appears twice", key.range);
+        }
         continue;
       }
       if (!indices || !value || value->relative || value->floating || value->value < 0.0 ||

@@ -109,6 +109,7 @@ constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
     {"listFromArray", Function::kListFromArray},
     {"readStringTable", Function::kReadStringTable},
     {"readFloatTable", Function::kReadFloatTable},
+    {"print", Function::kPrint},
 };
 
 // An expression that names a word: a string literal or a bare identifier (`split(x)`).
@@ -919,8 +920,10 @@ class Compiler {
       if (key.kind == ExprKind::kNumber && key.number >= 0 &&
           key.number == std::floor(key.number)) {
         out.index = static_cast<std::int64_t>(key.number);
-      } else if (grammar_.dialect == Dialect::kCityEngine && key.kind != ExprKind::kIdent &&
-                 key.kind != ExprKind::kString && key.kind != ExprKind::kMember) {
+      } else if (grammar_.dialect == Dialect::kCityEngine &&
+                 ((key.kind != ExprKind::kIdent && key.kind != ExprKind::kString &&
+                   key.kind != ExprKind::kMember) ||
+                  (!is_selector(info, dotted_name(key)) && names_a_value(dotted_name(key))))) {
         out.index_expr = expr(key);  // evaluated on the shape the comp splits
       } else if (const std::string* w = word_of(key); w != nullptr && is_selector(info, *w)) {
         out.selector = *w;

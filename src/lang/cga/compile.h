@@ -144,6 +144,7 @@ enum class Function : std::uint8_t {
   kListFromArray,
   kReadStringTable,
   kReadFloatTable,
+  kPrint,  // CityEngine's print() as a function: prints its argument and returns it
   kRange,  // the colon operator `a:b`, `a:s:b` (no name: only inside `[ ]`)
 };
 

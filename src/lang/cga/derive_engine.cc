@@ -87,7 +87,8 @@ double Engine::geometry(shape::GeometryQuery query, std::uint8_t option, double 
   const State& s = *cur_;
   const Materialized m = materialize(out_.geometry[s.geometry], s.scope.size);
   if (!m.mesh) return 0;
-  return shape::geometry_query(*m.mesh, s.scope, query, option, tolerance, context_.object);
+  return shape::geometry_query(*m.mesh, s.scope, query, option, tolerance, context_.object,
+                               m.outline.get());
 }
 
 std::string Engine::occlusion(const std::string& /*what*/, Range /*range*/) {
@@ -712,10 +713,19 @@ void Engine::color(const CItem& c, State& st) {
 }
 
 void Engine::print(const CItem& c, State& st) {
-  const base::Span at = program_.span(c.range);  // an imported file's rule prints its own name
+  std::string text;
+  for (std::size_t k = 0; k < c.args.size(); ++k) {
+    if (k > 0) text += ' ';
+    text += as_text(eval(c.args[k], st));
+  }
+  print(c.range, text);
+}
+
+void Engine::print(Range range, const std::string& text) {
+  const base::Span at = program_.span(range);  // an imported file's rule prints its own name
   std::string line = at.file + ":" + std::to_string(at.line) + ": print:";
   // Appended in two steps: GCC 12 reports a false -Wrestrict on `" " + std::string`.
-  for (std::uint32_t a : c.args) line.append(" ").append(as_text(eval(a, st)));
+  if (!text.empty()) line.append(" ").append(text);
   out_.prints.push_back(std::move(line));
 }
 

@@ -144,6 +144,7 @@ class Engine final : public EvalContext {
 
   Value comp_function(std::uint32_t index, Range range) override;
 
+  void print(Range range, const std::string& text) override;
   void warning(Range range, std::string message) override {
     ++warnings_[{range.begin, std::move(message)}];
   }

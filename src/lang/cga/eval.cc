@@ -156,7 +156,7 @@ Value apply_binary(BinaryOp op, const Value& a, const Value& b, Range range) {
 
 bool is_random(Function f) {
   return f == Function::kRand || f == Function::kP || f == Function::kListRandom ||
-         is_file_function(f);
+         f == Function::kPrint || is_file_function(f);
 }
 
 bool is_file_function(Function f) {
@@ -495,6 +495,10 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
       }
       if (f == Function::kP) return context.rng().unit() < as_number(args[0], n.range);
       if (is_file_function(f)) return context.file_function(f, args, n.range);
+      if (f == Function::kPrint) {
+        context.print(n.range, as_text(args[0]));
+        return args[0];
+      }
       if (f == Function::kListRandom) {
         const std::vector<std::string> items = list_items(as_text(args[0]));
         if (items.empty()) return std::string();

@@ -92,6 +92,8 @@ class EvalContext {
   // CityEngine's comp function `comp(fe){ sel : value | ... }` (Program::comp_functions[index]):
   // one value per component of the current shape.
   virtual Value comp_function(std::uint32_t index, Range range) = 0;
+  // print() used as a function: the text goes where the print operation's lines go.
+  virtual void print(Range range, const std::string& text) = 0;
   // A run-time warning at `range` (an array index out of range).
   virtual void warning(Range range, std::string message) = 0;
 

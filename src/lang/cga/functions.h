@@ -97,6 +97,7 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"listFromArray", 1, 1, "v", "an array as a string list"},
     {"readStringTable", 1, 1, "s", "a CSV file (asset search) as a 2-D string[]"},
     {"readFloatTable", 1, 1, "s", "a CSV file as a 2-D float[] (NaN where a cell is no number)"},
+    {"print", 1, 1, "v", "prints the value to stderr, as the print operation does, and returns it"},
 };
 
 // Shape attributes: `Shape.sx`, `Scope.sx` (the paper writes Shape., CityEngine scope.; both

@@ -579,6 +579,33 @@ TEST(CityEngineDialect, GeometryFunctions) {
             "t.cga:2:21: error[CGA312]: 'geometry.isPlanar' expects 1 argument, found 0\n");
 }
 
+TEST(CityEngineDialect, HolesPrintAsAFunctionAndIndexConstants) {
+  // geometry.nHoles counts a courtyard; print() in an expression prints and returns its value;
+  // a comp key that names a constant is that index (comp(f) { bottomFace = ... }).
+  auto p = compile_text(
+      "version \"2019.0\"\nconst bottomFace = 0\n"
+      "Lot --> report(\"holes\", print(geometry.nHoles)) extrude(3)\n"
+      "  comp(f) { bottomFace = Bottom | 1.2 : One | all = Other }\n");
+  ASSERT_TRUE(p);
+  Lot court;
+  court.id = "court";
+  court.polygons.push_back(
+      {{{0, 0}, {20, 0}, {20, 20}, {0, 20}}, {{{5, 5}, {5, 15}, {15, 15}, {15, 5}}}});
+  const auto r = derive_all(*p, {court, rectangle_lot(10, 8)});
+  ASSERT_TRUE(r[0].ok && r[1].ok) << diagnostics_text(r[0]) << diagnostics_text(r[1]);
+  EXPECT_EQ(r[0].reports.at("holes").sum, 1);
+  EXPECT_EQ(r[1].reports.at("holes").sum, 0);
+  ASSERT_EQ(r[0].prints.size(), 1U);
+  EXPECT_EQ(r[0].prints[0], "test.cga:3: print: 1");
+  EXPECT_EQ(symbol_count(*p, r[1], "Bottom"), 1U);
+  EXPECT_EQ(symbol_count(*p, r[1], "One"), 1U);
+  EXPECT_EQ(symbol_count(*p, r[1], "Other"), 4U);
+  EXPECT_EQ(check_text("version \"2019.0\"\nLot --> extrude(3) comp(f) { 1.2 : A. }\n"),
+            "t.cga:2:30: warning[CGA323]: component index 1.2 is not a whole number: read as 1\n");
+  EXPECT_EQ(check_text("version \"2019.0\"\nLot --> report(\"n\", geometry.nHole) X.\n"),
+            "t.cga:2:21: error[CGA321]: unknown function 'geometry.nHole'\n");
+}
+
 // ---- imports
 
 std::map<std::string, std::string> files() {
