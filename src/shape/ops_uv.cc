@@ -63,6 +63,10 @@ double extent_along(std::span<const Vec3> points, Vec3 axis) {
 
 // A texture size as CityEngine reads it: meters, 'f of `extent`, or ~w: the size nearest w that
 // fits `extent` a whole number of times (at least once).
+double offset_size(SizeSpec size, double extent) {
+  return size.mode == SizeMode::kRelative ? size.value * extent : size.value;
+}
+
 double texture_size(SizeSpec size, double extent) {
   switch (size.mode) {
     case SizeMode::kAbsolute:
@@ -79,8 +83,8 @@ double texture_size(SizeSpec size, double extent) {
 }
 
 OpResult setup_projection(ShapeTree& tree, ShapeId id, int set, std::string_view axes,
-                          SizeSpec width, SizeSpec height, double width_offset,
-                          double height_offset, double uw_factor) {
+                          SizeSpec width, SizeSpec height, SizeSpec width_offset,
+                          SizeSpec height_offset, double uw_factor) {
   const Shape& s = tree[id];
   const bool world = axes.starts_with("world.");
   const char cu = axes[axes.size() - 2];
@@ -91,17 +95,22 @@ OpResult setup_projection(ShapeTree& tree, ShapeId id, int set, std::string_view
   const Vec3 av = f.axis[index(cv)];
   const Vec3 aw = f.axis[3 - index(cu) - index(cv)];
   const std::vector<Vec3> points = world_points(s);
-  const double w = texture_size(width, extent_along(points, au));
-  const double h = texture_size(height, extent_along(points, av));
+  const double extent_u = extent_along(points, au);
+  const double extent_v = extent_along(points, av);
+  const double w = texture_size(width, extent_u);
+  const double h = texture_size(height, extent_v);
+  // CityEngine's offsets may be relative too ('f: f of the extent along u or v).
+  const double u_offset = offset_size(width_offset, extent_u);
+  const double v_offset = offset_size(height_offset, extent_v);
   if (!std::isfinite(w) || !std::isfinite(h) || w == 0 || h == 0) {
     return OpResult::failure("texture width and height must be finite and not 0");
   }
   // u = (a_u . (p - o) + uwFactor a_w . (p - o) - widthOffset) / width, v alike.
   UvMap map;
   map.du = (au + aw * uw_factor) * (1 / w);
-  map.u0 = -(dot(map.du, f.origin) + width_offset / w);
+  map.u0 = -(dot(map.du, f.origin) + u_offset / w);
   map.dv = av * (1 / h);
-  map.v0 = -(dot(map.dv, f.origin) + height_offset / h);
+  map.v0 = -(dot(map.dv, f.origin) + v_offset / h);
   return with_state(tree, id, uv_projection_attribute(set), Value{encode(map)});
 }
 
@@ -198,6 +207,16 @@ ParamDecl texture_size_param(std::string name, std::string doc) {
   return {std::move(name), ParamType::kSize, std::move(doc), std::nullopt, {}, {}, {}};
 }
 
+ParamDecl offset_param(std::string name, std::string doc) {
+  return {std::move(name),
+          ParamType::kSize,
+          std::move(doc),
+          ArgValue{SizeSpec{0, SizeMode::kAbsolute}},
+          {},
+          {},
+          {}};
+}
+
 int set_of(const Arguments& a) {
   return static_cast<int>(a.integer("uvSet"));
 }
@@ -241,13 +260,13 @@ std::vector<Operation> uv_operations() {
                            "meters per repeat along u; 'f: f of the shape's extent along u; ~w: "
                            "about w, fitting the extent a whole number of times; < 0 mirrors"),
         texture_size_param("textureHeight", "the same along v"),
-        number_param("widthOffset", "u offset in meters", 0.0),
-        number_param("heightOffset", "v offset in meters", 0.0),
+        offset_param("widthOffset", "u offset in meters; 'f: f of the shape's extent along u"),
+        offset_param("heightOffset", "the same along v"),
         number_param("uwFactor", "how much the third axis adds to u (0: none)", 0.0)},
        [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
          return setup_projection(t, id, set_of(a), a.string("axes"), a.size("textureWidth"),
-                                 a.size("textureHeight"), a.number("widthOffset"),
-                                 a.number("heightOffset"), a.number("uwFactor"));
+                                 a.size("textureHeight"), a.size("widthOffset"),
+                                 a.size("heightOffset"), a.number("uwFactor"));
        },
        state});
   ops.push_back({"projectUV",

@@ -88,6 +88,25 @@ TEST(UvOps, RelativeAndFloatingSizes) {
                {0, 0}, {3, 1});
 }
 
+TEST(UvOps, OffsetsInMetersOrRelative) {
+  // 2 m per repeat along u with an offset of 1 m, or of '0.1 of the 10 m extent: u starts at
+  // -0.5 either way; the v offset of '0.5 of 4 m at 1 m per repeat moves v by -2.
+  for (const SizeSpec offset :
+       {SizeSpec{1, SizeMode::kAbsolute}, SizeSpec{0.1, SizeMode::kRelative}}) {
+    ShapeTree tree;
+    const ShapeId f = facade(tree);
+    const ShapeId set = run(tree, f, "setupProjection",
+                            {{"", std::int64_t{0}},
+                             {"", std::string("scope.xy")},
+                             {"", SizeSpec{2, SizeMode::kAbsolute}},
+                             {"", SizeSpec{1, SizeMode::kAbsolute}},
+                             {"", offset},
+                             {"", SizeSpec{0.5, SizeMode::kRelative}}});
+    expect_range(range_of(tree, run(tree, set, "projectUV", {{"", std::int64_t{0}}})), {-0.5, -2},
+                 {4.5, 2});
+  }
+}
+
 TEST(UvOps, LotScopeXzAndWorldAxes) {
   ShapeTree tree;
   const RootResult lot = tree.create_root(Polygon{{{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {}});
