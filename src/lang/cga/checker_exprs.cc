@@ -391,7 +391,12 @@ void Checker::check_call(const Expr& expr) {
   } else {
     error("CGA321", "only functions and Shape.occ can be called", callee.range);
   }
-  for (std::size_t i = 1; i < expr.operands.size(); ++i) check_expr(*expr.operands[i]);
+  const FunctionInfo* info = callee.kind == ExprKind::kIdent ? find_function(callee.text) : nullptr;
+  for (std::size_t i = 1; i < expr.operands.size(); ++i) {
+    const bool word = info != nullptr && signature_accepts(info->signature, count) &&
+                      signature_letter(info->signature, count, i - 1) == 'w';
+    check_expr(*expr.operands[i], word ? ExprRole::kBareWord : ExprRole::kValue);
+  }
 }
 
 }  // namespace insula::lang::cga::detail

@@ -618,6 +618,8 @@ void Checker::check_registry_ranges(const Item& item, const OperationInfo& info)
         value->value < 0) {
       continue;
     }
+    // CityEngine's s() mirrors on a negative size (derive_registry.cc, scale_mirrored).
+    if (cityengine() && info.registry_op == "scale" && value->value < 0) continue;
     const bool low = param->min && value->value < *param->min;
     const bool high = param->max && value->value > *param->max;
     if (!low && !high) continue;

@@ -464,8 +464,16 @@ class Compiler {
         relation && program_->cityengine && argc <= 2) {
       return occlusion_query(*relation, e);
     }
+    const FunctionInfo* known =
+        callee.kind == ExprKind::kIdent ? find_function(callee.text) : nullptr;
     std::vector<std::uint32_t> kids;
-    for (std::size_t i = 1; i < e.operands.size(); ++i) kids.push_back(expr(*e.operands[i]));
+    for (std::size_t i = 1; i < e.operands.size(); ++i) {
+      const Expr& a = *e.operands[i];
+      const bool word = known != nullptr && signature_accepts(known->signature, argc) &&
+                        signature_letter(known->signature, argc, i - 1) == 'w' &&
+                        a.kind == ExprKind::kIdent && !names_a_value(a.text);
+      kids.push_back(word ? constant(a.text, a.range) : expr(a));
+    }
     if (callee.kind == ExprKind::kMember && callee.text == "occ" &&
         callee.operands[0]->kind == ExprKind::kIdent && is_shape_object(callee.operands[0]->text)) {
       if (argc != 1) {
@@ -657,6 +665,9 @@ class Compiler {
     if (op == "split") {
       split_args(item, c, false);
       c.along_uv = item.along_uv;
+    } else if (op == "splitArea" && item.has_block) {
+      split_args(item, c, false);
+      c.by_area = true;
     } else if (op == "comp") {
       comp_args(item, c);
     } else if (op == "setback") {

@@ -228,6 +228,7 @@ struct CItem {
   bool has_block = false;
   bool about_center = false;  // CityEngine's r(scopeCenter, x, y, z)
   bool along_uv = false;      // CityEngine's split(u | v, ...): along Insula's scope x | y
+  bool by_area = false;       // CityEngine's splitArea(axis){ area : ... }: sizes are areas
 };
 
 struct CAlternative {

@@ -204,8 +204,11 @@ Value Engine::file_function(Function f, const std::vector<Value>& args, Range ra
     case Function::kReadStringTable:
     case Function::kReadFloatTable: {
       const std::optional<std::string> text = files->read_text(first, error);
-      if (!text) throw EvalError{range, error};
-      return read_table(*text, f == Function::kReadFloatTable);
+      if (text) return read_table(*text, f == Function::kReadFloatTable);
+      if (files->exists(first)) throw EvalError{range, error};
+      // A missing file loses detail, as a missing asset does: a warning, and the model is made.
+      warning(range, "'" + first + "' not found: an empty table");
+      return read_table(std::string(), f == Function::kReadFloatTable);
     }
     case Function::kFileExists:
       return files->exists(first);
@@ -226,8 +229,10 @@ Value Engine::file_function(Function f, const std::vector<Value>& args, Range ra
       number = files->image_info(first, as_text(args[1]), error);
       break;
   }
-  if (!number) throw EvalError{range, error};
-  return *number;
+  if (number) return *number;
+  if (files->exists(first)) throw EvalError{range, error};
+  warning(range, "'" + first + "' not found: 0");
+  return 0.0;
 }
 
 namespace {

@@ -357,6 +357,7 @@ class Engine final : public EvalContext {
   std::vector<shape::ArgInput> registry_args(const CItem& c, State& st);
   OpOutcome run_registry(const CItem& c, State& st);
   OpOutcome extrude_behind(const State& st, std::vector<shape::ArgInput>& args);
+  OpOutcome scale_mirrored(const State& st, std::vector<shape::ArgInput>& args);
 
   // Runs a replacing operation; returns false when it forked (the rest of the successor already
   // ran once per result) or removed the shape.
@@ -417,6 +418,7 @@ class Engine final : public EvalContext {
                    std::vector<const CBranch*>& targets);
 
   void split(const CItem& c, State& st);
+  void split_area(const CItem& c, State& st);
   // CityEngine's split(z) of a lot, laid out along Insula's y (docs/operations-cityengine.md).
   static std::vector<std::uint32_t> mirror_pieces(double total, std::vector<SizeSpec>& sizes,
                                                   std::vector<const CBranch*>& targets);
@@ -452,7 +454,8 @@ class Engine final : public EvalContext {
   void setback(const CItem& c, State& st);
   // setback(float[]): a depth per edge of the outline; each branch takes the edges its selector
   // picks among those earlier branches left, all strips cut from the shape as it was.
-  void setback_per_edge(const CItem& c, State& st, const Array& depths);
+  // Strips per edge: each edge's depth from `depths` (setback(float[])), else `uniform`.
+  void setback_per_edge(const CItem& c, State& st, const Array* depths, double uniform);
   // Whether CityEngine's edge selector `selector` (front, street.left, all, ...) picks an edge
   // of `st` (flat) with outward direction `outward` (world).
   bool edge_selected(const std::string& selector, const State& st, Vec3 outward) const;

@@ -118,6 +118,7 @@ OpOutcome Engine::run_registry(const CItem& c, State& st) {
   if (!program_.cityengine) return run_op(st, op, args, &rule_scope_);
   if (op == "extrude") return extrude_behind(st, args);
   if (lot_axes(st)) to_lot_axes(op, args);
+  if (op == "scale") return scale_mirrored(st, args);
   OpOutcome o = run_op(st, op, args, &rule_scope_);
   if (op == "alignScopeToGeometry") {  // yUp names a flat shape's normal y, as on a lot
     bool y_up = true;
@@ -127,6 +128,39 @@ OpOutcome Engine::run_registry(const CItem& c, State& st) {
     for (State& child : o.children) child.lot_axes = y_up;
   }
   return o;
+}
+
+// CityEngine's s() with a negative size mirrors the shape along that axis: the registry's scale
+// to the size's magnitude, its mirror, and the scope moved back by that size, so the geometry
+// lies on the negative side of the scope's origin as in CityEngine.
+OpOutcome Engine::scale_mirrored(const State& st, std::vector<shape::ArgInput>& args) {
+  std::vector<shape::ArgInput> mirror;
+  Vec3 back{};
+  for (shape::ArgInput& a : args) {
+    auto* size = std::get_if<SizeSpec>(&a.value);
+    const bool negative = size != nullptr && size->value < 0;
+    if (negative) size->value = -size->value;
+    mirror.push_back({a.name, negative});
+  }
+  OpOutcome o = run_op(st, "scale", args, &rule_scope_);
+  if (!o.error.empty() || o.children.size() != 1) return o;
+  bool any = false;
+  for (const shape::ArgInput& m : mirror) any = any || std::get<bool>(m.value);
+  if (!any) return o;
+  const State scaled = o.children.front();
+  OpOutcome m = run_op(scaled, "mirror", mirror, &rule_scope_);
+  if (!m.error.empty() || m.children.size() != 1) return m;
+  for (const shape::ArgInput& a : mirror) {
+    if (!std::get<bool>(a.value)) continue;
+    const double s = a.name == "x"   ? scaled.scope.size.x
+                     : a.name == "y" ? scaled.scope.size.y
+                                     : scaled.scope.size.z;
+    (a.name == "x" ? back.x : a.name == "y" ? back.y : back.z) = -s;
+  }
+  State& child = m.children.front();
+  child.scope.origin = child.scope.to_world(back);
+  m.warning = o.warning.empty() ? m.warning : o.warning;
+  return m;
 }
 
 void Engine::to_lot_axes(std::string_view op, std::vector<shape::ArgInput>& args) {

@@ -3,6 +3,7 @@
 // Rule"; CityEngine selectors) and setback. Boxes, rectangles and pure scopes split by scope math
 // (shape/ops_fast.h, the cores of shape::split); every other geometry through the registry.
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 
@@ -119,6 +120,10 @@ void Engine::split(const CItem& c, State& st) {
     repeat(c, st, 0);
     return;
   }
+  if (c.by_area) {
+    split_area(c, st);
+    return;
+  }
   Lease scratch(*this);
   Axis axis = c.axes.front();
   bool mirrored = false;
@@ -156,6 +161,32 @@ void Engine::split(const CItem& c, State& st) {
   if (!error.empty()) {
     warn(c, error);
     terminal(st, rule_->predecessor);
+  }
+}
+
+// CityEngine's splitArea(axis){ area : A | { ~a : B }* }: the keys are areas of the flat shape
+// (repeats fit into its area), cut by the registry's splitArea.
+void Engine::split_area(const CItem& c, State& st) {
+  Lease scratch(*this);
+  Axis axis = c.axes.front();
+  if (lot_axes(st) && axis != Axis::kX) axis = axis == Axis::kZ ? Axis::kY : Axis::kZ;
+  const Geometry& g = out_.geometry[st.geometry];
+  const double area =
+      g.kind == Geometry::Kind::kMesh && g.outline ? g.area : st.scope.size.x * st.scope.size.y;
+  keyed_sizes(c, st, area, scratch->sizes, scratch->targets);
+  const std::vector<shape::ArgInput> args{
+      {"axis", std::string(axis_name(axis))},
+      {"sizes", std::vector<SizeSpec>(scratch->sizes.begin(), scratch->sizes.end())}};
+  const OpOutcome o = run_op(st, "splitArea", args);
+  if (!check(c, o)) {
+    terminal(st, rule_->predecessor);
+    return;
+  }
+  const auto n = static_cast<std::uint32_t>(o.children.size());
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const CBranch* target = scratch->targets[o.pieces[k]];
+    State piece = child_of(st, o.children[k].scope, o.children[k].geometry, k, n);
+    if (target != nullptr) run_branch(*target, piece);
   }
 }
 
@@ -442,6 +473,16 @@ Value Engine::comp_function(std::uint32_t index, Range range) {
 }
 
 bool Engine::edge_selected(const std::string& selector, const State& st, Vec3 outward) const {
+  if (selector.starts_with("world.")) {
+    // The compass side the edge faces most: x east, y north (world.side: any of them).
+    const std::string side = selector.substr(6);
+    if (side == "side") return std::fabs(outward.z) < 1 - 1e-9;
+    const bool along_x = std::fabs(outward.x) >= std::fabs(outward.y);
+    return (side == "east" && along_x && outward.x > 0) ||
+           (side == "west" && along_x && outward.x < 0) ||
+           (side == "north" && !along_x && outward.y > 0) ||
+           (side == "south" && !along_x && outward.y < 0);
+  }
   std::string side = selector;
   const Scope* axes = &st.scope;
   // street.* falls back to object.* without the lot's streetWidth (CityEngine does the same
@@ -465,11 +506,19 @@ void Engine::setback(const CItem& c, State& st) {
   // The distance once, on the shape the rule rewrites; each strip adds its edges.
   const Value distance = eval(c.args.front(), st);
   if (const ArrayPtr* depths = std::get_if<ArrayPtr>(&distance)) {
-    setback_per_edge(c, st, **depths);
+    setback_per_edge(c, st, depths->get(), 0);
+    return;
+  }
+  const double depth = as_number(distance, program_.nodes[c.args.front()].range);
+  // world.* and object.* keys pick edges by their world or object direction: edge by edge.
+  if (std::any_of(c.branches.begin(), c.branches.end(), [](const CBranch& b) {
+        return b.selector.starts_with("world.") || b.selector.starts_with("object.");
+      })) {
+    setback_per_edge(c, st, nullptr, depth);
     return;
   }
   std::vector<shape::ArgInput> args = c.info->fixed;
-  args.push_back({"distance", as_number(distance, program_.nodes[c.args.front()].range)});
+  args.push_back({"distance", depth});
   args.push_back({"edges", std::string()});
   const CBranch* remainder = nullptr;
   for (const CBranch& b : c.branches) {
@@ -505,11 +554,11 @@ void Engine::setback(const CItem& c, State& st) {
   run_branch(*remainder, piece);
 }
 
-void Engine::setback_per_edge(const CItem& c, State& st, const Array& depths) {
-  if (depths.type != ElementType::kFloat) {
+void Engine::setback_per_edge(const CItem& c, State& st, const Array* depths, double uniform) {
+  if (depths != nullptr && depths->type != ElementType::kFloat) {
     throw EvalError{program_.nodes[c.args.front()].range,
                     "setback() takes a distance or a float[], got a " +
-                        std::string(array_type_name(depths.type))};
+                        std::string(array_type_name(depths->type))};
   }
   const Geometry& g = out_.geometry[st.geometry];
   const Materialized m = materialize(g, st.scope.size);
@@ -538,13 +587,16 @@ void Engine::setback_per_edge(const CItem& c, State& st, const Array& depths) {
       continue;
     }
     std::vector<SizeSpec> mine(outward.size(), SizeSpec{0, SizeMode::kAbsolute});
-    for (std::size_t i = 0; i < outward.size() && i < depths.items.size(); ++i) {
+    const std::size_t edges =
+        depths != nullptr ? std::min(outward.size(), depths->items.size()) : outward.size();
+    for (std::size_t i = 0; i < edges; ++i) {
       const bool picked = !b.has_key || b.selector == "all" ||
                           (b.index >= 0 ? b.index == static_cast<std::int64_t>(i)
                                         : edge_selected(b.selector, st, outward[i]));
       if (!picked || taken[i]) continue;
       taken[i] = true;
-      mine[i].value = all[i].value = std::get<double>(depths.items[i]);
+      mine[i].value = all[i].value =
+          depths != nullptr ? std::get<double>(depths->items[i]) : uniform;
     }
     OpOutcome o = run_op(st, "setbackEdges", {{"depths", mine}, {"part", std::string("shape")}});
     if (!check(c, o)) continue;

@@ -479,7 +479,14 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
       // and / or short-circuit (a condition guarding a division stays safe).
       if (op == BinaryOp::kAnd && !as_bool(a, n.range)) return false;
       if (op == BinaryOp::kOr && as_bool(a, n.range)) return true;
-      return apply_binary(op, a, evaluate(program, n.kids[1], context), n.range);
+      const Value b = evaluate(program, n.kids[1], context);
+      // CityEngine divides as IEEE floats: x / 0 is an infinity and 0 / 0 NaN, no error (the
+      // operations that take them then say so); seed 004 grammars keep the error.
+      if (program.cityengine && op == BinaryOp::kDiv && std::holds_alternative<double>(a) &&
+          std::holds_alternative<double>(b) && std::get<double>(b) == 0) {
+        return std::get<double>(a) / std::get<double>(b);
+      }
+      return apply_binary(op, a, b, n.range);
     }
     case ECode::kFunction: {
       const auto f = static_cast<Function>(n.a);

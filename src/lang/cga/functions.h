@@ -15,7 +15,9 @@ struct FunctionInfo {
   std::string_view name;
   std::uint8_t min_args;
   std::uint8_t max_args;
-  std::string_view signature;  // letters as OperationInfo::signature (operations.h)
+  // letters as OperationInfo::signature (operations.h); `w` a word: a string, or a bare name
+  // that is no attribute or constant (CityEngine's assetInfo(a, tx))
+  std::string_view signature;
   std::string_view doc;
 };
 
@@ -78,8 +80,8 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"fileExists", 1, 1, "s", "whether the file exists (asset search order)"},
     {"fileSearch", 1, 1, "s", "the matching files of the workspace as a list"},
     {"fileRandom", 1, 1, "s", "one matching file, drawn from the shape's seeded generator"},
-    {"assetInfo", 2, 2, "ss", "size (sx sy sz) or lowest corner (tx ty tz) of an asset"},
-    {"imageInfo", 2, 2, "ss", "width (sx) or height (sy) of an image in pixels"},
+    {"assetInfo", 2, 2, "sw", "size (sx sy sz) or lowest corner (tx ty tz) of an asset"},
+    {"imageInfo", 2, 2, "sw", "width (sx) or height (sy) of an image in pixels"},
     // CityEngine's arrays (float[], bool[], string[]; docs/cga-cityengine.md, "Arrays").
     {"size", 1, 1, "v", "number of elements of an array"},
     {"nRows", 1, 1, "v", "number of rows of an array"},

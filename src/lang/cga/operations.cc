@@ -66,6 +66,10 @@ constexpr Alias kAliases[] = {
      false, "split along an axis; keys are sizes, `{ ... }*` repeats a pattern"},
     {"comp", OpKind::kGeneric, "comp", "type:c", "", 1, BlockUse::kRequired, KeyUse::kSelector,
      "select", false, ""},
+    {"splitArea", OpKind::kGeneric, "splitArea", "axis:a sizes:z*", "", 1, BlockUse::kOptional,
+     KeyUse::kSize, "", false,
+     "split a flat shape into pieces of the given areas: CityEngine's keyed block "
+     "`splitArea(x){ 100 : A | ~1 : B }` (repeats too), or the sizes as arguments"},
     {"t", OpKind::kGeneric, "translate", "x y z", "", 3, BlockUse::kNone, KeyUse::kNone, "", false,
      ""},
     {"s", OpKind::kGeneric, "scale", "x y z", "", 3, BlockUse::kNone, KeyUse::kNone, "", false, ""},
@@ -84,8 +88,10 @@ constexpr Alias kAliases[] = {
     {"offset", OpKind::kGeneric, "offset", "distance part ...", "", 1, BlockUse::kOptional,
      KeyUse::kSelector, "pieces:part", false, ""},
     {"setback", OpKind::kGeneric, "setback", "distance ... !edges", "", 1, BlockUse::kRequired,
-     KeyUse::kSelector, "edges street remainder", false,
-     "cut a strip along the selected edges; key remainder for what is left"},
+     KeyUse::kSelector,
+     "edges street remainder world.north world.south world.east world.west world.side "
+     "object.front object.back object.left object.right object.side",
+     false, "cut a strip along the selected edges; key remainder for what is left"},
     {"shapeL", OpKind::kGeneric, "shapeL", "frontWidth leftWidth", "", 2, BlockUse::kOptional,
      KeyUse::kSelector, "pieces:part", false, ""},
     {"shapeU", OpKind::kGeneric, "shapeU", "frontWidth rightWidth leftWidth", "", 3,

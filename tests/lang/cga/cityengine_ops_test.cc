@@ -2,6 +2,7 @@
 // derivation per operation, asserting the terminals' scopes and areas.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -54,6 +55,27 @@ double flat_area(const LotResult& r, const Terminal& t) {
   if (g.kind == Geometry::Kind::kMesh && g.outline) return kernel::area(*g.outline);
   return t.scope.size.x * t.scope.size.y;
 }
+
+// No file is there: every file function fails as for a missing file.
+struct NoFiles final : FileQueries {
+  bool exists(const std::string&) const override { return false; }
+  std::string search(const std::string&, std::string&) const override { return ""; }
+  std::string random(const std::string&, double, std::string&) const override { return ""; }
+  std::optional<double> asset_info(const std::string& name, const std::string&,
+                                   std::string& error) const override {
+    error = "asset '" + name + "' not found";
+    return std::nullopt;
+  }
+  std::optional<double> image_info(const std::string& name, const std::string&,
+                                   std::string& error) const override {
+    error = "image '" + name + "' not found";
+    return std::nullopt;
+  }
+  std::optional<std::string> read_text(const std::string& path, std::string& error) const override {
+    error = "file '" + path + "' not found";
+    return std::nullopt;
+  }
+};
 
 TEST(CityEngineOps, AlignScopeToAxesTurnsTheMassToTheWorld) {
   const LotResult r = derive_one("Lot --> extrude(10) alignScopeToAxes() A\n", turned_lot(20, 5));
@@ -221,6 +243,74 @@ TEST(CityEngineOps, SplitAreaInItsPositionalForm) {
   ASSERT_EQ(r.terminals_store.size(), 2U);
   EXPECT_NEAR(flat_area(r, r.terminals_store[0]), 10, 1e-9);
   EXPECT_NEAR(flat_area(r, r.terminals_store[1]), 30, 1e-9);
+}
+
+TEST(CityEngineOps, SplitAreaWithKeyedAreasAndRepeats) {
+  // 200 m²: 50 m² first, then pieces of about 40 m² fitting the 150 m² left.
+  const LotResult r =
+      derive_one("version \"2019.0\"\nLot --> splitArea(x) { 50 : A | { ~40 : B }* }\n",
+                 rectangle_lot(20, 10));
+  ASSERT_GE(r.terminals_store.size(), 3U);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[0]), 50, 1e-6);
+  double rest = 0;
+  for (std::size_t i = 1; i < r.terminals_store.size(); ++i) {
+    rest += flat_area(r, r.terminals_store[i]);
+    EXPECT_NEAR(flat_area(r, r.terminals_store[i]), flat_area(r, r.terminals_store[1]), 1e-6);
+  }
+  EXPECT_NEAR(rest, 150, 1e-6);
+}
+
+TEST(CityEngineOps, NegativeScaleMirrorsBehindTheOrigin) {
+  // s('1, '1, -2) on a 4 m mass: 2 m deep, on the negative side of the scope's z.
+  const LotResult r =
+      derive_one("version \"2019.0\"\nLot --> extrude(4) s('1, '1, -2) A\n", rectangle_lot(20, 10));
+  ASSERT_EQ(r.terminals_store.size(), 1U);
+  const Terminal& t = r.terminals_store[0];
+  EXPECT_NEAR(t.scope.size.z, 2, 1e-9);
+  const kernel::Mesh& mesh = *r.geometry[t.geometry].mesh;
+  double lo = 1e9;
+  double hi = -1e9;
+  for (const Vec3& p : mesh.positions()) {
+    const Vec3 w = t.scope.to_world(p);
+    lo = std::min(lo, w.y);
+    hi = std::max(hi, w.y);
+  }
+  // The mass's z runs south from y = 10: mirrored, the slab lies north of it, y in [10, 12].
+  EXPECT_NEAR(lo, 10, 1e-9);
+  EXPECT_NEAR(hi, 12, 1e-9);
+  EXPECT_NEAR(std::fabs(kernel::volume(mesh)), 160, 1e-9);
+}
+
+TEST(CityEngineOps, SetbackByWorldDirection) {
+  // A 3 m strip along the south edge only (a lot whose first edge runs east, so south is its
+  // front), and what is left.
+  const LotResult r =
+      derive_one("version \"2019.0\"\nLot --> setback(3) { world.south : S | remainder : R }\n",
+                 rectangle_lot(20, 10));
+  ASSERT_EQ(r.terminals_store.size(), 2U);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[0]), 60, 1e-6);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[1]), 140, 1e-6);
+}
+
+TEST(CityEngineOps, MissingFilesAndDivisionByZeroDoNotStopTheModel) {
+  // assetInfo(a, tx) takes tx as a word; a missing asset is 0 with a warning, and CityEngine's
+  // IEEE division makes 0 / 0 NaN (isnan) rather than an error.
+  auto p = compile_text(
+      "version \"2019.0\"\n"
+      "Lot --> report(\"x\", assetInfo(\"tree.obj\", tx)) report(\"nan\", isnan(0 / scope.sy))\n"
+      "  extrude(3) A.\n");
+  ASSERT_TRUE(p);
+  NoFiles files;
+  DeriveOptions options;
+  options.files = &files;
+  const auto r = derive_all(*p, {rectangle_lot(10, 10)}, options);
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(r[0].reports.at("x").sum, 0);
+  EXPECT_EQ(r[0].reports.at("nan").sum, 1);
+  EXPECT_EQ(symbol_count(*p, r[0], "A"), 1U);
+  EXPECT_NE(diagnostics_text(r[0]).find("warning[CGA604]: 'tree.obj' not found: 0"),
+            std::string::npos)
+      << diagnostics_text(r[0]);
 }
 
 TEST(CityEngineOps, ConvexifyAndTrim) {
