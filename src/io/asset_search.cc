@@ -101,6 +101,15 @@ AssetSearch::AssetSearch(const fs::path& rule_file, const fs::path& workspace) {
   } else {
     workspace_ = project_ ? project_->parent_path() : folder_.parent_path();
   }
+  // An unpacked .rpk keeps the workspace files its rules name in `.ws/` at its root.
+  std::error_code ec;
+  for (fs::path at = folder_; !at.empty(); at = at.parent_path()) {
+    if (fs::is_directory(at / ".ws", ec)) {
+      package_workspace_ = at / ".ws";
+      break;
+    }
+    if (at == at.parent_path()) break;
+  }
 }
 
 std::vector<std::pair<fs::path, fs::path>> AssetSearch::places(std::string_view name) const {
@@ -124,6 +133,7 @@ std::vector<std::pair<fs::path, fs::path>> AssetSearch::places(std::string_view 
       for (auto it = std::next(rest.begin()); it != rest.end(); ++it) tail /= *it;
       add(*project_, tail);
     }
+    if (package_workspace_) add(*package_workspace_, rest);
     return out;
   }
   const fs::path relative(generic);

@@ -1,7 +1,8 @@
 // Where a rule file's asset, texture and import names are found, as CityEngine finds them
 // (docs/assets.md, "Search order"). A CityEngine project is a folder holding `assets/` and
 // `rules/` (or CityEngine's `.project` file); the workspace holds the projects, and a name that
-// starts with '/' is a workspace path ("/MyProject/assets/door.obj", "/ESRI.lib/rules/x.cga").
+// starts with '/' is a workspace path ("/MyProject/assets/door.obj", "/ESRI.lib/rules/x.cga"),
+// looked for in the workspace and then in an unpacked rule package's `.ws/` folder.
 // Reads the file system only: no caching, safe to share between threads.
 #pragma once
 
@@ -47,6 +48,8 @@ class AssetSearch {
   std::filesystem::path folder_;
   std::optional<std::filesystem::path> project_;
   std::filesystem::path workspace_;
+  // A rule package's (.rpk) copy of the workspace files it uses: `.ws/` next to its `rules/`.
+  std::optional<std::filesystem::path> package_workspace_;
 };
 
 // `name` with backslashes turned into '/'.

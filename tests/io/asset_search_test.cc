@@ -60,6 +60,18 @@ TEST_F(AssetSearchTest, SearchOrderRuleFolderAssetsRulesProject) {
   EXPECT_EQ(search.resolve("d/x.obj"), std::nullopt);
 }
 
+TEST_F(AssetSearchTest, AnUnpackedRulePackagesWorkspaceCopy) {
+  // An .rpk keeps the workspace files its rules name under .ws/ at its root.
+  const fs::path package = ws_ / "pkg.rpk!";
+  const fs::path rule = package / "rules" / "typology" / "main.cga";
+  touch(rule);
+  touch(package / ".ws" / "ESRI.lib" / "rules" / "Plants" / "Loader.cga");
+  const AssetSearch search(rule);
+  EXPECT_EQ(search.resolve("/ESRI.lib/rules/Plants/Loader.cga"),
+            package / ".ws" / "ESRI.lib" / "rules" / "Plants" / "Loader.cga");
+  EXPECT_EQ(search.resolve("/ESRI.lib/rules/Plants/Other.cga"), std::nullopt);
+}
+
 TEST_F(AssetSearchTest, BackslashesAndDotDot) {
   touch(ws_ / "City" / "assets" / "facade" / "win.obj");
   const AssetSearch search(rule_);

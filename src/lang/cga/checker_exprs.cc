@@ -194,6 +194,7 @@ void Checker::check_identifier(const Expr& expr, ExprRole role) {
     return;
   }
   if (known_.count(expr.text) || role == ExprRole::kBareWord) return;
+  if (cityengine() && expr.text == "seedian") return;  // the shape's seed (compile.cc)
   if (is_shape_object(expr.text)) {
     error("CGA322", "'" + expr.text + "' needs a member, e.g. '" + expr.text + ".sx'", expr.range);
     return;

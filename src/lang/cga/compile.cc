@@ -255,6 +255,10 @@ class Compiler {
         if (const std::uint32_t p = parameter(e.text); p != kNoExpr) {
           return add(ENode{ECode::kParam, 0, p, e.range, {}});
         }
+        if (program_->cityengine && e.text == "seedian" && !names_a_value(e.text)) {
+          return add(ENode{
+              ECode::kShapeAttr, 0, static_cast<std::uint32_t>(ShapeAttr::kSeedian), e.range, {}});
+        }
         if (const std::uint32_t fn = function_id(e.text, 0); fn != kNoExpr) {
           return add(ENode{ECode::kCall, 0, fn, e.range, {}});
         }

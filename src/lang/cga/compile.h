@@ -68,6 +68,7 @@ enum class ShapeAttr : std::uint8_t {
   kDepth,
   kIndex,
   kTotal,
+  kSeedian,  // CityEngine's `seedian`: the shape's random seed as a number
 };
 
 enum class Function : std::uint8_t {

@@ -65,6 +65,8 @@ double Engine::shape_attribute(ShapeAttr a) {
       return s.index;
     case ShapeAttr::kTotal:
       return s.total;
+    case ShapeAttr::kSeedian:  // a whole number as CityEngine's seeds are (its values differ)
+      return static_cast<double>(s.seed & 0x7fffffffU);
   }
   return 0;
 }

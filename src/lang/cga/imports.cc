@@ -249,12 +249,21 @@ class Resolver {
   static void merge(Grammar& into, Grammar& imported) {
     append(into.attrs, imported.attrs);
     append(into.functions, imported.functions);
+    // A rule the importing file writes under the imported name (`volume.Slab --> ...`) takes
+    // the place of the imported file's own (CityEngine's rule override through an import).
+    std::set<std::string> own;
+    for (const PrioritySet& set : into.sets) {
+      for (const Rule& rule : set.rules) own.insert(rule.predecessor);
+    }
     if (into.sets.empty()) {
       PrioritySet set;
       set.implicit = true;
       into.sets.push_back(std::move(set));
     }
-    for (PrioritySet& set : imported.sets) append(into.sets.front().rules, set.rules);
+    for (PrioritySet& set : imported.sets) {
+      std::erase_if(set.rules, [&](const Rule& r) { return own.count(r.predecessor) > 0; });
+      append(into.sets.front().rules, set.rules);
+    }
   }
 
   base::Source& source_;

@@ -99,11 +99,37 @@ bool Parser::ce_starts_top_level() const {
     return true;
   }
   if (!at(Tok::kIdent)) return false;
-  if (is_arrow(peek(1).kind) || at(Tok::kAssign, 1)) return true;
-  if (!at(Tok::kLParen, 1)) return false;
-  const std::size_t after = after_parens(pos_ + 1);
+  const std::size_t name_end = after_dotted_name(pos_);
+  if (name_end >= tokens_.size()) return false;
+  const Tok next = tokens_[name_end].kind;
+  const bool dotted = name_end > pos_ + 1;  // an imported rule's name: a rule, never a function
+  if (is_arrow(next) || (!dotted && next == Tok::kAssign)) return true;
+  if (next != Tok::kLParen) return false;
+  const std::size_t after = after_parens(name_end);
   return after < tokens_.size() &&
-         (is_arrow(tokens_[after].kind) || tokens_[after].kind == Tok::kAssign);
+         (is_arrow(tokens_[after].kind) || (!dotted && tokens_[after].kind == Tok::kAssign));
+}
+
+bool Parser::is_rule_name_ahead() const {
+  const std::size_t end = after_dotted_name(pos_ - 1);
+  if (end >= tokens_.size()) return false;
+  if (is_arrow(tokens_[end].kind)) return true;
+  if (tokens_[end].kind != Tok::kLParen) return false;
+  const std::size_t after = after_parens(end);
+  return after < tokens_.size() && is_arrow(tokens_[after].kind);
+}
+
+// The index of the token after the name starting at `from`: `Name` or an imported rule's
+// `alias.Name` (CityEngine: a rule of the importing file given to an imported file's name).
+std::size_t Parser::after_dotted_name(std::size_t from) const {
+  // The parts touch (`a.B`): `Wall.` ending a line before `a.B -->` is a terminal, not a name.
+  std::size_t i = from + 1;
+  while (i + 1 < tokens_.size() && tokens_[i].kind == Tok::kDot &&
+         tokens_[i + 1].kind == Tok::kIdent && tokens_[i].range.begin == tokens_[i - 1].range.end &&
+         tokens_[i + 1].range.begin == tokens_[i].range.end) {
+    i += 2;
+  }
+  return i;
 }
 
 // The index of the token after the parenthesis group opening at `from` (tokens_.size() when it
@@ -237,8 +263,14 @@ void Parser::ce_attr(std::vector<Annotation> annotations, bool is_const) {
 }
 
 void Parser::ce_rule_or_function(std::vector<Annotation> annotations) {
-  const Token& name = advance();
+  Token name = advance();
   const std::uint32_t begin = name.range.begin;
+  while (at(Tok::kDot) && at(Tok::kIdent, 1) && is_rule_name_ahead()) {
+    advance();
+    const Token& part = advance();
+    name.text += "." + part.text;
+    name.range.end = part.range.end;
+  }
   std::vector<std::string> params;
   if (at(Tok::kLParen)) params = ce_params();
   if (is_arrow(peek().kind)) {

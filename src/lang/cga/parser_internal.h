@@ -160,6 +160,9 @@ class Parser {
   bool ce_starts_top_level() const;
   bool ce_starts_item() const;
   std::size_t after_parens(std::size_t from) const;
+  std::size_t after_dotted_name(std::size_t from) const;
+  // At `.Name` of a dotted rule name `alias.Name -->` (or `alias.Name(a) -->`).
+  bool is_rule_name_ahead() const;
   std::vector<Annotation> ce_annotations();
   void ce_version();
   void ce_import(std::vector<Annotation> annotations);
@@ -250,6 +253,11 @@ class Parser {
         break;
     }
     advance();
+    // CityEngine accepts `NIL.` (a terminal's dot after NIL; Esri's own massing rules).
+    if (cityengine() && item.kind == ItemKind::kEmpty && at(Tok::kDot) &&
+        peek().range.begin == token.range.end) {
+      advance();
+    }
     return item;
   }
 

@@ -614,6 +614,9 @@ std::map<std::string, std::string> files() {
        "attr height = 2\nattr depth = 0.3\nconst frame = 0.1\n"
        "Window --> s('1, height, depth) Glass.\n"},
       {"lib/loop.cga", "import again : \"loop.cga\"\nX --> Y.\n"},
+      {"lib/volume.cga",
+       "version \"2019.0\"\nMass --> extrude(3) comp(f) { top : Slab | side : Wall. }\n"
+       "Slab --> NIL.\n"},
   };
 }
 
@@ -673,6 +676,25 @@ TEST(CityEngineImports, ErrorsPointIntoTheRightFile) {
   EXPECT_EQ(base::render(g.diagnostics().front()),
             "lib/loop.cga:1:16: error[CGA341]: \"loop.cga\" imports itself (through "
             "lib/loop.cga)");
+}
+
+TEST(CityEngineImports, TheImporterGivesAnImportedFilesRule) {
+  // `volume.Slab -->` in the importing file takes the place of volume.cga's own Slab (Esri's
+  // envelope2002 gives its facade rules to the volume file so); `NIL.` is NIL.
+  base::Source source("main.cga",
+                      "version \"2019.0\"\nimport volume : \"volume.cga\"\n"
+                      "Lot --> volume.Mass\n"
+                      "volume.Slab -->\n  case seedian >= 0 : Roof.\n  else : NIL.\n");
+  base::Result<Grammar> g = load(source);
+  ASSERT_TRUE(g.ok()) << base::render(g.diagnostics().front());
+  const CheckResult checked = check(g.value(), source);
+  ASSERT_TRUE(checked.ok) << base::render(checked.diagnostics.front());
+  auto program = compile(g.value(), source, {});
+  ASSERT_TRUE(program.ok()) << base::render(program.diagnostics().front());
+  const LotResult r = derive_lot(*program.value(), rectangle_lot(6, 4), 0, {});
+  ASSERT_TRUE(r.ok) << testing::diagnostics_text(r);
+  EXPECT_EQ(symbol_count(*program.value(), r, "Roof"), 1U);
+  EXPECT_EQ(symbol_count(*program.value(), r, "Wall"), 4U);  // a terminal keeps its bare name
 }
 
 // ---- files as they are found
