@@ -215,6 +215,15 @@ void Checker::check_member(const Expr& expr) {
     return;
   }
   if (cityengine() && function(dotted_name(expr), 0) != nullptr) return;  // imported constant
+  if (cityengine() && dotted_name(expr).starts_with("initialShape.origin.p") &&
+      dotted_name(expr).size() == 22) {
+    return;  // the lot's origin (compile.cc)
+  }
+  if (cityengine() &&
+      (dotted_name(expr) == "material.color.r" || dotted_name(expr) == "material.color.g" ||
+       dotted_name(expr) == "material.color.b")) {
+    return;  // the shape's colour (compile.cc)
+  }
   if (cityengine() && geometry_query_of(expr) != nullptr) return;
   if (cityengine() && object.kind == ExprKind::kIdent) {
     const std::string name = object.text + "." + expr.text;

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 namespace insula::lang::cga {
 
@@ -77,6 +78,49 @@ std::array<double, 3> hsv_of_rgb(double r, double g, double b) {
   }
   if (h < 0) h += 360;
   return {h, max > 0 ? d / max : 0, max};
+}
+
+}  // namespace insula::lang::cga
+
+namespace insula::lang::cga {
+
+namespace {
+
+struct Ramp {
+  std::string_view name;
+  std::array<std::array<double, 3>, 3> stops;  // colours at 0, 0.5 and 1
+};
+
+// Stops chosen to read as the names say: sequential ramps through their middle colour,
+// diverging ones (x to blue) through a light grey.
+constexpr std::array<Ramp, 6> kRamps = {{
+    {"whiteToBlack", {{{1, 1, 1}, {0.5, 0.5, 0.5}, {0, 0, 0}}}},
+    {"greenToRed", {{{0, 0.7, 0}, {1, 0.85, 0}, {0.85, 0, 0}}}},
+    {"yellowToRed", {{{1, 1, 0.6}, {1, 0.6, 0.1}, {0.8, 0, 0}}}},
+    {"redToBlue", {{{0.8, 0.1, 0.1}, {0.95, 0.95, 0.95}, {0.1, 0.3, 0.8}}}},
+    {"orangeToBlue", {{{0.95, 0.5, 0.05}, {0.95, 0.95, 0.95}, {0.1, 0.3, 0.8}}}},
+    {"brownToBlue", {{{0.55, 0.3, 0.05}, {0.95, 0.95, 0.95}, {0.1, 0.3, 0.8}}}},
+}};
+
+}  // namespace
+
+std::optional<std::string> color_ramp(const std::string& name, double value) {
+  const double t = std::isfinite(value) ? std::clamp(value, 0.0, 1.0) : 0.0;
+  if (name == "spectrum") {  // violet-blue at 0 through green and yellow to red at 1
+    const auto [r, g, b] = rgb_of_hsv(270 * (1 - t), 1, 1);
+    return hex_color(r, g, b, 1, false);
+  }
+  for (const Ramp& ramp : kRamps) {
+    if (ramp.name != name) continue;
+    const std::size_t k = t < 0.5 ? 0 : 1;
+    const double u = t < 0.5 ? t * 2 : (t - 0.5) * 2;
+    std::array<double, 3> c{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      c[i] = ramp.stops[k][i] + (ramp.stops[k + 1][i] - ramp.stops[k][i]) * u;
+    }
+    return hex_color(c[0], c[1], c[2], 1, false);
+  }
+  return std::nullopt;
 }
 
 }  // namespace insula::lang::cga

@@ -18,5 +18,9 @@ std::optional<std::array<double, 4>> rgba_of_hex(const std::string& s);
 // HSV (h in degrees, s and v in [0, 1]) to RGB and back (h in [0, 360)).
 std::array<double, 3> rgb_of_hsv(double h, double s, double v);
 std::array<double, 3> hsv_of_rgb(double r, double g, double b);
+// CityEngine's colorRamp(gradient, value): "#rrggbb" at `value` (clamped to [0, 1]) along the
+// named ramp; nullopt for an unknown name. The ramps' stops are Insula's (CityEngine's are
+// shown only as pictures): two or three colours, linear in RGB; spectrum runs the hue.
+std::optional<std::string> color_ramp(const std::string& name, double value);
 
 }  // namespace insula::lang::cga

@@ -31,10 +31,18 @@ std::string Program::describe(const CRule& rule) const {
 namespace {
 
 constexpr std::pair<std::string_view, ShapeAttr> kShapeAttrs[] = {
-    {"sx", ShapeAttr::kSx},        {"sy", ShapeAttr::kSy},       {"sz", ShapeAttr::kSz},
-    {"tx", ShapeAttr::kTx},        {"ty", ShapeAttr::kTy},       {"tz", ShapeAttr::kTz},
-    {"elevation", ShapeAttr::kTz}, {"area", ShapeAttr::kArea},   {"volume", ShapeAttr::kVolume},
-    {"depth", ShapeAttr::kDepth},  {"index", ShapeAttr::kIndex}, {"total", ShapeAttr::kTotal},
+    {"sx", ShapeAttr::kSx},
+    {"sy", ShapeAttr::kSy},
+    {"sz", ShapeAttr::kSz},
+    {"tx", ShapeAttr::kTx},
+    {"ty", ShapeAttr::kTy},
+    {"tz", ShapeAttr::kTz},
+    {"elevation", ShapeAttr::kElevation},
+    {"area", ShapeAttr::kArea},
+    {"volume", ShapeAttr::kVolume},
+    {"depth", ShapeAttr::kDepth},
+    {"index", ShapeAttr::kIndex},
+    {"total", ShapeAttr::kTotal},
 };
 
 constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
@@ -71,6 +79,12 @@ constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
     {"getSuffix", Function::kGetSuffix},
     {"colorRGBToHex", Function::kColorRGBToHex},
     {"colorHSVToHex", Function::kColorHSVToHex},
+    {"colorRamp", Function::kColorRamp},
+    {"getRange", Function::kGetRange},
+    {"fileName", Function::kFileName},
+    {"fileBasename", Function::kFileBasename},
+    {"fileDirectory", Function::kFileDirectory},
+    {"fileExtension", Function::kFileExtension},
     {"colorHexToR", Function::kColorHexToR},
     {"colorHexToG", Function::kColorHexToG},
     {"colorHexToB", Function::kColorHexToB},
@@ -128,6 +142,20 @@ std::string set_target(const Expr& e) {
 std::string lower(std::string text) {
   for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return text;
+}
+
+std::optional<ShapeAttr> initial_shape_part(const std::string& name) {
+  if (name == "initialShape.origin.px") return ShapeAttr::kInitialPx;
+  if (name == "initialShape.origin.py") return ShapeAttr::kInitialPy;
+  if (name == "initialShape.origin.pz") return ShapeAttr::kInitialPz;
+  return std::nullopt;
+}
+
+std::optional<Function> material_color_part(const std::string& name) {
+  if (name == "material.color.r") return Function::kColorHexToR;
+  if (name == "material.color.g") return Function::kColorHexToG;
+  if (name == "material.color.b") return Function::kColorHexToB;
+  return std::nullopt;
 }
 
 class Compiler {
@@ -434,6 +462,14 @@ class Compiler {
     }
     if (const shape::GeometryQueryInfo* query = geometry_query_of(e)) {
       return geometry(*query, nullptr, e.range);
+    }
+    if (const std::optional<ShapeAttr> part = initial_shape_part(dotted_name(e))) {
+      return add(ENode{ECode::kShapeAttr, 0, static_cast<std::uint32_t>(*part), e.range, {}});
+    }
+    if (const std::optional<Function> part = material_color_part(dotted_name(e))) {
+      // CityEngine's material.color.r/g/b: a component of the shape's colour (white unset).
+      const std::uint32_t color = add(ENode{ECode::kAttr, 0, program_->color_attr, e.range, {}});
+      return add(ENode{ECode::kFunction, 0, static_cast<std::uint32_t>(*part), e.range, {color}});
     }
     if (object.kind == ExprKind::kIdent && e.text == "sel" && is_shape_object(object.text)) {
       return add(ENode{ECode::kCompSel, 0, 0, e.range, {}});

@@ -68,7 +68,11 @@ enum class ShapeAttr : std::uint8_t {
   kDepth,
   kIndex,
   kTotal,
-  kSeedian,  // CityEngine's `seedian`: the shape's random seed as a number
+  kSeedian,    // CityEngine's `seedian`: the shape's random seed as a number
+  kElevation,  // scope.elevation: the scope origin's height in the world
+  kInitialPx,  // CityEngine's initialShape.origin.px/py/pz: the lot's origin in CityEngine's
+  kInitialPy,  // world axes (x east, y up, z south)
+  kInitialPz,
 };
 
 enum class Function : std::uint8_t {
@@ -103,9 +107,15 @@ enum class Function : std::uint8_t {
   kReplace,
   kGetPrefix,
   kGetSuffix,
+  kGetRange,
+  kFileName,       // CityEngine's file path utilities: "dir/name.ext" -> "name.ext"
+  kFileBasename,   // -> "name"
+  kFileDirectory,  // -> "dir/"
+  kFileExtension,  // -> ".ext"
   // CityEngine's colour functions (colors.h)
   kColorRGBToHex,
   kColorHSVToHex,
+  kColorRamp,
   kColorHexToR,
   kColorHexToG,
   kColorHexToB,

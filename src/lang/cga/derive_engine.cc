@@ -65,6 +65,14 @@ double Engine::shape_attribute(ShapeAttr a) {
       return s.index;
     case ShapeAttr::kTotal:
       return s.total;
+    case ShapeAttr::kElevation:
+      return s.scope.origin.z;
+    case ShapeAttr::kInitialPx:
+      return start_state_.scope.origin.x;
+    case ShapeAttr::kInitialPy:
+      return start_state_.scope.origin.z;
+    case ShapeAttr::kInitialPz:
+      return -start_state_.scope.origin.y + 0.0;
     case ShapeAttr::kSeedian:  // a whole number as CityEngine's seeds are (its values differ)
       return static_cast<double>(s.seed & 0x7fffffffU);
   }

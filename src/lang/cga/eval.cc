@@ -202,6 +202,24 @@ std::size_t index_arg(double x, std::size_t size) {
   return std::min(size, static_cast<std::size_t>(std::floor(x)));
 }
 
+// A part of a file path as CityEngine's utility functions split it ('/' and '\\' both separate).
+std::string path_part(Function f, const std::string& path) {
+  const std::size_t slash = path.find_last_of("/\\");
+  const std::size_t name_at = slash == std::string::npos ? 0 : slash + 1;
+  const std::string name = path.substr(name_at);
+  const std::size_t dot = name.rfind('.');
+  switch (f) {
+    case Function::kFileDirectory:
+      return path.substr(0, name_at);
+    case Function::kFileBasename:
+      return dot == std::string::npos ? name : name.substr(0, dot);
+    case Function::kFileExtension:
+      return dot == std::string::npos ? std::string() : name.substr(dot);
+    default:
+      return name;
+  }
+}
+
 Value string_function(Function f, const std::vector<Value>& args, Range range) {
   const auto text = [&](std::size_t i) { return as_text(args[i]); };
   const auto x = [&](std::size_t i) { return number_arg(args, i, range); };
@@ -243,6 +261,20 @@ Value string_function(Function f, const std::vector<Value>& args, Range range) {
       const std::string match = text(1);
       const std::size_t at = match.empty() ? std::string::npos : s.rfind(match);
       return at == std::string::npos ? s : s.substr(at + match.size());
+    }
+    case Function::kFileName:
+    case Function::kFileBasename:
+    case Function::kFileDirectory:
+    case Function::kFileExtension:
+      return path_part(f, text(0));
+    case Function::kGetRange: {  // CityEngine's utility library: getRange("a_f3_t2", "f", "_t")
+      const std::string s = text(0);
+      const std::string start = text(1);
+      const std::size_t at = s.find(start);
+      if (at == std::string::npos) return std::string();
+      const std::size_t begin = at + start.size();
+      const std::size_t end = s.find(text(2), begin);
+      return s.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
     }
     default:
       break;
@@ -328,9 +360,8 @@ Value apply_function(Function f, const std::vector<Value>& args, Range range) {
       if (const std::string* s = std::get_if<std::string>(&args[0])) {
         char* end = nullptr;
         const double d = std::strtod(s->c_str(), &end);
-        if (s->empty() || end != s->c_str() + s->size() || !std::isfinite(d)) {
-          fail(range, "float(\"" + *s + "\"): not a number");
-        }
+        // A text that is no number is NaN, as CityEngine's float() gives (isnan tests it).
+        if (s->empty() || end != s->c_str() + s->size()) return std::nan("");
         return d;
       }
       return x(0);
@@ -364,6 +395,11 @@ Value apply_function(Function f, const std::vector<Value>& args, Range range) {
     case Function::kReplace:
     case Function::kGetPrefix:
     case Function::kGetSuffix:
+    case Function::kGetRange:
+    case Function::kFileName:
+    case Function::kFileBasename:
+    case Function::kFileDirectory:
+    case Function::kFileExtension:
     case Function::kListSize:
     case Function::kListItem:
     case Function::kListFirst:
@@ -379,6 +415,15 @@ Value apply_function(Function f, const std::vector<Value>& args, Range range) {
       const auto [r, g, b] = rgb_of_hsv(x(0), x(1), x(2));
       return hex_color(r, g, b, 1, false);
     }
+    case Function::kColorRamp: {
+      const std::optional<std::string> hex = color_ramp(as_text(args[0]), x(1));
+      if (!hex) {
+        fail(range, "unknown colour ramp '" + as_text(args[0]) +
+                        "' (whiteToBlack, greenToRed, yellowToRed, redToBlue, orangeToBlue, "
+                        "brownToBlue, spectrum)");
+      }
+      return *hex;
+    }
     case Function::kColorHexToR:
     case Function::kColorHexToG:
     case Function::kColorHexToB:
@@ -386,7 +431,9 @@ Value apply_function(Function f, const std::vector<Value>& args, Range range) {
     case Function::kColorHexToH:
     case Function::kColorHexToS:
     case Function::kColorHexToV: {
-      const auto rgba = rgba_of_hex(as_text(args[0]));
+      // A shape no colour was set on is white (material.color.r reads it so).
+      const bool unset = std::holds_alternative<std::monostate>(args[0]);
+      const auto rgba = rgba_of_hex(unset ? std::string("#ffffff") : as_text(args[0]));
       if (!rgba) fail(range, "'" + as_text(args[0]) + "' is not a colour (\"#rrggbb\")");
       const auto& c = *rgba;
       const auto hsv = hsv_of_rgb(c[0], c[1], c[2]);

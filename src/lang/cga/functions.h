@@ -55,8 +55,18 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"replace", 3, 3, "sss", "replace(s, old, new): every occurrence replaced"},
     {"getPrefix", 2, 2, "ss", "the text before the first occurrence of a match (all if none)"},
     {"getSuffix", 2, 2, "ss", "the text after the last occurrence of a match (all if none)"},
+    {"fileName", 1, 1, "s", "a path's file name with its extension (\"a/b.obj\" -> \"b.obj\")"},
+    {"fileBasename", 1, 1, "s", "a path's file name without its extension (\"b\")"},
+    {"fileDirectory", 1, 1, "s", "a path's folder with its last slash (\"a/\")"},
+    {"fileExtension", 1, 1, "s", "a path's extension with its dot (\".obj\"; \"\" if none)"},
+    {"getRange", 3, 3, "sss",
+     "the text between the first occurrence of a start and the next occurrence of an end "
+     "(\"\" without the start; the rest without the end)"},
     {"colorRGBToHex", 3, 3, "nnn", "\"#rrggbb\" of red, green, blue in [0, 1]"},
     {"colorHSVToHex", 3, 3, "nnn", "\"#rrggbb\" of hue (degrees), saturation, value in [0, 1]"},
+    {"colorRamp", 2, 2, "sn",
+     "\"#rrggbb\" at a value in [0, 1] of a ramp: whiteToBlack, greenToRed, yellowToRed, "
+     "redToBlue, orangeToBlue, brownToBlue or spectrum"},
     {"colorHexToR", 1, 1, "s", "red of a \"#rrggbb\" colour, in [0, 1]"},
     {"colorHexToG", 1, 1, "s", "green of a \"#rrggbb\" colour, in [0, 1]"},
     {"colorHexToB", 1, 1, "s", "blue of a \"#rrggbb\" colour, in [0, 1]"},

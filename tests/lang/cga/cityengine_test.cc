@@ -512,6 +512,37 @@ TEST(CityEngineDialect, ColourFunctions) {
   }
 }
 
+TEST(CityEngineDialect, UtilityFunctionsAndShapeValues) {
+  // The utility library's getRange, colorRamp and file path parts; material.color.r of a shape
+  // (white unset); initialShape.origin and scope.elevation; float() of a non-number is NaN.
+  auto p = compile_text(
+      "version \"2019.0\"\n"
+      "Lot --> print(getRange(\"building_f4_t3_a.jpg\", \"f\", \"_t\")) "
+      "print(getRange(\"x\", \"y\", \"z\")) print(colorRamp(\"whiteToBlack\", 0)) "
+      "print(colorRamp(\"yellowToRed\", 1)) print(fileName(\"a/b/win.obj\")) "
+      "print(fileBasename(\"a/b/win.obj\")) print(fileDirectory(\"a/b/win.obj\")) "
+      "print(fileExtension(\"a/b/win.obj\")) print(material.color.r) color(0.5, 0, 0) "
+      "print(material.color.r) print(initialShape.origin.px) t(0, 2, 0) "
+      "print(scope.elevation) print(isnan(float(\"\")))  X.\n");
+  ASSERT_TRUE(p);
+  Lot lot = rectangle_lot(10, 8);
+  for (auto& v : lot.polygons[0].outer) v.x += 100;
+  const auto r = derive_all(*p, {lot});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  const std::vector<std::string> expected = {
+      "4",   "",  "#ffffff", "#cc0000", "win.obj", "win", "a/b/", ".obj", "1", "0.5019607843137255",
+      "100", "2", "true"};
+  ASSERT_EQ(r[0].prints.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const std::string& line = r[0].prints[i];
+    const std::size_t colon = line.find("print:");
+    const std::string value = line.size() > colon + 7 ? line.substr(colon + 7) : std::string();
+    EXPECT_EQ(value, expected[i]) << line;
+  }
+  EXPECT_EQ(check_text("version \"2019.0\"\nLot --> color(colorRamp(\"rainbow\", 0.5)) X.\n"),
+            "");  // an unknown ramp is known only when derived
+}
+
 TEST(CityEngineDialect, ConvertBetweenFrames) {
   // A 10 x 8 lot moved 3 m up: the scope origin in world coordinates (x east, y up, z south;
   // the volume's z points south, so its origin is on the lot's north edge, z = -8), a point 2 m
