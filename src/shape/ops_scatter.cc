@@ -87,7 +87,9 @@ struct Placed {
 };
 
 std::vector<Placed> in_scope(Rng& rng, const Distribution& d, Vec3 size, std::size_t count) {
-  const Box box{{}, size};
+  // A mirrored scope (negative size, CityEngine's s(-w, ...)) spans [size, 0] on that axis.
+  const Box box{{std::min(size.x, 0.0), std::min(size.y, 0.0), std::min(size.z, 0.0)},
+                {std::max(size.x, 0.0), std::max(size.y, 0.0), std::max(size.z, 0.0)}};
   std::vector<Placed> out;
   for (std::size_t k = 0; k < count; ++k) {
     Vec3 p = draw(rng, d, box);

@@ -164,6 +164,17 @@ TEST(Scatter, ScopePointsLieInTheScopeWithTheShapesAxes) {
     expect_near(tree[c].scope.y, scope.y);
     expect_near(tree[c].scope.z, scope.z);
   }
+  // A mirrored scope (negative width) spans [-2, 0] on x.
+  Scope mirrored;
+  mirrored.size = {-2, 1, 1};
+  const OpResult m =
+      scatter_args(tree, tree.add_root(mirrored),
+                   {{"", std::string("scope")}, {"", 50.0}, {"", std::string("gaussian")}});
+  ASSERT_EQ(m.children.size(), 50U);
+  for (ShapeId c : m.children) {
+    EXPECT_LE(tree[c].scope.origin.x, 0);
+    EXPECT_GE(tree[c].scope.origin.x, -2);
+  }
   // A flat shape's CityEngine axes: y its normal, z along its -y.
   const ShapeId l = lot(tree, kL);
   const OpResult f = scatter_args(tree, l, {{"", std::string("scope")}, {"", 3.0}});
