@@ -375,7 +375,7 @@ const Registry& registry() {
           &offset_operations, &roof_operations, &insert_operations, &scope_operations,
           &inner_rectangle_operations, &cleanup_operations, &primitive_operations,
           &convexify_operations, &component_operations, &stair_operations, &frame_operations,
-          &slab_operations, &wall_operations, &uv_operations}) {
+          &slab_operations, &wall_operations, &uv_operations, &scatter_operations}) {
       for (Operation& op : (*family)()) all.push_back(std::move(op));
     }
     Amendments& a = amendments();

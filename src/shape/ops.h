@@ -33,7 +33,8 @@ std::vector<Operation> inner_rectangle_operations();
 std::vector<Operation> cleanup_operations();
 std::vector<Operation> primitive_operations();
 std::vector<Operation> convexify_operations();
-std::vector<Operation> uv_operations();  // ops_uv.cc: CityEngine's texturing operations
+std::vector<Operation> uv_operations();       // ops_uv.cc: CityEngine's texturing operations
+std::vector<Operation> scatter_operations();  // ops_scatter.cc: CityEngine's scatter
 
 // --- extrude (ops_extrude.cc)
 // A flat shape (footprint or face) becomes a prism of `height` meters (> 0) along its normal. The
@@ -260,6 +261,25 @@ OpResult inner_rectangle(ShapeTree& tree, ShapeId id, bool along_edge, SetbackPa
 // One flat child per convex piece of a flat shape (kernel convex_partition); `max_length` > 0
 // keeps only cut lines shorter than it.
 OpResult convexify(ShapeTree& tree, ShapeId id, double max_length);
+
+// --- scatter (ops_scatter.cc)
+enum class ScatterDomain : std::uint8_t { kSurface, kVolume, kScope };
+struct ScatterOptions {
+  ScatterDomain domain = ScatterDomain::kSurface;
+  std::size_t count = 0;  // at most kMaxScatterPoints
+  bool gaussian = false;
+  // CityEngine's scatterMean: center, front, back, left, right, top or bottom of the scope.
+  std::string mean = "center";
+  // Meters on every axis, or relative: a fraction of each scope extent (CityEngine's '0.16).
+  SizeSpec stddev{0.16, SizeMode::kRelative};
+};
+inline constexpr std::size_t kMaxScatterPoints = 1000000;
+// CityEngine's scatter: `count` point children (zero-size scope, no geometry) drawn from the
+// shape's seed, on the faces (area-weighted), inside the closed mesh (an open one falls back to
+// the surface, with a warning) or inside the scope box. On a surface the child's scope y is the
+// face's outward normal; otherwise its axes are the shape's as CityEngine sees them (a flat
+// shape's normal is y). docs/operations-cityengine.md, "scatter".
+OpResult scatter(ShapeTree& tree, ShapeId id, const ScatterOptions& options);
 
 // --- primitives (ops_primitive.cc)
 enum class PrimitiveKind : std::uint8_t { kCube, kCylinder, kQuad };

@@ -15,7 +15,9 @@ OpOutcome Engine::run_op(const State& st, std::string_view name,
   OpOutcome out;
   const Materialized m = materialize(out_.geometry[st.geometry], st.scope.size);
   out.parent_mesh = m.mesh;
-  shape::ShapeTree tree;
+  // Seeded from the shape, so an operation that draws random numbers (scatter) differs from
+  // shape to shape and repeats with the derivation's seed.
+  shape::ShapeTree tree(st.seed);
   shape::ShapeId id;
   if (parent != nullptr) {
     id = tree.add_child(tree.add_root(*parent), st.scope, m.mesh, m.outline);

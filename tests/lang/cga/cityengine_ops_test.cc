@@ -334,5 +334,80 @@ TEST(CityEngineOps, ConvexifyAndTrim) {
       << diagnostics_text(r[0]);
 }
 
+// CityEngine's scatter (docs/operations-cityengine.md, "scatter"): point shapes fed to the block,
+// the enum words checked as the registry's choices.
+TEST(CityEngineOps, ScatterFeedsPointShapesToItsBlock) {
+  const std::string head = "version \"2023.0\"\n";
+  const LotResult r = derive_one(head +
+                                     "Lot --> scatter(surface, 20, uniform) { Tree }\n"
+                                     "Tree --> i(\"cube\")\n",
+                                 rectangle_lot(20, 10));
+  ASSERT_EQ(r.terminals_store.size(), 20U);
+  for (std::size_t k = 0; k < r.terminals_store.size(); ++k) {
+    const Terminal& t = r.terminals_store[k];
+    EXPECT_TRUE(r.geometry[t.geometry].mesh);  // the inserted cube
+    EXPECT_NEAR(t.scope.origin.z, 0, 1e-9);
+    EXPECT_GE(t.scope.origin.x, -1e-9);
+    EXPECT_LE(t.scope.origin.x, 20 + 1e-9);
+    EXPECT_GE(t.scope.origin.y, -1e-9);
+    EXPECT_LE(t.scope.origin.y, 10 + 1e-9);
+    expect_near(t.scope.y, {0, 0, 1});  // on a surface: y the normal, so the cube stands up
+    expect_near(t.scope.size, {1, 1, 1});
+  }
+  // gaussian with CityEngine's mean and relative deviation: clustered on the left side.
+  const LotResult g = derive_one(
+      head + "Lot --> scatter(surface, 30, gaussian, left, '0.1) { P }\n", rectangle_lot(20, 10));
+  ASSERT_EQ(g.terminals_store.size(), 30U);
+  double mean_x = 0;
+  for (std::size_t k = 0; k < 30; ++k) mean_x += g.terminals_store[k].scope.origin.x / 30;
+  EXPECT_LT(mean_x, 4);
+  // volume in an extruded lot, scope on the lot.
+  const LotResult v = derive_one(head + "Lot --> extrude(6) scatter(volume, 25, uniform) { P }\n",
+                                 rectangle_lot(20, 10));
+  ASSERT_EQ(v.terminals_store.size(), 25U);
+  for (std::size_t k = 0; k < v.terminals_store.size(); ++k) {
+    const Terminal& t = v.terminals_store[k];
+    EXPECT_GT(t.scope.origin.z, 0);
+    EXPECT_LT(t.scope.origin.z, 6);
+  }
+  const LotResult s =
+      derive_one(head + "Lot --> scatter(scope, 5, uniform) { P }\n", rectangle_lot(20, 10));
+  EXPECT_EQ(s.terminals_store.size(), 5U);
+  const LotResult none =
+      derive_one(head + "Lot --> scatter(surface, 0, uniform) { P }\n", rectangle_lot(20, 10));
+  EXPECT_EQ(none.terminals_store.size(), 0U);
+}
+
+TEST(CityEngineOps, ScatterRepeatsWithTheSeed) {
+  auto p = compile_text("version \"2023.0\"\nLot --> scatter(surface, 10, uniform) { P }\n");
+  ASSERT_TRUE(p);
+  const auto origins = [&](std::uint64_t seed) {
+    DeriveOptions options;
+    options.seed = seed;
+    const auto r = derive_all(*p, {rectangle_lot(20, 10)}, options);
+    std::vector<double> out;
+    for (std::size_t k = 0; k < r[0].terminals_store.size(); ++k) {
+      out.push_back(r[0].terminals_store[k].scope.origin.x);
+    }
+    return out;
+  };
+  EXPECT_EQ(origins(1), origins(1));
+  EXPECT_NE(origins(1), origins(2));
+  EXPECT_EQ(origins(1).size(), 10U);
+}
+
+TEST(CityEngineOps, ScatterChecksItsWords) {
+  const base::Source source("bad.cga",
+                            "version \"2023.0\"\nLot --> scatter(surfac, 3, uniform) { P }\n");
+  base::Result<Grammar> grammar = parse(source);
+  ASSERT_TRUE(grammar.ok());
+  const auto program = compile(grammar.value(), source, {});
+  ASSERT_FALSE(program.ok());
+  EXPECT_NE(
+      base::render(program.diagnostics().front()).find("must be one of surface, volume, scope"),
+      std::string::npos)
+      << base::render(program.diagnostics().front());
+}
+
 }  // namespace
 }  // namespace insula::lang::cga

@@ -70,6 +70,21 @@ TEST(LuaOps, RegistryOperations) {
             "480.0\t4\t3\t3.3333333333333\t48.0\t32.0\t20.0\t60.0\t2\t2.0\t4.0\t1.0\t1.0\t4.0");
 }
 
+TEST(LuaOps, ScatterFromTheRegistry) {
+  // CityEngine's scatter reaches Lua through the registry: point components on the lot.
+  const auto r = run(R"lua(
+    local lot = component{polygon={{0, 0}, {10, 0}, {10, 8}, {0, 8}}}
+    local points = scatter(lot, "surface", 12, "gaussian", {label="tree"})
+    local inside = 0
+    for _, p in ipairs(points) do
+      if p.origin[1] >= 0 and p.origin[1] <= 10 and p.size[1] == 0 then inside = inside + 1 end
+    end
+    print(#points, #query("tree"), inside)
+  )lua");
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(r.printed, std::vector<std::string>{"12\t12\t12"});
+}
+
 TEST(LuaOps, SetbackEdgesTakesADepthPerEdge) {
   // The registry's per-edge setback (CGA's setback(float[])): 10 x 8, strips 1 m along the first
   // edge and 3 m along the third.
