@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 
 #include "lang/cga/colors.h"
 
@@ -151,6 +152,30 @@ Value apply_binary(BinaryOp op, const Value& a, const Value& b, Range range) {
                         " (CityEngine's element-wise operators .+ .- .* ./ are not supported)");
       }
       return arithmetic(op, as_number(a, range), as_number(b, range), range);
+  }
+}
+
+// CityEngine computes its math functions as IEEE floats: ln(0) is -inf, sqrt(-1) NaN, no
+// error (isnan / isinf test them); seed 004 grammars keep the errors of apply_function.
+std::optional<double> ieee_math(Function f, const std::vector<Value>& args) {
+  if (args.empty() || !std::holds_alternative<double>(args[0])) return std::nullopt;
+  const double x = std::get<double>(args[0]);
+  switch (f) {
+    case Function::kSqrt:
+      return std::sqrt(x);
+    case Function::kLn:
+      return std::log(x);
+    case Function::kLog10:
+      return std::log10(x);
+    case Function::kExp:
+      return std::exp(x);
+    case Function::kTan:
+      return std::tan(x * kDeg);
+    case Function::kPow:
+      if (args.size() != 2 || !std::holds_alternative<double>(args[1])) return std::nullopt;
+      return std::pow(x, std::get<double>(args[1]));
+    default:
+      return std::nullopt;
   }
 }
 
@@ -559,6 +584,9 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
         return items[std::min(
             items.size() - 1,
             static_cast<std::size_t>(context.rng().unit() * static_cast<double>(items.size())))];
+      }
+      if (program.cityengine) {
+        if (const std::optional<double> v = ieee_math(f, args)) return *v;
       }
       return apply_function(f, args, n.range);
     }

@@ -298,6 +298,7 @@ TEST(CityEngineOps, MissingFilesAndDivisionByZeroDoNotStopTheModel) {
   auto p = compile_text(
       "version \"2019.0\"\n"
       "Lot --> report(\"x\", assetInfo(\"tree.obj\", tx)) report(\"nan\", isnan(0 / scope.sy))\n"
+      "  report(\"inf\", isinf(ln(scope.sy))) report(\"root\", isnan(sqrt(scope.sy - 1)))\n"
       "  extrude(3) A.\n");
   ASSERT_TRUE(p);
   NoFiles files;
@@ -307,6 +308,8 @@ TEST(CityEngineOps, MissingFilesAndDivisionByZeroDoNotStopTheModel) {
   ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
   EXPECT_EQ(r[0].reports.at("x").sum, 0);
   EXPECT_EQ(r[0].reports.at("nan").sum, 1);
+  EXPECT_EQ(r[0].reports.at("inf").sum, 1);  // ln(0): IEEE math, as CityEngine's
+  EXPECT_EQ(r[0].reports.at("root").sum, 1);
   EXPECT_EQ(symbol_count(*p, r[0], "A"), 1U);
   EXPECT_NE(diagnostics_text(r[0]).find("warning[CGA604]: 'tree.obj' not found: 0"),
             std::string::npos)
