@@ -254,6 +254,22 @@ void Checker::choose_start() {
         if (result_.start_symbol.empty() && startable(name)) result_.start_symbol = name;
       }
       if (result_.start_symbol.empty() && startable("Lot")) result_.start_symbol = "Lot";
+      // Else the first rule no other rule calls (a file's entry point, as the author would pick
+      // it in CityEngine's inspector), then the first rule.
+      std::unordered_set<std::string_view> called;
+      for (const CheckedRule& r : result_.rules) {
+        for (const Alternative& alt : r.rule->alternatives) {
+          for_each_symbol(alt.items, [&](const Item& item) {
+            if (item.name != r.rule->predecessor) called.insert(item.name);
+          });
+        }
+      }
+      for (const CheckedRule& r : result_.rules) {
+        if (result_.start_symbol.empty() && r.rule->params.empty() &&
+            !called.count(r.rule->predecessor)) {
+          result_.start_symbol = r.rule->predecessor;
+        }
+      }
       for (const CheckedRule& r : result_.rules) {
         if (result_.start_symbol.empty() && r.rule->params.empty()) {
           result_.start_symbol = r.rule->predecessor;

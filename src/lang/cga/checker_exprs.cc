@@ -365,7 +365,8 @@ void Checker::check_call(const Expr& expr) {
     check_convert(expr);
     return;
   } else if (callee.kind == ExprKind::kIdent && cityengine() &&
-             (callee.text == "inside" || callee.text == "overlaps" || callee.text == "touches")) {
+             (callee.text == "inside" || callee.text == "overlaps" || callee.text == "touches" ||
+              callee.text == "minimumDistance")) {
     check_occlusion_query(expr);
     return;
   } else if (callee.kind == ExprKind::kIdent) {

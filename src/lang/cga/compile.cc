@@ -797,6 +797,7 @@ class Compiler {
     if (callee.text == "inside") return OcclusionRelation::kInside;
     if (callee.text == "overlaps") return OcclusionRelation::kOverlaps;
     if (callee.text == "touches") return OcclusionRelation::kTouches;
+    if (callee.text == "minimumDistance") return OcclusionRelation::kMinimumDistance;
     return std::nullopt;
   }
 

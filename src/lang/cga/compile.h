@@ -159,7 +159,8 @@ enum class Function : std::uint8_t {
   kRange,  // the colon operator `a:b`, `a:s:b` (no name: only inside `[ ]`)
 };
 
-enum class OcclusionRelation : std::uint8_t { kInside, kOverlaps, kTouches };
+// kMinimumDistance: CityEngine's minimumDistance(), a number where the others are bools.
+enum class OcclusionRelation : std::uint8_t { kInside, kOverlaps, kTouches, kMinimumDistance };
 enum class OcclusionTarget : std::uint8_t { kAll, kIntra, kInter };
 
 struct ENode {

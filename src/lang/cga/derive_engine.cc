@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "lang/cga/colors.h"
 #include "shape/query.h"
@@ -199,9 +200,50 @@ bool Engine::occlusion_query(OcclusionRelation relation, OcclusionTarget target,
         }
         break;
       }
+      case OcclusionRelation::kMinimumDistance:
+        break;  // a number: minimum_distance()
     }
   }
   return false;
+}
+
+namespace {
+
+// The distance from `p` to the box of scope `s` (0 inside).
+double distance_to_box(const Scope& s, Vec3 p) {
+  const Vec3 local = s.to_local(p);
+  const Vec3 nearest{std::clamp(local.x, 0.0, std::max(0.0, s.size.x)),
+                     std::clamp(local.y, 0.0, std::max(0.0, s.size.y)),
+                     std::clamp(local.z, 0.0, std::max(0.0, s.size.z))};
+  return kernel::length(s.to_world(nearest) - p);
+}
+
+// Between two scope boxes: 0 when they overlap, else the least corner-to-box distance either way
+// (exact for boxes facing each other across a face or a corner; two boxes whose nearest points
+// both lie on edges get at most that edge-to-edge gap over-estimated).
+double box_distance(const Scope& a, const Scope& b) {
+  if (covered(a, b) > 0 || covered(b, a) > 0) return 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (const Vec3& p : a.corners()) best = std::min(best, distance_to_box(b, p));
+  for (const Vec3& p : b.corners()) best = std::min(best, distance_to_box(a, p));
+  return best;
+}
+
+}  // namespace
+
+// Against the previous pass's occluders as occlusion_query, on scope boxes.
+double Engine::minimum_distance(OcclusionTarget target, const std::string& label) {
+  double best = std::numeric_limits<double>::infinity();
+  if (occluders_ == nullptr || target == OcclusionTarget::kInter) return best;
+  const State& self = *cur_;
+  const std::vector<std::uint64_t> mine = lineage_seeds(self.lineage);
+  for (const Occluder& o : *occluders_) {
+    if (!label.empty() && o.label != label) continue;
+    if (std::find(mine.begin(), mine.end(), o.seed) != mine.end()) continue;  // an ancestor
+    if (std::find(o.lineage.begin(), o.lineage.end(), self.seed) != o.lineage.end()) continue;
+    best = std::min(best, box_distance(self.scope, o.scope));
+  }
+  return best;
 }
 
 Value Engine::file_function(Function f, const std::vector<Value>& args, Range range) {

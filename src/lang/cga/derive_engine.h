@@ -486,6 +486,7 @@ class Engine final : public EvalContext {
   }
   std::vector<std::uint64_t> lineage_seeds(std::uint32_t entry) const;
   void add_occluder(const State& st, std::string label);
+  double minimum_distance(OcclusionTarget target, const std::string& label) override;
   bool occlusion_query(OcclusionRelation relation, OcclusionTarget target,
                        const std::string& label) override;
   Vec3 convert(shape::Frame from, shape::Frame to, bool orientation, Vec3 v) override {

@@ -614,10 +614,16 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
       if (n.op == 3) return make_row(ElementType::kFloat, {r.x, r.y, r.z});
       return n.op == 0 ? r.x : n.op == 1 ? r.y : r.z;
     }
-    case ECode::kOcclusion:
-      return context.occlusion_query(
-          static_cast<OcclusionRelation>(n.op), static_cast<OcclusionTarget>(n.a),
-          n.kids.empty() ? std::string() : as_text(evaluate(program, n.kids[0], context)));
+    case ECode::kOcclusion: {
+      const auto relation = static_cast<OcclusionRelation>(n.op);
+      const auto target = static_cast<OcclusionTarget>(n.a);
+      const std::string label =
+          n.kids.empty() ? std::string() : as_text(evaluate(program, n.kids[0], context));
+      if (relation == OcclusionRelation::kMinimumDistance) {
+        return context.minimum_distance(target, label);
+      }
+      return context.occlusion_query(relation, target, label);
+    }
     case ECode::kGeometry: {
       const double tolerance =
           n.kids.empty() ? 0 : as_number(evaluate(program, n.kids[0], context), n.range);

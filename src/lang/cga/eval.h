@@ -79,6 +79,8 @@ class EvalContext {
                                kernel::Vec3 v) = 0;
   virtual bool occlusion_query(OcclusionRelation relation, OcclusionTarget target,
                                const std::string& label) = 0;
+  // CityEngine's minimumDistance(target, label): to the nearest such occluder (+inf: none).
+  virtual double minimum_distance(OcclusionTarget target, const std::string& label) = 0;
   // CityEngine's geometry.* (shape/geometry_queries.h) on the shape's geometry.
   virtual double geometry(shape::GeometryQuery query, std::uint8_t option, double tolerance) = 0;
   // comp.sel: the selector of the comp branch the shape came from ("" when none).

@@ -158,6 +158,11 @@ TEST(CityEngineDialect, StartsFromTheMarkedStartRule) {
   base::Result<Grammar> g = parse(source);
   ASSERT_TRUE(g.ok());
   EXPECT_EQ(check(g.value(), source).start_symbol, "Building");
+  // Without @StartRule or Lot: the first rule no other rule calls.
+  const base::Source roots("t.cga", "version \"2019.0\"\nWall --> X.\nHouse --> extrude(3) Wall\n");
+  base::Result<Grammar> h = parse(roots);
+  ASSERT_TRUE(h.ok());
+  EXPECT_EQ(check(h.value(), roots).start_symbol, "House");
   // A file of constants only is a library others import, as in CityEngine: a warning, no start.
   EXPECT_EQ(check_text("version \"2023.1\"\nconst floorH = 3.2\n"),
             "t.cga: warning[CGA433]: the file has no rules: none can start a derivation\n");
@@ -431,6 +436,23 @@ TEST(CityEngineDialect, SplitAlongTextureCoordinatesSaysWhatItDoes) {
   ASSERT_EQ(r[0].terminals_store.size(), 2U);
   EXPECT_NEAR(r[0].terminals_store[0].scope.size.y, 2, 1e-9);
   EXPECT_NEAR(r[0].terminals_store[1].scope.size.y, 6, 1e-9);
+}
+
+TEST(CityEngineDialect, MinimumDistanceToLabelledShapes) {
+  // A 4 m hall at x 0..4 labelled "hall"; boxes of 1 m at x = 6 and 8 (2 and 4 m from it);
+  // no "shed" anywhere: +inf.
+  auto p = compile_text(
+      "version \"2024.0\"\n"
+      "Lot --> split(x) { 4 : extrude(5) label(\"hall\") Hall. | 2 : NIL | 1 : Box | 1 : NIL "
+      "| 1 : Box | ~1 : NIL }\n"
+      "Box --> extrude(1) report(\"d\", minimumDistance(intra, \"hall\"))\n"
+      "  report(\"none\", isinf(minimumDistance(all, \"shed\"))) B.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(12, 8)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(r[0].reports.at("d").count, 2U);
+  EXPECT_NEAR(r[0].reports.at("d").sum, 2 + 4, 1e-9);
+  EXPECT_EQ(r[0].reports.at("none").sum, 2);
 }
 
 TEST(CityEngineDialect, OcclusionQueriesWithLabels) {
