@@ -44,8 +44,9 @@ bool is_type_word(std::string_view word) {
 // "Differences"): `extrude(type, d)` extrudes along the face normal (the same as world.up on a
 // lot, CityEngine's common case), `split(axis, adjust|noAdjust)` splits as split(axis).
 void drop_form_words(Item& item) {
-  static constexpr std::string_view kExtrudeTypes[] = {"world.y", "world.up", "world.up.flatTop",
-                                                       "face.normal", "vertex.normal"};
+  // `y`: CityEngine 2011's world axis spelling (extrude(y, 0.1) in Piccoli's rules).
+  static constexpr std::string_view kExtrudeTypes[] = {
+      "world.y", "y", "world.up", "world.up.flatTop", "face.normal", "vertex.normal"};
   if (item.name == "extrude" && item.args.size() == 2 &&
       contains(kExtrudeTypes, dotted_name(*item.args[0]))) {
     item.args.erase(item.args.begin());
