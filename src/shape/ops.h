@@ -294,10 +294,11 @@ struct EnvelopeSpec {
   double max_height = 0;  // > 0: the volume is cut flat there
   EnvelopeSide front, back, right, left;
 };
-// CityEngine's envelope: the prism over a flat shape's outline up to max_height cut by one plane
-// per edge, the edge's side chosen by its outward direction in the object frame (`object`, null:
-// the tree root's scope) read as CityEngine's. One closed child, scope oriented as extrude's;
-// the cut faces are RoofSurface. docs/operations-cityengine.md, "envelope".
+// CityEngine's envelope: the prism over a flat shape's outline up to max_height less, per sloped
+// edge, the space above its plane within the edge's zone (bounded where its plane meets its
+// neighbours'); the edge's side chosen by its outward direction in the object frame (`object`,
+// null: the tree root's scope) read as CityEngine's. One closed child (triangles), scope
+// oriented as extrude's; the sloped faces are RoofSurface. docs/operations-cityengine.md.
 OpResult envelope(ShapeTree& tree, ShapeId id, const EnvelopeSpec& spec,
                   const Scope* object = nullptr);
 

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <set>
 
 #include "kernel/mesh.h"
+#include "kernel/roof_solid.h"
 #include "shape/ops.h"
 
 namespace insula::shape {
@@ -56,9 +58,9 @@ TEST(Envelope, RectangleVolumeTopAndSlopes) {
   EXPECT_FALSE(tree[l].active);
   const kernel::Mesh m = world_mesh(tree, r);
   EXPECT_TRUE(kernel::is_watertight(m));
-  EXPECT_NEAR(kernel::volume(m), 1200 + 1216.0 / 3, 1e-6);
+  EXPECT_NEAR(kernel::volume(m), 1200 + 1216.0 / 3, 1e-4);
   double top_area = 0;
-  int slopes = 0;
+  std::set<std::uint32_t> slopes;  // face ids: the result of the booleans is triangles
   for (std::size_t f = 0; f < m.face_count(); ++f) {
     const Vec3 n = kernel::face_normal(m, f);
     const double tilt = degrees_from_horizontal(n);
@@ -73,14 +75,15 @@ TEST(Envelope, RectangleVolumeTopAndSlopes) {
       }
     }
     if (tilt < 1e-6) top_area += kernel::face_area(m, f);
-    if (tilt > 1e-6 && tilt < 89.999) {
+    // Slivers as wide as the zones' overlap (1e-5 m) have normals only as good as their size.
+    if (tilt > 1e-6 && tilt < 89.999 && kernel::face_area(m, f) > 1e-4) {
       EXPECT_NEAR(tilt, 45, 1e-6);
       EXPECT_EQ(m.tag(f).semantic, kernel::SemanticClass::kRoofSurface);
-      ++slopes;
+      slopes.insert(m.tag(f).face_id);
     }
   }
-  EXPECT_NEAR(top_area, 12 * 2, 1e-6);
-  EXPECT_EQ(slopes, 4);
+  EXPECT_NEAR(top_area, 12 * 2, 1e-4);
+  EXPECT_EQ(slopes.size(), 4U);
   // The child stands like an extrusion: scope y up, sized to the envelope.
   const Shape& child = tree[r.children.front()];
   EXPECT_NEAR(child.scope.y.z, 1, 1e-12);
@@ -104,7 +107,7 @@ TEST(Envelope, FrontBackAndSidesTakeTheirOwnValues) {
   ASSERT_TRUE(r.ok()) << r.error;
   const kernel::Mesh m = world_mesh(tree, r);
   EXPECT_TRUE(kernel::is_watertight(m));
-  EXPECT_NEAR(kernel::volume(m), 20 * 92, 1e-6);
+  EXPECT_NEAR(kernel::volume(m), 20 * 92, 1e-4);
   for (std::size_t f = 0; f < m.face_count(); ++f) {
     const Vec3 n = kernel::face_normal(m, f);
     const double tilt = degrees_from_horizontal(n);
@@ -134,20 +137,32 @@ TEST(Envelope, CandlerFormWithSidePairs) {
   // min(0.6, 0.45 + d): the top is cut at d = 0.15, an inner 19.7 x 9.7 rectangle;
   // V = 0.45 * 200 + integral over [0, 0.15] of (20 - 2t)(10 - 2t).
   const double t = 0.15;
-  EXPECT_NEAR(kernel::volume(m), 0.45 * 200 + 200 * t - 30 * t * t + 4 * t * t * t / 3, 1e-9);
+  EXPECT_NEAR(kernel::volume(m), 0.45 * 200 + 200 * t - 30 * t * t + 4 * t * t * t / 3, 1e-4);
 }
 
-TEST(Envelope, ConcaveLStaysClosed) {
+// With one base height and angle and no maximum in reach, the envelope of an L is the hip roof
+// (the kernel's straight skeleton roof) standing on the prism of the base height: each inner
+// edge's plane governs only its side of the valley at the reflex corner (4, 5).
+TEST(Envelope, ConcaveLIsTheHipRoofOnItsBase) {
   ShapeTree tree;
-  const ShapeId l = lot(tree, kL);
-  const OpResult r = run(tree, l, uniform(8, 3, 60));
+  const OpResult r = run(tree, lot(tree, kL), uniform(20, 3, 45));
   ASSERT_TRUE(r.ok()) << r.error;
   const kernel::Mesh m = world_mesh(tree, r);
   EXPECT_TRUE(kernel::is_watertight(m));
-  // Each edge's plane is a whole half-space, so behind the reflex corner (4, 5) the inner edges'
-  // planes cut into the other arm (docs/operations-cityengine.md, "envelope"): only bounds here.
-  EXPECT_GT(kernel::volume(m), 0);
-  EXPECT_LT(kernel::volume(m), 70 * 8);
+  kernel::RoofSolidSpec hip;
+  hip.roof.type = kernel::RoofType::kHip;
+  hip.roof.pitch_deg = 45;
+  const kernel::RoofSolid roof = kernel::build_roof_solid(kL, hip, 0);
+  ASSERT_FALSE(roof.mesh.empty());
+  EXPECT_NEAR(kernel::volume(m), 70 * 3 + kernel::volume(roof.mesh), 1e-3);
+  // Cut by a maximum: still closed, between the base prism and the full height.
+  ShapeTree low;
+  const OpResult c = run(low, lot(low, kL), uniform(4, 3, 60));
+  ASSERT_TRUE(c.ok()) << c.error;
+  const kernel::Mesh cm = world_mesh(low, c);
+  EXPECT_TRUE(kernel::is_watertight(cm));
+  EXPECT_GT(kernel::volume(cm), 70 * 3);
+  EXPECT_LT(kernel::volume(cm), 70 * 4);
   // Vertical angles leave the prism.
   ShapeTree plain;
   const OpResult p = run(plain, lot(plain, kL), uniform(8, 3, 90));
