@@ -33,8 +33,9 @@ std::vector<Operation> inner_rectangle_operations();
 std::vector<Operation> cleanup_operations();
 std::vector<Operation> primitive_operations();
 std::vector<Operation> convexify_operations();
-std::vector<Operation> uv_operations();       // ops_uv.cc: CityEngine's texturing operations
-std::vector<Operation> scatter_operations();  // ops_scatter.cc: CityEngine's scatter
+std::vector<Operation> uv_operations();        // ops_uv.cc: CityEngine's texturing operations
+std::vector<Operation> scatter_operations();   // ops_scatter.cc: CityEngine's scatter
+std::vector<Operation> envelope_operations();  // ops_envelope.cc: CityEngine's envelope
 
 // --- extrude (ops_extrude.cc)
 // A flat shape (footprint or face) becomes a prism of `height` meters (> 0) along its normal. The
@@ -280,6 +281,26 @@ inline constexpr std::size_t kMaxScatterPoints = 1000000;
 // face's outward normal; otherwise its axes are the shape's as CityEngine sees them (a flat
 // shape's normal is y). docs/operations-cityengine.md, "scatter".
 OpResult scatter(ShapeTree& tree, ShapeId id, const ScatterOptions& options);
+
+// --- envelope (ops_envelope.cc)
+// One side's limit: walls rise to `base_height` meters (>= 0), then a plane leans inwards at
+// `angle` degrees from the horizontal ([0, 90]; 90: no slope).
+struct EnvelopeSide {
+  double base_height = 0;
+  double angle = 90;
+};
+struct EnvelopeSpec {
+  bool world_up = false;  // erect along world up (+Z) instead of the face normal
+  double max_height = 0;  // > 0: the volume is cut flat there
+  EnvelopeSide front, back, right, left;
+};
+// CityEngine's envelope: the prism over a flat shape's outline up to max_height less, per sloped
+// edge, the space above its plane within the edge's zone (bounded where its plane meets its
+// neighbours'); the edge's side chosen by its outward direction in the object frame (`object`,
+// null: the tree root's scope) read as CityEngine's. One closed child (triangles), scope
+// oriented as extrude's; the sloped faces are RoofSurface. docs/operations-cityengine.md.
+OpResult envelope(ShapeTree& tree, ShapeId id, const EnvelopeSpec& spec,
+                  const Scope* object = nullptr);
 
 // --- primitives (ops_primitive.cc)
 enum class PrimitiveKind : std::uint8_t { kCube, kCylinder, kQuad };

@@ -22,7 +22,6 @@ inline constexpr std::string_view kUnsupportedOperations[] = {
     "primitiveDisk",
     "primitiveSphere",
     "primitiveCone",
-    "envelope",
     "roofRidge",
     "insertAlongUV",
     "footprint",

@@ -381,6 +381,28 @@ TEST(CityEngineOps, ScatterFeedsPointShapesToItsBlock) {
   EXPECT_EQ(none.terminals_store.size(), 0U);
 }
 
+// CityEngine's envelope (docs/operations-cityengine.md, "envelope"): `world.up` is the registry's
+// enum choice; the 4-argument form slopes every side, Esri's Candler form gives side pairs.
+TEST(CityEngineOps, EnvelopeErectsASlopedVolumeOverTheLot) {
+  const std::string head = "version \"2023.0\"\n";
+  const LotResult r =
+      derive_one(head + "Lot --> envelope(world.up, 10, 6, 45) Mass\n", rectangle_lot(20, 10));
+  ASSERT_EQ(r.terminals_store.size(), 1U);
+  const Terminal& t = r.terminals_store[0];
+  const kernel::Mesh& m = *r.geometry[t.geometry].mesh;
+  EXPECT_TRUE(kernel::is_watertight(m));
+  // 6 * 200 + the slopes up to the flat top at 10 (tests/shape/envelope_test.cc).
+  EXPECT_NEAR(kernel::volume(m), 1200 + 1216.0 / 3, 1e-4);
+  EXPECT_NEAR(t.scope.size.y, 10, 1e-9);
+  const LotResult candler =
+      derive_one(head + "Lot --> envelope(world.up, 0.6, 0.45, 45, 0.45, 45, 0.45, 45) Mass\n",
+                 rectangle_lot(20, 10));
+  ASSERT_EQ(candler.terminals_store.size(), 1U);
+  const kernel::Mesh& c = *candler.geometry[candler.terminals_store[0].geometry].mesh;
+  EXPECT_TRUE(kernel::is_watertight(c));
+  EXPECT_NEAR(kernel::volume(c), 0.45 * 200 + 200 * 0.15 - 30 * 0.0225 + 4 * 0.003375 / 3, 1e-4);
+}
+
 TEST(CityEngineOps, ScatterRepeatsWithTheSeed) {
   auto p = compile_text("version \"2023.0\"\nLot --> scatter(surface, 10, uniform) { P }\n");
   ASSERT_TRUE(p);

@@ -125,8 +125,9 @@ TEST(CityEngineDialect, ChecksWhatTheDialectAdds) {
   EXPECT_EQ(check_text("Lot --> case scope.sx > 3 : A.\n"),
             "t.cga:2:1: error[CGA111]: expected 'else :' to end the 'case' chain, found end of "
             "file\n");
-  EXPECT_EQ(check_text("Lot --> envelope(world.up, 30, 12, 45) A.\n"),
-            "t.cga:1:9: error[CGA901]: CityEngine operation 'envelope' is not supported\n");
+  EXPECT_EQ(check_text("Lot --> taper(5) A.\n"),
+            "t.cga:1:9: error[CGA901]: CityEngine operation 'taper' is not supported\n");
+  EXPECT_EQ(check_text("Lot --> envelope(world.up, 30, 12, 45) A.\n"), "");  // a registry op now
   EXPECT_EQ(check_text("attr y = getGeoCoord(lat)\nLot --> print(y) A.\n"),
             "t.cga:1:10: error[CGA902]: CityEngine function 'getGeoCoord' is not supported\n");
   EXPECT_EQ(check_text("Lot --> softenNormals(30) A.\n"),
