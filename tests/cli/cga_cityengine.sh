@@ -123,4 +123,22 @@ validate_gltf "scatter GLB" "$tmp/park.glb"
 "$insula" build "$ws/Town/rules/park.cga" --lot "$tmp/lots.geojson" -o "$tmp/park2.glb" -q \
   >/dev/null 2>&1 || fail "park again"
 cmp -s "$tmp/park.glb" "$tmp/park2.glb" || fail "scatter is not deterministic"
+
+# getGeoCoord: the scope origin in the lots' CRS (UTM 33N) and in WGS 84 through PROJ; lots in
+# local meters have no lon/lat: a positioned error.
+cat >"$tmp/geo.cga" <<'EOF2'
+version "2019.0"
+Lot --> print(getGeoCoord(x)) print(getGeoCoord(lon)) print(getGeoCoord(lat)) X.
+EOF2
+"$insula" build "$tmp/geo.cga" --lot "$root/examples/town.geojson" -o "$tmp/geo.glb" \
+  2>"$tmp/geo_err" >/dev/null || fail "geo: $(cat "$tmp/geo_err")"
+grep -q "print: 455120$" "$tmp/geo_err" || fail "geo x: $(head -3 "$tmp/geo_err")"
+grep -q "print: 14\.38" "$tmp/geo_err" || fail "geo lon: $(head -3 "$tmp/geo_err")"
+grep -q "print: 49\.00" "$tmp/geo_err" || fail "geo lat: $(head -3 "$tmp/geo_err")"
+if "$insula" build "$tmp/geo.cga" --lot "$tmp/lots.geojson" -o "$tmp/geo2.glb" 2>"$tmp/geo_err2" \
+  >/dev/null; then
+  fail "lon/lat without a CRS should fail"
+fi
+grep -q "geo.cga:2:[0-9]*: error\[CGA603\]: getGeoCoord(lon) needs the lots' coordinate system" \
+  "$tmp/geo_err2" || fail "geo error: $(cat "$tmp/geo_err2")"
 finish cga_cityengine

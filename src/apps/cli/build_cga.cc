@@ -6,6 +6,7 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -13,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "apps/cli/assets.h"
@@ -27,6 +29,7 @@
 #include "apps/cli/plasm_assets.h"
 #include "apps/cli/progress.h"
 #include "io/asset_search.h"
+#include "io/crs.h"
 #include "io/geojson_reader.h"
 #include "io/obj_reader.h"
 #include "lang/cga/annotations.h"
@@ -72,6 +75,25 @@ std::optional<Lots> read_lots(const BuildOptions& options) {
 
 // Names given from outside (--set and lot properties): the checker and the compiler accept them
 // in expressions.
+// getGeoCoord's lon and lat: the lots' CRS to WGS 84 through PROJ (one transformation per call;
+// rules ask it once per lot or so).
+class LotsGeoReference final : public cga::GeoReference {
+ public:
+  LotsGeoReference(kernel::Vec3 lots_origin, std::string crs) : crs_(std::move(crs)) {
+    origin = lots_origin;
+  }
+  std::optional<kernel::Vec2> lon_lat(kernel::Vec2 crs_xy) const override {
+    if (crs_.empty()) return std::nullopt;
+    std::vector<kernel::Vec2> points{crs_xy};
+    if (!io::reproject(crs_, "EPSG:4326", points).empty()) return std::nullopt;
+    if (!std::isfinite(points[0].x) || !std::isfinite(points[0].y)) return std::nullopt;
+    return points[0];
+  }
+
+ private:
+  std::string crs_;
+};
+
 std::vector<std::string> outside_names(const cga::DeriveOptions& derive, const Lots& lots) {
   std::vector<std::string> names;
   for (const auto& [name, value] : derive.sets) names.push_back(name);
@@ -191,6 +213,8 @@ int build_cga(const BuildOptions& options) {
   const io::FileFunctions file_functions(search, library);
   const CgaFiles files(file_functions);
   derive.files = &files;
+  const LotsGeoReference geo(lots->origin, lots->crs);
+  derive.geo = &geo;
   if (lots->lots.empty()) lots->lots.push_back(cga::default_lot(p, derive));
 
   clock = Stopwatch();

@@ -124,6 +124,7 @@ constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
     {"readStringTable", Function::kReadStringTable},
     {"readFloatTable", Function::kReadFloatTable},
     {"print", Function::kPrint},
+    {"getGeoCoord", Function::kGetGeoCoord},
 };
 
 // An expression that names a word: a string literal or a bare identifier (`split(x)`).

@@ -155,8 +155,9 @@ enum class Function : std::uint8_t {
   kListFromArray,
   kReadStringTable,
   kReadFloatTable,
-  kPrint,  // CityEngine's print() as a function: prints its argument and returns it
-  kRange,  // the colon operator `a:b`, `a:s:b` (no name: only inside `[ ]`)
+  kPrint,        // CityEngine's print() as a function: prints its argument and returns it
+  kGetGeoCoord,  // CityEngine's getGeoCoord(x | y | lon | lat) of the scope origin
+  kRange,        // the colon operator `a:b`, `a:s:b` (no name: only inside `[ ]`)
 };
 
 // kMinimumDistance: CityEngine's minimumDistance(), a number where the others are bools.

@@ -59,6 +59,15 @@ class FileQueries {
                                                std::string& error) const = 0;
 };
 
+// Where the lots' local meters lie on the Earth (CityEngine's getGeoCoord): `origin` is the local
+// origin in the scene CRS's units, lon_lat() takes scene CRS coordinates to WGS 84 degrees
+// (nullopt without a CRS or a transformation).
+struct GeoReference {
+  virtual ~GeoReference() = default;
+  kernel::Vec3 origin;
+  virtual std::optional<kernel::Vec2> lon_lat(kernel::Vec2 crs_xy) const = 0;
+};
+
 struct DeriveOptions {
   std::uint64_t seed = 0;
   DeriveLimits limits;
@@ -69,6 +78,7 @@ struct DeriveOptions {
   // Assets for I(), Pshape() and i(); "cube" is built in. May be null (only "cube" resolves).
   const shape::AssetProvider* assets = nullptr;
   const FileQueries* files = nullptr;
+  const GeoReference* geo = nullptr;  // null: getGeoCoord's x and y are the local meters
 };
 
 // A lot: one or more footprint polygons (a GeoJSON Polygon or MultiPolygon, local meters) and the

@@ -231,6 +231,27 @@ double box_distance(const Scope& a, const Scope& b) {
 
 }  // namespace
 
+// CityEngine's getGeoCoord: the scope origin in the scene CRS (the lots' local meters plus their
+// origin), or in WGS 84 through the scene's CRS.
+double Engine::geo_coord(const std::string& which, Range range) {
+  const kernel::Vec3 local = cur_->scope.origin;
+  const kernel::Vec3 origin = options_.geo != nullptr ? options_.geo->origin : kernel::Vec3{};
+  const kernel::Vec2 xy{origin.x + local.x, origin.y + local.y};
+  if (which == "x") return xy.x;
+  if (which == "y") return xy.y;
+  if (which != "lon" && which != "lat") {
+    throw EvalError{range, "getGeoCoord takes x, y, lon or lat, got '" + which + "'"};
+  }
+  const std::optional<kernel::Vec2> ll =
+      options_.geo != nullptr ? options_.geo->lon_lat(xy) : std::nullopt;
+  if (!ll) {
+    throw EvalError{range, "getGeoCoord(" + which +
+                               ") needs the lots' coordinate system (a projected GeoJSON, or "
+                               "lon/lat lots, which Insula projects)"};
+  }
+  return which == "lon" ? ll->x : ll->y;
+}
+
 // Against the previous pass's occluders as occlusion_query, on scope boxes.
 double Engine::minimum_distance(OcclusionTarget target, const std::string& label) {
   double best = std::numeric_limits<double>::infinity();

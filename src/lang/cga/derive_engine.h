@@ -145,6 +145,7 @@ class Engine final : public EvalContext {
   Value comp_function(std::uint32_t index, Range range) override;
 
   void print(Range range, const std::string& text) override;
+  double geo_coord(const std::string& which, Range range) override;
   void warning(Range range, std::string message) override {
     ++warnings_[{range.begin, std::move(message)}];
   }

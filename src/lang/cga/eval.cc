@@ -181,7 +181,7 @@ std::optional<double> ieee_math(Function f, const std::vector<Value>& args) {
 
 bool is_random(Function f) {
   return f == Function::kRand || f == Function::kP || f == Function::kListRandom ||
-         f == Function::kPrint || is_file_function(f);
+         f == Function::kPrint || f == Function::kGetGeoCoord || is_file_function(f);
 }
 
 bool is_file_function(Function f) {
@@ -574,6 +574,7 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
       }
       if (f == Function::kP) return context.rng().unit() < as_number(args[0], n.range);
       if (is_file_function(f)) return context.file_function(f, args, n.range);
+      if (f == Function::kGetGeoCoord) return context.geo_coord(as_text(args[0]), n.range);
       if (f == Function::kPrint) {
         context.print(n.range, as_text(args[0]));
         return args[0];

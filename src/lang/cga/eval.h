@@ -94,6 +94,8 @@ class EvalContext {
   // CityEngine's comp function `comp(fe){ sel : value | ... }` (Program::comp_functions[index]):
   // one value per component of the current shape.
   virtual Value comp_function(std::uint32_t index, Range range) = 0;
+  // getGeoCoord(x | y | lon | lat) of the current shape's scope origin.
+  virtual double geo_coord(const std::string& which, Range range) = 0;
   // print() used as a function: the text goes where the print operation's lines go.
   virtual void print(Range range, const std::string& text) = 0;
   // A run-time warning at `range` (an array index out of range).

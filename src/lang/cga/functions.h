@@ -110,6 +110,8 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"readStringTable", 1, 1, "s", "a CSV file (asset search) as a 2-D string[]"},
     {"readFloatTable", 1, 1, "s", "a CSV file as a 2-D float[] (NaN where a cell is no number)"},
     {"print", 1, 1, "v", "prints the value to stderr, as the print operation does, and returns it"},
+    {"getGeoCoord", 1, 1, "w",
+     "the scope origin's x or y in the scene CRS, or its lon or lat (WGS 84 degrees)"},
 };
 
 // Shape attributes: `Shape.sx`, `Scope.sx` (the paper writes Shape., CityEngine scope.; both

@@ -128,8 +128,8 @@ TEST(CityEngineDialect, ChecksWhatTheDialectAdds) {
   EXPECT_EQ(check_text("Lot --> taper(5) A.\n"),
             "t.cga:1:9: error[CGA901]: CityEngine operation 'taper' is not supported\n");
   EXPECT_EQ(check_text("Lot --> envelope(world.up, 30, 12, 45) A.\n"), "");  // a registry op now
-  EXPECT_EQ(check_text("attr y = getGeoCoord(lat)\nLot --> print(y) A.\n"),
-            "t.cga:1:10: error[CGA902]: CityEngine function 'getGeoCoord' is not supported\n");
+  EXPECT_EQ(check_text("attr y = readTextFile(\"a.txt\")\nLot --> print(y) A.\n"),
+            "t.cga:1:10: error[CGA902]: CityEngine function 'readTextFile' is not supported\n");
   EXPECT_EQ(check_text("Lot --> softenNormals(30) A.\n"),
             "t.cga:1:9: warning[CGA903]: CityEngine operation 'softenNormals' is not supported "
             "yet; it is skipped (the model lacks only that detail)\n");
