@@ -576,15 +576,18 @@ std::vector<Operation> scope_operations() {
                    "are read in any case)",
                    "yup", {"yup", "zup"}),
         enum_param("face",
-                   "face index N (0-based), the largest face, any face, or the world.lowest one",
-                   "0", {std::string(kIndexChoice), "largest", "any", "world.lowest"}),
+                   "face index N (0-based), the largest face, any face, the world.lowest one, or "
+                   "auto (CityEngine 2011's word: the largest face and its longest edge)",
+                   "0", {std::string(kIndexChoice), "largest", "any", "world.lowest", "auto"}),
         enum_param("edge",
                    "edge index N of that face (0-based, from its loop), the longest edge, or the "
                    "world.lowest one",
                    "0", {std::string(kIndexChoice), "longest", "world.lowest"})},
        [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+         const bool automatic = a.string("face") == "auto";
          return align_scope_to_geometry(t, id, a.string("up") == "zup" ? Axis::kZ : Axis::kY,
-                                        pick_from(a.string("face")), pick_from(a.string("edge")));
+                                        pick_from(automatic ? "largest" : a.string("face")),
+                                        pick_from(automatic ? "longest" : a.string("edge")));
        }});
   ops.push_back({"rotateScope",
                  "Turns only the scope about its own x, then y, then z axis (degrees), then "

@@ -195,6 +195,10 @@ void Checker::check_identifier(const Expr& expr, ExprRole role) {
   }
   if (known_.count(expr.text) || role == ExprRole::kBareWord) return;
   if (cityengine() && expr.text == "seedian") return;  // the shape's seed (compile.cc)
+  if (cityengine()) {  // a built-in function without arguments, called without parentheses
+    const FunctionInfo* info = find_function(expr.text);
+    if (info != nullptr && signature_accepts(info->signature, 0)) return;
+  }
   if (is_shape_object(expr.text)) {
     error("CGA322", "'" + expr.text + "' needs a member, e.g. '" + expr.text + ".sx'", expr.range);
     return;
@@ -215,6 +219,7 @@ void Checker::check_member(const Expr& expr) {
     return;
   }
   if (cityengine() && function(dotted_name(expr), 0) != nullptr) return;  // imported constant
+  if (cityengine() && dotted_name(expr) == "initialShape.startRule") return;
   if (cityengine() && dotted_name(expr).starts_with("initialShape.origin.p") &&
       dotted_name(expr).size() == 22) {
     return;  // the lot's origin (compile.cc)
@@ -233,6 +238,7 @@ void Checker::check_member(const Expr& expr) {
     }
   }
   if (cityengine() && object.kind == ExprKind::kIdent && object.text == "geometry") {
+    if (is_uv_extent(expr.text)) return;  // geometry.uMin ..: uv set 0 (compile.cc)
     error("CGA321", "unknown function 'geometry." + expr.text + "'", expr.range);
     return;
   }
@@ -341,9 +347,31 @@ void Checker::check_occlusion_query(const Expr& expr) {
   if (count == 2) check_expr(*expr.operands[2]);
 }
 
+bool Checker::is_uv_extent(std::string_view name) {
+  return name == "du" || name == "dv" || name == "uMin" || name == "uMax" || name == "vMin" ||
+         name == "vMax";
+}
+
 void Checker::check_call(const Expr& expr) {
   if (check_user_call(expr)) return;
   const Expr& callee = *expr.operands[0];
+  if (cityengine() && callee.kind == ExprKind::kMember && callee.operands[0]->text == "geometry" &&
+      is_uv_extent(callee.text)) {
+    // geometry.du(uvSet, unitSpace | uvSpace)
+    const std::size_t n = expr.operands.size() - 1;
+    if (n > 2) {
+      error("CGA312", "'geometry." + callee.text + "' expects at most 2 arguments", expr.range);
+    }
+    if (n >= 1) check_expr(*expr.operands[1]);
+    if (n == 2) {
+      const std::string space = dotted_name(*expr.operands[2]);
+      if (space != "unitSpace" && space != "uvSpace") {
+        error("CGA315", "the space of 'geometry." + callee.text + "' is unitSpace or uvSpace",
+              expr.operands[2]->range);
+      }
+    }
+    return;
+  }
   if (const shape::GeometryQueryInfo* query = cityengine() ? geometry_query_of(callee) : nullptr) {
     check_geometry_call(expr, *query);
     return;

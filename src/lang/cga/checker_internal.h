@@ -83,6 +83,8 @@ class Checker {
   void check_size_keys(const Item& item, const std::vector<Branch>& branches);
   void check_branch_items(const Branch& branch);
 
+  // CityEngine's geometry.du, dv, uMin, uMax, vMin, vMax (the names after "geometry.").
+  static bool is_uv_extent(std::string_view name);
   // ---- checker_cityengine.cc (CityEngine's dialect: functions, parameters, chains, annotations)
   bool cityengine() const { return grammar_.dialect == Dialect::kCityEngine; }
   void declare_functions();

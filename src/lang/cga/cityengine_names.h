@@ -43,12 +43,11 @@ inline constexpr std::string_view kUnsupportedOperations[] = {
 
 // Functions of CityEngine that Insula does not evaluate yet: error CGA902.
 inline constexpr std::string_view kUnsupportedFunctions[] = {
-    "filesSearch",      "assetBestSize",   "assetBestRatio", "assetFitSize",
-    "assetsSortSize",   "assetsSortRatio", "imageBestRatio", "assetApproxSize",
-    "assetApproxRatio", "contextCompare",  "contextCount",   "getObjectAttr",
-    "readTextFile",     "sortRowIndices",  "setElems",       "isTagged",
-    "geometry.du",      "geometry.dv",     "geometry.uMin",  "geometry.uMax",
-    "geometry.vMin",    "geometry.vMax",   "isNull",         "hash",
+    "filesSearch",    "assetBestSize",   "assetBestRatio",  "assetFitSize",
+    "assetsSortSize", "assetsSortRatio", "assetApproxSize", "assetApproxRatio",
+    "contextCompare", "contextCount",    "getObjectAttr",   "readTextFile",
+    "sortRowIndices", "setElems",        "isTagged",        "isNull",
+    "hash",
 };
 
 constexpr bool contains(const auto& table, std::string_view name) {

@@ -109,6 +109,7 @@ constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
     {"fileRandom", Function::kFileRandom},
     {"assetInfo", Function::kAssetInfo},
     {"imageInfo", Function::kImageInfo},
+    {"imageBestRatio", Function::kImageBestRatio},
     {"size", Function::kSize},
     {"nRows", Function::kNRows},
     {"nColumns", Function::kNColumns},
@@ -124,6 +125,7 @@ constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
     {"readStringTable", Function::kReadStringTable},
     {"readFloatTable", Function::kReadFloatTable},
     {"print", Function::kPrint},
+    {"listTerminate", Function::kListTerminate},
     {"getGeoCoord", Function::kGetGeoCoord},
 };
 
@@ -149,6 +151,17 @@ std::optional<ShapeAttr> initial_shape_part(const std::string& name) {
   if (name == "initialShape.origin.px") return ShapeAttr::kInitialPx;
   if (name == "initialShape.origin.py") return ShapeAttr::kInitialPy;
   if (name == "initialShape.origin.pz") return ShapeAttr::kInitialPz;
+  return std::nullopt;
+}
+
+// geometry.du, dv (extent of the uv set along u or v) and uMin .. vMax: the codes of
+// EvalContext::uv_extent.
+std::optional<std::uint8_t> uv_extent_code(const std::string& name) {
+  static constexpr std::string_view kNames[] = {"geometry.du",   "geometry.dv",   "geometry.uMin",
+                                                "geometry.uMax", "geometry.vMin", "geometry.vMax"};
+  for (std::size_t i = 0; i < std::size(kNames); ++i) {
+    if (name == kNames[i]) return static_cast<std::uint8_t>(i);
+  }
   return std::nullopt;
 }
 
@@ -292,6 +305,19 @@ class Compiler {
           return add(ENode{ECode::kCall, 0, fn, e.range, {}});
         }
         const std::uint32_t a = attr_index(e.text);
+        if (a == kNoExpr && program_->cityengine) {
+          // CityEngine calls a built-in function without arguments written without parentheses
+          // (`~(rand)` in its 2011 International City rules).
+          const FunctionInfo* info = find_function(e.text);
+          if (info != nullptr && signature_accepts(info->signature, 0)) {
+            for (const auto& [name, code] : kFunctionCodes) {
+              if (name == e.text) {
+                return fold(
+                    ENode{ECode::kFunction, 0, static_cast<std::uint32_t>(code), e.range, {}});
+              }
+            }
+          }
+        }
         if (a == kNoExpr) {
           error("CGA501", "unknown attribute '" + e.text + "'", e.range);
           return constant(Value{}, e.range);
@@ -464,6 +490,18 @@ class Compiler {
     if (const shape::GeometryQueryInfo* query = geometry_query_of(e)) {
       return geometry(*query, nullptr, e.range);
     }
+    if (const std::optional<std::uint8_t> uv = uv_extent_code(dotted_name(e));
+        uv && program_->cityengine) {  // geometry.uMin: uv set 0, in uv space
+      return add(ENode{ECode::kFunction,
+                       *uv,
+                       static_cast<std::uint32_t>(Function::kUvExtent),
+                       e.range,
+                       {constant(0.0, e.range), constant(0.0, e.range)}});
+    }
+    if (program_->cityengine && dotted_name(e) == "initialShape.startRule") {
+      return add(ENode{
+          ECode::kFunction, 0, static_cast<std::uint32_t>(Function::kStartRule), e.range, {}});
+    }
     if (const std::optional<ShapeAttr> part = initial_shape_part(dotted_name(e))) {
       return add(ENode{ECode::kShapeAttr, 0, static_cast<std::uint32_t>(*part), e.range, {}});
     }
@@ -496,6 +534,17 @@ class Compiler {
     const std::size_t argc = e.operands.size() - 1;
     if (const shape::GeometryQueryInfo* query = geometry_query_of(callee); query && argc <= 1) {
       return geometry(*query, argc == 1 ? e.operands[1].get() : nullptr, e.range);
+    }
+    if (const std::optional<std::uint8_t> uv = uv_extent_code(dotted_name(callee));
+        uv && program_->cityengine && argc <= 2) {
+      // geometry.du(uvSet, unitSpace | uvSpace): the space word is compiled to 1 or 0.
+      const std::uint32_t set = argc >= 1 ? expr(*e.operands[1]) : constant(0.0, e.range);
+      const bool unit = argc == 2 && dotted_name(*e.operands[2]) == "unitSpace";
+      return add(ENode{ECode::kFunction,
+                       *uv,
+                       static_cast<std::uint32_t>(Function::kUvExtent),
+                       e.range,
+                       {set, constant(unit ? 1.0 : 0.0, e.range)}});
     }
     if (callee.kind == ExprKind::kIdent && callee.text == "convert" && program_->cityengine &&
         (argc == 7 || argc == 4)) {

@@ -140,6 +140,8 @@ enum class Function : std::uint8_t {
   kFileRandom,
   kAssetInfo,
   kImageInfo,
+  kImageBestRatio,  // CityEngine's imageBestRatio(query, axes): the image shaped most like the
+                    // scope
   // CityEngine's array functions (eval_arrays.cc)
   kSize,
   kNRows,
@@ -157,7 +159,12 @@ enum class Function : std::uint8_t {
   kReadFloatTable,
   kPrint,        // CityEngine's print() as a function: prints its argument and returns it
   kGetGeoCoord,  // CityEngine's getGeoCoord(x | y | lon | lat) of the scope origin
-  kRange,        // the colon operator `a:b`, `a:s:b` (no name: only inside `[ ]`)
+  // CityEngine's geometry.du/dv(uvSet, unitSpace | uvSpace) and geometry.uMin/uMax/vMin/vMax
+  // (uv set 0): kids are the set and 1 for unitSpace; ENode::op says which (UvExtent).
+  kUvExtent,
+  kStartRule,      // CityEngine's initialShape.startRule: the start rule's name
+  kListTerminate,  // the utility library's listTerminate: a string list ended by ';'
+  kRange,          // the colon operator `a:b`, `a:s:b` (no name: only inside `[ ]`)
 };
 
 // kMinimumDistance: CityEngine's minimumDistance(), a number where the others are bools.

@@ -12,6 +12,7 @@
 #include "lang/cga/colors.h"
 #include "shape/query.h"
 #include "shape/shape_tree.h"
+#include "shape/uv_map.h"
 
 namespace insula::lang::cga::detail {
 
@@ -231,6 +232,42 @@ double box_distance(const Scope& a, const Scope& b) {
 
 }  // namespace
 
+// CityEngine's geometry.du .. vMax on the shape's uv set (shape/uv_map.h: an affine projection
+// of the world positions); a shape without the set measures 0, as one without texture
+// coordinates does in CityEngine.
+double Engine::uv_extent(std::uint8_t which, int set, bool unit_space) {
+  const std::string name = shape::uv_set_attribute(set);
+  const std::vector<Value> state = state_values(*cur_);
+  std::optional<shape::UvMap> map;
+  for (std::size_t k = 0; k < state.size(); ++k) {
+    if (program_.attrs[program_.state_attrs[k]].name == name) {
+      map = shape::decode_uv_map(to_shape(state[k]));
+    }
+  }
+  const Materialized m = materialize(out_.geometry[cur_->geometry], cur_->scope.size);
+  if (!map || !m.mesh) return 0;
+  std::vector<Vec3> points;
+  for (const Vec3& p : m.mesh->positions()) points.push_back(cur_->scope.to_world(p));
+  const std::optional<shape::UvRange> range = shape::uv_range(*map, points);
+  if (!range) return 0;
+  switch (which) {
+    case 0:  // du: along u, in meters when unitSpace (u grows by |du| per meter)
+      return (range->max.x - range->min.x) /
+             (unit_space && length(map->du) > 0 ? length(map->du) : 1.0);
+    case 1:
+      return (range->max.y - range->min.y) /
+             (unit_space && length(map->dv) > 0 ? length(map->dv) : 1.0);
+    case 2:
+      return range->min.x;
+    case 3:
+      return range->max.x;
+    case 4:
+      return range->min.y;
+    default:
+      return range->max.y;
+  }
+}
+
 // CityEngine's getGeoCoord: the scope origin in the scene CRS (the lots' local meters plus their
 // origin), or in WGS 84 through the scene's CRS.
 double Engine::geo_coord(const std::string& which, Range range) {
@@ -267,6 +304,36 @@ double Engine::minimum_distance(OcclusionTarget target, const std::string& label
   return best;
 }
 
+// CityEngine's imageBestRatio(query, axes): the found image whose width / height ratio is nearest
+// (in log scale) the scope's size along the first axis over the second.
+std::string Engine::best_ratio_image(const std::string& query, const std::string& axes,
+                                     Range range) {
+  if (axes.size() != 2 || axes.find_first_not_of("xyz") != std::string::npos) {
+    throw EvalError{range, "imageBestRatio's axes are two of x, y, z (\"yx\"), got '" + axes + "'"};
+  }
+  const auto size = [&](char c) {
+    return shape_attribute(c == 'x' ? ShapeAttr::kSx : c == 'y' ? ShapeAttr::kSy : ShapeAttr::kSz);
+  };
+  const double want = std::log(std::max(size(axes[0]), 1e-9) / std::max(size(axes[1]), 1e-9));
+  std::string error;
+  const std::string list = options_.files->search(query, error);
+  if (!error.empty()) throw EvalError{range, error};
+  std::string best;
+  double best_miss = std::numeric_limits<double>::infinity();
+  for (std::size_t begin = 0; begin < list.size();) {
+    std::size_t end = list.find(';', begin);
+    if (end == std::string::npos) end = list.size();
+    const std::string image = list.substr(begin, end - begin);
+    begin = end + 1;
+    const std::optional<double> w = options_.files->image_info(image, "sx", error);
+    const std::optional<double> h = options_.files->image_info(image, "sy", error);
+    if (image.empty() || !w || !h || !(*w > 0) || !(*h > 0)) continue;
+    const double miss = std::fabs(std::log(*w / *h) - want);
+    if (miss < best_miss) best_miss = miss, best = image;
+  }
+  return best;
+}
+
 Value Engine::file_function(Function f, const std::vector<Value>& args, Range range) {
   const FileQueries* files = options_.files;
   const std::string first = as_text(args[0]);
@@ -290,6 +357,8 @@ Value Engine::file_function(Function f, const std::vector<Value>& args, Range ra
       if (!error.empty()) throw EvalError{range, error};
       return list;
     }
+    case Function::kImageBestRatio:
+      return best_ratio_image(first, as_text(args[1]), range);
     case Function::kFileRandom: {
       std::string pick = files->random(first, rng_.unit(), error);
       if (!error.empty()) throw EvalError{range, error};

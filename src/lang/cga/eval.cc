@@ -181,12 +181,13 @@ std::optional<double> ieee_math(Function f, const std::vector<Value>& args) {
 
 bool is_random(Function f) {
   return f == Function::kRand || f == Function::kP || f == Function::kListRandom ||
-         f == Function::kPrint || f == Function::kGetGeoCoord || is_file_function(f);
+         f == Function::kPrint || f == Function::kGetGeoCoord || f == Function::kUvExtent ||
+         f == Function::kStartRule || is_file_function(f);
 }
 
 bool is_file_function(Function f) {
   return f == Function::kFileExists || f == Function::kFileSearch || f == Function::kFileRandom ||
-         f == Function::kAssetInfo || f == Function::kImageInfo ||
+         f == Function::kAssetInfo || f == Function::kImageInfo || f == Function::kImageBestRatio ||
          f == Function::kReadStringTable || f == Function::kReadFloatTable;
 }
 
@@ -292,6 +293,11 @@ Value string_function(Function f, const std::vector<Value>& args, Range range) {
     case Function::kFileDirectory:
     case Function::kFileExtension:
       return path_part(f, text(0));
+    case Function::kListTerminate: {
+      std::string list = text(0);
+      if (!list.empty() && list.back() != ';') list += ';';
+      return list;
+    }
     case Function::kGetRange: {  // CityEngine's utility library: getRange("a_f3_t2", "f", "_t")
       const std::string s = text(0);
       const std::string start = text(1);
@@ -421,6 +427,7 @@ Value apply_function(Function f, const std::vector<Value>& args, Range range) {
     case Function::kGetPrefix:
     case Function::kGetSuffix:
     case Function::kGetRange:
+    case Function::kListTerminate:
     case Function::kFileName:
     case Function::kFileBasename:
     case Function::kFileDirectory:
@@ -575,6 +582,11 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
       if (f == Function::kP) return context.rng().unit() < as_number(args[0], n.range);
       if (is_file_function(f)) return context.file_function(f, args, n.range);
       if (f == Function::kGetGeoCoord) return context.geo_coord(as_text(args[0]), n.range);
+      if (f == Function::kStartRule) return std::string(program.symbol_name(program.start));
+      if (f == Function::kUvExtent) {
+        return context.uv_extent(n.op, static_cast<int>(as_number(args[0], n.range)),
+                                 as_bool(args[1], n.range));
+      }
       if (f == Function::kPrint) {
         context.print(n.range, as_text(args[0]));
         return args[0];

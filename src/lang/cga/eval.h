@@ -94,6 +94,9 @@ class EvalContext {
   // CityEngine's comp function `comp(fe){ sel : value | ... }` (Program::comp_functions[index]):
   // one value per component of the current shape.
   virtual Value comp_function(std::uint32_t index, Range range) = 0;
+  // geometry.du/dv/uMin/uMax/vMin/vMax (`which` 0..5) of uv set `set`; du and dv in meters
+  // when `unit_space`. 0 when the shape has no such set.
+  virtual double uv_extent(std::uint8_t which, int set, bool unit_space) = 0;
   // getGeoCoord(x | y | lon | lat) of the current shape's scope origin.
   virtual double geo_coord(const std::string& which, Range range) = 0;
   // print() used as a function: the text goes where the print operation's lines go.

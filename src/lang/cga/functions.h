@@ -92,6 +92,9 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"fileRandom", 1, 1, "s", "one matching file, drawn from the shape's seeded generator"},
     {"assetInfo", 2, 2, "sw", "size (sx sy sz) or lowest corner (tx ty tz) of an asset"},
     {"imageInfo", 2, 2, "sw", "width (sx) or height (sy) of an image in pixels"},
+    {"imageBestRatio", 2, 2, "sw",
+     "of the images a search finds, the one whose width / height is nearest the scope's along "
+     "two axes (\"xy\", \"yx\", \"xz\", ...); \"\" when none"},
     // CityEngine's arrays (float[], bool[], string[]; docs/cga-cityengine.md, "Arrays").
     {"size", 1, 1, "v", "number of elements of an array"},
     {"nRows", 1, 1, "v", "number of rows of an array"},
@@ -110,6 +113,7 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"readStringTable", 1, 1, "s", "a CSV file (asset search) as a 2-D string[]"},
     {"readFloatTable", 1, 1, "s", "a CSV file as a 2-D float[] (NaN where a cell is no number)"},
     {"print", 1, 1, "v", "prints the value to stderr, as the print operation does, and returns it"},
+    {"listTerminate", 1, 1, "s", "a string list ended by ';' (unchanged if it is, or empty)"},
     {"getGeoCoord", 1, 1, "w",
      "the scope origin's x or y in the scene CRS, or its lon or lat (WGS 84 degrees)"},
 };

@@ -169,6 +169,14 @@ std::vector<Annotation> Parser::ce_annotations() {
           advance();
         }
         a.keys.push_back(std::move(key));
+        // @Handle(shape=Post*, ...): a shape name pattern, kept as its text.
+        if (at(Tok::kIdent) && at(Tok::kStar, 1) && (at(Tok::kComma, 2) || at(Tok::kRParen, 2))) {
+          const Token& name = advance();
+          ExprPtr pattern = make(ExprKind::kString, {name.range.begin, advance().range.end});
+          pattern->text = name.text + "*";
+          a.args.push_back(std::move(pattern));
+          continue;
+        }
         a.args.push_back(parse_expr());
       } while (accept(Tok::kComma));
       expect(Tok::kRParen, " to close the annotation's arguments");
