@@ -566,6 +566,31 @@ TEST(CityEngineDialect, UtilityFunctionsAndShapeValues) {
             "");  // an unknown ramp is known only when derived
 }
 
+TEST(CityEngineDialect, OlderFormsAndUvExtents) {
+  // CityEngine 2011's forms (rand without parentheses, alignScopeToGeometry(yUp, auto)), an
+  // enum argument held in a constant, initialShape.startRule, listTerminate, and
+  // geometry.du/dv/uMin/vMax on a projected uv set (2 m per repeat on a 10 x 4 m facade).
+  auto p = compile_text(
+      "version \"2011.1\"\nconst up = \"zUp\"\n"
+      "@StartRule\nLot --> report(\"r\", rand < 1) print(initialShape.startRule) "
+      "print(listTerminate(\"a;b\")) alignScopeToGeometry(yUp, auto) extrude(4)\n"
+      "  comp(f) { front : Facade }\n"
+      "Facade --> alignScopeToGeometry(up, 0, 0) setupProjection(0, scope.xy, 2, 1) projectUV(0)\n"
+      "  report(\"du\", geometry.du(0, uvSpace)) report(\"du m\", geometry.du(0, unitSpace))\n"
+      "  report(\"vmax\", geometry.vMax) report(\"none\", geometry.dv(1, uvSpace)) F.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 6)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_EQ(r[0].reports.at("r").sum, 1);
+  ASSERT_EQ(r[0].prints.size(), 2U);
+  EXPECT_EQ(r[0].prints[0], "test.cga:4: print: Lot");
+  EXPECT_EQ(r[0].prints[1], "test.cga:4: print: a;b;");
+  EXPECT_NEAR(r[0].reports.at("du").sum, 5, 1e-9);
+  EXPECT_NEAR(r[0].reports.at("du m").sum, 10, 1e-9);
+  EXPECT_NEAR(r[0].reports.at("vmax").sum, 4, 1e-9);
+  EXPECT_EQ(r[0].reports.at("none").sum, 0);  // no uv set 1
+}
+
 TEST(CityEngineDialect, ConvertBetweenFrames) {
   // A 10 x 8 lot moved 3 m up: the scope origin in world coordinates (x east, y up, z south;
   // the volume's z points south, so its origin is on the lot's north edge, z = -8), a point 2 m
