@@ -167,14 +167,16 @@ TEST(AlignScopeToGeometry, BadPicksAreErrors) {
             "alignScopeToGeometry: edge index 4 is out of range (face 0 has 4 edges)");
   EXPECT_EQ(
       registry().run(tree, box, "alignScopeToGeometry", {{"face", std::string("biggest")}}).error,
-      "alignScopeToGeometry: parameter 'face' must be one of N, largest, any, world.lowest; got "
-      "'biggest'");
-  EXPECT_EQ(registry().run(tree, box, "alignScopeToGeometry", {{"face", -1.0}}).error,
-            "alignScopeToGeometry: parameter 'face' expects one of N, largest, any, world.lowest; "
-            "got a number");
-  EXPECT_EQ(registry().run(tree, box, "alignScopeToGeometry", {{"face", std::string("N")}}).error,
-            "alignScopeToGeometry: parameter 'face' must be one of N, largest, any, world.lowest; "
-            "got 'N'");
+      "alignScopeToGeometry: parameter 'face' must be one of N, largest, any, world.lowest, auto; "
+      "got 'biggest'");
+  EXPECT_EQ(
+      registry().run(tree, box, "alignScopeToGeometry", {{"face", -1.0}}).error,
+      "alignScopeToGeometry: parameter 'face' expects one of N, largest, any, world.lowest, auto; "
+      "got a number");
+  EXPECT_EQ(
+      registry().run(tree, box, "alignScopeToGeometry", {{"face", std::string("N")}}).error,
+      "alignScopeToGeometry: parameter 'face' must be one of N, largest, any, world.lowest, auto; "
+      "got 'N'");
   const ShapeId point = tree.add_root(scope);
   EXPECT_EQ(registry().run(tree, point, "alignScopeToGeometry", {}).error,
             "alignScopeToGeometry: the shape has no faces");

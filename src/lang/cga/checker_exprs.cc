@@ -335,7 +335,11 @@ void Checker::check_occlusion_query(const Expr& expr) {
           expr.range);
     return;
   }
-  if (count >= 1) {
+  const Expr& first = count >= 1 ? *expr.operands[1] : expr;
+  const bool computed = count >= 1 && first.kind == ExprKind::kCall && first.operands.size() == 2 &&
+                        first.operands[0]->text == "sel";
+  if (computed) check_expr(*first.operands[1]);  // sel(attr): the word when derived
+  if (count >= 1 && !computed) {
     const std::string target = dotted_name(*expr.operands[1]);
     if (target != "intra" && target != "inter" && target != "all") {
       error("CGA315",

@@ -854,14 +854,25 @@ class Compiler {
   std::uint32_t occlusion_query(OcclusionRelation relation, const Expr& e) {
     program_->uses_occlusion_queries = true;
     ENode node{ECode::kOcclusion, static_cast<std::uint8_t>(relation), 0, e.range, {}};
+    const Expr* computed = nullptr;
     if (e.operands.size() > 1) {
       const std::string target = dotted_name(*e.operands[1]);
       node.a = static_cast<std::uint32_t>(target == "intra"   ? OcclusionTarget::kIntra
                                           : target == "inter" ? OcclusionTarget::kInter
                                                               : OcclusionTarget::kAll);
+      computed = sel_argument(*e.operands[1]);
+      if (computed != nullptr) node.a = static_cast<std::uint32_t>(OcclusionTarget::kComputed);
     }
     if (e.operands.size() > 2) node.kids.push_back(expr(*e.operands[2]));
+    if (computed != nullptr) node.kids.push_back(expr(*computed));
     return add(std::move(node));
+  }
+
+  // The argument of CityEngine's `sel(expr)` (a text made a selector word), else null.
+  static const Expr* sel_argument(const Expr& e) {
+    if (e.kind != ExprKind::kCall || e.operands.size() != 2) return nullptr;
+    const Expr& callee = *e.operands[0];
+    return callee.kind == ExprKind::kIdent && callee.text == "sel" ? e.operands[1].get() : nullptr;
   }
 
   static bool pivot_word(const Expr& e) {

@@ -169,7 +169,8 @@ enum class Function : std::uint8_t {
 
 // kMinimumDistance: CityEngine's minimumDistance(), a number where the others are bools.
 enum class OcclusionRelation : std::uint8_t { kInside, kOverlaps, kTouches, kMinimumDistance };
-enum class OcclusionTarget : std::uint8_t { kAll, kIntra, kInter };
+// kComputed: `sel(expr)`, the word computed when derived (ENode::kids.back()).
+enum class OcclusionTarget : std::uint8_t { kAll, kIntra, kInter, kComputed };
 
 struct ENode {
   ECode code = ECode::kConst;

@@ -629,9 +629,21 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
     }
     case ECode::kOcclusion: {
       const auto relation = static_cast<OcclusionRelation>(n.op);
-      const auto target = static_cast<OcclusionTarget>(n.a);
+      auto target = static_cast<OcclusionTarget>(n.a);
+      const bool computed = target == OcclusionTarget::kComputed;
+      if (computed) {  // sel(expr): "intra", "inter" or "all"
+        const std::string word = as_text(evaluate(program, n.kids.back(), context));
+        if (word != "intra" && word != "inter" && word != "all") {
+          fail(n.range,
+               "the target of an occlusion query is intra, inter or all, got '" + word + "'");
+        }
+        target = word == "intra"   ? OcclusionTarget::kIntra
+                 : word == "inter" ? OcclusionTarget::kInter
+                                   : OcclusionTarget::kAll;
+      }
+      const std::size_t labels = n.kids.size() - (computed ? 1 : 0);
       const std::string label =
-          n.kids.empty() ? std::string() : as_text(evaluate(program, n.kids[0], context));
+          labels == 0 ? std::string() : as_text(evaluate(program, n.kids[0], context));
       if (relation == OcclusionRelation::kMinimumDistance) {
         return context.minimum_distance(target, label);
       }

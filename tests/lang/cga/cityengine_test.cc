@@ -447,13 +447,16 @@ TEST(CityEngineDialect, MinimumDistanceToLabelledShapes) {
       "Lot --> split(x) { 4 : extrude(5) label(\"hall\") Hall. | 2 : NIL | 1 : Box | 1 : NIL "
       "| 1 : Box | ~1 : NIL }\n"
       "Box --> extrude(1) report(\"d\", minimumDistance(intra, \"hall\"))\n"
-      "  report(\"none\", isinf(minimumDistance(all, \"shed\"))) B.\n");
+      "  report(\"none\", isinf(minimumDistance(all, \"shed\")))\n"
+      "  report(\"sel\", minimumDistance(sel(target), \"hall\")) B.\n"
+      "attr target = \"intra\"\n");
   ASSERT_TRUE(p);
   const auto r = derive_all(*p, {rectangle_lot(12, 8)});
   ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
   EXPECT_EQ(r[0].reports.at("d").count, 2U);
   EXPECT_NEAR(r[0].reports.at("d").sum, 2 + 4, 1e-9);
   EXPECT_EQ(r[0].reports.at("none").sum, 2);
+  EXPECT_NEAR(r[0].reports.at("sel").sum, 2 + 4, 1e-9);  // sel(attr): the target computed
 }
 
 TEST(CityEngineDialect, OcclusionQueriesWithLabels) {
