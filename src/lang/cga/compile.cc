@@ -110,6 +110,7 @@ constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
     {"assetInfo", Function::kAssetInfo},
     {"imageInfo", Function::kImageInfo},
     {"imageBestRatio", Function::kImageBestRatio},
+    {"imagesSortRatio", Function::kImagesSortRatio},
     {"size", Function::kSize},
     {"nRows", Function::kNRows},
     {"nColumns", Function::kNColumns},

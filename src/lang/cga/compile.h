@@ -140,8 +140,10 @@ enum class Function : std::uint8_t {
   kFileRandom,
   kAssetInfo,
   kImageInfo,
-  kImageBestRatio,  // CityEngine's imageBestRatio(query, axes): the image shaped most like the
-                    // scope
+  kImageBestRatio,
+  kImagesSortRatio,  // CityEngine's imagesSortRatio(list, axes): that list, best ratio first  //
+                     // CityEngine's imageBestRatio(query, axes): the image shaped most like the
+                     // scope
   // CityEngine's array functions (eval_arrays.cc)
   kSize,
   kNRows,

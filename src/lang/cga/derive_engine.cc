@@ -304,34 +304,35 @@ double Engine::minimum_distance(OcclusionTarget target, const std::string& label
   return best;
 }
 
-// CityEngine's imageBestRatio(query, axes): the found image whose width / height ratio is nearest
-// (in log scale) the scope's size along the first axis over the second.
-std::string Engine::best_ratio_image(const std::string& query, const std::string& axes,
-                                     Range range) {
+// CityEngine's imagesSortRatio(list, axes): the images of a string list, nearest first in
+// width / height to the scope's size along the first axis over the second (in log scale);
+// imageBestRatio(query, axes) is the first of the images a search finds.
+std::string Engine::images_by_ratio(const std::string& list, const std::string& axes, Range range) {
   if (axes.size() != 2 || axes.find_first_not_of("xyz") != std::string::npos) {
-    throw EvalError{range, "imageBestRatio's axes are two of x, y, z (\"yx\"), got '" + axes + "'"};
+    throw EvalError{range,
+                    "the axes of an image ratio are two of x, y, z (\"yx\"), got '" + axes + "'"};
   }
   const auto size = [&](char c) {
     return shape_attribute(c == 'x' ? ShapeAttr::kSx : c == 'y' ? ShapeAttr::kSy : ShapeAttr::kSz);
   };
   const double want = std::log(std::max(size(axes[0]), 1e-9) / std::max(size(axes[1]), 1e-9));
+  std::vector<std::pair<double, std::string>> ranked;
   std::string error;
-  const std::string list = options_.files->search(query, error);
-  if (!error.empty()) throw EvalError{range, error};
-  std::string best;
-  double best_miss = std::numeric_limits<double>::infinity();
   for (std::size_t begin = 0; begin < list.size();) {
     std::size_t end = list.find(';', begin);
     if (end == std::string::npos) end = list.size();
-    const std::string image = list.substr(begin, end - begin);
+    std::string image = list.substr(begin, end - begin);
     begin = end + 1;
     const std::optional<double> w = options_.files->image_info(image, "sx", error);
     const std::optional<double> h = options_.files->image_info(image, "sy", error);
     if (image.empty() || !w || !h || !(*w > 0) || !(*h > 0)) continue;
-    const double miss = std::fabs(std::log(*w / *h) - want);
-    if (miss < best_miss) best_miss = miss, best = image;
+    ranked.emplace_back(std::fabs(std::log(*w / *h) - want), std::move(image));
   }
-  return best;
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::string out;
+  for (const auto& entry : ranked) out.append(entry.second).append(";");
+  return out;
 }
 
 Value Engine::file_function(Function f, const std::vector<Value>& args, Range range) {
@@ -357,8 +358,14 @@ Value Engine::file_function(Function f, const std::vector<Value>& args, Range ra
       if (!error.empty()) throw EvalError{range, error};
       return list;
     }
-    case Function::kImageBestRatio:
-      return best_ratio_image(first, as_text(args[1]), range);
+    case Function::kImageBestRatio: {
+      const std::string found = files->search(first, error);
+      if (!error.empty()) throw EvalError{range, error};
+      const std::string sorted = images_by_ratio(found, as_text(args[1]), range);
+      return sorted.substr(0, sorted.find(';'));
+    }
+    case Function::kImagesSortRatio:
+      return images_by_ratio(first, as_text(args[1]), range);
     case Function::kFileRandom: {
       std::string pick = files->random(first, rng_.unit(), error);
       if (!error.empty()) throw EvalError{range, error};

@@ -146,7 +146,7 @@ class Engine final : public EvalContext {
 
   void print(Range range, const std::string& text) override;
   double geo_coord(const std::string& which, Range range) override;
-  std::string best_ratio_image(const std::string& query, const std::string& axes, Range range);
+  std::string images_by_ratio(const std::string& list, const std::string& axes, Range range);
   double uv_extent(std::uint8_t which, int set, bool unit_space) override;
   void warning(Range range, std::string message) override {
     ++warnings_[{range.begin, std::move(message)}];

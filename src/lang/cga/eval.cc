@@ -188,7 +188,8 @@ bool is_random(Function f) {
 bool is_file_function(Function f) {
   return f == Function::kFileExists || f == Function::kFileSearch || f == Function::kFileRandom ||
          f == Function::kAssetInfo || f == Function::kImageInfo || f == Function::kImageBestRatio ||
-         f == Function::kReadStringTable || f == Function::kReadFloatTable;
+         f == Function::kImagesSortRatio || f == Function::kReadStringTable ||
+         f == Function::kReadFloatTable;
 }
 
 namespace {

@@ -95,6 +95,9 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"imageBestRatio", 2, 2, "sw",
      "of the images a search finds, the one whose width / height is nearest the scope's along "
      "two axes (\"xy\", \"yx\", \"xz\", ...); \"\" when none"},
+    {"imagesSortRatio", 2, 2, "sw",
+     "a string list of images sorted by how near their width / height is the scope's along two "
+     "axes (nearest first)"},
     // CityEngine's arrays (float[], bool[], string[]; docs/cga-cityengine.md, "Arrays").
     {"size", 1, 1, "v", "number of elements of an array"},
     {"nRows", 1, 1, "v", "number of rows of an array"},

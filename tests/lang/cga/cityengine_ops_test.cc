@@ -316,6 +316,46 @@ TEST(CityEngineOps, MissingFilesAndDivisionByZeroDoNotStopTheModel) {
       << diagnostics_text(r[0]);
 }
 
+// Three images: a square, a wide and a tall one.
+struct ImageFiles final : FileQueries {
+  bool exists(const std::string&) const override { return true; }
+  std::string search(const std::string&, std::string&) const override {
+    return "a.png;b.png;c.png;";
+  }
+  std::string random(const std::string&, double, std::string&) const override { return ""; }
+  std::optional<double> asset_info(const std::string&, const std::string&,
+                                   std::string&) const override {
+    return std::nullopt;
+  }
+  std::optional<double> image_info(const std::string& name, const std::string& key,
+                                   std::string&) const override {
+    const double w = name == "b.png" ? 200 : 100;
+    const double h = name == "c.png" ? 200 : 100;
+    return key == "sx" ? w : h;
+  }
+  std::optional<std::string> read_text(const std::string&, std::string&) const override {
+    return std::nullopt;
+  }
+};
+
+TEST(CityEngineOps, ImagesByRatio) {
+  // A 20 x 10 lot: along x over z (CityEngine's lot axes) the wide image fits best, the tall
+  // one worst.
+  auto p = compile_text(
+      "version \"2019.0\"\nLot --> print(imagesSortRatio(\"a.png;b.png;c.png\", xz)) "
+      "print(imageBestRatio(\"*.png\", xz)) print(imageBestRatio(\"*.png\", zx)) X.\n");
+  ASSERT_TRUE(p);
+  ImageFiles files;
+  DeriveOptions options;
+  options.files = &files;
+  const auto r = derive_all(*p, {rectangle_lot(20, 10)}, options);
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  ASSERT_EQ(r[0].prints.size(), 3U);
+  EXPECT_EQ(r[0].prints[0], "test.cga:2: print: b.png;a.png;c.png;");
+  EXPECT_EQ(r[0].prints[1], "test.cga:2: print: b.png");
+  EXPECT_EQ(r[0].prints[2], "test.cga:2: print: c.png");
+}
+
 TEST(CityEngineOps, ConvexifyAndTrim) {
   auto p = compile_text("Lot --> convexify() extrude(3) trim() A\n");
   ASSERT_TRUE(p);
