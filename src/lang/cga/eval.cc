@@ -585,8 +585,14 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
       if (f == Function::kGetGeoCoord) return context.geo_coord(as_text(args[0]), n.range);
       if (f == Function::kStartRule) return std::string(program.symbol_name(program.start));
       if (f == Function::kUvExtent) {
-        return context.uv_extent(n.op, static_cast<int>(as_number(args[0], n.range)),
-                                 as_bool(args[1], n.range));
+        // uv sets 0..9, as the texturing operations' (checked before the cast: NaN or a huge
+        // value would make it undefined).
+        const double set = as_number(args[0], n.range);
+        if (!(set >= 0 && set <= 9) || set != std::floor(set)) {
+          fail(n.range, "a uv set is a whole number 0..9, got " +
+                            (std::isnan(set) ? std::string("NaN") : as_text(args[0])));
+        }
+        return context.uv_extent(n.op, static_cast<int>(set), as_bool(args[1], n.range));
       }
       if (f == Function::kPrint) {
         context.print(n.range, as_text(args[0]));

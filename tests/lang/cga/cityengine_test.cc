@@ -592,6 +592,15 @@ TEST(CityEngineDialect, OlderFormsAndUvExtents) {
   EXPECT_NEAR(r[0].reports.at("du m").sum, 10, 1e-9);
   EXPECT_NEAR(r[0].reports.at("vmax").sum, 4, 1e-9);
   EXPECT_EQ(r[0].reports.at("none").sum, 0);  // no uv set 1
+  // A uv set out of 0..9 (here NaN) is an error at its place, never an undefined conversion.
+  auto bad = compile_text(
+      "version \"2019.0\"\nLot --> report(\"d\", geometry.du(0 / scope.sy, uvSpace)) X.\n");
+  ASSERT_TRUE(bad);
+  const auto e = derive_all(*bad, {rectangle_lot(10, 6)});
+  EXPECT_FALSE(e[0].ok);
+  EXPECT_NE(diagnostics_text(e[0]).find("error[CGA603]: a uv set is a whole number 0..9, got NaN"),
+            std::string::npos)
+      << diagnostics_text(e[0]);
 }
 
 TEST(CityEngineDialect, ConvertBetweenFrames) {
