@@ -370,13 +370,14 @@ bool extend_registry(std::function<void(std::vector<Operation>&)> amend) {
 const Registry& registry() {
   static const Registry kRegistry = [] {
     std::vector<Operation> all;
-    for (auto* family : {&extrude_operations,   &split_operations,     &comp_operations,
-                         &transform_operations, &offset_operations,    &roof_operations,
-                         &insert_operations,    &scope_operations,     &inner_rectangle_operations,
-                         &cleanup_operations,   &primitive_operations, &convexify_operations,
-                         &component_operations, &stair_operations,     &frame_operations,
-                         &slab_operations,      &wall_operations,      &uv_operations,
-                         &scatter_operations,   &envelope_operations}) {
+    for (auto* family :
+         {&extrude_operations,   &split_operations,     &comp_operations,
+          &transform_operations, &offset_operations,    &roof_operations,
+          &insert_operations,    &scope_operations,     &inner_rectangle_operations,
+          &cleanup_operations,   &primitive_operations, &convexify_operations,
+          &component_operations, &stair_operations,     &frame_operations,
+          &slab_operations,      &wall_operations,      &uv_operations,
+          &scatter_operations,   &envelope_operations,  &insert_along_uv_operations}) {
       for (Operation& op : (*family)()) all.push_back(std::move(op));
     }
     Amendments& a = amendments();

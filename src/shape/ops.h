@@ -36,6 +36,7 @@ std::vector<Operation> convexify_operations();
 std::vector<Operation> uv_operations();        // ops_uv.cc: CityEngine's texturing operations
 std::vector<Operation> scatter_operations();   // ops_scatter.cc: CityEngine's scatter
 std::vector<Operation> envelope_operations();  // ops_envelope.cc: CityEngine's envelope
+std::vector<Operation> insert_along_uv_operations();  // ops_insert_along_uv.cc
 
 // --- extrude (ops_extrude.cc)
 // A flat shape (footprint or face) becomes a prism of `height` meters (> 0) along its normal. The
@@ -303,11 +304,14 @@ OpResult envelope(ShapeTree& tree, ShapeId id, const EnvelopeSpec& spec,
                   const Scope* object = nullptr);
 
 // --- primitives (ops_primitive.cc)
-enum class PrimitiveKind : std::uint8_t { kCube, kCylinder, kQuad };
-// Replaces the geometry by a box, an upright prism of `sides` sides or an upward rectangle (a
-// flat child). `dims` (width, height, depth; all zero: fill the scope as insert() does) in
-// CityEngine's frame: height along the up axis (a flat shape's normal).
-OpResult primitive(ShapeTree& tree, ShapeId id, PrimitiveKind kind, int sides, kernel::Vec3 dims);
+enum class PrimitiveKind : std::uint8_t { kCube, kCylinder, kQuad, kSphere, kCone, kDisk };
+// Replaces the geometry by a box, an upright prism of `sides` sides, a cone of `sides` sides, a
+// sphere of `sides` segments around and `divisions` rings from pole to pole, or an upward
+// rectangle or disk of `sides` corners (flat children). `dims` (width, height, depth; all zero:
+// fill the scope as insert() does) in CityEngine's frame: height along the up axis (a flat
+// shape's normal).
+OpResult primitive(ShapeTree& tree, ShapeId id, PrimitiveKind kind, int sides, kernel::Vec3 dims,
+                   int divisions = 0);
 
 // --- cleanupGeometry (ops_cleanup.cc)
 // kernel::cleanup with CityEngine's tolerance scale (0..1: up to 1 m, 10 degrees, 1 m²) on the
@@ -375,6 +379,10 @@ OpResult replace_with(ShapeTree& tree, ShapeId id, const kernel::Mesh& mesh, ker
 OpResult relabelled_child(ShapeTree& tree, ShapeId id, const Scope& scope,
                           std::shared_ptr<const kernel::Mesh> mesh,
                           std::shared_ptr<const kernel::Polygon> outline, std::string warning = {});
+// Asset `name` from the context's provider, or null with `error` set ("no asset provider", the
+// provider's message, or "asset 'x' not found").
+std::shared_ptr<const kernel::Mesh> find_asset(const Context& context, const std::string& name,
+                                               std::string& error);
 // Marks `id` inactive (it was replaced by its children) and returns `result`.
 OpResult finish(ShapeTree& tree, ShapeId id, OpResult result);
 

@@ -151,4 +151,15 @@ OpResult finish(ShapeTree& tree, ShapeId id, OpResult result) {
   return result;
 }
 
+std::shared_ptr<const kernel::Mesh> find_asset(const Context& context, const std::string& name,
+                                               std::string& error) {
+  if (context.assets == nullptr) {
+    error = "no asset provider";
+    return nullptr;
+  }
+  auto mesh = context.assets->find(name, error);
+  if (!mesh && error.empty()) error = "asset '" + name + "' not found";
+  return mesh;
+}
+
 }  // namespace insula::shape

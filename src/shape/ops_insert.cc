@@ -141,13 +141,9 @@ std::vector<Operation> insert_operations() {
          {},
          {}}},
        [](ShapeTree& t, ShapeId id, const Arguments& a, const Context& context) {
-         if (context.assets == nullptr) return OpResult::failure("no asset provider");
          std::string error;
-         auto mesh = context.assets->find(a.string("asset"), error);
-         if (!mesh) {
-           return OpResult::failure(error.empty() ? "asset '" + a.string("asset") + "' not found"
-                                                  : error);
-         }
+         const auto mesh = find_asset(context, a.string("asset"), error);
+         if (!mesh) return OpResult::failure(error);
          InsertOptions options;
          options.z_up = a.string("up") == "zup";
          const std::string& mode = a.string("mode");

@@ -221,21 +221,10 @@ int set_of(const Arguments& a) {
   return static_cast<int>(a.integer("uvSet"));
 }
 
-// Every attribute the texturing operations read and write: the front-ends that keep attributes
-// in a store of their own (CGA's derivation) pass these in and take them back.
-std::vector<std::string> uv_state() {
-  std::vector<std::string> names{std::string(kColormapAttribute)};
-  for (int set = 0; set < kUvSets; ++set) {
-    names.push_back(uv_set_attribute(set));
-    names.push_back(uv_projection_attribute(set));
-  }
-  return names;
-}
-
 }  // namespace
 
 std::vector<Operation> uv_operations() {
-  const std::vector<std::string> state = uv_state();
+  const std::vector<std::string> state = uv_attributes();
   std::vector<std::string> selectors;
   for (std::string_view frame : {"scope.", "world."}) {
     for (std::string_view pair : {"xy", "xz", "yx", "yz", "zx", "zy"}) {

@@ -7,6 +7,16 @@
 
 namespace insula::shape {
 
+std::vector<std::string> uv_attributes() {
+  constexpr int kUvSets = 10;  // CityEngine's uv sets 0..9
+  std::vector<std::string> names{std::string(kColormapAttribute)};
+  for (int set = 0; set < kUvSets; ++set) {
+    names.push_back(uv_set_attribute(set));
+    names.push_back(uv_projection_attribute(set));
+  }
+  return names;
+}
+
 UvMap UvMap::then(double a, double b, double c, double d, double e, double f) const {
   UvMap out;
   out.du = du * a + dv * b;

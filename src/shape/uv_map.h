@@ -11,6 +11,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "kernel/mesh.h"
 #include "kernel/transform.h"
@@ -37,6 +38,10 @@ struct UvMap {
 // The attribute names of uv set `set` (0..9) and of its projection.
 std::string uv_set_attribute(int set);
 std::string uv_projection_attribute(int set);
+// Every attribute the texturing operations read and write (the colour map, each set and its
+// projection): the front-ends that keep attributes in a store of their own (CGA's derivation)
+// pass these in and take them back (Operation::state).
+std::vector<std::string> uv_attributes();
 // The attribute CityEngine's texture() and set(material.colormap, ...) assign.
 inline constexpr std::string_view kColormapAttribute = "material.colormap";
 

@@ -498,6 +498,46 @@ TEST(Primitives, FillTheScopeOrStandInItsCentre) {
             "primitiveCylinder: parameter 'sides' must be >= 3; got 2");
 }
 
+TEST(Primitives, SphereConeAndDisk) {
+  ShapeTree tree;
+  Scope scope;
+  scope.size = {10, 10, 10};
+  const ShapeId box = tree.add_root(scope, box_mesh(scope.size, mass_box_tags()));
+  // A sphere of 8 segments and 4 bands, radius 1, standing on the box's floor in its xz centre.
+  const ShapeId ball =
+      run(tree, box, "primitiveSphere", {{"", std::int64_t{8}}, {"", std::int64_t{4}}, {"", 1.0}});
+  const kernel::Mesh& sphere = *tree[ball].mesh;
+  EXPECT_EQ(sphere.face_count(), 8U * 4U);  // two fans of triangles, two bands of quads
+  EXPECT_TRUE(kernel::is_watertight(sphere));
+  expect_near(tree[ball].scope.size, {2, 2, 2}, 1e-9);
+  expect_near(tree[ball].scope.origin, {4, 0, 4}, 1e-9);
+  // Inscribed in the unit sphere: below 4/3 pi, and near it with many faces.
+  EXPECT_LT(kernel::volume(sphere), 4.0 / 3 * std::numbers::pi);
+  const ShapeId fine = run(tree, box, "primitiveSphere",
+                           {{"", std::int64_t{64}}, {"", std::int64_t{64}}, {"", 1.0}});
+  EXPECT_NEAR(kernel::volume(*tree[fine].mesh), 4.0 / 3 * std::numbers::pi, 0.01);
+  // A square cone (4 sides) of radius 1 and height 3: a pyramid over a 2 m² square.
+  const ShapeId cone =
+      run(tree, box, "primitiveCone", {{"", std::int64_t{4}}, {"", 1.0}, {"", 3.0}});
+  EXPECT_EQ(tree[cone].mesh->face_count(), 5U);
+  EXPECT_TRUE(kernel::is_watertight(*tree[cone].mesh));
+  EXPECT_NEAR(kernel::volume(*tree[cone].mesh), 2.0 * 3 / 3, 1e-9);
+  // On a lot the cone and the sphere fill the scope and stand up.
+  const ShapeId tall =
+      run(tree, lot(tree, {{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}}), "primitiveCone");
+  expect_near(tree[tall].scope.y, {0, 0, 1});
+  expect_near(tree[tall].scope.size, {4, 4, 4}, 1e-9);
+  // A disk of 6 corners, radius 2, on the box's floor: a flat hexagon facing up.
+  const ShapeId disk = run(tree, box, "primitiveDisk", {{"", std::int64_t{6}}, {"", 2.0}});
+  ASSERT_TRUE(tree[disk].is_flat());
+  expect_near(tree[disk].scope.z, {0, 1, 0});
+  EXPECT_EQ(tree[disk].outline->outer.size(), 6U);
+  EXPECT_NEAR(kernel::area(*tree[disk].outline), 1.5 * std::sqrt(3.0) * 4, 1e-9);
+  EXPECT_GT(kernel::signed_area(tree[disk].outline->outer), 0);
+  EXPECT_EQ(registry().run(tree, box, "primitiveSphere", {{"divisions", std::int64_t{2}}}).error,
+            "primitiveSphere: parameter 'divisions' must be >= 3; got 2");
+}
+
 // A unit quad at `at` facing `n` (unit), as one face of `mesh`.
 void add_quad(kernel::Mesh& mesh, Vec3 at, Vec3 n) {
   Vec3 u =

@@ -19,11 +19,7 @@ inline constexpr std::string_view kDetailOperations[] = {
 // Operations that change geometry and are not implemented: error CGA901.
 inline constexpr std::string_view kUnsupportedOperations[] = {
     "mirrorScope",
-    "primitiveDisk",
-    "primitiveSphere",
-    "primitiveCone",
     "roofRidge",
-    "insertAlongUV",
     "footprint",
     "modify",
     "taper",

@@ -166,6 +166,16 @@ OpOutcome Engine::scale_mirrored(const State& st, std::vector<shape::ArgInput>& 
 }
 
 void Engine::to_lot_axes(std::string_view op, std::vector<shape::ArgInput>& args) {
+  if (op == "insertAlongUV") {  // scope.y (the default) is a lot's normal: Insula's scope z
+    const auto given = std::find_if(args.begin(), args.end(), [](const shape::ArgInput& a) {
+      return a.name == "heightDirection";
+    });
+    if (given == args.end()) args.push_back({"heightDirection", std::string("scope.z")});
+    if (given != args.end() && std::get<std::string>(given->value) == "scope.y") {
+      given->value = std::string("scope.z");
+    }
+    return;
+  }
   const bool moves = op == "translate";
   const bool sizes = op == "scale" || op == "mirror";
   for (const shape::ArgInput& a : args) {  // translate in the world or object frame: no change

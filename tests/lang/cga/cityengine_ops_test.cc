@@ -221,6 +221,39 @@ TEST(CityEngineOps, PrimitivesReplaceTheGeometry) {
   expect_near(c.scope.origin, {9, 1, 0}, 1e-9);
 }
 
+TEST(CityEngineOps, InsertAlongUvOnALot) {
+  // Four 3 m tiles of the unit cube along a 12 x 4 m lot, 2 m high along the lot's
+  // CityEngine y (its normal).
+  const LotResult r = derive_one(
+      "version \"2023.0\"\n"
+      "Lot --> setupProjection(0, scope.xz, 3, '1) projectUV(0)\n"
+      "        insertAlongUV(0, \"builtin:cube\", 2) A\n",
+      rectangle_lot(12, 4));
+  ASSERT_EQ(r.terminals_store.size(), 1U);
+  const Terminal& a = r.terminals_store[0];
+  const kernel::Mesh world = shape::mesh_to_world(*r.geometry[a.geometry].mesh, a.scope);
+  const kernel::Bounds3 b = world.bounds();
+  expect_near(b.min, {0, 0, 0}, 1e-9);
+  expect_near(b.max, {12, 4, 2}, 1e-9);
+  EXPECT_NEAR(kernel::volume(world), 12 * 4 * 2, 1e-6);
+}
+
+TEST(CityEngineOps, SphereConeAndDiskPrimitives) {
+  const LotResult r = derive_one(
+      "version \"2023.0\"\n"
+      "Lot --> split(x){ 4: primitiveSphere(12, 6) A | 4: primitiveCone(6) B | 4: "
+      "primitiveDisk(8, 1) C }\n",
+      rectangle_lot(12, 4));
+  ASSERT_EQ(r.terminals_store.size(), 3U);
+  const Terminal& a = r.terminals_store[0];
+  expect_near(a.scope.size, {4, 4, 4}, 1e-9);
+  EXPECT_TRUE(kernel::is_watertight(*r.geometry[a.geometry].mesh));
+  const Terminal& b = r.terminals_store[1];
+  EXPECT_EQ(r.geometry[b.geometry].mesh->face_count(), 7U);
+  const Terminal& c = r.terminals_store[2];
+  EXPECT_NEAR(flat_area(r, c), 2 * std::sqrt(2.0), 1e-9);  // an octagon of radius 1
+}
+
 TEST(CityEngineOps, CompSlopeSelectors) {
   auto p = compile_text(R"(
 Lot --> extrude(4) comp(f){ horizontal: H | vertical: V }
