@@ -21,6 +21,7 @@ ExprPtr clone(const Expr& expr) {
   copy->text = expr.text;
   copy->unary_op = expr.unary_op;
   copy->binary_op = expr.binary_op;
+  copy->elementwise = expr.elementwise;
   for (const ExprPtr& operand : expr.operands) copy->operands.push_back(clone(*operand));
   return copy;
 }

@@ -55,6 +55,7 @@ struct Expr {
   std::string text;
   UnaryOp unary_op = UnaryOp::kNot;
   BinaryOp binary_op = BinaryOp::kOr;
+  bool elementwise = false;  // CityEngine's `.==`, `.+`, ...: the operator per array element
   std::vector<std::unique_ptr<Expr>> operands;
 };
 
@@ -176,7 +177,8 @@ struct FunctionDecl {
 };
 
 // `import alias : "file.cga"` with an optional list after the path: `(a, b)` protects those
-// attributes from the importer's values, `(a = expr)` overrides them, `()` protects all.
+// attributes from the importer's values, `(a = expr)` overrides them, `()` protects all,
+// `(Name --> ...)` redefines a rule.
 struct ImportDecl {
   Range range;
   std::string alias;
@@ -186,6 +188,9 @@ struct ImportDecl {
   bool has_list = false;
   std::vector<std::string> protected_attrs;
   std::vector<std::pair<std::string, ExprPtr>> overrides;
+  // `(Roof(a) --> roofGable(a))`: a rule of the imported file (CityEngine's extension rules)
+  // redefined, its body in the importing file's names.
+  std::vector<Rule> rule_overrides;
   std::vector<Annotation> annotations;
 };
 

@@ -64,6 +64,7 @@ class Dumper {
       for (const auto& [name, value] : imp.overrides) {
         text += cat({" (override ", name, " ", dump(*value), ")"});
       }
+      for (const Rule& r : imp.rule_overrides) text += " (redefine " + r.predecessor + ")";
       line(1, text + at(imp.range) + annotations(imp.annotations) + ")");
     }
     for (const AttrDecl& attr : g.attrs) {
@@ -231,8 +232,8 @@ std::string dump(const Expr& expr) {
     case ExprKind::kUnary:
       return cat({"(", unary_name(expr.unary_op), " ", dump(*expr.operands[0]), ")"});
     case ExprKind::kBinary:
-      return cat({"(", binary_name(expr.binary_op), " ", dump(*expr.operands[0]), " ",
-                  dump(*expr.operands[1]), ")"});
+      return cat({"(", expr.elementwise ? "." : "", binary_name(expr.binary_op), " ",
+                  dump(*expr.operands[0]), " ", dump(*expr.operands[1]), ")"});
   }
   return "?";
 }

@@ -650,7 +650,9 @@ void Checker::check_registry_choice(const Item& item, std::size_t index,
   const bool word =
       arg.kind == ExprKind::kString ||
       (arg.kind == ExprKind::kIdent && !attributes_.count(arg.text) && !known_.count(arg.text) &&
-       function(arg.text, 0) == nullptr);  // a constant holding the word is checked when run
+       function(arg.text, 0) == nullptr &&  // a constant holding the word is checked when run
+       (params_ == nullptr ||
+        std::find(params_->begin(), params_->end(), arg.text) == params_->end()));
   if (!word) return;
   std::string text = arg.text;
   for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

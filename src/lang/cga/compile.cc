@@ -100,6 +100,7 @@ constexpr std::pair<std::string_view, Function> kFunctionCodes[] = {
     {"listIndex", Function::kListIndex},
     {"listCount", Function::kListCount},
     {"listAdd", Function::kListAdd},
+    {"listRemove", Function::kListRemove},
     {"listRandom", Function::kListRandom},
     {"log10", Function::kLog10},
     {"isnan", Function::kIsNan},
@@ -343,8 +344,11 @@ class Compiler {
       case ExprKind::kBinary: {
         const std::uint32_t a = expr(*e.operands[0]);
         const std::uint32_t b = expr(*e.operands[1]);
-        return fold(
-            ENode{ECode::kBinary, static_cast<std::uint8_t>(e.binary_op), 0, e.range, {a, b}});
+        return fold(ENode{ECode::kBinary,
+                          static_cast<std::uint8_t>(e.binary_op),
+                          e.elementwise ? 1U : 0U,
+                          e.range,
+                          {a, b}});
       }
       case ExprKind::kCase:
       case ExprKind::kChance: {
@@ -464,6 +468,9 @@ class Compiler {
         Value v;
         if (n.code == ECode::kUnary) {
           v = apply_unary(static_cast<UnaryOp>(n.op), const_value(n.kids[0]), n.range);
+        } else if (n.code == ECode::kBinary && n.a != 0) {
+          v = apply_elementwise(static_cast<BinaryOp>(n.op), const_value(n.kids[0]),
+                                const_value(n.kids[1]), n.range);
         } else if (n.code == ECode::kBinary) {
           v = apply_binary(static_cast<BinaryOp>(n.op), const_value(n.kids[0]),
                            const_value(n.kids[1]), n.range);

@@ -131,6 +131,7 @@ enum class Function : std::uint8_t {
   kListIndex,
   kListCount,
   kListAdd,
+  kListRemove,  // CityEngine's listRemove(list, item): every item equal to `item` taken out
   kListRandom,
   kLog10,
   kIsNan,

@@ -149,7 +149,7 @@ Value apply_binary(BinaryOp op, const Value& a, const Value& b, Range range) {
     default:
       if (array_of(a) != nullptr || array_of(b) != nullptr) {
         fail(range, "arithmetic on a " + std::string(type_name(array_of(a) ? a : b)) +
-                        " (CityEngine's element-wise operators .+ .- .* ./ are not supported)");
+                        " (CityEngine's element-wise operators are written .+ .- .* ./)");
       }
       return arithmetic(op, as_number(a, range), as_number(b, range), range);
   }
@@ -334,6 +334,11 @@ Value string_function(Function f, const std::vector<Value>& args, Range range) {
       return static_cast<double>(std::count(items.begin(), items.end(), text(1)));
     case Function::kListAdd:
       return list_of(items, 0, items.size()) + text(1) + ";";
+    case Function::kListRemove: {
+      std::vector<std::string> kept = items;
+      std::erase(kept, text(1));
+      return list_of(kept, 0, kept.size());
+    }
     default:
       fail(range, "internal: not a string function");
   }
@@ -441,6 +446,7 @@ Value apply_function(Function f, const std::vector<Value>& args, Range range) {
     case Function::kListIndex:
     case Function::kListCount:
     case Function::kListAdd:
+    case Function::kListRemove:
       return string_function(f, args, range);
     case Function::kColorRGBToHex:
       return hex_color(x(0), x(1), x(2), 1, false);
@@ -556,6 +562,7 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
     case ECode::kBinary: {
       const auto op = static_cast<BinaryOp>(n.op);
       const Value a = evaluate(program, n.kids[0], context);
+      if (n.a != 0) return apply_elementwise(op, a, evaluate(program, n.kids[1], context), n.range);
       // and / or short-circuit (a condition guarding a division stays safe).
       if (op == BinaryOp::kAnd && !as_bool(a, n.range)) return false;
       if (op == BinaryOp::kOr && as_bool(a, n.range)) return true;

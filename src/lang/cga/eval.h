@@ -39,8 +39,11 @@ std::string as_text(const Value& value);
 Value apply_unary(UnaryOp op, const Value& v, Range range);
 // `+` concatenates when either side is a string; comparisons compare numbers numerically,
 // strings lexicographically and arrays as value.h's compare; `and`/`or` need booleans (or
-// numbers). Arithmetic on arrays is an error (CityEngine's element-wise `.+` is not read yet).
+// numbers). Arithmetic on arrays is an error (CityEngine's element-wise `.+` is apply_elementwise).
 Value apply_binary(BinaryOp op, const Value& a, const Value& b, Range range);
+// CityEngine's element-wise operators (`.==`, `.+`, ...): apply_binary on each pair of elements
+// of two arrays of one size, or of an array's elements and a value; an array of the results.
+Value apply_elementwise(BinaryOp op, const Value& a, const Value& b, Range range);
 // Functions that need no random generator (everything but rand and p).
 Value apply_function(Function f, const std::vector<Value>& args, Range range);
 // Whether `f` needs the derivation (a random generator or the app's files): never folded.

@@ -224,6 +224,37 @@ Value index_by_arrays(const Array& a, std::span<const Value> indices, Range rang
 
 }  // namespace
 
+Value apply_elementwise(BinaryOp op, const Value& a, const Value& b, Range range) {
+  const ArrayPtr* xp = std::get_if<ArrayPtr>(&a);
+  const ArrayPtr* yp = std::get_if<ArrayPtr>(&b);
+  const Array* x = xp != nullptr ? xp->get() : nullptr;
+  const Array* y = yp != nullptr ? yp->get() : nullptr;
+  if (x == nullptr && y == nullptr) return apply_binary(op, a, b, range);
+  if (x != nullptr && y != nullptr && (x->rows != y->rows || x->columns != y->columns)) {
+    fail(range, "element-wise operands of " + std::to_string(x->rows) + " x " +
+                    std::to_string(x->columns) + " and " + std::to_string(y->rows) + " x " +
+                    std::to_string(y->columns) + " elements");
+  }
+  const Array& like = x != nullptr ? *x : *y;
+  std::optional<ElementType> type;
+  std::vector<shape::Value> items;
+  items.reserve(like.items.size());
+  for (std::size_t i = 0; i < like.items.size(); ++i) {
+    const Value left = x != nullptr ? from_shape(x->items[i]) : a;
+    const Value right = y != nullptr ? from_shape(y->items[i]) : b;
+    shape::Value result = to_shape(apply_binary(op, left, right, range));
+    const ElementType* t = element_type_of(result);
+    if (t == nullptr) fail(range, "an element-wise result is not a float, bool or string");
+    check_type(type, *t, range);
+    items.push_back(std::move(result));
+  }
+  // An empty array keeps its kind: comparisons and logic give bools, the rest the operand's.
+  const bool logical = op != BinaryOp::kAdd && op != BinaryOp::kSub && op != BinaryOp::kMul &&
+                       op != BinaryOp::kDiv && op != BinaryOp::kMod;
+  return make_array(type.value_or(logical ? ElementType::kBool : like.type), like.rows,
+                    like.columns, std::move(items));
+}
+
 Value array_literal(const std::vector<std::vector<Value>>& groups, Range range) {
   std::optional<ElementType> type;
   std::vector<shape::Value> items;

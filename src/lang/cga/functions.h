@@ -82,6 +82,7 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"listIndex", 2, 2, "ss", "index of the first item equal to a text, -1 if none"},
     {"listCount", 2, 2, "ss", "how many items equal a text"},
     {"listAdd", 2, 2, "ss", "the list with an item appended"},
+    {"listRemove", 2, 2, "ss", "the list without the items equal to a text"},
     {"listRandom", 1, 1, "s", "an item of a list drawn from the shape's seeded generator"},
     {"log10", 1, 1, "n", "logarithm to base 10"},
     {"isnan", 1, 1, "n", "whether x is not a number"},

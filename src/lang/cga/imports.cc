@@ -45,6 +45,18 @@ void shift(std::vector<Annotation>& annotations, std::uint32_t by) {
   }
 }
 
+void shift(Rule& rule, std::uint32_t by) {
+  shift(rule.range, by);
+  shift(rule.id_range, by);
+  shift(rule.predecessor_range, by);
+  if (rule.condition) shift(*rule.condition, by);
+  shift(rule.annotations, by);
+  for (Alternative& alt : rule.alternatives) {
+    shift(alt.range, by);
+    shift(alt.items, by);
+  }
+}
+
 void shift(Grammar& g, std::uint32_t by) {
   for (ImportDecl& i : g.imports) {
     shift(i.range, by);
@@ -53,6 +65,7 @@ void shift(Grammar& g, std::uint32_t by) {
     for (auto& [name, value] : i.overrides) {
       if (value) shift(*value, by);
     }
+    for (Rule& rule : i.rule_overrides) shift(rule, by);
     shift(i.annotations, by);
   }
   for (AttrDecl& a : g.attrs) {
@@ -69,17 +82,7 @@ void shift(Grammar& g, std::uint32_t by) {
   }
   for (PrioritySet& set : g.sets) {
     shift(set.range, by);
-    for (Rule& rule : set.rules) {
-      shift(rule.range, by);
-      shift(rule.id_range, by);
-      shift(rule.predecessor_range, by);
-      if (rule.condition) shift(*rule.condition, by);
-      shift(rule.annotations, by);
-      for (Alternative& alt : rule.alternatives) {
-        shift(alt.range, by);
-        shift(alt.items, by);
-      }
-    }
+    for (Rule& rule : set.rules) shift(rule, by);
   }
 }
 
@@ -241,9 +244,34 @@ class Resolver {
       resolve(imported, chain);
       chain.pop_back();
       Renamer(imported, decl.alias).run(imported);
+      redefine(imported, decl);
       propagate(imported, decl, g);
       merge(g, imported);
     }
+  }
+
+  // `import a : "f.cga" (Roof(x) --> ...)`: the rule takes the place of the imported file's
+  // `Roof` (CityEngine's extension rules), its body in the importing file's names.
+  void redefine(Grammar& imported, ImportDecl& decl) {
+    for (Rule& rule : decl.rule_overrides) {
+      const std::string name = rule.predecessor;
+      rule.predecessor = decl.alias + "." + name;
+      bool found = false;
+      for (PrioritySet& set : imported.sets) {
+        found =
+            std::erase_if(set.rules,
+                          [&](const Rule& r) { return r.predecessor == rule.predecessor; }) > 0 ||
+            found;
+      }
+      if (!found) {
+        error("CGA343", "\"" + decl.path + "\" has no rule '" + name + "' to redefine",
+              rule.predecessor_range);
+        continue;
+      }
+      if (imported.sets.empty()) imported.sets.emplace_back().implicit = true;
+      imported.sets.front().rules.push_back(std::move(rule));
+    }
+    decl.rule_overrides.clear();
   }
 
   static void merge(Grammar& into, Grammar& imported) {

@@ -53,7 +53,9 @@ enum class Tok {
   kLe,
   kGt,
   kGe,
-  kAt,  // @ (CityEngine's annotations)
+  kAt,           // @ (CityEngine's annotations)
+  kElementwise,  // CityEngine's element-wise operators on arrays: `.==`, `.+`, ...; text as written
+  kCaret,        // ^ (only in CityEngine's annotations: `@Handle(shape=Name^2)`)
 };
 
 struct Token {

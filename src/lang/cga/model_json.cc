@@ -226,6 +226,10 @@ class Writer {
       case ExprKind::kBinary:
         field("kind", "binary");
         field("operator", binary_name(e.binary_op));
+        if (e.elementwise) {
+          out_.key("elementwise");
+          out_.boolean(true);
+        }
         out_.key("left");
         expr(*e.operands[0]);
         out_.key("right");

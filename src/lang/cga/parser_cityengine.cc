@@ -87,6 +87,7 @@ void Parser::ce_top_level() {
     }
     return;
   }
+  if (ce_at_rule_keyword()) return ce_keyword_rule(std::move(annotations));
   if (at(Tok::kIdent)) return ce_rule_or_function(std::move(annotations));
   if (accept(Tok::kSemicolon)) return;
   fail("CGA102",
@@ -94,7 +95,7 @@ void Parser::ce_top_level() {
 }
 
 bool Parser::ce_starts_top_level() const {
-  if (at(Tok::kAt) || at(Tok::kAttr)) return true;
+  if (at(Tok::kAt) || at(Tok::kAttr) || ce_at_rule_keyword()) return true;
   if ((at_word("version") && at(Tok::kString, 1)) || (at_word("import") && at(Tok::kIdent, 1)) ||
       (at_word("const") && at(Tok::kIdent, 1)) || (at_word("style") && at(Tok::kIdent, 1))) {
     return true;
@@ -109,6 +110,83 @@ bool Parser::ce_starts_top_level() const {
   const std::size_t after = after_parens(name_end);
   return after < tokens_.size() &&
          (is_arrow(tokens_[after].kind) || (!dotted && tokens_[after].kind == Tok::kAssign));
+}
+
+bool Parser::ce_at_rule_head() const {
+  if (!at(Tok::kIdent) || pos_ + 1 >= tokens_.size()) return false;
+  const Tok next = tokens_[pos_ + 1].kind;
+  if (is_arrow(next)) return true;
+  if (next != Tok::kLParen) return false;
+  const std::size_t after = after_parens(pos_ + 1);
+  return after < tokens_.size() && is_arrow(tokens_[after].kind);
+}
+
+bool Parser::ce_at_rule_keyword() const {
+  if (!(at_word("start") || at_word("extension")) || !at(Tok::kIdent, 1)) return false;
+  std::size_t i = pos_ + 2;
+  if (i < tokens_.size() && tokens_[i].kind == Tok::kLParen) i = after_parens(i);
+  return i < tokens_.size() && is_arrow(tokens_[i].kind);
+}
+
+// CityEngine 2022.0's `start Name --> ...` marks the file's start rule, which the file and its
+// importers may also call `start` (`start(20)`, `alias.start`): a rule `start` passing its
+// arguments on is added. `extension Name --> ...` is a rule an importer may redefine; Insula
+// lets an import redefine any rule, so the keyword changes nothing else.
+void Parser::ce_keyword_rule(std::vector<Annotation> annotations) {
+  const bool start = advance().text == "start";
+  const Token name = advance();
+  std::vector<std::string> params;
+  if (at(Tok::kLParen)) params = ce_params();
+  if (start) {
+    Annotation mark;
+    mark.name = "StartRule";
+    mark.range = name.range;
+    annotations.push_back(std::move(mark));
+  }
+  Rule rule = ce_rule(name, params, std::move(annotations));
+  if (!grammar_.styles.empty()) return;
+  if (start && name.text != "start") {
+    Rule alias;
+    alias.predecessor = "start";
+    alias.predecessor_range = name.range;
+    alias.id_range = name.range;
+    alias.range = name.range;
+    alias.params = params;
+    Alternative pass;
+    pass.arrow = "-->";
+    pass.range = name.range;
+    Item call;
+    call.kind = ItemKind::kSymbol;
+    call.name = name.text;
+    call.range = name.range;
+    for (const std::string& p : params) {
+      ExprPtr arg = make(ExprKind::kIdent, name.range);
+      arg->text = p;
+      call.args.push_back(std::move(arg));
+    }
+    pass.items.push_back(std::move(call));
+    alias.alternatives.push_back(std::move(pass));
+    current_set(name.range.begin).rules.push_back(std::move(alias));
+  }
+  current_set(name.range.begin).rules.push_back(std::move(rule));
+}
+
+Rule Parser::ce_rule(Token name, std::vector<std::string> params,
+                     std::vector<Annotation> annotations) {
+  Rule rule;
+  rule.predecessor = name.text;
+  rule.predecessor_range = name.range;
+  rule.id_range = name.range;
+  rule.params = std::move(params);
+  rule.annotations = std::move(annotations);
+  Alternative alternative;
+  const Token& arrow = advance();
+  alternative.arrow = arrow.text;
+  alternative.items = ce_body();
+  alternative.range = from(arrow.range.begin);
+  rule.alternatives.push_back(std::move(alternative));
+  rule.range = from(name.range.begin);
+  return rule;
 }
 
 bool Parser::is_rule_name_ahead() const {
@@ -169,12 +247,10 @@ std::vector<Annotation> Parser::ce_annotations() {
           advance();
         }
         a.keys.push_back(std::move(key));
-        // @Handle(shape=Post*, ...): a shape name pattern, kept as its text.
-        if (at(Tok::kIdent) && at(Tok::kStar, 1) && (at(Tok::kComma, 2) || at(Tok::kRParen, 2))) {
-          const Token& name = advance();
-          ExprPtr pattern = make(ExprKind::kString, {name.range.begin, advance().range.end});
-          pattern->text = name.text + "*";
-          a.args.push_back(std::move(pattern));
+        // @Handle(shape=Post*, ...), @Handle(shape=Side^2, translate={.1, 0, 0}): a shape name
+        // pattern or a brace list, kept as its text.
+        if (ExprPtr raw = ce_annotation_text()) {
+          a.args.push_back(std::move(raw));
           continue;
         }
         a.args.push_back(parse_expr());
@@ -185,6 +261,29 @@ std::vector<Annotation> Parser::ce_annotations() {
     annotations.push_back(std::move(a));
   }
   return annotations;
+}
+
+ExprPtr Parser::ce_annotation_text() {
+  const bool pattern = at(Tok::kIdent) && (at(Tok::kStar, 1) || at(Tok::kCaret, 1));
+  if (!pattern && !at(Tok::kLBrace)) return nullptr;
+  const std::uint32_t begin = peek().range.begin;
+  std::string text;
+  int depth = 0;
+  do {
+    if (at(Tok::kEnd) || (depth > 0 && peek().line_start && ce_starts_top_level())) {
+      fail("CGA101", "expected '}' to close the annotation's list");
+    }
+    const Token& t = advance();
+    depth += t.kind == Tok::kLBrace ? 1 : t.kind == Tok::kRBrace ? -1 : 0;
+    if (!text.empty() && t.kind != Tok::kComma && text.back() != '{' && t.kind != Tok::kRBrace &&
+        text.back() != '^' && t.kind != Tok::kCaret && t.kind != Tok::kStar) {
+      text += ' ';
+    }
+    text += t.kind == Tok::kNumber ? shape::to_string(shape::Value(t.number)) : t.text;
+  } while (depth > 0 || (pattern && (at(Tok::kStar) || at(Tok::kCaret) || at(Tok::kNumber))));
+  ExprPtr raw = make(ExprKind::kString, {begin, tokens_[pos_ - 1].range.end});
+  raw->text = std::move(text);
+  return raw;
 }
 
 void Parser::ce_version() {
@@ -216,7 +315,15 @@ void Parser::ce_import(std::vector<Annotation> annotations) {
     decl.has_list = true;
     if (!accept(Tok::kRParen)) {
       do {
-        const Token& name = expect(Tok::kIdent, " (an attribute name) in the import's list");
+        if (ce_at_rule_head()) {  // `Name(a) --> ...`: a rule redefined
+          const Token name = advance();
+          std::vector<std::string> params;
+          if (at(Tok::kLParen)) params = ce_params();
+          decl.rule_overrides.push_back(ce_rule(name, std::move(params), {}));
+          continue;
+        }
+        const Token& name =
+            expect(Tok::kIdent, " (an attribute name or a rule) in the import's list");
         if (accept(Tok::kAssign)) {
           decl.overrides.emplace_back(name.text, parse_expr());
         } else {
@@ -283,19 +390,7 @@ void Parser::ce_rule_or_function(std::vector<Annotation> annotations) {
   std::vector<std::string> params;
   if (at(Tok::kLParen)) params = ce_params();
   if (is_arrow(peek().kind)) {
-    Rule rule;
-    rule.predecessor = name.text;
-    rule.predecessor_range = name.range;
-    rule.id_range = name.range;
-    rule.params = std::move(params);
-    rule.annotations = std::move(annotations);
-    Alternative alternative;
-    const Token& arrow = advance();
-    alternative.arrow = arrow.text;
-    alternative.items = ce_body();
-    alternative.range = from(arrow.range.begin);
-    rule.alternatives.push_back(std::move(alternative));
-    rule.range = from(begin);
+    Rule rule = ce_rule(name, std::move(params), std::move(annotations));
     if (grammar_.styles.empty()) current_set(begin).rules.push_back(std::move(rule));
     return;
   }
@@ -501,15 +596,20 @@ void Parser::ce_resolve_calls() {
     }
     for (Branch& part : branch.pattern) self(self, part);
   };
-  for (PrioritySet& set : grammar_.sets) {
-    for (Rule& rule : set.rules) {
-      for (Alternative& alternative : rule.alternatives) {
-        Branch whole;
-        whole.items = std::move(alternative.items);
-        walk(walk, whole);
-        alternative.items = std::move(whole.items);
-      }
+  const auto resolve = [&](Rule& rule) {
+    for (Alternative& alternative : rule.alternatives) {
+      Branch whole;
+      whole.items = std::move(alternative.items);
+      walk(walk, whole);
+      alternative.items = std::move(whole.items);
     }
+  };
+  for (PrioritySet& set : grammar_.sets) {
+    for (Rule& rule : set.rules) resolve(rule);
+  }
+  // An import's redefinitions call this file's rules.
+  for (ImportDecl& decl : grammar_.imports) {
+    for (Rule& rule : decl.rule_overrides) resolve(rule);
   }
 }
 

@@ -168,6 +168,15 @@ class Parser {
   void ce_import(std::vector<Annotation> annotations);
   void ce_attr(std::vector<Annotation> annotations, bool is_const);
   void ce_rule_or_function(std::vector<Annotation> annotations);
+  // An annotation argument CGA has no expression for, as its text: `Post*`, `Side^2`,
+  // `{.1, 0, 0}`; null when the argument is an expression.
+  ExprPtr ce_annotation_text();
+  // `start Name -->` and `extension Name -->`: the keyword before a rule's name.
+  bool ce_at_rule_keyword() const;
+  void ce_keyword_rule(std::vector<Annotation> annotations);
+  // A rule head at the cursor: `Name -->` or `Name(a, b) -->`.
+  bool ce_at_rule_head() const;
+  Rule ce_rule(Token name, std::vector<std::string> params, std::vector<Annotation> annotations);
   std::vector<std::string> ce_params();
   std::vector<Item> ce_body();
   Item ce_select_item(ItemKind kind);
@@ -456,17 +465,36 @@ class Parser {
     return expr;
   }
 
+  // CityEngine's element-wise operator at the cursor (`.==`, `.+`, ...) when it is one of the
+  // operators `op_of` accepts in its plain spelling.
+  template <typename OpOf>
+  std::optional<BinaryOp> elementwise_at(OpOf op_of) const {
+    if (!at(Tok::kElementwise)) return std::nullopt;
+    const std::string_view plain = std::string_view(peek().text).substr(1);
+    for (const auto& [spelling, kind] : kPlainOperators) {
+      if (spelling == plain) return op_of(kind);
+    }
+    return std::nullopt;
+  }
+  static constexpr std::pair<std::string_view, Tok> kPlainOperators[] = {
+      {"==", Tok::kEq},  {"!=", Tok::kNe},   {"<=", Tok::kLe},  {">=", Tok::kGe},
+      {"<", Tok::kLt},   {">", Tok::kGt},    {"&&", Tok::kAnd}, {"||", Tok::kOr},
+      {"+", Tok::kPlus}, {"-", Tok::kMinus}, {"*", Tok::kStar}, {"/", Tok::kSlash}};
+
   // Left-associative chains build left-deep trees; `chain` bounds their depth like nesting.
   template <typename Next, typename OpOf>
   ExprPtr parse_chain(Next next, OpOf op_of) {
     ExprPtr left = (this->*next)();
     int chain = 0;
-    while (auto op = op_of(peek().kind)) {
+    while (true) {
+      std::optional<BinaryOp> op = op_of(peek().kind);
+      const bool elementwise = !op && (op = elementwise_at(op_of));
+      if (!op) return left;
       Nest nest(*this, ++chain);
       advance();
       left = make_binary(*op, std::move(left), (this->*next)());
+      left->elementwise = elementwise;
     }
-    return left;
   }
 
   ExprPtr parse_expr() {
@@ -515,10 +543,12 @@ class Parser {
     ExprPtr left = parse_additive();
     // (CityEngine's `top = Roof` branch key ends at its `=`.)
     if (at(Tok::kAssign) && !cityengine()) fail("CGA101", "expected '==' to compare, found '='");
-    const std::optional<BinaryOp> op = comparison_op(peek().kind);
+    std::optional<BinaryOp> op = comparison_op(peek().kind);
+    const bool elementwise = !op && (op = elementwise_at(&comparison_op));
     if (!op) return left;
     advance();
     ExprPtr result = make_binary(*op, std::move(left), parse_additive());
+    result->elementwise = elementwise;
     if (comparison_op(peek().kind)) {
       fail("CGA101", "comparisons cannot be chained; use 'and' to combine them");
     }
@@ -543,10 +573,16 @@ class Parser {
       if (at(Tok::kStar)) op = BinaryOp::kMul;
       if (at(Tok::kSlash)) op = BinaryOp::kDiv;
       if (at(Tok::kPercent) && (percent_is_mod || !at(Tok::kColon, 1))) op = BinaryOp::kMod;
+      const bool elementwise = !op && (op = elementwise_at([](Tok k) -> std::optional<BinaryOp> {
+                                         if (k == Tok::kStar) return BinaryOp::kMul;
+                                         if (k == Tok::kSlash) return BinaryOp::kDiv;
+                                         return std::nullopt;
+                                       }));
       if (!op) return left;
       Nest nest(*this, ++chain);
       advance();
       left = make_binary(*op, std::move(left), parse_unary());
+      left->elementwise = elementwise;
     }
   }
 

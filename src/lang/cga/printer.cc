@@ -46,7 +46,10 @@ int binary_level(BinaryOp op) {
   }
 }
 
-std::string_view binary_spelling(BinaryOp op) {
+std::string_view binary_spelling(BinaryOp op, bool elementwise = false) {
+  constexpr std::string_view kElementwise[] = {".||", ".&&", ".==", ".!=", ".<", ".<=", ".>",
+                                               ".>=", ".+",  ".-",  ".*",  "./", "%"};
+  if (elementwise) return kElementwise[static_cast<int>(op)];
   constexpr std::string_view kSpellings[] = {"||", "&&", "==", "!=", "<", "<=", ">",
                                              ">=", "+",  "-",  "*",  "/", "%"};
   return kSpellings[static_cast<int>(op)];
@@ -254,7 +257,7 @@ class ExprPrinter {
     const int right = level == kCompareLevel ? kAddLevel : level + 1;
     operand(*e.operands[0], left);
     out_ += ' ';
-    out_ += binary_spelling(e.binary_op);
+    out_ += binary_spelling(e.binary_op, e.elementwise);
     out_ += ' ';
     operand(*e.operands[1], right);
   }
@@ -296,6 +299,7 @@ class GrammarPrinter {
         std::vector<std::string> entries = imp.protected_attrs;
         for (const auto& [name, value] : imp.overrides)
           entries.push_back(name + " = " + print(*value));
+        for (const Rule& r : imp.rule_overrides) entries.push_back(rule_text(r));
         out_ += " (";
         for (std::size_t i = 0; i < entries.size(); ++i) {
           if (i > 0) out_ += ", ";
@@ -330,6 +334,17 @@ class GrammarPrinter {
       out_ += names[i];
     }
     out_ += ')';
+  }
+
+  // A rule on one line (an import's redefinition), without its newline.
+  std::string rule_text(const Rule& r) {
+    std::string saved = std::move(out_);
+    out_.clear();
+    rule(r);
+    std::string text = std::move(out_);
+    out_ = std::move(saved);
+    if (!text.empty() && text.back() == '\n') text.pop_back();
+    return text;
   }
 
   void rule(const Rule& r) {

@@ -119,6 +119,29 @@ Lot -->
             std::string::npos);
 }
 
+TEST(CityEngineArrays, ElementwiseOperators) {
+  // Complete Street's asset filter: the rows whose column 1 is a category, by a bool[] index.
+  const std::vector<std::string> p = prints(R"(version "2023.0"
+const t = ["a", "tree"; "b", "lamp"; "c", "tree"]
+const n = [1, 2; 3, 4]
+Lot -->
+	print(t[t[0:2, 1] .== "tree", 0]) print(n .+ 1) print(2 .* n) print(n .- n)
+	print(n ./ [2, 2; 2, 2]) print(n .> 2) print(n .<= 2 .|| n .== 4) print("x" .+ ["a", "b"])
+	print(listRemove("a;b;a;c;", "a"))
+)",
+                                            rectangle_lot(10, 10));
+  const std::vector<std::string> expected = {"(2x1)[a;c]",
+                                             "(2x2)[2,3;4,5]",
+                                             "(2x2)[2,4;6,8]",
+                                             "(2x2)[0,0;0,0]",
+                                             "(2x2)[0.5,1;1.5,2]",
+                                             "(2x2)[false,false;true,true]",
+                                             "(2x2)[true,true;false,true]",
+                                             "(2)[xa,xb]",
+                                             "b;c;"};
+  EXPECT_EQ(p, expected);
+}
+
 TEST(CityEngineArrays, CompFunctionGivesOneValuePerFaceEdgeOfAnLLot) {
   // The L's edges in order: 12 (facing -y: front), 4 (+x: right), 8 (+y: back), 6 (+x: right),
   // 4 (+y: back), 10 (-x: left).
@@ -235,7 +258,9 @@ TEST(CityEngineArrays, BadArraysArePositionedDiagnostics) {
             "test.cga:2:8: error[CGA603]: size() expects an array, got a number");
   EXPECT_EQ(derive_message("version \"2020.0\"\nconst a = [1, 2]\nLot --> extrude(a * 2) X.\n"),
             "test.cga:3:17: error[CGA603]: arithmetic on a float[] (CityEngine's element-wise "
-            "operators .+ .- .* ./ are not supported)");
+            "operators are written .+ .- .* ./)");
+  EXPECT_EQ(derive_message("version \"2020.0\"\nLot --> print([1, 2] .+ [1, 2, 3]) X.\n"),
+            "test.cga:2:15: error[CGA603]: element-wise operands of 1 x 2 and 1 x 3 elements");
   EXPECT_EQ(derive_message("version \"2020.0\"\nf(x) = [1, 2; x]\nLot --> print(f(3)) X.\n"),
             "test.cga:2:8: error[CGA603]: array rows of 2 and 1 columns");
   EXPECT_EQ(derive_message("version \"2020.0\"\nLot --> setback([\"a\"]) { all : X. }\n"),

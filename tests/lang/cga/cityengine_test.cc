@@ -705,6 +705,10 @@ std::map<std::string, std::string> files() {
        "attr height = 2\nattr depth = 0.3\nconst frame = 0.1\n"
        "Window --> s('1, height, depth) Glass.\n"},
       {"lib/loop.cga", "import again : \"loop.cga\"\nX --> Y.\n"},
+      {"lib/roofed.cga",
+       "version \"2022.0\"\nstart Init(h) --> extrude(h) comp(f) { top : Roof(22) | side : Wall. "
+       "}\n"
+       "extension Roof(angle) --> roofHip(angle) Hip.\n"},
       {"lib/volume.cga",
        "version \"2019.0\"\nMass --> extrude(3) comp(f) { top : Slab | side : Wall. }\n"
        "Slab --> NIL.\n"},
@@ -786,6 +790,61 @@ TEST(CityEngineImports, TheImporterGivesAnImportedFilesRule) {
   ASSERT_TRUE(r.ok) << testing::diagnostics_text(r);
   EXPECT_EQ(symbol_count(*program.value(), r, "Roof"), 1U);
   EXPECT_EQ(symbol_count(*program.value(), r, "Wall"), 4U);  // a terminal keeps its bare name
+}
+
+TEST(CityEngineImports, StartAndExtensionRules) {
+  // CityEngine 2022.0: `start Init` is also `start` (here `roof.start(6)`), and the import
+  // redefines the extension rule Roof in the importing file's names (`Flat` is main.cga's).
+  base::Source source("main.cga",
+                      "version \"2022.0\"\n"
+                      "import roof : \"roofed.cga\" (Roof(a) --> Flat(a))\n"
+                      "Lot --> roof.start(6)\nFlat(a) --> print(a) Top.\n");
+  base::Result<Grammar> g = load(source);
+  ASSERT_TRUE(g.ok()) << base::render(g.diagnostics().front());
+  const CheckResult checked = check(g.value(), source);
+  ASSERT_TRUE(checked.ok) << base::render(checked.diagnostics.front());
+  auto program = compile(g.value(), source, {});
+  ASSERT_TRUE(program.ok()) << base::render(program.diagnostics().front());
+  DeriveOptions options;
+  options.keep_terminals = true;
+  const LotResult r = derive_lot(*program.value(), rectangle_lot(6, 4), 0, options);
+  ASSERT_TRUE(r.ok) << testing::diagnostics_text(r);
+  EXPECT_EQ(symbol_count(*program.value(), r, "Top"), 1U);
+  EXPECT_EQ(symbol_count(*program.value(), r, "Hip"), 0U);
+  EXPECT_EQ(symbol_count(*program.value(), r, "Wall"), 4U);
+  ASSERT_EQ(r.prints.size(), 1U);
+  EXPECT_NE(r.prints[0].find("print: 22"), std::string::npos) << r.prints[0];
+  // In its own file, `start` is the start rule, callable as `start`.
+  const auto own =
+      compile_text("version \"2022.0\"\nLot --> start(2)\nstart Mass(h) --> extrude(h) M.\n");
+  ASSERT_TRUE(own);
+  const std::vector<LotResult> built = derive_all(*own, {rectangle_lot(6, 4)});
+  ASSERT_TRUE(built[0].ok) << diagnostics_text(built[0]);
+  EXPECT_EQ(symbol_count(*own, built[0], "M"), 1U);
+  // Redefining a rule the imported file does not have is an error at the redefinition.
+  base::Source wrong("main.cga",
+                     "version \"2022.0\"\nimport roof : \"roofed.cga\" (Gable --> X.)\n"
+                     "Lot --> roof.start(6)\n");
+  g = load(wrong);
+  ASSERT_FALSE(g.ok());
+  EXPECT_EQ(base::render(g.diagnostics().front()),
+            "main.cga:2:29: error[CGA343]: \"roofed.cga\" has no rule 'Gable' to redefine");
+}
+
+TEST(CityEngineDialect, AnnotationPatternsAndBraceLists) {
+  // Complete Street's handles: `shape=Name^4` and `translate={.1,0,0}` kept as their text.
+  base::Source source("t.cga",
+                      "version \"2023.0\"\n"
+                      "@Handle(shape=Side^4, axis=x, translate={.1, 0, 0}, color=\"#FF11FF\")\n"
+                      "attr w = 3\nLot --> extrude(w) A.\n");
+  base::Result<Grammar> g = parse(source);
+  ASSERT_TRUE(g.ok()) << base::render(g.diagnostics().front());
+  const Annotation& a = g.value().attrs.at(0).annotations.at(0);
+  ASSERT_EQ(a.args.size(), 4U);
+  EXPECT_EQ(a.args[0]->text, "Side^4");
+  EXPECT_EQ(a.args[2]->text, "{0.1, 0, 0}");
+  EXPECT_EQ(check_text("version \"2023.0\"\n@Handle(translate={1, 2\nattr w = 3\n"),
+            "t.cga:3:1: error[CGA101]: expected '}' to close the annotation's list\n");
 }
 
 // ---- files as they are found
