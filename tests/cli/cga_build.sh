@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `insula build FILE.cga`: the report's counts, identical outputs whatever --threads and for the
 # same --seed, --set and lot properties, --start, report-only runs, and bad input (grammar errors,
-# unknown --set names, runaway grammars) exiting 1 with a positioned diagnostic and no output.
+# unknown --set names, runaway grammars, asset axes) exiting 1 with a positioned diagnostic and no
+# output.
 set -u
 insula=$1
 root=$2
@@ -103,6 +104,14 @@ printf 'Lot --> split("x"){ 2: A | ~1: B\n' >"$tmp/bad.cga"
 [ $? -eq 1 ] || fail "syntax error exits 1"
 grep -qE "bad.cga:[0-9]+:[0-9]+: error\[CGA1" "$tmp/err" || { fail "syntax message"; cat "$tmp/err"; }
 [ -e "$tmp/z.json" ] && fail "report written after a syntax error"
+
+# A wrong axes selector of an asset selection function (assetBestSize, ...): CGA603 at the call.
+printf 'version "2019.0"\nLot --> i(assetBestSize("*.obj", "xw"))\n' >"$tmp/axes.cga"
+"$insula" build "$tmp/axes.cga" --report "$tmp/axes.json" 2>"$tmp/err" >/dev/null
+[ $? -eq 1 ] || fail "wrong asset axes exits 1"
+grep -qE "axes.cga:2:[0-9]+: error\[CGA603\]: the axes of an asset size are one to three of x, y, z" \
+  "$tmp/err" || { fail "asset axes message"; cat "$tmp/err"; }
+[ -e "$tmp/axes.json" ] && fail "report written after CGA603"
 
 # A probability computed while deriving (here from --set) outside [0, 1] is CGA605 at the
 # expression, naming the rule and the value: exit 1, no output (seed 004 §IV.B constraint 1).

@@ -39,11 +39,8 @@ inline constexpr std::string_view kUnsupportedOperations[] = {
 
 // Functions of CityEngine that Insula does not evaluate yet: error CGA902.
 inline constexpr std::string_view kUnsupportedFunctions[] = {
-    "filesSearch",    "assetBestSize",   "assetBestRatio",  "assetFitSize",
-    "assetsSortSize", "assetsSortRatio", "assetApproxSize", "assetApproxRatio",
-    "contextCompare", "contextCount",    "getObjectAttr",   "readTextFile",
-    "sortRowIndices", "setElems",        "isTagged",        "isNull",
-    "hash",
+    "filesSearch",    "contextCompare", "contextCount", "getObjectAttr", "readTextFile",
+    "sortRowIndices", "setElems",       "isTagged",     "isNull",        "hash",
 };
 
 constexpr bool contains(const auto& table, std::string_view name) {

@@ -145,6 +145,17 @@ enum class Function : std::uint8_t {
   kImagesSortRatio,  // CityEngine's imagesSortRatio(list, axes): that list, best ratio first  //
                      // CityEngine's imageBestRatio(query, axes): the image shaped most like the
                      // scope
+  // CityEngine's asset selection (Engine::assets_sorted): assetsSortSize(list, axes, maxError),
+  // assetsSortRatio(list, axes) sort a list (or string[]) of assets by how they fit the scope;
+  // the others search (fileSearch) and take the best (Best), one of the n best (Approx) or one of
+  // those within maxScaleError (Fit), drawn from the shape's seeded generator.
+  kAssetsSortSize,
+  kAssetsSortRatio,
+  kAssetBestSize,
+  kAssetBestRatio,
+  kAssetApproxSize,
+  kAssetApproxRatio,
+  kAssetFitSize,
   // CityEngine's array functions (eval_arrays.cc)
   kSize,
   kNRows,

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 
 #include "lang/cga/colors.h"
 #include "shape/query.h"
@@ -335,6 +336,124 @@ std::string Engine::images_by_ratio(const std::string& list, const std::string& 
   return out;
 }
 
+namespace {
+
+// The items of a ';'-terminated string list, or of a string[] (`array` then says so).
+std::vector<std::string> list_or_array(const Value& v, bool& array) {
+  std::vector<std::string> items;
+  if (const ArrayPtr* a = std::get_if<ArrayPtr>(&v)) {
+    array = true;
+    for (const shape::Value& item : (*a)->items) items.push_back(shape::to_string(item));
+    return items;
+  }
+  array = false;
+  const std::string list = as_text(v);
+  for (std::size_t begin = 0; begin < list.size();) {
+    const std::size_t end = std::min(list.find(';', begin), list.size());
+    if (end > begin) items.push_back(list.substr(begin, end - begin));
+    begin = end + 1;
+  }
+  return items;
+}
+
+Value list_or_array_value(const std::vector<std::string>& items, bool array) {
+  if (array) {
+    auto out = std::make_shared<Array>();
+    out->type = ElementType::kString;
+    out->rows = items.empty() ? 0 : 1;
+    out->columns = items.size();
+    out->items.assign(items.begin(), items.end());
+    return ArrayPtr(std::move(out));
+  }
+  std::string out;
+  for (const std::string& item : items) out.append(item).append(";");
+  return out;
+}
+
+}  // namespace
+
+// CityEngine's assetsSortSize(list, axes, maxScaleError) (ratio false) and assetsSortRatio(list,
+// axes) (ratio true): the assets, best first. Per selected axis the scaling the asset needs to
+// take the scope's extent is d = ln(scope / asset). By size an asset ranks by its largest |d|
+// (then by the sum of |d|); by ratio by max(d) - min(d), the uniform scaling that fails to fit
+// (for two axes |ln(asset ratio) - ln(scope ratio)|). An axis where the scope's extent is 0 does
+// not count (i() keeps the asset's size there); an asset flat along a counted axis never fits.
+// max_error > 0 keeps only assets whose scalings are all within 1 +- max_error.
+// Assets whose size is unknown (missing files) are left out; ties keep the list's order.
+std::vector<std::string> Engine::assets_sorted(std::vector<std::string> assets,
+                                               const std::string& axes, bool ratio,
+                                               double max_error, Range range) {
+  const std::size_t least = ratio ? 2 : 1;
+  bool valid = axes.size() >= least && axes.size() <= 3 &&
+               axes.find_first_not_of("xyz") == std::string::npos;
+  for (std::size_t i = 0; valid && i < axes.size(); ++i) {
+    valid = axes.find(axes[i], i + 1) == std::string::npos;
+  }
+  if (!valid) {
+    const char* expected = ratio ? "two or three of x, y, z (\"xz\", \"xyz\")"
+                                 : "one to three of x, y, z (\"x\", \"xz\", \"xyz\")";
+    throw EvalError{range, std::string("the axes of an asset ") + (ratio ? "ratio" : "size") +
+                               " are " + expected + ", got '" + axes + "'"};
+  }
+  constexpr double kTiny = 1e-9;
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  struct Ranked {
+    double score;
+    double total;
+    std::string asset;
+  };
+  std::vector<Ranked> ranked;
+  std::string error;
+  for (std::string& asset : assets) {
+    double low = 0;
+    double high = 0;
+    double largest = 0;
+    double total = 0;
+    bool first = true;
+    bool fits = true;
+    bool known = true;
+    for (const char c : axes) {
+      const std::string key = std::string("s") + c;
+      const std::optional<double> extent = options_.files->asset_info(asset, key, error);
+      if (!extent || !std::isfinite(*extent)) {
+        known = false;
+        break;
+      }
+      const double scope = std::fabs(shape_attribute(c == 'x'   ? ShapeAttr::kSx
+                                                     : c == 'y' ? ShapeAttr::kSy
+                                                                : ShapeAttr::kSz));
+      const double size = std::fabs(*extent);
+      if (scope < kTiny) continue;  // as i(): a zero scope size takes the asset's
+      if (size < kTiny) {
+        largest = total = kNever;
+        low = 0;
+        high = kNever;
+        fits = false;
+        break;
+      }
+      const double d = std::log(scope / size);
+      low = first ? d : std::min(low, d);
+      high = first ? d : std::max(high, d);
+      first = false;
+      largest = std::max(largest, std::fabs(d));
+      total += std::fabs(d);
+      const double scale = scope / size;
+      if (max_error > 0 && std::fabs(scale - 1) > max_error + 1e-12) fits = false;
+    }
+    if (!known) continue;
+    if (max_error > 0 && !fits) continue;
+    ranked.push_back(ratio ? Ranked{high - low, 0, std::move(asset)}
+                           : Ranked{largest, total, std::move(asset)});
+  }
+  std::stable_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {
+    return a.score < b.score || (a.score == b.score && a.total < b.total);
+  });
+  std::vector<std::string> out;
+  out.reserve(ranked.size());
+  for (Ranked& entry : ranked) out.push_back(std::move(entry.asset));
+  return out;
+}
+
 Value Engine::file_function(Function f, const std::vector<Value>& args, Range range) {
   const FileQueries* files = options_.files;
   const std::string first = as_text(args[0]);
@@ -342,6 +461,41 @@ Value Engine::file_function(Function f, const std::vector<Value>& args, Range ra
   std::string error;
   std::optional<double> number;
   switch (f) {
+    case Function::kAssetsSortSize:
+    case Function::kAssetsSortRatio: {
+      bool array = false;
+      std::vector<std::string> assets = list_or_array(args[0], array);
+      const bool ratio = f == Function::kAssetsSortRatio;
+      const double max_error = ratio ? 0.0 : as_number(args[2], range);
+      return list_or_array_value(
+          assets_sorted(std::move(assets), as_text(args[1]), ratio, max_error, range), array);
+    }
+    case Function::kAssetBestSize:
+    case Function::kAssetBestRatio:
+    case Function::kAssetApproxSize:
+    case Function::kAssetApproxRatio:
+    case Function::kAssetFitSize: {
+      // CityEngine's ce.lib: listFirst / listRandom(listRange(.., 0, n)) / listRandom of the
+      // sorted search, so a pick draws from the generator only when there is a candidate.
+      const std::string found = files->search(first, error);
+      if (!error.empty()) throw EvalError{range, error};
+      bool array = false;
+      const bool ratio = f == Function::kAssetBestRatio || f == Function::kAssetApproxRatio;
+      const double max_error = f == Function::kAssetFitSize ? as_number(args[2], range) : 0.0;
+      const std::vector<std::string> sorted =
+          assets_sorted(list_or_array(found, array), as_text(args[1]), ratio, max_error, range);
+      if (sorted.empty()) return std::string();
+      if (f == Function::kAssetBestSize || f == Function::kAssetBestRatio) return sorted.front();
+      std::size_t count = sorted.size();
+      if (f != Function::kAssetFitSize) {
+        const double n = as_number(args[2], range);  // n < 1 (or NaN): the best one
+        count = !(n >= 1)                                 ? 1
+                : n >= static_cast<double>(sorted.size()) ? sorted.size()
+                                                          : static_cast<std::size_t>(std::floor(n));
+      }
+      return sorted[std::min(count - 1,
+                             static_cast<std::size_t>(rng_.unit() * static_cast<double>(count)))];
+    }
     case Function::kReadStringTable:
     case Function::kReadFloatTable: {
       const std::optional<std::string> text = files->read_text(first, error);

@@ -147,6 +147,8 @@ class Engine final : public EvalContext {
   void print(Range range, const std::string& text) override;
   double geo_coord(const std::string& which, Range range) override;
   std::string images_by_ratio(const std::string& list, const std::string& axes, Range range);
+  std::vector<std::string> assets_sorted(std::vector<std::string> assets, const std::string& axes,
+                                         bool ratio, double max_error, Range range);
   double uv_extent(std::uint8_t which, int set, bool unit_space) override;
   void warning(Range range, std::string message) override {
     ++warnings_[{range.begin, std::move(message)}];

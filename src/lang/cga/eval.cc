@@ -189,7 +189,10 @@ bool is_file_function(Function f) {
   return f == Function::kFileExists || f == Function::kFileSearch || f == Function::kFileRandom ||
          f == Function::kAssetInfo || f == Function::kImageInfo || f == Function::kImageBestRatio ||
          f == Function::kImagesSortRatio || f == Function::kReadStringTable ||
-         f == Function::kReadFloatTable;
+         f == Function::kReadFloatTable || f == Function::kAssetsSortSize ||
+         f == Function::kAssetsSortRatio || f == Function::kAssetBestSize ||
+         f == Function::kAssetBestRatio || f == Function::kAssetApproxSize ||
+         f == Function::kAssetApproxRatio || f == Function::kAssetFitSize;
 }
 
 namespace {

@@ -99,6 +99,28 @@ inline constexpr FunctionInfo kFunctions[] = {
     {"imagesSortRatio", 2, 2, "sw",
      "a string list of images sorted by how near their width / height is the scope's along two "
      "axes (nearest first)"},
+    {"assetsSortSize", 3, 3, "vwn",
+     "a string list (or string[]) of assets sorted by how near their size is the scope's along "
+     "the axes (\"x\" .. \"xyz\"; nearest first); a maxScaleError > 0 keeps only those within "
+     "that scaling (0.1: +-10%)"},
+    {"assetsSortRatio", 2, 2, "vw",
+     "a string list (or string[]) of assets sorted by how near their proportions are the scope's "
+     "along the axes (\"xy\", \"xz\", \"yz\", \"xyz\"; nearest first)"},
+    {"assetBestSize", 2, 2, "sw",
+     "of the assets a search finds, the one whose size is nearest the scope's along the axes; "
+     "\"\" when none"},
+    {"assetBestRatio", 2, 2, "sw",
+     "of the assets a search finds, the one whose proportions are nearest the scope's along the "
+     "axes; \"\" when none"},
+    {"assetApproxSize", 3, 3, "swn",
+     "one of the n assets a search finds nearest the scope's size, drawn from the shape's seeded "
+     "generator"},
+    {"assetApproxRatio", 3, 3, "swn",
+     "one of the n assets a search finds nearest the scope's proportions, drawn from the shape's "
+     "seeded generator"},
+    {"assetFitSize", 3, 3, "swn",
+     "one of the assets a search finds that fit the scope's size within maxScaleError (0: any), "
+     "drawn from the shape's seeded generator; \"\" when none"},
     // CityEngine's arrays (float[], bool[], string[]; docs/cga-cityengine.md, "Arrays").
     {"size", 1, 1, "v", "number of elements of an array"},
     {"nRows", 1, 1, "v", "number of rows of an array"},

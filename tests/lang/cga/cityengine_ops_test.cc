@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <set>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "derive_util.h"
 #include "kernel/mesh.h"
@@ -387,6 +390,148 @@ TEST(CityEngineOps, ImagesByRatio) {
   EXPECT_EQ(r[0].prints[0], "test.cga:2: print: b.png;a.png;c.png;");
   EXPECT_EQ(r[0].prints[1], "test.cga:2: print: b.png");
   EXPECT_EQ(r[0].prints[2], "test.cga:2: print: c.png");
+}
+
+// Five assets of known bounding boxes (sx, sy, sz); "*.obj" finds them all, anything else none.
+struct AssetFiles final : FileQueries {
+  bool exists(const std::string&) const override { return true; }
+  std::string search(const std::string& query, std::string&) const override {
+    return query == "*.obj" ? "a.obj;b.obj;c.obj;d.obj;e.obj;" : "";
+  }
+  std::string random(const std::string&, double, std::string&) const override { return ""; }
+  std::optional<double> asset_info(const std::string& name, const std::string& key,
+                                   std::string&) const override {
+    struct Box {
+      const char* name;
+      double x, y, z;
+    };
+    static constexpr Box kBoxes[] = {{"a.obj", 1, 1, 1},
+                                     {"b.obj", 4, 1, 2},
+                                     {"c.obj", 10, 3, 5},
+                                     {"d.obj", 2, 2, 8},
+                                     {"e.obj", 22, 3, 10}};
+    for (const Box& b : kBoxes) {
+      if (name != b.name) continue;
+      if (key == "sx") return b.x;
+      if (key == "sy") return b.y;
+      if (key == "sz") return b.z;
+      return 0.0;
+    }
+    return std::nullopt;  // not found
+  }
+  std::optional<double> image_info(const std::string&, const std::string&,
+                                   std::string&) const override {
+    return std::nullopt;
+  }
+  std::optional<std::string> read_text(const std::string&, std::string&) const override {
+    return std::nullopt;
+  }
+};
+
+LotResult derive_assets(const std::string& rules, std::uint64_t seed = 0,
+                        const std::string& lot = "extrude(3) Mass") {
+  auto p = compile_text("version \"2019.0\"\nLot --> " + lot + "\nMass --> " + rules + " X.\n");
+  EXPECT_TRUE(p);
+  if (!p) return {};
+  AssetFiles files;
+  DeriveOptions options;
+  options.files = &files;
+  options.seed = seed;
+  std::vector<LotResult> results = derive_all(*p, {rectangle_lot(20, 10)}, options);
+  return std::move(results[0]);
+}
+
+std::vector<std::string> printed(const LotResult& r) {
+  std::vector<std::string> out;
+  for (const std::string& line : r.prints) {
+    const std::size_t at = line.find("print:") + 6;  // "print: " and the text, "print:" if none
+    out.push_back(at < line.size() ? line.substr(at + 1) : std::string());
+  }
+  return out;
+}
+
+// The mass's scope is 20 x 3 x 10. Per axis the scaling an asset needs, ln(scope / asset): by
+// size the largest (then the sum) ranks, by ratio the spread of those (max - min).
+TEST(CityEngineOps, AssetsSortSizeAndRatio) {
+  const LotResult r = derive_assets(
+      "print(scope.sx) print(scope.sy) print(scope.sz) "
+      "print(assetsSortSize(\"a.obj;b.obj;c.obj;d.obj;e.obj;\", xyz, 0)) "
+      "print(assetsSortSize(\"a.obj;b.obj;c.obj;d.obj;e.obj;\", y, 0)) "
+      "print(assetsSortSize(\"a.obj;b.obj;c.obj;d.obj;e.obj;\", xz, 0.1)) "
+      "print(assetsSortSize(\"a.obj;b.obj;c.obj;d.obj;e.obj;\", xz, 0.05)) "
+      "print(assetsSortSize(\"zz.obj;c.obj;a.obj;\", x, 0)) "
+      "print(assetsSortRatio(\"a.obj;b.obj;c.obj;d.obj;e.obj;\", xz)) "
+      "print(assetsSortRatio(\"a.obj;b.obj;c.obj;d.obj;e.obj;\", zx)) "
+      "print(assetsSortRatio(\"a.obj;b.obj;c.obj;d.obj;e.obj;\", \"xyz\")) "
+      "print(assetsSortRatio([\"a.obj\", \"b.obj\", \"d.obj\"], xz))");
+  ASSERT_TRUE(r.ok) << diagnostics_text(r);
+  EXPECT_EQ(printed(r), (std::vector<std::string>{
+                            "20", "3", "10", "e.obj;c.obj;b.obj;d.obj;a.obj;",
+                            "c.obj;e.obj;d.obj;a.obj;b.obj;", "e.obj;", "", "c.obj;a.obj;",
+                            "b.obj;c.obj;e.obj;a.obj;d.obj;", "b.obj;c.obj;e.obj;a.obj;d.obj;",
+                            "e.obj;b.obj;c.obj;a.obj;d.obj;", "(3)[b.obj,a.obj,d.obj]"}));
+}
+
+// On the flat lot (scope 20 x 0 x 10) y does not count, as i() keeps an asset's size where the
+// scope's is 0.
+TEST(CityEngineOps, AssetsOnAFlatScope) {
+  const LotResult r = derive_assets(
+      "print(scope.sy) print(assetsSortSize(\"a.obj;b.obj;c.obj;d.obj;e.obj;\", y, 0)) "
+      "print(assetsSortSize(\"a.obj;b.obj;c.obj;d.obj;e.obj;\", xyz, 0)) "
+      "print(assetsSortRatio(\"d.obj;c.obj;b.obj;\", xyz))",
+      0, "Mass");
+  ASSERT_TRUE(r.ok) << diagnostics_text(r);
+  EXPECT_EQ(printed(r),
+            (std::vector<std::string>{"0", "a.obj;b.obj;c.obj;d.obj;e.obj;",
+                                      "e.obj;c.obj;b.obj;d.obj;a.obj;", "c.obj;b.obj;d.obj;"}));
+}
+
+TEST(CityEngineOps, AssetBestApproxAndFit) {
+  const LotResult r = derive_assets(
+      "print(assetBestSize(\"*.obj\", \"xyz\")) print(assetBestSize(\"*.obj\", y)) "
+      "print(assetBestRatio(\"*.obj\", \"xz\")) print(assetBestRatio(\"*.obj\", \"xyz\")) "
+      "print(assetApproxRatio(\"*.obj\", \"xz\", 1)) print(assetApproxSize(\"*.obj\", \"xyz\", 0)) "
+      "print(assetBestSize(\"*.png\", \"xyz\")) print(assetFitSize(\"*.obj\", \"xz\", 0.01))");
+  ASSERT_TRUE(r.ok) << diagnostics_text(r);
+  EXPECT_EQ(printed(r), (std::vector<std::string>{"e.obj", "c.obj", "b.obj", "e.obj", "b.obj",
+                                                  "e.obj", "", ""}));
+
+  // One of the n best, from the shape's generator: the same seed the same picks.
+  std::string many;
+  for (int i = 0; i < 12; ++i) {
+    many += "print(assetApproxRatio(\"*.obj\", \"xz\", 2)) ";
+    many += "print(assetApproxSize(\"*.obj\", \"xyz\", 3)) ";
+    many += "print(assetFitSize(\"*.obj\", \"xz\", 1)) ";
+  }
+  const LotResult first = derive_assets(many, 7);
+  ASSERT_TRUE(first.ok) << diagnostics_text(first);
+  const std::vector<std::string> picks = printed(first);
+  ASSERT_EQ(picks.size(), 36U);
+  std::set<std::string> ratio2, size3, fit;
+  for (std::size_t i = 0; i < picks.size(); i += 3) {
+    ratio2.insert(picks[i]);
+    size3.insert(picks[i + 1]);
+    fit.insert(picks[i + 2]);
+  }
+  EXPECT_EQ(ratio2, (std::set<std::string>{"b.obj", "c.obj"}));
+  EXPECT_EQ(size3, (std::set<std::string>{"e.obj", "c.obj", "b.obj"}));
+  EXPECT_EQ(fit, (std::set<std::string>{"c.obj", "e.obj"}));  // scalings within [0, 2]
+  EXPECT_EQ(printed(derive_assets(many, 7)), picks);
+  EXPECT_NE(printed(derive_assets(many, 8)), picks);
+}
+
+// A wrong axes selector is an error at the call: the derivation stops (the CLI exits 1).
+TEST(CityEngineOps, AssetAxesAreChecked) {
+  for (const char* call :
+       {"assetsSortSize(\"a.obj;\", xw, 0)", "assetBestSize(\"*.obj\", \"xx\")",
+        "assetBestRatio(\"*.obj\", \"x\")", "assetApproxRatio(\"*.obj\", \"xyzx\", 2)",
+        "assetsSortRatio(\"a.obj;\", \"\")"}) {
+    const LotResult r = derive_assets(std::string("print(") + call + ")");
+    EXPECT_FALSE(r.ok) << call;
+    const std::string text = diagnostics_text(r);
+    EXPECT_NE(text.find("test.cga:3:"), std::string::npos) << text;
+    EXPECT_NE(text.find("error[CGA603]: the axes of an asset "), std::string::npos) << text;
+  }
 }
 
 TEST(CityEngineOps, ConvexifyAndTrim) {
