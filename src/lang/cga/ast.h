@@ -104,6 +104,9 @@ struct Item {
   bool terminal = false;      // kSymbol written `Name.` (CityEngine: a leaf, no rule wanted)
   // CityEngine's `split(u|v, unitSpace|uvSpace, uvSet)`, read as split(x|y) (the checker warns).
   bool along_uv = false;
+  // CityEngine roof arguments Insula does not run, dropped by the parser (the checker warns):
+  // roofHip's `even`, roofGable's `overhangY, even, index`.
+  std::string dropped;
   std::vector<Branch> branches;
 };
 

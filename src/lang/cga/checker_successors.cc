@@ -199,6 +199,12 @@ void Checker::check_item(const Item& item) {
   }
   if (item.kind == ItemKind::kCase || item.kind == ItemKind::kChance) return check_chain(item);
   if (item.kind != ItemKind::kOp) return;
+  if (!item.dropped.empty()) {
+    warning("CGA905",
+            "'" + item.name + "': the arguments after the overhang (" + item.dropped +
+                ") are not supported; the roof is built without them",
+            item.range);
+  }
   if (item.along_uv) {
     warning("CGA904",
             "split along texture coordinates: Insula's shapes carry none here, so this splits "

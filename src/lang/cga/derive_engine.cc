@@ -1005,9 +1005,12 @@ void Engine::color(const CItem& c, State& st) {
     const Value v = eval(c.args[0], st);
     hex = long_hex(as_text(v));
     if (!valid_hex_color(hex)) {
-      throw EvalError{
-          program_.nodes[c.args[0]].range,
-          "color() expects \"#rrggbb\", \"#rrggbbaa\" or \"#rgb\", got \"" + as_text(v) + "\""};
+      const std::string message =
+          "color() expects \"#rrggbb\", \"#rrggbbaa\" or \"#rgb\", got \"" + as_text(v) + "\"";
+      // CityEngine warns and keeps the colour (Esri's greenspace rules pass "").
+      if (program_.cityengine)
+        return warning(program_.nodes[c.args[0]].range, message + ": unchanged");
+      throw EvalError{program_.nodes[c.args[0]].range, message};
     }
     std::transform(hex.begin(), hex.end(), hex.begin(), [](char ch) {
       return static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));

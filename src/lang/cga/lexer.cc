@@ -98,6 +98,10 @@ class Lexer : public base::TokenLexer<Lexer, LexOutput, Tok> {
     } else if (scan_.starts_with(kEpsilonUtf8)) {
       push(Tok::kEpsilon, begin, begin + kEpsilonUtf8.size(), "ε");
       scan_.advance(kEpsilonUtf8.size());
+    } else if (c == '.' && scan_.at(begin + 1) == '/' &&
+               (scan_.at(begin + 2) == '/' || scan_.at(begin + 2) == '*')) {
+      push(Tok::kDot, begin, begin + 1, ".");  // `Wall.// note`: a terminal, then a comment
+      scan_.advance(1);
     } else if (!push_operator(kOperators)) {
       scan_.bad_character();
     }

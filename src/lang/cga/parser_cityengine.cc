@@ -55,6 +55,21 @@ void drop_form_words(Item& item) {
     const std::string word = dotted_name(*item.args[1]);
     if (word == "adjust" || word == "noAdjust") item.args.pop_back();
   }
+  // roofHip(angle, overhang, even) and roofGable(angle, overhangX, overhangY, even, index):
+  // Insula's third roof argument is its height, so CityEngine's later ones are dropped (the
+  // checker warns: the ridges follow the planes, the gable's overhang is overhangX all round,
+  // its ridge runs along the longest edges).
+  static constexpr std::pair<std::string_view, std::string_view> kRoofExtras[] = {
+      {"roofHip", "even"}, {"roofGable", "overhangY, even and index"}};
+  for (const auto& [roof, extras] : kRoofExtras) {
+    const bool by_value = !item.args.empty() && (dotted_name(*item.args[0]) == "byAngle" ||
+                                                 dotted_name(*item.args[0]) == "byHeight");
+    const std::size_t kept = by_value ? 3 : 2;
+    if (item.name == roof && item.args.size() > kept) {
+      item.args.resize(kept);
+      item.dropped = std::string(extras);
+    }
+  }
   // `split(u|v, unitSpace|uvSpace, uvSet)`: along texture coordinates, which a lot has none of;
   // Insula splits along the scope's x (u) or y (v) instead (docs/cga-cityengine.md).
   if (item.name == "split" && item.args.size() == 3) {

@@ -843,6 +843,11 @@ TEST(CityEngineDialect, AnnotationPatternsAndBraceLists) {
   ASSERT_EQ(a.args.size(), 4U);
   EXPECT_EQ(a.args[0]->text, "Side^4");
   EXPECT_EQ(a.args[2]->text, "{0.1, 0, 0}");
+  // A terminal right before a comment is no element-wise `./`.
+  EXPECT_EQ(check_text("version \"2023.0\"\nLot --> X Wall.// note\nX --> Y./* n */\n"), "");
+  EXPECT_EQ(check_text("version \"2023.0\"\nLot --> roofHip(30, 1, true) R.\n"),
+            "t.cga:2:9: warning[CGA905]: 'roofHip': the arguments after the overhang (even) are "
+            "not supported; the roof is built without them\n");
   EXPECT_EQ(check_text("version \"2023.0\"\n@Handle(translate={1, 2\nattr w = 3\n"),
             "t.cga:3:1: error[CGA101]: expected '}' to close the annotation's list\n");
 }
