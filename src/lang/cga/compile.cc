@@ -252,7 +252,7 @@ class Compiler {
     for (const Item& item : items) {
       if (item.kind == ItemKind::kOp && item.name == "set" && !item.args.empty()) {
         if (const std::string name = set_target(*item.args[0]);
-            !name.empty() && program_->find_attr(name) == nullptr) {
+            !name.empty() && !scope_translation(name) && program_->find_attr(name) == nullptr) {
           program_->attrs.push_back({name, kNoExpr, item.range});
         }
       }
@@ -905,11 +905,25 @@ class Compiler {
     return true;
   }
 
+  // CityEngine's set(scope.tx, v) and its y and z: the axis moved along (0, 1, 2).
+  std::optional<std::uint32_t> scope_translation(const std::string& name) const {
+    if (!program_->cityengine || name.size() != 8 || !name.starts_with("scope.t")) return {};
+    const char axis = name.back();
+    if (axis < 'x' || axis > 'z') return {};
+    return static_cast<std::uint32_t>(axis - 'x');
+  }
+
   // color, set, print, report, nil: CGA's own successor items.
   void built_in(const Item& item, CItem& c) {
     if (item.name == "set") {
       c.code = OpCode::kSet;
       const std::string name = set_target(*item.args[0]);
+      if (const std::optional<std::uint32_t> axis = scope_translation(name)) {
+        c.code = OpCode::kSetScope;
+        c.attr = *axis;
+        c.args.push_back(expr(*item.args[1]));
+        return;
+      }
       // CityEngine's set(material.color, "#...") is color("#...").
       const std::uint32_t attr = name == "material.color" ? program_->color_attr : attr_index(name);
       if (name.empty() || attr == kNoExpr) {

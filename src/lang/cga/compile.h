@@ -218,6 +218,7 @@ enum class OpCode : std::uint8_t {
   kRegistry,  // any other shape operation (extrude, S/s, center, i, roofs, offset, ...)
   kColor,
   kSet,
+  kSetScope,  // CityEngine's set(scope.tx | ty | tz, v): the scope moved (attr: 0, 1, 2)
   kPrint,
   kReport,
   kLabel,   // CityEngine's label("name"): the shape becomes an occluder under that name

@@ -96,6 +96,24 @@ Vec3 Engine::object_position(const State& s) const {
   return t + Vec3{0, 0, 0};  // no -0 in print()
 }
 
+// CityEngine's set(scope.tx, v): the scope (and its geometry) moved along the object frame's
+// axis so that scope.tx reads v (object_position's inverse).
+void Engine::set_scope_translation(const CItem& c, State& st) {
+  const double value = number(c.args[0], st);
+  if (!std::isfinite(value)) {
+    throw EvalError{program_.nodes[c.args[0]].range,
+                    "the scope's translation must be a finite number, got " +
+                        shape::to_string(shape::Value(value))};
+  }
+  const Scope& o = start_state_.scope;
+  const bool flat = o.size.z == 0;
+  const std::array<Vec3, 3> axes = {o.x, flat ? o.z : o.y, flat ? o.y * -1.0 : o.z};
+  const Vec3 t = object_position(st);
+  const double now = c.attr == 0 ? t.x : c.attr == 1 ? t.y : t.z;
+  st.scope.origin = st.scope.origin + axes[c.attr] * (value - now);
+  touch(st);
+}
+
 double Engine::geometry(shape::GeometryQuery query, std::uint8_t option, double tolerance) {
   const State& s = *cur_;
   const Materialized m = materialize(out_.geometry[s.geometry], s.scope.size);
@@ -904,6 +922,9 @@ void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State&
           break;
         }
         set_attr(st, c.attr, eval(c.args[0], st));
+        break;
+      case OpCode::kSetScope:
+        set_scope_translation(c, st);
         break;
       case OpCode::kPrint:
         print(c, st);

@@ -337,6 +337,7 @@ class Engine final : public EvalContext {
   const CBranch& choose_branch(const CItem& c, State& st);
 
   void set_attr(State& st, std::uint32_t attr, Value value);
+  void set_scope_translation(const CItem& c, State& st);
 
   void color(const CItem& c, State& st);
 

@@ -257,6 +257,25 @@ TEST(CityEngineOps, SphereConeAndDiskPrimitives) {
   EXPECT_NEAR(flat_area(r, c), 2 * std::sqrt(2.0), 1e-9);  // an octagon of radius 1
 }
 
+TEST(CityEngineOps, SetScopeTranslationMovesTheScope) {
+  // ce.lib's static model rules place an asset with set(scope.tx, ...): the scope moves in the
+  // object frame (x, up, -y of the lot) so that scope.t reads the value.
+  auto p = compile_text(
+      "version \"2023.0\"\nLot --> s(2, 3, 4) set(scope.tx, 5) set(scope.ty, 1)\n"
+      "  set(scope.tz, scope.tz + 2) print(scope.tx) print(scope.ty) A.\n");
+  ASSERT_TRUE(p);
+  const std::vector<LotResult> r = derive_all(*p, {rectangle_lot(12, 4)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  ASSERT_EQ(r[0].prints.size(), 2U);
+  EXPECT_EQ(r[0].prints[0], "test.cga:3: print: 5");
+  EXPECT_EQ(r[0].prints[1], "test.cga:3: print: 1");
+  const Terminal& a = r[0].terminals_store[0];
+  EXPECT_NEAR(a.scope.origin.x, 5, 1e-9);
+  EXPECT_NEAR(a.scope.origin.z, 1, 1e-9);
+  EXPECT_NEAR(a.scope.origin.y, -2, 1e-9);  // 2 m further along CityEngine's z (Insula's -y)
+  EXPECT_NEAR(a.scope.size.x, 2, 1e-9);
+}
+
 TEST(CityEngineOps, CompSlopeSelectors) {
   auto p = compile_text(R"(
 Lot --> extrude(4) comp(f){ horizontal: H | vertical: V }
