@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -364,6 +365,29 @@ Hull3Result convex_hull_3d(std::span<const Vec3> points, const HullOptions& opti
   result.status = builder.build();
   if (result.ok()) result.mesh = builder.to_mesh(options);
   return result;
+}
+
+std::optional<Vec2> min_area_rectangle_direction(std::span<const Vec2> points) {
+  const Hull2Result hull = convex_hull_2d(points);
+  if (!hull.ok() || hull.ring.size() < 2) return std::nullopt;
+  const Ring& ring = hull.ring;
+  double best = 1e300;
+  std::optional<Vec2> longer;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 d = normalized(ring[(i + 1) % ring.size()] - ring[i]);
+    const Vec2 n{-d.y, d.x};
+    double lo_d = 1e300, hi_d = -1e300, lo_n = 1e300, hi_n = -1e300;
+    for (const Vec2& p : ring) {
+      lo_d = std::min(lo_d, dot(p, d)), hi_d = std::max(hi_d, dot(p, d));
+      lo_n = std::min(lo_n, dot(p, n)), hi_n = std::max(hi_n, dot(p, n));
+    }
+    const double along = hi_d - lo_d, across = hi_n - lo_n;
+    if (along * across < best - 1e-12) {
+      best = along * across;
+      longer = along >= across ? d : n;
+    }
+  }
+  return longer;
 }
 
 }  // namespace insula::kernel

@@ -11,6 +11,7 @@
 // an empty result, never a crash.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -40,6 +41,12 @@ struct Hull2Result {
 // The convex hull of `points` (any order, duplicates allowed), starting at the lowest-x
 // (then lowest-y) point.
 Hull2Result convex_hull_2d(std::span<const Vec2> points);
+
+// The direction of the longer side of the minimum-area rectangle around `points`: one side of
+// that rectangle lies on a hull edge (H. Freeman and R. Shapira, "Determining the minimum-area
+// encasing rectangle for an arbitrary closed curve", CACM 18(7), 1975), so each hull edge is
+// tried. Null for points with no area or length.
+std::optional<Vec2> min_area_rectangle_direction(std::span<const Vec2> points);
 
 struct HullOptions {
   // Merge coplanar neighbouring triangles into one convex polygon face (6 faces for a cube, not

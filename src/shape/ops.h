@@ -171,6 +171,10 @@ struct GeometryPick {
 // keeps the normal on z whatever `up` says), the scope refitted around the unmoved geometry.
 OpResult align_scope_to_geometry(ShapeTree& tree, ShapeId id, Axis up, GeometryPick face,
                                  GeometryPick edge);
+// CityEngine's alignScopeToGeometryBBox: the scope turned about the axis `axes` ("xz", "zx",
+// "xy", ... in CityEngine's names) leaves out, so the two it names span the minimum-area rectangle
+// around the geometry seen along the third, the first along the longer side; refitted.
+OpResult align_scope_to_geometry_bbox(ShapeTree& tree, ShapeId id, std::string_view axes);
 // Turns only the scope (intrinsic x, y, z degrees), then refits it to the unmoved geometry.
 OpResult rotate_scope(ShapeTree& tree, ShapeId id, kernel::Vec3 degrees);
 // Moves the scope origin to corner `corner` (bit 0 x, bit 1 y, bit 2 z) with the axes permuted by

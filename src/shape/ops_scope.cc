@@ -10,6 +10,7 @@
 #include <numbers>
 #include <string>
 
+#include "kernel/convex_hull.h"
 #include "shape/ops.h"
 
 namespace insula::shape {
@@ -355,6 +356,33 @@ OpResult align_scope_to_axes(ShapeTree& tree, ShapeId id, Frame frame, char axis
   return reframed(tree, id, target, true);
 }
 
+OpResult align_scope_to_geometry_bbox(ShapeTree& tree, ShapeId id, std::string_view axes) {
+  const Shape& s = tree[id];
+  Axes a = ce_axes(s);
+  const auto axis = [&](char c) -> Vec3& { return c == 'x' ? a.x : c == 'y' ? a.up : a.z; };
+  const char first = axes[0], second = axes[1];
+  const char fixed = static_cast<char>('x' + 'y' + 'z' - first - second);
+  const Vec3 u = axis(first), v = axis(second), w = axis(fixed);
+  std::vector<kernel::Vec2> points;
+  if (s.mesh) {
+    for (const Vec3& p : s.mesh->positions()) {
+      const Vec3 q = s.scope.to_world(p);
+      points.push_back({dot(q, u), dot(q, v)});
+    }
+  }
+  const std::optional<kernel::Vec2> d = kernel::min_area_rectangle_direction(points);
+  if (!d) return reframed(tree, id, s.scope, true);  // nothing to align to: only refitted
+  const Vec3 along = normalized(u * d->x + v * d->y);
+  // x, y (up), z stay right-handed: in cyclic order the second axis is fixed x first.
+  const bool cyclic = (first == 'x' && second == 'y') || (first == 'y' && second == 'z') ||
+                      (first == 'z' && second == 'x');
+  axis(first) = along;
+  axis(second) = cyclic ? cross(w, along) : cross(along, w);
+  Scope target = s.scope;
+  to_scope_axes(s.is_flat(), a, target);
+  return reframed(tree, id, target, true);
+}
+
 OpResult align_scope_to_geometry(ShapeTree& tree, ShapeId id, Axis up, GeometryPick face,
                                  GeometryPick edge) {
   const Shape& s = tree[id];
@@ -588,6 +616,16 @@ std::vector<Operation> scope_operations() {
          return align_scope_to_geometry(t, id, a.string("up") == "zup" ? Axis::kZ : Axis::kY,
                                         pick_from(automatic ? "largest" : a.string("face")),
                                         pick_from(automatic ? "longest" : a.string("edge")));
+       }});
+  ops.push_back(
+      {"alignScopeToGeometryBBox",
+       "Turns the scope about its third axis so the two named axes span the minimum-area "
+       "rectangle around the geometry seen along the third, the first along its longer side "
+       "(CityEngine's axes: a flat shape's normal is y); the geometry stays put.",
+       {enum_param("axes", "the two axes turned, the first along the longer side", "xz",
+                   {"xy", "yx", "xz", "zx", "yz", "zy"})},
+       [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
+         return align_scope_to_geometry_bbox(t, id, a.string("axes"));
        }});
   ops.push_back({"rotateScope",
                  "Turns only the scope about its own x, then y, then z axis (degrees), then "

@@ -64,6 +64,20 @@ TEST(ConvexHull2d, RandomPointsAreAllInside) {
   }
 }
 
+TEST(MinAreaRectangle, LongerSideOfATurnedRectangleWithInteriorPoints) {
+  // A 10 x 4 rectangle turned by 30 degrees, listed from a short side, with points inside.
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  const Vec2 along{c, s}, across{-s, c};
+  std::vector<Vec2> points;
+  for (const Vec2 q : {Vec2{0, 0}, Vec2{0, 4}, Vec2{10, 4}, Vec2{10, 0}, Vec2{3, 1}, Vec2{7, 2}}) {
+    points.push_back(along * q.x + across * q.y);
+  }
+  const std::optional<Vec2> d = min_area_rectangle_direction(points);
+  ASSERT_TRUE(d.has_value());
+  EXPECT_NEAR(std::fabs(dot(*d, along)), 1, 1e-12);
+  EXPECT_FALSE(min_area_rectangle_direction(std::vector<Vec2>{{1, 1}}).has_value());
+}
+
 TEST(ConvexHull3d, CubeCornersAndInteriorPointsMergeToSixFaces) {
   std::vector<Vec3> points = cube_corners();
   points.push_back({0.5, 0.5, 0.5});

@@ -340,7 +340,8 @@ void Checker::check_occlusion_query(const Expr& expr) {
                         first.operands[0]->text == "sel";
   if (computed) check_expr(*first.operands[1]);  // sel(attr): the word when derived
   if (count >= 1 && !computed) {
-    const std::string target = dotted_name(*expr.operands[1]);
+    const Expr& word = *expr.operands[1];
+    const std::string target = word.kind == ExprKind::kString ? word.text : dotted_name(word);
     if (target != "intra" && target != "inter" && target != "all") {
       error("CGA315",
             "the target of '" + name + "' is intra, inter or all, found " +

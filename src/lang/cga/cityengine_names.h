@@ -33,7 +33,6 @@ inline constexpr std::string_view kUnsupportedOperations[] = {
     "mergeVertices",
     "stop",
     "inline",
-    "alignScopeToGeometryBBox",
     "dim",
 };
 

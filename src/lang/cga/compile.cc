@@ -871,7 +871,9 @@ class Compiler {
     ENode node{ECode::kOcclusion, static_cast<std::uint8_t>(relation), 0, e.range, {}};
     const Expr* computed = nullptr;
     if (e.operands.size() > 1) {
-      const std::string target = dotted_name(*e.operands[1]);
+      // The target word, or the same in quotes (Complete Street's minimumDistance("inter", ...)).
+      const Expr& word = *e.operands[1];
+      const std::string target = word.kind == ExprKind::kString ? word.text : dotted_name(word);
       node.a = static_cast<std::uint32_t>(target == "intra"   ? OcclusionTarget::kIntra
                                           : target == "inter" ? OcclusionTarget::kInter
                                                               : OcclusionTarget::kAll);

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -255,6 +256,21 @@ TEST(CityEngineOps, SphereConeAndDiskPrimitives) {
   EXPECT_EQ(r.geometry[b.geometry].mesh->face_count(), 7U);
   const Terminal& c = r.terminals_store[2];
   EXPECT_NEAR(flat_area(r, c), 2 * std::sqrt(2.0), 1e-9);  // an octagon of radius 1
+}
+
+TEST(CityEngineOps, AlignScopeToGeometryBBoxTakesTheMinimumRectangle) {
+  // A 5 x 20 lot turned by 30 degrees, its first edge the short one: xz puts x along the long
+  // side, the normal (CityEngine's y) stays; zx puts CityEngine's z (Insula's -y) there instead.
+  for (const auto& [axes, sx, sz] : {std::tuple{"xz", 20.0, 5.0}, std::tuple{"zx", 5.0, 20.0}}) {
+    const LotResult r = derive_one(
+        std::string("version \"2023.0\"\nLot --> ") + "alignScopeToGeometryBBox(" + axes + ") A\n",
+        turned_lot(5, 20));
+    ASSERT_EQ(r.terminals_store.size(), 1U);
+    const shape::Scope& s = r.terminals_store[0].scope;
+    EXPECT_NEAR(s.size.x, sx, 1e-9) << axes;
+    EXPECT_NEAR(s.size.y, sz, 1e-9) << axes;
+    expect_near(s.z, {0, 0, 1});  // still the lot's normal
+  }
 }
 
 TEST(CityEngineOps, SetScopeTranslationMovesTheScope) {

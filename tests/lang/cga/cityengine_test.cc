@@ -448,7 +448,8 @@ TEST(CityEngineDialect, MinimumDistanceToLabelledShapes) {
       "| 1 : Box | ~1 : NIL }\n"
       "Box --> extrude(1) report(\"d\", minimumDistance(intra, \"hall\"))\n"
       "  report(\"none\", isinf(minimumDistance(all, \"shed\")))\n"
-      "  report(\"sel\", minimumDistance(sel(target), \"hall\")) B.\n"
+      "  report(\"sel\", minimumDistance(sel(target), \"hall\"))\n"
+      "  report(\"quoted\", minimumDistance(\"intra\", \"hall\")) B.\n"
       "attr target = \"intra\"\n");
   ASSERT_TRUE(p);
   const auto r = derive_all(*p, {rectangle_lot(12, 8)});
@@ -456,7 +457,8 @@ TEST(CityEngineDialect, MinimumDistanceToLabelledShapes) {
   EXPECT_EQ(r[0].reports.at("d").count, 2U);
   EXPECT_NEAR(r[0].reports.at("d").sum, 2 + 4, 1e-9);
   EXPECT_EQ(r[0].reports.at("none").sum, 2);
-  EXPECT_NEAR(r[0].reports.at("sel").sum, 2 + 4, 1e-9);  // sel(attr): the target computed
+  EXPECT_NEAR(r[0].reports.at("sel").sum, 2 + 4, 1e-9);     // sel(attr): the target computed
+  EXPECT_NEAR(r[0].reports.at("quoted").sum, 2 + 4, 1e-9);  // the word in quotes
 }
 
 TEST(CityEngineDialect, OcclusionQueriesWithLabels) {
