@@ -473,6 +473,9 @@ Value Engine::comp_function(std::uint32_t index, Range range) {
 }
 
 bool Engine::edge_selected(const std::string& selector, const State& st, Vec3 outward) const {
+  // CityEngine 2012's street selectors: the street side is street.front without street data.
+  if (selector == "streetSide") return edge_selected("street.front", st, outward);
+  if (selector == "noStreetSide") return !edge_selected("street.front", st, outward);
   if (selector.starts_with("world.")) {
     // The compass side the edge faces most: x east, y north (world.side: any of them).
     const std::string side = selector.substr(6);
@@ -510,9 +513,11 @@ void Engine::setback(const CItem& c, State& st) {
     return;
   }
   const double depth = as_number(distance, program_.nodes[c.args.front()].range);
-  // world.* and object.* keys pick edges by their world or object direction: edge by edge.
+  // world.*, object.* and the street side keys pick edges by their world or object direction:
+  // edge by edge.
   if (std::any_of(c.branches.begin(), c.branches.end(), [](const CBranch& b) {
-        return b.selector.starts_with("world.") || b.selector.starts_with("object.");
+        return b.selector.starts_with("world.") || b.selector.starts_with("object.") ||
+               b.selector == "streetSide" || b.selector == "noStreetSide";
       })) {
     setback_per_edge(c, st, nullptr, depth);
     return;

@@ -163,8 +163,18 @@ class Renamer {
   const std::vector<std::string>* params_ = nullptr;
 };
 
-// Propagation: the imported attribute `alias.x` takes the importer's `x` unless protected;
-// an override `(x = expr)` gives it `expr`.
+// Whether `e` reads the name `name` (a dotted one: `Zoning.Floor_Count_Min`).
+bool mentions(const Expr& e, const std::string& name) {
+  if ((e.kind == ExprKind::kIdent || e.kind == ExprKind::kMember) && dotted_name(e) == name) {
+    return true;
+  }
+  return std::any_of(e.operands.begin(), e.operands.end(),
+                     [&](const ExprPtr& operand) { return mentions(*operand, name); });
+}
+
+// Propagation: the imported attribute `alias.x` takes the importer's `x` unless protected or
+// the importer's `x` reads `alias.x` (Esri's `attr Floor_Count_Min = Zoning.Floor_Count_Min`:
+// the library's default, not a cycle); an override `(x = expr)` gives it `expr`.
 void propagate(Grammar& imported, const ImportDecl& decl, const Grammar& importer) {
   const std::string prefix = decl.alias + ".";
   for (AttrDecl& a : imported.attrs) {
@@ -184,7 +194,7 @@ void propagate(Grammar& imported, const ImportDecl& decl, const Grammar& importe
                            decl.protected_attrs.end();
     if (protect) continue;
     for (const AttrDecl& own : importer.attrs) {
-      if (own.name != name) continue;
+      if (own.name != name || (own.value && mentions(*own.value, a.name))) continue;
       auto ref = std::make_unique<Expr>();
       ref->kind = ExprKind::kIdent;
       ref->text = name;

@@ -509,6 +509,15 @@ TEST(CityEngineDialect, SetbackStreetSidesAreTheLotsSides) {
   EXPECT_NEAR(r[0].reports.at("front").sum, 60, 1e-6);
   EXPECT_NEAR(r[0].reports.at("back").sum, 60, 1e-6);
   EXPECT_NEAR(r[0].reports.at("rest").sum, 80, 1e-6);
+  // CityEngine 2012's noStreetSide: every edge but the street's (the front): a U of depth 3.
+  auto old = compile_text(
+      "version \"2014.0\"\nLot --> setback(3) { noStreetSide : U | remainder : R }\n"
+      "U --> report(\"u\", geometry.area())\nR --> report(\"rest\", geometry.area())\n");
+  ASSERT_TRUE(old);
+  const auto u = derive_all(*old, {rectangle_lot(20, 10)});
+  ASSERT_TRUE(u[0].ok) << diagnostics_text(u[0]);
+  EXPECT_NEAR(u[0].reports.at("rest").sum, 14 * 7, 1e-6);
+  EXPECT_NEAR(u[0].reports.at("u").sum, 200 - 14 * 7, 1e-6);
 }
 
 TEST(CityEngineDialect, CompIndexComputedPerShape) {
@@ -707,6 +716,7 @@ std::map<std::string, std::string> files() {
        "attr height = 2\nattr depth = 0.3\nconst frame = 0.1\n"
        "Window --> s('1, height, depth) Glass.\n"},
       {"lib/loop.cga", "import again : \"loop.cga\"\nX --> Y.\n"},
+      {"lib/zoning.cga", "attr floors = 3\nMass --> extrude(floors) M.\n"},
       {"lib/roofed.cga",
        "version \"2022.0\"\nstart Init(h) --> extrude(h) comp(f) { top : Roof(22) | side : Wall. "
        "}\n"
@@ -792,6 +802,26 @@ TEST(CityEngineImports, TheImporterGivesAnImportedFilesRule) {
   ASSERT_TRUE(r.ok) << testing::diagnostics_text(r);
   EXPECT_EQ(symbol_count(*program.value(), r, "Roof"), 1U);
   EXPECT_EQ(symbol_count(*program.value(), r, "Wall"), 4U);  // a terminal keeps its bare name
+}
+
+TEST(CityEngineImports, AnAttributeReadingTheImportedOneIsNoCycle) {
+  // Esri's `attr Floor_Count_Min = Zoning.Floor_Count_Min`: the imported attribute keeps its
+  // own default instead of taking the importer's (which would read itself).
+  base::Source source("main.cga",
+                      "version \"2015.0\"\nimport z : \"zoning.cga\"\nattr floors = z.floors + 1\n"
+                      "Lot --> print(floors) z.Mass\n");
+  base::Result<Grammar> g = load(source);
+  ASSERT_TRUE(g.ok()) << base::render(g.diagnostics().front());
+  auto program = compile(g.value(), source, {});
+  ASSERT_TRUE(program.ok()) << base::render(program.diagnostics().front());
+  DeriveOptions options;
+  options.keep_terminals = true;
+  const LotResult r = derive_lot(*program.value(), rectangle_lot(6, 4), 0, options);
+  ASSERT_TRUE(r.ok) << testing::diagnostics_text(r);
+  ASSERT_EQ(r.prints.size(), 1U);
+  EXPECT_NE(r.prints[0].find("print: 4"), std::string::npos) << r.prints[0];
+  ASSERT_EQ(r.terminals_store.size(), 1U);
+  EXPECT_NEAR(r.terminals_store[0].scope.size.y, 3, 1e-9);
 }
 
 TEST(CityEngineImports, StartAndExtensionRules) {

@@ -76,9 +76,10 @@ TEST(CgaOperations, SelectorsAreTheRegistryChoices) {
   EXPECT_EQ(find_operation("shapeU")->selectors, (V{"shape", "remainder"}));
   EXPECT_TRUE(find_operation("innerRectangle")->selectors_are_pieces);
   EXPECT_EQ(find_operation("setback")->selectors,
-            (V{"front", "back", "left", "right", "side", "all", "street", "remainder",
-               "world.north", "world.south", "world.east", "world.west", "world.side",
-               "object.front", "object.back", "object.left", "object.right", "object.side"}));
+            (V{"front",       "back",         "left",        "right",        "side",
+               "all",         "street",       "remainder",   "world.north",  "world.south",
+               "world.east",  "world.west",   "world.side",  "object.front", "object.back",
+               "object.left", "object.right", "object.side", "streetSide",   "noStreetSide"}));
   EXPECT_EQ(find_operation("offset")->selectors, (V{"inside", "border"}));
   EXPECT_TRUE(find_operation("offset")->selectors_are_pieces);
   EXPECT_TRUE(is_selector(*find_operation("CS"), "side"));
