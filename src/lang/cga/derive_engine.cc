@@ -254,15 +254,19 @@ double box_distance(const Scope& a, const Scope& b) {
 // CityEngine's geometry.du .. vMax on the shape's uv set (shape/uv_map.h: an affine projection
 // of the world positions); a shape without the set measures 0, as one without texture
 // coordinates does in CityEngine.
-double Engine::uv_extent(std::uint8_t which, int set, bool unit_space) {
+std::optional<shape::UvMap> Engine::uv_map(const State& st, int set) const {
   const std::string name = shape::uv_set_attribute(set);
-  const std::vector<Value> state = state_values(*cur_);
-  std::optional<shape::UvMap> map;
+  const std::vector<Value> state = state_values(st);
   for (std::size_t k = 0; k < state.size(); ++k) {
     if (program_.attrs[program_.state_attrs[k]].name == name) {
-      map = shape::decode_uv_map(to_shape(state[k]));
+      return shape::decode_uv_map(to_shape(state[k]));
     }
   }
+  return std::nullopt;
+}
+
+double Engine::uv_extent(std::uint8_t which, int set, bool unit_space) {
+  const std::optional<shape::UvMap> map = uv_map(*cur_, set);
   const Materialized m = materialize(out_.geometry[cur_->geometry], cur_->scope.size);
   if (!map || !m.mesh) return 0;
   std::vector<Vec3> points;

@@ -350,6 +350,8 @@ class Engine final : public EvalContext {
                    const Scope* parent = nullptr);
   // The values of Program::state_attrs the shape sees (null where none is set).
   std::vector<Value> state_values(const State& st) const;
+  // The shape's uv set `set` (setupProjection + projectUV), if it has one.
+  std::optional<shape::UvMap> uv_map(const State& st, int set) const;
 
   bool check(const CItem& c, const OpOutcome& o) {
     if (!o.warning.empty()) warn(c, o.warning);

@@ -476,6 +476,17 @@ bool Engine::edge_selected(const std::string& selector, const State& st, Vec3 ou
   // CityEngine 2012's street selectors: the street side is street.front without street data.
   if (selector == "streetSide") return edge_selected("street.front", st, outward);
   if (selector == "noStreetSide") return !edge_selected("street.front", st, outward);
+  if (selector.starts_with("uv.")) {
+    // The uv side the edge faces most: left / right against / along u, bottom / top along v
+    // (uv set 0; a shape without it has no such edges).
+    const std::optional<shape::UvMap> map = uv_map(st, 0);
+    if (!map) return false;
+    const double u = dot(map->du, outward), v = dot(map->dv, outward);
+    const std::string side = selector.substr(3);
+    const bool along_u = std::fabs(u) >= std::fabs(v);
+    return (side == "left" && along_u && u < 0) || (side == "right" && along_u && u > 0) ||
+           (side == "bottom" && !along_u && v < 0) || (side == "top" && !along_u && v > 0);
+  }
   if (selector.starts_with("world.")) {
     // The compass side the edge faces most: x east, y north (world.side: any of them).
     const std::string side = selector.substr(6);
@@ -517,7 +528,8 @@ void Engine::setback(const CItem& c, State& st) {
   // edge by edge.
   if (std::any_of(c.branches.begin(), c.branches.end(), [](const CBranch& b) {
         return b.selector.starts_with("world.") || b.selector.starts_with("object.") ||
-               b.selector == "streetSide" || b.selector == "noStreetSide";
+               b.selector.starts_with("uv.") || b.selector == "streetSide" ||
+               b.selector == "noStreetSide";
       })) {
     setback_per_edge(c, st, nullptr, depth);
     return;

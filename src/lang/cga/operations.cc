@@ -90,7 +90,8 @@ constexpr Alias kAliases[] = {
     {"setback", OpKind::kGeneric, "setback", "distance ... !edges", "", 1, BlockUse::kRequired,
      KeyUse::kSelector,
      "edges street remainder world.north world.south world.east world.west world.side "
-     "object.front object.back object.left object.right object.side streetSide noStreetSide",
+     "object.front object.back object.left object.right object.side streetSide noStreetSide "
+     "uv.left uv.right uv.bottom uv.top",
      false, "cut a strip along the selected edges; key remainder for what is left"},
     {"shapeL", OpKind::kGeneric, "shapeL", "frontWidth leftWidth", "", 2, BlockUse::kOptional,
      KeyUse::kSelector, "pieces:part", false, ""},

@@ -520,6 +520,26 @@ TEST(CityEngineDialect, SetbackStreetSidesAreTheLotsSides) {
   EXPECT_NEAR(u[0].reports.at("u").sum, 200 - 14 * 7, 1e-6);
 }
 
+TEST(CityEngineDialect, SetbackByUvSide) {
+  // scope.xz on a lot: u along x, v along CityEngine's z (the lot's -y), so uv.top is the
+  // front edge (y = 0) and uv.left the edge at x = 0.
+  for (const auto& [side, area] : {std::pair{"uv.top", 40.0}, std::pair{"uv.left", 20.0}}) {
+    auto p = compile_text(std::string("version \"2020.0\"\n") +
+                          "Lot --> setupProjection(0, scope.xz, 1, 1) projectUV(0)\n"
+                          "  setback(2) { " +
+                          side +
+                          " : S | remainder : R }\n"
+                          "S --> report(\"s\", geometry.area()) report(\"x\", scope.tx)\n"
+                          "R --> report(\"rest\", geometry.area())\n");
+    ASSERT_TRUE(p);
+    const auto r = derive_all(*p, {rectangle_lot(20, 10)});
+    ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+    EXPECT_NEAR(r[0].reports.at("s").sum, area, 1e-6) << side;
+    EXPECT_NEAR(r[0].reports.at("rest").sum, 200 - area, 1e-6) << side;
+    EXPECT_NEAR(r[0].reports.at("x").sum, 0, 1e-6) << side;  // at x = 0, not x = 18
+  }
+}
+
 TEST(CityEngineDialect, CompIndexComputedPerShape) {
   // `n + 1` is evaluated on the shape comp splits: face 3 (of the six) takes the door.
   auto p = compile_text(

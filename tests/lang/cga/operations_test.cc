@@ -75,11 +75,12 @@ TEST(CgaOperations, SelectorsAreTheRegistryChoices) {
                "street.right", "street.top",   "street.bottom", "street.side"}));
   EXPECT_EQ(find_operation("shapeU")->selectors, (V{"shape", "remainder"}));
   EXPECT_TRUE(find_operation("innerRectangle")->selectors_are_pieces);
-  EXPECT_EQ(find_operation("setback")->selectors,
-            (V{"front",       "back",         "left",        "right",        "side",
-               "all",         "street",       "remainder",   "world.north",  "world.south",
-               "world.east",  "world.west",   "world.side",  "object.front", "object.back",
-               "object.left", "object.right", "object.side", "streetSide",   "noStreetSide"}));
+  EXPECT_EQ(
+      find_operation("setback")->selectors,
+      (V{"front",      "back",         "left",        "right",       "side",         "all",
+         "street",     "remainder",    "world.north", "world.south", "world.east",   "world.west",
+         "world.side", "object.front", "object.back", "object.left", "object.right", "object.side",
+         "streetSide", "noStreetSide", "uv.left",     "uv.right",    "uv.bottom",    "uv.top"}));
   EXPECT_EQ(find_operation("offset")->selectors, (V{"inside", "border"}));
   EXPECT_TRUE(find_operation("offset")->selectors_are_pieces);
   EXPECT_TRUE(is_selector(*find_operation("CS"), "side"));
