@@ -220,6 +220,8 @@ void Checker::check_member(const Expr& expr) {
   }
   if (cityengine() && function(dotted_name(expr), 0) != nullptr) return;  // imported constant
   if (cityengine() && dotted_name(expr) == "initialShape.startRule") return;
+  // The colour map texture() sets: an attribute of every CityEngine program (shape/uv_map.h).
+  if (cityengine() && dotted_name(expr) == "material.colormap") return;
   if (cityengine() && dotted_name(expr).starts_with("initialShape.origin.p") &&
       dotted_name(expr).size() == 22) {
     return;  // the lot's origin (compile.cc)

@@ -11,6 +11,7 @@
 #include "lang/cga/eval.h"
 #include "lang/cga/geometry_functions.h"
 #include "lang/cga/operations.h"
+#include "shape/uv_map.h"
 
 namespace insula::lang::cga {
 
@@ -497,7 +498,9 @@ class Compiler {
   std::uint32_t member(const Expr& e) {
     const Expr& object = *e.operands[0];
     if (const std::uint32_t a = attr_index(dotted_name(e)); a != kNoExpr) {
-      return add(ENode{ECode::kAttr, 0, a, e.range, {}});
+      // CityEngine's material.colormap reads "" where no texture was set (op 1: null as "").
+      const bool text = dotted_name(e) == shape::kColormapAttribute;
+      return add(ENode{ECode::kAttr, static_cast<std::uint8_t>(text ? 1 : 0), a, e.range, {}});
     }
     if (const std::uint32_t fn = function_id(dotted_name(e), 0); fn != kNoExpr) {
       return add(ENode{ECode::kCall, 0, fn, e.range, {}});  // an imported constant

@@ -553,8 +553,11 @@ Value evaluate(const Program& program, std::uint32_t expr, EvalContext& context)
   switch (n.code) {
     case ECode::kConst:
       return program.consts[n.a];
-    case ECode::kAttr:
-      return context.attribute(n.a, n.range);
+    case ECode::kAttr: {
+      Value v = context.attribute(n.a, n.range);
+      if (n.op == 1 && std::holds_alternative<std::monostate>(v)) return std::string();
+      return v;
+    }
     case ECode::kShapeAttr:
       return context.shape_attribute(static_cast<ShapeAttr>(n.a));
     case ECode::kOcc:

@@ -4,6 +4,7 @@
 #include <set>
 #include <utility>
 
+#include "lang/cga/operations.h"
 #include "lang/cga/parser.h"
 
 namespace insula::lang::cga {
@@ -147,13 +148,18 @@ class Renamer {
       if (item.kind == ItemKind::kSymbol && rules_.count(item.name))
         item.name = prefix_ + item.name;
       for (ExprPtr& arg : item.args) expr(*arg);
-      for (Branch& b : item.branches) branch(b);
+      const OperationInfo* op = find_operation(item.name);
+      for (Branch& b : item.branches) branch(b, op);
     }
   }
 
-  void branch(Branch& b) {
-    if (b.key) expr(*b.key);
-    for (Branch& part : b.pattern) branch(part);
+  // A key that is a selector word of the operation stays that word even when the file has an
+  // attribute of its name (Esri's massmodeling_01: `attr shape` and `shapeL(...) { shape : A }`).
+  void branch(Branch& b, const OperationInfo* op) {
+    const bool selector =
+        b.key && op != nullptr && b.key->kind == ExprKind::kIdent && is_selector(*op, b.key->text);
+    if (b.key && !selector) expr(*b.key);
+    for (Branch& part : b.pattern) branch(part, op);
     items(b.items);
   }
 

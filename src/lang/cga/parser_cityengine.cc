@@ -23,6 +23,7 @@
 // percentage) is a nested chain, so nesting needs no brackets. Expressions add `case`/percentage
 // chains as values, arrays `[a, b]` and indexing `a[i]` (parser_internal.h).
 #include <cctype>
+#include <map>
 #include <set>
 
 #include "lang/cga/cityengine_names.h"
@@ -591,22 +592,42 @@ Item Parser::ce_symbol_or_operation() {
 
 // `Name(args)` parsed as an operation is a rule call when a rule of that name exists or no
 // operation does (an imported `alias.Rule(...)`, or a rule the checker reports as undefined).
-void Parser::ce_resolve_calls() {
-  std::set<std::string, std::less<>> rules;
-  for (const PrioritySet& set : grammar_.sets) {
-    for (const Rule& rule : set.rules) rules.insert(rule.predecessor);
+// A split branch written without a size (`| split(y){ ... } |` in Esri's own tutorials) takes
+// what is left, as `~1`.
+void Parser::float_keyless_branches(Item& item) {
+  for (Branch& b : item.branches) {
+    if (b.repeat || b.key || b.items.empty()) continue;
+    ExprPtr one = make(ExprKind::kNumber, {b.range.begin, b.range.begin});
+    one->number = 1;
+    b.key = make_unary(UnaryOp::kFloating, b.range.begin, std::move(one));
   }
+}
+
+void Parser::ce_resolve_calls() {
+  std::map<std::string, std::set<std::size_t>, std::less<>> rules;  // name -> parameter counts
+  for (const PrioritySet& set : grammar_.sets) {
+    for (const Rule& rule : set.rules) rules[rule.predecessor].insert(rule.params.size());
+  }
+  // A call is the file's rule unless an operation of that name takes it and no rule of the name
+  // has that many parameters (a rule `i --> ...` beside `i("cube")` calls).
+  const auto calls_rule = [&](const Item& item) {
+    const auto it = rules.find(item.name);
+    if (it == rules.end()) return false;
+    return find_operation(item.name) == nullptr || item.args.empty() ||
+           it->second.count(item.args.size()) > 0;
+  };
   // A repeat's parts live in `pattern`, everything else in `items`.
   const auto walk = [&](auto& self, Branch& branch) -> void {
     for (Item& item : branch.items) {
       const bool cityengine_op =
           contains(kUnsupportedOperations, item.name) || contains(kDetailOperations, item.name);
       if (item.kind == ItemKind::kOp && !item.has_block &&
-          (rules.count(item.name) || (find_operation(item.name) == nullptr && !cityengine_op))) {
+          (calls_rule(item) || (find_operation(item.name) == nullptr && !cityengine_op))) {
         item.kind = ItemKind::kSymbol;
         item.op = OpKind::kGeneric;
       }
       if (item.kind == ItemKind::kOp) drop_form_words(item);
+      if (item.kind == ItemKind::kOp && item.name == "split") float_keyless_branches(item);
       for (Branch& inner : item.branches) self(self, inner);
     }
     for (Branch& part : branch.pattern) self(self, part);

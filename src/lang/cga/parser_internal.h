@@ -173,6 +173,7 @@ class Parser {
   ExprPtr ce_annotation_text();
   // `start Name -->` and `extension Name -->`: the keyword before a rule's name.
   bool ce_at_rule_keyword() const;
+  void float_keyless_branches(Item& item);
   void ce_keyword_rule(std::vector<Annotation> annotations);
   // A rule head at the cursor: `Name -->` or `Name(a, b) -->`.
   bool ce_at_rule_head() const;

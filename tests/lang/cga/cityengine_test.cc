@@ -737,6 +737,9 @@ std::map<std::string, std::string> files() {
        "Window --> s('1, height, depth) Glass.\n"},
       {"lib/loop.cga", "import again : \"loop.cga\"\nX --> Y.\n"},
       {"lib/zoning.cga", "attr floors = 3\nMass --> extrude(floors) M.\n"},
+      {"lib/lshape.cga",
+       "attr shape = \"l\"\nLot --> shapeL(4, 3) { shape : Wing | remainder : Yard. }\n"
+       "Wing --> extrude(2) W.\n"},
       {"lib/roofed.cga",
        "version \"2022.0\"\nstart Init(h) --> extrude(h) comp(f) { top : Roof(22) | side : Wall. "
        "}\n"
@@ -844,6 +847,23 @@ TEST(CityEngineImports, AnAttributeReadingTheImportedOneIsNoCycle) {
   EXPECT_NEAR(r.terminals_store[0].scope.size.y, 3, 1e-9);
 }
 
+TEST(CityEngineImports, SelectorKeysStaySelectorsUnderAnAttributeOfTheirName) {
+  // Esri's massmodeling_01 has `attr shape` and `shapeL(...) { shape : ... }`; imported, the key
+  // is still shapeL's selector, not the attribute `ls.shape`.
+  base::Source source("main.cga",
+                      "version \"2011.1\"\nimport ls : \"lshape.cga\"\nLot --> ls.Lot\n");
+  base::Result<Grammar> g = load(source);
+  ASSERT_TRUE(g.ok()) << base::render(g.diagnostics().front());
+  const CheckResult checked = check(g.value(), source);
+  ASSERT_TRUE(checked.ok) << base::render(checked.diagnostics.front());
+  auto program = compile(g.value(), source, {});
+  ASSERT_TRUE(program.ok()) << base::render(program.diagnostics().front());
+  const LotResult r = derive_lot(*program.value(), rectangle_lot(10, 8), 0, {});
+  ASSERT_TRUE(r.ok) << testing::diagnostics_text(r);
+  EXPECT_EQ(symbol_count(*program.value(), r, "W"), 1U);
+  EXPECT_EQ(symbol_count(*program.value(), r, "Yard"), 1U);
+}
+
 TEST(CityEngineImports, StartAndExtensionRules) {
   // CityEngine 2022.0: `start Init` is also `start` (here `roof.start(6)`), and the import
   // redefines the extension rule Roof in the importing file's names (`Flat` is main.cga's).
@@ -881,6 +901,25 @@ TEST(CityEngineImports, StartAndExtensionRules) {
   ASSERT_FALSE(g.ok());
   EXPECT_EQ(base::render(g.diagnostics().front()),
             "main.cga:2:29: error[CGA343]: \"roofed.cga\" has no rule 'Gable' to redefine");
+}
+
+TEST(CityEngineDialect, TutorialForms) {
+  // Esri's tutorials: a split branch without a size takes what is left (~1); a rule named `i`
+  // beside i("...") calls of the operation; material.colormap reads the texture ("" unset).
+  auto p = compile_text(
+      "version \"2011.1\"\n"
+      "Lot --> split(x) { 2 : A | split(z) { 1 : B | ~1 : C } | 3 : i }\n"
+      "i --> i(\"builtin:cube\") I.\n"
+      "A --> texture(\"w.png\") report(\"a\", fileName(material.colormap) == \"w.png\") X.\n"
+      "B --> report(\"b\", scope.sx) report(\"none\", material.colormap == \"\") X.\n"
+      "C --> X.\n");
+  ASSERT_TRUE(p);
+  const auto r = derive_all(*p, {rectangle_lot(10, 4)});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_NEAR(r[0].reports.at("b").sum, 5, 1e-9);  // 10 - 2 - 3
+  EXPECT_EQ(r[0].reports.at("a").sum, 1);
+  EXPECT_EQ(r[0].reports.at("none").sum, 1);
+  EXPECT_EQ(symbol_count(*p, r[0], "I"), 1U);
 }
 
 TEST(CityEngineDialect, AnnotationPatternsAndBraceLists) {
