@@ -103,7 +103,9 @@ void Engine::set_scope_translation(const CItem& c, State& st) {
   if (!std::isfinite(value)) {
     throw EvalError{program_.nodes[c.args[0]].range,
                     "the scope's translation must be a finite number, got " +
-                        shape::to_string(shape::Value(value))};
+                        std::string(std::isnan(value) ? "NaN"
+                                    : value > 0       ? "inf"
+                                                      : "-inf")};
   }
   const Scope& o = start_state_.scope;
   const bool flat = o.size.z == 0;
