@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "io/atomic_file.h"
+#include "io/json_stream.h"
 #include "io/triangulated.h"
 #include "shape/part_mesh.h"
 
@@ -17,13 +18,20 @@ namespace {
 // 1 µm: far below the 1 mm a survey needs, and 6 + 7 digits stay exact in a double for UTM.
 constexpr int kCoordinateDecimals = 6;
 
-void append_vertex(std::string& out, kernel::Vec3 world) {
+// A scene point as the OBJ writes it: local or world, Z up or Y up (x, z, -y).
+kernel::Vec3 written(kernel::Vec3 local, const shape::Scene& scene, const ObjOptions& options) {
+  const kernel::Vec3 p = options.world ? local + scene.origin : local;
+  if (options.up_axis() == 'y') return {p.x, p.z, -p.y};
+  return p;
+}
+
+void append_vertex(std::string& out, kernel::Vec3 p) {
   out += "v ";
-  out += format_decimal(world.x, kCoordinateDecimals);
+  out += format_decimal(p.x, kCoordinateDecimals);
   out += ' ';
-  out += format_decimal(world.y, kCoordinateDecimals);
+  out += format_decimal(p.y, kCoordinateDecimals);
   out += ' ';
-  out += format_decimal(world.z, kCoordinateDecimals);
+  out += format_decimal(p.z, kCoordinateDecimals);
   out += '\n';
 }
 
@@ -42,10 +50,12 @@ FaceGroups group_faces(const kernel::Mesh& mesh, const MaterialTable& materials)
 
 // Writes a part's vertices (and texture coordinates, one per vertex, when it has a uv map) then its
 // faces; `first_vertex` / `first_uv` are the 1-based OBJ indices of its vertex 0 / its first vt.
-void append_part(std::string& out, const shape::Scene& scene, const std::string& building_name,
-                 const shape::Part& part, std::size_t part_index, const MaterialTable& materials,
-                 std::size_t first_vertex, std::size_t first_uv) {
-  for (const kernel::Vec3& p : part.mesh.positions()) append_vertex(out, p + scene.origin);
+void append_part(std::string& out, const shape::Scene& scene, const ObjOptions& options,
+                 const std::string& building_name, const shape::Part& part, std::size_t part_index,
+                 const MaterialTable& materials, std::size_t first_vertex, std::size_t first_uv) {
+  for (const kernel::Vec3& p : part.mesh.positions()) {
+    append_vertex(out, written(p, scene, options));
+  }
   if (part.uv) {
     for (const kernel::Vec3& p : part.mesh.positions()) {
       const kernel::Vec2 t = part.uv->at(p);
@@ -70,13 +80,49 @@ void append_part(std::string& out, const shape::Scene& scene, const std::string&
   }
 }
 
-void append_header(std::string& out, const shape::Scene& scene, std::string_view mtl_file_name) {
-  out += "# Insula OBJ export: meters, Z up, world coordinates (local + origin)\n";
-  out += "# origin " + format_decimal(scene.origin.x, kCoordinateDecimals) + " " +
+// How a written point goes back to the world (the scene's CRS), for the header and the sidecar.
+std::string to_world_text(const ObjOptions& options) {
+  if (options.world) {
+    return options.up_axis() == 'y' ? "world = (x, -z, y)" : "world = (x, y, z)";
+  }
+  return options.up_axis() == 'y' ? "world = (x, -z, y) + origin" : "world = (x, y, z) + origin";
+}
+
+std::string origin_text(const shape::Scene& scene) {
+  return format_decimal(scene.origin.x, kCoordinateDecimals) + " " +
          format_decimal(scene.origin.y, kCoordinateDecimals) + " " +
-         format_decimal(scene.origin.z, kCoordinateDecimals) + "\n";
+         format_decimal(scene.origin.z, kCoordinateDecimals);
+}
+
+void append_header(std::string& out, const shape::Scene& scene, const ObjOptions& options,
+                   std::string_view mtl_file_name) {
+  out += std::string("# Insula OBJ export: meters, ") + (options.up_axis() == 'y' ? "Y" : "Z") +
+         " up, " + (options.world ? "world" : "local") + " coordinates; " + to_world_text(options) +
+         "\n";
+  out += "# origin " + origin_text(scene) + "\n";
   if (!scene.crs.empty()) out += "# crs " + safe_name(scene.crs, "") + "\n";
   out += "mtllib " + std::string(mtl_file_name) + "\n";
+}
+
+// The sidecar: what a GIS user needs to put the model back in place.
+std::string origin_json(const shape::Scene& scene, const ObjOptions& options) {
+  std::string out = "{\n  \"origin\": [" + format_decimal(scene.origin.x, kCoordinateDecimals) +
+                    ", " + format_decimal(scene.origin.y, kCoordinateDecimals) + ", " +
+                    format_decimal(scene.origin.z, kCoordinateDecimals) + "],\n";
+  out += "  \"crs\": ";
+  if (scene.crs.empty()) {
+    out += "null";
+  } else {
+    out += '"';
+    append_json_escaped(out, scene.crs);
+    out += '"';
+  }
+  out += ",\n";
+  out += "  \"units\": \"m\",\n";
+  out += std::string("  \"up\": \"") + options.up_axis() + "\",\n";
+  out += std::string("  \"coordinates\": \"") + (options.world ? "world" : "local") + "\",\n";
+  out += "  \"toWorld\": \"" + to_world_text(options) + "\"\n}\n";
+  return out;
 }
 
 // The file name each image read from a file gets beside the OBJ: its own, made unique.
@@ -131,12 +177,14 @@ std::string format_decimal(double value, int decimals) {
   return text;
 }
 
-ObjText obj_text(const shape::Scene& input, std::string_view mtl_file_name) {
+ObjText obj_text(const shape::Scene& input, std::string_view mtl_file_name,
+                 const ObjOptions& options) {
   shape::Scene expanded;  // shared-mesh instances written as plain geometry
   const shape::Scene& scene = shape::expand_instances(input, expanded);
   const MaterialTable materials(scene);
   ObjText text;
-  append_header(text.obj, scene, mtl_file_name);
+  append_header(text.obj, scene, options, mtl_file_name);
+  text.origin_json = origin_json(scene, options);
   std::size_t next_vertex = 1;
   std::size_t next_uv = 1;
   for (std::size_t b = 0; b < scene.buildings.size(); ++b) {
@@ -145,7 +193,8 @@ ObjText obj_text(const shape::Scene& input, std::string_view mtl_file_name) {
     text.obj += "o " + building_name + "\n";
     for (std::size_t p = 0; p < building.parts.size(); ++p) {
       const shape::Part& part = building.parts[p];
-      append_part(text.obj, scene, building_name, part, p, materials, next_vertex, next_uv);
+      append_part(text.obj, scene, options, building_name, part, p, materials, next_vertex,
+                  next_uv);
       next_vertex += part.mesh.vertex_count();
       if (part.uv) next_uv += part.mesh.vertex_count();
     }
@@ -156,11 +205,18 @@ ObjText obj_text(const shape::Scene& input, std::string_view mtl_file_name) {
   return text;
 }
 
-std::string write_obj(const shape::Scene& scene, const std::filesystem::path& obj_path) {
+std::filesystem::path origin_sidecar_path(const std::filesystem::path& obj_path) {
+  std::filesystem::path sidecar = obj_path;
+  sidecar.replace_extension(".origin.json");
+  return sidecar;
+}
+
+std::string write_obj(const shape::Scene& scene, const std::filesystem::path& obj_path,
+                      const ObjOptions& options) {
   std::filesystem::path mtl_path = obj_path;
   mtl_path.replace_extension(".mtl");
   // The real file name, even with blanks: Blender and assimp read mtllib to the end of the line.
-  const ObjText text = obj_text(scene, mtl_path.filename().string());
+  const ObjText text = obj_text(scene, mtl_path.filename().string(), options);
   std::vector<std::filesystem::path> written;
   const auto write = [&](const std::filesystem::path& path, const std::string& bytes) {
     std::string error = write_file_atomically(path, bytes);
@@ -178,6 +234,9 @@ std::string write_obj(const shape::Scene& scene, const std::filesystem::path& ob
     }
   }
   if (std::string error = write(mtl_path, text.mtl); !error.empty()) return error;
+  if (std::string error = write(origin_sidecar_path(obj_path), text.origin_json); !error.empty()) {
+    return error;
+  }
   return write(obj_path, text.obj);
 }
 

@@ -40,7 +40,7 @@ bool is_supported_output(const std::string& path) {
 std::string write_scene(const shape::Scene& scene, const std::string& path,
                         const OutputOptions& options) {
   const std::string format = output_format_name(path);
-  if (format == "obj") return write_obj(scene, path);
+  if (format == "obj") return write_obj(scene, path, options.obj);
   if (format == "glb" || format == "gltf") return write_gltf(scene, path);
   if (format == "cityjson") return write_cityjson(scene, path);
   if (format == "svg") return write_svg(scene, path, options.svg);
@@ -50,7 +50,8 @@ std::string write_scene(const shape::Scene& scene, const std::string& path,
 
 std::vector<std::string> files_of_output(const std::string& path) {
   if (output_format_name(path) != "obj") return {path};
-  return {path, std::filesystem::path(path).replace_extension(".mtl").string()};
+  return {path, std::filesystem::path(path).replace_extension(".mtl").string(),
+          origin_sidecar_path(path).string()};
 }
 
 namespace {

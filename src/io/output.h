@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/obj_writer.h"
 #include "io/png_renderer.h"
 #include "io/svg_writer.h"
 #include "shape/scene.h"
@@ -22,12 +23,13 @@ std::string output_format_name(const std::string& path);
 struct OutputOptions {
   RenderOptions render;
   SvgOptions svg;
+  ObjOptions obj;
 };
 
 // Writes the scene in the path's format, atomically. Empty string on success, else the reason.
 std::string write_scene(const shape::Scene& scene, const std::string& path,
                         const OutputOptions& options = {});
-// The files a path's writer creates: the path itself, and for OBJ its .mtl beside it.
+// The files a path's writer creates: the path itself, and for OBJ its .mtl and origin sidecar.
 std::vector<std::string> files_of_output(const std::string& path);
 
 // Writes several files as one transaction: a file that already exists is first moved aside (to

@@ -41,7 +41,7 @@ cat >"$tmp/lot.geojson" <<'EOF'
   "coordinates": [[[20, 0], [30, 0], [30, 10], [20, 10], [20, 0]]]}}]}
 EOF
 "$insula" build "$ws/City/rules/street.cga" --lot "$tmp/lot.geojson" -o "$tmp/street.obj" \
-  -o "$tmp/street.glb" -o "$tmp/street.png" --report "$tmp/street.json" --threads 2 \
+  --obj-world -o "$tmp/street.glb" -o "$tmp/street.png" --report "$tmp/street.json" --threads 2 \
   2>"$tmp/err" >/dev/null || fail "street build: $(cat "$tmp/err")"
 [ "$(grep -c 'AST100' "$tmp/err")" = 1 ] ||
   fail "one AST100 warning for two inserts: $(cat "$tmp/err")"
@@ -66,7 +66,7 @@ Gap --> NIL
 Door --> s('1, 4, 0.5) i("doors/door.glb")
 EOF
 "$insula" build "$ws/City/rules/one.cga" --lot "$tmp/lot.geojson" -o "$tmp/one.obj" -q \
-  >/dev/null || fail "one build"
+  --obj-world >/dev/null || fail "one build"
 [ "$(bbox "$tmp/one.obj")" = "1.000 0.000 1.000 23.000 4.000 1.500" ] ||
   fail "one bbox $(bbox "$tmp/one.obj")"
 [ "$(grep -c '^f ' "$tmp/one.obj")" = 24 ] ||

@@ -23,21 +23,21 @@ awk 'BEGIN {
 
 old_files() {  # dir: the user's earlier outputs, with known content
   mkdir -p "$1"
-  for f in out.glb out.obj out.mtl out.city.json report.json; do echo "old $f" >"$1/$f"; done
+  for f in out.glb out.obj out.mtl out.origin.json out.city.json report.json; do echo "old $f" >"$1/$f"; done
 }
 kept_old() {  # dir: every earlier file back with its content, nothing else in the folder
   local f
-  for f in out.glb out.obj out.mtl out.city.json report.json; do
+  for f in out.glb out.obj out.mtl out.origin.json out.city.json report.json; do
     [ "$(cat "$1/$f" 2>/dev/null)" = "old $f" ] || { echo "$f not restored"; return 1; }
   done
-  [ "$(ls -A "$1" | wc -l)" -eq 5 ] || { echo "extra files:"; ls -A "$1"; return 1; }
+  [ "$(ls -A "$1" | wc -l)" -eq 6 ] || { echo "extra files:"; ls -A "$1"; return 1; }
 }
 all_new() {  # dir: every output replaced, no backup or temporary
   local f
-  for f in out.glb out.obj out.mtl out.city.json report.json; do
+  for f in out.glb out.obj out.mtl out.origin.json out.city.json report.json; do
     [ -s "$1/$f" ] && ! echo "old $f" | cmp -s - "$1/$f" || { echo "$f not new"; return 1; }
   done
-  [ "$(ls -A "$1" | wc -l)" -eq 5 ] || { echo "extra files:"; ls -A "$1"; return 1; }
+  [ "$(ls -A "$1" | wc -l)" -eq 6 ] || { echo "extra files:"; ls -A "$1"; return 1; }
 }
 wait_for() {  # file, pattern: up to 60 s until the pattern shows up in the file
   local k

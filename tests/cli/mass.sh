@@ -44,6 +44,20 @@ node -e 'const b = require("fs").readFileSync(process.argv[1]);
 expect_exit 0 "cutaway" "$insula" mass "$example" -o "$tmp/cut.png" --image-size 320x200 --cut-height 3 --quiet
 cmp -s "$tmp/small.png" "$tmp/cut.png" && fail "--cut-height changes the picture"
 expect_exit 0 "plan view" "$insula" mass "$example" -o "$tmp/plan.png" --elevation 90 --azimuth 270 --quiet
+# OBJ for modelling tools (issue 21): local and Y up by default, the origin beside it; Z up and
+# world coordinates on request. The same building's height shows on y, then on z.
+expect_exit 0 "obj y up" "$insula" mass "$example" -o "$tmp/up.obj" --quiet
+head -1 "$tmp/up.obj" | grep -q "Y up, local coordinates" || fail "obj header: $(head -1 "$tmp/up.obj")"
+node -e 'const o = JSON.parse(require("fs").readFileSync(process.argv[1]));
+         if (o.up !== "y" || o.coordinates !== "local" || o.origin.length !== 3) process.exit(1);' \
+  "$tmp/up.origin.json" || fail "obj origin sidecar: $(cat "$tmp/up.origin.json")"
+expect_exit 0 "obj world" "$insula" mass "$example" -o "$tmp/world.obj" --obj-world --quiet
+head -1 "$tmp/world.obj" | grep -q "Z up, world coordinates" || fail "obj world header"
+top() { awk -v c="$2" '/^v /{ if ($c > m) m = $c } END { printf "%.3f", m }' "$1"; }
+expect_exit 0 "obj z up" "$insula" mass "$example" -o "$tmp/zup.obj" --up z --quiet
+[ "$(top "$tmp/up.obj" 3)" = "$(top "$tmp/zup.obj" 4)" ] ||
+  fail "obj up: y top $(top "$tmp/up.obj" 3) vs z top $(top "$tmp/zup.obj" 4)"
+expect_exit 2 "bad up axis" "$insula" mass "$example" -o "$tmp/x.obj" --up x
 expect_exit 2 "bad image size" "$insula" mass "$example" -o "$tmp/x.png" --image-size 10x10000
 expect_exit 2 "bad elevation" "$insula" mass "$example" -o "$tmp/x.png" --elevation 100
 

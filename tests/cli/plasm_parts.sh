@@ -14,9 +14,10 @@ lot: Lot ~> extrude(4) Mass
 mass: Mass ~> s(2, 3, 1) i("parts.psm#block:<2, 3>") Block
 CGA
 expect_exit 0 "cga part" "$insula" build g.cga -o g.obj
-# A box of 6 faces, fitted to the 2 x 3 x 1 scope: PLaSM's z (3) is the scope's up.
+# A box of 6 faces, fitted to the 2 x 3 x 1 scope: PLaSM's z (3) is the scope's up, the OBJ's y
+# (Y up by default).
 [ "$(grep -c '^f' g.obj)" = 6 ] || fail "cga part faces: $(grep -c '^f' g.obj)"
-awk '/^v /{ if ($4 > z) z = $4 } END { if (z < 2.999 || z > 3.001) exit 1 }' g.obj ||
+awk '/^v /{ if ($3 > z) z = $3 } END { if (z < 2.999 || z > 3.001) exit 1 }' g.obj ||
   fail "cga part height"
 
 cat >bad.cga <<'CGA'

@@ -48,9 +48,31 @@ TEST(ObjWriter, OneObjectPerBuildingAndGroupsPerPartAndClass) {
 TEST(ObjWriter, WritesWorldCoordinatesWithMicrometreDigits) {
   shape::Scene scene = test_scene();
   scene.buildings[0].parts[0].mesh.positions()[1] = {4.123456789, 0, 0};
-  const ObjText text = obj_text(scene, "scene.mtl");
+  const ObjText text = obj_text(scene, "scene.mtl", {.world = true});
   EXPECT_NE(text.obj.find("\nv 500000.25 5400000.5 100\n"), std::string::npos);
   EXPECT_NE(text.obj.find("\nv 500004.373457 5400000.5 100\n"), std::string::npos);
+  EXPECT_NE(
+      text.obj.find("# Insula OBJ export: meters, Z up, world coordinates; world = (x, y, z)\n"),
+      std::string::npos);
+}
+
+TEST(ObjWriter, LocalYUpByDefaultWithTheOriginBeside) {
+  // Blender, Maya and three.js read OBJ Y up: Insula's (x, y, z) is written (x, z, -y), local, so
+  // float32 readers keep millimetres; the way back is in the header and the sidecar.
+  shape::Scene scene = test_scene();
+  scene.buildings[0].parts[0].mesh.positions()[1] = {1.0005, 2, 3};
+  const ObjText text = obj_text(scene, "scene.mtl");
+  EXPECT_NE(text.obj.find("\nv 1.0005 3 -2\n"), std::string::npos) << text.obj.substr(0, 400);
+  EXPECT_NE(text.obj.find("# Insula OBJ export: meters, Y up, local coordinates; world = (x, -z, "
+                          "y) + origin\n# origin 500000.25 5400000.5 100\n"),
+            std::string::npos);
+  EXPECT_EQ(text.origin_json,
+            "{\n  \"origin\": [500000.25, 5400000.5, 100],\n  \"crs\": \"EPSG:32633\",\n"
+            "  \"units\": \"m\",\n  \"up\": \"y\",\n  \"coordinates\": \"local\",\n"
+            "  \"toWorld\": \"world = (x, -z, y) + origin\"\n}\n");
+  // Z up on request, still local.
+  EXPECT_NE(obj_text(scene, "scene.mtl", {.up = 'z'}).obj.find("\nv 1.0005 2 3\n"),
+            std::string::npos);
 }
 
 TEST(ObjWriter, KeepsConcaveFacesAsNgons) {
@@ -76,6 +98,8 @@ TEST(ObjWriter, WritesObjAndMtlFiles) {
   const std::string obj = testing::read_file(dir / "city.obj");
   EXPECT_NE(obj.find("mtllib city.mtl\n"), std::string::npos);
   EXPECT_EQ(testing::read_file(dir / "city.mtl"), obj_text(test_scene(), "city.mtl").mtl);
+  EXPECT_EQ(testing::read_file(dir / "city.origin.json"),
+            obj_text(test_scene(), "city.mtl").origin_json);
   std::filesystem::remove_all(dir);
 }
 
@@ -90,7 +114,7 @@ TEST(ObjWriter, FailedWriteNamesTheFileAndLeavesNothing) {
 
 TEST(ObjReader, ReadsBackWhatTheWriterWrote) {
   const shape::Scene scene = test_scene();
-  const ObjText text = obj_text(scene, "scene.mtl");
+  const ObjText text = obj_text(scene, "scene.mtl", {.world = true});
   const base::Result<ObjModel> model = parse_obj(text.obj, "scene.obj");
   ASSERT_TRUE(model.ok());
   EXPECT_TRUE(model.diagnostics().empty());

@@ -28,7 +28,7 @@ std::string content(const fs::path& path) {
 void write_old_files(const fs::path& dir) {
   fs::remove_all(dir);
   fs::create_directories(dir);
-  for (const char* name : {"out.glb", "out.obj", "out.mtl", "report.json"}) {
+  for (const char* name : {"out.glb", "out.obj", "out.mtl", "out.origin.json", "report.json"}) {
     std::ofstream(dir / name) << "old " << name;
   }
 }
@@ -52,7 +52,8 @@ bool run(const fs::path& dir, OutputTransaction& transaction) {
 
 TEST(OutputTransaction, CancelledAtAnyStepKeepsAllOldFilesElseAllNew) {
   const fs::path dir = testing::temp_dir("transaction");
-  const std::vector<std::string> names = {"out.glb", "out.mtl", "out.obj", "report.json"};
+  const std::vector<std::string> names = {"out.glb", "out.mtl", "out.obj", "out.origin.json",
+                                          "report.json"};
   int committed = 0;
   for (int allowed = 0; allowed < 20; ++allowed) {
     write_old_files(dir);

@@ -60,6 +60,16 @@ void add_view_options(CLI::App& command, io::OutputOptions& output) {
           "--cutaway")
       ->check(finite_range(-1000.0, 10000.0));
   command
+      .add_option_function<std::string>(
+          "--up", [&output](const std::string& axis) { output.obj.up = axis.front(); },
+          "OBJ up axis: y (Blender, Maya, three.js, game engines; the default) or z (GIS; the "
+          "default with --obj-world)")
+      ->check(CLI::IsMember({"y", "z"}))
+      ->type_name("y|z");
+  command.add_flag("--obj-world", output.obj.world,
+                   "OBJ in world coordinates (local + origin, the input's CRS), Z up unless --up "
+                   "y; by default OBJ is local, with the origin in its header and .origin.json");
+  command
       .add_option("--svg-scale", output.svg.pixels_per_meter,
                   "SVG picture scale in pixels per meter (default: fit 1000 pixels)")
       ->check(finite_range(0.01, 1000.0));
