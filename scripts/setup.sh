@@ -14,6 +14,7 @@ packages=(
   clang libclang-rt-dev llvm  # libFuzzer (scripts/fuzz.sh), llvm-symbolizer for sanitizer stacks
   assimp-utils libxml2-utils
   chromium  # the browser check of textured GLBs (tools/render_gltf_browser.mjs, three.js)
+  blender python3-numpy  # opening OBJ and GLB as users do (tests/cli/blender_import.sh)
 )
 # Node.js may come from elsewhere (NodeSource ships npm inside nodejs); take Debian's only if absent.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
