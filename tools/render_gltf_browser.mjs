@@ -1,10 +1,11 @@
 #!/usr/bin/env node
-// Renders a glTF binary (.glb) in a real browser: Debian's chromium driven by npm playwright-core,
-// three.js's GLTFLoader and WebGL (SwiftShader, no GPU), as a user opening the model in a three.js
-// viewer sees it. Writes a PNG screenshot and prints one JSON line: the canvas size and how many
-// of its pixels are mostly red, green, blue, white-ish or background, so a test can tell a
-// textured model from an untextured one.
-// Usage: node tools/render_gltf_browser.mjs MODEL.glb OUT.png [view]
+// Renders a glTF binary (.glb) or an OBJ (with its .mtl and textures beside it) in a real browser:
+// Debian's chromium driven by npm playwright-core, three.js's GLTFLoader or OBJLoader + MTLLoader
+// and WebGL (SwiftShader, no GPU), as a user opening the model in a three.js viewer sees it. Writes
+// a PNG screenshot and prints one JSON line: the canvas size, how many of its pixels are mostly
+// red, green, blue, white-ish or background (so a test can tell a textured model from an
+// untextured one), and the model's bounding box in three.js's frame (Y up).
+// Usage: node tools/render_gltf_browser.mjs MODEL.glb|MODEL.obj OUT.png [view]
 //   view: front (default; looking at glTF -Z, Insula's +Y: a façade facing -Y) or top.
 // Environment: INSULA_CHROMIUM (default /usr/bin/chromium). Exit status 0 on success, 1 when the
 // browser or the model fails, 2 on usage error. Nothing is downloaded: pages come from this folder.
@@ -16,9 +17,12 @@ import { chromium } from 'playwright-core';
 
 const [model, out, view = 'front'] = process.argv.slice(2);
 if (!model || !out || !['front', 'top'].includes(view)) {
-  console.error('usage: render_gltf_browser.mjs MODEL.glb OUT.png [front|top]');
+  console.error('usage: render_gltf_browser.mjs MODEL.glb|MODEL.obj OUT.png [front|top]');
   process.exit(2);
 }
+const is_obj = model.toLowerCase().endsWith('.obj');
+const folder = path.dirname(path.resolve(model));
+const mtl = path.join(folder, path.basename(model, path.extname(model)) + '.mtl');
 const here = path.dirname(fileURLToPath(import.meta.url));
 const three = path.join(here, 'node_modules', 'three');
 const origin = 'http://insula.invalid';
@@ -30,6 +34,8 @@ const page_html = `<!doctype html><html><head><style>body{margin:0;background:#0
 <script type="module">
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
+import { MTLLoader } from 'three/addons/loaders/MTLLoader.js';
 try {
   const renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
   renderer.setPixelRatio(1);
@@ -41,7 +47,16 @@ try {
   const sun = new THREE.DirectionalLight(0xffffff, 1.5);
   sun.position.set(0.3, 0.5, 1);
   scene.add(sun);
-  const gltf = await new GLTFLoader().loadAsync('${origin}/model.glb');
+  let gltf;
+  if (${is_obj}) {
+    const loader = new OBJLoader();
+    const materials = await new MTLLoader().setPath('${origin}/files/').loadAsync('model.mtl');
+    materials.preload();
+    loader.setMaterials(materials);
+    gltf = { scene: await loader.loadAsync('${origin}/model.obj') };
+  } else {
+    gltf = await new GLTFLoader().loadAsync('${origin}/model.glb');
+  }
   scene.add(gltf.scene);
   const box = new THREE.Box3().setFromObject(gltf.scene);
   const centre = box.getCenter(new THREE.Vector3());
@@ -74,7 +89,8 @@ try {
   gltf.scene.traverse((o) => {
     if (o.material && o.material.map) textures.push(o.material.map.image ? o.material.map.image.width : 0);
   });
-  window.insulaResult = { width: ${size}, height: ${size}, counts, textured_meshes: textures.length };
+  window.insulaResult = { width: ${size}, height: ${size}, counts, textured_meshes: textures.length,
+                          min: box.min.toArray(), max: box.max.toArray() };
 } catch (error) {
   window.insulaResult = { error: String(error && error.stack || error) };
 }
@@ -102,9 +118,14 @@ try {
     if (url.origin !== origin) return route.abort();
     let file;
     if (url.pathname === '/index.html') return route.fulfill({ contentType: 'text/html', body: page_html });
-    if (url.pathname === '/model.glb') file = path.resolve(model);
-    else if (url.pathname.startsWith('/three/')) file = path.join(three, url.pathname.slice(7));
-    if (!file || !file.startsWith(path.resolve(model)) && !file.startsWith(three)) return route.abort();
+    if (url.pathname === '/model.glb' || url.pathname === '/model.obj') file = path.resolve(model);
+    else if (url.pathname === '/files/model.mtl') file = mtl;
+    else if (url.pathname.startsWith('/files/')) {
+      file = path.join(folder, decodeURIComponent(url.pathname.slice(7)));  // the OBJ's textures
+    } else if (url.pathname.startsWith('/three/')) file = path.join(three, url.pathname.slice(7));
+    const allowed = file && (file === path.resolve(model) || file === mtl ||
+                             file.startsWith(folder + path.sep) || file.startsWith(three));
+    if (!allowed || !fs.existsSync(file)) return route.abort();
     return route.fulfill({ contentType: types[path.extname(file)] || 'application/octet-stream',
                            body: fs.readFileSync(file) });
   });
