@@ -32,7 +32,8 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 if [ ! -d tools/node_modules/gltf-validator ] || [ ! -d tools/node_modules/ajv ] ||
-  [ ! -d tools/node_modules/playwright-core ] || [ ! -d tools/node_modules/three ]; then
-  echo "setup: installing npm test tools (gltf-validator, ajv, playwright-core, three)" >&2
+  [ ! -d tools/node_modules/playwright-core ] || [ ! -d tools/node_modules/three ] ||
+  [ ! -d tools/node_modules/gltfpack ]; then
+  echo "setup: installing npm test tools (gltf-validator, ajv, playwright-core, three, gltfpack)" >&2
   (cd tools && npm ci --no-audit --no-fund --silent 2>/dev/null || npm install --no-audit --no-fund --silent)
 fi
