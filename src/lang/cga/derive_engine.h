@@ -464,6 +464,7 @@ class Engine final : public EvalContext {
   // picks among those earlier branches left, all strips cut from the shape as it was.
   // Strips per edge: each edge's depth from `depths` (setback(float[])), else `uniform`.
   void setback_per_edge(const CItem& c, State& st, const Array* depths, double uniform);
+  void setback_in_turn(const CItem& c, State& st, double depth);
   // Whether CityEngine's edge selector `selector` (front, street.left, all, ...) picks an edge
   // of `st` (flat) with outward direction `outward` (world).
   bool edge_selected(const std::string& selector, const State& st, Vec3 outward) const;

@@ -531,6 +531,10 @@ void Engine::setback(const CItem& c, State& st) {
                b.selector.starts_with("uv.") || b.selector == "streetSide" ||
                b.selector == "noStreetSide";
       })) {
+    const bool by_index = std::any_of(c.branches.begin(), c.branches.end(), [](const CBranch& b) {
+      return b.index >= 0 || b.index_expr != kNoExpr;
+    });
+    if (!by_index) return setback_in_turn(c, st, depth);
     setback_per_edge(c, st, nullptr, depth);
     return;
   }
@@ -569,6 +573,112 @@ void Engine::setback(const CItem& c, State& st) {
   if (remainder == nullptr) return;
   State piece = cut ? rest : child_of(st, rest.scope, rest.geometry, 0, 1);
   run_branch(*remainder, piece);
+}
+
+namespace {
+
+struct WorldEdge {
+  Vec3 a, b;
+};
+
+// The outline's edges in setback's order (outer ring, then holes) in world space.
+std::vector<WorldEdge> world_edges(const kernel::Polygon& outline, const shape::Scope& scope) {
+  std::vector<WorldEdge> out;
+  const auto ring_edges = [&](const kernel::Ring& ring) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const kernel::Vec2 p = ring[i], q = ring[(i + 1) % ring.size()];
+      out.push_back({scope.to_world({p.x, p.y, 0}), scope.to_world({q.x, q.y, 0})});
+    }
+  };
+  ring_edges(outline.outer);
+  for (const kernel::Ring& hole : outline.holes) ring_edges(hole);
+  return out;
+}
+
+// The index of the edge of `original` that `e` lies on (a piece of it after earlier cuts), or -1
+// for an edge a cut made.
+int original_edge(const WorldEdge& e, const std::vector<WorldEdge>& original, double tolerance) {
+  const auto on = [&](Vec3 p, const WorldEdge& s) {
+    const Vec3 d = s.b - s.a;
+    const double len2 = dot(d, d);
+    const double t = len2 > 0 ? std::clamp(dot(p - s.a, d) / len2, 0.0, 1.0) : 0.0;
+    return kernel::length(s.a + d * t - p) <= tolerance;
+  };
+  for (std::size_t j = 0; j < original.size(); ++j) {
+    if (on(e.a, original[j]) && on(e.b, original[j])) return static_cast<int>(j);
+  }
+  return -1;
+}
+
+}  // namespace
+
+// Keys that pick edges by direction (world.*, object.*, street sides, uv.*) with one distance:
+// each branch cuts its strips from what the branches before it left, so strips meeting at a
+// corner do not overlap (the first branch takes the corner, as the uniform setback does); only
+// edges of the original outline count, never the lines earlier cuts made.
+void Engine::setback_in_turn(const CItem& c, State& st, double depth) {
+  const Materialized m = materialize(out_.geometry[st.geometry], st.scope.size);
+  if (!m.outline) {
+    warn(c, "needs a flat shape (a footprint or a face)");
+    terminal(st, rule_->predecessor);
+    return;
+  }
+  const std::vector<WorldEdge> original = world_edges(*m.outline, st.scope);
+  const double tolerance = 1e-7 * (1 + kernel::length(st.scope.size));
+  std::vector<bool> taken(original.size(), false);
+  std::vector<State> rests{st};
+  const CBranch* remainder = nullptr;
+  for (const CBranch& b : c.branches) {
+    if (b.selector == "remainder") {
+      remainder = &b;
+      continue;
+    }
+    std::vector<bool> mine_taken = taken;
+    std::vector<State> left;
+    for (State& rest : rests) {
+      const Materialized r = materialize(out_.geometry[rest.geometry], rest.scope.size);
+      if (!r.outline) continue;
+      const std::vector<WorldEdge> edges = world_edges(*r.outline, rest.scope);
+      std::vector<SizeSpec> mine(edges.size(), SizeSpec{0, SizeMode::kAbsolute});
+      bool any = false;
+      for (std::size_t i = 0; i < edges.size(); ++i) {
+        const int j = original_edge(edges[i], original, tolerance);
+        if (j < 0 || taken[static_cast<std::size_t>(j)]) continue;
+        const Vec3 d = edges[i].b - edges[i].a;
+        const Vec3 outward = kernel::normalized(cross(d, rest.scope.z));
+        const bool picked =
+            !b.has_key || b.selector == "all" || edge_selected(b.selector, st, outward);
+        if (!picked) continue;
+        mine[i].value = depth;
+        mine_taken[static_cast<std::size_t>(j)] = true;
+        any = true;
+      }
+      if (!any) {
+        left.push_back(rest);
+        continue;
+      }
+      OpOutcome strips =
+          run_op(rest, "setbackEdges", {{"depths", mine}, {"part", std::string("shape")}});
+      if (!check(c, strips)) continue;
+      const auto total = static_cast<std::uint32_t>(strips.children.size());
+      for (std::uint32_t k = 0; k < total; ++k) {
+        State piece = child_of(st, strips.children[k].scope, strips.children[k].geometry, k, total);
+        run_branch(b, piece);
+      }
+      OpOutcome rest_pieces =
+          run_op(rest, "setbackEdges", {{"depths", mine}, {"part", std::string("remainder")}});
+      if (!check(c, rest_pieces)) continue;
+      for (const State& piece : rest_pieces.children) left.push_back(piece);
+    }
+    taken = mine_taken;
+    rests = std::move(left);
+  }
+  if (remainder == nullptr) return;
+  const auto total = static_cast<std::uint32_t>(rests.size());
+  for (std::uint32_t k = 0; k < total; ++k) {
+    State piece = child_of(st, rests[k].scope, rests[k].geometry, k, total);
+    run_branch(*remainder, piece);
+  }
 }
 
 void Engine::setback_per_edge(const CItem& c, State& st, const Array* depths, double uniform) {

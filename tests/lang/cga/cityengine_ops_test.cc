@@ -363,6 +363,19 @@ TEST(CityEngineOps, SetbackByWorldDirection) {
   EXPECT_NEAR(flat_area(r, r.terminals_store[1]), 140, 1e-6);
 }
 
+TEST(CityEngineOps, SetbackStripsByDirectionDoNotOverlap) {
+  // South then west on a 20 x 10 lot: the south strip takes the corner, the west strip the rest
+  // of its edge, and the pieces add up to the lot (they overlapped by 2 x 2 m before).
+  const LotResult r = derive_one(
+      "version \"2019.0\"\nLot --> setback(2) { world.south : S | world.west : W | remainder : R "
+      "}\n",
+      rectangle_lot(20, 10));
+  ASSERT_EQ(r.terminals_store.size(), 3U);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[0]), 40, 1e-6);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[1]), 2 * 8, 1e-6);
+  EXPECT_NEAR(flat_area(r, r.terminals_store[2]), 18 * 8, 1e-6);
+}
+
 TEST(CityEngineOps, MissingFilesAndDivisionByZeroDoNotStopTheModel) {
   // assetInfo(a, tx) takes tx as a word; a missing asset is 0 with a warning, and CityEngine's
   // IEEE division makes 0 / 0 NaN (isnan) rather than an error.
