@@ -193,6 +193,22 @@ TEST(InsertAlongUvTest, WithoutUvsOrAssetsNothingIsInserted) {
       "insertAlongUV: cannot open 'gone'");
 }
 
+TEST(InsertAlongUvTest, ALargeAssetOnManyTilesIsAnError) {
+  // 100 copies (the strip is one convex region, 100 tiles long) of a 25,000-face asset: 2.5
+  // million faces, past the bound of 2 million.
+  auto big = std::make_shared<kernel::Mesh>();
+  for (int k = 0; k < 25000; ++k) {
+    const double x = (k % 500) / 500.0, z = (k / 500) / 500.0;
+    big->add_polygon(std::vector<Vec3>{{x, 0, z}, {x + 0.001, 0, z}, {x, 1, z}}, {});
+  }
+  MapAssets assets;
+  assets.meshes["asset"] = big;
+  ShapeTree tree;
+  const OpResult r = along(tree, strip(tree, 0.1), assets, 1);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("faces to cut"), std::string::npos) << r.error;
+}
+
 TEST(InsertAlongUvTest, ARunawayUvScaleIsAnError) {
   MapAssets assets;
   assets.meshes["asset"] = box_at({0, 0, 0}, {1, 1, 1});
