@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -80,9 +81,22 @@ inline bool rules_grouped(const lang::cga::Grammar& g) {
 }
 
 // The stripped dump of `text` parsed as `name`, or empty with `problem` set.
-inline std::string reparse(const std::string& text, const std::string& name, std::string& problem) {
+// Printing may add grouping parentheses (`!(a > 6)` for `!a > 6`), which count as nesting: an
+// input right at the parser's depth limit can print one level past it. That is no broken
+// contract, so `too_deep` says so and the caller skips the comparison.
+inline std::string reparse(const std::string& text, const std::string& name, std::string& problem,
+                           bool* too_deep = nullptr) {
   const base::Source source(name, text);
   const base::Result<lang::cga::Grammar> again = lang::cga::parse(source);
+  const auto nesting = [](const base::Diagnostic& d) { return d.code == "CGA105"; };
+  if (!again.ok() && too_deep != nullptr &&
+      std::all_of(again.diagnostics().begin(), again.diagnostics().end(),
+                  [&](const base::Diagnostic& d) {
+                    return d.severity != base::Severity::kError || nesting(d);
+                  })) {
+    *too_deep = true;
+    return {};
+  }
   if (!again.ok()) {
     problem = "printed grammar does not parse: " + base::render(again.diagnostics().front()) +
               "\n--- printed ---\n" + text;
@@ -115,9 +129,12 @@ inline std::string check_graph(const lang::cga::Grammar& g, const base::Source& 
 inline std::string check_grammar(const lang::cga::Grammar& g, const base::Source& source) {
   const std::string expected = strip_positions(lang::cga::dump(g, source));
   std::string problem;
-  const std::string printed = reparse(lang::cga::print(g), source.name(), problem);
+  bool too_deep = false;
+  const std::string printed = reparse(lang::cga::print(g), source.name(), problem, &too_deep);
   if (!problem.empty()) return problem;
-  if (printed != expected) return "print/parse changed the AST:\n" + expected + "---\n" + printed;
+  if (!too_deep && printed != expected) {
+    return "print/parse changed the AST:\n" + expected + "---\n" + printed;
+  }
   if (!nlohmann::json::accept(lang::cga::model_json(g, source))) return "model JSON is not JSON";
   pugi::xml_document xmi;
   const std::string xmi_text = lang::cga::model_xmi(g, source);
