@@ -123,6 +123,11 @@ class Checker {
 
   void rule(const Rule& r) {
     if (r.predecessor.empty()) error("CGA505", "every rule must have a predecessor shape", r.range);
+    if (!r.params.empty()) {
+      error("CGA507",
+            "rule parameters cannot be expressed in BuildingGen XML ('" + r.predecessor + "')",
+            r.range);
+    }
     if (r.condition) text(print(*r.condition), r.condition->range);
     for (const Alternative& alt : r.alternatives) alternative(alt);
   }
