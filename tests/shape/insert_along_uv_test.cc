@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <map>
 
+#include "../common/map_assets.h"
 #include "shape/ops.h"
 
 namespace insula::shape {
@@ -13,17 +14,7 @@ namespace {
 using kernel::Polygon;
 using kernel::Vec3;
 
-class MapAssets : public AssetProvider {
- public:
-  std::map<std::string, std::shared_ptr<const kernel::Mesh>, std::less<>> meshes;
-  std::shared_ptr<const kernel::Mesh> find(std::string_view name,
-                                           std::string& error) const override {
-    auto it = meshes.find(name);
-    if (it != meshes.end()) return it->second;
-    error = "cannot open '" + std::string(name) + "'";
-    return nullptr;
-  }
-};
+using testing::MapAssets;
 
 std::shared_ptr<const kernel::Mesh> box_at(Vec3 corner, Vec3 size) {
   return std::make_shared<kernel::Mesh>(
@@ -190,7 +181,7 @@ TEST(InsertAlongUvTest, WithoutUvsOrAssetsNothingIsInserted) {
           .run(tree2, strip(tree2, 10), "insertAlongUV",
                {{"uvSet", 0.0}, {"asset", std::string("gone")}, {"height", 1.0}}, Context{&assets})
           .error,
-      "insertAlongUV: cannot open 'gone'");
+      "insertAlongUV: cannot open 'gone.obj'");
 }
 
 TEST(InsertAlongUvTest, ALargeAssetOnManyTilesIsAnError) {

@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "../common/map_assets.h"
 #include "shape/ops.h"
 
 namespace insula::shape {
@@ -9,18 +10,7 @@ namespace {
 
 using kernel::Vec3;
 
-// Assets by name, as the app's OBJ-backed provider would serve them.
-class MapAssets : public AssetProvider {
- public:
-  std::map<std::string, std::shared_ptr<const kernel::Mesh>, std::less<>> meshes;
-  std::shared_ptr<const kernel::Mesh> find(std::string_view name,
-                                           std::string& error) const override {
-    auto it = meshes.find(name);
-    if (it != meshes.end()) return it->second;
-    error = "cannot open '" + std::string(name) + ".obj'";
-    return nullptr;
-  }
-};
+using testing::MapAssets;
 
 // A 1 x 2 x 0.5 box asset whose corner sits at (-0.5, 0, -0.25).
 std::shared_ptr<const kernel::Mesh> door() {
