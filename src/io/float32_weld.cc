@@ -1,6 +1,7 @@
 #include "io/float32_weld.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <tuple>
 
@@ -11,7 +12,18 @@ Float3 to_y_up(kernel::Vec3 p) {
   return {static_cast<float>(p.x), static_cast<float>(p.z), static_cast<float>(-p.y)};
 }
 
-bool Float32Weld::run(const kernel::Mesh& mesh) {
+namespace {
+
+// The position `p` is written at, to compare: float32 or a multiple of `grid` (glTF's Y-up frame).
+Float3 rounded(kernel::Vec3 p, double grid) {
+  if (grid <= 0) return to_y_up(p);
+  return {static_cast<float>(std::round(p.x / grid)), static_cast<float>(std::round(p.z / grid)),
+          static_cast<float>(std::round(-p.y / grid))};
+}
+
+}  // namespace
+
+bool Float32Weld::run(const kernel::Mesh& mesh, double grid) {
   const auto n = static_cast<std::uint32_t>(mesh.vertex_count());
   parent_.resize(n);
   std::iota(parent_.begin(), parent_.end(), 0U);
@@ -24,7 +36,7 @@ bool Float32Weld::run(const kernel::Mesh& mesh) {
   std::vector<Entry> order;
   order.reserve(n);
   for (std::uint32_t v = 0; v < n; ++v)
-    order.push_back({to_y_up(mesh.position(v)), mesh.position(v), v});
+    order.push_back({rounded(mesh.position(v), grid), mesh.position(v), v});
   std::sort(order.begin(), order.end(), [](const Entry& a, const Entry& b) {
     return std::tie(a.rounded, a.p.x, a.p.y, a.p.z, a.vertex) <
            std::tie(b.rounded, b.p.x, b.p.y, b.p.z, b.vertex);

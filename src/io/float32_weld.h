@@ -32,7 +32,9 @@ class Float32Weld {
   // oriented (vertices at identical positions taken as one), the two end points of every
   // triangle edge used more than once in a direction or without its reverse are then grouped too,
   // and the faces triangulated again, until no such edge is left (at most kMaxPasses passes).
-  bool run(const kernel::Mesh& mesh);
+  // With `grid` > 0 (meters), positions are rounded to multiples of `grid` instead: the grid of
+  // quantized glTF positions (KHR_mesh_quantization), where the same holds at a coarser step.
+  bool run(const kernel::Mesh& mesh, double grid = 0);
 
   bool active() const { return active_; }
   // The vertex whose float32 position `vertex` is written at (itself unless grouped).

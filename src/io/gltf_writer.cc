@@ -2,71 +2,49 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <map>
 #include <numbers>
-#include <span>
+#include <optional>
 #include <string>
-#include <tuple>
 #include <utility>
-#include <variant>
 #include <vector>
 
 #include "io/atomic_file.h"
-#include "io/float32_weld.h"
+#include "io/gltf_buffers.h"
+#include "io/gltf_mesh.h"
+#include "io/gltf_metadata.h"
+#include "io/gltf_placement.h"
 #include "io/json_stream.h"
 #include "io/png_renderer.h"
 #include "io/triangulated.h"
-#include "kernel/uv.h"
-#include "shape/part_mesh.h"
+#include "kernel/transform.h"
 
 namespace insula::io {
 namespace {
 
-constexpr std::uint32_t kArrayBuffer = 34962;
-constexpr std::uint32_t kElementArrayBuffer = 34963;
-constexpr std::uint32_t kFloat = 5126;
-constexpr std::uint32_t kUnsignedInt = 5125;
-constexpr std::uint32_t kTriangles = 4;
+using gltf::Accessor;
+using gltf::Affine;
+using gltf::Buffers;
+using gltf::Component;
+using gltf::ViewKind;
+
 constexpr std::uint32_t kLinear = 9729;
 constexpr std::uint32_t kLinearMipmapLinear = 9987;
 constexpr std::uint32_t kClampToEdge = 33071;
 constexpr std::uint32_t kRepeat = 10497;
 constexpr std::string_view kLightsExtension = "KHR_lights_punctual";
+constexpr std::string_view kQuantizationExtension = "KHR_mesh_quantization";
+constexpr std::string_view kInstancingExtension = "EXT_mesh_gpu_instancing";
+constexpr std::string_view kMeshoptExtension = "EXT_meshopt_compression";
 constexpr std::uint32_t kGlbMagic = 0x46546C67;   // "glTF"
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
 constexpr std::uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
 
-// Little-endian whatever the host (glTF 2.0, "Binary glTF Layout").
-void append_u32(std::string& out, std::uint32_t value) {
-  const char bytes[4] = {static_cast<char>(value & 0xFFU), static_cast<char>((value >> 8) & 0xFFU),
-                         static_cast<char>((value >> 16) & 0xFFU),
-                         static_cast<char>((value >> 24) & 0xFFU)};
-  out.append(bytes, 4);
-}
-
 std::size_t padded(std::size_t size) {
   return (size + 3) / 4 * 4;
-}
-
-std::string_view kind_name(shape::PartKind kind) {
-  switch (kind) {
-    case shape::PartKind::kBuildingPart:
-      return "BuildingPart";
-    case shape::PartKind::kStorey:
-      return "Storey";
-    case shape::PartKind::kRoom:
-      return "Room";
-    case shape::PartKind::kInstallation:
-      return "Installation";
-    case shape::PartKind::kOther:
-      break;
-  }
-  return "Other";
 }
 
 // Colour channels rounded to 6 decimals so the JSON shows 0.86, not 0.8600000143051147.
@@ -78,39 +56,8 @@ std::string part_name(const shape::Part& part, std::size_t index) {
   return part.name.empty() ? "part" + std::to_string(index) : part.name;
 }
 
-// One primitive (the faces of one part showing one material): where its data sits in the buffer.
-// Accessors come in threes: POSITION (with min/max), NORMAL, indices.
-struct PrimitiveRecord {
-  std::uint32_t material = 0;
-  std::uint32_t vertex_count = 0;
-  std::uint32_t index_count = 0;
-  std::size_t position_offset = 0;  // bytes into the vertex view; normals follow the positions
-  std::size_t index_offset = 0;     // bytes into the index view
-  std::size_t uv_offset = 0;        // bytes into the texture coordinate view
-  // TEXCOORD_0 (parts with a uv map, parts of solidGeometry with "uv_scale", textured materials)
-  bool has_uv = false;
-  std::uint32_t accessor = 0;  // first of its accessors (3, or 4 with texture coordinates)
-  std::array<float, 3> min{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-                           std::numeric_limits<float>::max()};
-  std::array<float, 3> max{std::numeric_limits<float>::lowest(),
-                           std::numeric_limits<float>::lowest(),
-                           std::numeric_limits<float>::lowest()};
-};
-
-// A glTF mesh: a run of primitives. Parts that are instances of one shared mesh (seed 001 §4.5)
-// point at the same record and get a node each with their placement as the node's matrix.
-struct MeshRecord {
-  std::string name;
-  std::uint32_t first = 0;
-  std::uint32_t count = 0;
-};
-
-// The texture size of a part in meters, or 0 for none (solid_geometry's attribute).
-double uv_scale(const shape::Part& part) {
-  auto it = part.attributes.find("uv_scale");
-  if (it == part.attributes.end()) return 0;
-  const auto* v = std::get_if<double>(&it->second);
-  return v != nullptr && *v > 0 ? *v : 0;
+std::string building_name(const shape::Building& building, std::size_t index) {
+  return building.id.empty() ? "building" + std::to_string(index) : building.id;
 }
 
 // A material's image as PNG bytes, or empty when it has none (or a malformed one).
@@ -126,111 +73,139 @@ std::string png_of(const shape::Material& material) {
   return encode_png(Image{image->width, image->height, image->rgba});
 }
 
-// Fills the binary buffer in one pass over the scene (vertex view: per primitive its positions
-// then its normals; index view after it), then writes the JSON from compact records. Object keys
-// are written in sorted order, so the text is the one nlohmann::json would print.
+struct MeshEntry {
+  std::string name;
+  gltf::MeshRecord record;
+};
+
+// The instances of one mesh in one building, placed by EXT_mesh_gpu_instancing.
+struct InstanceGroup {
+  std::uint32_t translation = 0;
+  std::uint32_t rotation = 0;
+  std::uint32_t scale = 0;
+  std::optional<std::uint32_t> feature;
+  std::uint32_t feature_count = 0;
+};
+
+// A node under a building's node: a part (element layout, or an instance placed by its node) or
+// a group of GPU instances.
+struct ChildNode {
+  std::string name;
+  const shape::Part* part = nullptr;  // its kind and attributes go to `extras`
+  std::int32_t mesh = -1;
+  std::optional<Affine> placement;
+  std::optional<InstanceGroup> instances;
+};
+
+struct BuildingNode {
+  std::int32_t mesh = -1;
+  std::optional<Affine> placement;  // the dequantization of its mesh
+  std::vector<ChildNode> children;
+};
+
+// Assembles the meshes building by building into the buffer views (io/gltf_mesh.h), then writes
+// the JSON from compact records. Object keys are written in sorted order, so the text is the one
+// nlohmann::json would print.
 class Builder {
  public:
-  explicit Builder(const shape::Scene& scene);
+  Builder(const shape::Scene& scene, const GltfOptions& options);
 
   // The glTF JSON; `buffer_uri` (when not empty) becomes the buffer's "uri".
   void write_json(JsonStream& json, std::string_view buffer_uri) const;
-  // Appends the binary buffer (vertex, index and texture coordinate views, little-endian, then
-  // the PNG images).
-  void append_binary(std::string& out) const;
-  std::size_t binary_size() const { return image_offset(images_.size()); }
+  void append_binary(std::string& out) const { buffers_.append_binary(out); }
+  std::size_t binary_size() const { return buffers_.binary_size(); }
 
  private:
-  // Adds the part's primitives as a new glTF mesh (or finds its shared one); returns the mesh
-  // index, or -1 when no face produced a triangle.
-  std::int32_t add_part(const shape::Part& part, std::size_t index);
-  std::uint32_t add_primitives(const kernel::Mesh& mesh, double uv, const shape::Part& part);
-  void add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
-                     std::span<const std::pair<std::uint32_t, std::uint32_t>> faces);
-  void add_face(const kernel::Mesh& mesh, std::size_t face, PrimitiveRecord& primitive);
-  // Appends the corners `loop` (mesh vertex ids) and the triangles in triangles_ over them.
-  void add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
-                   kernel::Vec3 newell, PrimitiveRecord& primitive);
-
   void add_images();
-  // Bytes into the buffer where image `image` starts (each padded to 4 bytes after the UVs).
-  std::size_t image_offset(std::size_t image) const;
-  void fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop, kernel::Vec3 newell);
+  BuildingNode by_building(const shape::Building& building, std::size_t index,
+                           std::size_t first_row);
+  BuildingNode by_element(const shape::Building& building);
+  // The mesh a part instances (added the first time), or -1 when none of its faces has area.
+  std::int32_t shared_mesh(const shape::Part& part, std::size_t index);
+  // Writes what `assembler` holds as a new mesh; -1 when it holds no triangle.
+  std::int32_t add_mesh(gltf::MeshAssembler& assembler, std::string name, bool with_features,
+                        bool quantize);
+  void add_instance_groups(const shape::Building& building, std::size_t first_row,
+                           const std::vector<std::pair<std::size_t, std::int32_t>>& instances,
+                           const Affine& inside, BuildingNode& node);
 
-  void write_accessors(JsonStream& json) const;
+  void write_extensions(JsonStream& json) const;
   void write_meshes(JsonStream& json) const;
   void write_nodes(JsonStream& json) const;
+  void write_child(JsonStream& json, const ChildNode& child) const;
   void write_materials(JsonStream& json) const;
+  // The KHR_lights_punctual member of the root's extensions.
   void write_lights(JsonStream& json) const;
   void write_light_node(JsonStream& json, std::size_t light) const;
   void write_images(JsonStream& json) const;
-  void write_buffers(JsonStream& json, std::string_view buffer_uri) const;
+  void write_textures(JsonStream& json) const;
   void write_scene(JsonStream& json) const;
   // The wrap modes of the samplers, in sampler order: clamped first when used, then repeat.
-  std::vector<std::uint32_t> sampler_wraps() const {
-    std::vector<std::uint32_t> wraps;
-    if (std::count(image_repeats_.begin(), image_repeats_.end(), false) > 0) {
-      wraps.push_back(kClampToEdge);
-    }
-    if (std::count(image_repeats_.begin(), image_repeats_.end(), true) > 0)
-      wraps.push_back(kRepeat);
-    return wraps;
-  }
+  std::vector<std::uint32_t> sampler_wraps() const;
+  std::vector<std::string_view> extensions_used() const;
+  std::vector<std::string_view> extensions_required() const;
 
   const shape::Scene& scene_;
+  GltfOptions options_;
   MaterialTable materials_;
-  std::vector<float> vertices_;         // the vertex view, as floats
-  std::vector<std::uint32_t> indices_;  // the index view
-  std::vector<PrimitiveRecord> primitives_;
-  std::vector<float> uvs_;  // the texture coordinate view (empty: no such view)
-  // Textures: one per distinct image of a material in the table, PNG-encoded; their bytes follow
-  // the texture coordinates in the buffer, each in a view of its own.
+  Buffers buffers_;
+  gltf::MeshViews views_;
+  std::optional<gltf::PartTable> table_;
+  gltf::MeshOptions mesh_options_;
+  // Textures: one per distinct image of a material in the table, PNG-encoded (or a file's bytes),
+  // each in a view of its own.
   std::vector<std::int32_t> material_texture_;  // by table material; -1: untextured
-  std::vector<std::string> images_;             // PNG (or a file's JPEG) bytes by texture
+  std::vector<std::string> images_;
   std::vector<std::string> image_names_;
   std::vector<std::string> image_types_;  // MIME types
   std::vector<bool> image_repeats_;       // a file's image repeats over a uv map
-  std::vector<MeshRecord> meshes_;
-  std::vector<std::int32_t> part_mesh_;  // glTF mesh of each part (-1: none), parts in scene order
-  std::map<const kernel::Mesh*, std::int32_t> shared_;  // instance meshes already added
-  double uv_ = 0;                                       // texture size of the part being added
-  const shape::Part* uv_part_ = nullptr;                // the part being added when it has a uv map
-  bool fit_uv_ = false;  // the primitive being added shows an image: UVs fit each face
-
-  // Scratch reused from face to face.
-  FaceTriangulator triangulator_;
-  std::vector<CornerTriangle> triangles_;
-  std::vector<float> normals_;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> faces_by_material_;
-  Float32Weld weld_;                    // of the mesh being added
-  std::vector<std::uint32_t> corners_;  // a welded face's corners (representative vertex ids)
-  std::vector<kernel::Vec2> face_uvs_;  // a textured face's planar coordinates
+  std::vector<std::uint32_t> image_views_;
+  std::optional<gltf::MeshAssembler> assembler_;  // a building's (or a part's) own faces
+  // Shared meshes are assembled apart: the first instance may come amid a building's faces.
+  std::optional<gltf::MeshAssembler> shared_assembler_;
+  std::vector<MeshEntry> meshes_;
+  std::map<const kernel::Mesh*, std::int32_t> shared_;  // instanced meshes already added
+  std::vector<BuildingNode> buildings_;
+  std::optional<std::uint32_t> instance_views_[4];  // translation, rotation, scale, feature
+  bool quantized_ = false;                          // some attribute uses KHR_mesh_quantization
+  bool gpu_instances_ = false;
 };
 
-Builder::Builder(const shape::Scene& scene) : scene_(scene), materials_(scene) {
-  // Upper bounds (every face kept): 6 floats per corner, 3 indices per corner beyond two a face.
-  std::size_t corners = 0;
-  std::size_t triangles = 0;
-  for (const shape::Building& building : scene_.buildings) {
-    for (const shape::Part& part : building.parts) {
-      const kernel::Mesh& mesh = part.instance_of ? *part.instance_of : part.mesh;
-      for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-        const std::size_t n = mesh.face(f).size();
-        corners += n;
-        triangles += n >= 3 ? n - 2 : 0;
-      }
-    }
-  }
-  vertices_.reserve(6 * corners);
-  indices_.reserve(3 * triangles);
+Builder::Builder(const shape::Scene& scene, const GltfOptions& options)
+    : scene_(scene),
+      options_(options),
+      materials_(scene),
+      views_(gltf::MeshViews::create(buffers_)) {
   add_images();
-  for (const shape::Building& building : scene_.buildings) {
-    for (std::size_t p = 0; p < building.parts.size(); ++p) {
-      part_mesh_.push_back(add_part(building.parts[p], p));
-    }
+  std::vector<bool> textured;
+  for (std::int32_t texture : material_texture_) textured.push_back(texture >= 0);
+  assembler_.emplace(materials_, textured);
+  shared_assembler_.emplace(materials_, std::move(textured));
+  mesh_options_.quantize = options_.quantize;
+  if (options_.nodes == GltfOptions::Nodes::kBuilding) {
+    table_.emplace(scene_);
+    if (table_->rows() == 0) table_.reset();
+    if (table_ && table_->rows() > 65535) mesh_options_.feature_component = Component::kFloat;
   }
-  // No primitive, no buffer to hold the images.
-  if (primitives_.empty()) images_.clear();
+  std::size_t row = 0;
+  for (std::size_t b = 0; b < scene_.buildings.size(); ++b) {
+    const shape::Building& building = scene_.buildings[b];
+    buildings_.push_back(options_.nodes == GltfOptions::Nodes::kBuilding
+                             ? by_building(building, b, row)
+                             : by_element(building));
+    row += building.parts.size();
+  }
+  if (meshes_.empty()) {
+    // No primitive: no buffer, so no images and no table either.
+    images_.clear();
+    table_.reset();
+  }
+  for (const std::string& image : images_) {
+    image_views_.push_back(buffers_.add_view(ViewKind::kBytes, 0));
+    buffers_.data(image_views_.back()) = image;
+  }
+  if (table_) table_->write_data(buffers_);
+  buffers_.finish(options_.compress);
 }
 
 void Builder::add_images() {
@@ -255,267 +230,241 @@ void Builder::add_images() {
   }
 }
 
-std::int32_t Builder::add_part(const shape::Part& part, std::size_t index) {
-  // Instances share a mesh, unless a uv map gives each its own texture coordinates.
-  const bool shared = part.instance_of && !part.uv;
-  if (shared) {
-    if (auto it = shared_.find(part.instance_of.get()); it != shared_.end()) return it->second;
+std::int32_t Builder::add_mesh(gltf::MeshAssembler& assembler, std::string name, bool with_features,
+                               bool quantize) {
+  if (assembler.empty()) {
+    assembler.clear();
+    return -1;
   }
-  const auto first = static_cast<std::uint32_t>(primitives_.size());
-  const std::uint32_t count =
-      add_primitives(part.instance_of ? *part.instance_of : part.mesh, uv_scale(part), part);
-  std::int32_t mesh = -1;
-  if (count > 0) {
-    mesh = static_cast<std::int32_t>(meshes_.size());
-    meshes_.push_back({part_name(part, index), first, count});
-  }
-  if (shared) shared_[part.instance_of.get()] = mesh;
+  gltf::MeshOptions options = mesh_options_;
+  options.quantize = quantize;
+  gltf::MeshRecord record = assembler.emit(buffers_, views_, options, with_features);
+  quantized_ = quantized_ || options.quantize;
+  meshes_.push_back({std::move(name), std::move(record)});
+  return static_cast<std::int32_t>(meshes_.size() - 1);
+}
+
+// Shared meshes keep float positions: their instances' placements stay plain node transforms.
+std::int32_t Builder::shared_mesh(const shape::Part& part, std::size_t index) {
+  if (auto it = shared_.find(part.instance_of.get()); it != shared_.end()) return it->second;
+  shared_assembler_->add(*part.instance_of, part, 0, false, true);
+  const std::int32_t mesh = add_mesh(*shared_assembler_, part_name(part, index), false, false);
+  shared_[part.instance_of.get()] = mesh;
   return mesh;
 }
 
-// One primitive per material, materials in index order, faces in mesh order within each.
-std::uint32_t Builder::add_primitives(const kernel::Mesh& mesh, double uv,
-                                      const shape::Part& part) {
-  uv_ = uv;
-  uv_part_ = part.uv ? &part : nullptr;
-  weld_.run(mesh);
-  faces_by_material_.clear();
-  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
-    faces_by_material_.emplace_back(materials_.index(mesh.tag(f)), f);
-  }
-  std::sort(faces_by_material_.begin(), faces_by_material_.end());
-  const std::size_t first = primitives_.size();
-  const std::span<const std::pair<std::uint32_t, std::uint32_t>> all(faces_by_material_);
-  for (std::size_t begin = 0; begin < all.size();) {
-    std::size_t end = begin;
-    while (end < all.size() && all[end].first == all[begin].first) ++end;
-    add_primitive(mesh, all[begin].first, all.subspan(begin, end - begin));
-    begin = end;
-  }
-  return static_cast<std::uint32_t>(primitives_.size() - first);
+Affine node_placement(const gltf::MeshRecord& record) {
+  return gltf::dequantization(record.offset, record.scale);
 }
 
-void Builder::add_primitive(const kernel::Mesh& mesh, std::uint32_t material,
-                            std::span<const std::pair<std::uint32_t, std::uint32_t>> faces) {
-  PrimitiveRecord primitive;
-  primitive.material = material;
-  primitive.position_offset = 4 * vertices_.size();
-  primitive.index_offset = 4 * indices_.size();
-  primitive.uv_offset = 4 * uvs_.size();
-  fit_uv_ = material_texture_[material] >= 0;
-  primitive.has_uv = uv_part_ != nullptr || uv_ > 0 || fit_uv_;
-  primitive.accessor =
-      primitives_.empty() ? 0 : primitives_.back().accessor + (primitives_.back().has_uv ? 4 : 3);
-  normals_.clear();
-  for (const auto& entry : faces) add_face(mesh, entry.second, primitive);
-  if (primitive.index_count == 0) return;  // every face degenerate: no primitive
-  vertices_.insert(vertices_.end(), normals_.begin(), normals_.end());
-  primitives_.push_back(primitive);
+// One mesh for all the building's own faces, each vertex carrying its part's row in the table;
+// instances (without a uv map of their own) point at their shared mesh.
+BuildingNode Builder::by_building(const shape::Building& building, std::size_t index,
+                                  std::size_t first_row) {
+  BuildingNode node;
+  std::vector<std::pair<std::size_t, std::int32_t>> instances;  // part, mesh
+  for (std::size_t p = 0; p < building.parts.size(); ++p) {
+    const shape::Part& part = building.parts[p];
+    const auto row = static_cast<std::uint32_t>(first_row + p);
+    if (part.instance_of && !part.uv) {
+      if (const std::int32_t mesh = shared_mesh(part, p); mesh >= 0)
+        instances.emplace_back(p, mesh);
+    } else if (part.instance_of) {
+      assembler_->add(kernel::transformed(*part.instance_of, part.instance_transform), part, row,
+                      options_.quantize, false);
+    } else {
+      assembler_->add(part.mesh, part, row, options_.quantize, false);
+    }
+  }
+  node.mesh =
+      add_mesh(*assembler_, building_name(building, index), table_.has_value(), options_.quantize);
+  Affine inside;  // the frame the building node's children live in
+  if (node.mesh >= 0 && meshes_[node.mesh].record.quantized) {
+    node.placement = node_placement(meshes_[node.mesh].record);
+    inside = *node.placement;
+  }
+  add_instance_groups(building, first_row, instances, inside, node);
+  return node;
 }
 
-// Flat shading: the face's corners become vertices of their own, all carrying the face normal.
-// Where float32 merges vertices (weld_, float32_weld.h) the face's triangles and corners come from
-// the weld, over the merged vertices.
-void Builder::add_face(const kernel::Mesh& mesh, std::size_t face, PrimitiveRecord& primitive) {
-  const kernel::Vec3 newell = kernel::face_normal(mesh, face);
-  triangles_.clear();
-  if (!weld_.active()) {
-    if (!triangulator_.triangulate(mesh, face, newell, triangles_)) return;
-    add_corners(mesh, mesh.face(face), newell, primitive);
-    return;
-  }
-  corners_.clear();
-  for (const auto& triangle : weld_.triangles(face)) {
-    CornerTriangle t{};
-    for (std::size_t k = 0; k < 3; ++k) {
-      const auto it = std::find(corners_.begin(), corners_.end(), triangle[k]);
-      t[k] = static_cast<std::uint32_t>(it - corners_.begin());
-      if (it == corners_.end()) corners_.push_back(triangle[k]);
-    }
-    triangles_.push_back(t);
-  }
-  add_corners(mesh, corners_, newell, primitive);
-}
-
-void Builder::add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
-                          kernel::Vec3 newell, PrimitiveRecord& primitive) {
-  const std::array<float, 3> normal = to_y_up(newell);
-  const std::uint32_t base = primitive.vertex_count;
-  if (uv_part_ != nullptr) {
-    // The part's map is over world positions; an instance's mesh is placed first. glTF's v runs
-    // down the image, CityEngine's up.
-    for (std::uint32_t vertex : loop) {
-      const kernel::Vec3 p = mesh.position(vertex);
-      const kernel::Vec2 t = uv_part_->uv->at(
-          uv_part_->instance_of ? kernel::apply_point(uv_part_->instance_transform, p) : p);
-      uvs_.push_back(static_cast<float>(t.x));
-      uvs_.push_back(static_cast<float>(1 - t.y));
-    }
-  } else if (fit_uv_) {
-    fit_uvs(mesh, loop, newell);
-  }
-  for (std::uint32_t vertex : loop) {
-    if (uv_ > 0 && !fit_uv_ && uv_part_ == nullptr) {
-      const kernel::Vec2 t = kernel::planar_uv(mesh.position(vertex), newell, uv_);
-      uvs_.push_back(static_cast<float>(t.x));
-      uvs_.push_back(static_cast<float>(t.y));
-    }
-    const Float3 p = to_y_up(mesh.position(weld_.representative(vertex)));
-    for (std::size_t k = 0; k < 3; ++k) {
-      vertices_.push_back(p[k]);
-      normals_.push_back(normal[k]);
-      primitive.min[k] = std::min(primitive.min[k], p[k]);
-      primitive.max[k] = std::max(primitive.max[k], p[k]);
-    }
-  }
-  primitive.vertex_count += static_cast<std::uint32_t>(loop.size());
-  for (const CornerTriangle& triangle : triangles_) {
-    for (std::uint32_t corner : triangle) indices_.push_back(base + corner);
-  }
-  primitive.index_count += static_cast<std::uint32_t>(3 * triangles_.size());
-}
-
-// A textured face shows its image once: the face's planar coordinates (kernel::planar_uv, u to the
-// right and v up seen from outside) scaled to its extent, v flipped because glTF's (0, 0) is the
-// image's top-left corner. So text reads the right way round on walls, roofs and floors.
-void Builder::fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
-                      kernel::Vec3 newell) {
-  kernel::Vec2 low{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
-  kernel::Vec2 high{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
-  face_uvs_.clear();
-  for (std::uint32_t vertex : loop) {
-    const kernel::Vec2 t = kernel::planar_uv(mesh.position(vertex), newell, 1);
-    low = {std::min(low.x, t.x), std::min(low.y, t.y)};
-    high = {std::max(high.x, t.x), std::max(high.y, t.y)};
-    face_uvs_.push_back(t);
-  }
-  const auto unit = [](double v, double from, double to) {
-    return to > from ? (v - from) / (to - from) : 0.0;
+// Each instance as a node of its own, or with GPU instancing one node per mesh placing them all
+// (an instance whose placement has a shear keeps a node of its own: TRS cannot hold it).
+void Builder::add_instance_groups(
+    const shape::Building& building, std::size_t first_row,
+    const std::vector<std::pair<std::size_t, std::int32_t>>& instances, const Affine& inside,
+    BuildingNode& node) {
+  const auto placement = [&](const shape::Part& part) {
+    return gltf::relative_to(gltf::y_up(part.instance_transform), inside.translation,
+                             inside.columns[0][0]);
   };
-  for (const kernel::Vec2 t : face_uvs_) {
-    uvs_.push_back(static_cast<float>(unit(t.x, low.x, high.x)));
-    uvs_.push_back(static_cast<float>(1 - unit(t.y, low.y, high.y)));
+  std::vector<std::int32_t> meshes;
+  for (const auto& [p, mesh] : instances) {
+    if (std::find(meshes.begin(), meshes.end(), mesh) == meshes.end()) meshes.push_back(mesh);
+  }
+  if (options_.instancing == GltfOptions::Instancing::kNodes) meshes.clear();
+  for (std::int32_t mesh : meshes) {
+    std::vector<gltf::Trs> placed;
+    std::vector<float> features;
+    for (const auto& [p, m] : instances) {
+      if (m != mesh) continue;
+      if (auto trs = gltf::decompose(placement(building.parts[p]))) {
+        placed.push_back(*trs);
+        features.push_back(static_cast<float>(first_row + p));
+      }
+    }
+    if (placed.empty()) continue;
+    constexpr std::array<std::uint32_t, 4> kStrides{12, 16, 12, 4};
+    for (std::size_t k = 0; k < 4; ++k) {
+      if (!instance_views_[k])
+        instance_views_[k] = buffers_.add_view(ViewKind::kInstances, kStrides[k]);
+    }
+    InstanceGroup group;
+    const auto add = [&](std::size_t k, std::string_view type, auto&& values) {
+      std::string& data = buffers_.data(*instance_views_[k]);
+      const std::size_t offset = data.size();
+      for (const auto& v : values) gltf::append_value(data, v);
+      return buffers_.add_accessor(Accessor{*instance_views_[k], offset, Component::kFloat,
+                                            placed.size(), type, false, std::nullopt,
+                                            std::nullopt});
+    };
+    std::vector<float> t;
+    std::vector<float> r;
+    std::vector<float> s;
+    for (const gltf::Trs& trs : placed) {
+      for (double c : trs.translation) t.push_back(static_cast<float>(c));
+      for (double c : trs.rotation) r.push_back(static_cast<float>(c));
+      for (double c : trs.scale) s.push_back(static_cast<float>(c));
+    }
+    group.translation = add(0, "VEC3", t);
+    group.rotation = add(1, "VEC4", r);
+    group.scale = add(2, "VEC3", s);
+    if (table_) {
+      group.feature = add(3, "SCALAR", features);
+      group.feature_count = static_cast<std::uint32_t>(features.size());
+    }
+    node.children.push_back({meshes_[mesh].name, nullptr, mesh, std::nullopt, group});
+    gpu_instances_ = true;
+  }
+  for (const auto& [p, mesh] : instances) {
+    const shape::Part& part = building.parts[p];
+    const bool grouped = std::find(meshes.begin(), meshes.end(), mesh) != meshes.end() &&
+                         gltf::decompose(placement(part)).has_value();
+    if (!grouped) node.children.push_back({part_name(part, p), &part, mesh, placement(part), {}});
   }
 }
 
-// Little-endian whatever the host (glTF 2.0, "Binary glTF Layout").
-template <typename T>
-void append_little_endian(std::string& out, const std::vector<T>& values) {
-  static_assert(sizeof(T) == 4);
-  if constexpr (std::endian::native == std::endian::little) {
-    out.append(reinterpret_cast<const char*>(values.data()), 4 * values.size());
-  } else {
-    for (T value : values) append_u32(out, std::bit_cast<std::uint32_t>(value));
+// One node and mesh per part under the building's node.
+BuildingNode Builder::by_element(const shape::Building& building) {
+  BuildingNode node;
+  for (std::size_t p = 0; p < building.parts.size(); ++p) {
+    const shape::Part& part = building.parts[p];
+    ChildNode child{part_name(part, p), &part, -1, std::nullopt, std::nullopt};
+    if (part.instance_of && !part.uv) {
+      child.mesh = shared_mesh(part, p);
+      child.placement = gltf::y_up(part.instance_transform);
+    } else {
+      const bool instance = part.instance_of != nullptr;
+      assembler_->add(instance ? *part.instance_of : part.mesh, part, 0, options_.quantize,
+                      instance);
+      child.mesh = add_mesh(*assembler_, child.name, false, options_.quantize);
+      std::optional<Affine> dequantize;
+      if (child.mesh >= 0 && meshes_[child.mesh].record.quantized) {
+        dequantize = node_placement(meshes_[child.mesh].record);
+      }
+      if (instance) {
+        child.placement = gltf::y_up(part.instance_transform);
+        if (dequantize) child.placement = gltf::compose(*child.placement, *dequantize);
+      } else {
+        child.placement = dequantize;
+      }
+    }
+    node.children.push_back(std::move(child));
   }
+  return node;
 }
 
-std::size_t Builder::image_offset(std::size_t image) const {
-  std::size_t offset = 4 * (vertices_.size() + indices_.size() + uvs_.size());
-  for (std::size_t i = 0; i < image; ++i) offset += padded(images_[i].size());
-  return offset;
-}
-
-void Builder::append_binary(std::string& out) const {
-  append_little_endian(out, vertices_);
-  append_little_endian(out, indices_);
-  append_little_endian(out, uvs_);
-  for (const std::string& png : images_) {
-    out += png;
-    out.append(padded(png.size()) - png.size(), '\0');
-  }
-}
-
-void write_vec3(JsonStream& json, const std::array<float, 3>& v) {
-  json.begin_array();
-  for (float c : v) json.number(static_cast<double>(c));
+void write_numbers(JsonStream& json, std::string_view key, std::span<const double> values) {
+  json.key(key).begin_array();
+  for (double v : values) json.number(v + 0.0);
   json.end_array();
 }
 
-// An instance's placement (local Z-up) as a glTF node matrix (Y-up, column-major): C T C^-1 with
-// C: (x, y, z) -> (x, z, -y).
-void write_matrix(JsonStream& json, const kernel::Transform& t) {
-  const auto c = [](kernel::Vec3 v) { return std::array<double, 3>{v.x, v.z, -v.y}; };
-  const std::array<std::array<double, 3>, 4> columns = {c(t.x), c(t.z), c(-t.y), c(t.t)};
-  json.key("matrix").begin_array();
-  for (std::size_t k = 0; k < 4; ++k) {
-    for (double v : columns[k]) json.number(v);
-    json.number(k == 3 ? 1.0 : 0.0);
-  }
-  json.end_array();
-}
-
-void Builder::write_accessors(JsonStream& json) const {
-  json.key("accessors").begin_array();
-  for (const PrimitiveRecord& p : primitives_) {
-    json.begin_object().key("bufferView").integer(0).key("byteOffset").integer(p.position_offset);
-    json.key("componentType").integer(kFloat).key("count").integer(p.vertex_count);
-    json.key("max");
-    write_vec3(json, p.max);
-    json.key("min");
-    write_vec3(json, p.min);
-    json.key("type").string("VEC3").end_object();
-    json.begin_object().key("bufferView").integer(0).key("byteOffset");
-    json.integer(p.position_offset + 12 * std::size_t{p.vertex_count});
-    json.key("componentType").integer(kFloat).key("count").integer(p.vertex_count);
-    json.key("type").string("VEC3").end_object();
-    json.begin_object().key("bufferView").integer(1).key("byteOffset").integer(p.index_offset);
-    json.key("componentType").integer(kUnsignedInt).key("count").integer(p.index_count);
-    json.key("type").string("SCALAR").end_object();
-    if (!p.has_uv) continue;
-    json.begin_object().key("bufferView").integer(2).key("byteOffset").integer(p.uv_offset);
-    json.key("componentType").integer(kFloat).key("count").integer(p.vertex_count);
-    json.key("type").string("VEC2").end_object();
-  }
-  json.end_array();
+void write_feature_ids(JsonStream& json, std::uint32_t feature_count) {
+  json.key(gltf::kFeaturesExtension).begin_object().key("featureIds").begin_array();
+  json.begin_object().key("attribute").integer(0).key("featureCount").integer(feature_count);
+  json.key("propertyTable").integer(0).end_object().end_array().end_object();
 }
 
 void Builder::write_meshes(JsonStream& json) const {
   json.key("meshes").begin_array();
-  for (const MeshRecord& mesh : meshes_) {
+  for (const MeshEntry& mesh : meshes_) {
+    const gltf::MeshRecord& record = mesh.record;
     json.begin_object().key("name").string(mesh.name);
     json.key("primitives").begin_array();
-    for (std::uint32_t primitive = mesh.first; primitive < mesh.first + mesh.count; ++primitive) {
-      const PrimitiveRecord& record = primitives_[primitive];
-      const std::uint32_t accessor = record.accessor;
+    for (const gltf::PrimitiveRecord& primitive : record.primitives) {
       json.begin_object().key("attributes").begin_object();
-      json.key("NORMAL").integer(accessor + 1).key("POSITION").integer(accessor);
-      if (record.has_uv) json.key("TEXCOORD_0").integer(accessor + 3);
+      json.key("NORMAL").integer(record.normal).key("POSITION").integer(record.position);
+      if (record.uv) json.key("TEXCOORD_0").integer(*record.uv);
+      if (record.feature) json.key("_FEATURE_ID_0").integer(*record.feature);
       json.end_object();
-      json.key("indices").integer(accessor + 2);
-      json.key("material").integer(record.material);
-      json.key("mode").integer(kTriangles).end_object();
+      if (record.feature) {
+        json.key("extensions").begin_object();
+        write_feature_ids(json, primitive.feature_count);
+        json.end_object();
+      }
+      json.key("indices").integer(primitive.indices);
+      json.key("material").integer(primitive.material).end_object();
     }
     json.end_array().end_object();
   }
   json.end_array();
 }
 
-// Per building: one node per part, then the building's node with those parts as children.
+void Builder::write_child(JsonStream& json, const ChildNode& child) const {
+  json.begin_object();
+  if (child.instances) {
+    const InstanceGroup& group = *child.instances;
+    json.key("extensions").begin_object();
+    if (group.feature) write_feature_ids(json, group.feature_count);
+    json.key(kInstancingExtension).begin_object().key("attributes").begin_object();
+    json.key("ROTATION").integer(group.rotation).key("SCALE").integer(group.scale);
+    json.key("TRANSLATION").integer(group.translation);
+    if (group.feature) json.key("_FEATURE_ID_0").integer(*group.feature);
+    json.end_object().end_object().end_object();
+  }
+  if (child.part != nullptr) {
+    json.key("extras").attributes(child.part->attributes, "kind",
+                                  gltf::kind_name(child.part->kind));
+  }
+  if (child.placement) write_numbers(json, "matrix", gltf::matrix(*child.placement));
+  if (child.mesh >= 0) json.key("mesh").integer(child.mesh);
+  json.key("name").string(child.name).end_object();
+}
+
+// Per building: its child nodes, then the building's node with them as children.
 void Builder::write_nodes(JsonStream& json) const {
   json.key("nodes").begin_array();
-  std::size_t part_index = 0;
   std::size_t node = 0;
   for (std::size_t b = 0; b < scene_.buildings.size(); ++b) {
     const shape::Building& building = scene_.buildings[b];
-    for (std::size_t p = 0; p < building.parts.size(); ++p) {
-      const shape::Part& part = building.parts[p];
-      json.begin_object().key("extras").attributes(part.attributes, "kind", kind_name(part.kind));
-      if (part.instance_of) write_matrix(json, part.instance_transform);
-      if (const std::int32_t mesh = part_mesh_[part_index++]; mesh >= 0)
-        json.key("mesh").integer(mesh);
-      json.key("name").string(part_name(part, p)).end_object();
-    }
+    const BuildingNode& record = buildings_[b];
+    for (const ChildNode& child : record.children) write_child(json, child);
     json.begin_object();
-    if (!building.parts.empty()) {
+    if (!record.children.empty()) {
       json.key("children").begin_array();
-      for (std::size_t p = 0; p < building.parts.size(); ++p) json.integer(node + p);
+      for (std::size_t c = 0; c < record.children.size(); ++c) json.integer(node + c);
       json.end_array();
     }
     if (!building.attributes.empty()) json.key("extras").attributes(building.attributes);
-    json.key("name");
-    json.string(building.id.empty() ? "building" + std::to_string(b) : building.id);
+    if (record.mesh >= 0) json.key("mesh").integer(record.mesh);
+    json.key("name").string(building_name(building, b));
+    if (record.placement) {
+      const double s = record.placement->columns[0][0];
+      write_numbers(json, "scale", std::array<double, 3>{s, s, s});
+      write_numbers(json, "translation", record.placement->translation);
+    }
     json.end_object();
-    node += building.parts.size() + 1;
+    node += record.children.size() + 1;
   }
   for (std::size_t i = 0; i < scene_.lights.size(); ++i) write_light_node(json, i);
   json.end_array();
@@ -561,8 +510,7 @@ std::array<double, 4> spot_rotation(kernel::Vec3 direction) {
 // KHR_lights_punctual: intensity in candela, range only when limited (the extension forbids 0),
 // spot cones at the extension's defaults written out.
 void Builder::write_lights(JsonStream& json) const {
-  json.key("extensions").begin_object().key(kLightsExtension).begin_object();
-  json.key("lights").begin_array();
+  json.key(kLightsExtension).begin_object().key("lights").begin_array();
   for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
     const shape::Light& light = scene_.lights[i];
     json.begin_object().key("color").begin_array();
@@ -577,8 +525,7 @@ void Builder::write_lights(JsonStream& json) const {
     }
     json.key("type").string(spot ? "spot" : "point").end_object();
   }
-  json.end_array().end_object().end_object();
-  json.key("extensionsUsed").begin_array().string(kLightsExtension).end_array();
+  json.end_array().end_object();
 }
 
 // A light's node: placed like the vertices, (x, y, z) -> (x, z, -y), but in doubles (a node's
@@ -601,36 +548,35 @@ void Builder::write_light_node(JsonStream& json, std::size_t index) const {
 // One image per texture, stored in the buffer (a file's bytes with their MIME type, a procedural
 // image as PNG).
 void Builder::write_images(JsonStream& json) const {
-  const std::size_t first_view = 2 + (uvs_.empty() ? 0 : 1);
   json.key("images").begin_array();
   for (std::size_t i = 0; i < images_.size(); ++i) {
-    json.begin_object().key("bufferView").integer(first_view + i);
+    json.begin_object().key("bufferView").integer(buffers_.view_index(image_views_[i]));
     json.key("mimeType").string(image_types_[i]).key("name").string(image_names_[i]).end_object();
   }
   json.end_array();
 }
 
-void Builder::write_buffers(JsonStream& json, std::string_view buffer_uri) const {
-  const std::size_t vertex_bytes = 4 * vertices_.size();
-  json.key("bufferViews").begin_array();
-  json.begin_object().key("buffer").integer(0).key("byteLength").integer(vertex_bytes);
-  json.key("byteStride").integer(12).key("target").integer(kArrayBuffer).end_object();
-  json.begin_object().key("buffer").integer(0).key("byteLength").integer(4 * indices_.size());
-  json.key("byteOffset").integer(vertex_bytes);
-  json.key("target").integer(kElementArrayBuffer).end_object();
-  if (!uvs_.empty()) {
-    json.begin_object().key("buffer").integer(0).key("byteLength").integer(4 * uvs_.size());
-    json.key("byteOffset").integer(vertex_bytes + 4 * indices_.size());
-    json.key("byteStride").integer(8).key("target").integer(kArrayBuffer).end_object();
+std::vector<std::uint32_t> Builder::sampler_wraps() const {
+  std::vector<std::uint32_t> wraps;
+  if (std::count(image_repeats_.begin(), image_repeats_.end(), false) > 0) {
+    wraps.push_back(kClampToEdge);
   }
+  if (std::count(image_repeats_.begin(), image_repeats_.end(), true) > 0) wraps.push_back(kRepeat);
+  return wraps;
+}
+
+// A procedural image shows once per face (clamped); a file's image repeats over a uv map. Only
+// the samplers some texture uses are written.
+void Builder::write_textures(JsonStream& json) const {
+  const std::vector<std::uint32_t> wraps = sampler_wraps();
+  json.key("textures").begin_array();
   for (std::size_t i = 0; i < images_.size(); ++i) {
-    json.begin_object().key("buffer").integer(0).key("byteLength").integer(images_[i].size());
-    json.key("byteOffset").integer(image_offset(i)).end_object();
+    const std::uint32_t wrap = image_repeats_[i] ? kRepeat : kClampToEdge;
+    const auto sampler = std::find(wraps.begin(), wraps.end(), wrap) - wraps.begin();
+    json.begin_object().key("sampler").integer(sampler);
+    json.key("source").integer(i).end_object();
   }
   json.end_array();
-  json.key("buffers").begin_array().begin_object().key("byteLength").integer(binary_size());
-  if (!buffer_uri.empty()) json.key("uri").string(buffer_uri);
-  json.end_object().end_array();
 }
 
 void Builder::write_scene(JsonStream& json) const {
@@ -645,8 +591,8 @@ void Builder::write_scene(JsonStream& json) const {
   if (!scene_.buildings.empty() || !scene_.lights.empty()) {
     json.key("nodes").begin_array();
     std::size_t node = 0;
-    for (const shape::Building& building : scene_.buildings) {
-      node += building.parts.size();
+    for (const BuildingNode& building : buildings_) {
+      node += building.children.size();
       json.integer(node++);
     }
     for (std::size_t i = 0; i < scene_.lights.size(); ++i) json.integer(node++);
@@ -655,17 +601,57 @@ void Builder::write_scene(JsonStream& json) const {
   json.end_object().end_array();
 }
 
+std::vector<std::string_view> Builder::extensions_required() const {
+  std::vector<std::string_view> required;
+  // Without these a reader would place, decode or find nothing right.
+  if (gpu_instances_) required.push_back(kInstancingExtension);
+  if (buffers_.compressed()) required.push_back(kMeshoptExtension);
+  if (quantized_) required.push_back(kQuantizationExtension);
+  return required;
+}
+
+std::vector<std::string_view> Builder::extensions_used() const {
+  std::vector<std::string_view> used = extensions_required();
+  if (table_) {
+    used.push_back(gltf::kFeaturesExtension);
+    used.push_back(gltf::kMetadataExtension);
+  }
+  if (!scene_.lights.empty()) used.push_back(kLightsExtension);
+  std::sort(used.begin(), used.end());
+  return used;
+}
+
+// The root's "extensions": the parts' property table and the lights.
+void Builder::write_extensions(JsonStream& json) const {
+  if (!table_ && scene_.lights.empty()) return;
+  json.key("extensions").begin_object();
+  if (table_) table_->write_json(json, buffers_);
+  if (!scene_.lights.empty()) write_lights(json);
+  json.end_object();
+}
+
 // Root members in sorted order; the buffer and everything describing it only when some face
 // produced triangles.
 void Builder::write_json(JsonStream& json, std::string_view buffer_uri) const {
-  const bool has_meshes = !primitives_.empty();
+  const bool has_meshes = !meshes_.empty();
   json.begin_object();
-  if (has_meshes) write_accessors(json);
+  buffers_.write_accessors(json);
   json.key("asset").begin_object().key("generator").string("Insula");
   json.key("version").string("2.0").end_object();
+  if (!buffers_.empty()) buffers_.write_views(json, buffer_uri);
+  write_extensions(json);
+  const auto write_list = [&json](std::string_view key,
+                                  const std::vector<std::string_view>& names) {
+    if (names.empty()) return;
+    json.key(key).begin_array();
+    for (std::string_view name : names) json.string(name);
+    json.end_array();
+  };
+  std::vector<std::string_view> required = extensions_required();
+  std::sort(required.begin(), required.end());
+  write_list("extensionsRequired", required);
+  write_list("extensionsUsed", extensions_used());
   const bool has_images = !images_.empty();
-  if (has_meshes) write_buffers(json, buffer_uri);
-  if (!scene_.lights.empty()) write_lights(json);
   if (has_images) write_images(json);
   if (has_meshes) {
     write_materials(json);
@@ -673,8 +659,6 @@ void Builder::write_json(JsonStream& json, std::string_view buffer_uri) const {
   }
   if (!scene_.buildings.empty() || !scene_.lights.empty()) write_nodes(json);
   if (has_images) {
-    // A procedural image shows once per face (clamped); a file's image repeats over a uv map.
-    // Only the samplers some texture uses are written.
     json.key("samplers").begin_array();
     for (std::uint32_t wrap : sampler_wraps()) {
       json.begin_object().key("magFilter").integer(kLinear);
@@ -684,17 +668,7 @@ void Builder::write_json(JsonStream& json, std::string_view buffer_uri) const {
     json.end_array();
   }
   write_scene(json);
-  if (has_images) {
-    json.key("textures").begin_array();
-    for (std::size_t i = 0; i < images_.size(); ++i) {
-      const std::vector<std::uint32_t> wraps = sampler_wraps();
-      const std::uint32_t wrap = image_repeats_[i] ? kRepeat : kClampToEdge;
-      const auto sampler = std::find(wraps.begin(), wraps.end(), wrap) - wraps.begin();
-      json.begin_object().key("sampler").integer(sampler);
-      json.key("source").integer(i).end_object();
-    }
-    json.end_array();
-  }
+  if (has_images) write_textures(json);
   json.end_object();
 }
 
@@ -717,8 +691,8 @@ std::string base64(const std::string& bytes) {
 
 // A chunk's length (padded to 4 bytes) and type; the caller appends the data and the padding.
 void append_chunk_header(std::string& out, std::size_t size, std::uint32_t type) {
-  append_u32(out, static_cast<std::uint32_t>(padded(size)));
-  append_u32(out, type);
+  gltf::append_value(out, static_cast<std::uint32_t>(padded(size)));
+  gltf::append_value(out, type);
 }
 
 bool has_gltf_extension(const std::filesystem::path& path) {
@@ -730,8 +704,8 @@ bool has_gltf_extension(const std::filesystem::path& path) {
 
 }  // namespace
 
-std::string glb_bytes(const shape::Scene& scene) {
-  const Builder builder(scene);
+std::string glb_bytes(const shape::Scene& scene, const GltfOptions& options) {
+  const Builder builder(scene, options);
   std::string text;
   JsonStream json(text);
   builder.write_json(json, {});
@@ -739,9 +713,9 @@ std::string glb_bytes(const shape::Scene& scene) {
   const std::size_t total = 12 + 8 + padded(text.size()) + (binary == 0 ? 0 : 8 + padded(binary));
   std::string out;
   out.reserve(total);
-  append_u32(out, kGlbMagic);
-  append_u32(out, 2);
-  append_u32(out, static_cast<std::uint32_t>(total));
+  gltf::append_value(out, kGlbMagic);
+  gltf::append_value(out, std::uint32_t{2});
+  gltf::append_value(out, static_cast<std::uint32_t>(total));
   append_chunk_header(out, text.size(), kChunkJson);
   out += text;
   out.append(padded(text.size()) - text.size(), ' ');
@@ -753,8 +727,8 @@ std::string glb_bytes(const shape::Scene& scene) {
   return out;
 }
 
-std::string gltf_text(const shape::Scene& scene) {
-  const Builder builder(scene);
+std::string gltf_text(const shape::Scene& scene, const GltfOptions& options) {
+  const Builder builder(scene, options);
   std::string uri;
   if (builder.binary_size() > 0) {
     std::string binary;
@@ -769,9 +743,10 @@ std::string gltf_text(const shape::Scene& scene) {
   return text;
 }
 
-std::string write_gltf(const shape::Scene& scene, const std::filesystem::path& path) {
-  return write_file_atomically(path,
-                               has_gltf_extension(path) ? gltf_text(scene) : glb_bytes(scene));
+std::string write_gltf(const shape::Scene& scene, const std::filesystem::path& path,
+                       const GltfOptions& options) {
+  return write_file_atomically(
+      path, has_gltf_extension(path) ? gltf_text(scene, options) : glb_bytes(scene, options));
 }
 
 }  // namespace insula::io

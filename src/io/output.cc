@@ -41,7 +41,7 @@ std::string write_scene(const shape::Scene& scene, const std::string& path,
                         const OutputOptions& options) {
   const std::string format = output_format_name(path);
   if (format == "obj") return write_obj(scene, path, options.obj);
-  if (format == "glb" || format == "gltf") return write_gltf(scene, path);
+  if (format == "glb" || format == "gltf") return write_gltf(scene, path, options.gltf);
   if (format == "cityjson") return write_cityjson(scene, path);
   if (format == "svg") return write_svg(scene, path, options.svg);
   if (format == "png") return write_png(scene, path, options.render);

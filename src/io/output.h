@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/gltf_writer.h"
 #include "io/obj_writer.h"
 #include "io/png_renderer.h"
 #include "io/svg_writer.h"
@@ -24,6 +25,7 @@ struct OutputOptions {
   RenderOptions render;
   SvgOptions svg;
   ObjOptions obj;
+  GltfOptions gltf;
 };
 
 // Writes the scene in the path's format, atomically. Empty string on success, else the reason.

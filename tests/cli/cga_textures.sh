@@ -49,11 +49,15 @@ grep -q "facade.cga: warning\[AST101\]: texture 'images/missing.png': not found 
 [ "$(json "$tmp/report.json" 'list(d["missing_textures"])')" = "['images/missing.png']" ] ||
   fail "report missing_textures: $(json "$tmp/report.json" 'd.get("missing_textures")')"
 validate_gltf "textured façade GLB" "$tmp/out/facade.glb"
+# A node and mesh per part (--gltf-nodes element), to read the Bricks part's own coordinates.
+"$insula" build "$tmp/project/rules/facade.cga" --lot "$tmp/lot.geojson" --gltf-nodes element \
+  -o "$tmp/out/facade_parts.glb" -q 2>"$tmp/err" >/dev/null || fail "build parts: $(cat "$tmp/err")"
+validate_gltf "textured façade GLB, node per part" "$tmp/out/facade_parts.glb"
 
 # The GLB: the PNG embedded byte for byte, a repeating sampler, the façade's material textured
 # (white: CityEngine's colour under a texture), the red walls untextured; TEXCOORD_0 of the
 # façade spans u 0..5 (10 m at 2 m) and v 0..2 (6 m at 3 m; glTF's v runs down: 1 - v).
-python3 - "$tmp/out/facade.glb" "$tmp/project/assets/images/checker.png" >"$tmp/glb.txt" 2>&1 <<'EOF2' ||
+python3 - "$tmp/out/facade_parts.glb" "$tmp/project/assets/images/checker.png" >"$tmp/glb.txt" 2>&1 <<'EOF2' ||
 import json, struct, sys
 data = open(sys.argv[1], "rb").read()
 n = struct.unpack_from("<I", data, 12)[0]

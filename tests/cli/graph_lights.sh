@@ -39,7 +39,7 @@ light=$(json "$tmp/r.json" "[{k: v for k, v in e.items() if k != 'id'} for e in 
 python3 - "$tmp/sign.gltf" >"$tmp/g.txt" 2>&1 <<'PY' || fail "glTF content: $(cat "$tmp/g.txt")"
 import json, sys
 d = json.load(open(sys.argv[1]))
-assert d["extensionsUsed"] == ["KHR_lights_punctual"], d.get("extensionsUsed")
+assert "KHR_lights_punctual" in d["extensionsUsed"], d.get("extensionsUsed")
 lights = d["extensions"]["KHR_lights_punctual"]["lights"]
 assert lights == [{"color": [1.0, 1.0, 0.8], "intensity": 400.0, "name": "lamp.out#0",
                    "range": 25.0, "type": "point"}], lights
@@ -51,9 +51,10 @@ assert d["textures"] == [{"sampler": 0, "source": 0}] and len(d["samplers"]) == 
 textured = [i for i, m in enumerate(d["materials"])
             if "baseColorTexture" in m["pbrMetallicRoughness"]]
 assert [d["materials"][i]["name"] for i in textured] == ["texture_hotel"], d["materials"]
-with_uv = [p for m in d["meshes"] for p in m["primitives"] if "TEXCOORD_0" in p["attributes"]]
-assert len(with_uv) == 1 and with_uv[0]["material"] == textured[0], with_uv
-assert d["accessors"][with_uv[0]["attributes"]["TEXCOORD_0"]]["count"] == 4
+# One primitive shows the image, with texture coordinates (which the mesh's other primitives
+# share with it).
+shown = [p for m in d["meshes"] for p in m["primitives"] if p["material"] == textured[0]]
+assert len(shown) == 1 and "TEXCOORD_0" in shown[0]["attributes"], shown
 PY
 
 # Other writers ignore lights and images: the OBJ still has the six faces of the box.

@@ -32,7 +32,6 @@ namespace insula::io {
 namespace {
 
 using testing::load_glb;
-using testing::read_accessor;
 
 using kernel::Polygon;
 using kernel::RoofType;
@@ -46,33 +45,25 @@ struct ShellDefects {
   std::size_t unpaired = 0;    // directed edges without exactly one reverse partner, or repeated
 };
 
-// Every part of one building node, welded by float32 position.
-ShellDefects defects(const tinygltf::Model& model, const tinygltf::Node& building) {
-  std::map<std::array<float, 3>, std::uint32_t> ids;
+// Every primitive under one building's root node, welded by written position (float32, or the
+// quantization grid, placed by the node).
+ShellDefects defects(const tinygltf::Model& model, int root) {
+  std::map<std::array<double, 3>, std::uint32_t> ids;
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
   ShellDefects d;
-  for (int child : building.children) {
-    const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(child)];
-    if (node.mesh < 0) continue;
-    for (const tinygltf::Primitive& p :
-         model.meshes[static_cast<std::size_t>(node.mesh)].primitives) {
-      const auto positions = read_accessor<float>(model, p.attributes.at("POSITION"));
-      const auto indices = read_accessor<std::uint32_t>(model, p.indices);
-      const auto id = [&](std::uint32_t corner) {
-        const std::array<float, 3> key{positions[3 * corner], positions[3 * corner + 1],
-                                       positions[3 * corner + 2]};
-        return ids.emplace(key, static_cast<std::uint32_t>(ids.size())).first->second;
-      };
-      for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-        ++d.triangles;
-        const std::array<std::uint32_t, 3> v{id(indices[t]), id(indices[t + 1]),
-                                             id(indices[t + 2])};
-        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) {
-          ++d.degenerate;
-          continue;
-        }
-        for (std::size_t k = 0; k < 3; ++k) ++directed[{v[k], v[(k + 1) % 3]}];
+  for (const testing::PlacedPrimitive& p : testing::placed_primitives(model, root)) {
+    const auto id = [&](std::uint32_t corner) {
+      return ids.emplace(p.positions[corner], static_cast<std::uint32_t>(ids.size())).first->second;
+    };
+    for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+      ++d.triangles;
+      const std::array<std::uint32_t, 3> v{id(p.indices[t]), id(p.indices[t + 1]),
+                                           id(p.indices[t + 2])};
+      if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) {
+        ++d.degenerate;
+        continue;
       }
+      for (std::size_t k = 0; k < 3; ++k) ++directed[{v[k], v[(k + 1) % 3]}];
     }
   }
   for (const auto& [edge, count] : directed) {
@@ -132,16 +123,21 @@ shape::Scene mass_scene(const std::vector<Polygon>& footprints, RoofType roof) {
   return scene;
 }
 
+// Closed in both position encodings: quantized to 1/1024 m (the default) and float32.
 void expect_closed_shells(const shape::Scene& scene, const std::string& what) {
-  const tinygltf::Model model = load_glb(glb_bytes(scene));
-  ASSERT_EQ(model.scenes.size(), 1U);
-  const std::vector<int>& roots = model.scenes[0].nodes;
-  ASSERT_EQ(roots.size(), scene.buildings.size());
-  for (std::size_t b = 0; b < roots.size(); ++b) {
-    const ShellDefects d = defects(model, model.nodes[static_cast<std::size_t>(roots[b])]);
-    EXPECT_GT(d.triangles, 0U);
-    EXPECT_EQ(d.degenerate, 0U) << what << ", building " << b;
-    EXPECT_EQ(d.unpaired, 0U) << what << ", building " << b;
+  for (const bool quantize : {true, false}) {
+    GltfOptions options;
+    options.quantize = quantize;
+    const tinygltf::Model model = load_glb(glb_bytes(scene, options));
+    ASSERT_EQ(model.scenes.size(), 1U);
+    const std::vector<int>& roots = model.scenes[0].nodes;
+    ASSERT_EQ(roots.size(), scene.buildings.size());
+    for (std::size_t b = 0; b < roots.size(); ++b) {
+      const ShellDefects d = defects(model, roots[b]);
+      EXPECT_GT(d.triangles, 0U);
+      EXPECT_EQ(d.degenerate, 0U) << what << ", building " << b << (quantize ? " quantized" : "");
+      EXPECT_EQ(d.unpaired, 0U) << what << ", building " << b << (quantize ? " quantized" : "");
+    }
   }
 }
 

@@ -2,6 +2,8 @@
 // node names, triangle counts, extras, Y-up positions, flat normals and concave-face triangulation.
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <memory>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -22,7 +24,6 @@ namespace insula::io {
 namespace {
 
 using testing::load_glb;
-using testing::read_accessor;
 using testing::test_scene;
 
 const tinygltf::Node& node_named(const tinygltf::Model& model, const std::string& name) {
@@ -56,8 +57,45 @@ TEST(GltfWriter, GlbHeaderAndChunksAreWellFormed) {
   EXPECT_EQ(bytes.substr(16, 4), "JSON");
 }
 
-TEST(GltfWriter, NodesPerBuildingAndPartWithNames) {
+// The JSON chunk of a .glb.
+nlohmann::json json_of(const std::string& glb) {
+  std::uint32_t length = 0;
+  std::memcpy(&length, glb.data() + 12, 4);
+  return nlohmann::json::parse(glb.substr(20, length));
+}
+
+constexpr GltfOptions kElements{GltfOptions::Nodes::kElement, GltfOptions::Instancing::kNodes,
+                                false, false};
+
+TEST(GltfWriter, OneNodeAndOneMeshPerBuilding) {
   const tinygltf::Model model = load_glb(glb_bytes(test_scene()));
+  ASSERT_EQ(model.scenes.size(), 1U);
+  ASSERT_EQ(model.scenes[0].nodes.size(), 2U);
+  EXPECT_EQ(model.nodes.size(), 2U);
+  ASSERT_EQ(model.meshes.size(), 2U);
+  for (int index : model.scenes[0].nodes) {
+    const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(index)];
+    EXPECT_TRUE(node.children.empty());
+    ASSERT_GE(node.mesh, 0);
+    EXPECT_EQ(model.meshes[static_cast<std::size_t>(node.mesh)].name, node.name);
+  }
+  EXPECT_EQ(node_named(model, "b1").name, "b1");
+  // One primitive per material: b1 shows walls, roof (Tile red) and ground; L-2 walls, roof,
+  // ground and the storey's floor.
+  EXPECT_EQ(model.meshes[static_cast<std::size_t>(node_named(model, "b1").mesh)].primitives.size(),
+            3U);
+  EXPECT_EQ(model.meshes[static_cast<std::size_t>(node_named(model, "L-2").mesh)].primitives.size(),
+            4U);
+  // The primitives of a mesh share their vertex attributes.
+  for (const tinygltf::Mesh& mesh : model.meshes) {
+    for (const tinygltf::Primitive& primitive : mesh.primitives) {
+      EXPECT_EQ(primitive.attributes, mesh.primitives[0].attributes);
+    }
+  }
+}
+
+TEST(GltfWriter, ElementNodesPerBuildingAndPartWithNames) {
+  const tinygltf::Model model = load_glb(glb_bytes(test_scene(), kElements));
   ASSERT_EQ(model.scenes.size(), 1U);
   ASSERT_EQ(model.scenes[0].nodes.size(), 2U);
   const auto root = [&](std::size_t i) {
@@ -69,14 +107,23 @@ TEST(GltfWriter, NodesPerBuildingAndPartWithNames) {
   EXPECT_EQ(model.nodes[static_cast<std::size_t>(root(1).children[0])].name, "wing");
   EXPECT_EQ(model.nodes[static_cast<std::size_t>(root(1).children[1])].name, "storey 0");
   EXPECT_GE(node_named(model, "main").mesh, 0);
+  EXPECT_EQ(node_named(model, "main").extras.Get("kind").Get<std::string>(), "BuildingPart");
+  EXPECT_EQ(node_named(model, "main").extras.Get("levels").GetNumberAsDouble(), 1.0);
+  EXPECT_EQ(node_named(model, "storey 0").extras.Get("kind").Get<std::string>(), "Storey");
+  EXPECT_TRUE(model.extensionsUsed.empty());  // floats, no feature table
 }
 
 TEST(GltfWriter, TrianglesCoverEveryFace) {
+  for (const GltfOptions& options : {GltfOptions{}, kElements}) {
+    const tinygltf::Model model = load_glb(glb_bytes(test_scene(), options));
+    EXPECT_EQ(triangle_count(model), 34U);
+  }
+  // Small meshes index with 16 bits.
   const tinygltf::Model model = load_glb(glb_bytes(test_scene()));
-  EXPECT_EQ(triangle_count(model), 34U);
-  for (const tinygltf::Accessor& accessor : model.accessors) {
-    if (accessor.type == TINYGLTF_TYPE_SCALAR) {
-      EXPECT_EQ(accessor.componentType, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+  for (const tinygltf::Mesh& mesh : model.meshes) {
+    for (const tinygltf::Primitive& primitive : mesh.primitives) {
+      EXPECT_EQ(model.accessors[static_cast<std::size_t>(primitive.indices)].componentType,
+                TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
     }
   }
 }
@@ -87,9 +134,6 @@ TEST(GltfWriter, AttributesAndOriginGoToExtras) {
   EXPECT_EQ(b1.Get("height").GetNumberAsDouble(), 3.0);
   EXPECT_EQ(b1.Get("name").Get<std::string>(), "Box & <Co> \"1\"");
   EXPECT_TRUE(b1.Get("listed").Get<bool>());
-  EXPECT_EQ(node_named(model, "main").extras.Get("kind").Get<std::string>(), "BuildingPart");
-  EXPECT_EQ(node_named(model, "main").extras.Get("levels").GetNumberAsDouble(), 1.0);
-  EXPECT_EQ(node_named(model, "storey 0").extras.Get("kind").Get<std::string>(), "Storey");
   const tinygltf::Value& extras = model.scenes[0].extras;
   ASSERT_TRUE(extras.Get("origin").IsArray());
   EXPECT_EQ(extras.Get("origin").Get(0).GetNumberAsDouble(), 500000.25);
@@ -98,55 +142,264 @@ TEST(GltfWriter, AttributesAndOriginGoToExtras) {
   EXPECT_EQ(extras.Get("crs").Get<std::string>(), "EPSG:32633");
 }
 
-TEST(GltfWriter, PositionsAreLocalAndYUp) {
-  const tinygltf::Model model = load_glb(glb_bytes(test_scene()));
-  // The L wing spans local x 10..16, y 0..5, z 0..4: in glTF x 10..16, y (up) 0..4, z -5..0.
-  const tinygltf::Mesh& wing =
-      model.meshes[static_cast<std::size_t>(node_named(model, "wing").mesh)];
-  std::vector<double> min{1e9, 1e9, 1e9};
-  std::vector<double> max{-1e9, -1e9, -1e9};
-  for (const tinygltf::Primitive& primitive : wing.primitives) {
-    const tinygltf::Accessor& position =
-        model.accessors[static_cast<std::size_t>(primitive.attributes.at("POSITION"))];
-    ASSERT_EQ(position.minValues.size(), 3U);
-    const std::vector<float> values =
-        read_accessor<float>(model, primitive.attributes.at("POSITION"));
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      min[i % 3] = std::min(min[i % 3], static_cast<double>(values[i]));
-      max[i % 3] = std::max(max[i % 3], static_cast<double>(values[i]));
-      EXPECT_GE(values[i], position.minValues[i % 3]);
-      EXPECT_LE(values[i], position.maxValues[i % 3]);
+// EXT_structural_metadata: the parts in scene order, their name and kind dictionary-coded and
+// their attributes as columns; every vertex's _FEATURE_ID_0 is its part's row.
+TEST(GltfWriter, PartsAreFeaturesWithAPropertyTable) {
+  const std::string glb = glb_bytes(test_scene());
+  const tinygltf::Model model = load_glb(glb);
+  const nlohmann::json json = json_of(glb);
+  const nlohmann::json& metadata = json["extensions"]["EXT_structural_metadata"];
+  const nlohmann::json& table = metadata["propertyTables"][0];
+  EXPECT_EQ(table["class"], "part");
+  ASSERT_EQ(table["count"], 3);
+  const nlohmann::json& properties = metadata["schema"]["classes"]["part"]["properties"];
+  EXPECT_EQ(properties["name"]["type"], "ENUM");
+  EXPECT_EQ(properties["kind"]["type"], "ENUM");
+  // Only "main" has levels: a text column, dictionary-coded, with a noData code for the others.
+  EXPECT_EQ(properties["levels"]["type"], "ENUM");
+  EXPECT_EQ(properties["levels"]["noData"], "(none)");
+  // The enum code of each row, and the names they stand for.
+  const auto column = [&](const std::string& id) {
+    std::vector<std::string> names;
+    const nlohmann::json& values = metadata["schema"]["enums"][id]["values"];
+    const int view = table["properties"][id]["values"];
+    const tinygltf::BufferView& v = model.bufferViews[static_cast<std::size_t>(view)];
+    for (std::size_t row = 0; row < 3; ++row) {
+      const unsigned char code = model.buffers[0].data[v.byteOffset + row];
+      for (const nlohmann::json& value : values) {
+        if (value["value"] == code) names.push_back(value["name"]);
+      }
+    }
+    return names;
+  };
+  EXPECT_EQ(column("name"), (std::vector<std::string>{"main", "wing", "storey 0"}));
+  EXPECT_EQ(column("kind"), (std::vector<std::string>{"BuildingPart", "BuildingPart", "Storey"}));
+  EXPECT_EQ(column("levels"), (std::vector<std::string>{"1", "(none)", "(none)"}));
+  std::vector<std::string> extensions = model.extensionsUsed;
+  EXPECT_EQ(extensions, (std::vector<std::string>{"EXT_mesh_features", "EXT_structural_metadata",
+                                                  "KHR_mesh_quantization"}));
+  // The floor (only in "storey 0", row 2) carries feature 2; b1's vertices all feature 0.
+  for (const testing::PlacedPrimitive& p : testing::placed_primitives(model)) {
+    for (double feature : p.features) {
+      if (p.node == "b1") {
+        EXPECT_EQ(feature, 0);
+      }
+      if (p.material == "FloorSurface") {
+        EXPECT_EQ(feature, 2);
+      }
+      if (p.node == "L-2" && p.material == "RoofSurface") {
+        EXPECT_EQ(feature, 1);
+      }
     }
   }
-  EXPECT_EQ(min, (std::vector<double>{10, 0, -5}));
-  EXPECT_EQ(max, (std::vector<double>{16, 4, 0}));
+  for (const nlohmann::json& mesh : json["meshes"]) {
+    for (const nlohmann::json& primitive : mesh["primitives"]) {
+      const nlohmann::json& ids = primitive["extensions"]["EXT_mesh_features"]["featureIds"][0];
+      EXPECT_EQ(ids["attribute"], 0);
+      EXPECT_EQ(ids["propertyTable"], 0);
+      EXPECT_EQ(ids["featureCount"], 1);  // one part shows each material here
+    }
+  }
+}
+
+TEST(GltfWriter, PositionsAreLocalYUpAndQuantizedWithinAMillimetre) {
+  for (const GltfOptions& options : {GltfOptions{}, kElements}) {
+    const tinygltf::Model model = load_glb(glb_bytes(test_scene(), options));
+    // The L wing spans local x 10..16, y 0..5, z 0..4: in glTF x 10..16, y (up) 0..4, z -5..0.
+    std::array<double, 3> min{1e9, 1e9, 1e9};
+    std::array<double, 3> max{-1e9, -1e9, -1e9};
+    for (const testing::PlacedPrimitive& p : testing::placed_primitives(model)) {
+      const bool wing = p.node == "wing" || (p.node == "L-2" && p.material != "FloorSurface");
+      if (!wing) continue;
+      for (const auto& position : p.positions) {
+        for (std::size_t k = 0; k < 3; ++k) {
+          min[k] = std::min(min[k], position[k]);
+          max[k] = std::max(max[k], position[k]);
+          // On the grid of 1/1024 m, these coordinates are exact.
+          EXPECT_NEAR(position[k], std::round(position[k]), 1e-9);
+        }
+      }
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+      EXPECT_NEAR(min[k], (std::array<double, 3>{10, 0, -5})[k], 1e-9);
+      EXPECT_NEAR(max[k], (std::array<double, 3>{16, 4, 0})[k], 1e-9);
+    }
+  }
+}
+
+TEST(GltfWriter, QuantizedPositionsMoveLessThanAMillimetre) {
+  shape::Scene scene;
+  shape::Building building;
+  building.id = "odd";
+  building.parts.push_back({"p",
+                            shape::PartKind::kBuildingPart,
+                            {},
+                            testing::prism({{0.1234567, 0.7654321},
+                                            {23.456789, 1.1111111},
+                                            {20.987654, 17.3456789},
+                                            {1.3579246, 15.2468013}},
+                                           0.3333333, 12.7777777)});
+  scene.buildings.push_back(std::move(building));
+  const std::string glb = glb_bytes(scene);
+  const tinygltf::Model model = load_glb(glb);
+  EXPECT_EQ(model.accessors[0].componentType, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+  const kernel::Mesh& mesh = scene.buildings[0].parts[0].mesh;
+  std::size_t checked = 0;
+  for (const testing::PlacedPrimitive& p : testing::placed_primitives(model)) {
+    for (const auto& position : p.positions) {
+      // The nearest vertex of the input (in glTF's frame) is under 1 mm away.
+      double nearest = 1e9;
+      for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+        const kernel::Vec3 q = mesh.position(v);
+        nearest =
+            std::min(nearest, std::hypot(position[0] - q.x, position[1] - q.z, position[2] + q.y));
+      }
+      EXPECT_LT(nearest, 0.001);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0U);
+  // With floats, a float32 apart.
+  const tinygltf::Model floats = load_glb(glb_bytes(scene, kElements));
+  EXPECT_EQ(floats.accessors[0].componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
+}
+
+// A mesh wider than 16 bits of 1/1024 m (64 m) keeps float positions.
+TEST(GltfWriter, WideMeshesKeepFloatPositions) {
+  shape::Scene scene;
+  shape::Building building;
+  building.id = "long";
+  building.parts.push_back({"p",
+                            shape::PartKind::kBuildingPart,
+                            {},
+                            testing::prism({{0, 0}, {200, 0}, {200, 10}, {0, 10}}, 0, 5)});
+  scene.buildings.push_back(std::move(building));
+  const tinygltf::Model model = load_glb(glb_bytes(scene));
+  EXPECT_EQ(model.accessors[0].componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
+  EXPECT_TRUE(model.nodes[0].scale.empty());
+  EXPECT_EQ(model.accessors[0].maxValues, (std::vector<double>{200, 5, 0}));
 }
 
 TEST(GltfWriter, NormalsAreFlatAndUnit) {
-  const tinygltf::Model model = load_glb(glb_bytes(test_scene()));
-  const tinygltf::Mesh& main =
-      model.meshes[static_cast<std::size_t>(node_named(model, "main").mesh)];
-  for (const tinygltf::Primitive& primitive : main.primitives) {
-    const std::string& material =
-        model.materials[static_cast<std::size_t>(primitive.material)].name;
-    const std::vector<float> normals =
-        read_accessor<float>(model, primitive.attributes.at("NORMAL"));
-    for (std::size_t i = 0; i < normals.size(); i += 3) {
-      EXPECT_NEAR(std::hypot(normals[i], normals[i + 1], normals[i + 2]), 1.0, 1e-6);
-      if (material == "Tile_red") {
-        EXPECT_EQ(normals[i + 1], 1.0F);
-      }  // roof: up
-      if (material == "GroundSurface") {
-        EXPECT_EQ(normals[i + 1], -1.0F);
-      }  // ground: down
-      if (material == "WallSurface") {
-        EXPECT_EQ(normals[i + 1], 0.0F);
-      }  // walls: level
+  for (const GltfOptions& options : {GltfOptions{}, kElements}) {
+    const tinygltf::Model model = load_glb(glb_bytes(test_scene(), options));
+    for (const testing::PlacedPrimitive& p : testing::placed_primitives(model)) {
+      if (p.node != "b1" && p.node != "main") continue;
+      for (const auto& n : p.normals) {
+        EXPECT_NEAR(std::hypot(n[0], n[1], n[2]), 1.0, 1e-6);
+        // Roof up, ground down, walls level.
+        const double up = p.material == "Tile_red" ? 1 : p.material == "GroundSurface" ? -1 : 0;
+        EXPECT_EQ(n[1], up) << p.material;
+      }
+      // Flat shading: every face has its own corners, 4 per quad here.
+      EXPECT_EQ(p.positions.size() * 6, 4 * p.indices.size()) << p.material;
     }
-    // Flat shading: every face has its own corners, 4 per quad here.
-    EXPECT_EQ(normals.size() / 3,
-              4 * model.accessors[static_cast<std::size_t>(primitive.indices)].count / 6);
   }
+}
+
+// A building whose parts are: its walls, a 1 m cube placed twice (turned, scaled, mirrored),
+// a further wall, and the cube sheared (no TRS can hold it).
+shape::Scene instanced_scene() {
+  auto cube =
+      std::make_shared<const kernel::Mesh>(testing::prism({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0, 1));
+  shape::Scene scene;
+  shape::Building b;
+  b.id = "with instances";
+  b.parts.push_back({"walls",
+                     shape::PartKind::kBuildingPart,
+                     {},
+                     testing::prism({{0, 0}, {20, 0}, {20, 10}, {0, 10}}, 0, 6)});
+  const auto instance = [&](std::string name, kernel::Transform t) {
+    shape::Part part{std::move(name), shape::PartKind::kInstallation, {}, {}};
+    part.instance_of = cube;
+    part.instance_transform = t;
+    b.parts.push_back(std::move(part));
+  };
+  instance("turned", kernel::Transform{{0, 1, 0}, {-1, 0, 0}, {0, 0, 1}, {5, 2, 6}});
+  b.parts.push_back({"annex",
+                     shape::PartKind::kBuildingPart,
+                     {},
+                     testing::prism({{20, 0}, {24, 0}, {24, 4}, {20, 4}}, 0, 3)});
+  instance("mirrored", kernel::Transform{{-2, 0, 0}, {0, 1, 0}, {0, 0, 3}, {12, 3, 6}});
+  instance("sheared", kernel::Transform{{1, 0, 0}, {0.5, 1, 0}, {0, 0, 1}, {2, 8, 6}});
+  scene.buildings.push_back(std::move(b));
+  return scene;
+}
+
+// The glTF-frame box of the primitives `keep` accepts.
+std::array<double, 6> box_of(const std::vector<testing::PlacedPrimitive>& primitives,
+                             const std::function<bool(const testing::PlacedPrimitive&)>& keep) {
+  std::array<double, 6> box{1e9, 1e9, 1e9, -1e9, -1e9, -1e9};
+  for (const testing::PlacedPrimitive& p : primitives) {
+    if (!keep(p)) continue;
+    for (const auto& q : p.positions) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        box[k] = std::min(box[k], q[k]);
+        box[3 + k] = std::max(box[3 + k], q[k]);
+      }
+    }
+  }
+  return box;
+}
+
+void expect_box(const std::array<double, 6>& got, const std::array<double, 6>& want,
+                const std::string& what) {
+  for (std::size_t k = 0; k < 6; ++k) EXPECT_NEAR(got[k], want[k], 1e-5) << what << " " << k;
+}
+
+// Where each instance must be, in glTF's frame (x, z, -y).
+void expect_instances_placed(const tinygltf::Model& model, const std::string& what) {
+  const std::vector<testing::PlacedPrimitive> placed = testing::placed_primitives(model);
+  const auto named = [&](const std::string& node, double feature) {
+    return [node, feature](const testing::PlacedPrimitive& p) {
+      if (p.mesh == "with instances" || p.features.empty()) return false;
+      // A GPU instance is known by its feature id, a node's instance by the node's name.
+      return p.features[0] >= 0 ? p.features[0] == feature : p.node == node;
+    };
+  };
+  // turned: x from 4 to 5, y 2..3, z 6..7 (local) -> glTF x 4..5, y 6..7, z -3..-2.
+  expect_box(box_of(placed, named("turned", 1)), {4, 6, -3, 5, 7, -2}, what + " turned");
+  // mirrored: x 10..12, y 3..4, z 6..9.
+  expect_box(box_of(placed, named("mirrored", 3)), {10, 6, -4, 12, 9, -3}, what + " mirrored");
+  // sheared: x 2..3.5, y 8..9, z 6..7.
+  expect_box(box_of(placed, named("sheared", 4)), {2, 6, -9, 3.5, 7, -8}, what + " sheared");
+  // The building's own faces: walls and annex, x 0..24, y 0..10, z 0..6.
+  expect_box(
+      box_of(placed, [](const testing::PlacedPrimitive& p) { return p.mesh == "with instances"; }),
+      {0, 0, -10, 24, 6, 0}, what + " building");
+}
+
+TEST(GltfWriter, InstancesShareOneMeshPlacedByTheirNodes) {
+  const tinygltf::Model model = load_glb(glb_bytes(instanced_scene()));
+  ASSERT_EQ(model.meshes.size(), 2U);  // the cube once, the building's own faces
+  EXPECT_EQ(model.meshes[1].name, "with instances");
+  const tinygltf::Node& building = node_named(model, "with instances");
+  ASSERT_EQ(building.children.size(), 3U);
+  for (int child : building.children) {
+    const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(child)];
+    EXPECT_EQ(node.mesh, 0);
+    EXPECT_EQ(node.matrix.size(), 16U);
+    EXPECT_EQ(node.extras.Get("kind").Get<std::string>(), "Installation");
+  }
+  expect_instances_placed(model, "nodes");
+}
+
+TEST(GltfWriter, GpuInstancingPlacesEveryTrsInstanceFromOneNode) {
+  GltfOptions options;
+  options.instancing = GltfOptions::Instancing::kGpu;
+  const std::string glb = glb_bytes(instanced_scene(), options);
+  const tinygltf::Model model = load_glb(glb);
+  const tinygltf::Node& building = node_named(model, "with instances");
+  // One node places "turned" and "mirrored"; "sheared" keeps a node of its own.
+  ASSERT_EQ(building.children.size(), 2U);
+  const tinygltf::Node& group = model.nodes[static_cast<std::size_t>(building.children[0])];
+  ASSERT_TRUE(group.extensions.contains("EXT_mesh_gpu_instancing"));
+  ASSERT_TRUE(group.extensions.contains("EXT_mesh_features"));
+  EXPECT_EQ(model.nodes[static_cast<std::size_t>(building.children[1])].name, "sheared");
+  const nlohmann::json json = json_of(glb);
+  EXPECT_EQ(json["extensionsRequired"],
+            (nlohmann::json{"EXT_mesh_gpu_instancing", "KHR_mesh_quantization"}));
+  expect_instances_placed(model, "gpu");
 }
 
 // Inside test for the L footprint used below (local x, y).
@@ -167,17 +420,16 @@ TEST(GltfWriter, ConcaveFacesAreTriangulatedInsideTheirOutline) {
   scene.buildings.push_back(std::move(building));
   const tinygltf::Model model = load_glb(glb_bytes(scene));
   double roof_area = 0;
-  for (const tinygltf::Primitive& primitive : model.meshes[0].primitives) {
-    if (model.materials[static_cast<std::size_t>(primitive.material)].name != "RoofSurface")
-      continue;
-    const std::vector<float> p = read_accessor<float>(model, primitive.attributes.at("POSITION"));
-    const std::vector<std::uint32_t> index = read_accessor<std::uint32_t>(model, primitive.indices);
+  for (const testing::PlacedPrimitive& primitive : testing::placed_primitives(model)) {
+    if (primitive.material != "RoofSurface") continue;
+    const std::vector<std::uint32_t>& index = primitive.indices;
     ASSERT_EQ(index.size(), 12U);
     for (std::size_t t = 0; t < index.size(); t += 3) {
       // glTF (X, Z) is local (x, -y); the roof is seen from +Y, so counter-clockwise means the
       // signed area in the (X, -Z) = (x, y) plane is positive.
       const auto at = [&](std::size_t k) {
-        return std::pair<double, double>{p[3 * index[t + k]], -p[3 * index[t + k] + 2]};
+        const auto& p = primitive.positions[index[t + k]];
+        return std::pair<double, double>{p[0], -p[2]};
       };
       const auto [ax, ay] = at(0);
       const auto [bx, by] = at(1);
@@ -188,7 +440,7 @@ TEST(GltfWriter, ConcaveFacesAreTriangulatedInsideTheirOutline) {
       EXPECT_TRUE(inside_l((ax + bx + cx) / 3, (ay + by + cy) / 3));
     }
   }
-  EXPECT_DOUBLE_EQ(roof_area, 18.0);  // 6 x 2 + 2 x 3
+  EXPECT_NEAR(roof_area, 18.0, 1e-9);  // 6 x 2 + 2 x 3
 }
 
 TEST(GltfWriter, GltfTextEmbedsTheBuffer) {

@@ -95,9 +95,11 @@ TEST_F(Validators, GltfValidatorRejectsBrokenFiles) {
   write(dir_ / "truncated.glb", glb.substr(0, glb.size() / 2));
   EXPECT_EQ(node("validate_gltf.mjs", dir_ / "truncated.glb").exit_code, 1);
   std::string text = gltf_text(test_scene());
-  text.replace(text.find("\"UNSIGNED_INT\"") == std::string::npos ? text.find("5125") : 0, 4,
-               "5124");
-  write(dir_ / "bad_component.gltf", text);  // indices of type INT are not allowed
+  // The indices' UNSIGNED_SHORT (the last accessor's type) made INT, which glTF does not allow.
+  const std::size_t at = text.rfind("\"componentType\": 5123");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at + 17, 4, "5124");
+  write(dir_ / "bad_component.gltf", text);
   const Outcome result = node("validate_gltf.mjs", dir_ / "bad_component.gltf");
   EXPECT_EQ(result.exit_code, 1) << result.output;
 }

@@ -70,6 +70,36 @@ void add_view_options(CLI::App& command, io::OutputOptions& output) {
                    "OBJ in world coordinates (local + origin, the input's CRS), Z up unless --up "
                    "y; by default OBJ is local, with the origin in its header and .origin.json");
   command
+      .add_option_function<std::string>(
+          "--gltf-nodes",
+          [&output](const std::string& layout) {
+            output.gltf.nodes = layout == "element" ? io::GltfOptions::Nodes::kElement
+                                                    : io::GltfOptions::Nodes::kBuilding;
+          },
+          "GLB/glTF nodes: building (one node and mesh per building, parts as feature ids with a "
+          "property table; the default) or element (a node per part, to edit parts)")
+      ->check(CLI::IsMember({"building", "element"}))
+      ->type_name("building|element");
+  command
+      .add_option_function<std::string>(
+          "--gltf-instancing",
+          [&output](const std::string& form) {
+            output.gltf.instancing = form == "gpu" ? io::GltfOptions::Instancing::kGpu
+                                                   : io::GltfOptions::Instancing::kNodes;
+          },
+          "GLB/glTF repeated meshes: nodes (a node per instance over one shared mesh; the "
+          "default, read everywhere) or gpu (EXT_mesh_gpu_instancing: three.js, Cesium, game "
+          "engines; Blender 3.6+)")
+      ->check(CLI::IsMember({"nodes", "gpu"}))
+      ->type_name("nodes|gpu");
+  command.add_flag_function(
+      "--gltf-float", [&output](std::int64_t) { output.gltf.quantize = false; },
+      "GLB/glTF positions and normals as floats (by default quantized with "
+      "KHR_mesh_quantization, within 1 mm)");
+  command.add_flag("--compress", output.gltf.compress,
+                   "GLB/glTF buffers compressed with EXT_meshopt_compression (meshoptimizer; "
+                   "three.js, Babylon.js, Cesium and gltfpack read it, Blender does not)");
+  command
       .add_option("--svg-scale", output.svg.pixels_per_meter,
                   "SVG picture scale in pixels per meter (default: fit 1000 pixels)")
       ->check(finite_range(0.01, 1000.0));

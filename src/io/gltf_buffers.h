@@ -1,0 +1,122 @@
+// The binary side of a glTF asset (glTF 2.0 §3.6, "Binary Data Storage"): buffer views that grow as
+// the writer appends data of one layout to each (all quantized positions of the scene in one view,
+// all normals in another, ...), the accessors over them, and the buffer that holds them. Few views
+// keep the JSON small and let EXT_meshopt_compression work on long runs of alike data: with
+// `compress`, every vertex and index view is encoded with meshoptimizer (modes ATTRIBUTES and
+// TRIANGLES) into the GLB's buffer, and the views point at an uncompressed fallback buffer that
+// has no data (the extension is then required). Views start at multiples of 8 bytes (the
+// alignment EXT_structural_metadata asks of its tables, more than glTF's 4).
+#pragma once
+
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "io/json_stream.h"
+
+namespace insula::io::gltf {
+
+enum class Component : std::uint32_t {
+  kByte = 5120,
+  kUnsignedByte = 5121,
+  kShort = 5122,
+  kUnsignedShort = 5123,
+  kUnsignedInt = 5125,
+  kFloat = 5126,
+};
+
+// What a view holds, which decides its target and how --compress encodes it.
+enum class ViewKind {
+  kVertices,   // vertex attributes, `stride` bytes each (ARRAY_BUFFER, meshopt ATTRIBUTES)
+  kIndices,    // triangle lists of `stride`-byte indices (ELEMENT_ARRAY_BUFFER, meshopt TRIANGLES)
+  kInstances,  // per-instance attributes (no target, meshopt ATTRIBUTES)
+  kColumn,     // a property table column: compressed as 4-byte groups (meshopt ATTRIBUTES)
+  kBytes,      // anything else, images: stored as they are
+};
+
+struct Accessor {
+  std::uint32_t view = 0;
+  std::size_t offset = 0;  // bytes into the view
+  Component component = Component::kFloat;
+  std::size_t count = 0;
+  std::string_view type = "SCALAR";  // SCALAR, VEC2, VEC3, VEC4
+  bool normalized = false;
+  // Written for POSITION accessors (required there), in the accessor's own units.
+  std::optional<std::array<double, 3>> min{};
+  std::optional<std::array<double, 3>> max{};
+};
+
+class Buffers {
+ public:
+  // A new, empty view; its index is the one accessors and images name. Views left empty are not
+  // written (indices are renumbered at writing).
+  std::uint32_t add_view(ViewKind kind, std::uint32_t stride);
+  // The bytes of `view` so far, to append to (little-endian values).
+  std::string& data(std::uint32_t view) { return views_[view].bytes; }
+  std::uint32_t add_accessor(const Accessor& accessor);
+  void set_bounds(std::uint32_t accessor,
+                  const std::pair<std::array<double, 3>, std::array<double, 3>>& min_max) {
+    accessors_[accessor].min = min_max.first;
+    accessors_[accessor].max = min_max.second;
+  }
+  bool empty() const;
+
+  // Lays the views out in the buffer; with `compress`, encodes the vertex and index views with
+  // meshoptimizer. Call once, after the last append and before writing.
+  void finish(bool compress);
+  bool compressed() const { return compress_; }
+  // The glTF index of a view (views left empty are skipped).
+  std::uint32_t view_index(std::uint32_t view) const { return views_[view].index; }
+
+  // "accessors" (when any).
+  void write_accessors(JsonStream& json) const;
+  // "bufferViews" and "buffers"; `uri` (when not empty) becomes the first buffer's "uri".
+  void write_views(JsonStream& json, std::string_view uri) const;
+  // The bytes of the first buffer (the GLB's BIN chunk), unpadded, and their count.
+  void append_binary(std::string& out) const;
+  std::size_t binary_size() const { return binary_size_; }
+
+ private:
+  struct View {
+    ViewKind kind;
+    std::uint32_t stride;
+    std::string bytes;
+    std::uint32_t index = 0;         // glTF index once finished
+    std::size_t offset = 0;          // into the buffer the view's bufferView names
+    std::string encoded{};           // meshopt-encoded bytes (compressed views only)
+    std::size_t encoded_offset = 0;  // into the first buffer
+  };
+  bool is_compressed(const View& view) const;
+
+  std::vector<View> views_;
+  std::vector<Accessor> accessors_;
+  bool compress_ = false;
+  std::size_t binary_size_ = 0;    // the first buffer
+  std::size_t fallback_size_ = 0;  // the uncompressed fallback buffer (compressed output only)
+};
+
+// Appends `value`'s bytes little-endian, whatever the host (glTF 2.0 §3.6.2.1).
+template <typename T>
+void append_value(std::string& out, T value) {
+  static_assert(std::is_arithmetic_v<T>);
+  using Bits = std::conditional_t<
+      sizeof(T) == 1, std::uint8_t,
+      std::conditional_t<sizeof(T) == 2, std::uint16_t,
+                         std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>>;
+  const auto bits = std::bit_cast<Bits>(value);
+  char bytes[sizeof(T)];
+  for (std::size_t i = 0; i < sizeof(T); ++i)
+    bytes[i] = static_cast<char>((bits >> (8 * i)) & 0xFFU);
+  out.append(bytes, sizeof(T));
+}
+
+// Pads `out` with zero bytes to a multiple of `alignment`.
+void pad(std::string& out, std::size_t alignment);
+
+}  // namespace insula::io::gltf

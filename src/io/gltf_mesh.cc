@@ -1,0 +1,374 @@
+#include "io/gltf_mesh.h"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <variant>
+
+#include "kernel/transform.h"
+#include "kernel/uv.h"
+
+namespace insula::io::gltf {
+namespace {
+
+// The texture size of a part in meters, or 0 for none (solid_geometry's attribute).
+double uv_scale(const shape::Part& part) {
+  auto it = part.attributes.find("uv_scale");
+  if (it == part.attributes.end()) return 0;
+  const auto* v = std::get_if<double>(&it->second);
+  return v != nullptr && *v > 0 ? *v : 0;
+}
+
+std::array<double, 3> y_up(kernel::Vec3 p) {
+  return {p.x, p.z, -p.y};
+}
+
+// One vertex attribute as written: `stride` bytes a vertex.
+struct Stream {
+  std::string bytes;
+  std::uint32_t stride = 0;
+
+  void remap(const std::vector<unsigned int>& map, std::size_t count) {
+    std::string out(count * stride, '\0');
+    meshopt_remapVertexBuffer(out.data(), bytes.data(), bytes.size() / stride, stride, map.data());
+    bytes = std::move(out);
+  }
+};
+
+std::int8_t normal_byte(float c) {
+  return static_cast<std::int8_t>(std::lround(std::clamp(c, -1.0F, 1.0F) * 127.0F));
+}
+
+// Sorts the triangles of `indices` by the feature of their first corner (stably), then optimises
+// each feature's run for the vertex cache.
+void order_by_feature(std::span<unsigned int> indices, const std::vector<std::uint32_t>& features,
+                      std::size_t vertex_count) {
+  std::vector<std::array<unsigned int, 3>> triangles(indices.size() / 3);
+  std::memcpy(triangles.data(), indices.data(), indices.size() * sizeof(unsigned int));
+  std::stable_sort(triangles.begin(), triangles.end(), [&features](const auto& a, const auto& b) {
+    return features[a[0]] < features[b[0]];
+  });
+  std::memcpy(indices.data(), triangles.data(), indices.size() * sizeof(unsigned int));
+  for (std::size_t begin = 0; begin < triangles.size();) {
+    std::size_t end = begin;
+    while (end < triangles.size() && features[triangles[end][0]] == features[triangles[begin][0]]) {
+      ++end;
+    }
+    unsigned int* run = indices.data() + 3 * begin;
+    meshopt_optimizeVertexCache(run, run, 3 * (end - begin), vertex_count);
+    begin = end;
+  }
+}
+
+}  // namespace
+
+MeshViews MeshViews::create(Buffers& buffers) {
+  MeshViews views{};
+  views.quantized_positions = buffers.add_view(ViewKind::kVertices, 8);
+  views.float_positions = buffers.add_view(ViewKind::kVertices, 12);
+  views.quantized_normals = buffers.add_view(ViewKind::kVertices, 4);
+  views.float_normals = buffers.add_view(ViewKind::kVertices, 12);
+  views.uvs = buffers.add_view(ViewKind::kVertices, 8);
+  views.features = buffers.add_view(ViewKind::kVertices, 4);
+  views.short_indices = buffers.add_view(ViewKind::kIndices, 2);
+  views.int_indices = buffers.add_view(ViewKind::kIndices, 4);
+  return views;
+}
+
+MeshAssembler::MeshAssembler(const MaterialTable& materials, std::vector<bool> material_textured)
+    : materials_(materials), material_textured_(std::move(material_textured)) {}
+
+void MeshAssembler::clear() {
+  vertices_.clear();
+  indices_by_material_.clear();
+  has_uv_ = false;
+}
+
+void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::uint32_t feature,
+                        bool quantize, bool instance_frame) {
+  part_ = &part;
+  instance_frame_ = instance_frame;
+  uv_scale_ = uv_scale(part);
+  feature_ = feature;
+  weld_.run(mesh, quantize ? kQuantizationStep : 0);
+  // Faces grouped by material, in mesh order within each.
+  faces_by_material_.clear();
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+    faces_by_material_.emplace_back(materials_.index(mesh.tag(f)), f);
+  }
+  std::stable_sort(faces_by_material_.begin(), faces_by_material_.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::uint32_t>* indices = nullptr;
+  std::uint32_t current = std::numeric_limits<std::uint32_t>::max();
+  for (const auto& [material, face] : faces_by_material_) {
+    if (material != current) {
+      current = material;
+      auto it = std::find_if(indices_by_material_.begin(), indices_by_material_.end(),
+                             [&](const auto& entry) { return entry.first == material; });
+      if (it == indices_by_material_.end()) {
+        indices_by_material_.emplace_back(material, std::vector<std::uint32_t>{});
+        it = indices_by_material_.end() - 1;
+      }
+      indices = &it->second;
+      fit_uv_ = material_textured_[material];
+    }
+    add_face(mesh, face, *indices);
+  }
+  // A material all of whose faces were degenerate gets no primitive.
+  std::erase_if(indices_by_material_, [](const auto& entry) { return entry.second.empty(); });
+}
+
+// Flat shading: the face's corners become vertices of their own, all carrying the face normal.
+// Where the weld merges vertices (float32_weld.h) the face's triangles and corners come from it.
+void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face,
+                             std::vector<std::uint32_t>& indices) {
+  const kernel::Vec3 newell = kernel::face_normal(mesh, face);
+  triangles_.clear();
+  if (!weld_.active()) {
+    if (!triangulator_.triangulate(mesh, face, newell, triangles_)) return;
+    add_corners(mesh, mesh.face(face), newell, indices);
+    return;
+  }
+  corners_.clear();
+  for (const auto& triangle : weld_.triangles(face)) {
+    CornerTriangle t{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto it = std::find(corners_.begin(), corners_.end(), triangle[k]);
+      t[k] = static_cast<std::uint32_t>(it - corners_.begin());
+      if (it == corners_.end()) corners_.push_back(triangle[k]);
+    }
+    triangles_.push_back(t);
+  }
+  add_corners(mesh, corners_, newell, indices);
+}
+
+void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
+                                kernel::Vec3 newell, std::vector<std::uint32_t>& indices) {
+  const std::array<double, 3> n = y_up(kernel::normalized(newell));
+  const std::array<float, 3> normal{static_cast<float>(n[0]), static_cast<float>(n[1]),
+                                    static_cast<float>(n[2])};
+  corner_uvs_.assign(loop.size(), {0.0F, 0.0F});
+  if (part_->uv) {
+    // The part's map is over world positions; an instance's mesh is placed first. glTF's v runs
+    // down the image, CityEngine's up.
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const kernel::Vec3 p = mesh.position(loop[i]);
+      const kernel::Vec2 t =
+          part_->uv->at(instance_frame_ ? kernel::apply_point(part_->instance_transform, p) : p);
+      corner_uvs_[i] = {static_cast<float>(t.x), static_cast<float>(1 - t.y)};
+    }
+    has_uv_ = true;
+  } else if (fit_uv_) {
+    fit_uvs(mesh, loop, newell);
+    has_uv_ = true;
+  } else if (uv_scale_ > 0) {
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const kernel::Vec2 t = kernel::planar_uv(mesh.position(loop[i]), newell, uv_scale_);
+      corner_uvs_[i] = {static_cast<float>(t.x), static_cast<float>(t.y)};
+    }
+    has_uv_ = true;
+  }
+  const auto base = static_cast<std::uint32_t>(vertices_.size());
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    vertices_.push_back(Vertex{y_up(mesh.position(weld_.representative(loop[i]))), normal,
+                               corner_uvs_[i], feature_});
+  }
+  for (const CornerTriangle& triangle : triangles_) {
+    for (std::uint32_t corner : triangle) indices.push_back(base + corner);
+  }
+}
+
+// A textured face shows its image once: the face's planar coordinates (kernel::planar_uv, u to the
+// right and v up seen from outside) scaled to its extent, v flipped because glTF's (0, 0) is the
+// image's top-left corner. So text reads the right way round on walls, roofs and floors.
+void MeshAssembler::fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
+                            kernel::Vec3 newell) {
+  kernel::Vec2 low{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+  kernel::Vec2 high{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
+  face_uvs_.clear();
+  for (std::uint32_t vertex : loop) {
+    const kernel::Vec2 t = kernel::planar_uv(mesh.position(vertex), newell, 1);
+    low = {std::min(low.x, t.x), std::min(low.y, t.y)};
+    high = {std::max(high.x, t.x), std::max(high.y, t.y)};
+    face_uvs_.push_back(t);
+  }
+  const auto unit = [](double v, double from, double to) {
+    return to > from ? (v - from) / (to - from) : 0.0;
+  };
+  for (std::size_t i = 0; i < face_uvs_.size(); ++i) {
+    corner_uvs_[i] = {static_cast<float>(unit(face_uvs_[i].x, low.x, high.x)),
+                      static_cast<float>(1 - unit(face_uvs_[i].y, low.y, high.y))};
+  }
+}
+
+MeshRecord MeshAssembler::emit(Buffers& buffers, const MeshViews& views, const MeshOptions& options,
+                               bool with_features) {
+  MeshRecord record;
+  std::sort(indices_by_material_.begin(), indices_by_material_.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<unsigned int> indices;
+  std::vector<std::size_t> ends;  // end of each material's run in `indices`
+  for (const auto& [material, list] : indices_by_material_) {
+    indices.insert(indices.end(), list.begin(), list.end());
+    ends.push_back(indices.size());
+  }
+
+  // Positions on the quantization grid when the extent fits 16 bits.
+  std::array<double, 3> low{};
+  std::array<double, 3> high{};
+  low.fill(std::numeric_limits<double>::max());
+  high.fill(std::numeric_limits<double>::lowest());
+  for (const Vertex& v : vertices_) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double q = std::round(v.position[k] / kQuantizationStep);
+      low[k] = std::min(low[k], q);
+      high[k] = std::max(high[k], q);
+    }
+  }
+  record.quantized = options.quantize && !vertices_.empty();
+  for (std::size_t k = 0; k < 3 && record.quantized; ++k) {
+    record.quantized = high[k] - low[k] <= 65535;
+  }
+  if (record.quantized) {
+    record.scale = kQuantizationStep;
+    for (std::size_t k = 0; k < 3; ++k) record.offset[k] = low[k] * kQuantizationStep;
+  }
+
+  // POSITION's bounds (glTF requires them) in the stored units: grid steps or float32 meters.
+  // Every vertex is used by a triangle, so merging and reordering keep them.
+  std::pair<std::array<double, 3>, std::array<double, 3>> bounds;
+  bounds.second = {high[0] - low[0], high[1] - low[1], high[2] - low[2]};
+  if (!record.quantized) {
+    bounds.first.fill(std::numeric_limits<double>::max());
+    bounds.second.fill(std::numeric_limits<double>::lowest());
+    for (const Vertex& v : vertices_) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double c = static_cast<float>(v.position[k]);
+        bounds.first[k] = std::min(bounds.first[k], c);
+        bounds.second[k] = std::max(bounds.second[k], c);
+      }
+    }
+  }
+  Stream positions{{}, record.quantized ? 8U : 12U};
+  Stream normals{{}, options.quantize ? 4U : 12U};
+  Stream uvs{{}, 8};
+  Stream features{{}, 4};
+  for (const Vertex& v : vertices_) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (record.quantized) {
+        append_value(positions.bytes, static_cast<std::uint16_t>(
+                                          std::round(v.position[k] / kQuantizationStep) - low[k]));
+      } else {
+        append_value(positions.bytes, static_cast<float>(v.position[k]));
+      }
+      if (options.quantize) {
+        append_value(normals.bytes, normal_byte(v.normal[k]));
+      } else {
+        append_value(normals.bytes, v.normal[k]);
+      }
+    }
+    if (record.quantized) append_value(positions.bytes, std::uint16_t{0});
+    if (options.quantize) append_value(normals.bytes, std::int8_t{0});
+    if (has_uv_) {
+      append_value(uvs.bytes, v.uv[0]);
+      append_value(uvs.bytes, v.uv[1]);
+    }
+    if (!with_features) continue;
+    if (options.feature_component == Component::kFloat) {
+      append_value(features.bytes, static_cast<float>(v.feature));
+    } else {
+      append_value(features.bytes, static_cast<std::uint16_t>(v.feature));
+      append_value(features.bytes, std::uint16_t{0});
+    }
+  }
+  std::vector<Stream*> streams{&positions, &normals};
+  if (has_uv_) streams.push_back(&uvs);
+  if (with_features) streams.push_back(&features);
+  std::vector<std::uint32_t> vertex_features;
+  for (const Vertex& v : vertices_) vertex_features.push_back(v.feature);
+
+  // Vertices alike in every written attribute become one.
+  std::vector<meshopt_Stream> described;
+  for (const Stream* s : streams) described.push_back({s->bytes.data(), s->stride, s->stride});
+  std::vector<unsigned int> remap(vertices_.size());
+  std::size_t count =
+      meshopt_generateVertexRemapMulti(remap.data(), indices.data(), indices.size(),
+                                       vertices_.size(), described.data(), described.size());
+  const auto apply = [&](std::size_t new_count) {
+    for (Stream* s : streams) s->remap(remap, new_count);
+    std::vector<std::uint32_t> moved(new_count);
+    for (std::size_t v = 0; v < remap.size(); ++v) {
+      if (remap[v] != ~0U) moved[remap[v]] = vertex_features[v];
+    }
+    vertex_features = std::move(moved);
+    meshopt_remapIndexBuffer(indices.data(), indices.data(), indices.size(), remap.data());
+  };
+  apply(count);
+  // Triangles part by part (a part's faces lie together, and the feature ids then come in runs,
+  // which EXT_meshopt_compression stores in almost nothing), each part's in the order that suits
+  // the vertex cache; then vertices in the order of first use, for fetch.
+  std::size_t begin = 0;
+  for (std::size_t end : ends) {
+    order_by_feature(std::span(indices).subspan(begin, end - begin), vertex_features, count);
+    begin = end;
+  }
+  remap.assign(count, 0);
+  count = meshopt_optimizeVertexFetchRemap(remap.data(), indices.data(), indices.size(), count);
+  apply(count);
+
+  // Attributes.
+  const auto add_attribute = [&](const Stream& s, std::uint32_t view, Component component,
+                                 std::string_view type, bool normalized) {
+    std::string& data = buffers.data(view);
+    const std::size_t offset = data.size();
+    data += s.bytes;
+    return buffers.add_accessor(
+        Accessor{view, offset, component, count, type, normalized, std::nullopt, std::nullopt});
+  };
+  record.position = add_attribute(
+      positions, record.quantized ? views.quantized_positions : views.float_positions,
+      record.quantized ? Component::kUnsignedShort : Component::kFloat, "VEC3", false);
+  buffers.set_bounds(record.position, bounds);
+  record.normal = add_attribute(
+      normals, options.quantize ? views.quantized_normals : views.float_normals,
+      options.quantize ? Component::kByte : Component::kFloat, "VEC3", options.quantize);
+  if (has_uv_) record.uv = add_attribute(uvs, views.uvs, Component::kFloat, "VEC2", false);
+  if (with_features) {
+    record.feature =
+        add_attribute(features, views.features, options.feature_component, "SCALAR", false);
+  }
+
+  // One primitive per material over the shared attributes.
+  const bool short_indices = count <= 65535;  // 65535 itself is not a valid index (glTF 3.7.2.1)
+  const std::uint32_t index_view = short_indices ? views.short_indices : views.int_indices;
+  begin = 0;
+  std::vector<std::uint32_t> seen;
+  for (std::size_t m = 0; m < ends.size(); ++m) {
+    std::string& data = buffers.data(index_view);
+    const std::size_t offset = data.size();
+    seen.clear();
+    for (std::size_t i = begin; i < ends[m]; ++i) {
+      if (short_indices) {
+        append_value(data, static_cast<std::uint16_t>(indices[i]));
+      } else {
+        append_value(data, static_cast<std::uint32_t>(indices[i]));
+      }
+      seen.push_back(vertex_features[indices[i]]);
+    }
+    std::sort(seen.begin(), seen.end());
+    const auto distinct = std::unique(seen.begin(), seen.end()) - seen.begin();
+    const std::uint32_t accessor = buffers.add_accessor(Accessor{
+        index_view, offset, short_indices ? Component::kUnsignedShort : Component::kUnsignedInt,
+        ends[m] - begin, "SCALAR", false, std::nullopt, std::nullopt});
+    record.primitives.push_back(
+        {indices_by_material_[m].first, accessor, static_cast<std::uint32_t>(distinct)});
+    begin = ends[m];
+  }
+  clear();
+  return record;
+}
+
+}  // namespace insula::io::gltf

@@ -1,0 +1,66 @@
+// The identity of every part of a glTF scene written by building (EXT_structural_metadata, with
+// EXT_mesh_features ids on the vertices): one property table "parts", a row per part in scene
+// order (building by building), whose row number is the part's feature id. Columns: `name` (the
+// part's name: terminal symbol, room, component, storey), `kind` (BuildingPart, Storey, Room,
+// Installation, Other), then one per attribute name any part carries: numbers every part has
+// become FLOAT64, booleans every part has BOOLEAN, anything else text (numbers printed as in the
+// JSON). The building is the node the part's mesh hangs from, so it is not repeated per row. Text
+// columns are dictionary-coded: an ENUM of their distinct values (UINT8 or UINT16 codes; "(none)"
+// or a longer variant is the noData value where a part lacks the attribute), or STRING when more
+// than 65,535 values differ; a city has few distinct symbol names and colours but hundreds of
+// thousands of parts. Property ids are the attribute names made identifiers
+// ([A-Za-z_][A-Za-z0-9_]*, unique); the class property's `name` keeps the attribute's own name.
+// This is the metadata 3D Tiles reads too.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "io/gltf_buffers.h"
+#include "io/json_stream.h"
+#include "shape/scene.h"
+
+namespace insula::io::gltf {
+
+inline constexpr std::string_view kMetadataExtension = "EXT_structural_metadata";
+inline constexpr std::string_view kFeaturesExtension = "EXT_mesh_features";
+
+// "BuildingPart", "Storey", "Room", "Installation", "Other".
+std::string_view kind_name(shape::PartKind kind);
+
+class PartTable {
+ public:
+  explicit PartTable(const shape::Scene& scene);
+
+  std::size_t rows() const { return rows_; }
+  // Appends the columns to views of their own.
+  void write_data(Buffers& buffers);
+  // The root's "EXT_structural_metadata" member (the key and the object).
+  void write_json(JsonStream& json, const Buffers& buffers) const;
+
+ private:
+  enum class Type { kString, kNumber, kBoolean };
+  struct Column {
+    std::string id;    // the property id
+    std::string name;  // the attribute's own name (empty for name and kind)
+    Type type = Type::kString;
+    bool optional = false;               // some part lacks it (text columns only)
+    std::vector<std::string> strings{};  // kString
+    std::vector<bool> present{};         // kString: the part has it
+    std::vector<double> numbers{};       // kNumber
+    std::vector<bool> booleans{};        // kBoolean
+    // Dictionary coding of a text column (empty: written as STRING).
+    std::vector<std::string> dictionary{};
+    std::string no_data{};  // the enum name of "lacks it"
+    std::uint32_t values_view = 0;
+    std::uint32_t offsets_view = 0;  // STRING
+  };
+  static void make_dictionary(Column& column);
+  void write_class_property(JsonStream& json, const Column& column) const;
+
+  std::size_t rows_ = 0;
+  std::vector<Column> columns_;
+};
+
+}  // namespace insula::io::gltf
