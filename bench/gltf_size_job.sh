@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # The GLB a user opens (issue 21): CGA building.cga on COUNT generated lots (bench/make_footprints.mjs),
 # Insula's GLB (and with --compress when the CLI has it) against gltfpack's output of the same
-# scene (tools/node_modules: `gltfpack` and `gltfpack -cc`), and how long Blender 3.4 headless
-# takes to import each (stopped after BLENDER_TIMEOUT seconds, default 60). Prints one line per
-# figure; the targets: default at most 1.5x gltfpack, --compress at most 1.2x gltfpack -cc,
-# Blender under 10 s.
+# scene (tools/node_modules: `gltfpack` and `gltfpack -cc`, given the scene as plain float
+# geometry with a node per part, `--gltf-nodes element --gltf-float`, so it starts from what
+# Insula wrote before issue 21), and how long Blender 3.4 headless takes to import each (stopped
+# after BLENDER_TIMEOUT seconds, default 60; "not imported" when Blender refuses the file).
+# Prints one line per figure; the targets: default at most 1.5x gltfpack, --compress at most
+# 1.2x gltfpack -cc, Blender under 10 s.
 # Usage: [INSULA=path/to/insula] [BLENDER_TIMEOUT=60] bench/gltf_size_job.sh [COUNT]  (default 1000)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,8 +26,10 @@ if "$insula" build --help 2>/dev/null | grep -q -- --compress; then
   "$insula" build examples/cga/building.cga --lot "$tmp/lots.geojson" -o "$tmp/compressed.glb" \
     --compress -q >/dev/null
 fi
-"$gltfpack" -i "$tmp/insula.glb" -o "$tmp/gltfpack.glb" >/dev/null
-"$gltfpack" -cc -i "$tmp/insula.glb" -o "$tmp/gltfpack_cc.glb" >/dev/null
+"$insula" build examples/cga/building.cga --lot "$tmp/lots.geojson" -o "$tmp/plain.glb" \
+  --gltf-nodes element --gltf-float -q >/dev/null
+"$gltfpack" -i "$tmp/plain.glb" -o "$tmp/gltfpack.glb" >/dev/null
+"$gltfpack" -cc -i "$tmp/plain.glb" -o "$tmp/gltfpack_cc.glb" >/dev/null
 
 bytes() { stat -c %s "$1"; }
 structure() {  # nodes, meshes, accessors of a GLB
@@ -34,15 +38,18 @@ structure() {  # nodes, meshes, accessors of a GLB
            console.log(`${j.nodes.length} nodes, ${j.meshes.length} meshes, ` +
                        `${j.accessors.length} accessors`);' "$1"
 }
-blender_seconds() {  # GLB: import time in seconds, or "over N s"
-  local t0 t1
+blender_seconds() {  # GLB: import time in seconds, "not imported", or "over N s"
+  local t0 t1 status=0
   t0=$(date +%s.%N)
-  if timeout "$timeout_s" blender -b --factory-startup --python tools/blender_import.py -- "$1" \
-    >/dev/null 2>&1; then
-    t1=$(date +%s.%N)
-    awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f s (Blender start and import)\n", b - a }'
-  else
+  timeout "$timeout_s" blender -b --factory-startup --python-exit-code 1 \
+    --python tools/blender_import.py -- "$1" >"$tmp/blender.txt" 2>&1 || status=$?
+  t1=$(date +%s.%N)
+  if [ "$status" = 124 ]; then
     echo "over $timeout_s s"
+  elif ! grep -q '^IMPORTED ' "$tmp/blender.txt"; then
+    echo "not imported ($(grep -m1 -o 'Error: .*' "$tmp/blender.txt" | cut -c1-80))"
+  else
+    awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f s (Blender start and import)\n", b - a }'
   fi
 }
 for f in insula compressed gltfpack gltfpack_cc; do

@@ -36,6 +36,7 @@ import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
 import { MTLLoader } from 'three/addons/loaders/MTLLoader.js';
+import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
 try {
   const renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
   renderer.setPixelRatio(1);
@@ -55,7 +56,8 @@ try {
     loader.setMaterials(materials);
     gltf = { scene: await loader.loadAsync('${origin}/model.obj') };
   } else {
-    gltf = await new GLTFLoader().loadAsync('${origin}/model.glb');
+    // EXT_meshopt_compression (insula --compress) needs the decoder; other files ignore it.
+    gltf = await new GLTFLoader().setMeshoptDecoder(MeshoptDecoder).loadAsync('${origin}/model.glb');
   }
   scene.add(gltf.scene);
   const box = new THREE.Box3().setFromObject(gltf.scene);

@@ -14,6 +14,7 @@
 #include <optional>
 #include <sstream>
 
+#include "io/gltf_reader.h"
 #include "io/obj_reader.h"
 
 namespace insula::io {
@@ -227,7 +228,11 @@ base::Result<ImportedAsset> import_asset(const fs::path& path) {
   if (std::error_code ec; !fs::is_regular_file(path, ec)) {
     return fail(path, "AST001", "cannot read the file");
   }
-  if (lower(path.extension().string()) == ".obj") return import_obj(path);
+  const std::string extension = lower(path.extension().string());
+  if (extension == ".obj") return import_obj(path);
+  // Not Assimp: Assimp 5.2 ignores KHR_mesh_quantization and EXT_meshopt_compression, which
+  // Insula's own glTF output uses.
+  if (extension == ".glb" || extension == ".gltf") return import_gltf(path);
   return import_assimp(path);
 }
 

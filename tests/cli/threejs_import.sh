@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Opens Insula's OBJ and GLB with three.js (OBJLoader + MTLLoader, GLTFLoader) in headless
 # Chromium, as a web viewer would (issue 21): each front-end's example stands upright (three.js is
-# Y up), the OBJ and the GLB give the same bounding box (1 mm) and draw something on screen.
+# Y up), the OBJ and the GLB give the same bounding box (1 mm) and draw something on screen; so
+# does the GLB written with --compress (EXT_meshopt_compression) and --gltf-instancing gpu
+# (EXT_mesh_gpu_instancing: the hotel's furniture).
 source "$(dirname "$0")/lib/common.sh"
 
 opened() {  # model, screenshot: the browser's one-line JSON
@@ -26,10 +28,19 @@ for input in "cga/building.cga --lot $root/examples/cga/building_lot.geojson" bl
     # shellcheck disable=SC2086 # the CGA entry carries its --lot argument
     "$insula" build $root/examples/$input -o "$tmp/$name.obj" -o "$tmp/$name.glb" -q >/dev/null ||
       { fail "$name: build"; continue; }
+    # shellcheck disable=SC2086
+    "$insula" build $root/examples/$input -o "$tmp/$name.packed.glb" --compress \
+      --gltf-instancing gpu -q >/dev/null || { fail "$name: build --compress"; continue; }
+  else
+    "$insula" mass "$root/examples/town.geojson" -o "$tmp/town.packed.glb" --compress --quiet \
+      >/dev/null || fail "town: mass --compress"
   fi
+  validate_gltf "$name --compress --gltf-instancing gpu" "$tmp/$name.packed.glb"
   obj=$(opened "$tmp/$name.obj" "$tmp/$name.obj.png")
   glb=$(opened "$tmp/$name.glb" "$tmp/$name.glb.png")
+  packed=$(opened "$tmp/$name.packed.glb" "$tmp/$name.packed.glb.png")
   node -e "$same" "$obj" "$glb" || fail "$name in three.js: OBJ $obj / GLB $glb"
+  node -e "$same" "$obj" "$packed" || fail "$name in three.js: OBJ $obj / compressed GLB $packed"
 done
 
 finish threejs_import
