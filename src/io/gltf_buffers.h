@@ -11,6 +11,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -114,6 +115,20 @@ void append_value(std::string& out, T value) {
   for (std::size_t i = 0; i < sizeof(T); ++i)
     bytes[i] = static_cast<char>((bits >> (8 * i)) & 0xFFU);
   out.append(bytes, sizeof(T));
+}
+
+// Stores `value`'s bytes little-endian at `at` and moves `at` past them: for filling a buffer
+// sized beforehand, where appending value by value would cost more than the values.
+template <typename T>
+void put_value(char*& at, T value) {
+  if constexpr (std::endian::native == std::endian::little) {
+    std::memcpy(at, &value, sizeof(T));
+  } else {
+    std::string bytes;
+    append_value(bytes, value);
+    std::memcpy(at, bytes.data(), sizeof(T));
+  }
+  at += sizeof(T);
 }
 
 // Pads `out` with zero bytes to a multiple of `alignment`.

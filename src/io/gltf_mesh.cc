@@ -26,18 +26,6 @@ std::array<double, 3> y_up(kernel::Vec3 p) {
   return {p.x, p.z, -p.y};
 }
 
-// One vertex attribute as written: `stride` bytes a vertex.
-struct Stream {
-  std::string bytes;
-  std::uint32_t stride = 0;
-
-  void remap(const std::vector<unsigned int>& map, std::size_t count) {
-    std::string out(count * stride, '\0');
-    meshopt_remapVertexBuffer(out.data(), bytes.data(), bytes.size() / stride, stride, map.data());
-    bytes = std::move(out);
-  }
-};
-
 std::int8_t normal_byte(float c) {
   return static_cast<std::int8_t>(std::lround(std::clamp(c, -1.0F, 1.0F) * 127.0F));
 }
@@ -64,6 +52,13 @@ void order_by_feature(std::span<unsigned int> indices, const std::vector<std::ui
 }
 
 }  // namespace
+
+void Stream::remap(const std::vector<unsigned int>& map, std::size_t count, std::string& scratch) {
+  scratch.resize(count * stride);
+  meshopt_remapVertexBuffer(scratch.data(), bytes.data(), bytes.size() / stride, stride,
+                            map.data());
+  std::swap(bytes, scratch);
+}
 
 MeshViews MeshViews::create(Buffers& buffers) {
   MeshViews views{};
@@ -204,122 +199,185 @@ void MeshAssembler::fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint3
   }
 }
 
+// Concatenates the materials' triangles (materials in table order); ends_ marks each run's end.
+void MeshAssembler::gather_indices() {
+  std::sort(indices_by_material_.begin(), indices_by_material_.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  indices_.clear();
+  ends_.clear();
+  for (const auto& [material, list] : indices_by_material_) {
+    indices_.insert(indices_.end(), list.begin(), list.end());
+    ends_.push_back(indices_.size());
+  }
+}
+
+// Every position on the quantization grid (grid_), and whether the mesh's extent fits 16 bits
+// there; sets the record's offset and scale when it does, and its POSITION bounds either way.
+void MeshAssembler::quantize(bool wanted, MeshRecord& record) {
+  std::array<std::int64_t, 3> low{};
+  std::array<std::int64_t, 3> high{};
+  low.fill(std::numeric_limits<std::int64_t>::max());
+  high.fill(std::numeric_limits<std::int64_t>::lowest());
+  grid_.resize(vertices_.size());
+  for (std::size_t v = 0; v < vertices_.size(); ++v) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      grid_[v][k] = std::llround(vertices_[v].position[k] / kQuantizationStep);
+      low[k] = std::min(low[k], grid_[v][k]);
+      high[k] = std::max(high[k], grid_[v][k]);
+    }
+  }
+  record.quantized = wanted && !vertices_.empty();
+  for (std::size_t k = 0; k < 3 && record.quantized; ++k)
+    record.quantized = high[k] - low[k] <= 65535;
+  if (record.quantized) {
+    record.scale = kQuantizationStep;
+    for (std::size_t k = 0; k < 3; ++k) {
+      record.offset[k] = static_cast<double>(low[k]) * kQuantizationStep;
+      for (auto& q : grid_) q[k] -= low[k];
+      record.min[k] = 0;
+      record.max[k] = static_cast<double>(high[k] - low[k]);
+    }
+    return;
+  }
+  // Float32 bounds. Every vertex is used by a triangle, so merging and reordering keep them.
+  record.min.fill(std::numeric_limits<double>::max());
+  record.max.fill(std::numeric_limits<double>::lowest());
+  for (const Vertex& v : vertices_) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double c = static_cast<float>(v.position[k]);
+      record.min[k] = std::min(record.min[k], c);
+      record.max[k] = std::max(record.max[k], c);
+    }
+  }
+}
+
+// The vertex attributes as they will be written, one stream each.
+void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, bool with_features) {
+  const std::size_t n = vertices_.size();
+  positions_.stride = record.quantized ? 8U : 12U;  // quantized: x, y, z, padding
+  normals_.stride = options.quantize ? 4U : 12U;
+  uvs_.stride = 8;
+  features_.stride = 4;
+  // Sized first, then filled through pointers (padding bytes stay zero).
+  positions_.bytes.assign(n * positions_.stride, '\0');
+  normals_.bytes.assign(n * normals_.stride, '\0');
+  uvs_.bytes.assign(has_uv_ ? n * uvs_.stride : 0, '\0');
+  features_.bytes.assign(with_features ? n * features_.stride : 0, '\0');
+  const bool float_features = options.feature_component == Component::kFloat;
+  for (std::size_t v = 0; v < n; ++v) {
+    const Vertex& vertex = vertices_[v];
+    char* position = positions_.bytes.data() + v * positions_.stride;
+    char* normal = normals_.bytes.data() + v * normals_.stride;
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (record.quantized) {
+        put_value(position, static_cast<std::uint16_t>(grid_[v][k]));
+      } else {
+        put_value(position, static_cast<float>(vertex.position[k]));
+      }
+      if (options.quantize) {
+        put_value(normal, normal_byte(vertex.normal[k]));
+      } else {
+        put_value(normal, vertex.normal[k]);
+      }
+    }
+    if (has_uv_) {
+      char* uv = uvs_.bytes.data() + v * uvs_.stride;
+      put_value(uv, vertex.uv[0]);
+      put_value(uv, vertex.uv[1]);
+    }
+    if (!with_features) continue;
+    char* feature = features_.bytes.data() + v * features_.stride;
+    if (float_features) {
+      put_value(feature, static_cast<float>(vertex.feature));
+    } else {
+      put_value(feature, static_cast<std::uint16_t>(vertex.feature));
+    }
+  }
+  vertex_features_.resize(n);
+  for (std::size_t v = 0; v < n; ++v) vertex_features_[v] = vertices_[v].feature;
+}
+
+// Applies remap_ (old vertex -> new, ~0 for dropped) to the streams, features and indices.
+void MeshAssembler::apply_remap(std::span<Stream* const> streams, std::size_t count) {
+  for (Stream* s : streams) s->remap(remap_, count, scratch_);
+  moved_features_.resize(count);
+  for (std::size_t v = 0; v < remap_.size(); ++v) {
+    if (remap_[v] != ~0U) moved_features_[remap_[v]] = vertex_features_[v];
+  }
+  std::swap(vertex_features_, moved_features_);
+  meshopt_remapIndexBuffer(indices_.data(), indices_.data(), indices_.size(), remap_.data());
+}
+
+// Vertices alike in every written attribute become one; triangles part by part (a part's faces
+// lie together, and the feature ids then come in runs, which EXT_meshopt_compression stores in
+// almost nothing), each part's in the order that suits the vertex cache; then vertices in the
+// order of first use, for fetch. Returns the vertex count.
+std::size_t MeshAssembler::merge_and_order(std::span<Stream* const> streams) {
+  std::array<meshopt_Stream, 4> described{};
+  for (std::size_t i = 0; i < streams.size(); ++i) {
+    described[i] = {streams[i]->bytes.data(), streams[i]->stride, streams[i]->stride};
+  }
+  remap_.resize(vertices_.size());
+  std::size_t count =
+      meshopt_generateVertexRemapMulti(remap_.data(), indices_.data(), indices_.size(),
+                                       vertices_.size(), described.data(), streams.size());
+  apply_remap(streams, count);
+  std::size_t begin = 0;
+  for (std::size_t end : ends_) {
+    order_by_feature(std::span(indices_).subspan(begin, end - begin), vertex_features_, count);
+    begin = end;
+  }
+  remap_.assign(count, 0);
+  count = meshopt_optimizeVertexFetchRemap(remap_.data(), indices_.data(), indices_.size(), count);
+  apply_remap(streams, count);
+  return count;
+}
+
+// One primitive per material over the shared attributes, indices 16-bit when they fit.
+void MeshAssembler::write_primitives(Buffers& buffers, const MeshViews& views, std::size_t count,
+                                     MeshRecord& record) {
+  const bool short_indices = count <= 65535;  // 65535 itself is not a valid index (glTF 3.7.2.1)
+  const std::uint32_t view = short_indices ? views.short_indices : views.int_indices;
+  std::string& data = buffers.data(view);
+  const std::size_t first = data.size();
+  data.resize(first + indices_.size() * (short_indices ? 2 : 4));
+  char* at = data.data() + first;
+  std::size_t begin = 0;
+  for (std::size_t m = 0; m < ends_.size(); ++m) {
+    const std::size_t offset = static_cast<std::size_t>(at - data.data());
+    seen_.clear();
+    for (std::size_t i = begin; i < ends_[m]; ++i) {
+      if (short_indices) {
+        put_value(at, static_cast<std::uint16_t>(indices_[i]));
+      } else {
+        put_value(at, static_cast<std::uint32_t>(indices_[i]));
+      }
+      seen_.push_back(vertex_features_[indices_[i]]);
+    }
+    std::sort(seen_.begin(), seen_.end());
+    const auto distinct = std::unique(seen_.begin(), seen_.end()) - seen_.begin();
+    const std::uint32_t accessor = buffers.add_accessor(
+        Accessor{view, offset, short_indices ? Component::kUnsignedShort : Component::kUnsignedInt,
+                 ends_[m] - begin, "SCALAR", false, std::nullopt, std::nullopt});
+    record.primitives.push_back(
+        {indices_by_material_[m].first, accessor, static_cast<std::uint32_t>(distinct)});
+    begin = ends_[m];
+  }
+}
+
 MeshRecord MeshAssembler::emit(Buffers& buffers, const MeshViews& views, const MeshOptions& options,
                                bool with_features) {
   MeshRecord record;
-  std::sort(indices_by_material_.begin(), indices_by_material_.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<unsigned int> indices;
-  std::vector<std::size_t> ends;  // end of each material's run in `indices`
-  for (const auto& [material, list] : indices_by_material_) {
-    indices.insert(indices.end(), list.begin(), list.end());
-    ends.push_back(indices.size());
-  }
+  gather_indices();
+  quantize(options.quantize, record);
+  pack(record, options, with_features);
+  std::array<Stream*, 4> all{&positions_, &normals_, &uvs_, &features_};
+  std::size_t used = 2;
+  if (has_uv_) all[used++] = &uvs_;
+  if (with_features) all[used++] = &features_;
+  const std::span<Stream* const> streams(all.data(), used);
+  const std::size_t count = merge_and_order(streams);
 
-  // Positions on the quantization grid when the extent fits 16 bits.
-  std::array<double, 3> low{};
-  std::array<double, 3> high{};
-  low.fill(std::numeric_limits<double>::max());
-  high.fill(std::numeric_limits<double>::lowest());
-  for (const Vertex& v : vertices_) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      const double q = std::round(v.position[k] / kQuantizationStep);
-      low[k] = std::min(low[k], q);
-      high[k] = std::max(high[k], q);
-    }
-  }
-  record.quantized = options.quantize && !vertices_.empty();
-  for (std::size_t k = 0; k < 3 && record.quantized; ++k) {
-    record.quantized = high[k] - low[k] <= 65535;
-  }
-  if (record.quantized) {
-    record.scale = kQuantizationStep;
-    for (std::size_t k = 0; k < 3; ++k) record.offset[k] = low[k] * kQuantizationStep;
-  }
-
-  // POSITION's bounds (glTF requires them) in the stored units: grid steps or float32 meters.
-  // Every vertex is used by a triangle, so merging and reordering keep them.
-  std::pair<std::array<double, 3>, std::array<double, 3>> bounds;
-  bounds.second = {high[0] - low[0], high[1] - low[1], high[2] - low[2]};
-  if (!record.quantized) {
-    bounds.first.fill(std::numeric_limits<double>::max());
-    bounds.second.fill(std::numeric_limits<double>::lowest());
-    for (const Vertex& v : vertices_) {
-      for (std::size_t k = 0; k < 3; ++k) {
-        const double c = static_cast<float>(v.position[k]);
-        bounds.first[k] = std::min(bounds.first[k], c);
-        bounds.second[k] = std::max(bounds.second[k], c);
-      }
-    }
-  }
-  Stream positions{{}, record.quantized ? 8U : 12U};
-  Stream normals{{}, options.quantize ? 4U : 12U};
-  Stream uvs{{}, 8};
-  Stream features{{}, 4};
-  for (const Vertex& v : vertices_) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      if (record.quantized) {
-        append_value(positions.bytes, static_cast<std::uint16_t>(
-                                          std::round(v.position[k] / kQuantizationStep) - low[k]));
-      } else {
-        append_value(positions.bytes, static_cast<float>(v.position[k]));
-      }
-      if (options.quantize) {
-        append_value(normals.bytes, normal_byte(v.normal[k]));
-      } else {
-        append_value(normals.bytes, v.normal[k]);
-      }
-    }
-    if (record.quantized) append_value(positions.bytes, std::uint16_t{0});
-    if (options.quantize) append_value(normals.bytes, std::int8_t{0});
-    if (has_uv_) {
-      append_value(uvs.bytes, v.uv[0]);
-      append_value(uvs.bytes, v.uv[1]);
-    }
-    if (!with_features) continue;
-    if (options.feature_component == Component::kFloat) {
-      append_value(features.bytes, static_cast<float>(v.feature));
-    } else {
-      append_value(features.bytes, static_cast<std::uint16_t>(v.feature));
-      append_value(features.bytes, std::uint16_t{0});
-    }
-  }
-  std::vector<Stream*> streams{&positions, &normals};
-  if (has_uv_) streams.push_back(&uvs);
-  if (with_features) streams.push_back(&features);
-  std::vector<std::uint32_t> vertex_features;
-  for (const Vertex& v : vertices_) vertex_features.push_back(v.feature);
-
-  // Vertices alike in every written attribute become one.
-  std::vector<meshopt_Stream> described;
-  for (const Stream* s : streams) described.push_back({s->bytes.data(), s->stride, s->stride});
-  std::vector<unsigned int> remap(vertices_.size());
-  std::size_t count =
-      meshopt_generateVertexRemapMulti(remap.data(), indices.data(), indices.size(),
-                                       vertices_.size(), described.data(), described.size());
-  const auto apply = [&](std::size_t new_count) {
-    for (Stream* s : streams) s->remap(remap, new_count);
-    std::vector<std::uint32_t> moved(new_count);
-    for (std::size_t v = 0; v < remap.size(); ++v) {
-      if (remap[v] != ~0U) moved[remap[v]] = vertex_features[v];
-    }
-    vertex_features = std::move(moved);
-    meshopt_remapIndexBuffer(indices.data(), indices.data(), indices.size(), remap.data());
-  };
-  apply(count);
-  // Triangles part by part (a part's faces lie together, and the feature ids then come in runs,
-  // which EXT_meshopt_compression stores in almost nothing), each part's in the order that suits
-  // the vertex cache; then vertices in the order of first use, for fetch.
-  std::size_t begin = 0;
-  for (std::size_t end : ends) {
-    order_by_feature(std::span(indices).subspan(begin, end - begin), vertex_features, count);
-    begin = end;
-  }
-  remap.assign(count, 0);
-  count = meshopt_optimizeVertexFetchRemap(remap.data(), indices.data(), indices.size(), count);
-  apply(count);
-
-  // Attributes.
   const auto add_attribute = [&](const Stream& s, std::uint32_t view, Component component,
                                  std::string_view type, bool normalized) {
     std::string& data = buffers.data(view);
@@ -329,44 +387,18 @@ MeshRecord MeshAssembler::emit(Buffers& buffers, const MeshViews& views, const M
         Accessor{view, offset, component, count, type, normalized, std::nullopt, std::nullopt});
   };
   record.position = add_attribute(
-      positions, record.quantized ? views.quantized_positions : views.float_positions,
+      positions_, record.quantized ? views.quantized_positions : views.float_positions,
       record.quantized ? Component::kUnsignedShort : Component::kFloat, "VEC3", false);
-  buffers.set_bounds(record.position, bounds);
+  buffers.set_bounds(record.position, {record.min, record.max});
   record.normal = add_attribute(
-      normals, options.quantize ? views.quantized_normals : views.float_normals,
+      normals_, options.quantize ? views.quantized_normals : views.float_normals,
       options.quantize ? Component::kByte : Component::kFloat, "VEC3", options.quantize);
-  if (has_uv_) record.uv = add_attribute(uvs, views.uvs, Component::kFloat, "VEC2", false);
+  if (has_uv_) record.uv = add_attribute(uvs_, views.uvs, Component::kFloat, "VEC2", false);
   if (with_features) {
     record.feature =
-        add_attribute(features, views.features, options.feature_component, "SCALAR", false);
+        add_attribute(features_, views.features, options.feature_component, "SCALAR", false);
   }
-
-  // One primitive per material over the shared attributes.
-  const bool short_indices = count <= 65535;  // 65535 itself is not a valid index (glTF 3.7.2.1)
-  const std::uint32_t index_view = short_indices ? views.short_indices : views.int_indices;
-  begin = 0;
-  std::vector<std::uint32_t> seen;
-  for (std::size_t m = 0; m < ends.size(); ++m) {
-    std::string& data = buffers.data(index_view);
-    const std::size_t offset = data.size();
-    seen.clear();
-    for (std::size_t i = begin; i < ends[m]; ++i) {
-      if (short_indices) {
-        append_value(data, static_cast<std::uint16_t>(indices[i]));
-      } else {
-        append_value(data, static_cast<std::uint32_t>(indices[i]));
-      }
-      seen.push_back(vertex_features[indices[i]]);
-    }
-    std::sort(seen.begin(), seen.end());
-    const auto distinct = std::unique(seen.begin(), seen.end()) - seen.begin();
-    const std::uint32_t accessor = buffers.add_accessor(Accessor{
-        index_view, offset, short_indices ? Component::kUnsignedShort : Component::kUnsignedInt,
-        ends[m] - begin, "SCALAR", false, std::nullopt, std::nullopt});
-    record.primitives.push_back(
-        {indices_by_material_[m].first, accessor, static_cast<std::uint32_t>(distinct)});
-    begin = ends[m];
-  }
+  write_primitives(buffers, views, count, record);
   clear();
   return record;
 }

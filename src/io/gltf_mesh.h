@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "io/float32_weld.h"
@@ -54,6 +55,15 @@ struct PrimitiveRecord {
   std::uint32_t feature_count = 0;
 };
 
+// One vertex attribute as written: `stride` bytes a vertex.
+struct Stream {
+  std::string bytes;
+  std::uint32_t stride = 0;
+
+  // Moves vertex v to map[v] (meshoptimizer's remap; ~0 drops it), keeping `count` vertices.
+  void remap(const std::vector<unsigned int>& map, std::size_t count, std::string& scratch);
+};
+
 struct MeshRecord {
   std::uint32_t position = 0;
   std::uint32_t normal = 0;
@@ -64,6 +74,9 @@ struct MeshRecord {
   bool quantized = false;
   std::array<double, 3> offset{0, 0, 0};
   double scale = 1;
+  // POSITION's bounds (glTF requires them) in the stored units: grid steps or float32 meters.
+  std::array<double, 3> min{0, 0, 0};
+  std::array<double, 3> max{0, 0, 0};
 };
 
 class MeshAssembler {
@@ -99,6 +112,15 @@ class MeshAssembler {
                    kernel::Vec3 newell, std::vector<std::uint32_t>& indices);
   void fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop, kernel::Vec3 newell);
 
+  // The steps of emit().
+  void gather_indices();
+  void quantize(bool wanted, MeshRecord& record);
+  void pack(const MeshRecord& record, const MeshOptions& options, bool with_features);
+  std::size_t merge_and_order(std::span<Stream* const> streams);
+  void apply_remap(std::span<Stream* const> streams, std::size_t count);
+  void write_primitives(Buffers& buffers, const MeshViews& views, std::size_t count,
+                        MeshRecord& record);
+
   const MaterialTable& materials_;
   std::vector<bool> material_textured_;
   std::vector<Vertex> vertices_;
@@ -121,6 +143,19 @@ class MeshAssembler {
   std::vector<std::uint32_t> corners_;
   std::vector<kernel::Vec2> face_uvs_;
   std::vector<std::array<float, 2>> corner_uvs_;
+  // Scratch of emit(), kept from mesh to mesh.
+  std::vector<unsigned int> indices_;
+  std::vector<std::size_t> ends_;  // end of each material's run in indices_
+  std::vector<std::array<std::int64_t, 3>> grid_;
+  Stream positions_;
+  Stream normals_;
+  Stream uvs_;
+  Stream features_;
+  std::string scratch_;
+  std::vector<unsigned int> remap_;
+  std::vector<std::uint32_t> vertex_features_;
+  std::vector<std::uint32_t> moved_features_;
+  std::vector<std::uint32_t> seen_;
 };
 
 }  // namespace insula::io::gltf

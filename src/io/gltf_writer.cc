@@ -116,6 +116,7 @@ class Builder {
   std::size_t binary_size() const { return buffers_.binary_size(); }
 
  private:
+  void reserve_views();
   void add_images();
   BuildingNode by_building(const shape::Building& building, std::size_t index,
                            std::size_t first_row);
@@ -176,6 +177,7 @@ Builder::Builder(const shape::Scene& scene, const GltfOptions& options)
       options_(options),
       materials_(scene),
       views_(gltf::MeshViews::create(buffers_)) {
+  reserve_views();
   add_images();
   std::vector<bool> textured;
   for (std::int32_t texture : material_texture_) textured.push_back(texture >= 0);
@@ -206,6 +208,29 @@ Builder::Builder(const shape::Scene& scene, const GltfOptions& options)
   }
   if (table_) table_->write_data(buffers_);
   buffers_.finish(options_.compress);
+}
+
+// Room for every corner and triangle (an upper bound: merging only removes), so the views do
+// not move as they grow.
+void Builder::reserve_views() {
+  std::size_t corners = 0;
+  std::size_t triangles = 0;
+  for (const shape::Building& building : scene_.buildings) {
+    for (const shape::Part& part : building.parts) {
+      const kernel::Mesh& mesh = part.instance_of ? *part.instance_of : part.mesh;
+      for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+        const std::size_t n = mesh.face(f).size();
+        corners += n;
+        triangles += n >= 3 ? n - 2 : 0;
+      }
+    }
+  }
+  buffers_.data(views_.quantized_positions).reserve(8 * corners);
+  buffers_.data(views_.quantized_normals).reserve(4 * corners);
+  if (options_.nodes == GltfOptions::Nodes::kBuilding) {
+    buffers_.data(views_.features).reserve(4 * corners);
+  }
+  buffers_.data(views_.short_indices).reserve(6 * triangles);
 }
 
 void Builder::add_images() {
