@@ -33,6 +33,7 @@ cam.location = centre + Vector((-1.2, -1.6, 1.0)) * size
 d = centre - cam.location
 cam.rotation_euler = d.to_track_quat('-Z', 'Y').to_euler()
 cam.data.lens = 35
+cam.data.clip_end = 10 * size + 100  # the default 100 m would cut a district away
 bpy.context.scene.camera = cam
 sun = bpy.data.objects.new("sun", bpy.data.lights.new("sun", "SUN"))
 sun.data.energy = 4; sun.rotation_euler = (math.radians(50), 0, math.radians(-40))

@@ -100,14 +100,22 @@ PartTable::PartTable(const shape::Scene& scene) {
   }
 }
 
-// The column's distinct values, sorted, when they fit 16-bit codes and none is empty (an enum
-// value needs a name); `no_data` a name none of them has.
+// The column's distinct values, sorted, when they fit 16-bit codes, none is empty (an enum value
+// needs a name) and coding them makes the column smaller; `no_data` a name none of them has.
 void PartTable::make_dictionary(Column& column) {
   std::set<std::string_view> distinct;
   for (std::size_t i = 0; i < column.strings.size(); ++i) {
     if (column.present[i]) distinct.insert(column.strings[i]);
   }
   if (distinct.contains("") || distinct.size() + (column.optional ? 1 : 0) > 65536) return;
+  // Only where it pays: each enum value costs its name and about 30 bytes of JSON, each row a
+  // code of 1 or 2 bytes; a STRING column costs each row's text and a 4-byte offset.
+  std::size_t as_enum = 0;
+  std::size_t as_string = 4;
+  for (std::string_view value : distinct) as_enum += value.size() + 30;
+  as_enum += column.strings.size() * (distinct.size() < 256 ? 1 : 2);
+  for (const std::string& value : column.strings) as_string += value.size() + 4;
+  if (as_enum >= as_string) return;
   column.dictionary.assign(distinct.begin(), distinct.end());
   std::string dashes;
   column.no_data = "(none)";

@@ -5,10 +5,10 @@
 // Installation, Other), then one per attribute name any part carries: numbers every part has
 // become FLOAT64, booleans every part has BOOLEAN, anything else text (numbers printed as in the
 // JSON). The building is the node the part's mesh hangs from, so it is not repeated per row. Text
-// columns are dictionary-coded: an ENUM of their distinct values (UINT8 or UINT16 codes; "(none)"
-// or a longer variant is the noData value where a part lacks the attribute), or STRING when more
-// than 65,535 values differ; a city has few distinct symbol names and colours but hundreds of
-// thousands of parts. Property ids are the attribute names made identifiers
+// columns are dictionary-coded where that is smaller: an ENUM of their distinct values (UINT8 or
+// UINT16 codes; "(none)" or a longer variant is the noData value where a part lacks the
+// attribute); a city has few distinct symbol names and colours but hundreds of thousands of
+// parts. Columns of mostly distinct values (OpenStreetMap ids) stay STRING. Property ids are the attribute names made identifiers
 // ([A-Za-z_][A-Za-z0-9_]*, unique); the class property's `name` keeps the attribute's own name.
 // This is the metadata 3D Tiles reads too.
 #pragma once

@@ -144,6 +144,44 @@ TEST(GltfWriter, AttributesAndOriginGoToExtras) {
 
 // EXT_structural_metadata: the parts in scene order, their name and kind dictionary-coded and
 // their attributes as columns; every vertex's _FEATURE_ID_0 is its part's row.
+// The texts of a STRING or ENUM column of the parts' table, row by row.
+std::vector<std::string> table_column(const tinygltf::Model& model, const nlohmann::json& json,
+                                      const std::string& id) {
+  const nlohmann::json& metadata = json["extensions"]["EXT_structural_metadata"];
+  const nlohmann::json& table = metadata["propertyTables"][0];
+  const std::size_t rows = table["count"];
+  const auto bytes = [&](const char* key) {
+    const tinygltf::BufferView& v =
+        model.bufferViews[table["properties"][id][key].get<std::size_t>()];
+    return model.buffers[0].data.data() + v.byteOffset;
+  };
+  std::vector<std::string> texts;
+  const nlohmann::json& property = metadata["schema"]["classes"]["part"]["properties"][id];
+  if (property["type"] == "STRING") {
+    const unsigned char* values = bytes("values");
+    const unsigned char* offsets = bytes("stringOffsets");
+    for (std::size_t row = 0; row < rows; ++row) {
+      std::uint32_t from = 0;
+      std::uint32_t to = 0;
+      std::memcpy(&from, offsets + 4 * row, 4);
+      std::memcpy(&to, offsets + 4 * row + 4, 4);
+      texts.emplace_back(reinterpret_cast<const char*>(values) + from, to - from);
+    }
+    return texts;
+  }
+  const nlohmann::json& enumeration = metadata["schema"]["enums"][id];
+  const bool wide = enumeration["valueType"] == "UINT16";
+  const unsigned char* codes = bytes("values");
+  for (std::size_t row = 0; row < rows; ++row) {
+    std::uint16_t code = codes[row];
+    if (wide) std::memcpy(&code, codes + 2 * row, 2);
+    for (const nlohmann::json& value : enumeration["values"]) {
+      if (value["value"] == code) texts.push_back(value["name"]);
+    }
+  }
+  return texts;
+}
+
 TEST(GltfWriter, PartsAreFeaturesWithAPropertyTable) {
   const std::string glb = glb_bytes(test_scene());
   const tinygltf::Model model = load_glb(glb);
@@ -152,29 +190,17 @@ TEST(GltfWriter, PartsAreFeaturesWithAPropertyTable) {
   const nlohmann::json& table = metadata["propertyTables"][0];
   EXPECT_EQ(table["class"], "part");
   ASSERT_EQ(table["count"], 3);
+  // Three rows: strings cost less than enums here.
   const nlohmann::json& properties = metadata["schema"]["classes"]["part"]["properties"];
-  EXPECT_EQ(properties["name"]["type"], "ENUM");
-  EXPECT_EQ(properties["kind"]["type"], "ENUM");
-  // Only "main" has levels: a text column, dictionary-coded, with a noData code for the others.
-  EXPECT_EQ(properties["levels"]["type"], "ENUM");
-  EXPECT_EQ(properties["levels"]["noData"], "(none)");
-  // The enum code of each row, and the names they stand for.
-  const auto column = [&](const std::string& id) {
-    std::vector<std::string> names;
-    const nlohmann::json& values = metadata["schema"]["enums"][id]["values"];
-    const int view = table["properties"][id]["values"];
-    const tinygltf::BufferView& v = model.bufferViews[static_cast<std::size_t>(view)];
-    for (std::size_t row = 0; row < 3; ++row) {
-      const unsigned char code = model.buffers[0].data[v.byteOffset + row];
-      for (const nlohmann::json& value : values) {
-        if (value["value"] == code) names.push_back(value["name"]);
-      }
-    }
-    return names;
-  };
-  EXPECT_EQ(column("name"), (std::vector<std::string>{"main", "wing", "storey 0"}));
-  EXPECT_EQ(column("kind"), (std::vector<std::string>{"BuildingPart", "BuildingPart", "Storey"}));
-  EXPECT_EQ(column("levels"), (std::vector<std::string>{"1", "(none)", "(none)"}));
+  EXPECT_EQ(properties["name"]["type"], "STRING");
+  // Only "main" has levels: a text column with "" for the others.
+  EXPECT_EQ(properties["levels"]["type"], "STRING");
+  EXPECT_EQ(properties["levels"]["noData"], "");
+  EXPECT_EQ(table_column(model, json, "name"),
+            (std::vector<std::string>{"main", "wing", "storey 0"}));
+  EXPECT_EQ(table_column(model, json, "kind"),
+            (std::vector<std::string>{"BuildingPart", "BuildingPart", "Storey"}));
+  EXPECT_EQ(table_column(model, json, "levels"), (std::vector<std::string>{"1", "", ""}));
   std::vector<std::string> extensions = model.extensionsUsed;
   EXPECT_EQ(extensions, (std::vector<std::string>{"EXT_mesh_features", "EXT_structural_metadata",
                                                   "KHR_mesh_quantization"}));
@@ -200,6 +226,46 @@ TEST(GltfWriter, PartsAreFeaturesWithAPropertyTable) {
       EXPECT_EQ(ids["featureCount"], 1);  // one part shows each material here
     }
   }
+}
+
+// Many parts with few distinct texts (a façade's symbols and colours): enum-coded, the rows'
+// codes one byte each; a column present in some parts only gets the noData code elsewhere;
+// numbers every part has stay FLOAT64.
+TEST(GltfWriter, RepeatedTextsAreDictionaryCoded) {
+  shape::Scene scene;
+  shape::Building b;
+  b.id = "facade";
+  for (int i = 0; i < 200; ++i) {
+    const double x = 2.0 * i;
+    shape::AttributeMap attributes{{"height", 3.0 + i}};
+    if (i % 3 == 0) attributes["colour"] = std::string(i % 2 == 0 ? "#ffffff" : "#336699");
+    b.parts.push_back({i % 2 == 0 ? "Wall" : "Window", shape::PartKind::kBuildingPart, attributes,
+                       testing::prism({{x, 0}, {x + 1, 0}, {x + 1, 1}, {x, 1}}, 0, 1)});
+  }
+  scene.buildings.push_back(std::move(b));
+  const std::string glb = glb_bytes(scene);
+  const tinygltf::Model model = load_glb(glb);
+  const nlohmann::json json = json_of(glb);
+  const nlohmann::json& metadata = json["extensions"]["EXT_structural_metadata"];
+  const nlohmann::json& properties = metadata["schema"]["classes"]["part"]["properties"];
+  EXPECT_EQ(properties["name"]["type"], "ENUM");
+  EXPECT_EQ(metadata["schema"]["enums"]["name"]["valueType"], "UINT8");
+  EXPECT_EQ(properties["colour"]["type"], "ENUM");
+  EXPECT_EQ(properties["colour"]["noData"], "(none)");
+  EXPECT_EQ(properties["height"]["type"], "SCALAR");
+  EXPECT_EQ(properties["height"]["componentType"], "FLOAT64");
+  const std::vector<std::string> names = table_column(model, json, "name");
+  const std::vector<std::string> colours = table_column(model, json, "colour");
+  ASSERT_EQ(names.size(), 200U);
+  ASSERT_EQ(colours.size(), 200U);
+  for (std::size_t i = 0; i < 200; ++i) {
+    EXPECT_EQ(names[i], i % 2 == 0 ? "Wall" : "Window");
+    EXPECT_EQ(colours[i], i % 3 != 0 ? "(none)" : i % 2 == 0 ? "#ffffff" : "#336699");
+  }
+  const tinygltf::BufferView& codes =
+      model.bufferViews[metadata["propertyTables"][0]["properties"]["name"]["values"]
+                            .get<std::size_t>()];
+  EXPECT_EQ(codes.byteLength, 200U);
 }
 
 TEST(GltfWriter, PositionsAreLocalYUpAndQuantizedWithinAMillimetre) {
