@@ -102,7 +102,7 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
     if (material != current) {
       current = material;
       auto it = std::find_if(indices_by_material_.begin(), indices_by_material_.end(),
-                             [&](const auto& entry) { return entry.first == material; });
+                             [&current](const auto& entry) { return entry.first == current; });
       if (it == indices_by_material_.end()) {
         indices_by_material_.emplace_back(material, std::vector<std::uint32_t>{});
         it = indices_by_material_.end() - 1;
