@@ -8,7 +8,8 @@
 // columns are dictionary-coded where that is smaller: an ENUM of their distinct values (UINT8 or
 // UINT16 codes; "(none)" or a longer variant is the noData value where a part lacks the
 // attribute); a city has few distinct symbol names and colours but hundreds of thousands of
-// parts. Columns of mostly distinct values (OpenStreetMap ids) stay STRING. Property ids are the attribute names made identifiers
+// parts. Columns of mostly distinct values (OpenStreetMap ids) stay STRING. Property ids are the
+// attribute names made identifiers
 // ([A-Za-z_][A-Za-z0-9_]*, unique); the class property's `name` keeps the attribute's own name.
 // This is the metadata 3D Tiles reads too.
 #pragma once
