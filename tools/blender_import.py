@@ -1,6 +1,7 @@
 # Imports a model into an empty Blender scene and prints what a user would see, as JSON on one line
 # starting with "IMPORTED ": the mesh objects' names, the scene's bounding box in Blender's
-# coordinates (Z up), and the number of materials. The check that an output opens upright and
+# coordinates (Z up), the number of materials, and each object's custom properties (glTF extras
+# arrive there; only values that are numbers or text). The check that an output opens upright and
 # whole in the modelling tool users open it in (issue 21).
 #   blender -b --factory-startup --python tools/blender_import.py -- MODEL.obj|MODEL.glb
 import json
@@ -38,6 +39,8 @@ def main():
         "min": lo,
         "max": hi,
         "materials": len(bpy.data.materials),
+        "properties": {o.name: {k: o[k] for k in o.keys() if isinstance(o[k], (int, float, str))}
+                       for o in meshes},
     }))
 
 

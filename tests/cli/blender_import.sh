@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Opens Insula's OBJ and GLB in Blender (headless, Debian's blender) as a user would (issue 21):
 # both stand upright (Blender is Z up: the tallest building's height on Z, the footprints on X and
-# Y), every building arrives as an object of its name, with its materials.
+# Y), every building arrives as an object of its name, with its materials and, from the GLB, its
+# attributes as custom properties (the parts too with --gltf-nodes element).
 source "$(dirname "$0")/lib/common.sh"
 
 example=$root/examples/town.geojson
@@ -31,6 +32,23 @@ upright='const s = JSON.parse(process.argv[1]);
   if (s.objects.length < 3 || s.materials < 1) process.exit(1);'
 check "OBJ upright in Blender" "$tmp/town.obj" "$upright"
 check "GLB upright in Blender" "$tmp/town.glb" "$upright"
+# One object per building, named by its id, its attributes as custom properties.
+check "GLB buildings with their attributes" "$tmp/town.glb" 'const s = JSON.parse(process.argv[1]);
+  const house = s.properties["L-house"];
+  if (!house || house.name !== "L-shaped house" || house.year !== 1910 || house.roof !== "hip") process.exit(1);
+  if (Object.keys(s.properties).length !== s.objects.length) process.exit(1);'
+# A node per part: each part an object with its kind.
+"$insula" mass "$example" -o "$tmp/parts.glb" --gltf-nodes element --quiet >/dev/null ||
+  fail "mass --gltf-nodes element"
+check "GLB parts with their kind" "$tmp/parts.glb" 'const s = JSON.parse(process.argv[1]);
+  const kinds = Object.values(s.properties).map((p) => p.kind);
+  if (kinds.length < 3 || !kinds.every((k) => k === "BuildingPart")) process.exit(1);'
+# Blender 3.4 does not read EXT_meshopt_compression: it says so instead of importing garbage.
+"$insula" mass "$example" -o "$tmp/packed.glb" --compress --quiet >/dev/null || fail "mass --compress"
+blender -b --factory-startup --python "$root/tools/blender_import.py" -- "$tmp/packed.glb" \
+  >"$tmp/packed.txt" 2>&1
+grep -q "EXT_meshopt_compression is not available" "$tmp/packed.txt" ||
+  fail "Blender on a compressed GLB: $(grep -m3 -i error "$tmp/packed.txt")"
 # The GIS form is Z up by design: Blender's Y-up reading lays it on its side (height on Y).
 check "world OBJ is Z up" "$tmp/world.obj" 'const s = JSON.parse(process.argv[1]);
   if (!(s.max[1] - s.min[1] >= 9 && s.max[1] - s.min[1] < 30)) process.exit(1);'
