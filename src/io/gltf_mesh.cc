@@ -32,6 +32,26 @@ std::int8_t normal_byte(float c) {
 
 // Sorts the triangles of `indices` by the feature of their first corner (stably), then optimises
 // each feature's run for the vertex cache.
+// Optimises one run of triangles for the vertex cache over the vertices it uses only: meshopt
+// sizes its work by the vertex count it is given, so a building of thousands of parts would
+// otherwise cost parts x vertices.
+void optimize_run(std::span<unsigned int> run, std::vector<unsigned int>& local_of,
+                  std::vector<unsigned int>& global_of) {
+  global_of.clear();
+  for (unsigned int& v : run) {
+    if (local_of[v] == ~0U) {
+      local_of[v] = static_cast<unsigned int>(global_of.size());
+      global_of.push_back(v);
+    }
+    v = local_of[v];
+  }
+  meshopt_optimizeVertexCache(run.data(), run.data(), run.size(), global_of.size());
+  for (unsigned int& v : run) v = global_of[v];
+  for (unsigned int v : global_of) local_of[v] = ~0U;
+}
+
+// Sorts the triangles of `indices` by the feature of their first corner (stably), then optimises
+// each feature's run for the vertex cache.
 void order_by_feature(std::span<unsigned int> indices, const std::vector<std::uint32_t>& features,
                       std::size_t vertex_count) {
   std::vector<std::array<unsigned int, 3>> triangles(indices.size() / 3);
@@ -40,13 +60,14 @@ void order_by_feature(std::span<unsigned int> indices, const std::vector<std::ui
     return features[a[0]] < features[b[0]];
   });
   std::memcpy(indices.data(), triangles.data(), indices.size() * sizeof(unsigned int));
+  std::vector<unsigned int> local_of(vertex_count, ~0U);
+  std::vector<unsigned int> global_of;
   for (std::size_t begin = 0; begin < triangles.size();) {
     std::size_t end = begin;
     while (end < triangles.size() && features[triangles[end][0]] == features[triangles[begin][0]]) {
       ++end;
     }
-    unsigned int* run = indices.data() + 3 * begin;
-    meshopt_optimizeVertexCache(run, run, 3 * (end - begin), vertex_count);
+    optimize_run(indices.subspan(3 * begin, 3 * (end - begin)), local_of, global_of);
     begin = end;
   }
 }

@@ -114,6 +114,14 @@ class Builder {
   void write_json(JsonStream& json, std::string_view buffer_uri) const;
   void append_binary(std::string& out) const { buffers_.append_binary(out); }
   std::size_t binary_size() const { return buffers_.binary_size(); }
+  // Room for the JSON text, so it does not move as it grows: about 400 bytes per primitive
+  // (its accessors and the EXT_mesh_features block) and per node (name and extras).
+  std::size_t json_size_estimate() const {
+    std::size_t items = scene_.lights.size() + materials_.materials().size();
+    for (const MeshEntry& mesh : meshes_) items += mesh.record.primitives.size();
+    for (const BuildingNode& building : buildings_) items += 1 + building.children.size();
+    return 400 * items + 4096;
+  }
 
  private:
   void reserve_views();
@@ -732,6 +740,7 @@ bool has_gltf_extension(const std::filesystem::path& path) {
 std::string glb_bytes(const shape::Scene& scene, const GltfOptions& options) {
   const Builder builder(scene, options);
   std::string text;
+  text.reserve(builder.json_size_estimate());
   JsonStream json(text);
   builder.write_json(json, {});
   const std::size_t binary = builder.binary_size();

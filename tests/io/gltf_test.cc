@@ -346,6 +346,66 @@ TEST(GltfWriter, WideMeshesKeepFloatPositions) {
   EXPECT_EQ(model.accessors[0].maxValues, (std::vector<double>{200, 5, 0}));
 }
 
+// A mesh of more than 65,535 vertices indexes with 32 bits; a table of more than 65,535 parts
+// gives FLOAT feature ids (exact to 2^24), each vertex still carrying its own part's row.
+TEST(GltfWriter, BigMeshesAndTablesWidenTheirTypes) {
+  shape::Scene scene;
+  shape::Building building;
+  building.id = "grid";
+  constexpr int kSide = 260;  // 261^2 = 68,121 shared corners on one plane
+  kernel::Mesh grid;
+  for (int y = 0; y <= kSide; ++y) {
+    for (int x = 0; x <= kSide; ++x) grid.add_vertex({0.2 * x, 0.2 * y, 0});
+  }
+  for (int y = 0; y < kSide; ++y) {
+    for (int x = 0; x < kSide; ++x) {
+      const auto at = [](int i, int j) { return static_cast<std::uint32_t>(j * (kSide + 1) + i); };
+      grid.add_face({at(x, y), at(x + 1, y), at(x + 1, y + 1), at(x, y + 1)},
+                    {kernel::SemanticClass::kGroundSurface, 0, 0});
+    }
+  }
+  building.parts.push_back({"grid", shape::PartKind::kBuildingPart, {}, std::move(grid)});
+  scene.buildings.push_back(std::move(building));
+  shape::Building many;
+  many.id = "many";
+  for (int i = 0; i < 66000; ++i) {
+    const double x = 0.01 * (i % 1000);
+    const double y = 60 + 0.01 * (i / 1000);
+    kernel::Mesh tile;
+    tile.add_vertex({x, y, 0});
+    tile.add_vertex({x + 0.005, y, 0});
+    tile.add_vertex({x, y + 0.005, 0});
+    tile.add_face({0, 1, 2}, {kernel::SemanticClass::kRoofSurface, 0, 0});
+    many.parts.push_back({"t", shape::PartKind::kBuildingPart, {}, std::move(tile)});
+  }
+  scene.buildings.push_back(std::move(many));
+  const tinygltf::Model model = load_glb(glb_bytes(scene));
+  const tinygltf::Primitive& big = model.meshes[0].primitives[0];
+  EXPECT_EQ(model.accessors[static_cast<std::size_t>(big.indices)].componentType,
+            TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+  EXPECT_EQ(model.accessors[static_cast<std::size_t>(big.attributes.at("POSITION"))].count,
+            static_cast<std::size_t>((kSide + 1) * (kSide + 1)));
+  EXPECT_EQ(
+      model.accessors[static_cast<std::size_t>(big.attributes.at("_FEATURE_ID_0"))].componentType,
+      TINYGLTF_COMPONENT_TYPE_FLOAT);
+  std::size_t triangles = 0;
+  for (const testing::PlacedPrimitive& p : testing::placed_primitives(model)) {
+    if (p.node != "many") continue;
+    for (std::size_t t = 0; t < p.indices.size(); t += 3) {
+      // Part i's triangle: its corners carry row 1 + i (row 0 is the grid), at its own place.
+      const double feature = p.features[p.indices[t]];
+      EXPECT_EQ(p.features[p.indices[t + 1]], feature);
+      const auto i = static_cast<int>(feature) - 1;
+      const auto& corner = p.positions[p.indices[t]];
+      EXPECT_NEAR(
+          std::min({corner[0], p.positions[p.indices[t + 1]][0], p.positions[p.indices[t + 2]][0]}),
+          0.01 * (i % 1000), 1e-3);
+      ++triangles;
+    }
+  }
+  EXPECT_EQ(triangles, 66000U);
+}
+
 TEST(GltfWriter, NormalsAreFlatAndUnit) {
   for (const GltfOptions& options : {GltfOptions{}, kElements}) {
     const tinygltf::Model model = load_glb(glb_bytes(test_scene(), options));
