@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <tuple>
@@ -240,6 +241,46 @@ Mesh canonical_order(const Mesh& mesh) {
   });
   for (std::size_t f : faces) out.add_face(loops[f], mesh.tag(f));
   return out;
+}
+
+bool same_content(const Mesh& a, const Mesh& b) {
+  if (a.vertex_count() != b.vertex_count() || a.face_count() != b.face_count()) return false;
+  for (std::size_t v = 0; v < a.vertex_count(); ++v) {
+    if (!(a.position(v) == b.position(v))) return false;
+  }
+  for (std::size_t f = 0; f < a.face_count(); ++f) {
+    const auto fa = a.face(f);
+    const auto fb = b.face(f);
+    if (!std::equal(fa.begin(), fa.end(), fb.begin(), fb.end())) return false;
+    const FaceTag& ta = a.tag(f);
+    const FaceTag& tb = b.tag(f);
+    if (ta.semantic != tb.semantic || ta.material != tb.material || ta.face_id != tb.face_id) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::uint64_t content_hash(const Mesh& mesh) {
+  std::uint64_t h = 1469598103934665603ULL;
+  const auto mix = [&h](std::uint64_t v) {
+    for (int b = 0; b < 8; ++b) {
+      h ^= (v >> (8 * b)) & 0xFFU;
+      h *= 1099511628211ULL;
+    }
+  };
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const Vec3 p = mesh.position(v);
+    for (double c : {p.x, p.y, p.z}) mix(std::bit_cast<std::uint64_t>(c));
+  }
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    mix(mesh.face(f).size());
+    for (std::uint32_t corner : mesh.face(f)) mix(corner);
+    const FaceTag& tag = mesh.tag(f);
+    mix(static_cast<std::uint64_t>(tag.semantic) | std::uint64_t{tag.material} << 8 |
+        std::uint64_t{tag.face_id} << 32);
+  }
+  return h;
 }
 
 }  // namespace insula::kernel

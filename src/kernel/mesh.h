@@ -147,6 +147,12 @@ Mesh weld(const Mesh& mesh, double tolerance = 1e-7);
 // corefinement), so equal geometry gives equal bytes.
 Mesh canonical_order(const Mesh& mesh);
 
+// Whether `a` and `b` have the same vertices (positions, exactly), face loops and tags, in the
+// same order; and a hash of the same (FNV-1a), equal for such meshes. For sharing meshes that
+// different operations made alike (equal i() results become instances of one mesh).
+bool same_content(const Mesh& a, const Mesh& b);
+std::uint64_t content_hash(const Mesh& mesh);
+
 struct MeshCheck {
   bool closed = false;    // every directed edge has exactly one opposite partner
   bool oriented = false;  // no directed edge is used twice (consistent orientation)

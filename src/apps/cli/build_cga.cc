@@ -202,6 +202,8 @@ int build_cga(const BuildOptions& options) {
     }
   }
   derive.keep_terminals = !options.outputs.empty();
+  // Equal i() results become instances of one mesh where the GLB places them on the GPU.
+  derive.share_inserts = options.output.gltf.instancing == io::GltfOptions::Instancing::kGpu;
   const std::filesystem::path grammar_dir = std::filesystem::path(options.input).parent_path();
   // Assets as CityEngine finds them (docs/assets.md); a missing one inserts nothing and is
   // reported once after the derivation.
@@ -247,7 +249,7 @@ int build_cga(const BuildOptions& options) {
   clock = Stopwatch();
   shape::Scene scene;
   if (!options.outputs.empty()) {
-    scene = cga::to_scene(p, lots->lots, results);
+    scene = cga::to_scene(p, lots->lots, results, derive.share_inserts);
     scene.origin = lots->origin;
     scene.crs = lots->crs;
   }

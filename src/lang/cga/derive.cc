@@ -8,6 +8,7 @@
 #include <map>
 #include <utility>
 
+#include "kernel/shared_meshes.h"
 #include "lang/cga/derive_engine.h"
 #include "shape/ops.h"
 
@@ -174,14 +175,32 @@ std::array<float, 4> rgba_of(const std::string& hex) {
 
 }  // namespace
 
+namespace {
+
+// How many terminals of a lot show each shared mesh (i() results, DeriveOptions::share_inserts).
+std::map<const Mesh*, int> mesh_uses(const LotResult& r) {
+  std::map<const Mesh*, int> uses;
+  for (std::size_t t = 0; t < r.terminals_store.size(); ++t) {
+    const Geometry& g = r.geometry[r.terminals_store[t].geometry];
+    if (g.kind == Geometry::Kind::kMesh && g.mesh && !g.outline) ++uses[g.mesh.get()];
+  }
+  return uses;
+}
+
+}  // namespace
+
 shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
-                      const std::vector<LotResult>& results) {
+                      const std::vector<LotResult>& results, bool instances) {
   shape::Scene scene;
   // By (colour, colour map): a textured material without a colour is white (CityEngine's).
   std::map<std::pair<std::string, std::string>, kernel::MaterialId> materials;
   const std::string uv0 = shape::uv_set_attribute(0);
+  kernel::SharedMeshes across_lots;  // lots derive apart: alike meshes of different lots become one
   for (std::size_t i = 0; i < results.size() && i < lots.size(); ++i) {
     const LotResult& r = results[i];
+    const std::map<const Mesh*, int> uses = instances ? mesh_uses(r) : std::map<const Mesh*, int>{};
+    // The shared meshes coloured as their terminals show them, by (mesh, material).
+    std::map<std::pair<const Mesh*, kernel::MaterialId>, std::shared_ptr<const Mesh>> shared;
     shape::Building building;
     building.id = lots[i].id;
     building.attributes = r.attributes;
@@ -216,6 +235,7 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
       }
       part.mesh = shape::mesh_to_world(*m.mesh, term.scope);
       if (!color.empty()) part.attributes["color"] = color;
+      kernel::MaterialId material_id = 0;
       if (!color.empty() || !texture.empty()) {
         auto [it, inserted] = materials.emplace(std::pair{color, texture}, 0);
         if (inserted) {
@@ -227,8 +247,24 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
           material.texture = texture;
           scene.materials.push_back(std::move(material));
         }
-        for (std::size_t f = 0; f < part.mesh.face_count(); ++f)
-          part.mesh.tag(f).material = it->second;
+        material_id = it->second;
+        for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
+          part.mesh.tag(f).material = material_id;
+        }
+      }
+      const auto use = uses.find(m.mesh.get());
+      if (use != uses.end() && use->second > 1 && !part.uv) {
+        std::shared_ptr<const Mesh>& mesh = shared[{m.mesh.get(), material_id}];
+        if (!mesh) {
+          auto coloured = std::make_shared<Mesh>(*m.mesh);
+          for (std::size_t f = 0; material_id != 0 && f < coloured->face_count(); ++f) {
+            coloured->tag(f).material = material_id;
+          }
+          mesh = across_lots.share(std::move(coloured));
+        }
+        part.instance_of = mesh;
+        part.instance_transform = shape::scope_transform(term.scope);
+        part.mesh = Mesh{};
       }
       building.parts.push_back(std::move(part));
     }

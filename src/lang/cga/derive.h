@@ -79,6 +79,9 @@ struct DeriveOptions {
   const shape::AssetProvider* assets = nullptr;
   const FileQueries* files = nullptr;
   const GeoReference* geo = nullptr;  // null: getGeoCoord's x and y are the local meters
+  // i() results alike in every vertex and face share one mesh, so to_scene(..., true) can place
+  // them as instances of it (GLB with EXT_mesh_gpu_instancing, issue 21).
+  bool share_inserts = false;
 };
 
 // A lot: one or more footprint polygons (a GeoJSON Polygon or MultiPolygon, local meters) and the
@@ -169,9 +172,11 @@ Lot default_lot(const Program& program, const DeriveOptions& options);
 
 // The export model: one Building per lot (id = lot id, attributes = the lot's), one Part per
 // terminal with geometry (name = its symbol, attributes = its set()/color() values, faces coloured
-// by color()).
+// by color()). With `instances`, terminals of a lot that show one shared mesh (i() results with
+// DeriveOptions::share_inserts) in one colour and without a uv map become instances of it
+// (Part::instance_of, placed by the terminal's scope).
 shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
-                      const std::vector<LotResult>& results);
+                      const std::vector<LotResult>& results, bool instances = false);
 
 // The report of issue 4: shapes, terminals, symbols {name: count}, rule_applications, reports,
 // lots (count). Sums over `results` in lot order.

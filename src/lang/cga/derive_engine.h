@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "kernel/shared_meshes.h"
 #include "lang/cga/derive.h"
 #include "lang/cga/eval.h"
 #include "shape/ops_fast.h"
@@ -518,6 +519,8 @@ class Engine final : public EvalContext {
   std::vector<std::size_t> frame_begin_{0, 0};
   std::map<std::array<std::uint64_t, 6>, std::uint32_t> boxes_;
   std::map<std::uint64_t, std::uint32_t> rects_;
+  // i() results by content (DeriveOptions::share_inserts).
+  kernel::SharedMeshes inserted_;
   std::map<std::pair<std::uint32_t, std::string>, std::size_t> warnings_;
   std::vector<std::unique_ptr<Scratch>> scratch_;
   std::size_t nest_ = 0;

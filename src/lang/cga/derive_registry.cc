@@ -47,7 +47,8 @@ OpOutcome Engine::run_op(const State& st, std::string_view name,
     const shape::Shape& s = tree[r.children[k]];
     State c = st;
     c.scope = s.scope;
-    c.geometry = add_mesh(s.mesh, s.outline, s.scope.size);
+    const bool share = options_.share_inserts && name == "insert" && s.mesh && !s.outline;
+    c.geometry = add_mesh(share ? inserted_.share(s.mesh) : s.mesh, s.outline, s.scope.size);
     for (std::size_t a = 0; stateful && a < before.size(); ++a) {
       const std::uint32_t attr = program_.state_attrs[a];
       const shape::Value* v = tree.attribute(r.children[k], program_.attrs[attr].name);
