@@ -240,9 +240,13 @@ void MeshAssembler::quantize(bool wanted, MeshRecord& record) {
   low.fill(std::numeric_limits<std::int64_t>::max());
   high.fill(std::numeric_limits<std::int64_t>::lowest());
   grid_.resize(vertices_.size());
+  // Past 2^62 steps (or not finite) a position has no grid point: such a mesh stays float.
+  constexpr double kGridLimit = 4.6e18;
   for (std::size_t v = 0; v < vertices_.size(); ++v) {
     for (std::size_t k = 0; k < 3; ++k) {
-      grid_[v][k] = std::llround(vertices_[v].position[k] / kQuantizationStep);
+      const double steps = vertices_[v].position[k] / kQuantizationStep;
+      if (!(std::abs(steps) < kGridLimit)) wanted = false;
+      grid_[v][k] = wanted ? std::llround(steps) : 0;
       low[k] = std::min(low[k], grid_[v][k]);
       high[k] = std::max(high[k], grid_[v][k]);
     }
