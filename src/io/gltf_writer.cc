@@ -134,6 +134,8 @@ class Builder {
   // Writes what `assembler` holds as a new mesh; -1 when it holds no triangle.
   std::int32_t add_mesh(gltf::MeshAssembler& assembler, std::string name, bool with_features,
                         bool quantize);
+  InstanceGroup add_instance_group(const std::vector<gltf::Trs>& placed,
+                                   const std::vector<float>& features);
   void add_instance_groups(const shape::Building& building, std::size_t first_row,
                            const std::vector<std::pair<std::size_t, std::int32_t>>& instances,
                            const Affine& inside, BuildingNode& node);
@@ -346,35 +348,7 @@ void Builder::add_instance_groups(
       }
     }
     if (placed.empty()) continue;
-    constexpr std::array<std::uint32_t, 4> kStrides{12, 16, 12, 4};
-    for (std::size_t k = 0; k < 4; ++k) {
-      if (!instance_views_[k])
-        instance_views_[k] = buffers_.add_view(ViewKind::kInstances, kStrides[k]);
-    }
-    InstanceGroup group;
-    const auto add = [&](std::size_t k, std::string_view type, auto&& values) {
-      std::string& data = buffers_.data(*instance_views_[k]);
-      const std::size_t offset = data.size();
-      for (const auto& v : values) gltf::append_value(data, v);
-      return buffers_.add_accessor(Accessor{*instance_views_[k], offset, Component::kFloat,
-                                            placed.size(), type, false, std::nullopt,
-                                            std::nullopt});
-    };
-    std::vector<float> t;
-    std::vector<float> r;
-    std::vector<float> s;
-    for (const gltf::Trs& trs : placed) {
-      for (double c : trs.translation) t.push_back(static_cast<float>(c));
-      for (double c : trs.rotation) r.push_back(static_cast<float>(c));
-      for (double c : trs.scale) s.push_back(static_cast<float>(c));
-    }
-    group.translation = add(0, "VEC3", t);
-    group.rotation = add(1, "VEC4", r);
-    group.scale = add(2, "VEC3", s);
-    if (table_) {
-      group.feature = add(3, "SCALAR", features);
-      group.feature_count = static_cast<std::uint32_t>(features.size());
-    }
+    const InstanceGroup group = add_instance_group(placed, features);
     node.children.push_back({meshes_[mesh].name, nullptr, mesh, std::nullopt, group});
     gpu_instances_ = true;
   }
@@ -384,6 +358,42 @@ void Builder::add_instance_groups(
                          gltf::decompose(placement(part)).has_value();
     if (!grouped) node.children.push_back({part_name(part, p), &part, mesh, placement(part), {}});
   }
+}
+
+// The EXT_mesh_gpu_instancing accessors of one group: TRANSLATION, ROTATION, SCALE and, with
+// the parts' table, each instance's row as _FEATURE_ID_0; one view per attribute for the asset.
+InstanceGroup Builder::add_instance_group(const std::vector<gltf::Trs>& placed,
+                                          const std::vector<float>& features) {
+  constexpr std::array<std::uint32_t, 4> kStrides{12, 16, 12, 4};
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (!instance_views_[k]) {
+      instance_views_[k] = buffers_.add_view(ViewKind::kInstances, kStrides[k]);
+    }
+  }
+  const auto add = [&](std::size_t k, std::string_view type, const std::vector<float>& values) {
+    std::string& data = buffers_.data(*instance_views_[k]);
+    const std::size_t offset = data.size();
+    for (float v : values) gltf::append_value(data, v);
+    return buffers_.add_accessor(Accessor{*instance_views_[k], offset, Component::kFloat,
+                                          placed.size(), type, false, std::nullopt, std::nullopt});
+  };
+  std::vector<float> t;
+  std::vector<float> r;
+  std::vector<float> s;
+  for (const gltf::Trs& trs : placed) {
+    for (double c : trs.translation) t.push_back(static_cast<float>(c));
+    for (double c : trs.rotation) r.push_back(static_cast<float>(c));
+    for (double c : trs.scale) s.push_back(static_cast<float>(c));
+  }
+  InstanceGroup group;
+  group.translation = add(0, "VEC3", t);
+  group.rotation = add(1, "VEC4", r);
+  group.scale = add(2, "VEC3", s);
+  if (table_) {
+    group.feature = add(3, "SCALAR", features);
+    group.feature_count = static_cast<std::uint32_t>(features.size());
+  }
+  return group;
 }
 
 // One node and mesh per part under the building's node.
