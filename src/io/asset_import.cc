@@ -7,13 +7,13 @@
 
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
 #include <sstream>
 
+#include "base/read_file.h"
 #include "io/gltf_reader.h"
 #include "io/obj_reader.h"
 
@@ -30,15 +30,6 @@ using kernel::Vec3;
 base::Result<ImportedAsset> fail(const fs::path& path, std::string code, std::string message) {
   return base::Result<ImportedAsset>::failure(
       {Diagnostic::error(std::move(code), std::move(message), Span::whole(path.string()))});
-}
-
-std::optional<std::string> read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return std::move(text).str();
 }
 
 std::string lower(std::string s) {
@@ -73,7 +64,7 @@ void for_each_line(std::string_view text, Fn&& fn) {
 
 // Diffuse colours by material name from an MTL file: Kd, and d (or Tr = 1 - d) for opacity.
 void read_mtl(const fs::path& path, std::map<std::string, std::array<float, 4>>& colours) {
-  const std::optional<std::string> text = read_text(path);
+  const std::optional<std::string> text = base::read_file(path);
   if (!text) return;
   std::array<float, 4>* current = nullptr;
   for_each_line(*text, [&](std::string_view line) {
@@ -100,7 +91,7 @@ void read_mtl(const fs::path& path, std::map<std::string, std::array<float, 4>>&
 }
 
 base::Result<ImportedAsset> import_obj(const fs::path& path) {
-  const std::optional<std::string> text = read_text(path);
+  const std::optional<std::string> text = base::read_file(path);
   if (!text) return fail(path, "AST001", "cannot read the file");
   base::Result<ObjModel> model = parse_obj(*text, path.string());
   if (!model.ok()) return base::Result<ImportedAsset>::failure(std::move(model.diagnostics()));

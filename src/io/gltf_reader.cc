@@ -5,14 +5,13 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <limits>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "base/read_file.h"
 #include "io/gltf_load.h"
 
 namespace insula::io {
@@ -361,15 +360,6 @@ AssetMaterial material_of(const tinygltf::Material& m) {
   return out;
 }
 
-std::optional<std::string> read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return std::move(bytes).str();
-}
-
 base::Result<ImportedAsset> fail(const fs::path& path, Error error) {
   return base::Result<ImportedAsset>::failure({Diagnostic::error(
       std::move(error.code), std::move(error.message), Span::whole(path.string()))});
@@ -378,7 +368,7 @@ base::Result<ImportedAsset> fail(const fs::path& path, Error error) {
 }  // namespace
 
 base::Result<ImportedAsset> import_gltf(const fs::path& path) {
-  const std::optional<std::string> bytes = read_bytes(path);
+  const std::optional<std::string> bytes = base::read_file(path);
   if (!bytes) return fail(path, {"AST001", "cannot read the file"});
   tinygltf::Model model;
   if (auto error = gltf_load::load(path, *bytes, model)) return fail(path, std::move(*error));
