@@ -12,6 +12,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <deque>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -58,7 +59,8 @@ class Buffers {
   // A new, empty view; its index is the one accessors and images name. Views left empty are not
   // written (indices are renumbered at writing).
   std::uint32_t add_view(ViewKind kind, std::uint32_t stride);
-  // The bytes of `view` so far, to append to (little-endian values).
+  // The bytes of `view` so far, to append to (little-endian values). The reference stays valid
+  // when more views are added.
   std::string& data(std::uint32_t view) { return views_[view].bytes; }
   std::uint32_t add_accessor(const Accessor& accessor);
   void set_bounds(std::uint32_t accessor,
@@ -95,7 +97,7 @@ class Buffers {
   };
   bool is_compressed(const View& view) const;
 
-  std::vector<View> views_;
+  std::deque<View> views_;  // a deque: data() references survive add_view()
   std::vector<Accessor> accessors_;
   bool compress_ = false;
   std::size_t binary_size_ = 0;    // the first buffer
