@@ -7,6 +7,7 @@
 
 #include "io/atomic_file.h"
 #include "io/cityjson_writer.h"
+#include "io/cityjsonseq_writer.h"
 #include "io/gltf_writer.h"
 #include "io/obj_writer.h"
 #include "io/png_renderer.h"
@@ -27,6 +28,7 @@ bool ends_with(const std::string& text, const std::string& suffix) {
 
 std::string output_format_name(const std::string& path) {
   if (ends_with(path, ".city.json")) return "cityjson";
+  if (ends_with(path, ".city.jsonl")) return "cityjsonseq";
   for (const char* format : {"obj", "glb", "gltf", "svg", "png"}) {
     if (ends_with(path, std::string(".") + format)) return format;
   }
@@ -43,6 +45,7 @@ std::string write_scene(const shape::Scene& scene, const std::string& path,
   if (format == "obj") return write_obj(scene, path, options.obj);
   if (format == "glb" || format == "gltf") return write_gltf(scene, path, options.gltf);
   if (format == "cityjson") return write_cityjson(scene, path);
+  if (format == "cityjsonseq") return write_cityjsonseq(scene, path);
   if (format == "svg") return write_svg(scene, path, options.svg);
   if (format == "png") return write_png(scene, path, options.render);
   return path + ": unknown output format";

@@ -16,9 +16,9 @@
 
 namespace insula::io {
 
-// .obj, .glb, .gltf, .city.json, .svg, .png (case-insensitive).
+// .obj, .glb, .gltf, .city.json, .city.jsonl, .svg, .png (case-insensitive).
 bool is_supported_output(const std::string& path);
-// "obj", "glb", "gltf", "cityjson", "svg", "png"; empty when unsupported.
+// "obj", "glb", "gltf", "cityjson", "cityjsonseq", "svg", "png"; empty when unsupported.
 std::string output_format_name(const std::string& path);
 // Options of the formats that have any (the others ignore them).
 struct OutputOptions {

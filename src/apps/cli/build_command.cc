@@ -38,9 +38,10 @@ void add_build_command(CLI::App& app, BuildOptions& options) {
       "build a grammar or program: .cga (CGA grammar), .bldg (building grammar), .lua, "
       ".psm (PLaSM)");
   build->add_option("INPUT", options.input, "a .cga, .bldg, .lua or .psm file")->required();
-  build->add_option("-o,--output", options.outputs,
-                    "output file, format by extension (.obj .glb .gltf .city.json .svg .png); "
-                    "repeatable; none: derive and report only");
+  build->add_option(
+      "-o,--output", options.outputs,
+      "output file, format by extension (.obj .glb .gltf .city.json .city.jsonl .svg .png); "
+      "repeatable; none: derive and report only");
   build->add_option("--lot", options.lot, "GeoJSON lots (CGA) or outline footprints (.bldg)");
   build->add_option("--seed", options.seed, "random seed (default 0; a graph's own seed)")
       ->each([&options](const std::string&) { options.seed_given = true; });
@@ -80,7 +81,8 @@ int check_outputs(const std::vector<std::string>& outputs, const std::string& re
   for (const std::string& out : outputs) {
     if (!io::is_supported_output(out)) {
       std::fprintf(stderr,
-                   "insula: %s: unknown output format (use .obj .glb .gltf .city.json .svg .png)\n",
+                   "insula: %s: unknown output format (use .obj .glb .gltf .city.json .city.jsonl "
+                   ".svg .png)\n",
                    out.c_str());
       return kExitUsage;
     }

@@ -22,7 +22,8 @@ namespace {
 
 constexpr const char* kDescription =
     "Insula generates buildings and cities from rules and footprints.\n"
-    "Outputs are chosen by extension: .obj (+.mtl), .glb, .gltf, .city.json, .svg, .png.";
+    "Outputs are chosen by extension: .obj (+.mtl), .glb, .gltf, .city.json, .city.jsonl "
+    "(CityJSONSeq), .svg, .png.";
 
 // A first argument that is no verb and no option: CLI11 would only say that a subcommand is
 // required, so the verbs are named here, the nearest one first when it is close.

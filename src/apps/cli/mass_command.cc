@@ -162,9 +162,9 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
       app.add_subcommand("mass", "LOD2 mass models: one closed roofed building per footprint");
   mass->add_option("FOOTPRINTS", options.input, "GeoJSON file of Polygon/MultiPolygon footprints")
       ->required();
-  mass->add_option(
-          "-o,--output", options.outputs,
-          "output file, format by extension (.obj .glb .gltf .city.json .svg .png); repeatable")
+  mass->add_option("-o,--output", options.outputs,
+                   "output file, format by extension (.obj .glb .gltf .city.json .city.jsonl .svg "
+                   ".png); repeatable")
       ->required();
   auto* roof =
       mass->add_option("--roof", options.roof,

@@ -1,0 +1,258 @@
+#include "io/cityjson_objects.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "shape/part_mesh.h"
+
+namespace insula::io::cityjson {
+namespace {
+
+constexpr double kPerMeter = 1000.0;  // 1 / kScale
+
+bool finite(kernel::Vec3 p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+// Quantised offsets must stay exact integers in a double and in JSON readers (|q| < 2^53).
+bool quantisable(kernel::Vec3 offset) {
+  constexpr double kLimit = 9.0e15 / kPerMeter;
+  return std::abs(offset.x) < kLimit && std::abs(offset.y) < kLimit && std::abs(offset.z) < kLimit;
+}
+
+std::string_view object_type(shape::PartKind kind) {
+  switch (kind) {
+    case shape::PartKind::kStorey:
+      return "BuildingStorey";
+    case shape::PartKind::kRoom:
+      return "BuildingRoom";
+    case shape::PartKind::kInstallation:
+      return "BuildingInstallation";
+    case shape::PartKind::kBuildingPart:
+    case shape::PartKind::kOther:
+      break;
+  }
+  return "BuildingPart";
+}
+
+// `base`, or `base-2`, `base-3`, ... when taken; records the result.
+std::string unique_id(const std::string& base, std::unordered_set<std::string>& taken) {
+  std::string id = base;
+  for (int suffix = 2; taken.contains(id); ++suffix) id = base + "-" + std::to_string(suffix);
+  taken.insert(id);
+  return id;
+}
+
+}  // namespace
+
+std::size_t QuantisedHash::operator()(const Quantised& q) const {
+  std::uint64_t h = 0;
+  for (std::int64_t c : q) {
+    h = (h ^ static_cast<std::uint64_t>(c)) * 0x9E3779B97F4A7C15ULL;
+    h ^= h >> 29U;
+  }
+  return static_cast<std::size_t>(h);
+}
+
+std::uint32_t VertexPool::add(const Quantised& q) {
+  const auto [it, inserted] = index_.emplace(q, static_cast<std::uint32_t>(vertices_.size()));
+  if (inserted) vertices_.push_back(q);
+  return it->second;
+}
+
+void VertexPool::reserve(std::size_t n) {
+  index_.reserve(n);
+  vertices_.reserve(n);
+}
+
+void VertexPool::clear() {
+  index_.clear();
+  vertices_.clear();
+}
+
+Quantised CityObjects::quantise(kernel::Vec3 local) const {
+  const kernel::Vec3 d = (local - base_) * kPerMeter;
+  return {std::llround(d.x), std::llround(d.y), std::llround(d.z)};
+}
+
+void CityObjects::collect_surfaces(const kernel::Mesh& mesh) {
+  part_.clear();
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const std::size_t begin = part_.indices.size();
+    bool ok = true;
+    for (std::uint32_t vertex : mesh.face(f)) {
+      const kernel::Vec3 p = mesh.position(vertex);
+      if (!finite(p) || !quantisable(p - base_)) {
+        ok = false;
+        break;
+      }
+      const std::uint32_t index = pool_.add(quantise(p));
+      if (part_.indices.size() == begin || part_.indices.back() != index) {
+        part_.indices.push_back(index);
+      }
+    }
+    while (part_.indices.size() > begin + 1 && part_.indices.back() == part_.indices[begin]) {
+      part_.indices.pop_back();
+    }
+    if (!ok || part_.indices.size() < begin + 3) {
+      part_.indices.resize(begin);
+      continue;
+    }
+    part_.ends.push_back(part_.indices.size());
+    part_.types.push_back(kernel::citygml_surface(mesh.tag(f).semantic));
+  }
+}
+
+// A Solid needs one closed, consistently outward-oriented 2-manifold shell: checked on the
+// quantised rings, so the test sees exactly what a validator such as val3dity will see.
+bool CityObjects::is_solid() const {
+  if (part_.size() < 4) return false;
+  ++stamp_;
+  if (local_index_.size() < pool_.vertices().size()) {
+    local_index_.resize(pool_.vertices().size());
+    local_stamp_.resize(pool_.vertices().size(), 0);
+  }
+  kernel::Mesh mesh;
+  std::vector<std::uint32_t> loop;
+  for (std::size_t r = 0; r < part_.size(); ++r) {
+    loop.clear();
+    for (std::uint32_t index : part_.ring(r)) {
+      if (local_stamp_[index] != stamp_) {
+        local_stamp_[index] = stamp_;
+        local_index_[index] = static_cast<std::uint32_t>(mesh.vertex_count());
+        const Quantised& q = pool_.vertices()[index];
+        mesh.add_vertex(
+            {static_cast<double>(q[0]), static_cast<double>(q[1]), static_cast<double>(q[2])});
+      }
+      loop.push_back(local_index_[index]);
+    }
+    mesh.add_face(loop, {});
+  }
+  const kernel::MeshCheck check = kernel::check(mesh);
+  return check.closed && check.oriented && check.non_manifold_edges == 0 && check.components == 1 &&
+         kernel::volume(mesh) > 0;
+}
+
+// {"boundaries", "lod", "semantics" (when some face has a type), "type"}; a Solid wraps the
+// surfaces and values in one more array (its single outer shell).
+void CityObjects::write_geometry(JsonStream& json) const {
+  const bool solid = is_solid();
+  json.begin_object().key("boundaries").begin_array();
+  if (solid) json.begin_array();
+  for (std::size_t r = 0; r < part_.size(); ++r) {
+    json.begin_array().begin_array();
+    for (std::uint32_t index : part_.ring(r)) json.integer(index);
+    json.end_array().end_array();
+  }
+  if (solid) json.end_array();
+  json.end_array().key("lod").string("2");
+  std::vector<std::string_view> seen;
+  for (std::string_view type : part_.types) {
+    if (!type.empty() && std::find(seen.begin(), seen.end(), type) == seen.end()) {
+      seen.push_back(type);
+    }
+  }
+  if (!seen.empty()) {
+    json.key("semantics").begin_object().key("surfaces").begin_array();
+    for (std::string_view type : seen) json.begin_object().key("type").string(type).end_object();
+    json.end_array().key("values").begin_array();
+    if (solid) json.begin_array();
+    for (std::string_view type : part_.types) {
+      if (type.empty()) {
+        json.null();
+      } else {
+        json.integer(std::find(seen.begin(), seen.end(), type) - seen.begin());
+      }
+    }
+    if (solid) json.end_array();
+    json.end_array().end_object();
+  }
+  json.key("type").string(solid ? "Solid" : "MultiSurface").end_object();
+}
+
+std::string CityObjects::add_building(const shape::Building& building, std::size_t index) {
+  const std::string id =
+      unique_id(building.id.empty() ? "building" + std::to_string(index) : building.id, ids_);
+  std::vector<std::string> children;
+  for (std::size_t p = 0; p < building.parts.size(); ++p) {
+    const shape::Part& part = building.parts[p];
+    std::string part_id =
+        unique_id(id + "-" + (part.name.empty() ? "part" + std::to_string(p) : part.name), ids_);
+    const std::size_t begin = text_.size();
+    JsonStream json(text_);
+    json.begin_object();
+    if (!part.attributes.empty()) json.key("attributes").attributes(part.attributes);
+    if (part.instance_of) {
+      collect_surfaces(shape::part_world_mesh(part));
+    } else {
+      collect_surfaces(part.mesh);
+    }
+    if (part_.size() > 0) {
+      json.key("geometry").begin_array();
+      write_geometry(json);
+      json.end_array();
+    }
+    json.key("parents").begin_array().string(id).end_array();
+    json.key("type").string(object_type(part.kind)).end_object();
+    objects_.push_back({part_id, begin, text_.size()});
+    children.push_back(std::move(part_id));
+  }
+  const std::size_t begin = text_.size();
+  JsonStream json(text_);
+  json.begin_object();
+  if (!building.attributes.empty()) json.key("attributes").attributes(building.attributes);
+  if (!children.empty()) {
+    json.key("children").begin_array();
+    for (const std::string& child : children) json.string(child);
+    json.end_array();
+  }
+  json.key("type").string("Building").end_object();
+  objects_.push_back({id, begin, text_.size()});
+  return id;
+}
+
+void CityObjects::write_objects(JsonStream& json) {
+  std::sort(objects_.begin(), objects_.end(),
+            [](const ObjectText& a, const ObjectText& b) { return a.id < b.id; });
+  json.begin_object();
+  for (const ObjectText& object : objects_) {
+    json.key(object.id).raw(
+        std::string_view(text_).substr(object.begin, object.end - object.begin));
+  }
+  json.end_object();
+}
+
+void CityObjects::write_vertices(JsonStream& json) const {
+  json.begin_array();
+  for (const Quantised& q : pool_.vertices()) {
+    json.begin_array().integer(q[0]).integer(q[1]).integer(q[2]).end_array();
+  }
+  json.end_array();
+}
+
+void CityObjects::clear() {
+  pool_.clear();
+  text_.clear();
+  objects_.clear();
+}
+
+kernel::Vec3 local_minimum(const shape::Scene& scene) {
+  kernel::Bounds3 bounds;
+  for (const shape::Building& building : scene.buildings) {
+    for (const shape::Part& part : building.parts) {
+      for (const kernel::Vec3& p : part.mesh.positions()) {
+        if (finite(p)) bounds.add(p);
+      }
+    }
+  }
+  return bounds.empty() ? kernel::Vec3{} : bounds.min;
+}
+
+void write_transform(JsonStream& json, kernel::Vec3 translate) {
+  json.begin_object().key("scale").begin_array();
+  json.number(kScale).number(kScale).number(kScale).end_array();
+  json.key("translate").begin_array();
+  json.number(translate.x).number(translate.y).number(translate.z).end_array().end_object();
+}
+
+}  // namespace insula::io::cityjson

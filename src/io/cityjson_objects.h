@@ -1,0 +1,118 @@
+// The CityJSON city objects of buildings, shared by the CityJSON writer (io/cityjson_writer.h, one
+// vertex list for the file) and the CityJSONSeq writer (io/cityjsonseq_writer.h, one vertex list
+// per line). A building becomes one "Building" with its attributes and one child per part
+// ("BuildingPart", "BuildingStorey", "BuildingRoom" or "BuildingInstallation"), each with an LoD 2
+// "Solid" or "MultiSurface" and semantic surfaces; vertices are integers on a 1 mm grid
+// (docs/formats.md, "CityJSON").
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "io/json_stream.h"
+#include "kernel/mesh.h"
+#include "shape/scene.h"
+
+namespace insula::io::cityjson {
+
+using Quantised = std::array<std::int64_t, 3>;
+
+constexpr double kScale = 0.001;  // 1 mm, the precision of survey-grade city models
+
+// Mixes the three components (splitmix64 finaliser) so nearby grid points spread over buckets.
+struct QuantisedHash {
+  std::size_t operator()(const Quantised& q) const;
+};
+
+// A vertex list: every distinct quantised point once, numbered in first-use order.
+class VertexPool {
+ public:
+  std::uint32_t add(const Quantised& q);
+  void reserve(std::size_t n);
+  void clear();
+  const std::vector<Quantised>& vertices() const { return vertices_; }
+
+ private:
+  std::unordered_map<Quantised, std::uint32_t, QuantisedHash> index_;
+  std::vector<Quantised> vertices_;
+};
+
+// The faces of one part as rings of vertex indices (ring r is indices[ends[r - 1] .. ends[r])),
+// with their surface type ("" = none).
+struct PartSurfaces {
+  std::vector<std::uint32_t> indices;
+  std::vector<std::size_t> ends;
+  std::vector<std::string_view> types;
+
+  std::size_t size() const { return ends.size(); }
+  std::span<const std::uint32_t> ring(std::size_t r) const {
+    const std::size_t begin = r == 0 ? 0 : ends[r - 1];
+    return std::span<const std::uint32_t>(indices).subspan(begin, ends[r] - begin);
+  }
+  void clear() {
+    indices.clear();
+    ends.clear();
+    types.clear();
+  }
+};
+
+// Builds the city objects of buildings, one after the other, into a text buffer and their
+// vertices into a pool. A point p (local coordinates) becomes round((p - base) / kScale), so the
+// file's transform translate is origin + base.
+class CityObjects {
+ public:
+  explicit CityObjects(kernel::Vec3 base) : base_(base) {}
+
+  // Adds the building (`index`: its position, naming an unnamed building "building<index>") and
+  // its parts; returns the building's object id, unique among every id this object has given.
+  // Parts that are shared-mesh instances are expanded.
+  std::string add_building(const shape::Building& building, std::size_t index);
+  // The members of "CityObjects" (an object, sorted by id) added since the last clear().
+  void write_objects(JsonStream& json);
+  // The "vertices" array.
+  void write_vertices(JsonStream& json) const;
+  const VertexPool& pool() const { return pool_; }
+  VertexPool& pool() { return pool_; }
+  // Forgets the objects and vertices (the ids given stay taken).
+  void clear();
+
+ private:
+  // One city object's compact JSON text, kept in text_ until the objects are sorted by id.
+  struct ObjectText {
+    std::string id;
+    std::size_t begin = 0;
+    std::size_t end = 0;
+  };
+
+  Quantised quantise(kernel::Vec3 local) const;
+  void collect_surfaces(const kernel::Mesh& mesh);
+  bool is_solid() const;
+  void write_geometry(JsonStream& json) const;
+
+  kernel::Vec3 base_;
+  VertexPool pool_;
+  std::unordered_set<std::string> ids_;
+  std::string text_;
+  std::vector<ObjectText> objects_;
+
+  // Scratch reused from part to part.
+  PartSurfaces part_;
+  mutable std::vector<std::uint32_t> local_index_;  // pool vertex -> solid-test mesh vertex
+  mutable std::vector<std::uint32_t> local_stamp_;  // which solid test set local_index_
+  mutable std::uint32_t stamp_ = 0;
+};
+
+// The minimum corner of the scene's finite vertices (local coordinates), (0, 0, 0) when none.
+kernel::Vec3 local_minimum(const shape::Scene& scene);
+
+// The "transform" member's value: scale kScale, `translate`.
+void write_transform(JsonStream& json, kernel::Vec3 translate);
+
+}  // namespace insula::io::cityjson
