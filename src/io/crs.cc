@@ -154,4 +154,66 @@ std::string reproject(const std::string& from, const std::string& to,
   return "";
 }
 
+std::string to_ecef(const std::string& crs, std::vector<kernel::Vec3>& points) {
+  const Context ctx = make_context();
+  if (!ctx) return "PROJ could not start";
+  const Pj raw(proj_create_crs_to_crs(ctx.get(), crs.c_str(), "EPSG:4978", nullptr));
+  if (!raw) return "PROJ finds no transformation from " + crs + " to EPSG:4978";
+  const Pj op(proj_normalize_for_visualization(ctx.get(), raw.get()));
+  if (!op) return "PROJ finds no transformation from " + crs + " to EPSG:4978";
+  if (points.empty()) return "";
+  constexpr std::size_t kStride = sizeof(kernel::Vec3);
+  static_assert(kStride == 3 * sizeof(double));
+  const std::size_t n = points.size();
+  proj_trans_generic(op.get(), PJ_FWD, &points[0].x, kStride, n, &points[0].y, kStride, n,
+                     &points[0].z, kStride, n, nullptr, 0, 0);
+  for (kernel::Vec3& p : points) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      p = {nan, nan, nan};
+    }
+  }
+  return "";
+}
+
+std::vector<std::array<double, 16>> ecef_frames(const std::string& crs,
+                                                const std::vector<kernel::Vec3>& at,
+                                                std::string& error) {
+  // Central differences over +-1 m: ECEF doubles keep ~1e-9 m, and the projection's curvature
+  // over a metre is far below that.
+  constexpr std::size_t kSamples = 7;
+  std::vector<kernel::Vec3> points;
+  points.reserve(kSamples * at.size());
+  for (const kernel::Vec3 p : at) {
+    points.insert(points.end(), {p, p + kernel::Vec3{1, 0, 0}, p - kernel::Vec3{1, 0, 0},
+                                 p + kernel::Vec3{0, 1, 0}, p - kernel::Vec3{0, 1, 0},
+                                 p + kernel::Vec3{0, 0, 1}, p - kernel::Vec3{0, 0, 1}});
+  }
+  error = to_ecef(crs, points);
+  if (!error.empty()) return {};
+  std::vector<std::array<double, 16>> frames;
+  frames.reserve(at.size());
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    const kernel::Vec3* sample = &points[kSamples * i];
+    for (std::size_t k = 0; k < kSamples; ++k) {
+      if (std::isfinite(sample[k].x)) continue;
+      error = "PROJ cannot place the point (" + std::to_string(at[i].x) + ", " +
+              std::to_string(at[i].y) + ") of " + crs + " on the globe";
+      return {};
+    }
+    std::array<double, 16>& m = frames.emplace_back();
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      const kernel::Vec3 step = (sample[1 + 2 * axis] - sample[2 + 2 * axis]) * 0.5;
+      m[4 * axis + 0] = step.x;
+      m[4 * axis + 1] = step.y;
+      m[4 * axis + 2] = step.z;
+    }
+    m[12] = sample[0].x;
+    m[13] = sample[0].y;
+    m[14] = sample[0].z;
+    m[15] = 1;
+  }
+  return frames;
+}
+
 }  // namespace insula::io

@@ -4,6 +4,7 @@
 // decided by the reader (docs/geojson.md, "Coordinates, units and CRS").
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,5 +41,20 @@ std::string utm_crs(double lon, double lat);
 // transformed becomes non-finite. Returns an empty string, or why no transformation exists.
 std::string reproject(const std::string& from, const std::string& to,
                       std::vector<kernel::Vec2>& points);
+
+// Earth-centred, Earth-fixed coordinates (EPSG:4978, meters) of `points` given in `crs` with z as
+// the height above the ellipsoid, in place. Returns an empty string, or why no transformation
+// exists; a point PROJ cannot transform becomes non-finite.
+std::string to_ecef(const std::string& crs, std::vector<kernel::Vec3>& points);
+
+// For each point of `at` (a point of `crs` with its ellipsoidal height), the affine map, a
+// column-major 4x4 matrix as 3D Tiles' `transform` wants it, that takes local coordinates around
+// it (x along the CRS's east axis, y along its north axis, z up, meters) to ECEF. Its columns are
+// the images of unit steps from the point, so the map includes the projection's grid convergence
+// and scale factor there. One PROJ set-up for all points. Empty with `error` set when PROJ cannot
+// transform one of them.
+std::vector<std::array<double, 16>> ecef_frames(const std::string& crs,
+                                                const std::vector<kernel::Vec3>& at,
+                                                std::string& error);
 
 }  // namespace insula::io

@@ -12,6 +12,7 @@
 #include "io/obj_writer.h"
 #include "io/png_renderer.h"
 #include "io/svg_writer.h"
+#include "io/tileset_writer.h"
 
 namespace insula::io {
 namespace {
@@ -28,6 +29,7 @@ bool ends_with(const std::string& text, const std::string& suffix) {
 
 std::string output_format_name(const std::string& path) {
   if (ends_with(path, ".city.json")) return "cityjson";
+  if (std::filesystem::path(path).filename() == "tileset.json") return "3dtiles";
   if (ends_with(path, ".city.jsonl")) return "cityjsonseq";
   for (const char* format : {"obj", "glb", "gltf", "svg", "png"}) {
     if (ends_with(path, std::string(".") + format)) return format;
@@ -46,12 +48,14 @@ std::string write_scene(const shape::Scene& scene, const std::string& path,
   if (format == "glb" || format == "gltf") return write_gltf(scene, path, options.gltf);
   if (format == "cityjson") return write_cityjson(scene, path);
   if (format == "cityjsonseq") return write_cityjsonseq(scene, path);
+  if (format == "3dtiles") return write_tileset(scene, path, {options.gltf});
   if (format == "svg") return write_svg(scene, path, options.svg);
   if (format == "png") return write_png(scene, path, options.render);
   return path + ": unknown output format";
 }
 
 std::vector<std::string> files_of_output(const std::string& path) {
+  if (output_format_name(path) == "3dtiles") return {path, tiles_folder(path).string()};
   if (output_format_name(path) != "obj") return {path};
   return {path, std::filesystem::path(path).replace_extension(".mtl").string(),
           origin_sidecar_path(path).string()};
@@ -94,8 +98,27 @@ std::string OutputTransaction::claim(const std::vector<std::string>& files) {
   return {};
 }
 
+// A 3D Tiles output names its own folder (city/tileset.json): made here when missing, and then
+// ours to remove on a rollback.
+std::string OutputTransaction::make_folder(const std::filesystem::path& folder) {
+  std::error_code error;
+  if (folder.empty() || std::filesystem::is_directory(folder, error)) return {};
+  if (!std::filesystem::create_directory(folder, error) || error) {
+    return folder.string() + ": cannot create the folder: " + error.message();
+  }
+  const std::lock_guard<std::mutex> lock(mutex_);
+  created_.insert(folder.string());
+  return {};
+}
+
 std::string OutputTransaction::write_scene(const shape::Scene& scene, const std::string& path,
                                            const OutputOptions& options) {
+  if (output_format_name(path) == "3dtiles") {
+    if (std::string error = make_folder(std::filesystem::path(path).parent_path());
+        !error.empty()) {
+      return error;
+    }
+  }
   if (std::string error = claim(files_of_output(path)); !error.empty()) return error;
   if (std::string error = io::write_scene(scene, path, options); !error.empty()) return error;
   return cancelled_error();
@@ -116,7 +139,7 @@ std::string OutputTransaction::commit() {
   // The commit point: from here on the new files stay, whatever arrives.
   finished_ = true;
   std::error_code ignored;
-  for (const std::string& path : moved_) std::filesystem::remove(backup_of(path), ignored);
+  for (const std::string& path : moved_) std::filesystem::remove_all(backup_of(path), ignored);
   moved_.clear();
   created_.clear();
   return {};
@@ -126,7 +149,9 @@ void OutputTransaction::roll_back() {
   const std::lock_guard<std::mutex> lock(mutex_);
   finished_ = true;
   std::error_code ignored;
-  for (const std::string& path : created_) std::filesystem::remove(path, ignored);
+  // remove_all: a 3D Tiles output's tiles folder; the set's order removes a folder before the
+  // paths inside it, which are gone with it.
+  for (const std::string& path : created_) std::filesystem::remove_all(path, ignored);
   for (const std::string& path : moved_) std::filesystem::rename(backup_of(path), path, ignored);
   moved_.clear();
   created_.clear();
@@ -135,6 +160,8 @@ void OutputTransaction::roll_back() {
 std::string check_output_directories(const std::vector<std::string>& paths) {
   for (const std::string& path : paths) {
     std::filesystem::path directory = std::filesystem::path(path).parent_path();
+    // A 3D Tiles folder (city/tileset.json) is made when missing; its parent must exist.
+    if (output_format_name(path) == "3dtiles") directory = directory.parent_path();
     if (directory.empty()) directory = ".";
     std::error_code error;
     if (!std::filesystem::is_directory(directory, error)) {

@@ -1,6 +1,7 @@
 // Chooses the writer for an output path by its extension (design.md, "Outputs").
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <mutex>
 #include <set>
@@ -16,9 +17,11 @@
 
 namespace insula::io {
 
-// .obj, .glb, .gltf, .city.json, .city.jsonl, .svg, .png (case-insensitive).
+// .obj, .glb, .gltf, .city.json, .city.jsonl, .svg, .png (case-insensitive), and a file named
+// tileset.json (3D Tiles: the tileset and its tiles/ folder beside it).
 bool is_supported_output(const std::string& path);
-// "obj", "glb", "gltf", "cityjson", "cityjsonseq", "svg", "png"; empty when unsupported.
+// "obj", "glb", "gltf", "cityjson", "cityjsonseq", "3dtiles", "svg", "png"; empty when
+// unsupported.
 std::string output_format_name(const std::string& path);
 // Options of the formats that have any (the others ignore them).
 struct OutputOptions {
@@ -31,7 +34,8 @@ struct OutputOptions {
 // Writes the scene in the path's format, atomically. Empty string on success, else the reason.
 std::string write_scene(const shape::Scene& scene, const std::string& path,
                         const OutputOptions& options = {});
-// The files a path's writer creates: the path itself, and for OBJ its .mtl and origin sidecar.
+// The files a path's writer creates: the path itself, for OBJ its .mtl and origin sidecar, for
+// 3D Tiles the tiles folder.
 std::vector<std::string> files_of_output(const std::string& path);
 
 // Writes several files as one transaction: a file that already exists is first moved aside (to
@@ -59,6 +63,7 @@ class OutputTransaction {
 
  private:
   std::string claim(const std::vector<std::string>& files);
+  std::string make_folder(const std::filesystem::path& folder);
   std::string cancelled_error() const;
 
   std::function<bool()> cancelled_;

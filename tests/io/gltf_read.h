@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace insula::io::testing {
 
@@ -273,6 +274,51 @@ inline std::vector<PlacedPrimitive> placed_primitives(const tinygltf::Model& mod
     if (only_root < 0 || root == only_root) visit(visit, root, identity);
   }
   return out;
+}
+
+// The JSON chunk of a .glb.
+inline nlohmann::json json_of(const std::string& glb) {
+  std::uint32_t length = 0;
+  std::memcpy(&length, glb.data() + 12, 4);
+  return nlohmann::json::parse(glb.substr(20, length));
+}
+
+// The texts of a STRING or ENUM column of the parts' table, row by row.
+inline std::vector<std::string> table_column(const tinygltf::Model& model,
+                                             const nlohmann::json& json, const std::string& id) {
+  const nlohmann::json& metadata = json["extensions"]["EXT_structural_metadata"];
+  const nlohmann::json& table = metadata["propertyTables"][0];
+  const std::size_t rows = table["count"];
+  const auto bytes = [&](const char* key) {
+    const tinygltf::BufferView& v =
+        model.bufferViews[table["properties"][id][key].get<std::size_t>()];
+    return model.buffers[0].data.data() + v.byteOffset;
+  };
+  std::vector<std::string> texts;
+  const nlohmann::json& property = metadata["schema"]["classes"]["part"]["properties"][id];
+  if (property["type"] == "STRING") {
+    const unsigned char* values = bytes("values");
+    const unsigned char* offsets = bytes("stringOffsets");
+    for (std::size_t row = 0; row < rows; ++row) {
+      std::uint32_t from = 0;
+      std::uint32_t to = 0;
+      std::memcpy(&from, offsets + 4 * row, 4);
+      std::memcpy(&to, offsets + 4 * row + 4, 4);
+      texts.emplace_back(reinterpret_cast<const char*>(values) + from, to - from);
+    }
+    return texts;
+  }
+  const nlohmann::json& enumeration = metadata["schema"]["enums"][id];
+  const bool wide = enumeration["valueType"] == "UINT16";
+  const unsigned char* codes = bytes("values");
+  for (std::size_t row = 0; row < rows; ++row) {
+    std::uint16_t code = codes[row];
+    if (wide) std::memcpy(&code, codes + 2 * row, 2);
+    for (const nlohmann::json& value : enumeration["values"]) {
+      if (value["value"] == code) texts.push_back(value["name"]);
+    }
+  }
+  return texts;
 }
 
 }  // namespace insula::io::testing
