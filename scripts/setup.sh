@@ -34,7 +34,8 @@ fi
 
 if [ ! -d tools/node_modules/gltf-validator ] || [ ! -d tools/node_modules/ajv ] ||
   [ ! -d tools/node_modules/playwright-core ] || [ ! -d tools/node_modules/three ] ||
-  [ ! -d tools/node_modules/gltfpack ]; then
-  echo "setup: installing npm test tools (gltf-validator, ajv, playwright-core, three, gltfpack)" >&2
+  [ ! -d tools/node_modules/gltfpack ] || [ ! -d tools/node_modules/cesium ] ||
+  [ ! -d tools/node_modules/@loaders.gl/tiles ]; then
+  echo "setup: installing npm test tools (gltf-validator, ajv, playwright-core, three, gltfpack, cesium, loaders.gl)" >&2
   (cd tools && npm ci --no-audit --no-fund --silent 2>/dev/null || npm install --no-audit --no-fund --silent)
 fi

@@ -10,10 +10,9 @@
 // Environment: INSULA_CHROMIUM (default /usr/bin/chromium). Exit status 0 on success, 1 when the
 // browser or the model fails, 2 on usage error. Nothing is downloaded: pages come from this folder.
 import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
+import { content_types, launchChromium } from './browser_common.mjs';
 
 const [model, out, view = 'front'] = process.argv.slice(2);
 if (!model || !out || !['front', 'top'].includes(view)) {
@@ -98,22 +97,11 @@ try {
 }
 </script></body></html>`;
 
-const types = { '.js': 'text/javascript', '.glb': 'model/gltf-binary', '.html': 'text/html' };
-const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'insula-chromium-'));
-let context;
+let browser;
 let status = 0;
 try {
-  context = await chromium.launchPersistentContext(profile, {
-    executablePath: process.env.INSULA_CHROMIUM || '/usr/bin/chromium',
-    headless: true,
-    args: [
-      '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync',
-      '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-    ],
-    viewport: { width: size, height: size },
-  });
-  const page = context.pages()[0] || (await context.newPage());
+  browser = await launchChromium({ width: size, height: size });
+  const { page } = browser;
   // Every request is answered from this machine; anything else is refused.
   await page.route('**/*', (route) => {
     const url = new URL(route.request().url());
@@ -128,7 +116,7 @@ try {
     const allowed = file && (file === path.resolve(model) || file === mtl ||
                              file.startsWith(folder + path.sep) || file.startsWith(three));
     if (!allowed || !fs.existsSync(file)) return route.abort();
-    return route.fulfill({ contentType: types[path.extname(file)] || 'application/octet-stream',
+    return route.fulfill({ contentType: content_types[path.extname(file)] || 'application/octet-stream',
                            body: fs.readFileSync(file) });
   });
   await page.goto(`${origin}/index.html`);
@@ -145,7 +133,6 @@ try {
   console.error(`render_gltf_browser: ${error.message}`);
   status = 1;
 } finally {
-  if (context) await context.close();
-  fs.rmSync(profile, { recursive: true, force: true });
+  if (browser) await browser.close();
 }
 process.exit(status);
