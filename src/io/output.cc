@@ -48,7 +48,7 @@ std::string write_scene(const shape::Scene& scene, const std::string& path,
   if (format == "glb" || format == "gltf") return write_gltf(scene, path, options.gltf);
   if (format == "cityjson") return write_cityjson(scene, path);
   if (format == "cityjsonseq") return write_cityjsonseq(scene, path);
-  if (format == "3dtiles") return write_tileset(scene, path, {options.gltf});
+  if (format == "3dtiles") return write_tileset(scene, path, options.gltf, options.tiles);
   if (format == "svg") return write_svg(scene, path, options.svg);
   if (format == "png") return write_png(scene, path, options.render);
   return path + ": unknown output format";
@@ -111,15 +111,19 @@ std::string OutputTransaction::make_folder(const std::filesystem::path& folder) 
   return {};
 }
 
-std::string OutputTransaction::write_scene(const shape::Scene& scene, const std::string& path,
-                                           const OutputOptions& options) {
+std::string OutputTransaction::claim_output(const std::string& path) {
   if (output_format_name(path) == "3dtiles") {
     if (std::string error = make_folder(std::filesystem::path(path).parent_path());
         !error.empty()) {
       return error;
     }
   }
-  if (std::string error = claim(files_of_output(path)); !error.empty()) return error;
+  return claim(files_of_output(path));
+}
+
+std::string OutputTransaction::write_scene(const shape::Scene& scene, const std::string& path,
+                                           const OutputOptions& options) {
+  if (std::string error = claim_output(path); !error.empty()) return error;
   if (std::string error = io::write_scene(scene, path, options); !error.empty()) return error;
   return cancelled_error();
 }

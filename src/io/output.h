@@ -13,6 +13,7 @@
 #include "io/obj_writer.h"
 #include "io/png_renderer.h"
 #include "io/svg_writer.h"
+#include "io/tileset_writer.h"
 #include "shape/scene.h"
 
 namespace insula::io {
@@ -29,6 +30,7 @@ struct OutputOptions {
   SvgOptions svg;
   ObjOptions obj;
   GltfOptions gltf;
+  TilesetOptions tiles;
 };
 
 // Writes the scene in the path's format, atomically. Empty string on success, else the reason.
@@ -55,6 +57,10 @@ class OutputTransaction {
   // The scene in the path's format (with an OBJ's .mtl). Empty string on success, else the reason.
   std::string write_scene(const shape::Scene& scene, const std::string& path,
                           const OutputOptions& options = {});
+  // Makes the files of an output free for a writer that writes them itself (a tileset written
+  // tile by tile): a 3D Tiles folder is made when missing. Empty string on success, else the
+  // reason.
+  std::string claim_output(const std::string& path);
   // A text file (a report, a grammar). Empty string on success, else the reason.
   std::string write_text(const std::string& path, std::string_view content);
   // Keeps what was written. Empty string on success; when cancelled, rolls back and says so.

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <system_error>
 
 #include "io/atomic_file.h"
@@ -82,104 +83,6 @@ shape::Part tile_part(const shape::Building& building, const shape::Part& part,
   return out;
 }
 
-struct Leaf {
-  std::size_t node = 0;
-  kernel::Bounds3 box;  // of its buildings, local coordinates
-  kernel::Vec3 centre;  // the tile's own origin, local coordinates
-};
-
-// The tree, its leaves' boxes and the building each item is.
-struct Plan {
-  TileTree tree;
-  std::vector<std::size_t> building_of;  // item -> scene building
-  std::vector<kernel::Bounds3> boxes;    // item -> box
-  std::vector<Leaf> leaves;
-};
-
-Plan plan(const shape::Scene& scene, std::size_t tile_faces) {
-  Plan out;
-  std::vector<TileItem> items;
-  for (std::size_t b = 0; b < scene.buildings.size(); ++b) {
-    const kernel::Bounds3 box = building_bounds(scene.buildings[b]);
-    if (box.empty()) continue;
-    out.building_of.push_back(b);
-    out.boxes.push_back(box);
-    items.push_back({{box.min.x, box.min.y},
-                     {box.max.x, box.max.y},
-                     std::max<std::size_t>(building_faces(scene.buildings[b]), 1)});
-  }
-  out.tree = plan_tiles(items, tile_faces);
-  for (std::size_t n = 0; n < out.tree.nodes.size(); ++n) {
-    const TileNode& node = out.tree.nodes[n];
-    if (!node.leaf()) continue;
-    Leaf leaf{n, {}, {}};
-    for (const std::size_t item : node.items) {
-      leaf.box.add(out.boxes[item].min);
-      leaf.box.add(out.boxes[item].max);
-    }
-    leaf.centre = {(leaf.box.min.x + leaf.box.max.x) / 2, (leaf.box.min.y + leaf.box.max.y) / 2, 0};
-    out.leaves.push_back(leaf);
-  }
-  return out;
-}
-
-// Each leaf's region: its box's corners and edge midpoints taken to longitude and latitude (a
-// projected box's edges are nearly straight there), widened by about a centimetre.
-std::vector<Region> leaf_regions(const shape::Scene& scene, const Plan& plan, std::string& error) {
-  std::vector<kernel::Vec2> points;
-  for (const Leaf& leaf : plan.leaves) {
-    for (int i = 0; i < 9; ++i) {
-      const double u = (i % 3) / 2.0;
-      const double v = (i / 3) / 2.0;
-      points.push_back({scene.origin.x + leaf.box.min.x + u * (leaf.box.max.x - leaf.box.min.x),
-                        scene.origin.y + leaf.box.min.y + v * (leaf.box.max.y - leaf.box.min.y)});
-    }
-  }
-  error = reproject(scene.crs, "OGC:CRS84", points);
-  if (!error.empty()) return {};
-  constexpr double kRadians = std::numbers::pi / 180;
-  constexpr double kMargin = 2e-9;  // radians, about 1.3 cm
-  std::vector<Region> regions;
-  for (std::size_t l = 0; l < plan.leaves.size(); ++l) {
-    Region region;
-    for (std::size_t i = 0; i < 9; ++i) {
-      const kernel::Vec2 p = points[9 * l + i];
-      if (!std::isfinite(p.x)) {
-        error = "PROJ cannot place tile " + plan.tree.nodes[plan.leaves[l].node].name() + " of " +
-                scene.crs + " on the globe";
-        return {};
-      }
-      region.add({p.x * kRadians - kMargin, p.y * kRadians - kMargin, p.x * kRadians + kMargin,
-                  p.y * kRadians + kMargin, 0, 0});
-    }
-    region.low = scene.origin.z + plan.leaves[l].box.min.z;
-    region.high = scene.origin.z + plan.leaves[l].box.max.z;
-    regions.push_back(region);
-  }
-  return regions;
-}
-
-// The tile's scene: one building, the tile, whose parts are the parts of its buildings, around
-// the tile's centre (the scene's origin). One mesh then draws the whole tile, and a viewer picks
-// every part as a feature with its building's properties.
-shape::Scene tile_scene(const shape::Scene& scene, const Plan& plan, const Leaf& leaf) {
-  shape::Scene tile;
-  tile.crs = scene.crs;
-  tile.origin = scene.origin + leaf.centre;
-  tile.materials = scene.materials;
-  const TileNode& node = plan.tree.nodes[leaf.node];
-  shape::Building& content = tile.buildings.emplace_back();
-  content.id = node.name();
-  const kernel::Transform offset = kernel::translation(-leaf.centre);
-  for (const std::size_t item : node.items) {
-    const shape::Building& building = scene.buildings[plan.building_of[item]];
-    for (const shape::Part& part : building.parts) {
-      content.parts.push_back(tile_part(building, part, offset));
-    }
-  }
-  return tile;
-}
-
 std::string tile_uri(const TileNode& node) {
   return "tiles/" + node.name() + ".glb";
 }
@@ -189,16 +92,53 @@ double diagonal(const TileNode& node) {
   return std::hypot(size.x, size.y);
 }
 
+// Each box's region: its corners and edge midpoints taken to longitude and latitude (a projected
+// box's edges are nearly straight there), widened by about a centimetre.
+std::vector<Region> regions_of(const std::string& crs, kernel::Vec3 origin,
+                               const std::vector<kernel::Bounds3>& boxes, std::string& error) {
+  std::vector<kernel::Vec2> points;
+  for (const kernel::Bounds3& box : boxes) {
+    for (int i = 0; i < 9; ++i) {
+      const double u = (i % 3) / 2.0;
+      const double v = (i / 3) / 2.0;
+      points.push_back({origin.x + box.min.x + u * (box.max.x - box.min.x),
+                        origin.y + box.min.y + v * (box.max.y - box.min.y)});
+    }
+  }
+  error = reproject(crs, "OGC:CRS84", points);
+  if (!error.empty()) return {};
+  constexpr double kRadians = std::numbers::pi / 180;
+  constexpr double kMargin = 2e-9;  // radians, about 1.3 cm
+  std::vector<Region> regions;
+  for (std::size_t b = 0; b < boxes.size(); ++b) {
+    Region region;
+    for (std::size_t i = 0; i < 9; ++i) {
+      const kernel::Vec2 p = points[9 * b + i];
+      if (!std::isfinite(p.x)) {
+        error = "PROJ cannot place (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ") of " +
+                crs + " on the globe";
+        return {};
+      }
+      region.add({p.x * kRadians - kMargin, p.y * kRadians - kMargin, p.x * kRadians + kMargin,
+                  p.y * kRadians + kMargin, 0, 0});
+    }
+    region.low = origin.z + boxes[b].min.z;
+    region.high = origin.z + boxes[b].max.z;
+    regions.push_back(region);
+  }
+  return regions;
+}
+
+// The tileset's JSON: tiles with content, and inner tiles over them.
 struct TilesetJson {
-  const Plan& plan;
-  const std::vector<Region>& regions;                 // by node
-  const std::vector<std::array<double, 16>>& frames;  // by leaf
-  std::vector<std::size_t> leaf_of;                   // node -> leaf index
+  const TileTree& tree;
+  std::vector<std::optional<Region>> regions;         // by node; none: no content below
+  std::vector<const std::array<double, 16>*> frames;  // by node; leaves only
 
   // A tile's geometric error: none for leaves, else an eighth of its cell's diagonal (at least its
   // children's).
   double error(std::size_t n) const {
-    const TileNode& node = plan.tree.nodes[n];
+    const TileNode& node = tree.nodes[n];
     if (node.leaf()) return 0;
     double e = diagonal(node) / 8;
     for (const std::size_t c : node.children) e = std::max(e, error(c));
@@ -206,15 +146,17 @@ struct TilesetJson {
   }
 
   void tile(JsonStream& json, std::size_t n) const {
-    const TileNode& node = plan.tree.nodes[n];
-    const Region& r = regions[n];
+    const TileNode& node = tree.nodes[n];
+    const Region& r = *regions[n];
     json.begin_object();
     json.key("boundingVolume").begin_object().key("region").begin_array();
     for (const double value : {r.west, r.south, r.east, r.north, r.low, r.high}) json.number(value);
     json.end_array().end_object();
     if (!node.leaf()) {
       json.key("children").begin_array();
-      for (const std::size_t c : node.children) tile(json, c);
+      for (const std::size_t c : node.children) {
+        if (regions[c]) tile(json, c);
+      }
       json.end_array();
     } else {
       json.key("content").begin_object().key("uri").string(tile_uri(node)).end_object();
@@ -223,7 +165,7 @@ struct TilesetJson {
     if (n == 0) json.key("refine").string("REPLACE");
     if (node.leaf()) {
       json.key("transform").begin_array();
-      for (const double value : frames[leaf_of[n]]) json.number(value);
+      for (const double value : *frames[n]) json.number(value);
       json.end_array();
     }
     json.end_object();
@@ -237,7 +179,7 @@ struct TilesetJson {
     json.key("generator").string("Insula");
     json.key("version").string("1.1");
     json.end_object();
-    json.key("geometricError").number(std::max(error(0), diagonal(plan.tree.nodes[0]) / 4));
+    json.key("geometricError").number(std::max(error(0), diagonal(tree.nodes[0]) / 4));
     json.key("root");
     tile(json, 0);
     json.end_object();
@@ -252,52 +194,135 @@ std::filesystem::path tiles_folder(const std::filesystem::path& tileset_json) {
   return tileset_json.parent_path() / "tiles";
 }
 
-std::string write_tileset(const shape::Scene& scene, const std::filesystem::path& tileset_json,
-                          const TilesetOptions& options) {
-  const std::string name = tileset_json.string();
-  if (scene.crs.empty()) {
+TilesetWriter::TilesetWriter(std::filesystem::path tileset_json, std::string crs,
+                             kernel::Vec3 origin, std::vector<shape::Material> materials,
+                             GltfOptions gltf, TilesetOptions options)
+    : path_(std::move(tileset_json)),
+      crs_(std::move(crs)),
+      origin_(origin),
+      materials_(std::move(materials)),
+      gltf_(gltf),
+      options_(options) {
+  gltf_.nodes = GltfOptions::Nodes::kBuilding;
+}
+
+std::string TilesetWriter::plan(std::span<const TileItem> items) {
+  const std::string name = path_.string();
+  if (crs_.empty()) {
     return name +
            ": 3D Tiles place the buildings on the globe, but they have no coordinate reference "
            "system (give --crs, or georeferenced input)";
   }
-  const Plan tiles = plan(scene, options.tile_faces);
-  if (tiles.leaves.empty()) return name + ": no building has geometry; no tiles written";
-  std::string error;
-  std::vector<Region> leaf_region = leaf_regions(scene, tiles, error);
-  if (!error.empty()) return name + ": " + error;
+  tree_ = plan_tiles(items, options_.tile_faces);
+  leaves_.clear();
   std::vector<kernel::Vec3> centres;
-  for (const Leaf& leaf : tiles.leaves) centres.push_back(scene.origin + leaf.centre);
-  const std::vector<std::array<double, 16>> frames = ecef_frames(scene.crs, centres, error);
+  for (std::size_t n = 0; n < tree_.nodes.size(); ++n) {
+    const TileNode& node = tree_.nodes[n];
+    if (!node.leaf()) continue;
+    kernel::Bounds3 plan_box;
+    for (const std::size_t item : node.items) {
+      plan_box.add({items[item].min.x, items[item].min.y, 0});
+      plan_box.add({items[item].max.x, items[item].max.y, 0});
+    }
+    Leaf& leaf = leaves_.emplace_back();
+    leaf.node = n;
+    leaf.centre = {(plan_box.min.x + plan_box.max.x) / 2, (plan_box.min.y + plan_box.max.y) / 2, 0};
+    centres.push_back(origin_ + leaf.centre);
+  }
+  std::string error;
+  const std::vector<std::array<double, 16>> frames = ecef_frames(crs_, centres, error);
   if (!error.empty()) return name + ": " + error;
-
+  for (std::size_t l = 0; l < leaves_.size(); ++l) leaves_[l].frame = frames[l];
   std::error_code made;
-  std::filesystem::create_directories(tiles_folder(tileset_json), made);
-  if (made) return tiles_folder(tileset_json).string() + ": " + made.message();
-  GltfOptions gltf = options.gltf;
-  gltf.nodes = GltfOptions::Nodes::kBuilding;
-  std::vector<std::string> errors(tiles.leaves.size());
-  tbb::parallel_for(std::size_t{0}, tiles.leaves.size(), [&](std::size_t l) {
-    const Leaf& leaf = tiles.leaves[l];
-    const std::filesystem::path file =
-        tileset_json.parent_path() / tile_uri(tiles.tree.nodes[leaf.node]);
-    errors[l] = write_gltf(tile_scene(scene, tiles, leaf), file, gltf);
+  std::filesystem::create_directories(tiles_folder(path_), made);
+  if (made) return tiles_folder(path_).string() + ": " + made.message();
+  return {};
+}
+
+const std::vector<std::size_t>& TilesetWriter::leaf_items(std::size_t leaf) const {
+  return tree_.nodes[leaves_[leaf].node].items;
+}
+
+// The tile's scene: one building, the tile, whose parts are the parts of its buildings, around
+// the tile's centre (the scene's origin). One mesh then draws the whole tile, and a viewer picks
+// every part as a feature with its building's properties.
+std::string TilesetWriter::write_tile(std::size_t l,
+                                      const std::vector<const shape::Building*>& buildings) {
+  Leaf& leaf = leaves_[l];
+  shape::Scene tile;
+  tile.crs = crs_;
+  tile.origin = origin_ + leaf.centre;
+  tile.materials = materials_;
+  shape::Building& content = tile.buildings.emplace_back();
+  content.id = tree_.nodes[leaf.node].name();
+  const kernel::Transform offset = kernel::translation(-leaf.centre);
+  for (const shape::Building* building : buildings) {
+    const kernel::Bounds3 box = building_bounds(*building);
+    if (box.empty()) continue;
+    leaf.box.add(box.min);
+    leaf.box.add(box.max);
+    for (const shape::Part& part : building->parts) {
+      content.parts.push_back(tile_part(*building, part, offset));
+    }
+  }
+  if (leaf.box.empty()) return {};
+  return write_gltf(tile, path_.parent_path() / tile_uri(tree_.nodes[leaf.node]), gltf_);
+}
+
+std::string TilesetWriter::finish() {
+  const std::string name = path_.string();
+  std::vector<kernel::Bounds3> boxes;
+  for (const Leaf& leaf : leaves_) {
+    if (!leaf.box.empty()) boxes.push_back(leaf.box);
+  }
+  if (boxes.empty()) return name + ": no building has geometry; no tiles written";
+  std::string error;
+  const std::vector<Region> leaf_regions = regions_of(crs_, origin_, boxes, error);
+  if (!error.empty()) return name + ": " + error;
+  TilesetJson json{tree_, std::vector<std::optional<Region>>(tree_.nodes.size()),
+                   std::vector<const std::array<double, 16>*>(tree_.nodes.size(), nullptr)};
+  std::size_t next = 0;
+  for (const Leaf& leaf : leaves_) {
+    if (leaf.box.empty()) continue;
+    json.regions[leaf.node] = leaf_regions[next++];
+    json.frames[leaf.node] = &leaf.frame;
+  }
+  // Inner tiles: the union of their children's regions (children come after their parents).
+  for (std::size_t n = tree_.nodes.size(); n-- > 0;) {
+    for (const std::size_t c : tree_.nodes[n].children) {
+      if (!json.regions[c]) continue;
+      if (!json.regions[n]) json.regions[n] = Region{};
+      json.regions[n]->add(*json.regions[c]);
+    }
+  }
+  return write_file_atomically(path_, json.text());
+}
+
+std::string write_tileset(const shape::Scene& scene, const std::filesystem::path& tileset_json,
+                          const GltfOptions& gltf, const TilesetOptions& options) {
+  TilesetWriter writer(tileset_json, scene.crs, scene.origin, scene.materials, gltf, options);
+  std::vector<TileItem> items;
+  std::vector<const shape::Building*> building_of;
+  for (const shape::Building& building : scene.buildings) {
+    const kernel::Bounds3 box = building_bounds(building);
+    if (box.empty()) continue;
+    building_of.push_back(&building);
+    items.push_back({{box.min.x, box.min.y},
+                     {box.max.x, box.max.y},
+                     std::max<std::size_t>(building_faces(building), 1)});
+  }
+  if (items.empty()) return tileset_json.string() + ": no building has geometry; no tiles written";
+  if (std::string error = writer.plan(items); !error.empty()) return error;
+  std::vector<std::string> errors(writer.leaf_count());
+  tbb::parallel_for(std::size_t{0}, writer.leaf_count(), [&](std::size_t l) {
+    std::vector<const shape::Building*> buildings;
+    for (const std::size_t item : writer.leaf_items(l)) buildings.push_back(building_of[item]);
+    errors[l] = writer.write_tile(l, buildings);
   });
   for (const std::string& e : errors) {
     if (!e.empty()) return e;
   }
-
-  // Regions of inner tiles: the union of their children's, children being added after parents.
-  std::vector<Region> regions(tiles.tree.nodes.size());
-  std::vector<std::size_t> leaf_of(tiles.tree.nodes.size(), 0);
-  for (std::size_t l = 0; l < tiles.leaves.size(); ++l) {
-    regions[tiles.leaves[l].node] = leaf_region[l];
-    leaf_of[tiles.leaves[l].node] = l;
-  }
-  for (std::size_t n = tiles.tree.nodes.size(); n-- > 0;) {
-    for (const std::size_t c : tiles.tree.nodes[n].children) regions[n].add(regions[c]);
-  }
-  const TilesetJson json{tiles, regions, frames, std::move(leaf_of)};
-  return write_file_atomically(tileset_json, json.text());
+  return writer.finish();
 }
 
 }  // namespace insula::io

@@ -5,33 +5,75 @@
 // grid convergence and scale are taken along), as one node and one mesh (a primitive per
 // material: few draw calls) whose every part is a feature (EXT_mesh_features) with its row in the
 // property table (io/gltf_metadata.h): its name and kind, `building` (its building's id) and its
-// building's attributes where the part has none of its own.
-// Every tile has a `region` bounding volume (radians and ellipsoidal heights); inner tiles are
-// empty, refine REPLACE, and their geometric error is an eighth of their cell's diagonal, so a
-// viewer loads a leaf when the camera comes within a few kilometres of it. The scene's z is taken
-// as the height above the WGS 84 ellipsoid. Output is deterministic, whatever the thread count.
+// building's attributes where the part has none of its own. Every tile has a `region` bounding
+// volume (radians and ellipsoidal heights); inner tiles are empty, refine REPLACE, and their
+// geometric error is an eighth of their cell's diagonal, so a viewer loads a leaf when the camera
+// comes within a few kilometres of it. The scene's z is taken as the height above the WGS 84
+// ellipsoid. Output is deterministic, whatever the thread count.
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "io/gltf_writer.h"
+#include "io/tile_tree.h"
 #include "shape/scene.h"
 
 namespace insula::io {
 
 struct TilesetOptions {
-  GltfOptions gltf{};              // of the tiles (`nodes` is ignored)
   std::size_t tile_faces = 50000;  // a tile splits while its buildings have more faces
 };
 
 // The folder of the tiles of `tileset_json`: its sibling "tiles".
 std::filesystem::path tiles_folder(const std::filesystem::path& tileset_json);
 
-// Writes the tiles into tiles_folder(tileset_json) (which must not exist yet or be empty of
-// anything else) and then tileset.json. The scene needs a CRS. Empty string on success, else the
-// reason, naming the file.
+// Writes a tileset tile by tile, so that a city need not be in memory at once: plan() groups the
+// buildings-to-be by their plan boxes, write_tile() takes each leaf's buildings when they are made
+// (from any thread, each leaf once), finish() writes tileset.json.
+class TilesetWriter {
+ public:
+  // `origin` and `crs`: the buildings' local coordinates are world - origin in `crs`.
+  // The tiles' GLBs are written with `gltf` (its `nodes` is ignored: a tile is one node).
+  TilesetWriter(std::filesystem::path tileset_json, std::string crs, kernel::Vec3 origin,
+                std::vector<shape::Material> materials, GltfOptions gltf = {},
+                TilesetOptions options = {});
+
+  // Plans the tiles of `items` (plan boxes in local coordinates, weights: faces) and places each
+  // leaf on the globe. Empty string on success, else the reason (no CRS, PROJ cannot place it).
+  std::string plan(std::span<const TileItem> items);
+  std::size_t leaf_count() const { return leaves_.size(); }
+  // The items of leaf `leaf`, ascending.
+  const std::vector<std::size_t>& leaf_items(std::size_t leaf) const;
+  // Writes leaf `leaf`'s GLB from its buildings (local coordinates). Thread-safe for distinct
+  // leaves. Empty string on success, else the reason naming the file.
+  std::string write_tile(std::size_t leaf, const std::vector<const shape::Building*>& buildings);
+  // Writes tileset.json once every leaf is written (a leaf without geometry is left out).
+  std::string finish();
+
+ private:
+  struct Leaf {
+    std::size_t node = 0;
+    kernel::Vec3 centre;  // the tile's own origin, local coordinates
+    kernel::Bounds3 box;  // of its written geometry, local coordinates
+    std::array<double, 16> frame{};
+  };
+
+  std::filesystem::path path_;
+  std::string crs_;
+  kernel::Vec3 origin_;
+  std::vector<shape::Material> materials_;
+  GltfOptions gltf_;
+  TilesetOptions options_;
+  TileTree tree_;
+  std::vector<Leaf> leaves_;
+};
+
+// The whole scene at once. The scene needs a CRS. Empty string on success, else the reason, naming
+// the file.
 std::string write_tileset(const shape::Scene& scene, const std::filesystem::path& tileset_json,
-                          const TilesetOptions& options = {});
+                          const GltfOptions& gltf = {}, const TilesetOptions& options = {});
 
 }  // namespace insula::io

@@ -187,7 +187,7 @@ TEST(TilesetWriter, TilesPlaceEveryBuildingOnTheGlobe) {
   const std::filesystem::path dir = testing::temp_dir("tileset_city");
   TilesetOptions options;
   options.tile_faces = 600;  // 7 faces a building: about 85 buildings a tile
-  ASSERT_EQ(write_tileset(scene, dir / "tileset.json", options), "");
+  ASSERT_EQ(write_tileset(scene, dir / "tileset.json", {}, options), "");
   const nlohmann::json tileset = read_json(dir / "tileset.json");
   EXPECT_EQ(tileset.at("asset").at("version"), "1.1");
   EXPECT_GT(tileset.at("geometricError").get<double>(),
@@ -273,8 +273,8 @@ TEST(TilesetWriter, SameTilesetWhateverTheRun) {
   const std::filesystem::path b = testing::temp_dir("tileset_b");
   TilesetOptions options;
   options.tile_faces = 100;
-  ASSERT_EQ(write_tileset(scene, a / "tileset.json", options), "");
-  ASSERT_EQ(write_tileset(scene, b / "tileset.json", options), "");
+  ASSERT_EQ(write_tileset(scene, a / "tileset.json", {}, options), "");
+  ASSERT_EQ(write_tileset(scene, b / "tileset.json", {}, options), "");
   EXPECT_EQ(testing::read_file(a / "tileset.json"), testing::read_file(b / "tileset.json"));
   for (const auto& entry : std::filesystem::directory_iterator(a / "tiles")) {
     EXPECT_EQ(testing::read_file(entry.path()),

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <thread>
 
 #include "apps/cli/build_command.h"
@@ -17,6 +18,7 @@
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
+#include "apps/cli/mass_build.h"
 #include "apps/cli/mass_plan.h"
 #include "apps/cli/mass_report.h"
 #include "apps/cli/progress.h"
@@ -27,6 +29,7 @@
 #include "base/diagnostic.h"
 #include "io/geojson_reader.h"
 #include "io/output.h"
+#include "io/tileset_writer.h"
 #include "kernel/mass.h"
 #include "shape/scene.h"
 
@@ -37,110 +40,21 @@ const std::vector<std::string> kRoofNames = {
     "flat",    "shed",        "gable",   "hip",   "pyramid", "mansard", "holed_mansard",
     "gambrel", "half_hipped", "saltbox", "round", "dome",    "onion"};
 
-struct BuiltBuilding {
-  shape::Building building;
-  std::vector<std::string> messages;  // fallbacks and failures, reported in input order
-  bool watertight = true;
-  double top = 0;  // highest point built
-};
-
-void paint(const FootprintPlan& plan, kernel::Mesh& mesh) {
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    kernel::FaceTag& tag = mesh.tag(f);
-    if (tag.semantic == kernel::SemanticClass::kWallSurface) {
-      tag.material = plan.wall_material;
-    } else if (tag.semantic == kernel::SemanticClass::kRoofSurface ||
-               tag.semantic == kernel::SemanticClass::kOuterCeilingSurface) {
-      tag.material = plan.roof_material;
-    }
-  }
-}
-
-BuiltBuilding build_one(const io::Footprint& footprint, const FootprintPlan& plan) {
-  BuiltBuilding out;
-  out.building.id = footprint.id;
-  out.building.attributes = footprint.properties;
-  kernel::RoofType built_roof = plan.spec.roof;
-  for (std::size_t i = 0; i < footprint.polygons.size(); ++i) {
-    kernel::MassResult mass = kernel::build_mass(footprint.polygons[i], plan.spec);
-    if (!mass.message.empty()) out.messages.push_back(mass.message);
-    built_roof = mass.roof;
-    shape::Part part;
-    part.name =
-        footprint.polygons.size() == 1 ? footprint.id : footprint.id + "-part-" + std::to_string(i);
-    part.kind = shape::PartKind::kBuildingPart;
-    part.mesh = std::move(mass.mesh);
-    paint(plan, part.mesh);
-    // build_mass promises shared vertices, so the topological check needs no welding.
-    out.watertight = out.watertight && !part.mesh.empty() && kernel::check(part.mesh).closed &&
-                     kernel::volume(part.mesh) > 0;
-    if (!part.mesh.empty()) out.top = std::max(out.top, part.mesh.bounds().max.z);
-    out.building.parts.push_back(std::move(part));
-  }
-  add_form_attributes(plan.form, built_roof, out.top, out.building.attributes);
-  return out;
-}
-
-// Builds every footprint in parallel; results land by index, so the output does not depend on the
+// Builds every unit in parallel; results land by index, so the output does not depend on the
 // thread count. After an interruption the workers build nothing more (the caller checks).
 std::vector<BuiltBuilding> build_all(const io::FootprintSet& set, const MassPlan& plan,
-                                     bool quiet) {
-  std::vector<BuiltBuilding> built(set.footprints.size());
+                                     const std::vector<MassUnit>& units, bool quiet) {
+  std::vector<BuiltBuilding> built(units.size());
   Progress progress("buildings", built.size(), quiet);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, built.size(), 64),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t i = range.begin(); i != range.end(); ++i) {
                         if (interrupted()) return;
-                        // An outline replaced by its building:part features is not built.
-                        if (plan.footprints[i].replaced) continue;
-                        built[i] = build_one(set.footprints[i], plan.footprints[i]);
+                        built[i] = build_unit(set, plan, units[i]);
                       }
                       progress.advance(range.size());
                     });
   return built;
-}
-
-// A building of the scene and the feature it came from (an outline, for joined parts).
-struct Assembled {
-  BuiltBuilding built;
-  std::size_t feature = 0;
-};
-
-// S3DB: the building:part features of a replaced outline become the parts of one building named
-// after the outline, with its properties; every other footprint is a building of its own.
-std::vector<Assembled> assemble(const io::FootprintSet& set, const MassPlan& plan,
-                                std::vector<BuiltBuilding>& built) {
-  std::vector<std::vector<std::size_t>> parts_of(built.size());
-  for (std::size_t i = 0; i < built.size(); ++i) {
-    if (plan.footprints[i].outline) parts_of[*plan.footprints[i].outline].push_back(i);
-  }
-  std::vector<Assembled> out;
-  for (std::size_t i = 0; i < built.size(); ++i) {
-    if (plan.footprints[i].outline) continue;
-    if (!plan.footprints[i].replaced) {
-      out.push_back({std::move(built[i]), i});
-      continue;
-    }
-    Assembled joined;
-    joined.feature = i;
-    joined.built.building.id = set.footprints[i].id;
-    joined.built.building.attributes = set.footprints[i].properties;
-    for (const std::size_t p : parts_of[i]) {
-      BuiltBuilding& part = built[p];
-      joined.built.watertight = joined.built.watertight && part.watertight;
-      joined.built.top = std::max(joined.built.top, part.top);
-      for (std::string& m : part.messages) {
-        joined.built.messages.push_back("part \"" + part.building.id + "\": " + m);
-      }
-      for (shape::Part& mesh_part : part.building.parts) {
-        mesh_part.attributes = part.building.attributes;
-        joined.built.building.parts.push_back(std::move(mesh_part));
-      }
-    }
-    joined.built.building.attributes["insula:height"] = joined.built.top;
-    out.push_back(std::move(joined));
-  }
-  return out;
 }
 
 // A footprint that gave no closed shell: an error, or a warning with --keep-going.
@@ -213,6 +127,165 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
   });
 }
 
+namespace {
+
+// Warnings and failures of the built buildings, in input order; counts the ones the outputs get.
+// Returns how many gave no closed building.
+std::size_t account(const MassOptions& options, const io::FootprintSet& set,
+                    const std::vector<BuiltBuilding>& built, std::vector<Warning>& warnings,
+                    MassReport& report) {
+  std::size_t failed = 0;
+  for (const BuiltBuilding& b : built) {
+    for (const std::string& m : b.messages)
+      warnings.push_back({"MAS004", "building \"" + b.building.id + "\": " + m});
+    if (!b.watertight) {
+      ++failed;
+      report_failed_building(options, set.footprints[b.feature], b);
+      if (options.keep_going) continue;
+    }
+    report.count_building(b.building, b.watertight);
+    if (options.report_buildings) report.describe_building(b.building);
+  }
+  return failed;
+}
+
+void add_overlaps(const io::FootprintSet& set, const MassPlan& plan, MassReport& report) {
+  report.overlaps = plan.overlap_summary.pairs;
+  if (plan.overlap_summary.pairs > 0) {
+    report.largest_overlap = {set.footprints[plan.overlap_summary.largest_first].id,
+                              set.footprints[plan.overlap_summary.largest_second].id,
+                              plan.overlap_summary.largest_area};
+  }
+}
+
+// Fails the run when buildings failed without --keep-going or none was made; else 0.
+int check_built(const MassOptions& options, std::size_t failed, std::size_t made,
+                std::size_t total) {
+  if (failed > 0 && !options.keep_going) {
+    std::fprintf(
+        stderr,
+        "insula: %zu of %zu buildings failed; nothing written (--keep-going leaves them out)\n",
+        failed, total);
+    return kExitInput;
+  }
+  if (made == 0) {
+    std::fprintf(stderr, "insula: error: no building could be made; nothing written\n");
+    return kExitInput;
+  }
+  return 0;
+}
+
+void emit_mass_warnings(const MassOptions& options, const std::vector<Warning>& warnings,
+                        MassReport& report) {
+  for (const Warning& w : warnings) {
+    emit_warning(w.code, options.input + ": warning[" + w.code + "]: " + w.text, options.quiet);
+  }
+  report.warnings = warning_total();
+  report.warning_counts = warning_counts();
+}
+
+// The report, the commit point, and what a finished run prints.
+int finish_mass(const MassOptions& options, MassReport& report, const Stopwatch& total,
+                io::OutputTransaction& transaction) {
+  report.total_seconds = total.seconds();
+  if (!options.report.empty()) {
+    if (const std::string error = transaction.write_text(options.report, report.json());
+        !error.empty()) {
+      return write_failure(error);
+    }
+  }
+  if (const std::string error = transaction.commit(); !error.empty()) return write_failure(error);
+  finish_warnings(options.quiet);
+  if (!options.quiet) {
+    std::fprintf(stderr, "insula: %zu buildings in %.2f s\n", report.buildings,
+                 report.total_seconds);
+  }
+  for (const std::string& out : options.outputs) std::printf("%s\n", out.c_str());
+  return kExitDone;
+}
+
+// Every output a 3D Tiles tileset: the city is built tile by tile and never held whole.
+bool tiles_only(const std::vector<std::string>& outputs) {
+  return std::all_of(outputs.begin(), outputs.end(), [](const std::string& out) {
+    return io::output_format_name(out) == "3dtiles";
+  });
+}
+
+// A built building whose meshes are written: what the report and the warnings still need.
+void drop_meshes(BuiltBuilding& built) {
+  for (shape::Part& part : built.building.parts) part.mesh = kernel::Mesh();
+}
+
+// The 3D Tiles job (issue 17): the units are grouped into tiles by where they stand, and each tile
+// is built (its units in parallel) and written before the next, so memory holds the footprints
+// and the tiles in flight, never the city.
+int run_mass_tiles(const MassOptions& options, const io::FootprintSet& set, const MassPlan& plan,
+                   const std::vector<MassUnit>& units, std::vector<Warning>& warnings,
+                   MassReport& report, const Stopwatch& total) {
+  const Stopwatch build_clock;
+  std::vector<io::TileItem> items;
+  items.reserve(units.size());
+  for (const MassUnit& unit : units) items.push_back(unit_tile_item(set, unit, options.overhang));
+  io::OutputTransaction transaction(interrupted);
+  std::vector<std::unique_ptr<io::TilesetWriter>> writers;
+  for (const std::string& out : options.outputs) {
+    if (const std::string error = transaction.claim_output(out); !error.empty()) {
+      return write_failure(error);
+    }
+    writers.push_back(std::make_unique<io::TilesetWriter>(
+        out, set.crs, set.origin, plan.materials, options.output.gltf, options.output.tiles));
+    if (const std::string error = writers.back()->plan(items); !error.empty()) {
+      return write_failure(error);
+    }
+  }
+  const io::TilesetWriter& layout = *writers.front();
+  std::vector<BuiltBuilding> built(units.size());
+  std::vector<MassReport> tallies(layout.leaf_count());  // vertices, faces, triangles per tile
+  std::vector<std::string> errors(layout.leaf_count());
+  Progress progress("buildings", units.size(), options.quiet);
+  tbb::parallel_for(std::size_t{0}, layout.leaf_count(), [&](std::size_t leaf) {
+    if (interrupted()) return;
+    const std::vector<std::size_t>& members = layout.leaf_items(leaf);
+    tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t k) {
+      built[members[k]] = build_unit(set, plan, units[members[k]]);
+    });
+    std::vector<const shape::Building*> kept;
+    for (const std::size_t unit : members) {
+      const BuiltBuilding& b = built[unit];
+      if (!b.watertight && options.keep_going) continue;
+      kept.push_back(&b.building);
+      tallies[leaf].count_building(b.building, b.watertight);
+    }
+    for (const auto& writer : writers) {
+      if (errors[leaf].empty()) errors[leaf] = writer->write_tile(leaf, kept);
+    }
+    for (const std::size_t unit : members) drop_meshes(built[unit]);
+    progress.advance(members.size());
+  });
+  if (const int code = stop_if_interrupted(); code != 0) return code;
+  for (const std::string& error : errors) {
+    if (!error.empty()) return write_failure(error);
+  }
+  const std::size_t failed = account(options, set, built, warnings, report);
+  for (const MassReport& tally : tallies) {
+    report.vertices += tally.vertices;
+    report.faces += tally.faces;
+    report.triangles += tally.triangles;
+  }
+  if (const int code = check_built(options, failed, report.buildings, built.size()); code != 0) {
+    return code;
+  }
+  report.failed = failed;
+  report.stage("build and write 3dtiles", build_clock.seconds());
+  emit_mass_warnings(options, warnings, report);
+  for (const auto& writer : writers) {
+    if (const std::string error = writer->finish(); !error.empty()) return write_failure(error);
+  }
+  return finish_mass(options, report, total, transaction);
+}
+
+}  // namespace
+
 int run_mass(const MassOptions& options) {
   Stopwatch total;
   MassReport report;
@@ -243,52 +316,30 @@ int run_mass(const MassOptions& options) {
   const MassPlan plan = plan_mass(options, set.value(), warnings);
   report.stage("plan", build_clock.seconds());
   build_clock = Stopwatch();
-  std::vector<BuiltBuilding> built = build_all(set.value(), plan, options.quiet);
+  const std::vector<MassUnit> units = mass_units(plan);
+  add_overlaps(set.value(), plan, report);
+  if (tiles_only(options.outputs)) {
+    return run_mass_tiles(options, set.value(), plan, units, warnings, report, total);
+  }
+  std::vector<BuiltBuilding> built = build_all(set.value(), plan, units, options.quiet);
   if (const int code = stop_if_interrupted(); code != 0) return code;
+  const std::size_t failed = account(options, set.value(), built, warnings, report);
   shape::Scene scene;
   scene.origin = set->origin;
   scene.crs = set->crs;
   scene.materials = plan.materials;
-  std::vector<Assembled> buildings = assemble(set.value(), plan, built);
-  scene.buildings.reserve(buildings.size());
-  std::size_t failed = 0;
-  for (Assembled& a : buildings) {
-    BuiltBuilding& b = a.built;
-    for (std::string& m : b.messages)
-      warnings.push_back({"MAS004", "building \"" + b.building.id + "\": " + m});
-    if (!b.watertight) {
-      ++failed;
-      report_failed_building(options, set->footprints[a.feature], b);
-      if (options.keep_going) continue;
-    }
-    report.count_building(b.building, b.watertight);
-    if (options.report_buildings) report.describe_building(b.building);
+  scene.buildings.reserve(built.size());
+  for (BuiltBuilding& b : built) {
+    if (!b.watertight && options.keep_going) continue;
     scene.buildings.push_back(std::move(b.building));
   }
-  report.overlaps = plan.overlap_summary.pairs;
-  if (plan.overlap_summary.pairs > 0) {
-    report.largest_overlap = {set->footprints[plan.overlap_summary.largest_first].id,
-                              set->footprints[plan.overlap_summary.largest_second].id,
-                              plan.overlap_summary.largest_area};
-  }
-  if (failed > 0 && !options.keep_going) {
-    std::fprintf(
-        stderr,
-        "insula: %zu of %zu buildings failed; nothing written (--keep-going leaves them out)\n",
-        failed, buildings.size());
-    return kExitInput;
-  }
-  if (scene.buildings.empty()) {
-    std::fprintf(stderr, "insula: error: no building could be made; nothing written\n");
-    return kExitInput;
+  if (const int code = check_built(options, failed, scene.buildings.size(), built.size());
+      code != 0) {
+    return code;
   }
   report.failed = failed;
   report.stage("build", build_clock.seconds());
-  for (const Warning& w : warnings) {
-    emit_warning(w.code, options.input + ": warning[" + w.code + "]: " + w.text, options.quiet);
-  }
-  report.warnings = warning_total();
-  report.warning_counts = warning_counts();
+  emit_mass_warnings(options, warnings, report);
 
   io::OutputTransaction transaction(interrupted);
   for (const std::string& out : options.outputs) {
@@ -299,21 +350,7 @@ int run_mass(const MassOptions& options) {
     }
     report.stage("write " + io::output_format_name(out), write_clock.seconds());
   }
-  report.total_seconds = total.seconds();
-  if (!options.report.empty()) {
-    if (const std::string error = transaction.write_text(options.report, report.json());
-        !error.empty()) {
-      return write_failure(error);
-    }
-  }
-  if (const std::string error = transaction.commit(); !error.empty()) return write_failure(error);
-  finish_warnings(options.quiet);
-  if (!options.quiet) {
-    std::fprintf(stderr, "insula: %zu buildings in %.2f s\n", scene.buildings.size(),
-                 report.total_seconds);
-  }
-  for (const std::string& out : options.outputs) std::printf("%s\n", out.c_str());
-  return kExitDone;
+  return finish_mass(options, report, total, transaction);
 }
 
 }  // namespace insula::cli

@@ -100,6 +100,11 @@ void add_view_options(CLI::App& command, io::OutputOptions& output) {
                    "GLB/glTF buffers compressed with EXT_meshopt_compression (meshoptimizer; "
                    "three.js, Babylon.js, Cesium and gltfpack read it, Blender does not)");
   command
+      .add_option("--tile-faces", output.tiles.tile_faces,
+                  "3D Tiles: a tile splits into four while its buildings have more faces than "
+                  "this (default 50000)")
+      ->check(CLI::Range(std::size_t{100}, std::size_t{100000000}));
+  command
       .add_option("--svg-scale", output.svg.pixels_per_meter,
                   "SVG picture scale in pixels per meter (default: fit 1000 pixels)")
       ->check(finite_range(0.01, 1000.0));

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# 3D Tiles output (`-o DIR/tileset.json`, docs/formats.md "3D Tiles"): the bundled town (projected)
+# and the OpenStreetMap town (longitude/latitude) written as tilesets and opened the way users open
+# them (tools/check_tileset.mjs: structure, Khronos validator per tile, loaders.gl traversal,
+# CesiumJS in headless Chromium: every feature loaded, placed where the input lies); the streamed
+# job (only tilesets out) and the whole-scene job (with another output) write the same bytes,
+# whatever the thread count; a failing run leaves the user's earlier tileset as it was.
+source "$(dirname "$0")/lib/common.sh"
+
+check_tileset() {  # description, tileset.json, checker options...
+  local what=$1
+  shift
+  node "$root/tools/check_tileset.mjs" "$@" >"$tmp/c.txt" 2>&1 || { fail "$what"; cat "$tmp/c.txt"; }
+}
+
+# The folder is made; the town (EPSG:32633) lies at 14.3869 E, 49.0063 N.
+expect_exit 0 "town to 3D Tiles" "$insula" mass "$root/examples/town.geojson" \
+  -o "$tmp/town/tileset.json" --quiet
+[ -f "$tmp/town/tiles/0-0-0.glb" ] || fail "town: no tile file"
+# OpenStreetMap in longitude/latitude: 17 parts of 12 buildings (a church of three parts...).
+expect_exit 0 "OSM town to 3D Tiles" "$insula" mass "$root/examples/osm/town.osm" \
+  -o "$tmp/osm/tileset.json" --quiet
+check_tileset "OSM town opens in CesiumJS and loaders.gl" "$tmp/osm/tileset.json" \
+  --expect-features 17 --lonlat 11.3945,47.2655 --tolerance-m 50
+grep -q '"building":"relation/3001"' "$tmp/c.txt" || fail "OSM town: picked feature's building"
+
+# Many tiles: 2,500 generated footprints split into tiles of at most 8,000 faces.
+node "$root/bench/make_footprints.mjs" 2500 "$tmp/grid.geojson" >/dev/null
+for threads in 1 2; do
+  expect_exit 0 "grid, $threads thread(s)" "$insula" mass "$tmp/grid.geojson" --crs EPSG:32633 \
+    --tile-faces 8000 --threads "$threads" -o "$tmp/grid$threads/tileset.json" --quiet
+done
+diff -r "$tmp/grid1" "$tmp/grid2" >/dev/null || fail "grid: tiles differ between 1 and 2 threads"
+# With a GLB beside it the whole scene is built first: the same tiles.
+expect_exit 0 "grid with a GLB" "$insula" mass "$tmp/grid.geojson" --crs EPSG:32633 \
+  --tile-faces 8000 -o "$tmp/gridw/tileset.json" -o "$tmp/grid.glb" --quiet
+diff -r "$tmp/grid1" "$tmp/gridw" >/dev/null || fail "grid: streamed and whole-scene tiles differ"
+leaves=$(ls "$tmp/grid1/tiles" | wc -l)
+[ "$leaves" -ge 4 ] || fail "grid: $leaves tiles, expected several"
+check_tileset "grid opens in CesiumJS and loaders.gl" "$tmp/grid1/tileset.json" \
+  --expect-features 2500
+
+# A building without a CRS cannot be placed: exit 1, the earlier tileset untouched.
+cp -r "$tmp/grid1" "$tmp/keep"
+echo "mine" >"$tmp/keep/tiles/notes.txt"
+cp -r "$tmp/keep" "$tmp/keep.before"
+expect_exit 1 "no CRS" "$insula" build "$root/examples/bldg/domus.bldg" \
+  -o "$tmp/keep/tileset.json" --quiet
+grep -q "no coordinate reference system" "$tmp/err.txt" || { fail "no CRS: message"; cat "$tmp/err.txt"; }
+diff -r "$tmp/keep" "$tmp/keep.before" >/dev/null || fail "no CRS: the earlier tileset changed"
+ls "$tmp" | grep -q "insula-backup" && fail "no CRS: a backup was left behind"
+# The folder's parent must exist.
+expect_exit 1 "missing parent folder" "$insula" mass "$root/examples/town.geojson" \
+  -o "$tmp/no/such/tileset.json" --quiet
+
+finish tileset
