@@ -7,6 +7,8 @@
 // feature start only when a diagnostic needs them.
 #include "io/geojson_reader.h"
 
+#include <oneapi/tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -321,6 +323,7 @@ class Reader : public FootprintBuilder {
   void read_top_level(const json& doc);
   void read_crs(const json& doc);
   FeatureState& add_feature(std::size_t offset);
+  void read_features(const std::vector<std::size_t>& offsets);
   void read_feature(const json& value, std::size_t index, std::size_t offset);
   void read_geometry(FeatureState& feature, const json& geometry);
   void read_properties(FeatureState& feature, const json& value);
@@ -394,10 +397,29 @@ bool Reader::prescan() {
 }
 
 // Stage 2: JSON. The DOM parse runs without exceptions; only on failure a second, validating
-// SAX pass finds the error's position and nlohmann's message.
+// SAX pass finds the error's position and nlohmann's message. The elements of the root's
+// "features" array are checked but not kept: read_features() parses them one batch at a time, so
+// a city's features are never all in memory as JSON.
 std::optional<json> Reader::parse() {
   const char* begin = text_.data();
-  json doc = json::parse(begin, begin + text_.size(), nullptr, false);
+  bool in_features = false;
+  bool features_key = false;
+  const json::parser_callback_t drop_features = [&](int depth, json::parse_event_t event,
+                                                    json& parsed) {
+    using Event = json::parse_event_t;
+    if (depth == 1 && event == Event::key) {
+      features_key = parsed == "features";
+    } else if (depth == 1 && event == Event::array_start) {
+      in_features = features_key;
+    } else if (depth == 1 && event == Event::array_end) {
+      in_features = false;
+    } else if (depth == 2 && in_features &&
+               (event == Event::object_end || event == Event::array_end || event == Event::value)) {
+      return false;
+    }
+    return true;
+  };
+  json doc = json::parse(begin, begin + text_.size(), drop_features, false);
   if (!doc.is_discarded()) return doc;
   ErrorCatcher catcher;
   json::sax_parse(begin, begin + text_.size(), &catcher);
@@ -449,10 +471,7 @@ void Reader::read_top_level(const json& doc) {
              at == kNone ? root_offset_ : at);
       return;
     }
-    const std::vector<std::size_t> offsets = locator_.elements(at);
-    for (std::size_t i = 0; i < features->size() && !stopped_; ++i) {
-      read_feature((*features)[i], i, i < offsets.size() ? offsets[i] : kNone);
-    }
+    read_features(locator_.elements(at));
   } else if (name == "Feature") {
     read_feature(doc, 0, root_offset_);
   } else if (name == "Polygon" || name == "MultiPolygon") {
@@ -504,6 +523,25 @@ FeatureState& Reader::add_feature(std::size_t offset) {
   feature.index = index;
   feature.offset = offset;
   return feature;
+}
+
+// The FeatureCollection's features at `offsets`, parsed in parallel a batch at a time (the whole
+// text passed the parser already) and read in order.
+void Reader::read_features(const std::vector<std::size_t>& offsets) {
+  constexpr std::size_t kBatch = 8192;
+  std::vector<json> batch;
+  for (std::size_t first = 0; first < offsets.size() && !stopped_; first += kBatch) {
+    const std::size_t count = std::min(kBatch, offsets.size() - first);
+    batch.assign(count, json());
+    tbb::parallel_for(std::size_t{0}, count, [&](std::size_t k) {
+      const std::size_t start = offsets[first + k];
+      const char* at = text_.data() + start;
+      batch[k] = json::parse(at, text_.data() + locator_.skip_value(start), nullptr, false);
+    });
+    for (std::size_t k = 0; k < count && !stopped_; ++k) {
+      read_feature(batch[k], first + k, offsets[first + k]);
+    }
+  }
 }
 
 void Reader::read_feature(const json& value, std::size_t /*index*/, std::size_t offset) {

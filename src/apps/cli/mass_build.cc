@@ -46,6 +46,11 @@ BuiltBuilding build_one(const io::Footprint& footprint, const FootprintPlan& pla
 
 }  // namespace
 
+BuildOutcome outcome_of(BuiltBuilding&& built) {
+  return {
+      std::move(built.building.id), built.feature, built.watertight, std::move(built.messages), {}};
+}
+
 std::vector<MassUnit> mass_units(const MassPlan& plan) {
   const std::size_t n = plan.footprints.size();
   std::vector<MassUnit> parts_of(n);

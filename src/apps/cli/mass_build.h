@@ -22,6 +22,16 @@ struct BuiltBuilding {
   std::size_t feature = 0;  // the footprint it stands for (the outline, for joined parts)
 };
 
+// What the warnings and the report need of a building once its meshes are written.
+struct BuildOutcome {
+  std::string id;
+  std::size_t feature = 0;
+  bool watertight = true;
+  std::vector<std::string> messages;
+  std::string entry;  // its report entry, with --report-buildings
+};
+BuildOutcome outcome_of(BuiltBuilding&& built);
+
 // The footprints of one output building: the first is the one it is named after.
 using MassUnit = std::vector<std::size_t>;
 

@@ -59,7 +59,7 @@ std::vector<BuiltBuilding> build_all(const io::FootprintSet& set, const MassPlan
 
 // A footprint that gave no closed shell: an error, or a warning with --keep-going.
 void report_failed_building(const MassOptions& options, const io::Footprint& footprint,
-                            const BuiltBuilding& built) {
+                            const BuildOutcome& built) {
   std::string message = feature_name(footprint) + ": no closed building could be made";
   if (!built.messages.empty()) message += ": " + built.messages.front();
   if (options.keep_going) {
@@ -129,22 +129,18 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
 
 namespace {
 
-// Warnings and failures of the built buildings, in input order; counts the ones the outputs get.
-// Returns how many gave no closed building.
+// Warnings and failures of the built buildings, in input order. Returns how many gave no closed
+// building.
 std::size_t account(const MassOptions& options, const io::FootprintSet& set,
-                    const std::vector<BuiltBuilding>& built, std::vector<Warning>& warnings,
-                    MassReport& report) {
+                    const std::vector<BuildOutcome>& built, std::vector<Warning>& warnings) {
   std::size_t failed = 0;
-  for (const BuiltBuilding& b : built) {
+  for (const BuildOutcome& b : built) {
     for (const std::string& m : b.messages)
-      warnings.push_back({"MAS004", "building \"" + b.building.id + "\": " + m});
+      warnings.push_back({"MAS004", "building \"" + b.id + "\": " + m});
     if (!b.watertight) {
       ++failed;
       report_failed_building(options, set.footprints[b.feature], b);
-      if (options.keep_going) continue;
     }
-    report.count_building(b.building, b.watertight);
-    if (options.report_buildings) report.describe_building(b.building);
   }
   return failed;
 }
@@ -211,11 +207,6 @@ bool tiles_only(const std::vector<std::string>& outputs) {
   });
 }
 
-// A built building whose meshes are written: what the report and the warnings still need.
-void drop_meshes(BuiltBuilding& built) {
-  for (shape::Part& part : built.building.parts) part.mesh = kernel::Mesh();
-}
-
 // The 3D Tiles job (issue 17): the units are grouped into tiles by where they stand, and each tile
 // is built (its units in parallel) and written before the next, so memory holds the footprints
 // and the tiles in flight, never the city.
@@ -239,19 +230,18 @@ int run_mass_tiles(const MassOptions& options, const io::FootprintSet& set, cons
     }
   }
   const io::TilesetWriter& layout = *writers.front();
-  std::vector<BuiltBuilding> built(units.size());
+  std::vector<BuildOutcome> outcomes(units.size());
   std::vector<MassReport> tallies(layout.leaf_count());  // vertices, faces, triangles per tile
   std::vector<std::string> errors(layout.leaf_count());
   Progress progress("buildings", units.size(), options.quiet);
   tbb::parallel_for(std::size_t{0}, layout.leaf_count(), [&](std::size_t leaf) {
     if (interrupted()) return;
     const std::vector<std::size_t>& members = layout.leaf_items(leaf);
-    tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t k) {
-      built[members[k]] = build_unit(set, plan, units[members[k]]);
-    });
+    std::vector<BuiltBuilding> built(members.size());
+    tbb::parallel_for(std::size_t{0}, members.size(),
+                      [&](std::size_t k) { built[k] = build_unit(set, plan, units[members[k]]); });
     std::vector<const shape::Building*> kept;
-    for (const std::size_t unit : members) {
-      const BuiltBuilding& b = built[unit];
+    for (BuiltBuilding& b : built) {
       if (!b.watertight && options.keep_going) continue;
       kept.push_back(&b.building);
       tallies[leaf].count_building(b.building, b.watertight);
@@ -259,20 +249,33 @@ int run_mass_tiles(const MassOptions& options, const io::FootprintSet& set, cons
     for (const auto& writer : writers) {
       if (errors[leaf].empty()) errors[leaf] = writer->write_tile(leaf, kept);
     }
-    for (const std::size_t unit : members) drop_meshes(built[unit]);
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      std::string entry;
+      if (options.report_buildings && (built[k].watertight || !options.keep_going)) {
+        entry = building_entry(built[k].building);
+      }
+      outcomes[members[k]] = outcome_of(std::move(built[k]));
+      outcomes[members[k]].entry = std::move(entry);
+    }
     progress.advance(members.size());
   });
   if (const int code = stop_if_interrupted(); code != 0) return code;
   for (const std::string& error : errors) {
     if (!error.empty()) return write_failure(error);
   }
-  const std::size_t failed = account(options, set, built, warnings, report);
+  const std::size_t failed = account(options, set, outcomes, warnings);
   for (const MassReport& tally : tallies) {
+    report.buildings += tally.buildings;
+    report.watertight += tally.watertight;
+    report.parts += tally.parts;
     report.vertices += tally.vertices;
     report.faces += tally.faces;
     report.triangles += tally.triangles;
   }
-  if (const int code = check_built(options, failed, report.buildings, built.size()); code != 0) {
+  for (BuildOutcome& outcome : outcomes) {
+    if (!outcome.entry.empty()) report.building_entries.push_back(std::move(outcome.entry));
+  }
+  if (const int code = check_built(options, failed, report.buildings, outcomes.size()); code != 0) {
     return code;
   }
   report.failed = failed;
@@ -323,16 +326,23 @@ int run_mass(const MassOptions& options) {
   }
   std::vector<BuiltBuilding> built = build_all(set.value(), plan, units, options.quiet);
   if (const int code = stop_if_interrupted(); code != 0) return code;
-  const std::size_t failed = account(options, set.value(), built, warnings, report);
   shape::Scene scene;
   scene.origin = set->origin;
   scene.crs = set->crs;
   scene.materials = plan.materials;
   scene.buildings.reserve(built.size());
+  std::vector<BuildOutcome> outcomes;
+  outcomes.reserve(built.size());
   for (BuiltBuilding& b : built) {
-    if (!b.watertight && options.keep_going) continue;
-    scene.buildings.push_back(std::move(b.building));
+    BuildOutcome outcome{b.building.id, b.feature, b.watertight, std::move(b.messages), {}};
+    if (b.watertight || !options.keep_going) {
+      report.count_building(b.building, b.watertight);
+      if (options.report_buildings) report.describe_building(b.building);
+      scene.buildings.push_back(std::move(b.building));
+    }
+    outcomes.push_back(std::move(outcome));
   }
+  const std::size_t failed = account(options, set.value(), outcomes, warnings);
   if (const int code = check_built(options, failed, scene.buildings.size(), built.size());
       code != 0) {
     return code;

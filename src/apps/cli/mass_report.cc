@@ -15,7 +15,7 @@ void MassReport::count_building(const shape::Building& building, bool is_waterti
   }
 }
 
-void MassReport::describe_building(const shape::Building& building) {
+std::string building_entry(const shape::Building& building) {
   nlohmann::ordered_json entry;
   entry["id"] = building.id;
   const auto attribute = [&](const shape::AttributeMap& attributes, const char* key) {
@@ -42,7 +42,11 @@ void MassReport::describe_building(const shape::Building& building) {
     joined.push_back(std::move(p));
   }
   if (!joined.empty()) entry["parts"] = std::move(joined);
-  building_entries.push_back(entry.dump());
+  return entry.dump();
+}
+
+void MassReport::describe_building(const shape::Building& building) {
+  building_entries.push_back(building_entry(building));
 }
 
 std::string MassReport::json() const {

@@ -45,4 +45,7 @@ struct MassReport {
   std::string json() const;
 };
 
+// A building's report entry (JSON): its id, parts and insula:* attributes (mass_plan.h).
+std::string building_entry(const shape::Building& building);
+
 }  // namespace insula::cli
