@@ -17,9 +17,24 @@ check_tileset() {  # description, tileset.json, checker options...
 expect_exit 0 "town to 3D Tiles" "$insula" mass "$root/examples/town.geojson" \
   -o "$tmp/town/tileset.json" --quiet
 [ -f "$tmp/town/tiles/0-0-0.glb" ] || fail "town: no tile file"
-# OpenStreetMap in longitude/latitude: 17 parts of 12 buildings (a church of three parts...).
+# OpenStreetMap in longitude/latitude: 17 parts of 15 buildings (a church of three parts...).
 expect_exit 0 "OSM town to 3D Tiles" "$insula" mass "$root/examples/osm/town.osm" \
   -o "$tmp/osm/tileset.json" --quiet
+# The tile-by-tile job reports what the whole-scene job does (counts, warnings, every building).
+expect_exit 0 "OSM town, tiles only, report" "$insula" mass "$root/examples/osm/town.osm" \
+  -o "$tmp/osm1/tileset.json" --report "$tmp/osm1.json" --report-buildings --quiet
+expect_exit 0 "OSM town, tiles and GLB, report" "$insula" mass "$root/examples/osm/town.osm" \
+  -o "$tmp/osm2/tileset.json" -o "$tmp/osm2.glb" --report "$tmp/osm2.json" --report-buildings \
+  --quiet
+node -e '
+  const fs = require("fs");
+  const keep = (f) => { const r = JSON.parse(fs.readFileSync(f)); delete r.seconds;
+                        delete r.stages; return JSON.stringify(r); };
+  if (keep(process.argv[1]) !== keep(process.argv[2])) {
+    console.log(keep(process.argv[1])); console.log(keep(process.argv[2])); process.exit(1);
+  }' "$tmp/osm1.json" "$tmp/osm2.json" || fail "OSM town: the two jobs report differently"
+grep -q '"buildings": 15,' "$tmp/osm1.json" || fail "OSM town: 15 buildings in the report"
+diff -r "$tmp/osm/tiles" "$tmp/osm1/tiles" >/dev/null || fail "OSM town: tiles differ between runs"
 check_tileset "OSM town opens in CesiumJS and loaders.gl" "$tmp/osm/tileset.json" \
   --expect-features 17 --lonlat 11.3945,47.2655 --tolerance-m 50
 grep -q '"building":"relation/3001"' "$tmp/c.txt" || fail "OSM town: picked feature's building"

@@ -29,9 +29,10 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
     if (!set.ok()) return std::nullopt;
     return std::move(set.value());
   }
-  const std::optional<std::string> text = read_input_or_report(path);
+  std::optional<std::string> text = read_input_or_report(path);
   if (!text) return std::nullopt;
-  const base::Source source(path, *text);
+  // Moved, not copied: a city's GeoJSON is hundreds of megabytes.
+  const base::Source source(path, std::move(*text));
   base::Result<io::FootprintSet> set = io::read_geojson(source.text(), path, options);
   print_diagnostics(set.diagnostics(), source, quiet);
   if (!set.ok()) return std::nullopt;

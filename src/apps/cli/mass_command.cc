@@ -21,6 +21,7 @@
 #include "apps/cli/mass_build.h"
 #include "apps/cli/mass_plan.h"
 #include "apps/cli/mass_report.h"
+#include "apps/cli/memory.h"
 #include "apps/cli/progress.h"
 #include "apps/cli/stopwatch.h"
 #include "apps/cli/validators.h"
@@ -308,6 +309,7 @@ int run_mass(const MassOptions& options) {
       options.input, geojson_options(options.crs, options.keep_going), options.quiet);
   if (!set) return kExitInput;
   report.stage("read", read_clock.seconds());
+  release_free_memory();
   report.invalid = set->skipped_invalid;
   report.invalid_by_code = set->skipped_by_code;
   report.repairs = set->repairs;
