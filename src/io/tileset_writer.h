@@ -50,6 +50,10 @@ class TilesetWriter {
   // Writes leaf `leaf`'s GLB from its buildings (local coordinates). Thread-safe for distinct
   // leaves. Empty string on success, else the reason naming the file.
   std::string write_tile(std::size_t leaf, const std::vector<const shape::Building*>& buildings);
+  // The box of what write_tile() wrote for `leaf` (empty: nothing); a leaf written by another
+  // process (MPI) is told here before finish().
+  kernel::Bounds3 tile_box(std::size_t leaf) const { return leaves_[leaf].box; }
+  void set_tile_box(std::size_t leaf, const kernel::Bounds3& box) { leaves_[leaf].box = box; }
   // Writes tileset.json once every leaf is written (a leaf without geometry is left out).
   std::string finish();
 

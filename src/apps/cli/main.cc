@@ -14,6 +14,7 @@
 #include "apps/cli/interrupt.h"
 #include "apps/cli/mass_command.h"
 #include "apps/cli/random_command.h"
+#include "apps/cli/ranks.h"
 #include "apps/cli/transform_command.h"
 #include "apps/cli/warnings.h"
 #include "base/format.h"
@@ -90,6 +91,8 @@ int run(int argc, char** argv) {
   if (app.got_subcommand("mass")) {
     return run_writing([&] { return insula::cli::run_mass(mass); }, mass.quiet);
   }
+  // Under mpirun only `mass` shares its work (3D Tiles); any other verb runs on the leader alone.
+  if (insula::cli::Ranks::shared() && !insula::cli::Ranks::leader()) return insula::cli::kExitDone;
   if (app.got_subcommand("check")) {
     const int code = insula::cli::run_check(check);
     insula::cli::finish_warnings(check.quiet);
@@ -108,6 +111,11 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  insula::cli::Ranks::start(argc, argv);
+  // MPI ends after the verb, whatever it returned (a verb's collective calls are all made).
+  struct StopRanks {
+    ~StopRanks() { insula::cli::Ranks::stop(); }
+  } stop_ranks;
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

@@ -19,10 +19,13 @@
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/mass_build.h"
+#include "apps/cli/mass_outcome.h"
 #include "apps/cli/mass_plan.h"
 #include "apps/cli/mass_report.h"
+#include "apps/cli/mass_tiles.h"
 #include "apps/cli/memory.h"
 #include "apps/cli/progress.h"
+#include "apps/cli/ranks.h"
 #include "apps/cli/stopwatch.h"
 #include "apps/cli/validators.h"
 #include "apps/cli/view_options.h"
@@ -56,18 +59,6 @@ std::vector<BuiltBuilding> build_all(const io::FootprintSet& set, const MassPlan
                       progress.advance(range.size());
                     });
   return built;
-}
-
-// A footprint that gave no closed shell: an error, or a warning with --keep-going.
-void report_failed_building(const MassOptions& options, const io::Footprint& footprint,
-                            const BuildOutcome& built) {
-  std::string message = feature_name(footprint) + ": no closed building could be made";
-  if (!built.messages.empty()) message += ": " + built.messages.front();
-  if (options.keep_going) {
-    emit_warning("MAS005", options.input + ": warning[MAS005]: " + message, options.quiet);
-  } else {
-    std::fprintf(stderr, "%s: error: %s\n", options.input.c_str(), message.c_str());
-  }
 }
 
 }  // namespace
@@ -130,22 +121,6 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
 
 namespace {
 
-// Warnings and failures of the built buildings, in input order. Returns how many gave no closed
-// building.
-std::size_t account(const MassOptions& options, const io::FootprintSet& set,
-                    const std::vector<BuildOutcome>& built, std::vector<Warning>& warnings) {
-  std::size_t failed = 0;
-  for (const BuildOutcome& b : built) {
-    for (const std::string& m : b.messages)
-      warnings.push_back({"MAS004", "building \"" + b.id + "\": " + m});
-    if (!b.watertight) {
-      ++failed;
-      report_failed_building(options, set.footprints[b.feature], b);
-    }
-  }
-  return failed;
-}
-
 void add_overlaps(const io::FootprintSet& set, const MassPlan& plan, MassReport& report) {
   report.overlaps = plan.overlap_summary.pairs;
   if (plan.overlap_summary.pairs > 0) {
@@ -155,52 +130,6 @@ void add_overlaps(const io::FootprintSet& set, const MassPlan& plan, MassReport&
   }
 }
 
-// Fails the run when buildings failed without --keep-going or none was made; else 0.
-int check_built(const MassOptions& options, std::size_t failed, std::size_t made,
-                std::size_t total) {
-  if (failed > 0 && !options.keep_going) {
-    std::fprintf(
-        stderr,
-        "insula: %zu of %zu buildings failed; nothing written (--keep-going leaves them out)\n",
-        failed, total);
-    return kExitInput;
-  }
-  if (made == 0) {
-    std::fprintf(stderr, "insula: error: no building could be made; nothing written\n");
-    return kExitInput;
-  }
-  return 0;
-}
-
-void emit_mass_warnings(const MassOptions& options, const std::vector<Warning>& warnings,
-                        MassReport& report) {
-  for (const Warning& w : warnings) {
-    emit_warning(w.code, options.input + ": warning[" + w.code + "]: " + w.text, options.quiet);
-  }
-  report.warnings = warning_total();
-  report.warning_counts = warning_counts();
-}
-
-// The report, the commit point, and what a finished run prints.
-int finish_mass(const MassOptions& options, MassReport& report, const Stopwatch& total,
-                io::OutputTransaction& transaction) {
-  report.total_seconds = total.seconds();
-  if (!options.report.empty()) {
-    if (const std::string error = transaction.write_text(options.report, report.json());
-        !error.empty()) {
-      return write_failure(error);
-    }
-  }
-  if (const std::string error = transaction.commit(); !error.empty()) return write_failure(error);
-  finish_warnings(options.quiet);
-  if (!options.quiet) {
-    std::fprintf(stderr, "insula: %zu buildings in %.2f s\n", report.buildings,
-                 report.total_seconds);
-  }
-  for (const std::string& out : options.outputs) std::printf("%s\n", out.c_str());
-  return kExitDone;
-}
-
 // Every output a 3D Tiles tileset: the city is built tile by tile and never held whole.
 bool tiles_only(const std::vector<std::string>& outputs) {
   return std::all_of(outputs.begin(), outputs.end(), [](const std::string& out) {
@@ -208,89 +137,14 @@ bool tiles_only(const std::vector<std::string>& outputs) {
   });
 }
 
-// The 3D Tiles job (issue 17): the units are grouped into tiles by where they stand, and each tile
-// is built (its units in parallel) and written before the next, so memory holds the footprints
-// and the tiles in flight, never the city.
-int run_mass_tiles(const MassOptions& options, const io::FootprintSet& set, const MassPlan& plan,
-                   const std::vector<MassUnit>& units, std::vector<Warning>& warnings,
-                   MassReport& report, const Stopwatch& total) {
-  const Stopwatch build_clock;
-  std::vector<io::TileItem> items;
-  items.reserve(units.size());
-  for (const MassUnit& unit : units) items.push_back(unit_tile_item(set, unit, options.overhang));
-  io::OutputTransaction transaction(interrupted);
-  std::vector<std::unique_ptr<io::TilesetWriter>> writers;
-  for (const std::string& out : options.outputs) {
-    if (const std::string error = transaction.claim_output(out); !error.empty()) {
-      return write_failure(error);
-    }
-    writers.push_back(std::make_unique<io::TilesetWriter>(
-        out, set.crs, set.origin, plan.materials, options.output.gltf, options.output.tiles));
-    if (const std::string error = writers.back()->plan(items); !error.empty()) {
-      return write_failure(error);
-    }
-  }
-  const io::TilesetWriter& layout = *writers.front();
-  std::vector<BuildOutcome> outcomes(units.size());
-  std::vector<MassReport> tallies(layout.leaf_count());  // vertices, faces, triangles per tile
-  std::vector<std::string> errors(layout.leaf_count());
-  Progress progress("buildings", units.size(), options.quiet);
-  tbb::parallel_for(std::size_t{0}, layout.leaf_count(), [&](std::size_t leaf) {
-    if (interrupted()) return;
-    const std::vector<std::size_t>& members = layout.leaf_items(leaf);
-    std::vector<BuiltBuilding> built(members.size());
-    tbb::parallel_for(std::size_t{0}, members.size(),
-                      [&](std::size_t k) { built[k] = build_unit(set, plan, units[members[k]]); });
-    std::vector<const shape::Building*> kept;
-    for (BuiltBuilding& b : built) {
-      if (!b.watertight && options.keep_going) continue;
-      kept.push_back(&b.building);
-      tallies[leaf].count_building(b.building, b.watertight);
-    }
-    for (const auto& writer : writers) {
-      if (errors[leaf].empty()) errors[leaf] = writer->write_tile(leaf, kept);
-    }
-    for (std::size_t k = 0; k < members.size(); ++k) {
-      std::string entry;
-      if (options.report_buildings && (built[k].watertight || !options.keep_going)) {
-        entry = building_entry(built[k].building);
-      }
-      outcomes[members[k]] = outcome_of(std::move(built[k]));
-      outcomes[members[k]].entry = std::move(entry);
-    }
-    progress.advance(members.size());
-  });
-  if (const int code = stop_if_interrupted(); code != 0) return code;
-  for (const std::string& error : errors) {
-    if (!error.empty()) return write_failure(error);
-  }
-  const std::size_t failed = account(options, set, outcomes, warnings);
-  for (const MassReport& tally : tallies) {
-    report.buildings += tally.buildings;
-    report.watertight += tally.watertight;
-    report.parts += tally.parts;
-    report.vertices += tally.vertices;
-    report.faces += tally.faces;
-    report.triangles += tally.triangles;
-  }
-  for (BuildOutcome& outcome : outcomes) {
-    if (!outcome.entry.empty()) report.building_entries.push_back(std::move(outcome.entry));
-  }
-  if (const int code = check_built(options, failed, report.buildings, outcomes.size()); code != 0) {
-    return code;
-  }
-  report.failed = failed;
-  report.stage("build and write 3dtiles", build_clock.seconds());
-  emit_mass_warnings(options, warnings, report);
-  for (const auto& writer : writers) {
-    if (const std::string error = writer->finish(); !error.empty()) return write_failure(error);
-  }
-  return finish_mass(options, report, total, transaction);
-}
-
 }  // namespace
 
-int run_mass(const MassOptions& options) {
+int run_mass(const MassOptions& given) {
+  // Under mpirun only 3D Tiles are shared among the ranks; anything else is the leader's alone.
+  // The other ranks work silently: the leader reports for all.
+  if (Ranks::shared() && !Ranks::leader() && !tiles_only(given.outputs)) return kExitDone;
+  MassOptions options = given;
+  if (!Ranks::leader()) options.quiet = true;
   Stopwatch total;
   MassReport report;
   if (const int code = check_outputs(options.outputs, options.report, options.output);

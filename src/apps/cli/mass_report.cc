@@ -75,6 +75,8 @@ std::string MassReport::json() const {
   out["crs"] = crs.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(crs);
   if (!source_crs.empty()) out["reprojected_from"] = source_crs;
   out["threads"] = threads;
+  out["ranks"] = ranks;
+  if (!tiles_by_rank.empty()) out["tiles_by_rank"] = tiles_by_rank;
   out["seconds"] = seconds;
   if (!building_entries.empty()) {
     nlohmann::ordered_json list = nlohmann::ordered_json::array();

@@ -35,6 +35,8 @@ struct MassReport {
   std::string crs;         // the CRS of the outputs' world coordinates; empty: unknown
   std::string source_crs;  // the input's CRS when it was reprojected
   int threads = 1;
+  int ranks = 1;                           // processes under mpirun (docs/cluster.md)
+  std::vector<std::size_t> tiles_by_rank;  // 3D Tiles job: how many tiles each rank built
   double total_seconds = 0;
   std::vector<std::pair<std::string, double>> stages;  // in execution order
 

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Many processes (docs/cluster.md): `mpirun -n N insula mass ... -o DIR/tileset.json` shares the
+# tiles among the ranks through a work queue and writes the same bytes as one process, for 1, 2 and
+# 3 ranks and any thread count; the leader alone prints; an error stops every rank with exit 1 and
+# leaves the user's earlier tileset as it was. Runs on this 2-core machine with --oversubscribe.
+source "$(dirname "$0")/lib/common.sh"
+
+command -v mpirun >/dev/null || { fail "mpirun missing (scripts/setup.sh installs openmpi-bin)"; finish mpi; }
+ldd "$insula" | grep -q libmpi || { fail "insula was built without MPI (libopenmpi-dev)"; finish mpi; }
+# OpenMPI refuses root unless told; CI may run as root.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+mpi() { mpirun --oversubscribe -n "$@"; }
+
+node "$root/bench/make_footprints.mjs" 3000 "$tmp/grid.geojson" >/dev/null
+expect_exit 0 "one process" "$insula" mass "$tmp/grid.geojson" --crs EPSG:32633 \
+  --tile-faces 6000 -o "$tmp/one/tileset.json" --report "$tmp/one.json" --quiet
+leaves=$(ls "$tmp/one/tiles" | wc -l)
+[ "$leaves" -ge 6 ] || fail "expected several tiles, got $leaves"
+for ranks in 1 2 3; do
+  for threads in 1 2; do
+    expect_exit 0 "$ranks ranks, $threads threads" mpi "$ranks" "$insula" mass "$tmp/grid.geojson" \
+      --crs EPSG:32633 --tile-faces 6000 --threads "$threads" -o "$tmp/r$ranks-$threads/tileset.json" \
+      --report "$tmp/r$ranks-$threads.json"
+    diff -r "$tmp/one" "$tmp/r$ranks-$threads" >/dev/null ||
+      fail "$ranks ranks, $threads threads: the tileset differs from one process's"
+    # One line per output on stdout, from the leader only.
+    [ "$(grep -c tileset.json "$tmp/out.txt")" -eq 1 ] || { fail "$ranks ranks: stdout"; cat "$tmp/out.txt"; }
+  done
+done
+grep -q '"buildings": 3000,' "$tmp/r3-2.json" || fail "3 ranks: the report counts every building"
+# Every rank took tiles from the queue (three ranks, at least six tiles).
+node -e '
+  const r = require(process.argv[1]);
+  if (r.ranks !== 3 || r.tiles_by_rank.length !== 3 || r.tiles_by_rank.some((n) => n === 0) ||
+      r.tiles_by_rank.reduce((a, b) => a + b) !== Number(process.argv[2])) {
+    console.log(JSON.stringify(r.tiles_by_rank)); process.exit(1);
+  }' "$tmp/r3-1.json" "$leaves" || fail "3 ranks: tiles not shared among the ranks"
+
+# An error: no CRS to place the tiles; every rank stops, exit 1, the earlier tileset kept.
+cp -r "$tmp/one" "$tmp/keep"
+sed 's/"crs"/"not_crs"/' "$root/examples/town.geojson" >"$tmp/nocrs.geojson"
+expect_exit 1 "no CRS under mpirun" mpi 3 "$insula" mass "$tmp/nocrs.geojson" \
+  -o "$tmp/keep/tileset.json" --quiet
+grep -q "no coordinate reference system" "$tmp/err.txt" || { fail "no CRS: message"; cat "$tmp/err.txt"; }
+diff -r "$tmp/one" "$tmp/keep" >/dev/null || fail "no CRS: the earlier tileset changed"
+
+finish mpi
