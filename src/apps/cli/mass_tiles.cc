@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include "apps/cli/exit_codes.h"
@@ -137,45 +138,41 @@ TileResult build_tile(const MassOptions& options, const io::FootprintSet& set, c
   return result;
 }
 
-// This rank's share of the tiles: taken from the shared queue a few at a time (as many as it has
-// threads, built side by side), until none is left.
+// This rank's share of the tiles: each of its threads takes the next tile from the shared queue
+// until none is left (a tile's buildings are built in parallel too, so a thread that finds no
+// tile helps the others finish theirs).
 RankWork build_share(const MassOptions& options, const io::FootprintSet& set, const MassPlan& plan,
                      const std::vector<MassUnit>& units,
                      std::vector<std::unique_ptr<io::TilesetWriter>>& writers) {
-  RankWork work;
   const std::size_t leaves = writers.front()->leaf_count();
   Ranks::Queue queue(leaves);
-  const std::size_t batch =
+  const std::size_t takers =
       std::max<std::size_t>(1, options.threads > 0 ? static_cast<std::size_t>(options.threads)
                                                    : std::thread::hardware_concurrency());
+  std::vector<std::optional<TileResult>> results(leaves);
   Progress progress("buildings", units.size(), options.quiet);
-  while (!interrupted()) {
-    std::vector<std::size_t> taken;
-    for (std::size_t leaf = queue.next(); leaf < leaves; leaf = queue.next()) {
-      taken.push_back(leaf);
-      if (taken.size() == batch) break;
+  tbb::parallel_for(std::size_t{0}, takers, [&](std::size_t) {
+    for (std::size_t leaf = queue.next(); leaf < leaves && !interrupted(); leaf = queue.next()) {
+      results[leaf] = build_tile(options, set, plan, units, writers, leaf);
+      progress.advance(writers.front()->leaf_items(leaf).size());
     }
-    if (taken.empty()) break;
-    std::vector<TileResult> results(taken.size());
-    tbb::parallel_for(std::size_t{0}, taken.size(), [&](std::size_t i) {
-      results[i] = build_tile(options, set, plan, units, writers, taken[i]);
-      progress.advance(writers.front()->leaf_items(taken[i]).size());
-    });
-    for (std::size_t i = 0; i < taken.size(); ++i) {
-      TileResult& r = results[i];
-      work.tiles.push_back(taken[i]);
-      work.boxes.push_back(r.box);
-      work.errors.push_back(std::move(r.error));
-      work.tally.buildings += r.tally.buildings;
-      work.tally.watertight += r.tally.watertight;
-      work.tally.parts += r.tally.parts;
-      work.tally.vertices += r.tally.vertices;
-      work.tally.faces += r.tally.faces;
-      work.tally.triangles += r.tally.triangles;
-      for (auto& [unit, outcome] : r.outcomes) {
-        work.units.push_back(unit);
-        work.outcomes.push_back(std::move(outcome));
-      }
+  });
+  RankWork work;
+  for (std::size_t leaf = 0; leaf < leaves; ++leaf) {
+    if (!results[leaf]) continue;
+    TileResult& r = *results[leaf];
+    work.tiles.push_back(leaf);
+    work.boxes.push_back(r.box);
+    work.errors.push_back(std::move(r.error));
+    work.tally.buildings += r.tally.buildings;
+    work.tally.watertight += r.tally.watertight;
+    work.tally.parts += r.tally.parts;
+    work.tally.vertices += r.tally.vertices;
+    work.tally.faces += r.tally.faces;
+    work.tally.triangles += r.tally.triangles;
+    for (auto& [unit, outcome] : r.outcomes) {
+      work.units.push_back(unit);
+      work.outcomes.push_back(std::move(outcome));
     }
   }
   // An interrupted rank takes no more tiles (the others build the rest) and fails the run.

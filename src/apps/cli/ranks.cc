@@ -1,6 +1,7 @@
 #include "apps/cli/ranks.h"
 
 #include <cstdlib>
+#include <mutex>
 
 #if defined(INSULA_WITH_MPI)
 #include <mpi.h>
@@ -27,8 +28,8 @@ void Ranks::start(int& argc, char**& argv) {
 #if defined(INSULA_WITH_MPI)
   if (!launched_by_mpirun()) return;
   int provided = 0;
-  // Only the main thread calls MPI; the TBB workers build and write.
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  // Any thread may take the next tile from the queue, one at a time (Queue::next() locks).
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided);
   started = true;
 #else
   (void)argc;
@@ -91,6 +92,7 @@ Ranks::Queue::~Queue() {
 }
 
 std::size_t Ranks::Queue::next() {
+  const std::lock_guard<std::mutex> lock(mutex_);
 #if defined(INSULA_WITH_MPI)
   if (window_ != nullptr) {
     auto* window = static_cast<MPI_Win*>(window_);

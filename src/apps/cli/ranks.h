@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -30,10 +31,12 @@ class Ranks {
     ~Queue();
     Queue(const Queue&) = delete;
     Queue& operator=(const Queue&) = delete;
+    // Thread-safe.
     std::size_t next();
 
    private:
     std::size_t count_;
+    std::mutex mutex_;       // MPI is started for one caller at a time (MPI_THREAD_SERIALIZED)
     std::size_t local_ = 0;  // without MPI
     void* window_ = nullptr;
     long* counter_ = nullptr;
