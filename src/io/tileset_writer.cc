@@ -202,7 +202,8 @@ TilesetWriter::TilesetWriter(std::filesystem::path tileset_json, std::string crs
       origin_(origin),
       materials_(std::move(materials)),
       gltf_(gltf),
-      options_(options) {
+      options_(options),
+      tile_folder_(tiles_folder(path_)) {
   gltf_.nodes = GltfOptions::Nodes::kBuilding;
 }
 
@@ -234,8 +235,8 @@ std::string TilesetWriter::plan(std::span<const TileItem> items) {
   if (!error.empty()) return name + ": " + error;
   for (std::size_t l = 0; l < leaves_.size(); ++l) leaves_[l].frame = frames[l];
   std::error_code made;
-  std::filesystem::create_directories(tiles_folder(path_), made);
-  if (made) return tiles_folder(path_).string() + ": " + made.message();
+  std::filesystem::create_directories(tile_folder_, made);
+  if (made) return tile_folder_.string() + ": " + made.message();
   return {};
 }
 
@@ -266,7 +267,7 @@ std::string TilesetWriter::write_tile(std::size_t l,
     }
   }
   if (leaf.box.empty()) return {};
-  return write_gltf(tile, path_.parent_path() / tile_uri(tree_.nodes[leaf.node]), gltf_);
+  return write_gltf(tile, tile_folder_ / (tree_.nodes[leaf.node].name() + ".glb"), gltf_);
 }
 
 std::string TilesetWriter::finish() {

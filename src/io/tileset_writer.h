@@ -41,6 +41,10 @@ class TilesetWriter {
                 std::vector<shape::Material> materials, GltfOptions gltf = {},
                 TilesetOptions options = {});
 
+  // Writes the tiles into `folder` instead of tiles_folder() (a staging folder the caller renames
+  // before finish(): a run killed midway leaves the earlier tileset as it was). Before plan().
+  void stage_tiles_in(std::filesystem::path folder) { tile_folder_ = std::move(folder); }
+
   // Plans the tiles of `items` (plan boxes in local coordinates, weights: faces) and places each
   // leaf on the globe. Empty string on success, else the reason (no CRS, PROJ cannot place it).
   std::string plan(std::span<const TileItem> items);
@@ -71,6 +75,7 @@ class TilesetWriter {
   std::vector<shape::Material> materials_;
   GltfOptions gltf_;
   TilesetOptions options_;
+  std::filesystem::path tile_folder_;
   TileTree tree_;
   std::vector<Leaf> leaves_;
 };

@@ -64,6 +64,26 @@ expect_exit 1 "no CRS" "$insula" build "$root/examples/bldg/domus.bldg" \
 grep -q "no coordinate reference system" "$tmp/err.txt" || { fail "no CRS: message"; cat "$tmp/err.txt"; }
 diff -r "$tmp/keep" "$tmp/keep.before" >/dev/null || fail "no CRS: the earlier tileset changed"
 ls "$tmp" | grep -q "insula-backup" && fail "no CRS: a backup was left behind"
+# A run killed midway (kill -9: no handler runs) leaves the earlier tileset as it was: the tiles
+# are written into tiles.insula-partial and renamed into place only at the end.
+node "$root/bench/make_footprints.mjs" 60000 "$tmp/big.geojson" >/dev/null
+"$insula" mass "$tmp/big.geojson" --crs EPSG:32633 --tile-faces 8000 \
+  -o "$tmp/keep/tileset.json" --quiet >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 600); do
+  compgen -G "$tmp/keep/tiles.insula-partial/*.glb" >/dev/null && break
+  sleep 0.05
+done
+compgen -G "$tmp/keep/tiles.insula-partial/*.glb" >/dev/null || fail "killed run: no staged tile seen"
+kill -9 "$pid"
+wait "$pid" 2>/dev/null
+diff -r -x tiles.insula-partial "$tmp/keep" "$tmp/keep.before" >/dev/null ||
+  fail "killed run: the earlier tileset changed"
+# The next run clears what the killed one left.
+expect_exit 0 "after a killed run" "$insula" mass "$root/examples/town.geojson" \
+  -o "$tmp/keep/tileset.json" --quiet
+[ -e "$tmp/keep/tiles.insula-partial" ] && fail "after a killed run: the staging folder is left"
+[ -f "$tmp/keep/tiles/0-0-0.glb" ] || fail "after a killed run: no tiles"
 # The folder's parent must exist.
 expect_exit 1 "missing parent folder" "$insula" mass "$root/examples/town.geojson" \
   -o "$tmp/no/such/tileset.json" --quiet

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -180,13 +181,60 @@ RankWork build_share(const MassOptions& options, const io::FootprintSet& set, co
   return work;
 }
 
+// Where the ranks write the tiles until the run succeeds: a folder beside the final one, renamed
+// into place at the end, so a run that fails or is killed midway (a rank's crash aborts them all)
+// leaves the earlier tileset as it was. The leader makes the output folder when missing and
+// removes what it made unless the run succeeded.
+class Staging {
+ public:
+  static std::filesystem::path folder_of(const std::string& out) {
+    return io::tiles_folder(out).string() + ".insula-partial";
+  }
+  // The leader's preparation: the output folders, and no staging folder left by a killed run.
+  std::string prepare(const std::vector<std::string>& outputs) {
+    for (const std::string& out : outputs) {
+      const std::filesystem::path dir = std::filesystem::path(out).parent_path();
+      std::error_code error;
+      if (!dir.empty() && !std::filesystem::is_directory(dir, error)) {
+        if (!std::filesystem::create_directory(dir, error) || error) {
+          return dir.string() + ": cannot create the folder: " + error.message();
+        }
+        made_.push_back(dir);
+      }
+      std::filesystem::remove_all(folder_of(out), error);
+      staged_.push_back(folder_of(out));
+    }
+    return {};
+  }
+  // Moves the staged tiles into place (the transaction has claimed the final paths).
+  std::string publish(const std::string& out) {
+    std::error_code error;
+    std::filesystem::rename(folder_of(out), io::tiles_folder(out), error);
+    if (error) return io::tiles_folder(out).string() + ": " + error.message();
+    return {};
+  }
+  void succeeded() { succeeded_ = true; }
+  ~Staging() {
+    if (succeeded_) return;
+    std::error_code ignored;
+    for (const std::filesystem::path& folder : staged_)
+      std::filesystem::remove_all(folder, ignored);
+    for (const std::filesystem::path& dir : made_) std::filesystem::remove(dir, ignored);
+  }
+
+ private:
+  std::vector<std::filesystem::path> staged_;
+  std::vector<std::filesystem::path> made_;  // output folders this run made
+  bool succeeded_ = false;
+};
+
 // The leader's part once every rank's work is in: warnings, checks, tileset.json, report, commit.
 int conclude(const MassOptions& options, const io::FootprintSet& set,
              const std::vector<MassUnit>& units,
              std::vector<std::unique_ptr<io::TilesetWriter>>& writers,
              const std::vector<std::string>& gathered, std::vector<Warning>& warnings,
              MassReport& report, const Stopwatch& total, const Stopwatch& build_clock,
-             io::OutputTransaction& transaction) {
+             Staging& staging) {
   std::vector<BuildOutcome> outcomes(units.size());
   for (std::size_t u = 0; u < units.size(); ++u) {
     outcomes[u].id = set.footprints[units[u].front()].id;
@@ -209,10 +257,18 @@ int conclude(const MassOptions& options, const io::FootprintSet& set,
   report.failed = failed;
   report.stage("build and write 3dtiles", build_clock.seconds());
   emit_mass_warnings(options, warnings, report);
-  for (const auto& writer : writers) {
-    if (const std::string error = writer->finish(); !error.empty()) return write_failure(error);
+  io::OutputTransaction transaction(interrupted);
+  for (std::size_t i = 0; i < writers.size(); ++i) {
+    const std::string& out = options.outputs[i];
+    if (std::string error = transaction.claim_output(out); !error.empty()) {
+      return write_failure(error);
+    }
+    if (std::string error = staging.publish(out); !error.empty()) return write_failure(error);
+    if (std::string error = writers[i]->finish(); !error.empty()) return write_failure(error);
   }
-  return finish_mass(options, report, total, transaction);
+  const int code = finish_mass(options, report, total, transaction);
+  if (code == kExitDone) staging.succeeded();
+  return code;
 }
 
 }  // namespace
@@ -224,16 +280,12 @@ int run_mass_tiles(const MassOptions& options, const io::FootprintSet& set, cons
   std::vector<io::TileItem> items;
   items.reserve(units.size());
   for (const MassUnit& unit : units) items.push_back(unit_tile_item(set, unit, options.overhang));
-  // The leader owns the outputs: it moves earlier files aside and makes the folder, then every
-  // rank plans the same tiles (the plan depends on the input alone).
-  io::OutputTransaction transaction(interrupted);
+  // The leader makes the folders; then every rank plans the same tiles (the plan depends on the
+  // input alone) and writes its share into the staging folders.
+  Staging staging;
   std::string error;
-  if (Ranks::leader()) {
-    for (const std::string& out : options.outputs) {
-      if (error.empty()) error = transaction.claim_output(out);
-    }
-  }
-  // Collective: the others wait here for the leader's claim, and all stop if it failed.
+  if (Ranks::leader()) error = staging.prepare(options.outputs);
+  // Collective: the others wait here for the leader, and all stop if it failed.
   if (Ranks::broadcast(error.empty() ? 0 : 1) != 0) {
     return Ranks::broadcast(Ranks::leader() ? write_failure(error) : 0);
   }
@@ -241,6 +293,7 @@ int run_mass_tiles(const MassOptions& options, const io::FootprintSet& set, cons
   for (const std::string& out : options.outputs) {
     writers.push_back(std::make_unique<io::TilesetWriter>(
         out, set.crs, set.origin, plan.materials, options.output.gltf, options.output.tiles));
+    writers.back()->stage_tiles_in(Staging::folder_of(out));
     if (error.empty()) error = writers.back()->plan(items);
   }
   // A plan fails alike on every rank (the CRS); the leader's word decides.
@@ -252,7 +305,7 @@ int run_mass_tiles(const MassOptions& options, const io::FootprintSet& set, cons
   int code = 0;
   if (Ranks::leader()) {
     code = conclude(options, set, units, writers, gathered, warnings, report, total, build_clock,
-                    transaction);
+                    staging);
   }
   return Ranks::broadcast(code);
 }
