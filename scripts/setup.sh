@@ -9,7 +9,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libpolyclipping-dev nlohmann-json3-dev libtinygltf-dev libcli11-dev libfmt-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev libstb-dev liblua5.4-dev libpugixml-dev libqhull-dev
-  libgoogle-perftools-dev libproj-dev proj-bin libassimp-dev
+  libgoogle-perftools-dev libproj-dev proj-bin libassimp-dev libsimdjson-dev
   libmeshoptimizer-dev  # glTF vertex optimisation and EXT_meshopt_compression
   libosmium2-dev libprotozero-dev zlib1g-dev libbz2-dev libexpat1-dev osmium-tool  # .osm/.osm.pbf input
   clang libclang-rt-dev llvm  # libFuzzer (scripts/fuzz.sh), llvm-symbolizer for sanitizer stacks

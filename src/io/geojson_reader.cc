@@ -1,15 +1,23 @@
 // GeoJSON footprint reader (RFC 7946 structure, GeoJSON-2008 "crs" member). Stages: byte
-// pre-scan (empty input, nesting depth) -> nlohmann::json DOM parse -> structure walk collecting
-// world-coordinate rings per feature -> the finishing steps shared with the OSM reader
-// (io/footprint_finish.h: CRS and reprojection, origin shift, repair, id de-duplication).
-// nlohmann::json keeps no positions, so diagnostics find theirs again with a small scanner over the
+// pre-scan (empty input, nesting depth, where the features start) -> simdjson DOM parses, piece by
+// piece (the top level without its features, then the features a chunk at a time), which together
+// validate the whole text ->
+// structure walk collecting world-coordinate rings per feature -> the finishing steps shared with
+// the OSM reader (io/footprint_finish.h: CRS and reprojection, origin shift, repair, id
+// de-duplication). Only when simdjson rejects the text does nlohmann::json look at it: its SAX pass
+// finds the error and words GEO001 (or, for the few texts nlohmann accepts and simdjson does not,
+// such as integers beyond 64 bits, re-dumps the piece for simdjson). Values are read as nlohmann
+// would read them: the last of duplicate keys wins, nested property values are nlohmann's compact
+// dump. The DOM keeps no positions, so diagnostics find theirs again with a small scanner over the
 // (by then known valid) text: feature starts are listed once, deeper paths are scanned from the
 // feature start only when a diagnostic needs them.
 #include "io/geojson_reader.h"
 
 #include <oneapi/tbb/parallel_for.h>
 
+#include <simdjson.h>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -20,6 +28,8 @@ namespace {
 
 using base::Diagnostic;
 using nlohmann::json;
+using Element = simdjson::dom::element;
+using simdjson::dom::element_type;
 constexpr std::size_t kNone = kNoIndex;
 
 // ---------------------------------------------------------------------------------------------
@@ -42,20 +52,77 @@ bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\n' || c == '\r';
 }
 
-// Offset of the first bracket that nests deeper than `max_depth`, outside strings.
-std::optional<std::size_t> find_too_deep(std::string_view text, std::size_t max_depth) {
+// What one pass over the bytes finds: the first bracket that nests deeper than the limit (outside
+// strings), and, when the root is an object, its last "features" member's array (the byte range
+// from '[' to just past ']') and the offsets where that array's elements start. Exact on valid
+// JSON; on anything else the pieces parsed from it do not parse, or their glue does not check.
+struct Layout {
+  std::optional<std::size_t> too_deep;
+  std::size_t features_at = kNone;
+  std::size_t features_end = kNone;
+  std::vector<std::size_t> elements;
+};
+
+Layout scan_layout(std::string_view text, std::size_t root, std::size_t max_depth) {
+  Layout out;
+  const bool object_root = root < text.size() && text[root] == '{';
   std::size_t depth = 0;
+  std::string_view last_key;    // the last string at depth 1
+  bool features_value = false;  // the next value is the root's "features" member
+  bool in_features = false;     // inside that array
+  const auto element_at = [&](std::size_t pos) {
+    while (pos < text.size() && is_space(text[pos])) ++pos;
+    if (pos < text.size() && text[pos] != ']') out.elements.push_back(pos);
+  };
+  // Bytes that matter here; the rest (digits, letters, whitespace) are skipped a run at a time.
+  static constexpr auto kStructural = [] {
+    std::array<bool, 256> table{};
+    for (const char c : std::string_view("\"[]{}:,")) table[static_cast<unsigned char>(c)] = true;
+    return table;
+  }();
   for (std::size_t i = 0; i < text.size(); ++i) {
+    if (!kStructural[static_cast<unsigned char>(text[i])]) {
+      if (!features_value) {
+        while (i + 1 < text.size() && !kStructural[static_cast<unsigned char>(text[i + 1])]) ++i;
+        continue;
+      }
+      if (is_space(text[i])) continue;
+    }
     const char c = text[i];
+    const bool value_start = features_value && c != ':';
+    if (value_start) features_value = false;
     if (c == '"') {
-      i = skip_string(text, i) - 1;
+      const std::size_t end = skip_string(text, i);
+      if (depth == 1) last_key = text.substr(i + 1, end - i - 2);
+      i = end - 1;
+    } else if (c == ':') {
+      if (depth == 1 && object_root && last_key == "features") {
+        features_value = true;  // the last "features" member counts, as in nlohmann
+        out.features_at = out.features_end = kNone;
+        out.elements.clear();
+      }
     } else if (c == '[' || c == '{') {
-      if (++depth > max_depth) return i;
-    } else if ((c == ']' || c == '}') && depth > 0) {
-      --depth;
+      if (++depth > max_depth) {
+        out.too_deep = i;
+        return out;
+      }
+      if (value_start && c == '[' && depth == 2) {
+        in_features = true;
+        out.features_at = i;
+        element_at(i + 1);
+      }
+    } else if (c == ']' || c == '}') {
+      if (depth == 2 && in_features) {
+        in_features = false;
+        if (c == ']') out.features_end = i + 1;  // '}' would leave the array unparsed
+      }
+      if (depth > 0) --depth;
+    } else if (c == ',' && depth == 2 && in_features) {
+      element_at(i + 1);
     }
   }
-  return std::nullopt;
+  if (out.features_end == kNone) out.features_at = kNone;
+  return out;
 }
 
 // One step of a path into a JSON value: an object member (key) or an array element (index).
@@ -99,20 +166,6 @@ class TextLocator {
       }
     }
     return text_.size();
-  }
-
-  // Offsets of the elements of the array at `pos`.
-  std::vector<std::size_t> elements(std::size_t pos) const {
-    std::vector<std::size_t> out;
-    if (pos >= text_.size() || text_[pos] != '[') return out;
-    pos = skip_space(pos + 1);
-    while (pos < text_.size() && text_[pos] != ']') {
-      out.push_back(pos);
-      pos = skip_space(skip_value(pos));
-      if (pos >= text_.size() || text_[pos] != ',') break;
-      pos = skip_space(pos + 1);
-    }
-    return out;
   }
 
   // Offset of the value of member `key` (the last one, as nlohmann keeps the last duplicate).
@@ -208,44 +261,138 @@ class ErrorCatcher : public nlohmann::json_sax<json> {
 // ---------------------------------------------------------------------------------------------
 // Small helpers.
 
-std::string type_name(const json& value) {
+std::string type_name(Element value) {
   switch (value.type()) {
-    case json::value_t::null:
+    case element_type::NULL_VALUE:
       return "null";
-    case json::value_t::object:
+    case element_type::OBJECT:
       return "an object";
-    case json::value_t::array:
+    case element_type::ARRAY:
       return "an array";
-    case json::value_t::string:
+    case element_type::STRING:
       return "a string";
-    case json::value_t::boolean:
+    case element_type::BOOL:
       return "a boolean";
-    case json::value_t::number_integer:
-    case json::value_t::number_unsigned:
-    case json::value_t::number_float:
+    case element_type::INT64:
+    case element_type::UINT64:
+    case element_type::DOUBLE:
       return "a number";
-    default:
-      return "an unsupported value";
   }
+  return "an unsupported value";
 }
 
-std::string compact(const json& value) {
-  return value.dump(-1, ' ', false, json::error_handler_t::replace);
+bool is_number(Element value) {
+  const element_type type = value.type();
+  return type == element_type::INT64 || type == element_type::UINT64 ||
+         type == element_type::DOUBLE;
+}
+
+// Any number as a double, as nlohmann's get<double>() converts (int64 and uint64 by cast).
+double number(Element value) {
+  double out = 0;
+  if (value.get_double().get(out) != simdjson::SUCCESS) return 0;
+  return out;
+}
+
+std::string_view string_of(Element value) {
+  std::string_view out;
+  if (value.get_string().get(out) != simdjson::SUCCESS) return {};
+  return out;
+}
+
+// The object or array `value` is (by value: a range-for over a temporary simdjson_result's
+// value_unsafe() would dangle). Only for a value of that type: the empty one cannot be iterated.
+simdjson::dom::object object_of(Element value) {
+  simdjson::dom::object out;
+  if (value.get_object().get(out) != simdjson::SUCCESS) return {};
+  return out;
+}
+
+simdjson::dom::array array_of(Element value) {
+  simdjson::dom::array out;
+  if (value.get_array().get(out) != simdjson::SUCCESS) return {};
+  return out;
+}
+
+// Number of elements of an array (simdjson's count saturates at 2^24 - 1: count those).
+std::size_t array_size(simdjson::dom::array array) {
+  std::size_t n = array.size();
+  if (n < 0xFFFFFF) return n;
+  n = 0;
+  for ([[maybe_unused]] Element item : array) ++n;
+  return n;
+}
+
+std::size_t array_size(Element value) {
+  simdjson::dom::array array;
+  return value.get_array().get(array) == simdjson::SUCCESS ? array_size(array) : 0;
+}
+
+// The value as nlohmann::json holds it after parsing the same text (the last duplicate key wins).
+json to_json(Element value) {
+  switch (value.type()) {
+    case element_type::OBJECT: {
+      json out = json::object();
+      for (const auto field : object_of(value)) {
+        out[std::string(field.key)] = to_json(field.value);
+      }
+      return out;
+    }
+    case element_type::ARRAY: {
+      json out = json::array();
+      for (const Element item : array_of(value)) out.push_back(to_json(item));
+      return out;
+    }
+    case element_type::STRING:
+      return std::string(string_of(value));
+    case element_type::BOOL:
+      return value.get_bool().value_unsafe();
+    case element_type::INT64: {
+      const std::int64_t v = value.get_int64().value_unsafe();
+      // nlohmann holds non-negative integers unsigned.
+      return v >= 0 ? json(static_cast<std::uint64_t>(v)) : json(v);
+    }
+    case element_type::UINT64:
+      return value.get_uint64().value_unsafe();
+    case element_type::DOUBLE:
+      return value.get_double().value_unsafe();
+    case element_type::NULL_VALUE:
+      break;
+  }
+  return nullptr;
+}
+
+std::string compact(Element value) {
+  return to_json(value).dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
 // A numeric or non-empty string id, as text.
-std::optional<std::string> id_text(const json& value) {
-  if (value.is_string() && !value.get_ref<const std::string&>().empty()) {
-    return value.get<std::string>();
+std::optional<std::string> id_text(Element value) {
+  if (value.type() == element_type::STRING && !string_of(value).empty()) {
+    return std::string(string_of(value));
   }
-  if (value.is_number()) return number_text(value.get<double>());
+  if (is_number(value)) return number_text(number(value));
   return std::nullopt;
 }
 
-const json* member(const json& object, const char* key) {
-  if (!object.is_object()) return nullptr;
-  const auto it = object.find(key);
-  return it == object.end() ? nullptr : &*it;
+// The values of members `keys` of an object in one pass over its members: the last of each.
+template <std::size_t N>
+std::array<std::optional<Element>, N> members(Element object,
+                                              const std::array<std::string_view, N>& keys) {
+  std::array<std::optional<Element>, N> found;
+  simdjson::dom::object fields;
+  if (object.get_object().get(fields) != simdjson::SUCCESS) return found;
+  for (const auto field : fields) {
+    for (std::size_t k = 0; k < N; ++k) {
+      if (field.key == keys[k]) found[k] = field.value;
+    }
+  }
+  return found;
+}
+
+// The value of member `key` of an object: the last one, as nlohmann keeps the last duplicate.
+std::optional<Element> member(Element object, std::string_view key) {
+  return members<1>(object, {key})[0];
 }
 
 bool is_geojson_geometry(std::string_view type) {
@@ -293,6 +440,47 @@ struct FeatureState {
 };
 
 // ---------------------------------------------------------------------------------------------
+// simdjson pieces.
+
+// A DOM parser with the text it parses (a copy: simdjson reads up to SIMDJSON_PADDING bytes past
+// the end) and the document it holds.
+struct ParsedPiece {
+  simdjson::dom::parser parser;
+  std::vector<char> bytes;
+  Element root;
+
+  // Parses the concatenation of `parts`, nesting up to `max_depth` deep. With `redump`, text
+  // simdjson rejects is read by nlohmann (which takes integers beyond 64 bits as doubles) and its
+  // compact dump is parsed instead.
+  bool parse(std::initializer_list<std::string_view> parts, bool redump, std::size_t max_depth) {
+    if (max_depth > parser.max_depth() &&
+        parser.allocate(simdjson::dom::MINIMAL_DOCUMENT_CAPACITY, max_depth) != simdjson::SUCCESS) {
+      return false;
+    }
+    if (parse_copy(parts)) return true;
+    if (!redump) return false;
+    const json value = json::parse(bytes.data(), bytes.data() + size_, nullptr, false);
+    return !value.is_discarded() &&
+           parse_copy({value.dump(-1, ' ', false, json::error_handler_t::replace)});
+  }
+
+ private:
+  bool parse_copy(std::initializer_list<std::string_view> parts) {
+    size_ = 0;
+    for (std::string_view part : parts) size_ += part.size();
+    if (bytes.size() < size_ + simdjson::SIMDJSON_PADDING) {
+      bytes.resize(size_ + simdjson::SIMDJSON_PADDING);
+    }
+    char* out = bytes.data();
+    for (std::string_view part : parts) out = std::copy(part.begin(), part.end(), out);
+    const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
+    return parser.parse(data, size_, false).get(root) == simdjson::SUCCESS;
+  }
+
+  std::size_t size_ = 0;
+};
+
+// ---------------------------------------------------------------------------------------------
 
 class Reader : public FootprintBuilder {
  public:
@@ -308,10 +496,18 @@ class Reader : public FootprintBuilder {
   // Diagnostics ----------------------------------------------------------------------------
   Location at(std::size_t offset);
   Location locate(std::size_t feature, const FootprintPlace& place) override;
-  void report(base::Severity severity, const char* code, std::string message, std::size_t offset,
-              std::vector<std::string> notes = {}) {
+  // Diagnostics of the walk (report, feature_issue) are emitted only once the whole text is known
+  // to be valid JSON: ensure_valid() parses what the walk has not reached yet.
+  void emit(base::Severity severity, const char* code, std::string message, std::size_t offset,
+            std::vector<std::string> notes = {}) {
     FootprintBuilder::report(severity, code, std::move(message), at(offset), std::move(notes));
   }
+  void report(base::Severity severity, const char* code, std::string message, std::size_t offset,
+              std::vector<std::string> notes = {}) {
+    ensure_valid();
+    emit(severity, code, std::move(message), offset, std::move(notes));
+  }
+  void ensure_valid();
   void feature_issue(FeatureState& feature, bool is_error, const char* code,
                      const std::string& message, const std::vector<PathStep>& path,
                      std::vector<std::string> notes = {});
@@ -319,20 +515,22 @@ class Reader : public FootprintBuilder {
 
   // Stages ---------------------------------------------------------------------------------
   bool prescan();
-  std::optional<json> parse();
-  void read_top_level(const json& doc);
-  void read_crs(const json& doc);
+  bool parse();
+  std::size_t group_count() const;
+  bool parse_group(std::size_t group, std::vector<ParsedPiece>& pieces);
+  bool valid_group(std::size_t group, std::vector<ParsedPiece>& pieces);
+  bool nlohmann_accepts();
+  void syntax_failure();
+  void read_top_level(Element doc);
+  void read_crs(Element doc);
   FeatureState& add_feature(std::size_t offset);
-  void read_features(const std::vector<std::size_t>& offsets);
-  void read_feature(const json& value, std::size_t index, std::size_t offset);
-  void read_geometry(FeatureState& feature, const json& geometry);
-  void read_properties(FeatureState& feature, const json& value);
-  std::optional<kernel::Polygon> read_polygon(FeatureState& feature, const json& rings,
-                                              Where where);
-  std::optional<kernel::Ring> read_ring(FeatureState& feature, const json& ring,
-                                        const Where& where);
-  std::optional<kernel::Vec2> read_position(FeatureState& feature, const json& position,
-                                            Where where);
+  void read_features();
+  void read_feature(Element value, std::size_t offset);
+  void read_geometry(FeatureState& feature, Element geometry);
+  void read_properties(FeatureState& feature, Element value);
+  std::optional<kernel::Polygon> read_polygon(FeatureState& feature, Element rings, Where where);
+  std::optional<kernel::Ring> read_ring(FeatureState& feature, Element ring, const Where& where);
+  std::optional<kernel::Vec2> read_position(FeatureState& feature, Element position, Where where);
 
   std::string_view text_;
   const GeoJsonOptions& geo_options_;
@@ -342,7 +540,24 @@ class Reader : public FootprintBuilder {
   std::size_t crs_offset_ = kNone;
   std::size_t root_offset_ = 0;
   std::vector<FeatureState> states_;  // parallel to features_
+
+  // A FeatureCollection's "features" array is cut out of the top-level piece (parsed as "[]") and
+  // its elements are parsed kChunk at a time, "[" + their text + "]", kGroup chunks in parallel.
+  static constexpr std::size_t kChunk = 256;
+  static constexpr std::size_t kGroup = 32;
+  ParsedPiece top_;
+  std::size_t features_at_ = kNone;  // offset of the cut-out array
+  std::size_t features_end_ = kNone;
+  std::vector<std::size_t> feature_offsets_;
+  std::vector<ParsedPiece> chunks_ = std::vector<ParsedPiece>(kGroup);
+  std::size_t parsed_group_ = kNone;  // the group chunks_ holds
+  bool validated_ = false;            // every group has been parsed once
+  std::optional<ErrorCatcher> catcher_;
+  bool redump_ = false;  // nlohmann accepted a text simdjson rejected
 };
+
+// Thrown when a piece parsed after the walk began is not valid JSON; run() drops what was read.
+struct SyntaxAbort {};
 
 FootprintBuilder::Location Reader::at(std::size_t offset) {
   if (offset == kNone) return whole_input();
@@ -363,6 +578,7 @@ FootprintBuilder::Location Reader::locate(std::size_t feature, const FootprintPl
 void Reader::feature_issue(FeatureState& feature, bool is_error, const char* code,
                            const std::string& message, const std::vector<PathStep>& path,
                            std::vector<std::string> notes) {
+  ensure_valid();
   const std::size_t offset =
       feature.offset == kNone ? kNone : locator_.follow(feature.offset, path);
   FootprintBuilder::feature_issue(feature.index, is_error, code, message, at(offset),
@@ -383,46 +599,129 @@ std::vector<PathStep> Reader::geometry_path(const FeatureState& feature, const W
 bool Reader::prescan() {
   root_offset_ = locator_.skip_space(0);
   if (root_offset_ >= text_.size()) {
-    report(base::Severity::kError, "GEO002", "file is empty; expected a GeoJSON object", kNone);
+    emit(base::Severity::kError, "GEO002", "file is empty; expected a GeoJSON object", kNone);
     return false;
   }
-  if (const auto deep = find_too_deep(text_, geo_options_.max_depth)) {
-    report(base::Severity::kError, "GEO003",
-           "arrays and objects nest deeper than " + std::to_string(geo_options_.max_depth) +
-               " levels (GeoJsonOptions::max_depth)",
-           *deep);
+  Layout layout = scan_layout(text_, root_offset_, geo_options_.max_depth);
+  if (const auto deep = layout.too_deep) {
+    emit(base::Severity::kError, "GEO003",
+         "arrays and objects nest deeper than " + std::to_string(geo_options_.max_depth) +
+             " levels (GeoJsonOptions::max_depth)",
+         *deep);
     return false;
   }
+  features_at_ = layout.features_at;
+  features_end_ = layout.features_end;
+  feature_offsets_ = std::move(layout.elements);
   return true;
 }
 
-// Stage 2: JSON. The DOM parse runs without exceptions; only on failure a second, validating
-// SAX pass finds the error's position and nlohmann's message. The elements of the root's
-// "features" array are checked but not kept: read_features() parses them one batch at a time, so
-// a city's features are never all in memory as JSON.
-std::optional<json> Reader::parse() {
-  const char* begin = text_.data();
-  bool in_features = false;
-  bool features_key = false;
-  const json::parser_callback_t drop_features = [&](int depth, json::parse_event_t event,
-                                                    json& parsed) {
-    using Event = json::parse_event_t;
-    if (depth == 1 && event == Event::key) {
-      features_key = parsed == "features";
-    } else if (depth == 1 && event == Event::array_start) {
-      in_features = features_key;
-    } else if (depth == 1 && event == Event::array_end) {
-      in_features = false;
-    } else if (depth == 2 && in_features &&
-               (event == Event::object_end || event == Event::array_end || event == Event::value)) {
+// Stage 2: JSON. simdjson parses the text in pieces that together cover all of it (the glue
+// between them is whitespace and commas, checked here): the top level with a FeatureCollection's
+// "features" array cut out (parsed as "[]"), then that array's elements kChunk at a time, kGroup
+// chunks in parallel, so a city's features are never all in memory as JSON. Here the top level and
+// the first group are parsed; read_features() parses the other groups as it reaches them. A syntax
+// error is the only diagnostic of a text: a diagnostic of the walk waits for ensure_valid(), and a
+// syntax error found by the walk before any drops what was read (run()).
+bool Reader::parse() {
+  const bool ok = features_at_ == kNone
+                      ? top_.parse({text_.substr(root_offset_)}, redump_, geo_options_.max_depth)
+                      : top_.parse({text_.substr(root_offset_, features_at_ - root_offset_), "[]",
+                                    text_.substr(features_end_)},
+                                   redump_, geo_options_.max_depth);
+  if (!ok) {
+    if (redump_ || !nlohmann_accepts()) {
+      syntax_failure();
       return false;
     }
-    return true;
-  };
-  json doc = json::parse(begin, begin + text_.size(), drop_features, false);
-  if (!doc.is_discarded()) return doc;
-  ErrorCatcher catcher;
-  json::sax_parse(begin, begin + text_.size(), &catcher);
+    redump_ = true;  // nlohmann accepts what simdjson rejected (an integer beyond 64 bits)
+    return parse();
+  }
+  if (features_at_ == kNone) return true;
+  // The first element (or the closing bracket) follows '[' after whitespace only.
+  const std::size_t first = locator_.skip_space(features_at_ + 1);
+  if (first != (feature_offsets_.empty() ? features_end_ - 1 : feature_offsets_[0])) {
+    syntax_failure();
+    return false;
+  }
+  if (group_count() == 0) return true;
+  if (!valid_group(0, chunks_)) return false;
+  parsed_group_ = 0;
+  return true;
+}
+
+std::size_t Reader::group_count() const {
+  return (feature_offsets_.size() + kChunk * kGroup - 1) / (kChunk * kGroup);
+}
+
+// Parses the chunks of `group` into `pieces`, in parallel: "[" + the text from a chunk's first
+// element to the next chunk's (less the comma between them) + "]". False when one is not valid
+// JSON.
+bool Reader::parse_group(std::size_t group, std::vector<ParsedPiece>& pieces) {
+  const std::size_t count = feature_offsets_.size();
+  const std::size_t first = group * kGroup * kChunk;
+  const std::size_t chunks = std::min(kGroup, (count - first + kChunk - 1) / kChunk);
+  pieces.resize(kGroup);
+  std::vector<char> ok(chunks, 0);
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t k) {
+    const std::size_t begin = first + k * kChunk;
+    const std::size_t end = std::min(begin + kChunk, count);
+    std::string_view piece = text_.substr(feature_offsets_[begin]);
+    piece = piece.substr(
+        0, (end < count ? feature_offsets_[end] : features_end_ - 1) - feature_offsets_[begin]);
+    const auto trim = [&piece] {
+      while (!piece.empty() && is_space(piece.back())) piece.remove_suffix(1);
+    };
+    trim();
+    if (end < count) {
+      if (piece.empty() || piece.back() != ',') return;
+      piece.remove_suffix(1);
+      trim();
+    }
+    ok[k] = pieces[k].parse({"[", piece, "]"}, redump_, geo_options_.max_depth) &&
+            array_size(pieces[k].root) == end - begin;
+  });
+  return std::all_of(ok.begin(), ok.end(), [](char v) { return v != 0; });
+}
+
+// parse_group(), or, when simdjson rejects the text, GEO001 (false) unless nlohmann accepts it.
+bool Reader::valid_group(std::size_t group, std::vector<ParsedPiece>& pieces) {
+  if (parse_group(group, pieces)) return true;
+  if (!redump_ && nlohmann_accepts()) {
+    redump_ = true;  // nlohmann accepts what simdjson rejected (an integer beyond 64 bits)
+    if (parse_group(group, pieces)) return true;
+  }
+  syntax_failure();
+  return false;
+}
+
+void Reader::ensure_valid() {
+  if (validated_) return;
+  validated_ = true;
+  if (parsed_group_ == kNone) return;  // no features, or not parsed yet
+  std::vector<ParsedPiece> pieces;
+  for (std::size_t group = parsed_group_ + 1; group < group_count(); ++group) {
+    if (!valid_group(group, pieces)) throw SyntaxAbort{};
+  }
+}
+
+// Whether nlohmann accepts the text: its validating SAX pass runs once, catcher_ keeps the error.
+bool Reader::nlohmann_accepts() {
+  if (!catcher_) {
+    catcher_.emplace();
+    const char* begin = text_.data();
+    json::sax_parse(begin, begin + text_.size(), &*catcher_);
+  }
+  return catcher_->message.empty();
+}
+
+// GEO001 from nlohmann's message for the error its SAX pass finds.
+void Reader::syntax_failure() {
+  if (nlohmann_accepts()) {  // not expected: simdjson rejects a text nlohmann accepts
+    emit(base::Severity::kError, "GEO001", "the JSON parser rejected this text", root_offset_);
+    return;
+  }
+  const ErrorCatcher& catcher = *catcher_;
   std::string message = catcher.message;
   std::vector<std::string> notes;
   const std::string_view at = text_.substr(std::min(catcher.offset, text_.size()));
@@ -439,41 +738,40 @@ std::optional<json> Reader::parse() {
   } else if (catcher.offset >= text_.size()) {
     notes.push_back("the file ends in the middle of a value: is it truncated?");
   }
-  report(base::Severity::kError, "GEO001", message, catcher.offset, std::move(notes));
-  return std::nullopt;
+  emit(base::Severity::kError, "GEO001", message, catcher.offset, std::move(notes));
 }
 
 // Stage 3: structure.
-void Reader::read_top_level(const json& doc) {
+void Reader::read_top_level(Element doc) {
   const char* expected = "expected a FeatureCollection, a Feature, a Polygon or a MultiPolygon";
-  if (!doc.is_object()) {
+  if (doc.type() != element_type::OBJECT) {
     report(base::Severity::kError, "GEO004",
            "the top-level value is " + type_name(doc) + "; " + expected, root_offset_);
     return;
   }
-  const json* type = member(doc, "type");
-  if (type == nullptr || !type->is_string()) {
+  const std::optional<Element> type = member(doc, "type");
+  if (!type || type->type() != element_type::STRING) {
     report(base::Severity::kError, "GEO004",
            "the top-level object has no \"type\" string; " + std::string(expected),
-           type == nullptr ? root_offset_ : locator_.member(root_offset_, "type"));
+           !type ? root_offset_ : locator_.member(root_offset_, "type"));
     return;
   }
   read_crs(doc);
-  const std::string& name = type->get_ref<const std::string&>();
+  const std::string_view name = string_of(*type);
   if (name == "FeatureCollection") {
-    const json* features = member(doc, "features");
-    const std::size_t at = locator_.member(root_offset_, "features");
-    if (features == nullptr || !features->is_array()) {
+    const std::optional<Element> features = member(doc, "features");
+    const std::size_t at =
+        features_at_ != kNone ? features_at_ : locator_.member(root_offset_, "features");
+    if (!features || features->type() != element_type::ARRAY) {
       report(base::Severity::kError, "GEO005",
-             features == nullptr
-                 ? "the FeatureCollection has no \"features\" member"
-                 : "\"features\" is " + type_name(*features) + "; expected an array",
+             !features ? "the FeatureCollection has no \"features\" member"
+                       : "\"features\" is " + type_name(*features) + "; expected an array",
              at == kNone ? root_offset_ : at);
       return;
     }
-    read_features(locator_.elements(at));
+    read_features();
   } else if (name == "Feature") {
-    read_feature(doc, 0, root_offset_);
+    read_feature(doc, root_offset_);
   } else if (name == "Polygon" || name == "MultiPolygon") {
     FeatureState& feature = add_feature(root_offset_);
     feature.bare_geometry = true;
@@ -487,20 +785,22 @@ void Reader::read_top_level(const json& doc) {
 
 // GeoJSON 2008: {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::25832"}}, or
 // {"type": "EPSG", "properties": {"code": 25832}}.
-void Reader::read_crs(const json& doc) {
-  const json* crs = member(doc, "crs");
-  if (crs == nullptr || crs->is_null()) return;
+void Reader::read_crs(Element doc) {
+  const std::optional<Element> crs = member(doc, "crs");
+  if (!crs || crs->type() == element_type::NULL_VALUE) return;
   const std::size_t at = locator_.member(root_offset_, "crs");
-  const json* props = member(*crs, "properties");
-  const json* name = props != nullptr ? member(*props, "name") : nullptr;
-  const json* code = props != nullptr ? member(*props, "code") : nullptr;
+  const std::optional<Element> props = member(*crs, "properties");
+  const std::optional<Element> name = props ? member(*props, "name") : std::nullopt;
+  const std::optional<Element> code = props ? member(*props, "code") : std::nullopt;
   int epsg = 0;
   std::string text = compact(*crs);
-  if (name != nullptr && name->is_string()) {
-    text = name->get<std::string>();
+  if (name && name->type() == element_type::STRING) {
+    text = std::string(string_of(*name));
     epsg = epsg_code(text);
-  } else if (code != nullptr && code->is_number_integer()) {
-    epsg = code->get<int>();
+  } else if (code && code->type() == element_type::INT64) {
+    epsg = static_cast<int>(code->get_int64().value_unsafe());
+  } else if (code && code->type() == element_type::UINT64) {
+    epsg = static_cast<int>(code->get_uint64().value_unsafe());
   }
   crs_offset_ = at;
   if (epsg > 0) {
@@ -525,34 +825,37 @@ FeatureState& Reader::add_feature(std::size_t offset) {
   return feature;
 }
 
-// The FeatureCollection's features at `offsets`, parsed in parallel a batch at a time (the whole
-// text passed the parser already) and read in order.
-void Reader::read_features(const std::vector<std::size_t>& offsets) {
-  constexpr std::size_t kBatch = 8192;
-  std::vector<json> batch;
-  for (std::size_t first = 0; first < offsets.size() && !stopped_; first += kBatch) {
-    const std::size_t count = std::min(kBatch, offsets.size() - first);
-    batch.assign(count, json());
-    tbb::parallel_for(std::size_t{0}, count, [&](std::size_t k) {
-      const std::size_t start = offsets[first + k];
-      const char* at = text_.data() + start;
-      batch[k] = json::parse(at, text_.data() + locator_.skip_value(start), nullptr, false);
-    });
-    for (std::size_t k = 0; k < count && !stopped_; ++k) {
-      read_feature(batch[k], first + k, offsets[first + k]);
+// The FeatureCollection's features, parsed in parallel a group at a time (parse() left the first
+// group in chunks_) and read in order.
+void Reader::read_features() {
+  const std::size_t count = feature_offsets_.size();
+  for (std::size_t group = 0; group < group_count() && !stopped_; ++group) {
+    if (parsed_group_ != group) {
+      if (!valid_group(group, chunks_)) throw SyntaxAbort{};
+      parsed_group_ = group;
+    }
+    for (std::size_t k = 0; k < kGroup && !stopped_; ++k) {
+      std::size_t index = (group * kGroup + k) * kChunk;
+      if (index >= count) break;
+      for (const Element value : array_of(chunks_[k].root)) {
+        if (stopped_) break;
+        read_feature(value, feature_offsets_[index++]);
+      }
     }
   }
+  validated_ = true;
 }
 
-void Reader::read_feature(const json& value, std::size_t /*index*/, std::size_t offset) {
+void Reader::read_feature(Element value, std::size_t offset) {
   FeatureState& feature = add_feature(offset);
   RawFootprint& raw = features_[feature.index];
-  if (!value.is_object()) {
+  if (value.type() != element_type::OBJECT) {
     feature_issue(feature, true, "GEO015", "is " + type_name(value) + "; expected an object", {});
     return;
   }
-  const json* props = member(value, "properties");
-  if (const json* id = member(value, "id"); id != nullptr && !id->is_null()) {
+  const auto [id, type, props, geometry] =
+      members<4>(value, {"id", "type", "properties", "geometry"});
+  if (id && id->type() != element_type::NULL_VALUE) {
     if (auto text = id_text(*id)) {
       raw.id = *text;
       feature.id_path = {{"id", 0}};
@@ -563,72 +866,87 @@ void Reader::read_feature(const json& value, std::size_t /*index*/, std::size_t 
     }
   }
   for (const char* key : {"id", "name"}) {
-    const json* alt = props != nullptr ? member(*props, key) : nullptr;
-    if (!raw.id.empty() || alt == nullptr) continue;
+    const std::optional<Element> alt = props ? member(*props, key) : std::nullopt;
+    if (!raw.id.empty() || !alt) continue;
     if (auto text = id_text(*alt)) {
       raw.id = *text;
       feature.id_path = {{"properties", 0}, {key, 0}};
     }
   }
   if (!raw.id.empty()) raw.label += " (id " + quote_text(raw.id) + ")";
-  const json* type = member(value, "type");
-  if (type == nullptr || !type->is_string() || type->get_ref<const std::string&>() != "Feature") {
+  if (!type || type->type() != element_type::STRING || string_of(*type) != "Feature") {
     feature_issue(feature, true, "GEO015",
-                  type == nullptr ? std::string("has no \"type\"; expected \"Feature\"")
-                                  : "\"type\" is " + compact(*type) + "; expected \"Feature\"",
+                  !type ? std::string("has no \"type\"; expected \"Feature\"")
+                        : "\"type\" is " + compact(*type) + "; expected \"Feature\"",
                   {{"type", 0}});
     return;
   }
-  if (props != nullptr) read_properties(feature, *props);
-  const json* geometry = member(value, "geometry");
-  if (geometry == nullptr || geometry->is_null()) {
+  if (props) read_properties(feature, *props);
+  if (!geometry || geometry->type() == element_type::NULL_VALUE) {
     feature_issue(feature, false, "GEO017",
-                  geometry == nullptr ? "has no geometry; skipped" : "geometry is null; skipped",
+                  !geometry ? "has no geometry; skipped" : "geometry is null; skipped",
                   {{"geometry", 0}});
     return;
   }
   read_geometry(feature, *geometry);
 }
 
-void Reader::read_properties(FeatureState& feature, const json& value) {
-  if (value.is_null()) return;
-  if (!value.is_object()) {
+void Reader::read_properties(FeatureState& feature, Element value) {
+  if (value.type() == element_type::NULL_VALUE) return;
+  if (value.type() != element_type::OBJECT) {
     feature_issue(feature, false, "GEO018",
                   "\"properties\" is " + type_name(value) + "; expected an object; ignored",
                   {{"properties", 0}});
     return;
   }
-  for (const auto& [key, item] : value.items()) {
+  shape::AttributeMap& properties = features_[feature.index].properties;
+  for (const auto field : object_of(value)) {
     shape::Value converted;
-    if (item.is_boolean()) {
-      converted = item.get<bool>();
-    } else if (item.is_number()) {
-      converted = item.get<double>();
-    } else if (item.is_string()) {
-      converted = item.get<std::string>();
-    } else if (!item.is_null()) {
-      converted = compact(item);
+    switch (field.value.type()) {
+      case element_type::BOOL:
+        converted = field.value.get_bool().value_unsafe();
+        break;
+      case element_type::INT64:
+      case element_type::UINT64:
+      case element_type::DOUBLE:
+        converted = number(field.value);
+        break;
+      case element_type::STRING:
+        converted = std::string(string_of(field.value));
+        break;
+      case element_type::OBJECT:
+      case element_type::ARRAY:
+        converted = compact(field.value);
+        break;
+      case element_type::NULL_VALUE:
+        break;
     }
-    features_[feature.index].properties.insert_or_assign(key, std::move(converted));
+    // Duplicate keys: the last one wins, as in nlohmann's map.
+    const auto it = properties.find(field.key);
+    if (it != properties.end()) {
+      it->second = std::move(converted);
+    } else {
+      properties.emplace(std::string(field.key), std::move(converted));
+    }
   }
 }
 
-void Reader::read_geometry(FeatureState& feature, const json& geometry) {
+void Reader::read_geometry(FeatureState& feature, Element geometry) {
   const std::vector<PathStep> here =
       feature.bare_geometry ? std::vector<PathStep>{} : std::vector<PathStep>{{"geometry", 0}};
-  if (!geometry.is_object()) {
+  if (geometry.type() != element_type::OBJECT) {
     feature_issue(feature, true, "GEO016",
                   "geometry is " + type_name(geometry) + "; expected an object", here);
     return;
   }
-  const json* type = member(geometry, "type");
+  const auto [type, coordinates] = members<2>(geometry, {"type", "coordinates"});
   std::vector<PathStep> type_path = here;
   type_path.push_back({"type", 0});
-  if (type == nullptr || !type->is_string()) {
+  if (!type || type->type() != element_type::STRING) {
     feature_issue(feature, true, "GEO016", "geometry has no \"type\" string", type_path);
     return;
   }
-  const std::string& name = type->get_ref<const std::string&>();
+  const std::string name(string_of(*type));
   if (!is_geojson_geometry(name)) {
     feature_issue(feature, true, "GEO016",
                   "geometry type " + quote_text(name) + " is not a GeoJSON geometry type",
@@ -640,18 +958,18 @@ void Reader::read_geometry(FeatureState& feature, const json& geometry) {
                   type_path);
     return;
   }
-  const json* coordinates = member(geometry, "coordinates");
   std::vector<PathStep> coordinates_path = here;
   coordinates_path.push_back({"coordinates", 0});
-  if (coordinates == nullptr || !coordinates->is_array()) {
+  if (!coordinates || coordinates->type() != element_type::ARRAY) {
     feature_issue(feature, true, "GEO014",
-                  coordinates == nullptr ? name + " has no \"coordinates\""
-                                         : name + " \"coordinates\" is " + type_name(*coordinates) +
-                                               "; expected an array",
-                  coordinates == nullptr ? here : coordinates_path);
+                  !coordinates ? name + " has no \"coordinates\""
+                               : name + " \"coordinates\" is " + type_name(*coordinates) +
+                                     "; expected an array",
+                  !coordinates ? here : coordinates_path);
     return;
   }
-  if (coordinates->empty()) {
+  const simdjson::dom::array polygons = array_of(*coordinates);
+  if (array_size(polygons) == 0) {
     feature_issue(feature, false, "GEO017", "empty " + name + "; skipped", coordinates_path);
     return;
   }
@@ -662,29 +980,33 @@ void Reader::read_geometry(FeatureState& feature, const json& geometry) {
     return;
   }
   features_[feature.index].multi = true;
-  for (std::size_t i = 0; i < coordinates->size() && !stopped_; ++i) {
+  std::size_t i = 0;
+  for (const Element rings : polygons) {
+    if (stopped_) break;
     Where where;
-    where.polygon = i;
-    if (auto polygon = read_polygon(feature, (*coordinates)[i], where)) {
+    where.polygon = i++;
+    if (auto polygon = read_polygon(feature, rings, where)) {
       features_[feature.index].polygons.push_back(std::move(*polygon));
     }
   }
 }
 
-std::optional<kernel::Polygon> Reader::read_polygon(FeatureState& feature, const json& rings,
+std::optional<kernel::Polygon> Reader::read_polygon(FeatureState& feature, Element rings,
                                                     Where where) {
-  if (!rings.is_array() || rings.empty()) {
+  const bool is_array = rings.type() == element_type::ARRAY;
+  if (!is_array || array_size(rings) == 0) {
     feature_issue(feature, true, "GEO014",
-                  ring_label(where) + " is " + (rings.is_array() ? "empty" : type_name(rings)) +
+                  ring_label(where) + " is " + (is_array ? "empty" : type_name(rings)) +
                       "; expected an array of rings",
                   geometry_path(feature, where));
     return std::nullopt;
   }
   kernel::Polygon polygon;
   bool ok = true;
-  for (std::size_t r = 0; r < rings.size(); ++r) {
+  std::size_t r = 0;
+  for (const Element item : array_of(rings)) {
     where.ring = r;
-    auto ring = read_ring(feature, rings[r], where);
+    auto ring = read_ring(feature, item, where);
     if (!ring) {
       ok = false;
     } else if (r == 0) {
@@ -692,6 +1014,7 @@ std::optional<kernel::Polygon> Reader::read_polygon(FeatureState& feature, const
     } else {
       polygon.holes.push_back(std::move(*ring));
     }
+    ++r;
   }
   if (!ok) return std::nullopt;
   return polygon;
@@ -699,22 +1022,24 @@ std::optional<kernel::Polygon> Reader::read_polygon(FeatureState& feature, const
 
 // A ring must be closed (RFC 7946 3.1.6); an open one is closed with a warning, since adding the
 // closing position cannot change the intended shape.
-std::optional<kernel::Ring> Reader::read_ring(FeatureState& feature, const json& ring,
+std::optional<kernel::Ring> Reader::read_ring(FeatureState& feature, Element ring,
                                               const Where& where) {
-  if (!ring.is_array()) {
+  if (ring.type() != element_type::ARRAY) {
     feature_issue(feature, true, "GEO014",
                   ring_label(where) + " is " + type_name(ring) + "; expected an array of positions",
                   geometry_path(feature, where));
     return std::nullopt;
   }
+  const simdjson::dom::array positions = array_of(ring);
   kernel::Ring out;
-  out.reserve(ring.size());
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    Where at = where;
-    at.position = i;
-    auto p = read_position(feature, ring[i], at);
+  out.reserve(array_size(positions));
+  Where at = where;
+  at.position = 0;
+  for (const Element position : positions) {
+    auto p = read_position(feature, position, at);
     if (!p) return std::nullopt;
     out.push_back(*p);
+    ++at.position;
   }
   const std::size_t n = out.size();
   const bool closed = n >= 2 && out.front() == out.back();
@@ -737,36 +1062,41 @@ std::optional<kernel::Ring> Reader::read_ring(FeatureState& feature, const json&
   return out;
 }
 
-std::optional<kernel::Vec2> Reader::read_position(FeatureState& feature, const json& position,
+// The label of a position in messages: "polygon 1 ring 0 position 3".
+std::string position_label(const Where& where) {
+  return ring_label(where) + " position " + std::to_string(where.position);
+}
+
+std::optional<kernel::Vec2> Reader::read_position(FeatureState& feature, Element position,
                                                   Where where) {
-  const std::string label = ring_label(where) + " position " + std::to_string(where.position);
-  if (!position.is_array() || position.size() < 2) {
+  const bool is_array = position.type() == element_type::ARRAY;
+  const std::size_t size = is_array ? array_size(position) : 0;
+  if (size < 2) {
     feature_issue(feature, true, "GEO014",
-                  label + " is " +
-                      (position.is_array() ? "an array of " + std::to_string(position.size())
-                                           : type_name(position)) +
+                  position_label(where) + " is " +
+                      (is_array ? "an array of " + std::to_string(size) : type_name(position)) +
                       "; expected [x, y] or [x, y, z]",
                   geometry_path(feature, where));
     return std::nullopt;
   }
   double xyz[3] = {0, 0, 0};
-  const std::size_t used = std::min<std::size_t>(position.size(), 3);
-  for (std::size_t c = 0; c < used; ++c) {
+  std::size_t c = 0;
+  for (const Element v : array_of(position)) {
+    if (c == 3) break;
     where.coordinate = c;
-    const json& v = position[c];
-    if (!v.is_number()) {
+    if (!is_number(v)) {
       feature_issue(
           feature, true, "GEO012",
-          label + " coordinate " + std::to_string(c) + " is " + type_name(v) +
-              (v.is_string() ? " (" + quote_text(v.get_ref<const std::string&>()) + ")" : "") +
+          position_label(where) + " coordinate " + std::to_string(c) + " is " + type_name(v) +
+              (v.type() == element_type::STRING ? " (" + quote_text(string_of(v)) + ")" : "") +
               "; expected a number",
           geometry_path(feature, where));
       return std::nullopt;
     }
-    xyz[c] = v.get<double>();
+    xyz[c] = number(v);
     if (!std::isfinite(xyz[c]) || std::abs(xyz[c]) > geo_options_.max_abs_coordinate) {
       feature_issue(feature, true, "GEO013",
-                    label + " coordinate " +
+                    position_label(where) + " coordinate " +
                         (std::isfinite(xyz[c]) ? number_text(xyz[c]) + " is beyond +-" +
                                                      number_text(geo_options_.max_abs_coordinate) +
                                                      " m (GeoJsonOptions::max_abs_coordinate)"
@@ -774,12 +1104,13 @@ std::optional<kernel::Vec2> Reader::read_position(FeatureState& feature, const j
                     geometry_path(feature, where));
       return std::nullopt;
     }
+    ++c;
   }
-  if ((position.size() > 3 || xyz[2] != 0) && !warned_extra_dimensions_) {
+  if ((size > 3 || xyz[2] != 0) && !warned_extra_dimensions_) {
     warned_extra_dimensions_ = true;
     where.coordinate = 2;
     feature_issue(feature, false, "GEO009",
-                  label + " has " + std::to_string(position.size()) +
+                  position_label(where) + " has " + std::to_string(size) +
                       " numbers; only x and y are used (footprints lie at z = 0; reported once)",
                   geometry_path(feature, where));
   }
@@ -787,9 +1118,23 @@ std::optional<kernel::Vec2> Reader::read_position(FeatureState& feature, const j
 }
 
 base::Result<FootprintSet> Reader::run() {
-  std::optional<json> doc;
-  if (prescan()) doc = parse();
-  if (doc) read_top_level(*doc);
+  if (prescan() && parse()) {
+    try {
+      read_top_level(top_.root);
+    } catch (const SyntaxAbort&) {
+      // No diagnostic but GEO001 has been emitted (ensure_valid()): forget what was read.
+      features_.clear();
+      states_.clear();
+      declared_crs_.clear();
+      crs_offset_ = kNone;
+    }
+  }
+  // The parsers' memory goes before the finishing steps allocate theirs.
+  top_ = ParsedPiece();
+  chunks_.clear();
+  chunks_.shrink_to_fit();
+  feature_offsets_.clear();
+  feature_offsets_.shrink_to_fit();
   finish_features(at(crs_offset_));
   return result();
 }
