@@ -70,7 +70,7 @@ node "$root/bench/make_footprints.mjs" 60000 "$tmp/big.geojson" >/dev/null
 "$insula" mass "$tmp/big.geojson" --crs EPSG:32633 --tile-faces 8000 \
   -o "$tmp/keep/tileset.json" --quiet >/dev/null 2>&1 &
 pid=$!
-for _ in $(seq 600); do
+for _ in $(seq 1800); do  # up to 90 s: the sanitized build is slow
   compgen -G "$tmp/keep/tiles.insula-partial/*.glb" >/dev/null && break
   sleep 0.05
 done
