@@ -535,7 +535,9 @@ class Reader : public FootprintBuilder {
   std::string_view text_;
   const GeoJsonOptions& geo_options_;
   TextLocator locator_;
-  std::optional<base::Source> source_;  // built on the first positioned diagnostic
+  // Where each line starts, built on the first positioned diagnostic: line and column as
+  // base::Source counts them (bytes, from 1), without a copy of a city-sized text.
+  std::vector<std::size_t> line_starts_;
   bool warned_extra_dimensions_ = false;
   std::size_t crs_offset_ = kNone;
   std::size_t root_offset_ = 0;
@@ -561,9 +563,17 @@ struct SyntaxAbort {};
 
 FootprintBuilder::Location Reader::at(std::size_t offset) {
   if (offset == kNone) return whole_input();
-  if (!source_) source_.emplace(name_, std::string(text_));
-  const auto [line, column] = source_->locate(offset);
-  return {offset, base::Span::at(name_, line, column)};
+  if (line_starts_.empty()) {
+    line_starts_.push_back(0);
+    for (std::size_t i = text_.find('\n'); i != std::string_view::npos;
+         i = text_.find('\n', i + 1)) {
+      line_starts_.push_back(i + 1);
+    }
+  }
+  const std::size_t at = std::min(offset, text_.size());
+  const auto line = std::upper_bound(line_starts_.begin(), line_starts_.end(), at) - 1;
+  return {offset, base::Span::at(name_, static_cast<std::uint32_t>(line - line_starts_.begin() + 1),
+                                 static_cast<std::uint32_t>(at - *line + 1))};
 }
 
 FootprintBuilder::Location Reader::locate(std::size_t feature, const FootprintPlace& place) {
