@@ -3,6 +3,9 @@
 // Run: build/bench/export_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <cstring>
+#include <span>
+
 #include "io/cityjson_writer.h"
 #include "io/gltf_writer.h"
 #include "io/obj_writer.h"
@@ -62,6 +65,40 @@ void BM_Obj(benchmark::State& state) {
 void BM_CityJson(benchmark::State& state) {
   run(state, [](const shape::Scene& s) { return cityjson_text(s); });
 }
+// The store-loop limit (issue 17, item 4): the least any mesh writer does, every triangle's three
+// corners stored as float positions (36 bytes) into one buffer, fan-triangulating each face, with
+// no attributes, no welding, no text. The writers' rates are compared to this one.
+std::string store_loop(const shape::Scene& scene) {
+  std::string out;
+  out.resize(36 * triangles(scene));
+  char* at = out.data();
+  const auto store = [&at](kernel::Vec3 p) {
+    const float xyz[3] = {static_cast<float>(p.x), static_cast<float>(p.y),
+                          static_cast<float>(p.z)};
+    std::memcpy(at, xyz, sizeof xyz);
+    at += sizeof xyz;
+  };
+  for (const shape::Building& building : scene.buildings) {
+    for (const shape::Part& part : building.parts) {
+      const kernel::Mesh& mesh = part.mesh;
+      for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+        const std::span<const std::uint32_t> face = mesh.face(f);
+        for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+          store(mesh.position(face[0]));
+          store(mesh.position(face[k]));
+          store(mesh.position(face[k + 1]));
+        }
+      }
+    }
+  }
+  return out;
+}
+
+void BM_StoreLoop(benchmark::State& state) {
+  run(state, store_loop);
+}
+
+BENCHMARK(BM_StoreLoop)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Glb)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Obj)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CityJson)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
