@@ -45,6 +45,15 @@ std::string building_entry(const shape::Building& building) {
   return entry.dump();
 }
 
+void MassReport::add_counts(const MassReport& other) {
+  buildings += other.buildings;
+  parts += other.parts;
+  vertices += other.vertices;
+  faces += other.faces;
+  triangles += other.triangles;
+  watertight += other.watertight;
+}
+
 void MassReport::describe_building(const shape::Building& building) {
   building_entries.push_back(building_entry(building));
 }

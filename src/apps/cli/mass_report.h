@@ -42,6 +42,8 @@ struct MassReport {
 
   void stage(std::string name, double seconds) { stages.emplace_back(std::move(name), seconds); }
   void count_building(const shape::Building& building, bool is_watertight);
+  // Adds `other`'s building, part, vertex, face, triangle and watertight counts.
+  void add_counts(const MassReport& other);
   // Adds the building's id, parts and insula:* attributes (mass_plan.h) as a report entry.
   void describe_building(const shape::Building& building);
   std::string json() const;

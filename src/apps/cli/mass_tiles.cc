@@ -99,8 +99,8 @@ std::size_t merge(const std::string& bytes,
   return j["tiles"].size();
 }
 
-// Builds and writes one tile; what the warnings and the report need goes into `work` (under its
-// caller's lock-free layout: each tile's slot is its own).
+// One tile built and written: its box, its error, its counts, and what the warnings and the report
+// need of its buildings that have something to say.
 struct TileResult {
   kernel::Bounds3 box;
   std::string error;
@@ -165,12 +165,7 @@ RankWork build_share(const MassOptions& options, const io::FootprintSet& set, co
     work.tiles.push_back(leaf);
     work.boxes.push_back(r.box);
     work.errors.push_back(std::move(r.error));
-    work.tally.buildings += r.tally.buildings;
-    work.tally.watertight += r.tally.watertight;
-    work.tally.parts += r.tally.parts;
-    work.tally.vertices += r.tally.vertices;
-    work.tally.faces += r.tally.faces;
-    work.tally.triangles += r.tally.triangles;
+    work.tally.add_counts(r.tally);
     for (auto& [unit, outcome] : r.outcomes) {
       work.units.push_back(unit);
       work.outcomes.push_back(std::move(outcome));
