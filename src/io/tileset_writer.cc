@@ -248,12 +248,13 @@ const std::vector<std::size_t>& TilesetWriter::leaf_items(std::size_t leaf) cons
 // the tile's centre (the scene's origin). One mesh then draws the whole tile, and a viewer picks
 // every part as a feature with its building's properties.
 std::string TilesetWriter::write_tile(std::size_t l,
-                                      const std::vector<const shape::Building*>& buildings) {
+                                      const std::vector<const shape::Building*>& buildings,
+                                      const std::vector<shape::Material>* materials) {
   Leaf& leaf = leaves_[l];
   shape::Scene tile;
   tile.crs = crs_;
   tile.origin = origin_ + leaf.centre;
-  tile.materials = materials_;
+  tile.materials = materials ? *materials : materials_;
   shape::Building& content = tile.buildings.emplace_back();
   content.id = tree_.nodes[leaf.node].name();
   const kernel::Transform offset = kernel::translation(-leaf.centre);

@@ -52,8 +52,11 @@ class TilesetWriter {
   // The items of leaf `leaf`, ascending.
   const std::vector<std::size_t>& leaf_items(std::size_t leaf) const;
   // Writes leaf `leaf`'s GLB from its buildings (local coordinates). Thread-safe for distinct
-  // leaves. Empty string on success, else the reason naming the file.
-  std::string write_tile(std::size_t leaf, const std::vector<const shape::Building*>& buildings);
+  // leaves. `materials`, when given, is the table the buildings' faces index instead of the
+  // writer's own (a front-end that finds its materials as it builds, tile by tile). Empty string
+  // on success, else the reason naming the file.
+  std::string write_tile(std::size_t leaf, const std::vector<const shape::Building*>& buildings,
+                         const std::vector<shape::Material>* materials = nullptr);
   // The box of what write_tile() wrote for `leaf` (empty: nothing); a leaf written by another
   // process (MPI) is told here before finish().
   kernel::Bounds3 tile_box(std::size_t leaf) const { return leaves_[leaf].box; }

@@ -27,6 +27,7 @@
 #include "apps/cli/progress.h"
 #include "apps/cli/ranks.h"
 #include "apps/cli/stopwatch.h"
+#include "apps/cli/tile_job.h"
 #include "apps/cli/validators.h"
 #include "apps/cli/view_options.h"
 #include "apps/cli/warnings.h"
@@ -128,13 +129,6 @@ void add_overlaps(const io::FootprintSet& set, const MassPlan& plan, MassReport&
                               set.footprints[plan.overlap_summary.largest_second].id,
                               plan.overlap_summary.largest_area};
   }
-}
-
-// Every output a 3D Tiles tileset: the city is built tile by tile and never held whole.
-bool tiles_only(const std::vector<std::string>& outputs) {
-  return std::all_of(outputs.begin(), outputs.end(), [](const std::string& out) {
-    return io::output_format_name(out) == "3dtiles";
-  });
 }
 
 }  // namespace

@@ -45,13 +45,17 @@ std::string building_entry(const shape::Building& building) {
   return entry.dump();
 }
 
-void MassReport::add_counts(const MassReport& other) {
-  buildings += other.buildings;
-  parts += other.parts;
-  vertices += other.vertices;
-  faces += other.faces;
-  triangles += other.triangles;
-  watertight += other.watertight;
+nlohmann::json MassReport::counts() const {
+  return {buildings, watertight, parts, vertices, faces, triangles};
+}
+
+void MassReport::add_counts(const nlohmann::json& counts) {
+  buildings += counts[0].get<std::size_t>();
+  watertight += counts[1].get<std::size_t>();
+  parts += counts[2].get<std::size_t>();
+  vertices += counts[3].get<std::size_t>();
+  faces += counts[4].get<std::size_t>();
+  triangles += counts[5].get<std::size_t>();
 }
 
 void MassReport::describe_building(const shape::Building& building) {

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "shape/scene.h"
 
 namespace insula::cli {
@@ -42,8 +44,10 @@ struct MassReport {
 
   void stage(std::string name, double seconds) { stages.emplace_back(std::move(name), seconds); }
   void count_building(const shape::Building& building, bool is_watertight);
-  // Adds `other`'s building, part, vertex, face, triangle and watertight counts.
-  void add_counts(const MassReport& other);
+  // The building, watertight, part, vertex, face and triangle counts, as a tile job's tally
+  // (tile_job.h), and their sum back.
+  nlohmann::json counts() const;
+  void add_counts(const nlohmann::json& counts);
   // Adds the building's id, parts and insula:* attributes (mass_plan.h) as a report entry.
   void describe_building(const shape::Building& building);
   std::string json() const;

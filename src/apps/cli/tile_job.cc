@@ -1,0 +1,206 @@
+#include "apps/cli/tile_job.h"
+
+#include <oneapi/tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <optional>
+#include <thread>
+
+#include "apps/cli/interrupt.h"
+#include "apps/cli/progress.h"
+#include "apps/cli/ranks.h"
+
+namespace insula::cli {
+
+using Json = nlohmann::json;
+
+namespace {
+
+Json box_json(const kernel::Bounds3& box) {
+  return Json::array({box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z});
+}
+
+kernel::Bounds3 box_of(const Json& j) {
+  kernel::Bounds3 box;
+  box.min = {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+  box.max = {j[3].get<double>(), j[4].get<double>(), j[5].get<double>()};
+  return box;
+}
+
+}  // namespace
+
+std::filesystem::path staging_folder(const std::string& tileset_json) {
+  return io::tiles_folder(tileset_json).string() + ".insula-partial";
+}
+
+bool tiles_only(const std::vector<std::string>& outputs) {
+  if (outputs.empty()) return false;
+  return std::all_of(outputs.begin(), outputs.end(), [](const std::string& out) {
+    return io::output_format_name(out) == "3dtiles";
+  });
+}
+
+// One rank's tiles: per tile its index, box, write error, tally; the notes of its items; whether a
+// tile failed; the rank's summary.
+struct TileJob::RankShare {
+  Json tiles = Json::array();
+  Json notes = Json::array();
+  bool failed = false;
+  std::string failure;  // the rank's own: interrupted
+};
+
+TileJob::TileJob(TileJobOptions options) : options_(std::move(options)) {}
+
+TileJob::~TileJob() {
+  if (succeeded_) return;
+  std::error_code ignored;
+  for (const std::filesystem::path& folder : staged_) std::filesystem::remove_all(folder, ignored);
+  for (const std::filesystem::path& dir : made_) std::filesystem::remove(dir, ignored);
+}
+
+std::string TileJob::plan(std::span<const io::TileItem> items) {
+  std::string error;
+  if (Ranks::leader()) {
+    // The output folders, and no staging folder left by a killed run.
+    for (const std::string& out : options_.outputs) {
+      const std::filesystem::path dir = std::filesystem::path(out).parent_path();
+      std::error_code failed;
+      if (!dir.empty() && !std::filesystem::is_directory(dir, failed)) {
+        if (!std::filesystem::create_directory(dir, failed) || failed) {
+          error = dir.string() + ": cannot create the folder: " + failed.message();
+          break;
+        }
+        made_.push_back(dir);
+      }
+      std::filesystem::remove_all(staging_folder(out), failed);
+      staged_.push_back(staging_folder(out));
+    }
+  }
+  // Collective: the others wait here for the leader, and all stop if it failed.
+  if (Ranks::broadcast(error.empty() ? 0 : 1) != 0) {
+    return error.empty() ? "the leader could not prepare the output folders" : error;
+  }
+  for (const std::string& out : options_.outputs) {
+    writers_.push_back(std::make_unique<io::TilesetWriter>(
+        out, options_.crs, options_.origin, options_.materials, options_.gltf, options_.tiles));
+    writers_.back()->stage_tiles_in(staging_folder(out));
+    if (error.empty()) error = writers_.back()->plan(items);
+  }
+  // A plan fails alike on every rank (the CRS); the leader's word decides.
+  if (Ranks::broadcast(error.empty() ? 0 : 1) != 0) {
+    return error.empty() ? "the leader could not plan the tiles" : error;
+  }
+  return {};
+}
+
+std::size_t TileJob::tile_count() const {
+  return writers_.empty() ? 0 : writers_.front()->leaf_count();
+}
+
+// Each of this rank's threads takes the next tile from the shared queue until none is left (a
+// tile's buildings are built in parallel too, so a thread that finds no tile helps the others).
+TileJob::RankShare TileJob::build_share(const BuildTile& build) {
+  const std::size_t tiles = tile_count();
+  Ranks::Queue queue(tiles);
+  const std::size_t takers =
+      std::max<std::size_t>(1, options_.threads > 0 ? static_cast<std::size_t>(options_.threads)
+                                                    : std::thread::hardware_concurrency());
+  std::vector<std::optional<Json>> done(tiles);
+  std::vector<std::vector<std::pair<std::size_t, Json>>> notes(tiles);
+  std::atomic<bool> failed = false;
+  std::size_t items = 0;
+  for (std::size_t t = 0; t < tiles; ++t) items += writers_.front()->leaf_items(t).size();
+  Progress progress(options_.counted, items, options_.quiet);
+  tbb::parallel_for(std::size_t{0}, takers, [&](std::size_t) {
+    for (std::size_t t = queue.next(); t < tiles; t = queue.next()) {
+      if (interrupted() || failed) continue;  // the rest go to other ranks, which stop too
+      const std::vector<std::size_t>& members = writers_.front()->leaf_items(t);
+      TileContent content = build(members);
+      std::vector<const shape::Building*> buildings;
+      for (const shape::Building& b : content.buildings) buildings.push_back(&b);
+      const std::vector<shape::Material>* materials =
+          content.own_materials ? &content.materials : nullptr;
+      std::string error;
+      for (const auto& writer : writers_) {
+        if (error.empty()) error = writer->write_tile(t, buildings, materials);
+      }
+      done[t] = Json::array(
+          {t, box_json(writers_.front()->tile_box(t)), error, std::move(content.tally)});
+      notes[t] = std::move(content.notes);
+      if (content.failed) failed = true;
+      progress.advance(members.size());
+    }
+  });
+  RankShare share;
+  share.failed = failed;
+  for (std::size_t t = 0; t < tiles; ++t) {
+    if (!done[t]) continue;
+    share.tiles.push_back(std::move(*done[t]));
+    for (auto& [item, note] : notes[t]) share.notes.push_back({item, std::move(note)});
+  }
+  // An interrupted rank takes no more tiles and fails the run.
+  if (interrupted()) share.failure = "interrupted";
+  return share;
+}
+
+// Adds a rank's share to the whole: boxes to the writers, tallies by tile, notes and errors.
+void TileJob::merge(const std::string& bytes, TileJobResult& result,
+                    std::vector<std::pair<std::size_t, Json>>& tallies) {
+  Json j = Json::from_cbor(bytes);
+  if (const auto& failure = j["failure"].get_ref<const std::string&>();
+      !failure.empty() && result.error.empty()) {
+    result.error = failure;
+  }
+  result.failed = result.failed || j["failed"].get<bool>();
+  for (Json& tile : j["tiles"]) {
+    const auto t = tile[0].get<std::size_t>();
+    for (const auto& writer : writers_) writer->set_tile_box(t, box_of(tile[1]));
+    if (const auto& error = tile[2].get_ref<const std::string&>();
+        !error.empty() && result.error.empty()) {
+      result.error = error;
+    }
+    tallies.emplace_back(t, std::move(tile[3]));
+  }
+  for (Json& note : j["notes"])
+    result.notes.emplace_back(note[0].get<std::size_t>(), std::move(note[1]));
+  result.tiles_by_rank.push_back(j["tiles"].size());
+  result.summaries.push_back(std::move(j["summary"]));
+}
+
+TileJobResult TileJob::run(const BuildTile& build, const std::function<Json()>& summary) {
+  const RankShare share = build_share(build);
+  const Json mine = {{"failure", share.failure},
+                     {"failed", share.failed},
+                     {"tiles", share.tiles},
+                     {"notes", share.notes},
+                     {"summary", summary ? summary() : Json()}};
+  const std::vector<std::uint8_t> cbor = Json::to_cbor(mine);
+  const std::vector<std::string> gathered = Ranks::gather({cbor.begin(), cbor.end()});
+  TileJobResult result;
+  if (!Ranks::leader()) return result;
+  // Tallies and notes in tile and item order, whichever rank built them: the outcome does not
+  // depend on how the tiles were shared.
+  std::vector<std::pair<std::size_t, Json>> tallies;
+  for (const std::string& bytes : gathered) merge(bytes, result, tallies);
+  std::sort(tallies.begin(), tallies.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (auto& [tile, tally] : tallies) result.tallies.push_back(std::move(tally));
+  std::sort(result.notes.begin(), result.notes.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  return result;
+}
+
+std::string TileJob::publish(io::OutputTransaction& transaction) {
+  for (std::size_t i = 0; i < writers_.size(); ++i) {
+    const std::string& out = options_.outputs[i];
+    if (std::string error = transaction.claim_output(out); !error.empty()) return error;
+    std::error_code error;
+    std::filesystem::rename(staging_folder(out), io::tiles_folder(out), error);
+    if (error) return io::tiles_folder(out).string() + ": " + error.message();
+    if (std::string failed = writers_[i]->finish(); !failed.empty()) return failed;
+  }
+  return {};
+}
+
+}  // namespace insula::cli

@@ -1,0 +1,107 @@
+// The 3D Tiles job shared by every verb that builds a city (issue 17; docs/formats.md "3D Tiles",
+// docs/cluster.md): the buildings-to-be are grouped into tiles by where they stand, and each tile
+// is built by the front-end (its buildings in parallel) and written before the next, so memory
+// holds the tiles in flight, never the city's meshes. Under mpirun the tiles are shared among the
+// ranks through a work queue and the leader hears what every rank built. The tiles are staged in a
+// folder beside the final one and moved into place at the commit point, so a failed or killed run
+// leaves the earlier tileset as it was.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/gltf_writer.h"
+#include "io/output.h"
+#include "io/tile_tree.h"
+#include "io/tileset_writer.h"
+#include "shape/scene.h"
+
+namespace insula::cli {
+
+struct TileJobOptions {
+  std::vector<std::string> outputs;        // every one a tileset.json
+  std::string crs;                         // of the buildings' world coordinates
+  kernel::Vec3 origin;                     // local coordinates are world - origin
+  std::vector<shape::Material> materials;  // the tiles' table, unless a tile brings its own
+  io::GltfOptions gltf;
+  io::TilesetOptions tiles;
+  int threads = 0;  // tiles built at once on this rank (0: all cores)
+  bool quiet = false;
+  std::string counted = "buildings";  // what the progress line counts (one per item)
+};
+
+// What the front-end made of one tile's items.
+struct TileContent {
+  std::vector<shape::Building> buildings;  // local coordinates; written, then dropped
+  std::vector<shape::Material> materials;  // the tile's own table when `own_materials`
+  bool own_materials = false;
+  nlohmann::json tally;  // the front-end's counts for this tile, summed by it at the end
+  // What the leader must hear about single items (warnings, failures, report entries), by item.
+  std::vector<std::pair<std::size_t, nlohmann::json>> notes;
+  bool failed = false;  // the run will fail: this rank takes no more tiles
+};
+
+// Builds the tile of these items (ascending); called from several threads at once.
+using BuildTile = std::function<TileContent(const std::vector<std::size_t>& items)>;
+
+// What the leader knows once every rank has built its share (empty on the other ranks).
+struct TileJobResult {
+  std::vector<nlohmann::json> tallies;                        // one per built tile, in tile order
+  std::vector<std::pair<std::size_t, nlohmann::json>> notes;  // in item order
+  std::vector<nlohmann::json> summaries;                      // one per rank, in rank order
+  std::vector<std::size_t> tiles_by_rank;
+  bool failed = false;  // a tile said so
+  std::string error;    // the first write error, or "interrupted"
+};
+
+class TileJob {
+ public:
+  explicit TileJob(TileJobOptions options);
+  ~TileJob();  // the staged tiles and the folders this run made go unless published
+  TileJob(const TileJob&) = delete;
+  TileJob& operator=(const TileJob&) = delete;
+
+  // Collective: the leader makes the output folders, then every rank plans the same tiles (the
+  // plan depends on the items alone). Empty string, or the reason (the same on every rank).
+  std::string plan(std::span<const io::TileItem> items);
+  std::size_t tile_count() const;
+
+  // Collective: this rank builds and writes its share of the tiles, taking the next one from the
+  // shared queue until none is left; `summary` (may be empty) tells what the rank as a whole
+  // learnt (e.g. assets it could not find). The result is the leader's.
+  TileJobResult run(const BuildTile& build, const std::function<nlohmann::json()>& summary = {});
+
+  // The leader's commit: claims every tileset in `transaction`, moves the staged tiles into place
+  // and writes tileset.json. Empty string, or the reason. Then call succeeded() once the
+  // transaction has committed.
+  std::string publish(io::OutputTransaction& transaction);
+  void succeeded() { succeeded_ = true; }
+
+ private:
+  struct RankShare;
+  RankShare build_share(const BuildTile& build);
+  void merge(const std::string& bytes, TileJobResult& result,
+             std::vector<std::pair<std::size_t, nlohmann::json>>& tallies);
+
+  TileJobOptions options_;
+  std::vector<std::unique_ptr<io::TilesetWriter>> writers_;
+  std::vector<std::filesystem::path> staged_;
+  std::vector<std::filesystem::path> made_;  // output folders this run made
+  bool succeeded_ = false;
+};
+
+// Where `tileset_json`'s tiles wait until the run succeeds.
+std::filesystem::path staging_folder(const std::string& tileset_json);
+
+// True when every output is a 3D Tiles tileset: the city is built tile by tile, never whole.
+bool tiles_only(const std::vector<std::string>& outputs);
+
+}  // namespace insula::cli
