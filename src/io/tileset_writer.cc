@@ -60,14 +60,6 @@ kernel::Bounds3 building_bounds(const shape::Building& building) {
   return box;
 }
 
-std::size_t building_faces(const shape::Building& building) {
-  std::size_t faces = 0;
-  for (const shape::Part& part : building.parts) {
-    faces += part.instance_of ? part.instance_of->face_count() : part.mesh.face_count();
-  }
-  return faces;
-}
-
 // `part` of `building` as a feature of a tile: moved by `offset` (a shared mesh stays shared: its
 // placement moves), carrying its building's id and attributes where it has none of its own.
 shape::Part tile_part(const shape::Building& building, const shape::Part& part,
@@ -298,6 +290,14 @@ std::string TilesetWriter::finish() {
     }
   }
   return write_file_atomically(path_, json.text());
+}
+
+std::size_t building_faces(const shape::Building& building) {
+  std::size_t faces = 0;
+  for (const shape::Part& part : building.parts) {
+    faces += part.instance_of ? part.instance_of->face_count() : part.mesh.face_count();
+  }
+  return faces;
 }
 
 std::string write_tileset(const shape::Scene& scene, const std::filesystem::path& tileset_json,

@@ -83,6 +83,9 @@ class TilesetWriter {
   std::vector<Leaf> leaves_;
 };
 
+// The faces a building shows (an instance counts its mesh's): a tile's weight.
+std::size_t building_faces(const shape::Building& building);
+
 // The whole scene at once. The scene needs a CRS. Empty string on success, else the reason, naming
 // the file.
 std::string write_tileset(const shape::Scene& scene, const std::filesystem::path& tileset_json,

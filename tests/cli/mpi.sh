@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Many processes (docs/cluster.md): `mpirun -n N insula mass ... -o DIR/tileset.json` shares the
+# Many processes (docs/cluster.md): `mpirun -n N insula mass|build ... -o DIR/tileset.json` shares the
 # tiles among the ranks through a work queue and writes the same bytes as one process, for 1, 2 and
 # 3 ranks and any thread count; the leader alone prints; an error stops every rank with exit 1 and
 # leaves the user's earlier tileset as it was. Runs on this 2-core machine with --oversubscribe.
@@ -40,6 +40,20 @@ node -e '
       r.tiles_by_rank.reduce((a, b) => a + b) !== Number(process.argv[2])) {
     console.log(JSON.stringify(r.tiles_by_rank)); process.exit(1);
   }' "$tmp/r3-1.json" "$leaves" || fail "3 ranks: tiles not shared among the ranks"
+
+# `insula build` of a CGA city shares its tiles too: the same bytes as one process.
+node "$root/examples/city/make_city.mjs" 120 "$tmp/lots.geojson" >/dev/null
+expect_exit 0 "CGA city, one process" "$insula" build "$root/examples/cga/district.cga" \
+  --lot "$tmp/lots.geojson" --tile-faces 20000 -o "$tmp/cga1/tileset.json" --quiet
+for ranks in 2 3; do
+  expect_exit 0 "CGA city, $ranks ranks" mpi "$ranks" "$insula" build \
+    "$root/examples/cga/district.cga" --lot "$tmp/lots.geojson" --tile-faces 20000 \
+    -o "$tmp/cga$ranks/tileset.json" --report "$tmp/cga$ranks.json"
+  diff -r "$tmp/cga1" "$tmp/cga$ranks" >/dev/null ||
+    fail "CGA city, $ranks ranks: the tileset differs from one process's"
+  [ "$(grep -c tileset.json "$tmp/out.txt")" -eq 1 ] || { fail "CGA, $ranks ranks: stdout"; cat "$tmp/out.txt"; }
+done
+grep -q '"ranks": 3,' "$tmp/cga3.json" || fail "CGA city, 3 ranks: the report's ranks"
 
 # An error: no CRS to place the tiles; every rank stops, exit 1, the earlier tileset kept.
 cp -r "$tmp/one" "$tmp/keep"

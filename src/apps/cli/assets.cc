@@ -18,9 +18,9 @@ io::AssetLibrary folder_assets(const std::vector<std::string>& folders) {
       io::AssetLibrary::Missing::kError);
 }
 
-void report_missing_assets(const io::AssetLibrary& library, const std::string& input, bool quiet,
-                           nlohmann::json& report) {
-  for (const io::AssetLibrary::Failure& f : library.failures()) {
+void report_missing_assets(const std::vector<io::AssetLibrary::Failure>& failures,
+                           const std::string& input, bool quiet, nlohmann::json& report) {
+  for (const io::AssetLibrary::Failure& f : failures) {
     const std::string times = f.count == 1 ? "once" : std::to_string(f.count) + " times";
     const base::Diagnostic d =
         base::Diagnostic::warning("AST100", f.error + "; asked for " + times + ", inserted nothing",

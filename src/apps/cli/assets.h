@@ -19,8 +19,8 @@ io::AssetLibrary folder_assets(const std::vector<std::string>& folders);
 
 // One warning (AST100) per asset name that could not be had, with how many inserts it left
 // empty, and report["missing_assets"] = {name: requests} when there are any.
-void report_missing_assets(const io::AssetLibrary& library, const std::string& input, bool quiet,
-                           nlohmann::json& report);
+void report_missing_assets(const std::vector<io::AssetLibrary::Failure>& failures,
+                           const std::string& input, bool quiet, nlohmann::json& report);
 
 // One warning (AST101) per texture that could not be had (its faces keep their colour), and
 // report["missing_textures"] = {name: reason} when there are any.

@@ -20,6 +20,7 @@
 #include "apps/cli/assets.h"
 #include "apps/cli/cga_files.h"
 #include "apps/cli/cga_source.h"
+#include "apps/cli/cga_tiles.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/footprint_input.h"
 #include "apps/cli/front_ends.h"
@@ -103,26 +104,6 @@ std::vector<std::string> outside_names(const cga::DeriveOptions& derive, const L
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
   return names;
-}
-
-nlohmann::json report_json(const cga::Program& program, const std::vector<cga::LotResult>& results,
-                           std::size_t lots) {
-  const cga::Totals t = cga::totals(program, results);
-  nlohmann::json report;
-  report["input"] = program.source->name();
-  report["start"] = std::string(program.symbol_name(program.start));
-  report["lots"] = lots;
-  report["shapes"] = t.shapes;
-  report["terminals"] = t.terminals;
-  report["rule_applications"] = t.rule_applications;
-  report["symbols"] = nlohmann::json::object();
-  for (const auto& [name, count] : t.symbols) report["symbols"][name] = count;
-  if (!t.reports.empty()) {
-    for (const auto& [name, e] : t.reports) {
-      report["reports"][name] = {{"sum", e.sum}, {"count", e.count}};
-    }
-  }
-  return report;
 }
 
 }  // namespace
@@ -218,11 +199,24 @@ int build_cga(const BuildOptions& options) {
   const LotsGeoReference geo(lots->origin, lots->crs);
   derive.geo = &geo;
   if (lots->lots.empty()) lots->lots.push_back(cga::default_lot(p, derive));
-
-  clock = Stopwatch();
   const int threads = options.threads > 0
                           ? options.threads
                           : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  nlohmann::json report;
+  report["threads"] = threads;
+  report["seed"] = options.seed;
+  if (!options.lot.empty()) {
+    report["invalid_lots"] = lots->invalid;
+    report["crs"] = lots->crs.empty() ? nlohmann::json() : nlohmann::json(lots->crs);
+    if (!lots->source_crs.empty()) report["reprojected_from"] = lots->source_crs;
+  }
+  report["seconds"] = seconds;
+  if (city_by_tiles(options)) {
+    const CgaCity city{p, source, lots->lots, lots->origin, lots->crs, derive, search, library};
+    return build_cga_tiles(options, city, std::move(report), total);
+  }
+
+  clock = Stopwatch();
   std::vector<cga::LotResult> results(lots->lots.size());
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
@@ -257,17 +251,10 @@ int build_cga(const BuildOptions& options) {
   const std::vector<io::TextureFailure> textures = io::load_textures(scene, search);
   seconds["scene"] = clock.seconds();
 
-  nlohmann::json report = report_json(p, results, lots->lots.size());
-  report_missing_assets(library, options.input, options.quiet, report);
+  report.update(cga_report(p, cga::totals(p, results), lots->lots.size()));
+  report_missing_assets(library.failures(), options.input, options.quiet, report);
   report_missing_textures(textures, options.input, options.quiet, report);
-  report["threads"] = threads;
-  report["seed"] = options.seed;
-  if (!options.lot.empty()) {
-    report["invalid_lots"] = lots->invalid;
-    report["crs"] = lots->crs.empty() ? nlohmann::json() : nlohmann::json(lots->crs);
-    if (!lots->source_crs.empty()) report["reprojected_from"] = lots->source_crs;
-  }
-  report["seconds"] = seconds;
+  report["seconds"].update(seconds);
   return finish_build(options, scene, report, total);
 }
 

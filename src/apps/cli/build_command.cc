@@ -10,6 +10,8 @@
 #include "apps/cli/front_ends.h"
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/interrupt.h"
+#include "apps/cli/ranks.h"
+#include "apps/cli/tile_job.h"
 #include "apps/cli/view_options.h"
 #include "apps/cli/warnings.h"
 
@@ -65,7 +67,17 @@ void add_build_command(CLI::App& app, BuildOptions& options) {
   add_view_options(*build, options.output);
 }
 
-int run_build(const BuildOptions& options) {
+bool city_by_tiles(const BuildOptions& options) {
+  return !options.lot.empty() && tiles_only(options.outputs) && options.transaction == nullptr;
+}
+
+int run_build(const BuildOptions& given) {
+  // Under mpirun only a city built tile by tile (cga_tiles.h) is shared among the ranks; any
+  // other build is the leader's alone. The other ranks work silently: the leader reports for all.
+  const bool by_tiles = has_suffix(given.input, ".cga") && city_by_tiles(given);
+  if (Ranks::shared() && !Ranks::leader() && !by_tiles) return kExitDone;
+  BuildOptions options = given;
+  if (!Ranks::leader()) options.quiet = true;
   if (has_suffix(options.input, ".cga")) return build_cga(options);
   if (has_suffix(options.input, ".bldg")) return build_bldg(options);
   if (has_suffix(options.input, ".lua")) return build_lua(options);
@@ -127,6 +139,11 @@ int finish_build(const BuildOptions& options, const shape::Scene& scene, nlohman
     }
     report["seconds"]["write_" + io::output_format_name(out)] = write_clock.seconds();
   }
+  return commit_build(options, report, total, transaction);
+}
+
+int commit_build(const BuildOptions& options, nlohmann::json& report, const Stopwatch& total,
+                 io::OutputTransaction& transaction) {
   report["seconds"]["total"] = total.seconds();
   // A batch (`insula random`) shares the process's warning counts between its buildings, so its
   // per-building reports leave them out.

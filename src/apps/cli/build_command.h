@@ -52,6 +52,10 @@ void add_build_command(CLI::App& app, BuildOptions& options);
 // Dispatches on the input's extension.
 int run_build(const BuildOptions& options);
 
+// True when the lots are built and written tile by tile (tile_job.h): --lot is given, every output
+// is a 3D Tiles tileset and the build is not part of a batch.
+bool city_by_tiles(const BuildOptions& options);
+
 // Checks before any work: every output has a known format, picture options are valid and every
 // output's directory (and the report's, when given) exists. Returns kExitDone or the exit code to
 // return (the reason already printed). Shared by every verb that writes scenes.
@@ -72,5 +76,9 @@ bool parse_sets(const std::vector<std::string>& sets,
 // left behind and the user's earlier files are back.
 int finish_build(const BuildOptions& options, const shape::Scene& scene, nlohmann::json& report,
                  const Stopwatch& total);
+// finish_build's last steps, once the outputs are in `transaction`: the total time, the warning
+// counts, the report, the commit point and the list of outputs on stdout.
+int commit_build(const BuildOptions& options, nlohmann::json& report, const Stopwatch& total,
+                 io::OutputTransaction& transaction);
 
 }  // namespace insula::cli

@@ -91,15 +91,16 @@ int run(int argc, char** argv) {
   if (app.got_subcommand("mass")) {
     return run_writing([&] { return insula::cli::run_mass(mass); }, mass.quiet);
   }
-  // Under mpirun only `mass` shares its work (3D Tiles); any other verb runs on the leader alone.
+  if (app.got_subcommand("build")) {
+    return run_writing([&] { return insula::cli::run_build(build); }, build.quiet);
+  }
+  // Under mpirun only `mass` and `build` share their work (3D Tiles); any other verb runs on the
+  // leader alone.
   if (insula::cli::Ranks::shared() && !insula::cli::Ranks::leader()) return insula::cli::kExitDone;
   if (app.got_subcommand("check")) {
     const int code = insula::cli::run_check(check);
     insula::cli::finish_warnings(check.quiet);
     return code;
-  }
-  if (app.got_subcommand("build")) {
-    return run_writing([&] { return insula::cli::run_build(build); }, build.quiet);
   }
   if (app.got_subcommand("transform")) return insula::cli::run_transform(transform);
   if (app.got_subcommand("random")) {

@@ -1,0 +1,263 @@
+#include "apps/cli/cga_tiles.h"
+
+#include <oneapi/tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <utility>
+
+#include "apps/cli/assets.h"
+#include "apps/cli/exit_codes.h"
+#include "apps/cli/interrupt.h"
+#include "apps/cli/progress.h"
+#include "apps/cli/ranks.h"
+#include "apps/cli/tile_job.h"
+#include "apps/cli/warnings.h"
+#include "io/textures.h"
+
+namespace insula::cli {
+
+namespace cga = lang::cga;
+using Json = nlohmann::json;
+
+nlohmann::json cga_report(const cga::Program& program, const cga::Totals& t, std::size_t lots) {
+  Json report;
+  report["input"] = program.source->name();
+  report["start"] = std::string(program.symbol_name(program.start));
+  report["lots"] = lots;
+  report["shapes"] = t.shapes;
+  report["terminals"] = t.terminals;
+  report["rule_applications"] = t.rule_applications;
+  report["symbols"] = Json::object();
+  for (const auto& [name, count] : t.symbols) report["symbols"][name] = count;
+  if (!t.reports.empty()) {
+    for (const auto& [name, e] : t.reports) {
+      report["reports"][name] = {{"sum", e.sum}, {"count", e.count}};
+    }
+  }
+  return report;
+}
+
+namespace {
+
+// Lots sampled to learn how many faces a square metre of lot gives, before the tiles are planned.
+constexpr std::size_t kSampleLots = 16;
+
+double lot_area(const cga::Lot& lot) {
+  double area = 0;
+  for (const kernel::Polygon& polygon : lot.polygons) area += kernel::area(polygon);
+  return area;
+}
+
+// Faces per square metre of lot, from up to kSampleLots lots spread over the input (derived again
+// later, in their tiles): tiles are split by faces, and a lot's faces are known only once it is
+// derived. Every rank samples the same lots, so every rank plans the same tiles.
+double faces_per_square_metre(const CgaCity& city) {
+  const std::size_t n = city.lots.size();
+  const std::size_t samples = std::min(n, kSampleLots);
+  std::vector<std::size_t> picked;
+  for (std::size_t k = 0; k < samples; ++k) picked.push_back(k * n / samples);
+  std::vector<cga::LotResult> results(samples);
+  tbb::parallel_for(std::size_t{0}, samples, [&](std::size_t k) {
+    results[k] = cga::derive_lot(city.program, city.lots[picked[k]], picked[k], city.derive);
+  });
+  std::vector<cga::Lot> lots;
+  double area = 0;
+  for (const std::size_t i : picked) {
+    lots.push_back(city.lots[i]);
+    area += lot_area(city.lots[i]);
+  }
+  const shape::Scene scene = cga::to_scene(city.program, lots, results, city.derive.share_inserts);
+  std::size_t faces = 0;
+  for (const shape::Building& building : scene.buildings) faces += io::building_faces(building);
+  return area > 0 ? static_cast<double>(faces) / area : 0;
+}
+
+// Where each lot stands (its plan box, local coordinates) and about how many faces it will give.
+std::vector<io::TileItem> lot_items(const CgaCity& city) {
+  const double density = faces_per_square_metre(city);
+  std::vector<io::TileItem> items;
+  items.reserve(city.lots.size());
+  for (const cga::Lot& lot : city.lots) {
+    kernel::Bounds2 box;
+    for (const kernel::Polygon& polygon : lot.polygons) {
+      const kernel::Bounds2 own = kernel::bounds(polygon);
+      box.add(own.min);
+      box.add(own.max);
+    }
+    if (box.empty()) box.add({0, 0});
+    const double faces = density * lot_area(lot);
+    items.push_back({box.min, box.max, std::max<std::size_t>(1, static_cast<std::size_t>(faces))});
+  }
+  return items;
+}
+
+Json totals_json(const cga::Totals& t) {
+  Json j = {{"shapes", t.shapes},
+            {"terminals", t.terminals},
+            {"rule_applications", t.rule_applications},
+            {"symbols", t.symbols},
+            {"reports", Json::object()}};
+  for (const auto& [name, e] : t.reports) j["reports"][name] = {e.sum, e.count};
+  return j;
+}
+
+void add_totals(const Json& j, cga::Totals& t) {
+  t.shapes += j["shapes"].get<std::uint64_t>();
+  t.terminals += j["terminals"].get<std::uint64_t>();
+  t.rule_applications += j["rule_applications"].get<std::uint64_t>();
+  for (const auto& [name, count] : j["symbols"].items())
+    t.symbols[name] += count.get<std::uint64_t>();
+  for (const auto& [name, e] : j["reports"].items()) {
+    t.reports[name].sum += e[0].get<double>();
+    t.reports[name].count += e[1].get<std::uint64_t>();
+  }
+}
+
+// What the leader prints for a lot: its print() lines and its diagnostics, rendered where the lot
+// was derived ([error?, code, text]).
+Json lot_note(const cga::LotResult& r, const base::Source& source) {
+  Json diagnostics = Json::array();
+  for (const base::Diagnostic& d : r.diagnostics) {
+    diagnostics.push_back({d.severity == base::Severity::kError, d.code, base::render(d, &source)});
+  }
+  return {{"ok", r.ok}, {"prints", r.prints}, {"diagnostics", std::move(diagnostics)}};
+}
+
+// One tile's lots derived (in parallel, each seeded by its index in the input, as the whole-scene
+// build seeds it) and turned into buildings with the tile's own material table.
+TileContent derive_tile(const CgaCity& city, const std::vector<std::size_t>& members) {
+  std::vector<cga::LotResult> results(members.size());
+  tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t k) {
+    results[k] = cga::derive_lot(city.program, city.lots[members[k]], members[k], city.derive);
+  });
+  TileContent content;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    const cga::LotResult& r = results[k];
+    if (!r.ok) content.failed = true;
+    if (!r.ok || !r.prints.empty() || !r.diagnostics.empty()) {
+      content.notes.emplace_back(members[k], lot_note(r, city.source));
+    }
+  }
+  Json tally = totals_json(cga::totals(city.program, results));
+  if (content.failed) {
+    content.tally = std::move(tally);
+    return content;
+  }
+  std::vector<cga::Lot> lots;
+  lots.reserve(members.size());
+  for (const std::size_t i : members) lots.push_back(city.lots[i]);
+  shape::Scene scene = cga::to_scene(city.program, lots, results, city.derive.share_inserts);
+  results.clear();  // the terminal records, before the meshes are written
+  tally["textures"] = Json::object();
+  for (const io::TextureFailure& f : io::load_textures(scene, city.search)) {
+    tally["textures"][f.name] = f.error;
+  }
+  content.buildings = std::move(scene.buildings);
+  content.materials = std::move(scene.materials);
+  content.own_materials = true;
+  content.tally = std::move(tally);
+  return content;
+}
+
+// The lots' print() lines and diagnostics, in lot order; true when a lot failed.
+bool print_notes(const TileJobResult& built, bool quiet) {
+  bool failed = false;
+  for (const auto& [lot, note] : built.notes) {
+    for (const Json& line : note["prints"]) {
+      std::fprintf(stderr, "%s\n", line.get_ref<const std::string&>().c_str());
+    }
+    for (const Json& d : note["diagnostics"]) {
+      const std::string& text = d[2].get_ref<const std::string&>();
+      if (d[0].get<bool>()) {
+        clear_progress_line();
+        std::fprintf(stderr, "%s\n", text.c_str());
+      } else {
+        emit_warning(d[1].get<std::string>(), text, quiet);
+      }
+    }
+    failed = failed || !note["ok"].get<bool>();
+  }
+  return failed;
+}
+
+// Assets no rank could find, with every rank's requests summed; textures likewise.
+void report_missing(const BuildOptions& options, const TileJobResult& built, Json& report) {
+  std::map<std::string, io::AssetLibrary::Failure> assets;
+  for (const Json& summary : built.summaries) {
+    for (const Json& f : summary) {
+      io::AssetLibrary::Failure& failure = assets[f[0].get<std::string>()];
+      failure.name = f[0].get<std::string>();
+      failure.error = f[1].get<std::string>();
+      failure.count += f[2].get<std::size_t>();
+    }
+  }
+  std::vector<io::AssetLibrary::Failure> failures;
+  for (auto& [name, f] : assets) failures.push_back(std::move(f));
+  report_missing_assets(failures, options.input, options.quiet, report);
+  std::map<std::string, std::string> textures;
+  for (const Json& tally : built.tallies) {
+    for (const auto& [name, error] : tally["textures"].items()) textures.emplace(name, error);
+  }
+  std::vector<io::TextureFailure> missing;
+  for (auto& [name, error] : textures) missing.push_back({name, std::move(error)});
+  report_missing_textures(missing, options.input, options.quiet, report);
+}
+
+// The leader's part once every rank's tiles are in: diagnostics, report, tileset.json, commit.
+int conclude(const BuildOptions& options, const CgaCity& city, TileJob& job, TileJobResult& built,
+             Json& report, const Stopwatch& total, const Stopwatch& build_clock) {
+  if (const int code = stop_if_interrupted(); code != 0) return code;
+  if (print_notes(built, options.quiet)) return kExitInput;
+  if (!built.error.empty()) return write_failure(built.error);
+  cga::Totals totals;
+  for (const Json& tally : built.tallies) add_totals(tally, totals);
+  report.update(cga_report(city.program, totals, city.lots.size()));
+  report_missing(options, built, report);
+  report["tiles"] = job.tile_count();
+  report["ranks"] = built.tiles_by_rank.size();
+  report["tiles_by_rank"] = built.tiles_by_rank;
+  report["seconds"]["build and write 3dtiles"] = build_clock.seconds();
+  io::OutputTransaction transaction(interrupted);
+  if (std::string error = job.publish(transaction); !error.empty()) return write_failure(error);
+  const int code = commit_build(options, report, total, transaction);
+  if (code == kExitDone) job.succeeded();
+  return code;
+}
+
+}  // namespace
+
+int build_cga_tiles(const BuildOptions& options, const CgaCity& city, nlohmann::json report,
+                    const Stopwatch& total) {
+  Stopwatch clock;
+  const std::vector<io::TileItem> items = lot_items(city);
+  TileJob job({options.outputs,
+               city.crs,
+               city.origin,
+               {},
+               options.output.gltf,
+               options.output.tiles,
+               options.threads,
+               options.quiet || !Ranks::leader(),
+               "lots"});
+  if (const std::string error = job.plan(items); !error.empty()) {
+    return Ranks::broadcast(Ranks::leader() ? write_failure(error) : 0);
+  }
+  report["seconds"]["plan"] = clock.seconds();
+  clock = Stopwatch();
+  TileJobResult built = job.run(
+      [&city](const std::vector<std::size_t>& members) { return derive_tile(city, members); },
+      [&city] {
+        Json failures = Json::array();
+        for (const io::AssetLibrary::Failure& f : city.library.failures()) {
+          failures.push_back({f.name, f.error, f.count});
+        }
+        return failures;
+      });
+  int code = 0;
+  if (Ranks::leader()) code = conclude(options, city, job, built, report, total, clock);
+  return Ranks::broadcast(code);
+}
+
+}  // namespace insula::cli

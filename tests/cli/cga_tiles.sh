@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# A CGA city to 3D Tiles (issue 17; docs/formats.md "3D Tiles"): `insula build district.cga --lot
+# LOTS -o DIR/tileset.json` derives and writes tile by tile. It derives what the whole-scene build
+# derives (the same counts in the report), writes the same bytes whatever the thread count, opens
+# in CesiumJS and loaders.gl with every terminal a feature, and a lot that fails stops the run with
+# its diagnostic and leaves the user's earlier tileset as it was.
+source "$(dirname "$0")/lib/common.sh"
+
+node "$root/examples/city/make_city.mjs" 150 "$tmp/lots.geojson" >/dev/null
+district="$root/examples/cga/district.cga"
+for threads in 1 2; do
+  expect_exit 0 "district, tiles only, $threads thread(s)" "$insula" build "$district" \
+    --lot "$tmp/lots.geojson" --tile-faces 20000 --threads "$threads" \
+    -o "$tmp/t$threads/tileset.json" --report "$tmp/t$threads.json" --quiet
+done
+tiles=$(ls "$tmp/t1/tiles" | wc -l)
+[ "$tiles" -ge 4 ] || fail "expected several tiles, got $tiles"
+diff -r "$tmp/t1" "$tmp/t2" >/dev/null || fail "1 and 2 threads wrote different tilesets"
+# With an OBJ beside it the whole scene is derived at once: the same derivation.
+expect_exit 0 "district, whole scene" "$insula" build "$district" --lot "$tmp/lots.geojson" \
+  -o "$tmp/whole/tileset.json" -o "$tmp/whole.obj" --report "$tmp/whole.json" --quiet
+node -e '
+  const [tiles, whole] = process.argv.slice(1, 3).map((f) => require(f));
+  for (const key of ["lots", "shapes", "terminals", "rule_applications", "symbols", "start"]) {
+    if (JSON.stringify(tiles[key]) !== JSON.stringify(whole[key])) {
+      console.log(key, JSON.stringify(tiles[key]), JSON.stringify(whole[key]));
+      process.exit(1);
+    }
+  }
+  if (tiles.tiles !== Number(process.argv[3]) || tiles.ranks !== 1) process.exit(1);
+' "$tmp/t2.json" "$tmp/whole.json" "$tiles" || fail "the tile job's report differs from the whole scene's"
+terminals=$(node -e 'console.log(require(process.argv[1]).terminals)' "$tmp/t2.json")
+node "$root/tools/check_tileset.mjs" "$tmp/t2/tileset.json" --lonlat 14.3840,49.0033 \
+  --tolerance-m 50 --expect-features "$terminals" >"$tmp/c.txt" 2>&1 ||
+  { fail "the CGA tileset does not open in CesiumJS and loaders.gl"; cat "$tmp/c.txt"; }
+
+# A lot whose derivation fails (runaway recursion on the tallest lots): exit 1, the lot's
+# diagnostic, the earlier tileset and no staging folder left.
+cat >"$tmp/fails.cga" <<'EOF'
+attr height = 10
+Lot --> case height > 30: Grow else: extrude(height) Mass
+Grow --> Grow
+EOF
+cp -r "$tmp/t1" "$tmp/keep"
+expect_exit 1 "a lot fails" "$insula" build "$tmp/fails.cga" --lot "$tmp/lots.geojson" \
+  -o "$tmp/keep/tileset.json" --quiet
+grep -q "error\[" "$tmp/err.txt" || { fail "a lot fails: no diagnostic"; cat "$tmp/err.txt"; }
+diff -r "$tmp/t1" "$tmp/keep" >/dev/null || fail "a lot fails: the earlier tileset changed"
+[ -e "$tmp/keep/tiles.insula-partial" ] && fail "a lot fails: the staging folder is left"
+
+finish cga_tiles
