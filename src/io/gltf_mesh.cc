@@ -26,60 +26,65 @@ std::array<double, 3> y_up(kernel::Vec3 p) {
   return {p.x, p.z, -p.y};
 }
 
+// std::llround (halves away from zero) without its library call, which cost more than the rest
+// of quantizing a vertex; `value` must be finite and below 2^62 in magnitude.
+std::int64_t round_half_away(double value) {
+  const auto whole = static_cast<std::int64_t>(value);     // toward zero
+  const double rest = value - static_cast<double>(whole);  // exact
+  if (rest >= 0.5) return whole + 1;
+  if (rest <= -0.5) return whole - 1;
+  return whole;
+}
+
 std::int8_t normal_byte(float c) {
-  return static_cast<std::int8_t>(std::lround(std::clamp(c, -1.0F, 1.0F) * 127.0F));
+  return static_cast<std::int8_t>(round_half_away(std::clamp(c, -1.0F, 1.0F) * 127.0F));
 }
 
-// Sorts the triangles of `indices` by the feature of their first corner (stably), then optimises
-// each feature's run for the vertex cache.
-// Optimises one run of triangles for the vertex cache over the vertices it uses only: meshopt
-// sizes its work by the vertex count it is given, so a building of thousands of parts would
-// otherwise cost parts x vertices.
-void optimize_run(std::span<unsigned int> run, std::vector<unsigned int>& local_of,
-                  std::vector<unsigned int>& global_of) {
-  global_of.clear();
-  for (unsigned int& v : run) {
-    if (local_of[v] == ~0U) {
-      local_of[v] = static_cast<unsigned int>(global_of.size());
-      global_of.push_back(v);
+// Whether a FIFO cache of kCacheSize vertices (meshopt's model of a GPU's) loads each vertex of
+// `run` once: the usual case with flat shading, where a face's triangles come together and share
+// only its corners. No order can do better, so the run is left as it is (and meshopt's optimiser,
+// which costs more than the rest of a small mesh, is not run).
+bool loads_each_once(std::span<const unsigned int> run, std::size_t vertex_count,
+                     std::vector<unsigned int>& loaded_at) {
+  constexpr unsigned int kCacheSize = 16;
+  loaded_at.assign(vertex_count, ~0U);
+  unsigned int loads = 0;
+  for (unsigned int v : run) {
+    if (loaded_at[v] == ~0U) {
+      loaded_at[v] = loads++;
+    } else if (loads - loaded_at[v] > kCacheSize) {
+      return false;  // evicted, and loaded again
     }
-    v = local_of[v];
   }
-  meshopt_optimizeVertexCache(run.data(), run.data(), run.size(), global_of.size());
-  for (unsigned int& v : run) v = global_of[v];
-  for (unsigned int v : global_of) local_of[v] = ~0U;
+  return true;
 }
 
-// Sorts the triangles of `indices` by the feature of their first corner (stably), then optimises
-// each feature's run for the vertex cache.
-void order_by_feature(std::span<unsigned int> indices, const std::vector<std::uint32_t>& features,
-                      std::size_t vertex_count) {
-  std::vector<std::array<unsigned int, 3>> triangles(indices.size() / 3);
-  std::memcpy(triangles.data(), indices.data(), indices.size() * sizeof(unsigned int));
-  std::stable_sort(triangles.begin(), triangles.end(), [&features](const auto& a, const auto& b) {
-    return features[a[0]] < features[b[0]];
-  });
-  std::memcpy(indices.data(), triangles.data(), indices.size() * sizeof(unsigned int));
-  std::vector<unsigned int> local_of(vertex_count, ~0U);
-  std::vector<unsigned int> global_of;
-  for (std::size_t begin = 0; begin < triangles.size();) {
-    std::size_t end = begin;
-    while (end < triangles.size() && features[triangles[end][0]] == features[triangles[begin][0]]) {
-      ++end;
+// Copies the `size`-byte slice at `column` of each of `rows` in turn to `out`; each size is a
+// case of its own so every copy is a fixed-size move.
+void gather_column(char* out, const unsigned char* column, std::size_t stride, std::uint32_t size,
+                   std::span<const std::uint32_t> rows) {
+  const auto gather = [&]<std::size_t Size>(std::integral_constant<std::size_t, Size>) {
+    for (std::uint32_t row : rows) {
+      std::memcpy(out, column + row * stride, Size);
+      out += Size;
     }
-    optimize_run(indices.subspan(3 * begin, 3 * (end - begin)), local_of, global_of);
-    begin = end;
+  };
+  switch (size) {
+    case 4:
+      return gather(std::integral_constant<std::size_t, 4>{});
+    case 8:
+      return gather(std::integral_constant<std::size_t, 8>{});
+    case 12:
+      return gather(std::integral_constant<std::size_t, 12>{});
+    default:
+      for (std::uint32_t row : rows) {
+        std::memcpy(out, column + row * stride, size);
+        out += size;
+      }
   }
 }
 
 }  // namespace
-
-void Stream::remap(const std::vector<unsigned int>& map, std::size_t count, std::string& scratch) {
-  scratch.resize(count * stride);
-  meshopt_remapVertexBuffer(scratch.data(), bytes.data(), bytes.size() / stride, stride,
-                            map.data());
-  std::swap(bytes, scratch);
-}
 
 MeshViews MeshViews::create(Buffers& buffers) {
   MeshViews views{};
@@ -98,6 +103,7 @@ MeshAssembler::MeshAssembler(const MaterialTable& materials, std::vector<bool> m
     : materials_(materials), material_textured_(std::move(material_textured)) {}
 
 void MeshAssembler::clear() {
+  sources_.clear();
   vertices_.clear();
   indices_by_material_.clear();
   has_uv_ = false;
@@ -110,6 +116,18 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
   uv_scale_ = uv_scale(part);
   feature_ = feature;
   weld_.run(mesh, quantize ? kQuantizationStep : 0);
+  first_source_ = static_cast<std::uint32_t>(sources_.size());
+  // Past 2^62 steps (or not finite) a position has no grid point: its mesh stays float.
+  constexpr double kGridLimit = 4.6e18;
+  for (const kernel::Vec3& p : mesh.positions()) {
+    Source source{y_up(p), {}, true};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double steps = source.position[k] / kQuantizationStep;
+      source.on_grid = source.on_grid && std::abs(steps) < kGridLimit;
+      if (source.on_grid) source.grid[k] = round_half_away(steps);
+    }
+    sources_.push_back(source);
+  }
   // Faces grouped by material, in mesh order within each.
   faces_by_material_.clear();
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
@@ -189,8 +207,8 @@ void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::u
   }
   const auto base = static_cast<std::uint32_t>(vertices_.size());
   for (std::size_t i = 0; i < loop.size(); ++i) {
-    vertices_.push_back(Vertex{y_up(mesh.position(weld_.representative(loop[i]))), normal,
-                               corner_uvs_[i], feature_});
+    vertices_.push_back(
+        Vertex{first_source_ + weld_.representative(loop[i]), normal, corner_uvs_[i], feature_});
   }
   for (const CornerTriangle& triangle : triangles_) {
     for (std::uint32_t corner : triangle) indices.push_back(base + corner);
@@ -232,23 +250,20 @@ void MeshAssembler::gather_indices() {
   }
 }
 
-// Every position on the quantization grid (grid_), and whether the mesh's extent fits 16 bits
-// there; sets the record's offset and scale when it does, and its POSITION bounds either way.
+// Whether the mesh's extent on the quantization grid fits 16 bits; sets the record's offset and
+// scale (and grid_low_) when it does, and its POSITION bounds either way.
 void MeshAssembler::quantize(bool wanted, MeshRecord& record) {
   std::array<std::int64_t, 3> low{};
   std::array<std::int64_t, 3> high{};
   low.fill(std::numeric_limits<std::int64_t>::max());
   high.fill(std::numeric_limits<std::int64_t>::lowest());
-  grid_.resize(vertices_.size());
-  // Past 2^62 steps (or not finite) a position has no grid point: such a mesh stays float.
-  constexpr double kGridLimit = 4.6e18;
-  for (std::size_t v = 0; v < vertices_.size(); ++v) {
+  for (const Vertex& vertex : vertices_) {
+    const Source& source = sources_[vertex.source];
+    wanted = wanted && source.on_grid;
+    if (!wanted) break;
     for (std::size_t k = 0; k < 3; ++k) {
-      const double steps = vertices_[v].position[k] / kQuantizationStep;
-      if (!(std::abs(steps) < kGridLimit)) wanted = false;
-      grid_[v][k] = wanted ? std::llround(steps) : 0;
-      low[k] = std::min(low[k], grid_[v][k]);
-      high[k] = std::max(high[k], grid_[v][k]);
+      low[k] = std::min(low[k], source.grid[k]);
+      high[k] = std::max(high[k], source.grid[k]);
     }
   }
   record.quantized = wanted && !vertices_.empty();
@@ -256,9 +271,9 @@ void MeshAssembler::quantize(bool wanted, MeshRecord& record) {
     record.quantized = high[k] - low[k] <= 65535;
   if (record.quantized) {
     record.scale = kQuantizationStep;
+    grid_low_ = low;
     for (std::size_t k = 0; k < 3; ++k) {
       record.offset[k] = static_cast<double>(low[k]) * kQuantizationStep;
-      for (auto& q : grid_) q[k] -= low[k];
       record.min[k] = 0;
       record.max[k] = static_cast<double>(high[k] - low[k]);
     }
@@ -267,37 +282,39 @@ void MeshAssembler::quantize(bool wanted, MeshRecord& record) {
   // Float32 bounds. Every vertex is used by a triangle, so merging and reordering keep them.
   record.min.fill(std::numeric_limits<double>::max());
   record.max.fill(std::numeric_limits<double>::lowest());
-  for (const Vertex& v : vertices_) {
+  for (const Vertex& vertex : vertices_) {
     for (std::size_t k = 0; k < 3; ++k) {
-      const double c = static_cast<float>(v.position[k]);
+      const double c = static_cast<float>(sources_[vertex.source].position[k]);
       record.min[k] = std::min(record.min[k], c);
       record.max[k] = std::max(record.max[k], c);
     }
   }
 }
 
-// The vertex attributes as they will be written, one stream each.
+// Every vertex's attributes as they will be written, side by side in one row (padding zero):
+// positions, normals, then uvs and feature ids when written.
 void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, bool with_features) {
   const std::size_t n = vertices_.size();
-  positions_.stride = record.quantized ? 8U : 12U;  // quantized: x, y, z, padding
-  normals_.stride = options.quantize ? 4U : 12U;
-  uvs_.stride = 8;
-  features_.stride = 4;
-  // Sized first, then filled through pointers (padding bytes stay zero).
-  positions_.bytes.assign(n * positions_.stride, '\0');
-  normals_.bytes.assign(n * normals_.stride, '\0');
-  uvs_.bytes.assign(has_uv_ ? n * uvs_.stride : 0, '\0');
-  features_.bytes.assign(with_features ? n * features_.stride : 0, '\0');
+  layout_.size = {record.quantized ? 8U : 12U,  // quantized: x, y, z, padding
+                  options.quantize ? 4U : 12U, has_uv_ ? 8U : 0U, with_features ? 4U : 0U};
+  layout_.stride = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    layout_.offset[k] = layout_.stride;
+    layout_.stride += layout_.size[k];
+  }
+  rows_.assign(n * layout_.stride, 0);
   const bool float_features = options.feature_component == Component::kFloat;
   for (std::size_t v = 0; v < n; ++v) {
     const Vertex& vertex = vertices_[v];
-    char* position = positions_.bytes.data() + v * positions_.stride;
-    char* normal = normals_.bytes.data() + v * normals_.stride;
+    const Source& source = sources_[vertex.source];
+    char* row = reinterpret_cast<char*>(rows_.data()) + v * layout_.stride;
+    char* position = row;
+    char* normal = row + layout_.offset[1];
     for (std::size_t k = 0; k < 3; ++k) {
       if (record.quantized) {
-        put_value(position, static_cast<std::uint16_t>(grid_[v][k]));
+        put_value(position, static_cast<std::uint16_t>(source.grid[k] - grid_low_[k]));
       } else {
-        put_value(position, static_cast<float>(vertex.position[k]));
+        put_value(position, static_cast<float>(source.position[k]));
       }
       if (options.quantize) {
         put_value(normal, normal_byte(vertex.normal[k]));
@@ -306,12 +323,12 @@ void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, b
       }
     }
     if (has_uv_) {
-      char* uv = uvs_.bytes.data() + v * uvs_.stride;
+      char* uv = row + layout_.offset[2];
       put_value(uv, vertex.uv[0]);
       put_value(uv, vertex.uv[1]);
     }
     if (!with_features) continue;
-    char* feature = features_.bytes.data() + v * features_.stride;
+    char* feature = row + layout_.offset[3];
     if (float_features) {
       put_value(feature, static_cast<float>(vertex.feature));
     } else {
@@ -322,40 +339,115 @@ void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, b
   for (std::size_t v = 0; v < n; ++v) vertex_features_[v] = vertices_[v].feature;
 }
 
-// Applies remap_ (old vertex -> new, ~0 for dropped) to the streams, features and indices.
-void MeshAssembler::apply_remap(std::span<Stream* const> streams, std::size_t count) {
-  for (Stream* s : streams) s->remap(remap_, count, scratch_);
-  moved_features_.resize(count);
-  for (std::size_t v = 0; v < remap_.size(); ++v) {
-    if (remap_[v] != ~0U) moved_features_[remap_[v]] = vertex_features_[v];
+// Optimises one run of triangles for the vertex cache over the vertices it uses only: meshopt
+// sizes its work by the vertex count it is given, so a building of thousands of parts would
+// otherwise cost parts x vertices.
+void MeshAssembler::optimize_run(std::span<unsigned int> run) {
+  global_of_.clear();
+  for (unsigned int& v : run) {
+    if (local_of_[v] == ~0U) {
+      local_of_[v] = static_cast<unsigned int>(global_of_.size());
+      global_of_.push_back(v);
+    }
+    v = local_of_[v];
   }
-  std::swap(vertex_features_, moved_features_);
-  meshopt_remapIndexBuffer(indices_.data(), indices_.data(), indices_.size(), remap_.data());
+  if (!loads_each_once(run, global_of_.size(), loaded_at_)) {
+    meshopt_optimizeVertexCache(run.data(), run.data(), run.size(), global_of_.size());
+  }
+  for (unsigned int& v : run) v = global_of_[v];
+  for (unsigned int v : global_of_) local_of_[v] = ~0U;
+}
+
+// Sorts the triangles of `indices` by the feature of their first corner (stably; they usually
+// come sorted, part after part), then optimises each feature's run for the vertex cache.
+void MeshAssembler::order_by_feature(std::span<unsigned int> indices) {
+  const std::vector<std::uint32_t>& features = vertex_features_;
+  sorted_triangles_.resize(indices.size() / 3);
+  std::memcpy(sorted_triangles_.data(), indices.data(), indices.size() * sizeof(unsigned int));
+  const auto by_feature = [&features](const auto& a, const auto& b) {
+    return features[a[0]] < features[b[0]];
+  };
+  if (!std::is_sorted(sorted_triangles_.begin(), sorted_triangles_.end(), by_feature)) {
+    std::stable_sort(sorted_triangles_.begin(), sorted_triangles_.end(), by_feature);
+    std::memcpy(indices.data(), sorted_triangles_.data(), indices.size() * sizeof(unsigned int));
+  }
+  const auto& triangles = sorted_triangles_;
+  for (std::size_t begin = 0; begin < triangles.size();) {
+    std::size_t end = begin;
+    while (end < triangles.size() && features[triangles[end][0]] == features[triangles[begin][0]]) {
+      ++end;
+    }
+    optimize_run(indices.subspan(3 * begin, 3 * (end - begin)));
+    begin = end;
+  }
 }
 
 // Vertices alike in every written attribute become one; triangles part by part (a part's faces
 // lie together, and the feature ids then come in runs, which EXT_meshopt_compression stores in
 // almost nothing), each part's in the order that suits the vertex cache; then vertices in the
-// order of first use, for fetch. Returns the vertex count.
-std::size_t MeshAssembler::merge_and_order(std::span<Stream* const> streams) {
-  std::array<meshopt_Stream, 4> described{};
-  for (std::size_t i = 0; i < streams.size(); ++i) {
-    described[i] = {streams[i]->bytes.data(), streams[i]->stride, streams[i]->stride};
+// order of first use, for fetch. Leaves indices_ and vertex_features_ over the written vertices,
+// and source_ naming the row each writes; returns their count.
+std::size_t MeshAssembler::merge_and_order() {
+  const std::size_t n = vertices_.size();
+  remap_.resize(n);
+  const std::size_t merged = meshopt_generateVertexRemap(
+      remap_.data(), indices_.data(), indices_.size(), rows_.data(), n, layout_.stride);
+  meshopt_remapIndexBuffer(indices_.data(), indices_.data(), indices_.size(), remap_.data());
+  moved_features_.resize(merged);
+  for (std::size_t v = 0; v < n; ++v) {
+    if (remap_[v] != ~0U) moved_features_[remap_[v]] = vertex_features_[v];
   }
-  remap_.resize(vertices_.size());
-  std::size_t count =
-      meshopt_generateVertexRemapMulti(remap_.data(), indices_.data(), indices_.size(),
-                                       vertices_.size(), described.data(), streams.size());
-  apply_remap(streams, count);
+  std::swap(vertex_features_, moved_features_);
+  local_of_.assign(merged, ~0U);
   std::size_t begin = 0;
   for (std::size_t end : ends_) {
-    order_by_feature(std::span(indices_).subspan(begin, end - begin), vertex_features_, count);
+    order_by_feature(std::span(indices_).subspan(begin, end - begin));
     begin = end;
   }
-  remap_.assign(count, 0);
-  count = meshopt_optimizeVertexFetchRemap(remap_.data(), indices_.data(), indices_.size(), count);
-  apply_remap(streams, count);
+  // Every merged vertex is used (meshopt numbers only those the indices name).
+  fetch_.assign(merged, ~0U);
+  unsigned int count = 0;
+  for (unsigned int& index : indices_) {
+    if (fetch_[index] == ~0U) fetch_[index] = count++;
+    index = fetch_[index];
+  }
+  source_.resize(count);
+  moved_features_.resize(count);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (remap_[v] == ~0U) continue;
+    source_[fetch_[remap_[v]]] = v;
+  }
+  for (std::size_t w = 0; w < count; ++w) moved_features_[w] = vertex_features_[remap_[source_[w]]];
+  std::swap(vertex_features_, moved_features_);
   return count;
+}
+
+// Each attribute's slice of the written vertices' rows, appended to its view.
+void MeshAssembler::write_attributes(Buffers& buffers, const MeshViews& views,
+                                     const MeshOptions& options, std::size_t count,
+                                     MeshRecord& record) {
+  const auto add = [&](std::size_t k, std::uint32_t view, Component component,
+                       std::string_view type, bool normalized) {
+    std::string& data = buffers.data(view);
+    const std::size_t offset = data.size();
+    const std::uint32_t size = layout_.size[k];
+    data.resize(offset + count * size);
+    gather_column(data.data() + offset, rows_.data() + layout_.offset[k], layout_.stride, size,
+                  source_);
+    return buffers.add_accessor(
+        Accessor{view, offset, component, count, type, normalized, std::nullopt, std::nullopt});
+  };
+  record.position =
+      add(0, record.quantized ? views.quantized_positions : views.float_positions,
+          record.quantized ? Component::kUnsignedShort : Component::kFloat, "VEC3", false);
+  buffers.set_bounds(record.position, {record.min, record.max});
+  record.normal =
+      add(1, options.quantize ? views.quantized_normals : views.float_normals,
+          options.quantize ? Component::kByte : Component::kFloat, "VEC3", options.quantize);
+  if (has_uv_) record.uv = add(2, views.uvs, Component::kFloat, "VEC2", false);
+  if (layout_.size[3] > 0) {
+    record.feature = add(3, views.features, options.feature_component, "SCALAR", false);
+  }
 }
 
 // One primitive per material over the shared attributes, indices 16-bit when they fit.
@@ -396,33 +488,8 @@ MeshRecord MeshAssembler::emit(Buffers& buffers, const MeshViews& views, const M
   gather_indices();
   quantize(options.quantize, record);
   pack(record, options, with_features);
-  std::array<Stream*, 4> all{&positions_, &normals_, &uvs_, &features_};
-  std::size_t used = 2;
-  if (has_uv_) all[used++] = &uvs_;
-  if (with_features) all[used++] = &features_;
-  const std::span<Stream* const> streams(all.data(), used);
-  const std::size_t count = merge_and_order(streams);
-
-  const auto add_attribute = [&](const Stream& s, std::uint32_t view, Component component,
-                                 std::string_view type, bool normalized) {
-    std::string& data = buffers.data(view);
-    const std::size_t offset = data.size();
-    data += s.bytes;
-    return buffers.add_accessor(
-        Accessor{view, offset, component, count, type, normalized, std::nullopt, std::nullopt});
-  };
-  record.position = add_attribute(
-      positions_, record.quantized ? views.quantized_positions : views.float_positions,
-      record.quantized ? Component::kUnsignedShort : Component::kFloat, "VEC3", false);
-  buffers.set_bounds(record.position, {record.min, record.max});
-  record.normal = add_attribute(
-      normals_, options.quantize ? views.quantized_normals : views.float_normals,
-      options.quantize ? Component::kByte : Component::kFloat, "VEC3", options.quantize);
-  if (has_uv_) record.uv = add_attribute(uvs_, views.uvs, Component::kFloat, "VEC2", false);
-  if (with_features) {
-    record.feature =
-        add_attribute(features_, views.features, options.feature_component, "SCALAR", false);
-  }
+  const std::size_t count = merge_and_order();
+  write_attributes(buffers, views, options, count, record);
   write_primitives(buffers, views, count, record);
   clear();
   return record;

@@ -55,15 +55,6 @@ struct PrimitiveRecord {
   std::uint32_t feature_count = 0;
 };
 
-// One vertex attribute as written: `stride` bytes a vertex.
-struct Stream {
-  std::string bytes;
-  std::uint32_t stride = 0;
-
-  // Moves vertex v to map[v] (meshoptimizer's remap; ~0 drops it), keeping `count` vertices.
-  void remap(const std::vector<unsigned int>& map, std::size_t count, std::string& scratch);
-};
-
 struct MeshRecord {
   std::uint32_t position = 0;
   std::uint32_t normal = 0;
@@ -100,8 +91,15 @@ class MeshAssembler {
                   bool with_features);
 
  private:
+  // A vertex of an added mesh, placed: computed once however many corners use it.
+  struct Source {
+    std::array<double, 3> position;    // Y-up
+    std::array<std::int64_t, 3> grid;  // the nearest quantization grid point, when on_grid
+    bool on_grid;
+  };
+  // A corner of a face, flat shaded.
   struct Vertex {
-    std::array<double, 3> position;  // Y-up
+    std::uint32_t source;  // into sources_
     std::array<float, 3> normal;
     std::array<float, 2> uv;
     std::uint32_t feature;
@@ -112,17 +110,29 @@ class MeshAssembler {
                    kernel::Vec3 newell, std::vector<std::uint32_t>& indices);
   void fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop, kernel::Vec3 newell);
 
+  // Where each written attribute lies in a vertex's row (rows_): bytes from the row's start and
+  // bytes long (0: not written).
+  struct RowLayout {
+    std::uint32_t stride = 0;
+    std::array<std::uint32_t, 4> offset{};  // position, normal, uv, feature
+    std::array<std::uint32_t, 4> size{};
+  };
+
   // The steps of emit().
   void gather_indices();
   void quantize(bool wanted, MeshRecord& record);
   void pack(const MeshRecord& record, const MeshOptions& options, bool with_features);
-  std::size_t merge_and_order(std::span<Stream* const> streams);
-  void apply_remap(std::span<Stream* const> streams, std::size_t count);
+  std::size_t merge_and_order();
+  void order_by_feature(std::span<unsigned int> indices);
+  void optimize_run(std::span<unsigned int> run);
+  void write_attributes(Buffers& buffers, const MeshViews& views, const MeshOptions& options,
+                        std::size_t count, MeshRecord& record);
   void write_primitives(Buffers& buffers, const MeshViews& views, std::size_t count,
                         MeshRecord& record);
 
   const MaterialTable& materials_;
   std::vector<bool> material_textured_;
+  std::vector<Source> sources_;
   std::vector<Vertex> vertices_;
   // Triangles by table material, in the order materials are first met (sorted at emit).
   std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> indices_by_material_;
@@ -131,8 +141,9 @@ class MeshAssembler {
   // The part being added.
   const shape::Part* part_ = nullptr;
   bool instance_frame_ = false;
-  double uv_scale_ = 0;  // solid_geometry's texture size, 0: none
-  bool fit_uv_ = false;  // the face shows an image: UVs fit each face
+  std::uint32_t first_source_ = 0;  // the part's vertex 0 in sources_
+  double uv_scale_ = 0;             // solid_geometry's texture size, 0: none
+  bool fit_uv_ = false;             // the face shows an image: UVs fit each face
   std::uint32_t feature_ = 0;
 
   // Scratch reused from face to face.
@@ -145,16 +156,19 @@ class MeshAssembler {
   std::vector<std::array<float, 2>> corner_uvs_;
   // Scratch of emit(), kept from mesh to mesh.
   std::vector<unsigned int> indices_;
-  std::vector<std::size_t> ends_;  // end of each material's run in indices_
-  std::vector<std::array<std::int64_t, 3>> grid_;
-  Stream positions_;
-  Stream normals_;
-  Stream uvs_;
-  Stream features_;
-  std::string scratch_;
-  std::vector<unsigned int> remap_;
-  std::vector<std::uint32_t> vertex_features_;
+  std::vector<std::size_t> ends_;           // end of each material's run in indices_
+  std::array<std::int64_t, 3> grid_low_{};  // the quantized mesh's grid origin
+  RowLayout layout_;
+  std::vector<unsigned char> rows_;    // each vertex's written attributes, layout_.stride bytes
+  std::vector<unsigned int> remap_;    // vertex -> merged vertex (~0: unused)
+  std::vector<unsigned int> fetch_;    // merged vertex -> written vertex
+  std::vector<std::uint32_t> source_;  // written vertex -> a vertex whose row it writes
+  std::vector<std::uint32_t> vertex_features_;  // by vertex, then by merged, then written vertex
   std::vector<std::uint32_t> moved_features_;
+  std::vector<std::array<unsigned int, 3>> sorted_triangles_;
+  std::vector<unsigned int> local_of_;  // order_by_feature: merged vertex -> run's own numbering
+  std::vector<unsigned int> global_of_;
+  std::vector<unsigned int> loaded_at_;
   std::vector<std::uint32_t> seen_;
 };
 

@@ -44,7 +44,11 @@ bool is_strictly_convex(const kernel::Ring& ring) {
     const Vec2 c = ring[(i + 2) % n] - ring[0];
     const Vec2 u = b - a;
     const Vec2 v = c - b;
-    if (!(kernel::cross(u, v) > kMinTurn * kernel::length(u) * kernel::length(v))) return false;
+    // cross(u, v) > kMinTurn |u| |v|, squared: no square roots (hypot), the costliest part here.
+    const double turn = kernel::cross(u, v);
+    if (!(turn > 0 && turn * turn > kMinTurn * kMinTurn * kernel::dot(u, u) * kernel::dot(v, v))) {
+      return false;
+    }
     const double dx = b.x - a.x;
     const int sign = dx > 0 ? 1 : (dx < 0 ? -1 : 0);
     if (sign != 0) {

@@ -68,9 +68,10 @@ namespace {
 Vec3 newell(const Mesh& mesh, std::size_t face) {
   const auto loop = mesh.face(face);
   Vec3 n;
+  // Edges (i, i + 1), the last one back to corner 0; no modulo, which cost more than the sum.
   for (std::size_t i = 0; i < loop.size(); ++i) {
     const Vec3 a = mesh.position(loop[i]);
-    const Vec3 b = mesh.position(loop[(i + 1) % loop.size()]);
+    const Vec3 b = mesh.position(loop[i + 1 < loop.size() ? i + 1 : 0]);
     n += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
   }
   return n;
