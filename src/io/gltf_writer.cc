@@ -747,22 +747,26 @@ bool has_gltf_extension(const std::filesystem::path& path) {
 
 }  // namespace
 
+// The JSON is written in place after room for the two headers, which are filled in once its size
+// is known (the JSON is most of the bytes of a GLB: copying it cost more than writing it).
 std::string glb_bytes(const shape::Scene& scene, const GltfOptions& options) {
   const Builder builder(scene, options);
-  std::string text;
-  text.reserve(builder.json_size_estimate());
-  JsonStream json(text);
-  builder.write_json(json, {});
+  constexpr std::size_t kHeaders = 12 + 8;
   const std::size_t binary = builder.binary_size();
-  const std::size_t total = 12 + 8 + padded(text.size()) + (binary == 0 ? 0 : 8 + padded(binary));
   std::string out;
-  out.reserve(total);
-  gltf::append_value(out, kGlbMagic);
-  gltf::append_value(out, std::uint32_t{2});
-  gltf::append_value(out, static_cast<std::uint32_t>(total));
-  append_chunk_header(out, text.size(), kChunkJson);
-  out += text;
-  out.append(padded(text.size()) - text.size(), ' ');
+  out.reserve(kHeaders + builder.json_size_estimate() + 8 + padded(binary));
+  out.resize(kHeaders);
+  JsonStream json(out);
+  builder.write_json(json, {});
+  const std::size_t text = out.size() - kHeaders;
+  out.append(padded(text) - text, ' ');
+  const std::size_t total = out.size() + (binary == 0 ? 0 : 8 + padded(binary));
+  std::string headers;
+  gltf::append_value(headers, kGlbMagic);
+  gltf::append_value(headers, std::uint32_t{2});
+  gltf::append_value(headers, static_cast<std::uint32_t>(total));
+  append_chunk_header(headers, text, kChunkJson);
+  out.replace(0, kHeaders, headers);
   if (binary > 0) {
     append_chunk_header(out, binary, kChunkBin);
     builder.append_binary(out);

@@ -1,5 +1,6 @@
 #include "io/json_stream.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -126,16 +127,40 @@ void JsonStream::before_value() {
   newline(counts_.size());
 }
 
+// The common case of a key or a short string in compact text, separator, quotes and all in one
+// append: most of what the exports write is short keys and names, where appending piece by
+// piece cost more than the bytes.
+bool JsonStream::append_short(std::string_view text, std::string_view after) {
+  constexpr std::size_t kShort = 64;
+  if (indent_ >= 0 || text.size() > kShort || std::any_of(text.begin(), text.end(), [](char c) {
+        return needs_escape(static_cast<unsigned char>(c));
+      })) {
+    return false;
+  }
+  std::array<char, kShort + 4> buffer;
+  char* at = buffer.data();
+  if (!counts_.empty() && !after_key_ && counts_.back()++ > 0) *at++ = ',';
+  after_key_ = false;
+  *at++ = '"';
+  at = std::copy(text.begin(), text.end(), at);
+  at = std::copy(after.begin(), after.end(), at);
+  out_.append(buffer.data(), at);
+  return true;
+}
+
 JsonStream& JsonStream::key(std::string_view name) {
-  before_value();
-  out_ += '"';
-  append_json_escaped(out_, name);
-  out_ += indent_ < 0 ? "\":" : "\": ";
+  if (!append_short(name, "\":")) {
+    before_value();
+    out_ += '"';
+    append_json_escaped(out_, name);
+    out_ += indent_ < 0 ? "\":" : "\": ";
+  }
   after_key_ = true;
   return *this;
 }
 
 JsonStream& JsonStream::string(std::string_view text) {
+  if (append_short(text, "\"")) return *this;
   before_value();
   out_ += '"';
   append_json_escaped(out_, text);

@@ -58,6 +58,9 @@ class JsonStream {
   JsonStream& open(char bracket);
   JsonStream& close(char bracket);
   void before_value();
+  // Appends `text` quoted, then `after`, in one go when the text is compact and short and needs
+  // no escaping; false (nothing written) otherwise.
+  bool append_short(std::string_view text, std::string_view after);
   void newline(std::size_t depth);
   void append_integer(std::int64_t value);
   void append_integer(std::uint64_t value);
