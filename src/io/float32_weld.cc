@@ -28,13 +28,8 @@ bool Float32Weld::run(const kernel::Mesh& mesh, double grid) {
   parent_.resize(n);
   std::iota(parent_.begin(), parent_.end(), 0U);
   active_ = false;
-  struct Entry {
-    Float3 rounded;
-    kernel::Vec3 p;
-    std::uint32_t vertex;
-  };
-  std::vector<Entry> order;
-  order.reserve(n);
+  std::vector<Entry>& order = order_;
+  order.clear();
   for (std::uint32_t v = 0; v < n; ++v)
     order.push_back({rounded(mesh.position(v), grid), mesh.position(v), v});
   std::sort(order.begin(), order.end(), [](const Entry& a, const Entry& b) {

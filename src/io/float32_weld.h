@@ -63,7 +63,13 @@ class Float32Weld {
   std::vector<std::array<std::uint32_t, 3>> triangles_;
   std::vector<std::size_t> offsets_;  // face f's triangles: [offsets_[f], offsets_[f + 1])
   bool active_ = false;
-  // Scratch reused from face to face.
+  // Scratch reused from mesh to mesh and face to face.
+  struct Entry {
+    Float3 rounded;
+    kernel::Vec3 p;
+    std::uint32_t vertex;
+  };
+  std::vector<Entry> order_;
   std::vector<std::uint32_t> keys_;
   std::vector<std::uint32_t> ids_;
   std::vector<CornerTriangle> corner_triangles_;

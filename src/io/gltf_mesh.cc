@@ -40,25 +40,6 @@ std::int8_t normal_byte(float c) {
   return static_cast<std::int8_t>(round_half_away(std::clamp(c, -1.0F, 1.0F) * 127.0F));
 }
 
-// Whether a FIFO cache of kCacheSize vertices (meshopt's model of a GPU's) loads each vertex of
-// `run` once: the usual case with flat shading, where a face's triangles come together and share
-// only its corners. No order can do better, so the run is left as it is (and meshopt's optimiser,
-// which costs more than the rest of a small mesh, is not run).
-bool loads_each_once(std::span<const unsigned int> run, std::size_t vertex_count,
-                     std::vector<unsigned int>& loaded_at) {
-  constexpr unsigned int kCacheSize = 16;
-  loaded_at.assign(vertex_count, ~0U);
-  unsigned int loads = 0;
-  for (unsigned int v : run) {
-    if (loaded_at[v] == ~0U) {
-      loaded_at[v] = loads++;
-    } else if (loads - loaded_at[v] > kCacheSize) {
-      return false;  // evicted, and loaded again
-    }
-  }
-  return true;
-}
-
 // Copies the `size`-byte slice at `column` of each of `rows` in turn to `out`; each size is a
 // case of its own so every copy is a fixed-size move.
 void gather_column(char* out, const unsigned char* column, std::size_t stride, std::uint32_t size,
@@ -339,10 +320,31 @@ void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, b
   for (std::size_t v = 0; v < n; ++v) vertex_features_[v] = vertices_[v].feature;
 }
 
+// Whether a FIFO cache of kCacheSize vertices (meshopt's model of a GPU's) loads each vertex of
+// `run` once: the usual case with flat shading, where a face's triangles come together and share
+// only its corners. No order can do better, so the run is left as it is (and meshopt's optimiser,
+// which costs more than the rest of a small mesh, is not run).
+bool MeshAssembler::loads_each_once(std::span<const unsigned int> run) {
+  constexpr unsigned int kCacheSize = 16;
+  unsigned int loads = 0;
+  bool once = true;
+  for (unsigned int v : run) {
+    if (loaded_at_[v] == ~0U) {
+      loaded_at_[v] = loads++;
+    } else if (loads - loaded_at_[v] > kCacheSize) {
+      once = false;  // evicted, and loaded again
+      break;
+    }
+  }
+  for (unsigned int v : run) loaded_at_[v] = ~0U;  // a vertex may be in another material's run
+  return once;
+}
+
 // Optimises one run of triangles for the vertex cache over the vertices it uses only: meshopt
 // sizes its work by the vertex count it is given, so a building of thousands of parts would
 // otherwise cost parts x vertices.
 void MeshAssembler::optimize_run(std::span<unsigned int> run) {
+  if (loads_each_once(run)) return;
   global_of_.clear();
   for (unsigned int& v : run) {
     if (local_of_[v] == ~0U) {
@@ -351,9 +353,7 @@ void MeshAssembler::optimize_run(std::span<unsigned int> run) {
     }
     v = local_of_[v];
   }
-  if (!loads_each_once(run, global_of_.size(), loaded_at_)) {
-    meshopt_optimizeVertexCache(run.data(), run.data(), run.size(), global_of_.size());
-  }
+  meshopt_optimizeVertexCache(run.data(), run.data(), run.size(), global_of_.size());
   for (unsigned int& v : run) v = global_of_[v];
   for (unsigned int v : global_of_) local_of_[v] = ~0U;
 }
@@ -362,24 +362,61 @@ void MeshAssembler::optimize_run(std::span<unsigned int> run) {
 // come sorted, part after part), then optimises each feature's run for the vertex cache.
 void MeshAssembler::order_by_feature(std::span<unsigned int> indices) {
   const std::vector<std::uint32_t>& features = vertex_features_;
-  sorted_triangles_.resize(indices.size() / 3);
-  std::memcpy(sorted_triangles_.data(), indices.data(), indices.size() * sizeof(unsigned int));
-  const auto by_feature = [&features](const auto& a, const auto& b) {
-    return features[a[0]] < features[b[0]];
-  };
-  if (!std::is_sorted(sorted_triangles_.begin(), sorted_triangles_.end(), by_feature)) {
-    std::stable_sort(sorted_triangles_.begin(), sorted_triangles_.end(), by_feature);
+  const std::size_t triangles = indices.size() / 3;
+  const auto feature = [&](std::size_t t) { return features[indices[3 * t]]; };
+  bool sorted = true;
+  for (std::size_t t = 1; t < triangles && sorted; ++t) sorted = feature(t - 1) <= feature(t);
+  if (!sorted) {
+    sorted_triangles_.resize(triangles);
+    std::memcpy(sorted_triangles_.data(), indices.data(), indices.size() * sizeof(unsigned int));
+    std::stable_sort(
+        sorted_triangles_.begin(), sorted_triangles_.end(),
+        [&features](const auto& a, const auto& b) { return features[a[0]] < features[b[0]]; });
     std::memcpy(indices.data(), sorted_triangles_.data(), indices.size() * sizeof(unsigned int));
   }
-  const auto& triangles = sorted_triangles_;
-  for (std::size_t begin = 0; begin < triangles.size();) {
-    std::size_t end = begin;
-    while (end < triangles.size() && features[triangles[end][0]] == features[triangles[begin][0]]) {
-      ++end;
-    }
+  for (std::size_t begin = 0; begin < triangles;) {
+    std::size_t end = begin + 1;
+    while (end < triangles && feature(end) == feature(begin)) ++end;
     optimize_run(indices.subspan(3 * begin, 3 * (end - begin)));
     begin = end;
   }
+}
+
+// Numbers the vertices alike in every written byte as one, in order of first use by the indices
+// (as meshopt_generateVertexRemap does), in remap_ (~0: unused); returns the count. Open
+// addressing over the rows, with the table kept from mesh to mesh: most meshes are small, and
+// allocating a table for each cost more than the lookups.
+std::size_t MeshAssembler::merge_rows() {
+  const std::size_t n = vertices_.size();
+  const std::size_t stride = layout_.stride;
+  remap_.assign(n, ~0U);
+  std::size_t capacity = 16;
+  while (capacity < 2 * n) capacity *= 2;
+  slots_.assign(capacity, ~0U);
+  const auto row = [&](std::uint32_t v) { return rows_.data() + v * stride; };
+  unsigned int count = 0;
+  for (const unsigned int v : indices_) {
+    if (remap_[v] != ~0U) continue;
+    std::uint64_t hash = 0;
+    for (std::size_t i = 0; i < stride; i += 4) {
+      std::uint32_t word;
+      std::memcpy(&word, row(v) + i, 4);
+      hash = (hash ^ word) * 0x9E3779B97F4A7C15ULL;
+    }
+    for (std::size_t slot = (hash >> 32U) & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
+      const std::uint32_t other = slots_[slot];
+      if (other == ~0U) {
+        slots_[slot] = v;
+        remap_[v] = count++;
+        break;
+      }
+      if (std::memcmp(row(other), row(v), stride) == 0) {
+        remap_[v] = remap_[other];
+        break;
+      }
+    }
+  }
+  return count;
 }
 
 // Vertices alike in every written attribute become one; triangles part by part (a part's faces
@@ -389,16 +426,15 @@ void MeshAssembler::order_by_feature(std::span<unsigned int> indices) {
 // and source_ naming the row each writes; returns their count.
 std::size_t MeshAssembler::merge_and_order() {
   const std::size_t n = vertices_.size();
-  remap_.resize(n);
-  const std::size_t merged = meshopt_generateVertexRemap(
-      remap_.data(), indices_.data(), indices_.size(), rows_.data(), n, layout_.stride);
-  meshopt_remapIndexBuffer(indices_.data(), indices_.data(), indices_.size(), remap_.data());
+  const std::size_t merged = merge_rows();
+  for (unsigned int& index : indices_) index = remap_[index];
   moved_features_.resize(merged);
   for (std::size_t v = 0; v < n; ++v) {
     if (remap_[v] != ~0U) moved_features_[remap_[v]] = vertex_features_[v];
   }
   std::swap(vertex_features_, moved_features_);
   local_of_.assign(merged, ~0U);
+  loaded_at_.assign(merged, ~0U);
   std::size_t begin = 0;
   for (std::size_t end : ends_) {
     order_by_feature(std::span(indices_).subspan(begin, end - begin));
@@ -462,22 +498,24 @@ void MeshAssembler::write_primitives(Buffers& buffers, const MeshViews& views, s
   std::size_t begin = 0;
   for (std::size_t m = 0; m < ends_.size(); ++m) {
     const std::size_t offset = static_cast<std::size_t>(at - data.data());
-    seen_.clear();
     for (std::size_t i = begin; i < ends_[m]; ++i) {
       if (short_indices) {
         put_value(at, static_cast<std::uint16_t>(indices_[i]));
       } else {
         put_value(at, static_cast<std::uint32_t>(indices_[i]));
       }
-      seen_.push_back(vertex_features_[indices_[i]]);
     }
-    std::sort(seen_.begin(), seen_.end());
-    const auto distinct = std::unique(seen_.begin(), seen_.end()) - seen_.begin();
+    // A triangle's corners come from one face, so share its feature, and the triangles are
+    // sorted by it (order_by_feature): the distinct features are the runs.
+    std::uint32_t distinct = 0;
+    for (std::size_t i = begin; i < ends_[m]; i += 3) {
+      if (i == begin || vertex_features_[indices_[i]] != vertex_features_[indices_[i - 3]])
+        ++distinct;
+    }
     const std::uint32_t accessor = buffers.add_accessor(
         Accessor{view, offset, short_indices ? Component::kUnsignedShort : Component::kUnsignedInt,
                  ends_[m] - begin, "SCALAR", false, std::nullopt, std::nullopt});
-    record.primitives.push_back(
-        {indices_by_material_[m].first, accessor, static_cast<std::uint32_t>(distinct)});
+    record.primitives.push_back({indices_by_material_[m].first, accessor, distinct});
     begin = ends_[m];
   }
 }

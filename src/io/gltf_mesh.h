@@ -122,8 +122,10 @@ class MeshAssembler {
   void gather_indices();
   void quantize(bool wanted, MeshRecord& record);
   void pack(const MeshRecord& record, const MeshOptions& options, bool with_features);
+  std::size_t merge_rows();
   std::size_t merge_and_order();
   void order_by_feature(std::span<unsigned int> indices);
+  bool loads_each_once(std::span<const unsigned int> run);
   void optimize_run(std::span<unsigned int> run);
   void write_attributes(Buffers& buffers, const MeshViews& views, const MeshOptions& options,
                         std::size_t count, MeshRecord& record);
@@ -161,6 +163,7 @@ class MeshAssembler {
   RowLayout layout_;
   std::vector<unsigned char> rows_;    // each vertex's written attributes, layout_.stride bytes
   std::vector<unsigned int> remap_;    // vertex -> merged vertex (~0: unused)
+  std::vector<std::uint32_t> slots_;   // merge_rows()'s hash table of vertices (~0: free)
   std::vector<unsigned int> fetch_;    // merged vertex -> written vertex
   std::vector<std::uint32_t> source_;  // written vertex -> a vertex whose row it writes
   std::vector<std::uint32_t> vertex_features_;  // by vertex, then by merged, then written vertex
@@ -168,8 +171,7 @@ class MeshAssembler {
   std::vector<std::array<unsigned int, 3>> sorted_triangles_;
   std::vector<unsigned int> local_of_;  // order_by_feature: merged vertex -> run's own numbering
   std::vector<unsigned int> global_of_;
-  std::vector<unsigned int> loaded_at_;
-  std::vector<std::uint32_t> seen_;
+  std::vector<unsigned int> loaded_at_;  // merged vertex -> its load in the run checked
 };
 
 }  // namespace insula::io::gltf
