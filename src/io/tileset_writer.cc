@@ -62,9 +62,8 @@ kernel::Bounds3 building_bounds(const shape::Building& building) {
 
 // `part` of `building` as a feature of a tile: moved by `offset` (a shared mesh stays shared: its
 // placement moves), carrying its building's id and attributes where it has none of its own.
-shape::Part tile_part(const shape::Building& building, const shape::Part& part,
+shape::Part tile_part(const shape::Building& building, shape::Part out,
                       const kernel::Transform& offset) {
-  shape::Part out = part;
   if (out.instance_of) {
     out.instance_transform = offset * out.instance_transform;
   } else {
@@ -239,8 +238,16 @@ const std::vector<std::size_t>& TilesetWriter::leaf_items(std::size_t leaf) cons
 // The tile's scene: one building, the tile, whose parts are the parts of its buildings, around
 // the tile's centre (the scene's origin). One mesh then draws the whole tile, and a viewer picks
 // every part as a feature with its building's properties.
-std::string TilesetWriter::write_tile(std::size_t l,
+std::string TilesetWriter::write_tile(std::size_t leaf,
                                       const std::vector<const shape::Building*>& buildings,
+                                      const std::vector<shape::Material>* materials) {
+  std::vector<shape::Building> copies;
+  copies.reserve(buildings.size());
+  for (const shape::Building* building : buildings) copies.push_back(*building);
+  return write_tile(leaf, std::move(copies), materials);
+}
+
+std::string TilesetWriter::write_tile(std::size_t l, std::vector<shape::Building>&& buildings,
                                       const std::vector<shape::Material>* materials) {
   Leaf& leaf = leaves_[l];
   shape::Scene tile;
@@ -250,14 +257,15 @@ std::string TilesetWriter::write_tile(std::size_t l,
   shape::Building& content = tile.buildings.emplace_back();
   content.id = tree_.nodes[leaf.node].name();
   const kernel::Transform offset = kernel::translation(-leaf.centre);
-  for (const shape::Building* building : buildings) {
-    const kernel::Bounds3 box = building_bounds(*building);
+  for (shape::Building& building : buildings) {
+    const kernel::Bounds3 box = building_bounds(building);
     if (box.empty()) continue;
     leaf.box.add(box.min);
     leaf.box.add(box.max);
-    for (const shape::Part& part : building->parts) {
-      content.parts.push_back(tile_part(*building, part, offset));
+    for (shape::Part& part : building.parts) {
+      content.parts.push_back(tile_part(building, std::move(part), offset));
     }
+    building = shape::Building{};  // its parts are the tile's now
   }
   if (leaf.box.empty()) return {};
   return write_gltf(tile, tile_folder_ / (tree_.nodes[leaf.node].name() + ".glb"), gltf_);

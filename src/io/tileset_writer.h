@@ -57,6 +57,9 @@ class TilesetWriter {
   // on success, else the reason naming the file.
   std::string write_tile(std::size_t leaf, const std::vector<const shape::Building*>& buildings,
                          const std::vector<shape::Material>* materials = nullptr);
+  // The same with buildings the tile may take apart (no copy of their meshes).
+  std::string write_tile(std::size_t leaf, std::vector<shape::Building>&& buildings,
+                         const std::vector<shape::Material>* materials = nullptr);
   // The box of what write_tile() wrote for `leaf` (empty: nothing); a leaf written by another
   // process (MPI) is told here before finish().
   kernel::Bounds3 tile_box(std::size_t leaf) const { return leaves_[leaf].box; }

@@ -28,6 +28,12 @@ kernel::Bounds3 box_of(const Json& j) {
   return box;
 }
 
+std::vector<const shape::Building*> pointers_to(const std::vector<shape::Building>& buildings) {
+  std::vector<const shape::Building*> pointers;
+  for (const shape::Building& b : buildings) pointers.push_back(&b);
+  return pointers;
+}
+
 }  // namespace
 
 std::filesystem::path staging_folder(const std::string& tileset_json) {
@@ -117,13 +123,14 @@ TileJob::RankShare TileJob::build_share(const BuildTile& build) {
       if (interrupted() || failed) continue;  // the rest go to other ranks, which stop too
       const std::vector<std::size_t>& members = writers_.front()->leaf_items(t);
       TileContent content = build(members);
-      std::vector<const shape::Building*> buildings;
-      for (const shape::Building& b : content.buildings) buildings.push_back(&b);
       const std::vector<shape::Material>* materials =
           content.own_materials ? &content.materials : nullptr;
       std::string error;
-      for (const auto& writer : writers_) {
-        if (error.empty()) error = writer->write_tile(t, buildings, materials);
+      for (std::size_t w = 0; w < writers_.size() && error.empty(); ++w) {
+        // The last writer may take the buildings apart; the others write copies.
+        error = w + 1 == writers_.size()
+                    ? writers_[w]->write_tile(t, std::move(content.buildings), materials)
+                    : writers_[w]->write_tile(t, pointers_to(content.buildings), materials);
       }
       done[t] = Json::array(
           {t, box_json(writers_.front()->tile_box(t)), error, std::move(content.tally)});
