@@ -30,6 +30,30 @@ TEST(Offset, InsetGivesInsideAndBorder) {
   EXPECT_NEAR(kernel::surface_area(*border.mesh), 28, 1e-9);
 }
 
+// A rectangle is inset directly; the same region with one more (collinear) vertex goes through
+// Clipper: the two agree.
+TEST(Offset, RectangleInsetAgreesWithTheGeneralPath) {
+  ShapeTree tree;
+  const RootResult rect = tree.create_root({{{2, 1}, {7, 1}, {7, 4}, {2, 4}}, {}});
+  const RootResult five = tree.create_root({{{2, 1}, {5, 1}, {7, 1}, {7, 4}, {2, 4}}, {}});
+  const OpResult a = offset(tree, rect.id, -0.25, OffsetPart::kAll);
+  const OpResult b = offset(tree, five.id, -0.25, OffsetPart::kAll);
+  ASSERT_EQ(a.children.size(), 2U);
+  ASSERT_EQ(b.children.size(), 2U);
+  for (std::uint32_t piece : {0U, 1U}) {
+    EXPECT_NEAR(total_area(tree, a, piece), total_area(tree, b, piece), 1e-9);
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Shape& fast = tree[a.children[i]];
+    const Shape& general = tree[b.children[i]];
+    EXPECT_EQ(a.pieces[i], b.pieces[i]);
+    EXPECT_NEAR(kernel::length(fast.scope.origin - general.scope.origin), 0, 1e-9);
+    EXPECT_NEAR(kernel::length(fast.scope.size - general.scope.size), 0, 1e-9);
+    EXPECT_EQ(fast.outline->holes.size(), general.outline->holes.size());
+    EXPECT_NEAR(kernel::surface_area(*fast.mesh), kernel::surface_area(*general.mesh), 1e-9);
+  }
+}
+
 TEST(Offset, GrowingAndVanishing) {
   ShapeTree tree;
   const RootResult root = tree.create_root({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}});
