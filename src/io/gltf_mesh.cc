@@ -85,6 +85,7 @@ MeshAssembler::MeshAssembler(const MaterialTable& materials, std::vector<bool> m
 
 void MeshAssembler::clear() {
   sources_.clear();
+  face_normals_.clear();
   vertices_.clear();
   indices_by_material_.clear();
   has_uv_ = false;
@@ -163,8 +164,13 @@ void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face,
 void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
                                 kernel::Vec3 newell, std::vector<std::uint32_t>& indices) {
   const std::array<double, 3> n = y_up(kernel::normalized(newell));
-  const std::array<float, 3> normal{static_cast<float>(n[0]), static_cast<float>(n[1]),
-                                    static_cast<float>(n[2])};
+  FaceNormal normal{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    normal.normal[k] = static_cast<float>(n[k]);
+    normal.bytes[k] = normal_byte(normal.normal[k]);
+  }
+  const auto face = static_cast<std::uint32_t>(face_normals_.size());
+  face_normals_.push_back(normal);
   corner_uvs_.assign(loop.size(), {0.0F, 0.0F});
   if (part_->uv) {
     // The part's map is over world positions; an instance's mesh is placed first. glTF's v runs
@@ -189,7 +195,7 @@ void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::u
   const auto base = static_cast<std::uint32_t>(vertices_.size());
   for (std::size_t i = 0; i < loop.size(); ++i) {
     vertices_.push_back(
-        Vertex{first_source_ + weld_.representative(loop[i]), normal, corner_uvs_[i], feature_});
+        Vertex{first_source_ + weld_.representative(loop[i]), face, corner_uvs_[i], feature_});
   }
   for (const CornerTriangle& triangle : triangles_) {
     for (std::uint32_t corner : triangle) indices.push_back(base + corner);
@@ -284,37 +290,49 @@ void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, b
     layout_.stride += layout_.size[k];
   }
   rows_.assign(n * layout_.stride, 0);
-  const bool float_features = options.feature_component == Component::kFloat;
-  for (std::size_t v = 0; v < n; ++v) {
-    const Vertex& vertex = vertices_[v];
-    const Source& source = sources_[vertex.source];
-    char* row = reinterpret_cast<char*>(rows_.data()) + v * layout_.stride;
-    char* position = row;
-    char* normal = row + layout_.offset[1];
-    for (std::size_t k = 0; k < 3; ++k) {
-      if (record.quantized) {
-        put_value(position, static_cast<std::uint16_t>(source.grid[k] - grid_low_[k]));
-      } else {
-        put_value(position, static_cast<float>(source.position[k]));
+  // One attribute at a time, so that each loop has one thing to do.
+  const auto fill = [&](std::size_t attribute, auto&& write) {
+    char* row = reinterpret_cast<char*>(rows_.data()) + layout_.offset[attribute];
+    for (const Vertex& vertex : vertices_) {
+      char* at = row;
+      write(at, vertex);
+      row += layout_.stride;
+    }
+  };
+  if (record.quantized) {
+    fill(0, [&](char*& at, const Vertex& vertex) {
+      const Source& source = sources_[vertex.source];
+      for (std::size_t k = 0; k < 3; ++k) {
+        put_value(at, static_cast<std::uint16_t>(source.grid[k] - grid_low_[k]));
       }
-      if (options.quantize) {
-        put_value(normal, normal_byte(vertex.normal[k]));
-      } else {
-        put_value(normal, vertex.normal[k]);
-      }
-    }
-    if (has_uv_) {
-      char* uv = row + layout_.offset[2];
-      put_value(uv, vertex.uv[0]);
-      put_value(uv, vertex.uv[1]);
-    }
-    if (!with_features) continue;
-    char* feature = row + layout_.offset[3];
-    if (float_features) {
-      put_value(feature, static_cast<float>(vertex.feature));
-    } else {
-      put_value(feature, static_cast<std::uint16_t>(vertex.feature));
-    }
+    });
+  } else {
+    fill(0, [&](char*& at, const Vertex& vertex) {
+      for (double c : sources_[vertex.source].position) put_value(at, static_cast<float>(c));
+    });
+  }
+  if (options.quantize) {
+    fill(1, [&](char*& at, const Vertex& vertex) {
+      for (std::int8_t c : face_normals_[vertex.face].bytes) put_value(at, c);
+    });
+  } else {
+    fill(1, [&](char*& at, const Vertex& vertex) {
+      for (float c : face_normals_[vertex.face].normal) put_value(at, c);
+    });
+  }
+  if (has_uv_) {
+    fill(2, [](char*& at, const Vertex& vertex) {
+      for (float c : vertex.uv) put_value(at, c);
+    });
+  }
+  if (with_features && options.feature_component == Component::kFloat) {
+    fill(3, [](char*& at, const Vertex& vertex) {
+      put_value(at, static_cast<float>(vertex.feature));
+    });
+  } else if (with_features) {
+    fill(3, [](char*& at, const Vertex& vertex) {
+      put_value(at, static_cast<std::uint16_t>(vertex.feature));
+    });
   }
   vertex_features_.resize(n);
   for (std::size_t v = 0; v < n; ++v) vertex_features_[v] = vertices_[v].feature;

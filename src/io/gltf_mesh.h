@@ -97,10 +97,15 @@ class MeshAssembler {
     std::array<std::int64_t, 3> grid;  // the nearest quantization grid point, when on_grid
     bool on_grid;
   };
+  // A face's unit normal (Y-up), and as normalized bytes (the fourth is padding).
+  struct FaceNormal {
+    std::array<float, 3> normal;
+    std::array<std::int8_t, 4> bytes;
+  };
   // A corner of a face, flat shaded.
   struct Vertex {
     std::uint32_t source;  // into sources_
-    std::array<float, 3> normal;
+    std::uint32_t face;    // into face_normals_
     std::array<float, 2> uv;
     std::uint32_t feature;
   };
@@ -135,6 +140,7 @@ class MeshAssembler {
   const MaterialTable& materials_;
   std::vector<bool> material_textured_;
   std::vector<Source> sources_;
+  std::vector<FaceNormal> face_normals_;
   std::vector<Vertex> vertices_;
   // Triangles by table material, in the order materials are first met (sorted at emit).
   std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> indices_by_material_;

@@ -38,67 +38,83 @@ bool needs_escape(unsigned char c) {
   return c < 0x20U || c == '"' || c == '\\' || c >= 0x80U;
 }
 
-void append_escaped_char(std::string& out, unsigned char c) {
+// The escape sequence of an ASCII character that needs one.
+std::string_view escaped_char(unsigned char c, std::array<char, 6>& buffer) {
   switch (c) {
     case '"':
-      out += "\\\"";
-      return;
+      return "\\\"";
     case '\\':
-      out += "\\\\";
-      return;
+      return "\\\\";
     case '\b':
-      out += "\\b";
-      return;
+      return "\\b";
     case '\f':
-      out += "\\f";
-      return;
+      return "\\f";
     case '\n':
-      out += "\\n";
-      return;
+      return "\\n";
     case '\r':
-      out += "\\r";
-      return;
+      return "\\r";
     case '\t':
-      out += "\\t";
-      return;
+      return "\\t";
     default:
       break;
   }
   static constexpr char kHex[] = "0123456789abcdef";
-  const char escaped[6] = {'\\', 'u', '0', '0', kHex[c >> 4U], kHex[c & 0xFU]};
-  out.append(escaped, 6);
+  buffer = {'\\', 'u', '0', '0', kHex[c >> 4U], kHex[c & 0xFU]};
+  return {buffer.data(), buffer.size()};
 }
 
-}  // namespace
-
-void append_json_escaped(std::string& out, std::string_view text) {
+// `text` escaped, handed to `append` piece by piece: runs that need no attention whole (the
+// common case: plain ASCII), escape sequences, well-formed UTF-8 sequences, U+FFFD for a byte
+// that begins none.
+template <typename Append>
+void escape(std::string_view text, Append&& append) {
   std::size_t i = 0;
+  std::array<char, 6> buffer{};
   while (i < text.size()) {
-    // Copy the longest run that needs no attention in one go (the common case: plain ASCII).
     std::size_t run = i;
     while (run < text.size() && !needs_escape(static_cast<unsigned char>(text[run]))) ++run;
-    out.append(text.data() + i, run - i);
+    if (run > i) append(text.substr(i, run - i));
     i = run;
     if (i == text.size()) break;
     const auto c = static_cast<unsigned char>(text[i]);
     if (c < 0x80U) {
-      append_escaped_char(out, c);
+      append(escaped_char(c, buffer));
       ++i;
     } else if (const std::size_t n = utf8_length(text, i); n > 0) {
-      out.append(text.data() + i, n);
+      append(text.substr(i, n));
       i += n;
     } else {
-      out += "\xEF\xBF\xBD";  // U+FFFD REPLACEMENT CHARACTER for one ill-formed byte
+      append("\xEF\xBF\xBD");  // U+FFFD REPLACEMENT CHARACTER for one ill-formed byte
       ++i;
     }
   }
 }
 
+}  // namespace
+
+void append_json_escaped(std::string& out, std::string_view text) {
+  escape(text, [&out](std::string_view piece) { out += piece; });
+}
+
+void JsonStream::put(std::string_view text) {
+  if (text.size() > kPending - used_) {
+    flush();
+    if (text.size() > kPending) {
+      out_ += text;
+      return;
+    }
+  }
+  std::memcpy(pending_.data() + used_, text.data(), text.size());
+  used_ += text.size();
+}
+
+void JsonStream::put_escaped(std::string_view text) {
+  escape(text, [this](std::string_view piece) { put(piece); });
+}
+
 JsonStream& JsonStream::open(char bracket) {
-  std::array<char, 2> buffer;
-  char* at = separator(buffer.data());
-  *at++ = bracket;
-  out_.append(buffer.data(), at);
+  separate();
+  put(bracket);
   counts_.push_back(0);
   return *this;
 }
@@ -107,90 +123,58 @@ JsonStream& JsonStream::close(char bracket) {
   const bool empty = counts_.back() == 0;
   counts_.pop_back();
   if (!empty) newline(counts_.size());
-  out_ += bracket;
-  return *this;
+  put(bracket);
+  return end_value();
 }
 
 void JsonStream::newline(std::size_t depth) {
   if (indent_ < 0) return;
-  out_ += '\n';
-  out_.append(depth * static_cast<std::size_t>(indent_), ' ');
+  put('\n');
+  for (std::size_t spaces = depth * static_cast<std::size_t>(indent_); spaces > 0;) {
+    const std::size_t n = std::min<std::size_t>(spaces, 64);
+    char* at = room(n);
+    std::memset(at, ' ', n);
+    commit(at + n);
+    spaces -= n;
+  }
 }
 
-// Separators before a value: none after a key; else a comma after the container's previous value
-// and, when pretty, a new line at the container's depth.
-void JsonStream::before_value() {
+void JsonStream::separate() {
   if (after_key_) {
     after_key_ = false;
     return;
   }
   if (counts_.empty()) return;
-  if (counts_.back()++ > 0) out_ += ',';
+  if (counts_.back()++ > 0) put(',');
   newline(counts_.size());
 }
 
-// Compact text: the separator a value needs (a comma, or nothing) written at `at`, returning the
-// end, so that the separator and the value go out in one append. Pretty text: before_value().
-char* JsonStream::separator(char* at) {
-  if (indent_ >= 0) {
-    before_value();
-  } else if (after_key_) {
-    after_key_ = false;
-  } else if (!counts_.empty() && counts_.back()++ > 0) {
-    *at++ = ',';
-  }
-  return at;
-}
-
-// The common case of a key or a short string in compact text, separator, quotes and all in one
-// append: most of what the exports write is short keys and names, where appending piece by
-// piece cost more than the bytes.
-bool JsonStream::append_short(std::string_view text, std::string_view after) {
-  constexpr std::size_t kShort = 64;
-  if (indent_ >= 0 || text.size() > kShort) return false;
-  // The text is checked as it is copied in at 2; the quote goes at 1, and a comma at 0 if needed.
-  std::array<char, kShort + 4> buffer;
-  char* at = buffer.data() + 2;
-  for (char c : text) {
-    if (needs_escape(static_cast<unsigned char>(c))) return false;
-    *at++ = c;
-  }
-  for (char c : after) *at++ = c;
-  buffer[1] = '"';
-  const char* start = separator(buffer.data()) == buffer.data() ? buffer.data() + 1 : buffer.data();
-  out_.append(start, static_cast<std::size_t>(at - start));
-  return true;
-}
-
 JsonStream& JsonStream::key(std::string_view name) {
-  if (!append_short(name, "\":")) {
-    before_value();
-    out_ += '"';
-    append_json_escaped(out_, name);
-    out_ += indent_ < 0 ? "\":" : "\": ";
-  }
+  separate();
+  put('"');
+  put_escaped(name);
+  put(indent_ < 0 ? "\":" : "\": ");
   after_key_ = true;
   return *this;
 }
 
 JsonStream& JsonStream::string(std::string_view text) {
-  if (append_short(text, "\"")) return *this;
-  before_value();
-  out_ += '"';
-  append_json_escaped(out_, text);
-  out_ += '"';
-  return *this;
+  separate();
+  put('"');
+  put_escaped(text);
+  put('"');
+  return end_value();
 }
 
 // nlohmann's own Grisu2 formatter, so numbers come out exactly as json::dump() prints them
 // (std::to_chars would give the same value, but not always the same digits or layout: "3" vs
-// "3.0", "1e-07" vs "1e-7").
-// A whole number below 1e15 is printed by it as its digits and ".0" (checked against it on 66
-// million values), which std::to_chars of the integer gives faster.
+// "3.0", "1e-07" vs "1e-7"). A whole number below 1e15 is printed by it as its digits and ".0"
+// (checked against it on 66 million values), which std::to_chars of the integer gives faster.
 JsonStream& JsonStream::number(double value) {
-  std::array<char, 64> buffer;
-  char* at = separator(buffer.data());
-  char* const end = buffer.data() + buffer.size();
+  separate();
+  constexpr std::size_t kLongest = 32;
+  char* at = room(kLongest);
+  char* const end = at + kLongest;
   if (!std::isfinite(value)) {
     at = std::copy_n("null", 4, at);
   } else if (value != 0 && std::abs(value) < 1e15 && std::trunc(value) == value) {
@@ -199,32 +183,20 @@ JsonStream& JsonStream::number(double value) {
   } else {
     at = nlohmann::detail::to_chars(at, end, value);
   }
-  out_.append(buffer.data(), at);
-  return *this;
-}
-
-void JsonStream::append_integer(std::int64_t value) {
-  std::array<char, 24> buffer;
-  char* at = separator(buffer.data());
-  out_.append(buffer.data(), std::to_chars(at, buffer.data() + buffer.size(), value).ptr);
-}
-
-void JsonStream::append_integer(std::uint64_t value) {
-  std::array<char, 24> buffer;
-  char* at = separator(buffer.data());
-  out_.append(buffer.data(), std::to_chars(at, buffer.data() + buffer.size(), value).ptr);
+  commit(at);
+  return end_value();
 }
 
 JsonStream& JsonStream::boolean(bool value) {
-  before_value();
-  out_ += value ? "true" : "false";
-  return *this;
+  separate();
+  put(value ? "true" : "false");
+  return end_value();
 }
 
 JsonStream& JsonStream::null() {
-  before_value();
-  out_ += "null";
-  return *this;
+  separate();
+  put("null");
+  return end_value();
 }
 
 JsonStream& JsonStream::value(const shape::Value& value) {
@@ -235,9 +207,9 @@ JsonStream& JsonStream::value(const shape::Value& value) {
 }
 
 JsonStream& JsonStream::raw(std::string_view json) {
-  before_value();
-  out_ += json;
-  return *this;
+  separate();
+  put(json);
+  return end_value();
 }
 
 JsonStream& JsonStream::attributes(const shape::AttributeMap& attributes,

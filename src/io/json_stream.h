@@ -1,14 +1,15 @@
 // A streaming JSON text writer for the big exports (glTF, CityJSON): values are appended to one
-// std::string as they come, with no document tree, so writing costs about as much as the bytes
-// it produces. The text is byte for byte what nlohmann::json::dump() (compact) or dump(indent)
-// (pretty) prints for the same document: doubles in nlohmann's shortest round-trip form ("3.0",
-// "0.001", "1e-07", non-finite as null), strings escaped the same way (\" \\ \b \f \n \r \t,
-// other control characters as \u00xx, UTF-8 kept as is), "{}" and "[]" for empty containers.
+// std::string as they come (see below), with no document tree, so writing costs about as much as
+// the bytes it produces. The text is byte for byte what nlohmann::json::dump() (compact) or
+// dump(indent) (pretty) prints for the same document: doubles in nlohmann's shortest round-trip
+// form ("3.0", "0.001", "1e-07", non-finite as null), strings escaped the same way (\" \\ \b \f \n
+// \r \t, other control characters as \u00xx, UTF-8 kept as is), "{}" and "[]" for empty containers.
 // The caller writes object keys in the order nlohmann would (sorted bytewise) when it wants the
 // same bytes; the stream does not sort. Bytes that are not valid UTF-8 become U+FFFD.
 #pragma once
 
 #include <array>
+#include <charconv>
 #include <concepts>
 #include <cstdint>
 #include <cstring>
@@ -20,11 +21,17 @@
 
 namespace insula::io {
 
+// The text gathers in a buffer inside the stream and reaches `out` in large appends: when the
+// outermost value is complete, when the buffer fills, on flush() and at destruction. Appending
+// token by token to the string cost more than forming the tokens.
 class JsonStream {
  public:
   // Appends to `out` (not cleared). `indent` < 0 writes compact text; >= 0 writes one member or
   // element per line, nested `indent` spaces per level, like nlohmann's dump(indent).
   explicit JsonStream(std::string& out, int indent = -1) : out_(out), indent_(indent) {}
+  ~JsonStream() { flush(); }
+  JsonStream(const JsonStream&) = delete;
+  JsonStream& operator=(const JsonStream&) = delete;
 
   JsonStream& begin_object() { return open('{'); }
   JsonStream& end_object() { return close('}'); }
@@ -33,21 +40,22 @@ class JsonStream {
 
   // The next member's key; must be followed by exactly one value (or container).
   JsonStream& key(std::string_view name);
-  // A key spelled in the source, the usual case: in compact text, written with copies whose size
-  // the compiler knows (keys are a third of the work of a glTF's JSON).
+  // A key spelled in the source, the usual case: written with a copy whose size the compiler
+  // knows (keys are a third of the work of a glTF's JSON).
   template <std::size_t N>
   JsonStream& key(const char (&name)[N]) {
     constexpr std::size_t kSize = N - 1;
     // Folded away for a literal; a char array that is not one (a NUL inside) is read up to it.
-    if (indent_ >= 0 || !plain(name, kSize)) return key(std::string_view(name));
-    std::array<char, kSize + 4> buffer;
-    char* at = separator(buffer.data());
+    if (!plain(name, kSize)) return key(std::string_view(name));
+    separate();
+    char* at = room(kSize + 4);
     *at++ = '"';
     std::memcpy(at, name, kSize);
     at += kSize;
     *at++ = '"';
     *at++ = ':';
-    out_.append(buffer.data(), static_cast<std::size_t>(at - buffer.data()));
+    if (indent_ >= 0) *at++ = ' ';
+    commit(at);
     after_key_ = true;
     return *this;
   }
@@ -57,8 +65,10 @@ class JsonStream {
   JsonStream& number(double value);
   template <std::integral T>
   requires(!std::same_as<T, bool>) JsonStream& integer(T value) {
-    append_integer(value);
-    return *this;
+    separate();
+    char* at = room(24);
+    commit(std::to_chars(at, at + 24, value).ptr);
+    return end_value();
   }
   JsonStream& boolean(bool value);
   JsonStream& null();
@@ -73,11 +83,39 @@ class JsonStream {
   JsonStream& attributes(const shape::AttributeMap& attributes, std::string_view extra_name = {},
                          std::string_view extra_text = {});
 
+  // Appends the text written so far to `out`.
+  void flush() {
+    out_.append(pending_.data(), used_);
+    used_ = 0;
+  }
+
  private:
+  static constexpr std::size_t kPending = 4096;
+
   JsonStream& open(char bracket);
   JsonStream& close(char bracket);
-  void before_value();
-  char* separator(char* at);
+  // Separators before a value: none after a key; else a comma after the container's previous
+  // value and, when pretty, a new line at the container's depth.
+  void separate();
+  // After a value: the outermost one is complete when no container is open.
+  JsonStream& end_value() {
+    if (counts_.empty()) flush();
+    return *this;
+  }
+  // Room for `size` (at most kPending) more bytes at the end of the buffer, flushing it first
+  // when they do not fit; commit() then marks where the written bytes end.
+  char* room(std::size_t size) {
+    if (kPending - used_ < size) flush();
+    return pending_.data() + used_;
+  }
+  void commit(const char* end) { used_ = static_cast<std::size_t>(end - pending_.data()); }
+  void put(char c) {
+    *room(1) = c;
+    ++used_;
+  }
+  void put(std::string_view text);
+  void put_escaped(std::string_view text);
+  void newline(std::size_t depth);
   // No character of `text` needs escaping (nor is a NUL).
   static constexpr bool plain(const char* text, std::size_t size) {
     for (std::size_t i = 0; i < size; ++i) {
@@ -86,26 +124,13 @@ class JsonStream {
     }
     return true;
   }
-  // Appends `text` quoted, then `after`, in one go when the text is compact and short and needs
-  // no escaping; false (nothing written) otherwise.
-  bool append_short(std::string_view text, std::string_view after);
-  void newline(std::size_t depth);
-  // The value with its separator before it.
-  void append_integer(std::int64_t value);
-  void append_integer(std::uint64_t value);
-  template <std::integral T>
-  void append_integer(T value) {
-    if constexpr (std::is_signed_v<T>) {
-      append_integer(static_cast<std::int64_t>(value));
-    } else {
-      append_integer(static_cast<std::uint64_t>(value));
-    }
-  }
 
   std::string& out_;
   int indent_;
   std::vector<std::uint32_t> counts_;  // values written so far in each open container
   bool after_key_ = false;
+  std::array<char, kPending> pending_;
+  std::size_t used_ = 0;
 };
 
 // `text` escaped as a JSON string body (no quotes), appended to `out`; see JsonStream.
