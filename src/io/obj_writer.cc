@@ -1,5 +1,7 @@
 #include "io/obj_writer.h"
 
+#include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -27,56 +29,79 @@ kernel::Vec3 written(kernel::Vec3 local, const shape::Scene& scene, const ObjOpt
 
 void append_vertex(std::string& out, kernel::Vec3 p) {
   out += "v ";
-  out += format_decimal(p.x, kCoordinateDecimals);
+  append_decimal(out, p.x, kCoordinateDecimals);
   out += ' ';
-  out += format_decimal(p.y, kCoordinateDecimals);
+  append_decimal(out, p.y, kCoordinateDecimals);
   out += ' ';
-  out += format_decimal(p.z, kCoordinateDecimals);
+  append_decimal(out, p.z, kCoordinateDecimals);
   out += '\n';
 }
 
-// Faces of one part grouped by (class, material index), in class then material order.
-using FaceGroups =
-    std::map<std::pair<kernel::SemanticClass, std::uint32_t>, std::vector<std::size_t>>;
+void append_index(std::string& out, std::size_t index) {
+  std::array<char, 24> buffer;
+  out.append(buffer.data(), std::to_chars(buffer.data(), buffer.data() + buffer.size(), index).ptr);
+}
 
-FaceGroups group_faces(const kernel::Mesh& mesh, const MaterialTable& materials) {
-  FaceGroups groups;
+// A face of a part with the group it is written in: class, then material index.
+struct GroupedFace {
+  kernel::SemanticClass semantic;
+  std::uint32_t material;
+  std::size_t face;
+};
+
+// The faces of one part by group, in class then material order, in mesh order within a group.
+void group_faces(const kernel::Mesh& mesh, const MaterialTable& materials,
+                 std::vector<GroupedFace>& faces) {
+  faces.clear();
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const kernel::FaceTag& tag = mesh.tag(f);
-    groups[{tag.semantic, materials.index(tag)}].push_back(f);
+    faces.push_back({tag.semantic, materials.index(tag), f});
   }
-  return groups;
+  std::stable_sort(faces.begin(), faces.end(), [](const GroupedFace& a, const GroupedFace& b) {
+    return std::pair(a.semantic, a.material) < std::pair(b.semantic, b.material);
+  });
 }
 
 // Writes a part's vertices (and texture coordinates, one per vertex, when it has a uv map) then its
 // faces; `first_vertex` / `first_uv` are the 1-based OBJ indices of its vertex 0 / its first vt.
+// `faces` is scratch.
 void append_part(std::string& out, const shape::Scene& scene, const ObjOptions& options,
                  const std::string& building_name, const shape::Part& part, std::size_t part_index,
-                 const MaterialTable& materials, std::size_t first_vertex, std::size_t first_uv) {
+                 const MaterialTable& materials, std::size_t first_vertex, std::size_t first_uv,
+                 std::vector<GroupedFace>& faces) {
   for (const kernel::Vec3& p : part.mesh.positions()) {
     append_vertex(out, written(p, scene, options));
   }
   if (part.uv) {
     for (const kernel::Vec3& p : part.mesh.positions()) {
       const kernel::Vec2 t = part.uv->at(p);
-      out += "vt " + format_decimal(t.x, kCoordinateDecimals) + " " +
-             format_decimal(t.y, kCoordinateDecimals) + "\n";
+      out += "vt ";
+      append_decimal(out, t.x, kCoordinateDecimals);
+      out += ' ';
+      append_decimal(out, t.y, kCoordinateDecimals);
+      out += '\n';
     }
   }
   const std::string part_name = safe_name(part.name, "part" + std::to_string(part_index));
-  for (const auto& [key, faces] : group_faces(part.mesh, materials)) {
-    out += "g " + building_name + "." + part_name + "." +
-           std::string(kernel::semantic_name(key.first)) + "\n";
-    out += "usemtl " + materials.materials()[key.second].name + "\n";
-    for (std::size_t f : faces) {
-      out += 'f';
-      for (std::uint32_t vertex : part.mesh.face(f)) {
-        out += ' ';
-        out += std::to_string(first_vertex + vertex);
-        if (part.uv) out += '/' + std::to_string(first_uv + vertex);
-      }
-      out += '\n';
+  group_faces(part.mesh, materials, faces);
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const GroupedFace& face = faces[i];
+    if (i == 0 || face.semantic != faces[i - 1].semantic ||
+        face.material != faces[i - 1].material) {
+      out += "g " + building_name + "." + part_name + "." +
+             std::string(kernel::semantic_name(face.semantic)) + "\n";
+      out += "usemtl " + materials.materials()[face.material].name + "\n";
     }
+    out += 'f';
+    for (std::uint32_t vertex : part.mesh.face(face.face)) {
+      out += ' ';
+      append_index(out, first_vertex + vertex);
+      if (part.uv) {
+        out += '/';
+        append_index(out, first_uv + vertex);
+      }
+    }
+    out += '\n';
   }
 }
 
@@ -162,18 +187,75 @@ std::string mtl_text(const MaterialTable& materials,
 
 }  // namespace
 
-std::string format_decimal(double value, int decimals) {
-  if (!std::isfinite(value)) return "0";
-  char buffer[64];
-  const auto [end, error] =
-      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
-  if (error != std::errc()) return "0";
-  std::string text(buffer, end);
-  if (text.find('.') != std::string::npos) {
-    while (text.back() == '0') text.pop_back();
-    if (text.back() == '.') text.pop_back();
+namespace {
+
+// `value` rounded to `decimals` decimals the slow, exact way: std::to_chars' correctly rounded
+// fixed notation (ties to even on the exact binary value), trailing zeros trimmed; "0" past 64
+// characters.
+void append_decimal_exactly(std::string& out, double value, int decimals) {
+  std::array<char, 64> buffer;
+  const auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                          std::chars_format::fixed, decimals);
+  if (error != std::errc()) {
+    out += '0';
+    return;
   }
-  if (text == "-0") text = "0";
+  std::string_view text(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
+  if (text.find('.') != std::string_view::npos) {
+    while (text.back() == '0') text.remove_suffix(1);
+    if (text.back() == '.') text.remove_suffix(1);
+  }
+  out += text == "-0" ? "0" : text;
+}
+
+}  // namespace
+
+// The usual case in integers: value * 10^decimals rounded to the nearest integer, whose digits are
+// then the text. The product carries a rounding error of at most |product| * 2^-53; where its
+// fraction is further than twice that from one half, the nearest integer is the one to_chars
+// rounds the exact value to. Closer to a tie (or too large for the integers) the exact path
+// decides.
+void append_decimal(std::string& out, double value, int decimals) {
+  static constexpr std::array<std::int64_t, 10> kPowers{
+      1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
+  if (!std::isfinite(value)) {
+    out += '0';
+    return;
+  }
+  const double scaled = decimals >= 0 && decimals < 10 ? value * kPowers[decimals] : 0;
+  const double magnitude = std::abs(scaled);
+  const double whole = std::floor(magnitude);
+  const double fraction = magnitude - whole;
+  if (decimals < 0 || decimals >= 10 || !(magnitude < 1e15) ||
+      std::abs(fraction - 0.5) <= magnitude * 0x1p-52 + 0x1p-60) {
+    append_decimal_exactly(out, value, decimals);
+    return;
+  }
+  auto units = static_cast<std::int64_t>(whole) + (fraction > 0.5 ? 1 : 0);
+  std::array<char, 48> buffer;
+  char* at = buffer.data();
+  if (scaled < 0 && units != 0) *at++ = '-';
+  const std::int64_t power = kPowers[decimals];
+  at = std::to_chars(at, buffer.data() + buffer.size(), units / power).ptr;
+  if (std::int64_t rest = units % power; rest != 0) {
+    *at++ = '.';
+    int digits = decimals;
+    while (rest % 10 == 0) {
+      rest /= 10;
+      --digits;
+    }
+    for (int d = digits - 1; d >= 0; --d) {
+      at[d] = static_cast<char>('0' + rest % 10);
+      rest /= 10;
+    }
+    at += digits;
+  }
+  out.append(buffer.data(), at);
+}
+
+std::string format_decimal(double value, int decimals) {
+  std::string text;
+  append_decimal(text, value, decimals);
   return text;
 }
 
@@ -187,14 +269,15 @@ ObjText obj_text(const shape::Scene& input, std::string_view mtl_file_name,
   text.origin_json = origin_json(scene, options);
   std::size_t next_vertex = 1;
   std::size_t next_uv = 1;
+  std::vector<GroupedFace> faces;
   for (std::size_t b = 0; b < scene.buildings.size(); ++b) {
     const shape::Building& building = scene.buildings[b];
     const std::string building_name = safe_name(building.id, "building" + std::to_string(b));
     text.obj += "o " + building_name + "\n";
     for (std::size_t p = 0; p < building.parts.size(); ++p) {
       const shape::Part& part = building.parts[p];
-      append_part(text.obj, scene, options, building_name, part, p, materials, next_vertex,
-                  next_uv);
+      append_part(text.obj, scene, options, building_name, part, p, materials, next_vertex, next_uv,
+                  faces);
       next_vertex += part.mesh.vertex_count();
       if (part.uv) next_uv += part.mesh.vertex_count();
     }

@@ -52,5 +52,7 @@ std::string write_obj(const shape::Scene& scene, const std::filesystem::path& ob
 // `value` in fixed notation with at most `decimals` decimals, trailing zeros (and a trailing point)
 // removed, "-0" written as "0". Locale independent. Shared by the text writers.
 std::string format_decimal(double value, int decimals);
+// format_decimal(value, decimals) appended to `out`.
+void append_decimal(std::string& out, double value, int decimals);
 
 }  // namespace insula::io
