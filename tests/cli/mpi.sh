@@ -54,6 +54,13 @@ for ranks in 2 3; do
   [ "$(grep -c tileset.json "$tmp/out.txt")" -eq 1 ] || { fail "CGA, $ranks ranks: stdout"; cat "$tmp/out.txt"; }
 done
 grep -q '"ranks": 3,' "$tmp/cga3.json" || fail "CGA city, 3 ranks: the report's ranks"
+# A .bldg village likewise.
+village="$root/examples/bldg/village"
+expect_exit 0 "village, one process" "$insula" build "$village/village.bldg" \
+  --lot "$village/village.geojson" --crs EPSG:3857 --tile-faces 20000 -o "$tmp/v1/tileset.json" -q
+expect_exit 0 "village, 2 ranks" mpi 2 "$insula" build "$village/village.bldg" \
+  --lot "$village/village.geojson" --crs EPSG:3857 --tile-faces 20000 -o "$tmp/v2/tileset.json" -q
+diff -r "$tmp/v1" "$tmp/v2" >/dev/null || fail "village, 2 ranks: the tileset differs from one process's"
 
 # An error: no CRS to place the tiles; every rank stops, exit 1, the earlier tileset kept.
 cp -r "$tmp/one" "$tmp/keep"

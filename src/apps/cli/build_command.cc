@@ -74,7 +74,8 @@ bool city_by_tiles(const BuildOptions& options) {
 int run_build(const BuildOptions& given) {
   // Under mpirun only a city built tile by tile (cga_tiles.h) is shared among the ranks; any
   // other build is the leader's alone. The other ranks work silently: the leader reports for all.
-  const bool by_tiles = has_suffix(given.input, ".cga") && city_by_tiles(given);
+  const bool by_tiles =
+      (has_suffix(given.input, ".cga") || has_suffix(given.input, ".bldg")) && city_by_tiles(given);
   if (Ranks::shared() && !Ranks::leader() && !by_tiles) return kExitDone;
   BuildOptions options = given;
   if (!Ranks::leader()) options.quiet = true;
@@ -140,6 +141,20 @@ int finish_build(const BuildOptions& options, const shape::Scene& scene, nlohman
     report["seconds"]["write_" + io::output_format_name(out)] = write_clock.seconds();
   }
   return commit_build(options, report, total, transaction);
+}
+
+int commit_build_tiles(const BuildOptions& options, TileJob& job, const TileJobResult& built,
+                       nlohmann::json& report, const Stopwatch& total,
+                       const Stopwatch& build_clock) {
+  report["tiles"] = job.tile_count();
+  report["ranks"] = built.tiles_by_rank.size();
+  report["tiles_by_rank"] = built.tiles_by_rank;
+  report["seconds"]["build and write 3dtiles"] = build_clock.seconds();
+  io::OutputTransaction transaction(interrupted);
+  if (std::string error = job.publish(transaction); !error.empty()) return write_failure(error);
+  const int code = commit_build(options, report, total, transaction);
+  if (code == kExitDone) job.succeeded();
+  return code;
 }
 
 int commit_build(const BuildOptions& options, nlohmann::json& report, const Stopwatch& total,

@@ -24,6 +24,9 @@ class App;
 
 namespace insula::cli {
 
+class TileJob;
+struct TileJobResult;
+
 struct BuildOptions {
   std::string input;
   std::vector<std::string> outputs;  // may be empty: derive and report only
@@ -80,5 +83,10 @@ int finish_build(const BuildOptions& options, const shape::Scene& scene, nlohman
 // counts, the report, the commit point and the list of outputs on stdout.
 int commit_build(const BuildOptions& options, nlohmann::json& report, const Stopwatch& total,
                  io::OutputTransaction& transaction);
+// The same for a tile job's tilesets (tile_job.h), on the leader: the report's tiles, ranks and
+// stage time, the staged tiles moved into place, tileset.json, the commit point.
+int commit_build_tiles(const BuildOptions& options, TileJob& job, const TileJobResult& built,
+                       nlohmann::json& report, const Stopwatch& total,
+                       const Stopwatch& build_clock);
 
 }  // namespace insula::cli

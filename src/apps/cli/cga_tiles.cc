@@ -41,32 +41,18 @@ nlohmann::json cga_report(const cga::Program& program, const cga::Totals& t, std
 
 namespace {
 
-// Lots sampled to learn how many faces a square metre of lot gives, before the tiles are planned.
-constexpr std::size_t kSampleLots = 16;
-
-double lot_area(const cga::Lot& lot) {
-  double area = 0;
-  for (const kernel::Polygon& polygon : lot.polygons) area += kernel::area(polygon);
-  return area;
-}
-
-// Faces per square metre of lot, from up to kSampleLots lots spread over the input (derived again
-// later, in their tiles): tiles are split by faces, and a lot's faces are known only once it is
-// derived. Every rank samples the same lots, so every rank plans the same tiles.
+// Faces per square metre of lot, from the sampled lots (derived again later, in their tiles).
 double faces_per_square_metre(const CgaCity& city) {
-  const std::size_t n = city.lots.size();
-  const std::size_t samples = std::min(n, kSampleLots);
-  std::vector<std::size_t> picked;
-  for (std::size_t k = 0; k < samples; ++k) picked.push_back(k * n / samples);
-  std::vector<cga::LotResult> results(samples);
-  tbb::parallel_for(std::size_t{0}, samples, [&](std::size_t k) {
+  const std::vector<std::size_t> picked = sampled_lots(city.lots.size());
+  std::vector<cga::LotResult> results(picked.size());
+  tbb::parallel_for(std::size_t{0}, picked.size(), [&](std::size_t k) {
     results[k] = cga::derive_lot(city.program, city.lots[picked[k]], picked[k], city.derive);
   });
   std::vector<cga::Lot> lots;
   double area = 0;
   for (const std::size_t i : picked) {
     lots.push_back(city.lots[i]);
-    area += lot_area(city.lots[i]);
+    area += area_of(city.lots[i].polygons);
   }
   const shape::Scene scene = cga::to_scene(city.program, lots, results, city.derive.share_inserts);
   std::size_t faces = 0;
@@ -74,22 +60,12 @@ double faces_per_square_metre(const CgaCity& city) {
   return area > 0 ? static_cast<double>(faces) / area : 0;
 }
 
-// Where each lot stands (its plan box, local coordinates) and about how many faces it will give.
+// Where each lot stands and about how many faces it will give.
 std::vector<io::TileItem> lot_items(const CgaCity& city) {
   const double density = faces_per_square_metre(city);
   std::vector<io::TileItem> items;
   items.reserve(city.lots.size());
-  for (const cga::Lot& lot : city.lots) {
-    kernel::Bounds2 box;
-    for (const kernel::Polygon& polygon : lot.polygons) {
-      const kernel::Bounds2 own = kernel::bounds(polygon);
-      box.add(own.min);
-      box.add(own.max);
-    }
-    if (box.empty()) box.add({0, 0});
-    const double faces = density * lot_area(lot);
-    items.push_back({box.min, box.max, std::max<std::size_t>(1, static_cast<std::size_t>(faces))});
-  }
+  for (const cga::Lot& lot : city.lots) items.push_back(lot_tile_item(lot.polygons, density));
   return items;
 }
 
@@ -215,15 +191,7 @@ int conclude(const BuildOptions& options, const CgaCity& city, TileJob& job, Til
   for (const Json& tally : built.tallies) add_totals(tally, totals);
   report.update(cga_report(city.program, totals, city.lots.size()));
   report_missing(options, built, report);
-  report["tiles"] = job.tile_count();
-  report["ranks"] = built.tiles_by_rank.size();
-  report["tiles_by_rank"] = built.tiles_by_rank;
-  report["seconds"]["build and write 3dtiles"] = build_clock.seconds();
-  io::OutputTransaction transaction(interrupted);
-  if (std::string error = job.publish(transaction); !error.empty()) return write_failure(error);
-  const int code = commit_build(options, report, total, transaction);
-  if (code == kExitDone) job.succeeded();
-  return code;
+  return commit_build_tiles(options, job, built, report, total, build_clock);
 }
 
 }  // namespace

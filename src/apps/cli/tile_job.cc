@@ -40,6 +40,33 @@ std::filesystem::path staging_folder(const std::string& tileset_json) {
   return io::tiles_folder(tileset_json).string() + ".insula-partial";
 }
 
+std::vector<std::size_t> sampled_lots(std::size_t count) {
+  constexpr std::size_t kSamples = 16;
+  const std::size_t samples = std::min(count, kSamples);
+  std::vector<std::size_t> picked;
+  for (std::size_t k = 0; k < samples; ++k) picked.push_back(k * count / samples);
+  return picked;
+}
+
+double area_of(const std::vector<kernel::Polygon>& polygons) {
+  double area = 0;
+  for (const kernel::Polygon& polygon : polygons) area += kernel::area(polygon);
+  return area;
+}
+
+io::TileItem lot_tile_item(const std::vector<kernel::Polygon>& polygons,
+                           double faces_per_square_metre) {
+  kernel::Bounds2 box;
+  for (const kernel::Polygon& polygon : polygons) {
+    const kernel::Bounds2 own = kernel::bounds(polygon);
+    box.add(own.min);
+    box.add(own.max);
+  }
+  if (box.empty()) box.add({0, 0});
+  const double faces = faces_per_square_metre * area_of(polygons);
+  return {box.min, box.max, std::max<std::size_t>(1, static_cast<std::size_t>(faces))};
+}
+
 bool tiles_only(const std::vector<std::string>& outputs) {
   if (outputs.empty()) return false;
   return std::all_of(outputs.begin(), outputs.end(), [](const std::string& out) {

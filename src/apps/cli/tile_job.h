@@ -22,6 +22,7 @@
 #include "io/output.h"
 #include "io/tile_tree.h"
 #include "io/tileset_writer.h"
+#include "kernel/polygon.h"
 #include "shape/scene.h"
 
 namespace insula::cli {
@@ -97,6 +98,16 @@ class TileJob {
   std::vector<std::filesystem::path> made_;  // output folders this run made
   bool succeeded_ = false;
 };
+
+// Up to 16 of `count` lots, spread over them: built once before planning to learn how many faces a
+// square metre of lot gives (tiles are split by faces, and a lot's faces are known only once it is
+// built). Every rank samples the same lots, so every rank plans the same tiles.
+std::vector<std::size_t> sampled_lots(std::size_t count);
+double area_of(const std::vector<kernel::Polygon>& polygons);
+// A lot's tile item: the plan box of its polygons, and `faces_per_square_metre` times its area as
+// its weight (at least 1).
+io::TileItem lot_tile_item(const std::vector<kernel::Polygon>& polygons,
+                           double faces_per_square_metre);
 
 // Where `tileset_json`'s tiles wait until the run succeeds.
 std::filesystem::path staging_folder(const std::string& tileset_json);
