@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
+#include "base/union_find.h"
+#include "io/triangulated.h"
 #include "shape/part_mesh.h"
 
 namespace insula::io::cityjson {
@@ -55,38 +58,66 @@ std::size_t QuantisedHash::operator()(const Quantised& q) const {
 }
 
 std::uint32_t VertexPool::add(const Quantised& q) {
-  const auto [it, inserted] = index_.emplace(q, static_cast<std::uint32_t>(vertices_.size()));
-  if (inserted) vertices_.push_back(q);
-  return it->second;
+  if (2 * (vertices_.size() + 1) > slots_.size())
+    rehash(std::max<std::size_t>(16, 2 * slots_.size()));
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t slot = QuantisedHash{}(q)&mask;; slot = (slot + 1) & mask) {
+    const std::uint32_t index = slots_[slot];
+    if (index == kFree) {
+      slots_[slot] = static_cast<std::uint32_t>(vertices_.size());
+      vertices_.push_back(q);
+      return slots_[slot];
+    }
+    if (vertices_[index] == q) return index;
+  }
+}
+
+void VertexPool::rehash(std::size_t slots) {
+  slots_.assign(slots, kFree);
+  const std::size_t mask = slots - 1;
+  for (std::uint32_t index = 0; index < vertices_.size(); ++index) {
+    std::size_t slot = QuantisedHash{}(vertices_[index]) & mask;
+    while (slots_[slot] != kFree) slot = (slot + 1) & mask;
+    slots_[slot] = index;
+  }
 }
 
 void VertexPool::reserve(std::size_t n) {
-  index_.reserve(n);
+  std::size_t slots = 16;
+  while (slots < 2 * n) slots *= 2;
+  if (slots > slots_.size()) rehash(slots);
   vertices_.reserve(n);
 }
 
 void VertexPool::clear() {
-  index_.clear();
+  std::fill(slots_.begin(), slots_.end(), kFree);
   vertices_.clear();
 }
 
 Quantised CityObjects::quantise(kernel::Vec3 local) const {
   const kernel::Vec3 d = (local - base_) * kPerMeter;
-  return {std::llround(d.x), std::llround(d.y), std::llround(d.z)};
+  return {round_half_away(d.x), round_half_away(d.y), round_half_away(d.z)};
 }
 
+// Each mesh vertex is quantised and pooled once, however many faces use it.
 void CityObjects::collect_surfaces(const kernel::Mesh& mesh) {
+  constexpr std::uint32_t kUnset = UINT32_MAX;
+  constexpr std::uint32_t kUnwritable = UINT32_MAX - 1;  // not finite, or too far to quantise
   part_.clear();
+  pool_index_.assign(mesh.vertex_count(), kUnset);
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const std::size_t begin = part_.indices.size();
     bool ok = true;
     for (std::uint32_t vertex : mesh.face(f)) {
-      const kernel::Vec3 p = mesh.position(vertex);
-      if (!finite(p) || !quantisable(p - base_)) {
+      std::uint32_t& index = pool_index_[vertex];
+      if (index == kUnset) {
+        const kernel::Vec3 p = mesh.position(vertex);
+        index = finite(p) && quantisable(p - base_) ? pool_.add(quantise(p)) : kUnwritable;
+      }
+      if (index == kUnwritable) {
         ok = false;
         break;
       }
-      const std::uint32_t index = pool_.add(quantise(p));
       if (part_.indices.size() == begin || part_.indices.back() != index) {
         part_.indices.push_back(index);
       }
@@ -104,7 +135,10 @@ void CityObjects::collect_surfaces(const kernel::Mesh& mesh) {
 }
 
 // A Solid needs one closed, consistently outward-oriented 2-manifold shell: checked on the
-// quantised rings, so the test sees exactly what a validator such as val3dity will see.
+// quantised rings, so the test sees exactly what a validator such as val3dity will see. What
+// kernel::check calls closed, oriented and manifold with one component is tested on a sorted
+// list of the directed edges (every one used once, and its reverse once) and a union-find of
+// the ring vertices; the volume is kernel::volume's, on the quantised points.
 bool CityObjects::is_solid() const {
   if (part_.size() < 4) return false;
   ++stamp_;
@@ -112,25 +146,56 @@ bool CityObjects::is_solid() const {
     local_index_.resize(pool_.vertices().size());
     local_stamp_.resize(pool_.vertices().size(), 0);
   }
-  kernel::Mesh mesh;
-  std::vector<std::uint32_t> loop;
+  edges_.clear();
+  std::uint32_t locals = 0;
   for (std::size_t r = 0; r < part_.size(); ++r) {
-    loop.clear();
-    for (std::uint32_t index : part_.ring(r)) {
+    const std::span<const std::uint32_t> ring = part_.ring(r);
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const std::uint32_t index = ring[i];
       if (local_stamp_[index] != stamp_) {
         local_stamp_[index] = stamp_;
-        local_index_[index] = static_cast<std::uint32_t>(mesh.vertex_count());
-        const Quantised& q = pool_.vertices()[index];
-        mesh.add_vertex(
-            {static_cast<double>(q[0]), static_cast<double>(q[1]), static_cast<double>(q[2])});
+        local_index_[index] = locals++;
       }
-      loop.push_back(local_index_[index]);
+      const std::uint64_t next = ring[i + 1 < ring.size() ? i + 1 : 0];
+      edges_.push_back((std::uint64_t{index} << 32U) | next);
     }
-    mesh.add_face(loop, {});
   }
-  const kernel::MeshCheck check = kernel::check(mesh);
-  return check.closed && check.oriented && check.non_manifold_edges == 0 && check.components == 1 &&
-         kernel::volume(mesh) > 0;
+  std::sort(edges_.begin(), edges_.end());
+  if (std::adjacent_find(edges_.begin(), edges_.end()) != edges_.end()) return false;
+  base::UnionFind components(locals);
+  for (const std::uint64_t edge : edges_) {
+    const auto from = static_cast<std::uint32_t>(edge >> 32U);
+    const auto to = static_cast<std::uint32_t>(edge);
+    const std::uint64_t reverse = (std::uint64_t{to} << 32U) | from;
+    if (!std::binary_search(edges_.begin(), edges_.end(), reverse)) return false;
+    components.unite(local_index_[from], local_index_[to]);
+  }
+  for (std::uint32_t v = 1; v < locals; ++v) {
+    if (components.find(v) != components.find(0)) return false;
+  }
+  return volume() > 0;
+}
+
+// kernel::volume of the part's quantised rings (the same sums in the same order).
+double CityObjects::volume() const {
+  const auto point = [this](std::uint32_t index) {
+    const Quantised& q = pool_.vertices()[index];
+    return kernel::Vec3{static_cast<double>(q[0]), static_cast<double>(q[1]),
+                        static_cast<double>(q[2])};
+  };
+  double total = 0;
+  for (std::size_t r = 0; r < part_.size(); ++r) {
+    const std::span<const std::uint32_t> ring = part_.ring(r);
+    kernel::Vec3 newell;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const kernel::Vec3 a = point(ring[i]);
+      const kernel::Vec3 b = point(ring[i + 1 < ring.size() ? i + 1 : 0]);
+      newell += kernel::Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
+                             (a.x - b.x) * (a.y + b.y)};
+    }
+    total += kernel::dot(point(ring[0]), newell / 2);
+  }
+  return total / 3;
 }
 
 // {"boundaries", "lod", "semantics" (when some face has a type), "type"}; a Solid wraps the
@@ -211,11 +276,16 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
   return id;
 }
 
+// Sorted by id through a list of positions: moving the objects' strings cost more than comparing.
 void CityObjects::write_objects(JsonStream& json) {
-  std::sort(objects_.begin(), objects_.end(),
-            [](const ObjectText& a, const ObjectText& b) { return a.id < b.id; });
+  std::vector<std::uint32_t> order(objects_.size());
+  std::iota(order.begin(), order.end(), 0U);
+  std::sort(order.begin(), order.end(), [this](std::uint32_t a, std::uint32_t b) {
+    return std::string_view(objects_[a].id) < std::string_view(objects_[b].id);
+  });
   json.begin_object();
-  for (const ObjectText& object : objects_) {
+  for (const std::uint32_t o : order) {
+    const ObjectText& object = objects_[o];
     json.key(object.id).raw(
         std::string_view(text_).substr(object.begin, object.end - object.begin));
   }

@@ -12,7 +12,6 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -31,7 +30,9 @@ struct QuantisedHash {
   std::size_t operator()(const Quantised& q) const;
 };
 
-// A vertex list: every distinct quantised point once, numbered in first-use order.
+// A vertex list: every distinct quantised point once, numbered in first-use order. The points are
+// found by open addressing in a flat table of their numbers (a node-based map cost a cache miss
+// or two per corner, the most of writing a city).
 class VertexPool {
  public:
   std::uint32_t add(const Quantised& q);
@@ -40,7 +41,10 @@ class VertexPool {
   const std::vector<Quantised>& vertices() const { return vertices_; }
 
  private:
-  std::unordered_map<Quantised, std::uint32_t, QuantisedHash> index_;
+  static constexpr std::uint32_t kFree = UINT32_MAX;
+  void rehash(std::size_t slots);
+
+  std::vector<std::uint32_t> slots_;  // a power of two, at most half of them used
   std::vector<Quantised> vertices_;
 };
 
@@ -94,6 +98,7 @@ class CityObjects {
   Quantised quantise(kernel::Vec3 local) const;
   void collect_surfaces(const kernel::Mesh& mesh);
   bool is_solid() const;
+  double volume() const;
   void write_geometry(JsonStream& json) const;
 
   kernel::Vec3 base_;
@@ -104,9 +109,11 @@ class CityObjects {
 
   // Scratch reused from part to part.
   PartSurfaces part_;
-  mutable std::vector<std::uint32_t> local_index_;  // pool vertex -> solid-test mesh vertex
+  std::vector<std::uint32_t> pool_index_;  // mesh vertex -> pool vertex (kUnset, kUnwritable)
+  mutable std::vector<std::uint32_t> local_index_;  // pool vertex -> solid test's numbering
   mutable std::vector<std::uint32_t> local_stamp_;  // which solid test set local_index_
   mutable std::uint32_t stamp_ = 0;
+  mutable std::vector<std::uint64_t> edges_;  // directed edges (from << 32 | to) of a solid test
 };
 
 // The minimum corner of the scene's finite vertices (local coordinates), (0, 0, 0) when none.

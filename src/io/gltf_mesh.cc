@@ -26,16 +26,6 @@ std::array<double, 3> y_up(kernel::Vec3 p) {
   return {p.x, p.z, -p.y};
 }
 
-// std::llround (halves away from zero) without its library call, which cost more than the rest
-// of quantizing a vertex; `value` must be finite and below 2^62 in magnitude.
-std::int64_t round_half_away(double value) {
-  const auto whole = static_cast<std::int64_t>(value);     // toward zero
-  const double rest = value - static_cast<double>(whole);  // exact
-  if (rest >= 0.5) return whole + 1;
-  if (rest <= -0.5) return whole - 1;
-  return whole;
-}
-
 std::int8_t normal_byte(float c) {
   return static_cast<std::int8_t>(round_half_away(std::clamp(c, -1.0F, 1.0F) * 127.0F));
 }

@@ -112,23 +112,8 @@ void JsonStream::put_escaped(std::string_view text) {
   escape(text, [this](std::string_view piece) { put(piece); });
 }
 
-JsonStream& JsonStream::open(char bracket) {
-  separate();
-  put(bracket);
-  counts_.push_back(0);
-  return *this;
-}
-
-JsonStream& JsonStream::close(char bracket) {
-  const bool empty = counts_.back() == 0;
-  counts_.pop_back();
-  if (!empty) newline(counts_.size());
-  put(bracket);
-  return end_value();
-}
-
+// Pretty text only.
 void JsonStream::newline(std::size_t depth) {
-  if (indent_ < 0) return;
   put('\n');
   for (std::size_t spaces = depth * static_cast<std::size_t>(indent_); spaces > 0;) {
     const std::size_t n = std::min<std::size_t>(spaces, 64);
@@ -137,16 +122,6 @@ void JsonStream::newline(std::size_t depth) {
     commit(at + n);
     spaces -= n;
   }
-}
-
-void JsonStream::separate() {
-  if (after_key_) {
-    after_key_ = false;
-    return;
-  }
-  if (counts_.empty()) return;
-  if (counts_.back()++ > 0) put(',');
-  newline(counts_.size());
 }
 
 JsonStream& JsonStream::key(std::string_view name) {

@@ -92,11 +92,31 @@ class JsonStream {
  private:
   static constexpr std::size_t kPending = 4096;
 
-  JsonStream& open(char bracket);
-  JsonStream& close(char bracket);
+  // Inline, as the rest of the hot path: a call cost more than what these do.
+  JsonStream& open(char bracket) {
+    separate();
+    put(bracket);
+    counts_.push_back(0);
+    return *this;
+  }
+  JsonStream& close(char bracket) {
+    const bool empty = counts_.back() == 0;
+    counts_.pop_back();
+    if (!empty && indent_ >= 0) newline(counts_.size());
+    put(bracket);
+    return end_value();
+  }
   // Separators before a value: none after a key; else a comma after the container's previous
   // value and, when pretty, a new line at the container's depth.
-  void separate();
+  void separate() {
+    if (after_key_) {
+      after_key_ = false;
+      return;
+    }
+    if (counts_.empty()) return;
+    if (counts_.back()++ > 0) put(',');
+    if (indent_ >= 0) newline(counts_.size());
+  }
   // After a value: the outermost one is complete when no container is open.
   JsonStream& end_value() {
     if (counts_.empty()) flush();
