@@ -4,7 +4,6 @@
 #include <cmath>
 #include <numeric>
 
-#include "base/union_find.h"
 #include "io/triangulated.h"
 #include "shape/part_mesh.h"
 
@@ -136,9 +135,9 @@ void CityObjects::collect_surfaces(const kernel::Mesh& mesh) {
 
 // A Solid needs one closed, consistently outward-oriented 2-manifold shell: checked on the
 // quantised rings, so the test sees exactly what a validator such as val3dity will see. What
-// kernel::check calls closed, oriented and manifold with one component is tested on a sorted
-// list of the directed edges (every one used once, and its reverse once) and a union-find of
-// the ring vertices; the volume is kernel::volume's, on the quantised points.
+// kernel::check calls closed, oriented and manifold with one component is tested on lists of
+// each vertex's outgoing edges (a handful each): every edge used once and its reverse once, and
+// every vertex reached from the first; the volume is kernel::volume's, on the quantised points.
 bool CityObjects::is_solid() const {
   if (part_.size() < 4) return false;
   ++stamp_;
@@ -146,34 +145,68 @@ bool CityObjects::is_solid() const {
     local_index_.resize(pool_.vertices().size());
     local_stamp_.resize(pool_.vertices().size(), 0);
   }
-  edges_.clear();
   std::uint32_t locals = 0;
-  for (std::size_t r = 0; r < part_.size(); ++r) {
-    const std::span<const std::uint32_t> ring = part_.ring(r);
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const std::uint32_t index = ring[i];
-      if (local_stamp_[index] != stamp_) {
-        local_stamp_[index] = stamp_;
-        local_index_[index] = locals++;
+  const auto local = [this, &locals](std::uint32_t index) {
+    if (local_stamp_[index] != stamp_) {
+      local_stamp_[index] = stamp_;
+      local_index_[index] = locals++;
+    }
+    return local_index_[index];
+  };
+  // The out-edges of local vertex v are to_[first_[v] .. first_[v + 1]).
+  first_.assign(1, 0);
+  const auto for_each_edge = [this](auto&& visit) {
+    for (std::size_t r = 0; r < part_.size(); ++r) {
+      const std::span<const std::uint32_t> ring = part_.ring(r);
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        visit(ring[i], ring[i + 1 < ring.size() ? i + 1 : 0]);
       }
-      const std::uint64_t next = ring[i + 1 < ring.size() ? i + 1 : 0];
-      edges_.push_back((std::uint64_t{index} << 32U) | next);
+    }
+  };
+  for_each_edge([&](std::uint32_t from, std::uint32_t /*to*/) {
+    const std::uint32_t a = local(from);
+    if (first_.size() < a + 2U) first_.resize(a + 2, 0);
+    ++first_[a + 1];
+  });
+  // Every vertex of a ring begins one of its edges.
+  for (std::size_t v = 0; v < locals; ++v) first_[v + 1] += first_[v];
+  to_.resize(first_.back());
+  cursor_.assign(first_.begin(), first_.end() - 1);
+  for_each_edge([&](std::uint32_t from, std::uint32_t to) {
+    to_[cursor_[local_index_[from]]++] = local_index_[to];
+  });
+  const auto out = [this](std::uint32_t v) {
+    return std::span<const std::uint32_t>(to_).subspan(first_[v], first_[v + 1] - first_[v]);
+  };
+  for (std::uint32_t a = 0; a < locals; ++a) {
+    const std::span<const std::uint32_t> edges = out(a);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      const std::uint32_t b = edges[i];
+      if (std::find(edges.begin() + static_cast<std::ptrdiff_t>(i) + 1, edges.end(), b) !=
+          edges.end()) {
+        return false;  // used twice
+      }
+      const std::span<const std::uint32_t> back = out(b);
+      if (std::find(back.begin(), back.end(), a) == back.end()) return false;  // no reverse
     }
   }
-  std::sort(edges_.begin(), edges_.end());
-  if (std::adjacent_find(edges_.begin(), edges_.end()) != edges_.end()) return false;
-  base::UnionFind components(locals);
-  for (const std::uint64_t edge : edges_) {
-    const auto from = static_cast<std::uint32_t>(edge >> 32U);
-    const auto to = static_cast<std::uint32_t>(edge);
-    const std::uint64_t reverse = (std::uint64_t{to} << 32U) | from;
-    if (!std::binary_search(edges_.begin(), edges_.end(), reverse)) return false;
-    components.unite(local_index_[from], local_index_[to]);
+  // One component: every vertex reached from the first along edges (each has its reverse).
+  reached_.assign(locals, false);
+  cursor_.assign(1, 0);
+  reached_[0] = true;
+  std::size_t count = 1;
+  while (!cursor_.empty()) {
+    const std::uint32_t v = cursor_.back();
+    cursor_.pop_back();
+    for (const std::uint32_t w : out(v)) {
+      if (!reached_[w]) {
+        reached_[w] = true;
+        ++count;
+        cursor_.push_back(w);
+      }
+    }
   }
-  for (std::uint32_t v = 1; v < locals; ++v) {
-    if (components.find(v) != components.find(0)) return false;
-  }
-  return volume() > 0;
+  return count == locals && volume() > 0;
 }
 
 // kernel::volume of the part's quantised rings (the same sums in the same order).
@@ -205,9 +238,7 @@ void CityObjects::write_geometry(JsonStream& json) const {
   json.begin_object().key("boundaries").begin_array();
   if (solid) json.begin_array();
   for (std::size_t r = 0; r < part_.size(); ++r) {
-    json.begin_array().begin_array();
-    for (std::uint32_t index : part_.ring(r)) json.integer(index);
-    json.end_array().end_array();
+    json.begin_array().integers(part_.ring(r)).end_array();
   }
   if (solid) json.end_array();
   json.end_array().key("lod").string("2");
@@ -294,9 +325,7 @@ void CityObjects::write_objects(JsonStream& json) {
 
 void CityObjects::write_vertices(JsonStream& json) const {
   json.begin_array();
-  for (const Quantised& q : pool_.vertices()) {
-    json.begin_array().integer(q[0]).integer(q[1]).integer(q[2]).end_array();
-  }
+  for (const Quantised& q : pool_.vertices()) json.integers(std::span<const std::int64_t>(q));
   json.end_array();
 }
 

@@ -113,7 +113,11 @@ class CityObjects {
   mutable std::vector<std::uint32_t> local_index_;  // pool vertex -> solid test's numbering
   mutable std::vector<std::uint32_t> local_stamp_;  // which solid test set local_index_
   mutable std::uint32_t stamp_ = 0;
-  mutable std::vector<std::uint64_t> edges_;  // directed edges (from << 32 | to) of a solid test
+  // The solid test's edges: local vertex v's out-edges are to_[first_[v] .. first_[v + 1]).
+  mutable std::vector<std::uint32_t> first_;
+  mutable std::vector<std::uint32_t> to_;
+  mutable std::vector<std::uint32_t> cursor_;
+  mutable std::vector<bool> reached_;
 };
 
 // The minimum corner of the scene's finite vertices (local coordinates), (0, 0, 0) when none.

@@ -103,11 +103,17 @@ PartTable::PartTable(const shape::Scene& scene) {
 // The column's distinct values, sorted, when they fit 16-bit codes, none is empty (an enum value
 // needs a name) and coding them makes the column smaller; `no_data` a name none of them has.
 void PartTable::make_dictionary(Column& column) {
-  std::set<std::string_view> distinct;
+  // A sorted vector, not a set: a column is as long as the scene has parts.
+  std::vector<std::string_view> distinct;
   for (std::size_t i = 0; i < column.strings.size(); ++i) {
-    if (column.present[i]) distinct.insert(column.strings[i]);
+    if (column.present[i]) distinct.push_back(column.strings[i]);
   }
-  if (distinct.contains("") || distinct.size() + (column.optional ? 1 : 0) > 65536) return;
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  const auto contains = [&distinct](std::string_view value) {
+    return std::binary_search(distinct.begin(), distinct.end(), value);
+  };
+  if (contains("") || distinct.size() + (column.optional ? 1 : 0) > 65536) return;
   // Only where it pays: each enum value costs its name and about 30 bytes of JSON, each row a
   // code of 1 or 2 bytes; a STRING column costs each row's text and a 4-byte offset.
   std::size_t as_enum = 0;
@@ -119,7 +125,7 @@ void PartTable::make_dictionary(Column& column) {
   column.dictionary.assign(distinct.begin(), distinct.end());
   std::string dashes;
   column.no_data = "(none)";
-  while (distinct.contains(column.no_data)) {
+  while (contains(column.no_data)) {
     dashes += '-';
     column.no_data = "(" + dashes + "none)";
   }

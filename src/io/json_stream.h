@@ -13,6 +13,7 @@
 #include <concepts>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -68,6 +69,24 @@ class JsonStream {
     separate();
     char* at = room(24);
     commit(std::to_chars(at, at + 24, value).ptr);
+    return end_value();
+  }
+  // An array of integers, written in one go in compact text (rings of vertex numbers, points).
+  template <std::integral T>
+  JsonStream& integers(std::span<const T> values) {
+    if (indent_ >= 0) {
+      begin_array();
+      for (T value : values) integer(value);
+      return end_array();
+    }
+    separate();
+    put('[');
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      char* at = room(25);
+      if (i > 0) *at++ = ',';
+      commit(std::to_chars(at, at + 24, values[i]).ptr);
+    }
+    put(']');
     return end_value();
   }
   JsonStream& boolean(bool value);
