@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "io/triangulated.h"
 #include "shape/part_mesh.h"
@@ -38,10 +37,9 @@ std::string_view object_type(shape::PartKind kind) {
 }
 
 // `base`, or `base-2`, `base-3`, ... when taken; records the result.
-std::string unique_id(const std::string& base, std::unordered_set<std::string>& taken) {
+std::string unique_id(const std::string& base, IdSet& taken) {
   std::string id = base;
-  for (int suffix = 2; taken.contains(id); ++suffix) id = base + "-" + std::to_string(suffix);
-  taken.insert(id);
+  for (int suffix = 2; !taken.insert(id); ++suffix) id = base + "-" + std::to_string(suffix);
   return id;
 }
 
@@ -56,18 +54,29 @@ std::size_t QuantisedHash::operator()(const Quantised& q) const {
   return static_cast<std::size_t>(h);
 }
 
+// A slot holds a point's number and the high half of its hash: probing compares those, and reads
+// a point (a cache miss, as the points lie in first-use order) only when they match.
 std::uint32_t VertexPool::add(const Quantised& q) {
-  if (2 * (vertices_.size() + 1) > slots_.size())
+  if (4 * (vertices_.size() + 1) > 3 * slots_.size()) {
     rehash(std::max<std::size_t>(16, 2 * slots_.size()));
+  }
+  const std::uint64_t hash = QuantisedHash{}(q);
+  const std::uint64_t tag = hash & ~std::uint64_t{UINT32_MAX};
   const std::size_t mask = slots_.size() - 1;
-  for (std::size_t slot = QuantisedHash{}(q)&mask;; slot = (slot + 1) & mask) {
-    const std::uint32_t index = slots_[slot];
-    if (index == kFree) {
-      slots_[slot] = static_cast<std::uint32_t>(vertices_.size());
+  for (std::size_t slot = hash & mask;; slot = (slot + 1) & mask) {
+    const std::uint64_t entry = slots_[slot];
+    if (entry == kFree) {
+      const auto index = static_cast<std::uint32_t>(vertices_.size());
+      slots_[slot] = tag | index;
       vertices_.push_back(q);
-      return slots_[slot];
+      return index;
     }
-    if (vertices_[index] == q) return index;
+    const auto index = static_cast<std::uint32_t>(entry);
+    const Quantised& p = vertices_[index];
+    if ((entry & ~std::uint64_t{UINT32_MAX}) == tag && p[0] == q[0] && p[1] == q[1] &&
+        p[2] == q[2]) {
+      return index;
+    }
   }
 }
 
@@ -75,15 +84,42 @@ void VertexPool::rehash(std::size_t slots) {
   slots_.assign(slots, kFree);
   const std::size_t mask = slots - 1;
   for (std::uint32_t index = 0; index < vertices_.size(); ++index) {
-    std::size_t slot = QuantisedHash{}(vertices_[index]) & mask;
+    const std::uint64_t hash = QuantisedHash{}(vertices_[index]);
+    std::size_t slot = hash & mask;
     while (slots_[slot] != kFree) slot = (slot + 1) & mask;
-    slots_[slot] = index;
+    slots_[slot] = (hash & ~std::uint64_t{UINT32_MAX}) | index;
   }
+}
+
+bool IdSet::insert(std::string_view id) {
+  if (2 * (ids_.size() + 1) > slots_.size()) {
+    slots_.assign(std::max<std::size_t>(16, 2 * slots_.size()), kFree);
+    for (std::uint32_t index = 0; index < ids_.size(); ++index) place(ids_[index], index);
+  }
+  const std::uint64_t hash = std::hash<std::string_view>{}(id);
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t slot = hash & mask; slots_[slot] != kFree; slot = (slot + 1) & mask) {
+    const std::uint64_t entry = slots_[slot];
+    if ((entry >> 32U) == (hash >> 32U) && ids_[static_cast<std::uint32_t>(entry)] == id) {
+      return false;
+    }
+  }
+  ids_.emplace_back(id);
+  place(ids_.back(), static_cast<std::uint32_t>(ids_.size() - 1));
+  return true;
+}
+
+void IdSet::place(std::string_view id, std::uint32_t index) {
+  const std::uint64_t hash = std::hash<std::string_view>{}(id);
+  const std::size_t mask = slots_.size() - 1;
+  std::size_t slot = hash & mask;
+  while (slots_[slot] != kFree) slot = (slot + 1) & mask;
+  slots_[slot] = (hash & ~std::uint64_t{UINT32_MAX}) | index;
 }
 
 void VertexPool::reserve(std::size_t n) {
   std::size_t slots = 16;
-  while (slots < 2 * n) slots *= 2;
+  while (3 * slots < 4 * n) slots *= 2;
   if (slots > slots_.size()) rehash(slots);
   vertices_.reserve(n);
 }
@@ -307,16 +343,31 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
   return id;
 }
 
-// Sorted by id through a list of positions: moving the objects' strings cost more than comparing.
+// Sorted by id through a list of (first 8 bytes, position): most comparisons are settled by the
+// prefix, read as a big-endian number (a shorter id's missing bytes as 0, which orders it first
+// as the full comparison would; equal prefixes go to the full comparison).
 void CityObjects::write_objects(JsonStream& json) {
-  std::vector<std::uint32_t> order(objects_.size());
-  std::iota(order.begin(), order.end(), 0U);
-  std::sort(order.begin(), order.end(), [this](std::uint32_t a, std::uint32_t b) {
-    return std::string_view(objects_[a].id) < std::string_view(objects_[b].id);
+  struct Key {
+    std::uint64_t prefix;
+    std::uint32_t object;
+  };
+  std::vector<Key> order;
+  order.reserve(objects_.size());
+  for (std::uint32_t o = 0; o < objects_.size(); ++o) {
+    std::uint64_t prefix = 0;
+    const std::string& id = objects_[o].id;
+    for (std::size_t i = 0; i < 8; ++i) {
+      prefix = (prefix << 8U) | (i < id.size() ? static_cast<unsigned char>(id[i]) : 0U);
+    }
+    order.push_back({prefix, o});
+  }
+  std::sort(order.begin(), order.end(), [this](const Key& a, const Key& b) {
+    if (a.prefix != b.prefix) return a.prefix < b.prefix;
+    return std::string_view(objects_[a.object].id) < std::string_view(objects_[b.object].id);
   });
   json.begin_object();
-  for (const std::uint32_t o : order) {
-    const ObjectText& object = objects_[o];
+  for (const Key& key : order) {
+    const ObjectText& object = objects_[key.object];
     json.key(object.id).raw(
         std::string_view(text_).substr(object.begin, object.end - object.begin));
   }

@@ -9,10 +9,10 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <span>
 #include <string>
 #include <string_view>
-#include <unordered_set>
 #include <vector>
 
 #include "io/json_stream.h"
@@ -41,11 +41,28 @@ class VertexPool {
   const std::vector<Quantised>& vertices() const { return vertices_; }
 
  private:
-  static constexpr std::uint32_t kFree = UINT32_MAX;
+  static constexpr std::uint64_t kFree = UINT64_MAX;
   void rehash(std::size_t slots);
 
-  std::vector<std::uint32_t> slots_;  // a power of two, at most half of them used
+  // A power of two, at most three quarters of them used (small enough to stay in cache): the high
+  // half of a point's hash and its number.
+  std::vector<std::uint64_t> slots_;
   std::vector<Quantised> vertices_;
+};
+
+// Object ids given so far, found by open addressing on their hashes (a node-based set of strings
+// cost an allocation and a cache miss per object).
+class IdSet {
+ public:
+  // Adds `id`; false when it was there already.
+  bool insert(std::string_view id);
+
+ private:
+  static constexpr std::uint64_t kFree = UINT64_MAX;
+  void place(std::string_view id, std::uint32_t index);
+
+  std::deque<std::string> ids_;
+  std::vector<std::uint64_t> slots_;  // high half of the hash, index into ids_
 };
 
 // The faces of one part as rings of vertex indices (ring r is indices[ends[r - 1] .. ends[r])),
@@ -103,7 +120,7 @@ class CityObjects {
 
   kernel::Vec3 base_;
   VertexPool pool_;
-  std::unordered_set<std::string> ids_;
+  IdSet ids_;
   std::string text_;
   std::vector<ObjectText> objects_;
 
