@@ -1,6 +1,7 @@
 #include "io/float32_weld.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numeric>
 #include <tuple>
@@ -28,6 +29,7 @@ bool Float32Weld::run(const kernel::Mesh& mesh, double grid) {
   parent_.resize(n);
   std::iota(parent_.begin(), parent_.end(), 0U);
   active_ = false;
+  if (!collapses(mesh, grid)) return false;
   std::vector<Entry>& order = order_;
   order.clear();
   for (std::uint32_t v = 0; v < n; ++v)
@@ -60,6 +62,32 @@ bool Float32Weld::run(const kernel::Mesh& mesh, double grid) {
     triangulate_all(mesh);
   }
   return true;
+}
+
+// Whether two vertices at different positions round to one: the usual answer, no, found with a
+// hash table of the rounded positions rather than by sorting the vertices.
+bool Float32Weld::collapses(const kernel::Mesh& mesh, double grid) {
+  const std::size_t n = mesh.vertex_count();
+  std::size_t capacity = 16;
+  while (capacity < 2 * n) capacity *= 2;
+  slots_.assign(capacity, kFree);
+  rounded_.resize(n);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    Float3& r = rounded_[v];
+    r = rounded(mesh.position(v), grid);
+    std::uint64_t hash = 0;
+    for (float& c : r) {
+      c += 0.0F;  // -0 as +0: they compare equal
+      hash = (hash ^ std::bit_cast<std::uint32_t>(c)) * 0x9E3779B97F4A7C15ULL;
+    }
+    std::size_t slot = (hash >> 32U) & (capacity - 1);
+    for (; slots_[slot] != kFree; slot = (slot + 1) & (capacity - 1)) {
+      const std::uint32_t u = slots_[slot];
+      if (rounded_[u] == r && !(mesh.position(u) == mesh.position(v))) return true;
+    }
+    slots_[slot] = v;
+  }
+  return false;
 }
 
 std::uint32_t Float32Weld::find(std::uint32_t v) {

@@ -48,6 +48,7 @@ class Float32Weld {
  private:
   static constexpr int kMaxPasses = 8;
 
+  bool collapses(const kernel::Mesh& mesh, double grid);
   std::uint32_t find(std::uint32_t v);
   bool unite(std::uint32_t a, std::uint32_t b);
   void flatten();
@@ -70,6 +71,9 @@ class Float32Weld {
     std::uint32_t vertex;
   };
   std::vector<Entry> order_;
+  static constexpr std::uint32_t kFree = UINT32_MAX;
+  std::vector<std::uint32_t> slots_;  // collapses(): vertices by rounded position
+  std::vector<Float3> rounded_;
   std::vector<std::uint32_t> keys_;
   std::vector<std::uint32_t> ids_;
   std::vector<CornerTriangle> corner_triangles_;

@@ -77,6 +77,10 @@ void MeshAssembler::clear() {
   sources_.clear();
   face_normals_.clear();
   vertices_.clear();
+  for (auto& [material, list] : indices_by_material_) {
+    list.clear();
+    spare_lists_.push_back(std::move(list));
+  }
   indices_by_material_.clear();
   has_uv_ = false;
 }
@@ -105,8 +109,7 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
     faces_by_material_.emplace_back(materials_.index(mesh.tag(f)), f);
   }
-  std::stable_sort(faces_by_material_.begin(), faces_by_material_.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(faces_by_material_.begin(), faces_by_material_.end());  // (material, face): stable
   std::vector<std::uint32_t>* indices = nullptr;
   std::uint32_t current = std::numeric_limits<std::uint32_t>::max();
   for (const auto& [material, face] : faces_by_material_) {
@@ -115,7 +118,7 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
       auto it = std::find_if(indices_by_material_.begin(), indices_by_material_.end(),
                              [&current](const auto& entry) { return entry.first == current; });
       if (it == indices_by_material_.end()) {
-        indices_by_material_.emplace_back(material, std::vector<std::uint32_t>{});
+        indices_by_material_.emplace_back(material, spare_list());
         it = indices_by_material_.end() - 1;
       }
       indices = &it->second;
@@ -124,7 +127,20 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
     add_face(mesh, face, *indices);
   }
   // A material all of whose faces were degenerate gets no primitive.
-  std::erase_if(indices_by_material_, [](const auto& entry) { return entry.second.empty(); });
+  std::erase_if(indices_by_material_, [this](auto& entry) {
+    if (!entry.second.empty()) return false;
+    spare_lists_.push_back(std::move(entry.second));
+    return true;
+  });
+}
+
+// An empty index list, one that served an earlier mesh when there is one: growing a list anew
+// for every material of every building cost more than filling it.
+std::vector<std::uint32_t> MeshAssembler::spare_list() {
+  if (spare_lists_.empty()) return {};
+  std::vector<std::uint32_t> list = std::move(spare_lists_.back());
+  spare_lists_.pop_back();
+  return list;
 }
 
 // Flat shading: the face's corners become vertices of their own, all carrying the face normal.

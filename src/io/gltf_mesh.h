@@ -110,6 +110,7 @@ class MeshAssembler {
     std::uint32_t feature;
   };
 
+  std::vector<std::uint32_t> spare_list();
   void add_face(const kernel::Mesh& mesh, std::size_t face, std::vector<std::uint32_t>& indices);
   void add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
                    kernel::Vec3 newell, std::vector<std::uint32_t>& indices);
@@ -144,6 +145,7 @@ class MeshAssembler {
   std::vector<Vertex> vertices_;
   // Triangles by table material, in the order materials are first met (sorted at emit).
   std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> indices_by_material_;
+  std::vector<std::vector<std::uint32_t>> spare_lists_;  // emptied lists, kept for their room
   bool has_uv_ = false;
 
   // The part being added.
