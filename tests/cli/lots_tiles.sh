@@ -35,6 +35,25 @@ node "$root/tools/check_tileset.mjs" "$tmp/t2/tileset.json" --lonlat 14.3840,49.
   --tolerance-m 50 --expect-features "$terminals" >"$tmp/c.txt" 2>&1 ||
   { fail "the CGA tileset does not open in CesiumJS and loaders.gl"; cat "$tmp/c.txt"; }
 
+# CityJSONSeq is streamed the same way, a line per building as its tile is made: valid against the
+# CityJSON 2.0.2 schema, the same buildings (ids) as the whole-scene file, the same tiles beside it.
+expect_exit 0 "district, tiles and CityJSONSeq" "$insula" build "$district" \
+  --lot "$tmp/lots.geojson" --tile-faces 20000 -o "$tmp/s/tileset.json" \
+  -o "$tmp/district.city.jsonl" --quiet
+diff -r "$tmp/t1" "$tmp/s" >/dev/null || fail "with CityJSONSeq: other tiles"
+expect_exit 0 "district, CityJSONSeq of the whole scene" "$insula" build "$district" \
+  --lot "$tmp/lots.geojson" -o "$tmp/whole.city.jsonl" -o "$tmp/whole2.obj" --quiet
+# The header and the first ten lines through the schema (ajv takes about 0.7 s per building here).
+head -n 11 "$tmp/district.city.jsonl" >"$tmp/first.city.jsonl"
+node "$root/tools/validate_cityjsonseq.mjs" "$tmp/first.city.jsonl" >"$tmp/v.txt" 2>&1 ||
+  { fail "streamed CityJSONSeq: invalid"; cat "$tmp/v.txt"; }
+ids() { node -e '
+  const lines = require("fs").readFileSync(process.argv[1], "utf8").trim().split("\n").slice(1);
+  console.log(lines.map((l) => JSON.parse(l).id).sort().join(" "));' "$1"; }
+[ "$(ids "$tmp/district.city.jsonl")" = "$(ids "$tmp/whole.city.jsonl")" ] ||
+  fail "streamed CityJSONSeq: other buildings than the whole scene's"
+ls "$tmp" | grep -q "city.jsonl.insula" && fail "streamed CityJSONSeq: a staging file is left"
+
 # A lot whose derivation fails (runaway recursion on the tallest lots): exit 1, the lot's
 # diagnostic, the earlier tileset and no staging folder left.
 cat >"$tmp/fails.cga" <<'EOF'

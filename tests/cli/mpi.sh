@@ -41,17 +41,22 @@ node -e '
     console.log(JSON.stringify(r.tiles_by_rank)); process.exit(1);
   }' "$tmp/r3-1.json" "$leaves" || fail "3 ranks: tiles not shared among the ranks"
 
-# `insula build` of a CGA city shares its tiles too: the same bytes as one process.
+# `insula build` of a CGA city shares its tiles (and its CityJSONSeq lines) too: the same bytes as
+# one process.
 node "$root/examples/city/make_city.mjs" 120 "$tmp/lots.geojson" >/dev/null
 expect_exit 0 "CGA city, one process" "$insula" build "$root/examples/cga/district.cga" \
-  --lot "$tmp/lots.geojson" --tile-faces 20000 -o "$tmp/cga1/tileset.json" --quiet
+  --lot "$tmp/lots.geojson" --tile-faces 20000 -o "$tmp/cga1/tileset.json" \
+  -o "$tmp/cga1.city.jsonl" --quiet
 for ranks in 2 3; do
   expect_exit 0 "CGA city, $ranks ranks" mpi "$ranks" "$insula" build \
     "$root/examples/cga/district.cga" --lot "$tmp/lots.geojson" --tile-faces 20000 \
-    -o "$tmp/cga$ranks/tileset.json" --report "$tmp/cga$ranks.json"
+    -o "$tmp/cga$ranks/tileset.json" -o "$tmp/cga$ranks.city.jsonl" --report "$tmp/cga$ranks.json"
   diff -r "$tmp/cga1" "$tmp/cga$ranks" >/dev/null ||
     fail "CGA city, $ranks ranks: the tileset differs from one process's"
-  [ "$(grep -c tileset.json "$tmp/out.txt")" -eq 1 ] || { fail "CGA, $ranks ranks: stdout"; cat "$tmp/out.txt"; }
+  cmp -s "$tmp/cga1.city.jsonl" "$tmp/cga$ranks.city.jsonl" ||
+    fail "CGA city, $ranks ranks: the CityJSONSeq differs from one process's"
+  [ "$(grep -c "tileset.json\|city.jsonl" "$tmp/out.txt")" -eq 2 ] ||
+    { fail "CGA, $ranks ranks: stdout"; cat "$tmp/out.txt"; }
 done
 grep -q '"ranks": 3,' "$tmp/cga3.json" || fail "CGA city, 3 ranks: the report's ranks"
 # A .bldg village likewise.

@@ -68,7 +68,7 @@ void add_build_command(CLI::App& app, BuildOptions& options) {
 }
 
 bool city_by_tiles(const BuildOptions& options) {
-  return !options.lot.empty() && tiles_only(options.outputs) && options.transaction == nullptr;
+  return !options.lot.empty() && streamable(options.outputs) && options.transaction == nullptr;
 }
 
 int run_build(const BuildOptions& given) {

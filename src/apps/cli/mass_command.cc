@@ -136,7 +136,7 @@ void add_overlaps(const io::FootprintSet& set, const MassPlan& plan, MassReport&
 int run_mass(const MassOptions& given) {
   // Under mpirun only 3D Tiles are shared among the ranks; anything else is the leader's alone.
   // The other ranks work silently: the leader reports for all.
-  if (Ranks::shared() && !Ranks::leader() && !tiles_only(given.outputs)) return kExitDone;
+  if (Ranks::shared() && !Ranks::leader() && !streamable(given.outputs)) return kExitDone;
   MassOptions options = given;
   if (!Ranks::leader()) options.quiet = true;
   Stopwatch total;
@@ -171,7 +171,7 @@ int run_mass(const MassOptions& given) {
   build_clock = Stopwatch();
   const std::vector<MassUnit> units = mass_units(plan);
   add_overlaps(set.value(), plan, report);
-  if (tiles_only(options.outputs)) {
+  if (streamable(options.outputs)) {
     return run_mass_tiles(options, set.value(), plan, units, warnings, report, total);
   }
   std::vector<BuiltBuilding> built = build_all(set.value(), plan, units, options.quiet);

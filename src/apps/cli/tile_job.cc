@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <atomic>
+#include <fstream>
 #include <optional>
 #include <thread>
 
 #include "apps/cli/interrupt.h"
 #include "apps/cli/progress.h"
 #include "apps/cli/ranks.h"
+#include "io/cityjsonseq_writer.h"
 
 namespace insula::cli {
 
@@ -36,8 +38,13 @@ std::vector<const shape::Building*> pointers_to(const std::vector<shape::Buildin
 
 }  // namespace
 
-std::filesystem::path staging_folder(const std::string& tileset_json) {
-  return io::tiles_folder(tileset_json).string() + ".insula-partial";
+bool is_tileset(const std::string& out) {
+  return io::output_format_name(out) == "3dtiles";
+}
+
+std::filesystem::path staging_folder(const std::string& out) {
+  if (!is_tileset(out)) return out + ".insula-partial";
+  return io::tiles_folder(out).string() + ".insula-partial";
 }
 
 std::vector<std::size_t> sampled_lots(std::size_t count) {
@@ -67,10 +74,10 @@ io::TileItem lot_tile_item(const std::vector<kernel::Polygon>& polygons,
   return {box.min, box.max, std::max<std::size_t>(1, static_cast<std::size_t>(faces))};
 }
 
-bool tiles_only(const std::vector<std::string>& outputs) {
+bool streamable(const std::vector<std::string>& outputs) {
   if (outputs.empty()) return false;
   return std::all_of(outputs.begin(), outputs.end(), [](const std::string& out) {
-    return io::output_format_name(out) == "3dtiles";
+    return is_tileset(out) || io::output_format_name(out) == "cityjsonseq";
   });
 }
 
@@ -108,13 +115,28 @@ std::string TileJob::plan(std::span<const io::TileItem> items) {
       }
       std::filesystem::remove_all(staging_folder(out), failed);
       staged_.push_back(staging_folder(out));
+      // A tileset's writer makes its own; a CityJSONSeq's lines wait here, a file per tile.
+      if (!is_tileset(out) && !std::filesystem::create_directory(staging_folder(out), failed)) {
+        error = staging_folder(out).string() + ": cannot create the folder: " + failed.message();
+        break;
+      }
     }
   }
   // Collective: the others wait here for the leader, and all stop if it failed.
   if (Ranks::broadcast(error.empty() ? 0 : 1) != 0) {
     return error.empty() ? "the leader could not prepare the output folders" : error;
   }
+  // Every writer plans the same tiles as this job (io/tile_tree.h), in the same order.
+  tree_ = io::plan_tiles(items, options_.tiles.tile_faces);
+  for (std::size_t n = 0; n < tree_.nodes.size(); ++n) {
+    if (tree_.nodes[n].leaf()) leaves_.push_back(n);
+  }
   for (const std::string& out : options_.outputs) {
+    if (!is_tileset(out)) {
+      sequences_.push_back(out);
+      continue;
+    }
+    tilesets_.push_back(out);
     writers_.push_back(std::make_unique<io::TilesetWriter>(
         out, options_.crs, options_.origin, options_.materials, options_.gltf, options_.tiles));
     writers_.back()->stage_tiles_in(staging_folder(out));
@@ -128,7 +150,44 @@ std::string TileJob::plan(std::span<const io::TileItem> items) {
 }
 
 std::size_t TileJob::tile_count() const {
-  return writers_.empty() ? 0 : writers_.front()->leaf_count();
+  return leaves_.size();
+}
+
+// A tile's CityJSONSeq lines, one per building (ids are the buildings' own: the readers make the
+// input's unique), into each sequence's staging folder.
+std::string TileJob::write_lines(std::size_t tile,
+                                 const std::vector<shape::Building>& buildings) const {
+  if (sequences_.empty()) return {};
+  io::CityJsonSeqWriter writer(options_.origin, options_.crs);
+  std::string lines;
+  for (const shape::Building& building : buildings) lines += writer.feature_line(building);
+  for (const std::string& out : sequences_) {
+    const std::filesystem::path file = staging_folder(out) / (std::to_string(tile) + ".jsonl");
+    std::ofstream stream(file, std::ios::binary);
+    stream << lines;
+    if (!stream.flush()) return file.string() + ": cannot write";
+  }
+  return {};
+}
+
+// Header, then every tile's lines in tile order, into a file beside `out` renamed into place.
+std::string TileJob::join_lines(const std::string& out) const {
+  const std::filesystem::path partial = out + ".insula-joining";
+  {
+    std::ofstream joined(partial, std::ios::binary);
+    joined << io::CityJsonSeqWriter(options_.origin, options_.crs).header_line();
+    for (std::size_t tile = 0; tile < leaves_.size(); ++tile) {
+      const std::filesystem::path file = staging_folder(out) / (std::to_string(tile) + ".jsonl");
+      std::ifstream lines(file, std::ios::binary);
+      if (lines && lines.peek() != std::ifstream::traits_type::eof()) joined << lines.rdbuf();
+    }
+    if (!joined.flush()) return out + ": cannot write";
+  }
+  std::error_code error;
+  std::filesystem::rename(partial, out, error);
+  if (error) return out + ": " + error.message();
+  std::filesystem::remove_all(staging_folder(out), error);
+  return {};
 }
 
 // Each of this rank's threads takes the next tile from the shared queue until none is left (a
@@ -143,24 +202,25 @@ TileJob::RankShare TileJob::build_share(const BuildTile& build) {
   std::vector<std::vector<std::pair<std::size_t, Json>>> notes(tiles);
   std::atomic<bool> failed = false;
   std::size_t items = 0;
-  for (std::size_t t = 0; t < tiles; ++t) items += writers_.front()->leaf_items(t).size();
+  for (const std::size_t node : leaves_) items += tree_.nodes[node].items.size();
   Progress progress(options_.counted, items, options_.quiet);
   tbb::parallel_for(std::size_t{0}, takers, [&](std::size_t) {
     for (std::size_t t = queue.next(); t < tiles; t = queue.next()) {
       if (interrupted() || failed) continue;  // the rest go to other ranks, which stop too
-      const std::vector<std::size_t>& members = writers_.front()->leaf_items(t);
+      const std::vector<std::size_t>& members = tree_.nodes[leaves_[t]].items;
       TileContent content = build(members);
+      std::string error = write_lines(t, content.buildings);
       const std::vector<shape::Material>* materials =
           content.own_materials ? &content.materials : nullptr;
-      std::string error;
       for (std::size_t w = 0; w < writers_.size() && error.empty(); ++w) {
         // The last writer may take the buildings apart; the others write copies.
         error = w + 1 == writers_.size()
                     ? writers_[w]->write_tile(t, std::move(content.buildings), materials)
                     : writers_[w]->write_tile(t, pointers_to(content.buildings), materials);
       }
-      done[t] = Json::array(
-          {t, box_json(writers_.front()->tile_box(t)), error, std::move(content.tally)});
+      const kernel::Bounds3 box =
+          writers_.empty() ? kernel::Bounds3{} : writers_.front()->tile_box(t);
+      done[t] = Json::array({t, box_json(box), error, std::move(content.tally)});
       notes[t] = std::move(content.notes);
       if (content.failed) failed = true;
       progress.advance(members.size());
@@ -227,12 +287,16 @@ TileJobResult TileJob::run(const BuildTile& build, const std::function<Json()>& 
 
 std::string TileJob::publish(io::OutputTransaction& transaction) {
   for (std::size_t i = 0; i < writers_.size(); ++i) {
-    const std::string& out = options_.outputs[i];
+    const std::string& out = tilesets_[i];
     if (std::string error = transaction.claim_output(out); !error.empty()) return error;
     std::error_code error;
     std::filesystem::rename(staging_folder(out), io::tiles_folder(out), error);
     if (error) return io::tiles_folder(out).string() + ": " + error.message();
     if (std::string failed = writers_[i]->finish(); !failed.empty()) return failed;
+  }
+  for (const std::string& out : sequences_) {
+    if (std::string error = transaction.claim_output(out); !error.empty()) return error;
+    if (std::string error = join_lines(out); !error.empty()) return error;
   }
   return {};
 }

@@ -28,7 +28,7 @@
 namespace insula::cli {
 
 struct TileJobOptions {
-  std::vector<std::string> outputs;        // every one a tileset.json
+  std::vector<std::string> outputs;        // tileset.json and .city.jsonl files (streamable())
   std::string crs;                         // of the buildings' world coordinates
   kernel::Vec3 origin;                     // local coordinates are world - origin
   std::vector<shape::Material> materials;  // the tiles' table, unless a tile brings its own
@@ -80,9 +80,9 @@ class TileJob {
   // learnt (e.g. assets it could not find). The result is the leader's.
   TileJobResult run(const BuildTile& build, const std::function<nlohmann::json()>& summary = {});
 
-  // The leader's commit: claims every tileset in `transaction`, moves the staged tiles into place
-  // and writes tileset.json. Empty string, or the reason. Then call succeeded() once the
-  // transaction has committed.
+  // The leader's commit: claims every output in `transaction`, moves the staged tiles into place
+  // and writes tileset.json, joins a CityJSONSeq's lines behind its header. Empty string, or the
+  // reason. Then call succeeded() once the transaction has committed.
   std::string publish(io::OutputTransaction& transaction);
   void succeeded() { succeeded_ = true; }
 
@@ -91,9 +91,15 @@ class TileJob {
   RankShare build_share(const BuildTile& build);
   void merge(const std::string& bytes, TileJobResult& result,
              std::vector<std::pair<std::size_t, nlohmann::json>>& tallies);
+  std::string write_lines(std::size_t tile, const std::vector<shape::Building>& buildings) const;
+  std::string join_lines(const std::string& out) const;
 
   TileJobOptions options_;
-  std::vector<std::unique_ptr<io::TilesetWriter>> writers_;
+  io::TileTree tree_;
+  std::vector<std::size_t> leaves_;                          // tree nodes, in tile order
+  std::vector<std::unique_ptr<io::TilesetWriter>> writers_;  // one per tileset output
+  std::vector<std::string> tilesets_;                        // their outputs
+  std::vector<std::string> sequences_;                       // the .city.jsonl outputs
   std::vector<std::filesystem::path> staged_;
   std::vector<std::filesystem::path> made_;  // output folders this run made
   bool succeeded_ = false;
@@ -109,10 +115,12 @@ double area_of(const std::vector<kernel::Polygon>& polygons);
 io::TileItem lot_tile_item(const std::vector<kernel::Polygon>& polygons,
                            double faces_per_square_metre);
 
-// Where `tileset_json`'s tiles wait until the run succeeds.
-std::filesystem::path staging_folder(const std::string& tileset_json);
+// Where an output's tiles (a tileset's GLBs, a CityJSONSeq's lines per tile) wait until the run
+// succeeds.
+std::filesystem::path staging_folder(const std::string& out);
 
-// True when every output is a 3D Tiles tileset: the city is built tile by tile, never whole.
-bool tiles_only(const std::vector<std::string>& outputs);
+// True when every output can be written tile by tile (3D Tiles tilesets and CityJSONSeq): the
+// city is built tile by tile, never whole.
+bool streamable(const std::vector<std::string>& outputs);
 
 }  // namespace insula::cli
