@@ -374,6 +374,12 @@ void CityObjects::write_objects(JsonStream& json) {
   json.end_object();
 }
 
+std::size_t CityObjects::text_size() const {
+  std::size_t size = text_.size() + 2;
+  for (const ObjectText& object : objects_) size += object.id.size() + 4;  // "id": and a comma
+  return size;
+}
+
 void CityObjects::write_vertices(JsonStream& json) const {
   json.begin_array();
   for (const Quantised& q : pool_.vertices()) json.integers(std::span<const std::int64_t>(q));

@@ -97,6 +97,8 @@ class CityObjects {
   std::string add_building(const shape::Building& building, std::size_t index);
   // The members of "CityObjects" (an object, sorted by id) added since the last clear().
   void write_objects(JsonStream& json);
+  // The length of what write_objects() will write.
+  std::size_t text_size() const;
   // The "vertices" array.
   void write_vertices(JsonStream& json) const;
   const VertexPool& pool() const { return pool_; }

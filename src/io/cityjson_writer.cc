@@ -73,8 +73,8 @@ void Writer::write(std::string& out) {
   for (std::size_t b = 0; b < scene_.buildings.size(); ++b) {
     objects_.add_building(scene_.buildings[b], b);
   }
-  // About 20 bytes per vertex ("[123456,234567,3456],"), plus the objects.
-  out.reserve(out.size() + 24 * objects_.pool().vertices().size() + 512);
+  // The objects, then about 20 bytes per vertex ("[123456,234567,3456],").
+  out.reserve(out.size() + objects_.text_size() + 24 * objects_.pool().vertices().size() + 512);
   JsonStream json(out);
   json.begin_object().key("CityObjects");
   objects_.write_objects(json);

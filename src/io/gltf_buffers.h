@@ -63,6 +63,7 @@ class Buffers {
   // when more views are added.
   std::string& data(std::uint32_t view) { return views_[view].bytes; }
   std::uint32_t add_accessor(const Accessor& accessor);
+  void reserve_accessors(std::size_t count) { accessors_.reserve(count); }
   void set_bounds(std::uint32_t accessor,
                   const std::pair<std::array<double, 3>, std::array<double, 3>>& min_max) {
     accessors_[accessor].min = min_max.first;

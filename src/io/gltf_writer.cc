@@ -199,6 +199,10 @@ Builder::Builder(const shape::Scene& scene, const GltfOptions& options)
     if (table_->rows() == 0) table_.reset();
     if (table_ && table_->rows() > 65535) mesh_options_.feature_component = Component::kFloat;
   }
+  // A mesh per building, usually: room for its node, its record and about six accessors.
+  buildings_.reserve(scene_.buildings.size());
+  meshes_.reserve(scene_.buildings.size());
+  buffers_.reserve_accessors(6 * scene_.buildings.size());
   std::size_t row = 0;
   for (std::size_t b = 0; b < scene_.buildings.size(); ++b) {
     const shape::Building& building = scene_.buildings[b];
