@@ -14,6 +14,7 @@
 #include "io/json_stream.h"
 #include "io/tile_tree.h"
 #include "kernel/transform.h"
+#include "shape/ops.h"
 
 namespace insula::io {
 namespace {
@@ -120,11 +121,52 @@ std::vector<Region> regions_of(const std::string& crs, kernel::Vec3 origin,
   return regions;
 }
 
+using Frame = std::array<double, 16>;  // column-major 4x4, as 3D Tiles' `transform`
+
+// a * b.
+Frame multiply(const Frame& a, const Frame& b) {
+  Frame out{};
+  for (int column = 0; column < 4; ++column) {
+    for (int row = 0; row < 4; ++row) {
+      double sum = 0;
+      for (int k = 0; k < 4; ++k) sum += a[k * 4 + row] * b[column * 4 + k];
+      out[column * 4 + row] = sum;
+    }
+  }
+  return out;
+}
+
+// The inverse of an affine frame (its last row 0 0 0 1): the 3x3 part by its adjugate.
+Frame inverse_affine(const Frame& f) {
+  const auto m = [&f](int row, int column) { return f[column * 4 + row]; };
+  const double c00 = m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1);
+  const double c01 = m(1, 2) * m(2, 0) - m(1, 0) * m(2, 2);
+  const double c02 = m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0);
+  const double det = m(0, 0) * c00 + m(0, 1) * c01 + m(0, 2) * c02;
+  double inv[3][3] = {{c00 / det, (m(0, 2) * m(2, 1) - m(0, 1) * m(2, 2)) / det,
+                       (m(0, 1) * m(1, 2) - m(0, 2) * m(1, 1)) / det},
+                      {c01 / det, (m(0, 0) * m(2, 2) - m(0, 2) * m(2, 0)) / det,
+                       (m(0, 2) * m(1, 0) - m(0, 0) * m(1, 2)) / det},
+                      {c02 / det, (m(0, 1) * m(2, 0) - m(0, 0) * m(2, 1)) / det,
+                       (m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0)) / det}};
+  Frame out{};
+  for (int row = 0; row < 3; ++row) {
+    double t = 0;
+    for (int k = 0; k < 3; ++k) {
+      out[k * 4 + row] = inv[row][k];
+      t -= inv[row][k] * m(k, 3);
+    }
+    out[12 + row] = t;
+  }
+  out[15] = 1;
+  return out;
+}
+
 // The tileset's JSON: tiles with content, and inner tiles over them.
 struct TilesetJson {
   const TileTree& tree;
   std::vector<std::optional<Region>> regions;         // by node; none: no content below
-  std::vector<const std::array<double, 16>*> frames;  // by node; leaves only
+  std::vector<const std::array<double, 16>*> frames;  // by node; those with content
 
   // A tile's geometric error: none for leaves, else an eighth of its cell's diagonal (at least its
   // children's).
@@ -136,7 +178,9 @@ struct TilesetJson {
     return e;
   }
 
-  void tile(JsonStream& json, std::size_t n) const {
+  // A tile's transform applies to its descendants too (3D Tiles 1.1, "Transforms"): below a tile
+  // with a frame (a coarse parent), a tile's transform is its frame relative to that one.
+  void tile(JsonStream& json, std::size_t n, const Frame* above = nullptr) const {
     const TileNode& node = tree.nodes[n];
     const Region& r = *regions[n];
     json.begin_object();
@@ -146,17 +190,20 @@ struct TilesetJson {
     if (!node.leaf()) {
       json.key("children").begin_array();
       for (const std::size_t c : node.children) {
-        if (regions[c]) tile(json, c);
+        if (regions[c]) tile(json, c, frames[n] != nullptr ? frames[n] : above);
       }
       json.end_array();
-    } else {
+    }
+    if (frames[n] != nullptr) {
       json.key("content").begin_object().key("uri").string(tile_uri(node)).end_object();
     }
     json.key("geometricError").number(error(n));
     if (n == 0) json.key("refine").string("REPLACE");
-    if (node.leaf()) {
+    if (frames[n] != nullptr) {
+      const Frame relative =
+          above == nullptr ? *frames[n] : multiply(inverse_affine(*above), *frames[n]);
       json.key("transform").begin_array();
-      for (const double value : *frames[n]) json.number(value);
+      for (const double value : relative) json.number(value);
       json.end_array();
     }
     json.end_object();
@@ -225,6 +272,9 @@ std::string TilesetWriter::plan(std::span<const TileItem> items) {
   const std::vector<std::array<double, 16>> frames = ecef_frames(crs_, centres, error);
   if (!error.empty()) return name + ": " + error;
   for (std::size_t l = 0; l < leaves_.size(); ++l) leaves_[l].frame = frames[l];
+  if (options_.block_buildings > 0) {
+    if (std::string failed = plan_parents(); !failed.empty()) return name + ": " + failed;
+  }
   std::error_code made;
   std::filesystem::create_directories(tile_folder_, made);
   if (made) return tile_folder_.string() + ": " + made.message();
@@ -262,6 +312,7 @@ std::string TilesetWriter::write_tile(std::size_t l, std::vector<shape::Building
     if (box.empty()) continue;
     leaf.box.add(box.min);
     leaf.box.add(box.max);
+    if (options_.block_buildings > 0) leaf.blocks.push_back(box);
     for (shape::Part& part : building.parts) {
       content.parts.push_back(tile_part(building, std::move(part), offset));
     }
@@ -269,6 +320,65 @@ std::string TilesetWriter::write_tile(std::size_t l, std::vector<shape::Building
   }
   if (leaf.box.empty()) return {};
   return write_gltf(tile, tile_folder_ / (tree_.nodes[leaf.node].name() + ".glb"), gltf_);
+}
+
+// Every inner tile's own origin (its cell's centre) and frame, for the blocks it may show.
+std::string TilesetWriter::plan_parents() {
+  parents_.assign(tree_.nodes.size(), Parent{});
+  std::vector<std::size_t> inner;
+  std::vector<kernel::Vec3> centres;
+  for (std::size_t n = 0; n < tree_.nodes.size(); ++n) {
+    const TileNode& node = tree_.nodes[n];
+    if (node.leaf()) continue;
+    parents_[n].centre = {(node.cell_min.x + node.cell_max.x) / 2,
+                          (node.cell_min.y + node.cell_max.y) / 2, 0};
+    inner.push_back(n);
+    centres.push_back(origin_ + parents_[n].centre);
+  }
+  std::string error;
+  const std::vector<std::array<double, 16>> frames = ecef_frames(crs_, centres, error);
+  if (!error.empty()) return error;
+  for (std::size_t k = 0; k < inner.size(); ++k) parents_[inner[k]].frame = frames[k];
+  return {};
+}
+
+// Coarse parents (TilesetOptions::block_buildings): an inner tile over at most that many buildings
+// shows each as its bounding box, walls and roof, so a city seen from afar is not empty; nearer,
+// REPLACE refinement swaps the blocks for the leaves' buildings.
+std::string TilesetWriter::write_parents() {
+  std::vector<std::vector<const kernel::Bounds3*>> below(tree_.nodes.size());
+  for (const Leaf& leaf : leaves_) {
+    for (const kernel::Bounds3& block : leaf.blocks) below[leaf.node].push_back(&block);
+  }
+  // Children come after their parents: gather bottom-up.
+  for (std::size_t n = tree_.nodes.size(); n-- > 0;) {
+    for (const std::size_t c : tree_.nodes[n].children) {
+      below[n].insert(below[n].end(), below[c].begin(), below[c].end());
+    }
+  }
+  std::vector<std::string> errors(tree_.nodes.size());
+  tbb::parallel_for(std::size_t{0}, tree_.nodes.size(), [&](std::size_t n) {
+    const TileNode& node = tree_.nodes[n];
+    if (node.leaf() || below[n].empty() || below[n].size() > options_.block_buildings) return;
+    shape::Scene blocks;
+    blocks.crs = crs_;
+    blocks.origin = origin_ + parents_[n].centre;
+    shape::Part& part = blocks.buildings.emplace_back().parts.emplace_back();
+    blocks.buildings.front().id = node.name();
+    part.name = "blocks";
+    const std::array<kernel::FaceTag, 6> tags = shape::mass_box_tags();
+    for (const kernel::Bounds3* box : below[n]) {
+      kernel::Mesh mesh = *shape::box_mesh(box->size(), tags);
+      kernel::transform_mesh(mesh, kernel::translation(box->min - parents_[n].centre));
+      part.mesh.append(mesh);
+    }
+    errors[n] = write_gltf(blocks, tiles_folder(path_) / (node.name() + ".glb"), gltf_);
+    parents_[n].written = errors[n].empty();
+  });
+  for (const std::string& e : errors) {
+    if (!e.empty()) return e;
+  }
+  return {};
 }
 
 std::string TilesetWriter::finish() {
@@ -288,6 +398,12 @@ std::string TilesetWriter::finish() {
     if (leaf.box.empty()) continue;
     json.regions[leaf.node] = leaf_regions[next++];
     json.frames[leaf.node] = &leaf.frame;
+  }
+  if (options_.block_buildings > 0) {
+    if (std::string failed = write_parents(); !failed.empty()) return failed;
+    for (std::size_t n = 0; n < parents_.size(); ++n) {
+      if (parents_[n].written) json.frames[n] = &parents_[n].frame;
+    }
   }
   // Inner tiles: the union of their children's regions (children come after their parents).
   for (std::size_t n = tree_.nodes.size(); n-- > 0;) {

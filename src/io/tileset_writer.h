@@ -25,6 +25,9 @@ namespace insula::io {
 
 struct TilesetOptions {
   std::size_t tile_faces = 50000;  // a tile splits while its buildings have more faces
+  // Coarse parent tiles: an inner tile over at most this many buildings shows each as a block (its
+  // bounding box), for views from afar; 0: inner tiles stay empty.
+  std::size_t block_buildings = 0;
 };
 
 // The folder of the tiles of `tileset_json`: its sibling "tiles".
@@ -64,6 +67,13 @@ class TilesetWriter {
   // process (MPI) is told here before finish().
   kernel::Bounds3 tile_box(std::size_t leaf) const { return leaves_[leaf].box; }
   void set_tile_box(std::size_t leaf, const kernel::Bounds3& box) { leaves_[leaf].box = box; }
+  // The boxes of the leaf's buildings (kept only with TilesetOptions::block_buildings), likewise.
+  const std::vector<kernel::Bounds3>& tile_blocks(std::size_t leaf) const {
+    return leaves_[leaf].blocks;
+  }
+  void set_tile_blocks(std::size_t leaf, std::vector<kernel::Bounds3> blocks) {
+    leaves_[leaf].blocks = std::move(blocks);
+  }
   // Writes tileset.json once every leaf is written (a leaf without geometry is left out).
   std::string finish();
 
@@ -73,7 +83,16 @@ class TilesetWriter {
     kernel::Vec3 centre;  // the tile's own origin, local coordinates
     kernel::Bounds3 box;  // of its written geometry, local coordinates
     std::array<double, 16> frame{};
+    std::vector<kernel::Bounds3> blocks;  // its buildings' boxes, for coarse parents
   };
+  // An inner tile's blocks, when it shows them: its own origin and frame.
+  struct Parent {
+    kernel::Vec3 centre;
+    std::array<double, 16> frame{};
+    bool written = false;
+  };
+  std::string plan_parents();
+  std::string write_parents();
 
   std::filesystem::path path_;
   std::string crs_;
@@ -84,6 +103,7 @@ class TilesetWriter {
   std::filesystem::path tile_folder_;
   TileTree tree_;
   std::vector<Leaf> leaves_;
+  std::vector<Parent> parents_;  // by tree node (leaves unused), with block_buildings
 };
 
 // The faces a building shows (an instance counts its mesh's): a tile's weight.

@@ -4,7 +4,8 @@
 # counts in the report), writes the same bytes whatever the thread count, opens in CesiumJS and
 # loaders.gl with every terminal a feature, and a lot that fails stops the run with its diagnostic
 # and leaves the user's earlier tileset as it was. A .bldg village reports what its whole-scene
-# build reports, building for building, and its tiles pass the Khronos validator.
+# build reports, building for building, and its tiles pass the Khronos validator; with coarse
+# parents (--tile-blocks) it still opens in CesiumJS with every content where it belongs.
 source "$(dirname "$0")/lib/common.sh"
 
 node "$root/examples/city/make_city.mjs" 150 "$tmp/lots.geojson" >/dev/null
@@ -86,5 +87,20 @@ node -e '
 ' "$tmp/v2.json" "$tmp/vw.json" || fail "village: the tile job's report differs from the whole scene's"
 [ "$(ls "$tmp/v1/tiles" | wc -l)" -ge 3 ] || fail "village: expected several tiles"
 validate_gltf "village tiles (Khronos validator)" "$tmp"/v1/tiles/*.glb
+
+# Coarse parents (--tile-blocks): inner tiles show their buildings as blocks; their transforms
+# compose with the leaves' (Cesium's check puts every content inside its tile's region).
+expect_exit 0 "village with blocks" "$insula" build "$village/village.bldg" \
+  --lot "$village/village.geojson" --crs EPSG:3857 --tile-faces 20000 --tile-blocks 100 \
+  -o "$tmp/vb/tileset.json" --quiet
+node -e '
+  const t = require(process.argv[1]);
+  const inner = [];
+  const walk = (tile) => { if (tile.children) { if (tile.content) inner.push(tile); tile.children.forEach(walk); } };
+  walk(t.root);
+  if (inner.length === 0 || !inner.every((tile) => tile.transform)) process.exit(1);
+' "$tmp/vb/tileset.json" || fail "blocks: no inner tile with content and a transform"
+node "$root/tools/check_tileset.mjs" "$tmp/vb/tileset.json" >"$tmp/c.txt" 2>&1 ||
+  { fail "blocks: the tileset does not open in CesiumJS and loaders.gl"; cat "$tmp/c.txt"; }
 
 finish lots_tiles

@@ -45,11 +45,11 @@ node -e '
 # one process.
 node "$root/examples/city/make_city.mjs" 120 "$tmp/lots.geojson" >/dev/null
 expect_exit 0 "CGA city, one process" "$insula" build "$root/examples/cga/district.cga" \
-  --lot "$tmp/lots.geojson" --tile-faces 20000 -o "$tmp/cga1/tileset.json" \
+  --lot "$tmp/lots.geojson" --tile-faces 20000 --tile-blocks 60 -o "$tmp/cga1/tileset.json" \
   -o "$tmp/cga1.city.jsonl" --quiet
 for ranks in 2 3; do
   expect_exit 0 "CGA city, $ranks ranks" mpi "$ranks" "$insula" build \
-    "$root/examples/cga/district.cga" --lot "$tmp/lots.geojson" --tile-faces 20000 \
+    "$root/examples/cga/district.cga" --lot "$tmp/lots.geojson" --tile-faces 20000 --tile-blocks 60 \
     -o "$tmp/cga$ranks/tileset.json" -o "$tmp/cga$ranks.city.jsonl" --report "$tmp/cga$ranks.json"
   diff -r "$tmp/cga1" "$tmp/cga$ranks" >/dev/null ||
     fail "CGA city, $ranks ranks: the tileset differs from one process's"

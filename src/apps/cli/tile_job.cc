@@ -218,9 +218,15 @@ TileJob::RankShare TileJob::build_share(const BuildTile& build) {
                     ? writers_[w]->write_tile(t, std::move(content.buildings), materials)
                     : writers_[w]->write_tile(t, pointers_to(content.buildings), materials);
       }
-      const kernel::Bounds3 box =
-          writers_.empty() ? kernel::Bounds3{} : writers_.front()->tile_box(t);
-      done[t] = Json::array({t, box_json(box), error, std::move(content.tally)});
+      Json blocks = Json::array();
+      kernel::Bounds3 box;
+      if (!writers_.empty()) {
+        box = writers_.front()->tile_box(t);
+        for (const kernel::Bounds3& block : writers_.front()->tile_blocks(t)) {
+          blocks.push_back(box_json(block));
+        }
+      }
+      done[t] = Json::array({t, box_json(box), error, std::move(content.tally), std::move(blocks)});
       notes[t] = std::move(content.notes);
       if (content.failed) failed = true;
       progress.advance(members.size());
@@ -249,7 +255,12 @@ void TileJob::merge(const std::string& bytes, TileJobResult& result,
   result.failed = result.failed || j["failed"].get<bool>();
   for (Json& tile : j["tiles"]) {
     const auto t = tile[0].get<std::size_t>();
-    for (const auto& writer : writers_) writer->set_tile_box(t, box_of(tile[1]));
+    std::vector<kernel::Bounds3> blocks;
+    for (const Json& block : tile[4]) blocks.push_back(box_of(block));
+    for (const auto& writer : writers_) {
+      writer->set_tile_box(t, box_of(tile[1]));
+      writer->set_tile_blocks(t, blocks);
+    }
     if (const auto& error = tile[2].get_ref<const std::string&>();
         !error.empty() && result.error.empty()) {
       result.error = error;

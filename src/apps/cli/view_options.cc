@@ -105,6 +105,12 @@ void add_view_options(CLI::App& command, io::OutputOptions& output) {
                   "this (default 50000)")
       ->check(CLI::Range(std::size_t{100}, std::size_t{100000000}));
   command
+      .add_option(
+          "--tile-blocks", output.tiles.block_buildings,
+          "3D Tiles: inner tiles over at most this many buildings show each as a block (its "
+          "bounding box) for views from afar (default 0: inner tiles stay empty)")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{10000000}));
+  command
       .add_option("--svg-scale", output.svg.pixels_per_meter,
                   "SVG picture scale in pixels per meter (default: fit 1000 pixels)")
       ->check(finite_range(0.01, 1000.0));
