@@ -282,6 +282,60 @@ TEST(TilesetWriter, SameTilesetWhateverTheRun) {
   }
 }
 
+// Column-major 4x4 product, as 3D Tiles composes a tile's transform with its ancestors'.
+std::array<double, 16> compose(const std::array<double, 16>& a, const std::array<double, 16>& b) {
+  std::array<double, 16> out{};
+  for (int column = 0; column < 4; ++column) {
+    for (int row = 0; row < 4; ++row) {
+      for (int k = 0; k < 4; ++k) out[column * 4 + row] += a[k * 4 + row] * b[column * 4 + k];
+    }
+  }
+  return out;
+}
+
+// Every content's transform composed down the tree, by content uri.
+void absolute_frames(const nlohmann::json& tile, const std::array<double, 16>& above,
+                     std::map<std::string, std::array<double, 16>>& out) {
+  std::array<double, 16> frame = above;
+  if (tile.contains("transform")) {
+    frame = compose(above, tile.at("transform").get<std::array<double, 16>>());
+  }
+  if (tile.contains("content")) out[tile.at("content").at("uri").get<std::string>()] = frame;
+  if (tile.contains("children")) {
+    for (const auto& child : tile.at("children")) absolute_frames(child, frame, out);
+  }
+}
+
+// Coarse parents: inner tiles over few enough buildings get a GLB of blocks and a transform of
+// their own; the leaves' transforms, composed with their ancestors', place them where they are
+// without parents, to a micrometre.
+TEST(TilesetWriter, CoarseParentsKeepEveryLeafInPlace) {
+  const shape::Scene scene = city(16, 12);
+  const std::filesystem::path plain = testing::temp_dir("tileset_plain");
+  const std::filesystem::path blocks = testing::temp_dir("tileset_blocks");
+  TilesetOptions options;
+  options.tile_faces = 150;
+  ASSERT_EQ(write_tileset(scene, plain / "tileset.json", {}, options), "");
+  options.block_buildings = 60;
+  ASSERT_EQ(write_tileset(scene, blocks / "tileset.json", {}, options), "");
+  const std::array<double, 16> identity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  std::map<std::string, std::array<double, 16>> without, with;
+  absolute_frames(read_json(plain / "tileset.json").at("root"), identity, without);
+  absolute_frames(read_json(blocks / "tileset.json").at("root"), identity, with);
+  std::size_t parents = 0;
+  for (const auto& [uri, frame] : with) {
+    const auto leaf = without.find(uri);
+    if (leaf == without.end()) {
+      ++parents;
+      EXPECT_TRUE(std::filesystem::exists(blocks / uri)) << uri;
+      continue;
+    }
+    for (int k = 0; k < 16; ++k) EXPECT_NEAR(frame[k], leaf->second[k], 1e-6) << uri << " " << k;
+  }
+  EXPECT_EQ(with.size() - parents, without.size());
+  EXPECT_GE(parents, 2U);  // 192 buildings, parents over at most 60
+}
+
 TEST(TilesetWriter, NoCrsIsAClearError) {
   shape::Scene scene = city(2, 2);
   scene.crs.clear();
