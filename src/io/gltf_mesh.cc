@@ -93,12 +93,13 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
   feature_ = feature;
   weld_.run(mesh, quantize ? kQuantizationStep : 0);
   first_source_ = static_cast<std::uint32_t>(sources_.size());
+  constexpr double kStepsPerMeter = 1 / kQuantizationStep;  // a power of two
   // Past 2^62 steps (or not finite) a position has no grid point: its mesh stays float.
   constexpr double kGridLimit = 4.6e18;
   for (const kernel::Vec3& p : mesh.positions()) {
     Source source{y_up(p), {}, true};
     for (std::size_t k = 0; k < 3; ++k) {
-      const double steps = source.position[k] / kQuantizationStep;
+      const double steps = source.position[k] * kStepsPerMeter;  // exact, as the division
       source.on_grid = source.on_grid && std::abs(steps) < kGridLimit;
       if (source.on_grid) source.grid[k] = round_half_away(steps);
     }

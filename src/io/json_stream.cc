@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <variant>
@@ -155,8 +156,14 @@ JsonStream& JsonStream::number(double value) {
   } else if (value != 0 && std::abs(value) < 1e15 && std::trunc(value) == value) {
     at = std::to_chars(at, end, static_cast<std::int64_t>(value)).ptr;
     at = std::copy_n(".0", 2, at);
+  } else if (last_size_ > 0 && std::bit_cast<std::uint64_t>(value) == last_number_) {
+    at = std::copy_n(last_text_.data(), last_size_, at);  // the same again (a scale's s, s, s)
   } else {
+    char* const begin = at;
     at = nlohmann::detail::to_chars(at, end, value);
+    last_number_ = std::bit_cast<std::uint64_t>(value);
+    last_size_ = static_cast<std::size_t>(at - begin);
+    std::copy(begin, at, last_text_.data());
   }
   commit(at);
   return end_value();

@@ -170,6 +170,10 @@ class JsonStream {
   bool after_key_ = false;
   std::array<char, kPending> pending_;
   std::size_t used_ = 0;
+  // The last number Grisu2 formatted and its text: numbers often come again right away.
+  std::uint64_t last_number_ = 0;
+  std::array<char, 32> last_text_{};
+  std::size_t last_size_ = 0;  // 0: none yet
 };
 
 // `text` escaped as a JSON string body (no quotes), appended to `out`; see JsonStream.
