@@ -67,14 +67,21 @@ namespace {
 // Newell's method: twice the vector area of a planar (or nearly planar) loop.
 Vec3 newell(const Mesh& mesh, std::size_t face) {
   const auto loop = mesh.face(face);
-  Vec3 n;
   // Edges (i, i + 1), the last one back to corner 0; no modulo, which cost more than the sum.
+  // Three scalar sums rather than a Vec3 (the same additions): GCC kept the Vec3 temporaries on
+  // the stack and stalled reloading them.
+  const std::vector<Vec3>& positions = mesh.positions();
+  double x = 0;
+  double y = 0;
+  double z = 0;
   for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Vec3 a = mesh.position(loop[i]);
-    const Vec3 b = mesh.position(loop[i + 1 < loop.size() ? i + 1 : 0]);
-    n += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+    const Vec3& a = positions[loop[i]];
+    const Vec3& b = positions[loop[i + 1 < loop.size() ? i + 1 : 0]];
+    x += (a.y - b.y) * (a.z + b.z);
+    y += (a.z - b.z) * (a.x + b.x);
+    z += (a.x - b.x) * (a.y + b.y);
   }
-  return n;
+  return {x, y, z};
 }
 
 std::uint64_t edge_key(std::uint32_t from, std::uint32_t to) {
