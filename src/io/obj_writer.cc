@@ -5,8 +5,11 @@
 #include <charconv>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
+#include <span>
 #include <system_error>
+#include <tuple>
 #include <utility>
 
 #include "io/atomic_file.h"
@@ -19,6 +22,8 @@ namespace {
 
 // 1 µm: far below the 1 mm a survey needs, and 6 + 7 digits stay exact in a double for UTM.
 constexpr int kCoordinateDecimals = 6;
+// Room for a number from write_decimal().
+constexpr std::size_t kDecimalRoom = 64;
 
 // A scene point as the OBJ writes it: local or world, Z up or Y up (x, z, -y).
 kernel::Vec3 written(kernel::Vec3 local, const shape::Scene& scene, const ObjOptions& options) {
@@ -27,19 +32,101 @@ kernel::Vec3 written(kernel::Vec3 local, const shape::Scene& scene, const ObjOpt
   return p;
 }
 
-void append_vertex(std::string& out, kernel::Vec3 p) {
-  out += "v ";
-  append_decimal(out, p.x, kCoordinateDecimals);
-  out += ' ';
-  append_decimal(out, p.y, kCoordinateDecimals);
-  out += ' ';
-  append_decimal(out, p.z, kCoordinateDecimals);
-  out += '\n';
+// `value` rounded to `decimals` decimals the slow, exact way: std::to_chars' correctly rounded
+// fixed notation (ties to even on the exact binary value), trailing zeros trimmed; "0" past
+// kDecimalRoom characters.
+char* write_decimal_exactly(char* at, double value, int decimals) {
+  std::array<char, kDecimalRoom> buffer;
+  const auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                          std::chars_format::fixed, decimals);
+  if (error != std::errc()) {
+    *at = '0';
+    return at + 1;
+  }
+  std::string_view text(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
+  if (text.find('.') != std::string_view::npos) {
+    while (text.back() == '0') text.remove_suffix(1);
+    if (text.back() == '.') text.remove_suffix(1);
+  }
+  if (text == "-0") text = "0";
+  return std::copy(text.begin(), text.end(), at);
 }
 
-void append_index(std::string& out, std::size_t index) {
-  std::array<char, 24> buffer;
-  out.append(buffer.data(), std::to_chars(buffer.data(), buffer.data() + buffer.size(), index).ptr);
+// The usual case in integers: value * 10^decimals rounded to the nearest integer, whose digits are
+// then the text. The product carries a rounding error of at most |product| * 2^-53; where its
+// fraction is further than twice that from one half, the nearest integer is the one to_chars
+// rounds the exact value to. Closer to a tie (or too large for the integers) the exact path
+// decides.
+char* write_decimal(char* at, double value, int decimals) {
+  static constexpr std::array<std::int64_t, 10> kPowers{
+      1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
+  if (!std::isfinite(value)) {
+    *at = '0';
+    return at + 1;
+  }
+  const double scaled = decimals >= 0 && decimals < 10 ? value * kPowers[decimals] : 0;
+  const double magnitude = std::abs(scaled);
+  const double whole = std::floor(magnitude);
+  const double fraction = magnitude - whole;
+  if (decimals < 0 || decimals >= 10 || !(magnitude < 1e15) ||
+      std::abs(fraction - 0.5) <= magnitude * 0x1p-52 + 0x1p-60) {
+    return write_decimal_exactly(at, value, decimals);
+  }
+  auto units = static_cast<std::int64_t>(whole) + (fraction > 0.5 ? 1 : 0);
+  if (scaled < 0 && units != 0) *at++ = '-';
+  const std::int64_t power = kPowers[decimals];
+  at = std::to_chars(at, at + kDecimalRoom, units / power).ptr;
+  if (std::int64_t rest = units % power; rest != 0) {
+    *at++ = '.';
+    int digits = decimals;
+    while (rest % 10 == 0) {
+      rest /= 10;
+      --digits;
+    }
+    for (int d = digits - 1; d >= 0; --d) {
+      at[d] = static_cast<char>('0' + rest % 10);
+      rest /= 10;
+    }
+    at += digits;
+  }
+  return at;
+}
+
+// Lines are formed in a buffer and appended whole: appending piece by piece cost more than the
+// formatting.
+void append_vertex(std::string& out, kernel::Vec3 p) {
+  std::array<char, 3 * kDecimalRoom + 8> line;
+  char* at = line.data();
+  *at++ = 'v';
+  for (double c : {p.x, p.y, p.z}) {
+    *at++ = ' ';
+    at = write_decimal(at, c, kCoordinateDecimals);
+  }
+  *at++ = '\n';
+  out.append(line.data(), at);
+}
+
+// "f v v v ..." or "f v/vt v/vt ...", one buffer at a time however long the face.
+void append_face(std::string& out, std::span<const std::uint32_t> loop, std::size_t first_vertex,
+                 std::optional<std::size_t> first_uv) {
+  std::array<char, 256> line;
+  constexpr std::size_t kCorner = 48;  // " 123/456" at most
+  char* at = line.data();
+  *at++ = 'f';
+  for (std::uint32_t vertex : loop) {
+    if (line.data() + line.size() - at < static_cast<std::ptrdiff_t>(kCorner)) {
+      out.append(line.data(), at);
+      at = line.data();
+    }
+    *at++ = ' ';
+    at = std::to_chars(at, at + 20, first_vertex + vertex).ptr;
+    if (first_uv) {
+      *at++ = '/';
+      at = std::to_chars(at, at + 20, *first_uv + vertex).ptr;
+    }
+  }
+  *at++ = '\n';
+  out.append(line.data(), at);
 }
 
 // A face of a part with the group it is written in: class, then material index.
@@ -57,8 +144,9 @@ void group_faces(const kernel::Mesh& mesh, const MaterialTable& materials,
     const kernel::FaceTag& tag = mesh.tag(f);
     faces.push_back({tag.semantic, materials.index(tag), f});
   }
-  std::stable_sort(faces.begin(), faces.end(), [](const GroupedFace& a, const GroupedFace& b) {
-    return std::pair(a.semantic, a.material) < std::pair(b.semantic, b.material);
+  // The face number last: a plain sort keeps mesh order within a group.
+  std::sort(faces.begin(), faces.end(), [](const GroupedFace& a, const GroupedFace& b) {
+    return std::tuple(a.semantic, a.material, a.face) < std::tuple(b.semantic, b.material, b.face);
   });
 }
 
@@ -92,17 +180,25 @@ void append_part(std::string& out, const shape::Scene& scene, const ObjOptions& 
              std::string(kernel::semantic_name(face.semantic)) + "\n";
       out += "usemtl " + materials.materials()[face.material].name + "\n";
     }
-    out += 'f';
-    for (std::uint32_t vertex : part.mesh.face(face.face)) {
-      out += ' ';
-      append_index(out, first_vertex + vertex);
-      if (part.uv) {
-        out += '/';
-        append_index(out, first_uv + vertex);
-      }
-    }
-    out += '\n';
+    append_face(out, part.mesh.face(face.face), first_vertex,
+                part.uv ? std::optional(first_uv) : std::nullopt);
   }
+}
+
+// About the size of the OBJ text, so that it is not reallocated (and copied) as it grows: a vertex
+// line ("v 12.345678 9 -6.5") about 32 bytes, a face about 8 a corner, a part's group lines 96.
+std::size_t text_size(const shape::Scene& scene) {
+  std::size_t size = 1024;
+  for (const shape::Building& building : scene.buildings) {
+    for (const shape::Part& part : building.parts) {
+      const kernel::Mesh& mesh = part.mesh;
+      std::size_t corners = 0;
+      for (std::size_t f = 0; f < mesh.face_count(); ++f) corners += mesh.face(f).size();
+      const std::size_t per_vertex = part.uv ? 56 : 32;
+      size += per_vertex * mesh.vertex_count() + 8 * corners + 4 * mesh.face_count() + 96;
+    }
+  }
+  return size;
 }
 
 // How a written point goes back to the world (the scene's CRS), for the header and the sidecar.
@@ -187,70 +283,9 @@ std::string mtl_text(const MaterialTable& materials,
 
 }  // namespace
 
-namespace {
-
-// `value` rounded to `decimals` decimals the slow, exact way: std::to_chars' correctly rounded
-// fixed notation (ties to even on the exact binary value), trailing zeros trimmed; "0" past 64
-// characters.
-void append_decimal_exactly(std::string& out, double value, int decimals) {
-  std::array<char, 64> buffer;
-  const auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
-                                          std::chars_format::fixed, decimals);
-  if (error != std::errc()) {
-    out += '0';
-    return;
-  }
-  std::string_view text(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
-  if (text.find('.') != std::string_view::npos) {
-    while (text.back() == '0') text.remove_suffix(1);
-    if (text.back() == '.') text.remove_suffix(1);
-  }
-  out += text == "-0" ? "0" : text;
-}
-
-}  // namespace
-
-// The usual case in integers: value * 10^decimals rounded to the nearest integer, whose digits are
-// then the text. The product carries a rounding error of at most |product| * 2^-53; where its
-// fraction is further than twice that from one half, the nearest integer is the one to_chars
-// rounds the exact value to. Closer to a tie (or too large for the integers) the exact path
-// decides.
 void append_decimal(std::string& out, double value, int decimals) {
-  static constexpr std::array<std::int64_t, 10> kPowers{
-      1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
-  if (!std::isfinite(value)) {
-    out += '0';
-    return;
-  }
-  const double scaled = decimals >= 0 && decimals < 10 ? value * kPowers[decimals] : 0;
-  const double magnitude = std::abs(scaled);
-  const double whole = std::floor(magnitude);
-  const double fraction = magnitude - whole;
-  if (decimals < 0 || decimals >= 10 || !(magnitude < 1e15) ||
-      std::abs(fraction - 0.5) <= magnitude * 0x1p-52 + 0x1p-60) {
-    append_decimal_exactly(out, value, decimals);
-    return;
-  }
-  auto units = static_cast<std::int64_t>(whole) + (fraction > 0.5 ? 1 : 0);
-  std::array<char, 48> buffer;
-  char* at = buffer.data();
-  if (scaled < 0 && units != 0) *at++ = '-';
-  const std::int64_t power = kPowers[decimals];
-  at = std::to_chars(at, buffer.data() + buffer.size(), units / power).ptr;
-  if (std::int64_t rest = units % power; rest != 0) {
-    *at++ = '.';
-    int digits = decimals;
-    while (rest % 10 == 0) {
-      rest /= 10;
-      --digits;
-    }
-    for (int d = digits - 1; d >= 0; --d) {
-      at[d] = static_cast<char>('0' + rest % 10);
-      rest /= 10;
-    }
-    at += digits;
-  }
-  out.append(buffer.data(), at);
+  std::array<char, kDecimalRoom> buffer;
+  out.append(buffer.data(), write_decimal(buffer.data(), value, decimals));
 }
 
 std::string format_decimal(double value, int decimals) {
@@ -265,6 +300,7 @@ ObjText obj_text(const shape::Scene& input, std::string_view mtl_file_name,
   const shape::Scene& scene = shape::expand_instances(input, expanded);
   const MaterialTable materials(scene);
   ObjText text;
+  text.obj.reserve(text_size(scene));
   append_header(text.obj, scene, options, mtl_file_name);
   text.origin_json = origin_json(scene, options);
   std::size_t next_vertex = 1;
