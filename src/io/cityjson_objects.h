@@ -105,6 +105,8 @@ class CityObjects {
   VertexPool& pool() { return pool_; }
   // Forgets the objects and vertices (the ids given stay taken).
   void clear();
+  // Room for `bytes` of objects' text, so that it is not reallocated (and copied) as it grows.
+  void reserve_text(std::size_t bytes) { text_.reserve(bytes); }
 
  private:
   // One city object's compact JSON text, kept in text_ until the objects are sorted by id.

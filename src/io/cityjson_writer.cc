@@ -35,11 +35,19 @@ class Writer {
 
 Writer::Writer(const shape::Scene& scene)
     : scene_(scene), min_(cityjson::local_minimum(scene)), objects_(min_) {
+  std::size_t vertices = 0;
   std::size_t corners = 0;
+  std::size_t parts = 0;
   for (const shape::Building& building : scene.buildings) {
-    for (const shape::Part& part : building.parts) corners += part.mesh.vertex_count();
+    for (const shape::Part& part : building.parts) {
+      vertices += part.mesh.vertex_count();
+      for (std::size_t f = 0; f < part.mesh.face_count(); ++f) corners += part.mesh.face(f).size();
+    }
+    parts += building.parts.size() + 1;
   }
-  objects_.pool().reserve(corners);
+  objects_.pool().reserve(vertices);
+  // About 12 bytes a corner ("123456,", brackets and a semantic value) and 160 an object.
+  objects_.reserve_text(12 * corners + 160 * parts);
 }
 
 void Writer::write_metadata(JsonStream& json) const {
