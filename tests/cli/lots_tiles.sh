@@ -55,6 +55,22 @@ ids() { node -e '
   fail "streamed CityJSONSeq: other buildings than the whole scene's"
 ls "$tmp" | grep -q "city.jsonl.insula" && fail "streamed CityJSONSeq: a staging file is left"
 
+# Missing assets are counted per request, as the whole scene counts them (the lots sampled to plan
+# the tiles are not counted); an output named twice is written once.
+cat >"$tmp/asset.cga" <<'EOF'
+Lot --> extrude(10) comp(f){ top: Roof | side: Wall }
+Roof --> i("nothere.obj")
+EOF
+expect_exit 0 "missing asset, tiles" "$insula" build "$tmp/asset.cga" --lot "$tmp/lots.geojson" \
+  -o "$tmp/a/tileset.json" -o "$tmp/a/tileset.json" --report "$tmp/a.json" --quiet
+expect_exit 0 "missing asset, whole scene" "$insula" build "$tmp/asset.cga" \
+  --lot "$tmp/lots.geojson" -o "$tmp/aw/tileset.json" -o "$tmp/aw.obj" --report "$tmp/aw.json" --quiet
+node -e '
+  const [a, w] = process.argv.slice(1, 3).map((f) => require(f));
+  if (JSON.stringify(a.missing_assets) !== JSON.stringify(w.missing_assets) ||
+      !(a.missing_assets["nothere.obj"] >= 150)) process.exit(1);
+' "$tmp/a.json" "$tmp/aw.json" || fail "missing assets: counted otherwise than the whole scene"
+
 # A lot whose derivation fails (runaway recursion on the tallest lots): exit 1, the lot's
 # diagnostic, the earlier tileset and no staging folder left.
 cat >"$tmp/fails.cga" <<'EOF'

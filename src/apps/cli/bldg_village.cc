@@ -1,5 +1,6 @@
 #include "apps/cli/bldg_village.h"
 
+#include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/parallel_for.h>
 
 #include <filesystem>
@@ -276,6 +277,11 @@ int build_by_tiles(const Village& village, Json& report, const Stopwatch& total)
 int build_village(const BuildOptions& options, const Parsed& input,
                   const lang::bldg::Restrictions& rules, nlohmann::json report,
                   const Stopwatch& total) {
+  std::optional<tbb::global_control> limit;
+  if (options.threads > 0) {
+    limit.emplace(tbb::global_control::max_allowed_parallelism,
+                  static_cast<std::size_t>(options.threads));
+  }
   Village village{options, input, rules, {}, {}};
   std::optional<io::FootprintSet> lots =
       read_footprints(options.lot, geojson_options(options.crs, options.keep_going), options.quiet);

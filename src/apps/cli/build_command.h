@@ -56,7 +56,7 @@ void add_build_command(CLI::App& app, BuildOptions& options);
 int run_build(const BuildOptions& options);
 
 // True when the lots are built and written tile by tile (tile_job.h): --lot is given, every output
-// is a 3D Tiles tileset and the build is not part of a batch.
+// is a 3D Tiles tileset or a CityJSONSeq and the build is not part of a batch.
 bool city_by_tiles(const BuildOptions& options);
 
 // Checks before any work: every output has a known format, picture options are valid and every

@@ -1,10 +1,12 @@
 #include "apps/cli/cga_tiles.h"
 
+#include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include "apps/cli/assets.h"
@@ -67,6 +69,12 @@ std::vector<io::TileItem> lot_items(const CgaCity& city) {
   items.reserve(city.lots.size());
   for (const cga::Lot& lot : city.lots) items.push_back(lot_tile_item(lot.polygons, density));
   return items;
+}
+
+std::map<std::string, std::size_t> failure_counts(const io::AssetLibrary& library) {
+  std::map<std::string, std::size_t> counts;
+  for (const io::AssetLibrary::Failure& f : library.failures()) counts[f.name] = f.count;
+  return counts;
 }
 
 Json totals_json(const cga::Totals& t) {
@@ -198,8 +206,20 @@ int conclude(const BuildOptions& options, const CgaCity& city, TileJob& job, Til
 
 int build_cga_tiles(const BuildOptions& options, const CgaCity& city, nlohmann::json report,
                     const Stopwatch& total) {
+  std::optional<tbb::global_control> limit;
+  if (options.threads > 0) {
+    limit.emplace(tbb::global_control::max_allowed_parallelism,
+                  static_cast<std::size_t>(options.threads));
+  }
   Stopwatch clock;
+  // The sampled lots ask for assets too; every rank samples, so their requests are taken out of
+  // each rank's count, and the report counts each lot's requests once, as the whole scene does.
+  const std::map<std::string, std::size_t> before = failure_counts(city.library);
   const std::vector<io::TileItem> items = lot_items(city);
+  std::map<std::string, std::size_t> sampled = failure_counts(city.library);
+  for (auto& [name, count] : sampled) {
+    if (const auto it = before.find(name); it != before.end()) count -= it->second;
+  }
   TileJob job({options.outputs,
                city.crs,
                city.origin,
@@ -216,10 +236,12 @@ int build_cga_tiles(const BuildOptions& options, const CgaCity& city, nlohmann::
   clock = Stopwatch();
   TileJobResult built = job.run(
       [&city](const std::vector<std::size_t>& members) { return derive_tile(city, members); },
-      [&city] {
+      [&city, &sampled] {
         Json failures = Json::array();
         for (const io::AssetLibrary::Failure& f : city.library.failures()) {
-          failures.push_back({f.name, f.error, f.count});
+          const auto it = sampled.find(f.name);
+          const std::size_t count = f.count - (it == sampled.end() ? 0 : it->second);
+          if (count > 0) failures.push_back({f.name, f.error, count});
         }
         return failures;
       });

@@ -89,10 +89,12 @@ int run(int argc, char** argv) {
     return insula::cli::kExitUsage;
   }
   if (app.got_subcommand("mass")) {
-    return run_writing([&] { return insula::cli::run_mass(mass); }, mass.quiet);
+    return run_writing([&] { return insula::cli::run_mass(mass); },
+                       mass.quiet || !insula::cli::Ranks::leader());
   }
   if (app.got_subcommand("build")) {
-    return run_writing([&] { return insula::cli::run_build(build); }, build.quiet);
+    return run_writing([&] { return insula::cli::run_build(build); },
+                       build.quiet || !insula::cli::Ranks::leader());
   }
   // Under mpirun only `mass` and `build` share their work (3D Tiles); any other verb runs on the
   // leader alone.
@@ -124,5 +126,6 @@ int main(int argc, char** argv) {
   } catch (...) {
     std::fprintf(stderr, "insula: internal error\n");
   }
+  insula::cli::Ranks::abort(insula::cli::kExitInternal);
   return insula::cli::kExitInternal;
 }

@@ -151,4 +151,10 @@ void Ranks::barrier() {
 #endif
 }
 
+void Ranks::abort([[maybe_unused]] int code) {
+#if defined(INSULA_WITH_MPI)
+  if (started && size() > 1) MPI_Abort(MPI_COMM_WORLD, code);
+#endif
+}
+
 }  // namespace insula::cli

@@ -47,6 +47,9 @@ class Ranks {
   // The leader's value, at every rank. Collective.
   static int broadcast(int value);
   static void barrier();
+  // Ends every rank at once with `code` (an internal error on one rank must not leave the others
+  // waiting in a collective call); nothing when MPI was not started.
+  static void abort(int code);
 };
 
 }  // namespace insula::cli

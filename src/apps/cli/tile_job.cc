@@ -1,6 +1,7 @@
 #include "apps/cli/tile_job.h"
 
 #include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
@@ -90,7 +91,14 @@ struct TileJob::RankShare {
   std::string failure;  // the rank's own: interrupted
 };
 
-TileJob::TileJob(TileJobOptions options) : options_(std::move(options)) {}
+TileJob::TileJob(TileJobOptions options) : options_(std::move(options)) {
+  // An output named twice is written once (its staging folder is one).
+  std::vector<std::string> unique;
+  for (std::string& out : options_.outputs) {
+    if (std::find(unique.begin(), unique.end(), out) == unique.end()) unique.push_back(out);
+  }
+  options_.outputs = std::move(unique);
+}
 
 TileJob::~TileJob() {
   if (succeeded_) return;
@@ -170,16 +178,18 @@ std::string TileJob::write_lines(std::size_t tile,
   return {};
 }
 
-// Header, then every tile's lines in tile order, into a file beside `out` renamed into place.
+// Header, then every tile's lines in tile order, into a file in the staging folder (removed with
+// it on failure) renamed into place.
 std::string TileJob::join_lines(const std::string& out) const {
-  const std::filesystem::path partial = out + ".insula-joining";
+  const std::filesystem::path partial = staging_folder(out) / "joined.city.jsonl";
   {
     std::ofstream joined(partial, std::ios::binary);
     joined << io::CityJsonSeqWriter(options_.origin, options_.crs).header_line();
     for (std::size_t tile = 0; tile < leaves_.size(); ++tile) {
       const std::filesystem::path file = staging_folder(out) / (std::to_string(tile) + ".jsonl");
       std::ifstream lines(file, std::ios::binary);
-      if (lines && lines.peek() != std::ifstream::traits_type::eof()) joined << lines.rdbuf();
+      if (!lines) return file.string() + ": a tile's lines are missing";
+      if (lines.peek() != std::ifstream::traits_type::eof()) joined << lines.rdbuf();
     }
     if (!joined.flush()) return out + ": cannot write";
   }
@@ -208,8 +218,19 @@ TileJob::RankShare TileJob::build_share(const BuildTile& build) {
     for (std::size_t t = queue.next(); t < tiles; t = queue.next()) {
       if (interrupted() || failed) continue;  // the rest go to other ranks, which stop too
       const std::vector<std::size_t>& members = tree_.nodes[leaves_[t]].items;
-      TileContent content = build(members);
-      std::string error = write_lines(t, content.buildings);
+      TileContent content;
+      std::string error;
+      // Isolated: a thread waiting in the tile's own parallel loops takes no other tile meanwhile.
+      // An exception (memory) fails the tile, so every rank still reaches the gather.
+      tbb::this_task_arena::isolate([&] {
+        try {
+          content = build(members);
+        } catch (const std::exception& e) {
+          error = "tile " + std::to_string(t) + ": " + e.what();
+          content.failed = true;
+        }
+      });
+      if (error.empty()) error = write_lines(t, content.buildings);
       const std::vector<shape::Material>* materials =
           content.own_materials ? &content.materials : nullptr;
       for (std::size_t w = 0; w < writers_.size() && error.empty(); ++w) {
@@ -228,7 +249,7 @@ TileJob::RankShare TileJob::build_share(const BuildTile& build) {
       }
       done[t] = Json::array({t, box_json(box), error, std::move(content.tally), std::move(blocks)});
       notes[t] = std::move(content.notes);
-      if (content.failed) failed = true;
+      if (content.failed || !error.empty()) failed = true;
       progress.advance(members.size());
     }
   });
