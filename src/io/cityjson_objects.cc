@@ -302,6 +302,15 @@ void CityObjects::write_geometry(JsonStream& json) const {
   json.key("type").string(solid ? "Solid" : "MultiSurface").end_object();
 }
 
+// A part's id: unique among the ids given and none of the avoided buildings' ids.
+std::string CityObjects::unique_part_id(const std::string& base) {
+  std::string id = base;
+  for (int suffix = 2; (avoided_ && avoided_->contains(id)) || !ids_.insert(id); ++suffix) {
+    id = base + "-" + std::to_string(suffix);
+  }
+  return id;
+}
+
 std::string CityObjects::add_building(const shape::Building& building, std::size_t index) {
   const std::string id =
       unique_id(building.id.empty() ? "building" + std::to_string(index) : building.id, ids_);
@@ -309,7 +318,7 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
     const shape::Part& part = building.parts[p];
     std::string part_id =
-        unique_id(id + "-" + (part.name.empty() ? "part" + std::to_string(p) : part.name), ids_);
+        unique_part_id(id + "-" + (part.name.empty() ? "part" + std::to_string(p) : part.name));
     const std::size_t begin = text_.size();
     JsonStream json(text_);
     json.begin_object();

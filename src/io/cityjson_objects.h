@@ -10,9 +10,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 #include "io/json_stream.h"
@@ -105,6 +107,11 @@ class CityObjects {
   VertexPool& pool() { return pool_; }
   // Forgets the objects and vertices (the ids given stay taken).
   void clear();
+  // The ids of buildings that other writers give (other lines of a CityJSONSeq written tile by
+  // tile): part ids avoid them, so ids stay unique across the writers.
+  void avoid(std::shared_ptr<const std::unordered_set<std::string>> building_ids) {
+    avoided_ = std::move(building_ids);
+  }
   // Room for `bytes` of objects' text, so that it is not reallocated (and copied) as it grows.
   void reserve_text(std::size_t bytes) { text_.reserve(bytes); }
 
@@ -122,9 +129,12 @@ class CityObjects {
   double volume() const;
   void write_geometry(JsonStream& json) const;
 
+  std::string unique_part_id(const std::string& base);
+
   kernel::Vec3 base_;
   VertexPool pool_;
   IdSet ids_;
+  std::shared_ptr<const std::unordered_set<std::string>> avoided_;
   std::string text_;
   std::vector<ObjectText> objects_;
 

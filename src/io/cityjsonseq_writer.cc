@@ -49,6 +49,10 @@ std::string CityJsonSeqWriter::feature_line(const shape::Building& building) {
   return out;
 }
 
+void CityJsonSeqWriter::avoid(std::shared_ptr<const std::unordered_set<std::string>> building_ids) {
+  objects_->avoid(std::move(building_ids));
+}
+
 std::string cityjsonseq_text(const shape::Scene& input) {
   shape::Scene expanded;  // instances expanded once, so local_minimum() sees them too
   const shape::Scene& scene = shape::expand_instances(input, expanded);

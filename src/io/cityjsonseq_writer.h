@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_set>
 
 #include "kernel/vec.h"
 #include "shape/scene.h"
@@ -39,6 +40,9 @@ class CityJsonSeqWriter {
   // one writer: an unnamed building is "building<n>" (n = the lines written before), a repeated
   // id gets a "-2", "-3", ... suffix.
   std::string feature_line(const shape::Building& building);
+  // The ids of the buildings other writers put on other lines of the same file (a tile job writes
+  // each tile's lines apart): part ids avoid them.
+  void avoid(std::shared_ptr<const std::unordered_set<std::string>> building_ids);
 
  private:
   kernel::Vec3 origin_;

@@ -71,6 +71,23 @@ node -e '
       !(a.missing_assets["nothere.obj"] >= 150)) process.exit(1);
 ' "$tmp/a.json" "$tmp/aw.json" || fail "missing assets: counted otherwise than the whole scene"
 
+# Ids stay unique across a streamed CityJSONSeq's tiles: lot "X" (part "X-Mass") and lot "X-Mass"
+# in tiles of their own.
+node -e '
+  const f = (id, x, y) => ({type: "Feature", id, properties: {},
+    geometry: {type: "Polygon", coordinates: [[[x, y], [x + 8, y], [x + 8, y + 8], [x, y + 8], [x, y]]]}});
+  const features = [];
+  for (let i = 0; i < 30; ++i) features.push(f(i ? "a" + i : "X", 455000 + 10 * i, 5427000));
+  for (let i = 0; i < 30; ++i) features.push(f(i ? "b" + i : "X-Mass", 457000 + 10 * i, 5429000));
+  console.log(JSON.stringify({type: "FeatureCollection", features,
+    crs: {type: "name", properties: {name: "urn:ogc:def:crs:EPSG::32633"}}}));' >"$tmp/ids.geojson"
+printf 'Lot --> extrude(10) Mass\n' >"$tmp/mass.cga"
+expect_exit 0 "ids across tiles" "$insula" build "$tmp/mass.cga" --lot "$tmp/ids.geojson" \
+  --tile-faces 100 -o "$tmp/ids/tileset.json" -o "$tmp/ids.city.jsonl" --quiet
+[ "$(ls "$tmp/ids/tiles" | wc -l)" -ge 2 ] || fail "ids across tiles: expected several tiles"
+node "$root/tools/validate_cityjsonseq.mjs" "$tmp/ids.city.jsonl" >"$tmp/v.txt" 2>&1 ||
+  { fail "ids across tiles: a repeated id"; cat "$tmp/v.txt"; }
+
 # A lot whose derivation fails (runaway recursion on the tallest lots): exit 1, the lot's
 # diagnostic, the earlier tileset and no staging folder left.
 cat >"$tmp/fails.cga" <<'EOF'

@@ -259,7 +259,8 @@ int build_by_tiles(const Village& village, Json& report, const Stopwatch& total)
                options.output.tiles,
                options.threads,
                options.quiet,
-               "buildings"});
+               "buildings",
+               [&village](std::size_t i) { return village.lots.footprints[i].id; }});
   if (const std::string error = job.plan(items); !error.empty()) {
     return Ranks::broadcast(Ranks::leader() ? write_failure(error) : 0);
   }

@@ -228,7 +228,8 @@ int build_cga_tiles(const BuildOptions& options, const CgaCity& city, nlohmann::
                options.output.tiles,
                options.threads,
                options.quiet || !Ranks::leader(),
-               "lots"});
+               "lots",
+               [&city](std::size_t i) { return city.lots[i].id; }});
   if (const std::string error = job.plan(items); !error.empty()) {
     return Ranks::broadcast(Ranks::leader() ? write_failure(error) : 0);
   }

@@ -93,7 +93,8 @@ int run_mass_tiles(const MassOptions& options, const io::FootprintSet& set, cons
   items.reserve(units.size());
   for (const MassUnit& unit : units) items.push_back(unit_tile_item(set, unit, options.overhang));
   TileJob job({options.outputs, set.crs, set.origin, plan.materials, options.output.gltf,
-               options.output.tiles, options.threads, options.quiet, "buildings"});
+               options.output.tiles, options.threads, options.quiet, "buildings",
+               [&](std::size_t u) { return set.footprints[units[u].front()].id; }});
   if (const std::string error = job.plan(items); !error.empty()) {
     return Ranks::broadcast(Ranks::leader() ? write_failure(error) : 0);
   }

@@ -150,6 +150,11 @@ std::string TileJob::plan(std::span<const io::TileItem> items) {
     writers_.back()->stage_tiles_in(staging_folder(out));
     if (error.empty()) error = writers_.back()->plan(items);
   }
+  if (!sequences_.empty() && options_.id_of) {
+    auto ids = std::make_shared<std::unordered_set<std::string>>();
+    for (std::size_t i = 0; i < items.size(); ++i) ids->insert(options_.id_of(i));
+    building_ids_ = std::move(ids);
+  }
   // A plan fails alike on every rank (the CRS); the leader's word decides.
   if (Ranks::broadcast(error.empty() ? 0 : 1) != 0) {
     return error.empty() ? "the leader could not plan the tiles" : error;
@@ -167,6 +172,7 @@ std::string TileJob::write_lines(std::size_t tile,
                                  const std::vector<shape::Building>& buildings) const {
   if (sequences_.empty()) return {};
   io::CityJsonSeqWriter writer(options_.origin, options_.crs);
+  writer.avoid(building_ids_);
   std::string lines;
   for (const shape::Building& building : buildings) lines += writer.feature_line(building);
   for (const std::string& out : sequences_) {

@@ -13,6 +13,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -37,6 +38,9 @@ struct TileJobOptions {
   int threads = 0;  // tiles built at once on this rank (0: all cores)
   bool quiet = false;
   std::string counted = "buildings";  // what the progress line counts (one per item)
+  // The id of the building item i becomes (a CityJSONSeq's part ids avoid every building's id,
+  // whichever tile it is in); may be empty.
+  std::function<std::string(std::size_t)> id_of;
 };
 
 // What the front-end made of one tile's items.
@@ -100,6 +104,7 @@ class TileJob {
   std::vector<std::unique_ptr<io::TilesetWriter>> writers_;  // one per tileset output
   std::vector<std::string> tilesets_;                        // their outputs
   std::vector<std::string> sequences_;                       // the .city.jsonl outputs
+  std::shared_ptr<const std::unordered_set<std::string>> building_ids_;  // with sequences_
   std::vector<std::filesystem::path> staged_;
   std::vector<std::filesystem::path> made_;  // output folders this run made
   bool succeeded_ = false;
