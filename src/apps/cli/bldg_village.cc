@@ -249,7 +249,7 @@ int build_by_tiles(const Village& village, Json& report, const Stopwatch& total)
   const double density = faces_per_square_metre(village);
   std::vector<io::TileItem> items;
   for (const io::Footprint& lot : village.lots.footprints) {
-    items.push_back(lot_tile_item(lot.polygons, density));
+    items.push_back(lot_tile_item(lot.polygons, density, options.output.tiles.tile_faces));
   }
   TileJob job({options.outputs,
                village.lots.crs,

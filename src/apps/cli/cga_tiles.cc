@@ -63,11 +63,13 @@ double faces_per_square_metre(const CgaCity& city) {
 }
 
 // Where each lot stands and about how many faces it will give.
-std::vector<io::TileItem> lot_items(const CgaCity& city) {
+std::vector<io::TileItem> lot_items(const CgaCity& city, std::size_t tile_faces) {
   const double density = faces_per_square_metre(city);
   std::vector<io::TileItem> items;
   items.reserve(city.lots.size());
-  for (const cga::Lot& lot : city.lots) items.push_back(lot_tile_item(lot.polygons, density));
+  for (const cga::Lot& lot : city.lots) {
+    items.push_back(lot_tile_item(lot.polygons, density, tile_faces));
+  }
   return items;
 }
 
@@ -215,7 +217,7 @@ int build_cga_tiles(const BuildOptions& options, const CgaCity& city, nlohmann::
   // The sampled lots ask for assets too; every rank samples, so their requests are taken out of
   // each rank's count, and the report counts each lot's requests once, as the whole scene does.
   const std::map<std::string, std::size_t> before = failure_counts(city.library);
-  const std::vector<io::TileItem> items = lot_items(city);
+  const std::vector<io::TileItem> items = lot_items(city, options.output.tiles.tile_faces);
   std::map<std::string, std::size_t> sampled = failure_counts(city.library);
   for (auto& [name, count] : sampled) {
     if (const auto it = before.find(name); it != before.end()) count -= it->second;

@@ -63,7 +63,7 @@ double area_of(const std::vector<kernel::Polygon>& polygons) {
 }
 
 io::TileItem lot_tile_item(const std::vector<kernel::Polygon>& polygons,
-                           double faces_per_square_metre) {
+                           double faces_per_square_metre, std::size_t tile_faces) {
   kernel::Bounds2 box;
   for (const kernel::Polygon& polygon : polygons) {
     const kernel::Bounds2 own = kernel::bounds(polygon);
@@ -71,7 +71,8 @@ io::TileItem lot_tile_item(const std::vector<kernel::Polygon>& polygons,
     box.add(own.max);
   }
   if (box.empty()) box.add({0, 0});
-  const double faces = faces_per_square_metre * area_of(polygons);
+  const double faces = faces_per_square_metre > 0 ? faces_per_square_metre * area_of(polygons)
+                                                  : static_cast<double>(tile_faces) / 256;
   return {box.min, box.max, std::max<std::size_t>(1, static_cast<std::size_t>(faces))};
 }
 

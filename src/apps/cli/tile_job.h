@@ -116,9 +116,10 @@ class TileJob {
 std::vector<std::size_t> sampled_lots(std::size_t count);
 double area_of(const std::vector<kernel::Polygon>& polygons);
 // A lot's tile item: the plan box of its polygons, and `faces_per_square_metre` times its area as
-// its weight (at least 1).
+// its weight (at least 1). When the samples showed no faces at all (every one failed or built
+// nothing), each lot weighs 1/256 of a tile of `tile_faces`, so no tile holds more than 256 lots.
 io::TileItem lot_tile_item(const std::vector<kernel::Polygon>& polygons,
-                           double faces_per_square_metre);
+                           double faces_per_square_metre, std::size_t tile_faces);
 
 // Where an output's tiles (a tileset's GLBs, a CityJSONSeq's lines per tile) wait until the run
 // succeeds.
