@@ -448,7 +448,7 @@ std::size_t MeshAssembler::merge_rows() {
 // lie together, and the feature ids then come in runs, which EXT_meshopt_compression stores in
 // almost nothing), each part's in the order that suits the vertex cache; then vertices in the
 // order of first use, for fetch. Leaves indices_ and vertex_features_ over the written vertices,
-// and source_ naming the row each writes; returns their count.
+// and row_of_ naming the row each writes; returns their count.
 std::size_t MeshAssembler::merge_and_order() {
   const std::size_t n = vertices_.size();
   const std::size_t merged = merge_rows();
@@ -472,13 +472,13 @@ std::size_t MeshAssembler::merge_and_order() {
     if (fetch_[index] == ~0U) fetch_[index] = count++;
     index = fetch_[index];
   }
-  source_.resize(count);
+  row_of_.resize(count);
   moved_features_.resize(count);
   for (std::uint32_t v = 0; v < n; ++v) {
     if (remap_[v] == ~0U) continue;
-    source_[fetch_[remap_[v]]] = v;
+    row_of_[fetch_[remap_[v]]] = v;
   }
-  for (std::size_t w = 0; w < count; ++w) moved_features_[w] = vertex_features_[remap_[source_[w]]];
+  for (std::size_t w = 0; w < count; ++w) moved_features_[w] = vertex_features_[remap_[row_of_[w]]];
   std::swap(vertex_features_, moved_features_);
   return count;
 }
@@ -494,7 +494,7 @@ void MeshAssembler::write_attributes(Buffers& buffers, const MeshViews& views,
     const std::uint32_t size = layout_.size[k];
     data.resize(offset + count * size);
     gather_column(data.data() + offset, rows_.data() + layout_.offset[k], layout_.stride, size,
-                  source_);
+                  row_of_);
     return buffers.add_accessor(
         Accessor{view, offset, component, count, type, normalized, std::nullopt, std::nullopt});
   };

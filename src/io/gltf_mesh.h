@@ -1,11 +1,12 @@
 // One glTF mesh assembled from the faces of one or more parts (a building's parts, or one part):
 // faces triangulated (concave faces stay right) and shaded flat, grouped into a primitive per
 // material; the primitives share one set of vertex attributes. At the end, vertices alike in every
-// written attribute are merged (meshoptimizer's vertex remap), triangles reordered for the vertex
-// cache and vertices for fetch, and positions quantized (KHR_mesh_quantization) to the grid
-// kQuantizationStep where the mesh's extent fits 16 bits, so no vertex moves more than half a step
-// (under 1 mm); the mesh's node then carries the offset and scale that undo it. Normals become
-// normalized bytes. Each vertex may carry the feature id of its part (EXT_mesh_features).
+// written attribute are merged (a hash table of their written bytes), triangles reordered for the
+// vertex cache (meshoptimizer, where a 16-vertex FIFO would load a vertex twice) and vertices for
+// fetch, and positions quantized (KHR_mesh_quantization) to the grid kQuantizationStep where the
+// mesh's extent fits 16 bits, so no vertex moves more than half a step (under 1 mm); the mesh's
+// node then carries the offset and scale that undo it. Normals become normalized bytes. Each
+// vertex may carry the feature id of its part (EXT_mesh_features).
 #pragma once
 
 #include <array>
@@ -173,7 +174,7 @@ class MeshAssembler {
   std::vector<unsigned int> remap_;    // vertex -> merged vertex (~0: unused)
   std::vector<std::uint32_t> slots_;   // merge_rows()'s hash table of vertices (~0: free)
   std::vector<unsigned int> fetch_;    // merged vertex -> written vertex
-  std::vector<std::uint32_t> source_;  // written vertex -> a vertex whose row it writes
+  std::vector<std::uint32_t> row_of_;  // written vertex -> a vertex whose row it writes
   std::vector<std::uint32_t> vertex_features_;  // by vertex, then by merged, then written vertex
   std::vector<std::uint32_t> moved_features_;
   std::vector<std::array<unsigned int, 3>> sorted_triangles_;
