@@ -40,24 +40,81 @@ std::string_view kind_name(shape::PartKind kind) {
   return "Other";
 }
 
+namespace {
+
+// Calls `own(key, value)` for each attribute `part` has of its own and `inherited(i, value)` for
+// the `i`th entry of its inherited map where it has none of its own, skipping nulls; both maps are
+// sorted by key, so one merge walks them.
+template <typename Own, typename Inherited>
+void for_each_attribute(const shape::Part& part, Own&& own, Inherited&& inherited) {
+  static const shape::AttributeMap kNone;
+  const shape::AttributeMap& mine = part.attributes;
+  const shape::AttributeMap& theirs = part.inherited ? *part.inherited : kNone;
+  auto a = mine.begin();
+  auto b = theirs.begin();
+  std::size_t i = 0;  // b's position
+  while (a != mine.end() || b != theirs.end()) {
+    const bool same = a != mine.end() && b != theirs.end() && a->first == b->first;
+    if (b == theirs.end() || (a != mine.end() && a->first < b->first) ||
+        (same && !shape::is_null(a->second))) {
+      if (!shape::is_null(a->second)) own(a->first, a->second);
+      if (same) ++b, ++i;
+      ++a;
+      continue;
+    }
+    if (same) ++a;  // a null of its own: the inherited value shows through
+    if (!shape::is_null(b->second)) inherited(i, b->second);
+    ++b, ++i;
+  }
+}
+
+}  // namespace
+
 PartTable::PartTable(const shape::Scene& scene) {
-  // The attribute columns and the type each can have.
+  find_columns(scene);
+  for (const shape::Building& building : scene.buildings) {
+    for (std::size_t p = 0; p < building.parts.size(); ++p) add_row(building.parts[p], p);
+  }
+  for (Column& column : columns_) {
+    column.index_of = {};
+    if (column.type == Type::kString) make_dictionary(column);
+  }
+}
+
+// The attribute columns and the type each can have.
+void PartTable::find_columns(const shape::Scene& scene) {
   struct Seen {
     std::size_t count = 0;
     bool numbers = true;
     bool booleans = true;
   };
   std::map<std::string, Seen, std::less<>> seen;
+  const auto note = [](Seen& s, const shape::Value& value) {
+    ++s.count;
+    s.numbers = s.numbers && std::holds_alternative<double>(value);
+    s.booleans = s.booleans && std::holds_alternative<bool>(value);
+  };
+  // Each inherited map's entries as Seen records, looked up once for all parts sharing it.
+  std::unordered_map<const shape::AttributeMap*, std::vector<Seen*>> inherited_seen;
   for (const shape::Building& building : scene.buildings) {
     for (const shape::Part& part : building.parts) {
       ++rows_;
-      for (const auto& [key, value] : part.attributes) {
-        if (shape::is_null(value)) continue;
-        Seen& s = seen[key];
-        ++s.count;
-        s.numbers = s.numbers && std::holds_alternative<double>(value);
-        s.booleans = s.booleans && std::holds_alternative<bool>(value);
+      std::vector<Seen*>* entries = nullptr;
+      if (part.inherited) {
+        const auto [it, added] = inherited_seen.try_emplace(part.inherited.get());
+        if (added) {
+          for (const auto& [key, value] : *part.inherited) {
+            it->second.push_back(&seen.try_emplace(key).first->second);
+          }
+        }
+        entries = &it->second;
       }
+      for_each_attribute(
+          part,
+          [&](const std::string& key, const shape::Value& value) {
+            note(seen.try_emplace(key).first->second, value);
+          },
+          [&](std::size_t i, const shape::Value& value) { note(*(*entries)[i], value); });
     }
   }
   std::set<std::string> taken{"kind", "name"};
@@ -69,47 +126,71 @@ PartTable::PartTable(const shape::Scene& scene) {
     if (s.count == rows_ && s.booleans) type = Type::kBoolean;
     columns_.push_back({property_id(key, taken), key, type, s.count < rows_});
   }
-  for (const shape::Building& building : scene.buildings) {
-    for (std::size_t p = 0; p < building.parts.size(); ++p) {
-      const shape::Part& part = building.parts[p];
-      columns_[0].strings.push_back(part.name.empty() ? "part" + std::to_string(p) : part.name);
-      columns_[0].present.push_back(true);
-      columns_[1].strings.emplace_back(kind_name(part.kind));
-      columns_[1].present.push_back(true);
-      for (std::size_t c = 2; c < columns_.size(); ++c) {
-        Column& column = columns_[c];
-        const auto it = part.attributes.find(column.name);
-        const bool present = it != part.attributes.end() && !shape::is_null(it->second);
-        switch (column.type) {
-          case Type::kNumber:
-            column.numbers.push_back(std::get<double>(it->second));
-            break;
-          case Type::kBoolean:
-            column.booleans.push_back(std::get<bool>(it->second));
-            break;
-          case Type::kString:
-            column.strings.push_back(present ? shape::to_string(it->second) : std::string{});
-            column.present.push_back(present);
-            break;
-        }
-      }
-    }
+}
+
+std::uint32_t PartTable::intern(Column& column, std::string text) {
+  const auto [it, added] = column.index_of.try_emplace(
+      std::move(text), static_cast<std::uint32_t>(column.values.size()));
+  if (added) column.values.push_back(it->first);
+  return it->second;
+}
+
+const PartTable::InheritedRow& PartTable::inherited_row(const shape::AttributeMap& map) {
+  const auto [it, added] = inherited_rows_.try_emplace(&map);
+  InheritedRow& row = it->second;
+  if (!added) return row;
+  for (std::size_t c = 2; c < columns_.size(); ++c) {
+    Column& column = columns_[c];
+    const auto found = map.find(column.name);
+    const bool present = found != map.end() && !shape::is_null(found->second);
+    row.values.push_back(present ? &found->second : nullptr);
+    row.codes.push_back(present && column.type == Type::kString
+                            ? intern(column, shape::to_string(found->second))
+                            : kAbsent);
   }
-  for (Column& column : columns_) {
-    if (column.type == Type::kString) make_dictionary(column);
+  return row;
+}
+
+// Appends `part` (the `index`th of its building) as a row: each attribute column takes the part's
+// own value, else the inherited one (both maps and the columns are sorted by name, so one walk).
+void PartTable::add_row(const shape::Part& part, std::size_t index) {
+  Column& names = columns_[0];
+  names.codes.push_back(
+      intern(names, part.name.empty() ? "part" + std::to_string(index) : part.name));
+  columns_[1].codes.push_back(intern(columns_[1], std::string(kind_name(part.kind))));
+  const InheritedRow* inherited = part.inherited ? &inherited_row(*part.inherited) : nullptr;
+  auto own = part.attributes.begin();
+  for (std::size_t c = 2; c < columns_.size(); ++c) {
+    Column& column = columns_[c];
+    while (own != part.attributes.end() && own->first < column.name) ++own;
+    const shape::Value* value = nullptr;
+    std::uint32_t code = kAbsent;
+    if (own != part.attributes.end() && own->first == column.name && !shape::is_null(own->second)) {
+      value = &own->second;
+      if (column.type == Type::kString) code = intern(column, shape::to_string(*value));
+    } else if (inherited != nullptr) {
+      value = inherited->values[c - 2];
+      code = inherited->codes[c - 2];
+    }
+    switch (column.type) {
+      case Type::kNumber:
+        column.numbers.push_back(std::get<double>(*value));
+        break;
+      case Type::kBoolean:
+        column.booleans.push_back(std::get<bool>(*value));
+        break;
+      case Type::kString:
+        column.codes.push_back(code);
+        break;
+    }
   }
 }
 
 // The column's distinct values, sorted, when they fit 16-bit codes, none is empty (an enum value
 // needs a name) and coding them makes the column smaller; `no_data` a name none of them has.
 void PartTable::make_dictionary(Column& column) {
-  // A sorted vector, not a set: a column is as long as the scene has parts.
-  std::vector<std::string_view> distinct;
-  for (std::size_t i = 0; i < column.strings.size(); ++i) {
-    if (column.present[i]) distinct.push_back(column.strings[i]);
-  }
+  std::vector<std::string_view> distinct(column.values.begin(), column.values.end());
   std::sort(distinct.begin(), distinct.end());
-  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
   const auto contains = [&distinct](std::string_view value) {
     return std::binary_search(distinct.begin(), distinct.end(), value);
   };
@@ -119,10 +200,17 @@ void PartTable::make_dictionary(Column& column) {
   std::size_t as_enum = 0;
   std::size_t as_string = 4;
   for (std::string_view value : distinct) as_enum += value.size() + 30;
-  as_enum += column.strings.size() * (distinct.size() < 256 ? 1 : 2);
-  for (const std::string& value : column.strings) as_string += value.size() + 4;
+  as_enum += column.codes.size() * (distinct.size() < 256 ? 1 : 2);
+  for (std::uint32_t code : column.codes) {
+    as_string += (code == kAbsent ? 0 : column.values[code].size()) + 4;
+  }
   if (as_enum >= as_string) return;
   column.dictionary.assign(distinct.begin(), distinct.end());
+  column.enum_code.resize(column.values.size());
+  for (std::size_t v = 0; v < column.values.size(); ++v) {
+    column.enum_code[v] = static_cast<std::uint32_t>(
+        std::lower_bound(distinct.begin(), distinct.end(), column.values[v]) - distinct.begin());
+  }
   std::string dashes;
   column.no_data = "(none)";
   while (contains(column.no_data)) {
@@ -150,12 +238,9 @@ void PartTable::write_data(Buffers& buffers) {
       case Type::kString: {
         if (!column.dictionary.empty()) {
           const bool wide = column.dictionary.size() + (column.optional ? 1 : 0) > 256;
-          for (std::size_t i = 0; i < column.strings.size(); ++i) {
+          for (const std::uint32_t value : column.codes) {
             const auto code = static_cast<std::uint16_t>(
-                column.present[i] ? std::lower_bound(column.dictionary.begin(),
-                                                     column.dictionary.end(), column.strings[i]) -
-                                        column.dictionary.begin()
-                                  : column.dictionary.size());
+                value == kAbsent ? column.dictionary.size() : column.enum_code[value]);
             if (wide) {
               append_value(values, code);
             } else {
@@ -167,10 +252,11 @@ void PartTable::write_data(Buffers& buffers) {
         column.offsets_view = buffers.add_view(ViewKind::kColumn, 0);
         std::string& offsets = buffers.data(column.offsets_view);
         std::uint32_t offset = 0;
-        for (const std::string& s : column.strings) {
+        for (const std::uint32_t code : column.codes) {
           append_value(offsets, offset);
-          values += s;
-          offset += static_cast<std::uint32_t>(s.size());
+          if (code == kAbsent) continue;
+          values += column.values[code];
+          offset += static_cast<std::uint32_t>(column.values[code].size());
         }
         append_value(offsets, offset);
         // A table whose strings are all empty still needs a (non-empty) values view.

@@ -2,20 +2,22 @@
 // EXT_mesh_features ids on the vertices): one property table "parts", a row per part in scene
 // order (building by building), whose row number is the part's feature id. Columns: `name` (the
 // part's name: terminal symbol, room, component, storey), `kind` (BuildingPart, Storey, Room,
-// Installation, Other), then one per attribute name any part carries: numbers every part has
-// become FLOAT64, booleans every part has BOOLEAN, anything else text (numbers printed as in the
-// JSON). The building is the node the part's mesh hangs from, so it is not repeated per row. Text
-// columns are dictionary-coded where that is smaller: an ENUM of their distinct values (UINT8 or
-// UINT16 codes; "(none)" or a longer variant is the noData value where a part lacks the
-// attribute); a city has few distinct symbol names and colours but hundreds of thousands of
-// parts. Columns of mostly distinct values (OpenStreetMap ids) stay STRING. Property ids are the
-// attribute names made identifiers
+// Installation, Other), then one per attribute name any part carries, its own or (where it has
+// none of its own) one it inherits (`shape::Part::inherited`, a 3D Tiles tile's building
+// attributes): numbers every part has become FLOAT64, booleans every part has BOOLEAN, anything
+// else text (numbers printed as in the JSON). The building is the node the part's mesh hangs
+// from, so it is not repeated per row. Text columns are dictionary-coded where that is smaller:
+// an ENUM of their distinct values (UINT8 or UINT16 codes; "(none)" or a longer variant is the
+// noData value where a part lacks the attribute); a city has few distinct symbol names and
+// colours but hundreds of thousands of parts. Columns of mostly distinct values (OpenStreetMap
+// ids) stay STRING. Property ids are the attribute names made identifiers
 // ([A-Za-z_][A-Za-z0-9_]*, unique); the class property's `name` keeps the attribute's own name.
 // This is the metadata 3D Tiles reads too.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "io/gltf_buffers.h"
@@ -42,26 +44,44 @@ class PartTable {
 
  private:
   enum class Type { kString, kNumber, kBoolean };
+  static constexpr std::uint32_t kAbsent = ~0U;  // a text cell the part lacks
   struct Column {
     std::string id;    // the property id
     std::string name;  // the attribute's own name (empty for name and kind)
     Type type = Type::kString;
-    bool optional = false;               // some part lacks it (text columns only)
-    std::vector<std::string> strings{};  // kString
-    std::vector<bool> present{};         // kString: the part has it
-    std::vector<double> numbers{};       // kNumber
-    std::vector<bool> booleans{};        // kBoolean
-    // Dictionary coding of a text column (empty: written as STRING).
+    bool optional = false;  // some part lacks it (text columns only)
+    // kString: each row's value as an index into `values` (its distinct texts in order of first
+    // use) or kAbsent; a city repeats few texts over many rows.
+    std::vector<std::uint32_t> codes{};
+    std::vector<std::string> values{};
+    std::unordered_map<std::string, std::uint32_t> index_of{};  // of `values`, while filling
+    std::vector<double> numbers{};                              // kNumber
+    std::vector<bool> booleans{};                               // kBoolean
+    // Dictionary coding of a text column (empty: written as STRING): the enum names in order,
+    // and each value's enum code.
     std::vector<std::string> dictionary{};
+    std::vector<std::uint32_t> enum_code{};
     std::string no_data{};  // the enum name of "lacks it"
     std::uint32_t values_view = 0;
     std::uint32_t offsets_view = 0;  // STRING
   };
+  // An inherited attribute map's value for each attribute column (nullptr: it has none), and the
+  // text code of each, found once for all the parts that share the map.
+  struct InheritedRow {
+    std::vector<const shape::Value*> values;
+    std::vector<std::uint32_t> codes;
+  };
+
+  void find_columns(const shape::Scene& scene);
+  void add_row(const shape::Part& part, std::size_t index);
+  const InheritedRow& inherited_row(const shape::AttributeMap& map);
+  static std::uint32_t intern(Column& column, std::string text);
   static void make_dictionary(Column& column);
   void write_class_property(JsonStream& json, const Column& column) const;
 
   std::size_t rows_ = 0;
   std::vector<Column> columns_;
+  std::unordered_map<const shape::AttributeMap*, InheritedRow> inherited_rows_;
 };
 
 }  // namespace insula::io::gltf

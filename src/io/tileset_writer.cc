@@ -61,18 +61,24 @@ kernel::Bounds3 building_bounds(const shape::Building& building) {
   return box;
 }
 
-// `part` of `building` as a feature of a tile: moved by `offset` (a shared mesh stays shared: its
-// placement moves), carrying its building's id and attributes where it has none of its own.
-shape::Part tile_part(const shape::Building& building, shape::Part out,
+// `part` as a feature of a tile: moved by `offset` (a shared mesh stays shared: its placement
+// moves), taking `building` (its building's id and attributes) where it has none of its own.
+shape::Part tile_part(shape::Part out, const std::shared_ptr<const shape::AttributeMap>& building,
                       const kernel::Transform& offset) {
   if (out.instance_of) {
     out.instance_transform = offset * out.instance_transform;
   } else {
     kernel::transform_mesh(out.mesh, offset);
   }
-  for (const auto& [key, value] : building.attributes) out.attributes.try_emplace(key, value);
-  out.attributes["building"] = building.id;
+  out.inherited = building;
   return out;
+}
+
+// What every part of `building` takes from it in a tile: its attributes and, over them, its id.
+std::shared_ptr<const shape::AttributeMap> building_attributes(shape::Building& building) {
+  auto attributes = std::make_shared<shape::AttributeMap>(std::move(building.attributes));
+  (*attributes)["building"] = building.id;
+  return attributes;
 }
 
 std::string tile_uri(const TileNode& node) {
@@ -313,8 +319,9 @@ std::string TilesetWriter::write_tile(std::size_t l, std::vector<shape::Building
     leaf.box.add(box.min);
     leaf.box.add(box.max);
     if (options_.block_buildings > 0) leaf.blocks.push_back(box);
+    const auto attributes = building_attributes(building);
     for (shape::Part& part : building.parts) {
-      content.parts.push_back(tile_part(building, std::move(part), offset));
+      content.parts.push_back(tile_part(std::move(part), attributes, offset));
     }
     building = shape::Building{};  // its parts are the tile's now
   }

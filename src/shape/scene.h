@@ -72,6 +72,10 @@ struct Part {
   // Texture coordinates (uv set 0, CityEngine's projectUV; shape/uv_map.h) of a point of the
   // mesh: writers evaluate it per vertex. Empty: none (writers may make their own).
   std::optional<UvMap> uv{};
+  // Attributes the part takes from elsewhere where it has none of its own, shared rather than
+  // copied: a 3D Tiles tile merges many buildings into one and points each part at its
+  // building's attributes (io/tileset_writer.cc). Read by the glTF property table.
+  std::shared_ptr<const AttributeMap> inherited{};
 };
 
 struct Building {

@@ -226,6 +226,65 @@ TEST(GltfWriter, RepeatedTextsAreDictionaryCoded) {
   EXPECT_EQ(codes.byteLength, 200U);
 }
 
+// A 3D Tiles tile's parts point at their building's attributes (shape::Part::inherited): the
+// table shows them where a part has none of its own, its own value (or an own null, which lets
+// the inherited one through) otherwise; one map shared by many parts reads as if copied.
+TEST(GltfWriter, InheritedAttributesFillWhatAPartLacks) {
+  const auto building = std::make_shared<const shape::AttributeMap>(
+      shape::AttributeMap{{"building", std::string("b7")}, {"height", 12.5}, {"roof", "hip"}});
+  shape::Scene scene;
+  shape::Building& tile = scene.buildings.emplace_back();
+  tile.id = "tile";
+  const std::vector<shape::AttributeMap> own{
+      {}, {{"roof", std::string("flat")}}, {{"height", shape::Value{}}}, {{"colour", "#fff"}}};
+  for (std::size_t i = 0; i < own.size(); ++i) {
+    const double x = 2.0 * static_cast<double>(i);
+    shape::Part part{"p" + std::to_string(i), shape::PartKind::kBuildingPart, own[i],
+                     testing::prism({{x, 0}, {x + 1, 0}, {x + 1, 1}, {x, 1}}, 0, 1)};
+    part.inherited = building;
+    tile.parts.push_back(std::move(part));
+  }
+  shape::Part loose{"loose",
+                    shape::PartKind::kBuildingPart,
+                    {},
+                    testing::prism({{9, 0}, {10, 0}, {10, 1}, {9, 1}}, 0, 1)};
+  tile.parts.push_back(std::move(loose));
+  const std::string glb = glb_bytes(scene);
+  const tinygltf::Model model = load_glb(glb);
+  const nlohmann::json json = json_of(glb);
+  const nlohmann::json& properties =
+      json["extensions"]["EXT_structural_metadata"]["schema"]["classes"]["part"]["properties"];
+  EXPECT_EQ(table_column(model, json, "building"),
+            (std::vector<std::string>{"b7", "b7", "b7", "b7", ""}));
+  EXPECT_EQ(table_column(model, json, "roof"),
+            (std::vector<std::string>{"hip", "flat", "hip", "hip", ""}));
+  EXPECT_EQ(table_column(model, json, "height"),
+            (std::vector<std::string>{"12.5", "12.5", "12.5", "12.5", "(none)"}));
+  EXPECT_EQ(table_column(model, json, "colour"),
+            (std::vector<std::string>{"", "", "", "#fff", ""}));
+  EXPECT_EQ(properties["height"]["type"], "ENUM");  // text: "loose" lacks it
+  // Without the loose part every row has a height: a number column.
+  scene.buildings[0].parts.pop_back();
+  const std::string whole = glb_bytes(scene);
+  EXPECT_EQ(json_of(whole)["extensions"]["EXT_structural_metadata"]["schema"]["classes"]["part"]
+                          ["properties"]["height"]["type"],
+            "SCALAR");
+  // The same as parts carrying copies of what they inherit.
+  shape::Scene copied = scene;
+  for (shape::Part& part : copied.buildings[0].parts) {
+    for (const auto& [key, value] : *building) {
+      auto it = part.attributes.find(key);
+      if (it == part.attributes.end()) {
+        part.attributes.emplace(key, value);
+      } else if (shape::is_null(it->second)) {
+        it->second = value;
+      }
+    }
+    part.inherited = nullptr;
+  }
+  EXPECT_EQ(glb_bytes(copied), whole);
+}
+
 TEST(GltfWriter, PositionsAreLocalYUpAndQuantizedWithinAMillimetre) {
   for (const GltfOptions& options : {GltfOptions{}, kElements}) {
     const tinygltf::Model model = load_glb(glb_bytes(test_scene(), options));
