@@ -62,7 +62,8 @@ kernel::Bounds3 building_bounds(const shape::Building& building) {
 }
 
 // `part` as a feature of a tile: moved by `offset` (a shared mesh stays shared: its placement
-// moves), taking `building` (its building's id and attributes) where it has none of its own.
+// moves), taking `building` (its building's id, which wins over an own `building`, and its
+// attributes where it has none of its own).
 shape::Part tile_part(shape::Part out, const std::shared_ptr<const shape::AttributeMap>& building,
                       const kernel::Transform& offset) {
   if (out.instance_of) {
@@ -70,6 +71,7 @@ shape::Part tile_part(shape::Part out, const std::shared_ptr<const shape::Attrib
   } else {
     kernel::transform_mesh(out.mesh, offset);
   }
+  out.attributes.erase("building");  // the feature's building is the tile's building id
   out.inherited = building;
   return out;
 }

@@ -72,10 +72,12 @@ bool city_by_tiles(const BuildOptions& options) {
 }
 
 int run_build(const BuildOptions& given) {
-  // Under mpirun only a city built tile by tile (cga_tiles.h) is shared among the ranks; any
-  // other build is the leader's alone. The other ranks work silently: the leader reports for all.
-  const bool by_tiles =
-      (has_suffix(given.input, ".cga") || has_suffix(given.input, ".bldg")) && city_by_tiles(given);
+  // Under mpirun only a city built tile by tile (cga_tiles.h, bldg_village.h, graph_tiles.h: a
+  // graph that is not per lot leaves the other ranks there) is shared among the ranks; any other
+  // build is the leader's alone. The other ranks work silently: the leader reports for all.
+  const bool by_tiles = (has_suffix(given.input, ".cga") || has_suffix(given.input, ".bldg") ||
+                         has_suffix(given.input, ".graph.json")) &&
+                        city_by_tiles(given);
   if (Ranks::shared() && !Ranks::leader() && !by_tiles) return kExitDone;
   BuildOptions options = given;
   if (!Ranks::leader()) options.quiet = true;

@@ -17,13 +17,16 @@
 #include "apps/cli/geojson_options.h"
 #include "apps/cli/graph_input.h"
 #include "apps/cli/graph_rules.h"
+#include "apps/cli/graph_tiles.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/plasm_assets.h"
+#include "apps/cli/ranks.h"
 #include "io/asset_search.h"
 #include "io/geojson_reader.h"
 #include "io/osm_reader.h"
 #include "lang/graph/output.h"
+#include "lang/graph/per_lot.h"
 
 namespace insula::cli {
 namespace {
@@ -142,6 +145,31 @@ int build_graph(const BuildOptions& options) {
                           std::string& why) { return lot_files.read(file, lots, why); };
   run.interrupted = [] { return interrupted(); };
 
+  // A city written tile by tile runs its lots a tile at a time when the graph treats each lot on
+  // its own; otherwise the graph runs whole (on the leader) and the report says why.
+  std::string whole_because;
+  if (city_by_tiles(options)) {
+    whole_because = lang::graph::per_lot_obstacle(loaded->checked);
+    if (whole_because.empty()) {
+      std::vector<lang::graph::LotInput> lots;
+      if (!lot_files.read("", lots, error)) {
+        std::fprintf(stderr, "%s\n", error.c_str());
+        return kExitInput;
+      }
+      for (std::size_t i = 0; i < lots.size(); ++i) lots[i].number = static_cast<std::uint32_t>(i);
+      seconds["lots"] = clock.seconds();
+      nlohmann::json report;
+      report["input"] = options.input;
+      report["seed"] = run.seed.value_or(static_cast<std::uint64_t>(loaded->document->root->seed));
+      report["threads"] = run.threads;
+      report["crs"] = lot_files.crs.empty() ? nlohmann::json() : nlohmann::json(lot_files.crs);
+      report["seconds"] = seconds;
+      const GraphCity city{*loaded, run, std::move(lots), lot_files.origin, lot_files.crs, search};
+      return build_graph_tiles(options, city, std::move(report), total);
+    }
+    if (!Ranks::leader()) return kExitDone;
+  }
+
   clock = Stopwatch();
   std::optional<lang::graph::RunResult> result;
   {
@@ -177,6 +205,7 @@ int build_graph(const BuildOptions& options) {
     report["lights"] = scene.lights.size();
   }
   report["graph"] = nlohmann::json::parse(lang::graph::graph_report(*result).dump());
+  if (!whole_because.empty()) report["whole_scene_because"] = whole_because;
   report_missing_textures(textures, options.input, options.quiet, report);
   report["seconds"] = seconds;
   return finish_build(options, scene, report, total);

@@ -51,10 +51,14 @@ std::optional<LoadedGraph> load_graph(const base::Source& source, bool quiet) {
   return loaded;
 }
 
+std::string LoadedGraph::render(const base::Diagnostic& diagnostic) const {
+  const auto it = texts.find(diagnostic.span.file);
+  return base::render(diagnostic, it == texts.end() ? nullptr : &it->second);
+}
+
 void LoadedGraph::print(const std::vector<base::Diagnostic>& diagnostics, bool quiet) const {
   for (const base::Diagnostic& d : diagnostics) {
-    const auto it = texts.find(d.span.file);
-    const std::string text = base::render(d, it == texts.end() ? nullptr : &it->second);
+    const std::string text = render(d);
     if (d.severity == base::Severity::kError) {
       clear_progress_line();
       std::fprintf(stderr, "%s\n", text.c_str());

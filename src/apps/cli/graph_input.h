@@ -21,6 +21,8 @@ struct LoadedGraph {
   lang::graph::CheckResult checked;
   // Prints diagnostics against the text of the file each names.
   void print(const std::vector<base::Diagnostic>& diagnostics, bool quiet) const;
+  // One diagnostic as print() shows it.
+  std::string render(const base::Diagnostic& diagnostic) const;
 };
 
 // nullopt when the graph has errors (printed; warnings too unless `quiet`).

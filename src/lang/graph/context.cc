@@ -389,6 +389,10 @@ void ExecutionContext::warning(const std::string& code, const std::string& messa
                                      execution_.notes()});
 }
 
+void ExecutionContext::record_lot(EntityId entity, std::string id) {
+  state_.out.lots.emplace(entity, std::move(id));
+}
+
 void ExecutionContext::error(const std::string& message) {
   throw RunError{"G052", message + " (node '" + checked_.node->id + "')", execution_.graph().graph,
                  checked_.node->id_offset, execution_.notes()};

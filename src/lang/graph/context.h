@@ -54,6 +54,7 @@ class ExecutionContext final : public NodeContext {
   void fail(EntityId entity, const std::string& message) override;
   [[noreturn]] void error(const std::string& message) override;
   void warning(const std::string& code, const std::string& message) override;
+  void record_lot(EntityId entity, std::string id) override;
   bool declares(std::string_view name) const override {
     return execution_.graph().graph->attribute(name) != nullptr;
   }

@@ -122,11 +122,11 @@ RunResult run_graph(const Document& document, const CheckResult& checked,
                    });
   for (const RunError& w : state.warnings) out.diagnostics.push_back(diagnostic(w, true));
   for (const auto& [port, count] : out.unprocessed) {
-    out.diagnostics.push_back(base::Diagnostic::warning("W010",
-                                                        std::to_string(count) + " entit" +
-                                                            (count == 1 ? "y" : "ies") +
-                                                            " left unprocessed at '" + port + "'",
-                                                        base::Span::whole(root.source->name())));
+    // At the node whose input port they wait at.
+    RunError w = state.unprocessed_at.at(port);
+    w.message = std::to_string(count) + " entit" + (count == 1 ? "y" : "ies") +
+                " left unprocessed at '" + port + "'";
+    out.diagnostics.push_back(diagnostic(w, true));
   }
   for (const std::string& who : state.failure_order) {
     const auto& [count, first] = state.failures.at(who);

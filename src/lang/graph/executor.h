@@ -32,6 +32,10 @@ struct LotInput {
   kernel::Polygon footprint;
   shape::AttributeMap properties;
   std::string id;
+  // Its number in the whole input (the `index` attribute and the position its seed mixes in,
+  // §9.9), so a lot run with some of its neighbours only gives what it gives in the whole run;
+  // none: its place in the list.
+  std::optional<std::uint32_t> number{};
 };
 // Reads the lots of `file` ("" = the command line's --lot), or fails with a reason.
 using LotReader =
@@ -111,6 +115,9 @@ struct RunResult {
   std::map<std::string, std::uint64_t> failed;
   // The top-level graph's attribute names by key (for reports and the export).
   std::map<AttributeKey, std::string> attribute_names;
+  // The entity create.lots made for each lot, and the lot's id ("lot_<number>" when it has none):
+  // the export names the buildings of a lot after it.
+  std::map<EntityId, std::string> lots;
 };
 
 // Runs `document`'s top-level graph (checked by check()). Never throws.

@@ -91,6 +91,8 @@ class NodeContext {
   virtual void fail(EntityId entity, const std::string& message) = 0;
   // A run-time warning at the node (W030), reported once per distinct message.
   virtual void warning(const std::string& code, const std::string& message) = 0;
+  // Marks `entity` as made for the lot `id` (create.lots; RunResult::lots).
+  virtual void record_lot(EntityId entity, std::string id) = 0;
   // Whether the node's graph declares attribute `name`.
   virtual bool declares(std::string_view name) const = 0;
   // Stops the run with G052 at the node (a run-time type error).

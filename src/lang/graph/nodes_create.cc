@@ -134,10 +134,11 @@ void lots(NodeContext& c) {
     if (!c.options().lots(file, lots, error)) c.error(error);
     std::uint32_t index = 0;
     for (const LotInput& lot : lots) {
+      const std::uint32_t number = lot.number.value_or(index);
       std::string why;
-      const std::optional<EntityId> e = footprint_entity(c, r, index, lot.footprint, 0, why);
+      const std::optional<EntityId> e = footprint_entity(c, r, number, lot.footprint, 0, why);
       if (!e) {
-        c.warning("W030", "lot " + (lot.id.empty() ? std::to_string(index) : "'" + lot.id + "'") +
+        c.warning("W030", "lot " + (lot.id.empty() ? std::to_string(number) : "'" + lot.id + "'") +
                               ": " + why + "; skipped");
         ++index;
         continue;
@@ -151,7 +152,8 @@ void lots(NodeContext& c) {
         if (const auto* b = std::get_if<bool>(&value)) c.set_attribute(*e, name, Value(*b));
         if (const auto* s = std::get_if<std::string>(&value)) c.set_attribute(*e, name, Value(*s));
       }
-      c.write(*e, "index", Value(std::int64_t{index}));
+      c.write(*e, "index", Value(std::int64_t{number}));
+      c.record_lot(*e, lot.id.empty() ? "lot_" + std::to_string(number) : lot.id);
       c.emit(c.output_port("out"), *e);
       ++index;
     }

@@ -138,6 +138,31 @@ shape::Building terrain_building(const RunResult& run, EntityId id, shape::Scene
   return b;
 }
 
+// Building ids: a building made from a lot (its oldest ancestor, or a copy of it, was made by
+// create.lots) is named after the lot, the lot's second and later buildings `<lot>/2`, `<lot>/3`;
+// so a lot's buildings have the same ids whichever other lots run beside it (a city built tile
+// by tile, apps/cli/graph_tiles.h). Any other building is `entity_<id>`.
+class LotNames {
+ public:
+  explicit LotNames(const RunResult& run) : run_(run) {
+    for (const auto& [entity, id] : run.lots) by_lineage_.emplace(run.entities[entity].lineage, id);
+  }
+
+  std::string next(EntityId entity) {
+    EntityId root = entity;
+    while (run_.entities[root].parent != kNoEntity) root = run_.entities[root].parent;
+    const auto lot = by_lineage_.find(run_.entities[root].lineage);
+    if (lot == by_lineage_.end()) return "entity_" + std::to_string(entity);
+    const std::size_t count = ++made_[lot->second];
+    return count == 1 ? lot->second : lot->second + "/" + std::to_string(count);
+  }
+
+ private:
+  const RunResult& run_;
+  std::map<std::uint32_t, std::string> by_lineage_;
+  std::map<std::string, std::size_t> made_;
+};
+
 }  // namespace
 
 shape::Scene to_scene(const RunResult& run) {
@@ -156,6 +181,7 @@ shape::Scene to_scene(const RunResult& run) {
     if (name == "building") building_key = key;
   }
   std::map<std::string, std::size_t> by_value;
+  LotNames lot_names(run);
   std::map<MaterialKey, kernel::MaterialId> known;  // rule nodes' materials, each once
   std::vector<PartIndex> part_index;                // per building
   for (const ResultEntity& r : run.results) {
@@ -189,7 +215,7 @@ shape::Scene to_scene(const RunResult& run) {
     }
     if (index == scene.buildings.size()) {
       shape::Building b;
-      b.id = key != nullptr ? "building_" + to_string(*key) : "entity_" + std::to_string(r.entity);
+      b.id = key != nullptr ? "building_" + to_string(*key) : lot_names.next(r.entity);
       for (const auto& [name, value] : top_attributes(run, r.entity)) {
         b.attributes[name] = export_value(*value);
       }

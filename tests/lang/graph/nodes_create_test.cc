@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "lang/graph/output.h"
 #include "run_util.h"
 
 namespace insula::lang::graph::testing {
@@ -150,6 +151,58 @@ TEST(CreateNodes, LotsWithTheirProperties) {
       << t.errors;
   EXPECT_EQ(t.errors.find("'zone'"), t.errors.rfind("'zone'")) << t.errors;
   EXPECT_TRUE(t.says("warning[W030]: lot 'flat': ")) << t.errors;
+}
+
+// A lot run with only some of its neighbours (a city tile by tile) keeps its number: its `index`,
+// its seed (so its random values) and the ids of its buildings are the whole run's.
+TEST(CreateNodes, NumberedLotsGiveWhatTheWholeRunGives) {
+  std::vector<LotInput> all(5);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const double x = 20.0 * static_cast<double>(i);
+    all[i].footprint.outer = {{x, 0}, {x + 10, 0}, {x + 10, 10}, {x, 10}};
+    all[i].id = i == 3 ? "" : "way/" + std::to_string(100 + i);
+    all[i].number = static_cast<std::uint32_t>(i);
+  }
+  const std::string text = graph_text(R"json(
+    "attributes": { "i": { "type": "integer", "default": -1 },
+                    "h": { "type": "number", "default": 0 } },
+    "nodes": [ { "id": "lots", "type": "create.lots", "attributes": { "index": "i" } },
+               { "id": "tall", "type": "attr.set", "params": { "values": { "h": "= rand(3, 30)" } } },
+               { "id": "mass", "type": "shape.extrude", "params": { "height": "= @h" } },
+               { "id": "faces", "type": "shape.comp",
+                 "augment": [ { "faces": "top", "out": "top" }, { "faces": "side", "out": "walls" } ] } ],
+    "edges": [ "lots.out -> tall.in", "tall.out -> mass.in", "mass.out -> faces.in" ])json");
+  const auto run_lots = [&text](std::vector<LotInput> lots) {
+    RunOptions options;
+    options.lots = [lots](const std::string&, std::vector<LotInput>& out, std::string&) {
+      out = lots;
+      return true;
+    };
+    return run_text(text, options);
+  };
+  const TestRun whole = run_lots(all);
+  const TestRun some = run_lots({all[3], all[1]});
+  ASSERT_TRUE(whole.ok()) << whole.errors;
+  ASSERT_TRUE(some.ok()) << some.errors;
+  const std::vector<EntityId> whole_tops = whole.at("faces.top");
+  const std::vector<EntityId> some_tops = some.at("faces.top");
+  ASSERT_EQ(whole_tops.size(), 5U);
+  ASSERT_EQ(some_tops.size(), 2U);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const EntityId w = whole_tops[k == 0 ? 3 : 1];
+    EXPECT_EQ(some.attribute(some_tops[k], "i")->integer(), whole.attribute(w, "i")->integer());
+    EXPECT_EQ(some.attribute(some_tops[k], "h")->number(), whole.attribute(w, "h")->number());
+  }
+  EXPECT_NE(whole.attribute(whole_tops[0], "h")->number(),
+            whole.attribute(whole_tops[1], "h")->number());
+  // Buildings are named after their lots: the first `<lot>`, then `<lot>/2`, ...; a lot without an
+  // id is `lot_<number>`.
+  const shape::Scene scene = to_scene(*some.run);
+  std::vector<std::string> ids;
+  for (const shape::Building& b : scene.buildings) ids.push_back(b.id);
+  EXPECT_EQ(
+      ids, (std::vector<std::string>{"lot_3", "way/101", "lot_3/2", "lot_3/3", "lot_3/4", "lot_3/5",
+                                     "way/101/2", "way/101/3", "way/101/4", "way/101/5"}));
 }
 
 TEST(CreateNodes, LotsWithoutAReader) {
