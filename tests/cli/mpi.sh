@@ -59,6 +59,14 @@ for ranks in 2 3; do
     { fail "CGA, $ranks ranks: stdout"; cat "$tmp/out.txt"; }
 done
 grep -q '"ranks": 3,' "$tmp/cga3.json" || fail "CGA city, 3 ranks: the report's ranks"
+# A per-lot graph likewise (graph_tiles.h).
+lots_graph="$root/examples/graph/city/lots.graph.json"
+expect_exit 0 "graph city, one process" "$insula" build "$lots_graph" --lot "$tmp/lots.geojson" \
+  --tile-faces 20000 -o "$tmp/g1/tileset.json" -o "$tmp/g1.city.jsonl" -q
+expect_exit 0 "graph city, 2 ranks" mpi 2 "$insula" build "$lots_graph" --lot "$tmp/lots.geojson" \
+  --tile-faces 20000 -o "$tmp/g2/tileset.json" -o "$tmp/g2.city.jsonl" -q
+diff -r "$tmp/g1" "$tmp/g2" >/dev/null || fail "graph city, 2 ranks: the tileset differs from one process's"
+cmp -s "$tmp/g1.city.jsonl" "$tmp/g2.city.jsonl" || fail "graph city, 2 ranks: the CityJSONSeq differs"
 # A .bldg village likewise.
 village="$root/examples/bldg/village"
 expect_exit 0 "village, one process" "$insula" build "$village/village.bldg" \

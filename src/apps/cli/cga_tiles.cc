@@ -4,7 +4,6 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <map>
 #include <optional>
 #include <utility>
@@ -12,10 +11,8 @@
 #include "apps/cli/assets.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/interrupt.h"
-#include "apps/cli/progress.h"
 #include "apps/cli/ranks.h"
 #include "apps/cli/tile_job.h"
-#include "apps/cli/warnings.h"
 #include "io/textures.h"
 
 namespace insula::cli {
@@ -147,27 +144,6 @@ TileContent derive_tile(const CgaCity& city, const std::vector<std::size_t>& mem
   return content;
 }
 
-// The lots' print() lines and diagnostics, in lot order; true when a lot failed.
-bool print_notes(const TileJobResult& built, bool quiet) {
-  bool failed = false;
-  for (const auto& [lot, note] : built.notes) {
-    for (const Json& line : note["prints"]) {
-      std::fprintf(stderr, "%s\n", line.get_ref<const std::string&>().c_str());
-    }
-    for (const Json& d : note["diagnostics"]) {
-      const std::string& text = d[2].get_ref<const std::string&>();
-      if (d[0].get<bool>()) {
-        clear_progress_line();
-        std::fprintf(stderr, "%s\n", text.c_str());
-      } else {
-        emit_warning(d[1].get<std::string>(), text, quiet);
-      }
-    }
-    failed = failed || !note["ok"].get<bool>();
-  }
-  return failed;
-}
-
 // Assets no rank could find, with every rank's requests summed; textures likewise.
 void report_missing(const BuildOptions& options, const TileJobResult& built, Json& report) {
   std::map<std::string, io::AssetLibrary::Failure> assets;
@@ -195,7 +171,7 @@ void report_missing(const BuildOptions& options, const TileJobResult& built, Jso
 int conclude(const BuildOptions& options, const CgaCity& city, TileJob& job, TileJobResult& built,
              Json& report, const Stopwatch& total, const Stopwatch& build_clock) {
   if (const int code = stop_if_interrupted(); code != 0) return code;
-  if (print_notes(built, options.quiet)) return kExitInput;
+  if (print_tile_notes(built, options.quiet, false)) return kExitInput;
   if (!built.error.empty()) return write_failure(built.error);
   cga::Totals totals;
   for (const Json& tally : built.tallies) add_totals(tally, totals);

@@ -1,18 +1,14 @@
 #include "apps/cli/graph_tiles.h"
 
-#include <cstdio>
 #include <map>
 #include <optional>
-#include <set>
 #include <utility>
 
 #include "apps/cli/assets.h"
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/interrupt.h"
-#include "apps/cli/progress.h"
 #include "apps/cli/ranks.h"
 #include "apps/cli/tile_job.h"
-#include "apps/cli/warnings.h"
 #include "io/textures.h"
 #include "lang/graph/output.h"
 
@@ -94,27 +90,6 @@ TileContent run_tile(const GraphCity& city, const std::vector<std::size_t>& memb
   return content;
 }
 
-// Every tile's diagnostics, each text once (a warning about the input's properties comes from
-// every tile), in the order of the tiles' first lots; true when a tile's run failed.
-bool print_notes(const TileJobResult& built, bool quiet) {
-  bool failed = false;
-  std::set<std::string> printed;
-  for (const auto& [lot, note] : built.notes) {
-    for (const Json& d : note["diagnostics"]) {
-      const std::string& text = d[2].get_ref<const std::string&>();
-      if (!printed.insert(text).second) continue;
-      if (d[0].get<bool>()) {
-        clear_progress_line();
-        std::fprintf(stderr, "%s\n", text.c_str());
-      } else {
-        emit_warning(d[1].get<std::string>(), text, quiet);
-      }
-    }
-    failed = failed || !note["ok"].get<bool>();
-  }
-  return failed;
-}
-
 // The report's counts: entities and results summed over the tiles' runs, leaves by port.
 void add_counts(const BuildOptions& options, const TileJobResult& built, std::size_t lots,
                 Json& report) {
@@ -168,7 +143,8 @@ int build_graph_tiles(const BuildOptions& options, const GraphCity& city, Json r
   int code = 0;
   if (Ranks::leader()) {
     if (code = stop_if_interrupted(); code == 0) {
-      if (print_notes(built, options.quiet)) {
+      // A warning about the input's properties comes from every tile: each text once.
+      if (print_tile_notes(built, options.quiet, true)) {
         code = kExitInput;
       } else if (!built.error.empty()) {
         code = write_failure(built.error);

@@ -5,13 +5,16 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <thread>
 
 #include "apps/cli/interrupt.h"
 #include "apps/cli/progress.h"
 #include "apps/cli/ranks.h"
+#include "apps/cli/warnings.h"
 #include "io/cityjsonseq_writer.h"
 
 namespace insula::cli {
@@ -74,6 +77,28 @@ io::TileItem lot_tile_item(const std::vector<kernel::Polygon>& polygons,
   const double faces = faces_per_square_metre > 0 ? faces_per_square_metre * area_of(polygons)
                                                   : static_cast<double>(tile_faces) / 256;
   return {box.min, box.max, std::max<std::size_t>(1, static_cast<std::size_t>(faces))};
+}
+
+bool print_tile_notes(const TileJobResult& built, bool quiet, bool once) {
+  bool failed = false;
+  std::set<std::string> printed;
+  for (const auto& [item, note] : built.notes) {
+    for (const nlohmann::json& line : note.value("prints", nlohmann::json::array())) {
+      std::fprintf(stderr, "%s\n", line.get_ref<const std::string&>().c_str());
+    }
+    for (const nlohmann::json& d : note["diagnostics"]) {
+      const std::string& text = d[2].get_ref<const std::string&>();
+      if (once && !printed.insert(text).second) continue;
+      if (d[0].get<bool>()) {
+        clear_progress_line();
+        std::fprintf(stderr, "%s\n", text.c_str());
+      } else {
+        emit_warning(d[1].get<std::string>(), text, quiet);
+      }
+    }
+    failed = failed || !note["ok"].get<bool>();
+  }
+  return failed;
 }
 
 bool streamable(const std::vector<std::string>& outputs) {

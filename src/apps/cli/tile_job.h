@@ -125,6 +125,11 @@ io::TileItem lot_tile_item(const std::vector<kernel::Polygon>& polygons,
 // succeeds.
 std::filesystem::path staging_folder(const std::string& out);
 
+// Prints what the tiles told the leader about their items, in item order: each note's `prints`
+// lines (the front-end's print output), then its `diagnostics` ([error?, code, text], warnings
+// through the warning switches), each text once when `once`. True when a note says `ok` false.
+bool print_tile_notes(const TileJobResult& built, bool quiet, bool once);
+
 // True when every output can be written tile by tile (3D Tiles tilesets and CityJSONSeq): the
 // city is built tile by tile, never whole.
 bool streamable(const std::vector<std::string>& outputs);
