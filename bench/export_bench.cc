@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstring>
+#include <memory>
 #include <span>
 
 #include "io/cityjson_writer.h"
@@ -36,6 +37,24 @@ shape::Scene district(int count) {
   return scene;
 }
 
+// The same buildings as a 3D Tiles tile holds them (io/tileset_writer.cc): one mesh for all, each
+// building a feature that points at its id.
+shape::Scene district_tile(int count) {
+  shape::Scene scene = district(count);
+  shape::Building tile;
+  tile.id = "tile";
+  for (shape::Building& building : scene.buildings) {
+    const auto attributes =
+        std::make_shared<const shape::AttributeMap>(shape::AttributeMap{{"building", building.id}});
+    for (shape::Part& part : building.parts) {
+      part.inherited = attributes;
+      tile.parts.push_back(std::move(part));
+    }
+  }
+  scene.buildings = {std::move(tile)};
+  return scene;
+}
+
 std::size_t triangles(const shape::Scene& scene) {
   std::size_t n = 0;
   for (const auto& b : scene.buildings) {
@@ -45,8 +64,9 @@ std::size_t triangles(const shape::Scene& scene) {
 }
 
 template <typename Writer>
-void run(benchmark::State& state, Writer writer) {
-  const shape::Scene scene = district(static_cast<int>(state.range(0)));
+void run(benchmark::State& state, Writer writer, bool as_tile = false) {
+  const int count = static_cast<int>(state.range(0));
+  const shape::Scene scene = as_tile ? district_tile(count) : district(count);
   for (auto _ : state) {
     std::string bytes = writer(scene);
     benchmark::DoNotOptimize(bytes.data());
@@ -58,6 +78,11 @@ void run(benchmark::State& state, Writer writer) {
 
 void BM_Glb(benchmark::State& state) {
   run(state, [](const shape::Scene& s) { return glb_bytes(s); });
+}
+// A 3D Tiles tile's GLB: the same triangles in one mesh, a feature per building.
+void BM_GlbTile(benchmark::State& state) {
+  run(
+      state, [](const shape::Scene& s) { return glb_bytes(s); }, true);
 }
 void BM_Obj(benchmark::State& state) {
   run(state, [](const shape::Scene& s) { return obj_text(s, "district.mtl").obj; });
@@ -100,6 +125,7 @@ void BM_StoreLoop(benchmark::State& state) {
 
 BENCHMARK(BM_StoreLoop)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Glb)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GlbTile)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Obj)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CityJson)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 

@@ -408,20 +408,45 @@ void MeshAssembler::order_by_feature(std::span<unsigned int> indices) {
 }
 
 // Numbers the vertices alike in every written byte as one, in order of first use by the indices
-// (as meshopt_generateVertexRemap does), in remap_ (~0: unused); returns the count. Open
-// addressing over the rows, with the table kept from mesh to mesh: most meshes are small, and
-// allocating a table for each cost more than the lookups.
+// (as meshopt_generateVertexRemap does), in remap_ (~0: unused); returns the count. When the
+// feature id is written, vertices alike share a feature, and a feature's vertices were added
+// together (part by part): each run of one feature is merged on its own, in a table that stays in
+// cache (one table for a whole 3D Tiles tile missed it on most lookups).
 std::size_t MeshAssembler::merge_rows() {
   const std::size_t n = vertices_.size();
-  const std::size_t stride = layout_.stride;
+  const bool by_feature = layout_.size[3] != 0;
+  representative_.resize(n);
+  for (std::size_t begin = 0; begin < n;) {
+    std::size_t end = n;
+    if (by_feature) {
+      end = begin + 1;
+      while (end < n && vertices_[end].feature == vertices_[begin].feature) ++end;
+    }
+    find_representatives(begin, end);
+    begin = end;
+  }
   remap_.assign(n, ~0U);
-  std::size_t capacity = 16;
-  while (capacity < 2 * n) capacity *= 2;
-  slots_.assign(capacity, ~0U);
-  const auto row = [&](std::uint32_t v) { return rows_.data() + v * stride; };
+  class_of_.assign(n, ~0U);
   unsigned int count = 0;
   for (const unsigned int v : indices_) {
     if (remap_[v] != ~0U) continue;
+    unsigned int& number = class_of_[representative_[v]];
+    if (number == ~0U) number = count++;
+    remap_[v] = number;
+  }
+  return count;
+}
+
+// representative_[v] for the vertices [begin, end): the first of them alike in every written
+// byte. Open addressing over the rows, with the table kept from run to run: most runs are small,
+// and allocating a table for each cost more than the lookups.
+void MeshAssembler::find_representatives(std::size_t begin, std::size_t end) {
+  const std::size_t stride = layout_.stride;
+  std::size_t capacity = 16;
+  while (capacity < 2 * (end - begin)) capacity *= 2;
+  slots_.assign(capacity, ~0U);
+  const auto row = [&](std::size_t v) { return rows_.data() + v * stride; };
+  for (std::size_t v = begin; v < end; ++v) {
     std::uint64_t hash = 0;
     for (std::size_t i = 0; i < stride; i += 4) {
       std::uint32_t word;
@@ -431,17 +456,16 @@ std::size_t MeshAssembler::merge_rows() {
     for (std::size_t slot = (hash >> 32U) & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
       const std::uint32_t other = slots_[slot];
       if (other == ~0U) {
-        slots_[slot] = v;
-        remap_[v] = count++;
+        slots_[slot] = static_cast<std::uint32_t>(v);
+        representative_[v] = static_cast<std::uint32_t>(v);
         break;
       }
       if (std::memcmp(row(other), row(v), stride) == 0) {
-        remap_[v] = remap_[other];
+        representative_[v] = other;
         break;
       }
     }
   }
-  return count;
 }
 
 // Vertices alike in every written attribute become one; triangles part by part (a part's faces

@@ -130,6 +130,7 @@ class MeshAssembler {
   void quantize(bool wanted, MeshRecord& record);
   void pack(const MeshRecord& record, const MeshOptions& options, bool with_features);
   std::size_t merge_rows();
+  void find_representatives(std::size_t begin, std::size_t end);
   std::size_t merge_and_order();
   void order_by_feature(std::span<unsigned int> indices);
   bool loads_each_once(std::span<const unsigned int> run);
@@ -170,11 +171,13 @@ class MeshAssembler {
   std::vector<std::size_t> ends_;           // end of each material's run in indices_
   std::array<std::int64_t, 3> grid_low_{};  // the quantized mesh's grid origin
   RowLayout layout_;
-  std::vector<unsigned char> rows_;    // each vertex's written attributes, layout_.stride bytes
-  std::vector<unsigned int> remap_;    // vertex -> merged vertex (~0: unused)
-  std::vector<std::uint32_t> slots_;   // merge_rows()'s hash table of vertices (~0: free)
-  std::vector<unsigned int> fetch_;    // merged vertex -> written vertex
-  std::vector<std::uint32_t> row_of_;  // written vertex -> a vertex whose row it writes
+  std::vector<unsigned char> rows_;   // each vertex's written attributes, layout_.stride bytes
+  std::vector<unsigned int> remap_;   // vertex -> merged vertex (~0: unused)
+  std::vector<std::uint32_t> slots_;  // merge_rows()'s hash table of vertices (~0: free)
+  std::vector<std::uint32_t> representative_;   // vertex -> the first vertex alike
+  std::vector<std::uint32_t> class_of_;         // representative -> merged vertex (~0: none yet)
+  std::vector<unsigned int> fetch_;             // merged vertex -> written vertex
+  std::vector<std::uint32_t> row_of_;           // written vertex -> a vertex whose row it writes
   std::vector<std::uint32_t> vertex_features_;  // by vertex, then by merged, then written vertex
   std::vector<std::uint32_t> moved_features_;
   std::vector<std::array<unsigned int, 3>> sorted_triangles_;
