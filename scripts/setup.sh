@@ -17,6 +17,7 @@ packages=(
   chromium  # the browser check of textured GLBs (tools/render_gltf_browser.mjs, three.js)
   blender python3-numpy  # opening OBJ and GLB as users do (tests/cli/blender_import.sh)
   openmpi-bin libopenmpi-dev  # mpirun insula mass ... -o DIR/tileset.json (docs/cluster.md)
+  libcpp-httplib-dev curl  # insula studio's server (docs/studio.md), and its test
 )
 # Node.js may come from elsewhere (NodeSource ships npm inside nodejs); take Debian's only if absent.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)

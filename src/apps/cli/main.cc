@@ -15,6 +15,7 @@
 #include "apps/cli/mass_command.h"
 #include "apps/cli/random_command.h"
 #include "apps/cli/ranks.h"
+#include "apps/cli/studio_command.h"
 #include "apps/cli/transform_command.h"
 #include "apps/cli/warnings.h"
 #include "base/format.h"
@@ -75,6 +76,8 @@ int run(int argc, char** argv) {
   insula::cli::add_transform_command(app, transform);
   insula::cli::RandomOptions random;
   insula::cli::add_random_command(app, random);
+  insula::cli::StudioCommandOptions studio;
+  insula::cli::add_studio_command(app, studio);
   if (argc > 1 && unknown_verb(app, argv[1])) return insula::cli::kExitUsage;
   try {
     app.parse(argc, argv);
@@ -105,6 +108,7 @@ int run(int argc, char** argv) {
     return code;
   }
   if (app.got_subcommand("transform")) return insula::cli::run_transform(transform);
+  if (app.got_subcommand("studio")) return insula::cli::run_studio(studio);
   if (app.got_subcommand("random")) {
     return run_writing([&] { return insula::cli::run_random(random); }, random.quiet);
   }

@@ -1,0 +1,97 @@
+#include "apps/studio/jobs.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <thread>
+
+namespace insula::studio {
+namespace fs = std::filesystem;
+
+Jobs::Jobs(fs::path executable, JobLimits limits)
+    : executable_(std::move(executable)), limits_(limits) {}
+
+void Jobs::start(const std::string& key, pid_t pid) {
+  std::lock_guard lock(mutex_);
+  const auto [it, added] = running_.try_emplace(key, pid);
+  if (!added) {
+    cancelled_.insert(it->second);
+    kill(-it->second, SIGKILL);  // its process group: the build and anything it started
+    it->second = pid;
+  }
+}
+
+bool Jobs::finish(const std::string& key, pid_t pid) {
+  std::lock_guard lock(mutex_);
+  if (const auto it = running_.find(key); it != running_.end() && it->second == pid) {
+    running_.erase(it);
+  }
+  return cancelled_.erase(pid) > 0;
+}
+
+JobResult Jobs::run(const std::string& key, const std::vector<std::string>& args,
+                    const fs::path& folder) {
+  JobResult result;
+  // Everything the child needs is made before fork: after it only async-signal-safe calls.
+  std::vector<std::string> words{executable_.string()};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  std::random_device random;
+  const fs::path log = fs::temp_directory_path() / ("insula-studio-" + std::to_string(random()) +
+                                                    "-" + std::to_string(getpid()) + ".log");
+  const std::string log_name = log.string();
+  const std::string folder_name = folder.string();
+  const rlimit memory{limits_.memory_bytes, limits_.memory_bytes};
+
+  const pid_t pid = fork();
+  if (pid < 0) {
+    result.output = "cannot start a process";
+    return result;
+  }
+  if (pid == 0) {
+    setpgid(0, 0);
+    const int fd = open(log_name.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    if (fd < 0 || chdir(folder_name.c_str()) != 0) _exit(126);
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    if (memory.rlim_cur > 0) setrlimit(RLIMIT_AS, &memory);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  start(key, pid);
+  const auto deadline = std::chrono::steady_clock::now() + limits_.timeout;
+  int status = 0;
+  while (true) {
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (std::chrono::steady_clock::now() > deadline) {
+      result.timed_out = true;
+      kill(-pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  result.cancelled = finish(key, pid);
+  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
+  std::ifstream in(log, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  result.output = text.str();
+  std::error_code ignored;
+  fs::remove(log, ignored);
+  return result;
+}
+
+}  // namespace insula::studio

@@ -1,0 +1,287 @@
+#include "apps/studio/server.h"
+
+#include <httplib.h>
+
+#include <atomic>
+#include <cstdio>
+#include <deque>
+#include <fstream>
+#include <mutex>
+#include <random>
+#include <regex>
+#include <sstream>
+#include <thread>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/studio/jobs.h"
+#include "apps/studio/workspace.h"
+
+namespace insula::studio {
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+constexpr std::size_t kMaxBody = std::size_t{16} << 20;  // an edited file or a lot file
+constexpr std::size_t kModelsKept = 8;                   // built models a page may still fetch
+
+std::string random_token() {
+  std::random_device random;
+  std::string token;
+  static constexpr char kDigits[] = "0123456789abcdef";
+  for (int i = 0; i < 32; ++i) token += kDigits[random() % 16];
+  return token;
+}
+
+void reply_json(httplib::Response& response, const Json& body, int status = 200) {
+  response.status = status;
+  response.set_content(body.dump(), "application/json");
+}
+
+void refuse(httplib::Response& response, int status, const std::string& why) {
+  reply_json(response, {{"error", why}}, status);
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The file's text as edited, written beside it (so its imports, assets and lots resolve as they
+// would for the file itself) under a hidden name; removed when the job is done.
+class Draft {
+ public:
+  Draft(const fs::path& file, const std::string& text) {
+    std::random_device random;
+    const std::string name = file.filename().string();
+    // Keep the whole extension (".graph.json"): the command line picks the front-end by it.
+    const std::size_t dot = name.find('.');
+    const std::string stem = dot == std::string::npos ? name : name.substr(0, dot);
+    const std::string ext = dot == std::string::npos ? "" : name.substr(dot);
+    path_ = file.parent_path() / (".studio-" + std::to_string(random()) + "-" + stem + ext);
+    error_ = Workspace::save(path_, text);
+  }
+  ~Draft() {
+    std::error_code ignored;
+    fs::remove(path_, ignored);
+  }
+  Draft(const Draft&) = delete;
+  Draft& operator=(const Draft&) = delete;
+  const fs::path& path() const { return path_; }
+  const std::string& error() const { return error_; }
+
+ private:
+  fs::path path_;
+  std::string error_;
+};
+
+// The command line's output with the draft's name given back as the file's own.
+std::string as_shown(std::string output, const std::string& draft, const std::string& shown) {
+  for (std::size_t at = output.find(draft); at != std::string::npos;
+       at = output.find(draft, at + shown.size())) {
+    output.replace(at, draft.size(), shown);
+  }
+  return output;
+}
+
+// `file:line:col: error[CODE]: message` lines of the command line's output as records.
+Json diagnostics_of(const std::string& output) {
+  static const std::regex kLine(R"(^(.*?):(\d+):(\d+): (error|warning)\[([A-Z0-9]+)\]: (.*)$)");
+  Json out = Json::array();
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch m;
+    if (!std::regex_match(line, m, kLine)) continue;
+    out.push_back({{"file", m[1].str()},
+                   {"line", std::stoi(m[2].str())},
+                   {"column", std::stoi(m[3].str())},
+                   {"severity", m[4].str()},
+                   {"code", m[5].str()},
+                   {"message", m[6].str()}});
+  }
+  return out;
+}
+
+class Studio {
+ public:
+  Studio(const StudioOptions& options, Workspace workspace)
+      : options_(options), workspace_(std::move(workspace)), jobs_(options.executable, {}) {}
+
+  void routes(httplib::Server& server) {
+    server.set_payload_max_length(kMaxBody);
+    server.set_pre_routing_handler(
+        [this](const httplib::Request& request, httplib::Response& response) {
+          if (authorized(request)) return httplib::Server::HandlerResponse::Unhandled;
+          refuse(response, 403, "a request without the studio's token");
+          return httplib::Server::HandlerResponse::Handled;
+        });
+    server.Get("/api/files", [this](const httplib::Request&, httplib::Response& response) {
+      Json files = Json::array();
+      for (const Workspace::Entry& e : workspace_.files()) {
+        files.push_back({{"path", e.path}, {"bytes", e.bytes}});
+      }
+      reply_json(response, {{"folder", workspace_.root().filename().string()}, {"files", files}});
+    });
+    server.Get("/api/file", [this](const httplib::Request& request, httplib::Response& response) {
+      const std::optional<fs::path> path = file_of(request, response);
+      if (!path) return;
+      if (!fs::is_regular_file(*path)) return refuse(response, 404, "no such file");
+      response.set_content(read_text(*path), "text/plain; charset=utf-8");
+    });
+    server.Put("/api/file", [this](const httplib::Request& request, httplib::Response& response) {
+      const std::optional<fs::path> path = file_of(request, response);
+      if (!path) return;
+      if (!is_studio_file(*path)) return refuse(response, 400, "not a file the studio edits");
+      if (const std::string error = Workspace::save(*path, request.body); !error.empty()) {
+        return refuse(response, 500, error);
+      }
+      reply_json(response, {{"saved", request.get_param_value("path")}});
+    });
+    server.Post("/api/check", [this](const httplib::Request& request, httplib::Response& response) {
+      run_job(request, response, false);
+    });
+    server.Post("/api/build", [this](const httplib::Request& request, httplib::Response& response) {
+      run_job(request, response, true);
+    });
+    server.Get(R"(/api/model/(\d+)\.glb)",
+               [this](const httplib::Request& request, httplib::Response& response) {
+                 const std::string model = model_bytes(std::stoull(request.matches[1].str()));
+                 if (model.empty())
+                   return refuse(response, 404, "no such model (built again since?)");
+                 response.set_content(model, "model/gltf-binary");
+               });
+    if (!options_.web.empty() && fs::is_directory(options_.web)) {
+      server.set_mount_point("/", options_.web.string());
+    }
+  }
+
+ private:
+  bool authorized(const httplib::Request& request) const {
+    return request.get_param_value("token") == options_.token ||
+           request.get_header_value("X-Insula-Token") == options_.token;
+  }
+
+  std::optional<fs::path> file_of(const httplib::Request& request, httplib::Response& response) {
+    std::string why;
+    std::optional<fs::path> path = workspace_.resolve(request.get_param_value("path"), why);
+    if (!path) refuse(response, 403, "refused: " + why);
+    return path;
+  }
+
+  // Checks (`insula check`) or builds (`insula build -o model.glb --report`) the request's body as
+  // the text of `path`, with `lot` (a file of the folder) and `seed` for builds.
+  void run_job(const httplib::Request& request, httplib::Response& response, bool build) {
+    const std::optional<fs::path> path = file_of(request, response);
+    if (!path) return;
+    const std::string shown = request.get_param_value("path");
+    const Draft draft(*path, request.body);
+    if (!draft.error().empty()) return refuse(response, 500, draft.error());
+    std::vector<std::string> args{build ? "build" : "check", draft.path().filename().string()};
+    const fs::path out = fs::temp_directory_path() / ("insula-studio-" + random_token());
+    if (build) {
+      fs::create_directories(out);
+      args.insert(args.end(), {"-o", (out / "model.glb").string(), "--report",
+                               (out / "report.json").string(), "--quiet"});
+      if (request.has_param("lot")) {
+        std::string why;
+        const std::optional<fs::path> lot = workspace_.resolve(request.get_param_value("lot"), why);
+        if (!lot) {
+          fs::remove_all(out);
+          return refuse(response, 403, "refused: lot " + why);
+        }
+        args.insert(args.end(), {"--lot", lot->string()});
+      }
+      if (request.has_param("seed"))
+        args.insert(args.end(), {"--seed", request.get_param_value("seed")});
+    }
+    const JobResult job =
+        jobs_.run((build ? "build:" : "check:") + shown, args, draft.path().parent_path());
+    const std::string output = as_shown(job.output, draft.path().filename().string(), shown);
+    Json body = {{"exit", job.exit_code},
+                 {"cancelled", job.cancelled},
+                 {"timed_out", job.timed_out},
+                 {"signal", job.signal},
+                 {"ok", job.exit_code == 0},
+                 {"diagnostics", diagnostics_of(output)},
+                 {"output", output}};
+    if (build) {
+      if (job.exit_code == 0) {
+        body["report"] = Json::parse(read_text(out / "report.json"), nullptr, false);
+        body["model"] =
+            "/api/model/" + std::to_string(keep_model(read_text(out / "model.glb"))) + ".glb";
+      }
+      std::error_code ignored;
+      fs::remove_all(out, ignored);
+    }
+    reply_json(response, body);
+  }
+
+  std::uint64_t keep_model(std::string bytes) {
+    std::lock_guard lock(models_mutex_);
+    models_.emplace_back(++last_model_, std::move(bytes));
+    if (models_.size() > kModelsKept) models_.pop_front();
+    return last_model_;
+  }
+
+  std::string model_bytes(std::uint64_t id) {
+    std::lock_guard lock(models_mutex_);
+    for (const auto& [model, bytes] : models_) {
+      if (model == id) return bytes;
+    }
+    return {};
+  }
+
+  const StudioOptions& options_;
+  Workspace workspace_;
+  Jobs jobs_;
+  std::mutex models_mutex_;
+  std::deque<std::pair<std::uint64_t, std::string>> models_;
+  std::uint64_t last_model_ = 0;
+};
+
+}  // namespace
+
+int serve(const StudioOptions& given) {
+  StudioOptions options = given;
+  if (options.token.empty()) options.token = random_token();
+  std::error_code error;
+  if (!fs::is_directory(options.folder, error)) {
+    std::fprintf(stderr, "insula: error: %s: not a folder\n", options.folder.c_str());
+    return 1;
+  }
+  Studio studio(options, Workspace(options.folder));
+  httplib::Server server;
+  studio.routes(server);
+  const int port = options.port > 0 && server.bind_to_port(options.host.c_str(), options.port)
+                       ? options.port
+                   : options.port == 0 ? server.bind_to_any_port(options.host.c_str())
+                                       : -1;
+  if (port < 0) {
+    std::fprintf(stderr, "insula: error: cannot listen on %s:%d\n", options.host.c_str(),
+                 options.port);
+    return 1;
+  }
+  std::printf("insula studio: http://%s:%d/?token=%s\n", options.host.c_str(), port,
+              options.token.c_str());
+  std::fflush(stdout);
+  std::atomic<bool> done{false};
+  std::thread watcher([&] {
+    while (!done) {
+      if (options.stop_requested && options.stop_requested()) {
+        server.stop();
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  });
+  server.listen_after_bind();
+  done = true;
+  watcher.join();
+  return 0;
+}
+
+}  // namespace insula::studio
