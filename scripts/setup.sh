@@ -41,3 +41,12 @@ if [ ! -d tools/node_modules/gltf-validator ] || [ ! -d tools/node_modules/ajv ]
   echo "setup: installing npm test tools (gltf-validator, ajv, playwright-core, three, gltfpack, cesium, loaders.gl)" >&2
   (cd tools && npm ci --no-audit --no-fund --silent 2>/dev/null || npm install --no-audit --no-fund --silent)
 fi
+
+# The studio's page (web/, docs/studio.md): CodeMirror, three.js and esbuild from npm, bundled
+# into web/dist/ (a fraction of a second; always redone, so the page follows its sources).
+if [ ! -x web/node_modules/.bin/esbuild ] || [ ! -d web/node_modules/codemirror ] ||
+  [ ! -d web/node_modules/three ]; then
+  echo "setup: installing the studio page's npm packages (codemirror, three, esbuild)" >&2
+  (cd web && npm ci --no-audit --no-fund --silent 2>/dev/null || npm install --no-audit --no-fund --silent)
+fi
+(cd web && npm run --silent build >/dev/null)

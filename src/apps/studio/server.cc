@@ -113,12 +113,18 @@ class Studio {
 
   void routes(httplib::Server& server) {
     server.set_payload_max_length(kMaxBody);
-    server.set_pre_routing_handler(
-        [this](const httplib::Request& request, httplib::Response& response) {
-          if (authorized(request)) return httplib::Server::HandlerResponse::Unhandled;
-          refuse(response, 403, "a request without the studio's token");
-          return httplib::Server::HandlerResponse::Handled;
-        });
+    server.set_pre_routing_handler([this](const httplib::Request& request,
+                                          httplib::Response& response) {
+      if (request.get_param_value("token") == options_.token) {
+        // The page's own files (its script, its style) then come with the cookie.
+        response.set_header(
+            "Set-Cookie", "insula_token=" + options_.token + "; HttpOnly; SameSite=Strict; Path=/");
+        return httplib::Server::HandlerResponse::Unhandled;
+      }
+      if (authorized(request)) return httplib::Server::HandlerResponse::Unhandled;
+      refuse(response, 403, "a request without the studio's token");
+      return httplib::Server::HandlerResponse::Handled;
+    });
     server.Get("/api/files", [this](const httplib::Request&, httplib::Response& response) {
       Json files = Json::array();
       for (const Workspace::Entry& e : workspace_.files()) {
@@ -160,9 +166,11 @@ class Studio {
   }
 
  private:
+  // The token as a header (the page's API calls) or as the cookie set with the page.
   bool authorized(const httplib::Request& request) const {
-    return request.get_param_value("token") == options_.token ||
-           request.get_header_value("X-Insula-Token") == options_.token;
+    if (request.get_header_value("X-Insula-Token") == options_.token) return true;
+    const std::string cookies = "; " + request.get_header_value("Cookie");
+    return cookies.find("; insula_token=" + options_.token) != std::string::npos;
   }
 
   std::optional<fs::path> file_of(const httplib::Request& request, httplib::Response& response) {

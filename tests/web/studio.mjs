@@ -1,0 +1,142 @@
+// The studio in a real browser (issue 15; docs/studio.md): `insula studio` on a copy of the CGA
+// examples, its page in Debian's chromium (playwright-core, tools/browser_common.mjs). Opening a
+// grammar builds it and shows it; typing a mistake underlines it at its line and lists it; fixing
+// it shows the building again (a canvas that is not blank, the expected objects); a click names
+// the object under it; saving writes the file; the page and the API refuse a missing token and a
+// path out of the folder. Screenshots go to OUT_DIR; the edit-to-view time of the district is
+// printed (target 300 ms).
+// Usage: node tests/web/studio.mjs INSULA REPO_ROOT OUT_DIR
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { launchChromium } from '../../tools/browser_common.mjs';
+
+const [insula, root, out] = process.argv.slice(2);
+const work = fs.mkdtempSync(path.join(out, 'work-'));
+fs.cpSync(path.join(root, 'examples/cga'), work, { recursive: true });
+const failures = [];
+const check = (ok, what) => { if (!ok) failures.push(what); };
+
+const server = spawn(insula, ['studio', work], { stdio: ['ignore', 'pipe', 'inherit'] });
+const url = await new Promise((resolve, reject) => {
+  let text = '';
+  server.stdout.on('data', (chunk) => {
+    text += chunk;
+    const m = /http:\/\/127\.0\.0\.1:\d+\/\?token=[0-9a-f]+/.exec(text);
+    if (m) resolve(m[0]);
+  });
+  server.on('exit', () => reject(new Error('the studio exited')));
+  setTimeout(() => reject(new Error('no URL in 10 s')), 10000);
+});
+const base = url.split('/?')[0];
+const token = url.split('token=')[1];
+
+// The token and the folder's bounds, as any local program would try them.
+check((await fetch(`${base}/`)).status === 403, 'the page without the token');
+check((await fetch(`${base}/api/files`)).status === 403, 'the API without the token');
+check((await fetch(`${base}/api/file?path=../x&token=${token}`)).status === 403, 'a path with ..');
+
+const { page, close } = await launchChromium({ width: 1280, height: 760 });
+const errors = [];
+page.on('pageerror', (e) => errors.push(String(e)));
+const waitBuild = async (predicate, what, after = 0) => {
+  try {
+    await page.waitForFunction(([p, n]) => {
+      const b = window.studio && window.studio.lastBuild;
+      return b && b.sequence === window.studio.sequence && b.sequence > n && new Function('b', p)(b);
+    }, [predicate, after], { timeout: 60000 });
+  } catch {
+    failures.push(`${what}: ${JSON.stringify(await page.evaluate(() => window.studio.lastBuild))}`.slice(0, 400));
+  }
+};
+// Replaces the text `from` at its first place in the editor by typing `to` over it, as a user.
+const retype = async (from, to) => page.evaluate(([a, b]) => {
+  const editor = window.studio.editor;
+  const at = editor.state.doc.toString().indexOf(a);
+  editor.dispatch({ selection: { anchor: at, head: at + a.length } });
+  editor.focus();
+  return at;
+}, [from, to]).then(() => page.keyboard.type(to));
+const canvasIsDrawn = () => page.evaluate(() => {
+  const canvas = document.getElementById('viewport');
+  const probe = document.createElement('canvas');
+  probe.width = 64;
+  probe.height = 64;
+  const context = probe.getContext('2d');
+  context.drawImage(canvas, 0, 0, 64, 64);
+  const data = context.getImageData(0, 0, 64, 64).data;
+  const first = data.slice(0, 3).join();
+  let different = 0;
+  for (let i = 0; i < data.length; i += 4) if (data.slice(i, i + 3).join() !== first) ++different;
+  return different;
+});
+
+try {
+  await page.goto(`${url}&open=building.cga`);
+  await waitBuild('return b.ok && b.objects > 0', 'opening building.cga builds it');
+  const objects = await page.evaluate(() => window.studio.lastBuild.objects);
+  check(objects >= 10, `building.cga shows ${objects} objects`);
+  check((await canvasIsDrawn()) > 200, 'the viewport is blank after the first build');
+  await page.screenshot({ path: path.join(out, 'studio_building.png') });
+
+  // A mistake: split("q") instead of split("y").
+  const text = fs.readFileSync(path.join(work, 'building.cga'), 'utf8');
+  const line = text.slice(0, text.indexOf('split("y")')).split('\n').length;
+  let sequence = await page.evaluate(() => window.studio.sequence);
+  await retype('split("y")', 'split("q")');
+  await waitBuild('return !b.ok', 'the mistake fails the build', sequence);
+  const shown = await page.evaluate(() => window.studio.diagnostics[0]);
+  check(shown && shown.line === line && shown.code === 'CGA308' && shown.file === 'building.cga',
+        `the diagnostic at line ${line}: ${JSON.stringify(shown)}`);
+  check(await page.locator('.cm-lintRange-error').count() > 0, 'no underline in the editor');
+  check((await page.locator('#diagnostics .error').first().textContent()).includes(`building.cga:${line}:`),
+        'the diagnostic is not listed below');
+  await page.screenshot({ path: path.join(out, 'studio_mistake.png') });
+
+  sequence = await page.evaluate(() => window.studio.sequence);
+  await retype('split("q")', 'split("y")');
+  await waitBuild('return b.ok', 'the fixed text builds', sequence);
+  const fixed = await page.evaluate(() => window.studio.lastBuild.objects);
+  check(fixed === objects, `the fixed building shows ${fixed} objects, the first ${objects}`);
+  check(await page.locator('.cm-lintRange-error').count() === 0, 'the underline stays after the fix');
+
+  // A click on the middle of the view names what it hits.
+  const box = await page.locator('#viewport').boundingBox();
+  await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+  const picked = await page.locator('#picked').textContent();
+  check(picked.length > 0, 'a click on the building names nothing');
+
+  // Saving writes the file.
+  sequence = await page.evaluate(() => window.studio.sequence);
+  await retype('// A multi-storey building', '// A tall building');
+  await waitBuild('return b.ok', 'the comment edit builds', sequence);
+  await page.click('#save');
+  await page.waitForFunction(() => document.getElementById('save').disabled, null, { timeout: 10000 });
+  check(fs.readFileSync(path.join(work, 'building.cga'), 'utf8').startsWith('// A tall building'),
+        'saving did not write the file');
+
+  // Edit to view on the district (examples/cga/district.cga on its lots): a height changed.
+  await page.goto(`${url}&open=district.cga`);
+  await waitBuild('return b.ok', 'district.cga builds');
+  await page.selectOption('#lot', 'district.geojson');
+  await waitBuild('return b.ok && b.report.lots === 12', 'district.cga on its lots');
+  const times = [];
+  for (const [a, b] of [['3.2', '3.3'], ['3.3', '3.2'], ['3.2', '3.4'], ['3.4', '3.2'], ['3.2', '3.1']]) {
+    sequence = await page.evaluate(() => window.studio.sequence);
+    await retype(a, b);
+    const started = Date.now();  // the last keystroke
+    await waitBuild('return b.ok', 'the district after an edit', sequence);
+    times.push(Date.now() - started);
+  }
+  times.sort((x, y) => x - y);
+  console.log(`edit to view, district.cga on 12 lots: median ${times[2]} ms from the last keystroke ` +
+              `(the page waits 80 ms for more typing; runs ${times.join(', ')} ms)`);
+  await page.screenshot({ path: path.join(out, 'studio_district.png') });
+} finally {
+  await close();
+  server.kill('SIGTERM');
+}
+check(errors.length === 0, `page errors: ${errors.join('; ')}`);
+for (const f of failures) console.log(`FAIL: ${f}`);
+console.log(failures.length ? `studio page: ${failures.length} failure(s)` : 'studio page: all passed');
+process.exit(failures.length ? 1 : 0);

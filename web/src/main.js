@@ -1,0 +1,198 @@
+// The studio's page (docs/studio.md): the folder's files, an editor whose text is checked and built
+// as it changes (diagnostics underlined at their line:column), and a 3D view of the last good
+// build. Talks to `insula studio` through its API with the token the URL carries.
+import { EditorView, basicSetup } from 'codemirror';
+import { setDiagnostics, lintGutter } from '@codemirror/lint';
+import { StreamLanguage } from '@codemirror/language';
+import { Viewport } from './viewport.js';
+
+const token = new URLSearchParams(location.search).get('token') || '';
+const editable = /\.(cga|bldg|lua|psm|graph\.json)$/;
+const lotFiles = /\.(geojson|osm)$/;
+const buildDelayMs = 80; // a pause in typing; a newer edit also cancels the build in flight
+
+const state = {
+  path: null, // the open file
+  saved: '', // its text as on disk
+  sequence: 0, // edits made; an answer to an older one is dropped
+  building: 0,
+  lastBuild: null, // the last answer of /api/build
+  diagnostics: [],
+};
+window.studio = state; // read (and state.editor driven) by the browser test, tests/web/studio.mjs
+
+async function api(path, options = {}) {
+  const response = await fetch(path, {
+    ...options,
+    headers: { 'X-Insula-Token': token, ...(options.headers || {}) },
+  });
+  if (!response.ok) throw new Error(`${path}: ${response.status} ${await response.text()}`);
+  return response;
+}
+
+const element = (id) => document.getElementById(id);
+const setStatus = (text) => { element('status').textContent = text; };
+
+// Comments and strings, for every language the studio edits: enough to read the text by.
+const plainLanguage = StreamLanguage.define({
+  token(stream) {
+    if (stream.match('//') || stream.match('--') || stream.match('#')) {
+      stream.skipToEnd();
+      return 'comment';
+    }
+    if (stream.match(/^"(?:[^"\\]|\\.)*"?/)) return 'string';
+    if (stream.match(/^-?\d+(\.\d+)?/)) return 'number';
+    stream.next();
+    return null;
+  },
+});
+
+const viewport = new Viewport(element('viewport'), (picked) => {
+  element('picked').textContent = picked;
+});
+
+const editor = new EditorView({
+  parent: element('editor'),
+  extensions: [
+    basicSetup,
+    lintGutter(),
+    plainLanguage,
+    EditorView.updateListener.of((update) => {
+      if (update.docChanged) edited();
+    }),
+  ],
+});
+
+state.editor = editor;
+
+function edited() {
+  element('save').disabled = editor.state.doc.toString() === state.saved;
+  const sequence = ++state.sequence;
+  setTimeout(() => { if (sequence === state.sequence) build(sequence); }, buildDelayMs);
+}
+
+// The diagnostics of the open file as the editor's lint marks and as lines below.
+function showDiagnostics(diagnostics) {
+  state.diagnostics = diagnostics;
+  const doc = editor.state.doc;
+  const marks = [];
+  for (const d of diagnostics) {
+    if (d.file !== state.path || d.line < 1 || d.line > doc.lines) continue;
+    const line = doc.line(d.line);
+    const from = Math.min(line.from + Math.max(0, d.column - 1), line.to);
+    const word = /^[\w."#]+/.exec(doc.sliceString(from, line.to));
+    marks.push({ from, to: Math.max(from + (word ? word[0].length : 1), from), severity: d.severity,
+                 message: `${d.code}: ${d.message}` });
+  }
+  editor.dispatch(setDiagnostics(editor.state, marks));
+  const list = element('diagnostics');
+  list.replaceChildren(...diagnostics.map((d) => {
+    const row = document.createElement('div');
+    row.className = d.severity;
+    row.textContent = `${d.file}:${d.line}:${d.column}: ${d.severity}[${d.code}]: ${d.message}`;
+    row.onclick = () => {
+      if (d.file !== state.path || d.line > editor.state.doc.lines) return;
+      const at = editor.state.doc.line(d.line).from + d.column - 1;
+      editor.dispatch({ selection: { anchor: at }, scrollIntoView: true });
+      editor.focus();
+    };
+    return row;
+  }));
+}
+
+function buildQuery() {
+  const query = new URLSearchParams({ path: state.path, seed: element('seed').value || '0' });
+  if (element('lot').value) query.set('lot', element('lot').value);
+  return query;
+}
+
+async function build(sequence) {
+  if (!state.path) return;
+  setStatus('building…');
+  ++state.building;
+  try {
+    const started = performance.now();
+    const answer = await (await api(`/api/build?${buildQuery()}`, {
+      method: 'POST', body: editor.state.doc.toString(),
+    })).json();
+    if (sequence !== state.sequence || answer.cancelled) return; // a newer edit took over
+    answer.sequence = sequence;
+    showDiagnostics(answer.diagnostics);
+    if (!answer.ok) {
+      state.lastBuild = answer;
+      const errors = answer.diagnostics.filter((d) => d.severity === 'error').length;
+      setStatus(errors ? `${errors} error(s)` : `failed: ${answer.output.split('\n')[0]}`);
+      return;
+    }
+    const model = await (await api(answer.model)).arrayBuffer();
+    if (sequence !== state.sequence) return;
+    answer.objects = await viewport.show(model);
+    answer.ms = Math.round(performance.now() - started);
+    state.lastBuild = answer; // once shown
+    showCounts(answer.report, answer.objects, answer.ms);
+    setStatus('built');
+  } catch (error) {
+    setStatus(String(error));
+  } finally {
+    --state.building;
+  }
+}
+
+function showCounts(report, objects, ms) {
+  const lines = [`${objects} objects, edit to view ${ms} ms`];
+  for (const key of ['lots', 'buildings', 'terminals', 'storeys', 'rooms', 'results']) {
+    if (report && report[key] !== undefined) lines.push(`${key}: ${report[key]}`);
+  }
+  const seconds = (report && report.seconds) || {};
+  for (const [stage, s] of Object.entries(seconds)) lines.push(`${stage}: ${(1000 * s).toFixed(0)} ms`);
+  element('counts').textContent = lines.join('\n');
+}
+
+async function open(path) {
+  const text = await (await api(`/api/file?path=${encodeURIComponent(path)}`)).text();
+  state.path = path;
+  state.saved = text;
+  viewport.fitted = false;
+  element('current').textContent = path;
+  for (const row of element('files').children) row.classList.toggle('open', row.dataset.path === path);
+  editor.dispatch({ changes: { from: 0, to: editor.state.doc.length, insert: text } });
+  element('save').disabled = true;
+}
+
+async function save() {
+  const text = editor.state.doc.toString();
+  await api(`/api/file?path=${encodeURIComponent(state.path)}`, { method: 'PUT', body: text });
+  state.saved = text;
+  element('save').disabled = true;
+  setStatus(`saved ${state.path}`);
+}
+
+async function start() {
+  const { folder, files } = await (await api('/api/files')).json();
+  element('folder').textContent = folder;
+  const rows = [];
+  for (const f of files) {
+    if (lotFiles.test(f.path)) element('lot').add(new Option(f.path, f.path));
+    if (!editable.test(f.path)) continue;
+    const row = document.createElement('div');
+    row.textContent = f.path;
+    row.dataset.path = f.path;
+    row.onclick = () => open(f.path);
+    rows.push(row);
+  }
+  element('files').replaceChildren(...rows);
+  element('save').onclick = save;
+  element('lot').onchange = () => {
+    viewport.fitted = false; // other lots stand elsewhere
+    edited();
+  };
+  element('seed').onchange = () => edited();
+  element('next-seed').onclick = () => {
+    element('seed').value = String(Number(element('seed').value || 0) + 1);
+    edited();
+  };
+  const wanted = new URLSearchParams(location.search).get('open');
+  if (wanted) await open(wanted);
+}
+
+start().catch((error) => setStatus(String(error)));

@@ -1,0 +1,99 @@
+// The studio's 3D view: a built GLB (Y up, as Insula writes it) lit from above, orbit, pan and
+// zoom with the mouse, fitted to the model at each build; a click names the object under it and
+// lists its attributes (the glTF node's extras).
+import * as THREE from 'three';
+import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+
+export class Viewport {
+  constructor(canvas, onPick) {
+    this.canvas = canvas;
+    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+    this.scene = new THREE.Scene();
+    this.scene.background = new THREE.Color(0xdfe6ec);
+    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x8a8f80, 2.2));
+    const sun = new THREE.DirectionalLight(0xffffff, 1.6);
+    sun.position.set(0.5, 1, 0.8);
+    this.scene.add(sun);
+    this.camera = new THREE.PerspectiveCamera(45, 1, 0.1, 100000);
+    this.camera.position.set(40, 30, 40);
+    this.controls = new OrbitControls(this.camera, canvas);
+    this.controls.addEventListener('change', () => this.render());
+    this.model = null;
+    this.fitted = false;
+    this.loader = new GLTFLoader();
+    this.raycaster = new THREE.Raycaster();
+    canvas.addEventListener('click', (event) => onPick(this.pick(event)));
+    new ResizeObserver(() => this.resize()).observe(canvas);
+    this.resize();
+  }
+
+  resize() {
+    const { clientWidth: w, clientHeight: h } = this.canvas;
+    if (w === 0 || h === 0) return;
+    this.renderer.setSize(w, h, false);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+    this.render();
+  }
+
+  render() {
+    this.renderer.render(this.scene, this.camera);
+  }
+
+  // Shows the GLB `bytes` in place of the last model; the first model is fitted to the view, later
+  // ones keep the user's camera. Returns the number of meshes shown.
+  async show(bytes) {
+    const gltf = await this.loader.parseAsync(bytes, '');
+    if (this.model) {
+      this.scene.remove(this.model);
+      this.model.traverse((o) => {
+        if (o.geometry) o.geometry.dispose();
+      });
+    }
+    this.model = gltf.scene;
+    this.scene.add(this.model);
+    let meshes = 0;
+    this.model.traverse((o) => { if (o.isMesh) ++meshes; });
+    if (!this.fitted) this.fit();
+    this.render();
+    return meshes;
+  }
+
+  fit() {
+    const box = new THREE.Box3().setFromObject(this.model);
+    if (box.isEmpty()) return;
+    const centre = box.getCenter(new THREE.Vector3());
+    const radius = box.getSize(new THREE.Vector3()).length() / 2;
+    // The narrower of the vertical and horizontal fields of view must hold the model's sphere.
+    const vertical = (this.camera.fov * Math.PI) / 180;
+    const horizontal = 2 * Math.atan(Math.tan(vertical / 2) * this.camera.aspect);
+    const distance = radius / Math.sin(Math.min(vertical, horizontal) / 2);
+    this.camera.position.copy(centre).add(new THREE.Vector3(0.8, 0.6, 1).normalize().multiplyScalar(distance));
+    this.camera.near = Math.max(0.01, distance / 1000);
+    this.camera.far = distance * 20;
+    this.camera.updateProjectionMatrix();
+    this.controls.target.copy(centre);
+    this.controls.update();
+    this.fitted = true;
+  }
+
+  // The name and attributes of the object under the mouse, or ''.
+  pick(event) {
+    if (!this.model) return '';
+    const rect = this.canvas.getBoundingClientRect();
+    const pointer = new THREE.Vector2(((event.clientX - rect.left) / rect.width) * 2 - 1,
+                                      -((event.clientY - rect.top) / rect.height) * 2 + 1);
+    this.raycaster.setFromCamera(pointer, this.camera);
+    const hit = this.raycaster.intersectObject(this.model, true)[0];
+    if (!hit) return '';
+    let node = hit.object;
+    while (node && !node.name && node.parent) node = node.parent;
+    const lines = [node.name || '(unnamed)'];
+    for (let o = node; o; o = o.parent) {
+      for (const [key, value] of Object.entries(o.userData || {})) lines.push(`${key}: ${JSON.stringify(value)}`);
+    }
+    if (hit.object.material && hit.object.material.name) lines.push(`material: ${hit.object.material.name}`);
+    return lines.join('\n');
+  }
+}
