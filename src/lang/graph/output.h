@@ -11,8 +11,9 @@ namespace insula::lang::graph {
 
 // Result shapes as buildings: entities sharing a value of the top-level attribute `building`
 // (when the graph declares it) form one building, in order of first appearance; every other
-// result shape is a building of its own, named after its lot when it descends from one. Each shape is a part named after its leaf port (its
-// node id), a rule node's model contributes its parts. Lights go to Scene::lights.
+// result shape is a building of its own, named after its lot when it descends from one. Each shape
+// is a part named after its leaf port (its node id), a rule node's model contributes its parts.
+// Lights go to Scene::lights.
 shape::Scene to_scene(const RunResult& run);
 
 // The `graph` section of the report (§13): cyclic_edges, node_runs, leaves, blocked,
