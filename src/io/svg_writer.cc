@@ -462,6 +462,17 @@ std::string line(Vec2 a, Vec2 b, const Frame& frame) {
   return "<path d=\"M" + point(frame.map(a)) + " L" + point(frame.map(b)) + "\"/>\n";
 }
 
+// A room's floor, filled by its type, naming the room (`data-room`, and a `<title>` that viewers
+// show on hover) so a page can tell which room was clicked.
+std::string room_path(const shape::PlanRoom& room, const Frame& frame, Vec2 shift) {
+  std::string path = fill_path(rings_of(room.outline), frame, room_fill(room.type), shift);
+  const std::string name = xml_escape(room.name);
+  path.replace(path.size() - 3, 3,
+               " data-room=\"" + name + "\" data-type=\"" + xml_escape(room.type) + "\"><title>" +
+                   name + ", " + format_decimal(room.area, 1) + " m²</title></path>\n");
+  return path;
+}
+
 std::string room_label(const shape::PlanRoom& room, const Frame& frame, Vec2 shift, double size) {
   Footprint footprint;
   footprint.pieces = rings_of(room.outline);
@@ -541,7 +552,7 @@ std::string storey_panel(const shape::Scene& scene, int level, const Frame& fram
     for (const shape::StoreyPlan& plan : building.plans) {
       if (plan.level != level) continue;
       for (const shape::PlanRoom& room : plan.rooms) {
-        rooms += fill_path(rings_of(room.outline), frame, room_fill(room.type), shift);
+        rooms += room_path(room, frame, shift);
         labels += room_label(room, frame, shift, text_size);
       }
       for (const shape::PlanWall& wall : plan.walls) {

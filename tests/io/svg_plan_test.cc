@@ -77,6 +77,12 @@ TEST(SvgPlan, RoomsAreLabelledWithNameAndArea) {
   EXPECT_NE(svg.find(">bedroom</text>"), std::string::npos);
   EXPECT_EQ(count(svg, ">34.3 m²</text>"), 2U);
   EXPECT_EQ(count(svg, ">69.6 m²</text>"), 1U);
+  // Each room's floor names it, for pages that show the plan (the studio) and for hover titles.
+  EXPECT_EQ(
+      count(svg,
+            " data-room=\"kitchen_1\" data-type=\"kitchen\"><title>kitchen_1, 34.3 m²</title>"),
+      1U);
+  EXPECT_EQ(count(svg, " data-room="), 3U);
 }
 
 TEST(SvgPlan, StoreysShareOneScaleSideBySide) {

@@ -14,6 +14,7 @@ import { launchChromium } from '../../tools/browser_common.mjs';
 const [insula, root, out] = process.argv.slice(2);
 const work = fs.mkdtempSync(path.join(out, 'work-'));
 fs.cpSync(path.join(root, 'examples/cga'), work, { recursive: true });
+fs.copyFileSync(path.join(root, 'examples/bldg/two_storey.bldg'), path.join(work, 'two_storey.bldg'));
 const failures = [];
 const check = (ok, what) => { if (!ok) failures.push(what); };
 
@@ -114,6 +115,20 @@ try {
   await page.waitForFunction(() => document.getElementById('save').disabled, null, { timeout: 10000 });
   check(fs.readFileSync(path.join(work, 'building.cga'), 'utf8').startsWith('// A tall building'),
         'saving did not write the file');
+
+  // A .bldg building: its floor plans beside the view, a room named when clicked; the cut slider
+  // opens the building (the picture changes).
+  await page.goto(`${url}&open=two_storey.bldg`);
+  await waitBuild('return b.ok && b.plan', 'two_storey.bldg builds with its plans');
+  const rooms = await page.locator('#plan path[data-room]').count();
+  check(rooms >= 4, `the plans show ${rooms} rooms`);
+  await page.locator('#plan path[data-room="kitchen"]').first().click({ force: true });
+  check((await page.locator('#picked').textContent()).startsWith('kitchen, '), 'a click on the kitchen');
+  const whole = await page.locator('#viewport').screenshot();
+  await page.locator('#cut').fill('0.45');
+  const opened = await page.locator('#viewport').screenshot();
+  check(!whole.equals(opened), 'the cut does not change the view');
+  await page.screenshot({ path: path.join(out, 'studio_bldg.png') });
 
   // Edit to view on the district (examples/cga/district.cga on its lots): a height changed.
   await page.goto(`${url}&open=district.cga`);

@@ -127,6 +127,7 @@ async function build(sequence) {
     const model = await (await api(answer.model)).arrayBuffer();
     if (sequence !== state.sequence) return;
     answer.objects = await viewport.show(model);
+    await showPlan(answer.plan);
     answer.ms = Math.round(performance.now() - started);
     state.lastBuild = answer; // once shown
     showCounts(answer.report, answer.objects, answer.ms);
@@ -138,10 +139,32 @@ async function build(sequence) {
   }
 }
 
+// A .bldg building's floor plans (the command line's SVG, a panel per storey); a click on a room
+// names it.
+async function showPlan(url) {
+  const panel = element('plan');
+  if (!url) {
+    panel.replaceChildren();
+    return;
+  }
+  const text = await (await api(url)).text();
+  const svg = new DOMParser().parseFromString(text, 'image/svg+xml').documentElement;
+  svg.removeAttribute('width');
+  svg.removeAttribute('height');
+  panel.replaceChildren(document.importNode(svg, true));
+  for (const room of panel.querySelectorAll('path[data-room]')) {
+    room.addEventListener('click', () => {
+      element('picked').textContent = room.querySelector('title')?.textContent || room.dataset.room;
+    });
+  }
+}
+
 function showCounts(report, objects, ms) {
   const lines = [`${objects} objects, edit to view ${ms} ms`];
   for (const key of ['lots', 'buildings', 'terminals', 'storeys', 'rooms', 'results']) {
-    if (report && report[key] !== undefined) lines.push(`${key}: ${report[key]}`);
+    const value = report && report[key];
+    if (typeof value === 'number') lines.push(`${key}: ${value}`);
+    if (Array.isArray(value)) lines.push(`${key}: ${value.length}`);
   }
   const seconds = (report && report.seconds) || {};
   for (const [stage, s] of Object.entries(seconds)) lines.push(`${stage}: ${(1000 * s).toFixed(0)} ms`);
@@ -187,6 +210,7 @@ async function start() {
     edited();
   };
   element('seed').onchange = () => edited();
+  element('cut').oninput = () => viewport.cut(Number(element('cut').value));
   element('next-seed').onclick = () => {
     element('seed').value = String(Number(element('seed').value || 0) + 1);
     edited();

@@ -9,6 +9,10 @@ export class Viewport {
   constructor(canvas, onPick) {
     this.canvas = canvas;
     this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+    // The cut: everything above a horizontal plane is hidden (Y up), to look into the storeys.
+    this.cutPlane = new THREE.Plane(new THREE.Vector3(0, -1, 0), Infinity);
+    this.renderer.clippingPlanes = [this.cutPlane];
+    this.cutFraction = 1;
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(0xdfe6ec);
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x8a8f80, 2.2));
@@ -56,8 +60,19 @@ export class Viewport {
     let meshes = 0;
     this.model.traverse((o) => { if (o.isMesh) ++meshes; });
     if (!this.fitted) this.fit();
-    this.render();
+    this.bounds = new THREE.Box3().setFromObject(this.model);
+    this.cut(this.cutFraction);
     return meshes;
+  }
+
+  // Hides what stands above `fraction` of the model's height (1: nothing hidden).
+  cut(fraction) {
+    this.cutFraction = fraction;
+    const b = this.bounds;
+    this.cutPlane.constant = fraction >= 1 || !b || b.isEmpty()
+      ? Infinity
+      : b.min.y + fraction * (b.max.y - b.min.y);
+    this.render();
   }
 
   fit() {

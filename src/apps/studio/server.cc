@@ -25,7 +25,7 @@ using Json = nlohmann::json;
 namespace {
 
 constexpr std::size_t kMaxBody = std::size_t{16} << 20;  // an edited file or a lot file
-constexpr std::size_t kModelsKept = 8;                   // built models a page may still fetch
+constexpr std::size_t kModelsKept = 8;                   // builds whose files a page may fetch
 
 std::string random_token() {
   std::random_device random;
@@ -153,12 +153,14 @@ class Studio {
     server.Post("/api/build", [this](const httplib::Request& request, httplib::Response& response) {
       run_job(request, response, true);
     });
-    server.Get(R"(/api/model/(\d+)\.glb)",
+    server.Get(R"(/api/model/(\d+)\.(glb|svg))",
                [this](const httplib::Request& request, httplib::Response& response) {
-                 const std::string model = model_bytes(std::stoull(request.matches[1].str()));
-                 if (model.empty())
-                   return refuse(response, 404, "no such model (built again since?)");
-                 response.set_content(model, "model/gltf-binary");
+                 const bool glb = request.matches[2].str() == "glb";
+                 const std::string bytes = built_file(std::stoull(request.matches[1].str()), glb);
+                 if (bytes.empty()) {
+                   return refuse(response, 404, "no such build (built again since?)");
+                 }
+                 response.set_content(bytes, glb ? "model/gltf-binary" : "image/svg+xml");
                });
     if (!options_.web.empty() && fs::is_directory(options_.web)) {
       server.set_mount_point("/", options_.web.string());
@@ -194,6 +196,9 @@ class Studio {
       fs::create_directories(out);
       args.insert(args.end(), {"-o", (out / "model.glb").string(), "--report",
                                (out / "report.json").string(), "--quiet"});
+      // A .bldg building's floor plans, storey by storey, beside the model.
+      if (path->extension() == ".bldg")
+        args.insert(args.end(), {"-o", (out / "plan.svg").string()});
       if (request.has_param("lot")) {
         std::string why;
         const std::optional<fs::path> lot = workspace_.resolve(request.get_param_value("lot"), why);
@@ -219,8 +224,12 @@ class Studio {
     if (build) {
       if (job.exit_code == 0) {
         body["report"] = Json::parse(read_text(out / "report.json"), nullptr, false);
-        body["model"] =
-            "/api/model/" + std::to_string(keep_model(read_text(out / "model.glb"))) + ".glb";
+        const std::uint64_t id = keep_build(
+            {read_text(out / "model.glb"),
+             fs::exists(out / "plan.svg") ? read_text(out / "plan.svg") : std::string()});
+        body["model"] = "/api/model/" + std::to_string(id) + ".glb";
+        if (fs::exists(out / "plan.svg"))
+          body["plan"] = "/api/model/" + std::to_string(id) + ".svg";
       }
       std::error_code ignored;
       fs::remove_all(out, ignored);
@@ -228,17 +237,22 @@ class Studio {
     reply_json(response, body);
   }
 
-  std::uint64_t keep_model(std::string bytes) {
-    std::lock_guard lock(models_mutex_);
-    models_.emplace_back(++last_model_, std::move(bytes));
-    if (models_.size() > kModelsKept) models_.pop_front();
-    return last_model_;
+  struct Built {
+    std::string glb;
+    std::string svg;  // a .bldg building's plans; else empty
+  };
+
+  std::uint64_t keep_build(Built files) {
+    std::lock_guard lock(builds_mutex_);
+    builds_.emplace_back(++last_build_, std::move(files));
+    if (builds_.size() > kModelsKept) builds_.pop_front();
+    return last_build_;
   }
 
-  std::string model_bytes(std::uint64_t id) {
-    std::lock_guard lock(models_mutex_);
-    for (const auto& [model, bytes] : models_) {
-      if (model == id) return bytes;
+  std::string built_file(std::uint64_t id, bool glb) {
+    std::lock_guard lock(builds_mutex_);
+    for (const auto& [build, files] : builds_) {
+      if (build == id) return glb ? files.glb : files.svg;
     }
     return {};
   }
@@ -246,9 +260,9 @@ class Studio {
   const StudioOptions& options_;
   Workspace workspace_;
   Jobs jobs_;
-  std::mutex models_mutex_;
-  std::deque<std::pair<std::uint64_t, std::string>> models_;
-  std::uint64_t last_model_ = 0;
+  std::mutex builds_mutex_;
+  std::deque<std::pair<std::uint64_t, Built>> builds_;
+  std::uint64_t last_build_ = 0;
 };
 
 }  // namespace
