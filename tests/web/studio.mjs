@@ -101,6 +101,37 @@ try {
   check(fixed === objects, `the fixed building shows ${fixed} objects, the first ${objects}`);
   check(await page.locator('.cm-lintRange-error').count() === 0, 'the underline stays after the fix');
 
+  // Hover help from the registry, and F12 to a rule's definition.
+  const hoverAt = await page.evaluate(() => {
+    const editor = window.studio.editor;
+    const at = editor.state.doc.toString().indexOf('extrude(');
+    const c = editor.coordsAtPos(at + 2);
+    return c && { x: c.left + 1, y: (c.top + c.bottom) / 2 };
+  });
+  if (hoverAt) {
+    await page.mouse.move(hoverAt.x, hoverAt.y);
+    try {
+      await page.waitForSelector('.cm-tooltip .help', { timeout: 5000 });
+      check((await page.locator('.cm-tooltip .help').textContent()).startsWith('extrude: '),
+            'the hover help of extrude');
+    } catch {
+      failures.push('no hover help on extrude');
+    }
+  } else {
+    failures.push('extrude is not on screen');
+  }
+  const jumped = await page.evaluate(() => {
+    const editor = window.studio.editor;
+    const text = editor.state.doc.toString();
+    const use = text.indexOf('Ground |');
+    editor.dispatch({ selection: { anchor: use + 2 } });
+    editor.focus();
+    return text.indexOf('ground: Ground ~>') + 'ground: '.length;
+  });
+  await page.keyboard.press('F12');
+  const landed = await page.evaluate(() => window.studio.editor.state.selection.main.from);
+  check(landed === jumped, `F12 went to ${landed}, the rule Ground is defined at ${jumped}`);
+
   // A click on the middle of the view names what it hits.
   const box = await page.locator('#viewport').boundingBox();
   await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);

@@ -3,8 +3,9 @@
 // build. Talks to `insula studio` through its API with the token the URL carries.
 import { EditorView, basicSetup } from 'codemirror';
 import { setDiagnostics, lintGutter } from '@codemirror/lint';
-import { StreamLanguage } from '@codemirror/language';
+import { Compartment } from '@codemirror/state';
 import { Viewport } from './viewport.js';
+import { definitions, hoverHelp, languageFor } from './languages.js';
 
 const token = new URLSearchParams(location.search).get('token') || '';
 const editable = /\.(cga|bldg|lua|psm|graph\.json)$/;
@@ -33,30 +34,22 @@ async function api(path, options = {}) {
 const element = (id) => document.getElementById(id);
 const setStatus = (text) => { element('status').textContent = text; };
 
-// Comments and strings, for every language the studio edits: enough to read the text by.
-const plainLanguage = StreamLanguage.define({
-  token(stream) {
-    if (stream.match('//') || stream.match('--') || stream.match('#')) {
-      stream.skipToEnd();
-      return 'comment';
-    }
-    if (stream.match(/^"(?:[^"\\]|\\.)*"?/)) return 'string';
-    if (stream.match(/^-?\d+(\.\d+)?/)) return 'number';
-    stream.next();
-    return null;
-  },
-});
-
 const viewport = new Viewport(element('viewport'), (picked) => {
   element('picked').textContent = picked;
 });
+
+const language = new Compartment();
+const help = new Compartment();
+let reference = { operations: [], nodes: [] };
 
 const editor = new EditorView({
   parent: element('editor'),
   extensions: [
     basicSetup,
     lintGutter(),
-    plainLanguage,
+    language.of([]),
+    help.of([]),
+    definitions,
     EditorView.updateListener.of((update) => {
       if (update.docChanged) edited();
     }),
@@ -178,7 +171,10 @@ async function open(path) {
   viewport.fitted = false;
   element('current').textContent = path;
   for (const row of element('files').children) row.classList.toggle('open', row.dataset.path === path);
-  editor.dispatch({ changes: { from: 0, to: editor.state.doc.length, insert: text } });
+  editor.dispatch({
+    changes: { from: 0, to: editor.state.doc.length, insert: text },
+    effects: language.reconfigure(languageFor(path, reference)),
+  });
   element('save').disabled = true;
 }
 
@@ -191,6 +187,8 @@ async function save() {
 }
 
 async function start() {
+  reference = await (await api('/api/reference')).json();
+  editor.dispatch({ effects: help.reconfigure(hoverHelp(reference)) });
   const { folder, files } = await (await api('/api/files')).json();
   element('folder').textContent = folder;
   const rows = [];

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/studio/jobs.h"
+#include "apps/studio/reference.h"
 #include "apps/studio/workspace.h"
 
 namespace insula::studio {
@@ -131,6 +132,10 @@ class Studio {
         files.push_back({{"path", e.path}, {"bytes", e.bytes}});
       }
       reply_json(response, {{"folder", workspace_.root().filename().string()}, {"files", files}});
+    });
+    server.Get("/api/reference", [](const httplib::Request&, httplib::Response& response) {
+      static const std::string reference = reference_json().dump();
+      response.set_content(reference, "application/json");
     });
     server.Get("/api/file", [this](const httplib::Request& request, httplib::Response& response) {
       const std::optional<fs::path> path = file_of(request, response);
