@@ -86,6 +86,23 @@ code=$(curl -s -o /dev/null -w '%{http_code}' -X PUT --data-binary @"$tmp/new.cg
 cmp -s "$tmp/new.cga" "$tmp/work/building.cga" || fail "the saved text"
 ls -A "$tmp/work" | grep -q 'studio-.*\.tmp' && fail "a temporary file was left"
 
+# Export: the current text's result into the folder's exports/ (an OBJ with its .mtl and origin);
+# a footprint file shows (and exports) its mass model.
+curl -s -X POST --data-binary @"$tmp/work/building.cga" \
+  "$(q "/api/export?path=building.cga&format=obj&lot=building_lot.geojson")" >"$tmp/export.json"
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  if (!r.ok || JSON.stringify(r.files) !==
+      JSON.stringify(["exports/building.mtl", "exports/building.obj", "exports/building.origin.json"])) {
+    console.log(JSON.stringify(r).slice(0, 400)); process.exit(1);
+  }' "$tmp/export.json" || fail "the OBJ export"
+grep -q '^o ' "$tmp/work/exports/building.obj" || fail "the exported OBJ has no object"
+code=$(curl -s -o /dev/null -w '%{http_code}' -X POST --data-binary x "$(q "/api/export?path=building.cga&format=exe")")
+[ "$code" = 400 ] || fail "an unknown export format: $code"
+curl -s -X POST --data-binary @"$tmp/work/district.geojson" "$(q "/api/build?path=district.geojson")" >"$tmp/mass.json"
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  if (!r.ok || r.report.buildings !== 12 || !r.model) { console.log(JSON.stringify(r).slice(0, 400)); process.exit(1); }
+' "$tmp/mass.json" || fail "the mass model of a footprint file"
+
 # A newer build of the same file cancels the one in flight.
 node "$root/examples/city/make_city.mjs" 3000 "$tmp/work/city.geojson" >/dev/null
 curl -s -X POST --data-binary @"$tmp/work/district.cga" \

@@ -8,7 +8,8 @@ import { Viewport } from './viewport.js';
 import { definitions, hoverHelp, languageFor } from './languages.js';
 
 const token = new URLSearchParams(location.search).get('token') || '';
-const editable = /\.(cga|bldg|lua|psm|graph\.json)$/;
+// Grammars and programs are built; footprint files show their mass model (`insula mass`).
+const editable = /\.(cga|bldg|lua|psm|graph\.json|geojson|osm)$/;
 const lotFiles = /\.(geojson|osm)$/;
 const buildDelayMs = 80; // a pause in typing; a newer edit also cancels the build in flight
 
@@ -186,23 +187,46 @@ async function save() {
   setStatus(`saved ${state.path}`);
 }
 
-async function start() {
-  reference = await (await api('/api/reference')).json();
-  editor.dispatch({ effects: help.reconfigure(hoverHelp(reference)) });
+// Writes the current text's result into the folder's exports/ (the file list shows it).
+async function exportResult() {
+  const query = buildQuery();
+  query.set('format', element('format').value);
+  setStatus('exporting…');
+  const answer = await (await api(`/api/export?${query}`, {
+    method: 'POST', body: editor.state.doc.toString(),
+  })).json();
+  state.lastExport = answer;
+  setStatus(answer.ok ? `wrote ${answer.files.join(', ')}` : 'export failed');
+  if (answer.ok) await listFiles();
+}
+
+async function listFiles() {
   const { folder, files } = await (await api('/api/files')).json();
   element('folder').textContent = folder;
   const rows = [];
+  const lots = element('lot');
+  const chosen = lots.value;
+  lots.replaceChildren(new Option('(none)', ''));
   for (const f of files) {
-    if (lotFiles.test(f.path)) element('lot').add(new Option(f.path, f.path));
+    if (lotFiles.test(f.path)) lots.add(new Option(f.path, f.path));
     if (!editable.test(f.path)) continue;
     const row = document.createElement('div');
     row.textContent = f.path;
     row.dataset.path = f.path;
+    row.classList.toggle('open', f.path === state.path);
     row.onclick = () => open(f.path);
     rows.push(row);
   }
+  lots.value = chosen;
   element('files').replaceChildren(...rows);
+}
+
+async function start() {
+  reference = await (await api('/api/reference')).json();
+  editor.dispatch({ effects: help.reconfigure(hoverHelp(reference)) });
+  await listFiles();
   element('save').onclick = save;
+  element('export').onclick = () => exportResult().catch((error) => setStatus(String(error)));
   element('lot').onchange = () => {
     viewport.fitted = false; // other lots stand elsewhere
     edited();

@@ -2,6 +2,8 @@
 
 #include <httplib.h>
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstdio>
 #include <deque>
@@ -27,6 +29,21 @@ namespace {
 
 constexpr std::size_t kMaxBody = std::size_t{16} << 20;  // an edited file or a lot file
 constexpr std::size_t kModelsKept = 8;                   // builds whose files a page may fetch
+// What `insula build` and `insula mass` write (docs/formats.md).
+constexpr std::array<std::string_view, 7> kExportFormats = {
+    "glb", "gltf", "obj", "city.json", "city.jsonl", "svg", "png"};
+
+// The name before its first dot ("district" of district.cga, "city" of city.graph.json).
+std::string stem_of(const fs::path& path) {
+  const std::string name = path.filename().string();
+  return name.substr(0, name.find('.'));
+}
+
+// Footprints (GeoJSON, OpenStreetMap): the studio shows their mass model (`insula mass`).
+bool is_footprint_file(const fs::path& path) {
+  const std::string name = path.filename().string();
+  return name.ends_with(".geojson") || name.ends_with(".osm") || name.ends_with(".osm.pbf");
+}
 
 std::string random_token() {
   std::random_device random;
@@ -153,11 +170,15 @@ class Studio {
       reply_json(response, {{"saved", request.get_param_value("path")}});
     });
     server.Post("/api/check", [this](const httplib::Request& request, httplib::Response& response) {
-      run_job(request, response, false);
+      run_job(request, response, Job::kCheck);
     });
     server.Post("/api/build", [this](const httplib::Request& request, httplib::Response& response) {
-      run_job(request, response, true);
+      run_job(request, response, Job::kBuild);
     });
+    server.Post("/api/export",
+                [this](const httplib::Request& request, httplib::Response& response) {
+                  run_job(request, response, Job::kExport);
+                });
     server.Get(R"(/api/model/(\d+)\.(glb|svg))",
                [this](const httplib::Request& request, httplib::Response& response) {
                  const bool glb = request.matches[2].str() == "glb";
@@ -187,24 +208,43 @@ class Studio {
     return path;
   }
 
-  // Checks (`insula check`) or builds (`insula build -o model.glb --report`) the request's body as
-  // the text of `path`, with `lot` (a file of the folder) and `seed` for builds.
-  void run_job(const httplib::Request& request, httplib::Response& response, bool build) {
+  enum class Job { kCheck, kBuild, kExport };
+
+  // Checks (`insula check`), builds (`insula build -o model.glb --report`; footprints: `insula
+  // mass`) or exports (the same build into the folder's `exports/`) the request's body as the text
+  // of `path`, with `lot` (a file of the folder) and `seed` for builds.
+  void run_job(const httplib::Request& request, httplib::Response& response, Job kind) {
     const std::optional<fs::path> path = file_of(request, response);
     if (!path) return;
     const std::string shown = request.get_param_value("path");
+    std::vector<std::string> outputs;  // export: the files to write
+    if (kind == Job::kExport) {
+      const std::string format = request.get_param_value("format");
+      if (std::find(kExportFormats.begin(), kExportFormats.end(), format) == kExportFormats.end()) {
+        return refuse(response, 400, "unknown export format '" + format + "'");
+      }
+      outputs.push_back("exports/" + stem_of(*path) + "." + format);
+    }
     const Draft draft(*path, request.body);
     if (!draft.error().empty()) return refuse(response, 500, draft.error());
-    std::vector<std::string> args{build ? "build" : "check", draft.path().filename().string()};
+    const bool footprints = is_footprint_file(*path);
+    std::vector<std::string> args{kind == Job::kCheck ? "check" : (footprints ? "mass" : "build"),
+                                  draft.path().filename().string()};
     const fs::path out = fs::temp_directory_path() / ("insula-studio-" + random_token());
-    if (build) {
+    if (kind != Job::kCheck) {
       fs::create_directories(out);
-      args.insert(args.end(), {"-o", (out / "model.glb").string(), "--report",
-                               (out / "report.json").string(), "--quiet"});
-      // A .bldg building's floor plans, storey by storey, beside the model.
-      if (path->extension() == ".bldg")
-        args.insert(args.end(), {"-o", (out / "plan.svg").string()});
-      if (request.has_param("lot")) {
+      args.insert(args.end(), {"--report", (out / "report.json").string(), "--quiet"});
+      if (kind == Job::kBuild) {
+        args.insert(args.end(), {"-o", (out / "model.glb").string()});
+        // A .bldg building's floor plans, storey by storey, beside the model.
+        if (path->extension() == ".bldg")
+          args.insert(args.end(), {"-o", (out / "plan.svg").string()});
+      } else {
+        fs::create_directories(workspace_.root() / "exports");
+        for (const std::string& o : outputs)
+          args.insert(args.end(), {"-o", (workspace_.root() / o).string()});
+      }
+      if (request.has_param("lot") && !footprints) {
         std::string why;
         const std::optional<fs::path> lot = workspace_.resolve(request.get_param_value("lot"), why);
         if (!lot) {
@@ -213,11 +253,12 @@ class Studio {
         }
         args.insert(args.end(), {"--lot", lot->string()});
       }
-      if (request.has_param("seed"))
+      if (request.has_param("seed") && !footprints) {
         args.insert(args.end(), {"--seed", request.get_param_value("seed")});
+      }
     }
-    const JobResult job =
-        jobs_.run((build ? "build:" : "check:") + shown, args, draft.path().parent_path());
+    const char* key = kind == Job::kCheck ? "check:" : kind == Job::kBuild ? "build:" : "export:";
+    const JobResult job = jobs_.run(key + shown, args, draft.path().parent_path());
     const std::string output = as_shown(job.output, draft.path().filename().string(), shown);
     Json body = {{"exit", job.exit_code},
                  {"cancelled", job.cancelled},
@@ -226,20 +267,38 @@ class Studio {
                  {"ok", job.exit_code == 0},
                  {"diagnostics", diagnostics_of(output)},
                  {"output", output}};
-    if (build) {
-      if (job.exit_code == 0) {
-        body["report"] = Json::parse(read_text(out / "report.json"), nullptr, false);
-        const std::uint64_t id = keep_build(
-            {read_text(out / "model.glb"),
-             fs::exists(out / "plan.svg") ? read_text(out / "plan.svg") : std::string()});
-        body["model"] = "/api/model/" + std::to_string(id) + ".glb";
-        if (fs::exists(out / "plan.svg"))
-          body["plan"] = "/api/model/" + std::to_string(id) + ".svg";
-      }
-      std::error_code ignored;
-      fs::remove_all(out, ignored);
+    if (kind != Job::kCheck && job.exit_code == 0) {
+      body["report"] = Json::parse(read_text(out / "report.json"), nullptr, false);
     }
+    if (kind == Job::kBuild && job.exit_code == 0) {
+      const bool plan = fs::exists(out / "plan.svg");
+      const std::uint64_t id =
+          keep_build({read_text(out / "model.glb"), plan ? read_text(out / "plan.svg") : ""});
+      body["model"] = "/api/model/" + std::to_string(id) + ".glb";
+      if (plan) body["plan"] = "/api/model/" + std::to_string(id) + ".svg";
+    }
+    if (kind == Job::kExport && job.exit_code == 0) body["files"] = written(outputs);
+    std::error_code ignored;
+    fs::remove_all(out, ignored);
     reply_json(response, body);
+  }
+
+  // The exported files and what the writers put beside them (an OBJ's .mtl and origin), as the
+  // folder's relative paths.
+  Json written(const std::vector<std::string>& outputs) const {
+    Json files = Json::array();
+    for (const std::string& o : outputs) {
+      const fs::path file = workspace_.root() / o;
+      const std::string stem =
+          file.filename().string().substr(0, file.filename().string().find('.'));
+      for (const fs::directory_entry& e : fs::directory_iterator(file.parent_path())) {
+        if (e.path().filename().string().starts_with(stem + ".")) {
+          files.push_back(e.path().lexically_relative(workspace_.root()).generic_string());
+        }
+      }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
   }
 
   struct Built {
