@@ -24,6 +24,18 @@ std::string property_id(std::string_view name, std::set<std::string>& taken) {
 
 }  // namespace
 
+std::shared_ptr<const shape::AttributeMap> building_feature_attributes(
+    const shape::Building& building) {
+  auto attributes = std::make_shared<shape::AttributeMap>(building.attributes);
+  (*attributes)["building"] = building.id;
+  return attributes;
+}
+
+void make_feature(shape::Part& part, std::shared_ptr<const shape::AttributeMap> building) {
+  part.attributes.erase("building");
+  part.inherited = std::move(building);
+}
+
 std::string_view kind_name(shape::PartKind kind) {
   switch (kind) {
     case shape::PartKind::kBuildingPart:

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -27,6 +28,14 @@
 namespace insula::io::gltf {
 
 inline constexpr std::string_view kMetadataExtension = "EXT_structural_metadata";
+
+// Buildings merged into one mesh (a 3D Tiles tile, `--gltf-nodes scene`) keep their identity as
+// features: every part points at what it takes from its building (its attributes and, over them,
+// its id as `building`), shared by the building's parts rather than copied.
+std::shared_ptr<const shape::AttributeMap> building_feature_attributes(
+    const shape::Building& building);
+// `part` as such a feature (an own `building` attribute gives way to the building's id).
+void make_feature(shape::Part& part, std::shared_ptr<const shape::AttributeMap> building);
 inline constexpr std::string_view kFeaturesExtension = "EXT_mesh_features";
 
 // "BuildingPart", "Storey", "Room", "Installation", "Other".

@@ -753,8 +753,45 @@ bool has_gltf_extension(const std::filesystem::path& path) {
 
 // The JSON is written in place after room for the two headers, which are filled in once its size
 // is known (the JSON is most of the bytes of a GLB: copying it cost more than writing it).
+namespace {
+
+// The scene as one building whose parts are its buildings' parts as features (Nodes::kScene).
+shape::Scene merged(const shape::Scene& scene) {
+  shape::Scene out;
+  out.origin = scene.origin;
+  out.crs = scene.crs;
+  out.materials = scene.materials;
+  out.lights = scene.lights;
+  shape::Building& all = out.buildings.emplace_back();
+  all.id = "scene";
+  for (const shape::Building& building : scene.buildings) {
+    const auto attributes = gltf::building_feature_attributes(building);
+    for (const shape::Part& part : building.parts) {
+      gltf::make_feature(all.parts.emplace_back(part), attributes);
+    }
+  }
+  return out;
+}
+
+// The builder of `scene` as `options` lay it out.
+struct LaidOut {
+  LaidOut(const shape::Scene& scene, const GltfOptions& options)
+      : merged_scene(options.nodes == GltfOptions::Nodes::kScene ? merged(scene) : shape::Scene()),
+        builder(options.nodes == GltfOptions::Nodes::kScene ? merged_scene : scene,
+                building_layout(options)) {}
+  static GltfOptions building_layout(GltfOptions options) {
+    if (options.nodes == GltfOptions::Nodes::kScene) options.nodes = GltfOptions::Nodes::kBuilding;
+    return options;
+  }
+  shape::Scene merged_scene;
+  Builder builder;
+};
+
+}  // namespace
+
 std::string glb_bytes(const shape::Scene& scene, const GltfOptions& options) {
-  const Builder builder(scene, options);
+  const LaidOut laid_out(scene, options);
+  const Builder& builder = laid_out.builder;
   constexpr std::size_t kHeaders = 12 + 8;
   const std::size_t binary = builder.binary_size();
   std::string out;
@@ -780,7 +817,8 @@ std::string glb_bytes(const shape::Scene& scene, const GltfOptions& options) {
 }
 
 std::string gltf_text(const shape::Scene& scene, const GltfOptions& options) {
-  const Builder builder(scene, options);
+  const LaidOut laid_out(scene, options);
+  const Builder& builder = laid_out.builder;
   std::string uri;
   if (builder.binary_size() > 0) {
     std::string binary;

@@ -11,6 +11,7 @@
 
 #include "io/atomic_file.h"
 #include "io/crs.h"
+#include "io/gltf_metadata.h"
 #include "io/json_stream.h"
 #include "io/tile_tree.h"
 #include "kernel/transform.h"
@@ -62,8 +63,7 @@ kernel::Bounds3 building_bounds(const shape::Building& building) {
 }
 
 // `part` as a feature of a tile: moved by `offset` (a shared mesh stays shared: its placement
-// moves), taking `building` (its building's id, which wins over an own `building`, and its
-// attributes where it has none of its own).
+// moves), pointing at its building's attributes (gltf::make_feature).
 shape::Part tile_part(shape::Part out, const std::shared_ptr<const shape::AttributeMap>& building,
                       const kernel::Transform& offset) {
   if (out.instance_of) {
@@ -71,16 +71,8 @@ shape::Part tile_part(shape::Part out, const std::shared_ptr<const shape::Attrib
   } else {
     kernel::transform_mesh(out.mesh, offset);
   }
-  out.attributes.erase("building");  // the feature's building is the tile's building id
-  out.inherited = building;
+  gltf::make_feature(out, building);
   return out;
-}
-
-// What every part of `building` takes from it in a tile: its attributes and, over them, its id.
-std::shared_ptr<const shape::AttributeMap> building_attributes(shape::Building& building) {
-  auto attributes = std::make_shared<shape::AttributeMap>(std::move(building.attributes));
-  (*attributes)["building"] = building.id;
-  return attributes;
 }
 
 std::string tile_uri(const TileNode& node) {
@@ -321,7 +313,7 @@ std::string TilesetWriter::write_tile(std::size_t l, std::vector<shape::Building
     leaf.box.add(box.min);
     leaf.box.add(box.max);
     if (options_.block_buildings > 0) leaf.blocks.push_back(box);
-    const auto attributes = building_attributes(building);
+    const auto attributes = gltf::building_feature_attributes(building);
     for (shape::Part& part : building.parts) {
       content.parts.push_back(tile_part(std::move(part), attributes, offset));
     }

@@ -118,9 +118,13 @@ async function build(sequence) {
       setStatus(errors ? `${errors} error(s)` : `failed: ${answer.output.split('\n')[0]}`);
       return;
     }
+    const answered = performance.now();
     const model = await (await api(answer.model)).arrayBuffer();
     if (sequence !== state.sequence) return;
+    const fetched = performance.now();
     answer.objects = await viewport.show(model);
+    answer.timings = { answer: Math.round(answered - started), fetch: Math.round(fetched - answered),
+                       show: Math.round(performance.now() - fetched) };
     await showPlan(answer.plan);
     answer.ms = Math.round(performance.now() - started);
     state.lastBuild = answer; // once shown
@@ -166,7 +170,9 @@ function showCounts(report, objects, ms) {
 }
 
 async function open(path) {
+  const started = performance.now();
   const text = await (await api(`/api/file?path=${encodeURIComponent(path)}`)).text();
+  state.openTimings = { fetch: Math.round(performance.now() - started) };
   state.path = path;
   state.saved = text;
   viewport.fitted = false;
@@ -177,6 +183,7 @@ async function open(path) {
     effects: language.reconfigure(languageFor(path, reference)),
   });
   element('save').disabled = true;
+  state.openTimings.editor = Math.round(performance.now() - started);
 }
 
 async function save() {

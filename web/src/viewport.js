@@ -4,6 +4,7 @@
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { featureRow, readPropertyTable } from './features.js';
 
 export class Viewport {
   constructor(canvas, onPick) {
@@ -49,6 +50,7 @@ export class Viewport {
   // ones keep the user's camera. Returns the number of meshes shown.
   async show(bytes) {
     const gltf = await this.loader.parseAsync(bytes, '');
+    this.table = readPropertyTable(bytes);
     if (this.model) {
       this.scene.remove(this.model);
       this.model.traverse((o) => {
@@ -102,6 +104,14 @@ export class Viewport {
     this.raycaster.setFromCamera(pointer, this.camera);
     const hit = this.raycaster.intersectObject(this.model, true)[0];
     if (!hit) return '';
+    // A merged mesh (one for the whole scene): the part under the mouse is its feature id's row.
+    const ids = hit.object.geometry.attributes._feature_id_0;
+    if (ids && this.table && hit.face) {
+      const row = featureRow(this.table, Math.round(ids.getX(hit.face.a)));
+      const lines = [`${row.building || row.name || 'part'}`];
+      for (const [key, value] of Object.entries(row)) lines.push(`${key}: ${JSON.stringify(value)}`);
+      return lines.join('\n');
+    }
     let node = hit.object;
     while (node && !node.name && node.parent) node = node.parent;
     const lines = [node.name || '(unnamed)'];

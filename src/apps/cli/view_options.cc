@@ -74,12 +74,15 @@ void add_view_options(CLI::App& command, io::OutputOptions& output) {
           "--gltf-nodes",
           [&output](const std::string& layout) {
             output.gltf.nodes = layout == "element" ? io::GltfOptions::Nodes::kElement
+                                : layout == "scene" ? io::GltfOptions::Nodes::kScene
                                                     : io::GltfOptions::Nodes::kBuilding;
           },
           "GLB/glTF nodes: building (one node and mesh per building, parts as feature ids with a "
-          "property table; the default) or element (a node per part, to edit parts)")
-      ->check(CLI::IsMember({"building", "element"}))
-      ->type_name("building|element");
+          "property table; the default), element (a node per part, to edit parts) or scene (one "
+          "node and mesh for all, each part a feature with its building's id: big scenes in "
+          "viewers)")
+      ->check(CLI::IsMember({"building", "element", "scene"}))
+      ->type_name("building|element|scene");
   command
       .add_option_function<std::string>(
           "--gltf-instancing",

@@ -53,9 +53,16 @@ std::string random_token() {
   return token;
 }
 
+// cpp-httplib compresses text, JSON and JavaScript with brotli at its highest quality when the
+// browser accepts it: seconds for a city's GeoJSON or the page's script on this machine. The
+// studio serves over the loopback, so its answers carry types the library leaves alone (a
+// parameter after the type, or bytes for file text).
+constexpr const char* kJson = "application/json; charset=utf-8";
+constexpr const char* kFileText = "application/octet-stream";
+
 void reply_json(httplib::Response& response, const Json& body, int status = 200) {
   response.status = status;
-  response.set_content(body.dump(), "application/json");
+  response.set_content(body.dump(), kJson);
 }
 
 void refuse(httplib::Response& response, int status, const std::string& why) {
@@ -152,13 +159,13 @@ class Studio {
     });
     server.Get("/api/reference", [](const httplib::Request&, httplib::Response& response) {
       static const std::string reference = reference_json().dump();
-      response.set_content(reference, "application/json");
+      response.set_content(reference, kJson);
     });
     server.Get("/api/file", [this](const httplib::Request& request, httplib::Response& response) {
       const std::optional<fs::path> path = file_of(request, response);
       if (!path) return;
       if (!fs::is_regular_file(*path)) return refuse(response, 404, "no such file");
-      response.set_content(read_text(*path), "text/plain; charset=utf-8");
+      response.set_content(read_text(*path), kFileText);
     });
     server.Put("/api/file", [this](const httplib::Request& request, httplib::Response& response) {
       const std::optional<fs::path> path = file_of(request, response);
@@ -188,6 +195,8 @@ class Studio {
                  }
                  response.set_content(bytes, glb ? "model/gltf-binary" : "image/svg+xml");
                });
+    server.set_file_extension_and_mimetype_mapping("js", "application/javascript; charset=utf-8");
+    server.set_file_extension_and_mimetype_mapping("map", kJson);
     if (!options_.web.empty() && fs::is_directory(options_.web)) {
       server.set_mount_point("/", options_.web.string());
     }
@@ -236,6 +245,11 @@ class Studio {
       args.insert(args.end(), {"--report", (out / "report.json").string(), "--quiet"});
       if (kind == Job::kBuild) {
         args.insert(args.end(), {"-o", (out / "model.glb").string()});
+        // A city (footprints, or rules on lots) as one mesh: a node per building would make the
+        // browser draw thousands of meshes; its parts stay pickable through their feature ids.
+        if (footprints || request.has_param("lot")) {
+          args.insert(args.end(), {"--gltf-nodes", "scene"});
+        }
         // A .bldg building's floor plans, storey by storey, beside the model.
         if (path->extension() == ".bldg")
           args.insert(args.end(), {"-o", (out / "plan.svg").string()});
