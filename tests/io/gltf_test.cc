@@ -285,6 +285,28 @@ TEST(GltfWriter, InheritedAttributesFillWhatAPartLacks) {
   EXPECT_EQ(glb_bytes(copied), whole);
 }
 
+// --gltf-nodes scene: one node and one mesh for every building, each part a feature whose row
+// names its building and carries the building's attributes where the part has none of its own.
+TEST(GltfWriter, SceneLayoutKeepsBuildingsAsFeatures) {
+  GltfOptions options;
+  options.nodes = GltfOptions::Nodes::kScene;
+  const shape::Scene scene = test_scene();
+  const std::string glb = glb_bytes(scene, options);
+  const tinygltf::Model model = load_glb(glb);
+  const nlohmann::json json = json_of(glb);
+  EXPECT_EQ(model.nodes.size(), 1U);
+  EXPECT_EQ(model.meshes.size(), 1U);
+  EXPECT_EQ(model.nodes[0].name, "scene");
+  EXPECT_EQ(triangle_count(model), triangle_count(load_glb(glb_bytes(scene))));
+  EXPECT_EQ(table_column(model, json, "building"), (std::vector<std::string>{"b1", "L-2", "L-2"}));
+  EXPECT_EQ(table_column(model, json, "name"),
+            (std::vector<std::string>{"main", "wing", "storey 0"}));
+  EXPECT_EQ(table_column(model, json, "levels"), (std::vector<std::string>{"1", "", ""}));
+  // Box & Co's name is the first building's attribute; the second building has none.
+  EXPECT_EQ(table_column(model, json, "name_2"),
+            (std::vector<std::string>{"Box & <Co> \"1\"", "", ""}));
+}
+
 TEST(GltfWriter, PositionsAreLocalYUpAndQuantizedWithinAMillimetre) {
   for (const GltfOptions& options : {GltfOptions{}, kElements}) {
     const tinygltf::Model model = load_glb(glb_bytes(test_scene(), options));
