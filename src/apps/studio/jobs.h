@@ -19,7 +19,7 @@ namespace insula::studio {
 struct JobLimits {
   std::chrono::milliseconds timeout{120'000};
   // The child's address space (0: unbounded; sanitizer builds reserve terabytes of it).
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(INSULA_SANITIZED)
   std::size_t memory_bytes = 0;
 #else
   std::size_t memory_bytes = std::size_t{8} << 30;
