@@ -103,6 +103,14 @@ node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
   if (!r.ok || r.report.buildings !== 12 || !r.model) { console.log(JSON.stringify(r).slice(0, 400)); process.exit(1); }
 ' "$tmp/mass.json" || fail "the mass model of a footprint file"
 
+# A stochastic building: its grammar and model; options that are not understood are refused.
+curl -s -X POST --data "" "$(q "/api/random?seed=7&shape=T&rooms=2-4")" >"$tmp/random.json"
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  if (!r.ok || !/-> building\(/.test(r.bldg) || !r.model) { console.log(JSON.stringify(r).slice(0, 300)); process.exit(1); }
+' "$tmp/random.json" || fail "a random building"
+code=$(curl -s -o /dev/null -w "%{http_code}" -X POST --data "" "$(q "/api/random?shape=Z;rm")")
+[ "$code" = 400 ] || fail "a random shape not understood: $code"
+
 # A newer build of the same file cancels the one in flight.
 node "$root/examples/city/make_city.mjs" 3000 "$tmp/work/city.geojson" >/dev/null
 curl -s -X POST --data-binary @"$tmp/work/district.cga" \

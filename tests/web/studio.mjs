@@ -169,6 +169,27 @@ try {
   check(exported.ok && exported.files.includes('exports/two_storey.obj'), `the export: ${JSON.stringify(exported).slice(0, 300)}`);
   check(fs.existsSync(path.join(work, 'exports/two_storey.obj')), 'the exported OBJ is not in the folder');
 
+  // A stochastic building (seed 000 §4.3): generated, shown with its plans, kept as a .bldg that
+  // the command line builds.
+  await page.click('#random-toggle');
+  await page.fill('#seed', '4');
+  await page.selectOption('#random-shape', 'L');
+  sequence = await page.evaluate(() => window.studio.sequence);
+  await page.click('#random-generate');
+  await waitBuild('return b.ok && b.plan && b.report.rooms.length >= 3', 'the random building', sequence);
+  await page.click('#save');
+  const kept = path.join(work, 'random_L_4.bldg');
+  await page.waitForFunction(() => document.getElementById('save').disabled, null, { timeout: 10000 });
+  check(fs.existsSync(kept), 'the random building was not kept');
+  try {
+    await page.waitForSelector('#files div[data-path="random_L_4.bldg"]', { timeout: 10000 });
+  } catch {
+    failures.push('the kept building is not in the file list');
+  }
+  const cli = spawn(insula, ['build', kept, '-o', path.join(out, 'random.glb'), '-q'], { stdio: 'ignore' });
+  check(await new Promise((resolve) => cli.on('exit', resolve)) === 0, 'the kept .bldg does not build');
+  await page.screenshot({ path: path.join(out, 'studio_random.png') });
+
   // Edit to view on the district (examples/cga/district.cga on its lots): a height changed.
   await page.goto(`${url}&open=district.cga`);
   await waitBuild('return b.ok', 'district.cga builds');

@@ -176,6 +176,7 @@ async function open(path) {
   state.path = path;
   state.saved = text;
   viewport.fitted = false;
+  element('picked').textContent = '';
   element('current').textContent = path;
   for (const row of element('files').children) row.classList.toggle('open', row.dataset.path === path);
   editor.dispatch({
@@ -191,7 +192,9 @@ async function save() {
   await api(`/api/file?path=${encodeURIComponent(state.path)}`, { method: 'PUT', body: text });
   state.saved = text;
   element('save').disabled = true;
+  element('current').textContent = state.path;
   setStatus(`saved ${state.path}`);
+  await listFiles();
 }
 
 // Writes the current text's result into the folder's exports/ (the file list shows it).
@@ -205,6 +208,36 @@ async function exportResult() {
   state.lastExport = answer;
   setStatus(answer.ok ? `wrote ${answer.files.join(', ')}` : 'export failed');
   if (answer.ok) await listFiles();
+}
+
+// A stochastic building from the form and the seed: shown at once and opened in the editor under a
+// name of its own, not yet saved (save keeps it).
+async function randomBuilding() {
+  const query = new URLSearchParams({ seed: element('seed').value || '0',
+                                      shape: element('random-shape').value,
+                                      parts: element('random-parts').value || '0' });
+  const list = element('random-list').value.trim();
+  if (list) query.set('room_list', list);
+  else query.set('rooms', element('random-rooms').value.trim());
+  setStatus('generating…');
+  const answer = await (await api(`/api/random?${query}`, { method: 'POST' })).json();
+  if (!answer.ok) {
+    setStatus(`random: ${answer.output.split('\n')[0]}`);
+    return;
+  }
+  const path = `random_${query.get('shape')}_${query.get('seed')}.bldg`;
+  state.path = path;
+  state.saved = null; // not on disk yet
+  element('picked').textContent = '';
+  element('current').textContent = `${path} (not saved)`;
+  for (const row of element('files').children) row.classList.remove('open');
+  viewport.fitted = false;
+  editor.dispatch({
+    changes: { from: 0, to: editor.state.doc.length, insert: answer.bldg },
+    effects: language.reconfigure(languageFor(path, reference)),
+  });
+  element('save').disabled = false;
+  state.lastRandom = answer;
 }
 
 async function listFiles() {
@@ -234,6 +267,11 @@ async function start() {
   await listFiles();
   element('save').onclick = save;
   element('export').onclick = () => exportResult().catch((error) => setStatus(String(error)));
+  element('random-toggle').onclick = () => { element('random').hidden = !element('random').hidden; };
+  element('random').onsubmit = (event) => {
+    event.preventDefault();
+    randomBuilding().catch((error) => setStatus(String(error)));
+  };
   element('lot').onchange = () => {
     viewport.fitted = false; // other lots stand elsewhere
     edited();

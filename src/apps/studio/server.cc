@@ -157,6 +157,10 @@ class Studio {
       }
       reply_json(response, {{"folder", workspace_.root().filename().string()}, {"files", files}});
     });
+    server.Post("/api/random",
+                [this](const httplib::Request& request, httplib::Response& response) {
+                  random_building(request, response);
+                });
     server.Get("/api/reference", [](const httplib::Request&, httplib::Response& response) {
       static const std::string reference = reference_json().dump();
       response.set_content(reference, kJson);
@@ -292,6 +296,45 @@ class Studio {
       if (plan) body["plan"] = "/api/model/" + std::to_string(id) + ".svg";
     }
     if (kind == Job::kExport && job.exit_code == 0) body["files"] = written(outputs);
+    std::error_code ignored;
+    fs::remove_all(out, ignored);
+    reply_json(response, body);
+  }
+
+  // A stochastic building (seed 000 §4.3, `insula random --count 1`): its grammar and its model,
+  // from the request's seed, shape, parts and rooms (or room list), each checked before use.
+  void random_building(const httplib::Request& request, httplib::Response& response) {
+    static const std::regex kNumber(R"(\d{1,18})");
+    static const std::regex kShape("L|U|T|H|convex");
+    static const std::regex kRooms(R"(\d{1,2}-\d{1,2})");
+    static const std::regex kRoomList(R"([a-z_]+(,[a-z_]+)*)");
+    std::vector<std::string> args{"random", "--count", "1", "-q"};
+    const auto option = [&](const char* name, const char* flag, const std::regex& valid) {
+      if (!request.has_param(name)) return true;
+      const std::string value = request.get_param_value(name);
+      if (!std::regex_match(value, valid)) return false;
+      args.insert(args.end(), {flag, value});
+      return true;
+    };
+    if (!option("seed", "--seed", kNumber) || !option("shape", "--shape", kShape) ||
+        !option("parts", "--parts", kNumber) || !option("rooms", "--rooms", kRooms) ||
+        !option("room_list", "--room-list", kRoomList)) {
+      return refuse(response, 400,
+                    "random: seed, shape (L U T H convex), parts, rooms (MIN-MAX) "
+                    "or room_list (types, comma-separated) not understood");
+    }
+    const fs::path out = fs::temp_directory_path() / ("insula-studio-" + random_token());
+    args.insert(args.end(), {"-o", out.string()});
+    const JobResult job = jobs_.run("random", args, workspace_.root());
+    Json body = {{"exit", job.exit_code},
+                 {"cancelled", job.cancelled},
+                 {"ok", job.exit_code == 0},
+                 {"output", job.output}};
+    if (job.exit_code == 0) {
+      body["bldg"] = read_text(out / "building_000.bldg");
+      const std::uint64_t id = keep_build({read_text(out / "building_000.glb"), ""});
+      body["model"] = "/api/model/" + std::to_string(id) + ".glb";
+    }
     std::error_code ignored;
     fs::remove_all(out, ignored);
     reply_json(response, body);
