@@ -190,6 +190,37 @@ try {
   check(await new Promise((resolve) => cli.on('exit', resolve)) === 0, 'the kept .bldg does not build');
   await page.screenshot({ path: path.join(out, 'studio_random.png') });
 
+  // Drawing (seed 000 §3.6): a 12 x 8 m rectangle on the grid, three rooms, saved, and the saved
+  // .bldg built from the command line gives the same three rooms.
+  await page.click('#draw-toggle');
+  const grid = await page.locator('#draw svg').boundingBox();
+  const at = (x, y) => [grid.x + x * 12, grid.y + grid.height - y * 12];  // 12 px a metre
+  for (const [x, y] of [[2, 2], [14, 2], [14, 10], [2, 10], [2, 2]]) await page.mouse.click(...at(x, y));
+  await waitBuild('return b.ok && b.report.rooms.length === 1', 'the drawn outline builds');
+  await page.fill('#draw [name=name]', 'Drawn house');
+  sequence = await page.evaluate(() => window.studio.sequence);
+  await page.click('#draw [name=add-room]');
+  await page.click('#draw [name=add-room]');
+  await waitBuild('return b.ok && b.plan && b.report.rooms.length === 3', 'three drawn rooms', sequence);
+  const drawnText = await page.evaluate(() => window.studio.editor.state.doc.toString());
+  check(/building\("Drawn house", \[\(2, 2\), \(14, 2\), \(14, 10\), \(2, 10\)\]\)/.test(drawnText),
+        `the drawn outline in the grammar: ${drawnText.split('\n')[1]}`);
+  await page.screenshot({ path: path.join(out, 'studio_draw.png') });
+  await page.click('#save');
+  const drawnFile = path.join(work, 'drawn_house.bldg');
+  try {
+    await page.waitForSelector('#files div[data-path="drawn_house.bldg"]', { timeout: 10000 });
+  } catch {
+    failures.push('the drawn building was not saved');
+  }
+  const report = path.join(out, 'drawn.json');
+  const drawnBuild = spawn(insula, ['build', drawnFile, '--report', report, '-o', path.join(out, 'drawn.glb'), '-q'],
+                           { stdio: 'ignore' });
+  check(await new Promise((resolve) => drawnBuild.on('exit', resolve)) === 0 &&
+        JSON.parse(fs.readFileSync(report, 'utf8')).rooms.length === 3,
+        'the saved drawing does not build with three rooms from the command line');
+  await page.click('#draw-toggle');
+
   // Edit to view on the district (examples/cga/district.cga on its lots): a height changed.
   await page.goto(`${url}&open=district.cga`);
   await waitBuild('return b.ok', 'district.cga builds');

@@ -6,6 +6,7 @@ import { setDiagnostics, lintGutter } from '@codemirror/lint';
 import { Compartment } from '@codemirror/state';
 import { Viewport } from './viewport.js';
 import { definitions, hoverHelp, languageFor } from './languages.js';
+import { DrawingTool } from './draw.js';
 
 const token = new URLSearchParams(location.search).get('token') || '';
 // Grammars and programs are built; footprint files show their mass model (`insula mass`).
@@ -210,6 +211,24 @@ async function exportResult() {
   if (answer.ok) await listFiles();
 }
 
+// `text` in the editor as the new file `path`, not yet saved (save keeps it); it builds as usual.
+function openUnsaved(path, text) {
+  const fresh = state.path !== path;
+  state.path = path;
+  state.saved = null; // not on disk yet
+  element('current').textContent = `${path} (not saved)`;
+  for (const row of element('files').children) row.classList.toggle('open', row.dataset.path === path);
+  if (fresh) {
+    element('picked').textContent = '';
+    viewport.fitted = false;
+  }
+  editor.dispatch({
+    changes: { from: 0, to: editor.state.doc.length, insert: text },
+    effects: language.reconfigure(languageFor(path, reference)),
+  });
+  element('save').disabled = false;
+}
+
 // A stochastic building from the form and the seed: shown at once and opened in the editor under a
 // name of its own, not yet saved (save keeps it).
 async function randomBuilding() {
@@ -225,18 +244,7 @@ async function randomBuilding() {
     setStatus(`random: ${answer.output.split('\n')[0]}`);
     return;
   }
-  const path = `random_${query.get('shape')}_${query.get('seed')}.bldg`;
-  state.path = path;
-  state.saved = null; // not on disk yet
-  element('picked').textContent = '';
-  element('current').textContent = `${path} (not saved)`;
-  for (const row of element('files').children) row.classList.remove('open');
-  viewport.fitted = false;
-  editor.dispatch({
-    changes: { from: 0, to: editor.state.doc.length, insert: answer.bldg },
-    effects: language.reconfigure(languageFor(path, reference)),
-  });
-  element('save').disabled = false;
+  openUnsaved(`random_${query.get('shape')}_${query.get('seed')}.bldg`, answer.bldg);
   state.lastRandom = answer;
 }
 
@@ -268,6 +276,15 @@ async function start() {
   element('save').onclick = save;
   element('export').onclick = () => exportResult().catch((error) => setStatus(String(error)));
   element('random-toggle').onclick = () => { element('random').hidden = !element('random').hidden; };
+  let drawing = null;
+  element('draw-toggle').onclick = () => {
+    const panel = element('draw');
+    panel.hidden = !panel.hidden;
+    if (!panel.hidden && !drawing) {
+      drawing = new DrawingTool(panel, (name, text) => openUnsaved(`${name}.bldg`, text));
+      state.drawing = drawing;
+    }
+  };
   element('random').onsubmit = (event) => {
     event.preventDefault();
     randomBuilding().catch((error) => setStatus(String(error)));
