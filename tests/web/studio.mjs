@@ -156,6 +156,10 @@ try {
   await page.locator('#plan path[data-room="kitchen"]').first().click({ force: true });
   check((await page.locator('#picked').textContent()).startsWith('kitchen, '), 'a click on the kitchen');
   const whole = await page.locator('#viewport').screenshot();
+  await page.locator('#roofs').uncheck();
+  const roofless = await page.locator('#viewport').screenshot();
+  check(!whole.equals(roofless), 'hiding the roofs does not change the view');
+  await page.locator('#roofs').check();
   await page.locator('#cut').fill('0.45');
   const opened = await page.locator('#viewport').screenshot();
   check(!whole.equals(opened), 'the cut does not change the view');

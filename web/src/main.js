@@ -295,6 +295,7 @@ async function start() {
   };
   element('seed').onchange = () => edited();
   element('cut').oninput = () => viewport.cut(Number(element('cut').value));
+  element('roofs').onchange = () => viewport.showRoofs(element('roofs').checked);
   element('next-seed').onclick = () => {
     element('seed').value = String(Number(element('seed').value || 0) + 1);
     edited();

@@ -14,6 +14,7 @@ export class Viewport {
     this.cutPlane = new THREE.Plane(new THREE.Vector3(0, -1, 0), Infinity);
     this.renderer.clippingPlanes = [this.cutPlane];
     this.cutFraction = 1;
+    this.roofsShown = true;
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(0xdfe6ec);
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x8a8f80, 2.2));
@@ -63,8 +64,20 @@ export class Viewport {
     this.model.traverse((o) => { if (o.isMesh) ++meshes; });
     if (!this.fitted) this.fit();
     this.bounds = new THREE.Box3().setFromObject(this.model);
+    this.showRoofs(this.roofsShown);
     this.cut(this.cutFraction);
     return meshes;
+  }
+
+  // Shows or hides the roofs: the meshes of materials named as roofs (the semantic class
+  // RoofSurface that mass models and .bldg buildings use, a CGA material named "roof ...").
+  showRoofs(shown) {
+    this.roofsShown = shown;
+    if (!this.model) return;
+    this.model.traverse((o) => {
+      if (o.isMesh && o.material && /roof/i.test(o.material.name || '')) o.visible = shown;
+    });
+    this.render();
   }
 
   // Hides what stands above `fraction` of the model's height (1: nothing hidden).
