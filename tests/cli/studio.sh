@@ -44,6 +44,28 @@ code=$(curl -s -o /dev/null -w '%{http_code}' -X PUT --data-binary x "$(q "/api/
 [ "$code" = 403 ] || fail "saving outside: $code"
 [ -e "$tmp/evil.cga" ] && fail "a file was written outside the folder"
 
+# Found by review: the folder itself, a NUL cutting the name short, a huge model number, an
+# exports/ link leading out, a file name that is not UTF-8.
+code=$(curl -s -o /dev/null -w '%{http_code}' -X POST --data-binary x "$(q "/api/check?path=.")")
+[ "$code" = 403 ] || fail "checking the folder itself: $code"
+ls -A "$tmp" | grep -q '^\.studio' && fail "a draft was written beside the folder"
+code=$(curl -s -o /dev/null -w '%{http_code}' -X PUT --data-binary x "$(q "/api/file?path=.bashrc%00.cga")")
+[ "$code" = 403 ] || fail "a NUL in the path: $code"
+[ -e "$tmp/work/.bashrc" ] && fail "a NUL in the path wrote .bashrc"
+code=$(curl -s -o /dev/null -w '%{http_code}' "$(q "/api/model/99999999999999999999999.glb")")
+[ "$code" = 404 ] || fail "a huge model number: $code"
+mkdir "$tmp/outside_exports"
+ln -s "$tmp/outside_exports" "$tmp/work/exports"
+code=$(curl -s -o /dev/null -w '%{http_code}' -X POST --data-binary @"$tmp/work/building.cga" \
+  "$(q "/api/export?path=building.cga&format=obj")")
+[ "$code" = 403 ] || fail "exporting through a link out: $code"
+[ -z "$(ls -A "$tmp/outside_exports")" ] || fail "an export was written outside the folder"
+rm "$tmp/work/exports"
+printf 'x' >"$tmp/work/$(printf '\xff').cga"
+code=$(curl -s -o /dev/null -w '%{http_code}' "$(q "/api/files")")
+[ "$code" = 200 ] || fail "a file name that is not UTF-8 breaks the list: $code"
+rm "$tmp/work/$(printf '\xff').cga"
+
 # Listing and reading.
 curl -s -o "$tmp/files.json" "$(q "/api/files")"
 node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));

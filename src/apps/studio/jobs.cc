@@ -1,8 +1,11 @@
 #include "apps/studio/jobs.h"
 
 #include <fcntl.h>
+#include <linux/close_range.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -20,11 +23,21 @@ Jobs::Jobs(fs::path executable, JobLimits limits)
 
 void Jobs::start(const std::string& key, pid_t pid) {
   std::lock_guard lock(mutex_);
+  if (stopping_) kill(-pid, SIGKILL);
   const auto [it, added] = running_.try_emplace(key, pid);
   if (!added) {
     cancelled_.insert(it->second);
     kill(-it->second, SIGKILL);  // its process group: the build and anything it started
     it->second = pid;
+  }
+}
+
+void Jobs::stop_all() {
+  std::lock_guard lock(mutex_);
+  stopping_ = true;
+  for (const auto& [key, pid] : running_) {
+    cancelled_.insert(pid);
+    kill(-pid, SIGKILL);
   }
 }
 
@@ -59,10 +72,13 @@ JobResult Jobs::run(const std::string& key, const std::vector<std::string>& args
   }
   if (pid == 0) {
     setpgid(0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);  // the server gone, the build goes too
+    if (getppid() == 1) _exit(126);
     const int fd = open(log_name.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
     if (fd < 0 || chdir(folder_name.c_str()) != 0) _exit(126);
     dup2(fd, STDOUT_FILENO);
     dup2(fd, STDERR_FILENO);
+    syscall(SYS_close_range, 3U, ~0U, 0U);  // not the server's sockets
     if (memory.rlim_cur > 0) setrlimit(RLIMIT_AS, &memory);
     execv(argv[0], argv.data());
     _exit(127);

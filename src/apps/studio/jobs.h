@@ -42,6 +42,9 @@ class Jobs {
   JobResult run(const std::string& key, const std::vector<std::string>& args,
                 const std::filesystem::path& folder);
 
+  // Kills every running job and every job started from now on (the server is stopping).
+  void stop_all();
+
  private:
   // Registers `pid` under `key`, killing the job it supersedes.
   void start(const std::string& key, pid_t pid);
@@ -52,6 +55,7 @@ class Jobs {
   std::mutex mutex_;
   std::map<std::string, pid_t> running_;
   std::set<pid_t> cancelled_;
+  bool stopping_ = false;
 };
 
 }  // namespace insula::studio

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <charconv>
 #include <cstdio>
 #include <deque>
 #include <fstream>
@@ -60,9 +61,59 @@ std::string random_token() {
 constexpr const char* kJson = "application/json; charset=utf-8";
 constexpr const char* kFileText = "application/octet-stream";
 
+// Text that is not UTF-8 (a file name, a build's output) is shown with replacement characters
+// rather than failing the answer.
+std::string json_text(const Json& body) {
+  return body.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
 void reply_json(httplib::Response& response, const Json& body, int status = 200) {
   response.status = status;
-  response.set_content(body.dump(), kJson);
+  response.set_content(json_text(body), kJson);
+}
+
+// A temporary folder for a job's outputs, removed with it.
+struct TempFolder {
+  fs::path path = fs::temp_directory_path() / ("insula-studio-" + random_token());
+  TempFolder() {
+    std::error_code ignored;
+    fs::create_directories(path, ignored);
+  }
+  ~TempFolder() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+  TempFolder(const TempFolder&) = delete;
+  TempFolder& operator=(const TempFolder&) = delete;
+};
+
+// One of the few checks and builds that may run at once (each holds a server thread until its
+// child ends), or none when they are all taken.
+class JobSlot {
+ public:
+  static constexpr int kJobs = 3;
+  explicit JobSlot(std::atomic<int>& running) : running_(running) {
+    taken_ = running_.fetch_add(1) < kJobs;
+    if (!taken_) running_.fetch_sub(1);
+  }
+  ~JobSlot() {
+    if (taken_) running_.fetch_sub(1);
+  }
+  JobSlot(const JobSlot&) = delete;
+  JobSlot& operator=(const JobSlot&) = delete;
+  bool taken() const { return taken_; }
+
+ private:
+  std::atomic<int>& running_;
+  bool taken_ = false;
+};
+
+// A number of a diagnostic line, or nullopt when it is none (or too large).
+std::optional<int> line_number(const std::string& text) {
+  int value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
 }
 
 void refuse(httplib::Response& response, int status, const std::string& why) {
@@ -121,9 +172,12 @@ Json diagnostics_of(const std::string& output) {
   for (std::string line; std::getline(lines, line);) {
     std::smatch m;
     if (!std::regex_match(line, m, kLine)) continue;
+    const std::optional<int> row = line_number(m[2].str());
+    const std::optional<int> column = line_number(m[3].str());
+    if (!row || !column) continue;
     out.push_back({{"file", m[1].str()},
-                   {"line", std::stoi(m[2].str())},
-                   {"column", std::stoi(m[3].str())},
+                   {"line", *row},
+                   {"column", *column},
                    {"severity", m[4].str()},
                    {"code", m[5].str()},
                    {"message", m[6].str()}});
@@ -136,20 +190,24 @@ class Studio {
   Studio(const StudioOptions& options, Workspace workspace)
       : options_(options), workspace_(std::move(workspace)), jobs_(options.executable, {}) {}
 
+  void listening_on(int port) { port_ = port; }
+  void stop_jobs() { jobs_.stop_all(); }
+
   void routes(httplib::Server& server) {
     server.set_payload_max_length(kMaxBody);
-    server.set_pre_routing_handler([this](const httplib::Request& request,
-                                          httplib::Response& response) {
-      if (request.get_param_value("token") == options_.token) {
-        // The page's own files (its script, its style) then come with the cookie.
-        response.set_header(
-            "Set-Cookie", "insula_token=" + options_.token + "; HttpOnly; SameSite=Strict; Path=/");
-        return httplib::Server::HandlerResponse::Unhandled;
-      }
-      if (authorized(request)) return httplib::Server::HandlerResponse::Unhandled;
-      refuse(response, 403, "a request without the studio's token");
-      return httplib::Server::HandlerResponse::Handled;
-    });
+    server.set_pre_routing_handler(
+        [this](const httplib::Request& request, httplib::Response& response) {
+          if (request.get_param_value("token") == options_.token) {
+            // The page's own files (its script, its style) then come with the cookie.
+            // (Named after the port: browsers send a host's cookies to all its ports.)
+            response.set_header("Set-Cookie", cookie_name() + "=" + options_.token +
+                                                  "; HttpOnly; SameSite=Strict; Path=/");
+            return httplib::Server::HandlerResponse::Unhandled;
+          }
+          if (authorized(request)) return httplib::Server::HandlerResponse::Unhandled;
+          refuse(response, 403, "a request without the studio's token");
+          return httplib::Server::HandlerResponse::Handled;
+        });
     server.Get("/api/files", [this](const httplib::Request&, httplib::Response& response) {
       Json files = Json::array();
       for (const Workspace::Entry& e : workspace_.files()) {
@@ -162,7 +220,7 @@ class Studio {
                   random_building(request, response);
                 });
     server.Get("/api/reference", [](const httplib::Request&, httplib::Response& response) {
-      static const std::string reference = reference_json().dump();
+      static const std::string reference = json_text(reference_json());
       response.set_content(reference, kJson);
     });
     server.Get("/api/file", [this](const httplib::Request& request, httplib::Response& response) {
@@ -190,7 +248,7 @@ class Studio {
                 [this](const httplib::Request& request, httplib::Response& response) {
                   run_job(request, response, Job::kExport);
                 });
-    server.Get(R"(/api/model/(\d+)\.(glb|svg))",
+    server.Get(R"(/api/model/(\d{1,18})\.(glb|svg))",
                [this](const httplib::Request& request, httplib::Response& response) {
                  const bool glb = request.matches[2].str() == "glb";
                  const std::string bytes = built_file(std::stoull(request.matches[1].str()), glb);
@@ -207,11 +265,18 @@ class Studio {
   }
 
  private:
+  std::string cookie_name() const { return "insula_token_" + std::to_string(port_); }
+
   // The token as a header (the page's API calls) or as the cookie set with the page.
   bool authorized(const httplib::Request& request) const {
     if (request.get_header_value("X-Insula-Token") == options_.token) return true;
-    const std::string cookies = "; " + request.get_header_value("Cookie");
-    return cookies.find("; insula_token=" + options_.token) != std::string::npos;
+    const std::string wanted = cookie_name() + "=" + options_.token;
+    std::istringstream cookies(request.get_header_value("Cookie"));
+    for (std::string cookie; std::getline(cookies, cookie, ';');) {
+      const std::size_t start = cookie.find_first_not_of(' ');
+      if (start != std::string::npos && cookie.substr(start) == wanted) return true;
+    }
+    return false;
   }
 
   std::optional<fs::path> file_of(const httplib::Request& request, httplib::Response& response) {
@@ -229,23 +294,35 @@ class Studio {
   void run_job(const httplib::Request& request, httplib::Response& response, Job kind) {
     const std::optional<fs::path> path = file_of(request, response);
     if (!path) return;
+    if (!is_studio_file(*path) || fs::is_directory(*path)) {
+      return refuse(response, 400, "not a file the studio builds");
+    }
     const std::string shown = request.get_param_value("path");
-    std::vector<std::string> outputs;  // export: the files to write
+    const JobSlot slot(running_jobs_);
+    if (!slot.taken()) return refuse(response, 503, "busy: too many checks and builds at once");
+    std::optional<fs::path> exported;  // the export's file
     if (kind == Job::kExport) {
       const std::string format = request.get_param_value("format");
       if (std::find(kExportFormats.begin(), kExportFormats.end(), format) == kExportFormats.end()) {
         return refuse(response, 400, "unknown export format '" + format + "'");
       }
-      outputs.push_back("exports/" + stem_of(*path) + "." + format);
+      // Resolved like any request path: an `exports` link leading out is refused.
+      std::string why;
+      exported = workspace_.resolve("exports/" + stem_of(*path) + "." + format, why);
+      std::error_code error;
+      if (exported) fs::create_directories(exported->parent_path(), error);
+      if (!exported || error || !fs::is_directory(exported->parent_path())) {
+        return refuse(response, 403, "refused: exports/ " + (exported ? "is not a folder" : why));
+      }
     }
     const Draft draft(*path, request.body);
     if (!draft.error().empty()) return refuse(response, 500, draft.error());
     const bool footprints = is_footprint_file(*path);
     std::vector<std::string> args{kind == Job::kCheck ? "check" : (footprints ? "mass" : "build"),
                                   draft.path().filename().string()};
-    const fs::path out = fs::temp_directory_path() / ("insula-studio-" + random_token());
+    const TempFolder temp;
+    const fs::path& out = temp.path;
     if (kind != Job::kCheck) {
-      fs::create_directories(out);
       args.insert(args.end(), {"--report", (out / "report.json").string(), "--quiet"});
       if (kind == Job::kBuild) {
         args.insert(args.end(), {"-o", (out / "model.glb").string()});
@@ -255,20 +332,16 @@ class Studio {
           args.insert(args.end(), {"--gltf-nodes", "scene"});
         }
         // A .bldg building's floor plans, storey by storey, beside the model.
-        if (path->extension() == ".bldg")
+        if (path->extension() == ".bldg") {
           args.insert(args.end(), {"-o", (out / "plan.svg").string()});
+        }
       } else {
-        fs::create_directories(workspace_.root() / "exports");
-        for (const std::string& o : outputs)
-          args.insert(args.end(), {"-o", (workspace_.root() / o).string()});
+        args.insert(args.end(), {"-o", exported->string()});
       }
       if (request.has_param("lot") && !footprints) {
         std::string why;
         const std::optional<fs::path> lot = workspace_.resolve(request.get_param_value("lot"), why);
-        if (!lot) {
-          fs::remove_all(out);
-          return refuse(response, 403, "refused: lot " + why);
-        }
+        if (!lot) return refuse(response, 403, "refused: lot " + why);
         args.insert(args.end(), {"--lot", lot->string()});
       }
       if (request.has_param("seed") && !footprints) {
@@ -276,7 +349,8 @@ class Studio {
       }
     }
     const char* key = kind == Job::kCheck ? "check:" : kind == Job::kBuild ? "build:" : "export:";
-    const JobResult job = jobs_.run(key + shown, args, draft.path().parent_path());
+    // Keyed by the resolved file, so `a` and `./a` are one file whose newer edit cancels.
+    const JobResult job = jobs_.run(key + path->string(), args, draft.path().parent_path());
     const std::string output = as_shown(job.output, draft.path().filename().string(), shown);
     Json body = {{"exit", job.exit_code},
                  {"cancelled", job.cancelled},
@@ -295,10 +369,24 @@ class Studio {
       body["model"] = "/api/model/" + std::to_string(id) + ".glb";
       if (plan) body["plan"] = "/api/model/" + std::to_string(id) + ".svg";
     }
-    if (kind == Job::kExport && job.exit_code == 0) body["files"] = written(outputs);
-    std::error_code ignored;
-    fs::remove_all(out, ignored);
+    if (kind == Job::kExport && job.exit_code == 0) body["files"] = written(*exported);
     reply_json(response, body);
+  }
+
+  // The exported file and what the writers put beside it (an OBJ's .mtl and origin), as the
+  // folder's relative paths.
+  Json written(const fs::path& file) const {
+    Json files = Json::array();
+    const std::string name = file.filename().string();
+    const std::string stem = name.substr(0, name.find('.'));
+    std::error_code error;
+    for (const fs::directory_entry& e : fs::directory_iterator(file.parent_path(), error)) {
+      if (e.path().filename().string().starts_with(stem + ".")) {
+        files.push_back(e.path().lexically_relative(workspace_.root()).generic_string());
+      }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
   }
 
   // A stochastic building (seed 000 §4.3, `insula random --count 1`): its grammar and its model,
@@ -323,7 +411,10 @@ class Studio {
                     "random: seed, shape (L U T H convex), parts, rooms (MIN-MAX) "
                     "or room_list (types, comma-separated) not understood");
     }
-    const fs::path out = fs::temp_directory_path() / ("insula-studio-" + random_token());
+    const JobSlot slot(running_jobs_);
+    if (!slot.taken()) return refuse(response, 503, "busy: too many checks and builds at once");
+    const TempFolder temp;
+    const fs::path out = temp.path / "random";
     args.insert(args.end(), {"-o", out.string()});
     const JobResult job = jobs_.run("random", args, workspace_.root());
     Json body = {{"exit", job.exit_code},
@@ -335,27 +426,7 @@ class Studio {
       const std::uint64_t id = keep_build({read_text(out / "building_000.glb"), ""});
       body["model"] = "/api/model/" + std::to_string(id) + ".glb";
     }
-    std::error_code ignored;
-    fs::remove_all(out, ignored);
     reply_json(response, body);
-  }
-
-  // The exported files and what the writers put beside them (an OBJ's .mtl and origin), as the
-  // folder's relative paths.
-  Json written(const std::vector<std::string>& outputs) const {
-    Json files = Json::array();
-    for (const std::string& o : outputs) {
-      const fs::path file = workspace_.root() / o;
-      const std::string stem =
-          file.filename().string().substr(0, file.filename().string().find('.'));
-      for (const fs::directory_entry& e : fs::directory_iterator(file.parent_path())) {
-        if (e.path().filename().string().starts_with(stem + ".")) {
-          files.push_back(e.path().lexically_relative(workspace_.root()).generic_string());
-        }
-      }
-    }
-    std::sort(files.begin(), files.end());
-    return files;
   }
 
   struct Built {
@@ -381,6 +452,8 @@ class Studio {
   const StudioOptions& options_;
   Workspace workspace_;
   Jobs jobs_;
+  int port_ = 0;
+  std::atomic<int> running_jobs_{0};
   std::mutex builds_mutex_;
   std::deque<std::pair<std::uint64_t, Built>> builds_;
   std::uint64_t last_build_ = 0;
@@ -408,6 +481,7 @@ int serve(const StudioOptions& given) {
                  options.port);
     return 1;
   }
+  studio.listening_on(port);
   std::printf("insula studio: http://%s:%d/?token=%s\n", options.host.c_str(), port,
               options.token.c_str());
   std::fflush(stdout);
@@ -415,6 +489,7 @@ int serve(const StudioOptions& given) {
   std::thread watcher([&] {
     while (!done) {
       if (options.stop_requested && options.stop_requested()) {
+        studio.stop_jobs();  // a build in flight would hold its thread until it ends
         server.stop();
         return;
       }

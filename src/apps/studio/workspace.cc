@@ -36,6 +36,12 @@ std::optional<fs::path> Workspace::resolve(const std::string& relative, std::str
     why = "no path";
     return std::nullopt;
   }
+  // A NUL would end the name where the system reads it, after the checks read the whole.
+  if (std::any_of(relative.begin(), relative.end(),
+                  [](char c) { return static_cast<unsigned char>(c) < 0x20; })) {
+    why = "a path with control characters";
+    return std::nullopt;
+  }
   const fs::path given(relative);
   if (given.is_absolute() || given.has_root_name() || given.has_root_directory()) {
     why = "an absolute path";
@@ -50,8 +56,8 @@ std::optional<fs::path> Workspace::resolve(const std::string& relative, std::str
   // Symbolic links anywhere on the way are followed, then the result must still be inside.
   std::error_code error;
   const fs::path resolved = fs::weakly_canonical(root_ / given, error);
-  if (error || !inside(root_, resolved)) {
-    why = "a path leading out of the folder";
+  if (error || !inside(root_, resolved) || resolved == root_) {
+    why = resolved == root_ ? "the folder itself" : "a path leading out of the folder";
     return std::nullopt;
   }
   return resolved;
@@ -95,6 +101,12 @@ std::string Workspace::save(const fs::path& path, const std::string& text) {
     }
   }
   std::error_code error;
+  // The file keeps its permissions (the temporary was made with the default ones).
+  const fs::file_status before = fs::status(path, error);
+  if (!error && fs::is_regular_file(before)) {
+    fs::permissions(temporary, before.permissions(), error);
+  }
+  error.clear();
   fs::rename(temporary, path, error);
   if (error) {
     fs::remove(temporary, error);
