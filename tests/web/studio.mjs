@@ -225,6 +225,28 @@ try {
         'the saved drawing does not build with three rooms from the command line');
   await page.click('#draw-toggle');
 
+  // Round trip: the saved drawing opens again in the tool (outline and rooms as drawn); a new roof
+  // rewrites only the roof. A .bldg beyond the tool (two_storey's nested divisions) says why.
+  await page.click('#files div[data-path="drawn_house.bldg"]');
+  await waitBuild('return b.ok', 'the saved drawing opens');
+  await page.click('#draw-toggle');
+  check((await page.locator('#status').textContent()).startsWith('drawing drawn_house.bldg'),
+        `the tool did not load the drawing: ${await page.locator('#status').textContent()}`);
+  check(await page.locator('#draw .room-item').count() === 3, 'the loaded drawing has not 3 rooms');
+  sequence = await page.evaluate(() => window.studio.sequence);
+  await page.selectOption('#draw [name=roof]', 'Gable');
+  await waitBuild('return b.ok', 'the redrawn roof', sequence);
+  const redrawn = await page.evaluate(() => window.studio.editor.state.doc.toString());
+  check(redrawn === drawnText.replace('buildingpart(Hip,', 'buildingpart(Gable,'),
+        'the round trip changed more than the roof');
+  await page.click('#draw-toggle');
+  await page.click('#files div[data-path="two_storey.bldg"]');
+  await waitBuild('return b.ok', 'two_storey.bldg opens again');
+  await page.click('#draw-toggle');
+  check((await page.locator('#status').textContent()).includes('cannot show two_storey.bldg'),
+        'a .bldg beyond the tool is not refused with its reason');
+  await page.click('#draw-toggle');
+
   // Edit to view on the district (examples/cga/district.cga on its lots): a height changed.
   await page.goto(`${url}&open=district.cga`);
   await waitBuild('return b.ok', 'district.cga builds');

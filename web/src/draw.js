@@ -23,9 +23,25 @@ export class DrawingTool {
     this.onGrammar = onGrammar; // (name, text)
     this.outline = []; // [x, y] metres, counter-clockwise once closed
     this.closed = false;
+    this.initial = {};
     this.storeys = [{ rooms: [{ type: 'hall', size: 'medium' }],
                       direction: 'horizontal' }];
     this.render();
+  }
+
+  // Shows the drawing of `text` (drawingOf), keeping the file's name; returns why not, or ''.
+  load(text, path) {
+    const drawing = drawingOf(text);
+    if (drawing.why) return drawing.why;
+    this.outline = drawing.outline;
+    this.closed = true;
+    this.storeys = drawing.storeys;
+    this.initial = { name: drawing.name, roof: drawing.roof, roofHeight: String(drawing.roofHeight),
+                     storeyHeight: String(drawing.storeyHeight) };
+    this.path = path;
+    this.panel.innerHTML = '';
+    this.render();
+    return '';
   }
 
   // The .bldg text of what is drawn, or null while the outline is open.
@@ -97,10 +113,11 @@ export class DrawingTool {
     this.render();
   }
 
+  // A loaded file keeps its name; a new drawing is named after its building.
   changed() {
     const name = this.panel.querySelector('[name=name]').value || 'Drawn building';
     const text = this.grammar(name);
-    if (text) this.onGrammar(ruleName(name).toLowerCase(), text);
+    if (text) this.onGrammar(this.path || `${ruleName(name).toLowerCase()}.bldg`, text);
   }
 
   render() {
@@ -134,8 +151,10 @@ export class DrawingTool {
         <button type="button" name="add-room">+ room</button>
       </div>`).join('');
     const previous = (name, fallback) => this.panel.querySelector(`[name=${name}]`)?.value ?? fallback;
-    const values = { name: previous('name', 'Drawn building'), roof: previous('roof', 'Hip'),
-                     roofHeight: previous('roof-height', '2.5'), storeyHeight: previous('storey-height', '3') };
+    const values = { name: previous('name', this.initial.name ?? 'Drawn building'),
+                     roof: previous('roof', this.initial.roof ?? 'Hip'),
+                     roofHeight: previous('roof-height', this.initial.roofHeight ?? '2.5'),
+                     storeyHeight: previous('storey-height', this.initial.storeyHeight ?? '3') };
     this.panel.innerHTML = `
       <div class="draw-controls">
         <label>name <input name="name" value="${values.name.replace(/"/g, '&quot;')}"></label>
@@ -215,6 +234,63 @@ export class DrawingTool {
       }
     }
   }
+}
+
+// The drawing a `.bldg` text describes, when the tool can show it: one building with one outline
+// (no holes), one building part, its floors each holding rooms (directly or in one divisions
+// container). Returns { name, outline, roof, roofHeight, storeyHeight, storeys } or { why }.
+// Transitions are not read: the tool writes its own (doors room to room, the entrance, stairs).
+export function drawingOf(text) {
+  const rules = new Map();
+  for (const raw of text.split('\n')) {
+    const line = raw.replace(/#.*$/, '').trim();
+    const m = /^(\w+)\s*->\s*(\w+)\s*\((.*)\)\s*(?::\s*\{([^}]*)\})?\s*$/.exec(line);
+    if (!line) continue;
+    if (!m) return { why: `a rule the tool cannot read: ${line.slice(0, 60)}` };
+    rules.set(m[1], { kind: m[2], args: m[3], children: m[4] ? m[4].split(',').map((c) => c.trim()).filter(Boolean) : [] });
+  }
+  const buildings = [...rules.values()].filter((r) => r.kind === 'building');
+  if (buildings.length !== 1) return { why: 'not one building rule' };
+  const building = buildings[0];
+  const head = /^"([^"]*)"\s*,\s*\[([^\]]*)\]\s*(.*)$/.exec(building.args);
+  if (!head) return { why: 'the building has no outline of its own (a GeoJSON footprint?)' };
+  if (/\[/.test(head[3])) return { why: 'the outline has holes' };
+  const outline = [...head[2].matchAll(/\(\s*(-?[\d.]+)\s*,\s*(-?[\d.]+)\s*\)/g)].map((p) => [Number(p[1]), Number(p[2])]);
+  if (outline.length < 3) return { why: 'the outline has fewer than 3 corners' };
+  const parts = building.children.map((c) => rules.get(c)).filter((r) => r && r.kind !== 'door' &&
+    r.kind !== 'entrance' && r.kind !== 'stair' && r.kind !== 'window');
+  if (parts.length !== 1 || parts[0].kind !== 'buildingpart') return { why: 'more than one building part' };
+  const [roof, roofHeight] = parts[0].args.split(',').map((a) => a.trim());
+  let storeyHeight = null;
+  const storeys = [];
+  for (const floorName of parts[0].children) {
+    const floor = rules.get(floorName);
+    if (!floor || floor.kind !== 'floor') return { why: `${floorName} is not a floor` };
+    const args = floor.args.split(',').map((a) => a.trim()).filter(Boolean);
+    const height = args.find((a) => /^[\d.]+$/.test(a));
+    if (height && storeyHeight === null) storeyHeight = Number(height);
+    let direction = args.find((a) => a === 'horizontal' || a === 'vertical') || 'horizontal';
+    let roomNames = floor.children;
+    if (roomNames.length === 1 && rules.get(roomNames[0])?.kind === 'divisions') {
+      const divisions = rules.get(roomNames[0]);
+      direction = divisions.args.trim() || direction;
+      roomNames = divisions.children;
+    }
+    const rooms = [];
+    for (const roomName of roomNames) {
+      const room = rules.get(roomName);
+      if (!room || (room.kind !== 'room' && room.kind !== 'division')) {
+        return { why: `${roomName}: divisions inside divisions are not in the tool yet` };
+      }
+      const [type, size] = room.args.split(',').map((a) => a.trim());
+      rooms.push({ type, size: size || 'medium' });
+    }
+    if (rooms.length === 0) return { why: `${floorName} has no rooms` };
+    storeys.push({ rooms, direction });
+  }
+  if (storeys.length === 0) return { why: 'the building part has no floors' };
+  return { name: head[1], outline, roof, roofHeight: Number(roofHeight) || 0,
+           storeyHeight: storeyHeight || 3, storeys };
 }
 
 function orientedCounterClockwise(ring) {

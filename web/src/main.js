@@ -281,8 +281,20 @@ async function start() {
     const panel = element('draw');
     panel.hidden = !panel.hidden;
     if (!panel.hidden && !drawing) {
-      drawing = new DrawingTool(panel, (name, text) => openUnsaved(`${name}.bldg`, text));
+      drawing = new DrawingTool(panel, (path, text) => {
+        if (path === state.path) {
+          // The open file, redrawn: its text changes as an edit would change it.
+          editor.dispatch({ changes: { from: 0, to: editor.state.doc.length, insert: text } });
+        } else {
+          openUnsaved(path, text);
+        }
+      });
       state.drawing = drawing;
+    }
+    // An open .bldg the tool can show is drawn in it (else the tool says why not).
+    if (!panel.hidden && state.path && /\.bldg$/.test(state.path)) {
+      const why = drawing.load(editor.state.doc.toString(), state.path);
+      setStatus(why ? `the drawing tool cannot show ${state.path}: ${why}` : `drawing ${state.path}`);
     }
   };
   element('random').onsubmit = (event) => {
