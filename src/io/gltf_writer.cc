@@ -185,7 +185,7 @@ class Builder {
 Builder::Builder(const shape::Scene& scene, const GltfOptions& options)
     : scene_(scene),
       options_(options),
-      materials_(scene),
+      materials_(scene, options.by_class),
       views_(gltf::MeshViews::create(buffers_)) {
   reserve_views();
   add_images();

@@ -32,6 +32,7 @@ struct GltfOptions {
   Nodes nodes = Nodes::kBuilding;
   Instancing instancing = Instancing::kNodes;
   bool quantize = true;   // KHR_mesh_quantization where the error stays under 1 mm
+  bool by_class = false;  // materials by semantic class (MaterialTable), not the faces' own
   bool compress = false;  // EXT_meshopt_compression
 };
 

@@ -136,8 +136,9 @@ std::string safe_name(std::string_view name, std::string_view fallback) {
   return out;
 }
 
-MaterialTable::MaterialTable(const shape::Scene& scene)
-    : scene_material_count_(scene.materials.size()),
+MaterialTable::MaterialTable(const shape::Scene& scene, bool by_class)
+    : by_class_(by_class),
+      scene_material_count_(scene.materials.size()),
       index_by_key_(scene_material_count_ + kKeysPerClass, kNone) {
   std::vector<bool> used_keys(index_by_key_.size(), false);
   for (const shape::Building& building : scene.buildings) {
@@ -167,7 +168,7 @@ MaterialTable::MaterialTable(const shape::Scene& scene)
 
 // Scene materials keep their id; faces showing a class default get scene size + class index.
 std::uint32_t MaterialTable::key(const kernel::FaceTag& tag) const {
-  if (tag.material != 0 && tag.material < scene_material_count_) return tag.material;
+  if (!by_class_ && tag.material != 0 && tag.material < scene_material_count_) return tag.material;
   return static_cast<std::uint32_t>(scene_material_count_) +
          static_cast<std::uint32_t>(tag.semantic);
 }

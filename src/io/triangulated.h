@@ -57,7 +57,9 @@ std::string safe_name(std::string_view name, std::string_view fallback);
 // (by class). Names are made safe and unique ("roof", "roof_2", ...).
 class MaterialTable {
  public:
-  explicit MaterialTable(const shape::Scene& scene);
+  // `by_class`: every face shows its semantic class's default colour (walls, roofs, windows...),
+  // whatever material it was given: a view of what each face is.
+  explicit MaterialTable(const shape::Scene& scene, bool by_class = false);
 
   // Index into materials() of the material a face with `tag` shows.
   std::uint32_t index(const kernel::FaceTag& tag) const;
@@ -71,6 +73,7 @@ class MaterialTable {
 
   std::uint32_t key(const kernel::FaceTag& tag) const;
 
+  bool by_class_ = false;
   std::size_t scene_material_count_ = 0;
   std::vector<std::uint32_t> index_by_key_;  // by key(); kNone for keys no face uses
   std::vector<shape::Material> materials_;

@@ -1,5 +1,6 @@
 // glTF writer: the .glb is read back with tinygltf's loader (an independent reader) and checked for
 // node names, triangle counts, extras, Y-up positions, flat normals and concave-face triangulation.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -305,6 +306,25 @@ TEST(GltfWriter, SceneLayoutKeepsBuildingsAsFeatures) {
   // Box & Co's name is the first building's attribute; the second building has none.
   EXPECT_EQ(table_column(model, json, "name_2"),
             (std::vector<std::string>{"Box & <Co> \"1\"", "", ""}));
+}
+
+// --gltf-colours class: every face shows its semantic class's colour, whatever material it has.
+TEST(GltfWriter, ColoursByClassIgnoreTheFacesOwnMaterials) {
+  GltfOptions options;
+  options.by_class = true;
+  const tinygltf::Model own = load_glb(glb_bytes(test_scene()));
+  const tinygltf::Model by_class = load_glb(glb_bytes(test_scene(), options));
+  const auto names = [](const tinygltf::Model& model) {
+    std::vector<std::string> out;
+    for (const tinygltf::Material& m : model.materials) out.push_back(m.name);
+    return out;
+  };
+  const std::vector<std::string> own_names = names(own);
+  EXPECT_NE(std::find(own_names.begin(), own_names.end(), "Tile_red"), own_names.end());
+  for (const std::string& name : names(by_class)) {
+    EXPECT_TRUE(name.ends_with("Surface")) << name;
+  }
+  EXPECT_EQ(triangle_count(own), triangle_count(by_class));
 }
 
 TEST(GltfWriter, PositionsAreLocalYUpAndQuantizedWithinAMillimetre) {

@@ -160,6 +160,13 @@ try {
   const roofless = await page.locator('#viewport').screenshot();
   check(!whole.equals(roofless), 'hiding the roofs does not change the view');
   await page.locator('#roofs').check();
+  sequence = await page.evaluate(() => window.studio.sequence);
+  await page.locator('#by-class').check();
+  await waitBuild('return b.ok', 'colours by class', sequence);
+  const byClass = await page.locator('#viewport').screenshot();
+  check(!whole.equals(byClass), 'colours by class do not change the view');
+  await page.locator('#by-class').uncheck();
+  await waitBuild('return b.ok', 'colours by material again', sequence + 1);
   await page.locator('#cut').fill('0.45');
   const opened = await page.locator('#viewport').screenshot();
   check(!whole.equals(opened), 'the cut does not change the view');

@@ -98,6 +98,7 @@ function showDiagnostics(diagnostics) {
 function buildQuery() {
   const query = new URLSearchParams({ path: state.path, seed: element('seed').value || '0' });
   if (element('lot').value) query.set('lot', element('lot').value);
+  if (element('by-class').checked) query.set('colours', 'class');
   return query;
 }
 
@@ -308,6 +309,7 @@ async function start() {
   element('seed').onchange = () => edited();
   element('cut').oninput = () => viewport.cut(Number(element('cut').value));
   element('roofs').onchange = () => viewport.showRoofs(element('roofs').checked);
+  element('by-class').onchange = () => edited();
   element('next-seed').onclick = () => {
     element('seed').value = String(Number(element('seed').value || 0) + 1);
     edited();

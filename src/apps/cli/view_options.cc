@@ -85,6 +85,14 @@ void add_view_options(CLI::App& command, io::OutputOptions& output) {
       ->type_name("building|element|scene");
   command
       .add_option_function<std::string>(
+          "--gltf-colours",
+          [&output](const std::string& colours) { output.gltf.by_class = colours == "class"; },
+          "GLB/glTF colours: material (each face's own; the default) or class (each face's "
+          "semantic class: walls, roofs, windows, doors...)")
+      ->check(CLI::IsMember({"material", "class"}))
+      ->type_name("material|class");
+  command
+      .add_option_function<std::string>(
           "--gltf-instancing",
           [&output](const std::string& form) {
             output.gltf.instancing = form == "gpu" ? io::GltfOptions::Instancing::kGpu

@@ -331,6 +331,10 @@ class Studio {
         if (footprints || request.has_param("lot")) {
           args.insert(args.end(), {"--gltf-nodes", "scene"});
         }
+        // Colours by semantic class (walls, roofs, windows...) rather than the faces' own.
+        if (request.get_param_value("colours") == "class") {
+          args.insert(args.end(), {"--gltf-colours", "class"});
+        }
         // A .bldg building's floor plans, storey by storey, beside the model.
         if (path->extension() == ".bldg") {
           args.insert(args.end(), {"-o", (out / "plan.svg").string()});
