@@ -241,11 +241,25 @@ try {
         `the tool did not load the drawing: ${await page.locator('#status').textContent()}`);
   check(await page.locator('#draw .room-item').count() === 3, 'the loaded drawing has not 3 rooms');
   sequence = await page.evaluate(() => window.studio.sequence);
-  await page.selectOption('#draw [name=roof]', 'Gable');
+  await page.selectOption('#draw [name=part-roof]', 'Gable');
   await waitBuild('return b.ok', 'the redrawn roof', sequence);
   const redrawn = await page.evaluate(() => window.studio.editor.state.doc.toString());
   check(redrawn === drawnText.replace('buildingpart(Hip,', 'buildingpart(Gable,'),
         'the round trip changed more than the roof');
+  // A second, disposable part (roof height 0: the paper's fake-concave notch): the parts share
+  // the outline, the notch's rooms go, the building keeps its three rooms.
+  sequence = await page.evaluate(() => window.studio.sequence);
+  await page.click('#draw [name=add-part]');
+  await page.fill('#draw .part-block[data-part="1"] [name=part-roof-height]', '0');
+  await page.dispatchEvent('#draw .part-block[data-part="1"] [name=part-roof-height]', 'change');
+  await waitBuild('return b.ok', 'two parts, one disposable', sequence);
+  const twoParts = await page.evaluate(() => window.studio.editor.state.doc.toString());
+  check(twoParts.includes('parts -> buildingparts(vertical) : {part0, part1}') &&
+        twoParts.includes('part1 -> buildingpart(Hip, 0)'), `the two parts' grammar: ${twoParts.slice(0, 300)}`);
+  const keptRooms = await page.evaluate(() => window.studio.lastBuild.report.rooms.map((r) => r.name));
+  check(keptRooms.length === 3 && keptRooms.every((n) => n.endsWith(`_0_0_${n.slice(-1)}`)),
+        `the disposable part's rooms stay: ${keptRooms.join(', ')}`);
+  await page.screenshot({ path: path.join(out, 'studio_parts.png') });
   await page.click('#draw-toggle');
   await page.click('#files div[data-path="two_storey.bldg"]');
   await waitBuild('return b.ok', 'two_storey.bldg opens again');

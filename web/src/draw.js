@@ -1,10 +1,13 @@
-// Drawing a building (seed 000 §3.6), first part: the outline is drawn on a snapping grid (click
-// to add a corner, click the first corner or "close" to finish; drag a corner to move it), the
-// building part gets a roof type, a roof height and its storeys, and each storey a list of rooms
-// (type and size) split along one direction. The tool writes the `.bldg` grammar from these
-// choices only (no free text), so what it writes always parses; doors join each room to the next,
-// the first room of the ground floor gets the entrance, and a stair joins the first rooms of
-// consecutive storeys. The grammar opens in the editor as a new file and builds as usual.
+// Drawing a building (seed 000 §3.6): the outline is drawn on a snapping grid (click to add a
+// corner, click the first corner or "close" to finish; drag a corner to move it); the building is
+// made of building parts side by side along one direction (each with a roof type and a roof
+// height: height 0 makes a disposable part, a notch in the final building, the paper's
+// "fake-concave"), each part of storeys, each storey of rooms (type and size) split along one
+// direction. The tool writes the `.bldg` grammar from these choices only (no free text), so what it
+// writes always parses: doors join each room to the next and the first rooms of neighbouring parts,
+// the first room of the first part gets the entrance, and a stair joins the first rooms of
+// consecutive storeys. It opens the `.bldg` files it can represent (drawingOf). The grammar opens
+// in the editor as a file and builds as usual.
 
 const gridMetres = 0.5;
 const pixelsPerMetre = 12;
@@ -17,15 +20,18 @@ const sizes = ['small', 'medium', 'big'];
 const ruleName = (text) => text.replace(/[^A-Za-z0-9_]/g, '_').replace(/^(?=\d)/, 'r');
 const fixed = (x) => Number(x.toFixed(2)).toString();
 
+const newPart = () => ({ roof: 'Hip', roofHeight: 2.5,
+                         storeys: [{ rooms: [{ type: 'hall', size: 'medium' }], direction: 'horizontal' }] });
+
 export class DrawingTool {
   constructor(panel, onGrammar) {
     this.panel = panel;
-    this.onGrammar = onGrammar; // (name, text)
+    this.onGrammar = onGrammar; // (path, text)
     this.outline = []; // [x, y] metres, counter-clockwise once closed
     this.closed = false;
     this.initial = {};
-    this.storeys = [{ rooms: [{ type: 'hall', size: 'medium' }],
-                      direction: 'horizontal' }];
+    this.parts = [newPart()];
+    this.partsDirection = 'vertical';
     this.render();
   }
 
@@ -35,9 +41,9 @@ export class DrawingTool {
     if (drawing.why) return drawing.why;
     this.outline = drawing.outline;
     this.closed = true;
-    this.storeys = drawing.storeys;
-    this.initial = { name: drawing.name, roof: drawing.roof, roofHeight: String(drawing.roofHeight),
-                     storeyHeight: String(drawing.storeyHeight) };
+    this.parts = drawing.parts;
+    this.partsDirection = drawing.partsDirection;
+    this.initial = { name: drawing.name, storeyHeight: String(drawing.storeyHeight) };
     this.path = path;
     this.panel.innerHTML = '';
     this.render();
@@ -49,31 +55,43 @@ export class DrawingTool {
     if (!this.closed || this.outline.length < 3) return null;
     const ring = orientedCounterClockwise(this.outline)
       .map(([x, y]) => `(${fixed(x)}, ${fixed(y)})`).join(', ');
-    const roof = this.panel.querySelector('[name=roof]').value;
-    const roofHeight = Number(this.panel.querySelector('[name=roof-height]').value) || 0;
     const storeyHeight = Number(this.panel.querySelector('[name=storey-height]').value) || 3;
-    const lines = [];
     const rules = [];
-    const floors = this.storeys.map((_, s) => `floor${s}`);
     const transitions = [];
-    const roomName = (s, r) => `${ruleName(this.storeys[s].rooms[r].type)}_${s}_${r}`;
-    this.storeys.forEach((storey, s) => {
-      const rooms = storey.rooms.map((_, r) => roomName(s, r));
-      rules.push(`floor${s} -> floor(${fixed(storeyHeight)}, vertical) : {div${s}}`);
-      rules.push(`div${s} -> divisions(${storey.direction}) : {${rooms.join(', ')}}`);
-      storey.rooms.forEach((room, r) => {
-        rules.push(`${roomName(s, r)} -> room(${ruleName(room.type)}, ${room.size})`);
+    const roomName = (p, s, r) => `${ruleName(this.parts[p].storeys[s].rooms[r].type)}_${p}_${s}_${r}`;
+    // Disposable parts (height 0) are removed after the subdivision: nothing leads into them.
+    const kept = (p) => this.parts[p].roofHeight > 0 || this.parts[p].roof === 'None';
+    this.parts.forEach((part, p) => {
+      const floors = part.storeys.map((_, s) => `floor${p}_${s}`);
+      rules.push(`part${p} -> buildingpart(${part.roof}, ${fixed(part.roofHeight)}) : {${floors.join(', ')}}`);
+      part.storeys.forEach((storey, s) => {
+        const rooms = storey.rooms.map((_, r) => roomName(p, s, r));
+        rules.push(`floor${p}_${s} -> floor(${fixed(storeyHeight)}, vertical) : {div${p}_${s}}`);
+        rules.push(`div${p}_${s} -> divisions(${storey.direction}) : {${rooms.join(', ')}}`);
+        storey.rooms.forEach((room, r) => {
+          rules.push(`${roomName(p, s, r)} -> room(${ruleName(room.type)}, ${room.size})`);
+        });
+        if (!kept(p)) return;
+        for (let r = 1; r < rooms.length; ++r) {
+          transitions.push(`door${p}_${s}_${r} -> door(${rooms[r - 1]}, ${rooms[r]})`);
+        }
+        if (s > 0) transitions.push(`stair${p}_${s} -> stair(${roomName(p, s - 1, 0)}, ${roomName(p, s, 0)})`);
       });
-      for (let r = 1; r < rooms.length; ++r) {
-        transitions.push(`door${s}_${r} -> door(${rooms[r - 1]}, ${rooms[r]})`);
-      }
-      if (s > 0) transitions.push(`stair${s} -> stair(${roomName(s - 1, 0)}, ${roomName(s, 0)})`);
     });
-    transitions.unshift(`entrance0 -> entrance(${roomName(0, 0)})`);
+    const keptParts = this.parts.map((_, p) => p).filter(kept);
+    if (keptParts.length > 0) {
+      transitions.unshift(`entrance0 -> entrance(${roomName(keptParts[0], 0, 0)})`);
+    }
+    for (let k = 1; k < keptParts.length; ++k) {
+      transitions.push(`link${keptParts[k]} -> door(${roomName(keptParts[k - 1], 0, 0)}, ${roomName(keptParts[k], 0, 0)})`);
+    }
     const transitionNames = transitions.map((t) => t.split(' ')[0]);
-    lines.push('# Drawn in the Insula studio (seed 000 §3.6); docs/bldg-language.md');
-    lines.push(`building -> building("${name}", [${ring}]) : {part, ${transitionNames.join(', ')}}`);
-    lines.push(`part -> buildingpart(${roof}, ${fixed(roofHeight)}) : {${floors.join(', ')}}`);
+    const top = this.parts.length === 1 ? 'part0' : 'parts';
+    const lines = ['# Drawn in the Insula studio (seed 000 §3.6); docs/bldg-language.md',
+                   `building -> building("${name}", [${ring}]) : {${[top, ...transitionNames].join(', ')}}`];
+    if (this.parts.length > 1) {
+      lines.push(`parts -> buildingparts(${this.partsDirection}) : {${this.parts.map((_, p) => `part${p}`).join(', ')}}`);
+    }
     return [...lines, ...rules, ...transitions].join('\n') + '\n';
   }
 
@@ -138,36 +156,44 @@ export class DrawingTool {
       const [cx, cy] = p.split(',');
       return `<circle cx="${cx}" cy="${cy}" r="4" class="corner" data-corner="${i}"/>`;
     });
-    const storeyRows = this.storeys.map((storey, s) => `
-      <div class="storey-row" data-storey="${s}">
+    const option = (list, chosen) => list.map((v) => `<option ${v === chosen ? 'selected' : ''}>${v}</option>`).join('');
+    const storeyRow = (storey, p, s) => `
+      <div class="storey-row" data-part="${p}" data-storey="${s}">
         <b>storey ${s}</b>
-        <select name="direction">${['horizontal', 'vertical'].map((d) => `<option ${d === storey.direction ? 'selected' : ''}>${d}</option>`).join('')}</select>
+        <select name="direction">${option(['horizontal', 'vertical'], storey.direction)}</select>
         ${storey.rooms.map((room, r) => `
           <span class="room-item" data-room="${r}">
-            <select name="type">${roomTypes.map((t) => `<option ${t === room.type ? 'selected' : ''}>${t}</option>`).join('')}</select>
-            <select name="size">${sizes.map((z) => `<option ${z === room.size ? 'selected' : ''}>${z}</option>`).join('')}</select>
+            <select name="type">${option(roomTypes, room.type)}</select>
+            <select name="size">${option(sizes, room.size)}</select>
             <button type="button" name="remove-room" title="remove the room">×</button>
           </span>`).join('')}
         <button type="button" name="add-room">+ room</button>
+      </div>`;
+    const partBlocks = this.parts.map((part, p) => `
+      <div class="part-block" data-part="${p}">
+        <b>part ${p}</b>
+        <label>roof <select name="part-roof">${option(roofs, part.roof)}</select></label>
+        <label title="0: a disposable part, removed after the subdivision (a notch)">roof height
+          <input name="part-roof-height" type="number" min="0" step="0.5" value="${part.roofHeight}"></label>
+        <button type="button" name="add-storey">+ storey</button>
+        ${this.parts.length > 1 ? '<button type="button" name="remove-part">× part</button>' : ''}
+        ${part.storeys.map((storey, s) => storeyRow(storey, p, s)).join('')}
       </div>`).join('');
     const previous = (name, fallback) => this.panel.querySelector(`[name=${name}]`)?.value ?? fallback;
     const values = { name: previous('name', this.initial.name ?? 'Drawn building'),
-                     roof: previous('roof', this.initial.roof ?? 'Hip'),
-                     roofHeight: previous('roof-height', this.initial.roofHeight ?? '2.5'),
                      storeyHeight: previous('storey-height', this.initial.storeyHeight ?? '3') };
     this.panel.innerHTML = `
       <div class="draw-controls">
         <label>name <input name="name" value="${values.name.replace(/"/g, '&quot;')}"></label>
-        <label>roof <select name="roof">${roofs.map((r) => `<option ${r === values.roof ? 'selected' : ''}>${r}</option>`).join('')}</select></label>
-        <label>roof height <input name="roof-height" type="number" min="0" step="0.5" value="${values.roofHeight}"></label>
         <label>storey height <input name="storey-height" type="number" min="2" step="0.1" value="${values.storeyHeight}"></label>
+        <label>parts side by side <select name="parts-direction">${option(['vertical', 'horizontal'], this.partsDirection)}</select></label>
+        <button type="button" name="add-part">+ part</button>
         <button type="button" name="close" ${this.closed || this.outline.length < 3 ? 'disabled' : ''}>close outline</button>
         <button type="button" name="clear">clear</button>
-        <button type="button" name="add-storey">+ storey</button>
       </div>
       <svg width="${width}" height="${height}" class="draw-grid">${gridLines.join('')}${shape}${corners.join('')}</svg>
       <div class="draw-hint">${this.closed ? 'outline closed: drag a corner to move it' : 'click the grid to add corners (0.5 m steps); click the first corner to close'}</div>
-      ${storeyRows}`;
+      ${partBlocks}`;
     this.bind();
   }
 
@@ -203,23 +229,49 @@ export class DrawingTool {
     };
     on('[name=close]', 'click', () => this.close());
     on('[name=clear]', 'click', () => this.clear());
-    on('[name=add-storey]', 'click', () => {
-      this.storeys.push({ rooms: [{ type: 'landing', size: 'medium' }, { type: 'bedroom', size: 'medium' }],
-                          direction: 'horizontal' });
+    const redraw = () => {
       this.render();
       this.changed();
+    };
+    on('[name=add-part]', 'click', () => {
+      this.parts.push(newPart());
+      redraw();
     });
-    on('.draw-controls input, .draw-controls select', 'change', () => this.changed());
+    on('[name=parts-direction]', 'change', (e) => {
+      this.partsDirection = e.target.value;
+      this.changed();
+    });
+    on('.draw-controls input', 'change', () => this.changed());
+    for (const block of this.panel.querySelectorAll('.part-block')) {
+      const p = Number(block.dataset.part);
+      const part = this.parts[p];
+      block.querySelector('[name=part-roof]').addEventListener('change', (e) => {
+        part.roof = e.target.value;
+        this.changed();
+      });
+      block.querySelector('[name=part-roof-height]').addEventListener('change', (e) => {
+        part.roofHeight = Math.max(0, Number(e.target.value) || 0);
+        this.changed();
+      });
+      block.querySelector('[name=add-storey]').addEventListener('click', () => {
+        part.storeys.push({ rooms: [{ type: 'landing', size: 'medium' }, { type: 'bedroom', size: 'medium' }],
+                            direction: 'horizontal' });
+        redraw();
+      });
+      block.querySelector('[name=remove-part]')?.addEventListener('click', () => {
+        this.parts.splice(p, 1);
+        redraw();
+      });
+    }
     for (const row of this.panel.querySelectorAll('.storey-row')) {
-      const storey = this.storeys[Number(row.dataset.storey)];
+      const storey = this.parts[Number(row.dataset.part)].storeys[Number(row.dataset.storey)];
       row.querySelector('[name=direction]').addEventListener('change', (e) => {
         storey.direction = e.target.value;
         this.changed();
       });
       row.querySelector('[name=add-room]').addEventListener('click', () => {
         storey.rooms.push({ type: 'bedroom', size: 'medium' });
-        this.render();
-        this.changed();
+        redraw();
       });
       for (const item of row.querySelectorAll('.room-item')) {
         const room = storey.rooms[Number(item.dataset.room)];
@@ -228,8 +280,7 @@ export class DrawingTool {
         item.querySelector('[name=remove-room]').addEventListener('click', () => {
           if (storey.rooms.length <= 1) return;
           storey.rooms.splice(Number(item.dataset.room), 1);
-          this.render();
-          this.changed();
+          redraw();
         });
       }
     }
@@ -237,8 +288,9 @@ export class DrawingTool {
 }
 
 // The drawing a `.bldg` text describes, when the tool can show it: one building with one outline
-// (no holes), one building part, its floors each holding rooms (directly or in one divisions
-// container). Returns { name, outline, roof, roofHeight, storeyHeight, storeys } or { why }.
+// (no holes), one building part or one container of building parts, their floors each holding
+// rooms (directly or in one divisions container). Returns { name, outline, parts,
+// partsDirection, storeyHeight } or { why }.
 // Transitions are not read: the tool writes its own (doors room to room, the entrance, stairs).
 export function drawingOf(text) {
   const rules = new Map();
@@ -257,40 +309,52 @@ export function drawingOf(text) {
   if (/\[/.test(head[3])) return { why: 'the outline has holes' };
   const outline = [...head[2].matchAll(/\(\s*(-?[\d.]+)\s*,\s*(-?[\d.]+)\s*\)/g)].map((p) => [Number(p[1]), Number(p[2])]);
   if (outline.length < 3) return { why: 'the outline has fewer than 3 corners' };
-  const parts = building.children.map((c) => rules.get(c)).filter((r) => r && r.kind !== 'door' &&
+  const structure = building.children.map((c) => rules.get(c)).filter((r) => r && r.kind !== 'door' &&
     r.kind !== 'entrance' && r.kind !== 'stair' && r.kind !== 'window');
-  if (parts.length !== 1 || parts[0].kind !== 'buildingpart') return { why: 'more than one building part' };
-  const [roof, roofHeight] = parts[0].args.split(',').map((a) => a.trim());
-  let storeyHeight = null;
-  const storeys = [];
-  for (const floorName of parts[0].children) {
-    const floor = rules.get(floorName);
-    if (!floor || floor.kind !== 'floor') return { why: `${floorName} is not a floor` };
-    const args = floor.args.split(',').map((a) => a.trim()).filter(Boolean);
-    const height = args.find((a) => /^[\d.]+$/.test(a));
-    if (height && storeyHeight === null) storeyHeight = Number(height);
-    let direction = args.find((a) => a === 'horizontal' || a === 'vertical') || 'horizontal';
-    let roomNames = floor.children;
-    if (roomNames.length === 1 && rules.get(roomNames[0])?.kind === 'divisions') {
-      const divisions = rules.get(roomNames[0]);
-      direction = divisions.args.trim() || direction;
-      roomNames = divisions.children;
-    }
-    const rooms = [];
-    for (const roomName of roomNames) {
-      const room = rules.get(roomName);
-      if (!room || (room.kind !== 'room' && room.kind !== 'division')) {
-        return { why: `${roomName}: divisions inside divisions are not in the tool yet` };
-      }
-      const [type, size] = room.args.split(',').map((a) => a.trim());
-      rooms.push({ type, size: size || 'medium' });
-    }
-    if (rooms.length === 0) return { why: `${floorName} has no rooms` };
-    storeys.push({ rooms, direction });
+  if (structure.length !== 1) return { why: 'the building holds more than one part or container' };
+  let partRules = structure;
+  let partsDirection = 'vertical';
+  if (structure[0].kind === 'buildingparts') {
+    partsDirection = structure[0].args.trim() || 'vertical';
+    partRules = structure[0].children.map((c) => rules.get(c));
   }
-  if (storeys.length === 0) return { why: 'the building part has no floors' };
-  return { name: head[1], outline, roof, roofHeight: Number(roofHeight) || 0,
-           storeyHeight: storeyHeight || 3, storeys };
+  if (partRules.some((r) => !r || r.kind !== 'buildingpart')) {
+    return { why: 'building parts inside building parts are not in the tool yet' };
+  }
+  let storeyHeight = null;
+  const parts = [];
+  for (const partRule of partRules) {
+    const [roof, roofHeight] = partRule.args.split(',').map((a) => a.trim());
+    const storeys = [];
+    for (const floorName of partRule.children) {
+      const floor = rules.get(floorName);
+      if (!floor || floor.kind !== 'floor') return { why: `${floorName} is not a floor` };
+      const args = floor.args.split(',').map((a) => a.trim()).filter(Boolean);
+      const height = args.find((a) => /^[\d.]+$/.test(a));
+      if (height && storeyHeight === null) storeyHeight = Number(height);
+      let direction = args.find((a) => a === 'horizontal' || a === 'vertical') || 'horizontal';
+      let roomNames = floor.children;
+      if (roomNames.length === 1 && rules.get(roomNames[0])?.kind === 'divisions') {
+        const divisions = rules.get(roomNames[0]);
+        direction = divisions.args.trim() || direction;
+        roomNames = divisions.children;
+      }
+      const rooms = [];
+      for (const roomName of roomNames) {
+        const room = rules.get(roomName);
+        if (!room || (room.kind !== 'room' && room.kind !== 'division')) {
+          return { why: `${roomName}: divisions inside divisions are not in the tool yet` };
+        }
+        const [type, size] = room.args.split(',').map((a) => a.trim());
+        rooms.push({ type, size: size || 'medium' });
+      }
+      if (rooms.length === 0) return { why: `${floorName} has no rooms` };
+      storeys.push({ rooms, direction });
+    }
+    if (storeys.length === 0) return { why: 'a building part has no floors' };
+    parts.push({ roof, roofHeight: Number(roofHeight) || 0, storeys });
+  }
+  return { name: head[1], outline, parts, partsDirection, storeyHeight: storeyHeight || 3 };
 }
 
 function orientedCounterClockwise(ring) {
