@@ -246,6 +246,17 @@ try {
   const redrawn = await page.evaluate(() => window.studio.editor.state.doc.toString());
   check(redrawn === drawnText.replace('buildingpart(Hip,', 'buildingpart(Gable,'),
         'the round trip changed more than the roof');
+  // A room's windows and an entry of its own, written as room arguments.
+  const windowsBefore = await page.evaluate(() => window.studio.lastBuild.report.windows.length);
+  sequence = await page.evaluate(() => window.studio.sequence);
+  await page.fill('#draw .room-item[data-room="1"] [name=windows]', '2');
+  await page.dispatchEvent('#draw .room-item[data-room="1"] [name=windows]', 'change');
+  await waitBuild('return b.ok', 'two windows in a room', sequence);
+  const withWindows = await page.evaluate(() => window.studio.editor.state.doc.toString());
+  check(withWindows.includes('bedroom_0_0_1 -> room(bedroom, medium, 0, 2)'), 'the windows argument');
+  const windowsAfter = await page.evaluate(() => window.studio.lastBuild.report.windows.length);
+  check(windowsAfter > windowsBefore, `windows ${windowsBefore} -> ${windowsAfter}`);
+
   // A second, disposable part (roof height 0: the paper's fake-concave notch): the parts share
   // the outline, the notch's rooms go, the building keeps its three rooms.
   sequence = await page.evaluate(() => window.studio.sequence);

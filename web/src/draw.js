@@ -69,7 +69,11 @@ export class DrawingTool {
         rules.push(`floor${p}_${s} -> floor(${fixed(storeyHeight)}, vertical) : {div${p}_${s}}`);
         rules.push(`div${p}_${s} -> divisions(${storey.direction}) : {${rooms.join(', ')}}`);
         storey.rooms.forEach((room, r) => {
-          rules.push(`${roomName(p, s, r)} -> room(${ruleName(room.type)}, ${room.size})`);
+          // walls (0: as the subdivision gives; 3-32), windows (0-32), an entrance of its own.
+          const extra = room.walls || room.windows !== undefined || room.entrance
+            ? `, ${room.walls || 0}, ${room.windows ?? 0}${room.entrance ? ', true' : ''}`
+            : '';
+          rules.push(`${roomName(p, s, r)} -> room(${ruleName(room.type)}, ${room.size}${extra})`);
         });
         if (!kept(p)) return;
         for (let r = 1; r < rooms.length; ++r) {
@@ -165,6 +169,9 @@ export class DrawingTool {
           <span class="room-item" data-room="${r}">
             <select name="type">${option(roomTypes, room.type)}</select>
             <select name="size">${option(sizes, room.size)}</select>
+            <input name="walls" type="number" min="0" max="32" placeholder="walls" title="walls (0: as the subdivision gives, or 3-32)" value="${room.walls || ''}">
+            <input name="windows" type="number" min="0" max="32" placeholder="win." title="windows on exterior walls (0 when empty)" value="${room.windows ?? ''}">
+            <label title="an entrance door from outside"><input name="entrance" type="checkbox" ${room.entrance ? 'checked' : ''}>entry</label>
             <button type="button" name="remove-room" title="remove the room">×</button>
           </span>`).join('')}
         <button type="button" name="add-room">+ room</button>
@@ -277,6 +284,17 @@ export class DrawingTool {
         const room = storey.rooms[Number(item.dataset.room)];
         item.querySelector('[name=type]').addEventListener('change', (e) => { room.type = e.target.value; this.changed(); });
         item.querySelector('[name=size]').addEventListener('change', (e) => { room.size = e.target.value; this.changed(); });
+        item.querySelector('[name=walls]').addEventListener('change', (e) => {
+          const walls = Math.round(Number(e.target.value) || 0);
+          room.walls = walls >= 3 && walls <= 32 ? walls : 0;  // the grammar's bounds
+          e.target.value = room.walls || '';
+          this.changed();
+        });
+        item.querySelector('[name=windows]').addEventListener('change', (e) => {
+          room.windows = e.target.value === '' ? undefined : Math.min(32, Math.max(0, Math.round(Number(e.target.value) || 0)));
+          this.changed();
+        });
+        item.querySelector('[name=entrance]').addEventListener('change', (e) => { room.entrance = e.target.checked; this.changed(); });
         item.querySelector('[name=remove-room]').addEventListener('click', () => {
           if (storey.rooms.length <= 1) return;
           storey.rooms.splice(Number(item.dataset.room), 1);
@@ -345,8 +363,12 @@ export function drawingOf(text) {
         if (!room || (room.kind !== 'room' && room.kind !== 'division')) {
           return { why: `${roomName}: divisions inside divisions are not in the tool yet` };
         }
-        const [type, size] = room.args.split(',').map((a) => a.trim());
-        rooms.push({ type, size: size || 'medium' });
+        const [type, size, walls, windows, entrance] = room.args.split(',').map((a) => a.trim());
+        const read = { type, size: size || 'medium' };
+        if (walls !== undefined && Number(walls) > 0) read.walls = Number(walls);
+        if (windows !== undefined) read.windows = Number(windows);
+        if (entrance === 'true') read.entrance = true;
+        rooms.push(read);
       }
       if (rooms.length === 0) return { why: `${floorName} has no rooms` };
       storeys.push({ rooms, direction });
