@@ -257,6 +257,22 @@ try {
   const windowsAfter = await page.evaluate(() => window.studio.lastBuild.report.windows.length);
   check(windowsAfter > windowsBefore, `windows ${windowsBefore} -> ${windowsAfter}`);
 
+  // Connect two rooms (right-click one in the plan, "connect", click the other): a door of its own.
+  // (In a row of rooms the first and the last do not touch: the builder drops such a door and
+  // says so in the report's adaptations.)
+  const doorsOf = () => page.evaluate(() => window.studio.lastBuild.report.doors.length +
+                                            window.studio.lastBuild.report.adaptations.transitions_dropped);
+  const doorsBefore = await doorsOf();
+  sequence = await page.evaluate(() => window.studio.sequence);
+  await page.locator('#plan path[data-room="hall_0_0_0"]').click({ button: 'right', force: true });
+  await page.click('#menu button');
+  await page.locator('#plan path[data-room="bedroom_0_0_2"]').click({ force: true });
+  await waitBuild('return b.ok', 'a connected door', sequence);
+  const connected = await page.evaluate(() => window.studio.editor.state.doc.toString());
+  check(connected.includes('connect0 -> door(hall_0_0_0, bedroom_0_0_2)'), 'the connection in the grammar');
+  const doorsAfter = await doorsOf();
+  check(doorsAfter === doorsBefore + 1, `doors placed or dropped ${doorsBefore} -> ${doorsAfter}`);
+
   // A second, disposable part (roof height 0: the paper's fake-concave notch): the parts share
   // the outline, the notch's rooms go, the building keeps its three rooms.
   sequence = await page.evaluate(() => window.studio.sequence);

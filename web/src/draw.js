@@ -32,7 +32,18 @@ export class DrawingTool {
     this.initial = {};
     this.parts = [newPart()];
     this.partsDirection = 'vertical';
+    this.connections = []; // [room, room]: doors the user asked for (connect)
     this.render();
+  }
+
+  // A door between two rooms (their rule names, as the plan's rooms carry them), once.
+  connect(a, b) {
+    if (a === b || this.connections.some(([x, y]) => (x === a && y === b) || (x === b && y === a))) {
+      return false;
+    }
+    this.connections.push([a, b]);
+    this.changed();
+    return true;
   }
 
   // Shows the drawing of `text` (drawingOf), keeping the file's name; returns why not, or ''.
@@ -43,7 +54,9 @@ export class DrawingTool {
     this.closed = true;
     this.parts = drawing.parts;
     this.partsDirection = drawing.partsDirection;
+    this.connections = drawing.connections;
     this.initial = { name: drawing.name, storeyHeight: String(drawing.storeyHeight) };
+    this.loadedPath = path;
     this.path = path;
     this.panel.innerHTML = '';
     this.render();
@@ -89,6 +102,10 @@ export class DrawingTool {
     for (let k = 1; k < keptParts.length; ++k) {
       transitions.push(`link${keptParts[k]} -> door(${roomName(keptParts[k - 1], 0, 0)}, ${roomName(keptParts[k], 0, 0)})`);
     }
+    // Doors the user connected, while both rooms still exist.
+    const names = new Set(rules.map((r) => r.split(' ')[0]));
+    this.connections = this.connections.filter(([a, b]) => names.has(a) && names.has(b));
+    this.connections.forEach(([a, b], k) => transitions.push(`connect${k} -> door(${a}, ${b})`));
     const transitionNames = transitions.map((t) => t.split(' ')[0]);
     const top = this.parts.length === 1 ? 'part0' : 'parts';
     const lines = ['# Drawn in the Insula studio (seed 000 §3.6); docs/bldg-language.md',
@@ -139,7 +156,10 @@ export class DrawingTool {
   changed() {
     const name = this.panel.querySelector('[name=name]').value || 'Drawn building';
     const text = this.grammar(name);
-    if (text) this.onGrammar(this.path || `${ruleName(name).toLowerCase()}.bldg`, text);
+    if (!text) return;
+    // The file the drawing writes (main.js compares it with the open file).
+    this.path = this.loadedPath || `${ruleName(name).toLowerCase()}.bldg`;
+    this.onGrammar(this.path, text);
   }
 
   render() {
@@ -376,7 +396,14 @@ export function drawingOf(text) {
     if (storeys.length === 0) return { why: 'a building part has no floors' };
     parts.push({ roof, roofHeight: Number(roofHeight) || 0, storeys });
   }
-  return { name: head[1], outline, parts, partsDirection, storeyHeight: storeyHeight || 3 };
+  const connections = [];
+  for (const [name, rule] of rules) {
+    if (rule.kind === 'door' && name.startsWith('connect')) {
+      connections.push(rule.args.split(',').slice(0, 2).map((a) => a.trim()));
+    }
+  }
+  return { name: head[1], outline, parts, partsDirection, storeyHeight: storeyHeight || 3,
+           connections };
 }
 
 function orientedCounterClockwise(ring) {

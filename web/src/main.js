@@ -154,9 +154,42 @@ async function showPlan(url) {
   panel.replaceChildren(document.importNode(svg, true));
   for (const room of panel.querySelectorAll('path[data-room]')) {
     room.addEventListener('click', () => {
-      element('picked').textContent = room.querySelector('title')?.textContent || room.dataset.room;
+      const name = room.dataset.room;
+      if (state.connectFrom) {
+        // The second room of a connection the drawing tool was asked for (right-click, connect).
+        const from = state.connectFrom;
+        state.connectFrom = null;
+        const joined = state.drawing && state.drawing.connect(from, name);
+        setStatus(joined ? `connected ${from} and ${name}` : `${from} and ${name}: no new door`);
+        return;
+      }
+      element('picked').textContent = room.querySelector('title')?.textContent || name;
+    });
+    // Right-click: "connect" this room to the next one clicked, when the drawing tool shows the
+    // open file (seed 000 §3.6).
+    room.addEventListener('contextmenu', (event) => {
+      if (!state.drawing || element('draw').hidden || state.drawing.path !== state.path) return;
+      event.preventDefault();
+      showConnectMenu(event.clientX, event.clientY, room.dataset.room);
     });
   }
+}
+
+function showConnectMenu(x, y, room) {
+  const menu = element('menu');
+  menu.style.left = `${x}px`;
+  menu.style.top = `${y}px`;
+  menu.hidden = false;
+  menu.replaceChildren();
+  const item = document.createElement('button');
+  item.textContent = `connect ${room} to…`;
+  item.onclick = () => {
+    menu.hidden = true;
+    state.connectFrom = room;
+    setStatus(`click the room to connect ${room} to`);
+  };
+  menu.append(item);
+  setTimeout(() => document.addEventListener('click', () => { menu.hidden = true; }, { once: true }), 0);
 }
 
 function showCounts(report, objects, ms) {
