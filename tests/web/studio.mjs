@@ -293,6 +293,15 @@ try {
   await page.click('#draw-toggle');
   check((await page.locator('#status').textContent()).includes('cannot show two_storey.bldg'),
         'a .bldg beyond the tool is not refused with its reason');
+  // The outline from a GeoJSON footprint (geojson(file, feature) in the grammar).
+  await page.selectOption('#draw [name=footprint-file]', 'district.geojson');
+  await page.waitForSelector('#draw [name=footprint-feature] option[value="lot_03"]', { state: 'attached' });
+  sequence = await page.evaluate(() => window.studio.sequence);
+  await page.selectOption('#draw [name=footprint-feature]', 'lot_03');
+  await waitBuild('return b.ok && b.plan', 'a building on a GeoJSON footprint', sequence);
+  const onFootprint = await page.evaluate(() => window.studio.editor.state.doc.toString());
+  check(onFootprint.includes('geojson("district.geojson", "lot_03")'), 'the footprint in the grammar');
+  await page.screenshot({ path: path.join(out, 'studio_footprint.png') });
   await page.click('#draw-toggle');
 
   // Edit to view on the district (examples/cga/district.cga on its lots): a height changed.

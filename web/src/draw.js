@@ -23,10 +23,41 @@ const fixed = (x) => Number(x.toFixed(2)).toString();
 const newPart = () => ({ roof: 'Hip', roofHeight: 2.5,
                          storeys: [{ rooms: [{ type: 'hall', size: 'medium' }], direction: 'horizontal' }] });
 
+// The outline of feature `id` (its `id`, else `properties.id`) of a GeoJSON text: the outer ring
+// of its (first) polygon, or null.
+export function featureRing(text, id) {
+  let json;
+  try {
+    json = JSON.parse(text);
+  } catch {
+    return null;
+  }
+  const feature = (json.features || []).find((f) => String(f.id ?? f.properties?.id) === id);
+  const g = feature && feature.geometry;
+  if (!g) return null;
+  const ring = g.type === 'Polygon' ? g.coordinates[0] : g.type === 'MultiPolygon' ? g.coordinates[0][0] : null;
+  return ring ? ring.slice(0, -1).map(([x, y]) => [x, y]) : null;
+}
+
+// The ids of a GeoJSON text's features that have polygons.
+export function featureIds(text) {
+  try {
+    return (JSON.parse(text).features || [])
+      .filter((f) => f.geometry && /Polygon$/.test(f.geometry.type))
+      .map((f) => String(f.id ?? f.properties?.id ?? ''))
+      .filter(Boolean);
+  } catch {
+    return [];
+  }
+}
+
 export class DrawingTool {
-  constructor(panel, onGrammar) {
+  // `files`: { geojson(): [paths of the folder's GeoJSON files], read(path): Promise<text> }.
+  constructor(panel, onGrammar, files) {
     this.panel = panel;
     this.onGrammar = onGrammar; // (path, text)
+    this.files = files;
+    this.footprint = null; // { file, feature }: the outline is that feature's (geojson(...))
     this.outline = []; // [x, y] metres, counter-clockwise once closed
     this.closed = false;
     this.initial = {};
@@ -54,6 +85,8 @@ export class DrawingTool {
     this.closed = true;
     this.parts = drawing.parts;
     this.partsDirection = drawing.partsDirection;
+    this.footprint = drawing.footprint || null;
+    if (this.footprint) this.previewFootprint();
     this.connections = drawing.connections;
     this.initial = { name: drawing.name, storeyHeight: String(drawing.storeyHeight) };
     this.loadedPath = path;
@@ -63,11 +96,33 @@ export class DrawingTool {
     return '';
   }
 
+  // Uses the footprint `feature` of GeoJSON `file` as the outline (the grammar's geojson(...));
+  // the grid shows it scaled to fit.
+  async useFootprint(file, feature) {
+    this.footprint = { file, feature };
+    this.closed = true;
+    await this.previewFootprint();
+    this.changed();
+  }
+
+  async previewFootprint() {
+    const ring = featureRing(await this.files.read(this.footprint.file), this.footprint.feature) || [];
+    const xs = ring.map((p) => p[0]);
+    const ys = ring.map((p) => p[1]);
+    const [minX, minY] = [Math.min(...xs), Math.min(...ys)];
+    const span = Math.max(Math.max(...xs) - minX, Math.max(...ys) - minY) || 1;
+    const fit = Math.min(480, 300) / pixelsPerMetre * 0.8;  // metres of grid the preview fills
+    this.outline = ring.map(([x, y]) => [1 + (x - minX) / span * fit, 1 + (y - minY) / span * fit]);
+    this.closed = true;
+    this.render();
+  }
+
   // The .bldg text of what is drawn, or null while the outline is open.
   grammar(name) {
-    if (!this.closed || this.outline.length < 3) return null;
-    const ring = orientedCounterClockwise(this.outline)
-      .map(([x, y]) => `(${fixed(x)}, ${fixed(y)})`).join(', ');
+    if (!this.closed || (!this.footprint && this.outline.length < 3)) return null;
+    const ring = this.footprint
+      ? null
+      : orientedCounterClockwise(this.outline).map(([x, y]) => `(${fixed(x)}, ${fixed(y)})`).join(', ');
     const storeyHeight = Number(this.panel.querySelector('[name=storey-height]').value) || 3;
     const rules = [];
     const transitions = [];
@@ -109,7 +164,9 @@ export class DrawingTool {
     const transitionNames = transitions.map((t) => t.split(' ')[0]);
     const top = this.parts.length === 1 ? 'part0' : 'parts';
     const lines = ['# Drawn in the Insula studio (seed 000 §3.6); docs/bldg-language.md',
-                   `building -> building("${name}", [${ring}]) : {${[top, ...transitionNames].join(', ')}}`];
+                   `building -> building("${name}", ${this.footprint
+                     ? `geojson("${this.footprint.file}", "${this.footprint.feature}")`
+                     : `[${ring}]`}) : {${[top, ...transitionNames].join(', ')}}`];
     if (this.parts.length > 1) {
       lines.push(`parts -> buildingparts(${this.partsDirection}) : {${this.parts.map((_, p) => `part${p}`).join(', ')}}`);
     }
@@ -149,6 +206,7 @@ export class DrawingTool {
   clear() {
     this.outline = [];
     this.closed = false;
+    this.footprint = null;
     this.render();
   }
 
@@ -215,21 +273,24 @@ export class DrawingTool {
         <label>storey height <input name="storey-height" type="number" min="2" step="0.1" value="${values.storeyHeight}"></label>
         <label>parts side by side <select name="parts-direction">${option(['vertical', 'horizontal'], this.partsDirection)}</select></label>
         <button type="button" name="add-part">+ part</button>
+        <label title="the outline of a feature of a GeoJSON file beside the drawing">footprint from
+          <select name="footprint-file"><option value="">(drawn)</option>${this.files.geojson().map((f) => `<option ${this.footprint?.file === f ? 'selected' : ''}>${f}</option>`).join('')}</select>
+          <select name="footprint-feature">${this.footprint ? `<option>${this.footprint.feature}</option>` : ''}</select></label>
         <button type="button" name="close" ${this.closed || this.outline.length < 3 ? 'disabled' : ''}>close outline</button>
         <button type="button" name="clear">clear</button>
       </div>
       <svg width="${width}" height="${height}" class="draw-grid">${gridLines.join('')}${shape}${corners.join('')}</svg>
-      <div class="draw-hint">${this.closed ? 'outline closed: drag a corner to move it' : 'click the grid to add corners (0.5 m steps); click the first corner to close'}</div>
+      <div class="draw-hint">${this.footprint ? `the outline of feature ${this.footprint.feature} of ${this.footprint.file} (shown scaled to fit)` : this.closed ? 'outline closed: drag a corner to move it' : 'click the grid to add corners (0.5 m steps); click the first corner to close'}</div>
       ${partBlocks}`;
     this.bind();
   }
 
   bind() {
     const svg = this.panel.querySelector('svg');
-    svg.addEventListener('click', (event) => { if (!this.dragging) this.click(event); });
+    svg.addEventListener('click', (event) => { if (!this.dragging && !this.footprint) this.click(event); });
     for (const corner of svg.querySelectorAll('.corner')) {
       corner.addEventListener('mousedown', (event) => {
-        if (!this.closed) return;
+        if (!this.closed || this.footprint) return;
         event.preventDefault();
         const i = Number(corner.dataset.corner);
         const move = (e) => {
@@ -255,6 +316,20 @@ export class DrawingTool {
       for (const el of this.panel.querySelectorAll(selector)) el.addEventListener(event, handler);
     };
     on('[name=close]', 'click', () => this.close());
+    on('[name=footprint-file]', 'change', async (e) => {
+      const file = e.target.value;
+      const features = this.panel.querySelector('[name=footprint-feature]');
+      if (!file) {
+        this.clear();
+        return;
+      }
+      const ids = featureIds(await this.files.read(file));
+      features.replaceChildren(new Option('(feature)', ''), ...ids.map((id) => new Option(id, id)));
+    });
+    on('[name=footprint-feature]', 'change', (e) => {
+      const file = this.panel.querySelector('[name=footprint-file]').value;
+      if (file && e.target.value) this.useFootprint(file, e.target.value);
+    });
     on('[name=clear]', 'click', () => this.clear());
     const redraw = () => {
       this.render();
@@ -342,11 +417,12 @@ export function drawingOf(text) {
   const buildings = [...rules.values()].filter((r) => r.kind === 'building');
   if (buildings.length !== 1) return { why: 'not one building rule' };
   const building = buildings[0];
-  const head = /^"([^"]*)"\s*,\s*\[([^\]]*)\]\s*(.*)$/.exec(building.args);
-  if (!head) return { why: 'the building has no outline of its own (a GeoJSON footprint?)' };
+  const fromFile = /^"([^"]*)"\s*,\s*geojson\(\s*"([^"]*)"\s*,\s*"([^"]*)"\s*\)\s*$/.exec(building.args);
+  const head = fromFile ? [null, fromFile[1], '', ''] : /^"([^"]*)"\s*,\s*\[([^\]]*)\]\s*(.*)$/.exec(building.args);
+  if (!head) return { why: 'an outline the tool cannot read' };
   if (/\[/.test(head[3])) return { why: 'the outline has holes' };
   const outline = [...head[2].matchAll(/\(\s*(-?[\d.]+)\s*,\s*(-?[\d.]+)\s*\)/g)].map((p) => [Number(p[1]), Number(p[2])]);
-  if (outline.length < 3) return { why: 'the outline has fewer than 3 corners' };
+  if (!fromFile && outline.length < 3) return { why: 'the outline has fewer than 3 corners' };
   const structure = building.children.map((c) => rules.get(c)).filter((r) => r && r.kind !== 'door' &&
     r.kind !== 'entrance' && r.kind !== 'stair' && r.kind !== 'window');
   if (structure.length !== 1) return { why: 'the building holds more than one part or container' };
@@ -403,7 +479,7 @@ export function drawingOf(text) {
     }
   }
   return { name: head[1], outline, parts, partsDirection, storeyHeight: storeyHeight || 3,
-           connections };
+           connections, footprint: fromFile ? { file: fromFile[2], feature: fromFile[3] } : null };
 }
 
 function orientedCounterClockwise(ring) {

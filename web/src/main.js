@@ -322,6 +322,11 @@ async function start() {
         } else {
           openUnsaved(path, text);
         }
+      }, {
+        // GeoJSON files at the top of the folder, where the drawing's own file is written.
+        geojson: () => [...element('lot').options].map((o) => o.value)
+          .filter((f) => f.endsWith('.geojson') && !f.includes('/')),
+        read: async (file) => (await api(`/api/file?path=${encodeURIComponent(file)}`)).text(),
       });
       state.drawing = drawing;
     }
