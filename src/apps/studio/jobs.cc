@@ -18,6 +18,31 @@
 namespace insula::studio {
 namespace fs = std::filesystem;
 
+namespace {
+
+// A child's output, its head and tail only when it is long (a chatty runaway build could write
+// gigabytes before its time limit; the diagnostics that matter come first and last).
+std::string read_output(const fs::path& log) {
+  constexpr std::uintmax_t kKept = std::uintmax_t{512} << 10;  // bytes from each end
+  std::error_code error;
+  const std::uintmax_t size = fs::file_size(log, error);
+  std::ifstream in(log, std::ios::binary);
+  if (error || !in) return {};
+  if (size <= 2 * kKept) {
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  std::string head(kKept, '\0');
+  std::string tail(kKept, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(kKept));
+  in.seekg(static_cast<std::streamoff>(size - kKept));
+  in.read(tail.data(), static_cast<std::streamsize>(kKept));
+  return head + "\n... (" + std::to_string(size - 2 * kKept) + " bytes left out) ...\n" + tail;
+}
+
+}  // namespace
+
 Jobs::Jobs(fs::path executable, JobLimits limits)
     : executable_(std::move(executable)), limits_(limits) {}
 
@@ -101,10 +126,7 @@ JobResult Jobs::run(const std::string& key, const std::vector<std::string>& args
   result.cancelled = finish(key, pid);
   if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
-  std::ifstream in(log, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  result.output = text.str();
+  result.output = read_output(log);
   std::error_code ignored;
   fs::remove(log, ignored);
   return result;
