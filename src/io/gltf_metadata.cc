@@ -115,8 +115,10 @@ void PartTable::find_columns(const shape::Scene& scene) {
       if (part.inherited) {
         const auto [it, added] = inherited_seen.try_emplace(part.inherited.get());
         if (added) {
+          // A null makes no column (as a copied null did not): no entry for it.
           for (const auto& [key, value] : *part.inherited) {
-            it->second.push_back(&seen.try_emplace(key).first->second);
+            it->second.push_back(shape::is_null(value) ? nullptr
+                                                       : &seen.try_emplace(key).first->second);
           }
         }
         entries = &it->second;

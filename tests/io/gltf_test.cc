@@ -232,7 +232,10 @@ TEST(GltfWriter, RepeatedTextsAreDictionaryCoded) {
 // the inherited one through) otherwise; one map shared by many parts reads as if copied.
 TEST(GltfWriter, InheritedAttributesFillWhatAPartLacks) {
   const auto building = std::make_shared<const shape::AttributeMap>(
-      shape::AttributeMap{{"building", std::string("b7")}, {"height", 12.5}, {"roof", "hip"}});
+      shape::AttributeMap{{"building", std::string("b7")},
+                          {"height", 12.5},
+                          {"roof", "hip"},
+                          {"note", shape::Value{}}});  // a null makes no column
   shape::Scene scene;
   shape::Building& tile = scene.buildings.emplace_back();
   tile.id = "tile";
@@ -264,6 +267,7 @@ TEST(GltfWriter, InheritedAttributesFillWhatAPartLacks) {
   EXPECT_EQ(table_column(model, json, "colour"),
             (std::vector<std::string>{"", "", "", "#fff", ""}));
   EXPECT_EQ(properties["height"]["type"], "ENUM");  // text: "loose" lacks it
+  EXPECT_FALSE(properties.contains("note"));
   // Without the loose part every row has a height: a number column.
   scene.buildings[0].parts.pop_back();
   const std::string whole = glb_bytes(scene);

@@ -164,7 +164,12 @@ int build_graph(const BuildOptions& options) {
       report["threads"] = run.threads;
       report["crs"] = lot_files.crs.empty() ? nlohmann::json() : nlohmann::json(lot_files.crs);
       report["seconds"] = seconds;
-      const GraphCity city{*loaded, run, std::move(lots), lot_files.origin, lot_files.crs, search};
+      std::set<std::string> lot_ids;
+      for (std::size_t i = 0; i < lots.size(); ++i) {
+        lot_ids.insert(lots[i].id.empty() ? "lot_" + std::to_string(i) : lots[i].id);
+      }
+      const GraphCity city{*loaded,          run,           std::move(lots), std::move(lot_ids),
+                           lot_files.origin, lot_files.crs, search};
       return build_graph_tiles(options, city, std::move(report), total);
     }
     if (!Ranks::leader()) return kExitDone;

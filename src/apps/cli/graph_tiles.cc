@@ -40,7 +40,7 @@ double faces_per_square_metre(const GraphCity& city) {
   double area = 0;
   for (const std::size_t i : picked) area += area_of({city.lots[i].footprint});
   std::size_t faces = 0;
-  for (const shape::Building& building : graph::to_scene(result).buildings) {
+  for (const shape::Building& building : graph::to_scene(result, &city.lot_ids).buildings) {
     faces += io::building_faces(building);
   }
   return area > 0 ? static_cast<double>(faces) / area : 0;
@@ -73,13 +73,16 @@ TileContent run_tile(const GraphCity& city, const std::vector<std::size_t>& memb
                 {"results", result.results.size()},
                 {"leaves", Json::object()},
                 {"textures", Json::object()}};
-  for (const auto& [port, count] : result.leaves) tally["leaves"][port] = count.count;
+  // As the whole run's report has them (§13): per leaf port, its count and its entity types.
+  for (const auto& [port, count] : result.leaves) {
+    tally["leaves"][port] = {{"count", count.count}, {"types", count.types}};
+  }
   if (!result.ok) {
     content.failed = true;
     content.tally = std::move(tally);
     return content;
   }
-  shape::Scene scene = graph::to_scene(result);
+  shape::Scene scene = graph::to_scene(result, &city.lot_ids);
   for (const io::TextureFailure& f : io::load_textures(scene, city.search)) {
     tally["textures"][f.name] = f.error;
   }
@@ -101,7 +104,12 @@ void add_counts(const BuildOptions& options, const TileJobResult& built, std::si
     entities += tally["entities"].get<std::uint64_t>();
     results += tally["results"].get<std::uint64_t>();
     for (const auto& [port, count] : tally["leaves"].items()) {
-      leaves[port] = leaves.value(port, std::uint64_t{0}) + count.get<std::uint64_t>();
+      Json& sum = leaves[port];
+      if (sum.is_null()) sum = {{"count", 0}, {"types", Json::object()}};
+      sum["count"] = sum["count"].get<std::uint64_t>() + count["count"].get<std::uint64_t>();
+      for (const auto& [type, n] : count["types"].items()) {
+        sum["types"][type] = sum["types"].value(type, std::uint64_t{0}) + n.get<std::uint64_t>();
+      }
     }
     for (const auto& [name, error] : tally["textures"].items()) textures.emplace(name, error);
   }

@@ -6,6 +6,7 @@
 // the ranks. Diagnostics are printed once each, in the order of the tiles' first lots.
 #pragma once
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct GraphCity {
   const LoadedGraph& loaded;
   const lang::graph::RunOptions& run;       // seed, sets, threads, assets, rules; not the lots
   std::vector<lang::graph::LotInput> lots;  // every lot of --lot, numbered
+  std::set<std::string> lot_ids;            // theirs (lot_<n> for a lot without one)
   kernel::Vec3 origin;
   std::string crs;
   const io::AssetSearch& search;

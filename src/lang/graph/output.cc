@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <set>
 #include <tuple>
 
 #include "kernel/heightfield.h"
@@ -144,8 +145,14 @@ shape::Building terrain_building(const RunResult& run, EntityId id, shape::Scene
 // by tile, apps/cli/graph_tiles.h). Any other building is `entity_<id>`.
 class LotNames {
  public:
-  explicit LotNames(const RunResult& run) : run_(run) {
-    for (const auto& [entity, id] : run.lots) by_lineage_.emplace(run.entities[entity].lineage, id);
+  // `lot_ids`: every lot's id in the whole input (a run of a few lots knows only its own); a
+  // later building's name skips them, so `C/2` never repeats a lot named `C/2`.
+  LotNames(const RunResult& run, const std::set<std::string>* lot_ids) : run_(run) {
+    for (const auto& [entity, id] : run.lots) {
+      by_lineage_.emplace(run.entities[entity].lineage, id);
+      taken_.insert(id);
+    }
+    if (lot_ids != nullptr) taken_.insert(lot_ids->begin(), lot_ids->end());
   }
 
   std::string next(EntityId entity) {
@@ -153,19 +160,23 @@ class LotNames {
     while (run_.entities[root].parent != kNoEntity) root = run_.entities[root].parent;
     const auto lot = by_lineage_.find(run_.entities[root].lineage);
     if (lot == by_lineage_.end()) return "entity_" + std::to_string(entity);
-    const std::size_t count = ++made_[lot->second];
-    return count == 1 ? lot->second : lot->second + "/" + std::to_string(count);
+    std::size_t& count = made_[lot->second];
+    if (++count == 1) return lot->second;
+    std::string name = lot->second + "/" + std::to_string(count);
+    while (taken_.contains(name)) name = lot->second + "/" + std::to_string(++count);
+    return name;
   }
 
  private:
   const RunResult& run_;
   std::map<std::uint32_t, std::string> by_lineage_;
   std::map<std::string, std::size_t> made_;
+  std::set<std::string> taken_;
 };
 
 }  // namespace
 
-shape::Scene to_scene(const RunResult& run) {
+shape::Scene to_scene(const RunResult& run, const std::set<std::string>* lot_ids) {
   shape::Scene scene;
   scene.materials = run.materials;
   for (const auto& [material, texture] : run.textures) {
@@ -181,7 +192,7 @@ shape::Scene to_scene(const RunResult& run) {
     if (name == "building") building_key = key;
   }
   std::map<std::string, std::size_t> by_value;
-  LotNames lot_names(run);
+  LotNames lot_names(run, lot_ids);
   std::map<MaterialKey, kernel::MaterialId> known;  // rule nodes' materials, each once
   std::vector<PartIndex> part_index;                // per building
   for (const ResultEntity& r : run.results) {

@@ -2,6 +2,9 @@
 // entities, and the report's `graph` section.
 #pragma once
 
+#include <set>
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "lang/graph/executor.h"
@@ -14,7 +17,9 @@ namespace insula::lang::graph {
 // result shape is a building of its own, named after its lot when it descends from one. Each shape
 // is a part named after its leaf port (its node id), a rule node's model contributes its parts.
 // Lights go to Scene::lights.
-shape::Scene to_scene(const RunResult& run);
+// `lot_ids` (when the run had only some of the input's lots): every lot id of the input, which
+// the names of a lot's later buildings avoid.
+shape::Scene to_scene(const RunResult& run, const std::set<std::string>* lot_ids = nullptr);
 
 // The `graph` section of the report (§13): cyclic_edges, node_runs, leaves, blocked,
 // unprocessed, failed and one record per result entity.

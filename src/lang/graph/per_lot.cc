@@ -77,6 +77,7 @@ std::string per_lot_obstacle(const CheckResult& checked) {
       return named(node) + " is a " + std::string(family) + " node";
     }
     if (!fed[n]) return named(node) + " is not fed from the lots";
+    if (family == "light") return named(node) + " makes lights, which 3D Tiles do not carry";
     if (node.collective) return named(node) + " takes its entities together";
     if (connected_inputs(node) > 1) return named(node) + " pairs entities of several inputs";
   }

@@ -14,7 +14,7 @@ namespace insula::lang::graph {
 // create.lots node reading the --lot file (no `file` parameter, no impulse), every other node fed
 // from it, and none that relates entities to each other: no collective port, no second connected
 // input port (it would pair entities of different lots), no subgraph, and none of the list,
-// query, path, terrain or creation families.
+// query, path, terrain or creation families; no light node either (tiles carry no lights).
 std::string per_lot_obstacle(const CheckResult& checked);
 
 }  // namespace insula::lang::graph

@@ -64,6 +64,9 @@ TEST(PerLot, WhatRelatesLotsOrMakesEntitiesIsNot) {
           std::string(kLots) + ", " + kMass + R"(, { "id": "see", "type": "query.occlusion" })",
           R"("lots.out -> mass.in", "mass.out -> see.shapes", "mass.out -> see.occluders")"),
       "node 'see' (query.occlusion) is a query node");
+  EXPECT_EQ(obstacle(std::string(kLots) + R"(, { "id": "lamp", "type": "light.create" })",
+                     R"("lots.out -> lamp.in")"),
+            "node 'lamp' (light.create) makes lights, which 3D Tiles do not carry");
 }
 
 }  // namespace
