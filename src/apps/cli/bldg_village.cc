@@ -251,16 +251,9 @@ int build_by_tiles(const Village& village, Json& report, const Stopwatch& total)
   for (const io::Footprint& lot : village.lots.footprints) {
     items.push_back(lot_tile_item(lot.polygons, density, options.output.tiles.tile_faces));
   }
-  TileJob job({options.outputs,
-               village.lots.crs,
-               village.lots.origin,
-               {},
-               options.output.gltf,
-               options.output.tiles,
-               options.threads,
-               options.quiet,
-               "buildings",
-               [&village](std::size_t i) { return village.lots.footprints[i].id; }});
+  TileJob job(
+      build_tile_job_options(options, village.lots.crs, village.lots.origin, "buildings",
+                             [&village](std::size_t i) { return village.lots.footprints[i].id; }));
   if (const std::string error = job.plan(items); !error.empty()) {
     return Ranks::broadcast(Ranks::leader() ? write_failure(error) : 0);
   }

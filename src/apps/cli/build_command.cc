@@ -145,6 +145,15 @@ int finish_build(const BuildOptions& options, const shape::Scene& scene, nlohman
   return commit_build(options, report, total, transaction);
 }
 
+TileJobOptions build_tile_job_options(const BuildOptions& options, std::string crs,
+                                      kernel::Vec3 origin, std::string counted,
+                                      std::function<std::string(std::size_t)> id_of) {
+  return {
+      options.outputs,     std::move(crs),       origin,          {},
+      options.output.gltf, options.output.tiles, options.threads, options.quiet || !Ranks::leader(),
+      std::move(counted),  std::move(id_of)};
+}
+
 int commit_build_tiles(const BuildOptions& options, TileJob& job, const TileJobResult& built,
                        nlohmann::json& report, const Stopwatch& total,
                        const Stopwatch& build_clock) {

@@ -26,6 +26,7 @@ namespace insula::cli {
 
 class TileJob;
 struct TileJobResult;
+struct TileJobOptions;
 
 struct BuildOptions {
   std::string input;
@@ -83,6 +84,11 @@ int finish_build(const BuildOptions& options, const shape::Scene& scene, nlohman
 // counts, the report, the commit point and the list of outputs on stdout.
 int commit_build(const BuildOptions& options, nlohmann::json& report, const Stopwatch& total,
                  io::OutputTransaction& transaction);
+// The tile job of `insula build --lot` (tile_job.h): the build's outputs, CRS, origin, glTF and
+// tile options and threads; quiet on the other ranks; `counted` items named by `id_of`.
+TileJobOptions build_tile_job_options(const BuildOptions& options, std::string crs,
+                                      kernel::Vec3 origin, std::string counted,
+                                      std::function<std::string(std::size_t)> id_of);
 // The same for a tile job's tilesets (tile_job.h), on the leader: the report's tiles, ranks and
 // stage time, the staged tiles moved into place, tileset.json, the commit point.
 int commit_build_tiles(const BuildOptions& options, TileJob& job, const TileJobResult& built,

@@ -198,16 +198,8 @@ int build_cga_tiles(const BuildOptions& options, const CgaCity& city, nlohmann::
   for (auto& [name, count] : sampled) {
     if (const auto it = before.find(name); it != before.end()) count -= it->second;
   }
-  TileJob job({options.outputs,
-               city.crs,
-               city.origin,
-               {},
-               options.output.gltf,
-               options.output.tiles,
-               options.threads,
-               options.quiet || !Ranks::leader(),
-               "lots",
-               [&city](std::size_t i) { return city.lots[i].id; }});
+  TileJob job(build_tile_job_options(options, city.crs, city.origin, "lots",
+                                     [&city](std::size_t i) { return city.lots[i].id; }));
   if (const std::string error = job.plan(items); !error.empty()) {
     return Ranks::broadcast(Ranks::leader() ? write_failure(error) : 0);
   }

@@ -128,19 +128,11 @@ int build_graph_tiles(const BuildOptions& options, const GraphCity& city, Json r
                       const Stopwatch& total) {
   Stopwatch clock;
   const std::vector<io::TileItem> items = lot_items(city, options.output.tiles.tile_faces);
-  TileJob job({options.outputs,
-               city.crs,
-               city.origin,
-               {},
-               options.output.gltf,
-               options.output.tiles,
-               options.threads,
-               options.quiet || !Ranks::leader(),
-               "lots",
-               [&city](std::size_t i) {
-                 const graph::LotInput& lot = city.lots[i];
-                 return lot.id.empty() ? "lot_" + std::to_string(i) : lot.id;
-               }});
+  TileJob job(
+      build_tile_job_options(options, city.crs, city.origin, "lots", [&city](std::size_t i) {
+        const graph::LotInput& lot = city.lots[i];
+        return lot.id.empty() ? "lot_" + std::to_string(i) : lot.id;
+      }));
   if (const std::string error = job.plan(items); !error.empty()) {
     return Ranks::broadcast(Ranks::leader() ? write_failure(error) : 0);
   }
