@@ -55,8 +55,9 @@ class ExecutionContext final : public NodeContext {
   [[noreturn]] void error(const std::string& message) override;
   void warning(const std::string& code, const std::string& message) override;
   void record_lot(EntityId entity, std::string id) override;
-  bool declares(std::string_view name) const override {
-    return execution_.graph().graph->attribute(name) != nullptr;
+  std::optional<ValueType> declared_type(std::string_view name) const override {
+    const Declaration* d = execution_.graph().graph->attribute(name);
+    return d != nullptr ? std::optional<ValueType>(d->type) : std::nullopt;
   }
   shape::Rng rng(EntityId entity, std::string_view stream) const override;
   const RunOptions& options() const override { return state_.options; }

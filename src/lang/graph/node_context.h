@@ -94,7 +94,9 @@ class NodeContext {
   // Marks `entity` as made for the lot `id` (create.lots; RunResult::lots).
   virtual void record_lot(EntityId entity, std::string id) = 0;
   // Whether the node's graph declares attribute `name`.
-  virtual bool declares(std::string_view name) const = 0;
+  bool declares(std::string_view name) const { return declared_type(name).has_value(); }
+  // The type the node's graph declares attribute `name` with, if it does.
+  virtual std::optional<ValueType> declared_type(std::string_view name) const = 0;
   // Stops the run with G052 at the node (a run-time type error).
   [[noreturn]] virtual void error(const std::string& message) = 0;
   // The node's random stream for `entity` and stream name (§9.9).

@@ -144,13 +144,25 @@ void lots(NodeContext& c) {
         continue;
       }
       for (const auto& [name, value] : lot.properties) {
-        if (!c.declares(name)) {
+        const std::optional<ValueType> type = c.declared_type(name);
+        if (!type) {
           c.warning("W030", "GeoJSON property '" + name + "' is not a declared attribute; ignored");
           continue;
         }
-        if (const auto* d = std::get_if<double>(&value)) c.set_attribute(*e, name, Value(*d));
-        if (const auto* b = std::get_if<bool>(&value)) c.set_attribute(*e, name, Value(*b));
-        if (const auto* s = std::get_if<std::string>(&value)) c.set_attribute(*e, name, Value(*s));
+        std::optional<Value> given;
+        if (const auto* d = std::get_if<double>(&value)) given = Value(*d);
+        if (const auto* b = std::get_if<bool>(&value)) given = Value(*b);
+        if (const auto* s = std::get_if<std::string>(&value)) given = Value(*s);
+        if (!given) continue;
+        // Real data does not follow the graph's types (OpenStreetMap's `building=kindergarten`
+        // for an integer `building`): a value that does not fit is left out, not a failed run.
+        if (!convert(*given, *type)) {
+          c.warning("W030", "GeoJSON property '" + name + "' is not " +
+                                std::string(value_type_name(*type)) + " (" + to_string(*given) +
+                                "); ignored");
+          continue;
+        }
+        c.set_attribute(*e, name, *given);
       }
       c.write(*e, "index", Value(std::int64_t{number}));
       c.record_lot(*e, lot.id.empty() ? "lot_" + std::to_string(number) : lot.id);

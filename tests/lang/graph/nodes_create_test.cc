@@ -205,6 +205,32 @@ TEST(CreateNodes, NumberedLotsGiveWhatTheWholeRunGives) {
                                      "way/101/2", "way/101/3", "way/101/4", "way/101/5"}));
 }
 
+// Real data does not follow the graph's types (OpenStreetMap's building=church for an integer
+// `building`): the value is left out with W030 and the run goes on.
+TEST(CreateNodes, LotPropertiesThatDoNotFitAreLeftOut) {
+  RunOptions options;
+  options.lots = [](const std::string&, std::vector<LotInput>& lots, std::string&) {
+    LotInput a;
+    a.footprint.outer = {{0, 0}, {10, 0}, {10, 20}, {0, 20}};
+    a.properties = {{"building", std::string("church")}, {"levels", 2.0}};
+    lots = {a};
+    return true;
+  };
+  const TestRun t = run_text(graph_text(R"(
+    "attributes": { "building": { "type": "integer", "default": -1 },
+                    "levels": { "type": "integer", "default": 1 } },
+    "nodes": [ { "id": "lots", "type": "create.lots" } ])"),
+                             options);
+  ASSERT_TRUE(t.ok()) << t.errors;
+  const EntityId lot = t.at("lots.out").at(0);
+  EXPECT_EQ(t.attribute(lot, "building"), nullptr);
+  EXPECT_EQ(t.attribute(lot, "levels")->integer(), 2);
+  EXPECT_TRUE(
+      t.says("warning[W030]: GeoJSON property 'building' is not integer (church); ignored "
+             "(node 'lots')"))
+      << t.errors;
+}
+
 TEST(CreateNodes, LotsWithoutAReader) {
   const TestRun t = run_text(graph_text(R"("nodes": [ { "id": "lots", "type": "create.lots" } ])"));
   ASSERT_FALSE(t.ok());
