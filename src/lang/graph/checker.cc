@@ -9,6 +9,7 @@
 #include "base/format.h"
 #include "lang/graph/expr.h"
 #include "lang/graph/reader.h"
+#include "lang/graph/value.h"
 
 namespace insula::lang::graph {
 
@@ -159,8 +160,7 @@ class GraphChecker {
         break;
       case ValueType::kInteger:
         type_ok = v.kind == Kind::kInteger ||
-                  (v.kind == Kind::kNumber &&
-                   v.number == static_cast<double>(static_cast<std::int64_t>(v.number)));
+                  (v.kind == Kind::kNumber && whole_integer(v.number).has_value());
         break;
       case ValueType::kBool:
         type_ok = v.kind == Kind::kBool;

@@ -133,6 +133,11 @@ std::optional<Value> value_from_json(const JsonValue& json, ValueType want) {
   return Value(std::move(items));
 }
 
+std::optional<std::int64_t> whole_integer(double d) {
+  if (std::trunc(d) != d || d < -kTwo63 || d >= kTwo63) return std::nullopt;
+  return static_cast<std::int64_t>(d);
+}
+
 std::optional<Value> convert(const Value& value, ValueType type) {
   const ValueType have = value.type();
   if (type == ValueType::kAny || type == have) return value;
@@ -142,9 +147,9 @@ std::optional<Value> convert(const Value& value, ValueType type) {
       return std::nullopt;
     case ValueType::kInteger: {
       if (have != ValueType::kNumber) return std::nullopt;
-      const double d = std::get<double>(value.data);
-      if (std::trunc(d) != d || d < -kTwo63 || d >= kTwo63) return std::nullopt;
-      return Value(static_cast<std::int64_t>(d));
+      const std::optional<std::int64_t> i = whole_integer(std::get<double>(value.data));
+      if (!i) return std::nullopt;
+      return Value(*i);
     }
     case ValueType::kVec3: {
       if (have != ValueType::kList) return std::nullopt;

@@ -61,4 +61,7 @@ std::optional<Value> value_from_json(const JsonValue& json, ValueType want = Val
 // of three -> vec3, string -> enum); nullopt when it does not fit.
 std::optional<Value> convert(const Value& value, ValueType type);
 
+// `d` as an integer when it is whole and within int64 (casting anything else is undefined).
+std::optional<std::int64_t> whole_integer(double d);
+
 }  // namespace insula::lang::graph
