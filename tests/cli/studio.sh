@@ -133,6 +133,26 @@ node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
 code=$(curl -s -o /dev/null -w "%{http_code}" -X POST --data "" "$(q "/api/random?shape=Z;rm")")
 [ "$code" = 400 ] || fail "a random shape not understood: $code"
 
+# The drawing tool's reading of a .bldg (the parser's tree: nested containers, holes, the
+# file's own transitions), and a text that does not parse comes back with its diagnostic.
+curl -s -X POST --data-binary @"$root/examples/bldg/two_storey.bldg" "$(q "/api/drawing?path=two_storey.bldg")" >"$tmp/drawing.json"
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  const b = r.building, part = b && b.parts.children[0];
+  const ok = r.ok && b.name === "Two-storey house" && b.outline.length === 4 && part.kind === "part" &&
+    part.floors.length === 2 && part.floors[0].children[0].kind === "divisions" &&
+    part.floors[0].children[0].children.map((c) => c.symbol).join() === "hall,kitchen" &&
+    b.transitions.some((t) => t.kind === "stair");
+  if (!ok) { console.log(JSON.stringify(r).slice(0, 400)); process.exit(1); }
+' "$tmp/drawing.json" || fail "the drawing of two_storey.bldg"
+printf 'h -> building("C", [(0,0), (20,0), (20,20), (0,20)], [(8,8), (12,8), (12,12), (8,12)]) : {p}\np -> buildingpart(Flat, 1) : {f}\nf -> floor() : {r}\nr -> room(hall, small)\n' |
+  curl -s -X POST --data-binary @- "$(q "/api/drawing?path=court.bldg")" >"$tmp/court.json"
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  if (!r.ok || r.building.holes.length !== 1 || r.building.holes[0].length !== 4) { console.log(JSON.stringify(r)); process.exit(1); }
+' "$tmp/court.json" || fail "the drawing of a building with a courtyard"
+printf 'h -> building("C", [(0,0)]) : {}\n' | curl -s -X POST --data-binary @- "$(q "/api/drawing?path=bad.bldg")" >"$tmp/bad_drawing.json"
+grep -q '"ok":false' "$tmp/bad_drawing.json" && grep -q 'bad.bldg:1:20: error\[BLD206\]' "$tmp/bad_drawing.json" ||
+  fail "a drawing that does not parse: $(cat "$tmp/bad_drawing.json")"
+
 # A newer build of the same file cancels the one in flight.
 node "$root/examples/city/make_city.mjs" 3000 "$tmp/work/city.geojson" >/dev/null
 curl -s -X POST --data-binary @"$tmp/work/district.cga" \

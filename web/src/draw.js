@@ -1,27 +1,22 @@
 // Drawing a building (seed 000 §3.6): the outline is drawn on a snapping grid (click to add a
-// corner, click the first corner or "close" to finish; drag a corner to move it); the building is
-// made of building parts side by side along one direction (each with a roof type and a roof
-// height: height 0 makes a disposable part, a notch in the final building, the paper's
-// "fake-concave"), each part of storeys, each storey of rooms (type and size) split along one
-// direction. The tool writes the `.bldg` grammar from these choices only (no free text), so what it
-// writes always parses: doors join each room to the next and the first rooms of neighbouring parts,
-// the first room of the first part gets the entrance, and a stair joins the first rooms of
-// consecutive storeys. It opens the `.bldg` files it can represent (drawingOf). The grammar opens
-// in the editor as a file and builds as usual.
+// corner, click the first corner or "close" to finish; drag a corner to move it), with holes
+// (courtyards) drawn the same way inside it, or taken from a GeoJSON feature. The building is a
+// tree (draw_model.js): containers of building parts side by side, each building part with a
+// roof type and height (0: a disposable part, the paper's "fake-concave" notch) and storeys, each
+// storey a tree of division containers and rooms. "split" turns a part or a room into a container
+// across its parent's arrangement holding it and a new one (a horizontal part splits into
+// vertically arranged sub-parts and vice versa). Inputs are lists and bounded numbers, and the
+// text is written from the model, so the grammar that comes out always parses. Any `.bldg` the
+// command line reads opens in the tool (read by the server's parser: POST /api/drawing).
+
+import {
+  buildingOf, findRoom, grammar, leafParts, newBuilding, newFloor, newPart, newRoom, orientations,
+  remove, roofs, roomTypes, ruleName, sizes, split,
+} from './draw_model.js';
 
 const gridMetres = 0.5;
-const pixelsPerMetre = 12;
-const roofs = ['Hip', 'Gable', 'Flat', 'Pyramid', 'Mansard', 'HipGlued', 'None'];
-const roomTypes = ['hall', 'living', 'kitchen', 'dining', 'bedroom', 'bath', 'study', 'storage',
-                   'landing', 'shop', 'office', 'atrium', 'garden'];
-const sizes = ['small', 'medium', 'big'];
-
-// A name the grammar accepts: letters, digits and underscores, not starting with a digit.
-const ruleName = (text) => text.replace(/[^A-Za-z0-9_]/g, '_').replace(/^(?=\d)/, 'r');
-const fixed = (x) => Number(x.toFixed(2)).toString();
-
-const newPart = () => ({ roof: 'Hip', roofHeight: 2.5,
-                         storeys: [{ rooms: [{ type: 'hall', size: 'medium' }], direction: 'horizontal' }] });
+const gridWidth = 480;
+const gridHeight = 300;
 
 // The outline of feature `id` (its `id`, else `properties.id`) of a GeoJSON text: the outer ring
 // of its (first) polygon, or null.
@@ -51,46 +46,100 @@ export function featureIds(text) {
   }
 }
 
+// Whether point `p` lies inside ring `ring` (even-odd rule).
+function inside(ring, [x, y]) {
+  let within = false;
+  for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
+    const [xi, yi] = ring[i];
+    const [xj, yj] = ring[j];
+    if ((yi > y) !== (yj > y) && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) within = !within;
+  }
+  return within;
+}
+
+const escape = (text) => String(text).replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
+const option = (list, chosen) => [...new Set([...list, chosen])].filter((v) => v !== undefined)
+  .map((v) => `<option ${v === chosen ? 'selected' : ''}>${escape(v)}</option>`).join('');
+
 export class DrawingTool {
-  // `files`: { geojson(): [paths of the folder's GeoJSON files], read(path): Promise<text> }.
+  // `files`: { geojson(): [paths of the folder's GeoJSON files], read(path): Promise<text>,
+  //            parse(text, path): Promise<POST /api/drawing's answer> }.
   constructor(panel, onGrammar, files) {
     this.panel = panel;
     this.onGrammar = onGrammar; // (path, text)
     this.files = files;
-    this.footprint = null; // { file, feature }: the outline is that feature's (geojson(...))
-    this.outline = []; // [x, y] metres, counter-clockwise once closed
-    this.closed = false;
-    this.initial = {};
-    this.parts = [newPart()];
-    this.partsDirection = 'vertical';
-    this.connections = []; // [room, room]: doors the user asked for (connect)
+    this.building = newBuilding();
+    this.closed = false; // the outer ring
+    this.hole = -1; // the hole being drawn, or -1
+    // What the grid shows: world metres (left, bottom) at its lower-left corner, pixels a metre.
+    this.view = { left: 0, bottom: 0, scale: 12 };
     this.render();
   }
 
-  // A door between two rooms (their rule names, as the plan's rooms carry them), once.
+  // Fits the view to `ring` (a loaded outline or a footprint), snapped to whole metres.
+  fit(ring) {
+    if (ring.length === 0) return;
+    const xs = ring.map((p) => p[0]);
+    const ys = ring.map((p) => p[1]);
+    const [minX, minY, maxX, maxY] = [Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys)];
+    const scale = Math.min(12, (0.8 * gridWidth) / (maxX - minX || 1), (0.8 * gridHeight) / (maxY - minY || 1));
+    const centre = (lo, hi, pixels) => (lo + hi) / 2 - pixels / scale / 2;
+    const whole = scale >= 1 ? Math.floor : (v) => v;
+    this.view = { left: whole(centre(minX, maxX, gridWidth)), bottom: whole(centre(minY, maxY, gridHeight)), scale };
+  }
+
+  // Screen pixels of world point `p` on the grid.
+  toScreen([x, y]) {
+    const { left, bottom, scale } = this.view;
+    return [(x - left) * scale, gridHeight - (y - bottom) * scale];
+  }
+
+  storeyHeight() {
+    return Number(this.panel.querySelector('[name=storey-height]')?.value) || 3;
+  }
+
+  // A door between two rooms (their symbols, as the plan's rooms carry them), once.
   connect(a, b) {
-    if (a === b || this.connections.some(([x, y]) => (x === a && y === b) || (x === b && y === a))) {
+    const t = this.building.transitions;
+    if (a === b || t.some((x) => x.kind === 'door' && ((x.from === a && x.to === b) || (x.from === b && x.to === a)))) {
       return false;
     }
-    this.connections.push([a, b]);
+    t.push({ symbol: null, kind: 'door', from: a, to: b, width: 0 });
     this.changed();
     return true;
   }
 
-  // Shows the drawing of `text` (drawingOf), keeping the file's name; returns why not, or ''.
-  load(text, path) {
-    const drawing = drawingOf(text);
-    if (drawing.why) return drawing.why;
-    this.outline = drawing.outline;
+  // Splits the room `symbol` (the plan's right-click "split"): a new room beside it.
+  splitRoom(symbol) {
+    const found = findRoom(this.building, symbol);
+    if (!found) return false;
+    split(found.parent, found.room, newRoom());
+    this.redraw();
+    return true;
+  }
+
+  // Removes the room `symbol` unless it is its container's last.
+  removeRoom(symbol) {
+    const found = findRoom(this.building, symbol);
+    if (!found || !remove(found.parent, found.room)) return false;
+    this.redraw();
+    return true;
+  }
+
+  // Shows the building of `text` (read by the server), keeping the file's name; returns why not,
+  // or ''.
+  async load(text, path) {
+    const answer = await this.files.parse(text, path);
+    if (!answer.ok) return answer.diagnostics[0] || 'the file does not parse';
+    this.building = buildingOf(answer.building);
     this.closed = true;
-    this.parts = drawing.parts;
-    this.partsDirection = drawing.partsDirection;
-    this.footprint = drawing.footprint || null;
-    if (this.footprint) this.previewFootprint();
-    this.connections = drawing.connections;
-    this.initial = { name: drawing.name, storeyHeight: String(drawing.storeyHeight) };
+    this.hole = -1;
+    if (this.building.footprint) await this.previewFootprint();
+    else this.fit(this.building.outline);
     this.loadedPath = path;
     this.path = path;
+    const first = leafParts(this.building.root)[0];
+    this.initialStoreyHeight = first && first.floors[0].height > 0 ? first.floors[0].height : 3;
     this.panel.innerHTML = '';
     this.render();
     return '';
@@ -99,115 +148,91 @@ export class DrawingTool {
   // Uses the footprint `feature` of GeoJSON `file` as the outline (the grammar's geojson(...));
   // the grid shows it scaled to fit.
   async useFootprint(file, feature) {
-    this.footprint = { file, feature };
+    this.building.footprint = { file, feature };
+    this.building.holes = [];
     this.closed = true;
     await this.previewFootprint();
     this.changed();
   }
 
   async previewFootprint() {
-    const ring = featureRing(await this.files.read(this.footprint.file), this.footprint.feature) || [];
-    const xs = ring.map((p) => p[0]);
-    const ys = ring.map((p) => p[1]);
-    const [minX, minY] = [Math.min(...xs), Math.min(...ys)];
-    const span = Math.max(Math.max(...xs) - minX, Math.max(...ys) - minY) || 1;
-    const fit = Math.min(480, 300) / pixelsPerMetre * 0.8;  // metres of grid the preview fills
-    this.outline = ring.map(([x, y]) => [1 + (x - minX) / span * fit, 1 + (y - minY) / span * fit]);
-    this.closed = true;
+    const { file, feature } = this.building.footprint;
+    // Shown in the file's own coordinates (metres or degrees), fitted to the grid.
+    this.building.outline = featureRing(await this.files.read(file), feature) || [];
+    this.fit(this.building.outline);
     this.render();
   }
 
   // The .bldg text of what is drawn, or null while the outline is open.
   grammar(name) {
-    if (!this.closed || (!this.footprint && this.outline.length < 3)) return null;
-    const ring = this.footprint
-      ? null
-      : orientedCounterClockwise(this.outline).map(([x, y]) => `(${fixed(x)}, ${fixed(y)})`).join(', ');
-    const storeyHeight = Number(this.panel.querySelector('[name=storey-height]').value) || 3;
-    const rules = [];
-    const transitions = [];
-    const roomName = (p, s, r) => `${ruleName(this.parts[p].storeys[s].rooms[r].type)}_${p}_${s}_${r}`;
-    // Disposable parts (height 0) are removed after the subdivision: nothing leads into them.
-    const kept = (p) => this.parts[p].roofHeight > 0 || this.parts[p].roof === 'None';
-    this.parts.forEach((part, p) => {
-      const floors = part.storeys.map((_, s) => `floor${p}_${s}`);
-      rules.push(`part${p} -> buildingpart(${part.roof}, ${fixed(part.roofHeight)}) : {${floors.join(', ')}}`);
-      part.storeys.forEach((storey, s) => {
-        const rooms = storey.rooms.map((_, r) => roomName(p, s, r));
-        rules.push(`floor${p}_${s} -> floor(${fixed(storeyHeight)}, vertical) : {div${p}_${s}}`);
-        rules.push(`div${p}_${s} -> divisions(${storey.direction}) : {${rooms.join(', ')}}`);
-        storey.rooms.forEach((room, r) => {
-          // walls (0: as the subdivision gives; 3-32), windows (0-32), an entrance of its own.
-          const extra = room.walls || room.windows !== undefined || room.entrance
-            ? `, ${room.walls || 0}, ${room.windows ?? 0}${room.entrance ? ', true' : ''}`
-            : '';
-          rules.push(`${roomName(p, s, r)} -> room(${ruleName(room.type)}, ${room.size}${extra})`);
-        });
-        if (!kept(p)) return;
-        for (let r = 1; r < rooms.length; ++r) {
-          transitions.push(`door${p}_${s}_${r} -> door(${rooms[r - 1]}, ${rooms[r]})`);
-        }
-        if (s > 0) transitions.push(`stair${p}_${s} -> stair(${roomName(p, s - 1, 0)}, ${roomName(p, s, 0)})`);
-      });
-    });
-    const keptParts = this.parts.map((_, p) => p).filter(kept);
-    if (keptParts.length > 0) {
-      transitions.unshift(`entrance0 -> entrance(${roomName(keptParts[0], 0, 0)})`);
-    }
-    for (let k = 1; k < keptParts.length; ++k) {
-      transitions.push(`link${keptParts[k]} -> door(${roomName(keptParts[k - 1], 0, 0)}, ${roomName(keptParts[k], 0, 0)})`);
-    }
-    // Doors the user connected, while both rooms still exist.
-    const names = new Set(rules.map((r) => r.split(' ')[0]));
-    this.connections = this.connections.filter(([a, b]) => names.has(a) && names.has(b));
-    this.connections.forEach(([a, b], k) => transitions.push(`connect${k} -> door(${a}, ${b})`));
-    const transitionNames = transitions.map((t) => t.split(' ')[0]);
-    const top = this.parts.length === 1 ? 'part0' : 'parts';
-    const lines = ['# Drawn in the Insula studio (seed 000 §3.6); docs/bldg-language.md',
-                   `building -> building("${name}", ${this.footprint
-                     ? `geojson("${this.footprint.file}", "${this.footprint.feature}")`
-                     : `[${ring}]`}) : {${[top, ...transitionNames].join(', ')}}`];
-    if (this.parts.length > 1) {
-      lines.push(`parts -> buildingparts(${this.partsDirection}) : {${this.parts.map((_, p) => `part${p}`).join(', ')}}`);
-    }
-    return [...lines, ...rules, ...transitions].join('\n') + '\n';
+    if (!this.closed) return null;
+    this.building.name = name;
+    return grammar(this.building);
   }
 
   // Metres under the mouse, snapped to the grid.
   snapped(event) {
-    const svg = this.panel.querySelector('svg');
-    const box = svg.getBoundingClientRect();
-    const x = (event.clientX - box.left) / pixelsPerMetre;
-    const y = (box.bottom - event.clientY) / pixelsPerMetre;
+    const box = this.panel.querySelector('svg').getBoundingClientRect();
+    const x = this.view.left + (event.clientX - box.left) / this.view.scale;
+    const y = this.view.bottom + (box.bottom - event.clientY) / this.view.scale;
     return [Math.round(x / gridMetres) * gridMetres, Math.round(y / gridMetres) * gridMetres];
   }
 
+  // A click on the grid: a corner of the outline, or of the hole being drawn (inside the outline).
   click(event) {
-    if (this.closed) return;
+    const drawingHole = this.closed && this.hole >= 0;
+    if (this.closed && !drawingHole) return;
+    const ring = drawingHole ? this.building.holes[this.hole] : this.building.outline;
     const p = this.snapped(event);
-    const first = this.outline[0];
-    if (this.outline.length >= 3 && first[0] === p[0] && first[1] === p[1]) {
+    const first = ring[0];
+    if (ring.length >= 3 && first[0] === p[0] && first[1] === p[1]) {
       this.close();
       return;
     }
-    const last = this.outline[this.outline.length - 1];
+    const last = ring[ring.length - 1];
     if (last && last[0] === p[0] && last[1] === p[1]) return;
-    this.outline.push(p);
+    if (drawingHole && !inside(this.building.outline, p)) {
+      this.hint('a hole lies inside the outline');
+      return;
+    }
+    ring.push(p);
     this.render();
   }
 
   close() {
-    if (this.outline.length < 3) return;
-    this.closed = true;
+    if (this.hole >= 0) {
+      if (this.building.holes[this.hole].length < 3) return;
+      this.hole = -1;
+    } else {
+      if (this.building.outline.length < 3) return;
+      this.closed = true;
+    }
     this.render();
     this.changed();
   }
 
   clear() {
-    this.outline = [];
+    this.building.outline = [];
+    this.building.holes = [];
+    this.building.footprint = null;
     this.closed = false;
-    this.footprint = null;
+    this.hole = -1;
     this.render();
+  }
+
+  // A new drawing: an empty grid, one part, one storey, a hall; the next edit opens a new file.
+  startNew() {
+    this.building = newBuilding();
+    this.loadedPath = null;
+    this.initialStoreyHeight = 3;
+    this.view = { left: 0, bottom: 0, scale: 12 };
+    this.panel.innerHTML = '';
+    this.clear();
+  }
+
+  hint(text) {
+    const hint = this.panel.querySelector('.draw-hint');
+    if (hint) hint.textContent = text;
   }
 
   // A loaded file keeps its name; a new drawing is named after its building.
@@ -220,102 +245,189 @@ export class DrawingTool {
     this.onGrammar(this.path, text);
   }
 
-  render() {
-    const width = 480;
-    const height = 300;
-    const points = this.outline.map(([x, y]) => `${x * pixelsPerMetre},${height - y * pixelsPerMetre}`);
+  redraw() {
+    this.render();
+    this.changed();
+  }
+
+  gridSvg() {
+    const { outline, holes, footprint } = this.building;
     const gridLines = [];
-    for (let x = 0; x <= width; x += pixelsPerMetre) {
-      gridLines.push(`<line x1="${x}" y1="0" x2="${x}" y2="${height}" class="${x % (5 * pixelsPerMetre) ? 'minor' : 'major'}"/>`);
-    }
-    for (let y = height; y >= 0; y -= pixelsPerMetre) {
-      gridLines.push(`<line x1="0" y1="${y}" x2="${width}" y2="${y}" class="${(height - y) % (5 * pixelsPerMetre) ? 'minor' : 'major'}"/>`);
-    }
-    const shape = this.closed
-      ? `<polygon points="${points.join(' ')}" class="outline closed"/>`
-      : `<polyline points="${points.join(' ')}" class="outline"/>`;
-    const corners = points.map((p, i) => {
+    // A line every metre (every 5 m when metres would be closer than 4 pixels), every 5th darker.
+    const { left, bottom, scale } = this.view;
+    const step = scale >= 4 ? 1 : scale >= 0.8 ? 5 : 10 ** Math.ceil(Math.log10(4 / scale));
+    const lines = (from, pixels, draw) => {
+      for (let k = Math.ceil(from / step); (k * step - from) * scale <= pixels; ++k) {
+        draw((k * step - from) * scale, k % 5 ? 'minor' : 'major');
+      }
+    };
+    lines(left, gridWidth, (x, c) => gridLines.push(`<line x1="${x}" y1="0" x2="${x}" y2="${gridHeight}" class="${c}"/>`));
+    lines(bottom, gridHeight, (y, c) => gridLines.push(`<line x1="0" y1="${gridHeight - y}" x2="${gridWidth}" y2="${gridHeight - y}" class="${c}"/>`));
+    const screen = (ring) => ring.map((p) => this.toScreen(p).join(','));
+    const closedRings = [this.closed ? outline : null, ...holes.filter((_, h) => h !== this.hole)].filter(Boolean);
+    const area = closedRings.length
+      ? `<path d="${closedRings.map((r) => `M${screen(r).join('L')}Z`).join('')}" class="outline closed" fill-rule="evenodd"/>`
+      : '';
+    const open = !this.closed ? outline : this.hole >= 0 ? holes[this.hole] : null;
+    const line = open ? `<polyline points="${screen(open).join(' ')}" class="outline"/>` : '';
+    const corners = [outline, ...holes].flatMap((ring, r) => (footprint && r === 0 ? [] : screen(ring).map((p, i) => {
       const [cx, cy] = p.split(',');
-      return `<circle cx="${cx}" cy="${cy}" r="4" class="corner" data-corner="${i}"/>`;
-    });
-    const option = (list, chosen) => list.map((v) => `<option ${v === chosen ? 'selected' : ''}>${v}</option>`).join('');
-    const storeyRow = (storey, p, s) => `
-      <div class="storey-row" data-part="${p}" data-storey="${s}">
-        <b>storey ${s}</b>
-        <select name="direction">${option(['horizontal', 'vertical'], storey.direction)}</select>
-        ${storey.rooms.map((room, r) => `
-          <span class="room-item" data-room="${r}">
-            <select name="type">${option(roomTypes, room.type)}</select>
-            <select name="size">${option(sizes, room.size)}</select>
-            <input name="walls" type="number" min="0" max="32" placeholder="walls" title="walls (0: as the subdivision gives, or 3-32)" value="${room.walls || ''}">
-            <input name="windows" type="number" min="0" max="32" placeholder="win." title="windows on exterior walls (0 when empty)" value="${room.windows ?? ''}">
-            <label title="an entrance door from outside"><input name="entrance" type="checkbox" ${room.entrance ? 'checked' : ''}>entry</label>
-            <button type="button" name="remove-room" title="remove the room">×</button>
-          </span>`).join('')}
-        <button type="button" name="add-room">+ room</button>
+      return `<circle cx="${cx}" cy="${cy}" r="4" class="corner" data-ring="${r}" data-corner="${i}"/>`;
+    })));
+    return `<svg width="${gridWidth}" height="${gridHeight}" class="draw-grid">${gridLines.join('')}${area}${line}${corners.join('')}</svg>`;
+  }
+
+  // The tree's HTML; every node's block carries data-node, its index in this.nodes.
+  treeHtml() {
+    this.nodes = [];
+    const id = (node, parent) => this.nodes.push({ node, parent }) - 1;
+    const orientationSelect = (o) => `<select name="orientation" title="how the children are arranged">${option(orientations, o)}</select>`;
+    const removeButton = (parent, what) => (parent && parent.children.length > 1
+      ? `<button type="button" name="remove" title="remove the ${what}">×</button>` : '');
+    const division = (d, parent) => {
+      const n = id(d, parent);
+      if (d.kind === 'room') {
+        return `<span class="room-item" data-node="${n}" data-symbol="${escape(d.symbol || '')}">
+            <select name="type">${option(roomTypes, d.type)}</select>
+            <select name="size">${option(sizes, d.size)}</select>
+            <input name="walls" type="number" min="0" max="32" placeholder="walls" title="walls (0: as the subdivision gives, or 3-32)" value="${d.walls || ''}">
+            <input name="windows" type="number" min="0" max="32" placeholder="win." title="windows on exterior walls" value="${d.windows || ''}">
+            <label title="an entrance door from outside"><input name="entrance" type="checkbox" ${d.entrance ? 'checked' : ''}>entry</label>
+            <button type="button" name="split" title="split the room: a container across its row holding it and a new room">split</button>
+            ${removeButton(parent, 'room')}
+          </span>`;
+      }
+      return `<span class="division-group" data-node="${n}">
+          <i>rooms</i> ${orientationSelect(d.orientation)}
+          <button type="button" name="add-room">+ room</button>${removeButton(parent, 'container')}
+          ${d.children.map((c) => division(c, d)).join('')}
+        </span>`;
+    };
+    const part = (p, parent) => {
+      const n = id(p, parent);
+      if (p.kind === 'parts') {
+        return `<div class="part-group" data-node="${n}">
+            <b>parts</b> ${orientationSelect(p.orientation)}
+            <button type="button" name="add-part">+ part</button>${removeButton(parent, 'container')}
+            ${p.children.map((c) => part(c, p)).join('')}
+          </div>`;
+      }
+      const storeys = p.floors.map((f, s) => {
+        const fn = id(f, p);
+        return `<div class="storey-row" data-node="${fn}">
+            <b>storey ${s}</b> ${orientationSelect(f.orientation)}
+            <button type="button" name="add-room">+ room</button>
+            ${p.floors.length > 1 ? '<button type="button" name="remove-storey" title="remove the storey">×</button>' : ''}
+            ${f.children.map((c) => division(c, f)).join('')}
+          </div>`;
+      }).join('');
+      return `<div class="part-block" data-node="${n}">
+          <b>part</b>
+          <label>roof <select name="part-roof">${option(roofs, p.roof)}</select></label>
+          <label title="0: a disposable part, removed after the subdivision (a notch)">roof height
+            <input name="part-roof-height" type="number" min="0" step="0.5" value="${p.roofHeight}"></label>
+          <button type="button" name="add-storey">+ storey</button>
+          <button type="button" name="split" title="split the part: a container across its row holding it and a new part">split</button>
+          ${removeButton(parent, 'part')}
+          ${storeys}
+        </div>`;
+    };
+    const root = this.building.root;
+    const rootId = id(root, null);
+    return `<div class="part-group building-root" data-node="${rootId}">
+        <b>building</b> parts ${orientationSelect(root.orientation)}
+        <button type="button" name="add-part">+ part</button>
+        ${root.children.map((c) => part(c, root)).join('')}
       </div>`;
-    const partBlocks = this.parts.map((part, p) => `
-      <div class="part-block" data-part="${p}">
-        <b>part ${p}</b>
-        <label>roof <select name="part-roof">${option(roofs, part.roof)}</select></label>
-        <label title="0: a disposable part, removed after the subdivision (a notch)">roof height
-          <input name="part-roof-height" type="number" min="0" step="0.5" value="${part.roofHeight}"></label>
-        <button type="button" name="add-storey">+ storey</button>
-        ${this.parts.length > 1 ? '<button type="button" name="remove-part">× part</button>' : ''}
-        ${part.storeys.map((storey, s) => storeyRow(storey, p, s)).join('')}
-      </div>`).join('');
+  }
+
+  render() {
+    const b = this.building;
     const previous = (name, fallback) => this.panel.querySelector(`[name=${name}]`)?.value ?? fallback;
-    const values = { name: previous('name', this.initial.name ?? 'Drawn building'),
-                     storeyHeight: previous('storey-height', this.initial.storeyHeight ?? '3') };
+    const name = previous('name', b.name);
+    const storeyHeight = previous('storey-height', String(this.initialStoreyHeight ?? 3));
+    const hint = b.footprint
+      ? `the outline of feature ${b.footprint.feature} of ${b.footprint.file} (shown scaled to fit)`
+      : !this.closed ? 'click the grid to add corners (0.5 m steps); click the first corner to close'
+        : this.hole >= 0 ? 'click inside the outline to add the hole\'s corners; click its first corner to close it'
+          : 'outline closed: drag a corner to move it';
     this.panel.innerHTML = `
       <div class="draw-controls">
-        <label>name <input name="name" value="${values.name.replace(/"/g, '&quot;')}"></label>
-        <label>storey height <input name="storey-height" type="number" min="2" step="0.1" value="${values.storeyHeight}"></label>
-        <label>parts side by side <select name="parts-direction">${option(['vertical', 'horizontal'], this.partsDirection)}</select></label>
-        <button type="button" name="add-part">+ part</button>
+        <label>name <input name="name" value="${escape(name)}"></label>
+        <label>storey height <input name="storey-height" type="number" min="2" step="0.1" value="${storeyHeight}"></label>
+        <label title="doors room to room and between parts, the entrance and the stairs, written by the tool">
+          <input name="automatic" type="checkbox" ${b.automatic ? 'checked' : ''}>automatic doors</label>
         <label title="the outline of a feature of a GeoJSON file beside the drawing">footprint from
-          <select name="footprint-file"><option value="">(drawn)</option>${this.files.geojson().map((f) => `<option ${this.footprint?.file === f ? 'selected' : ''}>${f}</option>`).join('')}</select>
-          <select name="footprint-feature">${this.footprint ? `<option>${this.footprint.feature}</option>` : ''}</select></label>
-        <button type="button" name="close" ${this.closed || this.outline.length < 3 ? 'disabled' : ''}>close outline</button>
+          <select name="footprint-file"><option value="">(drawn)</option>${this.files.geojson().map((f) => `<option ${b.footprint?.file === f ? 'selected' : ''}>${escape(f)}</option>`).join('')}</select>
+          <select name="footprint-feature">${b.footprint ? `<option>${escape(b.footprint.feature)}</option>` : ''}</select></label>
+        <button type="button" name="close" ${(this.closed && this.hole < 0) ? 'disabled' : ''}>close outline</button>
+        <button type="button" name="add-hole" ${!this.closed || this.hole >= 0 || b.footprint ? 'disabled' : ''} title="a courtyard: draw its corners inside the outline">+ hole</button>
+        <button type="button" name="remove-hole" ${b.holes.length === 0 || this.hole >= 0 ? 'disabled' : ''}>− hole</button>
         <button type="button" name="clear">clear</button>
+        <button type="button" name="new" title="a new drawing (the open file stays as it is)">new</button>
       </div>
-      <svg width="${width}" height="${height}" class="draw-grid">${gridLines.join('')}${shape}${corners.join('')}</svg>
-      <div class="draw-hint">${this.footprint ? `the outline of feature ${this.footprint.feature} of ${this.footprint.file} (shown scaled to fit)` : this.closed ? 'outline closed: drag a corner to move it' : 'click the grid to add corners (0.5 m steps); click the first corner to close'}</div>
-      ${partBlocks}`;
+      ${this.gridSvg()}
+      <div class="draw-hint">${escape(hint)}</div>
+      ${this.treeHtml()}`;
     this.bind();
   }
 
-  bind() {
-    const svg = this.panel.querySelector('svg');
-    svg.addEventListener('click', (event) => { if (!this.dragging && !this.footprint) this.click(event); });
+  bindCorners(svg) {
     for (const corner of svg.querySelectorAll('.corner')) {
       corner.addEventListener('mousedown', (event) => {
-        if (!this.closed || this.footprint) return;
+        if (!this.closed || this.building.footprint) return;
         event.preventDefault();
+        const r = Number(corner.dataset.ring);
+        const ring = r === 0 ? this.building.outline : this.building.holes[r - 1];
         const i = Number(corner.dataset.corner);
         const move = (e) => {
           this.dragging = true;
-          this.outline[i] = this.snapped(e);
-          const p = this.outline[i];
-          corner.setAttribute('cx', p[0] * pixelsPerMetre);
-          corner.setAttribute('cy', 300 - p[1] * pixelsPerMetre);
-          const points = this.outline.map(([x, y]) => `${x * pixelsPerMetre},${300 - y * pixelsPerMetre}`);
-          svg.querySelector('.outline').setAttribute('points', points.join(' '));
+          ring[i] = this.snapped(e);
+          const [cx, cy] = this.toScreen(ring[i]);
+          corner.setAttribute('cx', cx);
+          corner.setAttribute('cy', cy);
         };
         const up = () => {
           window.removeEventListener('mousemove', move);
           window.removeEventListener('mouseup', up);
-          if (this.dragging) this.changed();
+          if (this.dragging) this.redraw();
           setTimeout(() => { this.dragging = false; }, 0);
         };
         window.addEventListener('mousemove', move);
         window.addEventListener('mouseup', up);
       });
     }
+  }
+
+  bind() {
+    const svg = this.panel.querySelector('svg');
+    svg.addEventListener('click', (event) => { if (!this.dragging && !this.building.footprint) this.click(event); });
+    this.bindCorners(svg);
     const on = (selector, event, handler) => {
       for (const el of this.panel.querySelectorAll(selector)) el.addEventListener(event, handler);
     };
-    on('[name=close]', 'click', () => this.close());
+    on('.draw-controls [name=close]', 'click', () => this.close());
+    on('.draw-controls [name=clear]', 'click', () => this.clear());
+    on('.draw-controls [name=new]', 'click', () => this.startNew());
+    on('.draw-controls [name=add-hole]', 'click', () => {
+      this.building.holes.push([]);
+      this.hole = this.building.holes.length - 1;
+      this.render();
+    });
+    on('.draw-controls [name=remove-hole]', 'click', () => {
+      this.building.holes.pop();
+      this.redraw();
+    });
+    on('.draw-controls [name=automatic]', 'change', (e) => {
+      this.building.automatic = e.target.checked;
+      this.changed();
+    });
+    on('.draw-controls [name=name]', 'change', () => this.changed());
+    on('.draw-controls [name=storey-height]', 'change', () => {
+      const height = this.storeyHeight();
+      for (const { node } of this.nodes) if (node.kind === 'floor') node.height = height;
+      this.changed();
+    });
     on('[name=footprint-file]', 'change', async (e) => {
       const file = e.target.value;
       const features = this.panel.querySelector('[name=footprint-feature]');
@@ -324,170 +436,60 @@ export class DrawingTool {
         return;
       }
       const ids = featureIds(await this.files.read(file));
-      features.replaceChildren(new Option('(feature)', ''), ...ids.map((id) => new Option(id, id)));
+      features.replaceChildren(new Option('(feature)', ''), ...ids.map((i) => new Option(i, i)));
     });
     on('[name=footprint-feature]', 'change', (e) => {
       const file = this.panel.querySelector('[name=footprint-file]').value;
       if (file && e.target.value) this.useFootprint(file, e.target.value);
     });
-    on('[name=clear]', 'click', () => this.clear());
-    const redraw = () => {
-      this.render();
-      this.changed();
-    };
-    on('[name=add-part]', 'click', () => {
-      this.parts.push(newPart());
-      redraw();
-    });
-    on('[name=parts-direction]', 'change', (e) => {
-      this.partsDirection = e.target.value;
-      this.changed();
-    });
-    on('.draw-controls input', 'change', () => this.changed());
-    for (const block of this.panel.querySelectorAll('.part-block')) {
-      const p = Number(block.dataset.part);
-      const part = this.parts[p];
-      block.querySelector('[name=part-roof]').addEventListener('change', (e) => {
-        part.roof = e.target.value;
-        this.changed();
-      });
-      block.querySelector('[name=part-roof-height]').addEventListener('change', (e) => {
-        part.roofHeight = Math.max(0, Number(e.target.value) || 0);
-        this.changed();
-      });
-      block.querySelector('[name=add-storey]').addEventListener('click', () => {
-        part.storeys.push({ rooms: [{ type: 'landing', size: 'medium' }, { type: 'bedroom', size: 'medium' }],
-                            direction: 'horizontal' });
-        redraw();
-      });
-      block.querySelector('[name=remove-part]')?.addEventListener('click', () => {
-        this.parts.splice(p, 1);
-        redraw();
-      });
-    }
-    for (const row of this.panel.querySelectorAll('.storey-row')) {
-      const storey = this.parts[Number(row.dataset.part)].storeys[Number(row.dataset.storey)];
-      row.querySelector('[name=direction]').addEventListener('change', (e) => {
-        storey.direction = e.target.value;
-        this.changed();
-      });
-      row.querySelector('[name=add-room]').addEventListener('click', () => {
-        storey.rooms.push({ type: 'bedroom', size: 'medium' });
-        redraw();
-      });
-      for (const item of row.querySelectorAll('.room-item')) {
-        const room = storey.rooms[Number(item.dataset.room)];
-        item.querySelector('[name=type]').addEventListener('change', (e) => { room.type = e.target.value; this.changed(); });
-        item.querySelector('[name=size]').addEventListener('change', (e) => { room.size = e.target.value; this.changed(); });
-        item.querySelector('[name=walls]').addEventListener('change', (e) => {
-          const walls = Math.round(Number(e.target.value) || 0);
-          room.walls = walls >= 3 && walls <= 32 ? walls : 0;  // the grammar's bounds
-          e.target.value = room.walls || '';
-          this.changed();
-        });
-        item.querySelector('[name=windows]').addEventListener('change', (e) => {
-          room.windows = e.target.value === '' ? undefined : Math.min(32, Math.max(0, Math.round(Number(e.target.value) || 0)));
-          this.changed();
-        });
-        item.querySelector('[name=entrance]').addEventListener('change', (e) => { room.entrance = e.target.checked; this.changed(); });
-        item.querySelector('[name=remove-room]').addEventListener('click', () => {
-          if (storey.rooms.length <= 1) return;
-          storey.rooms.splice(Number(item.dataset.room), 1);
-          redraw();
-        });
-      }
-    }
+    for (const block of this.panel.querySelectorAll('[data-node]')) this.bindNode(block);
   }
-}
 
-// The drawing a `.bldg` text describes, when the tool can show it: one building with one outline
-// (no holes), one building part or one container of building parts, their floors each holding
-// rooms (directly or in one divisions container). Returns { name, outline, parts,
-// partsDirection, storeyHeight } or { why }.
-// Transitions are not read: the tool writes its own (doors room to room, the entrance, stairs).
-export function drawingOf(text) {
-  const rules = new Map();
-  for (const raw of text.split('\n')) {
-    const line = raw.replace(/#.*$/, '').trim();
-    const m = /^(\w+)\s*->\s*(\w+)\s*\((.*)\)\s*(?::\s*\{([^}]*)\})?\s*$/.exec(line);
-    if (!line) continue;
-    if (!m) return { why: `a rule the tool cannot read: ${line.slice(0, 60)}` };
-    rules.set(m[1], { kind: m[2], args: m[3], children: m[4] ? m[4].split(',').map((c) => c.trim()).filter(Boolean) : [] });
-  }
-  const buildings = [...rules.values()].filter((r) => r.kind === 'building');
-  if (buildings.length !== 1) return { why: 'not one building rule' };
-  const building = buildings[0];
-  const fromFile = /^"([^"]*)"\s*,\s*geojson\(\s*"([^"]*)"\s*,\s*"([^"]*)"\s*\)\s*$/.exec(building.args);
-  const head = fromFile ? [null, fromFile[1], '', ''] : /^"([^"]*)"\s*,\s*\[([^\]]*)\]\s*(.*)$/.exec(building.args);
-  if (!head) return { why: 'an outline the tool cannot read' };
-  if (/\[/.test(head[3])) return { why: 'the outline has holes' };
-  const outline = [...head[2].matchAll(/\(\s*(-?[\d.]+)\s*,\s*(-?[\d.]+)\s*\)/g)].map((p) => [Number(p[1]), Number(p[2])]);
-  if (!fromFile && outline.length < 3) return { why: 'the outline has fewer than 3 corners' };
-  const structure = building.children.map((c) => rules.get(c)).filter((r) => r && r.kind !== 'door' &&
-    r.kind !== 'entrance' && r.kind !== 'stair' && r.kind !== 'window');
-  if (structure.length !== 1) return { why: 'the building holds more than one part or container' };
-  let partRules = structure;
-  let partsDirection = 'vertical';
-  if (structure[0].kind === 'buildingparts') {
-    partsDirection = structure[0].args.trim() || 'vertical';
-    partRules = structure[0].children.map((c) => rules.get(c));
-  }
-  if (partRules.some((r) => !r || r.kind !== 'buildingpart')) {
-    return { why: 'building parts inside building parts are not in the tool yet' };
-  }
-  let storeyHeight = null;
-  const parts = [];
-  for (const partRule of partRules) {
-    const [roof, roofHeight] = partRule.args.split(',').map((a) => a.trim());
-    const storeys = [];
-    for (const floorName of partRule.children) {
-      const floor = rules.get(floorName);
-      if (!floor || floor.kind !== 'floor') return { why: `${floorName} is not a floor` };
-      const args = floor.args.split(',').map((a) => a.trim()).filter(Boolean);
-      const height = args.find((a) => /^[\d.]+$/.test(a));
-      if (height && storeyHeight === null) storeyHeight = Number(height);
-      let direction = args.find((a) => a === 'horizontal' || a === 'vertical') || 'horizontal';
-      let roomNames = floor.children;
-      if (roomNames.length === 1 && rules.get(roomNames[0])?.kind === 'divisions') {
-        const divisions = rules.get(roomNames[0]);
-        direction = divisions.args.trim() || direction;
-        roomNames = divisions.children;
-      }
-      const rooms = [];
-      for (const roomName of roomNames) {
-        const room = rules.get(roomName);
-        if (!room || (room.kind !== 'room' && room.kind !== 'division')) {
-          return { why: `${roomName}: divisions inside divisions are not in the tool yet` };
-        }
-        const [type, size, walls, windows, entrance] = room.args.split(',').map((a) => a.trim());
-        const read = { type, size: size || 'medium' };
-        if (walls !== undefined && Number(walls) > 0) read.walls = Number(walls);
-        if (windows !== undefined) read.windows = Number(windows);
-        if (entrance === 'true') read.entrance = true;
-        rooms.push(read);
-      }
-      if (rooms.length === 0) return { why: `${floorName} has no rooms` };
-      storeys.push({ rooms, direction });
+  // The controls of one tree node (only its own: nested blocks bind theirs).
+  bindNode(block) {
+    const { node, parent } = this.nodes[Number(block.dataset.node)];
+    const own = (name) => [...block.querySelectorAll(`[name=${name}]`)].find((el) => el.closest('[data-node]') === block);
+    const listen = (name, event, handler) => own(name)?.addEventListener(event, handler);
+    listen('orientation', 'change', (e) => { node.orientation = e.target.value; this.changed(); });
+    listen('remove', 'click', () => { if (remove(parent, node)) this.redraw(); });
+    listen('split', 'click', () => {
+      split(parent, node, node.kind === 'room' ? newRoom() : newPart(this.storeyHeight()));
+      this.redraw();
+    });
+    listen('add-part', 'click', () => { node.children.push(newPart(this.storeyHeight())); this.redraw(); });
+    listen('add-room', 'click', () => { node.children.push(newRoom()); this.redraw(); });
+    if (node.kind === 'part') {
+      listen('part-roof', 'change', (e) => { node.roof = e.target.value; this.changed(); });
+      listen('part-roof-height', 'change', (e) => {
+        node.roofHeight = Math.max(0, Number(e.target.value) || 0);
+        this.changed();
+      });
+      listen('add-storey', 'click', () => {
+        node.floors.push(newFloor(this.storeyHeight(), [newRoom('landing'), newRoom('bedroom')]));
+        this.redraw();
+      });
     }
-    if (storeys.length === 0) return { why: 'a building part has no floors' };
-    parts.push({ roof, roofHeight: Number(roofHeight) || 0, storeys });
-  }
-  const connections = [];
-  for (const [name, rule] of rules) {
-    if (rule.kind === 'door' && name.startsWith('connect')) {
-      connections.push(rule.args.split(',').slice(0, 2).map((a) => a.trim()));
+    if (node.kind === 'floor') {
+      listen('remove-storey', 'click', () => {
+        if (parent.floors.length <= 1) return;
+        parent.floors.splice(parent.floors.indexOf(node), 1);
+        this.redraw();
+      });
+    }
+    if (node.kind === 'room') {
+      listen('type', 'change', (e) => { node.type = e.target.value; this.changed(); });
+      listen('size', 'change', (e) => { node.size = e.target.value; this.changed(); });
+      listen('walls', 'change', (e) => {
+        const walls = Math.round(Number(e.target.value) || 0);
+        node.walls = walls >= 3 && walls <= 32 ? walls : 0; // the grammar's bounds
+        e.target.value = node.walls || '';
+        this.changed();
+      });
+      listen('windows', 'change', (e) => {
+        node.windows = Math.min(32, Math.max(0, Math.round(Number(e.target.value) || 0)));
+        this.changed();
+      });
+      listen('entrance', 'change', (e) => { node.entrance = e.target.checked; this.changed(); });
     }
   }
-  return { name: head[1], outline, parts, partsDirection, storeyHeight: storeyHeight || 3,
-           connections, footprint: fromFile ? { file: fromFile[2], feature: fromFile[3] } : null };
-}
-
-function orientedCounterClockwise(ring) {
-  let twiceArea = 0;
-  for (let i = 0; i < ring.length; ++i) {
-    const [x0, y0] = ring[i];
-    const [x1, y1] = ring[(i + 1) % ring.length];
-    twiceArea += x0 * y1 - x1 * y0;
-  }
-  return twiceArea >= 0 ? ring : [...ring].reverse();
 }

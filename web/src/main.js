@@ -170,25 +170,39 @@ async function showPlan(url) {
     room.addEventListener('contextmenu', (event) => {
       if (!state.drawing || element('draw').hidden || state.drawing.path !== state.path) return;
       event.preventDefault();
-      showConnectMenu(event.clientX, event.clientY, room.dataset.room);
+      showRoomMenu(event.clientX, event.clientY, room.dataset.room);
     });
   }
 }
 
-function showConnectMenu(x, y, room) {
+// The plan's room menu while the drawing tool shows the open file: connect the room to the next
+// one clicked, split it (a new room beside it), remove it.
+function showRoomMenu(x, y, room) {
   const menu = element('menu');
   menu.style.left = `${x}px`;
   menu.style.top = `${y}px`;
   menu.hidden = false;
   menu.replaceChildren();
-  const item = document.createElement('button');
-  item.textContent = `connect ${room} to…`;
-  item.onclick = () => {
-    menu.hidden = true;
+  const item = (name, text, action) => {
+    const button = document.createElement('button');
+    button.name = name;
+    button.textContent = text;
+    button.onclick = () => {
+      menu.hidden = true;
+      action();
+    };
+    menu.append(button);
+  };
+  item('connect', `connect ${room} to…`, () => {
     state.connectFrom = room;
     setStatus(`click the room to connect ${room} to`);
-  };
-  menu.append(item);
+  });
+  item('split', `split ${room}`, () => {
+    if (!state.drawing.splitRoom(room)) setStatus(`${room} is not in the drawing`);
+  });
+  item('remove', `remove ${room}`, () => {
+    if (!state.drawing.removeRoom(room)) setStatus(`${room} is the last room of its row`);
+  });
   setTimeout(() => document.addEventListener('click', () => { menu.hidden = true; }, { once: true }), 0);
 }
 
@@ -327,13 +341,17 @@ async function start() {
         geojson: () => [...element('lot').options].map((o) => o.value)
           .filter((f) => f.endsWith('.geojson') && !f.includes('/')),
         read: async (file) => (await api(`/api/file?path=${encodeURIComponent(file)}`)).text(),
+        parse: async (text, path) => (await api(`/api/drawing?path=${encodeURIComponent(path)}`,
+                                                { method: 'POST', body: text })).json(),
       });
       state.drawing = drawing;
     }
     // An open .bldg the tool can show is drawn in it (else the tool says why not).
     if (!panel.hidden && state.path && /\.bldg$/.test(state.path)) {
-      const why = drawing.load(editor.state.doc.toString(), state.path);
-      setStatus(why ? `the drawing tool cannot show ${state.path}: ${why}` : `drawing ${state.path}`);
+      const shown = state.path;
+      drawing.load(editor.state.doc.toString(), shown).then((why) => {
+        setStatus(why ? `the drawing tool cannot show ${shown}: ${why}` : `drawing ${shown}`);
+      }).catch((error) => setStatus(String(error)));
     }
   };
   element('random').onsubmit = (event) => {

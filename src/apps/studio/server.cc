@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/studio/drawing.h"
 #include "apps/studio/jobs.h"
 #include "apps/studio/reference.h"
 #include "apps/studio/workspace.h"
@@ -237,6 +238,12 @@ class Studio {
         return refuse(response, 500, error);
       }
       reply_json(response, {{"saved", request.get_param_value("path")}});
+    });
+    // The drawing tool's reading of a .bldg text (the editor's, saved or not).
+    server.Post("/api/drawing", [](const httplib::Request& request, httplib::Response& response) {
+      const std::string name =
+          request.has_param("path") ? request.get_param_value("path") : std::string("drawing.bldg");
+      reply_json(response, drawing_json(name, request.body));
     });
     server.Post("/api/check", [this](const httplib::Request& request, httplib::Response& response) {
       run_job(request, response, Job::kCheck);

@@ -1,0 +1,110 @@
+// The drawing tool's model (web/src/draw_model.js) without a browser: trees the tool can make
+// (parts split into sub-parts and back, rooms split into containers, holes, a disposable part)
+// are written as `.bldg` text that the command line builds with the rooms drawn; symbols stay put
+// across edits; removing a room takes its doors with it.
+// Usage: node draw_model.mjs INSULA TMPDIR
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+
+import {
+  findRoom, grammar, leafParts, newBuilding, newPart, newRoom, remove, split,
+} from '../../web/src/draw_model.js';
+
+const [insula, tmp] = process.argv.slice(2);
+const failures = [];
+const check = (ok, what) => { if (!ok) failures.push(what); };
+
+// Builds `text` from the command line; returns its report.
+function build(name, text) {
+  const file = path.join(tmp, `${name}.bldg`);
+  fs.writeFileSync(file, text);
+  const report = path.join(tmp, `${name}.json`);
+  const run = spawnSync(insula, ['build', file, '--report', report, '-o', path.join(tmp, `${name}.glb`), '-q'],
+                        { encoding: 'utf8' });
+  if (run.status !== 0) {
+    failures.push(`${name} does not build: ${run.stderr}\n${text}`);
+    return null;
+  }
+  return JSON.parse(fs.readFileSync(report, 'utf8'));
+}
+
+// A 16 x 12 m house: one part, one storey, a hall and two rooms.
+const house = newBuilding();
+house.name = 'Tree house';
+house.outline = [[0, 0], [16, 0], [16, 12], [0, 12]];
+const floor = house.root.children[0].floors[0];
+floor.children.push(newRoom('kitchen'), newRoom('bedroom'));
+let text = grammar(house);
+check(text.includes('building -> building("Tree house", [(0, 0), (16, 0), (16, 12), (0, 12)], vertical)'),
+      `the axiom: ${text.split('\n')[1]}`);
+let report = build('house', text);
+check(report && report.rooms.length === 3, 'three rooms');
+check(report && report.doors.length >= 2, 'automatic doors');
+const kitchen = floor.children[1].symbol;
+
+// The kitchen split: a divisions container across the storey's row holding it and a new room.
+split(floor, floor.children[1], newRoom('storage'));
+text = grammar(house);
+const container = floor.children[1];
+check(container.kind === 'divisions' && container.orientation === 'vertical',
+      `a split room's container lies across its row: ${container.kind} ${container.orientation}`);
+check(text.includes(`${container.symbol} -> divisions(vertical) : {${kitchen}, storage}`),
+      `the container's rule: ${text}`);
+report = build('split_room', text);
+check(report && report.rooms.length === 4, `four rooms after the split: ${report && report.rooms.length}`);
+check(findRoom(house, kitchen)?.parent === container, 'the kitchen keeps its symbol inside the container');
+
+// The storage room split again: a container inside the container (divisions inside divisions).
+split(container, container.children[1], newRoom('bath'));
+report = build('deep_rooms', grammar(house));
+check(report && report.rooms.length === 5, `five rooms two containers deep: ${report && report.rooms.length}`);
+
+// The part split: the building's row is vertical, so its sub-parts lie side by side horizontally;
+// the new part split again comes back vertical.
+const first = house.root.children[0];
+split(house.root, first, newPart(3));
+const parts = house.root.children[0];
+check(parts.kind === 'parts' && parts.orientation === 'horizontal', 'a split part becomes a horizontal container');
+split(parts, parts.children[1], newPart(3));
+check(parts.children[1].kind === 'parts' && parts.children[1].orientation === 'vertical',
+      'the sub-part splits back into a vertical container');
+text = grammar(house);
+report = build('deep_parts', text);
+check(report && report.rooms.length === 7, `rooms of three parts: ${report && report.rooms.length}`);
+check(leafParts(house.root).length === 3, 'three building parts');
+check(/buildingparts\(horizontal\) : \{part, parts\d*\}/.test(text), `nested parts in the grammar: ${text}`);
+
+// A courtyard: a hole in the outline.
+house.holes = [[[6, 4], [10, 4], [10, 8], [6, 8]]];
+text = grammar(house);
+check(text.includes('[(6, 4), (10, 4), (10, 8), (6, 8)], vertical)'), 'the hole in the axiom');
+report = build('courtyard', text);
+check(report !== null, 'the building with a courtyard builds');
+
+// A disposable part (roof height 0): its rooms go, nothing leads into it.
+const last = leafParts(house.root)[2];
+last.roofHeight = 0;
+text = grammar(house);
+check(!text.split('\n').some((l) => / -> (door|stair)\(/.test(l) && l.includes(last.floors[0].children[0].symbol)),
+      'a door leads into the disposable part');
+report = build('disposable', text);
+check(report && report.rooms.length === 6, `the disposable part's room is gone: ${report && report.rooms.length}`);
+
+// Removing a room takes the door the user connected to it.
+house.transitions.push({ symbol: null, kind: 'door', from: kitchen, to: 'bath', width: 0 });
+text = grammar(house);
+check(text.includes(`-> door(${kitchen}, bath)`), 'the connected door');
+remove(container.children[1], container.children[1].children[1]);
+text = grammar(house);
+check(!text.includes(`door(${kitchen}, bath)`), 'a door into a removed room stays');
+check(house.transitions.length === 0, 'the removed room\'s transition is forgotten');
+check(build('removed', text) !== null, 'the building without the room builds');
+const lone = newBuilding().root.children[0].floors[0];
+check(!remove(lone, lone.children[0]) && lone.children.length === 1, 'a storey\'s last room removed');
+
+if (failures.length) {
+  console.error(failures.join('\n'));
+  process.exit(1);
+}
+console.log('draw model: 9 trees written and built');
