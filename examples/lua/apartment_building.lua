@@ -106,7 +106,7 @@ for w in query("wall and parent(living) and occlusion(facade) > 0.9") do
     door(w, { u = u + 0.5, sill = 0, width = 0.9, height = 2.2, label = "balcony door" })
     if w.level > 0 then
       local r = region(w, { label = "balcony", min = { u - 0.2, 0, 1.0 }, max = { u + 0.2, 0, 1.0 } })
-      place(r, "balcony", { label = "balcony" })
+      place(r, "balcony", { kind = "installation", label = "balcony" })
     end
   end
 end

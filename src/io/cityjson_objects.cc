@@ -29,6 +29,8 @@ std::string_view object_type(shape::PartKind kind) {
       return "BuildingRoom";
     case shape::PartKind::kInstallation:
       return "BuildingInstallation";
+    case shape::PartKind::kFurniture:
+      return "BuildingFurniture";
     case shape::PartKind::kBuildingPart:
     case shape::PartKind::kOther:
       break;

@@ -46,6 +46,8 @@ std::string_view kind_name(shape::PartKind kind) {
       return "Room";
     case shape::PartKind::kInstallation:
       return "Installation";
+    case shape::PartKind::kFurniture:
+      return "Furniture";
     case shape::PartKind::kOther:
       break;
   }

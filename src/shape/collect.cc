@@ -74,6 +74,8 @@ Scene collect(const ShapeTree& tree, const CollectOptions& options) {
       const std::string_view label = tree.first_label(id);
       part.name = label.empty() ? "shape_" + std::to_string(id) : std::string(label);
       part.attributes = tree.resolved_attributes(id);
+      if (tree.has_label(id, kFurnitureLabel)) part.kind = PartKind::kFurniture;
+      if (tree.has_label(id, kInstallationLabel)) part.kind = PartKind::kInstallation;
       const std::optional<kernel::MaterialId> textured = texture_state(part, scene);
       if (auto it = uses.find(s.mesh.get()); it != uses.end() && it->second > 1 && !textured) {
         part.instance_of = s.mesh;

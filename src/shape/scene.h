@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kernel/mesh.h"
@@ -56,7 +57,12 @@ struct Light {
 };
 
 // A CityGML-like object type for a part.
-enum class PartKind { kBuildingPart, kStorey, kRoom, kInstallation, kOther };
+// kFurniture: movable things placed in rooms (seed 001 §4.5; CityJSON BuildingFurniture).
+enum class PartKind { kBuildingPart, kStorey, kRoom, kInstallation, kFurniture, kOther };
+// The labels a front-end gives what it places (seed 001 §4.5): collect() makes such parts
+// kFurniture (in rooms) or kInstallation (on facades: balconies).
+inline constexpr std::string_view kFurnitureLabel = "furniture";
+inline constexpr std::string_view kInstallationLabel = "installation";
 
 struct Part {
   std::string name;

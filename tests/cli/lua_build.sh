@@ -114,15 +114,20 @@ node -e '
   const city = JSON.parse(fs.readFileSync(process.argv[2]));
   let geometries = 0;
   for (const o of Object.values(city.CityObjects)) geometries += (o.geometry || []).length;
+  // Placed pieces are furniture: the glTF kind and the CityJSON type say so.
+  const furniture = g.nodes.filter((n) => n.extras && n.extras.kind === "Furniture").length;
+  const cityFurniture = Object.values(city.CityObjects).filter((o) => o.type === "BuildingFurniture").length;
   const ok = g.meshes.length < g.nodes.length - 1 && instanced > 100 && geometries === parts &&
-             g.materials.some((m) => m.name === "None");
+             g.materials.some((m) => m.name === "None") && furniture === instanced &&
+             cityFurniture === instanced;
   if (!ok) {
     console.log(`meshes ${g.meshes.length} nodes ${g.nodes.length} instanced ${instanced}` +
-                ` cityjson geometries ${geometries} parts ${parts}`);
+                ` cityjson geometries ${geometries} parts ${parts} furniture ${furniture} ${cityFurniture}`);
     process.exit(1);
   }' "$out.glb" "$out.city.json" "$out.json" || fail "hotel: GLB instancing / CityJSON expansion"
 # OBJ expands the instances: as many faces as without instancing (the hotel's golden).
 [ "$(grep -c '^f ' "$out.obj")" = 14171 ] || fail "hotel: OBJ has $(grep -c '^f ' "$out.obj") faces, expected 14171"
 [ -s "$out.png" ] || fail "hotel: no PNG"
+validate_cityjson "hotel: CityJSON schema (BuildingFurniture)" "$out.city.json"
 
 finish lua_build

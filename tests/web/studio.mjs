@@ -15,6 +15,8 @@ const [insula, root, out] = process.argv.slice(2);
 const work = fs.mkdtempSync(path.join(out, 'work-'));
 fs.cpSync(path.join(root, 'examples/cga'), work, { recursive: true });
 fs.copyFileSync(path.join(root, 'examples/bldg/two_storey.bldg'), path.join(work, 'two_storey.bldg'));
+fs.copyFileSync(path.join(root, 'examples/lua/loft_office.lua'), path.join(work, 'loft_office.lua'));
+fs.cpSync(path.join(root, 'examples/lua/assets'), path.join(work, 'assets'), { recursive: true });
 const failures = [];
 const check = (ok, what) => { if (!ok) failures.push(what); };
 
@@ -321,7 +323,7 @@ try {
   // Any .bldg the command line reads opens in the tool: two_storey's rooms in a container, its
   // own doors and stairs kept; a new roof gives the same rooms.
   await page.click('#files div[data-path="two_storey.bldg"]');
-  await waitBuild('return b.ok', 'two_storey.bldg opens again');
+  await waitBuild('return b.ok && b.report.storeys === 2', 'two_storey.bldg opens again');
   const twoStoreyRooms = await page.evaluate(() => window.studio.lastBuild.report.rooms.map((r) => r.name).sort().join());
   await page.click('#draw-toggle');
   await page.waitForFunction(() => document.querySelector('#status').textContent.includes('two_storey.bldg'));
@@ -332,7 +334,9 @@ try {
   await page.locator('#draw [name=part-roof]').first().selectOption('Gable');
   await waitBuild('return b.ok', 'two_storey redrawn', sequence);
   const redrawnRooms = await page.evaluate(() => window.studio.lastBuild.report.rooms.map((r) => r.name).sort().join());
-  check(redrawnRooms === twoStoreyRooms, `two_storey redrawn: ${redrawnRooms} against ${twoStoreyRooms}`);
+  check(redrawnRooms === twoStoreyRooms, `two_storey redrawn: ${redrawnRooms} against ${twoStoreyRooms} ` +
+        `(${await page.evaluate(() => `${window.studio.path}, ${window.studio.drawing.path}: ` +
+          window.studio.editor.state.doc.toString().split('\n').slice(0, 3).join(' | '))})`);
   // The outline from a GeoJSON footprint (geojson(file, feature) in the grammar).
   await page.selectOption('#draw [name=footprint-file]', 'district.geojson');
   await page.waitForSelector('#draw [name=footprint-feature] option[value="lot_03"]', { state: 'attached' });
@@ -343,6 +347,30 @@ try {
   check(onFootprint.includes('geojson("district.geojson", "lot_03")'), 'the footprint in the grammar');
   await page.screenshot({ path: path.join(out, 'studio_footprint.png') });
   await page.click('#draw-toggle');
+
+  // Furniture (seed 001 §4.5): the loft office's desks, chairs and plants hide with the box.
+  await page.goto(`${url}&open=loft_office.lua`);
+  await waitBuild('return b.ok', 'loft_office.lua builds');
+  const furnitureShown = () => page.evaluate(() => {
+    let n = 0;
+    window.studio.viewport.model.traverse((o) => { if (o.userData.kind === 'Furniture' && o.visible) ++n; });
+    return n;
+  });
+  const cutAt = (fraction) => page.evaluate((f) => {
+    const cut = document.querySelector('#cut');
+    cut.value = String(f);
+    cut.dispatchEvent(new Event('input'));
+  }, fraction);
+  await cutAt(0.3);  // the ground storey, to see the furniture
+  const furnitureBefore = await furnitureShown();
+  await page.uncheck('#furniture');
+  const furnitureAfter = await furnitureShown();
+  check(furnitureBefore >= 300 && furnitureAfter === 0, `furniture shown ${furnitureBefore}, hidden ${furnitureAfter}`);
+  await page.screenshot({ path: path.join(out, 'studio_no_furniture.png') });
+  await page.check('#furniture');
+  check(await furnitureShown() === furnitureBefore, 'the furniture back');
+  await page.screenshot({ path: path.join(out, 'studio_furniture.png') });
+  await cutAt(1);
 
   // Edit to view on the district (examples/cga/district.cga on its lots): a height changed.
   await page.goto(`${url}&open=district.cga`);

@@ -39,6 +39,7 @@ const setStatus = (text) => { element('status').textContent = text; };
 const viewport = new Viewport(element('viewport'), (picked) => {
   element('picked').textContent = picked;
 });
+state.viewport = viewport; // read by the browser test
 
 const language = new Compartment();
 const help = new Compartment();
@@ -365,6 +366,7 @@ async function start() {
   element('seed').onchange = () => edited();
   element('cut').oninput = () => viewport.cut(Number(element('cut').value));
   element('roofs').onchange = () => viewport.showRoofs(element('roofs').checked);
+  element('furniture').onchange = () => viewport.showFurniture(element('furniture').checked);
   element('by-class').onchange = () => edited();
   element('next-seed').onclick = () => {
     element('seed').value = String(Number(element('seed').value || 0) + 1);

@@ -15,6 +15,7 @@ export class Viewport {
     this.renderer.clippingPlanes = [this.cutPlane];
     this.cutFraction = 1;
     this.roofsShown = true;
+    this.furnitureShown = true;
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(0xdfe6ec);
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x8a8f80, 2.2));
@@ -62,9 +63,15 @@ export class Viewport {
     this.scene.add(this.model);
     let meshes = 0;
     this.model.traverse((o) => { if (o.isMesh) ++meshes; });
-    if (!this.fitted) this.fit();
-    this.bounds = new THREE.Box3().setFromObject(this.model);
+    // A model that moved away from the last one (another lot, a footprint elsewhere) is fitted
+    // again: the user's camera would look at nothing.
+    const bounds = new THREE.Box3().setFromObject(this.model);
+    if (!this.fitted || (this.bounds && !this.bounds.isEmpty() && !bounds.isEmpty() && !bounds.intersectsBox(this.bounds))) {
+      this.fit();
+    }
+    this.bounds = bounds;
     this.showRoofs(this.roofsShown);
+    this.showFurniture(this.furnitureShown);
     this.cut(this.cutFraction);
     return meshes;
   }
@@ -76,6 +83,37 @@ export class Viewport {
     if (!this.model) return;
     this.model.traverse((o) => {
       if (o.isMesh && o.material && /roof/i.test(o.material.name || '')) o.visible = shown;
+    });
+    this.render();
+  }
+
+  // Shows or hides furniture (parts of kind Furniture: what component programs place in rooms,
+  // seed 001 §4.5): a node of its own (a placed instance) by its extras, and in a building's
+  // merged mesh the triangles whose feature id's row says so (the index without them).
+  showFurniture(shown) {
+    this.furnitureShown = shown;
+    if (!this.model) return;
+    const kinds = this.table && this.table.columns.kind;
+    const merged = kinds && kinds.includes('Furniture'); // else no merged mesh holds any
+    this.model.traverse((o) => {
+      if (o.userData && o.userData.kind === 'Furniture') {
+        o.visible = shown;
+        return;
+      }
+      const ids = o.isMesh && merged && o.geometry.attributes._feature_id_0;
+      if (!ids || (shown && !o.geometry.userData.fullIndex)) return;
+      const geometry = o.geometry;
+      if (!geometry.userData.fullIndex) {
+        geometry.userData.fullIndex = geometry.index
+          ? geometry.index.array
+          : Uint32Array.from({ length: ids.count }, (_, i) => i);
+      }
+      const full = geometry.userData.fullIndex;
+      const kept = [];
+      for (let t = 0; t + 2 < full.length; t += 3) {
+        if (shown || kinds[Math.round(ids.getX(full[t]))] !== 'Furniture') kept.push(full[t], full[t + 1], full[t + 2]);
+      }
+      geometry.setIndex(kept);
     });
     this.render();
   }

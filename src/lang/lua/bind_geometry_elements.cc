@@ -8,6 +8,7 @@
 
 #include "lang/lua/bind_geometry_internal.h"
 #include "lang/lua/bindings_internal.h"
+#include "shape/scene.h"
 
 namespace insula::lua {
 
@@ -169,9 +170,11 @@ std::shared_ptr<const kernel::Mesh> asset_mesh(lua_State* L, int arg, const char
   return slot;
 }
 
-// place(region, asset [, {avoid=, clearance=, attempts=, label=...}]): furniture (§4.5). The
-// asset is an asset name or a component (e.g. from componentFromFile). Returns the placed
-// component, or nil when no place in the region keeps clear of `avoid`.
+// place(region, asset [, {avoid=, clearance=, attempts=, kind=, label=...}]): furniture (§4.5). The
+// asset is an asset name or a component (e.g. from componentFromFile). `kind` says what outputs
+// call it: "furniture" (the default: CityJSON BuildingFurniture) or "installation" (a balcony on a
+// facade: BuildingInstallation). Returns the placed component, or nil when no place in the region
+// keeps clear of `avoid`.
 int lua_place(lua_State* L) {
   const char* op = "place";
   Program& p = program(L);
@@ -189,9 +192,18 @@ int lua_place(lua_State* L) {
       arg_error(op, 3, "field 'attempts' must be in [1, 10000]");
     }
   } else if (!lua_isnoneornil(L, 3)) {
-    arg_error(op, 3, "expected a table {avoid=, clearance=, attempts=, label=...}");
+    arg_error(op, 3, "expected a table {avoid=, clearance=, attempts=, kind=, label=...}");
   }
-  const Spec spec = check_spec(L, 3, op, {"avoid", "clearance", "attempts"});
+  std::string_view kind_label = shape::kFurnitureLabel;
+  if (lua_istable(L, 3)) {
+    const std::string kind = field_string(L, 3, "kind", op).value_or("furniture");
+    if (kind == "installation") {
+      kind_label = shape::kInstallationLabel;
+    } else if (kind != "furniture") {
+      arg_error(op, 3, "field 'kind' must be furniture or installation; got '" + kind + "'");
+    }
+  }
+  const Spec spec = check_spec(L, 3, op, {"avoid", "clearance", "attempts", "kind"});
   options.draw = p.extension<AssetCache>("luageom.assets").draws[{ref->id, ref->index}]++;
   const shape::Connected c = shape::place_on_region(p.tree, ref->id, ref->index, mesh, options);
   ++p.operations;
@@ -200,6 +212,8 @@ int lua_place(lua_State* L) {
     return 1;
   }
   apply_spec(p.tree, spec, std::span<const ShapeId>(&c.id, 1));
+  // After the user's labels (the first names the part): outputs read the kind from this label.
+  p.tree.add_label(c.id, kind_label);
   push_component(L, c.id);
   return 1;
 }
@@ -214,8 +228,9 @@ void register_element_bindings(Api& api) {
   api.function(
       "solidGeometry", protect<lua_solid_geometry>,
       "solidGeometry(c [, color | {openings=, uv=, material=}]): geometry with openings cut");
-  api.function("place", protect<lua_place>,
-               "place(region, asset [, {avoid=, clearance=, attempts=, label=...}]): furniture");
+  api.function(
+      "place", protect<lua_place>,
+      "place(region, asset [, {avoid=, clearance=, attempts=, kind=, label=...}]): furniture");
 }
 
 }  // namespace insula::lua
