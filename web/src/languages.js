@@ -14,25 +14,27 @@ const keywords = new Set([
 ]);
 
 // CGA, .bldg and PLaSM: comments, strings, numbers, keywords, operations (from the registry) and
-// Symbols (capitalised names, the rules' left-hand sides).
-function ruleLanguage(operations) {
+// Symbols (capitalised names, the rules' left-hand sides). Block comments are `/* */`, or PLaSM's
+// `% ... %` (across lines; PLaSM has no line comments).
+function ruleLanguage(operations, plasm) {
+  const [open, close] = plasm ? ['%', '%'] : ['/*', '*/'];
   return StreamLanguage.define({
     startState: () => ({ block: false }),
     token(stream, state) {
       if (state.block) {
-        if (stream.skipTo('*/')) {
-          stream.match('*/');
+        if (stream.skipTo(close)) {
+          stream.match(close);
           state.block = false;
         } else {
           stream.skipToEnd();
         }
         return 'comment';
       }
-      if (stream.match('/*')) {
+      if (stream.match(open)) {
         state.block = true;
         return 'comment';
       }
-      if (stream.match('//') || stream.match('#')) {
+      if (!plasm && (stream.match('//') || stream.match('#'))) {
         stream.skipToEnd();
         return 'comment';
       }
@@ -56,7 +58,7 @@ function ruleLanguage(operations) {
 export function languageFor(path, reference) {
   if (/\.(json|geojson)$/.test(path)) return json();
   if (/\.lua$/.test(path)) return StreamLanguage.define(lua);
-  return ruleLanguage(new Set(reference.operations.map((o) => o.name)));
+  return ruleLanguage(new Set(reference.operations.map((o) => o.name)), /\.psm$/.test(path));
 }
 
 function wordAt(state, pos) {
