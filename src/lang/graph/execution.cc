@@ -241,6 +241,7 @@ void GraphExecution::transfer(std::size_t node, std::vector<std::vector<EntityId
     const ResolvedPort& port = n.outputs[p];
     const std::vector<EntityId>& produced = outputs[p];
     if (produced.empty()) continue;
+    run_.out.ports[label(node, port.name)] += produced.size();
     if (port.blocked) {
       run_.out.blocked[label(node, port.name)] += produced.size();
       continue;

@@ -111,6 +111,9 @@ struct RunResult {
   std::vector<std::pair<std::string, NodeRuns>> node_runs;  // node id ("houseA/door" inside)
   std::vector<std::pair<std::string, PortCount>> leaves;    // in order of first arrival
   std::map<std::string, std::uint64_t> blocked;
+  // Entities that left each output port ("node.port", "houseA/door.out" inside), blocked ones
+  // too: what an editor shows on its ports.
+  std::map<std::string, std::uint64_t> ports;
   std::map<std::string, std::uint64_t> unprocessed;
   std::map<std::string, std::uint64_t> failed;
   // The top-level graph's attribute names by key (for reports and the export).

@@ -362,6 +362,7 @@ nlohmann::ordered_json graph_report(const RunResult& run) {
     leaves[port] = {{"count", count.count}, {"types", types}};
   }
   g["leaves"] = leaves;
+  g["ports"] = counts(run.ports);
   g["blocked"] = counts(run.blocked);
   g["unprocessed"] = counts(run.unprocessed);
   g["failed"] = counts(run.failed);
