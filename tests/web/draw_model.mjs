@@ -8,8 +8,9 @@ import fs from 'node:fs';
 import path from 'node:path';
 
 import {
-  findRoom, grammar, leafParts, newBuilding, newPart, newRoom, remove, split,
+  findRoom, grammar, leafParts, newBuilding, newFloor, newPart, newRoom, remove, split,
 } from '../../web/src/draw_model.js';
+import { outlineProblem } from '../../web/src/draw.js';
 
 const [insula, tmp] = process.argv.slice(2);
 const failures = [];
@@ -103,8 +104,50 @@ check(build('removed', text) !== null, 'the building without the room builds');
 const lone = newBuilding().root.children[0].floors[0];
 check(!remove(lone, lone.children[0]) && lone.children.length === 1, 'a storey\'s last room removed');
 
+// Names, room types and footprint files are written as the grammar's strings, whatever they hold.
+const odd = newBuilding();
+odd.name = 'Lot "7" \\ north\nwing';
+odd.outline = [[0, 0], [10, 0], [10, 8], [0, 8]];
+odd.root.children[0].floors[0].children[0].type = 'dining room';
+text = grammar(odd);
+check(text.includes('building("Lot \\"7\\" \\\\ north\\nwing"') && text.includes('room("dining room", medium)'),
+      `names and types as strings: ${text}`);
+check(build('odd_names', text) !== null, 'a building with odd names builds');
+odd.footprint = { file: 'my "lots".geojson', feature: 'lot \\ 7' };
+check(grammar(odd).includes('geojson("my \\"lots\\".geojson", "lot \\\\ 7")'), 'the footprint file and feature escaped');
+
+// Transitions that no longer fit are dropped: a door whose room moved to another storey (its
+// storey below removed), a stair that no longer climbs one storey; a new room never takes the
+// name of a removed one with its doors.
+const tall = newBuilding();
+tall.outline = [[0, 0], [12, 0], [12, 9], [0, 9]];
+tall.automatic = false;
+const tower = tall.root.children[0];
+tower.floors.push(newFloor(3, [newRoom('landing')]));
+grammar(tall);  // names the rooms: hall (storey 0), landing (storey 1)
+tall.transitions.push({ symbol: null, kind: 'stair', from: 'hall', to: 'landing', width: 0 });
+check(grammar(tall).includes('-> stair(hall, landing)'), 'the stair');
+tower.floors.splice(0, 1);  // landing is now on storey 0
+text = grammar(tall);
+check(!text.includes('stair('), `a stair that no longer climbs: ${text}`);
+check(build('storey_removed', text) !== null, 'the building without its ground storey builds');
+tower.floors[0].children.push(newRoom('hall'));
+text = grammar(tall);
+check(!text.includes('stair(') && !text.includes('door('), 'a new room took a removed one\'s doors');
+
+// The outline checks the grid makes while drawing (BLD206 before the builder says it).
+const square = [[0, 0], [10, 0], [10, 10], [0, 10]];
+check(outlineProblem([square], [true]) === '', 'a square is fine');
+check(outlineProblem([[[0, 0], [5, 0], [10, 0], [10, 10]]], [true]) === 'three corners on a line', 'collinear corners');
+check(outlineProblem([[[0, 0], [10, 10], [10, 0], [0, 10]]], [true]) === 'an edge crosses another', 'a bow tie');
+check(outlineProblem([square, [[0, 2], [3, 2], [3, 5], [0, 5]]], [true, true]) !== '', 'a hole on the outline');
+check(outlineProblem([square, [[12, 2], [13, 2], [13, 5]]], [true, true]) === 'a hole lies inside the outline', 'a hole outside');
+const notched = [[0, 0], [10, 0], [10, 10], [6, 10], [6, 5], [4, 5], [4, 10], [0, 10]];
+check(outlineProblem([notched, [[2, 7], [8, 7], [8, 8], [2, 8]]], [true, true]) !== '', 'a hole across the notch');
+check(outlineProblem([square, [[2, 2], [4, 2], [4, 4], [2, 4]]], [true, true]) === '', 'a courtyard is fine');
+
 if (failures.length) {
   console.error(failures.join('\n'));
   process.exit(1);
 }
-console.log('draw model: 9 trees written and built');
+console.log('draw model: trees, names, transitions and outlines checked');

@@ -10,6 +10,7 @@ import { spawn } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { launchChromium } from '../../tools/browser_common.mjs';
+import { buildWaiter, startStudio } from './studio_common.mjs';
 
 const [insula, root, out] = process.argv.slice(2);
 const work = fs.mkdtempSync(path.join(out, 'work-'));
@@ -20,17 +21,7 @@ fs.cpSync(path.join(root, 'examples/lua/assets'), path.join(work, 'assets'), { r
 const failures = [];
 const check = (ok, what) => { if (!ok) failures.push(what); };
 
-const server = spawn(insula, ['studio', work], { stdio: ['ignore', 'pipe', 'inherit'] });
-const url = await new Promise((resolve, reject) => {
-  let text = '';
-  server.stdout.on('data', (chunk) => {
-    text += chunk;
-    const m = /http:\/\/127\.0\.0\.1:\d+\/\?token=[0-9a-f]+/.exec(text);
-    if (m) resolve(m[0]);
-  });
-  server.on('exit', () => reject(new Error('the studio exited')));
-  setTimeout(() => reject(new Error('no URL in 10 s')), 10000);
-});
+const { server, url } = await startStudio(insula, work);
 const base = url.split('/?')[0];
 const token = url.split('token=')[1];
 
@@ -42,16 +33,7 @@ check((await fetch(`${base}/api/file?path=../x&token=${token}`)).status === 403,
 const { page, close } = await launchChromium({ width: 1280, height: 760 });
 const errors = [];
 page.on('pageerror', (e) => errors.push(String(e)));
-const waitBuild = async (predicate, what, after = 0) => {
-  try {
-    await page.waitForFunction(([p, n]) => {
-      const b = window.studio && window.studio.lastBuild;
-      return b && b.sequence === window.studio.sequence && b.sequence > n && new Function('b', p)(b);
-    }, [predicate, after], { timeout: 60000 });
-  } catch {
-    failures.push(`${what}: ${JSON.stringify(await page.evaluate(() => window.studio.lastBuild))}`.slice(0, 400));
-  }
-};
+const waitBuild = buildWaiter(page, failures);
 // Replaces the text `from` at its first place in the editor by typing `to` over it, as a user.
 const retype = async (from, to) => page.evaluate(([a, b]) => {
   const editor = window.studio.editor;

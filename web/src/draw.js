@@ -10,8 +10,9 @@
 // command line reads opens in the tool (read by the server's parser: POST /api/drawing).
 
 import {
-  buildingOf, findRoom, grammar, leafParts, newBuilding, newFloor, newPart, newRoom, orientations,
-  remove, roofs, roomTypes, ruleName, sizes, split,
+  buildingOf, clamp, findRoom, grammar, leafParts, newBuilding, newFloor, newPart, newRoom,
+  orientations, remove, roofHeights, roofs, roomStoreys, roomTypes, ruleName, sizes, split,
+  storeyHeights, transitionFits,
 } from './draw_model.js';
 
 const gridMetres = 0.5;
@@ -34,16 +35,69 @@ export function featureRing(text, id) {
   return ring ? ring.slice(0, -1).map(([x, y]) => [x, y]) : null;
 }
 
-// The ids of a GeoJSON text's features that have polygons.
+// The ids of a GeoJSON text's features that have one polygon (a building needs one).
 export function featureIds(text) {
   try {
     return (JSON.parse(text).features || [])
-      .filter((f) => f.geometry && /Polygon$/.test(f.geometry.type))
+      .filter((f) => f.geometry && (f.geometry.type === 'Polygon' ||
+                                    (f.geometry.type === 'MultiPolygon' && f.geometry.coordinates.length === 1)))
       .map((f) => String(f.id ?? f.properties?.id ?? ''))
       .filter(Boolean);
   } catch {
     return [];
   }
+}
+
+// Whether segments ab and cd cross or touch (shared end points excepted).
+function segmentsMeet(a, b, c, d) {
+  const side = (p, q, r) => Math.sign((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
+  const same = (p, q) => p[0] === q[0] && p[1] === q[1];
+  if (same(a, c) || same(a, d) || same(b, c) || same(b, d)) return false;
+  const within = (p, q, r) => Math.min(p[0], q[0]) <= r[0] && r[0] <= Math.max(p[0], q[0]) &&
+    Math.min(p[1], q[1]) <= r[1] && r[1] <= Math.max(p[1], q[1]);
+  const [d1, d2, d3, d4] = [side(c, d, a), side(c, d, b), side(a, b, c), side(a, b, d)];
+  if (d1 !== d2 && d3 !== d4 && d1 && d2 && d3 && d4) return true;
+  return (!d1 && within(c, d, a)) || (!d2 && within(c, d, b)) || (!d3 && within(a, b, c)) || (!d4 && within(a, b, d));
+}
+
+// The edges of `ring` (closed when `closed`).
+function edgesOf(ring, closed) {
+  const edges = [];
+  for (let i = 0; i + 1 < ring.length; ++i) edges.push([ring[i], ring[i + 1]]);
+  if (closed && ring.length >= 3) edges.push([ring[ring.length - 1], ring[0]]);
+  return edges;
+}
+
+// Why the rings (outer first, then holes) are not a valid outline, or '': no ring crosses itself
+// or another, no three consecutive corners on a line, holes inside the outer ring (what the
+// builder checks, BLD206, said while drawing).
+export function outlineProblem(rings, closedFlags) {
+  for (let r = 0; r < rings.length; ++r) {
+    const ring = rings[r];
+    const n = ring.length;
+    const closed = closedFlags[r];
+    for (let i = 0; i < n; ++i) {
+      if (!closed && (i === 0 || i === n - 1)) continue;
+      const [a, b, c] = [ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]];
+      if ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) === 0) {
+        return 'three corners on a line';
+      }
+    }
+  }
+  const all = rings.map((ring, r) => edgesOf(ring, closedFlags[r]));
+  for (let r = 0; r < all.length; ++r) {
+    for (let s = r; s < all.length; ++s) {
+      for (let i = 0; i < all[r].length; ++i) {
+        for (let j = r === s ? i + 1 : 0; j < all[s].length; ++j) {
+          if (segmentsMeet(...all[r][i], ...all[s][j])) return r === s ? 'an edge crosses another' : 'a hole meets the outline or another hole';
+        }
+      }
+    }
+  }
+  for (let r = 1; r < rings.length; ++r) {
+    if (rings[r].some((p) => !inside(rings[0], p))) return 'a hole lies inside the outline';
+  }
+  return '';
 }
 
 // Whether point `p` lies inside ring `ring` (even-odd rule).
@@ -76,13 +130,14 @@ export class DrawingTool {
     this.render();
   }
 
-  // Fits the view to `ring` (a loaded outline or a footprint), snapped to whole metres.
-  fit(ring) {
+  // Fits the view to `ring` (a loaded outline, at most 12 pixels a metre, or a footprint in its
+  // file's units, metres or degrees, at any scale), snapped to whole units when they are big.
+  fit(ring, largest = 12) {
     if (ring.length === 0) return;
     const xs = ring.map((p) => p[0]);
     const ys = ring.map((p) => p[1]);
     const [minX, minY, maxX, maxY] = [Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys)];
-    const scale = Math.min(12, (0.8 * gridWidth) / (maxX - minX || 1), (0.8 * gridHeight) / (maxY - minY || 1));
+    const scale = Math.min(largest, (0.8 * gridWidth) / (maxX - minX || 1), (0.8 * gridHeight) / (maxY - minY || 1));
     const centre = (lo, hi, pixels) => (lo + hi) / 2 - pixels / scale / 2;
     const whole = scale >= 1 ? Math.floor : (v) => v;
     this.view = { left: whole(centre(minX, maxX, gridWidth)), bottom: whole(centre(minY, maxY, gridHeight)), scale };
@@ -95,16 +150,22 @@ export class DrawingTool {
   }
 
   storeyHeight() {
-    return Number(this.panel.querySelector('[name=storey-height]')?.value) || 3;
+    return clamp(Number(this.panel.querySelector('[name=storey-height]')?.value) || 3, storeyHeights);
   }
 
   // A door between two rooms (their symbols, as the plan's rooms carry them), once.
+  // Rooms on consecutive storeys get a stair (from the lower), rooms on one storey a door.
   connect(a, b) {
     const t = this.building.transitions;
-    if (a === b || t.some((x) => x.kind === 'door' && ((x.from === a && x.to === b) || (x.from === b && x.to === a)))) {
+    const storeys = roomStoreys(this.building);
+    const [from, to] = storeys.get(a) > storeys.get(b) ? [b, a] : [a, b];
+    const kind = storeys.get(from) === storeys.get(to) ? 'door' : 'stair';
+    const candidate = { symbol: null, kind, from, to, width: 0 };
+    if (a === b || !transitionFits(candidate, storeys) ||
+        t.some((x) => x.kind === kind && ((x.from === a && x.to === b) || (x.from === b && x.to === a)))) {
       return false;
     }
-    t.push({ symbol: null, kind: 'door', from: a, to: b, width: 0 });
+    t.push(candidate);
     this.changed();
     return true;
   }
@@ -131,11 +192,20 @@ export class DrawingTool {
   async load(text, path) {
     const answer = await this.files.parse(text, path);
     if (!answer.ok) return answer.diagnostics[0] || 'the file does not parse';
-    this.building = buildingOf(answer.building);
+    const building = buildingOf(answer.building);
+    if (building.footprint) {
+      // Nothing changes until the footprint is read (a file that is not there leaves the tool
+      // as it was).
+      try {
+        building.outline = await this.footprintRing(building.footprint, path);
+      } catch (error) {
+        return `its footprint: ${error.message || error}`;
+      }
+    }
+    this.building = building;
     this.closed = true;
     this.hole = -1;
-    if (this.building.footprint) await this.previewFootprint();
-    else this.fit(this.building.outline);
+    this.fit(building.outline, building.footprint ? Infinity : 12);
     this.loadedPath = path;
     this.path = path;
     const first = leafParts(this.building.root)[0];
@@ -150,16 +220,23 @@ export class DrawingTool {
   async useFootprint(file, feature) {
     this.building.footprint = { file, feature };
     this.building.holes = [];
+    this.hole = -1;
     this.closed = true;
     await this.previewFootprint();
     this.changed();
   }
 
+  // The outline of a footprint, its file named relative to the drawing's `.bldg` (as the command
+  // line reads it).
+  async footprintRing({ file, feature }, bldgPath) {
+    const folder = bldgPath && bldgPath.includes('/') ? bldgPath.slice(0, bldgPath.lastIndexOf('/') + 1) : '';
+    return featureRing(await this.files.read(folder + file), feature) || [];
+  }
+
   async previewFootprint() {
-    const { file, feature } = this.building.footprint;
     // Shown in the file's own coordinates (metres or degrees), fitted to the grid.
-    this.building.outline = featureRing(await this.files.read(file), feature) || [];
-    this.fit(this.building.outline);
+    this.building.outline = await this.footprintRing(this.building.footprint, this.loadedPath);
+    this.fit(this.building.outline, Infinity);
     this.render();
   }
 
@@ -167,7 +244,12 @@ export class DrawingTool {
   grammar(name) {
     if (!this.closed) return null;
     this.building.name = name;
-    return grammar(this.building);
+    // A hole still being drawn is not written.
+    const drawing = this.hole >= 0 ? this.building.holes[this.hole] : null;
+    const written = { ...this.building, holes: this.building.holes.filter((h) => h !== drawing) };
+    const text = grammar(written);
+    this.building.transitions = written.transitions; // as grammar() kept them
+    return text;
   }
 
   // Metres under the mouse, snapped to the grid.
@@ -191,21 +273,38 @@ export class DrawingTool {
     }
     const last = ring[ring.length - 1];
     if (last && last[0] === p[0] && last[1] === p[1]) return;
-    if (drawingHole && !inside(this.building.outline, p)) {
-      this.hint('a hole lies inside the outline');
+    ring.push(p);
+    const problem = this.problem(true);
+    if (problem) {
+      ring.pop();
+      this.hint(`not there: ${problem}`);
       return;
     }
-    ring.push(p);
     this.render();
   }
 
+  // What is wrong with the outline and holes as drawn ('' when nothing); `open`: the ring being
+  // drawn is not closed yet.
+  problem(open = false) {
+    const { outline, holes } = this.building;
+    const rings = [outline, ...holes];
+    const closed = rings.map((_, r) => !open || (r === 0 ? this.closed : r - 1 !== this.hole));
+    if (!this.closed) return outlineProblem([outline], [!open]);
+    return outlineProblem(rings, closed);
+  }
+
   close() {
-    if (this.hole >= 0) {
-      if (this.building.holes[this.hole].length < 3) return;
-      this.hole = -1;
-    } else {
-      if (this.building.outline.length < 3) return;
-      this.closed = true;
+    const ring = this.hole >= 0 ? this.building.holes[this.hole] : this.building.outline;
+    if (!ring || ring.length < 3) return;
+    const drawing = this.hole;
+    if (drawing >= 0) this.hole = -1;
+    else this.closed = true;
+    const problem = this.problem();
+    if (problem) {
+      if (drawing >= 0) this.hole = drawing;
+      else this.closed = false;
+      this.hint(`cannot close: ${problem}`);
+      return;
     }
     this.render();
     this.changed();
@@ -380,6 +479,7 @@ export class DrawingTool {
         const r = Number(corner.dataset.ring);
         const ring = r === 0 ? this.building.outline : this.building.holes[r - 1];
         const i = Number(corner.dataset.corner);
+        const before = ring[i];
         const move = (e) => {
           this.dragging = true;
           ring[i] = this.snapped(e);
@@ -390,7 +490,12 @@ export class DrawingTool {
         const up = () => {
           window.removeEventListener('mousemove', move);
           window.removeEventListener('mouseup', up);
-          if (this.dragging) this.redraw();
+          if (this.dragging) {
+            const problem = this.problem(this.hole >= 0);
+            if (problem) ring[i] = before;
+            this.redraw();
+            if (problem) this.hint(`not there: ${problem}`);
+          }
           setTimeout(() => { this.dragging = false; }, 0);
         };
         window.addEventListener('mousemove', move);
@@ -425,6 +530,7 @@ export class DrawingTool {
     on('.draw-controls [name=name]', 'change', () => this.changed());
     on('.draw-controls [name=storey-height]', 'change', () => {
       const height = this.storeyHeight();
+      this.panel.querySelector('[name=storey-height]').value = height;
       for (const { node } of this.nodes) if (node.kind === 'floor') node.height = height;
       this.changed();
     });
@@ -461,7 +567,8 @@ export class DrawingTool {
     if (node.kind === 'part') {
       listen('part-roof', 'change', (e) => { node.roof = e.target.value; this.changed(); });
       listen('part-roof-height', 'change', (e) => {
-        node.roofHeight = Math.max(0, Number(e.target.value) || 0);
+        node.roofHeight = clamp(Number(e.target.value) || 0, roofHeights);
+        e.target.value = node.roofHeight;
         this.changed();
       });
       listen('add-storey', 'click', () => {

@@ -26,6 +26,15 @@ export const orientations = ['alternate', 'horizontal', 'vertical'];
 export const ruleName = (text) => text.replace(/[^A-Za-z0-9_]/g, '_').replace(/^(?=\d)/, 'r');
 // Numbers in their shortest round-trip form (as the command line's printer writes them).
 const number = (x) => String(Number(x) + 0);
+// A string literal of the grammar (escapes \" \\ \n \t).
+export const quoted = (text) => `"${String(text).replace(/\\/g, '\\\\').replace(/"/g, '\\"')
+  .replace(/\n/g, '\\n').replace(/\t/g, '\\t').replace(/[\u0000-\u001f]/g, ' ')}"`;
+// A room type as written: an identifier as it is, anything else as a string ("dining room").
+const typeName = (type) => (/^[A-Za-z_][A-Za-z0-9_]*$/.test(type) ? type : quoted(type));
+// The grammar's bounds (docs/bldg-language.md, BLD205).
+export const storeyHeights = [2, 20];
+export const roofHeights = [0, 100];
+export const clamp = (x, [lo, hi]) => Math.min(hi, Math.max(lo, x));
 
 export const newRoom = (type = 'bedroom', size = 'medium') =>
   ({ kind: 'room', symbol: null, type, size, walls: 0, windows: 0, entrance: false });
@@ -100,6 +109,24 @@ export function remove(parent, child) {
   return true;
 }
 
+// The storey (its floor's index in its building part) of every named room.
+export function roomStoreys(building) {
+  const storeys = new Map();
+  leafParts(building.root).forEach((part) => part.floors.forEach((floor, s) => {
+    leafRooms(floor).forEach((room) => { if (room.symbol) storeys.set(room.symbol, s); });
+  }));
+  return storeys;
+}
+
+// Whether transition `t` joins rooms that exist, on the storeys its kind needs.
+export function transitionFits(t, storeys) {
+  if (!storeys.has(t.from)) return false;
+  if (t.kind === 'entrance' || t.kind === 'window') return true;
+  if (!storeys.has(t.to)) return false;
+  const rise = storeys.get(t.to) - storeys.get(t.from);
+  return t.kind === 'stair' ? rise === 1 : rise === 0;
+}
+
 // Gives every node without a symbol a fresh one; returns the set of symbols in use.
 function nameAll(building) {
   const used = new Set(['building']);
@@ -161,6 +188,11 @@ function transitionRule(t) {
 // The `.bldg` text of `building`, or null while its outline is open.
 export function grammar(building) {
   if (!building.footprint && building.outline.length < 3) return null;
+  // Transitions whose rooms are still there, on the storeys they need (a door on one storey, a
+  // stair one storey up): a removed room or storey takes its doors with it. Filtered before new
+  // rooms are named, so a new room never takes a removed one's name and its doors.
+  const storeys = roomStoreys(building);
+  building.transitions = building.transitions.filter((t) => transitionFits(t, storeys));
   const fresh = nameAll(building);
   const rules = [];
   const orientation = (o, comma) => (o === 'alternate' ? '' : `${comma ? ', ' : ''}${o}`);
@@ -169,7 +201,7 @@ export function grammar(building) {
     if (d.kind === 'room') {
       const extra = d.walls || d.windows || d.entrance
         ? `, ${d.walls || 0}, ${d.windows || 0}${d.entrance ? ', true' : ''}` : '';
-      rules.push(`${d.symbol} -> room(${ruleName(d.type)}, ${d.size}${extra})`);
+      rules.push(`${d.symbol} -> room(${typeName(d.type)}, ${d.size}${extra})`);
       return;
     }
     rules.push(`${d.symbol} -> divisions(${orientation(d.orientation, false)})${set(d.children.map((c) => c.symbol))}`);
@@ -190,22 +222,17 @@ export function grammar(building) {
     }
   };
   building.root.children.forEach(part);
-  // Transitions whose rooms are still there (a removed room takes its doors with it).
-  const rooms = new Set();
-  eachNode(building.root, (n) => { if (n.kind === 'room') rooms.add(n.symbol); });
-  building.transitions = building.transitions.filter((t) => rooms.has(t.from) && (!t.to || rooms.has(t.to)));
   building.transitions.forEach((t) => { if (!t.symbol) t.symbol = fresh(t.kind === 'door' ? 'connect' : t.kind); });
   const transitions = building.automatic
     ? [...automaticTransitions(building, building.transitions, fresh), ...building.transitions]
     : building.transitions;
   const ring = (r) => `[${r.map(([x, y]) => `(${number(x)}, ${number(y)})`).join(', ')}]`;
   const shape = building.footprint
-    ? `geojson("${building.footprint.file}", "${building.footprint.feature}")`
+    ? `geojson(${quoted(building.footprint.file)}, ${quoted(building.footprint.feature)})`
     : [ring(orientedCounterClockwise(building.outline)), ...building.holes.filter((h) => h.length >= 3).map(ring)].join(', ');
   const children = [...building.root.children.map((c) => c.symbol), ...transitions.map((t) => t.symbol)];
-  const name = building.name.replace(/["\\]/g, '');
   return ['# Drawn in the Insula studio (seed 000 §3.6); docs/bldg-language.md',
-          `${building.root.symbol} -> building("${name}", ${shape}${orientation(building.root.orientation, true)})${set(children)}`,
+          `${building.root.symbol} -> building(${quoted(building.name)}, ${shape}${orientation(building.root.orientation, true)})${set(children)}`,
           ...rules, ...transitions.map(transitionRule)].join('\n') + '\n';
 }
 

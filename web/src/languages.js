@@ -83,7 +83,7 @@ function helpFor(word, reference) {
   if (node) {
     const ports = (list) => list.map((p) => `${p.name}:${p.type}${p.collective ? '*' : ''}`).join(' ');
     return `${node.name} (${node.category}): ${node.doc}\n  ${ports(node.inputs)} -> ${ports(node.outputs)}` +
-           (node.params.length ? `\n  params: ${node.params.join(', ')}` : '');
+           (node.params.length ? `\n  params: ${node.params.map((q) => q.name).join(', ')}` : '');
   }
   return null;
 }

@@ -7,6 +7,8 @@ import { Compartment } from '@codemirror/state';
 import { Viewport } from './viewport.js';
 import { definitions, hoverHelp, languageFor } from './languages.js';
 import { DrawingTool } from './draw.js';
+import { GraphEditor } from './graph_editor.js';
+import { redo, undo } from '@codemirror/commands';
 
 const token = new URLSearchParams(location.search).get('token') || '';
 // Grammars and programs are built; footprint files show their mass model (`insula mass`).
@@ -109,12 +111,20 @@ async function build(sequence) {
   ++state.building;
   try {
     const started = performance.now();
-    const answer = await (await api(`/api/build?${buildQuery()}`, {
-      method: 'POST', body: editor.state.doc.toString(),
-    })).json();
+    const text = editor.state.doc.toString();
+    // The graph editor's counts from a run without output, in parallel: they come before the
+    // model is written (a city's GLB takes longer than its run).
+    if (graphShown()) {
+      api(`/api/report?${buildQuery()}`, { method: 'POST', body: text })
+        .then((r) => r.json())
+        .then((counts) => { if (sequence === state.sequence && counts.ok) showGraph(counts.report); })
+        .catch(() => {});
+    }
+    const answer = await (await api(`/api/build?${buildQuery()}`, { method: 'POST', body: text })).json();
     if (sequence !== state.sequence || answer.cancelled) return; // a newer edit took over
     answer.sequence = sequence;
     showDiagnostics(answer.diagnostics);
+    showGraph(answer.report);
     if (!answer.ok) {
       state.lastBuild = answer;
       const errors = answer.diagnostics.filter((d) => d.severity === 'error').length;
@@ -225,6 +235,7 @@ async function open(path) {
   state.openTimings = { fetch: Math.round(performance.now() - started) };
   state.path = path;
   state.saved = text;
+  state.connectFrom = null; // a connection asked for in another file
   viewport.fitted = false;
   element('picked').textContent = '';
   element('current').textContent = path;
@@ -318,12 +329,44 @@ async function listFiles() {
   element('files').replaceChildren(...rows);
 }
 
+// The graph editor, on the open .graph.json while its panel is shown.
+let graphEditor = null;
+const graphShown = () => graphEditor && !element('graph').hidden && /\.graph\.json$/.test(state.path || '');
+function showGraph(report) {
+  if (graphShown()) graphEditor.show(report);
+}
+
+function toggleGraph() {
+  const panel = element('graph');
+  panel.hidden = !panel.hidden;
+  if (panel.hidden) return;
+  if (!/\.graph\.json$/.test(state.path || '')) {
+    panel.hidden = true;
+    setStatus('the graph editor edits .graph.json files: open one first');
+    return;
+  }
+  if (!graphEditor) {
+    graphEditor = new GraphEditor(panel, reference, {
+      text: () => editor.state.doc.toString(),
+      setText: (text) => editor.dispatch({ changes: { from: 0, to: editor.state.doc.length, insert: text } }),
+      check: async (text) => (await (await api(`/api/check?path=${encodeURIComponent(state.path)}`,
+                                                 { method: 'POST', body: text })).json()).diagnostics,
+      diagnostics: () => state.diagnostics.filter((d) => d.file === state.path),
+      undo: () => undo(editor),
+      redo: () => redo(editor),
+    });
+    state.graph = graphEditor;
+  }
+  graphEditor.show(state.lastBuild && state.lastBuild.ok ? state.lastBuild.report : null);
+}
+
 async function start() {
   reference = await (await api('/api/reference')).json();
   editor.dispatch({ effects: help.reconfigure(hoverHelp(reference)) });
   await listFiles();
   element('save').onclick = save;
   element('export').onclick = () => exportResult().catch((error) => setStatus(String(error)));
+  element('graph-toggle').onclick = toggleGraph;
   element('random-toggle').onclick = () => { element('random').hidden = !element('random').hidden; };
   let drawing = null;
   element('draw-toggle').onclick = () => {

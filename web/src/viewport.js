@@ -6,6 +6,8 @@ import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { featureRow, readPropertyTable } from './features.js';
 
+const maxModelLights = 8;
+
 export class Viewport {
   constructor(canvas, onPick) {
     this.canvas = canvas;
@@ -60,6 +62,12 @@ export class Viewport {
       });
     }
     this.model = gltf.scene;
+    // A graph's lamps come as glTF punctual lights: three.js shades every light in every
+    // fragment, so a city's hundreds would stall the view. The first few are kept.
+    const lights = [];
+    this.model.traverse((o) => { if (o.isLight) lights.push(o); });
+    for (const light of lights.slice(maxModelLights)) light.removeFromParent();
+    this.lightsDropped = Math.max(0, lights.length - maxModelLights);
     this.scene.add(this.model);
     let meshes = 0;
     this.model.traverse((o) => { if (o.isMesh) ++meshes; });
@@ -153,7 +161,13 @@ export class Viewport {
     const pointer = new THREE.Vector2(((event.clientX - rect.left) / rect.width) * 2 - 1,
                                       -((event.clientY - rect.top) / rect.height) * 2 + 1);
     this.raycaster.setFromCamera(pointer, this.camera);
-    const hit = this.raycaster.intersectObject(this.model, true)[0];
+    // The first hit that is shown: not hidden (roofs, furniture) and not above the cut.
+    const shown = (o) => {
+      for (; o; o = o.parent) if (!o.visible) return false;
+      return true;
+    };
+    const hit = this.raycaster.intersectObject(this.model, true)
+      .find((h) => shown(h.object) && h.point.y <= this.cutPlane.constant);
     if (!hit) return '';
     // A merged mesh (one for the whole scene): the part under the mouse is its feature id's row.
     const ids = hit.object.geometry.attributes._feature_id_0;

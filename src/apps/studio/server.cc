@@ -156,6 +156,17 @@ class Draft {
   std::string error_;
 };
 
+// A graph run's report lists every result entity (a city's: megabytes); the counts the graph
+// editor asks for keep the first ones (its tables show a few) and say how many there were.
+void keep_first_entities(Json& report) {
+  constexpr std::size_t kKept = 1000;
+  if (!report.is_object() || !report.contains("graph")) return;
+  Json& entities = report["graph"]["entities"];
+  if (!entities.is_array() || entities.size() <= kKept) return;
+  report["graph"]["entities_listed"] = kKept;
+  entities.erase(entities.begin() + kKept, entities.end());
+}
+
 // The command line's output with the draft's name given back as the file's own.
 std::string as_shown(std::string output, const std::string& draft, const std::string& shown) {
   for (std::size_t at = output.find(draft); at != std::string::npos;
@@ -251,6 +262,10 @@ class Studio {
     server.Post("/api/build", [this](const httplib::Request& request, httplib::Response& response) {
       run_job(request, response, Job::kBuild);
     });
+    server.Post("/api/report",
+                [this](const httplib::Request& request, httplib::Response& response) {
+                  run_job(request, response, Job::kReport);
+                });
     server.Post("/api/export",
                 [this](const httplib::Request& request, httplib::Response& response) {
                   run_job(request, response, Job::kExport);
@@ -293,11 +308,13 @@ class Studio {
     return path;
   }
 
-  enum class Job { kCheck, kBuild, kExport };
+  enum class Job { kCheck, kBuild, kReport, kExport };
 
   // Checks (`insula check`), builds (`insula build -o model.glb --report`; footprints: `insula
-  // mass`) or exports (the same build into the folder's `exports/`) the request's body as the text
-  // of `path`, with `lot` (a file of the folder) and `seed` for builds.
+  // mass`), runs for the report alone (`insula build --report`, no output: the graph editor's
+  // counts come before the model is written) or exports (the same build into the folder's
+  // `exports/`) the request's body as the text of `path`, with `lot` (a file of the folder) and
+  // `seed` for builds.
   void run_job(const httplib::Request& request, httplib::Response& response, Job kind) {
     const std::optional<fs::path> path = file_of(request, response);
     if (!path) return;
@@ -333,9 +350,11 @@ class Studio {
       args.insert(args.end(), {"--report", (out / "report.json").string(), "--quiet"});
       if (kind == Job::kBuild) {
         args.insert(args.end(), {"-o", (out / "model.glb").string()});
-        // A city (footprints, or rules on lots) as one mesh: a node per building would make the
-        // browser draw thousands of meshes; its parts stay pickable through their feature ids.
-        if (footprints || request.has_param("lot")) {
+        // A city (footprints, rules on lots, a graph: graphs make districts) as one mesh: a node
+        // per building would make the browser draw thousands of meshes; its parts stay
+        // pickable through their feature ids.
+        if (footprints || request.has_param("lot") ||
+            path->filename().string().ends_with(".graph.json")) {
           args.insert(args.end(), {"--gltf-nodes", "scene"});
         }
         // Colours by semantic class (walls, roofs, windows...) rather than the faces' own.
@@ -346,7 +365,7 @@ class Studio {
         if (path->extension() == ".bldg") {
           args.insert(args.end(), {"-o", (out / "plan.svg").string()});
         }
-      } else {
+      } else if (kind == Job::kExport) {
         args.insert(args.end(), {"-o", exported->string()});
       }
       if (request.has_param("lot") && !footprints) {
@@ -359,7 +378,10 @@ class Studio {
         args.insert(args.end(), {"--seed", request.get_param_value("seed")});
       }
     }
-    const char* key = kind == Job::kCheck ? "check:" : kind == Job::kBuild ? "build:" : "export:";
+    const char* key = kind == Job::kCheck    ? "check:"
+                      : kind == Job::kBuild  ? "build:"
+                      : kind == Job::kReport ? "report:"
+                                             : "export:";
     // Keyed by the resolved file, so `a` and `./a` are one file whose newer edit cancels.
     const JobResult job = jobs_.run(key + path->string(), args, draft.path().parent_path());
     const std::string output = as_shown(job.output, draft.path().filename().string(), shown);
@@ -372,6 +394,7 @@ class Studio {
                  {"output", output}};
     if (kind != Job::kCheck && job.exit_code == 0) {
       body["report"] = Json::parse(read_text(out / "report.json"), nullptr, false);
+      if (kind == Job::kReport) keep_first_entities(body["report"]);
     }
     if (kind == Job::kBuild && job.exit_code == 0) {
       const bool plan = fs::exists(out / "plan.svg");

@@ -1,0 +1,441 @@
+// The graph editor (seed 003's visual editor, in the studio): the open `.graph.json` drawn as
+// nodes and edges, edited by hand, written back into the editor's text so that every edit runs
+// the graph as any edit does (the studio's build, a newer edit cancelling the older). Nodes come
+// from a searchable palette of the node catalogue (`GET /api/reference`), are dragged by their
+// title, connected by dragging from an output port to an input port (a connection the checker
+// refuses is not made, and its message is shown), and edited in a parameter panel. After each
+// run every output port shows how many entities left it and every node its executions, rounds
+// and time; ports whose entities were blocked or left unprocessed are marked. Undo and redo are
+// the editor's; copy and paste duplicate the selected node.
+import {
+  copyNode, edgeEnds, edgeText, freshId, graphText, layout, nodeType, portsOf, removeNode,
+  startingParams,
+} from './graph_model.js';
+
+const nodeWidth = 170;
+const titleHeight = 34;
+const portGap = 18;
+const svgNs = 'http://www.w3.org/2000/svg';
+
+const escape = (text) => String(text).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/"/g, '&quot;');
+
+// A parameter's value as the panel shows it: an expression or a string as typed, else JSON.
+const shownValue = (v) => (v === undefined ? '' : typeof v === 'string' ? v : JSON.stringify(v));
+// What the panel's text means: '' removes the parameter, '=...' is an expression, JSON is a
+// literal, anything else a string.
+function typedValue(text) {
+  if (text === '') return undefined;
+  if (text.startsWith('=')) return text;
+  try {
+    return JSON.parse(text);
+  } catch {
+    return text;
+  }
+}
+
+// An edge from an output port (x1, y1) to an input port (x2, y2): leaves rightwards, arrives
+// from the left, bending further when it runs backwards or down a row.
+function wirePath(x1, y1, x2, y2) {
+  const bend = Math.min(80, Math.max(30, Math.abs(x2 - x1) / 2, Math.abs(y2 - y1) / 3));
+  return `M${x1},${y1} C${x1 + bend},${y1} ${x2 - bend},${y2} ${x2},${y2}`;
+}
+
+export class GraphEditor {
+  // `host`: { text(): the editor's text, setText(text), check(text): Promise<diagnostics>,
+  //           diagnostics(): the open file's last ones, undo(), redo() }.
+  constructor(panel, reference, host) {
+    this.panel = panel;
+    this.reference = reference;
+    this.host = host;
+    this.selected = null; // a node id
+    this.report = null;
+    this.clipboard = null;
+    panel.innerHTML = `
+      <div class="graph-controls">
+        <input name="palette" list="graph-node-types" placeholder="add a node: type to search" size="28">
+        <datalist id="graph-node-types">${reference.nodes.map((t) => `<option value="${escape(t.name)}">${escape(t.category)}: ${escape(t.doc.slice(0, 80))}</option>`).join('')}</datalist>
+        <button type="button" name="add-node">add</button>
+        <button type="button" name="layout" title="arrange the nodes by their edges">layout</button>
+        <button type="button" name="undo">undo</button>
+        <button type="button" name="redo">redo</button>
+        <span class="graph-message"></span>
+      </div>
+      <div class="graph-body">
+        <svg class="graph-canvas" tabindex="0"></svg>
+        <div class="graph-params"></div>
+      </div>`;
+    this.svg = panel.querySelector('svg');
+    this.bindControls();
+  }
+
+  message(text) {
+    this.panel.querySelector('.graph-message').textContent = text;
+  }
+
+  // Reads the editor's text; false (and a message) when it is not a graph the editor can show.
+  read() {
+    try {
+      const doc = JSON.parse(this.host.text());
+      if (!doc || !Array.isArray(doc.nodes)) throw new Error('no "nodes" list');
+      this.doc = layout(doc);
+      return true;
+    } catch (error) {
+      this.doc = null;
+      this.message(`the text is not a graph yet: ${error.message}`);
+      return false;
+    }
+  }
+
+  // Shows the text's graph with the counts of `report` (the last run's, or null).
+  show(report = this.report) {
+    if (report && report !== this.report) this.countsAt = performance.now(); // read by the browser test
+    this.report = report;
+    if (!this.read()) {
+      this.svg.replaceChildren();
+      return;
+    }
+    this.render();
+  }
+
+  // Writes the document into the editor's text (the studio then runs it).
+  write() {
+    const text = graphText(this.doc);
+    if (text !== this.host.text()) this.host.setText(text);
+    this.render();
+  }
+
+  portCount(node, port) {
+    const ports = this.report && this.report.graph && this.report.graph.ports;
+    return ports ? ports[`${node}.${port}`] : undefined;
+  }
+
+  // Where port `port` of node `node` is drawn.
+  portAt(node, port, output) {
+    const ports = portsOf(this.reference, this.doc, node);
+    const list = output ? ports.outputs : ports.inputs;
+    const i = Math.max(0, list.findIndex((p) => p.name === port));
+    return [node.ui.x + (output ? nodeWidth : 0), node.ui.y + titleHeight + 10 + i * portGap];
+  }
+
+  render() {
+    const doc = this.doc;
+    const graph = (this.report && this.report.graph) || {};
+    const parts = [];
+    let right = 0;
+    let bottom = 0;
+    const byId = new Map(doc.nodes.map((n) => [n.id, n]));
+    (doc.edges || []).forEach((edge, e) => {
+      const { from, to } = edgeEnds(edge);
+      const a = byId.get(from[0]);
+      const b = byId.get(to[0]);
+      if (!a || !b) return;
+      const [x1, y1] = this.portAt(a, from[1], true);
+      const [x2, y2] = this.portAt(b, to[1], false);
+      const off = typeof edge === 'object' && edge.enabled === false;
+      parts.push(`<path class="graph-edge${off ? ' off' : ''}${this.selectedEdge === e ? ' selected' : ''}" data-edge="${e}"
+        d="${wirePath(x1, y1, x2, y2)}"/>`);
+    });
+    for (const node of doc.nodes) {
+      const { inputs, outputs } = portsOf(this.reference, doc, node);
+      const height = titleHeight + 14 + Math.max(inputs.length, outputs.length, 1) * portGap;
+      const { x, y } = node.ui;
+      right = Math.max(right, x + nodeWidth + 60);
+      bottom = Math.max(bottom, y + height + 20);
+      const runs = (graph.node_runs || {})[node.id];
+      const known = node.type === 'subgraph' || node.type === 'note' || nodeType(this.reference, node);
+      parts.push(`<g class="graph-node${this.selected === node.id ? ' selected' : ''}${known ? '' : ' unknown'}${node.enabled === false ? ' off' : ''}" data-node="${escape(node.id)}">
+        <rect x="${x}" y="${y}" width="${nodeWidth}" height="${height}" rx="5"/>
+        <text class="graph-title" x="${x + 8}" y="${y + 14}">${escape(node.id)}</text>
+        <text class="graph-type" x="${x + 8}" y="${y + 27}">${escape(node.type)}</text>
+        ${runs ? `<text class="graph-runs" x="${x + nodeWidth - 6}" y="${y + 14}" text-anchor="end">${runs.executions}×${runs.rounds} ${runs.seconds !== undefined ? `${(1000 * runs.seconds).toFixed(1)} ms` : ''}</text>` : ''}
+        ${inputs.map((p, i) => {
+          const py = y + titleHeight + 10 + i * portGap;
+          const unprocessed = (graph.unprocessed || {})[`${node.id}.${p.name}`];
+          return `<circle class="graph-port in${p.collective ? ' collective' : ''}${unprocessed ? ' warn' : ''}" cx="${x}" cy="${py}" r="5" data-port="${escape(p.name)}" data-side="in"><title>${escape(`${p.name}: ${p.type}${p.collective ? ', collective' : ''}${unprocessed ? `; ${unprocessed} unprocessed` : ''}`)}</title></circle>
+            <text class="graph-port-name" x="${x + 9}" y="${py + 4}">${escape(p.name)}</text>`;
+        }).join('')}
+        ${outputs.map((p, i) => {
+          const py = y + titleHeight + 10 + i * portGap;
+          const count = this.portCount(node.id, p.name);
+          const blocked = (graph.blocked || {})[`${node.id}.${p.name}`];
+          return `<circle class="graph-port out${blocked ? ' warn' : ''}" cx="${x + nodeWidth}" cy="${py}" r="5" data-port="${escape(p.name)}" data-side="out"><title>${escape(`${p.name}: ${p.type}${blocked ? `; ${blocked} blocked` : ''}`)}</title></circle>
+            <text class="graph-port-name" x="${x + nodeWidth - 9}" y="${py + 4}" text-anchor="end">${escape(p.name)}</text>
+            ${count !== undefined ? `<text class="graph-count${blocked ? ' warn' : ''}" data-count="${escape(`${node.id}.${p.name}`)}" x="${x + nodeWidth + 8}" y="${py - 4}">${count}</text>` : ''}`;
+        }).join('')}
+      </g>`);
+    }
+    // The whole graph in the panel's width, down to 45% (then the panel scrolls).
+    const [width, height] = [Math.max(right, 400), Math.max(bottom, 200)];
+    const room = (this.panel.clientWidth || width) - 16;
+    this.scale = Math.max(0.45, Math.min(1, room / width));
+    this.svg.setAttribute('viewBox', `0 0 ${width} ${height}`);
+    this.svg.setAttribute('width', Math.round(width * this.scale));
+    this.svg.setAttribute('height', Math.round(height * this.scale));
+    this.svg.innerHTML = parts.join('');
+    this.bindCanvas();
+    this.renderParams();
+  }
+
+  // The selected node's parameters (every one of its type: literal or `=expression`), its
+  // diagnostics, and what left its leaf ports in the last run.
+  renderParams() {
+    // Drawn into a detached box first: the panel is replaced only when it would change, so the
+    // field the user is typing in is not taken away by a run that ends.
+    const shown = this.panel.querySelector('.graph-params');
+    const box = document.createElement('div');
+    box.className = 'graph-params';
+    this.fillParams(box);
+    if (box.innerHTML !== this.paramsHtml) {
+      this.paramsHtml = box.innerHTML;
+      shown.replaceWith(box);
+    }
+  }
+
+  fillParams(box) {
+    const node = this.doc.nodes.find((n) => n.id === this.selected);
+    if (!node) {
+      this.renderGraphFields(box);
+      return;
+    }
+    const type = nodeType(this.reference, node);
+    const params = node.params || {};
+    const specs = type ? type.params : Object.keys(params).map((name) => ({ name, type: 'any' }));
+    const idPattern = new RegExp(`"id"\\s*:\\s*"${node.id}"`);
+    const line = this.host.text().split('\n').findIndex((l) => idPattern.test(l)) + 1;
+    const diagnostics = (this.host.diagnostics() || []).filter((d) => d.line === line);
+    const entities = ((this.report && this.report.graph && this.report.graph.entities) || [])
+      .filter((e) => e.port.startsWith(`${node.id}.`));
+    box.innerHTML = `
+      <b>${escape(node.id)}</b> <code>${escape(node.type)}</code>
+      <div class="graph-doc">${escape(type ? type.doc : '')}</div>
+      ${specs.map((p) => `
+        <label class="graph-param" title="${escape(`${p.type}${p.default !== undefined ? ` = ${JSON.stringify(p.default)}` : ' (required)'}${p.min !== undefined ? `, >= ${p.min}` : ''}${p.max !== undefined ? `, <= ${p.max}` : ''}${p.per_entity ? ', per entity' : ''}`)}">
+          <span>${escape(p.name)}</span>
+          <input name="param" data-param="${escape(p.name)}" value="${escape(shownValue(params[p.name]))}"
+                 placeholder="${escape(p.default !== undefined ? JSON.stringify(p.default) : 'required')}">
+        </label>`).join('')}
+      ${type && type.writes.length ? `<div class="graph-doc">node attributes to graph attributes:</div>${type.writes.map((w) => `
+        <label class="graph-param" title="the graph attribute that receives the node attribute '${escape(w)}' (empty: discarded)">
+          <span>${escape(w)} →</span>
+          <input name="mapping" data-write="${escape(w)}" value="${escape((node.attributes || {})[w] ?? '')}" placeholder="(discarded)">
+        </label>`).join('')}` : ''}
+      <div class="graph-diagnostics">${diagnostics.map((d) => `<div class="${d.severity}">${escape(`${d.code}: ${d.message}`)}</div>`).join('')}</div>
+      ${entities.length ? `<table class="graph-entities"><tr><th>entity</th><th>port</th><th>attributes</th></tr>${entities.slice(0, 50).map((e) =>
+        `<tr><td>${e.id} ${escape(e.type)}</td><td>${escape(e.port)}</td><td>${escape(JSON.stringify(e.attributes))}</td></tr>`).join('')}</table>` : ''}`;
+    // The node as the document holds it when the field changes (a run may have read it again).
+    const current = () => this.doc.nodes.find((n) => n.id === node.id);
+    for (const input of box.querySelectorAll('[name=mapping]')) {
+      input.addEventListener('change', () => {
+        const n = current();
+        if (!n) return;
+        const next = { ...(n.attributes || {}) };
+        if (input.value.trim()) next[input.dataset.write] = input.value.trim();
+        else delete next[input.dataset.write];
+        if (Object.keys(next).length) n.attributes = next;
+        else delete n.attributes;
+        this.write();
+      });
+    }
+    for (const input of box.querySelectorAll('[name=param]')) {
+      input.addEventListener('change', () => {
+        const n = current();
+        if (!n) return;
+        const value = typedValue(input.value);
+        const next = { ...(n.params || {}) };
+        if (value === undefined) delete next[input.dataset.param];
+        else next[input.dataset.param] = value;
+        n.params = next;
+        this.write();
+      });
+    }
+  }
+
+  // With no node selected: the graph's own fields, its parameters and attributes (§6, §7) as JSON.
+  renderGraphFields(box) {
+    const field = (name, title) => `
+      <label class="graph-field" title="${escape(title)}"><span>${name}</span>
+        <textarea name="graph-${name}" rows="3" spellcheck="false">${escape(JSON.stringify(this.doc[name] || {}))}</textarea></label>`;
+    box.innerHTML = `
+      <i>click a node to edit it; drag from an output port to an input port to connect; Delete removes
+      the selection; Ctrl-C / Ctrl-V copy a node</i>
+      ${field('parameters', 'graph parameters: name -> { type, default, min, max, doc }')}
+      ${field('attributes', 'attributes entities may carry: name -> { type, default }')}`;
+    for (const name of ['parameters', 'attributes']) {
+      const area = box.querySelector(`[name=graph-${name}]`);
+      area.addEventListener('change', () => {
+        let value;
+        try {
+          value = JSON.parse(area.value || '{}');
+        } catch (error) {
+          this.message(`${name}: not JSON (${error.message})`);
+          return;
+        }
+        if (value && typeof value === 'object' && Object.keys(value).length) this.doc[name] = value;
+        else delete this.doc[name];
+        this.write();
+      });
+    }
+  }
+
+  addNode(typeName) {
+    const type = this.reference.nodes.find((t) => t.name === typeName);
+    if (!type) {
+      this.message(`no node type '${typeName}'`);
+      return;
+    }
+    const id = freshId(this.doc, type.name);
+    const node = { id, type: type.name };
+    const params = startingParams(type);
+    if (Object.keys(params).length) node.params = params;
+    // The first free place of a grid three nodes wide.
+    const free = (x, y) => this.doc.nodes.every((n) => Math.abs(n.ui.x - x) >= 150 || Math.abs(n.ui.y - y) >= 90);
+    let k = 0;
+    while (!free(20 + (k % 3) * 200, 20 + Math.floor(k / 3) * 110)) ++k;
+    node.ui = { x: 20 + (k % 3) * 200, y: 20 + Math.floor(k / 3) * 110 };
+    this.doc.nodes.push(node);
+    this.selected = id;
+    this.write();
+    this.message(`added ${id}`);
+  }
+
+  // Connects `from` ('node.port') to `to` unless the checker finds an error in the new edge (a
+  // type, a direction, a duplicate: its own message is shown and the graph stays as it was).
+  async connect(from, to) {
+    const edges = this.doc.edges || [];
+    const candidate = { ...this.doc, edges: [...edges, edgeText(from, to)] };
+    const text = graphText(candidate);
+    const lines = text.split('\n');
+    const line = lines.length - lines.slice().reverse().findIndex((l) => l.includes(JSON.stringify(edgeText(from, to)))) ;
+    const fresh = (await this.host.check(text)).filter((d) => d.severity === 'error' && d.line === line);
+    if (fresh.length) {
+      this.message(`refused: ${fresh[0].code}: ${fresh[0].message}`);
+      return false;
+    }
+    this.doc.edges = candidate.edges;
+    this.write();
+    this.message(`connected ${from} -> ${to}`);
+    return true;
+  }
+
+  removeSelection() {
+    if (this.selectedEdge !== undefined && this.selectedEdge !== null) {
+      this.doc.edges.splice(this.selectedEdge, 1);
+      this.selectedEdge = null;
+      this.write();
+    } else if (this.selected) {
+      removeNode(this.doc, this.selected);
+      this.selected = null;
+      this.write();
+    }
+  }
+
+  bindControls() {
+    const on = (name, handler) => this.panel.querySelector(`[name=${name}]`).addEventListener('click', handler);
+    on('add-node', () => { if (this.doc) this.addNode(this.panel.querySelector('[name=palette]').value.trim()); });
+    this.panel.querySelector('[name=palette]').addEventListener('keydown', (e) => {
+      if (e.key === 'Enter' && this.doc) this.addNode(e.target.value.trim());
+    });
+    on('layout', () => {
+      if (!this.doc) return;
+      this.doc.nodes.forEach((n) => { if (n.ui) { delete n.ui.x; delete n.ui.y; } });
+      layout(this.doc);
+      this.write();
+    });
+    on('undo', () => this.host.undo());
+    on('redo', () => this.host.redo());
+    this.svg.addEventListener('keydown', (e) => {
+      const key = e.key.toLowerCase();
+      if (e.key === 'Delete' || e.key === 'Backspace') this.removeSelection();
+      else if ((e.ctrlKey || e.metaKey) && key === 'z') (e.shiftKey ? this.host.redo() : this.host.undo());
+      else if ((e.ctrlKey || e.metaKey) && key === 'y') this.host.redo();
+      else if ((e.ctrlKey || e.metaKey) && key === 'c' && this.selected) {
+        this.clipboard = JSON.parse(JSON.stringify(this.doc.nodes.find((n) => n.id === this.selected)));
+        this.message(`copied ${this.selected}`);
+      } else if ((e.ctrlKey || e.metaKey) && key === 'v' && this.clipboard && this.doc) {
+        const copy = copyNode(this.doc, this.clipboard);
+        this.doc.nodes.push(copy);
+        this.selected = copy.id;
+        this.write();
+        this.message(`pasted ${copy.id}`);
+      } else {
+        return;
+      }
+      e.preventDefault();
+    });
+  }
+
+  // Point of a mouse event in the canvas's coordinates (its viewBox, drawn at this.scale).
+  point(event) {
+    const box = this.svg.getBoundingClientRect();
+    const scale = this.scale || 1;
+    return [(event.clientX - box.left) / scale, (event.clientY - box.top) / scale];
+  }
+
+  bindCanvas() {
+    this.svg.onmousedown = (event) => {
+      const port = event.target.closest('.graph-port');
+      const nodeEl = event.target.closest('.graph-node');
+      const edgeEl = event.target.closest('.graph-edge');
+      this.svg.focus();
+      if (port && port.dataset.side === 'out') {
+        this.dragWire(event, nodeEl.dataset.node, port.dataset.port);
+      } else if (nodeEl) {
+        this.selected = nodeEl.dataset.node;
+        this.selectedEdge = null;
+        this.dragNode(event, nodeEl);
+      } else if (edgeEl) {
+        this.selectedEdge = Number(edgeEl.dataset.edge);
+        this.selected = null;
+        this.render();
+      } else {
+        this.selected = null;
+        this.selectedEdge = null;
+        this.render();
+      }
+    };
+  }
+
+  dragNode(event, element) {
+    const node = this.doc.nodes.find((n) => n.id === element.dataset.node);
+    const [sx, sy] = this.point(event);
+    const [ox, oy] = [node.ui.x, node.ui.y];
+    let moved = false;
+    const move = (e) => {
+      const [x, y] = this.point(e);
+      if (!moved && Math.hypot(x - sx, y - sy) < 3) return;
+      moved = true;
+      node.ui = { ...node.ui, x: Math.max(0, Math.round(ox + x - sx)), y: Math.max(0, Math.round(oy + y - sy)) };
+      element.setAttribute('transform', `translate(${node.ui.x - ox},${node.ui.y - oy})`);
+    };
+    const up = () => {
+      window.removeEventListener('mousemove', move);
+      window.removeEventListener('mouseup', up);
+      if (moved) this.write();
+      else this.render();
+    };
+    window.addEventListener('mousemove', move);
+    window.addEventListener('mouseup', up);
+  }
+
+  dragWire(event, nodeId, port) {
+    const node = this.doc.nodes.find((n) => n.id === nodeId);
+    const [x1, y1] = this.portAt(node, port, true);
+    const wire = document.createElementNS(svgNs, 'path');
+    wire.setAttribute('class', 'graph-edge wire');
+    this.svg.append(wire);
+    const move = (e) => {
+      const [x2, y2] = this.point(e);
+      wire.setAttribute('d', `M${x1},${y1} L${x2},${y2}`);
+    };
+    const up = (e) => {
+      window.removeEventListener('mousemove', move);
+      window.removeEventListener('mouseup', up);
+      wire.remove();
+      const target = document.elementFromPoint(e.clientX, e.clientY);
+      const input = target && target.closest && target.closest('.graph-port.in');
+      if (input) this.connect(`${nodeId}.${port}`, `${input.closest('.graph-node').dataset.node}.${input.dataset.port}`);
+    };
+    window.addEventListener('mousemove', move);
+    window.addEventListener('mouseup', up);
+  }
+}
