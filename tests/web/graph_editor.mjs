@@ -48,8 +48,14 @@ const setMapping = async (id, write, attribute) => {
 const connect = async (from, to) => {
   const [a, p] = from.split('.');
   const [b, q] = to.split('.');
-  const start = await node(a).locator(`circle[data-side="out"][data-port="${p}"]`).boundingBox();
-  const end = await node(b).locator(`circle[data-side="in"][data-port="${q}"]`).boundingBox();
+  // After the last edit's run (its counts redraw the canvas), then the ports where they are.
+  await page.waitForFunction(() => window.studio.lastBuild && window.studio.lastBuild.sequence === window.studio.sequence);
+  let start = null;
+  let end = null;
+  for (let attempt = 0; attempt < 5 && !(start && end); ++attempt) {
+    start = await node(a).locator(`circle[data-side="out"][data-port="${p}"]`).boundingBox();
+    end = await node(b).locator(`circle[data-side="in"][data-port="${q}"]`).boundingBox();
+  }
   if (!start || !end) {
     await page.screenshot({ path: path.join(out, 'graph_no_port.png') });
     throw new Error(`no port ${start ? to : from} on the canvas`);

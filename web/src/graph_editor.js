@@ -90,6 +90,8 @@ export class GraphEditor {
   show(report = this.report) {
     if (report && report !== this.report) this.countsAt = performance.now(); // read by the browser test
     this.report = report;
+    // Not under a drag: the drag ends by writing the document it moves (and draws the counts).
+    if (this.dragging) return;
     if (!this.read()) {
       this.svg.replaceChildren();
       return;
@@ -400,6 +402,7 @@ export class GraphEditor {
     const [sx, sy] = this.point(event);
     const [ox, oy] = [node.ui.x, node.ui.y];
     let moved = false;
+    this.dragging = true;
     const move = (e) => {
       const [x, y] = this.point(e);
       if (!moved && Math.hypot(x - sx, y - sy) < 3) return;
@@ -410,6 +413,7 @@ export class GraphEditor {
     const up = () => {
       window.removeEventListener('mousemove', move);
       window.removeEventListener('mouseup', up);
+      this.dragging = false;
       if (moved) this.write();
       else this.render();
     };
@@ -423,6 +427,7 @@ export class GraphEditor {
     const wire = document.createElementNS(svgNs, 'path');
     wire.setAttribute('class', 'graph-edge wire');
     this.svg.append(wire);
+    this.dragging = true;
     const move = (e) => {
       const [x2, y2] = this.point(e);
       wire.setAttribute('d', `M${x1},${y1} L${x2},${y2}`);
@@ -430,6 +435,7 @@ export class GraphEditor {
     const up = (e) => {
       window.removeEventListener('mousemove', move);
       window.removeEventListener('mouseup', up);
+      this.dragging = false;
       wire.remove();
       const target = document.elementFromPoint(e.clientX, e.clientY);
       const input = target && target.closest && target.closest('.graph-port.in');
