@@ -160,6 +160,32 @@ try {
   }
 
   lap('saved and run');
+
+  // Encapsulation: the newel (circle, extrude2) into a subgraph file; the stairway runs the same,
+  // saved and built from the command line; a double-click opens the subgraph, which runs alone.
+  await select('circle');
+  await node('extrude2').locator('rect').click({ modifiers: ['Shift'] });
+  await page.fill('#graph [name=subgraph-name]', 'newel_post');
+  before = await sequence();
+  await page.click('#graph [name=encapsulate]');
+  await waitBuild('return b.ok && b.report.graph.leaves["set_material.out"]?.count === 17', 'the encapsulated newel', before);
+  check(fs.existsSync(path.join(work, 'newel_post.graph.json')), 'the subgraph file written');
+  const encapsulated = JSON.parse(await page.evaluate(() => window.studio.editor.state.doc.toString()));
+  check(encapsulated.nodes.some((n) => n.id === 'newel_post' && n.type === 'subgraph') &&
+        !encapsulated.nodes.some((n) => n.id === 'circle') &&
+        encapsulated.edges.includes('newel_post.extrude2_out -> set_material.in'),
+        `the graph after encapsulation: ${JSON.stringify(encapsulated.edges)}`);
+  await page.screenshot({ path: path.join(out, 'graph_encapsulated.png') });
+  await page.click('#save');
+  await page.waitForFunction(() => document.querySelector('#save').disabled);
+  const rerun = spawnSync(insula, ['build', path.join(work, 'hand.graph.json'), '--report', report, '-q'], { encoding: 'utf8' });
+  check(rerun.status === 0 && JSON.stringify(JSON.parse(fs.readFileSync(report, 'utf8')).graph.leaves) ===
+        JSON.stringify(studioGraph.leaves), `the encapsulated graph from the command line: ${rerun.stderr}`);
+  before = await sequence();
+  await node('newel_post').locator('rect').dblclick();
+  await waitBuild('return b.ok && b.report.graph.leaves["extrude2.out"]?.count === 1', 'the subgraph opened alone', before);
+  check(await page.evaluate(() => window.studio.path) === 'newel_post.graph.json', 'the subgraph opened');
+  lap('encapsulated');
   // The bundled city graph opens, is laid out and drawn, runs, and shows its counts.
   before = await sequence();
   await page.click('#files div[data-path="city/city.graph.json"]');

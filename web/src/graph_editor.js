@@ -8,8 +8,8 @@
 // and time; ports whose entities were blocked or left unprocessed are marked. Undo and redo are
 // the editor's; copy and paste duplicate the selected node.
 import {
-  copyNode, edgeEnds, edgeText, freshId, graphText, layout, nodeType, portsOf, removeNode,
-  startingParams,
+  copyNode, edgeEnds, edgeText, encapsulate, freshId, graphText, layout, nodeType, portsOf,
+  removeNode, startingParams,
 } from './graph_model.js';
 
 const nodeWidth = 170;
@@ -42,12 +42,15 @@ function wirePath(x1, y1, x2, y2) {
 
 export class GraphEditor {
   // `host`: { text(): the editor's text, setText(text), check(text): Promise<diagnostics>,
-  //           diagnostics(): the open file's last ones, undo(), redo() }.
+  //           diagnostics(): the open file's last ones, undo(), redo(), path(): the open file,
+  //           read(path): Promise<text>, save(path, text): Promise, open(path) }.
   constructor(panel, reference, host) {
     this.panel = panel;
     this.reference = reference;
     this.host = host;
-    this.selected = null; // a node id
+    this.selected = null; // a node id: the one the panel edits
+    this.selection = new Set(); // node ids (shift-click adds): what `encapsulate` takes
+    this.gates = new Map(); // subgraph file -> its gates, read once
     this.report = null;
     this.clipboard = null;
     panel.innerHTML = `
@@ -56,6 +59,8 @@ export class GraphEditor {
         <datalist id="graph-node-types">${reference.nodes.map((t) => `<option value="${escape(t.name)}">${escape(t.category)}: ${escape(t.doc.slice(0, 80))}</option>`).join('')}</datalist>
         <button type="button" name="add-node">add</button>
         <button type="button" name="layout" title="arrange the nodes by their edges">layout</button>
+        <input name="subgraph-name" placeholder="subgraph name" size="12">
+        <button type="button" name="encapsulate" title="the selected nodes (shift-click) into a subgraph file">encapsulate</button>
         <button type="button" name="undo">undo</button>
         <button type="button" name="redo">redo</button>
         <span class="graph-message"></span>
@@ -112,8 +117,37 @@ export class GraphEditor {
   }
 
   // Where port `port` of node `node` is drawn.
-  portAt(node, port, output) {
+  // The ports of `node`; a subgraph file's gates once read.
+  ports(node) {
     const ports = portsOf(this.reference, this.doc, node);
+    const file = this.subgraphFile(node);
+    if (!file) return ports;
+    if (!this.gates.has(file)) {
+      this.gates.set(file, null);
+      this.host.read(file).then((text) => {
+        this.gates.set(file, JSON.parse(text).gates || {});
+        if (this.doc) this.render();
+      }).catch(() => {});
+    }
+    const gates = this.gates.get(file);
+    if (gates) {
+      const add = (list, name) => { if (!list.some((p) => p.name === name)) list.push({ name, type: 'T', collective: false }); };
+      Object.keys(gates.inputs || {}).forEach((g) => add(ports.inputs, g));
+      Object.keys(gates.outputs || {}).forEach((g) => add(ports.outputs, g));
+    }
+    return ports;
+  }
+
+  // The studio path of a subgraph node's file (relative to the open graph's folder), or null.
+  subgraphFile(node) {
+    if (node.type !== 'subgraph' || typeof node.graph !== 'string' || node.graph.startsWith('#')) return null;
+    const open = this.host.path();
+    const folder = open.includes('/') ? open.slice(0, open.lastIndexOf('/') + 1) : '';
+    return folder + node.graph;
+  }
+
+  portAt(node, port, output) {
+    const ports = this.ports(node);
     const list = output ? ports.outputs : ports.inputs;
     const i = Math.max(0, list.findIndex((p) => p.name === port));
     return [node.ui.x + (output ? nodeWidth : 0), node.ui.y + titleHeight + 10 + i * portGap];
@@ -138,14 +172,14 @@ export class GraphEditor {
         d="${wirePath(x1, y1, x2, y2)}"/>`);
     });
     for (const node of doc.nodes) {
-      const { inputs, outputs } = portsOf(this.reference, doc, node);
+      const { inputs, outputs } = this.ports(node);
       const height = titleHeight + 14 + Math.max(inputs.length, outputs.length, 1) * portGap;
       const { x, y } = node.ui;
       right = Math.max(right, x + nodeWidth + 60);
       bottom = Math.max(bottom, y + height + 20);
       const runs = (graph.node_runs || {})[node.id];
       const known = node.type === 'subgraph' || node.type === 'note' || nodeType(this.reference, node);
-      parts.push(`<g class="graph-node${this.selected === node.id ? ' selected' : ''}${known ? '' : ' unknown'}${node.enabled === false ? ' off' : ''}" data-node="${escape(node.id)}">
+      parts.push(`<g class="graph-node${this.selected === node.id || this.selection.has(node.id) ? ' selected' : ''}${known ? '' : ' unknown'}${node.enabled === false ? ' off' : ''}" data-node="${escape(node.id)}">
         <rect x="${x}" y="${y}" width="${nodeWidth}" height="${height}" rx="5"/>
         <text class="graph-title" x="${x + 8}" y="${y + 14}">${escape(node.id)}</text>
         <text class="graph-type" x="${x + 8}" y="${y + 27}">${escape(node.type)}</text>
@@ -319,6 +353,35 @@ export class GraphEditor {
     return true;
   }
 
+  // The selected nodes into `<name>.graph.json` beside the open graph, saved; the graph keeps a
+  // subgraph node in their place.
+  async encapsulateSelection(name) {
+    const ids = [...this.selection];
+    if (ids.length === 0) {
+      this.message('select nodes first (shift-click)');
+      return;
+    }
+    if (!/^[A-Za-z_][A-Za-z0-9_]*$/.test(name) || this.doc.nodes.some((n) => n.id === name)) {
+      this.message('the subgraph needs a name: letters, digits, _, not a node id already');
+      return;
+    }
+    const file = `${name}.graph.json`;
+    const { file: sub } = encapsulate(this.doc, ids, name, file);
+    const path = this.subgraphFile({ type: 'subgraph', graph: file });
+    try {
+      await this.host.save(path, graphText(sub));
+    } catch (error) {
+      this.show(); // the document as the text still has it
+      this.message(`not encapsulated: ${error.message || error}`);
+      return;
+    }
+    this.gates.set(path, sub.gates);
+    this.selection.clear();
+    this.selected = name;
+    this.write();
+    this.message(`encapsulated ${ids.join(', ')} into ${path}`);
+  }
+
   removeSelection() {
     if (this.selectedEdge !== undefined && this.selectedEdge !== null) {
       this.doc.edges.splice(this.selectedEdge, 1);
@@ -342,6 +405,9 @@ export class GraphEditor {
       this.doc.nodes.forEach((n) => { if (n.ui) { delete n.ui.x; delete n.ui.y; } });
       layout(this.doc);
       this.write();
+    });
+    on('encapsulate', () => {
+      if (this.doc) this.encapsulateSelection(this.panel.querySelector('[name=subgraph-name]').value.trim());
     });
     on('undo', () => this.host.undo());
     on('redo', () => this.host.redo());
@@ -381,8 +447,14 @@ export class GraphEditor {
       this.svg.focus();
       if (port && port.dataset.side === 'out') {
         this.dragWire(event, nodeEl.dataset.node, port.dataset.port);
+      } else if (nodeEl && event.shiftKey) {
+        const id = nodeEl.dataset.node;
+        if (this.selection.has(id)) this.selection.delete(id);
+        else this.selection.add(id);
+        this.render();
       } else if (nodeEl) {
         this.selected = nodeEl.dataset.node;
+        this.selection = new Set([this.selected]);
         this.selectedEdge = null;
         this.dragNode(event, nodeEl);
       } else if (edgeEl) {
@@ -391,9 +463,18 @@ export class GraphEditor {
         this.render();
       } else {
         this.selected = null;
+        this.selection.clear();
         this.selectedEdge = null;
         this.render();
       }
+    };
+    // A subgraph opens in the studio (its own file: run and previewed alone, §8).
+    this.svg.ondblclick = (event) => {
+      const nodeEl = event.target.closest('.graph-node');
+      const node = nodeEl && this.doc.nodes.find((n) => n.id === nodeEl.dataset.node);
+      const file = node && this.subgraphFile(node);
+      if (file) this.host.open(file);
+      else if (node && node.type === 'subgraph') this.message('an inline subgraph (#name) is edited in the text');
     };
   }
 
@@ -414,8 +495,15 @@ export class GraphEditor {
       window.removeEventListener('mousemove', move);
       window.removeEventListener('mouseup', up);
       this.dragging = false;
-      if (moved) this.write();
-      else this.render();
+      if (moved) {
+        this.write();
+      } else {
+        // A click: the selection marked on the nodes drawn (a redraw would lose a double-click).
+        for (const g of this.svg.querySelectorAll('.graph-node')) {
+          g.classList.toggle('selected', this.selection.has(g.dataset.node));
+        }
+        this.renderParams();
+      }
     };
     window.addEventListener('mousemove', move);
     window.addEventListener('mouseup', up);

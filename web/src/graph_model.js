@@ -158,3 +158,48 @@ export function copyNode(doc, node, dx = 30, dy = 30) {
   copy.ui = { ...(copy.ui || {}), x: (node.ui?.x ?? 0) + dx, y: (node.ui?.y ?? 0) + dy };
   return copy;
 }
+
+// Encapsulates the nodes `ids` of `doc` into a subgraph file (seed 003 §3.7; graph-format §8):
+// returns { file: the subgraph document, node: the subgraph node that replaces them } and
+// rewrites `doc` (the nodes and their edges replaced by the node; edges crossing the selection
+// rewired to its gates). Each crossing port becomes a gate named `<node>_<port>`. The subgraph
+// declares the graph's parameters and attributes: the node passes every parameter through
+// (`"= name"`) and maps every attribute to itself, so the run is the same as before.
+export function encapsulate(doc, ids, name, graphPath) {
+  const inside = new Set(ids);
+  const gates = { inputs: {}, outputs: {} };
+  const inner = [];
+  const outer = [];
+  const gateOf = ([node, port]) => `${node}_${port}`;
+  for (const edge of doc.edges || []) {
+    const { from, to } = edgeEnds(edge);
+    const [fromIn, toIn] = [inside.has(from[0]), inside.has(to[0])];
+    if (fromIn && toIn) {
+      inner.push(edge);
+    } else if (toIn) {
+      gates.inputs[gateOf(to)] = `${to[0]}.${to[1]}`;
+      outer.push(edgeText(`${from[0]}.${from[1]}`, `${name}.${gateOf(to)}`));
+    } else if (fromIn) {
+      gates.outputs[gateOf(from)] = `${from[0]}.${from[1]}`;
+      outer.push(edgeText(`${name}.${gateOf(from)}`, `${to[0]}.${to[1]}`));
+    } else {
+      outer.push(edge);
+    }
+  }
+  const chosen = doc.nodes.filter((n) => inside.has(n.id));
+  const file = { format: 'insula-graph', version: 1, name };
+  if (doc.parameters) file.parameters = doc.parameters;
+  if (doc.attributes) file.attributes = doc.attributes;
+  file.nodes = chosen;
+  file.edges = inner;
+  file.gates = gates;
+  const node = { id: name, type: 'subgraph', graph: graphPath };
+  const parameters = Object.keys(doc.parameters || {});
+  if (parameters.length) node.params = Object.fromEntries(parameters.map((p) => [p, `= ${p}`]));
+  const attributes = Object.keys(doc.attributes || {});
+  if (attributes.length) node.attributes = Object.fromEntries(attributes.map((a) => [a, a]));
+  node.ui = { x: chosen[0]?.ui?.x ?? 20, y: chosen[0]?.ui?.y ?? 20 };
+  doc.nodes = [...doc.nodes.filter((n) => !inside.has(n.id)), node];
+  doc.edges = outer;
+  return { file, node };
+}

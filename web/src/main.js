@@ -27,12 +27,20 @@ const state = {
 window.studio = state; // read (and state.editor driven) by the browser test, tests/web/studio.mjs
 
 async function api(path, options = {}) {
-  const response = await fetch(path, {
-    ...options,
-    headers: { 'X-Insula-Token': token, ...(options.headers || {}) },
-  });
-  if (!response.ok) throw new Error(`${path}: ${response.status} ${await response.text()}`);
-  return response;
+  // 503: the server runs as many checks and builds as it allows (a superseded one may still be
+  // stopping); a moment later there is room.
+  for (let attempt = 0; ; ++attempt) {
+    const response = await fetch(path, {
+      ...options,
+      headers: { 'X-Insula-Token': token, ...(options.headers || {}) },
+    });
+    if (response.status === 503 && attempt < 30) {
+      await new Promise((resolve) => setTimeout(resolve, 100));
+      continue;
+    }
+    if (!response.ok) throw new Error(`${path}: ${response.status} ${await response.text()}`);
+    return response;
+  }
 }
 
 const element = (id) => document.getElementById(id);
@@ -354,6 +362,13 @@ function toggleGraph() {
       diagnostics: () => state.diagnostics.filter((d) => d.file === state.path),
       undo: () => undo(editor),
       redo: () => redo(editor),
+      path: () => state.path,
+      read: async (path) => (await api(`/api/file?path=${encodeURIComponent(path)}`)).text(),
+      save: async (path, text) => {
+        await api(`/api/file?path=${encodeURIComponent(path)}`, { method: 'PUT', body: text });
+        await listFiles();
+      },
+      open: (path) => open(path).catch((error) => setStatus(String(error))),
     });
     state.graph = graphEditor;
   }
