@@ -186,6 +186,23 @@ try {
   await waitBuild('return b.ok && b.report.graph.leaves["extrude2.out"]?.count === 1', 'the subgraph opened alone', before);
   check(await page.evaluate(() => window.studio.path) === 'newel_post.graph.json', 'the subgraph opened');
   lap('encapsulated');
+
+  // Augmentations in the panel: shape.comp's second item feeds a port renamed "walls", then a
+  // third item (the roof faces) added: the ports follow, with their counts.
+  before = await sequence();
+  await page.click('#files div[data-path="footprint_tiles.graph.json"]');
+  await waitBuild('return b.ok && b.report.graph.ports["faces.rest"] === 5', 'footprint_tiles opens', before);
+  await select('faces');
+  before = await sequence();
+  await setField('#graph [name=augment-field][data-item="1"][data-field="out"]', 'walls');
+  await waitBuild('return b.ok && b.report.graph.ports["faces.walls"] === 5', 'an augmentation port renamed', before);
+  check(await node('faces').locator('circle[data-side="out"][data-port="walls"]').count() === 1, 'the renamed port drawn');
+  before = await sequence();
+  await page.click('#graph [name=augment-add]');
+  await waitBuild('return b.ok && b.report.graph.ports["faces.comp2"] === undefined', 'an augmentation added', before);
+  const augmented = JSON.parse(await page.evaluate(() => window.studio.editor.state.doc.toString()));
+  check(augmented.nodes.find((n) => n.id === 'faces').augment.length === 3, 'three augmentation items');
+  lap('augmentations');
   // The bundled city graph opens, is laid out and drawn, runs, and shows its counts.
   before = await sequence();
   await page.click('#files div[data-path="city/city.graph.json"]');

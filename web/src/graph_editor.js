@@ -9,7 +9,7 @@
 // the editor's; copy and paste duplicate the selected node.
 import {
   copyNode, edgeEnds, edgeText, encapsulate, freshId, graphText, layout, nodeType, portsOf,
-  removeNode, startingParams,
+  removeNode, startingParams, startingValue,
 } from './graph_model.js';
 
 const nodeWidth = 170;
@@ -93,6 +93,14 @@ export class GraphEditor {
 
   // Shows the text's graph with the counts of `report` (the last run's, or null).
   show(report = this.report) {
+    if (this.host.path() !== this.shownPath) {
+      // Another file: nothing of the last one stays selected.
+      this.shownPath = this.host.path();
+      this.selected = null;
+      this.selection.clear();
+      this.selectedEdge = null;
+      this.message('');
+    }
     if (report && report !== this.report) this.countsAt = performance.now(); // read by the browser test
     this.report = report;
     // Not under a drag: the drag ends by writing the document it moves (and draws the counts).
@@ -255,11 +263,54 @@ export class GraphEditor {
           <span>${escape(w)} →</span>
           <input name="mapping" data-write="${escape(w)}" value="${escape((node.attributes || {})[w] ?? '')}" placeholder="(discarded)">
         </label>`).join('')}` : ''}
+      ${type && type.augments.length ? this.augmentsHtml(type, node) : ''}
       <div class="graph-diagnostics">${diagnostics.map((d) => `<div class="${d.severity}">${escape(`${d.code}: ${d.message}`)}</div>`).join('')}</div>
       ${entities.length ? `<table class="graph-entities"><tr><th>entity</th><th>port</th><th>attributes</th></tr>${entities.slice(0, 50).map((e) =>
         `<tr><td>${e.id} ${escape(e.type)}</td><td>${escape(e.port)}</td><td>${escape(JSON.stringify(e.attributes))}</td></tr>`).join('')}</table>` : ''}`;
     // The node as the document holds it when the field changes (a run may have read it again).
     const current = () => this.doc.nodes.find((n) => n.id === node.id);
+    // Augmentation items (graph-format §3): their fields, their output port, added and removed.
+    const items = () => {
+      const n = current();
+      if (n && !Array.isArray(n.augment)) n.augment = [];
+      return n ? n.augment : null;
+    };
+    const tidy = () => {
+      const n = current();
+      if (n && n.augment && n.augment.length === 0) delete n.augment;
+      this.write();
+    };
+    for (const input of box.querySelectorAll('[name=augment-field]')) {
+      input.addEventListener('change', () => {
+        const list = items();
+        const item = list && list[Number(input.dataset.item)];
+        if (!item) return;
+        const value = input.dataset.field === 'out' ? input.value.trim() || undefined : typedValue(input.value);
+        if (value === undefined) delete item[input.dataset.field];
+        else item[input.dataset.field] = value;
+        tidy();
+      });
+    }
+    for (const button of box.querySelectorAll('[name=augment-remove]')) {
+      button.addEventListener('click', () => {
+        const list = items();
+        if (list) list.splice(Number(button.dataset.item), 1);
+        tidy();
+      });
+    }
+    for (const button of box.querySelectorAll('[name=augment-add]')) {
+      button.addEventListener('click', () => {
+        const list = items();
+        if (!list) return;
+        const item = type.augments.length > 1 ? { kind: button.dataset.kind } : {};
+        const spec = type.augments.find((a) => a.kind === button.dataset.kind);
+        for (const f of spec.fields) {
+          if (f.default === undefined && startingValue(f) !== undefined) item[f.name] = startingValue(f);
+        }
+        list.push(item);
+        tidy();
+      });
+    }
     for (const input of box.querySelectorAll('[name=mapping]')) {
       input.addEventListener('change', () => {
         const n = current();
@@ -284,6 +335,25 @@ export class GraphEditor {
         this.write();
       });
     }
+  }
+
+  // The node's augmentation items as rows of fields (and `out` where items make ports), with a
+  // button to add an item of each kind.
+  augmentsHtml(type, node) {
+    const items = Array.isArray(node.augment) ? node.augment : [];
+    const rows = items.map((item, i) => {
+      const kind = item.kind || type.augments[0].kind;
+      const spec = type.augments.find((a) => a.kind === kind) || type.augments[0];
+      const fields = spec.fields.map((f) => `
+        <label title="${escape(f.type)}">${escape(f.name)}
+          <input name="augment-field" data-item="${i}" data-field="${escape(f.name)}" value="${escape(shownValue(item[f.name]))}" size="8"></label>`).join('');
+      const out = spec.makes_ports ? `<label title="the output port it feeds (items sharing it share a port)">out
+          <input name="augment-field" data-item="${i}" data-field="out" value="${escape(item.out ?? '')}" placeholder="${escape(`${kind}${i}`)}" size="8"></label>` : '';
+      return `<div class="graph-augment"><i>${escape(kind)} ${i}</i>${fields}${out}
+        <button type="button" name="augment-remove" data-item="${i}" title="remove the item">×</button></div>`;
+    }).join('');
+    const adds = type.augments.map((a) => `<button type="button" name="augment-add" data-kind="${escape(a.kind)}">+ ${escape(a.kind)}</button>`).join(' ');
+    return `<div class="graph-doc">augmentations (in priority order):</div>${rows}${adds}`;
   }
 
   // With no node selected: the graph's own fields, its parameters and attributes (§6, §7) as JSON.

@@ -62,14 +62,21 @@ export function freshId(doc, type) {
   return id;
 }
 
+// A starting value for a parameter or an augmentation field without a default (its first
+// choice, 1 within its range, an empty string or list...), or undefined when none fits.
+export function startingValue(p) {
+  if (p.choices && p.choices.length) return p.choices[0];
+  const value = { number: 1, integer: 1, bool: false, string: '', vec3: [0, 0, 0], list: [] }[p.type];
+  return p.min !== undefined && typeof value === 'number' ? Math.max(value, p.min) : value;
+}
+
 // A value for each required parameter of a new node, so it starts valid where it can.
 export function startingParams(type) {
   const params = {};
   for (const p of type.params) {
     if (p.default !== undefined) continue;
-    const value = { number: 1, integer: 1, bool: false, string: '', vec3: [0, 0, 0], list: [] }[p.type];
-    if (p.type === 'enum' && p.choices) params[p.name] = p.choices[0];
-    else if (value !== undefined) params[p.name] = p.min !== undefined && typeof value === 'number' ? Math.max(value, p.min) : value;
+    const value = startingValue(p);
+    if (value !== undefined) params[p.name] = value;
   }
   return params;
 }
