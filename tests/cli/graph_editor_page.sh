@@ -8,5 +8,5 @@ source "$(dirname "$0")/lib/common.sh"
 [ -f "$root/web/dist/studio.js" ] || { fail "web/dist/studio.js missing (scripts/setup.sh builds it)"; finish graph_editor_page; }
 node "$root/tests/web/graph_editor.mjs" "$insula" "$root" "$tmp" >"$tmp/page.txt" 2>&1 ||
   fail "the graph editor: $(cat "$tmp/page.txt")"
-grep 'edit to port counts' "$tmp/page.txt"
+grep -E 'edit to port counts|latency is measured' "$tmp/page.txt"
 finish graph_editor_page

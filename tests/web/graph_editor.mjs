@@ -18,6 +18,8 @@ fs.cpSync(path.join(root, 'examples/graph'), work, { recursive: true });
 fs.writeFileSync(path.join(work, 'hand.graph.json'),
                  '{ "format": "insula-graph", "version": 1, "name": "Fig. 4 by hand", "nodes": [], "edges": [] }\n');
 const failures = [];
+// Thrown to end the test early without a failure.
+class Done extends Error {}
 const check = (ok, what) => { if (!ok) failures.push(what); };
 
 const { server, url } = await startStudio(insula, work);
@@ -213,6 +215,7 @@ try {
   await page.screenshot({ path: path.join(out, 'graph_city.png') });
 
   lap('city shown');
+  if (process.env.INSULA_SANITIZED) throw new Done('the 1,000-lot latency is measured in the release lane');
   // Edit to counts on about 1,000 lots (12 x 12 street vertices: 121 blocks of 8 lots): the
   // street width retyped in the graph's parameters, from the change to the counts redrawn.
   const parameters = JSON.parse(await page.locator('#graph [name=graph-parameters]').inputValue());
@@ -239,8 +242,12 @@ try {
   console.log(`edit to port counts, city graph on ${lots} lots: median ${times[1]} ms (runs ${times.join(', ')} ms; ` +
               `the page waits 80 ms for more typing)`);
 } catch (error) {
-  failures.push(`stopped: ${error.message.split('\n')[0]}`);
-  await page.screenshot({ path: path.join(out, 'graph_stopped.png') });
+  if (error instanceof Done) {
+    console.log(error.message);
+  } else {
+    failures.push(`stopped: ${error.message.split('\n')[0]}`);
+    await page.screenshot({ path: path.join(out, 'graph_stopped.png') });
+  }
 } finally {
   await close();
   server.kill('SIGTERM');
