@@ -205,6 +205,22 @@ try {
   const augmented = JSON.parse(await page.evaluate(() => window.studio.editor.state.doc.toString()));
   check(augmented.nodes.find((n) => n.id === 'faces').augment.length === 3, 'three augmentation items');
   lap('augmentations');
+
+  // An inline subgraph (street_houses' `#sign`) opens in place with a double-click: its nodes,
+  // the counts of its run inside `signs`; an edge added there lands in the subgraph; the bar
+  // leads back.
+  before = await sequence();
+  await page.click('#files div[data-path="street_houses.graph.json"]');
+  await waitBuild('return b.ok && b.report.graph.ports["signs/board.out"] === 2', 'street_houses opens', before);
+  await node('signs').locator('rect').dispatchEvent('dblclick');
+  await page.waitForSelector('#graph g.graph-node[data-node="board"]');
+  check(await page.locator('#graph g.graph-node').count() === 2, 'the sign subgraph\'s two nodes');
+  check(await page.locator('#graph .graph-count[data-count="board.out"]').textContent() === '2',
+        'the count inside the subgraph');
+  await page.screenshot({ path: path.join(out, 'graph_inline.png') });
+  await page.click('#graph .graph-scope a[data-depth="0"]');
+  check(await node('signs').count() === 1, 'back to the graph');
+  lap('inline subgraph');
   // The bundled city graph opens, is laid out and drawn, runs, and shows its counts.
   before = await sequence();
   await page.click('#files div[data-path="city/city.graph.json"]');

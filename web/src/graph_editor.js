@@ -51,6 +51,9 @@ export class GraphEditor {
     this.selected = null; // a node id: the one the panel edits
     this.selection = new Set(); // node ids (shift-click adds): what `encapsulate` takes
     this.gates = new Map(); // subgraph file -> its gates, read once
+    this.root = null; // the whole document
+    this.heightOf = (node) => this.nodeHeight(node);
+    this.scope = []; // inline subgraphs opened: [{ name, via: the subgraph node's id }]
     this.report = null;
     this.clipboard = null;
     panel.innerHTML = `
@@ -65,6 +68,7 @@ export class GraphEditor {
         <button type="button" name="redo">redo</button>
         <span class="graph-message"></span>
       </div>
+      <div class="graph-scope"></div>
       <div class="graph-body">
         <svg class="graph-canvas" tabindex="0"></svg>
         <div class="graph-params"></div>
@@ -82,12 +86,66 @@ export class GraphEditor {
     try {
       const doc = JSON.parse(this.host.text());
       if (!doc || !Array.isArray(doc.nodes)) throw new Error('no "nodes" list');
-      this.doc = layout(doc);
+      this.root = doc;
+      layout(doc, this.heightOf);
+      if (!this.doc) this.scope = []; // an opened subgraph that is gone from the text
+      if (this.doc !== this.root) layout(this.doc, this.heightOf);
       return true;
     } catch (error) {
-      this.doc = null;
+      this.root = null;
       this.message(`the text is not a graph yet: ${error.message}`);
       return false;
+    }
+  }
+
+  // The graphs from the document down to the inline subgraph shown (§8: `#name` resolves in the
+  // innermost `subgraphs` that defines it, searching outwards), or null when one is missing.
+  chain() {
+    if (!this.root) return null;
+    const graphs = [this.root];
+    for (const { name } of this.scope) {
+      const found = [...graphs].reverse().map((g) => (g.subgraphs || {})[name]).find(Boolean);
+      if (!found || !Array.isArray(found.nodes)) return null;
+      if (!found.edges) found.edges = [];
+      graphs.push(found);
+    }
+    return graphs;
+  }
+
+  // The graph shown and edited: the document, or the inline subgraph opened in it.
+  get doc() {
+    const graphs = this.chain();
+    return graphs ? graphs[graphs.length - 1] : null;
+  }
+
+  // The report's names of what runs inside the subgraph shown: `houseA/door` (§13).
+  prefix() {
+    return this.scope.map((s) => `${s.via}/`).join('');
+  }
+
+  // The inline graph `#name` as seen from the graph shown, or null.
+  inline(name) {
+    const graphs = this.chain() || [];
+    return [...graphs].reverse().map((g) => (g.subgraphs || {})[name]).find(Boolean) || null;
+  }
+
+  renderScope() {
+    const bar = this.panel.querySelector('.graph-scope');
+    if (this.scope.length === 0) {
+      bar.replaceChildren();
+      return;
+    }
+    const crumbs = [`<a href="#" data-depth="0">graph</a>`, ...this.scope.map((s, k) =>
+      `<a href="#" data-depth="${k + 1}">${escape(s.via)} (#${escape(s.name)})</a>`)];
+    bar.innerHTML = `${crumbs.join(' › ')} <i>(an inline subgraph; double-click a subgraph node to open it)</i>`;
+    for (const a of bar.querySelectorAll('a')) {
+      a.addEventListener('click', (e) => {
+        e.preventDefault();
+        this.scope = this.scope.slice(0, Number(a.dataset.depth));
+        this.selected = null;
+        this.selection.clear();
+        this.render();
+      });
     }
   }
 
@@ -99,6 +157,7 @@ export class GraphEditor {
       this.selected = null;
       this.selection.clear();
       this.selectedEdge = null;
+      this.scope = [];
       this.message('');
     }
     if (report && report !== this.report) this.countsAt = performance.now(); // read by the browser test
@@ -114,20 +173,29 @@ export class GraphEditor {
 
   // Writes the document into the editor's text (the studio then runs it).
   write() {
-    const text = graphText(this.doc);
+    const text = graphText(this.root);
     if (text !== this.host.text()) this.host.setText(text);
     this.render();
   }
 
   portCount(node, port) {
     const ports = this.report && this.report.graph && this.report.graph.ports;
-    return ports ? ports[`${node}.${port}`] : undefined;
+    return ports ? ports[`${this.prefix()}${node}.${port}`] : undefined;
   }
 
   // Where port `port` of node `node` is drawn.
+  // How tall `node` is drawn: its title and a row per port.
+  nodeHeight(node) {
+    const { inputs, outputs } = this.ports(node);
+    return titleHeight + 14 + Math.max(inputs.length, outputs.length, 1) * portGap;
+  }
+
   // The ports of `node`; a subgraph file's gates once read.
   ports(node) {
     const ports = portsOf(this.reference, this.doc, node);
+    if (node.type === 'subgraph' && typeof node.graph === 'string' && node.graph.startsWith('#')) {
+      return this.withGates(ports, (this.inline(node.graph.slice(1)) || {}).gates);
+    }
     const file = this.subgraphFile(node);
     if (!file) return ports;
     if (!this.gates.has(file)) {
@@ -137,7 +205,11 @@ export class GraphEditor {
         if (this.doc) this.render();
       }).catch(() => {});
     }
-    const gates = this.gates.get(file);
+    return this.withGates(ports, this.gates.get(file));
+  }
+
+  // `ports` with the gates of a subgraph added as its ports.
+  withGates(ports, gates) {
     if (gates) {
       const add = (list, name) => { if (!list.some((p) => p.name === name)) list.push({ name, type: 'T', collective: false }); };
       Object.keys(gates.inputs || {}).forEach((g) => add(ports.inputs, g));
@@ -181,11 +253,11 @@ export class GraphEditor {
     });
     for (const node of doc.nodes) {
       const { inputs, outputs } = this.ports(node);
-      const height = titleHeight + 14 + Math.max(inputs.length, outputs.length, 1) * portGap;
+      const height = this.nodeHeight(node);
       const { x, y } = node.ui;
       right = Math.max(right, x + nodeWidth + 60);
       bottom = Math.max(bottom, y + height + 20);
-      const runs = (graph.node_runs || {})[node.id];
+      const runs = (graph.node_runs || {})[this.prefix() + node.id];
       const known = node.type === 'subgraph' || node.type === 'note' || nodeType(this.reference, node);
       parts.push(`<g class="graph-node${this.selected === node.id || this.selection.has(node.id) ? ' selected' : ''}${known ? '' : ' unknown'}${node.enabled === false ? ' off' : ''}" data-node="${escape(node.id)}">
         <rect x="${x}" y="${y}" width="${nodeWidth}" height="${height}" rx="5"/>
@@ -194,14 +266,14 @@ export class GraphEditor {
         ${runs ? `<text class="graph-runs" x="${x + nodeWidth - 6}" y="${y + 14}" text-anchor="end">${runs.executions}×${runs.rounds} ${runs.seconds !== undefined ? `${(1000 * runs.seconds).toFixed(1)} ms` : ''}</text>` : ''}
         ${inputs.map((p, i) => {
           const py = y + titleHeight + 10 + i * portGap;
-          const unprocessed = (graph.unprocessed || {})[`${node.id}.${p.name}`];
+          const unprocessed = (graph.unprocessed || {})[`${this.prefix()}${node.id}.${p.name}`];
           return `<circle class="graph-port in${p.collective ? ' collective' : ''}${unprocessed ? ' warn' : ''}" cx="${x}" cy="${py}" r="5" data-port="${escape(p.name)}" data-side="in"><title>${escape(`${p.name}: ${p.type}${p.collective ? ', collective' : ''}${unprocessed ? `; ${unprocessed} unprocessed` : ''}`)}</title></circle>
             <text class="graph-port-name" x="${x + 9}" y="${py + 4}">${escape(p.name)}</text>`;
         }).join('')}
         ${outputs.map((p, i) => {
           const py = y + titleHeight + 10 + i * portGap;
           const count = this.portCount(node.id, p.name);
-          const blocked = (graph.blocked || {})[`${node.id}.${p.name}`];
+          const blocked = (graph.blocked || {})[`${this.prefix()}${node.id}.${p.name}`];
           return `<circle class="graph-port out${blocked ? ' warn' : ''}" cx="${x + nodeWidth}" cy="${py}" r="5" data-port="${escape(p.name)}" data-side="out"><title>${escape(`${p.name}: ${p.type}${blocked ? `; ${blocked} blocked` : ''}`)}</title></circle>
             <text class="graph-port-name" x="${x + nodeWidth - 9}" y="${py + 4}" text-anchor="end">${escape(p.name)}</text>
             ${count !== undefined ? `<text class="graph-count${blocked ? ' warn' : ''}" data-count="${escape(`${node.id}.${p.name}`)}" x="${x + nodeWidth + 8}" y="${py - 4}">${count}</text>` : ''}`;
@@ -217,6 +289,7 @@ export class GraphEditor {
     this.svg.setAttribute('height', Math.round(height * this.scale));
     this.svg.innerHTML = parts.join('');
     this.bindCanvas();
+    this.renderScope();
     this.renderParams();
   }
 
@@ -248,7 +321,7 @@ export class GraphEditor {
     const line = this.host.text().split('\n').findIndex((l) => idPattern.test(l)) + 1;
     const diagnostics = (this.host.diagnostics() || []).filter((d) => d.line === line);
     const entities = ((this.report && this.report.graph && this.report.graph.entities) || [])
-      .filter((e) => e.port.startsWith(`${node.id}.`));
+      .filter((e) => e.port.startsWith(`${this.prefix()}${node.id}.`));
     box.innerHTML = `
       <b>${escape(node.id)}</b> <code>${escape(node.type)}</code>
       <div class="graph-doc">${escape(type ? type.doc : '')}</div>
@@ -407,9 +480,13 @@ export class GraphEditor {
   // Connects `from` ('node.port') to `to` unless the checker finds an error in the new edge (a
   // type, a direction, a duplicate: its own message is shown and the graph stays as it was).
   async connect(from, to) {
-    const edges = this.doc.edges || [];
-    const candidate = { ...this.doc, edges: [...edges, edgeText(from, to)] };
-    const text = graphText(candidate);
+    // The whole document with the edge added to the graph shown (it may be an inline subgraph).
+    const graph = this.doc;
+    const edges = graph.edges || [];
+    const withEdge = [...edges, edgeText(from, to)];
+    graph.edges = withEdge;
+    const text = graphText(this.root);
+    graph.edges = edges;
     const lines = text.split('\n');
     const line = lines.length - lines.slice().reverse().findIndex((l) => l.includes(JSON.stringify(edgeText(from, to)))) ;
     const fresh = (await this.host.check(text)).filter((d) => d.severity === 'error' && d.line === line);
@@ -417,7 +494,7 @@ export class GraphEditor {
       this.message(`refused: ${fresh[0].code}: ${fresh[0].message}`);
       return false;
     }
-    this.doc.edges = candidate.edges;
+    graph.edges = withEdge;
     this.write();
     this.message(`connected ${from} -> ${to}`);
     return true;
@@ -473,7 +550,7 @@ export class GraphEditor {
     on('layout', () => {
       if (!this.doc) return;
       this.doc.nodes.forEach((n) => { if (n.ui) { delete n.ui.x; delete n.ui.y; } });
-      layout(this.doc);
+      layout(this.doc, this.heightOf);
       this.write();
     });
     on('encapsulate', () => {
@@ -543,8 +620,16 @@ export class GraphEditor {
       const nodeEl = event.target.closest('.graph-node');
       const node = nodeEl && this.doc.nodes.find((n) => n.id === nodeEl.dataset.node);
       const file = node && this.subgraphFile(node);
-      if (file) this.host.open(file);
-      else if (node && node.type === 'subgraph') this.message('an inline subgraph (#name) is edited in the text');
+      if (file) {
+        this.host.open(file);
+      } else if (node && node.type === 'subgraph' && this.inline(String(node.graph).slice(1))) {
+        // An inline subgraph: shown in place of its graph (the bar above leads back).
+        this.scope = [...this.scope, { name: String(node.graph).slice(1), via: node.id }];
+        this.selected = null;
+        this.selection.clear();
+        layout(this.doc, this.heightOf);
+        this.render();
+      }
     };
   }
 

@@ -84,7 +84,8 @@ export function startingParams(type) {
 // Positions for nodes without `ui.x`/`ui.y`: a row per step of the longest path from the sources
 // over the edges (cycles broken where a depth-first walk meets a node on its stack), side by side
 // in file order within a row; rows keep long chains inside the editor's width.
-export function layout(doc, columnWidth = 200, rowHeight = 100) {
+// `heightOf(node)`: a node's drawn height (rows are as tall as their tallest node, plus a gap).
+export function layout(doc, heightOf = () => 80, columnWidth = 200) {
   const nodes = doc.nodes || [];
   const next = new Map(nodes.map((n) => [n.id, []]));
   for (const edge of doc.edges || []) {
@@ -109,13 +110,23 @@ export function layout(doc, columnWidth = 200, rowHeight = 100) {
       if (position.get(t) > position.get(id)) column.set(t, Math.max(column.get(t), column.get(id) + 1));
     }
   }
+  const placed = nodes.filter((n) => !(n.ui && Number.isFinite(n.ui.x) && Number.isFinite(n.ui.y)));
+  const tallest = [];
+  for (const n of placed) {
+    const row = column.get(n.id);
+    tallest[row] = Math.max(tallest[row] || 0, heightOf(n));
+  }
+  const top = [];
+  for (let row = 0, y = 20; row < tallest.length; ++row) {
+    top[row] = y;
+    y += (tallest[row] || 0) + 30;
+  }
   const taken = new Map();
-  for (const n of nodes) {
-    if (n.ui && Number.isFinite(n.ui.x) && Number.isFinite(n.ui.y)) continue;
+  for (const n of placed) {
     const row = column.get(n.id);
     const k = taken.get(row) || 0;
     taken.set(row, k + 1);
-    n.ui = { ...(n.ui || {}), x: 20 + k * columnWidth, y: 20 + row * rowHeight };
+    n.ui = { ...(n.ui || {}), x: 20 + k * columnWidth, y: top[row] };
   }
   return doc;
 }
