@@ -128,7 +128,9 @@ async function build(sequence) {
         .then((counts) => { if (sequence === state.sequence && counts.ok) showGraph(counts.report); })
         .catch(() => {});
     }
-    const answer = await (await api(`/api/build?${buildQuery()}`, { method: 'POST', body: text })).json();
+    const query = buildQuery();
+    if (graphShown()) query.set('behind', '1'); // the report run above goes first
+    const answer = await (await api(`/api/build?${query}`, { method: 'POST', body: text })).json();
     if (sequence !== state.sequence || answer.cancelled) return; // a newer edit took over
     answer.sequence = sequence;
     showDiagnostics(answer.diagnostics);

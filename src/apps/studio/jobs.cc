@@ -75,7 +75,7 @@ bool Jobs::finish(const std::string& key, pid_t pid) {
 }
 
 JobResult Jobs::run(const std::string& key, const std::vector<std::string>& args,
-                    const fs::path& folder) {
+                    const fs::path& folder, int niceness) {
   JobResult result;
   // Everything the child needs is made before fork: after it only async-signal-safe calls.
   std::vector<std::string> words{executable_.string()};
@@ -105,6 +105,7 @@ JobResult Jobs::run(const std::string& key, const std::vector<std::string>& args
     dup2(fd, STDERR_FILENO);
     syscall(SYS_close_range, 3U, ~0U, 0U);  // not the server's sockets
     if (memory.rlim_cur > 0) setrlimit(RLIMIT_AS, &memory);
+    if (niceness > 0) setpriority(PRIO_PROCESS, 0, niceness);
     execv(argv[0], argv.data());
     _exit(127);
   }

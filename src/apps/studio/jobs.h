@@ -39,8 +39,9 @@ class Jobs {
   Jobs(std::filesystem::path executable, JobLimits limits);
 
   // Runs `executable args...` in `folder`, waiting for it; blocks the calling (worker) thread.
+  // `niceness` > 0 lowers the child's CPU priority (a job that may wait behind another).
   JobResult run(const std::string& key, const std::vector<std::string>& args,
-                const std::filesystem::path& folder);
+                const std::filesystem::path& folder, int niceness = 0);
 
   // Kills every running job and every job started from now on (the server is stopping).
   void stop_all();

@@ -383,7 +383,11 @@ class Studio {
                       : kind == Job::kReport ? "report:"
                                              : "export:";
     // Keyed by the resolved file, so `a` and `./a` are one file whose newer edit cancels.
-    const JobResult job = jobs_.run(key + path->string(), args, draft.path().parent_path());
+    // A build beside the graph editor's report run (`behind=1`) yields the cores to it: the
+    // counts come first, the model after.
+    const int niceness = kind == Job::kBuild && request.get_param_value("behind") == "1" ? 10 : 0;
+    const JobResult job =
+        jobs_.run(key + path->string(), args, draft.path().parent_path(), niceness);
     const std::string output = as_shown(job.output, draft.path().filename().string(), shown);
     Json body = {{"exit", job.exit_code},
                  {"cancelled", job.cancelled},
