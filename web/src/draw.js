@@ -572,7 +572,9 @@ export class DrawingTool {
         this.changed();
       });
       listen('add-storey', 'click', () => {
-        node.floors.push(newFloor(this.storeyHeight(), [newRoom('landing'), newRoom('bedroom')]));
+        // As tall as the storey below (0 keeps the restriction rules' storey height).
+        const below = node.floors[node.floors.length - 1];
+        node.floors.push(newFloor(below ? below.height : this.storeyHeight(), [newRoom('landing'), newRoom('bedroom')]));
         this.redraw();
       });
     }
