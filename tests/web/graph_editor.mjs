@@ -27,6 +27,7 @@ const { server, url } = await startStudio(insula, work);
 const { page, close } = await launchChromium({ width: 1400, height: 1000 });
 const errors = [];
 page.on('pageerror', (e) => errors.push(String(e)));
+page.setDefaultTimeout(60000); // a loaded machine (the suite runs two tests at once)
 const t0 = Date.now();
 const lap = (what) => console.log(`${what}: ${Date.now() - t0} ms`);
 const sequence = () => page.evaluate(() => window.studio.sequence);
