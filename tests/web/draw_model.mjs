@@ -10,7 +10,7 @@ import path from 'node:path';
 import {
   findRoom, grammar, leafParts, newBuilding, newFloor, newPart, newRoom, remove, split,
 } from '../../web/src/draw_model.js';
-import { outlineProblem } from '../../web/src/draw.js';
+import { fitView, outlineProblem } from '../../web/src/draw.js';
 
 const [insula, tmp] = process.argv.slice(2);
 const failures = [];
@@ -145,6 +145,19 @@ check(outlineProblem([square, [[12, 2], [13, 2], [13, 5]]], [true, true]) === 'a
 const notched = [[0, 0], [10, 0], [10, 10], [6, 10], [6, 5], [4, 5], [4, 10], [0, 10]];
 check(outlineProblem([notched, [[2, 7], [8, 7], [8, 8], [2, 8]]], [true, true]) !== '', 'a hole across the notch');
 check(outlineProblem([square, [[2, 2], [4, 2], [4, 4], [2, 4]]], [true, true]) === '', 'a courtyard is fine');
+
+// The grid shows a footprint where it is: a building of a real OpenStreetMap export, in degrees,
+// lands inside the 480 x 300 grid (it once fell a degree off, the view snapped to whole units).
+const lonLat = [[59.5779, 56.9903], [59.5786, 56.9905], [59.5787, 56.9904], [59.5780, 56.9902]];
+const view = fitView(lonLat, Infinity);
+const inGrid = lonLat.every(([x, y]) => {
+  const [sx, sy] = [(x - view.left) * view.scale, 300 - (y - view.bottom) * view.scale];
+  return sx >= 0 && sx <= 480 && sy >= 0 && sy <= 300;
+});
+check(inGrid, `a lon/lat footprint off the grid: ${JSON.stringify(view)}`);
+const drawnView = fitView([[0, 0], [12, 0], [12, 10], [0, 10]]);
+check(Number.isInteger(drawnView.left) && Number.isInteger(drawnView.bottom) && drawnView.scale === 12,
+      `a drawn outline's view: ${JSON.stringify(drawnView)}`);
 
 if (failures.length) {
   console.error(failures.join('\n'));

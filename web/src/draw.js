@@ -111,6 +111,19 @@ function inside(ring, [x, y]) {
   return within;
 }
 
+// The view { left, bottom, scale } that shows `ring` in the middle of the grid at most `largest`
+// pixels a unit. A drawn outline's corner is kept on whole metres (so the 0.5 m grid lines stay
+// on it); a footprint (degrees: hundreds of thousands of pixels a unit) is shown where it is.
+export function fitView(ring, largest = 12) {
+  const xs = ring.map((p) => p[0]);
+  const ys = ring.map((p) => p[1]);
+  const [minX, minY, maxX, maxY] = [Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys)];
+  const scale = Math.min(largest, (0.8 * gridWidth) / (maxX - minX || 1), (0.8 * gridHeight) / (maxY - minY || 1));
+  const centre = (lo, hi, pixels) => (lo + hi) / 2 - pixels / scale / 2;
+  const whole = Number.isFinite(largest) ? Math.floor : (v) => v;
+  return { left: whole(centre(minX, maxX, gridWidth)), bottom: whole(centre(minY, maxY, gridHeight)), scale };
+}
+
 const escape = (text) => String(text).replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
 const option = (list, chosen) => [...new Set([...list, chosen])].filter((v) => v !== undefined)
   .map((v) => `<option ${v === chosen ? 'selected' : ''}>${escape(v)}</option>`).join('');
@@ -131,16 +144,9 @@ export class DrawingTool {
   }
 
   // Fits the view to `ring` (a loaded outline, at most 12 pixels a metre, or a footprint in its
-  // file's units, metres or degrees, at any scale), snapped to whole units when they are big.
+  // file's units, metres or degrees, at any scale).
   fit(ring, largest = 12) {
-    if (ring.length === 0) return;
-    const xs = ring.map((p) => p[0]);
-    const ys = ring.map((p) => p[1]);
-    const [minX, minY, maxX, maxY] = [Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys)];
-    const scale = Math.min(largest, (0.8 * gridWidth) / (maxX - minX || 1), (0.8 * gridHeight) / (maxY - minY || 1));
-    const centre = (lo, hi, pixels) => (lo + hi) / 2 - pixels / scale / 2;
-    const whole = scale >= 1 ? Math.floor : (v) => v;
-    this.view = { left: whole(centre(minX, maxX, gridWidth)), bottom: whole(centre(minY, maxY, gridHeight)), scale };
+    if (ring.length > 0) this.view = fitView(ring, largest);
   }
 
   // Screen pixels of world point `p` on the grid.

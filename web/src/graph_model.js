@@ -189,6 +189,8 @@ export function encapsulate(doc, ids, name, graphPath) {
   const inner = [];
   const outer = [];
   const gateOf = ([node, port]) => `${node}_${port}`;
+  // An edge rewired to a gate keeps its own fields (`enabled`, `ui`) when written as an object.
+  const rewired = (edge, from, to) => (typeof edge === 'string' ? edgeText(from, to) : { ...edge, from, to });
   for (const edge of doc.edges || []) {
     const { from, to } = edgeEnds(edge);
     const [fromIn, toIn] = [inside.has(from[0]), inside.has(to[0])];
@@ -196,10 +198,10 @@ export function encapsulate(doc, ids, name, graphPath) {
       inner.push(edge);
     } else if (toIn) {
       gates.inputs[gateOf(to)] = `${to[0]}.${to[1]}`;
-      outer.push(edgeText(`${from[0]}.${from[1]}`, `${name}.${gateOf(to)}`));
+      outer.push(rewired(edge, `${from[0]}.${from[1]}`, `${name}.${gateOf(to)}`));
     } else if (fromIn) {
       gates.outputs[gateOf(from)] = `${from[0]}.${from[1]}`;
-      outer.push(edgeText(`${name}.${gateOf(from)}`, `${to[0]}.${to[1]}`));
+      outer.push(rewired(edge, `${name}.${gateOf(from)}`, `${to[0]}.${to[1]}`));
     } else {
       outer.push(edge);
     }
