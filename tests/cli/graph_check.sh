@@ -66,4 +66,31 @@ node -e '
     g.entities.length === 9 && g.node_runs.floors.rounds === 1;
   process.exit(ok ? 0 : 1);' "$tmp/tiles.json" || fail "report: $(head -c 400 "$tmp/tiles.json")"
 
+# --probe NODE: what left that node's output ports instead of the results (the studio's graph
+# editor shows them for the selected node); as many entities as the run counted on its ports.
+fig4=$root/examples/graph/paper/fig4_stairway.graph.json
+"$insula" build "$fig4" --report "$tmp/fig4.json" -q || fail "fig4 runs"
+houses=$root/examples/graph/street_houses.graph.json
+"$insula" build "$houses" --report "$tmp/houses.json" -q || fail "street_houses runs"
+probe() {  # graph, whole-run report, node path
+  "$insula" build "$1" --probe "$3" -o "$tmp/probe.glb" --report "$tmp/probe.json" -q >/dev/null 2>"$tmp/err" ||
+    { fail "--probe $3: $(cat "$tmp/err")"; return; }
+  validate_gltf "--probe $3 GLB" "$tmp/probe.glb"
+  node -e 'const whole = require(process.argv[1]).graph.ports, probe = require(process.argv[2]);
+           const node = process.argv[3];
+           const made = Object.entries(whole).filter(([k]) => k.startsWith(node + ".")).reduce((s, [, n]) => s + n, 0);
+           const ports = new Set(probe.graph.entities.map((e) => e.port.slice(0, e.port.lastIndexOf("."))));
+           process.exit(made > 0 && probe.results === made && probe.buildings > 0 && ports.size === 1 && ports.has(node) ? 0 : 1);' \
+    "$2" "$tmp/probe.json" "$3" || fail "--probe $3: $(head -c 300 "$tmp/probe.json")"
+}
+probe "$fig4" "$tmp/fig4.json" copies
+probe "$fig4" "$tmp/fig4.json" solid
+probe "$houses" "$tmp/houses.json" low/mass  # inside a file subgraph
+probe "$houses" "$tmp/houses.json" signs/board  # inside an inline one
+expect_exit 2 "--probe of a node the graph lacks" "$insula" build "$fig4" --probe nowhere -o "$tmp/p.glb"
+grep -qF "insula: --probe: the graph has no node 'nowhere'" "$tmp/err.txt" || fail "unknown probe message: $(cat "$tmp/err.txt")"
+expect_exit 2 "--probe of a CGA file" "$insula" build "$root/examples/cga/district.cga" --probe x -o "$tmp/p.glb"
+grep -qF "insula: --probe: only a graph (.graph.json) has nodes to probe" "$tmp/err.txt" || fail "CGA probe message: $(cat "$tmp/err.txt")"
+[ -e "$tmp/p.glb" ] && fail "a refused probe wrote its output"
+
 finish graph_check

@@ -53,6 +53,8 @@ const connect = async (from, to) => {
   const [b, q] = to.split('.');
   // After the last edit's run (its counts redraw the canvas), then the ports where they are.
   await page.waitForFunction(() => window.studio.lastBuild && window.studio.lastBuild.sequence === window.studio.sequence);
+  const failed = await page.evaluate(() => window.studio.lastBuild.error);
+  if (failed) console.log(`the build before connecting ${from} -> ${to} failed: ${failed}`);
   let start = null;
   let end = null;
   for (let attempt = 0; attempt < 5 && !(start && end); ++attempt) {
@@ -125,6 +127,24 @@ try {
   await page.screenshot({ path: path.join(out, 'graph_fig4.png') });
 
   lap('stairway run');
+  // A selected node's output in the 3D view: the treads as they left the extrusion (16, before
+  // the material), over the faded model, and listed in the panel.
+  await select('extrude');
+  try {
+    await page.waitForFunction(() => window.studio.probed && window.studio.probed.path === 'extrude');
+    const probed = await page.evaluate(() => window.studio.probed);
+    check(probed.ok && probed.count === 16 && probed.entities.length === 16 && probed.meshes > 0,
+          `the extrusion's output shown: ${JSON.stringify({ ...probed, entities: probed.entities.length })}`);
+    check(await page.locator('#graph .graph-entities tr').count() === 17, 'its 16 entities listed');
+    await page.screenshot({ path: path.join(out, 'graph_probe.png') });
+  } catch (error) {
+    failures.push(`the selected node's output: ${error.message.split('\n')[0]}`);
+  }
+  // A click on the canvas's empty corner: nothing selected, nothing highlighted.
+  const canvas = page.locator('#graph svg.graph-canvas');
+  const box = await canvas.boundingBox();
+  await canvas.click({ position: { x: box.width - 4, y: box.height - 4 } });
+  await page.waitForFunction(() => window.studio.probe === null);
   // Refused connections: the checker's own message (a duplicate edge, G017; a path into a shape
   // port would be G013), and the graph stays as it was.
   const edgesBefore = await page.evaluate(() => JSON.parse(window.studio.editor.state.doc.toString()).edges.length);
@@ -263,6 +283,13 @@ try {
     console.log(error.message);
   } else {
     failures.push(`stopped: ${error.message.split('\n')[0]}`);
+    // What the page said and its last answer, to tell a slow machine from a lost build.
+    const said = await page.evaluate(() => ({ status: document.getElementById('status').textContent,
+                                              sequence: window.studio.sequence,
+                                              last: window.studio.lastBuild?.sequence,
+                                              error: window.studio.lastBuild?.error }))
+      .catch((e) => String(e));
+    console.log(`the page when it stopped: ${JSON.stringify(said)}`);
     await page.screenshot({ path: path.join(out, 'graph_stopped.png') });
   }
 } finally {

@@ -81,6 +81,22 @@ export class GraphEditor {
     this.panel.querySelector('.graph-message').textContent = text;
   }
 
+  // The studio shows what the selected node made (a run with --probe) in the 3D view and its
+  // entities in the panel; told whenever the selected node (its path from the top) changes.
+  notifySelection() {
+    const path = this.selected ? this.prefix() + this.selected : null;
+    if (path === this.probePath) return;
+    this.probePath = path;
+    this.probed = null;
+    if (this.host.select) this.host.select(path);
+  }
+
+  // What the probe run of the selected node found: { path, entities, count } (the studio).
+  showProbe(probed) {
+    this.probed = probed;
+    if (this.root) this.renderParams();
+  }
+
   // Reads the editor's text; false (and a message) when it is not a graph the editor can show.
   read() {
     try {
@@ -296,6 +312,7 @@ export class GraphEditor {
   // The selected node's parameters (every one of its type: literal or `=expression`), its
   // diagnostics, and what left its leaf ports in the last run.
   renderParams() {
+    this.notifySelection();
     // Drawn into a detached box first: the panel is replaced only when it would change, so the
     // field the user is typing in is not taken away by a run that ends.
     const shown = this.panel.querySelector('.graph-params');
@@ -320,8 +337,11 @@ export class GraphEditor {
     const idPattern = new RegExp(`"id"\\s*:\\s*"${node.id}"`);
     const line = this.host.text().split('\n').findIndex((l) => idPattern.test(l)) + 1;
     const diagnostics = (this.host.diagnostics() || []).filter((d) => d.line === line);
-    const entities = ((this.report && this.report.graph && this.report.graph.entities) || [])
-      .filter((e) => e.port.startsWith(`${this.prefix()}${node.id}.`));
+    // What the node made (its probe run), else what of it reached the results.
+    const probed = this.probed && this.probed.path === `${this.prefix()}${node.id}` ? this.probed : null;
+    const entities = probed ? probed.entities
+      : ((this.report && this.report.graph && this.report.graph.entities) || [])
+        .filter((e) => e.port.startsWith(`${this.prefix()}${node.id}.`));
     box.innerHTML = `
       <b>${escape(node.id)}</b> <code>${escape(node.type)}</code>
       <div class="graph-doc">${escape(type ? type.doc : '')}</div>

@@ -22,19 +22,24 @@ const state = {
   sequence: 0, // edits made; an answer to an older one is dropped
   building: 0,
   lastBuild: null, // the last answer of /api/build
+  probe: null, // the graph editor's selected node, whose output the view highlights
+  probed: null, // what its last probe run found (read by the browser test)
   diagnostics: [],
 };
 window.studio = state; // read (and state.editor driven) by the browser test, tests/web/studio.mjs
 
-async function api(path, options = {}) {
-  // 503: the server runs as many checks and builds as it allows (a superseded one may still be
-  // stopping); a moment later there is room.
-  for (let attempt = 0; ; ++attempt) {
+// `wanted` says whether the answer is still needed (a build an edit has not superseded).
+async function api(path, options = {}, wanted = () => true) {
+  // 503: the server runs as many checks and builds as it allows (superseded ones may still be
+  // stopping, slowly on a loaded machine); a moment later there is room. Asked again for as long
+  // as the answer is wanted, up to a minute.
+  const started = performance.now();
+  for (;;) {
     const response = await fetch(path, {
       ...options,
       headers: { 'X-Insula-Token': token, ...(options.headers || {}) },
     });
-    if (response.status === 503 && attempt < 30) {
+    if (response.status === 503 && wanted() && performance.now() - started < 60000) {
       await new Promise((resolve) => setTimeout(resolve, 100));
       continue;
     }
@@ -120,17 +125,18 @@ async function build(sequence) {
   try {
     const started = performance.now();
     const text = editor.state.doc.toString();
+    const current = () => sequence === state.sequence;
     // The graph editor's counts from a run without output, in parallel: they come before the
     // model is written (a city's GLB takes longer than its run).
     if (graphShown()) {
-      api(`/api/report?${buildQuery()}`, { method: 'POST', body: text })
+      api(`/api/report?${buildQuery()}`, { method: 'POST', body: text }, current)
         .then((r) => r.json())
         .then((counts) => { if (sequence === state.sequence && counts.ok) showGraph(counts.report); })
         .catch(() => {});
     }
     const query = buildQuery();
     if (graphShown()) query.set('behind', '1'); // the report run above goes first
-    const answer = await (await api(`/api/build?${query}`, { method: 'POST', body: text })).json();
+    const answer = await (await api(`/api/build?${query}`, { method: 'POST', body: text }, current)).json();
     if (sequence !== state.sequence || answer.cancelled) return; // a newer edit took over
     answer.sequence = sequence;
     showDiagnostics(answer.diagnostics);
@@ -153,10 +159,43 @@ async function build(sequence) {
     state.lastBuild = answer; // once shown
     showCounts(answer.report, answer.objects, answer.ms);
     setStatus('built');
+    if (state.probe && graphShown()) probe(state.probe); // the selected node's output, edited
   } catch (error) {
+    if (sequence !== state.sequence) return;
+    // Still an answer to this edit: what waits for the build of the last edit is not left waiting.
+    state.lastBuild = { ok: false, sequence, error: String(error) };
     setStatus(String(error));
   } finally {
     --state.building;
+  }
+}
+
+// The graph editor's selected node (`path`, "sub/node" inside an inline subgraph; null: none):
+// what it made, from a run of the same text that writes that node's output entities instead of
+// the results (`insula build --probe`), drawn over the faded model and listed in the panel.
+async function probe(path) {
+  state.probe = path;
+  state.probed = null;
+  const sequence = state.sequence;
+  const wanted = () => state.probe === path && state.sequence === sequence;
+  try {
+    if (!path) {
+      await viewport.highlight(null);
+      return;
+    }
+    const query = buildQuery();
+    query.set('probe', path);
+    const answer = await (await api(`/api/build?${query}`, { method: 'POST', body: editor.state.doc.toString() },
+                                    wanted)).json();
+    if (!wanted() || answer.cancelled) return;
+    const model = answer.ok ? await (await api(answer.model, {}, wanted)).arrayBuffer() : null;
+    if (!wanted()) return;
+    const meshes = await viewport.highlight(model);
+    state.probed = { path, sequence, meshes, ok: answer.ok, entities: answer.ok ? answer.report.graph.entities || [] : [],
+                     count: answer.ok ? answer.report.results : 0 };
+    if (graphEditor) graphEditor.showProbe(state.probed);
+  } catch (error) {
+    if (wanted()) setStatus(String(error));
   }
 }
 
@@ -349,7 +388,12 @@ function showGraph(report) {
 function toggleGraph() {
   const panel = element('graph');
   panel.hidden = !panel.hidden;
-  if (panel.hidden) return;
+  if (panel.hidden) {
+    // No highlight without the editor: shown again with it.
+    if (graphEditor) graphEditor.probePath = null;
+    if (state.probe) probe(null);
+    return;
+  }
   if (!/\.graph\.json$/.test(state.path || '')) {
     panel.hidden = true;
     setStatus('the graph editor edits .graph.json files: open one first');
@@ -371,6 +415,7 @@ function toggleGraph() {
         await listFiles();
       },
       open: (path) => open(path).catch((error) => setStatus(String(error))),
+      select: (path) => probe(path),
     });
     state.graph = graphEditor;
   }

@@ -78,6 +78,7 @@ export class Viewport {
       this.fit();
     }
     this.bounds = bounds;
+    this.fade(Boolean(this.probe));
     this.showRoofs(this.roofsShown);
     this.showFurniture(this.furnitureShown);
     this.cut(this.cutFraction);
@@ -124,6 +125,54 @@ export class Viewport {
       geometry.setIndex(kept);
     });
     this.render();
+  }
+
+  // Shows the GLB `bytes` (what one graph node made: the graph editor's selection) over the model
+  // in one strong colour, the model faded around it; null takes it away. Returns its meshes.
+  async highlight(bytes) {
+    if (this.probe) {
+      this.scene.remove(this.probe);
+      this.probe.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
+      this.probe = null;
+    }
+    this.fade(bytes !== null);
+    if (bytes === null) {
+      this.render();
+      return 0;
+    }
+    const gltf = await this.loader.parseAsync(bytes, '');
+    this.probe = gltf.scene;
+    // Drawn over the faded model's coplanar faces (the node's output is often part of it).
+    const material = new THREE.MeshStandardMaterial({ color: 0xff7a00, emissive: 0x662200, roughness: 0.6,
+                                                      polygonOffset: true, polygonOffsetFactor: -2, polygonOffsetUnits: -2,
+                                                      side: THREE.DoubleSide });
+    let meshes = 0;
+    this.probe.traverse((o) => {
+      if (o.isLight) o.visible = false;
+      if (!o.isMesh) return;
+      o.material = material;
+      ++meshes;
+    });
+    this.scene.add(this.probe);
+    this.render();
+    return meshes;
+  }
+
+  // The model's materials see-through (and not hiding what lies behind) while something is
+  // highlighted; their own again after.
+  fade(faded) {
+    if (!this.model) return;
+    this.model.traverse((o) => {
+      if (!o.isMesh) return;
+      for (const m of Array.isArray(o.material) ? o.material : [o.material]) {
+        if (m.userData.own === undefined) m.userData.own = { opacity: m.opacity, transparent: m.transparent, depthWrite: m.depthWrite };
+        const own = m.userData.own;
+        m.opacity = faded ? Math.min(own.opacity, 0.25) : own.opacity;
+        m.transparent = faded || own.transparent;
+        m.depthWrite = faded ? false : own.depthWrite;
+        m.needsUpdate = true;
+      }
+    });
   }
 
   // Hides what stands above `fraction` of the model's height (1: nothing hidden).

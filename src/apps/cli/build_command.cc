@@ -59,6 +59,9 @@ void add_build_command(CLI::App& app, BuildOptions& options) {
                    ".graph.json; default: the parent of the project folder)")
       ->check(CLI::ExistingDirectory);
   build->add_option("--report", options.report, "write a JSON report (counts, timings)");
+  build->add_option("--probe", options.probe,
+                    "graphs: write what left node NODE ('sub/NODE' inside a subgraph node) "
+                    "instead of the results");
   build->add_flag("--keep-going", options.keep_going,
                   "leave out invalid --lot features and lots that cannot hold a .bldg grammar "
                   "(each with a warning) instead of failing");
@@ -68,7 +71,8 @@ void add_build_command(CLI::App& app, BuildOptions& options) {
 }
 
 bool city_by_tiles(const BuildOptions& options) {
-  return !options.lot.empty() && streamable(options.outputs) && options.transaction == nullptr;
+  return !options.lot.empty() && streamable(options.outputs) && options.transaction == nullptr &&
+         options.probe.empty();
 }
 
 int run_build(const BuildOptions& given) {
@@ -81,6 +85,10 @@ int run_build(const BuildOptions& given) {
   if (Ranks::shared() && !Ranks::leader() && !by_tiles) return kExitDone;
   BuildOptions options = given;
   if (!Ranks::leader()) options.quiet = true;
+  if (!options.probe.empty() && !has_suffix(options.input, ".graph.json")) {
+    std::fprintf(stderr, "insula: --probe: only a graph (.graph.json) has nodes to probe\n");
+    return kExitUsage;
+  }
   if (has_suffix(options.input, ".cga")) return build_cga(options);
   if (has_suffix(options.input, ".bldg")) return build_bldg(options);
   if (has_suffix(options.input, ".lua")) return build_lua(options);

@@ -41,6 +41,7 @@ struct BuildOptions {
   std::vector<std::string> assets;  // --assets DIR: asset folders a program may read (.lua)
   std::string workspace;    // --workspace DIR: where CGA's "/Project/..." names start (assets.md)
   std::string report;       // --report R.json
+  std::string probe;        // --probe NODE (graphs): that node's output entities, not the results
   CrsFlags crs;             // --crs, --out-crs (geojson_options.h)
   bool keep_going = false;  // --keep-going: skip invalid lot features with a warning
   bool quiet = false;

@@ -101,6 +101,14 @@ std::vector<std::pair<std::string, std::string>> split_sets(const std::vector<st
   return out;
 }
 
+// True when the first step of `path` ("door", "houseA/door") is a node of `root`; what lies
+// inside a subgraph node shows only when it runs.
+bool has_top_node(const lang::graph::Graph& root, const std::string& path) {
+  const std::string first = path.substr(0, path.find('/'));
+  return std::any_of(root.nodes.begin(), root.nodes.end(),
+                     [&first](const lang::graph::Node& n) { return n.id == first; });
+}
+
 }  // namespace
 
 int build_graph(const BuildOptions& options) {
@@ -129,6 +137,13 @@ int build_graph(const BuildOptions& options) {
   LotFiles lot_files{options, folder, false, {}, {}};
 
   lang::graph::RunOptions run;
+  if (!options.probe.empty()) {
+    if (!has_top_node(*loaded->document->root, options.probe)) {
+      std::fprintf(stderr, "insula: --probe: the graph has no node '%s'\n", options.probe.c_str());
+      return kExitUsage;
+    }
+    run.probe = options.probe;
+  }
   if (options.seed_given) run.seed = options.seed;
   std::string error;
   run.sets = split_sets(options.sets, error);

@@ -377,8 +377,14 @@ class Studio {
       if (request.has_param("seed") && !footprints) {
         args.insert(args.end(), {"--seed", request.get_param_value("seed")});
       }
+      // The graph editor's selected node: its output entities instead of the results.
+      if (request.has_param("probe") && kind == Job::kBuild) {
+        args.insert(args.end(), {"--probe", request.get_param_value("probe")});
+      }
     }
+    const bool probe = request.has_param("probe") && kind == Job::kBuild;
     const char* key = kind == Job::kCheck    ? "check:"
+                      : probe                ? "probe:"  // beside the model's build, not over it
                       : kind == Job::kBuild  ? "build:"
                       : kind == Job::kReport ? "report:"
                                              : "export:";
@@ -398,7 +404,7 @@ class Studio {
                  {"output", output}};
     if (kind != Job::kCheck && job.exit_code == 0) {
       body["report"] = Json::parse(read_text(out / "report.json"), nullptr, false);
-      if (kind == Job::kReport) keep_first_entities(body["report"]);
+      if (kind == Job::kReport || probe) keep_first_entities(body["report"]);
     }
     if (kind == Job::kBuild && job.exit_code == 0) {
       const bool plan = fs::exists(out / "plan.svg");

@@ -242,6 +242,12 @@ void GraphExecution::transfer(std::size_t node, std::vector<std::vector<EntityId
     const std::vector<EntityId>& produced = outputs[p];
     if (produced.empty()) continue;
     run_.out.ports[label(node, port.name)] += produced.size();
+    if (!run_.options.probe.empty() && prefix_ + n.node->id == run_.options.probe) {
+      // Copies: the next nodes change the entities they take.
+      for (EntityId entity : produced) {
+        run_.probed.push_back({run_.out.entities.copy(entity), label(node, port.name)});
+      }
+    }
     if (port.blocked) {
       run_.out.blocked[label(node, port.name)] += produced.size();
       continue;

@@ -120,6 +120,7 @@ RunResult run_graph(const Document& document, const CheckResult& checked,
                    [&state](const ResultEntity& a, const ResultEntity& b) {
                      return state.leaf_index.at(a.port) < state.leaf_index.at(b.port);
                    });
+  if (!options.probe.empty()) out.results = std::move(state.probed);
   for (const RunError& w : state.warnings) out.diagnostics.push_back(diagnostic(w, true));
   for (const auto& [port, count] : out.unprocessed) {
     // At the node whose input port they wait at.

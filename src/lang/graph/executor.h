@@ -79,6 +79,9 @@ struct RunOptions {
   std::optional<Limits> limits_cap;
   // Polled between node executions; true stops the run (nothing is written).
   std::function<bool()> interrupted;
+  // A node ("walls", "houseA/door" inside a subgraph node) whose output entities replace the
+  // results: the editor shows what one node made (issue 16). Empty: the graph's results.
+  std::string probe;
 };
 
 struct PortCount {
@@ -105,7 +108,7 @@ struct RunResult {
   EntityStore entities;
   std::vector<shape::Material> materials;                            // index 0 = default
   std::map<std::uint16_t, std::shared_ptr<const Texture>> textures;  // by material
-  std::vector<ResultEntity> results;
+  std::vector<ResultEntity> results;  // with RunOptions::probe, what left the probed node
   // The report's counts (§13), keys in first-use order where the format says so.
   std::vector<std::string> cyclic_edges;
   std::vector<std::pair<std::string, NodeRuns>> node_runs;  // node id ("houseA/door" inside)

@@ -69,6 +69,7 @@ struct RunState {
   std::vector<RunError> warnings;                  // W030, in order
   std::map<std::string, RunError> unprocessed_at;  // W010: where each port's node is
   std::set<std::string> warned;
+  std::vector<ResultEntity> probed;  // what left RunOptions::probe's node, in order
 
   RunState(const Document& d, const CheckResult& c, const RunOptions& o, RunResult& r)
       : document(d), checked(c), options(o), out(r) {}
