@@ -87,6 +87,12 @@ probe "$fig4" "$tmp/fig4.json" copies
 probe "$fig4" "$tmp/fig4.json" solid
 probe "$houses" "$tmp/houses.json" low/mass  # inside a file subgraph
 probe "$houses" "$tmp/houses.json" signs/board  # inside an inline one
+# --report-entities N: the first N result records (the studio's 1,000), the counts whole.
+"$insula" build "$fig4" --report "$tmp/few.json" --report-entities 3 -q || fail "--report-entities runs"
+node -e 'const r = require(process.argv[1]);
+         process.exit(r.results === 17 && r.graph.entities.length === 3 && r.graph.entities_listed === 3 &&
+                      r.graph.leaves["stone.out"].count === 17 ? 0 : 1);' "$tmp/few.json" ||
+  fail "--report-entities 3: $(head -c 300 "$tmp/few.json")"
 expect_exit 2 "--probe of a node the graph lacks" "$insula" build "$fig4" --probe nowhere -o "$tmp/p.glb"
 grep -qF "insula: --probe: the graph has no node 'nowhere'" "$tmp/err.txt" || fail "unknown probe message: $(cat "$tmp/err.txt")"
 expect_exit 2 "--probe of a CGA file" "$insula" build "$root/examples/cga/district.cga" --probe x -o "$tmp/p.glb"

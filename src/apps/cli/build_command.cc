@@ -62,6 +62,8 @@ void add_build_command(CLI::App& app, BuildOptions& options) {
   build->add_option("--probe", options.probe,
                     "graphs: write what left node NODE ('sub/NODE' inside a subgraph node) "
                     "instead of the results");
+  build->add_option("--report-entities", options.report_entities,
+                    "graphs: list at most N result entities in the report (default: all)");
   build->add_flag("--keep-going", options.keep_going,
                   "leave out invalid --lot features and lots that cannot hold a .bldg grammar "
                   "(each with a warning) instead of failing");

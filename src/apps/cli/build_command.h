@@ -4,8 +4,10 @@
 // ignores those that do not apply to it and says so in its docs.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,9 +41,10 @@ struct BuildOptions {
   std::string start;                // --start SYMBOL (CGA)
   std::string rules;                // --rules FILE: restriction rules (.bldg)
   std::vector<std::string> assets;  // --assets DIR: asset folders a program may read (.lua)
-  std::string workspace;    // --workspace DIR: where CGA's "/Project/..." names start (assets.md)
-  std::string report;       // --report R.json
-  std::string probe;        // --probe NODE (graphs): that node's output entities, not the results
+  std::string workspace;  // --workspace DIR: where CGA's "/Project/..." names start (assets.md)
+  std::string report;     // --report R.json
+  std::string probe;      // --probe NODE (graphs): that node's output entities, not the results
+  std::size_t report_entities = std::numeric_limits<std::size_t>::max();  // --report-entities N
   CrsFlags crs;             // --crs, --out-crs (geojson_options.h)
   bool keep_going = false;  // --keep-going: skip invalid lot features with a warning
   bool quiet = false;

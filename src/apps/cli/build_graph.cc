@@ -224,7 +224,8 @@ int build_graph(const BuildOptions& options) {
     report["buildings"] = scene.buildings.size();
     report["lights"] = scene.lights.size();
   }
-  report["graph"] = nlohmann::json::parse(lang::graph::graph_report(*result).dump());
+  report["graph"] =
+      nlohmann::json::parse(lang::graph::graph_report(*result, options.report_entities).dump());
   if (!whole_because.empty()) report["whole_scene_because"] = whole_because;
   report_missing_textures(textures, options.input, options.quiet, report);
   report["seconds"] = seconds;

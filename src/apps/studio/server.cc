@@ -156,17 +156,6 @@ class Draft {
   std::string error_;
 };
 
-// A graph run's report lists every result entity (a city's: megabytes); the counts the graph
-// editor asks for keep the first ones (its tables show a few) and say how many there were.
-void keep_first_entities(Json& report) {
-  constexpr std::size_t kKept = 1000;
-  if (!report.is_object() || !report.contains("graph")) return;
-  Json& entities = report["graph"]["entities"];
-  if (!entities.is_array() || entities.size() <= kKept) return;
-  report["graph"]["entities_listed"] = kKept;
-  entities.erase(entities.begin() + kKept, entities.end());
-}
-
 // The command line's output with the draft's name given back as the file's own.
 std::string as_shown(std::string output, const std::string& draft, const std::string& shown) {
   for (std::size_t at = output.find(draft); at != std::string::npos;
@@ -381,6 +370,12 @@ class Studio {
       if (request.has_param("probe") && kind == Job::kBuild) {
         args.insert(args.end(), {"--probe", request.get_param_value("probe")});
       }
+      // A graph's report lists every result entity (a city's: megabytes); the graph editor's
+      // counts and probes list the first ones (its tables show a few) and say how many there were.
+      if (path->filename().string().ends_with(".graph.json") &&
+          (kind == Job::kReport || request.has_param("probe"))) {
+        args.insert(args.end(), {"--report-entities", "1000"});
+      }
     }
     const bool probe = request.has_param("probe") && kind == Job::kBuild;
     const char* key = kind == Job::kCheck    ? "check:"
@@ -404,7 +399,6 @@ class Studio {
                  {"output", output}};
     if (kind != Job::kCheck && job.exit_code == 0) {
       body["report"] = Json::parse(read_text(out / "report.json"), nullptr, false);
-      if (kind == Job::kReport || probe) keep_first_entities(body["report"]);
     }
     if (kind == Job::kBuild && job.exit_code == 0) {
       const bool plan = fs::exists(out / "plan.svg");

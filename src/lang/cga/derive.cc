@@ -6,6 +6,9 @@
 #include <bit>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <string>
+#include <unordered_map>
 #include <utility>
 
 #include "kernel/shared_meshes.h"
@@ -187,6 +190,60 @@ std::map<const Mesh*, int> mesh_uses(const LotResult& r) {
   return uses;
 }
 
+// What a terminal's attribute chain gives its part: the user attributes (the nearest setting
+// wins), the colour (also an attribute), the colour map and uv set 0. The same for every
+// terminal on the chain, so it is read once per chain (a facade's walls share theirs).
+struct ChainLook {
+  shape::AttributeMap attributes;
+  std::optional<shape::UvMap> uv;
+  std::string color;
+  std::string texture;
+  std::optional<kernel::MaterialId> material{};  // once the scene's material is found
+};
+
+// A rectangle terminal (most of a facade: walls, panes, frames) straight in world coordinates:
+// the mesh mesh_to_world(flat_mesh(rectangle_outline(w, h)), scope) makes, without the two
+// meshes in between.
+Mesh world_rectangle(const shape::Scope& scope, kernel::FaceTag tag) {
+  const kernel::Transform t = shape::scope_transform(scope);
+  const double w = scope.size.x;
+  const double h = scope.size.y;
+  Mesh mesh;
+  for (const kernel::Vec2 p : {kernel::Vec2{0, 0}, {w, 0}, {w, h}, {0, h}}) {
+    mesh.add_vertex(kernel::apply_point(t, kernel::lift(p, 0)));
+  }
+  mesh.add_face({0, 1, 2, 3}, tag);
+  if (kernel::determinant(t) < 0) mesh.flip();
+  return mesh;
+}
+
+ChainLook chain_look(const Program& program, const LotResult& r, std::uint32_t chain,
+                     const std::string& uv0) {
+  ChainLook look;
+  for (std::uint32_t n = chain; n != 0; n = r.attr_nodes[n].parent) {
+    const AttrNode& node = r.attr_nodes[n];
+    if (node.attr == program.color_attr) {
+      if (look.color.empty()) look.color = std::get<std::string>(node.value);
+      continue;
+    }
+    const std::string& name = program.attrs[node.attr].name;
+    if (name.starts_with("#uv")) {  // texture state, not a user attribute
+      if (name == uv0 && !look.attributes.contains(name)) {
+        look.uv = shape::decode_uv_map(to_shape(node.value));
+        look.attributes.emplace(name, shape::Value{});  // seen: an older set stays hidden
+      }
+      continue;
+    }
+    look.attributes.emplace(name, to_shape(node.value));  // nearest wins
+  }
+  std::erase_if(look.attributes, [](const auto& a) { return a.first.starts_with("#uv"); });
+  if (auto it = look.attributes.find(shape::kColormapAttribute); it != look.attributes.end()) {
+    if (const auto* text = std::get_if<std::string>(&it->second)) look.texture = *text;
+  }
+  if (!look.color.empty()) look.attributes["color"] = look.color;
+  return look;
+}
+
 }  // namespace
 
 shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
@@ -204,55 +261,48 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
     shape::Building building;
     building.id = lots[i].id;
     building.attributes = r.attributes;
+    std::unordered_map<std::uint32_t, ChainLook> looks;  // by attribute chain
     for (std::size_t t = 0; t < r.terminals_store.size(); ++t) {
       const Terminal& term = r.terminals_store[t];
-      const detail::Materialized m =
-          detail::Engine::materialize(r.geometry[term.geometry], term.scope.size);
-      if (!m.mesh || m.mesh->empty()) continue;
+      const Geometry& geometry = r.geometry[term.geometry];
+      detail::Materialized m;
       shape::Part part;
+      if (geometry.kind == Geometry::Kind::kRect) {
+        part.mesh = world_rectangle(term.scope, geometry.tag);
+      } else {
+        m = detail::Engine::materialize(geometry, term.scope.size);
+        if (!m.mesh || m.mesh->empty()) continue;
+        part.mesh = shape::mesh_to_world(*m.mesh, term.scope);
+      }
+      auto [known, added] = looks.try_emplace(term.attrs);
+      if (added) known->second = chain_look(program, r, term.attrs, uv0);
+      ChainLook& look = known->second;
+      const std::string& color = look.color;
+      const std::string& texture = look.texture;
       part.name = std::string(program.symbol_name(term.symbol));
-      std::string color;
-      for (std::uint32_t n = term.attrs; n != 0; n = r.attr_nodes[n].parent) {
-        const AttrNode& node = r.attr_nodes[n];
-        if (node.attr == program.color_attr) {
-          if (color.empty()) color = std::get<std::string>(node.value);
-          continue;
-        }
-        const std::string& name = program.attrs[node.attr].name;
-        if (name.starts_with("#uv")) {  // texture state, not a user attribute
-          if (name == uv0 && !part.attributes.contains(name)) {
-            part.uv = shape::decode_uv_map(to_shape(node.value));
-            part.attributes.emplace(name, shape::Value{});  // seen: an older set stays hidden
-          }
-          continue;
-        }
-        part.attributes.emplace(name, to_shape(node.value));  // nearest wins
-      }
-      std::erase_if(part.attributes, [](const auto& a) { return a.first.starts_with("#uv"); });
-      std::string texture;
-      if (auto it = part.attributes.find(shape::kColormapAttribute); it != part.attributes.end()) {
-        if (const auto* text = std::get_if<std::string>(&it->second)) texture = *text;
-      }
-      part.mesh = shape::mesh_to_world(*m.mesh, term.scope);
-      if (!color.empty()) part.attributes["color"] = color;
+      part.attributes = look.attributes;
+      part.uv = look.uv;
       kernel::MaterialId material_id = 0;
       if (!color.empty() || !texture.empty()) {
-        auto [it, inserted] = materials.emplace(std::pair{color, texture}, 0);
-        if (inserted) {
-          it->second = static_cast<kernel::MaterialId>(scene.materials.size());
-          shape::Material material{
-              color.empty() ? texture : color,
-              color.empty() ? std::array<float, 4>{1, 1, 1, 1} : rgba_of(color)};
-          if (!texture.empty() && !color.empty()) material.name = color + "_" + texture;
-          material.texture = texture;
-          scene.materials.push_back(std::move(material));
+        if (!look.material) {
+          auto [it, inserted] = materials.emplace(std::pair{color, texture}, 0);
+          if (inserted) {
+            it->second = static_cast<kernel::MaterialId>(scene.materials.size());
+            shape::Material material{
+                color.empty() ? texture : color,
+                color.empty() ? std::array<float, 4>{1, 1, 1, 1} : rgba_of(color)};
+            if (!texture.empty() && !color.empty()) material.name = color + "_" + texture;
+            material.texture = texture;
+            scene.materials.push_back(std::move(material));
+          }
+          look.material = it->second;
         }
-        material_id = it->second;
+        material_id = *look.material;
         for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
           part.mesh.tag(f).material = material_id;
         }
       }
-      const auto use = uses.find(m.mesh.get());
+      const auto use = m.mesh ? uses.find(m.mesh.get()) : uses.end();
       if (use != uses.end() && use->second > 1 && !part.uv) {
         std::shared_ptr<const Mesh>& mesh = shared[{m.mesh.get(), material_id}];
         if (!mesh) {

@@ -3,6 +3,7 @@
 #include "lang/cga/derive_engine.h"
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -1020,9 +1021,36 @@ void Engine::rotate(const CItem& c, State& st) {
   touch(st);
 }
 
+namespace {
+
+// Equal values, numbers bit for bit (-0 is not 0 to print(), NaN is itself); arrays as the
+// same array.
+bool identical(const Value& a, const Value& b) {
+  if (a.index() != b.index()) return false;
+  if (const double* x = std::get_if<double>(&a)) {
+    return std::bit_cast<std::uint64_t>(*x) == std::bit_cast<std::uint64_t>(std::get<double>(b));
+  }
+  return a == b;
+}
+
+}  // namespace
+
 void Engine::set_attr(State& st, std::uint32_t attr, Value value) {
+  // Nodes never change once made, so an equal one on the same chain serves (a few kept per
+  // chain and attribute: a facade alternates a handful of colours).
+  constexpr std::size_t kKept = 8;
+  std::vector<std::uint32_t>& made =
+      attr_nodes_made_[(std::uint64_t{st.attrs} << 32) | std::uint64_t{attr}];
+  for (std::uint32_t n : made) {
+    if (identical(out_.attr_nodes[n].value, value)) {
+      st.attrs = n;
+      touch(st);
+      return;
+    }
+  }
   out_.attr_nodes.push_back({st.attrs, attr, std::move(value)});
   st.attrs = static_cast<std::uint32_t>(out_.attr_nodes.size() - 1);
+  if (made.size() < kKept) made.push_back(st.attrs);
   touch(st);
 }
 

@@ -12,6 +12,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -479,6 +480,9 @@ class Engine final : public EvalContext {
   const Lot& lot_;
   const DeriveOptions& options_;
   LotResult& out_;
+  // The attribute nodes set_attr made, by (parent, attribute): a facade's hundreds of walls
+  // coloured alike share one node, so the export reads each distinct attribute set once.
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> attr_nodes_made_;
   BuiltinAssets assets_;
   shape::Context context_;
   std::uint64_t lot_seed_;

@@ -347,7 +347,7 @@ nlohmann::ordered_json counts(const std::map<std::string, std::uint64_t>& map) {
 
 }  // namespace
 
-nlohmann::ordered_json graph_report(const RunResult& run) {
+nlohmann::ordered_json graph_report(const RunResult& run, std::size_t listed) {
   nlohmann::ordered_json g;
   g["cyclic_edges"] = run.cyclic_edges;
   nlohmann::ordered_json runs = nlohmann::ordered_json::object();
@@ -367,9 +367,11 @@ nlohmann::ordered_json graph_report(const RunResult& run) {
   g["unprocessed"] = counts(run.unprocessed);
   g["failed"] = counts(run.failed);
   nlohmann::ordered_json entities = nlohmann::ordered_json::array();
-  for (const ResultEntity& r : run.results)
-    entities.push_back(entity_record(run, r.entity, r.port));
+  for (std::size_t i = 0; i < run.results.size() && i < listed; ++i) {
+    entities.push_back(entity_record(run, run.results[i].entity, run.results[i].port));
+  }
   g["entities"] = entities;
+  if (run.results.size() > listed) g["entities_listed"] = listed;
   return g;
 }
 

@@ -2,6 +2,8 @@
 // entities, and the report's `graph` section.
 #pragma once
 
+#include <cstddef>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -22,7 +24,9 @@ namespace insula::lang::graph {
 shape::Scene to_scene(const RunResult& run, const std::set<std::string>* lot_ids = nullptr);
 
 // The `graph` section of the report (§13): cyclic_edges, node_runs, leaves, blocked,
-// unprocessed, failed and one record per result entity.
-nlohmann::ordered_json graph_report(const RunResult& run);
+// unprocessed, failed and one record per result entity, at most `listed` of them (then
+// `entities_listed` says so: a city's records are megabytes an editor does not show).
+nlohmann::ordered_json graph_report(const RunResult& run,
+                                    std::size_t listed = std::numeric_limits<std::size_t>::max());
 
 }  // namespace insula::lang::graph
