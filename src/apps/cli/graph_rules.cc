@@ -243,27 +243,16 @@ std::shared_ptr<const lang::graph::Model> FrontEndRules::run(
     return nullptr;
   }
   const std::vector<cga::Lot> lots{lot};
-  shape::Scene scene = cga::to_scene(*program->cga, lots, results);
-  auto model = std::make_shared<lang::graph::Model>();
-  model->materials = std::move(scene.materials);
   // One part per symbol and attribute set: a facade's hundreds of terminals become a dozen
   // meshes, so a city of 10,000 lots keeps its parts countable (docs/graph-executor.md).
   // Parts with texture coordinates join only parts with the same map.
-  std::map<std::tuple<std::string, shape::AttributeMap, std::string>, std::size_t> part_of;
+  shape::Scene scene = cga::to_scene(*program->cga, lots, results, false, true);
+  auto model = std::make_shared<lang::graph::Model>();
+  model->materials = std::move(scene.materials);
   for (shape::Building& b : scene.buildings) {
     for (shape::Part& p : b.parts) {
       place(p, request.scope);
-      if (p.instance_of != nullptr) {
-        model->parts.push_back(std::move(p));
-        continue;
-      }
-      const auto [it, added] = part_of.try_emplace(
-          {p.name, p.attributes, p.uv ? shape::encode(*p.uv) : std::string()}, model->parts.size());
-      if (added) {
-        model->parts.push_back(std::move(p));
-      } else {
-        model->parts[it->second].mesh.append(p.mesh);
-      }
+      model->parts.push_back(std::move(p));
     }
   }
   return model;

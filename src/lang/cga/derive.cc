@@ -201,21 +201,77 @@ struct ChainLook {
   std::optional<kernel::MaterialId> material{};  // once the scene's material is found
 };
 
-// A rectangle terminal (most of a facade: walls, panes, frames) straight in world coordinates:
-// the mesh mesh_to_world(flat_mesh(rectangle_outline(w, h)), scope) makes, without the two
-// meshes in between.
-Mesh world_rectangle(const shape::Scope& scope, kernel::FaceTag tag) {
+// Adds a rectangle terminal (most of a facade: walls, panes, frames) to `mesh` straight in world
+// coordinates: the face mesh_to_world(flat_mesh(rectangle_outline(w, h)), scope) makes (turned
+// over by a mirroring scope), without the two meshes in between.
+void add_world_rectangle(Mesh& mesh, const shape::Scope& scope, kernel::FaceTag tag) {
   const kernel::Transform t = shape::scope_transform(scope);
   const double w = scope.size.x;
   const double h = scope.size.y;
-  Mesh mesh;
+  std::uint32_t v[4];
+  std::size_t k = 0;
   for (const kernel::Vec2 p : {kernel::Vec2{0, 0}, {w, 0}, {w, h}, {0, h}}) {
-    mesh.add_vertex(kernel::apply_point(t, kernel::lift(p, 0)));
+    v[k++] = mesh.add_vertex(kernel::apply_point(t, kernel::lift(p, 0)));
   }
-  mesh.add_face({0, 1, 2, 3}, tag);
-  if (kernel::determinant(t) < 0) mesh.flip();
-  return mesh;
+  if (kernel::determinant(t) < 0) {
+    mesh.add_face({v[3], v[2], v[1], v[0]}, tag);
+  } else {
+    mesh.add_face({v[0], v[1], v[2], v[3]}, tag);
+  }
 }
+
+// The scene's material for a chain's colour and colour map, added at first use; none when the
+// chain has neither (its faces keep the geometry's own material).
+std::optional<kernel::MaterialId> material_of(
+    ChainLook& look, std::map<std::pair<std::string, std::string>, kernel::MaterialId>& materials,
+    shape::Scene& scene) {
+  if (look.color.empty() && look.texture.empty()) return std::nullopt;
+  if (look.material) return look.material;
+  const std::string& color = look.color;
+  const std::string& texture = look.texture;
+  auto [it, inserted] = materials.emplace(std::pair{color, texture}, 0);
+  if (inserted) {
+    it->second = static_cast<kernel::MaterialId>(scene.materials.size());
+    shape::Material material{color.empty() ? texture : color,
+                             color.empty() ? std::array<float, 4>{1, 1, 1, 1} : rgba_of(color)};
+    if (!texture.empty() && !color.empty()) material.name = color + "_" + texture;
+    material.texture = texture;
+    scene.materials.push_back(std::move(material));
+  }
+  look.material = it->second;
+  return look.material;
+}
+
+// The part of a lot's scene that takes a terminal of symbol `name` with `look`'s attributes when
+// alike terminals merge (by value: two chains can give equal attributes), added when new.
+class AlikeParts {
+ public:
+  explicit AlikeParts(std::vector<shape::Part>& parts) : parts_(parts) {}
+  shape::Part& part(std::uint32_t symbol, std::uint32_t chain, std::string_view name,
+                    const ChainLook& look) {
+    const auto [known, added] =
+        by_chain_.try_emplace((std::uint64_t{symbol} << 32) | std::uint64_t{chain}, 0);
+    if (added) {
+      const auto [same, first] = by_value_.try_emplace(
+          {std::string(name), look.attributes, look.uv ? shape::encode(*look.uv) : std::string()},
+          parts_.size());
+      if (first) {
+        shape::Part part;
+        part.name = std::string(name);
+        part.attributes = look.attributes;
+        part.uv = look.uv;
+        parts_.push_back(std::move(part));
+      }
+      known->second = same->second;
+    }
+    return parts_[known->second];
+  }
+
+ private:
+  std::vector<shape::Part>& parts_;
+  std::unordered_map<std::uint64_t, std::size_t> by_chain_;  // (symbol, chain) -> part
+  std::map<std::tuple<std::string, shape::AttributeMap, std::string>, std::size_t> by_value_;
+};
 
 ChainLook chain_look(const Program& program, const LotResult& r, std::uint32_t chain,
                      const std::string& uv0) {
@@ -247,7 +303,7 @@ ChainLook chain_look(const Program& program, const LotResult& r, std::uint32_t c
 }  // namespace
 
 shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
-                      const std::vector<LotResult>& results, bool instances) {
+                      const std::vector<LotResult>& results, bool instances, bool merge_alike) {
   shape::Scene scene;
   // By (colour, colour map): a textured material without a colour is white (CityEngine's).
   std::map<std::pair<std::string, std::string>, kernel::MaterialId> materials;
@@ -262,61 +318,57 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
     building.id = lots[i].id;
     building.attributes = r.attributes;
     std::unordered_map<std::uint32_t, ChainLook> looks;  // by attribute chain
+    AlikeParts alike(building.parts);
     for (std::size_t t = 0; t < r.terminals_store.size(); ++t) {
       const Terminal& term = r.terminals_store[t];
       const Geometry& geometry = r.geometry[term.geometry];
+      // Rectangles go straight into their part; other geometry is made in the scope first.
+      const bool rectangle = geometry.kind == Geometry::Kind::kRect;
       detail::Materialized m;
-      shape::Part part;
-      if (geometry.kind == Geometry::Kind::kRect) {
-        part.mesh = world_rectangle(term.scope, geometry.tag);
-      } else {
+      if (!rectangle) {
         m = detail::Engine::materialize(geometry, term.scope.size);
         if (!m.mesh || m.mesh->empty()) continue;
-        part.mesh = shape::mesh_to_world(*m.mesh, term.scope);
       }
       auto [known, added] = looks.try_emplace(term.attrs);
       if (added) known->second = chain_look(program, r, term.attrs, uv0);
       ChainLook& look = known->second;
-      const std::string& color = look.color;
-      const std::string& texture = look.texture;
-      part.name = std::string(program.symbol_name(term.symbol));
-      part.attributes = look.attributes;
-      part.uv = look.uv;
-      kernel::MaterialId material_id = 0;
-      if (!color.empty() || !texture.empty()) {
-        if (!look.material) {
-          auto [it, inserted] = materials.emplace(std::pair{color, texture}, 0);
-          if (inserted) {
-            it->second = static_cast<kernel::MaterialId>(scene.materials.size());
-            shape::Material material{
-                color.empty() ? texture : color,
-                color.empty() ? std::array<float, 4>{1, 1, 1, 1} : rgba_of(color)};
-            if (!texture.empty() && !color.empty()) material.name = color + "_" + texture;
-            material.texture = texture;
-            scene.materials.push_back(std::move(material));
-          }
-          look.material = it->second;
-        }
-        material_id = *look.material;
-        for (std::size_t f = 0; f < part.mesh.face_count(); ++f) {
-          part.mesh.tag(f).material = material_id;
-        }
-      }
+      const std::optional<kernel::MaterialId> material = material_of(look, materials, scene);
+      const std::string_view name = program.symbol_name(term.symbol);
       const auto use = m.mesh ? uses.find(m.mesh.get()) : uses.end();
-      if (use != uses.end() && use->second > 1 && !part.uv) {
-        std::shared_ptr<const Mesh>& mesh = shared[{m.mesh.get(), material_id}];
+      if (use != uses.end() && use->second > 1 && !look.uv) {
+        std::shared_ptr<const Mesh>& mesh = shared[{m.mesh.get(), material.value_or(0)}];
         if (!mesh) {
           auto coloured = std::make_shared<Mesh>(*m.mesh);
-          for (std::size_t f = 0; material_id != 0 && f < coloured->face_count(); ++f) {
-            coloured->tag(f).material = material_id;
+          for (std::size_t f = 0; material.value_or(0) != 0 && f < coloured->face_count(); ++f) {
+            coloured->tag(f).material = *material;
           }
           mesh = across_lots.share(std::move(coloured));
         }
+        shape::Part& part = building.parts.emplace_back();
+        part.name = std::string(name);
+        part.attributes = look.attributes;
         part.instance_of = mesh;
         part.instance_transform = shape::scope_transform(term.scope);
-        part.mesh = Mesh{};
+        continue;
       }
-      building.parts.push_back(std::move(part));
+      shape::Part* part = nullptr;
+      if (merge_alike) {
+        part = &alike.part(term.symbol, term.attrs, name, look);
+      } else {
+        part = &building.parts.emplace_back();
+        part->name = std::string(name);
+        part->attributes = look.attributes;
+        part->uv = look.uv;
+      }
+      const std::size_t first_face = part->mesh.face_count();
+      if (rectangle) {
+        add_world_rectangle(part->mesh, term.scope, geometry.tag);
+      } else {
+        part->mesh.append(shape::mesh_to_world(*m.mesh, term.scope));
+      }
+      for (std::size_t f = first_face; material && f < part->mesh.face_count(); ++f) {
+        part->mesh.tag(f).material = *material;
+      }
     }
     if (!building.parts.empty()) scene.buildings.push_back(std::move(building));
   }

@@ -174,9 +174,13 @@ Lot default_lot(const Program& program, const DeriveOptions& options);
 // terminal with geometry (name = its symbol, attributes = its set()/color() values, faces coloured
 // by color()). With `instances`, terminals of a lot that show one shared mesh (i() results with
 // DeriveOptions::share_inserts) in one colour and without a uv map become instances of it
-// (Part::instance_of, placed by the terminal's scope).
+// (Part::instance_of, placed by the terminal's scope). With `merge_alike`, a lot's terminals
+// with the same name, attributes and uv map are one part (in the order each first comes, faces
+// in terminal order): a graph's rule node hands a facade to the graph as a dozen entities, not
+// hundreds (docs/graph-executor.md); instances stay parts of their own.
 shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
-                      const std::vector<LotResult>& results, bool instances = false);
+                      const std::vector<LotResult>& results, bool instances = false,
+                      bool merge_alike = false);
 
 // The report of issue 4: shapes, terminals, symbols {name: count}, rule_applications, reports,
 // lots (count). Sums over `results` in lot order.
