@@ -1055,6 +1055,14 @@ void Engine::set_attr(State& st, std::uint32_t attr, Value value) {
 }
 
 void Engine::color(const CItem& c, State& st) {
+  // A colour written as a literal (most are) is checked and normalised once per lot.
+  const bool literal = c.args.size() == 1 && program_.nodes[c.args[0]].code == ECode::kConst;
+  if (literal) {
+    if (const auto it = literal_colors_.find(c.args[0]); it != literal_colors_.end()) {
+      set_attr(st, program_.color_attr, Value(it->second));
+      return;
+    }
+  }
   std::string hex;
   if (c.args.size() == 1) {
     const Value v = eval(c.args[0], st);
@@ -1075,6 +1083,7 @@ void Engine::color(const CItem& c, State& st) {
     hex = hex_color(number(c.args[0], st), number(c.args[1], st), number(c.args[2], st), a,
                     c.args.size() == 4);
   }
+  if (literal) literal_colors_.emplace(c.args[0], hex);
   set_attr(st, program_.color_attr, std::move(hex));
 }
 

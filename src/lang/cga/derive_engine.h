@@ -483,6 +483,8 @@ class Engine final : public EvalContext {
   // The attribute nodes set_attr made, by (parent, attribute): a facade's hundreds of walls
   // coloured alike share one node, so the export reads each distinct attribute set once.
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> attr_nodes_made_;
+  // color("#...") literals as set_attr takes them ("#rrggbb", lower case), by expression.
+  std::unordered_map<std::uint32_t, std::string> literal_colors_;
   BuiltinAssets assets_;
   shape::Context context_;
   std::uint64_t lot_seed_;
