@@ -238,6 +238,10 @@ try {
   check(await page.locator('#graph g.graph-node').count() === 2, 'the sign subgraph\'s two nodes');
   check(await page.locator('#graph .graph-count[data-count="board.out"]').textContent() === '2',
         'the count inside the subgraph');
+  // Its gates marked on the ports they name.
+  check(await node('board').locator('circle.gate[data-side="in"][data-port="in"]').count() === 1 &&
+        await page.locator('#graph .graph-gate[data-gate="Board"]').count() === 1 &&
+        await page.locator('#graph .graph-gate[data-gate="Signed"]').count() === 1, 'the sign\'s gates marked');
   await page.screenshot({ path: path.join(out, 'graph_inline.png') });
   await page.click('#graph .graph-scope a[data-depth="0"]');
   check(await node('signs').count() === 1, 'back to the graph');

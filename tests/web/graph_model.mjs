@@ -5,7 +5,7 @@ import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 
-import { encapsulate, graphText, layout } from '../../web/src/graph_model.js';
+import { encapsulate, gatePorts, graphText, layout } from '../../web/src/graph_model.js';
 
 const [insula, tmp] = process.argv.slice(2);
 const failures = [];
@@ -33,6 +33,15 @@ const report = path.join(tmp, 'fig4.json');
 const run = spawnSync(insula, ['build', fig4, '--report', report, '-q'], { encoding: 'utf8' });
 check(run.status === 0 && JSON.parse(fs.readFileSync(report, 'utf8')).graph.leaves['stone.out'].count === 17,
       `the encapsulated stairway: ${run.stderr}`);
+
+// Gates by internal port: one port or a list of them (the house's, and a joined output gate).
+const house = JSON.parse(fs.readFileSync(new URL('../../examples/graph/parts/house.graph.json', import.meta.url)));
+const houseGates = gatePorts(house.gates);
+check([...houseGates.in.values()].length >= 1 && [...houseGates.out.values()].length >= 1,
+      `the house's gates: ${JSON.stringify(house.gates)}`);
+const joined = gatePorts({ inputs: { Lot: 'a.in' }, outputs: { Walls: ['b.out', 'c.rest'] } });
+check(joined.in.get('a.in') === 'Lot' && joined.out.get('b.out') === 'Walls' && joined.out.get('c.rest') === 'Walls' &&
+      joined.out.size === 2 && gatePorts(undefined).in.size === 0, 'gates of a list');
 
 if (failures.length) {
   console.error(failures.join('\n'));

@@ -8,7 +8,7 @@
 // and time; ports whose entities were blocked or left unprocessed are marked. Undo and redo are
 // the editor's; copy and paste duplicate the selected node.
 import {
-  copyNode, edgeEnds, edgeText, encapsulate, freshId, graphText, layout, nodeType, portsOf,
+  copyNode, edgeEnds, edgeText, encapsulate, freshId, gatePorts, graphText, layout, nodeType, portsOf,
   removeNode, startingParams, startingValue,
 } from './graph_model.js';
 
@@ -267,6 +267,15 @@ export class GraphEditor {
       parts.push(`<path class="graph-edge${off ? ' off' : ''}${this.selectedEdge === e ? ' selected' : ''}" data-edge="${e}"
         d="${wirePath(x1, y1, x2, y2)}"/>`);
     });
+    // The shown graph's own gates (graph-format §8): the ports it exposes when encapsulated, an
+    // opened subgraph's or a subgraph file's, marked with the gate's name outside the node.
+    const gateOf = gatePorts(doc.gates);
+    const gateMark = (side, node, port, x, y) => {
+      const gate = gateOf[side].get(`${node.id}.${port}`);
+      if (!gate) return '';
+      const at = side === 'in' ? `x="${x - 9}" text-anchor="end"` : `x="${x + 9}"`;
+      return `<text class="graph-gate" data-gate="${escape(gate)}" ${at} y="${y + (side === 'in' ? 4 : 14)}">${side === 'in' ? `${escape(gate)} ▸` : `▸ ${escape(gate)}`}</text>`;
+    };
     for (const node of doc.nodes) {
       const { inputs, outputs } = this.ports(node);
       const height = this.nodeHeight(node);
@@ -283,24 +292,28 @@ export class GraphEditor {
         ${inputs.map((p, i) => {
           const py = y + titleHeight + 10 + i * portGap;
           const unprocessed = (graph.unprocessed || {})[`${this.prefix()}${node.id}.${p.name}`];
-          return `<circle class="graph-port in${p.collective ? ' collective' : ''}${unprocessed ? ' warn' : ''}" cx="${x}" cy="${py}" r="5" data-port="${escape(p.name)}" data-side="in"><title>${escape(`${p.name}: ${p.type}${p.collective ? ', collective' : ''}${unprocessed ? `; ${unprocessed} unprocessed` : ''}`)}</title></circle>
-            <text class="graph-port-name" x="${x + 9}" y="${py + 4}">${escape(p.name)}</text>`;
+          const gate = gateOf.in.get(`${node.id}.${p.name}`);
+          return `<circle class="graph-port in${p.collective ? ' collective' : ''}${unprocessed ? ' warn' : ''}${gate ? ' gate' : ''}" cx="${x}" cy="${py}" r="5" data-port="${escape(p.name)}" data-side="in"><title>${escape(`${p.name}: ${p.type}${p.collective ? ', collective' : ''}${gate ? `; input gate ${gate}` : ''}${unprocessed ? `; ${unprocessed} unprocessed` : ''}`)}</title></circle>
+            <text class="graph-port-name" x="${x + 9}" y="${py + 4}">${escape(p.name)}</text>${gateMark('in', node, p.name, x, py)}`;
         }).join('')}
         ${outputs.map((p, i) => {
           const py = y + titleHeight + 10 + i * portGap;
           const count = this.portCount(node.id, p.name);
           const blocked = (graph.blocked || {})[`${this.prefix()}${node.id}.${p.name}`];
-          return `<circle class="graph-port out${blocked ? ' warn' : ''}" cx="${x + nodeWidth}" cy="${py}" r="5" data-port="${escape(p.name)}" data-side="out"><title>${escape(`${p.name}: ${p.type}${blocked ? `; ${blocked} blocked` : ''}`)}</title></circle>
-            <text class="graph-port-name" x="${x + nodeWidth - 9}" y="${py + 4}" text-anchor="end">${escape(p.name)}</text>
+          const gate = gateOf.out.get(`${node.id}.${p.name}`);
+          return `<circle class="graph-port out${blocked ? ' warn' : ''}${gate ? ' gate' : ''}" cx="${x + nodeWidth}" cy="${py}" r="5" data-port="${escape(p.name)}" data-side="out"><title>${escape(`${p.name}: ${p.type}${gate ? `; output gate ${gate}` : ''}${blocked ? `; ${blocked} blocked` : ''}`)}</title></circle>
+            <text class="graph-port-name" x="${x + nodeWidth - 9}" y="${py + 4}" text-anchor="end">${escape(p.name)}</text>${gateMark('out', node, p.name, x + nodeWidth, py)}
             ${count !== undefined ? `<text class="graph-count${blocked ? ' warn' : ''}" data-count="${escape(`${node.id}.${p.name}`)}" x="${x + nodeWidth + 8}" y="${py - 4}">${count}</text>` : ''}`;
         }).join('')}
       </g>`);
     }
     // The whole graph in the panel's width, down to 45% (then the panel scrolls).
-    const [width, height] = [Math.max(right, 400), Math.max(bottom, 200)];
+    // Input gates' names stand left of their nodes: room for them left of x = 0.
+    this.left = gateOf.in.size ? -80 : 0;
+    const [width, height] = [Math.max(right, 400) - this.left, Math.max(bottom, 200)];
     const room = (this.panel.clientWidth || width) - 16;
     this.scale = Math.max(0.45, Math.min(1, room / width));
-    this.svg.setAttribute('viewBox', `0 0 ${width} ${height}`);
+    this.svg.setAttribute('viewBox', `${this.left} 0 ${width} ${height}`);
     this.svg.setAttribute('width', Math.round(width * this.scale));
     this.svg.setAttribute('height', Math.round(height * this.scale));
     this.svg.innerHTML = parts.join('');
@@ -603,7 +616,7 @@ export class GraphEditor {
   point(event) {
     const box = this.svg.getBoundingClientRect();
     const scale = this.scale || 1;
-    return [(event.clientX - box.left) / scale, (event.clientY - box.top) / scale];
+    return [(event.clientX - box.left) / scale + (this.left || 0), (event.clientY - box.top) / scale];
   }
 
   bindCanvas() {

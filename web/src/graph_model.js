@@ -17,6 +17,14 @@ export function edgeEnds(edge) {
 }
 
 // The node type of `node` in the reference (`GET /api/reference`'s nodes), or null.
+// A graph's gates (graph-format §8) by the internal port each names: { in, out }, maps from
+// 'node.port' to the gate's name (a gate may name one port or a list of them).
+export function gatePorts(gates) {
+  const side = (named) => new Map(Object.entries(named || {}).flatMap(([gate, ports]) =>
+    (Array.isArray(ports) ? ports : [ports]).map((port) => [String(port), gate])));
+  return { in: side(gates && gates.inputs), out: side(gates && gates.outputs) };
+}
+
 export function nodeType(reference, node) {
   return reference.nodes.find((t) => t.name === node.type) || null;
 }
