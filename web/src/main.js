@@ -185,6 +185,7 @@ async function probe(path) {
     }
     const query = buildQuery();
     query.set('probe', path);
+    query.set('behind', '1'); // the next edit's counts go first
     const answer = await (await api(`/api/build?${query}`, { method: 'POST', body: editor.state.doc.toString() },
                                     wanted)).json();
     if (!wanted() || answer.cancelled) return;
