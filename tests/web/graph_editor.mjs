@@ -208,6 +208,16 @@ try {
   await node('newel_post').locator('rect').dblclick();
   await waitBuild('return b.ok && b.report.graph.leaves["extrude2.out"]?.count === 1', 'the subgraph opened alone', before);
   check(await page.evaluate(() => window.studio.path) === 'newel_post.graph.json', 'the subgraph opened');
+  // The way back, like a tab's history: the graph it came from, opened again from the bar.
+  const back = page.locator('#graph .graph-scope a[data-file="0"]');
+  check(await back.textContent() === 'hand.graph.json', 'the way back to the graph');
+  await back.click();
+  try {
+    await page.waitForFunction(() => window.studio.path === 'hand.graph.json' &&
+                               document.querySelectorAll('#graph .graph-scope a').length === 0);
+  } catch {
+    failures.push('back on the graph, the bar still offers a way back');
+  }
   lap('encapsulated');
 
   // Augmentations in the panel: shape.comp's second item feeds a port renamed "walls", then a

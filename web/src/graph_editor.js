@@ -54,6 +54,8 @@ export class GraphEditor {
     this.root = null; // the whole document
     this.heightOf = (node) => this.nodeHeight(node);
     this.scope = []; // inline subgraphs opened: [{ name, via: the subgraph node's id }]
+    this.trail = []; // graph files a double-click came through to the one shown
+    this.expecting = null; // the file a double-click (or the way back) is opening
     this.report = null;
     this.clipboard = null;
     panel.innerHTML = `
@@ -145,16 +147,29 @@ export class GraphEditor {
     return [...graphs].reverse().map((g) => (g.subgraphs || {})[name]).find(Boolean) || null;
   }
 
+  // The way here: the graph files a double-click came through (each opens again, like a tab's
+  // history), then the inline subgraphs opened in this one.
   renderScope() {
     const bar = this.panel.querySelector('.graph-scope');
-    if (this.scope.length === 0) {
+    if (this.scope.length === 0 && this.trail.length === 0) {
       bar.replaceChildren();
       return;
     }
-    const crumbs = [`<a href="#" data-depth="0">graph</a>`, ...this.scope.map((s, k) =>
-      `<a href="#" data-depth="${k + 1}">${escape(s.via)} (#${escape(s.name)})</a>`)];
-    bar.innerHTML = `${crumbs.join(' › ')} <i>(an inline subgraph; double-click a subgraph node to open it)</i>`;
-    for (const a of bar.querySelectorAll('a')) {
+    const files = this.trail.map((file, k) => `<a href="#" data-file="${k}">${escape(file)}</a>`);
+    const crumbs = [...files, `<a href="#" data-depth="0">${escape(this.trail.length ? this.host.path() : 'graph')}</a>`,
+                    ...this.scope.map((s, k) => `<a href="#" data-depth="${k + 1}">${escape(s.via)} (#${escape(s.name)})</a>`)];
+    const hint = this.scope.length ? 'an inline subgraph' : 'a subgraph file, run on its own';
+    bar.innerHTML = `${crumbs.join(' › ')} <i>(${hint}; double-click a subgraph node to open it)</i>`;
+    for (const a of bar.querySelectorAll('a[data-file]')) {
+      a.addEventListener('click', (e) => {
+        e.preventDefault();
+        const k = Number(a.dataset.file);
+        this.expecting = this.trail[k];
+        this.trail = this.trail.slice(0, k);
+        this.host.open(this.expecting);
+      });
+    }
+    for (const a of bar.querySelectorAll('a[data-depth]')) {
       a.addEventListener('click', (e) => {
         e.preventDefault();
         this.scope = this.scope.slice(0, Number(a.dataset.depth));
@@ -168,7 +183,10 @@ export class GraphEditor {
   // Shows the text's graph with the counts of `report` (the last run's, or null).
   show(report = this.report) {
     if (this.host.path() !== this.shownPath) {
-      // Another file: nothing of the last one stays selected.
+      // Another file: nothing of the last one stays selected; the way back is kept only when a
+      // double-click (or the way back) opened it.
+      if (this.host.path() !== this.expecting) this.trail = [];
+      this.expecting = null;
       this.shownPath = this.host.path();
       this.selected = null;
       this.selection.clear();
@@ -654,6 +672,8 @@ export class GraphEditor {
       const node = nodeEl && this.doc.nodes.find((n) => n.id === nodeEl.dataset.node);
       const file = node && this.subgraphFile(node);
       if (file) {
+        this.trail = [...this.trail, this.host.path()];
+        this.expecting = file;
         this.host.open(file);
       } else if (node && node.type === 'subgraph' && this.inline(String(node.graph).slice(1))) {
         // An inline subgraph: shown in place of its graph (the bar above leads back).
