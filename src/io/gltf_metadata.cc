@@ -205,22 +205,26 @@ void PartTable::add_row(const shape::Part& part, std::size_t index) {
 // The column's distinct values, sorted, when they fit 16-bit codes, none is empty (an enum value
 // needs a name) and coding them makes the column smaller; `no_data` a name none of them has.
 void PartTable::make_dictionary(Column& column) {
-  std::vector<std::string_view> distinct(column.values.begin(), column.values.end());
-  std::sort(distinct.begin(), distinct.end());
-  const auto contains = [&distinct](std::string_view value) {
-    return std::binary_search(distinct.begin(), distinct.end(), value);
-  };
-  if (contains("") || distinct.size() + (column.optional ? 1 : 0) > 65536) return;
+  // `values` are distinct already: the checks come before the sort, which most columns of mostly
+  // distinct texts (names, ids) never need.
+  const std::vector<std::string>& values = column.values;
+  if (values.size() + (column.optional ? 1 : 0) > 65536) return;
+  if (std::any_of(values.begin(), values.end(), [](const auto& v) { return v.empty(); })) return;
   // Only where it pays: each enum value costs its name and about 30 bytes of JSON, each row a
   // code of 1 or 2 bytes; a STRING column costs each row's text and a 4-byte offset.
   std::size_t as_enum = 0;
   std::size_t as_string = 4;
-  for (std::string_view value : distinct) as_enum += value.size() + 30;
-  as_enum += column.codes.size() * (distinct.size() < 256 ? 1 : 2);
+  for (const std::string& value : values) as_enum += value.size() + 30;
+  as_enum += column.codes.size() * (values.size() < 256 ? 1 : 2);
   for (std::uint32_t code : column.codes) {
-    as_string += (code == kAbsent ? 0 : column.values[code].size()) + 4;
+    as_string += (code == kAbsent ? 0 : values[code].size()) + 4;
   }
   if (as_enum >= as_string) return;
+  std::vector<std::string_view> distinct(values.begin(), values.end());
+  std::sort(distinct.begin(), distinct.end());
+  const auto contains = [&distinct](std::string_view value) {
+    return std::binary_search(distinct.begin(), distinct.end(), value);
+  };
   column.dictionary.assign(distinct.begin(), distinct.end());
   column.enum_code.resize(column.values.size());
   for (std::size_t v = 0; v < column.values.size(); ++v) {
