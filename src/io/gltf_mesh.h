@@ -10,7 +10,9 @@
 #pragma once
 
 #include <array>
+#include <cfloat>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -98,6 +100,16 @@ class MeshAssembler {
     std::array<std::int64_t, 3> grid;  // the nearest quantization grid point, when on_grid
     bool on_grid;
   };
+  // The grid and float32 bounds of the vertices added, kept as they are added (a pass over a
+  // tile's vertices at the end missed the cache on most of them).
+  struct Bounds {
+    bool on_grid = true;  // every vertex has a grid point (low and high are meaningful)
+    std::array<std::int64_t, 3> low{INT64_MAX, INT64_MAX, INT64_MAX};
+    std::array<std::int64_t, 3> high{INT64_MIN, INT64_MIN, INT64_MIN};
+    std::array<double, 3> min{DBL_MAX, DBL_MAX, DBL_MAX};
+    std::array<double, 3> max{-DBL_MAX, -DBL_MAX, -DBL_MAX};
+    void add(const Source& source);
+  };
   // A face's unit normal (Y-up), and as normalized bytes (the fourth is padding).
   struct FaceNormal {
     std::array<float, 3> normal;
@@ -129,12 +141,13 @@ class MeshAssembler {
   void gather_indices();
   void quantize(bool wanted, MeshRecord& record);
   void pack(const MeshRecord& record, const MeshOptions& options, bool with_features);
-  std::size_t merge_rows();
+  void merge_rows();
   void find_representatives(std::size_t begin, std::size_t end);
   std::size_t merge_and_order();
-  void order_by_feature(std::span<unsigned int> indices);
+  void number_for_fetch();
+  bool order_by_feature(std::span<unsigned int> indices);
   bool loads_each_once(std::span<const unsigned int> run);
-  void optimize_run(std::span<unsigned int> run);
+  bool optimize_run(std::span<unsigned int> run);
   void write_attributes(Buffers& buffers, const MeshViews& views, const MeshOptions& options,
                         std::size_t count, MeshRecord& record);
   void write_primitives(Buffers& buffers, const MeshViews& views, std::size_t count,
@@ -149,6 +162,7 @@ class MeshAssembler {
   std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> indices_by_material_;
   std::vector<std::vector<std::uint32_t>> spare_lists_;  // emptied lists, kept for their room
   bool has_uv_ = false;
+  Bounds bounds_;
 
   // The part being added.
   const shape::Part* part_ = nullptr;
@@ -171,15 +185,18 @@ class MeshAssembler {
   std::vector<std::size_t> ends_;           // end of each material's run in indices_
   std::array<std::int64_t, 3> grid_low_{};  // the quantized mesh's grid origin
   RowLayout layout_;
-  std::vector<unsigned char> rows_;   // each vertex's written attributes, layout_.stride bytes
-  std::vector<unsigned int> remap_;   // vertex -> merged vertex (~0: unused)
-  std::vector<std::uint32_t> slots_;  // merge_rows()'s hash table of vertices (~0: free)
+  // Each vertex's written attributes, layout_.stride bytes; never zeroed (pack writes every
+  // byte), so a tile's megabytes of rows are written once.
+  std::unique_ptr<unsigned char[]> rows_;
+  std::size_t rows_capacity_ = 0;
+  std::vector<std::uint32_t> slots_;            // merge_rows()'s hash table of vertices (~0: free)
   std::vector<std::uint32_t> representative_;   // vertex -> the first vertex alike
-  std::vector<std::uint32_t> class_of_;         // representative -> merged vertex (~0: none yet)
+  std::vector<unsigned int> class_of_;          // representative -> merged vertex (~0: none yet)
   std::vector<unsigned int> fetch_;             // merged vertex -> written vertex
-  std::vector<std::uint32_t> row_of_;           // written vertex -> a vertex whose row it writes
-  std::vector<std::uint32_t> vertex_features_;  // by vertex, then by merged, then written vertex
+  std::vector<std::uint32_t> row_of_;           // merged, then written vertex -> a vertex alike
+  std::vector<std::uint32_t> vertex_features_;  // by merged, then written vertex
   std::vector<std::uint32_t> moved_features_;
+  std::vector<std::uint32_t> moved_rows_;
   std::vector<std::array<unsigned int, 3>> sorted_triangles_;
   std::vector<unsigned int> local_of_;  // order_by_feature: merged vertex -> run's own numbering
   std::vector<unsigned int> global_of_;
