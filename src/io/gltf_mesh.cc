@@ -86,6 +86,12 @@ void MeshAssembler::clear() {
   bounds_ = Bounds{};
 }
 
+void MeshAssembler::reserve(std::size_t vertices, std::size_t corners, std::size_t faces) {
+  sources_.reserve(sources_.size() + vertices);
+  vertices_.reserve(vertices_.size() + corners);
+  face_normals_.reserve(face_normals_.size() + faces);
+}
+
 void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::uint32_t feature,
                         bool quantize, bool instance_frame) {
   part_ = &part;

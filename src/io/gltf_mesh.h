@@ -80,6 +80,9 @@ class MeshAssembler {
   MeshAssembler(const MaterialTable& materials, std::vector<bool> material_textured);
 
   void clear();
+  // Room for meshes of `vertices`, `corners` (face loop entries) and `faces` more in all, to be
+  // added before the next emit: a 3D Tiles tile's one mesh grew by copying megabytes otherwise.
+  void reserve(std::size_t vertices, std::size_t corners, std::size_t faces);
   // Adds the faces of `mesh`, each vertex carrying `feature` (when features are written). `mesh`
   // is `part`'s geometry where it stands, or with `instance_frame` the mesh `part` instances
   // (before its placement; the part's uv map is then evaluated at placed positions).

@@ -108,29 +108,33 @@ void PartTable::find_columns(const shape::Scene& scene) {
     s.numbers = s.numbers && std::holds_alternative<double>(value);
     s.booleans = s.booleans && std::holds_alternative<bool>(value);
   };
-  // Each inherited map's entries as Seen records, looked up once for all parts sharing it.
-  std::unordered_map<const shape::AttributeMap*, std::vector<Seen*>> inherited_seen;
+  // Each inherited map's entries as Seen records, looked up once for all parts sharing it (flat:
+  // a map's first entry by map), the last map first (a building's parts come together).
+  std::unordered_map<const shape::AttributeMap*, std::size_t> inherited_seen;
+  std::vector<Seen*> entries;
+  const shape::AttributeMap* last = nullptr;
+  std::size_t first = 0;
   for (const shape::Building& building : scene.buildings) {
     for (const shape::Part& part : building.parts) {
       ++rows_;
-      std::vector<Seen*>* entries = nullptr;
-      if (part.inherited) {
-        const auto [it, added] = inherited_seen.try_emplace(part.inherited.get());
+      if (part.inherited && part.inherited.get() != last) {
+        last = part.inherited.get();
+        const auto [it, added] = inherited_seen.try_emplace(last, entries.size());
+        first = it->second;
         if (added) {
           // A null makes no column (as a copied null did not): no entry for it.
-          for (const auto& [key, value] : *part.inherited) {
-            it->second.push_back(shape::is_null(value) ? nullptr
-                                                       : &seen.try_emplace(key).first->second);
+          for (const auto& [key, value] : *last) {
+            entries.push_back(shape::is_null(value) ? nullptr
+                                                    : &seen.try_emplace(key).first->second);
           }
         }
-        entries = &it->second;
       }
       for_each_attribute(
           part,
           [&](const std::string& key, const shape::Value& value) {
             note(seen.try_emplace(key).first->second, value);
           },
-          [&](std::size_t i, const shape::Value& value) { note(*(*entries)[i], value); });
+          [&](std::size_t i, const shape::Value& value) { note(*entries[first + i], value); });
     }
   }
   std::set<std::string> taken{"kind", "name"};
@@ -151,20 +155,26 @@ std::uint32_t PartTable::intern(Column& column, std::string text) {
   return it->second;
 }
 
-const PartTable::InheritedRow& PartTable::inherited_row(const shape::AttributeMap& map) {
-  const auto [it, added] = inherited_rows_.try_emplace(&map);
-  InheritedRow& row = it->second;
-  if (!added) return row;
+// The first of `map`'s entries in inherited_values_ and inherited_codes_ (one per attribute
+// column), found once for all the parts sharing the map: a tile's building's parts come together,
+// so the last map is tried first.
+std::size_t PartTable::inherited_row(const shape::AttributeMap& map) {
+  if (&map == last_inherited_) return last_inherited_row_;
+  const std::size_t first = inherited_values_.size();
+  const auto [it, added] = inherited_rows_.try_emplace(&map, first);
+  last_inherited_ = &map;
+  last_inherited_row_ = it->second;
+  if (!added) return it->second;
   for (std::size_t c = 2; c < columns_.size(); ++c) {
     Column& column = columns_[c];
     const auto found = map.find(column.name);
     const bool present = found != map.end() && !shape::is_null(found->second);
-    row.values.push_back(present ? &found->second : nullptr);
-    row.codes.push_back(present && column.type == Type::kString
-                            ? intern(column, shape::to_string(found->second))
-                            : kAbsent);
+    inherited_values_.push_back(present ? &found->second : nullptr);
+    inherited_codes_.push_back(present && column.type == Type::kString
+                                   ? intern(column, shape::to_string(found->second))
+                                   : kAbsent);
   }
-  return row;
+  return first;
 }
 
 // Appends `part` (the `index`th of its building) as a row: each attribute column takes the part's
@@ -174,7 +184,8 @@ void PartTable::add_row(const shape::Part& part, std::size_t index) {
   names.codes.push_back(
       intern(names, part.name.empty() ? "part" + std::to_string(index) : part.name));
   columns_[1].codes.push_back(intern(columns_[1], std::string(kind_name(part.kind))));
-  const InheritedRow* inherited = part.inherited ? &inherited_row(*part.inherited) : nullptr;
+  constexpr std::size_t kNone = SIZE_MAX;
+  const std::size_t inherited = part.inherited ? inherited_row(*part.inherited) : kNone;
   auto own = part.attributes.begin();
   for (std::size_t c = 2; c < columns_.size(); ++c) {
     Column& column = columns_[c];
@@ -184,9 +195,9 @@ void PartTable::add_row(const shape::Part& part, std::size_t index) {
     if (own != part.attributes.end() && own->first == column.name && !shape::is_null(own->second)) {
       value = &own->second;
       if (column.type == Type::kString) code = intern(column, shape::to_string(*value));
-    } else if (inherited != nullptr) {
-      value = inherited->values[c - 2];
-      code = inherited->codes[c - 2];
+    } else if (inherited != kNone) {
+      value = inherited_values_[inherited + c - 2];
+      code = inherited_codes_[inherited + c - 2];
     }
     switch (column.type) {
       case Type::kNumber:

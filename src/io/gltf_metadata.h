@@ -74,23 +74,23 @@ class PartTable {
     std::uint32_t values_view = 0;
     std::uint32_t offsets_view = 0;  // STRING
   };
-  // An inherited attribute map's value for each attribute column (nullptr: it has none), and the
-  // text code of each, found once for all the parts that share the map.
-  struct InheritedRow {
-    std::vector<const shape::Value*> values;
-    std::vector<std::uint32_t> codes;
-  };
-
   void find_columns(const shape::Scene& scene);
   void add_row(const shape::Part& part, std::size_t index);
-  const InheritedRow& inherited_row(const shape::AttributeMap& map);
+  std::size_t inherited_row(const shape::AttributeMap& map);
   static std::uint32_t intern(Column& column, std::string text);
   static void make_dictionary(Column& column);
   void write_class_property(JsonStream& json, const Column& column) const;
 
   std::size_t rows_ = 0;
   std::vector<Column> columns_;
-  std::unordered_map<const shape::AttributeMap*, InheritedRow> inherited_rows_;
+  // An inherited attribute map's value for each attribute column (nullptr: it has none), and the
+  // text code of each, found once for all the parts that share the map; flat, a map's entries
+  // from the index inherited_rows_ gives it.
+  std::unordered_map<const shape::AttributeMap*, std::size_t> inherited_rows_;
+  std::vector<const shape::Value*> inherited_values_;
+  std::vector<std::uint32_t> inherited_codes_;
+  const shape::AttributeMap* last_inherited_ = nullptr;
+  std::size_t last_inherited_row_ = 0;
 };
 
 }  // namespace insula::io::gltf
