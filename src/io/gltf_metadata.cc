@@ -86,6 +86,7 @@ void for_each_attribute(const shape::Part& part, Own&& own, Inherited&& inherite
 
 PartTable::PartTable(const shape::Scene& scene) {
   find_columns(scene);
+  columns_[0].index_of.reserve(rows_);  // names: mostly distinct in a tile
   for (const shape::Building& building : scene.buildings) {
     for (std::size_t p = 0; p < building.parts.size(); ++p) add_row(building.parts[p], p);
   }
@@ -148,11 +149,13 @@ void PartTable::find_columns(const shape::Scene& scene) {
   }
 }
 
-std::uint32_t PartTable::intern(Column& column, std::string text) {
-  const auto [it, added] = column.index_of.try_emplace(
-      std::move(text), static_cast<std::uint32_t>(column.values.size()));
-  if (added) column.values.push_back(it->first);
-  return it->second;
+// Looked up as a view, so a text met before (most of a city's) is not copied.
+std::uint32_t PartTable::intern(Column& column, std::string_view text) {
+  if (const auto it = column.index_of.find(text); it != column.index_of.end()) return it->second;
+  const auto code = static_cast<std::uint32_t>(column.values.size());
+  column.values.emplace_back(text);
+  column.index_of.emplace(column.values.back(), code);
+  return code;
 }
 
 // The first of `map`'s entries in inherited_values_ and inherited_codes_ (one per attribute
@@ -182,8 +185,12 @@ std::size_t PartTable::inherited_row(const shape::AttributeMap& map) {
 void PartTable::add_row(const shape::Part& part, std::size_t index) {
   Column& names = columns_[0];
   names.codes.push_back(
-      intern(names, part.name.empty() ? "part" + std::to_string(index) : part.name));
-  columns_[1].codes.push_back(intern(columns_[1], std::string(kind_name(part.kind))));
+      part.name.empty() ? intern(names, "part" + std::to_string(index)) : intern(names, part.name));
+  // A handful of kinds: each one's code is kept rather than looked up row by row.
+  const auto kind = static_cast<std::size_t>(part.kind);
+  if (kind >= kind_codes_.size()) kind_codes_.resize(kind + 1, kAbsent);
+  if (kind_codes_[kind] == kAbsent) kind_codes_[kind] = intern(columns_[1], kind_name(part.kind));
+  columns_[1].codes.push_back(kind_codes_[kind]);
   constexpr std::size_t kNone = SIZE_MAX;
   const std::size_t inherited = part.inherited ? inherited_row(*part.inherited) : kNone;
   auto own = part.attributes.begin();

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -53,6 +54,13 @@ class PartTable {
 
  private:
   enum class Type { kString, kNumber, kBoolean };
+  // Hashes texts and views of them alike (lookups by view).
+  struct TextHash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view text) const {
+      return std::hash<std::string_view>{}(text);
+    }
+  };
   static constexpr std::uint32_t kAbsent = ~0U;  // a text cell the part lacks
   struct Column {
     std::string id;    // the property id
@@ -63,7 +71,8 @@ class PartTable {
     // use) or kAbsent; a city repeats few texts over many rows.
     std::vector<std::uint32_t> codes{};
     std::vector<std::string> values{};
-    std::unordered_map<std::string, std::uint32_t> index_of{};  // of `values`, while filling
+    std::unordered_map<std::string, std::uint32_t, TextHash, std::equal_to<>>
+        index_of{};  // of `values`, while filling
     std::vector<double> numbers{};                              // kNumber
     std::vector<bool> booleans{};                               // kBoolean
     // Dictionary coding of a text column (empty: written as STRING): the enum names in order,
@@ -77,12 +86,13 @@ class PartTable {
   void find_columns(const shape::Scene& scene);
   void add_row(const shape::Part& part, std::size_t index);
   std::size_t inherited_row(const shape::AttributeMap& map);
-  static std::uint32_t intern(Column& column, std::string text);
+  static std::uint32_t intern(Column& column, std::string_view text);
   static void make_dictionary(Column& column);
   void write_class_property(JsonStream& json, const Column& column) const;
 
   std::size_t rows_ = 0;
   std::vector<Column> columns_;
+  std::vector<std::uint32_t> kind_codes_;  // by shape::PartKind: its code in "kind" (or kAbsent)
   // An inherited attribute map's value for each attribute column (nullptr: it has none), and the
   // text code of each, found once for all the parts that share the map; flat, a map's entries
   // from the index inherited_rows_ gives it.
