@@ -240,16 +240,18 @@ void MeshAssembler::fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint3
   }
 }
 
-// Concatenates the materials' triangles (materials in table order); ends_ marks each run's end.
+// The materials' triangles one after the other (materials in table order): ends_ marks each
+// run's end in indices_.
 void MeshAssembler::gather_indices() {
   std::sort(indices_by_material_.begin(), indices_by_material_.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
-  indices_.clear();
   ends_.clear();
+  std::size_t end = 0;
   for (const auto& [material, list] : indices_by_material_) {
-    indices_.insert(indices_.end(), list.begin(), list.end());
-    ends_.push_back(indices_.size());
+    end += list.size();
+    ends_.push_back(end);
   }
+  indices_.resize(end);  // filled by merge_and_order, numbered as they are copied
 }
 
 void MeshAssembler::Bounds::add(const Source& source) {
@@ -287,9 +289,10 @@ void MeshAssembler::quantize(bool wanted, MeshRecord& record) {
 }
 
 // Every vertex's attributes as they will be written, side by side in one row (padding zero):
-// positions, normals, then uvs and feature ids when written. Each row is written whole, in one
-// pass: a 3D Tiles tile's rows are megabytes, and a pass per attribute read them all again.
-void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, bool with_features) {
+// positions, normals, then uvs and feature ids when written. Lays out the rows; merge_rows() packs
+// them run by run.
+void MeshAssembler::lay_out(const MeshRecord& record, const MeshOptions& options,
+                            bool with_features) {
   const std::size_t n = vertices_.size();
   layout_.size = {record.quantized ? 8U : 12U,  // quantized: x, y, z, padding
                   options.quantize ? 4U : 12U, has_uv_ ? 8U : 0U, with_features ? 4U : 0U};
@@ -298,15 +301,23 @@ void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, b
     layout_.offset[k] = layout_.stride;
     layout_.stride += layout_.size[k];
   }
+  layout_.float_features = options.feature_component == Component::kFloat;
   if (rows_capacity_ < n * layout_.stride) {
     rows_capacity_ = std::max(n * layout_.stride, 2 * rows_capacity_);
     rows_ = std::make_unique_for_overwrite<unsigned char[]>(rows_capacity_);
   }
-  const bool float_features = options.feature_component == Component::kFloat;
-  char* at = reinterpret_cast<char*>(rows_.get());
-  for (const Vertex& vertex : vertices_) {
+}
+
+// The rows of vertices [begin, end), every byte written (padding too), in one pass.
+void MeshAssembler::pack_rows(std::size_t begin, std::size_t end) {
+  const bool quantized = layout_.size[0] == 8;
+  const bool byte_normals = layout_.size[1] == 4;
+  const bool with_features = layout_.size[3] != 0;
+  char* at = reinterpret_cast<char*>(rows_.get()) + begin * layout_.stride;
+  for (std::size_t v = begin; v < end; ++v) {
+    const Vertex& vertex = vertices_[v];
     const Source& source = sources_[vertex.source];
-    if (record.quantized) {
+    if (quantized) {
       for (std::size_t k = 0; k < 3; ++k) {
         put_value(at, static_cast<std::uint16_t>(source.grid[k] - grid_low_[k]));
       }
@@ -315,7 +326,7 @@ void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, b
       for (double c : source.position) put_value(at, static_cast<float>(c));
     }
     const FaceNormal& normal = face_normals_[vertex.face];
-    if (options.quantize) {
+    if (byte_normals) {
       for (std::int8_t c : normal.bytes) put_value(at, c);  // the fourth byte is 0
     } else {
       for (float c : normal.normal) put_value(at, c);
@@ -323,7 +334,7 @@ void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, b
     if (has_uv_) {
       for (float c : vertex.uv) put_value(at, c);
     }
-    if (with_features && float_features) {
+    if (with_features && layout_.float_features) {
       put_value(at, static_cast<float>(vertex.feature));
     } else if (with_features) {
       put_value(at, static_cast<std::uint16_t>(vertex.feature));
@@ -357,6 +368,7 @@ bool MeshAssembler::loads_each_once(std::span<const unsigned int> run) {
 // otherwise cost parts x vertices.
 bool MeshAssembler::optimize_run(std::span<unsigned int> run) {
   if (loads_each_once(run)) return false;
+  if (local_of_.empty()) local_of_.assign(loaded_at_.size(), ~0U);
   global_of_.clear();
   for (unsigned int& v : run) {
     if (local_of_[v] == ~0U) {
@@ -398,7 +410,9 @@ bool MeshAssembler::order_by_feature(std::span<unsigned int> indices) {
   return reordered;
 }
 
-// representative_[v]: the first vertex alike v in every written byte. When the feature id is
+// representative_[v]: the first vertex alike v in every written byte; feature_of_[v] its feature
+// (the vertices' features side by side: numbering reads them in the indices' order, which jumps
+// across a tile's vertices). When the feature id is
 // written, vertices alike share a feature, and a feature's vertices were added together (part by
 // part): each run of one feature is merged on its own, in a table that stays in cache (one table
 // for a whole 3D Tiles tile missed it on most lookups).
@@ -406,12 +420,15 @@ void MeshAssembler::merge_rows() {
   const std::size_t n = vertices_.size();
   const bool by_feature = layout_.size[3] != 0;
   representative_.resize(n);
+  feature_of_.resize(n);
+  for (std::size_t v = 0; v < n; ++v) feature_of_[v] = vertices_[v].feature;
   for (std::size_t begin = 0; begin < n;) {
     std::size_t end = n;
     if (by_feature) {
       end = begin + 1;
-      while (end < n && vertices_[end].feature == vertices_[begin].feature) ++end;
+      while (end < n && feature_of_[end] == feature_of_[begin]) ++end;
     }
+    pack_rows(begin, end);  // hashed right away, while in cache
     find_representatives(begin, end);
     begin = end;
   }
@@ -426,6 +443,17 @@ void MeshAssembler::find_representatives(std::size_t begin, std::size_t end) {
   while (capacity < 2 * (end - begin)) capacity *= 2;
   slots_.assign(capacity, ~0U);
   const auto row = [&](std::size_t v) { return rows_.get() + v * stride; };
+  // Rows are whole 4-byte words: compared word by word inline (memcmp was a call a lookup).
+  const auto alike = [stride](const unsigned char* a, const unsigned char* b) {
+    for (std::size_t i = 0; i < stride; i += 4) {
+      std::uint32_t x;
+      std::uint32_t y;
+      std::memcpy(&x, a + i, 4);
+      std::memcpy(&y, b + i, 4);
+      if (x != y) return false;
+    }
+    return true;
+  };
   for (std::size_t v = begin; v < end; ++v) {
     std::uint64_t hash = 0;
     for (std::size_t i = 0; i < stride; i += 4) {
@@ -440,7 +468,7 @@ void MeshAssembler::find_representatives(std::size_t begin, std::size_t end) {
         representative_[v] = static_cast<std::uint32_t>(v);
         break;
       }
-      if (std::memcmp(row(other), row(v), stride) == 0) {
+      if (alike(row(other), row(v))) {
         representative_[v] = other;
         break;
       }
@@ -459,19 +487,22 @@ std::size_t MeshAssembler::merge_and_order() {
   merge_rows();
   class_of_.assign(vertices_.size(), ~0U);
   row_of_.clear();
-  for (unsigned int& index : indices_) {
-    const std::uint32_t representative = representative_[index];
-    unsigned int& number = class_of_[representative];
-    if (number == ~0U) {
-      number = static_cast<unsigned int>(row_of_.size());
-      row_of_.push_back(representative);
+  vertex_features_.clear();
+  unsigned int* out = indices_.data();
+  for (const auto& [material, list] : indices_by_material_) {
+    for (const std::uint32_t index : list) {
+      const std::uint32_t representative = representative_[index];
+      unsigned int& number = class_of_[representative];
+      if (number == ~0U) {
+        number = static_cast<unsigned int>(row_of_.size());
+        row_of_.push_back(representative);
+        vertex_features_.push_back(feature_of_[representative]);
+      }
+      *out++ = number;
     }
-    index = number;
   }
   const std::size_t count = row_of_.size();
-  vertex_features_.resize(count);
-  for (std::size_t w = 0; w < count; ++w) vertex_features_[w] = vertices_[row_of_[w]].feature;
-  local_of_.assign(count, ~0U);
+  local_of_.clear();  // sized by optimize_run when a run needs it
   loaded_at_.assign(count, ~0U);
   bool reordered = false;
   std::size_t begin = 0;
@@ -570,7 +601,7 @@ MeshRecord MeshAssembler::emit(Buffers& buffers, const MeshViews& views, const M
   MeshRecord record;
   gather_indices();
   quantize(options.quantize, record);
-  pack(record, options, with_features);
+  lay_out(record, options, with_features);
   const std::size_t count = merge_and_order();
   write_attributes(buffers, views, options, count, record);
   write_primitives(buffers, views, count, record);

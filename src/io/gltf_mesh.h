@@ -138,12 +138,14 @@ class MeshAssembler {
     std::uint32_t stride = 0;
     std::array<std::uint32_t, 4> offset{};  // position, normal, uv, feature
     std::array<std::uint32_t, 4> size{};
+    bool float_features = false;  // written as FLOAT, else UNSIGNED_SHORT
   };
 
   // The steps of emit().
   void gather_indices();
   void quantize(bool wanted, MeshRecord& record);
-  void pack(const MeshRecord& record, const MeshOptions& options, bool with_features);
+  void lay_out(const MeshRecord& record, const MeshOptions& options, bool with_features);
+  void pack_rows(std::size_t begin, std::size_t end);
   void merge_rows();
   void find_representatives(std::size_t begin, std::size_t end);
   std::size_t merge_and_order();
@@ -194,6 +196,7 @@ class MeshAssembler {
   std::size_t rows_capacity_ = 0;
   std::vector<std::uint32_t> slots_;            // merge_rows()'s hash table of vertices (~0: free)
   std::vector<std::uint32_t> representative_;   // vertex -> the first vertex alike
+  std::vector<std::uint32_t> feature_of_;       // vertex -> its feature
   std::vector<unsigned int> class_of_;          // representative -> merged vertex (~0: none yet)
   std::vector<unsigned int> fetch_;             // merged vertex -> written vertex
   std::vector<std::uint32_t> row_of_;           // merged, then written vertex -> a vertex alike

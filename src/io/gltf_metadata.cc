@@ -184,8 +184,8 @@ std::size_t PartTable::inherited_row(const shape::AttributeMap& map) {
 // own value, else the inherited one (both maps and the columns are sorted by name, so one walk).
 void PartTable::add_row(const shape::Part& part, std::size_t index) {
   Column& names = columns_[0];
-  names.codes.push_back(
-      part.name.empty() ? intern(names, "part" + std::to_string(index)) : intern(names, part.name));
+  names.codes.push_back(part.name.empty() ? intern(names, "part" + std::to_string(index))
+                                          : intern(names, part.name));
   // A handful of kinds: each one's code is kept rather than looked up row by row.
   const auto kind = static_cast<std::size_t>(part.kind);
   if (kind >= kind_codes_.size()) kind_codes_.resize(kind + 1, kAbsent);

@@ -72,9 +72,9 @@ class PartTable {
     std::vector<std::uint32_t> codes{};
     std::vector<std::string> values{};
     std::unordered_map<std::string, std::uint32_t, TextHash, std::equal_to<>>
-        index_of{};  // of `values`, while filling
-    std::vector<double> numbers{};                              // kNumber
-    std::vector<bool> booleans{};                               // kBoolean
+        index_of{};                 // of `values`, while filling
+    std::vector<double> numbers{};  // kNumber
+    std::vector<bool> booleans{};   // kBoolean
     // Dictionary coding of a text column (empty: written as STRING): the enum names in order,
     // and each value's enum code.
     std::vector<std::string> dictionary{};
