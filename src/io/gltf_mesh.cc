@@ -103,14 +103,18 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
   constexpr double kStepsPerMeter = 1 / kQuantizationStep;  // a power of two
   // Past 2^62 steps (or not finite) a position has no grid point: its mesh stays float.
   constexpr double kGridLimit = 4.6e18;
+  // Written in place: a Source built apart and copied in stalled on reloading its bytes.
+  sources_.resize(first_source_ + mesh.vertex_count());
+  Source* source = sources_.data() + first_source_;
   for (const kernel::Vec3& p : mesh.positions()) {
-    Source source{y_up(p), {}, true};
+    source->position = y_up(p);
+    source->on_grid = true;
     for (std::size_t k = 0; k < 3; ++k) {
-      const double steps = source.position[k] * kStepsPerMeter;  // exact, as the division
-      source.on_grid = source.on_grid && std::abs(steps) < kGridLimit;
-      if (source.on_grid) source.grid[k] = round_half_away(steps);
+      const double steps = source->position[k] * kStepsPerMeter;  // exact, as the division
+      source->on_grid = source->on_grid && std::abs(steps) < kGridLimit;
+      if (source->on_grid) source->grid[k] = round_half_away(steps);
     }
-    sources_.push_back(source);
+    ++source;
   }
   // Faces grouped by material, in mesh order within each.
   faces_by_material_.clear();
@@ -178,13 +182,14 @@ void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face,
 void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
                                 kernel::Vec3 newell, std::vector<std::uint32_t>& indices) {
   const std::array<double, 3> n = y_up(kernel::normalized(newell));
-  FaceNormal normal{};
+  const auto face = static_cast<std::uint32_t>(face_normals_.size());
+  // Written in place (zeroed, so the padding byte is 0): built apart, its bytes written one by
+  // one and copied in as a whole stalled the copy.
+  FaceNormal& normal = face_normals_.emplace_back();
   for (std::size_t k = 0; k < 3; ++k) {
     normal.normal[k] = static_cast<float>(n[k]);
     normal.bytes[k] = normal_byte(normal.normal[k]);
   }
-  const auto face = static_cast<std::uint32_t>(face_normals_.size());
-  face_normals_.push_back(normal);
   corner_uvs_.assign(loop.size(), {0.0F, 0.0F});
   if (part_->uv) {
     // The part's map is over world positions; an instance's mesh is placed first. glTF's v runs
