@@ -124,6 +124,7 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
   std::sort(faces_by_material_.begin(), faces_by_material_.end());  // (material, face): stable
   std::vector<std::uint32_t>* indices = nullptr;
   std::uint32_t current = std::numeric_limits<std::uint32_t>::max();
+  used_.assign(mesh.vertex_count(), 0);
   for (const auto& [material, face] : faces_by_material_) {
     if (material != current) {
       current = material;
@@ -137,6 +138,10 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
       fit_uv_ = material_textured_[material];
     }
     add_face(mesh, face, *indices);
+  }
+  // The bounds of the vertices some corner uses, once each rather than once a corner.
+  for (std::size_t v = 0; v < used_.size(); ++v) {
+    if (used_[v] != 0) bounds_.add(sources_[first_source_ + v]);
   }
   // A material all of whose faces were degenerate gets no primitive.
   std::erase_if(indices_by_material_, [this](auto& entry) {
@@ -214,7 +219,7 @@ void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::u
   const auto base = static_cast<std::uint32_t>(vertices_.size());
   for (std::size_t i = 0; i < loop.size(); ++i) {
     const std::uint32_t source = first_source_ + weld_.representative(loop[i]);
-    bounds_.add(sources_[source]);
+    used_[source - first_source_] = 1;
     vertices_.push_back(Vertex{source, face, corner_uvs_[i], feature_});
   }
   for (const CornerTriangle& triangle : triangles_) {
@@ -459,13 +464,18 @@ void MeshAssembler::find_representatives(std::size_t begin, std::size_t end) {
     }
     return true;
   };
+  // Each word times a constant of its own, summed: the products do not wait for each other as a
+  // chain of multiplications did. Any hash finds the same representatives.
+  static constexpr std::array<std::uint64_t, 4> kFactors{
+      0x9E3779B97F4A7C15ULL, 0xC2B2AE3D27D4EB4FULL, 0x165667B19E3779F9ULL, 0xD6E8FEB86659FD93ULL};
   for (std::size_t v = begin; v < end; ++v) {
     std::uint64_t hash = 0;
     for (std::size_t i = 0; i < stride; i += 4) {
       std::uint32_t word;
       std::memcpy(&word, row(v) + i, 4);
-      hash = (hash ^ word) * 0x9E3779B97F4A7C15ULL;
+      hash += (word + std::uint64_t{1}) * kFactors[(i / 4) % 4];
     }
+    hash ^= hash >> 29U;
     for (std::size_t slot = (hash >> 32U) & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
       const std::uint32_t other = slots_[slot];
       if (other == ~0U) {

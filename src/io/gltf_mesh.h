@@ -172,9 +172,10 @@ class MeshAssembler {
   // The part being added.
   const shape::Part* part_ = nullptr;
   bool instance_frame_ = false;
-  std::uint32_t first_source_ = 0;  // the part's vertex 0 in sources_
-  double uv_scale_ = 0;             // solid_geometry's texture size, 0: none
-  bool fit_uv_ = false;             // the face shows an image: UVs fit each face
+  std::uint32_t first_source_ = 0;   // the part's vertex 0 in sources_
+  std::vector<unsigned char> used_;  // by the part's vertex: some corner uses it
+  double uv_scale_ = 0;              // solid_geometry's texture size, 0: none
+  bool fit_uv_ = false;              // the face shows an image: UVs fit each face
   std::uint32_t feature_ = 0;
 
   // Scratch reused from face to face.
