@@ -596,6 +596,9 @@ bool triangulate(const Polygon& polygon, Triangulation& out) {
   thread_local Scratch scratch;
   Triangulator triangulator(out, scratch);
   out.status = triangulator.run(polygon);
+  // What a huge polygon needed is not kept for the thread's lifetime.
+  constexpr std::size_t kKeptNodes = std::size_t{1} << 16;
+  if (scratch.nodes.capacity() > kKeptNodes) scratch = Scratch{};
   if (out.status != TriangulationStatus::kOk) out.triangles.clear();
   return out.status == TriangulationStatus::kOk;
 }
