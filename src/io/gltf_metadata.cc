@@ -86,7 +86,6 @@ void for_each_attribute(const shape::Part& part, Own&& own, Inherited&& inherite
 
 PartTable::PartTable(const shape::Scene& scene) {
   find_columns(scene);
-  columns_[0].index_of.reserve(rows_);  // names: mostly distinct in a tile
   for (const shape::Building& building : scene.buildings) {
     for (std::size_t p = 0; p < building.parts.size(); ++p) add_row(building.parts[p], p);
   }
@@ -149,13 +148,35 @@ void PartTable::find_columns(const shape::Scene& scene) {
   }
 }
 
-// Looked up as a view, so a text met before (most of a city's) is not copied.
+// The column's code for `text`, a new one (in order of first use) for a text not met before. An
+// open-addressing table of codes, looked up by view: a map of strings allocated a node and a
+// copy of every distinct text (most of a tile's names and ids are distinct).
 std::uint32_t PartTable::intern(Column& column, std::string_view text) {
-  if (const auto it = column.index_of.find(text); it != column.index_of.end()) return it->second;
-  const auto code = static_cast<std::uint32_t>(column.values.size());
-  column.values.emplace_back(text);
-  column.index_of.emplace(column.values.back(), code);
-  return code;
+  std::vector<std::uint32_t>& slots = column.index_of;
+  if (2 * (column.values.size() + 1) > slots.size()) grow_index(column);
+  const std::size_t mask = slots.size() - 1;
+  const std::size_t hash = std::hash<std::string_view>{}(text);
+  for (std::size_t slot = hash & mask;; slot = (slot + 1) & mask) {
+    const std::uint32_t code = slots[slot];
+    if (code == kAbsent) {
+      slots[slot] = static_cast<std::uint32_t>(column.values.size());
+      column.values.emplace_back(text);
+      return slots[slot];
+    }
+    if (column.values[code] == text) return code;
+  }
+}
+
+// Doubles the column's table of codes (16 slots at first) and enters every text again.
+void PartTable::grow_index(Column& column) {
+  std::vector<std::uint32_t>& slots = column.index_of;
+  slots.assign(std::max<std::size_t>(16, 2 * slots.size()), kAbsent);
+  const std::size_t mask = slots.size() - 1;
+  for (std::uint32_t code = 0; code < column.values.size(); ++code) {
+    std::size_t slot = std::hash<std::string_view>{}(column.values[code]) & mask;
+    while (slots[slot] != kAbsent) slot = (slot + 1) & mask;
+    slots[slot] = code;
+  }
 }
 
 // The first of `map`'s entries in inherited_values_ and inherited_codes_ (one per attribute

@@ -54,13 +54,6 @@ class PartTable {
 
  private:
   enum class Type { kString, kNumber, kBoolean };
-  // Hashes texts and views of them alike (lookups by view).
-  struct TextHash {
-    using is_transparent = void;
-    std::size_t operator()(std::string_view text) const {
-      return std::hash<std::string_view>{}(text);
-    }
-  };
   static constexpr std::uint32_t kAbsent = ~0U;  // a text cell the part lacks
   struct Column {
     std::string id;    // the property id
@@ -71,8 +64,8 @@ class PartTable {
     // use) or kAbsent; a city repeats few texts over many rows.
     std::vector<std::uint32_t> codes{};
     std::vector<std::string> values{};
-    std::unordered_map<std::string, std::uint32_t, TextHash, std::equal_to<>>
-        index_of{};                 // of `values`, while filling
+    // While filling: the codes of `values`, open addressing by text hash (kAbsent: free).
+    std::vector<std::uint32_t> index_of{};
     std::vector<double> numbers{};  // kNumber
     std::vector<bool> booleans{};   // kBoolean
     // Dictionary coding of a text column (empty: written as STRING): the enum names in order,
@@ -87,6 +80,7 @@ class PartTable {
   void add_row(const shape::Part& part, std::size_t index);
   std::size_t inherited_row(const shape::AttributeMap& map);
   static std::uint32_t intern(Column& column, std::string_view text);
+  static void grow_index(Column& column);
   static void make_dictionary(Column& column);
   void write_class_property(JsonStream& json, const Column& column) const;
 
