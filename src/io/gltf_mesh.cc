@@ -34,9 +34,14 @@ std::int8_t normal_byte(float c) {
 // case of its own so every copy is a fixed-size move.
 void gather_column(char* out, const unsigned char* column, std::size_t stride, std::uint32_t size,
                    std::span<const std::uint32_t> rows) {
+  // A tile's rows are megabytes read in the order of first use: the rows a few steps ahead are
+  // asked for early (the order is known; the processor's prefetcher cannot guess it).
+  constexpr std::size_t kAhead = 16;
   const auto gather = [&]<std::size_t Size>(std::integral_constant<std::size_t, Size>) {
-    for (std::uint32_t row : rows) {
-      std::memcpy(out, column + row * stride, Size);
+    const std::size_t n = rows.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i + kAhead < n) __builtin_prefetch(column + std::size_t{rows[i + kAhead]} * stride);
+      std::memcpy(out, column + std::size_t{rows[i]} * stride, Size);
       out += Size;
     }
   };
@@ -83,6 +88,13 @@ void MeshAssembler::clear() {
   }
   indices_by_material_.clear();
   has_uv_ = false;
+  bounds_ = Bounds{};
+}
+
+void MeshAssembler::reserve(std::size_t vertices, std::size_t corners, std::size_t faces) {
+  sources_.reserve(sources_.size() + vertices);
+  vertices_.reserve(vertices_.size() + corners);
+  face_normals_.reserve(face_normals_.size() + faces);
 }
 
 void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::uint32_t feature,
@@ -96,14 +108,18 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
   constexpr double kStepsPerMeter = 1 / kQuantizationStep;  // a power of two
   // Past 2^62 steps (or not finite) a position has no grid point: its mesh stays float.
   constexpr double kGridLimit = 4.6e18;
+  // Written in place: a Source built apart and copied in stalled on reloading its bytes.
+  sources_.resize(first_source_ + mesh.vertex_count());
+  Source* source = sources_.data() + first_source_;
   for (const kernel::Vec3& p : mesh.positions()) {
-    Source source{y_up(p), {}, true};
+    source->position = y_up(p);
+    source->on_grid = true;
     for (std::size_t k = 0; k < 3; ++k) {
-      const double steps = source.position[k] * kStepsPerMeter;  // exact, as the division
-      source.on_grid = source.on_grid && std::abs(steps) < kGridLimit;
-      if (source.on_grid) source.grid[k] = round_half_away(steps);
+      const double steps = source->position[k] * kStepsPerMeter;  // exact, as the division
+      source->on_grid = source->on_grid && std::abs(steps) < kGridLimit;
+      if (source->on_grid) source->grid[k] = round_half_away(steps);
     }
-    sources_.push_back(source);
+    ++source;
   }
   // Faces grouped by material, in mesh order within each.
   faces_by_material_.clear();
@@ -113,6 +129,7 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
   std::sort(faces_by_material_.begin(), faces_by_material_.end());  // (material, face): stable
   std::vector<std::uint32_t>* indices = nullptr;
   std::uint32_t current = std::numeric_limits<std::uint32_t>::max();
+  used_.assign(mesh.vertex_count(), 0);
   for (const auto& [material, face] : faces_by_material_) {
     if (material != current) {
       current = material;
@@ -126,6 +143,10 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
       fit_uv_ = material_textured_[material];
     }
     add_face(mesh, face, *indices);
+  }
+  // The bounds of the vertices some corner uses, once each rather than once a corner.
+  for (std::size_t v = 0; v < used_.size(); ++v) {
+    if (used_[v] != 0) bounds_.add(sources_[first_source_ + v]);
   }
   // A material all of whose faces were degenerate gets no primitive.
   std::erase_if(indices_by_material_, [this](auto& entry) {
@@ -171,13 +192,14 @@ void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face,
 void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
                                 kernel::Vec3 newell, std::vector<std::uint32_t>& indices) {
   const std::array<double, 3> n = y_up(kernel::normalized(newell));
-  FaceNormal normal{};
+  const auto face = static_cast<std::uint32_t>(face_normals_.size());
+  // Written in place (zeroed, so the padding byte is 0): built apart, its bytes written one by
+  // one and copied in as a whole stalled the copy.
+  FaceNormal& normal = face_normals_.emplace_back();
   for (std::size_t k = 0; k < 3; ++k) {
     normal.normal[k] = static_cast<float>(n[k]);
     normal.bytes[k] = normal_byte(normal.normal[k]);
   }
-  const auto face = static_cast<std::uint32_t>(face_normals_.size());
-  face_normals_.push_back(normal);
   corner_uvs_.assign(loop.size(), {0.0F, 0.0F});
   if (part_->uv) {
     // The part's map is over world positions; an instance's mesh is placed first. glTF's v runs
@@ -201,8 +223,9 @@ void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::u
   }
   const auto base = static_cast<std::uint32_t>(vertices_.size());
   for (std::size_t i = 0; i < loop.size(); ++i) {
-    vertices_.push_back(
-        Vertex{first_source_ + weld_.representative(loop[i]), face, corner_uvs_[i], feature_});
+    const std::uint32_t source = first_source_ + weld_.representative(loop[i]);
+    used_[source - first_source_] = 1;
+    vertices_.push_back(Vertex{source, face, corner_uvs_[i], feature_});
   }
   for (const CornerTriangle& triangle : triangles_) {
     for (std::uint32_t corner : triangle) indices.push_back(base + corner);
@@ -232,62 +255,59 @@ void MeshAssembler::fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint3
   }
 }
 
-// Concatenates the materials' triangles (materials in table order); ends_ marks each run's end.
+// The materials' triangles one after the other (materials in table order): ends_ marks each
+// run's end in indices_.
 void MeshAssembler::gather_indices() {
   std::sort(indices_by_material_.begin(), indices_by_material_.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
-  indices_.clear();
   ends_.clear();
+  std::size_t end = 0;
   for (const auto& [material, list] : indices_by_material_) {
-    indices_.insert(indices_.end(), list.begin(), list.end());
-    ends_.push_back(indices_.size());
+    end += list.size();
+    ends_.push_back(end);
+  }
+  indices_.resize(end);  // filled by merge_and_order, numbered as they are copied
+}
+
+void MeshAssembler::Bounds::add(const Source& source) {
+  on_grid = on_grid && source.on_grid;
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (source.on_grid) {
+      low[k] = std::min(low[k], source.grid[k]);
+      high[k] = std::max(high[k], source.grid[k]);
+    }
+    const double c = static_cast<float>(source.position[k]);
+    min[k] = std::min(min[k], c);
+    max[k] = std::max(max[k], c);
   }
 }
 
 // Whether the mesh's extent on the quantization grid fits 16 bits; sets the record's offset and
-// scale (and grid_low_) when it does, and its POSITION bounds either way.
+// scale (and grid_low_) when it does, and its POSITION bounds either way. The bounds are those of
+// every vertex added (each is used by a triangle, so merging and reordering keep them).
 void MeshAssembler::quantize(bool wanted, MeshRecord& record) {
-  std::array<std::int64_t, 3> low{};
-  std::array<std::int64_t, 3> high{};
-  low.fill(std::numeric_limits<std::int64_t>::max());
-  high.fill(std::numeric_limits<std::int64_t>::lowest());
-  for (const Vertex& vertex : vertices_) {
-    const Source& source = sources_[vertex.source];
-    wanted = wanted && source.on_grid;
-    if (!wanted) break;
-    for (std::size_t k = 0; k < 3; ++k) {
-      low[k] = std::min(low[k], source.grid[k]);
-      high[k] = std::max(high[k], source.grid[k]);
-    }
-  }
-  record.quantized = wanted && !vertices_.empty();
+  record.quantized = wanted && bounds_.on_grid && !vertices_.empty();
   for (std::size_t k = 0; k < 3 && record.quantized; ++k)
-    record.quantized = high[k] - low[k] <= 65535;
+    record.quantized = bounds_.high[k] - bounds_.low[k] <= 65535;
   if (record.quantized) {
     record.scale = kQuantizationStep;
-    grid_low_ = low;
+    grid_low_ = bounds_.low;
     for (std::size_t k = 0; k < 3; ++k) {
-      record.offset[k] = static_cast<double>(low[k]) * kQuantizationStep;
+      record.offset[k] = static_cast<double>(bounds_.low[k]) * kQuantizationStep;
       record.min[k] = 0;
-      record.max[k] = static_cast<double>(high[k] - low[k]);
+      record.max[k] = static_cast<double>(bounds_.high[k] - bounds_.low[k]);
     }
     return;
   }
-  // Float32 bounds. Every vertex is used by a triangle, so merging and reordering keep them.
-  record.min.fill(std::numeric_limits<double>::max());
-  record.max.fill(std::numeric_limits<double>::lowest());
-  for (const Vertex& vertex : vertices_) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      const double c = static_cast<float>(sources_[vertex.source].position[k]);
-      record.min[k] = std::min(record.min[k], c);
-      record.max[k] = std::max(record.max[k], c);
-    }
-  }
+  record.min = bounds_.min;
+  record.max = bounds_.max;
 }
 
 // Every vertex's attributes as they will be written, side by side in one row (padding zero):
-// positions, normals, then uvs and feature ids when written.
-void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, bool with_features) {
+// positions, normals, then uvs and feature ids when written. Lays out the rows; merge_rows() packs
+// them run by run.
+void MeshAssembler::lay_out(const MeshRecord& record, const MeshOptions& options,
+                            bool with_features) {
   const std::size_t n = vertices_.size();
   layout_.size = {record.quantized ? 8U : 12U,  // quantized: x, y, z, padding
                   options.quantize ? 4U : 12U, has_uv_ ? 8U : 0U, with_features ? 4U : 0U};
@@ -296,53 +316,46 @@ void MeshAssembler::pack(const MeshRecord& record, const MeshOptions& options, b
     layout_.offset[k] = layout_.stride;
     layout_.stride += layout_.size[k];
   }
-  rows_.assign(n * layout_.stride, 0);
-  // One attribute at a time, so that each loop has one thing to do.
-  const auto fill = [&](std::size_t attribute, auto&& write) {
-    char* row = reinterpret_cast<char*>(rows_.data()) + layout_.offset[attribute];
-    for (const Vertex& vertex : vertices_) {
-      char* at = row;
-      write(at, vertex);
-      row += layout_.stride;
-    }
-  };
-  if (record.quantized) {
-    fill(0, [&](char*& at, const Vertex& vertex) {
-      const Source& source = sources_[vertex.source];
+  layout_.float_features = options.feature_component == Component::kFloat;
+  if (rows_capacity_ < n * layout_.stride) {
+    rows_capacity_ = std::max(n * layout_.stride, 2 * rows_capacity_);
+    rows_ = std::make_unique_for_overwrite<unsigned char[]>(rows_capacity_);
+  }
+}
+
+// The rows of vertices [begin, end), every byte written (padding too), in one pass.
+void MeshAssembler::pack_rows(std::size_t begin, std::size_t end) {
+  const bool quantized = layout_.size[0] == 8;
+  const bool byte_normals = layout_.size[1] == 4;
+  const bool with_features = layout_.size[3] != 0;
+  char* at = reinterpret_cast<char*>(rows_.get()) + begin * layout_.stride;
+  for (std::size_t v = begin; v < end; ++v) {
+    const Vertex& vertex = vertices_[v];
+    const Source& source = sources_[vertex.source];
+    if (quantized) {
       for (std::size_t k = 0; k < 3; ++k) {
         put_value(at, static_cast<std::uint16_t>(source.grid[k] - grid_low_[k]));
       }
-    });
-  } else {
-    fill(0, [&](char*& at, const Vertex& vertex) {
-      for (double c : sources_[vertex.source].position) put_value(at, static_cast<float>(c));
-    });
-  }
-  if (options.quantize) {
-    fill(1, [&](char*& at, const Vertex& vertex) {
-      for (std::int8_t c : face_normals_[vertex.face].bytes) put_value(at, c);
-    });
-  } else {
-    fill(1, [&](char*& at, const Vertex& vertex) {
-      for (float c : face_normals_[vertex.face].normal) put_value(at, c);
-    });
-  }
-  if (has_uv_) {
-    fill(2, [](char*& at, const Vertex& vertex) {
+      put_value(at, std::uint16_t{0});
+    } else {
+      for (double c : source.position) put_value(at, static_cast<float>(c));
+    }
+    const FaceNormal& normal = face_normals_[vertex.face];
+    if (byte_normals) {
+      for (std::int8_t c : normal.bytes) put_value(at, c);  // the fourth byte is 0
+    } else {
+      for (float c : normal.normal) put_value(at, c);
+    }
+    if (has_uv_) {
       for (float c : vertex.uv) put_value(at, c);
-    });
-  }
-  if (with_features && options.feature_component == Component::kFloat) {
-    fill(3, [](char*& at, const Vertex& vertex) {
+    }
+    if (with_features && layout_.float_features) {
       put_value(at, static_cast<float>(vertex.feature));
-    });
-  } else if (with_features) {
-    fill(3, [](char*& at, const Vertex& vertex) {
+    } else if (with_features) {
       put_value(at, static_cast<std::uint16_t>(vertex.feature));
-    });
+      put_value(at, std::uint16_t{0});
+    }
   }
-  vertex_features_.resize(n);
-  for (std::size_t v = 0; v < n; ++v) vertex_features_[v] = vertices_[v].feature;
 }
 
 // Whether a FIFO cache of kCacheSize vertices (meshopt's model of a GPU's) loads each vertex of
@@ -368,8 +381,9 @@ bool MeshAssembler::loads_each_once(std::span<const unsigned int> run) {
 // Optimises one run of triangles for the vertex cache over the vertices it uses only: meshopt
 // sizes its work by the vertex count it is given, so a building of thousands of parts would
 // otherwise cost parts x vertices.
-void MeshAssembler::optimize_run(std::span<unsigned int> run) {
-  if (loads_each_once(run)) return;
+bool MeshAssembler::optimize_run(std::span<unsigned int> run) {
+  if (loads_each_once(run)) return false;
+  if (local_of_.empty()) local_of_.assign(loaded_at_.size(), ~0U);
   global_of_.clear();
   for (unsigned int& v : run) {
     if (local_of_[v] == ~0U) {
@@ -381,11 +395,13 @@ void MeshAssembler::optimize_run(std::span<unsigned int> run) {
   meshopt_optimizeVertexCache(run.data(), run.data(), run.size(), global_of_.size());
   for (unsigned int& v : run) v = global_of_[v];
   for (unsigned int v : global_of_) local_of_[v] = ~0U;
+  return true;
 }
 
 // Sorts the triangles of `indices` by the feature of their first corner (stably; they usually
-// come sorted, part after part), then optimises each feature's run for the vertex cache.
-void MeshAssembler::order_by_feature(std::span<unsigned int> indices) {
+// come sorted, part after part), then optimises each feature's run for the vertex cache. Returns
+// whether it changed the order of any triangle or index.
+bool MeshAssembler::order_by_feature(std::span<unsigned int> indices) {
   const std::vector<std::uint32_t>& features = vertex_features_;
   const std::size_t triangles = indices.size() / 3;
   const auto feature = [&](std::size_t t) { return features[indices[3 * t]]; };
@@ -399,42 +415,38 @@ void MeshAssembler::order_by_feature(std::span<unsigned int> indices) {
         [&features](const auto& a, const auto& b) { return features[a[0]] < features[b[0]]; });
     std::memcpy(indices.data(), sorted_triangles_.data(), indices.size() * sizeof(unsigned int));
   }
+  bool reordered = !sorted;
   for (std::size_t begin = 0; begin < triangles;) {
     std::size_t end = begin + 1;
     while (end < triangles && feature(end) == feature(begin)) ++end;
-    optimize_run(indices.subspan(3 * begin, 3 * (end - begin)));
+    reordered = optimize_run(indices.subspan(3 * begin, 3 * (end - begin))) || reordered;
     begin = end;
   }
+  return reordered;
 }
 
-// Numbers the vertices alike in every written byte as one, in order of first use by the indices
-// (as meshopt_generateVertexRemap does), in remap_ (~0: unused); returns the count. When the
-// feature id is written, vertices alike share a feature, and a feature's vertices were added
-// together (part by part): each run of one feature is merged on its own, in a table that stays in
-// cache (one table for a whole 3D Tiles tile missed it on most lookups).
-std::size_t MeshAssembler::merge_rows() {
+// representative_[v]: the first vertex alike v in every written byte; feature_of_[v] its feature
+// (the vertices' features side by side: numbering reads them in the indices' order, which jumps
+// across a tile's vertices). When the feature id is
+// written, vertices alike share a feature, and a feature's vertices were added together (part by
+// part): each run of one feature is merged on its own, in a table that stays in cache (one table
+// for a whole 3D Tiles tile missed it on most lookups).
+void MeshAssembler::merge_rows() {
   const std::size_t n = vertices_.size();
   const bool by_feature = layout_.size[3] != 0;
   representative_.resize(n);
+  feature_of_.resize(n);
+  for (std::size_t v = 0; v < n; ++v) feature_of_[v] = vertices_[v].feature;
   for (std::size_t begin = 0; begin < n;) {
     std::size_t end = n;
     if (by_feature) {
       end = begin + 1;
-      while (end < n && vertices_[end].feature == vertices_[begin].feature) ++end;
+      while (end < n && feature_of_[end] == feature_of_[begin]) ++end;
     }
+    pack_rows(begin, end);  // hashed right away, while in cache
     find_representatives(begin, end);
     begin = end;
   }
-  remap_.assign(n, ~0U);
-  class_of_.assign(n, ~0U);
-  unsigned int count = 0;
-  for (const unsigned int v : indices_) {
-    if (remap_[v] != ~0U) continue;
-    unsigned int& number = class_of_[representative_[v]];
-    if (number == ~0U) number = count++;
-    remap_[v] = number;
-  }
-  return count;
 }
 
 // representative_[v] for the vertices [begin, end): the first of them alike in every written
@@ -445,14 +457,30 @@ void MeshAssembler::find_representatives(std::size_t begin, std::size_t end) {
   std::size_t capacity = 16;
   while (capacity < 2 * (end - begin)) capacity *= 2;
   slots_.assign(capacity, ~0U);
-  const auto row = [&](std::size_t v) { return rows_.data() + v * stride; };
+  const auto row = [&](std::size_t v) { return rows_.get() + v * stride; };
+  // Rows are whole 4-byte words: compared word by word inline (memcmp was a call a lookup).
+  const auto alike = [stride](const unsigned char* a, const unsigned char* b) {
+    for (std::size_t i = 0; i < stride; i += 4) {
+      std::uint32_t x;
+      std::uint32_t y;
+      std::memcpy(&x, a + i, 4);
+      std::memcpy(&y, b + i, 4);
+      if (x != y) return false;
+    }
+    return true;
+  };
+  // Each word times a constant of its own, summed: the products do not wait for each other as a
+  // chain of multiplications did. Any hash finds the same representatives.
+  static constexpr std::array<std::uint64_t, 4> kFactors{
+      0x9E3779B97F4A7C15ULL, 0xC2B2AE3D27D4EB4FULL, 0x165667B19E3779F9ULL, 0xD6E8FEB86659FD93ULL};
   for (std::size_t v = begin; v < end; ++v) {
     std::uint64_t hash = 0;
     for (std::size_t i = 0; i < stride; i += 4) {
       std::uint32_t word;
       std::memcpy(&word, row(v) + i, 4);
-      hash = (hash ^ word) * 0x9E3779B97F4A7C15ULL;
+      hash += (word + std::uint64_t{1}) * kFactors[(i / 4) % 4];
     }
+    hash ^= hash >> 29U;
     for (std::size_t slot = (hash >> 32U) & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
       const std::uint32_t other = slots_[slot];
       if (other == ~0U) {
@@ -460,7 +488,7 @@ void MeshAssembler::find_representatives(std::size_t begin, std::size_t end) {
         representative_[v] = static_cast<std::uint32_t>(v);
         break;
       }
-      if (std::memcmp(row(other), row(v), stride) == 0) {
+      if (alike(row(other), row(v))) {
         representative_[v] = other;
         break;
       }
@@ -468,43 +496,62 @@ void MeshAssembler::find_representatives(std::size_t begin, std::size_t end) {
   }
 }
 
-// Vertices alike in every written attribute become one; triangles part by part (a part's faces
-// lie together, and the feature ids then come in runs, which EXT_meshopt_compression stores in
-// almost nothing), each part's in the order that suits the vertex cache; then vertices in the
-// order of first use, for fetch. Leaves indices_ and vertex_features_ over the written vertices,
-// and row_of_ naming the row each writes; returns their count.
+// Vertices alike in every written attribute become one, numbered in order of first use by the
+// indices (as meshopt_generateVertexRemap does); triangles part by part (a part's faces lie
+// together, and the feature ids then come in runs, which EXT_meshopt_compression stores in almost
+// nothing), each part's in the order that suits the vertex cache; then vertices in the order of
+// first use, for fetch, which is already theirs unless a run was reordered. Leaves indices_ and
+// vertex_features_ over the written vertices, and row_of_ naming the row each writes; returns
+// their count.
 std::size_t MeshAssembler::merge_and_order() {
-  const std::size_t n = vertices_.size();
-  const std::size_t merged = merge_rows();
-  for (unsigned int& index : indices_) index = remap_[index];
-  moved_features_.resize(merged);
-  for (std::size_t v = 0; v < n; ++v) {
-    if (remap_[v] != ~0U) moved_features_[remap_[v]] = vertex_features_[v];
+  merge_rows();
+  class_of_.assign(vertices_.size(), ~0U);
+  row_of_.clear();
+  vertex_features_.clear();
+  unsigned int* out = indices_.data();
+  for (const auto& [material, list] : indices_by_material_) {
+    for (const std::uint32_t index : list) {
+      const std::uint32_t representative = representative_[index];
+      unsigned int& number = class_of_[representative];
+      if (number == ~0U) {
+        number = static_cast<unsigned int>(row_of_.size());
+        row_of_.push_back(representative);
+        vertex_features_.push_back(feature_of_[representative]);
+      }
+      *out++ = number;
+    }
   }
-  std::swap(vertex_features_, moved_features_);
-  local_of_.assign(merged, ~0U);
-  loaded_at_.assign(merged, ~0U);
+  const std::size_t count = row_of_.size();
+  local_of_.clear();  // sized by optimize_run when a run needs it
+  loaded_at_.assign(count, ~0U);
+  bool reordered = false;
   std::size_t begin = 0;
   for (std::size_t end : ends_) {
-    order_by_feature(std::span(indices_).subspan(begin, end - begin));
+    reordered = order_by_feature(std::span(indices_).subspan(begin, end - begin)) || reordered;
     begin = end;
   }
-  // Every merged vertex is used (meshopt numbers only those the indices name).
-  fetch_.assign(merged, ~0U);
-  unsigned int count = 0;
+  if (reordered) number_for_fetch();
+  return count;
+}
+
+// Renumbers the vertices in order of first use by the reordered indices. Every merged vertex is
+// used (meshopt numbers only those the indices name).
+void MeshAssembler::number_for_fetch() {
+  const std::size_t count = row_of_.size();
+  fetch_.assign(count, ~0U);
+  unsigned int next = 0;
   for (unsigned int& index : indices_) {
-    if (fetch_[index] == ~0U) fetch_[index] = count++;
+    if (fetch_[index] == ~0U) fetch_[index] = next++;
     index = fetch_[index];
   }
-  row_of_.resize(count);
+  moved_rows_.resize(count);
   moved_features_.resize(count);
-  for (std::uint32_t v = 0; v < n; ++v) {
-    if (remap_[v] == ~0U) continue;
-    row_of_[fetch_[remap_[v]]] = v;
+  for (std::size_t w = 0; w < count; ++w) {
+    moved_rows_[fetch_[w]] = row_of_[w];
+    moved_features_[fetch_[w]] = vertex_features_[w];
   }
-  for (std::size_t w = 0; w < count; ++w) moved_features_[w] = vertex_features_[remap_[row_of_[w]]];
+  std::swap(row_of_, moved_rows_);
   std::swap(vertex_features_, moved_features_);
-  return count;
 }
 
 // Each attribute's slice of the written vertices' rows, appended to its view.
@@ -517,7 +564,7 @@ void MeshAssembler::write_attributes(Buffers& buffers, const MeshViews& views,
     const std::size_t offset = data.size();
     const std::uint32_t size = layout_.size[k];
     data.resize(offset + count * size);
-    gather_column(data.data() + offset, rows_.data() + layout_.offset[k], layout_.stride, size,
+    gather_column(data.data() + offset, rows_.get() + layout_.offset[k], layout_.stride, size,
                   row_of_);
     return buffers.add_accessor(
         Accessor{view, offset, component, count, type, normalized, std::nullopt, std::nullopt});
@@ -574,7 +621,7 @@ MeshRecord MeshAssembler::emit(Buffers& buffers, const MeshViews& views, const M
   MeshRecord record;
   gather_indices();
   quantize(options.quantize, record);
-  pack(record, options, with_features);
+  lay_out(record, options, with_features);
   const std::size_t count = merge_and_order();
   write_attributes(buffers, views, options, count, record);
   write_primitives(buffers, views, count, record);

@@ -10,7 +10,9 @@
 #pragma once
 
 #include <array>
+#include <cfloat>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -78,6 +80,9 @@ class MeshAssembler {
   MeshAssembler(const MaterialTable& materials, std::vector<bool> material_textured);
 
   void clear();
+  // Room for meshes of `vertices`, `corners` (face loop entries) and `faces` more in all, to be
+  // added before the next emit: a 3D Tiles tile's one mesh grew by copying megabytes otherwise.
+  void reserve(std::size_t vertices, std::size_t corners, std::size_t faces);
   // Adds the faces of `mesh`, each vertex carrying `feature` (when features are written). `mesh`
   // is `part`'s geometry where it stands, or with `instance_frame` the mesh `part` instances
   // (before its placement; the part's uv map is then evaluated at placed positions).
@@ -97,6 +102,16 @@ class MeshAssembler {
     std::array<double, 3> position;    // Y-up
     std::array<std::int64_t, 3> grid;  // the nearest quantization grid point, when on_grid
     bool on_grid;
+  };
+  // The grid and float32 bounds of the vertices added, kept as they are added (a pass over a
+  // tile's vertices at the end missed the cache on most of them).
+  struct Bounds {
+    bool on_grid = true;  // every vertex has a grid point (low and high are meaningful)
+    std::array<std::int64_t, 3> low{INT64_MAX, INT64_MAX, INT64_MAX};
+    std::array<std::int64_t, 3> high{INT64_MIN, INT64_MIN, INT64_MIN};
+    std::array<double, 3> min{DBL_MAX, DBL_MAX, DBL_MAX};
+    std::array<double, 3> max{-DBL_MAX, -DBL_MAX, -DBL_MAX};
+    void add(const Source& source);
   };
   // A face's unit normal (Y-up), and as normalized bytes (the fourth is padding).
   struct FaceNormal {
@@ -123,18 +138,21 @@ class MeshAssembler {
     std::uint32_t stride = 0;
     std::array<std::uint32_t, 4> offset{};  // position, normal, uv, feature
     std::array<std::uint32_t, 4> size{};
+    bool float_features = false;  // written as FLOAT, else UNSIGNED_SHORT
   };
 
   // The steps of emit().
   void gather_indices();
   void quantize(bool wanted, MeshRecord& record);
-  void pack(const MeshRecord& record, const MeshOptions& options, bool with_features);
-  std::size_t merge_rows();
+  void lay_out(const MeshRecord& record, const MeshOptions& options, bool with_features);
+  void pack_rows(std::size_t begin, std::size_t end);
+  void merge_rows();
   void find_representatives(std::size_t begin, std::size_t end);
   std::size_t merge_and_order();
-  void order_by_feature(std::span<unsigned int> indices);
+  void number_for_fetch();
+  bool order_by_feature(std::span<unsigned int> indices);
   bool loads_each_once(std::span<const unsigned int> run);
-  void optimize_run(std::span<unsigned int> run);
+  bool optimize_run(std::span<unsigned int> run);
   void write_attributes(Buffers& buffers, const MeshViews& views, const MeshOptions& options,
                         std::size_t count, MeshRecord& record);
   void write_primitives(Buffers& buffers, const MeshViews& views, std::size_t count,
@@ -149,13 +167,15 @@ class MeshAssembler {
   std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> indices_by_material_;
   std::vector<std::vector<std::uint32_t>> spare_lists_;  // emptied lists, kept for their room
   bool has_uv_ = false;
+  Bounds bounds_;
 
   // The part being added.
   const shape::Part* part_ = nullptr;
   bool instance_frame_ = false;
-  std::uint32_t first_source_ = 0;  // the part's vertex 0 in sources_
-  double uv_scale_ = 0;             // solid_geometry's texture size, 0: none
-  bool fit_uv_ = false;             // the face shows an image: UVs fit each face
+  std::uint32_t first_source_ = 0;   // the part's vertex 0 in sources_
+  std::vector<unsigned char> used_;  // by the part's vertex: some corner uses it
+  double uv_scale_ = 0;              // solid_geometry's texture size, 0: none
+  bool fit_uv_ = false;              // the face shows an image: UVs fit each face
   std::uint32_t feature_ = 0;
 
   // Scratch reused from face to face.
@@ -171,15 +191,19 @@ class MeshAssembler {
   std::vector<std::size_t> ends_;           // end of each material's run in indices_
   std::array<std::int64_t, 3> grid_low_{};  // the quantized mesh's grid origin
   RowLayout layout_;
-  std::vector<unsigned char> rows_;   // each vertex's written attributes, layout_.stride bytes
-  std::vector<unsigned int> remap_;   // vertex -> merged vertex (~0: unused)
-  std::vector<std::uint32_t> slots_;  // merge_rows()'s hash table of vertices (~0: free)
+  // Each vertex's written attributes, layout_.stride bytes; never zeroed (pack writes every
+  // byte), so a tile's megabytes of rows are written once.
+  std::unique_ptr<unsigned char[]> rows_;
+  std::size_t rows_capacity_ = 0;
+  std::vector<std::uint32_t> slots_;            // merge_rows()'s hash table of vertices (~0: free)
   std::vector<std::uint32_t> representative_;   // vertex -> the first vertex alike
-  std::vector<std::uint32_t> class_of_;         // representative -> merged vertex (~0: none yet)
+  std::vector<std::uint32_t> feature_of_;       // vertex -> its feature
+  std::vector<unsigned int> class_of_;          // representative -> merged vertex (~0: none yet)
   std::vector<unsigned int> fetch_;             // merged vertex -> written vertex
-  std::vector<std::uint32_t> row_of_;           // written vertex -> a vertex whose row it writes
-  std::vector<std::uint32_t> vertex_features_;  // by vertex, then by merged, then written vertex
+  std::vector<std::uint32_t> row_of_;           // merged, then written vertex -> a vertex alike
+  std::vector<std::uint32_t> vertex_features_;  // by merged, then written vertex
   std::vector<std::uint32_t> moved_features_;
+  std::vector<std::uint32_t> moved_rows_;
   std::vector<std::array<unsigned int, 3>> sorted_triangles_;
   std::vector<unsigned int> local_of_;  // order_by_feature: merged vertex -> run's own numbering
   std::vector<unsigned int> global_of_;

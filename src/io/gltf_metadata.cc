@@ -108,29 +108,33 @@ void PartTable::find_columns(const shape::Scene& scene) {
     s.numbers = s.numbers && std::holds_alternative<double>(value);
     s.booleans = s.booleans && std::holds_alternative<bool>(value);
   };
-  // Each inherited map's entries as Seen records, looked up once for all parts sharing it.
-  std::unordered_map<const shape::AttributeMap*, std::vector<Seen*>> inherited_seen;
+  // Each inherited map's entries as Seen records, looked up once for all parts sharing it (flat:
+  // a map's first entry by map), the last map first (a building's parts come together).
+  std::unordered_map<const shape::AttributeMap*, std::size_t> inherited_seen;
+  std::vector<Seen*> entries;
+  const shape::AttributeMap* last = nullptr;
+  std::size_t first = 0;
   for (const shape::Building& building : scene.buildings) {
     for (const shape::Part& part : building.parts) {
       ++rows_;
-      std::vector<Seen*>* entries = nullptr;
-      if (part.inherited) {
-        const auto [it, added] = inherited_seen.try_emplace(part.inherited.get());
+      if (part.inherited && part.inherited.get() != last) {
+        last = part.inherited.get();
+        const auto [it, added] = inherited_seen.try_emplace(last, entries.size());
+        first = it->second;
         if (added) {
           // A null makes no column (as a copied null did not): no entry for it.
-          for (const auto& [key, value] : *part.inherited) {
-            it->second.push_back(shape::is_null(value) ? nullptr
-                                                       : &seen.try_emplace(key).first->second);
+          for (const auto& [key, value] : *last) {
+            entries.push_back(shape::is_null(value) ? nullptr
+                                                    : &seen.try_emplace(key).first->second);
           }
         }
-        entries = &it->second;
       }
       for_each_attribute(
           part,
           [&](const std::string& key, const shape::Value& value) {
             note(seen.try_emplace(key).first->second, value);
           },
-          [&](std::size_t i, const shape::Value& value) { note(*(*entries)[i], value); });
+          [&](std::size_t i, const shape::Value& value) { note(*entries[first + i], value); });
     }
   }
   std::set<std::string> taken{"kind", "name"};
@@ -144,37 +148,72 @@ void PartTable::find_columns(const shape::Scene& scene) {
   }
 }
 
-std::uint32_t PartTable::intern(Column& column, std::string text) {
-  const auto [it, added] = column.index_of.try_emplace(
-      std::move(text), static_cast<std::uint32_t>(column.values.size()));
-  if (added) column.values.push_back(it->first);
-  return it->second;
+// The column's code for `text`, a new one (in order of first use) for a text not met before. An
+// open-addressing table of codes, looked up by view: a map of strings allocated a node and a
+// copy of every distinct text (most of a tile's names and ids are distinct).
+std::uint32_t PartTable::intern(Column& column, std::string_view text) {
+  std::vector<std::uint32_t>& slots = column.index_of;
+  if (2 * (column.values.size() + 1) > slots.size()) grow_index(column);
+  const std::size_t mask = slots.size() - 1;
+  const std::size_t hash = std::hash<std::string_view>{}(text);
+  for (std::size_t slot = hash & mask;; slot = (slot + 1) & mask) {
+    const std::uint32_t code = slots[slot];
+    if (code == kAbsent) {
+      slots[slot] = static_cast<std::uint32_t>(column.values.size());
+      column.values.emplace_back(text);
+      return slots[slot];
+    }
+    if (column.values[code] == text) return code;
+  }
 }
 
-const PartTable::InheritedRow& PartTable::inherited_row(const shape::AttributeMap& map) {
-  const auto [it, added] = inherited_rows_.try_emplace(&map);
-  InheritedRow& row = it->second;
-  if (!added) return row;
+// Doubles the column's table of codes (16 slots at first) and enters every text again.
+void PartTable::grow_index(Column& column) {
+  std::vector<std::uint32_t>& slots = column.index_of;
+  slots.assign(std::max<std::size_t>(16, 2 * slots.size()), kAbsent);
+  const std::size_t mask = slots.size() - 1;
+  for (std::uint32_t code = 0; code < column.values.size(); ++code) {
+    std::size_t slot = std::hash<std::string_view>{}(column.values[code]) & mask;
+    while (slots[slot] != kAbsent) slot = (slot + 1) & mask;
+    slots[slot] = code;
+  }
+}
+
+// The first of `map`'s entries in inherited_values_ and inherited_codes_ (one per attribute
+// column), found once for all the parts sharing the map: a tile's building's parts come together,
+// so the last map is tried first.
+std::size_t PartTable::inherited_row(const shape::AttributeMap& map) {
+  if (&map == last_inherited_) return last_inherited_row_;
+  const std::size_t first = inherited_values_.size();
+  const auto [it, added] = inherited_rows_.try_emplace(&map, first);
+  last_inherited_ = &map;
+  last_inherited_row_ = it->second;
+  if (!added) return it->second;
   for (std::size_t c = 2; c < columns_.size(); ++c) {
     Column& column = columns_[c];
     const auto found = map.find(column.name);
     const bool present = found != map.end() && !shape::is_null(found->second);
-    row.values.push_back(present ? &found->second : nullptr);
-    row.codes.push_back(present && column.type == Type::kString
-                            ? intern(column, shape::to_string(found->second))
-                            : kAbsent);
+    inherited_values_.push_back(present ? &found->second : nullptr);
+    inherited_codes_.push_back(present && column.type == Type::kString
+                                   ? intern(column, shape::to_string(found->second))
+                                   : kAbsent);
   }
-  return row;
+  return first;
 }
 
 // Appends `part` (the `index`th of its building) as a row: each attribute column takes the part's
 // own value, else the inherited one (both maps and the columns are sorted by name, so one walk).
 void PartTable::add_row(const shape::Part& part, std::size_t index) {
   Column& names = columns_[0];
-  names.codes.push_back(
-      intern(names, part.name.empty() ? "part" + std::to_string(index) : part.name));
-  columns_[1].codes.push_back(intern(columns_[1], std::string(kind_name(part.kind))));
-  const InheritedRow* inherited = part.inherited ? &inherited_row(*part.inherited) : nullptr;
+  names.codes.push_back(part.name.empty() ? intern(names, "part" + std::to_string(index))
+                                          : intern(names, part.name));
+  // A handful of kinds: each one's code is kept rather than looked up row by row.
+  const auto kind = static_cast<std::size_t>(part.kind);
+  if (kind >= kind_codes_.size()) kind_codes_.resize(kind + 1, kAbsent);
+  if (kind_codes_[kind] == kAbsent) kind_codes_[kind] = intern(columns_[1], kind_name(part.kind));
+  columns_[1].codes.push_back(kind_codes_[kind]);
+  constexpr std::size_t kNone = SIZE_MAX;
+  const std::size_t inherited = part.inherited ? inherited_row(*part.inherited) : kNone;
   auto own = part.attributes.begin();
   for (std::size_t c = 2; c < columns_.size(); ++c) {
     Column& column = columns_[c];
@@ -184,9 +223,9 @@ void PartTable::add_row(const shape::Part& part, std::size_t index) {
     if (own != part.attributes.end() && own->first == column.name && !shape::is_null(own->second)) {
       value = &own->second;
       if (column.type == Type::kString) code = intern(column, shape::to_string(*value));
-    } else if (inherited != nullptr) {
-      value = inherited->values[c - 2];
-      code = inherited->codes[c - 2];
+    } else if (inherited != kNone) {
+      value = inherited_values_[inherited + c - 2];
+      code = inherited_codes_[inherited + c - 2];
     }
     switch (column.type) {
       case Type::kNumber:
@@ -205,22 +244,26 @@ void PartTable::add_row(const shape::Part& part, std::size_t index) {
 // The column's distinct values, sorted, when they fit 16-bit codes, none is empty (an enum value
 // needs a name) and coding them makes the column smaller; `no_data` a name none of them has.
 void PartTable::make_dictionary(Column& column) {
-  std::vector<std::string_view> distinct(column.values.begin(), column.values.end());
-  std::sort(distinct.begin(), distinct.end());
-  const auto contains = [&distinct](std::string_view value) {
-    return std::binary_search(distinct.begin(), distinct.end(), value);
-  };
-  if (contains("") || distinct.size() + (column.optional ? 1 : 0) > 65536) return;
+  // `values` are distinct already: the checks come before the sort, which most columns of mostly
+  // distinct texts (names, ids) never need.
+  const std::vector<std::string>& values = column.values;
+  if (values.size() + (column.optional ? 1 : 0) > 65536) return;
+  if (std::any_of(values.begin(), values.end(), [](const auto& v) { return v.empty(); })) return;
   // Only where it pays: each enum value costs its name and about 30 bytes of JSON, each row a
   // code of 1 or 2 bytes; a STRING column costs each row's text and a 4-byte offset.
   std::size_t as_enum = 0;
   std::size_t as_string = 4;
-  for (std::string_view value : distinct) as_enum += value.size() + 30;
-  as_enum += column.codes.size() * (distinct.size() < 256 ? 1 : 2);
+  for (const std::string& value : values) as_enum += value.size() + 30;
+  as_enum += column.codes.size() * (values.size() < 256 ? 1 : 2);
   for (std::uint32_t code : column.codes) {
-    as_string += (code == kAbsent ? 0 : column.values[code].size()) + 4;
+    as_string += (code == kAbsent ? 0 : values[code].size()) + 4;
   }
   if (as_enum >= as_string) return;
+  std::vector<std::string_view> distinct(values.begin(), values.end());
+  std::sort(distinct.begin(), distinct.end());
+  const auto contains = [&distinct](std::string_view value) {
+    return std::binary_search(distinct.begin(), distinct.end(), value);
+  };
   column.dictionary.assign(distinct.begin(), distinct.end());
   column.enum_code.resize(column.values.size());
   for (std::size_t v = 0; v < column.values.size(); ++v) {

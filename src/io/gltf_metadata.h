@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -63,9 +64,10 @@ class PartTable {
     // use) or kAbsent; a city repeats few texts over many rows.
     std::vector<std::uint32_t> codes{};
     std::vector<std::string> values{};
-    std::unordered_map<std::string, std::uint32_t> index_of{};  // of `values`, while filling
-    std::vector<double> numbers{};                              // kNumber
-    std::vector<bool> booleans{};                               // kBoolean
+    // While filling: the codes of `values`, open addressing by text hash (kAbsent: free).
+    std::vector<std::uint32_t> index_of{};
+    std::vector<double> numbers{};  // kNumber
+    std::vector<bool> booleans{};   // kBoolean
     // Dictionary coding of a text column (empty: written as STRING): the enum names in order,
     // and each value's enum code.
     std::vector<std::string> dictionary{};
@@ -74,23 +76,25 @@ class PartTable {
     std::uint32_t values_view = 0;
     std::uint32_t offsets_view = 0;  // STRING
   };
-  // An inherited attribute map's value for each attribute column (nullptr: it has none), and the
-  // text code of each, found once for all the parts that share the map.
-  struct InheritedRow {
-    std::vector<const shape::Value*> values;
-    std::vector<std::uint32_t> codes;
-  };
-
   void find_columns(const shape::Scene& scene);
   void add_row(const shape::Part& part, std::size_t index);
-  const InheritedRow& inherited_row(const shape::AttributeMap& map);
-  static std::uint32_t intern(Column& column, std::string text);
+  std::size_t inherited_row(const shape::AttributeMap& map);
+  static std::uint32_t intern(Column& column, std::string_view text);
+  static void grow_index(Column& column);
   static void make_dictionary(Column& column);
   void write_class_property(JsonStream& json, const Column& column) const;
 
   std::size_t rows_ = 0;
   std::vector<Column> columns_;
-  std::unordered_map<const shape::AttributeMap*, InheritedRow> inherited_rows_;
+  std::vector<std::uint32_t> kind_codes_;  // by shape::PartKind: its code in "kind" (or kAbsent)
+  // An inherited attribute map's value for each attribute column (nullptr: it has none), and the
+  // text code of each, found once for all the parts that share the map; flat, a map's entries
+  // from the index inherited_rows_ gives it.
+  std::unordered_map<const shape::AttributeMap*, std::size_t> inherited_rows_;
+  std::vector<const shape::Value*> inherited_values_;
+  std::vector<std::uint32_t> inherited_codes_;
+  const shape::AttributeMap* last_inherited_ = nullptr;
+  std::size_t last_inherited_row_ = 0;
 };
 
 }  // namespace insula::io::gltf

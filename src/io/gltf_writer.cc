@@ -129,6 +129,7 @@ class Builder {
   BuildingNode by_building(const shape::Building& building, std::size_t index,
                            std::size_t first_row);
   BuildingNode by_element(const shape::Building& building);
+  void reserve_assembler(const shape::Building& building);
   // The mesh a part instances (added the first time), or -1 when none of its faces has area.
   std::int32_t shared_mesh(const shape::Part& part, std::size_t index);
   // Writes what `assembler` holds as a new mesh; -1 when it holds no triangle.
@@ -302,6 +303,7 @@ BuildingNode Builder::by_building(const shape::Building& building, std::size_t i
                                   std::size_t first_row) {
   BuildingNode node;
   std::vector<std::pair<std::size_t, std::int32_t>> instances;  // part, mesh
+  reserve_assembler(building);
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
     const shape::Part& part = building.parts[p];
     const auto row = static_cast<std::uint32_t>(first_row + p);
@@ -324,6 +326,24 @@ BuildingNode Builder::by_building(const shape::Building& building, std::size_t i
   }
   add_instance_groups(building, first_row, instances, inside, node);
   return node;
+}
+
+// Room in the assembler for the building's own faces (a tile's building has thousands of parts).
+void Builder::reserve_assembler(const shape::Building& building) {
+  std::size_t vertices = 0;
+  std::size_t corners = 0;
+  std::size_t faces = 0;
+  for (const shape::Part& part : building.parts) {
+    if (part.instance_of && !part.uv) continue;  // in a shared mesh
+    const kernel::Mesh& mesh = part.instance_of ? *part.instance_of : part.mesh;
+    vertices += mesh.vertex_count();
+    faces += mesh.face_count();
+    if (mesh.face_count() > 0) {
+      const auto last = mesh.face(mesh.face_count() - 1);
+      corners += static_cast<std::size_t>(last.data() + last.size() - mesh.face(0).data());
+    }
+  }
+  assembler_->reserve(vertices, corners, faces);
 }
 
 // Each instance as a node of its own, or with GPU instancing one node per mesh placing them all

@@ -59,6 +59,11 @@ struct Node {
 class PointGrid {
  public:
   void build(const std::vector<Node>& nodes, Vec2 size) {
+    extra_.clear();
+    // A few nodes are all looked at: an ear test's answer does not depend on which nodes outside
+    // its box it visits, and building the grid cost more than the tests it saved.
+    everything_ = nodes.size() <= kEverything ? std::uint32_t(nodes.size()) : 0;
+    if (everything_ > 0) return;
     const double n = double(std::max<std::size_t>(nodes.size(), 1));
     const double w = std::max(size.x, 1e-300), h = std::max(size.y, 1e-300);
     cell_ = std::max({std::sqrt(w * h / n), w / 1024.0, h / 1024.0});
@@ -68,15 +73,21 @@ class PointGrid {
     for (const Node& node : nodes) ++start_[cell(node.p) + 1];
     for (std::size_t i = 1; i < start_.size(); ++i) start_[i] += start_[i - 1];
     items_.resize(nodes.size());
-    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    for (std::uint32_t i = 0; i < nodes.size(); ++i) items_[fill[cell(nodes[i].p)]++] = i;
-    extra_.clear();
+    fill_.assign(start_.begin(), start_.end() - 1);
+    for (std::uint32_t i = 0; i < nodes.size(); ++i) items_[fill_[cell(nodes[i].p)]++] = i;
   }
   void add_late(std::uint32_t id) { extra_.push_back(id); }
 
   // Calls f(id) for every node in cells overlapping [lo, hi]; stops early when f returns false.
   template <typename F>
   bool visit(Vec2 lo, Vec2 hi, F&& f) const {
+    for (std::uint32_t id = 0; id < everything_; ++id)
+      if (!f(id)) return false;
+    if (everything_ > 0) {
+      for (std::uint32_t id : extra_)
+        if (!f(id)) return false;
+      return true;
+    }
     const int x0 = cx(lo.x), x1 = cx(hi.x), y0 = cy(lo.y), y1 = cy(hi.y);
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
@@ -95,14 +106,30 @@ class PointGrid {
   int cy(double y) const { return std::clamp(int(y / cell_), 0, ny_ - 1); }
   std::size_t cell(Vec2 p) const { return std::size_t(cy(p.y)) * std::size_t(nx_) + cx(p.x); }
 
+  static constexpr std::size_t kEverything = 32;
+  std::uint32_t everything_ = 0;  // when not 0: no grid, every node below it is visited
   double cell_ = 1;
   int nx_ = 1, ny_ = 1;
-  std::vector<std::uint32_t> start_, items_, extra_;
+  std::vector<std::uint32_t> start_, items_, extra_, fill_;
+};
+
+// The triangulator's working memory, kept per thread from call to call: the writers triangulate
+// every concave face of a city one at a time, and allocating it anew cost more than most of
+// those faces' clipping.
+struct Scratch {
+  std::vector<Node> nodes;
+  PointGrid grid;
+  Ring shifted;
+  std::vector<std::uint32_t> holes;
+  std::vector<std::uint32_t> work;
 };
 
 class Triangulator {
  public:
-  explicit Triangulator(Triangulation& out) : out_(out) {}
+  Triangulator(Triangulation& out, Scratch& scratch)
+      : out_(out), nodes_(scratch.nodes), grid_(scratch.grid), scratch_(scratch) {
+    nodes_.clear();
+  }
 
   TriangulationStatus run(const Polygon& polygon);
 
@@ -137,8 +164,9 @@ class Triangulator {
   bool drop_straight_vertex(std::uint32_t& start);
 
   Triangulation& out_;
-  std::vector<Node> nodes_;
-  PointGrid grid_;
+  std::vector<Node>& nodes_;
+  PointGrid& grid_;
+  Scratch& scratch_;
   Vec2 origin_;
   std::uint64_t budget_ = 0;  // elementary steps left before giving up on pathological input
 };
@@ -156,7 +184,8 @@ std::optional<std::uint32_t> Triangulator::build_ring(const Ring& ring, std::uin
   }
   while (nodes_.size() > first + 1 && nodes_.back().p == nodes_[first].p) nodes_.pop_back();
   const std::size_t m = nodes_.size() - first;
-  Ring shifted;
+  Ring& shifted = scratch_.shifted;
+  shifted.clear();
   for (std::size_t i = first; i < nodes_.size(); ++i) shifted.push_back(nodes_[i].p);
   if (m < 3 || signed_area(shifted) == 0) {
     nodes_.resize(first);
@@ -439,7 +468,8 @@ bool Triangulator::drop_straight_vertex(std::uint32_t& start) {
 }
 
 bool Triangulator::clip_all(std::uint32_t start) {
-  std::vector<std::uint32_t> work{filter(start)};
+  std::vector<std::uint32_t>& work = scratch_.work;
+  work.assign(1, filter(start));
   while (!work.empty()) {
     std::uint32_t ear = work.back(), stop = ear;
     work.pop_back();
@@ -511,7 +541,8 @@ TriangulationStatus Triangulator::run(const Polygon& polygon) {
     return distinct < 3 ? TriangulationStatus::kTooFewVertices : TriangulationStatus::kZeroArea;
   }
   double expected = std::abs(signed_area(polygon.outer)), magnitude = expected;
-  std::vector<std::uint32_t> holes;
+  std::vector<std::uint32_t>& holes = scratch_.holes;
+  holes.clear();
   std::uint32_t base = std::uint32_t(polygon.outer.size());
   for (const Ring& hole : polygon.holes) {
     if (const auto h = build_ring(hole, base, false)) {
@@ -555,9 +586,19 @@ std::string_view to_string(TriangulationStatus status) {
 }
 
 bool triangulate(const Polygon& polygon, Triangulation& out) {
-  out = Triangulation{};
-  Triangulator triangulator(out);
+  out.vertices.clear();
+  out.triangles.clear();
+  out.status = TriangulationStatus::kOk;
+  // An ear per vertex but two, and two more per bridged hole: grown once.
+  std::size_t vertices = polygon.outer.size();
+  for (const Ring& hole : polygon.holes) vertices += hole.size() + 2;
+  out.triangles.reserve(vertices);
+  thread_local Scratch scratch;
+  Triangulator triangulator(out, scratch);
   out.status = triangulator.run(polygon);
+  // What a huge polygon needed is not kept for the thread's lifetime.
+  constexpr std::size_t kKeptNodes = std::size_t{1} << 16;
+  if (scratch.nodes.capacity() > kKeptNodes) scratch = Scratch{};
   if (out.status != TriangulationStatus::kOk) out.triangles.clear();
   return out.status == TriangulationStatus::kOk;
 }
