@@ -29,6 +29,10 @@ bool quantisable(kernel::Vec3 offset) {
   return std::abs(offset.x) < kLimit && std::abs(offset.y) < kLimit && std::abs(offset.z) < kLimit;
 }
 
+const shape::AttributeMap* attributes_of(const shape::AttributeMap& attributes) {
+  return attributes.empty() ? nullptr : &attributes;
+}
+
 std::string_view object_type(shape::PartKind kind) {
   switch (kind) {
     case shape::PartKind::kStorey:
@@ -114,6 +118,12 @@ const std::string* IdSet::insert(std::string_view id) {
   ids_.emplace_back(id);
   place(ids_.back(), static_cast<std::uint32_t>(ids_.size() - 1));
   return &ids_.back();
+}
+
+void IdSet::prefetch(std::string_view id) const {
+  if (!slots_.empty()) {
+    __builtin_prefetch(&slots_[std::hash<std::string_view>{}(id) & (slots_.size() - 1)]);
+  }
 }
 
 void IdSet::reserve(std::size_t n) {
@@ -422,11 +432,20 @@ std::string_view CityObjects::unique_part_id(const std::string& base) {
   }
 }
 
-void CityObjects::prefetch(const shape::Building& building) {
+void CityObjects::prefetch_parts(const shape::Building& building) {
+  for (const shape::Part& part : building.parts) {
+    const auto* mesh = reinterpret_cast<const char*>(&part.mesh);
+    __builtin_prefetch(mesh);
+    __builtin_prefetch(mesh + sizeof(kernel::Mesh) - 1);
+  }
+}
+
+void CityObjects::prefetch_meshes(const shape::Building& building, bool positions_only) {
   for (const shape::Part& part : building.parts) {
     const kernel::Mesh& mesh = part.mesh;
     if (mesh.empty()) continue;
     __builtin_prefetch(mesh.positions().data());
+    if (positions_only) continue;
     __builtin_prefetch(mesh.face(0).data());
     __builtin_prefetch(&mesh.tag(0));
   }
@@ -435,25 +454,38 @@ void CityObjects::prefetch(const shape::Building& building) {
 // About 8 bytes a corner ("123456," and a ring's brackets), 4 a face's semantic value, 200 an
 // object and 32 an attribute: an estimate to reserve room with, as more than is used costs nothing
 // (the pages are never touched).
-void CityObjects::estimate_text(const Object& object, const shape::AttributeMap& attributes) {
-  text_size_ += 200 + 2 * object.id.size() + object.parent.size() + 32 * attributes.size();
-  if (object.part != nullptr && object.count > 0) {
+void CityObjects::estimate_text(const Object& object) {
+  text_size_ += 200 + 2 * object.id.size() + object.parent.size();
+  if (object.attributes != nullptr) text_size_ += 32 * object.attributes->size();
+  if (!object.parent.empty() && object.count > 0) {
     const std::size_t first = object.first == 0 ? 0 : rings_.ends[object.first - 1];
     text_size_ += 8 * (rings_.ends[object.first + object.count - 1] - first) + 4 * object.count;
   }
 }
 
-// Pools the parts' vertices and keeps their rings now, in the buildings' order (which numbers the
-// vertices); the text comes in write_objects().
-std::string CityObjects::add_building(const shape::Building& building, std::size_t index) {
-  const std::string_view id =
-      unique_id(building.id.empty() ? "building" + std::to_string(index) : building.id);
-  const std::size_t first_child = objects_.size();
+// The id of part `p` of a building whose id is `id` (before it is made unique).
+std::string CityObjects::part_id_base(std::string_view id, const shape::Part& part, std::size_t p) {
   std::string base;
+  base.reserve(id.size() + 1 + (part.name.empty() ? 12 : part.name.size()));
+  base.append(id).append("-");
+  if (part.name.empty()) return base.append("part").append(std::to_string(p));
+  return base.append(part.name);
+}
+
+// Pools the parts' vertices and keeps their rings now, in the buildings' order (which numbers the
+// vertices); the text comes in write_objects(). The ids are given after the geometry, in the
+// same order as ever (the building's, then its parts'), so that their table slots, prefetched
+// before it, are in cache by then (a city's ids do not stay there).
+std::string CityObjects::add_building(const shape::Building& building, std::size_t index) {
+  const std::string id_base =
+      building.id.empty() ? "building" + std::to_string(index) : building.id;
+  ids_.prefetch(id_base);
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
-    const shape::Part& part = building.parts[p];
-    base.assign(id).append("-").append(part.name.empty() ? "part" + std::to_string(p) : part.name);
-    Object object{unique_part_id(base), id, &building, &part, rings_.size()};
+    ids_.prefetch(part_id_base(id_base, building.parts[p], p));
+  }
+  const std::size_t first_child = objects_.size();
+  for (const shape::Part& part : building.parts) {
+    Object object{{}, {}, object_type(part.kind), attributes_of(part.attributes), rings_.size()};
     if (part.instance_of) {
       collect_surfaces(shape::part_world_mesh(part));
     } else {
@@ -462,11 +494,21 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
     object.count = rings_.size() - object.first;
     object.solid = is_solid(object.first, rings_.size());
     objects_.push_back(object);
-    estimate_text(object, part.attributes);
   }
-  objects_.push_back(
-      {id, {}, &building, nullptr, first_child, objects_.size() - first_child, false});
-  estimate_text(objects_.back(), building.attributes);
+  const std::string_view id = unique_id(id_base);
+  for (std::size_t p = 0; p < building.parts.size(); ++p) {
+    Object& object = objects_[first_child + p];
+    object.id = unique_part_id(part_id_base(id, building.parts[p], p));
+    object.parent = id;
+    estimate_text(object);
+  }
+  objects_.push_back({id,
+                      {},
+                      "Building",
+                      attributes_of(building.attributes),
+                      first_child,
+                      objects_.size() - first_child});
+  estimate_text(objects_.back());
   return std::string(id);
 }
 
@@ -474,26 +516,31 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
 // {"attributes", "children", "type"} (members in nlohmann's sorted order, empty ones left out).
 void CityObjects::write_object(JsonStream& json, const Object& object) {
   json.begin_object();
-  if (object.part == nullptr) {
-    const shape::Building& building = *object.building;
-    if (!building.attributes.empty()) json.key("attributes").attributes(building.attributes);
+  if (object.attributes != nullptr) json.key("attributes").attributes(*object.attributes);
+  if (object.parent.empty()) {
     if (object.count > 0) {
       json.key("children").begin_array();
       for (std::size_t c = 0; c < object.count; ++c) json.string(objects_[object.first + c].id);
       json.end_array();
     }
-    json.key("type").string("Building").end_object();
-    return;
+  } else {
+    if (object.count > 0) {
+      json.key("geometry").begin_array();
+      write_geometry(json, object);
+      json.end_array();
+    }
+    json.key("parents").begin_array().string(object.parent).end_array();
   }
-  const shape::Part& part = *object.part;
-  if (!part.attributes.empty()) json.key("attributes").attributes(part.attributes);
-  if (object.count > 0) {
-    json.key("geometry").begin_array();
-    write_geometry(json, object);
-    json.end_array();
-  }
-  json.key("parents").begin_array().string(object.parent).end_array();
-  json.key("type").string(object_type(part.kind)).end_object();
+  json.key("type").string(object.type).end_object();
+}
+
+// Starts loading what write_object() reads (in id order, objects far apart in memory).
+void CityObjects::prefetch_object(const Object& object) const {
+  __builtin_prefetch(object.id.data());
+  if (object.parent.empty() || object.count == 0) return;
+  __builtin_prefetch(&rings_.ends[object.first]);
+  __builtin_prefetch(&rings_.classes[object.first]);
+  __builtin_prefetch(&rings_.indices[object.first == 0 ? 0 : rings_.ends[object.first - 1]]);
 }
 
 // Sorted by id through a list of (first 8 bytes, position): most comparisons are settled by the
@@ -518,33 +565,41 @@ void CityObjects::write_objects(JsonStream& json) {
     if (a.prefix != b.prefix) return a.prefix < b.prefix;
     return objects_[a.object].id < objects_[b.object].id;
   });
+  // Objects are prefetched kAhead ahead, their rings and ids half that (once the object is in).
+  constexpr std::size_t kAhead = 8;
   json.begin_object();
-  for (const Key& key : order) {
-    const Object& object = objects_[key.object];
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (i + kAhead < order.size()) __builtin_prefetch(&objects_[order[i + kAhead].object]);
+    if (i + kAhead / 2 < order.size()) prefetch_object(objects_[order[i + kAhead / 2].object]);
+    const Object& object = objects_[order[i].object];
     json.key(object.id);
     write_object(json, object);
   }
   json.end_object();
 }
 
-// Formatted in one buffer, as the boundaries are (a city has hundreds of thousands of points).
+// Formatted here a chunk of points at a time, as the boundaries are (a city has hundreds of
+// thousands of points).
 void CityObjects::write_vertices(JsonStream& json) {
+  constexpr std::size_t kChunk = 256;
+  // At most 20 characters a coordinate, 4 brackets and commas a point.
+  char* const text = scratch(64 * kChunk);
   const std::vector<Quantised>& vertices = pool_.vertices();
-  // At most 20 characters a coordinate, 4 brackets and commas a point, 2 outer brackets.
-  char* const text = scratch(64 * vertices.size() + 2);
-  char* at = text;
-  *at++ = '[';
-  for (std::size_t v = 0; v < vertices.size(); ++v) {
-    if (v > 0) *at++ = ',';
-    *at++ = '[';
-    for (std::size_t k = 0; k < 3; ++k) {
-      if (k > 0) *at++ = ',';
-      at = std::to_chars(at, at + 20, vertices[v][k]).ptr;
+  json.begin_array();
+  for (std::size_t chunk = 0; chunk < vertices.size(); chunk += kChunk) {
+    char* at = text;
+    for (std::size_t v = chunk; v < std::min(chunk + kChunk, vertices.size()); ++v) {
+      if (v > chunk) *at++ = ',';
+      *at++ = '[';
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (k > 0) *at++ = ',';
+        at = std::to_chars(at, at + 20, vertices[v][k]).ptr;
+      }
+      *at++ = ']';
     }
-    *at++ = ']';
+    json.elements({text, static_cast<std::size_t>(at - text)});
   }
-  *at++ = ']';
-  json.raw({text, static_cast<std::size_t>(at - text)});
+  json.end_array();
 }
 
 void CityObjects::clear() {
@@ -553,26 +608,22 @@ void CityObjects::clear() {
   objects_.clear();
   text_size_ = 2;
 }
-// One pass over the meshes, the next building's prefetched (see CityObjects::prefetch()).
+// One pass over the meshes' positions, prefetched (see CityObjects::prefetch_parts()).
 SceneSize measure(const shape::Scene& scene) {
   constexpr double kNone = std::numeric_limits<double>::infinity();
   kernel::Vec3 low{kNone, kNone, kNone};
   SceneSize size;
   const std::vector<shape::Building>& buildings = scene.buildings;
   for (std::size_t b = 0; b < buildings.size(); ++b) {
-    if (b + 1 < buildings.size()) CityObjects::prefetch(buildings[b + 1]);
+    if (b + 2 < buildings.size()) CityObjects::prefetch_parts(buildings[b + 2]);
+    if (b + 1 < buildings.size()) CityObjects::prefetch_meshes(buildings[b + 1], true);
     size.objects += buildings[b].parts.size() + 1;
     for (const shape::Part& part : buildings[b].parts) {
-      const kernel::Mesh& mesh = part.mesh;
-      for (const kernel::Vec3& p : mesh.positions()) {
+      for (const kernel::Vec3& p : part.mesh.positions()) {
         if (finite(p)) low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
       }
-      size.vertices += mesh.vertex_count();
-      size.faces += mesh.face_count();
-      if (!mesh.empty()) {  // the faces' loops lie one after the other in one index array
-        const std::span<const std::uint32_t> last = mesh.face(mesh.face_count() - 1);
-        size.corners += static_cast<std::size_t>(last.data() + last.size() - mesh.face(0).data());
-      }
+      size.vertices += part.mesh.vertex_count();
+      size.faces += part.mesh.face_count();
     }
   }
   size.minimum = low.x == kNone ? kernel::Vec3{} : low;

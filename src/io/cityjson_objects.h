@@ -71,6 +71,8 @@ class IdSet {
   // Adds `id` and returns the set's copy of it (which stays where it is as long as the set does),
   // or null when `id` was there already.
   const std::string* insert(std::string_view id);
+  // Starts loading the table slot where insert(id) looks first.
+  void prefetch(std::string_view id) const;
   // Room for `n` ids in all, so that adding them does not rehash.
   void reserve(std::size_t n);
 
@@ -111,8 +113,8 @@ class CityObjects {
 
   // Adds the building (`index`: its position, naming an unnamed building "building<index>") and
   // its parts; returns the building's object id, unique among every id this object has given.
-  // Parts that are shared-mesh instances are expanded. The building is read again by
-  // write_objects() (its attributes and parts' kinds and attributes): it must outlive that call.
+  // Parts that are shared-mesh instances are expanded. The building's and its parts' attributes
+  // are read again by write_objects(): they must outlive that call.
   std::string add_building(const shape::Building& building, std::size_t index);
   // The members of "CityObjects" (an object, sorted by id) added since the last clear().
   void write_objects(JsonStream& json);
@@ -133,18 +135,23 @@ class CityObjects {
   void reserve_rings(std::size_t rings, std::size_t indices);
   // Room for `n` object ids in all.
   void reserve_ids(std::size_t n) { ids_.reserve(n); }
-  // Starts loading the meshes of a building that will be added soon: a city's meshes lie all over
-  // memory, and fetching the next building's while this one is added overlaps their cache misses.
-  static void prefetch(const shape::Building& building);
+  // Start loading what adding a building will read, `ahead` buildings ahead: a city's meshes lie
+  // all over memory, and fetching them while the buildings before are added overlaps their cache
+  // misses. prefetch_parts() loads the parts (their meshes' array pointers), for the building
+  // after next; prefetch_meshes() reads those pointers and loads the arrays, for the next.
+  static void prefetch_parts(const shape::Building& building);
+  static void prefetch_meshes(const shape::Building& building, bool positions_only = false);
 
  private:
-  // A city object as added, its text written by write_objects(). A part's geometry is rings
-  // [first, first + count) of rings_; a building's children are objects_[first, first + count).
+  // A city object as added, its text written by write_objects(): what that needs is kept here, so
+  // writing in id order does not go back to the scene's parts (scattered in memory) for it. A
+  // part's geometry is rings [first, first + count) of rings_; a building's children are
+  // objects_[first, first + count).
   struct Object {
     std::string_view id;      // ids_'s copy
-    std::string_view parent;  // the building's id (parts only)
-    const shape::Building* building = nullptr;
-    const shape::Part* part = nullptr;  // null for the building's own object
+    std::string_view parent;  // the building's id; empty for the building itself
+    std::string_view type;    // "Building", "BuildingPart", ...
+    const shape::AttributeMap* attributes = nullptr;  // null when there are none
     std::size_t first = 0;
     std::size_t count = 0;
     bool solid = false;
@@ -156,6 +163,7 @@ class CityObjects {
   std::uint32_t number_locally(std::span<const std::uint32_t> corners) const;
   bool is_solid(std::size_t first, std::size_t end) const;
   double volume(std::size_t first, std::size_t end, std::uint32_t locals) const;
+  void prefetch_object(const Object& object) const;
   void write_object(JsonStream& json, const Object& object);
   char* scratch(std::size_t size);
   std::string_view boundaries_text(std::size_t first, std::size_t end, bool solid);
@@ -163,7 +171,8 @@ class CityObjects {
   std::string_view values_text(bool solid);
   void write_geometry(JsonStream& json, const Object& part);
 
-  void estimate_text(const Object& object, const shape::AttributeMap& attributes);
+  void estimate_text(const Object& object);
+  static std::string part_id_base(std::string_view id, const shape::Part& part, std::size_t p);
   std::string_view unique_id(const std::string& base);
   std::string_view unique_part_id(const std::string& base);
 
@@ -202,7 +211,6 @@ struct SceneSize {
   kernel::Vec3 minimum;
   std::size_t vertices = 0;  // the meshes' vertices
   std::size_t faces = 0;
-  std::size_t corners = 0;  // the faces' vertex indices
   std::size_t objects = 0;  // buildings and parts
 };
 SceneSize measure(const shape::Scene& scene);

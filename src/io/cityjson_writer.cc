@@ -36,7 +36,8 @@ class Writer {
 Writer::Writer(const shape::Scene& scene, const cityjson::SceneSize& size)
     : scene_(scene), min_(size.minimum), objects_(min_) {
   objects_.pool().reserve(size.vertices);
-  objects_.reserve_rings(size.faces, size.corners);
+  // About 4 corners a face (quads, triangles and a few larger faces); more only cost a copy.
+  objects_.reserve_rings(size.faces, 4 * size.faces);
   objects_.reserve_ids(size.objects);
 }
 
@@ -62,7 +63,8 @@ void Writer::write_metadata(JsonStream& json) const {
 void Writer::write(std::string& out) {
   const std::vector<shape::Building>& buildings = scene_.buildings;
   for (std::size_t b = 0; b < buildings.size(); ++b) {
-    if (b + 1 < buildings.size()) cityjson::CityObjects::prefetch(buildings[b + 1]);
+    if (b + 2 < buildings.size()) cityjson::CityObjects::prefetch_parts(buildings[b + 2]);
+    if (b + 1 < buildings.size()) cityjson::CityObjects::prefetch_meshes(buildings[b + 1]);
     objects_.add_building(buildings[b], b);
   }
   // The objects, then about 20 bytes per vertex ("[123456,234567,3456],").
