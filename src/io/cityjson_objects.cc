@@ -19,6 +19,9 @@ constexpr double kPerMeter = 1000.0;  // 1 / kScale
 constexpr std::uint32_t kUnset = UINT32_MAX;
 constexpr std::uint32_t kUnwritable = UINT32_MAX - 1;
 
+// An empty slot of the solid test's edge table (a key is a pair of different numbers).
+constexpr std::uint64_t kNoEdge = UINT64_MAX;
+
 bool finite(kernel::Vec3 p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
@@ -234,61 +237,56 @@ std::uint32_t CityObjects::number_locally(std::span<const std::uint32_t> corners
 
 // A Solid needs one closed, consistently outward-oriented 2-manifold shell: checked on the
 // quantised rings [first, end), so the test sees exactly what a validator such as val3dity will
-// see. What kernel::check calls closed, oriented and manifold with one component is tested on
-// lists of each vertex's outgoing edges (a handful each): every edge used once and its reverse
-// once, and every vertex reached from the first; the volume is kernel::volume's, on the quantised
-// points.
+// see. What kernel::check calls closed, oriented and manifold with one component comes to: every
+// edge {a, b} is used exactly once a -> b and once b -> a, and the edges join all the vertices;
+// the volume is kernel::volume's, on the quantised points. The edges are counted in a small hash
+// table of vertex pairs, the joins in a union-find over the part's own vertex numbers.
 bool CityObjects::is_solid(std::size_t first, std::size_t end) const {
   if (end - first < 4) return false;
   const std::size_t corners_begin = first == 0 ? 0 : rings_.ends[first - 1];
   const std::uint32_t locals =
       number_locally(std::span<const std::uint32_t>(rings_.indices)
                          .subspan(corners_begin, rings_.ends[end - 1] - corners_begin));
-  // The out-edges of local vertex v are to_[first_[v] .. first_[v + 1]); every corner begins one.
-  first_.assign(locals + 1, 0);
-  for (const std::uint32_t v : local_) ++first_[v + 1];
-  for (std::size_t v = 0; v < locals; ++v) first_[v + 1] += first_[v];
-  to_.resize(local_.size());
-  cursor_.assign(first_.begin(), first_.end() - 1);
+  std::size_t slots = 16;
+  while (slots < 2 * local_.size()) slots *= 2;
+  edges_.assign(slots, kNoEdge);
+  sides_.assign(slots, 0);
+  parent_.resize(locals);
+  for (std::uint32_t v = 0; v < locals; ++v) parent_[v] = v;
+  const auto root = [this](std::uint32_t v) {
+    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
+    return v;
+  };
+  std::size_t pairs = 0;  // distinct {a, b}
+  std::uint32_t joins = 0;
   for (std::size_t r = first, begin = 0; r < end; ++r) {
     const std::size_t size = rings_.ends[r] - corners_begin - begin;
     for (std::size_t i = 0; i < size; ++i) {
-      to_[cursor_[local_[begin + i]]++] = local_[begin + (i + 1 < size ? i + 1 : 0)];
+      const std::uint32_t a = local_[begin + i];
+      const std::uint32_t b = local_[begin + (i + 1 < size ? i + 1 : 0)];
+      // Rings repeat no vertex consecutively (collect_surfaces), so a != b.
+      const std::uint8_t side = a < b ? 1 : 2;
+      const std::uint64_t key = std::uint64_t{std::min(a, b)} << 32U | std::max(a, b);
+      std::size_t slot = (key * 0x9E3779B97F4A7C15ULL >> 32U) & (slots - 1);
+      while (edges_[slot] != kNoEdge && edges_[slot] != key) slot = (slot + 1) & (slots - 1);
+      if (edges_[slot] == kNoEdge) {
+        edges_[slot] = key;
+        ++pairs;
+        const std::uint32_t ra = root(a);
+        const std::uint32_t rb = root(b);
+        if (ra != rb) {
+          parent_[ra] = rb;
+          ++joins;
+        }
+      } else if ((sides_[slot] & side) != 0) {
+        return false;  // used twice the same way
+      }
+      sides_[slot] |= side;
     }
     begin += size;
   }
-  const auto out = [this](std::uint32_t v) {
-    return std::span<const std::uint32_t>(to_).subspan(first_[v], first_[v + 1] - first_[v]);
-  };
-  for (std::uint32_t a = 0; a < locals; ++a) {
-    const std::span<const std::uint32_t> edges = out(a);
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-      const std::uint32_t b = edges[i];
-      if (std::find(edges.begin() + static_cast<std::ptrdiff_t>(i) + 1, edges.end(), b) !=
-          edges.end()) {
-        return false;  // used twice
-      }
-      const std::span<const std::uint32_t> back = out(b);
-      if (std::find(back.begin(), back.end(), a) == back.end()) return false;  // no reverse
-    }
-  }
-  // One component: every vertex reached from the first along edges (each has its reverse).
-  reached_.assign(locals, false);
-  cursor_.assign(1, 0);
-  reached_[0] = true;
-  std::size_t count = 1;
-  while (!cursor_.empty()) {
-    const std::uint32_t v = cursor_.back();
-    cursor_.pop_back();
-    for (const std::uint32_t w : out(v)) {
-      if (!reached_[w]) {
-        reached_[w] = true;
-        ++count;
-        cursor_.push_back(w);
-      }
-    }
-  }
-  return count == locals && volume(first, end, locals) > 0;
+  // Every pair used both ways (each twice) and one component.
+  return 2 * pairs == local_.size() && joins + 1 == locals && volume(first, end, locals) > 0;
 }
 
 // kernel::volume of the quantised rings [first, end) (the same sums in the same order), after

@@ -198,11 +198,11 @@ class CityObjects {
   mutable std::uint32_t stamp_ = 0;
   mutable std::vector<std::uint32_t> local_;
   mutable std::vector<kernel::Vec3> volume_points_;  // the volume's points, by local number
-  // The solid test's edges: local vertex v's out-edges are to_[first_[v] .. first_[v + 1]).
-  mutable std::vector<std::uint32_t> first_;
-  mutable std::vector<std::uint32_t> to_;
-  mutable std::vector<std::uint32_t> cursor_;
-  mutable std::vector<bool> reached_;
+  // The solid test's edges: pairs of local numbers (lower << 32 | higher), and the ways each was
+  // used (1: lower to higher, 2: back); its union-find of the local numbers.
+  mutable std::vector<std::uint64_t> edges_;
+  mutable std::vector<std::uint8_t> sides_;
+  mutable std::vector<std::uint32_t> parent_;
 };
 
 // What the CityJSON writer needs to know of a scene before writing it: the minimum corner of its
