@@ -36,6 +36,16 @@ const shape::AttributeMap* attributes_of(const shape::AttributeMap& attributes) 
   return attributes.empty() ? nullptr : &attributes;
 }
 
+// Starts loading `bytes` from `data` on, up to 1 kB (a larger part's rings have time to come in
+// while its first are written).
+void prefetch_lines(const void* data, std::size_t bytes) {
+  constexpr std::size_t kLine = 64;
+  const auto* at = static_cast<const char*>(data);
+  for (std::size_t offset = 0; offset < std::min<std::size_t>(bytes, 1024); offset += kLine) {
+    __builtin_prefetch(at + offset);
+  }
+}
+
 std::string_view object_type(shape::PartKind kind) {
   switch (kind) {
     case shape::PartKind::kStorey:
@@ -189,10 +199,9 @@ void CityObjects::pool_vertices(const kernel::Mesh& mesh) {
   }
 }
 
-// Appends the mesh's faces to rings_, each mesh vertex pooled once (at its first use), however
-// many faces use it.
+// After pool_vertices(mesh): appends the mesh's faces to rings_, each mesh vertex pooled once (at
+// its first use), however many faces use it.
 void CityObjects::collect_surfaces(const kernel::Mesh& mesh) {
-  pool_vertices(mesh);
   std::vector<std::uint32_t>& indices = rings_.indices;
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const std::size_t begin = indices.size();
@@ -432,9 +441,10 @@ std::string_view CityObjects::unique_part_id(const std::string& base) {
 
 void CityObjects::prefetch_parts(const shape::Building& building) {
   for (const shape::Part& part : building.parts) {
-    const auto* mesh = reinterpret_cast<const char*>(&part.mesh);
-    __builtin_prefetch(mesh);
-    __builtin_prefetch(mesh + sizeof(kernel::Mesh) - 1);
+    // From the name (read for the part's id) to the end of the mesh's array pointers.
+    const auto* begin = reinterpret_cast<const char*>(&part);
+    const auto* end = reinterpret_cast<const char*>(&part.mesh) + sizeof(kernel::Mesh);
+    prefetch_lines(begin, static_cast<std::size_t>(end - begin));
   }
 }
 
@@ -447,6 +457,13 @@ void CityObjects::prefetch_meshes(const shape::Building& building, bool position
     __builtin_prefetch(mesh.face(0).data());
     __builtin_prefetch(&mesh.tag(0));
   }
+}
+
+void CityObjects::test_solid() {
+  if (untested_ == kNone) return;
+  Object& part = objects_[untested_];
+  part.solid = is_solid(part.first, part.first + part.count);
+  untested_ = kNone;
 }
 
 // About 8 bytes a corner ("123456," and a ring's brackets), 4 a face's semantic value, 200 an
@@ -471,32 +488,37 @@ std::string CityObjects::part_id_base(std::string_view id, const shape::Part& pa
 }
 
 // Pools the parts' vertices and keeps their rings now, in the buildings' order (which numbers the
-// vertices); the text comes in write_objects(). The ids are given after the geometry, in the
-// same order as ever (the building's, then its parts'), so that their table slots, prefetched
-// before it, are in cache by then (a city's ids do not stay there).
+// vertices); the text comes in write_objects(). A part's solid test waits until the next part's
+// points are quantised and their table slots prefetched: it gives those time to arrive. The ids are
+// given after the geometry, in the same order as ever (the building's, then its parts'), so that
+// their table slots, prefetched before it, are in cache by then (a city's ids do not stay there).
 std::string CityObjects::add_building(const shape::Building& building, std::size_t index) {
   const std::string id_base =
       building.id.empty() ? "building" + std::to_string(index) : building.id;
   ids_.prefetch(id_base);
+  part_ids_.resize(building.parts.size());
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
-    ids_.prefetch(part_id_base(id_base, building.parts[p], p));
+    part_ids_[p] = part_id_base(id_base, building.parts[p], p);
+    ids_.prefetch(part_ids_[p]);
   }
   const std::size_t first_child = objects_.size();
+  kernel::Mesh instance;
   for (const shape::Part& part : building.parts) {
     Object object{{}, {}, object_type(part.kind), attributes_of(part.attributes), rings_.size()};
-    if (part.instance_of) {
-      collect_surfaces(shape::part_world_mesh(part));
-    } else {
-      collect_surfaces(part.mesh);
-    }
+    if (part.instance_of) instance = shape::part_world_mesh(part);
+    const kernel::Mesh& mesh = part.instance_of ? instance : part.mesh;
+    pool_vertices(mesh);
+    test_solid();  // the previous part's, while the pool's slots come in
+    collect_surfaces(mesh);
     object.count = rings_.size() - object.first;
-    object.solid = is_solid(object.first, rings_.size());
+    untested_ = objects_.size();
     objects_.push_back(object);
   }
   const std::string_view id = unique_id(id_base);
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
     Object& object = objects_[first_child + p];
-    object.id = unique_part_id(part_id_base(id, building.parts[p], p));
+    if (id != id_base) part_ids_[p] = part_id_base(id, building.parts[p], p);  // "-2" added
+    object.id = unique_part_id(part_ids_[p]);
     object.parent = id;
     estimate_text(object);
   }
@@ -536,15 +558,19 @@ void CityObjects::write_object(JsonStream& json, const Object& object) {
 void CityObjects::prefetch_object(const Object& object) const {
   __builtin_prefetch(object.id.data());
   if (object.parent.empty() || object.count == 0) return;
-  __builtin_prefetch(&rings_.ends[object.first]);
-  __builtin_prefetch(&rings_.classes[object.first]);
-  __builtin_prefetch(&rings_.indices[object.first == 0 ? 0 : rings_.ends[object.first - 1]]);
+  const std::size_t corners_begin = object.first == 0 ? 0 : rings_.ends[object.first - 1];
+  const std::size_t corners_end = rings_.ends[object.first + object.count - 1];
+  prefetch_lines(&rings_.ends[object.first], object.count * sizeof(std::size_t));
+  prefetch_lines(&rings_.classes[object.first], object.count);
+  prefetch_lines(&rings_.indices[corners_begin],
+                 (corners_end - corners_begin) * sizeof(std::uint32_t));
 }
 
 // Sorted by id through a list of (first 8 bytes, position): most comparisons are settled by the
 // prefix, read as a big-endian number (a shorter id's missing bytes as 0, which orders it first
 // as the full comparison would; equal prefixes go to the full comparison).
 void CityObjects::write_objects(JsonStream& json) {
+  test_solid();
   struct Key {
     std::uint64_t prefix;
     std::uint32_t object;
@@ -586,7 +612,8 @@ void CityObjects::write_vertices(JsonStream& json) {
   json.begin_array();
   for (std::size_t chunk = 0; chunk < vertices.size(); chunk += kChunk) {
     char* at = text;
-    for (std::size_t v = chunk; v < std::min(chunk + kChunk, vertices.size()); ++v) {
+    const std::size_t chunk_end = std::min(chunk + kChunk, vertices.size());
+    for (std::size_t v = chunk; v < chunk_end; ++v) {
       if (v > chunk) *at++ = ',';
       *at++ = '[';
       for (std::size_t k = 0; k < 3; ++k) {
@@ -601,6 +628,7 @@ void CityObjects::write_vertices(JsonStream& json) {
 }
 
 void CityObjects::clear() {
+  untested_ = kNone;
   pool_.clear();
   rings_.clear();
   objects_.clear();

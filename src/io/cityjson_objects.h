@@ -162,6 +162,7 @@ class CityObjects {
   void pool_vertices(const kernel::Mesh& mesh);
   std::uint32_t number_locally(std::span<const std::uint32_t> corners) const;
   bool is_solid(std::size_t first, std::size_t end) const;
+  void test_solid();
   double volume(std::size_t first, std::size_t end, std::uint32_t locals) const;
   void prefetch_object(const Object& object) const;
   void write_object(JsonStream& json, const Object& object);
@@ -183,8 +184,11 @@ class CityObjects {
   Rings rings_;
   std::vector<Object> objects_;
   std::size_t text_size_ = 2;  // text_size_estimate()
+  static constexpr std::size_t kNone = SIZE_MAX;
+  std::size_t untested_ = kNone;  // the part in objects_ whose solid test is still to come
 
   // Scratch reused from part to part.
+  std::vector<std::string> part_ids_;      // a building's parts' ids before made unique
   std::vector<std::uint32_t> pool_index_;  // mesh vertex -> pool vertex (kUnset, kUnwritable)
   std::vector<std::uint64_t> hashes_;      // mesh vertex -> its quantised point's hash
   std::vector<Quantised> points_;          // mesh vertex -> its quantised point
