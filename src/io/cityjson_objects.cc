@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "io/triangulated.h"
 #include "shape/part_mesh.h"
@@ -502,11 +503,11 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
     ids_.prefetch(part_ids_[p]);
   }
   const std::size_t first_child = objects_.size();
-  kernel::Mesh instance;
   for (const shape::Part& part : building.parts) {
     Object object{{}, {}, object_type(part.kind), attributes_of(part.attributes), rings_.size()};
+    std::optional<kernel::Mesh> instance;  // (an empty Mesh would allocate)
     if (part.instance_of) instance = shape::part_world_mesh(part);
-    const kernel::Mesh& mesh = part.instance_of ? instance : part.mesh;
+    const kernel::Mesh& mesh = instance ? *instance : part.mesh;
     pool_vertices(mesh);
     test_solid();  // the previous part's, while the pool's slots come in
     collect_surfaces(mesh);
