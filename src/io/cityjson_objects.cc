@@ -642,8 +642,12 @@ SceneSize measure(const shape::Scene& scene) {
   SceneSize size;
   const std::vector<shape::Building>& buildings = scene.buildings;
   for (std::size_t b = 0; b < buildings.size(); ++b) {
-    if (b + 2 < buildings.size()) CityObjects::prefetch_parts(buildings[b + 2]);
-    if (b + 1 < buildings.size()) CityObjects::prefetch_meshes(buildings[b + 1], true);
+    if (b + CityObjects::kPartsAhead < buildings.size()) {
+      CityObjects::prefetch_parts(buildings[b + CityObjects::kPartsAhead]);
+    }
+    if (b + CityObjects::kMeshesAhead < buildings.size()) {
+      CityObjects::prefetch_meshes(buildings[b + CityObjects::kMeshesAhead], true);
+    }
     size.objects += buildings[b].parts.size() + 1;
     for (const shape::Part& part : buildings[b].parts) {
       for (const kernel::Vec3& p : part.mesh.positions()) {
