@@ -227,8 +227,9 @@ void CityObjects::collect_surfaces(const kernel::Mesh& mesh) {
 }
 
 // Numbers the distinct vertices of `corners` 0, 1, ... in first-use order into local_ (one
-// number a corner); returns how many there are. A stamp per pool vertex, in the same word as its
-// number, tells this call's numbers from older ones without clearing anything.
+// number a corner), their pool vertices into local_vertex_; returns how many there are. A stamp per
+// pool vertex, in the same word as its number, tells this call's numbers from older ones without
+// clearing anything.
 std::uint32_t CityObjects::number_locally(std::span<const std::uint32_t> corners) const {
   ++stamp_;
   if (local_number_.size() < pool_.vertices().size()) {
@@ -237,9 +238,13 @@ std::uint32_t CityObjects::number_locally(std::span<const std::uint32_t> corners
   const std::uint64_t stamp = std::uint64_t{stamp_} << 32U;
   std::uint32_t locals = 0;
   local_.resize(corners.size());
+  local_vertex_.clear();
   for (std::size_t c = 0; c < corners.size(); ++c) {
     std::uint64_t& number = local_number_[corners[c]];
-    if ((number & ~std::uint64_t{UINT32_MAX}) != stamp) number = stamp | locals++;
+    if ((number & ~std::uint64_t{UINT32_MAX}) != stamp) {
+      number = stamp | locals++;
+      local_vertex_.push_back(corners[c]);
+    }
     local_[c] = static_cast<std::uint32_t>(number);
   }
   return locals;
@@ -300,14 +305,14 @@ bool CityObjects::is_solid(std::size_t first, std::size_t end) const {
 }
 
 // kernel::volume of the quantised rings [first, end) (the same sums in the same order), after
-// number_locally() on their corners: each point is converted to doubles once.
+// number_locally() on their corners: each point is converted to doubles once, not per corner.
 double CityObjects::volume(std::size_t first, std::size_t end, std::uint32_t locals) const {
   const std::size_t corners_begin = first == 0 ? 0 : rings_.ends[first - 1];
   volume_points_.resize(locals);
-  for (std::size_t c = 0; c < local_.size(); ++c) {
-    const Quantised& q = pool_.vertices()[rings_.indices[corners_begin + c]];
-    volume_points_[local_[c]] = {static_cast<double>(q[0]), static_cast<double>(q[1]),
-                                 static_cast<double>(q[2])};
+  for (std::uint32_t v = 0; v < locals; ++v) {
+    const Quantised& q = pool_.vertices()[local_vertex_[v]];
+    volume_points_[v] = {static_cast<double>(q[0]), static_cast<double>(q[1]),
+                         static_cast<double>(q[2])};
   }
   double total = 0;
   for (std::size_t r = first, begin = 0; r < end; ++r) {

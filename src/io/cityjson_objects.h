@@ -204,6 +204,7 @@ class CityObjects {
   mutable std::vector<std::uint64_t> local_number_;
   mutable std::uint32_t stamp_ = 0;
   mutable std::vector<std::uint32_t> local_;
+  mutable std::vector<std::uint32_t> local_vertex_;  // local number -> pool vertex
   mutable std::vector<kernel::Vec3> volume_points_;  // the volume's points, by local number
   // The solid test's edges: pairs of local numbers (lower << 32 | higher), and the ways each was
   // used (1: lower to higher, 2: back); its union-find of the local numbers.
