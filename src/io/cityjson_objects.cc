@@ -1,7 +1,11 @@
 #include "io/cityjson_objects.h"
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "io/triangulated.h"
 #include "shape/part_mesh.h"
@@ -11,6 +15,14 @@ namespace {
 
 constexpr double kPerMeter = 1000.0;  // 1 / kScale
 
+// CityObjects::pool_index_'s values for a mesh vertex not pooled yet, and for one that cannot be
+// written (not finite, or too far to quantise).
+constexpr std::uint32_t kUnset = UINT32_MAX;
+constexpr std::uint32_t kUnwritable = UINT32_MAX - 1;
+
+// An empty slot of the solid test's edge table (a key is a pair of different numbers).
+constexpr std::uint64_t kNoEdge = UINT64_MAX;
+
 bool finite(kernel::Vec3 p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
@@ -19,6 +31,20 @@ bool finite(kernel::Vec3 p) {
 bool quantisable(kernel::Vec3 offset) {
   constexpr double kLimit = 9.0e15 / kPerMeter;
   return std::abs(offset.x) < kLimit && std::abs(offset.y) < kLimit && std::abs(offset.z) < kLimit;
+}
+
+const shape::AttributeMap* attributes_of(const shape::AttributeMap& attributes) {
+  return attributes.empty() ? nullptr : &attributes;
+}
+
+// Starts loading `bytes` from `data` on, up to 1 kB (a larger part's rings have time to come in
+// while its first are written).
+void prefetch_lines(const void* data, std::size_t bytes) {
+  constexpr std::size_t kLine = 64;
+  const auto* at = static_cast<const char*>(data);
+  for (std::size_t offset = 0; offset < std::min<std::size_t>(bytes, 1024); offset += kLine) {
+    __builtin_prefetch(at + offset);
+  }
 }
 
 std::string_view object_type(shape::PartKind kind) {
@@ -38,13 +64,6 @@ std::string_view object_type(shape::PartKind kind) {
   return "BuildingPart";
 }
 
-// `base`, or `base-2`, `base-3`, ... when taken; records the result.
-std::string unique_id(const std::string& base, IdSet& taken) {
-  std::string id = base;
-  for (int suffix = 2; !taken.insert(id); ++suffix) id = base + "-" + std::to_string(suffix);
-  return id;
-}
-
 }  // namespace
 
 std::size_t QuantisedHash::operator()(const Quantised& q) const {
@@ -58,11 +77,10 @@ std::size_t QuantisedHash::operator()(const Quantised& q) const {
 
 // A slot holds a point's number and the high half of its hash: probing compares those, and reads
 // a point (a cache miss, as the points lie in first-use order) only when they match.
-std::uint32_t VertexPool::add(const Quantised& q) {
+std::uint32_t VertexPool::add(const Quantised& q, std::uint64_t hash) {
   if (4 * (vertices_.size() + 1) > 3 * slots_.size()) {
     rehash(std::max<std::size_t>(16, 2 * slots_.size()));
   }
-  const std::uint64_t hash = QuantisedHash{}(q);
   const std::uint64_t tag = hash & ~std::uint64_t{UINT32_MAX};
   const std::size_t mask = slots_.size() - 1;
   for (std::size_t slot = hash & mask;; slot = (slot + 1) & mask) {
@@ -71,6 +89,10 @@ std::uint32_t VertexPool::add(const Quantised& q) {
       const auto index = static_cast<std::uint32_t>(vertices_.size());
       slots_[slot] = tag | index;
       vertices_.push_back(q);
+      for (std::size_t k = 0; k < 3; ++k) {
+        low_[k] = std::min(low_[k], q[k]);
+        high_[k] = std::max(high_[k], q[k]);
+      }
       return index;
     }
     const auto index = static_cast<std::uint32_t>(entry);
@@ -80,6 +102,10 @@ std::uint32_t VertexPool::add(const Quantised& q) {
       return index;
     }
   }
+}
+
+void VertexPool::prefetch(std::uint64_t hash) const {
+  if (!slots_.empty()) __builtin_prefetch(&slots_[hash & (slots_.size() - 1)]);
 }
 
 void VertexPool::rehash(std::size_t slots) {
@@ -93,22 +119,33 @@ void VertexPool::rehash(std::size_t slots) {
   }
 }
 
-bool IdSet::insert(std::string_view id) {
-  if (2 * (ids_.size() + 1) > slots_.size()) {
-    slots_.assign(std::max<std::size_t>(16, 2 * slots_.size()), kFree);
-    for (std::uint32_t index = 0; index < ids_.size(); ++index) place(ids_[index], index);
-  }
+const std::string* IdSet::insert(std::string_view id) {
+  if (2 * (ids_.size() + 1) > slots_.size()) reserve(2 * ids_.size() + 1);
   const std::uint64_t hash = std::hash<std::string_view>{}(id);
   const std::size_t mask = slots_.size() - 1;
   for (std::size_t slot = hash & mask; slots_[slot] != kFree; slot = (slot + 1) & mask) {
     const std::uint64_t entry = slots_[slot];
     if ((entry >> 32U) == (hash >> 32U) && ids_[static_cast<std::uint32_t>(entry)] == id) {
-      return false;
+      return nullptr;
     }
   }
   ids_.emplace_back(id);
   place(ids_.back(), static_cast<std::uint32_t>(ids_.size() - 1));
-  return true;
+  return &ids_.back();
+}
+
+void IdSet::prefetch(std::string_view id) const {
+  if (!slots_.empty()) {
+    __builtin_prefetch(&slots_[std::hash<std::string_view>{}(id) & (slots_.size() - 1)]);
+  }
+}
+
+void IdSet::reserve(std::size_t n) {
+  std::size_t slots = 16;
+  while (slots < 2 * (n + 1)) slots *= 2;
+  if (slots <= slots_.size()) return;
+  slots_.assign(slots, kFree);
+  for (std::uint32_t index = 0; index < ids_.size(); ++index) place(ids_[index], index);
 }
 
 void IdSet::place(std::string_view id, std::uint32_t index) {
@@ -129,6 +166,14 @@ void VertexPool::reserve(std::size_t n) {
 void VertexPool::clear() {
   std::fill(slots_.begin(), slots_.end(), kFree);
   vertices_.clear();
+  low_ = kNoLow;
+  high_ = kNoHigh;
+}
+
+void CityObjects::reserve_rings(std::size_t rings, std::size_t indices) {
+  rings_.indices.reserve(indices);
+  rings_.ends.reserve(rings);
+  rings_.classes.reserve(rings);
 }
 
 Quantised CityObjects::quantise(kernel::Vec3 local) const {
@@ -136,228 +181,402 @@ Quantised CityObjects::quantise(kernel::Vec3 local) const {
   return {round_half_away(d.x), round_half_away(d.y), round_half_away(d.z)};
 }
 
-// Each mesh vertex is quantised and pooled once, however many faces use it.
+// Quantises every vertex of the mesh and prefetches its pool slot; pool_index_ marks the vertices
+// that cannot be written. The pool numbers the points later, in the order the faces use them.
+void CityObjects::pool_vertices(const kernel::Mesh& mesh) {
+  const std::size_t n = mesh.vertex_count();
+  pool_index_.assign(n, kUnset);
+  points_.resize(n);
+  hashes_.resize(n);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    const kernel::Vec3 p = mesh.position(v);
+    if (!finite(p) || !quantisable(p - base_)) {
+      pool_index_[v] = kUnwritable;
+      continue;
+    }
+    points_[v] = quantise(p);
+    hashes_[v] = QuantisedHash{}(points_[v]);
+    pool_.prefetch(hashes_[v]);
+  }
+}
+
+// After pool_vertices(mesh): appends the mesh's faces to rings_, each mesh vertex pooled once (at
+// its first use), however many faces use it.
 void CityObjects::collect_surfaces(const kernel::Mesh& mesh) {
-  constexpr std::uint32_t kUnset = UINT32_MAX;
-  constexpr std::uint32_t kUnwritable = UINT32_MAX - 1;  // not finite, or too far to quantise
-  part_.clear();
-  pool_index_.assign(mesh.vertex_count(), kUnset);
+  std::vector<std::uint32_t>& indices = rings_.indices;
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    const std::size_t begin = part_.indices.size();
+    const std::size_t begin = indices.size();
     bool ok = true;
     for (std::uint32_t vertex : mesh.face(f)) {
       std::uint32_t& index = pool_index_[vertex];
-      if (index == kUnset) {
-        const kernel::Vec3 p = mesh.position(vertex);
-        index = finite(p) && quantisable(p - base_) ? pool_.add(quantise(p)) : kUnwritable;
-      }
+      if (index == kUnset) index = pool_.add(points_[vertex], hashes_[vertex]);
       if (index == kUnwritable) {
         ok = false;
         break;
       }
-      if (part_.indices.size() == begin || part_.indices.back() != index) {
-        part_.indices.push_back(index);
-      }
+      if (indices.size() == begin || indices.back() != index) indices.push_back(index);
     }
-    while (part_.indices.size() > begin + 1 && part_.indices.back() == part_.indices[begin]) {
-      part_.indices.pop_back();
-    }
-    if (!ok || part_.indices.size() < begin + 3) {
-      part_.indices.resize(begin);
+    while (indices.size() > begin + 1 && indices.back() == indices[begin]) indices.pop_back();
+    if (!ok || indices.size() < begin + 3) {
+      indices.resize(begin);
       continue;
     }
-    part_.ends.push_back(part_.indices.size());
-    part_.types.push_back(kernel::citygml_surface(mesh.tag(f).semantic));
+    rings_.ends.push_back(indices.size());
+    rings_.classes.push_back(mesh.tag(f).semantic);
   }
+}
+
+// Numbers the distinct vertices of `corners` 0, 1, ... in first-use order into local_ (one
+// number a corner), their pool vertices into local_vertex_; returns how many there are. A stamp per
+// pool vertex, in the same word as its number, tells this call's numbers from older ones without
+// clearing anything.
+std::uint32_t CityObjects::number_locally(std::span<const std::uint32_t> corners) const {
+  ++stamp_;
+  if (local_number_.size() < pool_.vertices().size()) {
+    local_number_.resize(pool_.vertices().size(), 0);
+  }
+  const std::uint64_t stamp = std::uint64_t{stamp_} << 32U;
+  std::uint32_t locals = 0;
+  local_.resize(corners.size());
+  local_vertex_.clear();
+  for (std::size_t c = 0; c < corners.size(); ++c) {
+    std::uint64_t& number = local_number_[corners[c]];
+    if ((number & ~std::uint64_t{UINT32_MAX}) != stamp) {
+      number = stamp | locals++;
+      local_vertex_.push_back(corners[c]);
+    }
+    local_[c] = static_cast<std::uint32_t>(number);
+  }
+  return locals;
 }
 
 // A Solid needs one closed, consistently outward-oriented 2-manifold shell: checked on the
-// quantised rings, so the test sees exactly what a validator such as val3dity will see. What
-// kernel::check calls closed, oriented and manifold with one component is tested on lists of
-// each vertex's outgoing edges (a handful each): every edge used once and its reverse once, and
-// every vertex reached from the first; the volume is kernel::volume's, on the quantised points.
-bool CityObjects::is_solid() const {
-  if (part_.size() < 4) return false;
-  ++stamp_;
-  if (local_index_.size() < pool_.vertices().size()) {
-    local_index_.resize(pool_.vertices().size());
-    local_stamp_.resize(pool_.vertices().size(), 0);
-  }
-  std::uint32_t locals = 0;
-  const auto local = [this, &locals](std::uint32_t index) {
-    if (local_stamp_[index] != stamp_) {
-      local_stamp_[index] = stamp_;
-      local_index_[index] = locals++;
-    }
-    return local_index_[index];
+// quantised rings [first, end), so the test sees exactly what a validator such as val3dity will
+// see. What kernel::check calls closed, oriented and manifold with one component comes to: every
+// edge {a, b} is used exactly once a -> b and once b -> a, and the edges join all the vertices;
+// the volume is kernel::volume's, on the quantised points. The edges are counted in a small hash
+// table of vertex pairs, the joins in a union-find over the part's own vertex numbers.
+bool CityObjects::is_solid(std::size_t first, std::size_t end) const {
+  if (end - first < 4) return false;
+  const std::size_t corners_begin = first == 0 ? 0 : rings_.ends[first - 1];
+  const std::uint32_t locals =
+      number_locally(std::span<const std::uint32_t>(rings_.indices)
+                         .subspan(corners_begin, rings_.ends[end - 1] - corners_begin));
+  std::size_t slots = 16;
+  while (slots < 2 * local_.size()) slots *= 2;
+  edges_.assign(slots, kNoEdge);
+  sides_.assign(slots, 0);
+  parent_.resize(locals);
+  for (std::uint32_t v = 0; v < locals; ++v) parent_[v] = v;
+  const auto root = [this](std::uint32_t v) {
+    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
+    return v;
   };
-  // The out-edges of local vertex v are to_[first_[v] .. first_[v + 1]).
-  first_.assign(1, 0);
-  const auto for_each_edge = [this](auto&& visit) {
-    for (std::size_t r = 0; r < part_.size(); ++r) {
-      const std::span<const std::uint32_t> ring = part_.ring(r);
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        visit(ring[i], ring[i + 1 < ring.size() ? i + 1 : 0]);
+  std::size_t pairs = 0;  // distinct {a, b}
+  std::uint32_t joins = 0;
+  for (std::size_t r = first, begin = 0; r < end; ++r) {
+    const std::size_t size = rings_.ends[r] - corners_begin - begin;
+    for (std::size_t i = 0; i < size; ++i) {
+      const std::uint32_t a = local_[begin + i];
+      const std::uint32_t b = local_[begin + (i + 1 < size ? i + 1 : 0)];
+      // Rings repeat no vertex consecutively (collect_surfaces), so a != b.
+      const std::uint8_t side = a < b ? 1 : 2;
+      const std::uint64_t key = std::uint64_t{std::min(a, b)} << 32U | std::max(a, b);
+      std::size_t slot = (key * 0x9E3779B97F4A7C15ULL >> 32U) & (slots - 1);
+      while (edges_[slot] != kNoEdge && edges_[slot] != key) slot = (slot + 1) & (slots - 1);
+      if (edges_[slot] == kNoEdge) {
+        edges_[slot] = key;
+        ++pairs;
+        const std::uint32_t ra = root(a);
+        const std::uint32_t rb = root(b);
+        if (ra != rb) {
+          parent_[ra] = rb;
+          ++joins;
+        }
+      } else if ((sides_[slot] & side) != 0) {
+        return false;  // used twice the same way
       }
+      sides_[slot] |= side;
     }
-  };
-  for_each_edge([&](std::uint32_t from, std::uint32_t /*to*/) {
-    const std::uint32_t a = local(from);
-    if (first_.size() < a + 2U) first_.resize(a + 2, 0);
-    ++first_[a + 1];
-  });
-  // Every vertex of a ring begins one of its edges.
-  for (std::size_t v = 0; v < locals; ++v) first_[v + 1] += first_[v];
-  to_.resize(first_.back());
-  cursor_.assign(first_.begin(), first_.end() - 1);
-  for_each_edge([&](std::uint32_t from, std::uint32_t to) {
-    to_[cursor_[local_index_[from]]++] = local_index_[to];
-  });
-  const auto out = [this](std::uint32_t v) {
-    return std::span<const std::uint32_t>(to_).subspan(first_[v], first_[v + 1] - first_[v]);
-  };
-  for (std::uint32_t a = 0; a < locals; ++a) {
-    const std::span<const std::uint32_t> edges = out(a);
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-      const std::uint32_t b = edges[i];
-      if (std::find(edges.begin() + static_cast<std::ptrdiff_t>(i) + 1, edges.end(), b) !=
-          edges.end()) {
-        return false;  // used twice
-      }
-      const std::span<const std::uint32_t> back = out(b);
-      if (std::find(back.begin(), back.end(), a) == back.end()) return false;  // no reverse
-    }
+    begin += size;
   }
-  // One component: every vertex reached from the first along edges (each has its reverse).
-  reached_.assign(locals, false);
-  cursor_.assign(1, 0);
-  reached_[0] = true;
-  std::size_t count = 1;
-  while (!cursor_.empty()) {
-    const std::uint32_t v = cursor_.back();
-    cursor_.pop_back();
-    for (const std::uint32_t w : out(v)) {
-      if (!reached_[w]) {
-        reached_[w] = true;
-        ++count;
-        cursor_.push_back(w);
-      }
-    }
-  }
-  return count == locals && volume() > 0;
+  // Every pair used both ways (each twice) and one component.
+  return 2 * pairs == local_.size() && joins + 1 == locals && volume(first, end, locals) > 0;
 }
 
-// kernel::volume of the part's quantised rings (the same sums in the same order).
-double CityObjects::volume() const {
-  const auto point = [this](std::uint32_t index) {
-    const Quantised& q = pool_.vertices()[index];
-    return kernel::Vec3{static_cast<double>(q[0]), static_cast<double>(q[1]),
-                        static_cast<double>(q[2])};
-  };
+// kernel::volume of the quantised rings [first, end) (the same sums in the same order), after
+// number_locally() on their corners: each point is converted to doubles once, not per corner.
+double CityObjects::volume(std::size_t first, std::size_t end, std::uint32_t locals) const {
+  const std::size_t corners_begin = first == 0 ? 0 : rings_.ends[first - 1];
+  volume_points_.resize(locals);
+  for (std::uint32_t v = 0; v < locals; ++v) {
+    const Quantised& q = pool_.vertices()[local_vertex_[v]];
+    volume_points_[v] = {static_cast<double>(q[0]), static_cast<double>(q[1]),
+                         static_cast<double>(q[2])};
+  }
   double total = 0;
-  for (std::size_t r = 0; r < part_.size(); ++r) {
-    const std::span<const std::uint32_t> ring = part_.ring(r);
+  for (std::size_t r = first, begin = 0; r < end; ++r) {
+    const std::size_t size = rings_.ends[r] - corners_begin - begin;
     kernel::Vec3 newell;
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const kernel::Vec3 a = point(ring[i]);
-      const kernel::Vec3 b = point(ring[i + 1 < ring.size() ? i + 1 : 0]);
+    for (std::size_t i = 0; i < size; ++i) {
+      const kernel::Vec3 a = volume_points_[local_[begin + i]];
+      const kernel::Vec3 b = volume_points_[local_[begin + (i + 1 < size ? i + 1 : 0)]];
       newell += kernel::Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
                              (a.x - b.x) * (a.y + b.y)};
     }
-    total += kernel::dot(point(ring[0]), newell / 2);
+    total += kernel::dot(volume_points_[local_[begin]], newell / 2);
+    begin += size;
   }
   return total / 3;
 }
 
-// {"boundaries", "lod", "semantics" (when some face has a type), "type"}; a Solid wraps the
-// surfaces and values in one more array (its single outer shell).
-void CityObjects::write_geometry(JsonStream& json) const {
-  const bool solid = is_solid();
-  json.begin_object().key("boundaries").begin_array();
-  if (solid) json.begin_array();
-  for (std::size_t r = 0; r < part_.size(); ++r) {
-    json.begin_array().integers(part_.ring(r)).end_array();
+// Not initialised: zero-filling room for a city's vertex list cost as much as writing it.
+char* CityObjects::scratch(std::size_t size) {
+  if (size > scratch_size_) {
+    scratch_ = std::make_unique_for_overwrite<char[]>(size);
+    scratch_size_ = size;
   }
-  if (solid) json.end_array();
-  json.end_array().key("lod").string("2");
-  std::vector<std::string_view> seen;
-  for (std::string_view type : part_.types) {
-    if (!type.empty() && std::find(seen.begin(), seen.end(), type) == seen.end()) {
-      seen.push_back(type);
+  return scratch_.get();
+}
+
+// Rings [first, end) as surfaces of one ring each ("[[i,j,k]]"), in an array; in a Solid's, one
+// array more (its single outer shell). Formatted here in one buffer rather than number by number
+// through the stream: the corners are most of a city's text.
+std::string_view CityObjects::boundaries_text(std::size_t first, std::size_t end, bool solid) {
+  const std::size_t corners = rings_.ends[end - 1] - (first == 0 ? 0 : rings_.ends[first - 1]);
+  // At most 10 digits and a comma a corner, 5 brackets and a comma a ring, 4 outer brackets.
+  char* const text = scratch(11 * corners + 6 * (end - first) + 4);
+  char* at = text;
+  *at++ = '[';
+  if (solid) *at++ = '[';
+  for (std::size_t r = first; r < end; ++r) {
+    if (r > first) *at++ = ',';
+    *at++ = '[';
+    *at++ = '[';
+    const std::span<const std::uint32_t> ring = rings_.ring(r);
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      if (i > 0) *at++ = ',';
+      at = std::to_chars(at, at + 10, ring[i]).ptr;
     }
+    *at++ = ']';
+    *at++ = ']';
   }
-  if (!seen.empty()) {
+  if (solid) *at++ = ']';
+  *at++ = ']';
+  return {text, static_cast<std::size_t>(at - text)};
+}
+
+// The distinct surface types of rings [first, end) into types_, in first-use order, and each
+// ring's position among them (-1: none) into values_. A type is looked up once a semantic class.
+void CityObjects::collect_types(std::size_t first, std::size_t end) {
+  struct Known {
+    kernel::SemanticClass semantic;
+    int value;
+  };
+  std::array<Known, 8> known{};  // the classes met so far (a part has a handful)
+  std::size_t known_count = 0;
+  types_.clear();
+  values_.clear();
+  for (std::size_t r = first; r < end; ++r) {
+    const kernel::SemanticClass semantic = rings_.classes[r];
+    const auto hit = std::find_if(known.begin(), known.begin() + known_count,
+                                  [semantic](const Known& k) { return k.semantic == semantic; });
+    if (hit != known.begin() + known_count) {
+      values_.push_back(hit->value);
+      continue;
+    }
+    const std::string_view type = kernel::citygml_surface(semantic);
+    int value = -1;
+    if (!type.empty()) {
+      value = static_cast<int>(std::find(types_.begin(), types_.end(), type) - types_.begin());
+      if (value == static_cast<int>(types_.size())) types_.push_back(type);
+    }
+    if (known_count < known.size()) known[known_count++] = {semantic, value};
+    values_.push_back(value);
+  }
+}
+
+// The "values" of collect_types(): an array of values_ (null for -1), in a Solid in one array more.
+std::string_view CityObjects::values_text(bool solid) {
+  char* const text = scratch(5 * values_.size() + 4);  // "null," at most a value
+  char* at = text;
+  *at++ = '[';
+  if (solid) *at++ = '[';
+  for (std::size_t i = 0; i < values_.size(); ++i) {
+    if (i > 0) *at++ = ',';
+    at = values_[i] < 0 ? std::copy_n("null", 4, at) : std::to_chars(at, at + 4, values_[i]).ptr;
+  }
+  if (solid) *at++ = ']';
+  *at++ = ']';
+  return {text, static_cast<std::size_t>(at - text)};
+}
+
+// {"boundaries", "lod", "semantics" (when some face has a type), "type"}.
+void CityObjects::write_geometry(JsonStream& json, const Object& part) {
+  const std::size_t end = part.first + part.count;
+  json.begin_object().key("boundaries").raw(boundaries_text(part.first, end, part.solid));
+  json.key("lod").string("2");
+  collect_types(part.first, end);
+  if (!types_.empty()) {
     json.key("semantics").begin_object().key("surfaces").begin_array();
-    for (std::string_view type : seen) json.begin_object().key("type").string(type).end_object();
-    json.end_array().key("values").begin_array();
-    if (solid) json.begin_array();
-    for (std::string_view type : part_.types) {
-      if (type.empty()) {
-        json.null();
-      } else {
-        json.integer(std::find(seen.begin(), seen.end(), type) - seen.begin());
-      }
-    }
-    if (solid) json.end_array();
-    json.end_array().end_object();
+    for (std::string_view type : types_) json.begin_object().key("type").string(type).end_object();
+    json.end_array().key("values").raw(values_text(part.solid)).end_object();
   }
-  json.key("type").string(solid ? "Solid" : "MultiSurface").end_object();
+  json.key("type").string(part.solid ? "Solid" : "MultiSurface").end_object();
+}
+
+// `base`, or `base-2`, `base-3`, ... when taken; records the result.
+std::string_view CityObjects::unique_id(const std::string& base) {
+  const std::string* id = ids_.insert(base);
+  for (int suffix = 2; id == nullptr; ++suffix) {
+    id = ids_.insert(base + "-" + std::to_string(suffix));
+  }
+  return *id;
 }
 
 // A part's id: unique among the ids given and none of the avoided buildings' ids.
-std::string CityObjects::unique_part_id(const std::string& base) {
+std::string_view CityObjects::unique_part_id(const std::string& base) {
   std::string id = base;
-  for (int suffix = 2; (avoided_ && avoided_->contains(id)) || !ids_.insert(id); ++suffix) {
+  for (int suffix = 2;; ++suffix) {
+    if (!avoided_ || !avoided_->contains(id)) {
+      if (const std::string* taken = ids_.insert(id)) return *taken;
+    }
     id = base + "-" + std::to_string(suffix);
   }
-  return id;
 }
 
+void CityObjects::prefetch_parts(const shape::Building& building) {
+  for (const shape::Part& part : building.parts) {
+    // From the name (read for the part's id) to the end of the mesh's array pointers.
+    const auto* begin = reinterpret_cast<const char*>(&part);
+    const auto* end = reinterpret_cast<const char*>(&part.mesh) + sizeof(kernel::Mesh);
+    prefetch_lines(begin, static_cast<std::size_t>(end - begin));
+  }
+}
+
+void CityObjects::prefetch_meshes(const shape::Building& building, bool positions_only) {
+  for (const shape::Part& part : building.parts) {
+    const kernel::Mesh& mesh = part.mesh;
+    if (mesh.empty()) continue;
+    __builtin_prefetch(mesh.positions().data());
+    if (positions_only) continue;
+    __builtin_prefetch(mesh.face(0).data());
+    __builtin_prefetch(&mesh.tag(0));
+  }
+}
+
+void CityObjects::test_solid() {
+  if (untested_ == kNone) return;
+  Object& part = objects_[untested_];
+  part.solid = is_solid(part.first, part.first + part.count);
+  untested_ = kNone;
+}
+
+// About 8 bytes a corner ("123456," and a ring's brackets), 4 a face's semantic value, 200 an
+// object and 32 an attribute: an estimate to reserve room with, as more than is used costs nothing
+// (the pages are never touched).
+void CityObjects::estimate_text(const Object& object) {
+  text_size_ += 200 + 2 * object.id.size() + object.parent.size();
+  if (object.attributes != nullptr) text_size_ += 32 * object.attributes->size();
+  if (!object.parent.empty() && object.count > 0) {
+    const std::size_t first = object.first == 0 ? 0 : rings_.ends[object.first - 1];
+    text_size_ += 8 * (rings_.ends[object.first + object.count - 1] - first) + 4 * object.count;
+  }
+}
+
+// The id of part `p` of a building whose id is `id` (before it is made unique).
+std::string CityObjects::part_id_base(std::string_view id, const shape::Part& part, std::size_t p) {
+  std::string base;
+  base.reserve(id.size() + 1 + (part.name.empty() ? 12 : part.name.size()));
+  base.append(id).append("-");
+  if (part.name.empty()) return base.append("part").append(std::to_string(p));
+  return base.append(part.name);
+}
+
+// Pools the parts' vertices and keeps their rings now, in the buildings' order (which numbers the
+// vertices); the text comes in write_objects(). A part's solid test waits until the next part's
+// points are quantised and their table slots prefetched: it gives those time to arrive. The ids are
+// given after the geometry, in the same order as ever (the building's, then its parts'), so that
+// their table slots, prefetched before it, are in cache by then (a city's ids do not stay there).
 std::string CityObjects::add_building(const shape::Building& building, std::size_t index) {
-  const std::string id =
-      unique_id(building.id.empty() ? "building" + std::to_string(index) : building.id, ids_);
-  std::vector<std::string> children;
+  const std::string id_base =
+      building.id.empty() ? "building" + std::to_string(index) : building.id;
+  ids_.prefetch(id_base);
+  part_ids_.resize(building.parts.size());
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
-    const shape::Part& part = building.parts[p];
-    std::string part_id =
-        unique_part_id(id + "-" + (part.name.empty() ? "part" + std::to_string(p) : part.name));
-    const std::size_t begin = text_.size();
-    JsonStream json(text_);
-    json.begin_object();
-    if (!part.attributes.empty()) json.key("attributes").attributes(part.attributes);
-    if (part.instance_of) {
-      collect_surfaces(shape::part_world_mesh(part));
-    } else {
-      collect_surfaces(part.mesh);
-    }
-    if (part_.size() > 0) {
-      json.key("geometry").begin_array();
-      write_geometry(json);
+    part_ids_[p] = part_id_base(id_base, building.parts[p], p);
+    ids_.prefetch(part_ids_[p]);
+  }
+  const std::size_t first_child = objects_.size();
+  for (const shape::Part& part : building.parts) {
+    Object object{{}, {}, object_type(part.kind), attributes_of(part.attributes), rings_.size()};
+    std::optional<kernel::Mesh> instance;  // (an empty Mesh would allocate)
+    if (part.instance_of) instance = shape::part_world_mesh(part);
+    const kernel::Mesh& mesh = instance ? *instance : part.mesh;
+    pool_vertices(mesh);
+    test_solid();  // the previous part's, while the pool's slots come in
+    collect_surfaces(mesh);
+    object.count = rings_.size() - object.first;
+    untested_ = objects_.size();
+    objects_.push_back(object);
+  }
+  const std::string_view id = unique_id(id_base);
+  for (std::size_t p = 0; p < building.parts.size(); ++p) {
+    Object& object = objects_[first_child + p];
+    if (id != id_base) part_ids_[p] = part_id_base(id, building.parts[p], p);  // "-2" added
+    object.id = unique_part_id(part_ids_[p]);
+    object.parent = id;
+    estimate_text(object);
+  }
+  objects_.push_back({id,
+                      {},
+                      "Building",
+                      attributes_of(building.attributes),
+                      first_child,
+                      objects_.size() - first_child});
+  estimate_text(objects_.back());
+  return std::string(id);
+}
+
+// A part: {"attributes", "geometry" (when it has faces), "parents", "type"}; a building:
+// {"attributes", "children", "type"} (members in nlohmann's sorted order, empty ones left out).
+void CityObjects::write_object(JsonStream& json, const Object& object) {
+  json.begin_object();
+  if (object.attributes != nullptr) json.key("attributes").attributes(*object.attributes);
+  if (object.parent.empty()) {
+    if (object.count > 0) {
+      json.key("children").begin_array();
+      for (std::size_t c = 0; c < object.count; ++c) json.string(objects_[object.first + c].id);
       json.end_array();
     }
-    json.key("parents").begin_array().string(id).end_array();
-    json.key("type").string(object_type(part.kind)).end_object();
-    objects_.push_back({part_id, begin, text_.size()});
-    children.push_back(std::move(part_id));
+  } else {
+    if (object.count > 0) {
+      json.key("geometry").begin_array();
+      write_geometry(json, object);
+      json.end_array();
+    }
+    json.key("parents").begin_array().string(object.parent).end_array();
   }
-  const std::size_t begin = text_.size();
-  JsonStream json(text_);
-  json.begin_object();
-  if (!building.attributes.empty()) json.key("attributes").attributes(building.attributes);
-  if (!children.empty()) {
-    json.key("children").begin_array();
-    for (const std::string& child : children) json.string(child);
-    json.end_array();
-  }
-  json.key("type").string("Building").end_object();
-  objects_.push_back({id, begin, text_.size()});
-  return id;
+  json.key("type").string(object.type).end_object();
+}
+
+// Starts loading what write_object() reads (in id order, objects far apart in memory).
+void CityObjects::prefetch_object(const Object& object) const {
+  __builtin_prefetch(object.id.data());
+  if (object.parent.empty() || object.count == 0) return;
+  const std::size_t corners_begin = object.first == 0 ? 0 : rings_.ends[object.first - 1];
+  const std::size_t corners_end = rings_.ends[object.first + object.count - 1];
+  prefetch_lines(&rings_.ends[object.first], object.count * sizeof(std::size_t));
+  prefetch_lines(&rings_.classes[object.first], object.count);
+  prefetch_lines(&rings_.indices[corners_begin],
+                 (corners_end - corners_begin) * sizeof(std::uint32_t));
 }
 
 // Sorted by id through a list of (first 8 bytes, position): most comparisons are settled by the
 // prefix, read as a big-endian number (a shorter id's missing bytes as 0, which orders it first
 // as the full comparison would; equal prefixes go to the full comparison).
 void CityObjects::write_objects(JsonStream& json) {
+  test_solid();
   struct Key {
     std::uint64_t prefix;
     std::uint32_t object;
@@ -366,7 +585,7 @@ void CityObjects::write_objects(JsonStream& json) {
   order.reserve(objects_.size());
   for (std::uint32_t o = 0; o < objects_.size(); ++o) {
     std::uint64_t prefix = 0;
-    const std::string& id = objects_[o].id;
+    const std::string_view id = objects_[o].id;
     for (std::size_t i = 0; i < 8; ++i) {
       prefix = (prefix << 8U) | (i < id.size() ? static_cast<unsigned char>(id[i]) : 0U);
     }
@@ -374,45 +593,81 @@ void CityObjects::write_objects(JsonStream& json) {
   }
   std::sort(order.begin(), order.end(), [this](const Key& a, const Key& b) {
     if (a.prefix != b.prefix) return a.prefix < b.prefix;
-    return std::string_view(objects_[a.object].id) < std::string_view(objects_[b.object].id);
+    return objects_[a.object].id < objects_[b.object].id;
   });
+  // Objects are prefetched kAhead ahead, their rings and ids half that (once the object is in).
+  constexpr std::size_t kAhead = 8;
   json.begin_object();
-  for (const Key& key : order) {
-    const ObjectText& object = objects_[key.object];
-    json.key(object.id).raw(
-        std::string_view(text_).substr(object.begin, object.end - object.begin));
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (i + kAhead < order.size()) __builtin_prefetch(&objects_[order[i + kAhead].object]);
+    if (i + kAhead / 2 < order.size()) prefetch_object(objects_[order[i + kAhead / 2].object]);
+    const Object& object = objects_[order[i].object];
+    json.key(object.id);
+    write_object(json, object);
   }
   json.end_object();
 }
 
-std::size_t CityObjects::text_size() const {
-  std::size_t size = text_.size() + 2;
-  for (const ObjectText& object : objects_) size += object.id.size() + 4;  // "id": and a comma
-  return size;
-}
-
-void CityObjects::write_vertices(JsonStream& json) const {
+// Formatted here a chunk of points at a time, as the boundaries are (a city has hundreds of
+// thousands of points).
+void CityObjects::write_vertices(JsonStream& json) {
+  constexpr std::size_t kChunk = 256;
+  // At most 20 characters a coordinate, 4 brackets and commas a point.
+  char* const text = scratch(64 * kChunk);
+  const std::vector<Quantised>& vertices = pool_.vertices();
   json.begin_array();
-  for (const Quantised& q : pool_.vertices()) json.integers(std::span<const std::int64_t>(q));
+  for (std::size_t chunk = 0; chunk < vertices.size(); chunk += kChunk) {
+    char* at = text;
+    const std::size_t chunk_end = std::min(chunk + kChunk, vertices.size());
+    for (std::size_t v = chunk; v < chunk_end; ++v) {
+      if (v > chunk) *at++ = ',';
+      *at++ = '[';
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (k > 0) *at++ = ',';
+        at = std::to_chars(at, at + 20, vertices[v][k]).ptr;
+      }
+      *at++ = ']';
+    }
+    json.elements({text, static_cast<std::size_t>(at - text)});
+  }
   json.end_array();
 }
 
 void CityObjects::clear() {
+  untested_ = kNone;
   pool_.clear();
-  text_.clear();
+  rings_.clear();
   objects_.clear();
+  text_size_ = 2;
+}
+// One pass over the meshes' positions, prefetched (see CityObjects::prefetch_parts()).
+SceneSize measure(const shape::Scene& scene) {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  kernel::Vec3 low{kNone, kNone, kNone};
+  SceneSize size;
+  const std::vector<shape::Building>& buildings = scene.buildings;
+  for (std::size_t b = 0; b < buildings.size(); ++b) {
+    if (b + CityObjects::kPartsAhead < buildings.size()) {
+      CityObjects::prefetch_parts(buildings[b + CityObjects::kPartsAhead]);
+    }
+    if (b + CityObjects::kMeshesAhead < buildings.size()) {
+      CityObjects::prefetch_meshes(buildings[b + CityObjects::kMeshesAhead], true);
+    }
+    size.objects += buildings[b].parts.size() + 1;
+    for (const shape::Part& part : buildings[b].parts) {
+      for (const kernel::Vec3& p : part.mesh.positions()) {
+        if (finite(p)) low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+      }
+      size.vertices += part.mesh.vertex_count();
+      size.faces += part.mesh.face_count();
+    }
+  }
+  size.minimum = low.x == kNone ? kernel::Vec3{} : low;
+  return size;
 }
 
 kernel::Vec3 local_minimum(const shape::Scene& scene) {
-  kernel::Bounds3 bounds;
-  for (const shape::Building& building : scene.buildings) {
-    for (const shape::Part& part : building.parts) {
-      for (const kernel::Vec3& p : part.mesh.positions()) {
-        if (finite(p)) bounds.add(p);
-      }
-    }
-  }
-  return bounds.empty() ? kernel::Vec3{} : bounds.min;
+  return measure(scene).minimum;
 }
 
 void write_transform(JsonStream& json, kernel::Vec3 translate) {

@@ -37,42 +37,59 @@ struct QuantisedHash {
 // or two per corner, the most of writing a city).
 class VertexPool {
  public:
-  std::uint32_t add(const Quantised& q);
+  std::uint32_t add(const Quantised& q) { return add(q, QuantisedHash{}(q)); }
+  // add() with the point's QuantisedHash computed beforehand (see prefetch()).
+  std::uint32_t add(const Quantised& q, std::uint64_t hash);
+  // Starts loading the table slot where add(q, hash) looks first. A table of a city's points does
+  // not stay in cache: prefetching a part's points before adding them overlaps their misses.
+  void prefetch(std::uint64_t hash) const;
   void reserve(std::size_t n);
   void clear();
   const std::vector<Quantised>& vertices() const { return vertices_; }
+  // The least and the greatest of the points' coordinates, axis by axis (when there are points).
+  const Quantised& low() const { return low_; }
+  const Quantised& high() const { return high_; }
 
  private:
   static constexpr std::uint64_t kFree = UINT64_MAX;
+  static constexpr Quantised kNoLow{INT64_MAX, INT64_MAX, INT64_MAX};
+  static constexpr Quantised kNoHigh{INT64_MIN, INT64_MIN, INT64_MIN};
   void rehash(std::size_t slots);
 
-  // A power of two, at most three quarters of them used (small enough to stay in cache): the high
-  // half of a point's hash and its number.
+  // A power of two, at most three quarters of them used: the high half of a point's hash and its
+  // number.
   std::vector<std::uint64_t> slots_;
   std::vector<Quantised> vertices_;
+  Quantised low_ = kNoLow;
+  Quantised high_ = kNoHigh;
 };
 
 // Object ids given so far, found by open addressing on their hashes (a node-based set of strings
 // cost an allocation and a cache miss per object).
 class IdSet {
  public:
-  // Adds `id`; false when it was there already.
-  bool insert(std::string_view id);
+  // Adds `id` and returns the set's copy of it (which stays where it is as long as the set does),
+  // or null when `id` was there already.
+  const std::string* insert(std::string_view id);
+  // Starts loading the table slot where insert(id) looks first.
+  void prefetch(std::string_view id) const;
+  // Room for `n` ids in all, so that adding them does not rehash.
+  void reserve(std::size_t n);
 
  private:
   static constexpr std::uint64_t kFree = UINT64_MAX;
   void place(std::string_view id, std::uint32_t index);
 
-  std::deque<std::string> ids_;
+  std::deque<std::string> ids_;       // a deque: adding an id does not move the others
   std::vector<std::uint64_t> slots_;  // high half of the hash, index into ids_
 };
 
-// The faces of one part as rings of vertex indices (ring r is indices[ends[r - 1] .. ends[r])),
-// with their surface type ("" = none).
-struct PartSurfaces {
+// Faces as rings of vertex indices (ring r is indices[ends[r - 1] .. ends[r])), with their
+// semantic classes. One list for every part added: a part's faces are a range of rings.
+struct Rings {
   std::vector<std::uint32_t> indices;
   std::vector<std::size_t> ends;
-  std::vector<std::string_view> types;
+  std::vector<kernel::SemanticClass> classes;
 
   std::size_t size() const { return ends.size(); }
   std::span<const std::uint32_t> ring(std::size_t r) const {
@@ -82,12 +99,13 @@ struct PartSurfaces {
   void clear() {
     indices.clear();
     ends.clear();
-    types.clear();
+    classes.clear();
   }
 };
 
-// Builds the city objects of buildings, one after the other, into a text buffer and their
-// vertices into a pool. A point p (local coordinates) becomes round((p - base) / kScale), so the
+// The city objects of buildings. add_building() numbers the vertices (in the order the buildings
+// come, into a pool) and keeps each part's rings; write_objects() then writes the objects' text
+// straight in id order. A point p (local coordinates) becomes round((p - base) / kScale), so the
 // file's transform translate is origin + base.
 class CityObjects {
  public:
@@ -95,14 +113,15 @@ class CityObjects {
 
   // Adds the building (`index`: its position, naming an unnamed building "building<index>") and
   // its parts; returns the building's object id, unique among every id this object has given.
-  // Parts that are shared-mesh instances are expanded.
+  // Parts that are shared-mesh instances are expanded. The building's and its parts' attributes
+  // are read again by write_objects(): they must outlive that call.
   std::string add_building(const shape::Building& building, std::size_t index);
   // The members of "CityObjects" (an object, sorted by id) added since the last clear().
   void write_objects(JsonStream& json);
-  // The length of what write_objects() will write.
-  std::size_t text_size() const;
+  // About the length of what write_objects() will write, for reserving room for it.
+  std::size_t text_size_estimate() const { return text_size_; }
   // The "vertices" array.
-  void write_vertices(JsonStream& json) const;
+  void write_vertices(JsonStream& json);
   const VertexPool& pool() const { return pool_; }
   VertexPool& pool() { return pool_; }
   // Forgets the objects and vertices (the ids given stay taken).
@@ -112,46 +131,99 @@ class CityObjects {
   void avoid(std::shared_ptr<const std::unordered_set<std::string>> building_ids) {
     avoided_ = std::move(building_ids);
   }
-  // Room for `bytes` of objects' text, so that it is not reallocated (and copied) as it grows.
-  void reserve_text(std::size_t bytes) { text_.reserve(bytes); }
+  // Room for `rings` faces of `indices` corners in all, so the lists are not copied as they grow.
+  void reserve_rings(std::size_t rings, std::size_t indices);
+  // Room for `n` object ids in all.
+  void reserve_ids(std::size_t n) { ids_.reserve(n); }
+  // Start loading what adding a building will read, some buildings ahead: a city's meshes lie all
+  // over memory, and fetching them while the buildings before are added overlaps their cache
+  // misses. prefetch_parts() loads the parts (names and meshes' array pointers), kPartsAhead
+  // buildings ahead; prefetch_meshes() reads those pointers and loads the arrays, kMeshesAhead
+  // ahead (distances that measured best on a district of 10,000 buildings).
+  static constexpr std::size_t kPartsAhead = 8;
+  static constexpr std::size_t kMeshesAhead = 4;
+  static void prefetch_parts(const shape::Building& building);
+  static void prefetch_meshes(const shape::Building& building, bool positions_only = false);
 
  private:
-  // One city object's compact JSON text, kept in text_ until the objects are sorted by id.
-  struct ObjectText {
-    std::string id;
-    std::size_t begin = 0;
-    std::size_t end = 0;
+  // A city object as added, its text written by write_objects(): what that needs is kept here, so
+  // writing in id order does not go back to the scene's parts (scattered in memory) for it. A
+  // part's geometry is rings [first, first + count) of rings_; a building's children are
+  // objects_[first, first + count).
+  struct Object {
+    std::string_view id;      // ids_'s copy
+    std::string_view parent;  // the building's id; empty for the building itself
+    std::string_view type;    // "Building", "BuildingPart", ...
+    const shape::AttributeMap* attributes = nullptr;  // null when there are none
+    std::size_t first = 0;
+    std::size_t count = 0;
+    bool solid = false;
   };
 
   Quantised quantise(kernel::Vec3 local) const;
   void collect_surfaces(const kernel::Mesh& mesh);
-  bool is_solid() const;
-  double volume() const;
-  void write_geometry(JsonStream& json) const;
+  void pool_vertices(const kernel::Mesh& mesh);
+  std::uint32_t number_locally(std::span<const std::uint32_t> corners) const;
+  bool is_solid(std::size_t first, std::size_t end) const;
+  void test_solid();
+  double volume(std::size_t first, std::size_t end, std::uint32_t locals) const;
+  void prefetch_object(const Object& object) const;
+  void write_object(JsonStream& json, const Object& object);
+  char* scratch(std::size_t size);
+  std::string_view boundaries_text(std::size_t first, std::size_t end, bool solid);
+  void collect_types(std::size_t first, std::size_t end);
+  std::string_view values_text(bool solid);
+  void write_geometry(JsonStream& json, const Object& part);
 
-  std::string unique_part_id(const std::string& base);
+  void estimate_text(const Object& object);
+  static std::string part_id_base(std::string_view id, const shape::Part& part, std::size_t p);
+  std::string_view unique_id(const std::string& base);
+  std::string_view unique_part_id(const std::string& base);
 
   kernel::Vec3 base_;
   VertexPool pool_;
   IdSet ids_;
   std::shared_ptr<const std::unordered_set<std::string>> avoided_;
-  std::string text_;
-  std::vector<ObjectText> objects_;
+  Rings rings_;
+  std::vector<Object> objects_;
+  std::size_t text_size_ = 2;  // text_size_estimate()
+  static constexpr std::size_t kNone = SIZE_MAX;
+  std::size_t untested_ = kNone;  // the part in objects_ whose solid test is still to come
 
   // Scratch reused from part to part.
-  PartSurfaces part_;
+  std::vector<std::string> part_ids_;      // a building's parts' ids before made unique
   std::vector<std::uint32_t> pool_index_;  // mesh vertex -> pool vertex (kUnset, kUnwritable)
-  mutable std::vector<std::uint32_t> local_index_;  // pool vertex -> solid test's numbering
-  mutable std::vector<std::uint32_t> local_stamp_;  // which solid test set local_index_
+  std::vector<std::uint64_t> hashes_;      // mesh vertex -> its quantised point's hash
+  std::vector<Quantised> points_;          // mesh vertex -> its quantised point
+  std::unique_ptr<char[]> scratch_;        // the text of a geometry's "boundaries" or "values", or
+  std::size_t scratch_size_ = 0;           // of the vertices
+  std::vector<std::string_view> types_;    // a geometry's surface types
+  std::vector<int> values_;                // its rings' positions in types_ (-1: none)
+  // The solid test's numbering of a part's vertices: pool vertex -> the test that numbered it (high
+  // half) and its number (low half); corner -> its vertex's number.
+  mutable std::vector<std::uint64_t> local_number_;
   mutable std::uint32_t stamp_ = 0;
-  // The solid test's edges: local vertex v's out-edges are to_[first_[v] .. first_[v + 1]).
-  mutable std::vector<std::uint32_t> first_;
-  mutable std::vector<std::uint32_t> to_;
-  mutable std::vector<std::uint32_t> cursor_;
-  mutable std::vector<bool> reached_;
+  mutable std::vector<std::uint32_t> local_;
+  mutable std::vector<std::uint32_t> local_vertex_;  // local number -> pool vertex
+  mutable std::vector<kernel::Vec3> volume_points_;  // the volume's points, by local number
+  // The solid test's edges: pairs of local numbers (lower << 32 | higher), and the ways each was
+  // used (1: lower to higher, 2: back); its union-find of the local numbers.
+  mutable std::vector<std::uint64_t> edges_;
+  mutable std::vector<std::uint8_t> sides_;
+  mutable std::vector<std::uint32_t> parent_;
 };
 
-// The minimum corner of the scene's finite vertices (local coordinates), (0, 0, 0) when none.
+// What the CityJSON writer needs to know of a scene before writing it: the minimum corner of its
+// finite vertices (local coordinates; (0, 0, 0) when none) and its sizes, to reserve room with.
+struct SceneSize {
+  kernel::Vec3 minimum;
+  std::size_t vertices = 0;  // the meshes' vertices
+  std::size_t faces = 0;
+  std::size_t objects = 0;  // buildings and parts
+};
+SceneSize measure(const shape::Scene& scene);
+
+// measure(scene).minimum.
 kernel::Vec3 local_minimum(const shape::Scene& scene);
 
 // The "transform" member's value: scale kScale, `translate`.

@@ -22,7 +22,7 @@ using cityjson::Quantised;
 // file, quantised from the scene's local minimum corner.
 class Writer {
  public:
-  explicit Writer(const shape::Scene& scene);
+  Writer(const shape::Scene& scene, const cityjson::SceneSize& size);
   void write(std::string& out);
 
  private:
@@ -33,39 +33,22 @@ class Writer {
   cityjson::CityObjects objects_;
 };
 
-Writer::Writer(const shape::Scene& scene)
-    : scene_(scene), min_(cityjson::local_minimum(scene)), objects_(min_) {
-  std::size_t vertices = 0;
-  std::size_t corners = 0;
-  std::size_t parts = 0;
-  for (const shape::Building& building : scene.buildings) {
-    for (const shape::Part& part : building.parts) {
-      vertices += part.mesh.vertex_count();
-      for (std::size_t f = 0; f < part.mesh.face_count(); ++f) corners += part.mesh.face(f).size();
-    }
-    parts += building.parts.size() + 1;
-  }
-  objects_.pool().reserve(vertices);
-  // About 12 bytes a corner ("123456,", brackets and a semantic value) and 160 an object.
-  objects_.reserve_text(12 * corners + 160 * parts);
+Writer::Writer(const shape::Scene& scene, const cityjson::SceneSize& size)
+    : scene_(scene), min_(size.minimum), objects_(min_) {
+  objects_.pool().reserve(size.vertices);
+  // About 4 corners a face (quads, triangles and a few larger faces); more only cost a copy.
+  objects_.reserve_rings(size.faces, 4 * size.faces);
+  objects_.reserve_ids(size.objects);
 }
 
 void Writer::write_metadata(JsonStream& json) const {
   json.begin_object();
-  const std::vector<Quantised>& vertices = objects_.pool().vertices();
-  if (!vertices.empty()) {
-    Quantised lo = vertices.front();
-    Quantised hi = lo;
-    for (const Quantised& q : vertices) {
-      for (std::size_t k = 0; k < 3; ++k) {
-        lo[k] = std::min(lo[k], q[k]);
-        hi[k] = std::max(hi[k], q[k]);
-      }
-    }
+  const cityjson::VertexPool& pool = objects_.pool();
+  if (!pool.vertices().empty()) {
     const kernel::Vec3 t = scene_.origin + min_;
     const std::array<double, 3> translate{t.x, t.y, t.z};
     json.key("geographicalExtent").begin_array();
-    for (const Quantised* corner : {&lo, &hi}) {
+    for (const Quantised* corner : {&pool.low(), &pool.high()}) {
       for (std::size_t k = 0; k < 3; ++k) {
         json.number(translate[k] + static_cast<double>((*corner)[k]) * cityjson::kScale);
       }
@@ -78,11 +61,19 @@ void Writer::write_metadata(JsonStream& json) const {
 }
 
 void Writer::write(std::string& out) {
-  for (std::size_t b = 0; b < scene_.buildings.size(); ++b) {
-    objects_.add_building(scene_.buildings[b], b);
+  const std::vector<shape::Building>& buildings = scene_.buildings;
+  for (std::size_t b = 0; b < buildings.size(); ++b) {
+    if (b + cityjson::CityObjects::kPartsAhead < buildings.size()) {
+      cityjson::CityObjects::prefetch_parts(buildings[b + cityjson::CityObjects::kPartsAhead]);
+    }
+    if (b + cityjson::CityObjects::kMeshesAhead < buildings.size()) {
+      cityjson::CityObjects::prefetch_meshes(buildings[b + cityjson::CityObjects::kMeshesAhead]);
+    }
+    objects_.add_building(buildings[b], b);
   }
   // The objects, then about 20 bytes per vertex ("[123456,234567,3456],").
-  out.reserve(out.size() + objects_.text_size() + 24 * objects_.pool().vertices().size() + 512);
+  out.reserve(out.size() + objects_.text_size_estimate() + 24 * objects_.pool().vertices().size() +
+              512);
   JsonStream json(out);
   json.begin_object().key("CityObjects");
   objects_.write_objects(json);
@@ -117,7 +108,8 @@ std::string cityjson_reference_system(const std::string& crs) {
 
 std::string cityjson_text(const shape::Scene& input) {
   shape::Scene expanded;  // shared-mesh instances written as plain geometry
-  Writer writer(shape::expand_instances(input, expanded));
+  const shape::Scene& scene = shape::expand_instances(input, expanded);
+  Writer writer(scene, cityjson::measure(scene));
   std::string out;
   writer.write(out);
   out += '\n';

@@ -95,6 +95,9 @@ class JsonStream {
   JsonStream& value(const shape::Value& value);
   // Text that is already one complete JSON value, written in this stream's layout (compact).
   JsonStream& raw(std::string_view json);
+  // Compact text of one or more complete values separated by commas, written as the next elements
+  // of the open array: a long array formatted by the caller a chunk at a time.
+  JsonStream& elements(std::string_view json) { return raw(json); }
 
   // An object of `attributes` (sorted by name, as std::map keeps them). When `extra_name` is not
   // empty and not an attribute name, the member extra_name: extra_text (a string) is added in

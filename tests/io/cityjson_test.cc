@@ -1,5 +1,6 @@
 // CityJSON writer: golden file, structure (transform, metadata, parents and children, Solid vs
 // MultiSurface, semantics), quantisation and deduplication of vertices, degenerate rings.
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -143,6 +144,56 @@ TEST(CityJsonWriter, NonFiniteFacesAreSkipped) {
   const json city = written(scene);
   EXPECT_EQ(city["CityObjects"]["b-p"]["type"], "BuildingRoom");
   EXPECT_EQ(city["CityObjects"]["b-p"]["geometry"][0]["boundaries"].size(), 1U);
+}
+
+// The solid test on the quantised rings: every edge used exactly once each way, one shell,
+// positive volume; anything else is written as a MultiSurface.
+TEST(CityJsonWriter, SolidsNeedOneClosedOrientedShell) {
+  const auto box = [](double x, double y) {
+    return testing::prism({{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}}, 0, 1);
+  };
+  const auto type = [](const kernel::Mesh& mesh) {
+    shape::Scene scene;
+    scene.buildings.push_back({"b", {}, {{"p", shape::PartKind::kBuildingPart, {}, mesh}}});
+    return written(scene)["CityObjects"]["b-p"]["geometry"][0]["type"].get<std::string>();
+  };
+  EXPECT_EQ(type(box(0, 0)), "Solid");
+
+  kernel::Mesh inside_out = box(0, 0);  // closed and oriented, negative volume
+  inside_out.flip();
+  EXPECT_EQ(type(inside_out), "MultiSurface");
+
+  kernel::Mesh two_shells = box(0, 0);  // two components
+  two_shells.append(box(3, 0));
+  EXPECT_EQ(type(two_shells), "MultiSurface");
+
+  kernel::Mesh edge_shared = box(0, 0);  // touching along one edge: used twice each way
+  edge_shared.append(box(1, 1));
+  EXPECT_EQ(type(edge_shared), "MultiSurface");
+
+  const kernel::Mesh closed = box(0, 0);
+  kernel::Mesh one_flipped;  // the roof turned: its edges used twice the same way
+  kernel::Mesh roof_twice;   // the roof again: its edges used twice the same way too
+  kernel::Mesh no_roof;      // open: the roof's edges used one way only
+  for (const kernel::Vec3& p : closed.positions()) {
+    one_flipped.add_vertex(p);
+    roof_twice.add_vertex(p);
+    no_roof.add_vertex(p);
+  }
+  for (std::size_t f = 0; f < closed.face_count(); ++f) {
+    std::vector<std::uint32_t> loop(closed.face(f).begin(), closed.face(f).end());
+    roof_twice.add_face(loop, closed.tag(f));
+    const bool roof = f + 1 == closed.face_count();
+    if (!roof) no_roof.add_face(loop, closed.tag(f));
+    if (roof) {
+      roof_twice.add_face(loop, closed.tag(f));
+      std::reverse(loop.begin(), loop.end());
+    }
+    one_flipped.add_face(loop, closed.tag(f));
+  }
+  EXPECT_EQ(type(one_flipped), "MultiSurface");
+  EXPECT_EQ(type(roof_twice), "MultiSurface");
+  EXPECT_EQ(type(no_roof), "MultiSurface");
 }
 
 TEST(CityJsonWriter, IdsStayUnique) {
