@@ -140,6 +140,22 @@ try {
   } catch (error) {
     failures.push(`the selected node's output: ${error.message.split('\n')[0]}`);
   }
+  // An expression checked as it is typed (not yet applied): an unknown name marks the field with
+  // the checker's message; fixed, the mark goes; the graph is not changed by typing.
+  await select('translate');
+  const zField = '#graph [data-param="z"]';
+  const textBefore = await page.evaluate(() => window.studio.editor.state.doc.toString());
+  await page.fill(zField, '= @index * nosuch');
+  try {
+    await page.waitForFunction(() => /G021: unknown graph parameter 'nosuch'/.test(document.querySelector('#graph .graph-typed').textContent) &&
+                               document.querySelector('#graph [data-param="z"]').classList.contains('invalid'));
+    await page.fill(zField, '= @index * rise');
+    await page.waitForFunction(() => document.querySelector('#graph .graph-typed').textContent === '' &&
+                               !document.querySelector('#graph [data-param="z"]').classList.contains('invalid'));
+  } catch (error) {
+    failures.push(`an expression checked as typed: ${error.message.split('\n')[0]}`);
+  }
+  check(await page.evaluate(() => window.studio.editor.state.doc.toString()) === textBefore, 'typing changed the graph');
   // A click on the canvas's empty corner: nothing selected, nothing highlighted.
   const canvas = page.locator('#graph svg.graph-canvas');
   const box = await canvas.boundingBox();

@@ -46,6 +46,10 @@ export class GraphEditor {
   //           read(path): Promise<text>, save(path, text): Promise, open(path) }.
   constructor(panel, reference, host) {
     this.panel = panel;
+    // A field typed in but not applied yet (its change has not fired): the panel is not redrawn
+    // under it. Cleared before the field's own change handler runs.
+    panel.addEventListener('input', (e) => { if (e.target.matches('input, textarea')) e.target.dataset.dirty = '1'; });
+    panel.addEventListener('change', (e) => { delete e.target.dataset.dirty; }, true);
     this.reference = reference;
     this.host = host;
     this.selected = null; // a node id: the one the panel edits
@@ -347,7 +351,27 @@ export class GraphEditor {
     // Drawn into a detached box first: the panel is replaced only when it would change, so the
     // field the user is typing in is not taken away by a run that ends.
     const shown = this.panel.querySelector('.graph-params');
+    // Nor while a field of the same node is being typed in (a probe's table arriving, a run):
+    // drawn when the focus leaves it.
+    const typing = shown.contains(document.activeElement) && document.activeElement.dataset.dirty === '1';
+    if (typing && this.selected && shown.dataset.node === this.selected) {
+      if (!this.paramsDeferred) {
+        this.paramsDeferred = true;
+        const resume = (event) => {
+          const next = event.relatedTarget;
+          if (next && shown.contains(next) && next.dataset.dirty === '1') {
+            shown.addEventListener('focusout', resume, { once: true }); // on to the next field
+            return;
+          }
+          this.paramsDeferred = false;
+          setTimeout(() => this.renderParams(), 0); // after the field's change has been applied
+        };
+        shown.addEventListener('focusout', resume, { once: true });
+      }
+      return;
+    }
     const box = document.createElement('div');
+    box.dataset.node = this.selected || '';
     box.className = 'graph-params';
     this.fillParams(box);
     if (box.innerHTML !== this.paramsHtml) {
@@ -388,6 +412,7 @@ export class GraphEditor {
           <input name="mapping" data-write="${escape(w)}" value="${escape((node.attributes || {})[w] ?? '')}" placeholder="(discarded)">
         </label>`).join('')}` : ''}
       ${type && type.augments.length ? this.augmentsHtml(type, node) : ''}
+      <div class="graph-typed error"></div>
       <div class="graph-diagnostics">${diagnostics.map((d) => `<div class="${d.severity}">${escape(`${d.code}: ${d.message}`)}</div>`).join('')}</div>
       ${entities.length ? `<table class="graph-entities"><tr><th>entity</th><th>port</th><th>attributes</th></tr>${entities.slice(0, 50).map((e) =>
         `<tr><td>${e.id} ${escape(e.type)}</td><td>${escape(e.port)}</td><td>${escape(JSON.stringify(e.attributes))}</td></tr>`).join('')}</table>` : ''}`;
@@ -448,6 +473,7 @@ export class GraphEditor {
       });
     }
     for (const input of box.querySelectorAll('[name=param]')) {
+      input.addEventListener('input', () => this.checkTyped(node.id, input));
       input.addEventListener('change', () => {
         const n = current();
         if (!n) return;
@@ -459,6 +485,37 @@ export class GraphEditor {
         this.write();
       });
     }
+  }
+
+  // A parameter checked as it is typed, before it is applied: the document with the field's text
+  // goes to the checker, and an error on the node's line marks the field with its message.
+  checkTyped(id, input) {
+    const asked = (this.typedChecks = (this.typedChecks || 0) + 1);
+    clearTimeout(this.typedTimer);
+    this.typedTimer = setTimeout(async () => {
+      const n = this.doc.nodes.find((x) => x.id === id);
+      if (!n) return;
+      const params = n.params;
+      const value = typedValue(input.value);
+      n.params = { ...(params || {}) };
+      if (value === undefined) delete n.params[input.dataset.param];
+      else n.params[input.dataset.param] = value;
+      const text = graphText(this.root);
+      n.params = params;
+      const pattern = new RegExp(`"id"\\s*:\\s*"${id}"`);
+      const line = text.split('\n').findIndex((l) => pattern.test(l)) + 1;
+      let errors = [];
+      try {
+        errors = (await this.host.check(text)).filter((d) => d.severity === 'error' && d.line === line);
+      } catch {
+        return; // the next keystroke asks again
+      }
+      if (asked !== this.typedChecks || !input.isConnected) return;
+      input.classList.toggle('invalid', errors.length > 0);
+      input.title = errors.map((d) => `${d.code}: ${d.message}`).join('\n');
+      const said = input.closest('.graph-params') && input.closest('.graph-params').querySelector('.graph-typed');
+      if (said) said.textContent = errors.length ? `${errors[0].code}: ${errors[0].message}` : '';
+    }, 150);
   }
 
   // The node's augmentation items as rows of fields (and `out` where items make ports), with a
