@@ -130,6 +130,8 @@ export class Viewport {
   // Shows the GLB `bytes` (what one graph node made: the graph editor's selection) over the model
   // in one strong colour, the model faded around it; null takes it away. Returns its meshes.
   async highlight(bytes) {
+    // A later call (another node, or none) wins over one still reading its model.
+    const call = (this.highlightCalls = (this.highlightCalls || 0) + 1);
     if (this.probe) {
       this.scene.remove(this.probe);
       this.probe.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
@@ -141,6 +143,10 @@ export class Viewport {
       return 0;
     }
     const gltf = await this.loader.parseAsync(bytes, '');
+    if (call !== this.highlightCalls) {
+      gltf.scene.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
+      return 0;
+    }
     this.probe = gltf.scene;
     // Drawn over the faded model's coplanar faces (the node's output is often part of it).
     const material = new THREE.MeshStandardMaterial({ color: 0xff7a00, emissive: 0x662200, roughness: 0.6,
