@@ -48,6 +48,17 @@ async function api(path, options = {}, wanted = () => true) {
   }
 }
 
+// A job (/api/build, /api/report) for as long as its answer is wanted. The server cancels a
+// job when a newer one for the same file starts; a request that reached it late (a retry after a
+// 503, a slow thread) can cancel a newer edit's job, so a cancelled answer that is still wanted is
+// asked for again.
+async function job(path, body, wanted) {
+  for (;;) {
+    const answer = await (await api(path, { method: 'POST', body }, wanted)).json();
+    if (!answer.cancelled || !wanted()) return answer;
+  }
+}
+
 const element = (id) => document.getElementById(id);
 const setStatus = (text) => { element('status').textContent = text; };
 
@@ -129,14 +140,13 @@ async function build(sequence) {
     // The graph editor's counts from a run without output, in parallel: they come before the
     // model is written (a city's GLB takes longer than its run).
     if (graphShown()) {
-      api(`/api/report?${buildQuery()}`, { method: 'POST', body: text }, current)
-        .then((r) => r.json())
+      job(`/api/report?${buildQuery()}`, text, current)
         .then((counts) => { if (sequence === state.sequence && counts.ok) showGraph(counts.report); })
         .catch(() => {});
     }
     const query = buildQuery();
     if (graphShown()) query.set('behind', '1'); // the report run above goes first
-    const answer = await (await api(`/api/build?${query}`, { method: 'POST', body: text }, current)).json();
+    const answer = await job(`/api/build?${query}`, text, current);
     if (sequence !== state.sequence || answer.cancelled) return; // a newer edit took over
     answer.sequence = sequence;
     showDiagnostics(answer.diagnostics);
@@ -186,8 +196,7 @@ async function probe(path) {
     const query = buildQuery();
     query.set('probe', path);
     query.set('behind', '1'); // the next edit's counts go first
-    const answer = await (await api(`/api/build?${query}`, { method: 'POST', body: editor.state.doc.toString() },
-                                    wanted)).json();
+    const answer = await job(`/api/build?${query}`, editor.state.doc.toString(), wanted);
     if (!wanted() || answer.cancelled) return;
     const model = answer.ok ? await (await api(answer.model, {}, wanted)).arrayBuffer() : null;
     if (!wanted()) return;
