@@ -4,7 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <numeric>
-#include <tuple>
+#include <type_traits>
 
 #include "kernel/contract_loop.h"
 
@@ -14,6 +14,29 @@ Float3 to_y_up(kernel::Vec3 p) {
 }
 
 namespace {
+
+// A slot of an open-addressing table of `capacity` (a power of two) for a position's bits.
+template <typename Coordinate>
+std::size_t hash_slot(const std::array<Coordinate, 3>& position, std::size_t capacity) {
+  using Bits = std::conditional_t<sizeof(Coordinate) == 4, std::uint32_t, std::uint64_t>;
+  std::uint64_t hash = 0;
+  for (const Coordinate c : position) {
+    hash = (hash ^ static_cast<std::uint64_t>(std::bit_cast<Bits>(c))) * 0x9E3779B97F4A7C15ULL;
+  }
+  return (hash >> 32U) & (capacity - 1);
+}
+
+// Whether no two of a face's keys are equal (a face has a handful of corners; a long loop is
+// left to contract_loop).
+bool distinct(std::span<const std::uint32_t> keys) {
+  if (keys.size() < 3 || keys.size() > 16) return false;
+  for (std::size_t i = 1; i < keys.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (keys[i] == keys[j]) return false;
+    }
+  }
+  return true;
+}
 
 // The position `p` is written at, to compare: float32 or a multiple of `grid` (glTF's Y-up frame).
 Float3 rounded(kernel::Vec3 p, double grid) {
@@ -30,27 +53,7 @@ bool Float32Weld::run(const kernel::Mesh& mesh, double grid) {
   std::iota(parent_.begin(), parent_.end(), 0U);
   active_ = false;
   if (!collapses(mesh, grid)) return false;
-  std::vector<Entry>& order = order_;
-  order.clear();
-  for (std::uint32_t v = 0; v < n; ++v)
-    order.push_back({rounded(mesh.position(v), grid), mesh.position(v), v});
-  std::sort(order.begin(), order.end(), [](const Entry& a, const Entry& b) {
-    return std::tie(a.rounded, a.p.x, a.p.y, a.p.z, a.vertex) <
-           std::tie(b.rounded, b.p.x, b.p.y, b.p.z, b.vertex);
-  });
-  bool collapsed = false;
-  for (std::size_t i = 1; i < order.size(); ++i) {
-    collapsed =
-        collapsed || (order[i].rounded == order[i - 1].rounded && !(order[i].p == order[i - 1].p));
-  }
-  if (!collapsed) return false;
-  same_.resize(n);
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    const bool same = i > 0 && order[i].p == order[i - 1].p;
-    same_[order[i].vertex] = same ? same_[order[i - 1].vertex] : order[i].vertex;
-    if (i > 0 && order[i].rounded == order[i - 1].rounded)
-      unite(order[i].vertex, order[i - 1].vertex);
-  }
+  group(mesh, grid);
   active_ = true;
   flatten();
   triangulate_all(mesh);
@@ -64,6 +67,36 @@ bool Float32Weld::run(const kernel::Mesh& mesh, double grid) {
   return true;
 }
 
+// Every vertex united with the first (lowest) vertex at its rounded position, and same_[v] the
+// first vertex at exactly its position: two hash tables filled in vertex order (a sort of the
+// vertices by position gave the same and cost more than the rest of the weld).
+void Float32Weld::group(const kernel::Mesh& mesh, double grid) {
+  const std::size_t n = mesh.vertex_count();
+  std::size_t capacity = 16;
+  while (capacity < 2 * n) capacity *= 2;
+  slots_.assign(capacity, kFree);
+  exact_slots_.assign(capacity, kFree);
+  same_.resize(n);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    const kernel::Vec3 p = mesh.position(v);
+    Float3& r = rounded_[v];
+    r = rounded(p, grid);
+    for (float& c : r) c += 0.0F;  // -0 as +0: they compare equal
+    std::size_t slot = hash_slot(r, capacity);
+    for (; slots_[slot] != kFree && rounded_[slots_[slot]] != r;
+         slot = (slot + 1) & (capacity - 1)) {
+    }
+    if (slots_[slot] == kFree) slots_[slot] = v;
+    unite(v, slots_[slot]);
+    slot = hash_slot(std::array<double, 3>{p.x + 0.0, p.y + 0.0, p.z + 0.0}, capacity);
+    for (; exact_slots_[slot] != kFree && !(mesh.position(exact_slots_[slot]) == p);
+         slot = (slot + 1) & (capacity - 1)) {
+    }
+    if (exact_slots_[slot] == kFree) exact_slots_[slot] = v;
+    same_[v] = exact_slots_[slot];
+  }
+}
+
 // Whether two vertices at different positions round to one: the usual answer, no, found with a
 // hash table of the rounded positions rather than by sorting the vertices.
 bool Float32Weld::collapses(const kernel::Mesh& mesh, double grid) {
@@ -75,12 +108,8 @@ bool Float32Weld::collapses(const kernel::Mesh& mesh, double grid) {
   for (std::uint32_t v = 0; v < n; ++v) {
     Float3& r = rounded_[v];
     r = rounded(mesh.position(v), grid);
-    std::uint64_t hash = 0;
-    for (float& c : r) {
-      c += 0.0F;  // -0 as +0: they compare equal
-      hash = (hash ^ std::bit_cast<std::uint32_t>(c)) * 0x9E3779B97F4A7C15ULL;
-    }
-    std::size_t slot = (hash >> 32U) & (capacity - 1);
+    for (float& c : r) c += 0.0F;  // -0 as +0: they compare equal
+    std::size_t slot = hash_slot(r, capacity);
     for (; slots_[slot] != kFree; slot = (slot + 1) & (capacity - 1)) {
       const std::uint32_t u = slots_[slot];
       if (rounded_[u] == r && !(mesh.position(u) == mesh.position(v))) return true;
@@ -108,17 +137,27 @@ void Float32Weld::flatten() {
   for (std::uint32_t v = 0; v < parent_.size(); ++v) parent_[v] = find(v);
 }
 
-bool Float32Weld::closed_and_oriented(const kernel::Mesh& mesh) const {
-  kernel::EdgeUses uses;
+// Every directed edge (vertices at one position taken as one) used once, and its reverse once
+// (kernel::EdgeUses::unpaired() empty). The edges as sorted keys rather than a hash table: most
+// meshes asked here are open (a building's alike terminals as one part), and the first edge
+// without its reverse answers.
+bool Float32Weld::closed_and_oriented(const kernel::Mesh& mesh) {
+  edges_.clear();
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const auto loop = mesh.face(f);
     for (std::size_t i = 0; i < loop.size(); ++i) {
-      const std::uint32_t a = same_[loop[i]];
-      const std::uint32_t b = same_[loop[(i + 1) % loop.size()]];
-      if (a != b) uses.add(a, b);
+      const std::uint64_t a = same_[loop[i]];
+      const std::uint64_t b = same_[loop[(i + 1) % loop.size()]];
+      if (a != b) edges_.push_back(a << 32U | b);
     }
   }
-  return mesh.face_count() > 0 && uses.unpaired().empty();
+  std::sort(edges_.begin(), edges_.end());
+  for (std::size_t i = 0; i < edges_.size(); ++i) {
+    if (i > 0 && edges_[i] == edges_[i - 1]) return false;  // used twice
+    const std::uint64_t reverse = edges_[i] << 32U | edges_[i] >> 32U;
+    if (!std::binary_search(edges_.begin(), edges_.end(), reverse)) return false;
+  }
+  return mesh.face_count() > 0;
 }
 
 void Float32Weld::triangulate_all(const kernel::Mesh& mesh) {
@@ -127,8 +166,15 @@ void Float32Weld::triangulate_all(const kernel::Mesh& mesh) {
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     keys_.clear();
     for (std::uint32_t v : mesh.face(f)) keys_.push_back(parent_[v]);
-    for (const std::vector<std::uint32_t>& piece : kernel::contract_loop(keys_)) {
-      triangulate_piece(mesh, f, piece);
+    if (distinct(keys_)) {
+      // Nothing contracts: the face is its one piece (what contract_loop gives), in order.
+      corners_.resize(keys_.size());
+      std::iota(corners_.begin(), corners_.end(), 0U);
+      triangulate_piece(mesh, f, corners_);
+    } else {
+      for (const std::vector<std::uint32_t>& piece : kernel::contract_loop(keys_)) {
+        triangulate_piece(mesh, f, piece);
+      }
     }
     offsets_.push_back(triangles_.size());
   }
@@ -138,7 +184,7 @@ void Float32Weld::triangulate_all(const kernel::Mesh& mesh) {
 // as a fan: every fan triangle follows the loop's orientation.
 void Float32Weld::triangulate_piece(const kernel::Mesh& mesh, std::size_t face,
                                     std::span<const std::uint32_t> corners) {
-  piece_ = kernel::Mesh();
+  piece_.clear();
   ids_.clear();
   for (std::uint32_t corner : corners) {
     ids_.push_back(piece_.add_vertex(mesh.position(keys_[corner])));

@@ -49,10 +49,11 @@ class Float32Weld {
   static constexpr int kMaxPasses = 8;
 
   bool collapses(const kernel::Mesh& mesh, double grid);
+  void group(const kernel::Mesh& mesh, double grid);
   std::uint32_t find(std::uint32_t v);
   bool unite(std::uint32_t a, std::uint32_t b);
   void flatten();
-  bool closed_and_oriented(const kernel::Mesh& mesh) const;
+  bool closed_and_oriented(const kernel::Mesh& mesh);
   void triangulate_all(const kernel::Mesh& mesh);
   void triangulate_piece(const kernel::Mesh& mesh, std::size_t face,
                          std::span<const std::uint32_t> corners);
@@ -65,17 +66,14 @@ class Float32Weld {
   std::vector<std::size_t> offsets_;  // face f's triangles: [offsets_[f], offsets_[f + 1])
   bool active_ = false;
   // Scratch reused from mesh to mesh and face to face.
-  struct Entry {
-    Float3 rounded;
-    kernel::Vec3 p;
-    std::uint32_t vertex;
-  };
-  std::vector<Entry> order_;
   static constexpr std::uint32_t kFree = UINT32_MAX;
-  std::vector<std::uint32_t> slots_;  // collapses(): vertices by rounded position
+  std::vector<std::uint32_t> slots_;        // vertices by rounded position
+  std::vector<std::uint32_t> exact_slots_;  // group(): vertices by exact position
   std::vector<Float3> rounded_;
   std::vector<std::uint32_t> keys_;
   std::vector<std::uint32_t> ids_;
+  std::vector<std::uint32_t> corners_;  // 0 .. n-1: a face that contracts nowhere
+  std::vector<std::uint64_t> edges_;    // closed_and_oriented(): directed edges as (a << 32 | b)
   std::vector<CornerTriangle> corner_triangles_;
   kernel::Mesh piece_;
   FaceTriangulator triangulator_;

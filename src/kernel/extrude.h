@@ -76,10 +76,11 @@ ExtrudeResult extrude_face(const Mesh& mesh, std::size_t face, double distance,
 
 // Adds the planar region `region` (outer counter-clockwise, holes clockwise, in some 2D frame of
 // its plane) to `mesh` as faces over existing vertices: `ids[k]` is the mesh vertex of the k-th
-// region vertex (outer ring, then each hole in order). Without holes one n-gon face is added,
-// otherwise the triangles of its triangulation, all with `tag`. The faces run counter-clockwise
-// in the 2D frame, or clockwise when `reverse`. Returns false (adding nothing) when `ids` has the
-// wrong size or the triangulation fails.
+// region vertex (outer ring, then each hole in order). Without holes one n-gon face is added, a
+// quadrilateral with one quadrilateral hole (a window's frame) gives four quadrilaterals where
+// they are convex, otherwise the triangles of its triangulation, all with `tag`. The faces run
+// counter-clockwise in the 2D frame, or clockwise when `reverse`. Returns false (adding nothing)
+// when `ids` has the wrong size or the triangulation fails.
 bool add_region_faces(Mesh& mesh, const Polygon& region, std::span<const std::uint32_t> ids,
                       bool reverse, FaceTag tag);
 

@@ -44,6 +44,13 @@ void Mesh::reserve(std::size_t vertices, std::size_t faces, std::size_t indices)
   indices_.reserve(indices);
 }
 
+void Mesh::clear() {
+  positions_.clear();
+  indices_.clear();
+  offsets_.assign(1, 0);
+  tags_.clear();
+}
+
 void Mesh::flip() {
   for (std::size_t f = 0; f < tags_.size(); ++f) {
     std::reverse(indices_.begin() + offsets_[f], indices_.begin() + offsets_[f + 1]);

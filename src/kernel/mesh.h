@@ -61,6 +61,8 @@ class Mesh {
   // Appends all of `other`'s vertices and faces.
   void append(const Mesh& other);
   void reserve(std::size_t vertices, std::size_t faces, std::size_t indices);
+  // Empty again, keeping the storage (a scratch mesh refilled face after face).
+  void clear();
 
   std::size_t vertex_count() const { return positions_.size(); }
   std::size_t face_count() const { return tags_.size(); }

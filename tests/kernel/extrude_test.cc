@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <vector>
 
 namespace insula::kernel {
 namespace {
@@ -88,7 +90,7 @@ TEST(Extrude, LAndUShapesAreWatertightWithNGonCaps) {
   }
 }
 
-TEST(Extrude, CourtyardIsGenusOneWithTriangulatedCaps) {
+TEST(Extrude, CourtyardIsGenusOneWithFourQuadsACap) {
   const ExtrudeResult r = extrude(courtyard(), 0, 2);
   ASSERT_TRUE(r.ok()) << extrude_status_message(r.status);
   expect_closed_solid(r.mesh, 0, (100 - 16) * 2);
@@ -100,7 +102,7 @@ TEST(Extrude, CourtyardIsGenusOneWithTriangulatedCaps) {
     if (tag.semantic == SemanticClass::kGroundSurface) {
       ++bottom;
       EXPECT_EQ(tag.face_id, 0U);
-      EXPECT_EQ(r.mesh.face(f).size(), 3U);
+      EXPECT_EQ(r.mesh.face(f).size(), 4U);
     } else if (tag.semantic == SemanticClass::kRoofSurface) {
       ++top;
       EXPECT_EQ(tag.face_id, 1U);
@@ -108,14 +110,57 @@ TEST(Extrude, CourtyardIsGenusOneWithTriangulatedCaps) {
       side_ids.insert(tag.face_id);
     }
   }
-  // 8 vertices, 2 rings: 8 + 2 * 2 - 4 = 8 triangles per cap.
-  EXPECT_EQ(bottom, 8U);
-  EXPECT_EQ(top, 8U);
+  // A square with a square hole, as a window's frame: the four quads between the rings.
+  EXPECT_EQ(bottom, 4U);
+  EXPECT_EQ(top, 4U);
   EXPECT_EQ(side_ids, (std::set<std::uint32_t>{2, 3, 4, 5, 6, 7, 8, 9}));
   expect_faces_point(r.mesh, 0, {0, 0, -1});
   expect_faces_point(r.mesh, 1, {0, 0, 1});
   // Hole edge 0 runs (3,7) -> (7,7) (the reversed rectangle): its wall faces into the courtyard.
   expect_faces_point(r.mesh, 6, {0, -1, 0});
+}
+
+// The region's faces as add_region_faces gives them: their areas sum to the region's, each runs
+// counter-clockwise (or clockwise when reversed) and is convex.
+void expect_region_cover(const Polygon& region, bool reverse, std::size_t faces) {
+  Mesh mesh;
+  std::vector<std::uint32_t> ids;
+  for (Vec2 p : region.outer) ids.push_back(mesh.add_vertex({p.x, p.y, 0}));
+  for (Vec2 p : region.holes[0]) ids.push_back(mesh.add_vertex({p.x, p.y, 0}));
+  ASSERT_TRUE(add_region_faces(mesh, region, ids, reverse, {}));
+  EXPECT_EQ(mesh.face_count(), faces);
+  double total = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const auto loop = mesh.face(f);
+    for (std::size_t c = 0; c < loop.size(); ++c) {
+      const Vec3 a = mesh.position(loop[c]);
+      const Vec3 b = mesh.position(loop[(c + 1) % loop.size()]);
+      const Vec3 d = mesh.position(loop[(c + 2) % loop.size()]);
+      const double turn = cross(Vec2{b.x - a.x, b.y - a.y}, Vec2{d.x - b.x, d.y - b.y});
+      EXPECT_GT(reverse ? -turn : turn, 0) << "face " << f << " corner " << c;
+    }
+    total += face_area(mesh, f);
+  }
+  EXPECT_NEAR(total, area(region), 1e-9);
+}
+
+TEST(Extrude, FrameRegionIsFourQuadsWhereTheyAreConvex) {
+  Ring hole = rect(0.07, 0.07, 1.23, 1.53);
+  std::reverse(hole.begin(), hole.end());
+  expect_region_cover({rect(0, 0, 1.3, 1.6), {hole}}, false, 4);
+  expect_region_cover({rect(0, 0, 1.3, 1.6), {hole}}, true, 4);
+  // The hole's ring starting elsewhere: its corners still meet their nearest outer corners.
+  std::rotate(hole.begin(), hole.begin() + 1, hole.end());
+  expect_region_cover({rect(0, 0, 1.3, 1.6), {hole}}, false, 4);
+  // An arrowhead (a reflex corner at (6, 4)) round a small square: still four convex quads.
+  Ring small = rect(7, 1, 8, 2);
+  std::reverse(small.begin(), small.end());
+  expect_region_cover({{{0, 0}, {10, 0}, {10, 10}, {6, 4}}, {small}}, false, 4);
+  // A diamond in a square: the quad from a square's edge to the diamond's is not convex, so the
+  // region is triangulated (8 triangles for 8 vertices and 2 rings).
+  const Ring diamond{{5, 1}, {1, 5}, {5, 9}, {9, 5}};  // clockwise
+  expect_region_cover({rect(0, 0, 10, 10), {diamond}}, false, 8);
+  expect_region_cover({rect(0, 0, 10, 10), {diamond}}, true, 8);
 }
 
 TEST(Extrude, ClockwiseInputKeepsInputEdgeIds) {

@@ -131,7 +131,7 @@ TileContent derive_tile(const CgaCity& city, const std::vector<std::size_t>& mem
   std::vector<cga::Lot> lots;
   lots.reserve(members.size());
   for (const std::size_t i : members) lots.push_back(city.lots[i]);
-  shape::Scene scene = cga::to_scene(city.program, lots, results, city.derive.share_inserts);
+  shape::Scene scene = cga::to_scene(city.program, lots, results, city.derive.share_inserts, true);
   results.clear();  // the terminal records, before the meshes are written
   tally["textures"] = Json::object();
   for (const io::TextureFailure& f : io::load_textures(scene, city.search)) {
