@@ -383,12 +383,16 @@ class Studio {
                       : kind == Job::kBuild  ? "build:"
                       : kind == Job::kReport ? "report:"
                                              : "export:";
-    // Keyed by the resolved file, so `a` and `./a` are one file whose newer edit cancels.
+    // Keyed by the resolved file, so `a` and `./a` are one file whose newer edit cancels. A
+    // check is never cancelled (a key of its own): its caller asks about one text (may this edge
+    // be connected?), and a check reaching the server late must not leave a newer one unanswered.
     // A build beside the graph editor's report run (`behind=1`) yields the cores to it: the
     // counts come first, the model after.
+    const std::string job_key = kind == Job::kCheck
+                                    ? key + std::to_string(++checks_) + ":" + path->string()
+                                    : key + path->string();
     const int niceness = kind == Job::kBuild && request.get_param_value("behind") == "1" ? 10 : 0;
-    const JobResult job =
-        jobs_.run(key + path->string(), args, draft.path().parent_path(), niceness);
+    const JobResult job = jobs_.run(job_key, args, draft.path().parent_path(), niceness);
     const std::string output = as_shown(job.output, draft.path().filename().string(), shown);
     Json body = {{"exit", job.exit_code},
                  {"cancelled", job.cancelled},
@@ -492,6 +496,7 @@ class Studio {
   Jobs jobs_;
   int port_ = 0;
   std::atomic<int> running_jobs_{0};
+  std::atomic<std::uint64_t> checks_{0};  // numbers each check's job key
   std::mutex builds_mutex_;
   std::deque<std::pair<std::uint64_t, Built>> builds_;
   std::uint64_t last_build_ = 0;
