@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <memory>
 #include <set>
+#include <string_view>
+#include <unordered_set>
 #include <utility>
 
 namespace insula::io {
@@ -555,8 +558,27 @@ void FootprintBuilder::reject_touching_rings(std::size_t index, std::size_t p,
   feature_issue(index, true, "GEO027", message, locate(index, where), local_note());
 }
 
+// Whether every footprint's id is its own: then none is renamed, and a city needs no sets of its
+// ids (a million of them cost about 200 MB at the reader's peak).
+bool FootprintBuilder::ids_distinct() const {
+  std::unordered_set<std::string_view> seen;
+  seen.reserve(result_.footprints.size());
+  for (const Footprint& footprint : result_.footprints) {
+    const RawFootprint& feature = features_[footprint.feature_index];
+    if (!seen.insert(feature.id.empty() ? feature.fallback_id : feature.id).second) return false;
+  }
+  return true;
+}
+
 // Input order decides: the first feature keeps an id, later ones are renamed.
 void FootprintBuilder::assign_ids() {
+  if (ids_distinct()) {
+    for (Footprint& footprint : result_.footprints) {
+      const RawFootprint& feature = features_[footprint.feature_index];
+      footprint.id = feature.id.empty() ? feature.fallback_id : feature.id;
+    }
+    return;
+  }
   std::set<std::string, std::less<>> used;
   for (const RawFootprint& feature : features_) {
     if (!feature.id.empty()) used.insert(feature.id);
@@ -587,10 +609,17 @@ void FootprintBuilder::assign_ids() {
   }
 }
 
+RawFootprint& FootprintBuilder::add_raw() {
+  properties_.add_row();
+  return features_.emplace_back();
+}
+
 void FootprintBuilder::finish_features(const Location& crs_at) {
+  const auto properties = std::make_shared<const PropertyTable>(std::move(properties_));
   if (errors_ == 0) resolve_crs(crs_at);
   if (errors_ == 0) {
     choose_origin();
+    result_.footprints.reserve(features_.size());
     for (std::size_t i = 0; i < features_.size(); ++i) {
       RawFootprint& feature = features_[i];
       if (feature.failed || feature.polygons.empty() || stopped_) continue;
@@ -600,7 +629,7 @@ void FootprintBuilder::finish_features(const Location& crs_at) {
       // The input rings are no longer needed: a country's worth of them would double the peak.
       std::vector<kernel::Polygon>().swap(feature.polygons);
       if (feature.failed) continue;
-      footprint.properties = std::move(feature.properties);
+      footprint.properties = PropertyRow(properties, i);
       result_.footprints.push_back(std::move(footprint));
     }
   }

@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "base/diagnostic.h"
+#include "io/property_table.h"
 #include "kernel/polygon.h"
 #include "kernel/vec.h"
-#include "shape/value.h"
 
 namespace insula::io {
 
@@ -38,8 +38,9 @@ struct Footprint {
   std::vector<bool> outer_clockwise;
   // GeoJSON properties: numbers -> double, bool, string, null -> monostate; nested objects and
   // arrays as compact JSON strings. OSM: every tag verbatim as a string, plus "osm_type" and
-  // "osm_id" (docs/osm.md).
-  shape::AttributeMap properties;
+  // "osm_id" (docs/osm.md). A row of one table shared by the set's footprints: properties.map()
+  // makes the AttributeMap of one building when it is built.
+  PropertyRow properties;
   // 0-based position in the input (the FeatureCollection; for OSM, the order footprints were
   // assembled in).
   std::size_t feature_index = 0;
@@ -109,7 +110,6 @@ struct RawFootprint {
   // World coordinates in the input's CRS, no closing vertex, as written.
   std::vector<kernel::Polygon> polygons;
   bool multi = false;  // a MultiPolygon: messages say "polygon K" rather than "polygon"
-  shape::AttributeMap properties;
   bool failed = false;
 };
 
@@ -156,6 +156,8 @@ class FootprintBuilder {
   void feature_issue(std::size_t index, bool is_error, const char* code, const std::string& message,
                      const Location& where, std::vector<std::string> notes = {});
 
+  // A new raw footprint at the end of features_, with its empty row in properties_.
+  RawFootprint& add_raw();
   // CRS -> origin -> repair -> ids, into result_. `crs_at` is where the input names its CRS.
   void finish_features(const Location& crs_at);
   base::Result<FootprintSet> result();
@@ -164,6 +166,7 @@ class FootprintBuilder {
   const FootprintOptions& options_;
   std::string options_name_;  // "GeoJsonOptions": names options in messages
   std::vector<RawFootprint> features_;
+  PropertyTable properties_;  // row k: the properties of features_[k]
   std::string declared_crs_;  // the input's CRS: "EPSG:N" or "OGC:CRS84"; empty: none named
   std::string empty_note_;    // GEO006's note when the input has no features at all
   FootprintSet result_;
@@ -186,6 +189,7 @@ class FootprintBuilder {
   void note_repair(std::size_t index, std::size_t p, const char* kind, const char* code,
                    const std::string& message, const FootprintPlace& place, std::size_t count);
   void reject_touching_rings(std::size_t index, std::size_t p, const kernel::Polygon& repaired);
+  bool ids_distinct() const;
   void assign_ids();
   std::string polygon_label(std::size_t index, std::size_t p) const;
   std::vector<std::string> local_note() const;

@@ -826,7 +826,7 @@ void Reader::read_crs(Element doc) {
 // A new feature, numbered by its position in the file (a bare geometry is feature 0).
 FeatureState& Reader::add_feature(std::size_t offset) {
   const std::size_t index = features_.size();
-  RawFootprint& raw = features_.emplace_back();
+  RawFootprint& raw = add_raw();
   raw.name = raw.label = "feature " + std::to_string(index);
   raw.fallback_id = "feature-" + std::to_string(index);
   FeatureState& feature = states_.emplace_back();
@@ -839,6 +839,8 @@ FeatureState& Reader::add_feature(std::size_t offset) {
 // group in chunks_) and read in order.
 void Reader::read_features() {
   const std::size_t count = feature_offsets_.size();
+  features_.reserve(count);
+  states_.reserve(count);
   for (std::size_t group = 0; group < group_count() && !stopped_; ++group) {
     if (parsed_group_ != group) {
       if (!valid_group(group, chunks_)) throw SyntaxAbort{};
@@ -909,34 +911,27 @@ void Reader::read_properties(FeatureState& feature, Element value) {
                   {{"properties", 0}});
     return;
   }
-  shape::AttributeMap& properties = features_[feature.index].properties;
+  // Duplicate keys: the last one wins (PropertyTable::set), as in nlohmann's map.
   for (const auto field : object_of(value)) {
-    shape::Value converted;
     switch (field.value.type()) {
       case element_type::BOOL:
-        converted = field.value.get_bool().value_unsafe();
+        properties_.set(feature.index, field.key, field.value.get_bool().value_unsafe());
         break;
       case element_type::INT64:
       case element_type::UINT64:
       case element_type::DOUBLE:
-        converted = number(field.value);
+        properties_.set(feature.index, field.key, number(field.value));
         break;
       case element_type::STRING:
-        converted = std::string(string_of(field.value));
+        properties_.set_text(feature.index, field.key, string_of(field.value));
         break;
       case element_type::OBJECT:
       case element_type::ARRAY:
-        converted = compact(field.value);
+        properties_.set_text(feature.index, field.key, compact(field.value));
         break;
       case element_type::NULL_VALUE:
+        properties_.set(feature.index, field.key, std::monostate{});
         break;
-    }
-    // Duplicate keys: the last one wins, as in nlohmann's map.
-    const auto it = properties.find(field.key);
-    if (it != properties.end()) {
-      it->second = std::move(converted);
-    } else {
-      properties.emplace(std::string(field.key), std::move(converted));
     }
   }
 }
@@ -1134,6 +1129,7 @@ base::Result<FootprintSet> Reader::run() {
     } catch (const SyntaxAbort&) {
       // No diagnostic but GEO001 has been emitted (ensure_valid()): forget what was read.
       features_.clear();
+      properties_ = PropertyTable();
       states_.clear();
       declared_crs_.clear();
       crs_offset_ = kNone;

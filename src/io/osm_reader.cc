@@ -357,15 +357,15 @@ class OsmBuilder : public FootprintBuilder {
 
   void add(OsmFeature& feature) {
     const std::size_t index = features_.size();
-    RawFootprint& raw = features_.emplace_back();
+    RawFootprint& raw = add_raw();
     raw.name = raw.label = feature.element();
     raw.id = (feature.relation ? "relation/" : "way/") + std::to_string(feature.id);
     raw.fallback_id = raw.id;
     raw.multi = feature.polygons.size() > 1;
     raw.polygons = std::move(feature.polygons);
-    for (auto& [key, value] : feature.tags) raw.properties.insert_or_assign(key, std::move(value));
-    raw.properties.insert_or_assign("osm_type", std::string(feature.relation ? "relation" : "way"));
-    raw.properties.insert_or_assign("osm_id", std::to_string(feature.id));
+    for (const auto& [key, value] : feature.tags) properties_.set_text(index, key, value);
+    properties_.set_text(index, "osm_type", feature.relation ? "relation" : "way");
+    properties_.set_text(index, "osm_id", std::to_string(feature.id));
     if (!feature.problem.empty()) {
       feature_issue(index, true, feature.code.c_str(), feature.problem,
                     {index, base::Span::whole(name_)});
