@@ -101,12 +101,10 @@ struct FootprintOptions {
   std::size_t max_warnings = 100;
 };
 
-// A footprint as a reader found it, before CRS, origin, repair and ids.
+// A footprint as a reader found it, before CRS, origin, repair and ids. Its name in messages and
+// its fallback id come from the reader (FootprintBuilder::feature_name...) when needed.
 struct RawFootprint {
-  std::string name;   // "feature 3", "way 123": names it in other footprints' messages
-  std::string label;  // starts its messages: "feature 3 (id \"b12\")", "way 123"
-  std::string id;     // empty: `fallback_id`
-  std::string fallback_id;
+  std::string id;  // empty: FootprintBuilder::fallback_id()
   // World coordinates in the input's CRS, no closing vertex, as written.
   std::vector<kernel::Polygon> polygons;
   bool multi = false;  // a MultiPolygon: messages say "polygon K" rather than "polygon"
@@ -147,6 +145,13 @@ class FootprintBuilder {
     base::Span span;
   };
   virtual Location locate(std::size_t feature, const FootprintPlace& place) = 0;
+  // How messages name feature `index`: its name in other features' messages ("feature 3",
+  // "way 123"), its label at the start of its own ("feature 3 (id \"b12\")"); and the id it gets
+  // when it has none ("feature-3"). Made when needed rather than stored: a city has a million
+  // features.
+  virtual std::string feature_name(std::size_t index) const = 0;
+  virtual std::string feature_label(std::size_t index) const { return feature_name(index); }
+  virtual std::string fallback_id(std::size_t index) const = 0;
   Location whole_input() const { return {kNoIndex, base::Span::whole(name_)}; }
 
   void report(base::Severity severity, const char* code, std::string message, const Location& where,
@@ -190,6 +195,7 @@ class FootprintBuilder {
                    const std::string& message, const FootprintPlace& place, std::size_t count);
   void reject_touching_rings(std::size_t index, std::size_t p, const kernel::Polygon& repaired);
   bool ids_distinct() const;
+  void assign_ids_renaming();
   void assign_ids();
   std::string polygon_label(std::size_t index, std::size_t p) const;
   std::vector<std::string> local_note() const;

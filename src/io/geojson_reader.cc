@@ -496,6 +496,17 @@ class Reader : public FootprintBuilder {
   // Diagnostics ----------------------------------------------------------------------------
   Location at(std::size_t offset);
   Location locate(std::size_t feature, const FootprintPlace& place) override;
+  std::string feature_name(std::size_t index) const override {
+    return "feature " + std::to_string(index);
+  }
+  // Once the feature's id is read, its messages give it: "feature 3 (id \"b12\")".
+  std::string feature_label(std::size_t index) const override {
+    const std::string& id = features_[index].id;
+    return id.empty() ? feature_name(index) : feature_name(index) + " (id " + quote_text(id) + ")";
+  }
+  std::string fallback_id(std::size_t index) const override {
+    return "feature-" + std::to_string(index);
+  }
   // Diagnostics of the walk (report, feature_issue) are emitted only once the whole text is known
   // to be valid JSON: ensure_valid() parses what the walk has not reached yet.
   void emit(base::Severity severity, const char* code, std::string message, std::size_t offset,
@@ -826,9 +837,7 @@ void Reader::read_crs(Element doc) {
 // A new feature, numbered by its position in the file (a bare geometry is feature 0).
 FeatureState& Reader::add_feature(std::size_t offset) {
   const std::size_t index = features_.size();
-  RawFootprint& raw = add_raw();
-  raw.name = raw.label = "feature " + std::to_string(index);
-  raw.fallback_id = "feature-" + std::to_string(index);
+  add_raw();
   FeatureState& feature = states_.emplace_back();
   feature.index = index;
   feature.offset = offset;
@@ -885,7 +894,6 @@ void Reader::read_feature(Element value, std::size_t offset) {
       feature.id_path = {{"properties", 0}, {key, 0}};
     }
   }
-  if (!raw.id.empty()) raw.label += " (id " + quote_text(raw.id) + ")";
   if (!type || type->type() != element_type::STRING || string_of(*type) != "Feature") {
     feature_issue(feature, true, "GEO015",
                   !type ? std::string("has no \"type\"; expected \"Feature\"")
