@@ -15,16 +15,11 @@ namespace {
 // walls, and a 10 cm plinth is invisible at the scale of a building.
 constexpr double kMinimumWall = 0.1;
 
-const shape::Value* find(const shape::AttributeMap& properties, std::string_view key) {
-  auto it = properties.find(key);
-  return it == properties.end() ? nullptr : &it->second;
-}
-
 // The property as text: a number as written by shape::to_string, a string as is; nullopt when
 // missing or null.
-std::optional<std::string> text_of(const shape::AttributeMap& properties, std::string_view key) {
-  const shape::Value* value = find(properties, key);
-  if (value == nullptr || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
+std::optional<std::string> text_of(const PropertyRow& properties, std::string_view key) {
+  const std::optional<shape::Value> value = properties.find(key);
+  if (!value || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
   return shape::to_string(*value);
 }
 
@@ -54,7 +49,7 @@ std::string quoted(const shape::Value& value) {
 
 class FormReader {
  public:
-  FormReader(const shape::AttributeMap& properties, const BuildingTagOptions& options,
+  FormReader(const PropertyRow& properties, const BuildingTagOptions& options,
              std::vector<TagWarning>& warnings)
       : properties_(properties), options_(options), warnings_(warnings) {}
 
@@ -82,8 +77,8 @@ class FormReader {
   // A length tag: its value in meters, or nullopt (with a warning when present but unreadable
   // or outside (minimum, 1000) m).
   std::optional<double> length_tag(std::string_view key, double minimum, const char* code) {
-    const shape::Value* value = find(properties_, key);
-    if (value == nullptr || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
+    const std::optional<shape::Value> value = properties_.find(key);
+    if (!value || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
     const std::optional<double> meters = length_of(*value);
     if (meters && *meters > minimum && *meters < 1000) return meters;
     warn(code, {key, "=", quoted(*value), " is not a length in ", minimum < 0 ? "[0" : "(",
@@ -93,8 +88,8 @@ class FormReader {
 
   // A level count: nullopt (with a warning) when present but unreadable or not above `minimum`.
   std::optional<double> levels_tag(std::string_view key, double minimum, const char* code) {
-    const shape::Value* value = find(properties_, key);
-    if (value == nullptr || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
+    const std::optional<shape::Value> value = properties_.find(key);
+    if (!value || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
     const std::optional<double> levels = levels_of(*value);
     if (levels && *levels > minimum && *levels < 300) return levels;
     warn(code, {key, "=", quoted(*value), " is not a level count", minimum < 0 ? "" : " above ",
@@ -124,7 +119,7 @@ class FormReader {
     if (options_.roof) {
       form_.roof = *options_.roof;
       form_.roof_source = ValueSource::kOption;
-    } else if (const shape::Value* shape = find(properties_, "roof:shape")) {
+    } else if (const std::optional<shape::Value> shape = properties_.find("roof:shape")) {
       if (std::optional<std::string> name = s3db_roof_name(shape::to_string(*shape))) {
         form_.roof = *name;
         form_.roof_source = ValueSource::kTag;
@@ -132,7 +127,8 @@ class FormReader {
         form_.roof = form_.osm ? "flat" : options_.default_roof;
         warn("MAS003", {"unknown roof:shape=", quoted(*shape), "; using ", form_.roof});
       }
-    } else if (const shape::Value* roof = find(properties_, "roof"); roof && !form_.osm) {
+    } else if (const std::optional<shape::Value> roof = properties_.find("roof");
+               roof && !form_.osm) {
       const std::string name = shape::to_string(*roof);
       if (kernel::roof_type_from_name(name)) {
         form_.roof = name;
@@ -154,8 +150,8 @@ class FormReader {
     form_.pitch_deg = options_.pitch_deg;
     if (options_.pitch_given) return;
     const char* key = form_.osm ? "roof:angle" : "pitch";
-    const shape::Value* value = find(properties_, key);
-    if (value == nullptr) return;
+    const std::optional<shape::Value> value = properties_.find(key);
+    if (!value) return;
     const std::optional<double> degrees = levels_of(*value);
     if (degrees && *degrees > 0 && *degrees < 89) {
       form_.pitch_deg = *degrees;
@@ -175,7 +171,7 @@ class FormReader {
   }
 
   void read_direction() {
-    if (const shape::Value* value = find(properties_, "roof:direction")) {
+    if (const std::optional<shape::Value> value = properties_.find("roof:direction")) {
       form_.direction_deg = parse_direction(shape::to_string(*value));
       if (!form_.direction_deg) {
         warn("MAS006", {"roof:direction=", quoted(*value), " is not a compass direction; ignored"});
@@ -296,7 +292,7 @@ class FormReader {
     }
   }
 
-  const shape::AttributeMap& properties_;
+  const PropertyRow& properties_;
   const BuildingTagOptions& options_;
   std::vector<TagWarning>& warnings_;
   BuildingForm form_;
@@ -323,9 +319,8 @@ std::string_view source_name(ValueSource source) {
   return "default";
 }
 
-BuildingForm read_building_form(const shape::AttributeMap& properties,
-                                const BuildingTagOptions& options, const RoofRise& roof_rise,
-                                std::vector<TagWarning>& warnings) {
+BuildingForm read_building_form(const PropertyRow& properties, const BuildingTagOptions& options,
+                                const RoofRise& roof_rise, std::vector<TagWarning>& warnings) {
   return FormReader(properties, options, warnings).read(roof_rise);
 }
 

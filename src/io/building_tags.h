@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/property_table.h"
 #include "shape/value.h"
 
 namespace insula::io {
@@ -74,9 +75,8 @@ struct TagWarning {
 // total height (S3DB `height`, the top of the roof) can be split between walls and roof. Never
 // throws.
 using RoofRise = std::function<double(const std::string& roof, double pitch_deg)>;
-BuildingForm read_building_form(const shape::AttributeMap& properties,
-                                const BuildingTagOptions& options, const RoofRise& roof_rise,
-                                std::vector<TagWarning>& warnings);
+BuildingForm read_building_form(const PropertyRow& properties, const BuildingTagOptions& options,
+                                const RoofRise& roof_rise, std::vector<TagWarning>& warnings);
 
 // A length as OSM and registers write it: "12", "12.5 m", "40 ft", "12'6\"", "3,5"; meters.
 std::optional<double> parse_length(std::string_view text);

@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <memory>
 #include <set>
+#include <string_view>
+#include <unordered_set>
 #include <utility>
 
 namespace insula::io {
@@ -192,7 +195,7 @@ void FootprintBuilder::feature_issue(std::size_t index, bool is_error, const cha
   }
   const bool as_error = is_error && !options_.skip_invalid;
   report(as_error ? base::Severity::kError : base::Severity::kWarning, code,
-         feature.label + ": " + message, where, std::move(notes));
+         feature_label(index) + ": " + message, where, std::move(notes));
 }
 
 std::string FootprintBuilder::polygon_label(std::size_t index, std::size_t p) const {
@@ -555,8 +558,29 @@ void FootprintBuilder::reject_touching_rings(std::size_t index, std::size_t p,
   feature_issue(index, true, "GEO027", message, locate(index, where), local_note());
 }
 
-// Input order decides: the first feature keeps an id, later ones are renamed.
+// Whether no two footprints have the same id: then none is renamed, and a city needs no sets of
+// its ids (a million of them cost about 200 MB at the reader's peak).
+bool FootprintBuilder::ids_distinct() const {
+  std::unordered_set<std::string_view> seen;
+  seen.reserve(result_.footprints.size());
+  for (const Footprint& footprint : result_.footprints) {
+    if (!seen.insert(footprint.id).second) return false;
+  }
+  return true;
+}
+
+// Each footprint's own id, or its fallback; renamed where ids repeat.
 void FootprintBuilder::assign_ids() {
+  for (Footprint& footprint : result_.footprints) {
+    const std::size_t index = footprint.feature_index;
+    const std::string& id = features_[index].id;
+    footprint.id = id.empty() ? fallback_id(index) : id;
+  }
+  if (!ids_distinct()) assign_ids_renaming();
+}
+
+// Input order decides: the first feature keeps an id, later ones are renamed.
+void FootprintBuilder::assign_ids_renaming() {
   std::set<std::string, std::less<>> used;
   for (const RawFootprint& feature : features_) {
     if (!feature.id.empty()) used.insert(feature.id);
@@ -565,8 +589,7 @@ void FootprintBuilder::assign_ids() {
   std::map<std::string, std::size_t, std::less<>> first_user;
   for (Footprint& footprint : result_.footprints) {
     const std::size_t index = footprint.feature_index;
-    RawFootprint& feature = features_[index];
-    std::string id = feature.id.empty() ? feature.fallback_id : feature.id;
+    std::string id = std::move(footprint.id);
     if (taken.count(id) != 0) {
       std::string renamed;
       for (std::size_t n = 2;
@@ -576,8 +599,8 @@ void FootprintBuilder::assign_ids() {
       FootprintPlace place;
       place.id = true;
       feature_issue(index, false, "GEO019",
-                    "id " + quote_text(id) + " is already used by " +
-                        features_[first_user[id]].name + "; renamed to " + quote_text(renamed),
+                    "id " + quote_text(id) + " is already used by " + feature_name(first_user[id]) +
+                        "; renamed to " + quote_text(renamed),
                     locate(index, place));
       id = renamed;
     }
@@ -587,10 +610,17 @@ void FootprintBuilder::assign_ids() {
   }
 }
 
+RawFootprint& FootprintBuilder::add_raw() {
+  properties_.add_row();
+  return features_.emplace_back();
+}
+
 void FootprintBuilder::finish_features(const Location& crs_at) {
+  const auto properties = std::make_shared<const PropertyTable>(std::move(properties_));
   if (errors_ == 0) resolve_crs(crs_at);
   if (errors_ == 0) {
     choose_origin();
+    result_.footprints.reserve(features_.size());
     for (std::size_t i = 0; i < features_.size(); ++i) {
       RawFootprint& feature = features_[i];
       if (feature.failed || feature.polygons.empty() || stopped_) continue;
@@ -600,7 +630,7 @@ void FootprintBuilder::finish_features(const Location& crs_at) {
       // The input rings are no longer needed: a country's worth of them would double the peak.
       std::vector<kernel::Polygon>().swap(feature.polygons);
       if (feature.failed) continue;
-      footprint.properties = std::move(feature.properties);
+      footprint.properties = PropertyRow(properties, i);
       result_.footprints.push_back(std::move(footprint));
     }
   }

@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "base/diagnostic.h"
+#include "io/property_table.h"
 #include "kernel/polygon.h"
 #include "kernel/vec.h"
-#include "shape/value.h"
 
 namespace insula::io {
 
@@ -38,8 +38,9 @@ struct Footprint {
   std::vector<bool> outer_clockwise;
   // GeoJSON properties: numbers -> double, bool, string, null -> monostate; nested objects and
   // arrays as compact JSON strings. OSM: every tag verbatim as a string, plus "osm_type" and
-  // "osm_id" (docs/osm.md).
-  shape::AttributeMap properties;
+  // "osm_id" (docs/osm.md). A row of one table shared by the set's footprints: properties.map()
+  // makes the AttributeMap of one building when it is built.
+  PropertyRow properties;
   // 0-based position in the input (the FeatureCollection; for OSM, the order footprints were
   // assembled in).
   std::size_t feature_index = 0;
@@ -100,16 +101,13 @@ struct FootprintOptions {
   std::size_t max_warnings = 100;
 };
 
-// A footprint as a reader found it, before CRS, origin, repair and ids.
+// A footprint as a reader found it, before CRS, origin, repair and ids. Its name in messages and
+// its fallback id come from the reader (FootprintBuilder::feature_name...) when needed.
 struct RawFootprint {
-  std::string name;   // "feature 3", "way 123": names it in other footprints' messages
-  std::string label;  // starts its messages: "feature 3 (id \"b12\")", "way 123"
-  std::string id;     // empty: `fallback_id`
-  std::string fallback_id;
+  std::string id;  // empty: FootprintBuilder::fallback_id()
   // World coordinates in the input's CRS, no closing vertex, as written.
   std::vector<kernel::Polygon> polygons;
   bool multi = false;  // a MultiPolygon: messages say "polygon K" rather than "polygon"
-  shape::AttributeMap properties;
   bool failed = false;
 };
 
@@ -147,6 +145,13 @@ class FootprintBuilder {
     base::Span span;
   };
   virtual Location locate(std::size_t feature, const FootprintPlace& place) = 0;
+  // How messages name feature `index`: its name in other features' messages ("feature 3",
+  // "way 123"), its label at the start of its own ("feature 3 (id \"b12\")"); and the id it gets
+  // when it has none ("feature-3"). Made when needed rather than stored: a city has a million
+  // features.
+  virtual std::string feature_name(std::size_t index) const = 0;
+  virtual std::string feature_label(std::size_t index) const { return feature_name(index); }
+  virtual std::string fallback_id(std::size_t index) const = 0;
   Location whole_input() const { return {kNoIndex, base::Span::whole(name_)}; }
 
   void report(base::Severity severity, const char* code, std::string message, const Location& where,
@@ -156,6 +161,8 @@ class FootprintBuilder {
   void feature_issue(std::size_t index, bool is_error, const char* code, const std::string& message,
                      const Location& where, std::vector<std::string> notes = {});
 
+  // A new raw footprint at the end of features_, with its empty row in properties_.
+  RawFootprint& add_raw();
   // CRS -> origin -> repair -> ids, into result_. `crs_at` is where the input names its CRS.
   void finish_features(const Location& crs_at);
   base::Result<FootprintSet> result();
@@ -164,6 +171,7 @@ class FootprintBuilder {
   const FootprintOptions& options_;
   std::string options_name_;  // "GeoJsonOptions": names options in messages
   std::vector<RawFootprint> features_;
+  PropertyTable properties_;  // row k: the properties of features_[k]
   std::string declared_crs_;  // the input's CRS: "EPSG:N" or "OGC:CRS84"; empty: none named
   std::string empty_note_;    // GEO006's note when the input has no features at all
   FootprintSet result_;
@@ -186,6 +194,8 @@ class FootprintBuilder {
   void note_repair(std::size_t index, std::size_t p, const char* kind, const char* code,
                    const std::string& message, const FootprintPlace& place, std::size_t count);
   void reject_touching_rings(std::size_t index, std::size_t p, const kernel::Polygon& repaired);
+  bool ids_distinct() const;
+  void assign_ids_renaming();
   void assign_ids();
   std::string polygon_label(std::size_t index, std::size_t p) const;
   std::vector<std::string> local_note() const;

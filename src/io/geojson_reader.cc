@@ -496,6 +496,17 @@ class Reader : public FootprintBuilder {
   // Diagnostics ----------------------------------------------------------------------------
   Location at(std::size_t offset);
   Location locate(std::size_t feature, const FootprintPlace& place) override;
+  std::string feature_name(std::size_t index) const override {
+    return "feature " + std::to_string(index);
+  }
+  // Once the feature's id is read, its messages give it: "feature 3 (id \"b12\")".
+  std::string feature_label(std::size_t index) const override {
+    const std::string& id = features_[index].id;
+    return id.empty() ? feature_name(index) : feature_name(index) + " (id " + quote_text(id) + ")";
+  }
+  std::string fallback_id(std::size_t index) const override {
+    return "feature-" + std::to_string(index);
+  }
   // Diagnostics of the walk (report, feature_issue) are emitted only once the whole text is known
   // to be valid JSON: ensure_valid() parses what the walk has not reached yet.
   void emit(base::Severity severity, const char* code, std::string message, std::size_t offset,
@@ -826,9 +837,7 @@ void Reader::read_crs(Element doc) {
 // A new feature, numbered by its position in the file (a bare geometry is feature 0).
 FeatureState& Reader::add_feature(std::size_t offset) {
   const std::size_t index = features_.size();
-  RawFootprint& raw = features_.emplace_back();
-  raw.name = raw.label = "feature " + std::to_string(index);
-  raw.fallback_id = "feature-" + std::to_string(index);
+  add_raw();
   FeatureState& feature = states_.emplace_back();
   feature.index = index;
   feature.offset = offset;
@@ -839,6 +848,8 @@ FeatureState& Reader::add_feature(std::size_t offset) {
 // group in chunks_) and read in order.
 void Reader::read_features() {
   const std::size_t count = feature_offsets_.size();
+  features_.reserve(count);
+  states_.reserve(count);
   for (std::size_t group = 0; group < group_count() && !stopped_; ++group) {
     if (parsed_group_ != group) {
       if (!valid_group(group, chunks_)) throw SyntaxAbort{};
@@ -883,7 +894,6 @@ void Reader::read_feature(Element value, std::size_t offset) {
       feature.id_path = {{"properties", 0}, {key, 0}};
     }
   }
-  if (!raw.id.empty()) raw.label += " (id " + quote_text(raw.id) + ")";
   if (!type || type->type() != element_type::STRING || string_of(*type) != "Feature") {
     feature_issue(feature, true, "GEO015",
                   !type ? std::string("has no \"type\"; expected \"Feature\"")
@@ -909,34 +919,27 @@ void Reader::read_properties(FeatureState& feature, Element value) {
                   {{"properties", 0}});
     return;
   }
-  shape::AttributeMap& properties = features_[feature.index].properties;
+  // Duplicate keys: the last one wins (PropertyTable::set), as in nlohmann's map.
   for (const auto field : object_of(value)) {
-    shape::Value converted;
     switch (field.value.type()) {
       case element_type::BOOL:
-        converted = field.value.get_bool().value_unsafe();
+        properties_.set(feature.index, field.key, field.value.get_bool().value_unsafe());
         break;
       case element_type::INT64:
       case element_type::UINT64:
       case element_type::DOUBLE:
-        converted = number(field.value);
+        properties_.set(feature.index, field.key, number(field.value));
         break;
       case element_type::STRING:
-        converted = std::string(string_of(field.value));
+        properties_.set_text(feature.index, field.key, string_of(field.value));
         break;
       case element_type::OBJECT:
       case element_type::ARRAY:
-        converted = compact(field.value);
+        properties_.set_text(feature.index, field.key, compact(field.value));
         break;
       case element_type::NULL_VALUE:
+        properties_.set(feature.index, field.key, std::monostate{});
         break;
-    }
-    // Duplicate keys: the last one wins, as in nlohmann's map.
-    const auto it = properties.find(field.key);
-    if (it != properties.end()) {
-      it->second = std::move(converted);
-    } else {
-      properties.emplace(std::string(field.key), std::move(converted));
     }
   }
 }
@@ -1134,6 +1137,7 @@ base::Result<FootprintSet> Reader::run() {
     } catch (const SyntaxAbort&) {
       // No diagnostic but GEO001 has been emitted (ensure_valid()): forget what was read.
       features_.clear();
+      properties_ = PropertyTable();
       states_.clear();
       declared_crs_.clear();
       crs_offset_ = kNone;

@@ -354,18 +354,23 @@ class OsmBuilder : public FootprintBuilder {
   Location locate(std::size_t feature, const FootprintPlace&) override {
     return {feature, base::Span::whole(name_)};
   }
+  // "way 123" for the id "way/123" (OsmFeature::element()).
+  std::string feature_name(std::size_t index) const override {
+    std::string name = features_[index].id;
+    name[name.find('/')] = ' ';
+    return name;
+  }
+  std::string fallback_id(std::size_t index) const override { return features_[index].id; }
 
   void add(OsmFeature& feature) {
     const std::size_t index = features_.size();
-    RawFootprint& raw = features_.emplace_back();
-    raw.name = raw.label = feature.element();
+    RawFootprint& raw = add_raw();
     raw.id = (feature.relation ? "relation/" : "way/") + std::to_string(feature.id);
-    raw.fallback_id = raw.id;
     raw.multi = feature.polygons.size() > 1;
     raw.polygons = std::move(feature.polygons);
-    for (auto& [key, value] : feature.tags) raw.properties.insert_or_assign(key, std::move(value));
-    raw.properties.insert_or_assign("osm_type", std::string(feature.relation ? "relation" : "way"));
-    raw.properties.insert_or_assign("osm_id", std::to_string(feature.id));
+    for (const auto& [key, value] : feature.tags) properties_.set_text(index, key, value);
+    properties_.set_text(index, "osm_type", feature.relation ? "relation" : "way");
+    properties_.set_text(index, "osm_id", std::to_string(feature.id));
     if (!feature.problem.empty()) {
       feature_issue(index, true, feature.code.c_str(), feature.problem,
                     {index, base::Span::whole(name_)});

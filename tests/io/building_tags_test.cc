@@ -18,7 +18,7 @@ double rise_4(const std::string& /*roof*/, double /*pitch*/) {
 
 BuildingForm form_of(const AttributeMap& properties, std::vector<TagWarning>& warnings,
                      const BuildingTagOptions& options = {}) {
-  return read_building_form(properties, options, rise_4, warnings);
+  return read_building_form(PropertyRow::of(properties), options, rise_4, warnings);
 }
 
 BuildingForm form_of(const AttributeMap& properties, const BuildingTagOptions& options = {}) {

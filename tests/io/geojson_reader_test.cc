@@ -137,7 +137,7 @@ TEST(GeoJsonReader, PropertiesBecomeTypedAttributes) {
   ASSERT_TRUE(result.ok());
   const Footprint& f = result->footprints.at(0);
   EXPECT_EQ(f.id, "17");  // numeric id as text
-  const shape::AttributeMap& a = f.properties;
+  const shape::AttributeMap a = f.properties.map();
   EXPECT_EQ(std::get<double>(a.at("height")), 9.5);
   EXPECT_EQ(std::get<double>(a.at("levels")), 3.0);
   EXPECT_EQ(std::get<double>(a.at("big")), 12345678901234.0);

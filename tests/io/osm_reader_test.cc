@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,10 +30,10 @@ std::string first_headline(const base::Result<FootprintSet>& result) {
   return result.diagnostics().empty() ? "(none)" : headline(result.diagnostics().front());
 }
 
-std::string text_of(const shape::AttributeMap& properties, const std::string& key) {
-  const auto it = properties.find(key);
-  if (it == properties.end()) return "(absent)";
-  const std::string* s = std::get_if<std::string>(&it->second);
+std::string text_of(const PropertyRow& properties, const std::string& key) {
+  const std::optional<shape::Value> value = properties.find(key);
+  if (!value) return "(absent)";
+  const std::string* s = std::get_if<std::string>(&*value);
   return s != nullptr ? *s : "(not a string)";
 }
 
@@ -124,7 +125,7 @@ TEST(OsmReader, PbfGivesTheSameFootprintsAsXml) {
     const Footprint& a = xml->footprints[i];
     const Footprint& b = pbf->footprints[i];
     EXPECT_EQ(a.id, b.id);
-    EXPECT_EQ(a.properties, b.properties);
+    EXPECT_EQ(a.properties.map(), b.properties.map());
     ASSERT_EQ(a.polygons.size(), b.polygons.size());
     for (std::size_t p = 0; p < a.polygons.size(); ++p) {
       // Both store locations as 1e-7 degree integers: the same bits come out.

@@ -34,11 +34,9 @@ struct Village {
 
 // The grammar a lot names in its "bldg" property, relative to the lot file; empty: INPUT.
 std::string grammar_path(const BuildOptions& options, const io::Footprint& lot) {
-  const auto named = lot.properties.find("bldg");
-  if (named == lot.properties.end() || !std::holds_alternative<std::string>(named->second)) {
-    return {};
-  }
-  return (std::filesystem::path(options.lot).parent_path() / std::get<std::string>(named->second))
+  const std::optional<shape::Value> named = lot.properties.find("bldg");
+  if (!named || !std::holds_alternative<std::string>(*named)) return {};
+  return (std::filesystem::path(options.lot).parent_path() / std::get<std::string>(*named))
       .string();
 }
 

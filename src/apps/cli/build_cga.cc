@@ -68,8 +68,8 @@ std::optional<Lots> read_lots(const BuildOptions& options) {
   for (io::Footprint& f : set->footprints) {
     // The file's first edge, so a lot's x axis follows it even where the reader reversed a
     // clockwise ring.
-    out.lots.push_back({std::move(f.id), std::move(f.polygons), std::move(f.properties),
-                        std::move(f.first_edges)});
+    out.lots.push_back(
+        {std::move(f.id), std::move(f.polygons), f.properties.map(), std::move(f.first_edges)});
   }
   return out;
 }

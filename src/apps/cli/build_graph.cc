@@ -80,7 +80,7 @@ struct LotFiles {
     for (io::Footprint& f : set->footprints) {
       for (std::size_t k = 0; k < f.polygons.size(); ++k) {
         const std::string id = f.polygons.size() == 1 ? f.id : f.id + "#" + std::to_string(k);
-        lots.push_back({std::move(f.polygons[k]), f.properties, id});
+        lots.push_back({std::move(f.polygons[k]), f.properties.map(), id});
       }
     }
     return true;

@@ -22,7 +22,7 @@ void paint(const FootprintPlan& plan, kernel::Mesh& mesh) {
 BuiltBuilding build_one(const io::Footprint& footprint, const FootprintPlan& plan) {
   BuiltBuilding out;
   out.building.id = footprint.id;
-  out.building.attributes = footprint.properties;
+  out.building.attributes = footprint.properties.map();
   kernel::RoofType built_roof = plan.spec.roof;
   for (std::size_t i = 0; i < footprint.polygons.size(); ++i) {
     kernel::MassResult mass = kernel::build_mass(footprint.polygons[i], plan.spec);
@@ -79,7 +79,7 @@ BuiltBuilding build_unit(const io::FootprintSet& set, const MassPlan& plan, cons
   BuiltBuilding joined;
   joined.feature = first;
   joined.building.id = set.footprints[first].id;
-  joined.building.attributes = set.footprints[first].properties;
+  joined.building.attributes = set.footprints[first].properties.map();
   for (std::size_t k = 1; k < unit.size(); ++k) {
     BuiltBuilding part = build_one(set.footprints[unit[k]], plan.footprints[unit[k]]);
     joined.watertight = joined.watertight && part.watertight;

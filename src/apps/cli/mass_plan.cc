@@ -64,8 +64,8 @@ void assign_parts(const io::FootprintSet& set, MassPlan& plan,
   for (const kernel::Overlap& overlap : overlaps) {
     for (const auto& [part, outline] :
          {std::pair{overlap.first, overlap.second}, std::pair{overlap.second, overlap.first}}) {
-      const io::BuildingForm& p = plan.footprints[part].form;
-      const io::BuildingForm& o = plan.footprints[outline].form;
+      const FormSummary& p = plan.footprints[part].form;
+      const FormSummary& o = plan.footprints[outline].form;
       if (!p.is_part || !o.osm || o.is_part) continue;
       double part_area = 0;
       for (const kernel::Polygon& polygon : set.footprints[part].polygons) {
@@ -89,20 +89,16 @@ std::string material_key(const std::string& name) {
   return key;
 }
 
-// One material per colour name, in order of first use.
-void assign_materials(MassPlan& plan) {
-  plan.materials = shape::Scene().materials;
-  std::map<std::string, kernel::MaterialId> ids;
-  const auto material = [&](const std::optional<std::array<float, 3>>& colour,
-                            const std::string& name) -> kernel::MaterialId {
-    if (!colour) return 0;
-    const std::string key = material_key(name);
-    auto [it, added] = ids.emplace(key, static_cast<kernel::MaterialId>(plan.materials.size()));
-    if (added) plan.materials.push_back({key, {(*colour)[0], (*colour)[1], (*colour)[2], 1.0F}});
-    return it->second;
-  };
-  for (FootprintPlan& footprint : plan.footprints) {
-    io::BuildingForm& form = footprint.form;
+// One material per colour name, in order of first use: the scene's materials, then the tagged
+// colours' as footprints name them.
+class ColourMaterials {
+ public:
+  explicit ColourMaterials(std::vector<shape::Material>& materials) : materials_(materials) {
+    materials_ = shape::Scene().materials;
+  }
+
+  // The walls' and the roof's materials of one footprint, given its form and spec.
+  void assign(io::BuildingForm& form, FootprintPlan& footprint) {
     footprint.wall_material = material(form.wall_colour, form.wall_colour_name);
     // The flat roofs of mapped buildings are mostly gravel, bitumen or membranes: grey, not the
     // terracotta of pitched roofs (docs/osm-buildings.md, "Colours").
@@ -112,6 +108,23 @@ void assign_materials(MassPlan& plan) {
     }
     footprint.roof_material = material(form.roof_colour, form.roof_colour_name);
   }
+
+ private:
+  kernel::MaterialId material(const std::optional<std::array<float, 3>>& colour,
+                              const std::string& name) {
+    if (!colour) return 0;
+    const std::string key = material_key(name);
+    auto [it, added] = ids_.emplace(key, static_cast<kernel::MaterialId>(materials_.size()));
+    if (added) materials_.push_back({key, {(*colour)[0], (*colour)[1], (*colour)[2], 1.0F}});
+    return it->second;
+  }
+
+  std::vector<shape::Material>& materials_;
+  std::map<std::string, kernel::MaterialId> ids_;
+};
+
+FormSummary summary_of(const io::BuildingForm& form) {
+  return {form.base, form.eave, form.height_source, form.roof_source, form.osm, form.is_part};
 }
 
 OverlapSummary summarize_overlaps(const MassPlan& plan) {
@@ -143,17 +156,19 @@ MassPlan plan_mass(const MassOptions& options, const io::FootprintSet& set,
                    std::vector<Warning>& warnings) {
   const io::BuildingTagOptions tags = tag_options(options);
   MassPlan plan;
+  ColourMaterials materials(plan.materials);
   plan.footprints.reserve(set.footprints.size());
   for (const io::Footprint& footprint : set.footprints) {
     std::vector<io::TagWarning> tag_warnings;
-    FootprintPlan entry;
-    entry.form =
+    io::BuildingForm form =
         io::read_building_form(footprint.properties, tags, rise_over(footprint), tag_warnings);
     for (io::TagWarning& w : tag_warnings) {
       warnings.push_back({w.code, feature_name(footprint) + ": " + w.text});
     }
-    entry.spec = mass_spec(options, entry.form);
-    plan.footprints.push_back(std::move(entry));
+    FootprintPlan& entry = plan.footprints.emplace_back();
+    entry.spec = mass_spec(options, form);
+    materials.assign(form, entry);
+    entry.form = summary_of(form);
   }
   std::vector<std::vector<kernel::Polygon>> regions;
   regions.reserve(set.footprints.size());
@@ -161,11 +176,10 @@ MassPlan plan_mass(const MassOptions& options, const io::FootprintSet& set,
   plan.overlaps = kernel::find_overlaps(regions);
   assign_parts(set, plan, plan.overlaps);
   plan.overlap_summary = summarize_overlaps(plan);
-  assign_materials(plan);
   return plan;
 }
 
-void add_form_attributes(const io::BuildingForm& form, kernel::RoofType built_roof, double top,
+void add_form_attributes(const FormSummary& form, kernel::RoofType built_roof, double top,
                          shape::AttributeMap& attributes) {
   attributes["insula:height"] = top;
   attributes["insula:eave_height"] = form.eave;

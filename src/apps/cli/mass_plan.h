@@ -25,8 +25,20 @@ struct Warning {
   std::string text;
 };
 
+// What the build needs of a footprint's io::BuildingForm besides its MassSpec: the heights and
+// where they and the roof came from. The whole form (roof name, colours and their names: about
+// 200 bytes) stays in plan_mass, since a city holds the plan of every footprint for its whole run.
+struct FormSummary {
+  double base = 0;  // bottom of the walls
+  double eave = 10;
+  io::ValueSource height_source = io::ValueSource::kDefault;
+  io::ValueSource roof_source = io::ValueSource::kDefault;
+  bool osm = false;      // S3DB rules apply
+  bool is_part = false;  // a building:part
+};
+
 struct FootprintPlan {
-  io::BuildingForm form;
+  FormSummary form;
   kernel::MassSpec spec;
   // The outline this building:part stands in (S3DB: parts inside an outline replace it).
   std::optional<std::size_t> outline;
@@ -58,7 +70,7 @@ MassPlan plan_mass(const MassOptions& options, const io::FootprintSet& set,
 // The attributes that say where a building's height and roof came from (docs/osm-buildings.md,
 // "Where each value came from"): insula:height, insula:eave_height, insula:min_height,
 // insula:height_source, insula:roof, insula:roof_source. `top` is the built height.
-void add_form_attributes(const io::BuildingForm& form, kernel::RoofType built_roof, double top,
+void add_form_attributes(const FormSummary& form, kernel::RoofType built_roof, double top,
                          shape::AttributeMap& attributes);
 
 }  // namespace insula::cli

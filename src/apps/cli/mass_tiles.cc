@@ -51,15 +51,14 @@ int conclude(const MassOptions& options, const io::FootprintSet& set,
              const std::vector<MassUnit>& units, TileJob& job, TileJobResult& built,
              std::vector<Warning>& warnings, MassReport& report, const Stopwatch& total,
              const Stopwatch& build_clock) {
-  std::vector<BuildOutcome> outcomes(units.size());
-  for (std::size_t u = 0; u < units.size(); ++u) {
-    outcomes[u].id = set.footprints[units[u].front()].id;
-    outcomes[u].feature = units[u].front();
-  }
+  // Only the buildings with a note have something to tell (most are closed and quiet): a
+  // million outcomes of the others would cost about 100 MB at the end of the run.
+  std::vector<BuildOutcome> outcomes;
+  outcomes.reserve(built.notes.size());
   for (auto& [unit, note] : built.notes) {
-    outcomes[unit].watertight = note[0].get<bool>();
-    outcomes[unit].messages = note[1].get<std::vector<std::string>>();
-    outcomes[unit].entry = note[2].get<std::string>();
+    const std::size_t feature = units[unit].front();
+    outcomes.push_back({set.footprints[feature].id, feature, note[0].get<bool>(),
+                        note[1].get<std::vector<std::string>>(), note[2].get<std::string>()});
   }
   for (const Json& counts : built.tallies) report.add_counts(counts);
   report.ranks = static_cast<int>(built.tiles_by_rank.size());
@@ -70,7 +69,7 @@ int conclude(const MassOptions& options, const io::FootprintSet& set,
   for (BuildOutcome& outcome : outcomes) {
     if (!outcome.entry.empty()) report.building_entries.push_back(std::move(outcome.entry));
   }
-  if (const int code = check_built(options, failed, report.buildings, outcomes.size()); code != 0) {
+  if (const int code = check_built(options, failed, report.buildings, units.size()); code != 0) {
     return code;
   }
   report.failed = failed;

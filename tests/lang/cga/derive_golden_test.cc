@@ -29,7 +29,7 @@ std::vector<Lot> lots_for(const std::filesystem::path& cga, const Program& progr
   std::vector<Lot> lots;
   if (!set.ok()) return lots;
   for (io::Footprint& f : set->footprints) {
-    lots.push_back({f.id, f.polygons, f.properties, {}});
+    lots.push_back({f.id, f.polygons, f.properties.map(), {}});
   }
   return lots;
 }
