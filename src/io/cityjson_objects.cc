@@ -130,7 +130,7 @@ const std::string* IdSet::insert(std::string_view id) {
     }
   }
   ids_.emplace_back(id);
-  place(ids_.back(), static_cast<std::uint32_t>(ids_.size() - 1));
+  place(hash, static_cast<std::uint32_t>(ids_.size() - 1));
   return &ids_.back();
 }
 
@@ -145,11 +145,12 @@ void IdSet::reserve(std::size_t n) {
   while (slots < 2 * (n + 1)) slots *= 2;
   if (slots <= slots_.size()) return;
   slots_.assign(slots, kFree);
-  for (std::uint32_t index = 0; index < ids_.size(); ++index) place(ids_[index], index);
+  for (std::uint32_t index = 0; index < ids_.size(); ++index) {
+    place(std::hash<std::string_view>{}(ids_[index]), index);
+  }
 }
 
-void IdSet::place(std::string_view id, std::uint32_t index) {
-  const std::uint64_t hash = std::hash<std::string_view>{}(id);
+void IdSet::place(std::uint64_t hash, std::uint32_t index) {
   const std::size_t mask = slots_.size() - 1;
   std::size_t slot = hash & mask;
   while (slots_[slot] != kFree) slot = (slot + 1) & mask;
@@ -176,7 +177,8 @@ void CityObjects::reserve_rings(std::size_t rings, std::size_t indices) {
   rings_.classes.reserve(rings);
 }
 
-Quantised CityObjects::quantise(kernel::Vec3 local) const {
+// Inline: a call, its point passed and returned through memory, cost as much as the rounding.
+inline Quantised CityObjects::quantise(kernel::Vec3 local) const {
   const kernel::Vec3 d = (local - base_) * kPerMeter;
   return {round_half_away(d.x), round_half_away(d.y), round_half_away(d.z)};
 }

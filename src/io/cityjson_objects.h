@@ -78,7 +78,8 @@ class IdSet {
 
  private:
   static constexpr std::uint64_t kFree = UINT64_MAX;
-  void place(std::string_view id, std::uint32_t index);
+  // Files entry `index` of ids_, whose hash is `hash`.
+  void place(std::uint64_t hash, std::uint32_t index);
 
   std::deque<std::string> ids_;       // a deque: adding an id does not move the others
   std::vector<std::uint64_t> slots_;  // high half of the hash, index into ids_

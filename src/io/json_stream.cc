@@ -125,20 +125,37 @@ void JsonStream::newline(std::size_t depth) {
   }
 }
 
+// Most keys and strings (ids, types, names) need no escaping: checked first, they are copied
+// whole rather than run by run.
+bool JsonStream::put_plain(std::string_view text, std::string_view after) {
+  if (text.size() + 1 + after.size() > kPending || !plain(text.data(), text.size())) return false;
+  char* at = room(text.size() + 1 + after.size());
+  *at = '"';
+  std::memcpy(at + 1, text.data(), text.size());
+  std::memcpy(at + 1 + text.size(), after.data(), after.size());
+  commit(at + 1 + text.size() + after.size());
+  return true;
+}
+
 JsonStream& JsonStream::key(std::string_view name) {
   separate();
-  put('"');
-  put_escaped(name);
-  put(indent_ < 0 ? "\":" : "\": ");
+  const std::string_view after = indent_ < 0 ? "\":" : "\": ";
+  if (!put_plain(name, after)) {
+    put('"');
+    put_escaped(name);
+    put(after);
+  }
   after_key_ = true;
   return *this;
 }
 
 JsonStream& JsonStream::string(std::string_view text) {
   separate();
-  put('"');
-  put_escaped(text);
-  put('"');
+  if (!put_plain(text, "\"")) {
+    put('"');
+    put_escaped(text);
+    put('"');
+  }
   return end_value();
 }
 

@@ -157,6 +157,8 @@ class JsonStream {
   }
   void put(std::string_view text);
   void put_escaped(std::string_view text);
+  // '"', `text` and `after` when `text` needs no escaping and they fit the buffer; else false.
+  bool put_plain(std::string_view text, std::string_view after);
   void newline(std::size_t depth);
   // No character of `text` needs escaping (nor is a NUL).
   static constexpr bool plain(const char* text, std::size_t size) {
