@@ -447,6 +447,14 @@ std::string_view CityObjects::unique_part_id(const std::string& base) {
   }
 }
 
+void CityObjects::prefetch_ahead(const std::vector<shape::Building>& buildings, std::size_t b,
+                                 bool positions_only) {
+  if (b + kPartsAhead < buildings.size()) prefetch_parts(buildings[b + kPartsAhead]);
+  if (b + kMeshesAhead < buildings.size()) {
+    prefetch_meshes(buildings[b + kMeshesAhead], positions_only);
+  }
+}
+
 void CityObjects::prefetch_parts(const shape::Building& building) {
   for (const shape::Part& part : building.parts) {
     // From the name (read for the part's id) to the end of the mesh's array pointers.
@@ -523,9 +531,10 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
     objects_.push_back(object);
   }
   const std::string_view id = unique_id(id_base);
+  const bool renamed = id.size() != id_base.size();  // "-2" or a later suffix added
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
     Object& object = objects_[first_child + p];
-    if (id != id_base) part_ids_[p] = part_id_base(id, building.parts[p], p);  // "-2" added
+    if (renamed) part_ids_[p] = part_id_base(id, building.parts[p], p);
     object.id = unique_part_id(part_ids_[p]);
     object.parent = id;
     estimate_text(object);
@@ -642,19 +651,14 @@ void CityObjects::clear() {
   objects_.clear();
   text_size_ = 2;
 }
-// One pass over the meshes' positions, prefetched (see CityObjects::prefetch_parts()).
+// One pass over the meshes' positions, prefetched (see CityObjects::prefetch_ahead()).
 SceneSize measure(const shape::Scene& scene) {
   constexpr double kNone = std::numeric_limits<double>::infinity();
   kernel::Vec3 low{kNone, kNone, kNone};
   SceneSize size;
   const std::vector<shape::Building>& buildings = scene.buildings;
   for (std::size_t b = 0; b < buildings.size(); ++b) {
-    if (b + CityObjects::kPartsAhead < buildings.size()) {
-      CityObjects::prefetch_parts(buildings[b + CityObjects::kPartsAhead]);
-    }
-    if (b + CityObjects::kMeshesAhead < buildings.size()) {
-      CityObjects::prefetch_meshes(buildings[b + CityObjects::kMeshesAhead], true);
-    }
+    CityObjects::prefetch_ahead(buildings, b, true);
     size.objects += buildings[b].parts.size() + 1;
     for (const shape::Part& part : buildings[b].parts) {
       for (const kernel::Vec3& p : part.mesh.positions()) {

@@ -63,12 +63,7 @@ void Writer::write_metadata(JsonStream& json) const {
 void Writer::write(std::string& out) {
   const std::vector<shape::Building>& buildings = scene_.buildings;
   for (std::size_t b = 0; b < buildings.size(); ++b) {
-    if (b + cityjson::CityObjects::kPartsAhead < buildings.size()) {
-      cityjson::CityObjects::prefetch_parts(buildings[b + cityjson::CityObjects::kPartsAhead]);
-    }
-    if (b + cityjson::CityObjects::kMeshesAhead < buildings.size()) {
-      cityjson::CityObjects::prefetch_meshes(buildings[b + cityjson::CityObjects::kMeshesAhead]);
-    }
+    cityjson::CityObjects::prefetch_ahead(buildings, b);
     objects_.add_building(buildings[b], b);
   }
   // The objects, then about 20 bytes per vertex ("[123456,234567,3456],").
