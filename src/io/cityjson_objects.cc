@@ -47,6 +47,15 @@ void prefetch_lines(const void* data, std::size_t bytes) {
   }
 }
 
+// std::to_chars of a coordinate through its 32-bit form when it has one (almost always: that is
+// +-2,147 km in mm), which formats a quarter faster than the 64-bit one.
+char* write_coordinate(char* at, std::int64_t q) {
+  if (q == static_cast<std::int32_t>(q)) {
+    return std::to_chars(at, at + 11, static_cast<std::int32_t>(q)).ptr;
+  }
+  return std::to_chars(at, at + 20, q).ptr;
+}
+
 std::string_view object_type(shape::PartKind kind) {
   switch (kind) {
     case shape::PartKind::kStorey:
@@ -635,7 +644,7 @@ void CityObjects::write_vertices(JsonStream& json) {
       *at++ = '[';
       for (std::size_t k = 0; k < 3; ++k) {
         if (k > 0) *at++ = ',';
-        at = std::to_chars(at, at + 20, vertices[v][k]).ptr;
+        at = write_coordinate(at, vertices[v][k]);
       }
       *at++ = ']';
     }
