@@ -477,10 +477,14 @@ void CityObjects::prefetch_meshes(const shape::Building& building, bool position
   for (const shape::Part& part : building.parts) {
     const kernel::Mesh& mesh = part.mesh;
     if (mesh.empty()) continue;
-    __builtin_prefetch(mesh.positions().data());
+    // Whole arrays (up to prefetch_lines()'s limit): their first lines alone left the rest of a
+    // small building's corners and tags to miss when its surfaces were collected.
+    prefetch_lines(mesh.positions().data(), mesh.vertex_count() * sizeof(kernel::Vec3));
     if (positions_only) continue;
-    __builtin_prefetch(mesh.face(0).data());
-    __builtin_prefetch(&mesh.tag(0));
+    constexpr std::size_t kCornersPerFace = 4;  // about: quads, triangles and a few larger faces
+    prefetch_lines(mesh.face(0).data(),
+                   kCornersPerFace * mesh.face_count() * sizeof(std::uint32_t));
+    prefetch_lines(&mesh.tag(0), mesh.face_count() * sizeof(kernel::FaceTag));
   }
 }
 
