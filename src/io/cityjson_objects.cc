@@ -57,6 +57,13 @@ char* write_coordinate(char* at, std::int64_t q) {
   return std::to_chars(at, at + 20, q).ptr;
 }
 
+// The part's mesh; for a shared-mesh instance its placed copy, made in `placed`.
+const kernel::Mesh& part_mesh(const shape::Part& part, std::optional<kernel::Mesh>& placed) {
+  if (!part.instance_of) return part.mesh;
+  placed = shape::part_world_mesh(part);
+  return *placed;
+}
+
 std::string_view object_type(shape::PartKind kind) {
   switch (kind) {
     case shape::PartKind::kStorey:
@@ -531,9 +538,8 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
   const std::size_t first_child = objects_.size();
   for (const shape::Part& part : building.parts) {
     Object object{{}, {}, object_type(part.kind), attributes_of(part.attributes), rings_.size()};
-    std::optional<kernel::Mesh> instance;  // (an empty Mesh would allocate)
-    if (part.instance_of) instance = shape::part_world_mesh(part);
-    const kernel::Mesh& mesh = instance ? *instance : part.mesh;
+    std::optional<kernel::Mesh> placed;  // (an empty Mesh would allocate)
+    const kernel::Mesh& mesh = part_mesh(part, placed);
     pool_vertices(mesh);
     test_solid();  // the previous part's, while the pool's slots come in
     collect_surfaces(mesh);
@@ -672,11 +678,13 @@ SceneSize measure(const shape::Scene& scene) {
     CityObjects::prefetch_ahead(buildings, b, true);
     size.objects += buildings[b].parts.size() + 1;
     for (const shape::Part& part : buildings[b].parts) {
-      for (const kernel::Vec3& p : part.mesh.positions()) {
+      std::optional<kernel::Mesh> placed;
+      const kernel::Mesh& mesh = part_mesh(part, placed);
+      for (const kernel::Vec3& p : mesh.positions()) {
         if (finite(p)) low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
       }
-      size.vertices += part.mesh.vertex_count();
-      size.faces += part.mesh.face_count();
+      size.vertices += mesh.vertex_count();
+      size.faces += mesh.face_count();
     }
   }
   size.minimum = low.x == kNone ? kernel::Vec3{} : low;

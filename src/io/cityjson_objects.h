@@ -219,6 +219,7 @@ class CityObjects {
 
 // What the CityJSON writer needs to know of a scene before writing it: the minimum corner of its
 // finite vertices (local coordinates; (0, 0, 0) when none) and its sizes, to reserve room with.
+// Shared-mesh instances are measured placed, as CityObjects::add_building() writes them.
 struct SceneSize {
   kernel::Vec3 minimum;
   std::size_t vertices = 0;  // the meshes' vertices

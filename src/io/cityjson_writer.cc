@@ -9,7 +9,6 @@
 #include "io/atomic_file.h"
 #include "io/cityjson_objects.h"
 #include "io/json_stream.h"
-#include "shape/part_mesh.h"
 
 namespace insula::io {
 namespace {
@@ -101,9 +100,9 @@ std::string cityjson_reference_system(const std::string& crs) {
   return std::string(kPrefix) + "EPSG/0/" + std::string(rest);
 }
 
-std::string cityjson_text(const shape::Scene& input) {
-  shape::Scene expanded;  // shared-mesh instances written as plain geometry
-  const shape::Scene& scene = shape::expand_instances(input, expanded);
+// Shared-mesh instances are placed part by part as they are measured and added, with no copy of
+// the scene (shape::expand_instances()) nor a pass to look for them.
+std::string cityjson_text(const shape::Scene& scene) {
   Writer writer(scene, cityjson::measure(scene));
   std::string out;
   writer.write(out);
