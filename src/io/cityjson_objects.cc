@@ -452,12 +452,14 @@ std::string_view CityObjects::unique_id(const std::string& base) {
 
 // A part's id: unique among the ids given and none of the avoided buildings' ids.
 std::string_view CityObjects::unique_part_id(const std::string& base) {
-  std::string id = base;
+  if (!avoided_ || !avoided_->contains(base)) {
+    if (const std::string* taken = ids_.insert(base)) return *taken;
+  }
   for (int suffix = 2;; ++suffix) {
+    const std::string id = base + "-" + std::to_string(suffix);
     if (!avoided_ || !avoided_->contains(id)) {
       if (const std::string* taken = ids_.insert(id)) return *taken;
     }
-    id = base + "-" + std::to_string(suffix);
   }
 }
 
@@ -512,13 +514,16 @@ void CityObjects::estimate_text(const Object& object) {
   }
 }
 
-// The id of part `p` of a building whose id is `id` (before it is made unique).
-std::string CityObjects::part_id_base(std::string_view id, const shape::Part& part, std::size_t p) {
-  std::string base;
-  base.reserve(id.size() + 1 + (part.name.empty() ? 12 : part.name.size()));
-  base.append(id).append("-");
-  if (part.name.empty()) return base.append("part").append(std::to_string(p));
-  return base.append(part.name);
+// The id of part `p` of a building whose id is `id` (before it is made unique), into `base`: in
+// place, as copies of short strings (each a library call) were a good part of adding a part.
+void CityObjects::part_id_base(std::string& base, std::string_view id, const shape::Part& part,
+                               std::size_t p) {
+  base.assign(id).push_back('-');
+  if (part.name.empty()) {
+    base.append("part").append(std::to_string(p));
+  } else {
+    base.append(part.name);
+  }
 }
 
 // Pools the parts' vertices and keeps their rings now, in the buildings' order (which numbers the
@@ -532,7 +537,7 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
   ids_.prefetch(id_base);
   part_ids_.resize(building.parts.size());
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
-    part_ids_[p] = part_id_base(id_base, building.parts[p], p);
+    part_id_base(part_ids_[p], id_base, building.parts[p], p);
     ids_.prefetch(part_ids_[p]);
   }
   const std::size_t first_child = objects_.size();
@@ -551,7 +556,7 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
   const bool renamed = id.size() != id_base.size();  // "-2" or a later suffix added
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
     Object& object = objects_[first_child + p];
-    if (renamed) part_ids_[p] = part_id_base(id, building.parts[p], p);
+    if (renamed) part_id_base(part_ids_[p], id, building.parts[p], p);
     object.id = unique_part_id(part_ids_[p]);
     object.parent = id;
     estimate_text(object);

@@ -180,7 +180,8 @@ class CityObjects {
   void write_geometry(JsonStream& json, const Object& part);
 
   void estimate_text(const Object& object);
-  static std::string part_id_base(std::string_view id, const shape::Part& part, std::size_t p);
+  static void part_id_base(std::string& base, std::string_view id, const shape::Part& part,
+                           std::size_t p);
   std::string_view unique_id(const std::string& base);
   std::string_view unique_part_id(const std::string& base);
 
