@@ -281,6 +281,32 @@ bool CityObjects::is_solid(std::size_t first, std::size_t end) const {
   const std::uint32_t locals =
       number_locally(std::span<const std::uint32_t>(rings_.indices)
                          .subspan(corners_begin, rings_.ends[end - 1] - corners_begin));
+  // The edge test reads nothing but the rings' local numbering: a part numbered as the last one
+  // tested (the same mesh again, as a city's repeated houses and instances are) has its verdict.
+  if (!numbered_as_last(first, end, corners_begin)) {
+    last_closed_ = closed_shell(first, end, corners_begin, locals);
+  }
+  return last_closed_ && volume(first, end, locals) > 0;
+}
+
+// Whether local_ and the sizes of rings [first, end) are those of the last part tested; if not,
+// they become the ones kept.
+bool CityObjects::numbered_as_last(std::size_t first, std::size_t end,
+                                   std::size_t corners_begin) const {
+  bool same = end - first == last_ends_.size() && local_ == last_local_;
+  for (std::size_t r = first; same && r < end; ++r) {
+    same = rings_.ends[r] - corners_begin == last_ends_[r - first];
+  }
+  if (same) return true;
+  last_local_ = local_;
+  last_ends_.resize(end - first);
+  for (std::size_t r = first; r < end; ++r) last_ends_[r - first] = rings_.ends[r] - corners_begin;
+  return false;
+}
+
+// The edge test of is_solid(), on local_ (`locals` numbers) and the sizes of rings [first, end).
+bool CityObjects::closed_shell(std::size_t first, std::size_t end, std::size_t corners_begin,
+                               std::uint32_t locals) const {
   std::size_t slots = 16;
   while (slots < 2 * local_.size()) slots *= 2;
   edges_.assign(slots, kNoEdge);
@@ -320,7 +346,7 @@ bool CityObjects::is_solid(std::size_t first, std::size_t end) const {
     begin += size;
   }
   // Every pair used both ways (each twice) and one component.
-  return 2 * pairs == local_.size() && joins + 1 == locals && volume(first, end, locals) > 0;
+  return 2 * pairs == local_.size() && joins + 1 == locals;
 }
 
 // kernel::volume of the quantised rings [first, end) (the same sums in the same order), after

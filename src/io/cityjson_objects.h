@@ -167,6 +167,9 @@ class CityObjects {
   void pool_vertices(const kernel::Mesh& mesh);
   std::uint32_t number_locally(std::span<const std::uint32_t> corners) const;
   bool is_solid(std::size_t first, std::size_t end) const;
+  bool numbered_as_last(std::size_t first, std::size_t end, std::size_t corners_begin) const;
+  bool closed_shell(std::size_t first, std::size_t end, std::size_t corners_begin,
+                    std::uint32_t locals) const;
   void test_solid();
   double volume(std::size_t first, std::size_t end, std::uint32_t locals) const;
   static void prefetch_parts(const shape::Building& building);
@@ -216,6 +219,11 @@ class CityObjects {
   mutable std::vector<std::uint64_t> edges_;
   mutable std::vector<std::uint8_t> sides_;
   mutable std::vector<std::uint32_t> parent_;
+  // The last part's local numbering and ring ends (from its first corner) the edge test saw, and
+  // its verdict (see is_solid()).
+  mutable std::vector<std::uint32_t> last_local_;
+  mutable std::vector<std::size_t> last_ends_;
+  mutable bool last_closed_ = false;
 };
 
 // What the CityJSON writer needs to know of a scene before writing it: the minimum corner of its
