@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "io/triangulated.h"
+#include "kernel/semantic.h"
 #include "shape/part_mesh.h"
 
 namespace insula::io::cityjson {
@@ -45,6 +46,22 @@ void prefetch_lines(const void* data, std::size_t bytes) {
   for (std::size_t offset = 0; offset < std::min<std::size_t>(bytes, 1024); offset += kLine) {
     __builtin_prefetch(at + offset);
   }
+}
+
+// std::to_chars of a coordinate through its 32-bit form when it has one (almost always: that is
+// +-2,147 km in mm), which formats a quarter faster than the 64-bit one.
+char* write_coordinate(char* at, std::int64_t q) {
+  if (q == static_cast<std::int32_t>(q)) {
+    return std::to_chars(at, at + 11, static_cast<std::int32_t>(q)).ptr;
+  }
+  return std::to_chars(at, at + 20, q).ptr;
+}
+
+// The part's mesh; for a shared-mesh instance its placed copy, made in `placed`.
+const kernel::Mesh& part_mesh(const shape::Part& part, std::optional<kernel::Mesh>& placed) {
+  if (!part.instance_of) return part.mesh;
+  placed = shape::part_world_mesh(part);
+  return *placed;
 }
 
 std::string_view object_type(shape::PartKind kind) {
@@ -130,7 +147,7 @@ const std::string* IdSet::insert(std::string_view id) {
     }
   }
   ids_.emplace_back(id);
-  place(ids_.back(), static_cast<std::uint32_t>(ids_.size() - 1));
+  place(hash, static_cast<std::uint32_t>(ids_.size() - 1));
   return &ids_.back();
 }
 
@@ -145,11 +162,12 @@ void IdSet::reserve(std::size_t n) {
   while (slots < 2 * (n + 1)) slots *= 2;
   if (slots <= slots_.size()) return;
   slots_.assign(slots, kFree);
-  for (std::uint32_t index = 0; index < ids_.size(); ++index) place(ids_[index], index);
+  for (std::uint32_t index = 0; index < ids_.size(); ++index) {
+    place(std::hash<std::string_view>{}(ids_[index]), index);
+  }
 }
 
-void IdSet::place(std::string_view id, std::uint32_t index) {
-  const std::uint64_t hash = std::hash<std::string_view>{}(id);
+void IdSet::place(std::uint64_t hash, std::uint32_t index) {
   const std::size_t mask = slots_.size() - 1;
   std::size_t slot = hash & mask;
   while (slots_[slot] != kFree) slot = (slot + 1) & mask;
@@ -176,7 +194,8 @@ void CityObjects::reserve_rings(std::size_t rings, std::size_t indices) {
   rings_.classes.reserve(rings);
 }
 
-Quantised CityObjects::quantise(kernel::Vec3 local) const {
+// Inline: a call, its point passed and returned through memory, cost as much as the rounding.
+inline Quantised CityObjects::quantise(kernel::Vec3 local) const {
   const kernel::Vec3 d = (local - base_) * kPerMeter;
   return {round_half_away(d.x), round_half_away(d.y), round_half_away(d.z)};
 }
@@ -262,6 +281,32 @@ bool CityObjects::is_solid(std::size_t first, std::size_t end) const {
   const std::uint32_t locals =
       number_locally(std::span<const std::uint32_t>(rings_.indices)
                          .subspan(corners_begin, rings_.ends[end - 1] - corners_begin));
+  // The edge test reads nothing but the rings' local numbering: a part numbered as the last one
+  // tested (the same mesh again, as a city's repeated houses and instances are) has its verdict.
+  if (!numbered_as_last(first, end, corners_begin)) {
+    last_closed_ = closed_shell(first, end, corners_begin, locals);
+  }
+  return last_closed_ && volume(first, end, locals) > 0;
+}
+
+// Whether local_ and the sizes of rings [first, end) are those of the last part tested; if not,
+// they become the ones kept.
+bool CityObjects::numbered_as_last(std::size_t first, std::size_t end,
+                                   std::size_t corners_begin) const {
+  bool same = end - first == last_ends_.size() && local_ == last_local_;
+  for (std::size_t r = first; same && r < end; ++r) {
+    same = rings_.ends[r] - corners_begin == last_ends_[r - first];
+  }
+  if (same) return true;
+  last_local_ = local_;
+  last_ends_.resize(end - first);
+  for (std::size_t r = first; r < end; ++r) last_ends_[r - first] = rings_.ends[r] - corners_begin;
+  return false;
+}
+
+// The edge test of is_solid(), on local_ (`locals` numbers) and the sizes of rings [first, end).
+bool CityObjects::closed_shell(std::size_t first, std::size_t end, std::size_t corners_begin,
+                               std::uint32_t locals) const {
   std::size_t slots = 16;
   while (slots < 2 * local_.size()) slots *= 2;
   edges_.assign(slots, kNoEdge);
@@ -301,7 +346,7 @@ bool CityObjects::is_solid(std::size_t first, std::size_t end) const {
     begin += size;
   }
   // Every pair used both ways (each twice) and one component.
-  return 2 * pairs == local_.size() && joins + 1 == locals && volume(first, end, locals) > 0;
+  return 2 * pairs == local_.size() && joins + 1 == locals;
 }
 
 // kernel::volume of the quantised rings [first, end) (the same sums in the same order), after
@@ -367,31 +412,28 @@ std::string_view CityObjects::boundaries_text(std::size_t first, std::size_t end
 }
 
 // The distinct surface types of rings [first, end) into types_, in first-use order, and each
-// ring's position among them (-1: none) into values_. A type is looked up once a semantic class.
+// ring's position among them (-1: none) into values_. A type is looked up once a semantic class,
+// its value then read from a table by class (a search of the classes met cost a mispredicted
+// branch or two a ring).
 void CityObjects::collect_types(std::size_t first, std::size_t end) {
-  struct Known {
-    kernel::SemanticClass semantic;
-    int value;
-  };
-  std::array<Known, 8> known{};  // the classes met so far (a part has a handful)
-  std::size_t known_count = 0;
+  constexpr int kUnseen = -2;
+  std::array<int, kernel::kSemanticClassCount> value_of{};
+  value_of.fill(kUnseen);
   types_.clear();
   values_.clear();
   for (std::size_t r = first; r < end; ++r) {
     const kernel::SemanticClass semantic = rings_.classes[r];
-    const auto hit = std::find_if(known.begin(), known.begin() + known_count,
-                                  [semantic](const Known& k) { return k.semantic == semantic; });
-    if (hit != known.begin() + known_count) {
-      values_.push_back(hit->value);
-      continue;
+    const auto c = static_cast<std::size_t>(semantic);
+    int value = c < value_of.size() ? value_of[c] : kUnseen;
+    if (value == kUnseen) {
+      value = -1;
+      const std::string_view type = kernel::citygml_surface(semantic);
+      if (!type.empty()) {
+        value = static_cast<int>(std::find(types_.begin(), types_.end(), type) - types_.begin());
+        if (value == static_cast<int>(types_.size())) types_.push_back(type);
+      }
+      if (c < value_of.size()) value_of[c] = value;
     }
-    const std::string_view type = kernel::citygml_surface(semantic);
-    int value = -1;
-    if (!type.empty()) {
-      value = static_cast<int>(std::find(types_.begin(), types_.end(), type) - types_.begin());
-      if (value == static_cast<int>(types_.size())) types_.push_back(type);
-    }
-    if (known_count < known.size()) known[known_count++] = {semantic, value};
     values_.push_back(value);
   }
 }
@@ -436,12 +478,22 @@ std::string_view CityObjects::unique_id(const std::string& base) {
 
 // A part's id: unique among the ids given and none of the avoided buildings' ids.
 std::string_view CityObjects::unique_part_id(const std::string& base) {
-  std::string id = base;
+  if (!avoided_ || !avoided_->contains(base)) {
+    if (const std::string* taken = ids_.insert(base)) return *taken;
+  }
   for (int suffix = 2;; ++suffix) {
+    const std::string id = base + "-" + std::to_string(suffix);
     if (!avoided_ || !avoided_->contains(id)) {
       if (const std::string* taken = ids_.insert(id)) return *taken;
     }
-    id = base + "-" + std::to_string(suffix);
+  }
+}
+
+void CityObjects::prefetch_ahead(const std::vector<shape::Building>& buildings, std::size_t b,
+                                 bool positions_only) {
+  if (b + kPartsAhead < buildings.size()) prefetch_parts(buildings[b + kPartsAhead]);
+  if (b + kMeshesAhead < buildings.size()) {
+    prefetch_meshes(buildings[b + kMeshesAhead], positions_only);
   }
 }
 
@@ -458,10 +510,14 @@ void CityObjects::prefetch_meshes(const shape::Building& building, bool position
   for (const shape::Part& part : building.parts) {
     const kernel::Mesh& mesh = part.mesh;
     if (mesh.empty()) continue;
-    __builtin_prefetch(mesh.positions().data());
+    // Whole arrays (up to prefetch_lines()'s limit): their first lines alone left the rest of a
+    // small building's corners and tags to miss when its surfaces were collected.
+    prefetch_lines(mesh.positions().data(), mesh.vertex_count() * sizeof(kernel::Vec3));
     if (positions_only) continue;
-    __builtin_prefetch(mesh.face(0).data());
-    __builtin_prefetch(&mesh.tag(0));
+    constexpr std::size_t kCornersPerFace = 4;  // about: quads, triangles and a few larger faces
+    prefetch_lines(mesh.face(0).data(),
+                   kCornersPerFace * mesh.face_count() * sizeof(std::uint32_t));
+    prefetch_lines(&mesh.tag(0), mesh.face_count() * sizeof(kernel::FaceTag));
   }
 }
 
@@ -484,13 +540,16 @@ void CityObjects::estimate_text(const Object& object) {
   }
 }
 
-// The id of part `p` of a building whose id is `id` (before it is made unique).
-std::string CityObjects::part_id_base(std::string_view id, const shape::Part& part, std::size_t p) {
-  std::string base;
-  base.reserve(id.size() + 1 + (part.name.empty() ? 12 : part.name.size()));
-  base.append(id).append("-");
-  if (part.name.empty()) return base.append("part").append(std::to_string(p));
-  return base.append(part.name);
+// The id of part `p` of a building whose id is `id` (before it is made unique), into `base`: in
+// place, as copies of short strings (each a library call) were a good part of adding a part.
+void CityObjects::part_id_base(std::string& base, std::string_view id, const shape::Part& part,
+                               std::size_t p) {
+  base.assign(id).push_back('-');
+  if (part.name.empty()) {
+    base.append("part").append(std::to_string(p));
+  } else {
+    base.append(part.name);
+  }
 }
 
 // Pools the parts' vertices and keeps their rings now, in the buildings' order (which numbers the
@@ -504,15 +563,14 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
   ids_.prefetch(id_base);
   part_ids_.resize(building.parts.size());
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
-    part_ids_[p] = part_id_base(id_base, building.parts[p], p);
+    part_id_base(part_ids_[p], id_base, building.parts[p], p);
     ids_.prefetch(part_ids_[p]);
   }
   const std::size_t first_child = objects_.size();
   for (const shape::Part& part : building.parts) {
     Object object{{}, {}, object_type(part.kind), attributes_of(part.attributes), rings_.size()};
-    std::optional<kernel::Mesh> instance;  // (an empty Mesh would allocate)
-    if (part.instance_of) instance = shape::part_world_mesh(part);
-    const kernel::Mesh& mesh = instance ? *instance : part.mesh;
+    std::optional<kernel::Mesh> placed;  // (an empty Mesh would allocate)
+    const kernel::Mesh& mesh = part_mesh(part, placed);
     pool_vertices(mesh);
     test_solid();  // the previous part's, while the pool's slots come in
     collect_surfaces(mesh);
@@ -521,9 +579,10 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
     objects_.push_back(object);
   }
   const std::string_view id = unique_id(id_base);
+  const bool renamed = id.size() != id_base.size();  // "-2" or a later suffix added
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
     Object& object = objects_[first_child + p];
-    if (id != id_base) part_ids_[p] = part_id_base(id, building.parts[p], p);  // "-2" added
+    if (renamed) part_id_base(part_ids_[p], id, building.parts[p], p);
     object.id = unique_part_id(part_ids_[p]);
     object.parent = id;
     estimate_text(object);
@@ -624,7 +683,7 @@ void CityObjects::write_vertices(JsonStream& json) {
       *at++ = '[';
       for (std::size_t k = 0; k < 3; ++k) {
         if (k > 0) *at++ = ',';
-        at = std::to_chars(at, at + 20, vertices[v][k]).ptr;
+        at = write_coordinate(at, vertices[v][k]);
       }
       *at++ = ']';
     }
@@ -640,26 +699,23 @@ void CityObjects::clear() {
   objects_.clear();
   text_size_ = 2;
 }
-// One pass over the meshes' positions, prefetched (see CityObjects::prefetch_parts()).
+// One pass over the meshes' positions, prefetched (see CityObjects::prefetch_ahead()).
 SceneSize measure(const shape::Scene& scene) {
   constexpr double kNone = std::numeric_limits<double>::infinity();
   kernel::Vec3 low{kNone, kNone, kNone};
   SceneSize size;
   const std::vector<shape::Building>& buildings = scene.buildings;
   for (std::size_t b = 0; b < buildings.size(); ++b) {
-    if (b + CityObjects::kPartsAhead < buildings.size()) {
-      CityObjects::prefetch_parts(buildings[b + CityObjects::kPartsAhead]);
-    }
-    if (b + CityObjects::kMeshesAhead < buildings.size()) {
-      CityObjects::prefetch_meshes(buildings[b + CityObjects::kMeshesAhead], true);
-    }
+    CityObjects::prefetch_ahead(buildings, b, true);
     size.objects += buildings[b].parts.size() + 1;
     for (const shape::Part& part : buildings[b].parts) {
-      for (const kernel::Vec3& p : part.mesh.positions()) {
+      std::optional<kernel::Mesh> placed;
+      const kernel::Mesh& mesh = part_mesh(part, placed);
+      for (const kernel::Vec3& p : mesh.positions()) {
         if (finite(p)) low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
       }
-      size.vertices += part.mesh.vertex_count();
-      size.faces += part.mesh.face_count();
+      size.vertices += mesh.vertex_count();
+      size.faces += mesh.face_count();
     }
   }
   size.minimum = low.x == kNone ? kernel::Vec3{} : low;

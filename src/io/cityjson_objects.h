@@ -78,7 +78,8 @@ class IdSet {
 
  private:
   static constexpr std::uint64_t kFree = UINT64_MAX;
-  void place(std::string_view id, std::uint32_t index);
+  // Files entry `index` of ids_, whose hash is `hash`.
+  void place(std::uint64_t hash, std::uint32_t index);
 
   std::deque<std::string> ids_;       // a deque: adding an id does not move the others
   std::vector<std::uint64_t> slots_;  // high half of the hash, index into ids_
@@ -135,15 +136,16 @@ class CityObjects {
   void reserve_rings(std::size_t rings, std::size_t indices);
   // Room for `n` object ids in all.
   void reserve_ids(std::size_t n) { ids_.reserve(n); }
-  // Start loading what adding a building will read, some buildings ahead: a city's meshes lie all
-  // over memory, and fetching them while the buildings before are added overlaps their cache
-  // misses. prefetch_parts() loads the parts (names and meshes' array pointers), kPartsAhead
-  // buildings ahead; prefetch_meshes() reads those pointers and loads the arrays, kMeshesAhead
-  // ahead (distances that measured best on a district of 10,000 buildings).
+  // Starts loading what adding a building will read, some buildings ahead of buildings[b]: a
+  // city's meshes lie all over memory, and fetching them while the buildings before are added
+  // overlaps their cache misses. The parts (names and meshes' array pointers) come kPartsAhead
+  // buildings ahead; then those pointers are read and the arrays loaded kMeshesAhead ahead (only
+  // the positions when `positions_only`). Distances that measured best on a district of 10,000
+  // buildings.
   static constexpr std::size_t kPartsAhead = 8;
   static constexpr std::size_t kMeshesAhead = 4;
-  static void prefetch_parts(const shape::Building& building);
-  static void prefetch_meshes(const shape::Building& building, bool positions_only = false);
+  static void prefetch_ahead(const std::vector<shape::Building>& buildings, std::size_t b,
+                             bool positions_only = false);
 
  private:
   // A city object as added, its text written by write_objects(): what that needs is kept here, so
@@ -165,8 +167,13 @@ class CityObjects {
   void pool_vertices(const kernel::Mesh& mesh);
   std::uint32_t number_locally(std::span<const std::uint32_t> corners) const;
   bool is_solid(std::size_t first, std::size_t end) const;
+  bool numbered_as_last(std::size_t first, std::size_t end, std::size_t corners_begin) const;
+  bool closed_shell(std::size_t first, std::size_t end, std::size_t corners_begin,
+                    std::uint32_t locals) const;
   void test_solid();
   double volume(std::size_t first, std::size_t end, std::uint32_t locals) const;
+  static void prefetch_parts(const shape::Building& building);
+  static void prefetch_meshes(const shape::Building& building, bool positions_only);
   void prefetch_object(const Object& object) const;
   void write_object(JsonStream& json, const Object& object);
   char* scratch(std::size_t size);
@@ -176,7 +183,8 @@ class CityObjects {
   void write_geometry(JsonStream& json, const Object& part);
 
   void estimate_text(const Object& object);
-  static std::string part_id_base(std::string_view id, const shape::Part& part, std::size_t p);
+  static void part_id_base(std::string& base, std::string_view id, const shape::Part& part,
+                           std::size_t p);
   std::string_view unique_id(const std::string& base);
   std::string_view unique_part_id(const std::string& base);
 
@@ -211,10 +219,16 @@ class CityObjects {
   mutable std::vector<std::uint64_t> edges_;
   mutable std::vector<std::uint8_t> sides_;
   mutable std::vector<std::uint32_t> parent_;
+  // The last part's local numbering and ring ends (from its first corner) the edge test saw, and
+  // its verdict (see is_solid()).
+  mutable std::vector<std::uint32_t> last_local_;
+  mutable std::vector<std::size_t> last_ends_;
+  mutable bool last_closed_ = false;
 };
 
 // What the CityJSON writer needs to know of a scene before writing it: the minimum corner of its
 // finite vertices (local coordinates; (0, 0, 0) when none) and its sizes, to reserve room with.
+// Shared-mesh instances are measured placed, as CityObjects::add_building() writes them.
 struct SceneSize {
   kernel::Vec3 minimum;
   std::size_t vertices = 0;  // the meshes' vertices

@@ -9,7 +9,6 @@
 #include "io/atomic_file.h"
 #include "io/cityjson_objects.h"
 #include "io/json_stream.h"
-#include "shape/part_mesh.h"
 
 namespace insula::io {
 namespace {
@@ -63,12 +62,7 @@ void Writer::write_metadata(JsonStream& json) const {
 void Writer::write(std::string& out) {
   const std::vector<shape::Building>& buildings = scene_.buildings;
   for (std::size_t b = 0; b < buildings.size(); ++b) {
-    if (b + cityjson::CityObjects::kPartsAhead < buildings.size()) {
-      cityjson::CityObjects::prefetch_parts(buildings[b + cityjson::CityObjects::kPartsAhead]);
-    }
-    if (b + cityjson::CityObjects::kMeshesAhead < buildings.size()) {
-      cityjson::CityObjects::prefetch_meshes(buildings[b + cityjson::CityObjects::kMeshesAhead]);
-    }
+    cityjson::CityObjects::prefetch_ahead(buildings, b);
     objects_.add_building(buildings[b], b);
   }
   // The objects, then about 20 bytes per vertex ("[123456,234567,3456],").
@@ -106,9 +100,9 @@ std::string cityjson_reference_system(const std::string& crs) {
   return std::string(kPrefix) + "EPSG/0/" + std::string(rest);
 }
 
-std::string cityjson_text(const shape::Scene& input) {
-  shape::Scene expanded;  // shared-mesh instances written as plain geometry
-  const shape::Scene& scene = shape::expand_instances(input, expanded);
+// Shared-mesh instances are placed part by part as they are measured and added, with no copy of
+// the scene (shape::expand_instances()) nor a pass to look for them.
+std::string cityjson_text(const shape::Scene& scene) {
   Writer writer(scene, cityjson::measure(scene));
   std::string out;
   writer.write(out);

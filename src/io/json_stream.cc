@@ -91,6 +91,30 @@ void escape(std::string_view text, Append&& append) {
   }
 }
 
+// `n` <= 32 bytes copied in two overlapping moves of a fixed size: the library call a copy of
+// unknown size becomes cost more than the rest of writing a key or a short string.
+void copy_short(char* to, const char* from, std::size_t n) {
+  const auto two_moves = [&]<std::size_t kSize>() {
+    std::array<char, kSize> head;
+    std::array<char, kSize> tail;
+    std::memcpy(head.data(), from, kSize);
+    std::memcpy(tail.data(), from + n - kSize, kSize);
+    std::memcpy(to, head.data(), kSize);
+    std::memcpy(to + n - kSize, tail.data(), kSize);
+  };
+  if (n >= 16) {
+    two_moves.template operator()<16>();
+  } else if (n >= 8) {
+    two_moves.template operator()<8>();
+  } else if (n >= 4) {
+    two_moves.template operator()<4>();
+  } else if (n > 0) {
+    to[0] = from[0];
+    to[n / 2] = from[n / 2];
+    to[n - 1] = from[n - 1];
+  }
+}
+
 }  // namespace
 
 void append_json_escaped(std::string& out, std::string_view text) {
@@ -125,20 +149,42 @@ void JsonStream::newline(std::size_t depth) {
   }
 }
 
+// Most keys and strings (ids, types, names) are short and need no escaping: checked first, they
+// are copied whole rather than run by run.
+bool JsonStream::put_plain(std::string_view text, bool is_key) {
+  constexpr std::size_t kShort = 32;
+  if (text.size() > kShort || !plain(text.data(), text.size())) return false;
+  char* at = room(kShort + 4);
+  *at++ = '"';
+  copy_short(at, text.data(), text.size());
+  at += text.size();
+  *at++ = '"';
+  if (is_key) {
+    *at++ = ':';
+    if (indent_ >= 0) *at++ = ' ';
+  }
+  commit(at);
+  return true;
+}
+
 JsonStream& JsonStream::key(std::string_view name) {
   separate();
-  put('"');
-  put_escaped(name);
-  put(indent_ < 0 ? "\":" : "\": ");
+  if (!put_plain(name, true)) {
+    put('"');
+    put_escaped(name);
+    put(indent_ < 0 ? "\":" : "\": ");
+  }
   after_key_ = true;
   return *this;
 }
 
 JsonStream& JsonStream::string(std::string_view text) {
   separate();
-  put('"');
-  put_escaped(text);
-  put('"');
+  if (!put_plain(text, false)) {
+    put('"');
+    put_escaped(text);
+    put('"');
+  }
   return end_value();
 }
 

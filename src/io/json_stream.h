@@ -157,6 +157,9 @@ class JsonStream {
   }
   void put(std::string_view text);
   void put_escaped(std::string_view text);
+  // '"', `text` and '"' (and ':', and ' ' when pretty, after a key) when `text` is short and
+  // needs no escaping; else false, writing nothing.
+  bool put_plain(std::string_view text, bool is_key);
   void newline(std::size_t depth);
   // No character of `text` needs escaping (nor is a NUL).
   static constexpr bool plain(const char* text, std::size_t size) {
