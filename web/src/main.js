@@ -56,6 +56,7 @@ async function job(path, body, wanted) {
   for (;;) {
     const answer = await (await api(path, { method: 'POST', body }, wanted)).json();
     if (!answer.cancelled || !wanted()) return answer;
+    await new Promise((resolve) => setTimeout(resolve, 50)); // a stopping server cancels every job
   }
 }
 
