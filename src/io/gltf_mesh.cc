@@ -3,6 +3,7 @@
 #include <meshoptimizer.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -30,35 +31,7 @@ std::int8_t normal_byte(float c) {
   return static_cast<std::int8_t>(round_half_away(std::clamp(c, -1.0F, 1.0F) * 127.0F));
 }
 
-// Copies the `size`-byte slice at `column` of each of `rows` in turn to `out`; each size is a
-// case of its own so every copy is a fixed-size move.
-void gather_column(char* out, const unsigned char* column, std::size_t stride, std::uint32_t size,
-                   std::span<const std::uint32_t> rows) {
-  // A tile's rows are megabytes read in the order of first use: the rows a few steps ahead are
-  // asked for early (the order is known; the processor's prefetcher cannot guess it).
-  constexpr std::size_t kAhead = 16;
-  const auto gather = [&]<std::size_t Size>(std::integral_constant<std::size_t, Size>) {
-    const std::size_t n = rows.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i + kAhead < n) __builtin_prefetch(column + std::size_t{rows[i + kAhead]} * stride);
-      std::memcpy(out, column + std::size_t{rows[i]} * stride, Size);
-      out += Size;
-    }
-  };
-  switch (size) {
-    case 4:
-      return gather(std::integral_constant<std::size_t, 4>{});
-    case 8:
-      return gather(std::integral_constant<std::size_t, 8>{});
-    case 12:
-      return gather(std::integral_constant<std::size_t, 12>{});
-    default:
-      for (std::uint32_t row : rows) {
-        std::memcpy(out, column + row * stride, size);
-        out += size;
-      }
-  }
-}
+constexpr std::uint32_t kNone = ~0U;
 
 }  // namespace
 
@@ -76,10 +49,17 @@ MeshViews MeshViews::create(Buffers& buffers) {
 }
 
 MeshAssembler::MeshAssembler(const MaterialTable& materials, std::vector<bool> material_textured)
-    : materials_(materials), material_textured_(std::move(material_textured)) {}
+    : materials_(materials), material_textured_(std::move(material_textured)) {
+  clear();
+}
+
+void MeshAssembler::start(const MeshOptions& options) {
+  options_ = options;
+  clear();
+}
 
 void MeshAssembler::clear() {
-  sources_.clear();
+  positions_.clear();
   face_normals_.clear();
   vertices_.clear();
   for (auto& [material, list] : indices_by_material_) {
@@ -89,38 +69,41 @@ void MeshAssembler::clear() {
   indices_by_material_.clear();
   has_uv_ = false;
   bounds_ = Bounds{};
+  scope_feature_set_ = false;
+  begin_scope();
 }
 
 void MeshAssembler::reserve(std::size_t vertices, std::size_t corners, std::size_t faces) {
-  sources_.reserve(sources_.size() + vertices);
+  positions_.reserve(positions_.size() + vertices);
   vertices_.reserve(vertices_.size() + corners);
   face_normals_.reserve(face_normals_.size() + faces);
 }
 
+// A new scope for positions: no position entered before is found again.
+void MeshAssembler::begin_scope() {
+  if (scope_ == std::numeric_limits<std::uint32_t>::max()) {
+    std::fill(slots_.begin(), slots_.end(), Slot{0, 0});
+    scope_ = 0;
+  }
+  ++scope_;
+  scope_begin_ = static_cast<std::uint32_t>(positions_.size());
+}
+
 void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::uint32_t feature,
-                        bool quantize, bool instance_frame) {
+                        bool instance_frame) {
   part_ = &part;
   instance_frame_ = instance_frame;
   uv_scale_ = uv_scale(part);
-  feature_ = feature;
-  weld_.run(mesh, quantize ? kQuantizationStep : 0);
-  first_source_ = static_cast<std::uint32_t>(sources_.size());
-  constexpr double kStepsPerMeter = 1 / kQuantizationStep;  // a power of two
-  // Past 2^62 steps (or not finite) a position has no grid point: its mesh stays float.
-  constexpr double kGridLimit = 4.6e18;
-  // Written in place: a Source built apart and copied in stalled on reloading its bytes.
-  sources_.resize(first_source_ + mesh.vertex_count());
-  Source* source = sources_.data() + first_source_;
-  for (const kernel::Vec3& p : mesh.positions()) {
-    source->position = y_up(p);
-    source->on_grid = true;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const double steps = source->position[k] * kStepsPerMeter;  // exact, as the division
-      source->on_grid = source->on_grid && std::abs(steps) < kGridLimit;
-      if (source->on_grid) source->grid[k] = round_half_away(steps);
-    }
-    ++source;
+  // Vertices of different features are never one when features are written: each run of one
+  // feature (a feature's parts come together) looks positions up in a scope of its own.
+  if (options_.with_features && (!scope_feature_set_ || feature != scope_feature_)) {
+    begin_scope();
+    scope_feature_set_ = true;
+    scope_feature_ = feature;
   }
+  feature_ = feature;
+  weld_.run(mesh, options_.quantize ? kQuantizationStep : 0);
+  position_of_.assign(mesh.vertex_count(), kNone);
   // Faces grouped by material, in mesh order within each.
   faces_by_material_.clear();
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
@@ -129,7 +112,6 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
   std::sort(faces_by_material_.begin(), faces_by_material_.end());  // (material, face): stable
   std::vector<std::uint32_t>* indices = nullptr;
   std::uint32_t current = std::numeric_limits<std::uint32_t>::max();
-  used_.assign(mesh.vertex_count(), 0);
   for (const auto& [material, face] : faces_by_material_) {
     if (material != current) {
       current = material;
@@ -143,10 +125,6 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
       fit_uv_ = material_textured_[material];
     }
     add_face(mesh, face, *indices);
-  }
-  // The bounds of the vertices some corner uses, once each rather than once a corner.
-  for (std::size_t v = 0; v < used_.size(); ++v) {
-    if (used_[v] != 0) bounds_.add(sources_[first_source_ + v]);
   }
   // A material all of whose faces were degenerate gets no primitive.
   std::erase_if(indices_by_material_, [this](auto& entry) {
@@ -221,17 +199,127 @@ void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::u
     }
     has_uv_ = true;
   }
-  const auto base = static_cast<std::uint32_t>(vertices_.size());
+  corner_vertices_.resize(loop.size());
   for (std::size_t i = 0; i < loop.size(); ++i) {
-    const std::uint32_t source = first_source_ + weld_.representative(loop[i]);
-    used_[source - first_source_] = 1;
-    vertices_.push_back(Vertex{source, face, corner_uvs_[i], feature_});
+    const std::uint32_t position = position_of(mesh, weld_.representative(loop[i]));
+    corner_vertices_[i] = vertex_at(position, face, corner_uvs_[i]);
   }
   for (const CornerTriangle& triangle : triangles_) {
-    for (std::uint32_t corner : triangle) indices.push_back(base + corner);
+    for (std::uint32_t corner : triangle) indices.push_back(corner_vertices_[corner]);
   }
 }
 
+// The entry in positions_ of the part's vertex `vertex` (a weld representative), looked up in
+// the scope on its first use by a corner.
+std::uint32_t MeshAssembler::position_of(const kernel::Mesh& mesh, std::uint32_t vertex) {
+  std::uint32_t& entry = position_of_[vertex];
+  if (entry != kNone) return entry;
+  constexpr double kStepsPerMeter = 1 / kQuantizationStep;  // a power of two
+  // Past 2^62 steps (or not finite) a position has no grid point: its mesh stays float.
+  constexpr double kGridLimit = 4.6e18;
+  const std::array<double, 3> p = y_up(mesh.position(vertex));
+  Position position{};
+  position.on_grid = options_.quantize;
+  for (std::size_t k = 0; k < 3; ++k) {
+    position.coordinates[k] = static_cast<float>(p[k]);
+    const double steps = p[k] * kStepsPerMeter;  // exact, as the division
+    position.on_grid = position.on_grid && std::abs(steps) < kGridLimit;
+    if (position.on_grid) position.grid[k] = round_half_away(steps);
+  }
+  position.first_vertex = kNone;
+  entry = find_position(position);
+  return entry;
+}
+
+namespace {
+
+// What makes two positions one: their grid point where positions may be quantized and both have
+// one (the weld made vertices on one grid point one vertex, so they share their float32 too),
+// else their float32 coordinates' bits.
+bool same_position(const std::array<std::int64_t, 3>& grid, const Float3& coordinates, bool on_grid,
+                   const std::array<std::int64_t, 3>& other_grid, const Float3& other_coordinates,
+                   bool other_on_grid) {
+  if (on_grid != other_on_grid) return false;
+  if (on_grid) return grid == other_grid;
+  return std::memcmp(coordinates.data(), other_coordinates.data(), sizeof coordinates) == 0;
+}
+
+std::uint64_t position_hash(const std::array<std::int64_t, 3>& grid, const Float3& coordinates,
+                            bool on_grid) {
+  std::array<std::uint64_t, 3> words{};
+  if (on_grid) {
+    for (std::size_t k = 0; k < 3; ++k) words[k] = static_cast<std::uint64_t>(grid[k]);
+  } else {
+    for (std::size_t k = 0; k < 3; ++k) words[k] = std::bit_cast<std::uint32_t>(coordinates[k]);
+  }
+  // Each word times a constant of its own, summed: the products do not wait for each other.
+  std::uint64_t hash = (words[0] + 1) * 0x9E3779B97F4A7C15ULL +
+                       (words[1] + 1) * 0xC2B2AE3D27D4EB4FULL +
+                       (words[2] + 1) * 0x165667B19E3779F9ULL;
+  return hash ^ (hash >> 29U);
+}
+
+}  // namespace
+
+// The scope's entry alike `position`, entered (with its bounds) when there is none.
+std::uint32_t MeshAssembler::find_position(const Position& position) {
+  if (2 * (positions_.size() - scope_begin_ + 1) > slots_.size()) grow_position_table();
+  const std::size_t mask = slots_.size() - 1;
+  const std::uint64_t hash = position_hash(position.grid, position.coordinates, position.on_grid);
+  for (std::size_t slot = (hash >> 32U) & mask;; slot = (slot + 1) & mask) {
+    Slot& entry = slots_[slot];
+    if (entry.scope != scope_) {
+      entry = {static_cast<std::uint32_t>(positions_.size()), scope_};
+      positions_.push_back(position);
+      bounds_.add(position);
+      return entry.position;
+    }
+    const Position& other = positions_[entry.position];
+    if (same_position(position.grid, position.coordinates, position.on_grid, other.grid,
+                      other.coordinates, other.on_grid)) {
+      return entry.position;
+    }
+  }
+}
+
+// Twice the slots, the scope's positions entered again.
+void MeshAssembler::grow_position_table() {
+  slots_.assign(std::max<std::size_t>(64, 2 * slots_.size()), Slot{0, 0});
+  if (scope_ == 0) scope_ = 1;  // 0 marks the new slots free
+  const std::size_t mask = slots_.size() - 1;
+  for (auto p = scope_begin_; p < positions_.size(); ++p) {
+    const Position& position = positions_[p];
+    const std::uint64_t hash = position_hash(position.grid, position.coordinates, position.on_grid);
+    std::size_t slot = (hash >> 32U) & mask;
+    while (slots_[slot].scope == scope_) slot = (slot + 1) & mask;
+    slots_[slot] = {p, scope_};
+  }
+}
+
+bool MeshAssembler::same_normal(std::uint32_t face, std::uint32_t other) const {
+  const FaceNormal& a = face_normals_[face];
+  const FaceNormal& b = face_normals_[other];
+  if (options_.quantize) return std::memcmp(a.bytes.data(), b.bytes.data(), a.bytes.size()) == 0;
+  return std::memcmp(a.normal.data(), b.normal.data(), sizeof a.normal) == 0;
+}
+
+// The vertex at `position` with face `face`'s normal and `uv`: one made by an earlier corner
+// alike in all three (and so in every written byte), or a new one.
+std::uint32_t MeshAssembler::vertex_at(std::uint32_t position, std::uint32_t face,
+                                       std::array<float, 2> uv) {
+  Position& at = positions_[position];
+  for (std::uint32_t v = at.first_vertex; v != kNone; v = vertices_[v].next) {
+    const Vertex& vertex = vertices_[v];
+    if (std::bit_cast<std::uint64_t>(vertex.uv) == std::bit_cast<std::uint64_t>(uv) &&
+        (vertex.face == face || same_normal(vertex.face, face))) {
+      return v;
+    }
+  }
+  const auto v = static_cast<std::uint32_t>(vertices_.size());
+  vertices_.push_back(Vertex{position, face, uv, feature_, at.first_vertex});
+  at.first_vertex = v;
+  return v;
+}
 // A textured face shows its image once: the face's planar coordinates (kernel::planar_uv, u to the
 // right and v up seen from outside) scaled to its extent, v flipped because glTF's (0, 0) is the
 // image's top-left corner. So text reads the right way round on walls, roofs and floors.
@@ -269,14 +357,14 @@ void MeshAssembler::gather_indices() {
   indices_.resize(end);  // filled by merge_and_order, numbered as they are copied
 }
 
-void MeshAssembler::Bounds::add(const Source& source) {
-  on_grid = on_grid && source.on_grid;
+void MeshAssembler::Bounds::add(const Position& position) {
+  on_grid = on_grid && position.on_grid;
   for (std::size_t k = 0; k < 3; ++k) {
-    if (source.on_grid) {
-      low[k] = std::min(low[k], source.grid[k]);
-      high[k] = std::max(high[k], source.grid[k]);
+    if (position.on_grid) {
+      low[k] = std::min(low[k], position.grid[k]);
+      high[k] = std::max(high[k], position.grid[k]);
     }
-    const double c = static_cast<float>(source.position[k]);
+    const double c = position.coordinates[k];
     min[k] = std::min(min[k], c);
     max[k] = std::max(max[k], c);
   }
@@ -284,9 +372,9 @@ void MeshAssembler::Bounds::add(const Source& source) {
 
 // Whether the mesh's extent on the quantization grid fits 16 bits; sets the record's offset and
 // scale (and grid_low_) when it does, and its POSITION bounds either way. The bounds are those of
-// every vertex added (each is used by a triangle, so merging and reordering keep them).
-void MeshAssembler::quantize(bool wanted, MeshRecord& record) {
-  record.quantized = wanted && bounds_.on_grid && !vertices_.empty();
+// every position a corner uses.
+void MeshAssembler::quantize(MeshRecord& record) {
+  record.quantized = options_.quantize && bounds_.on_grid && !vertices_.empty();
   for (std::size_t k = 0; k < 3 && record.quantized; ++k)
     record.quantized = bounds_.high[k] - bounds_.low[k] <= 65535;
   if (record.quantized) {
@@ -301,61 +389,6 @@ void MeshAssembler::quantize(bool wanted, MeshRecord& record) {
   }
   record.min = bounds_.min;
   record.max = bounds_.max;
-}
-
-// Every vertex's attributes as they will be written, side by side in one row (padding zero):
-// positions, normals, then uvs and feature ids when written. Lays out the rows; merge_rows() packs
-// them run by run.
-void MeshAssembler::lay_out(const MeshRecord& record, const MeshOptions& options,
-                            bool with_features) {
-  const std::size_t n = vertices_.size();
-  layout_.size = {record.quantized ? 8U : 12U,  // quantized: x, y, z, padding
-                  options.quantize ? 4U : 12U, has_uv_ ? 8U : 0U, with_features ? 4U : 0U};
-  layout_.stride = 0;
-  for (std::size_t k = 0; k < 4; ++k) {
-    layout_.offset[k] = layout_.stride;
-    layout_.stride += layout_.size[k];
-  }
-  layout_.float_features = options.feature_component == Component::kFloat;
-  if (rows_capacity_ < n * layout_.stride) {
-    rows_capacity_ = std::max(n * layout_.stride, 2 * rows_capacity_);
-    rows_ = std::make_unique_for_overwrite<unsigned char[]>(rows_capacity_);
-  }
-}
-
-// The rows of vertices [begin, end), every byte written (padding too), in one pass.
-void MeshAssembler::pack_rows(std::size_t begin, std::size_t end) {
-  const bool quantized = layout_.size[0] == 8;
-  const bool byte_normals = layout_.size[1] == 4;
-  const bool with_features = layout_.size[3] != 0;
-  char* at = reinterpret_cast<char*>(rows_.get()) + begin * layout_.stride;
-  for (std::size_t v = begin; v < end; ++v) {
-    const Vertex& vertex = vertices_[v];
-    const Source& source = sources_[vertex.source];
-    if (quantized) {
-      for (std::size_t k = 0; k < 3; ++k) {
-        put_value(at, static_cast<std::uint16_t>(source.grid[k] - grid_low_[k]));
-      }
-      put_value(at, std::uint16_t{0});
-    } else {
-      for (double c : source.position) put_value(at, static_cast<float>(c));
-    }
-    const FaceNormal& normal = face_normals_[vertex.face];
-    if (byte_normals) {
-      for (std::int8_t c : normal.bytes) put_value(at, c);  // the fourth byte is 0
-    } else {
-      for (float c : normal.normal) put_value(at, c);
-    }
-    if (has_uv_) {
-      for (float c : vertex.uv) put_value(at, c);
-    }
-    if (with_features && layout_.float_features) {
-      put_value(at, static_cast<float>(vertex.feature));
-    } else if (with_features) {
-      put_value(at, static_cast<std::uint16_t>(vertex.feature));
-      put_value(at, std::uint16_t{0});
-    }
-  }
 }
 
 // Whether a FIFO cache of kCacheSize vertices (meshopt's model of a GPU's) loads each vertex of
@@ -425,105 +458,31 @@ bool MeshAssembler::order_by_feature(std::span<unsigned int> indices) {
   return reordered;
 }
 
-// representative_[v]: the first vertex alike v in every written byte; feature_of_[v] its feature
-// (the vertices' features side by side: numbering reads them in the indices' order, which jumps
-// across a tile's vertices). When the feature id is
-// written, vertices alike share a feature, and a feature's vertices were added together (part by
-// part): each run of one feature is merged on its own, in a table that stays in cache (one table
-// for a whole 3D Tiles tile missed it on most lookups).
-void MeshAssembler::merge_rows() {
-  const std::size_t n = vertices_.size();
-  const bool by_feature = layout_.size[3] != 0;
-  representative_.resize(n);
-  feature_of_.resize(n);
-  for (std::size_t v = 0; v < n; ++v) feature_of_[v] = vertices_[v].feature;
-  for (std::size_t begin = 0; begin < n;) {
-    std::size_t end = n;
-    if (by_feature) {
-      end = begin + 1;
-      while (end < n && feature_of_[end] == feature_of_[begin]) ++end;
-    }
-    pack_rows(begin, end);  // hashed right away, while in cache
-    find_representatives(begin, end);
-    begin = end;
-  }
-}
-
-// representative_[v] for the vertices [begin, end): the first of them alike in every written
-// byte. Open addressing over the rows, with the table kept from run to run: most runs are small,
-// and allocating a table for each cost more than the lookups.
-void MeshAssembler::find_representatives(std::size_t begin, std::size_t end) {
-  const std::size_t stride = layout_.stride;
-  std::size_t capacity = 16;
-  while (capacity < 2 * (end - begin)) capacity *= 2;
-  slots_.assign(capacity, ~0U);
-  const auto row = [&](std::size_t v) { return rows_.get() + v * stride; };
-  // Rows are whole 4-byte words: compared word by word inline (memcmp was a call a lookup).
-  const auto alike = [stride](const unsigned char* a, const unsigned char* b) {
-    for (std::size_t i = 0; i < stride; i += 4) {
-      std::uint32_t x;
-      std::uint32_t y;
-      std::memcpy(&x, a + i, 4);
-      std::memcpy(&y, b + i, 4);
-      if (x != y) return false;
-    }
-    return true;
-  };
-  // Each word times a constant of its own, summed: the products do not wait for each other as a
-  // chain of multiplications did. Any hash finds the same representatives.
-  static constexpr std::array<std::uint64_t, 4> kFactors{
-      0x9E3779B97F4A7C15ULL, 0xC2B2AE3D27D4EB4FULL, 0x165667B19E3779F9ULL, 0xD6E8FEB86659FD93ULL};
-  for (std::size_t v = begin; v < end; ++v) {
-    std::uint64_t hash = 0;
-    for (std::size_t i = 0; i < stride; i += 4) {
-      std::uint32_t word;
-      std::memcpy(&word, row(v) + i, 4);
-      hash += (word + std::uint64_t{1}) * kFactors[(i / 4) % 4];
-    }
-    hash ^= hash >> 29U;
-    for (std::size_t slot = (hash >> 32U) & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
-      const std::uint32_t other = slots_[slot];
-      if (other == ~0U) {
-        slots_[slot] = static_cast<std::uint32_t>(v);
-        representative_[v] = static_cast<std::uint32_t>(v);
-        break;
-      }
-      if (alike(row(other), row(v))) {
-        representative_[v] = other;
-        break;
-      }
-    }
-  }
-}
-
-// Vertices alike in every written attribute become one, numbered in order of first use by the
-// indices (as meshopt_generateVertexRemap does); triangles part by part (a part's faces lie
-// together, and the feature ids then come in runs, which EXT_meshopt_compression stores in almost
-// nothing), each part's in the order that suits the vertex cache; then vertices in the order of
-// first use, for fetch, which is already theirs unless a run was reordered. Leaves indices_ and
-// vertex_features_ over the written vertices, and row_of_ naming the row each writes; returns
-// their count.
-std::size_t MeshAssembler::merge_and_order() {
-  merge_rows();
-  class_of_.assign(vertices_.size(), ~0U);
-  row_of_.clear();
+// Vertices numbered in order of first use by the indices (as meshopt_generateVertexRemap does);
+// triangles part by part (a part's faces lie together, and the feature ids then come in runs,
+// which EXT_meshopt_compression stores in almost nothing), each part's in the order that suits the
+// vertex cache; then vertices in the order of first use, for fetch, which is already theirs unless
+// a run was reordered. Leaves indices_ and vertex_features_ over the written vertices, and
+// vertex_of_ naming the Vertex each writes; returns their count.
+std::size_t MeshAssembler::number_and_order() {
+  number_of_.assign(vertices_.size(), kNone);
+  vertex_of_.clear();
   vertex_features_.clear();
   unsigned int* out = indices_.data();
   for (const auto& [material, list] : indices_by_material_) {
     for (const std::uint32_t index : list) {
-      const std::uint32_t representative = representative_[index];
-      unsigned int& number = class_of_[representative];
-      if (number == ~0U) {
-        number = static_cast<unsigned int>(row_of_.size());
-        row_of_.push_back(representative);
-        vertex_features_.push_back(feature_of_[representative]);
+      unsigned int& number = number_of_[index];
+      if (number == kNone) {
+        number = static_cast<unsigned int>(vertex_of_.size());
+        vertex_of_.push_back(index);
+        vertex_features_.push_back(vertices_[index].feature);
       }
       *out++ = number;
     }
   }
-  const std::size_t count = row_of_.size();
+  const std::size_t count = vertex_of_.size();
   local_of_.clear();  // sized by optimize_run when a run needs it
-  loaded_at_.assign(count, ~0U);
+  loaded_at_.assign(count, kNone);
   bool reordered = false;
   std::size_t begin = 0;
   for (std::size_t end : ends_) {
@@ -537,48 +496,82 @@ std::size_t MeshAssembler::merge_and_order() {
 // Renumbers the vertices in order of first use by the reordered indices. Every merged vertex is
 // used (meshopt numbers only those the indices name).
 void MeshAssembler::number_for_fetch() {
-  const std::size_t count = row_of_.size();
-  fetch_.assign(count, ~0U);
+  const std::size_t count = vertex_of_.size();
+  fetch_.assign(count, kNone);
   unsigned int next = 0;
   for (unsigned int& index : indices_) {
-    if (fetch_[index] == ~0U) fetch_[index] = next++;
+    if (fetch_[index] == kNone) fetch_[index] = next++;
     index = fetch_[index];
   }
-  moved_rows_.resize(count);
+  moved_vertices_.resize(count);
   moved_features_.resize(count);
   for (std::size_t w = 0; w < count; ++w) {
-    moved_rows_[fetch_[w]] = row_of_[w];
+    moved_vertices_[fetch_[w]] = vertex_of_[w];
     moved_features_[fetch_[w]] = vertex_features_[w];
   }
-  std::swap(row_of_, moved_rows_);
+  std::swap(vertex_of_, moved_vertices_);
   std::swap(vertex_features_, moved_features_);
 }
 
-// Each attribute's slice of the written vertices' rows, appended to its view.
-void MeshAssembler::write_attributes(Buffers& buffers, const MeshViews& views,
-                                     const MeshOptions& options, std::size_t count,
+// The written vertices' attributes, each appended to its view in one pass over the vertices:
+// positions (grid steps from the mesh's low corner, or float32), normals (bytes, or float32),
+// uvs when some face has them, feature ids when written.
+void MeshAssembler::write_attributes(Buffers& buffers, const MeshViews& views, std::size_t count,
                                      MeshRecord& record) {
-  const auto add = [&](std::size_t k, std::uint32_t view, Component component,
-                       std::string_view type, bool normalized) {
+  const bool quantized = record.quantized;
+  const bool byte_normals = options_.quantize;
+  const bool with_features = options_.with_features;
+  const bool float_features = options_.feature_component == Component::kFloat;
+  // Room for `count` values of `size` bytes at the end of `view`; the accessor over them.
+  const auto column = [&](std::uint32_t view, std::size_t size, Component component,
+                          std::string_view type, bool normalized, std::uint32_t& accessor) {
     std::string& data = buffers.data(view);
     const std::size_t offset = data.size();
-    const std::uint32_t size = layout_.size[k];
     data.resize(offset + count * size);
-    gather_column(data.data() + offset, rows_.get() + layout_.offset[k], layout_.stride, size,
-                  row_of_);
-    return buffers.add_accessor(
+    accessor = buffers.add_accessor(
         Accessor{view, offset, component, count, type, normalized, std::nullopt, std::nullopt});
+    return data.data() + offset;
   };
-  record.position =
-      add(0, record.quantized ? views.quantized_positions : views.float_positions,
-          record.quantized ? Component::kUnsignedShort : Component::kFloat, "VEC3", false);
+  char* positions = column(
+      quantized ? views.quantized_positions : views.float_positions, quantized ? 8 : 12,
+      quantized ? Component::kUnsignedShort : Component::kFloat, "VEC3", false, record.position);
   buffers.set_bounds(record.position, {record.min, record.max});
-  record.normal =
-      add(1, options.quantize ? views.quantized_normals : views.float_normals,
-          options.quantize ? Component::kByte : Component::kFloat, "VEC3", options.quantize);
-  if (has_uv_) record.uv = add(2, views.uvs, Component::kFloat, "VEC2", false);
-  if (layout_.size[3] > 0) {
-    record.feature = add(3, views.features, options.feature_component, "SCALAR", false);
+  char* normals = column(byte_normals ? views.quantized_normals : views.float_normals,
+                         byte_normals ? 4 : 12, byte_normals ? Component::kByte : Component::kFloat,
+                         "VEC3", byte_normals, record.normal);
+  char* uvs = nullptr;
+  if (has_uv_) uvs = column(views.uvs, 8, Component::kFloat, "VEC2", false, record.uv.emplace());
+  char* features = nullptr;
+  if (with_features) {
+    features = column(views.features, 4, options_.feature_component, "SCALAR", false,
+                      record.feature.emplace());
+  }
+  for (std::size_t w = 0; w < count; ++w) {
+    const Vertex& vertex = vertices_[vertex_of_[w]];
+    const Position& position = positions_[vertex.position];
+    if (quantized) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        put_value(positions, static_cast<std::uint16_t>(position.grid[k] - grid_low_[k]));
+      }
+      put_value(positions, std::uint16_t{0});
+    } else {
+      for (float c : position.coordinates) put_value(positions, c);
+    }
+    const FaceNormal& normal = face_normals_[vertex.face];
+    if (byte_normals) {
+      for (std::int8_t c : normal.bytes) put_value(normals, c);  // the fourth byte is 0
+    } else {
+      for (float c : normal.normal) put_value(normals, c);
+    }
+    if (uvs != nullptr) {
+      for (float c : vertex.uv) put_value(uvs, c);
+    }
+    if (features != nullptr && float_features) {
+      put_value(features, static_cast<float>(vertex.feature));
+    } else if (features != nullptr) {
+      put_value(features, static_cast<std::uint16_t>(vertex.feature));
+      put_value(features, std::uint16_t{0});
+    }
   }
 }
 
@@ -616,14 +609,12 @@ void MeshAssembler::write_primitives(Buffers& buffers, const MeshViews& views, s
   }
 }
 
-MeshRecord MeshAssembler::emit(Buffers& buffers, const MeshViews& views, const MeshOptions& options,
-                               bool with_features) {
+MeshRecord MeshAssembler::emit(Buffers& buffers, const MeshViews& views) {
   MeshRecord record;
   gather_indices();
-  quantize(options.quantize, record);
-  lay_out(record, options, with_features);
-  const std::size_t count = merge_and_order();
-  write_attributes(buffers, views, options, count, record);
+  quantize(record);
+  const std::size_t count = number_and_order();
+  write_attributes(buffers, views, count, record);
   write_primitives(buffers, views, count, record);
   clear();
   return record;

@@ -1,12 +1,14 @@
 // One glTF mesh assembled from the faces of one or more parts (a building's parts, or one part):
 // faces triangulated (concave faces stay right) and shaded flat, grouped into a primitive per
-// material; the primitives share one set of vertex attributes. At the end, vertices alike in every
-// written attribute are merged (a hash table of their written bytes), triangles reordered for the
-// vertex cache (meshoptimizer, where a 16-vertex FIFO would load a vertex twice) and vertices for
-// fetch, and positions quantized (KHR_mesh_quantization) to the grid kQuantizationStep where the
-// mesh's extent fits 16 bits, so no vertex moves more than half a step (under 1 mm); the mesh's
-// node then carries the offset and scale that undo it. Normals become normalized bytes. Each
-// vertex may carry the feature id of its part (EXT_mesh_features).
+// material; the primitives share one set of vertex attributes. Corners alike in every written
+// attribute become one vertex as they are added (the same position on the quantization grid, or
+// the same float32 position where positions are not quantized, with the same normal, uv and
+// feature). At the end, triangles are reordered for the vertex cache (meshoptimizer, where a
+// 16-vertex FIFO would load a vertex twice) and vertices for fetch, and positions quantized
+// (KHR_mesh_quantization) to the grid kQuantizationStep where the mesh's extent fits 16 bits, so no
+// vertex moves more than half a step (under 1 mm); the mesh's node then carries the offset and
+// scale that undo it. Normals become normalized bytes. Each vertex may carry the feature id of its
+// part (EXT_mesh_features).
 #pragma once
 
 #include <array>
@@ -45,7 +47,11 @@ struct MeshViews {
 };
 
 struct MeshOptions {
+  // Positions on the quantization grid where the mesh's extent allows, normals as bytes, and
+  // vertices welded on the grid (float32_weld.h); else floats throughout.
   bool quantize = true;
+  // A _FEATURE_ID_0 attribute: vertices of different features are then never one.
+  bool with_features = false;
   // The feature id attribute's type: UNSIGNED_SHORT while every id fits, else FLOAT (exact to
   // 2^24; EXT_mesh_features' note on 32-bit ids).
   Component feature_component = Component::kUnsignedShort;
@@ -79,6 +85,10 @@ class MeshAssembler {
   // texture coordinates fitted to each face).
   MeshAssembler(const MaterialTable& materials, std::vector<bool> material_textured);
 
+  // Starts a mesh written with `options`; what was added and not emitted is dropped.
+  void start(const MeshOptions& options);
+  const MeshOptions& options() const { return options_; }
+  // Drops what was added and not emitted; the options stay.
   void clear();
   // Room for meshes of `vertices`, `corners` (face loop entries) and `faces` more in all, to be
   // added before the next emit: a 3D Tiles tile's one mesh grew by copying megabytes otherwise.
@@ -86,44 +96,46 @@ class MeshAssembler {
   // Adds the faces of `mesh`, each vertex carrying `feature` (when features are written). `mesh`
   // is `part`'s geometry where it stands, or with `instance_frame` the mesh `part` instances
   // (before its placement; the part's uv map is then evaluated at placed positions).
-  // `quantize`: vertices are welded on the quantization grid rather than float32's.
-  void add(const kernel::Mesh& mesh, const shape::Part& part, std::uint32_t feature, bool quantize,
+  void add(const kernel::Mesh& mesh, const shape::Part& part, std::uint32_t feature,
            bool instance_frame);
   bool empty() const { return indices_by_material_.empty(); }
 
-  // Writes the mesh's vertices and indices to the views; `with_features`: a _FEATURE_ID_0
-  // attribute. Leaves the assembler empty.
-  MeshRecord emit(Buffers& buffers, const MeshViews& views, const MeshOptions& options,
-                  bool with_features);
+  // Writes the mesh's vertices and indices to the views. Leaves the assembler empty, with the
+  // options of start().
+  MeshRecord emit(Buffers& buffers, const MeshViews& views);
 
  private:
-  // A vertex of an added mesh, placed: computed once however many corners use it.
-  struct Source {
-    std::array<double, 3> position;    // Y-up
-    std::array<std::int64_t, 3> grid;  // the nearest quantization grid point, when on_grid
+  // A position corners use, once per scope (the feature's run when features are written, else
+  // the mesh): its coordinates, Y-up, as float32 and as the nearest grid point (when on_grid), and
+  // the first of the vertices at it (a chain through Vertex::next).
+  struct Position {
+    std::array<std::int64_t, 3> grid;
+    Float3 coordinates;
     bool on_grid;
+    std::uint32_t first_vertex;
   };
-  // The grid and float32 bounds of the vertices added, kept as they are added (a pass over a
+  // The grid and float32 bounds of the positions used, kept as they are added (a pass over a
   // tile's vertices at the end missed the cache on most of them).
   struct Bounds {
-    bool on_grid = true;  // every vertex has a grid point (low and high are meaningful)
+    bool on_grid = true;  // every position has a grid point (low and high are meaningful)
     std::array<std::int64_t, 3> low{INT64_MAX, INT64_MAX, INT64_MAX};
     std::array<std::int64_t, 3> high{INT64_MIN, INT64_MIN, INT64_MIN};
     std::array<double, 3> min{DBL_MAX, DBL_MAX, DBL_MAX};
     std::array<double, 3> max{-DBL_MAX, -DBL_MAX, -DBL_MAX};
-    void add(const Source& source);
+    void add(const Position& position);
   };
   // A face's unit normal (Y-up), and as normalized bytes (the fourth is padding).
   struct FaceNormal {
     std::array<float, 3> normal;
     std::array<std::int8_t, 4> bytes;
   };
-  // A corner of a face, flat shaded.
+  // A vertex as it will be written: a position with one face's normal, a uv and a feature.
   struct Vertex {
-    std::uint32_t source;  // into sources_
-    std::uint32_t face;    // into face_normals_
+    std::uint32_t position;  // into positions_
+    std::uint32_t face;      // into face_normals_
     std::array<float, 2> uv;
     std::uint32_t feature;
+    std::uint32_t next;  // the next vertex at the same position, ~0 for none
   };
 
   std::vector<std::uint32_t> spare_list();
@@ -131,36 +143,30 @@ class MeshAssembler {
   void add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
                    kernel::Vec3 newell, std::vector<std::uint32_t>& indices);
   void fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop, kernel::Vec3 newell);
-
-  // Where each written attribute lies in a vertex's row (rows_): bytes from the row's start and
-  // bytes long (0: not written).
-  struct RowLayout {
-    std::uint32_t stride = 0;
-    std::array<std::uint32_t, 4> offset{};  // position, normal, uv, feature
-    std::array<std::uint32_t, 4> size{};
-    bool float_features = false;  // written as FLOAT, else UNSIGNED_SHORT
-  };
+  std::uint32_t position_of(const kernel::Mesh& mesh, std::uint32_t vertex);
+  std::uint32_t find_position(const Position& position);
+  void grow_position_table();
+  std::uint32_t vertex_at(std::uint32_t position, std::uint32_t face, std::array<float, 2> uv);
+  bool same_normal(std::uint32_t face, std::uint32_t other) const;
+  void begin_scope();
 
   // The steps of emit().
   void gather_indices();
-  void quantize(bool wanted, MeshRecord& record);
-  void lay_out(const MeshRecord& record, const MeshOptions& options, bool with_features);
-  void pack_rows(std::size_t begin, std::size_t end);
-  void merge_rows();
-  void find_representatives(std::size_t begin, std::size_t end);
-  std::size_t merge_and_order();
+  void quantize(MeshRecord& record);
+  std::size_t number_and_order();
   void number_for_fetch();
   bool order_by_feature(std::span<unsigned int> indices);
   bool loads_each_once(std::span<const unsigned int> run);
   bool optimize_run(std::span<unsigned int> run);
-  void write_attributes(Buffers& buffers, const MeshViews& views, const MeshOptions& options,
-                        std::size_t count, MeshRecord& record);
+  void write_attributes(Buffers& buffers, const MeshViews& views, std::size_t count,
+                        MeshRecord& record);
   void write_primitives(Buffers& buffers, const MeshViews& views, std::size_t count,
                         MeshRecord& record);
 
   const MaterialTable& materials_;
   std::vector<bool> material_textured_;
-  std::vector<Source> sources_;
+  MeshOptions options_;
+  std::vector<Position> positions_;
   std::vector<FaceNormal> face_normals_;
   std::vector<Vertex> vertices_;
   // Triangles by table material, in the order materials are first met (sorted at emit).
@@ -169,13 +175,25 @@ class MeshAssembler {
   bool has_uv_ = false;
   Bounds bounds_;
 
+  // The scope positions are looked up in: an open-addressing table of positions_ entries, stamped
+  // with the scope they were entered in, so a new scope (a feature's run: most are small) empties
+  // it without touching it.
+  struct Slot {
+    std::uint32_t position;
+    std::uint32_t scope;
+  };
+  std::vector<Slot> slots_;
+  std::uint32_t scope_ = 0;
+  std::uint32_t scope_begin_ = 0;  // the scope's first entry in positions_
+  bool scope_feature_set_ = false;
+  std::uint32_t scope_feature_ = 0;
+
   // The part being added.
   const shape::Part* part_ = nullptr;
   bool instance_frame_ = false;
-  std::uint32_t first_source_ = 0;   // the part's vertex 0 in sources_
-  std::vector<unsigned char> used_;  // by the part's vertex: some corner uses it
-  double uv_scale_ = 0;              // solid_geometry's texture size, 0: none
-  bool fit_uv_ = false;              // the face shows an image: UVs fit each face
+  std::vector<std::uint32_t> position_of_;  // by the part's vertex: its entry in positions_, or ~0
+  double uv_scale_ = 0;                     // solid_geometry's texture size, 0: none
+  bool fit_uv_ = false;                     // the face shows an image: UVs fit each face
   std::uint32_t feature_ = 0;
 
   // Scratch reused from face to face.
@@ -184,30 +202,23 @@ class MeshAssembler {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> faces_by_material_;
   Float32Weld weld_;
   std::vector<std::uint32_t> corners_;
+  std::vector<std::uint32_t> corner_vertices_;
   std::vector<kernel::Vec2> face_uvs_;
   std::vector<std::array<float, 2>> corner_uvs_;
   // Scratch of emit(), kept from mesh to mesh.
   std::vector<unsigned int> indices_;
-  std::vector<std::size_t> ends_;           // end of each material's run in indices_
-  std::array<std::int64_t, 3> grid_low_{};  // the quantized mesh's grid origin
-  RowLayout layout_;
-  // Each vertex's written attributes, layout_.stride bytes; never zeroed (pack writes every
-  // byte), so a tile's megabytes of rows are written once.
-  std::unique_ptr<unsigned char[]> rows_;
-  std::size_t rows_capacity_ = 0;
-  std::vector<std::uint32_t> slots_;            // merge_rows()'s hash table of vertices (~0: free)
-  std::vector<std::uint32_t> representative_;   // vertex -> the first vertex alike
-  std::vector<std::uint32_t> feature_of_;       // vertex -> its feature
-  std::vector<unsigned int> class_of_;          // representative -> merged vertex (~0: none yet)
-  std::vector<unsigned int> fetch_;             // merged vertex -> written vertex
-  std::vector<std::uint32_t> row_of_;           // merged, then written vertex -> a vertex alike
-  std::vector<std::uint32_t> vertex_features_;  // by merged, then written vertex
+  std::vector<std::size_t> ends_;               // end of each material's run in indices_
+  std::array<std::int64_t, 3> grid_low_{};      // the quantized mesh's grid origin
+  std::vector<unsigned int> number_of_;         // vertex -> written number (~0 when not yet)
+  std::vector<unsigned int> fetch_;             // number -> written vertex
+  std::vector<std::uint32_t> vertex_of_;        // numbered, then written vertex -> its Vertex
+  std::vector<std::uint32_t> vertex_features_;  // by numbered, then written vertex
   std::vector<std::uint32_t> moved_features_;
-  std::vector<std::uint32_t> moved_rows_;
+  std::vector<std::uint32_t> moved_vertices_;
   std::vector<std::array<unsigned int, 3>> sorted_triangles_;
-  std::vector<unsigned int> local_of_;  // order_by_feature: merged vertex -> run's own numbering
+  std::vector<unsigned int> local_of_;  // order_by_feature: numbered vertex -> run's own numbering
   std::vector<unsigned int> global_of_;
-  std::vector<unsigned int> loaded_at_;  // merged vertex -> its load in the run checked
+  std::vector<unsigned int> loaded_at_;  // numbered vertex -> its load in the run checked
 };
 
 }  // namespace insula::io::gltf

@@ -133,8 +133,8 @@ class Builder {
   // The mesh a part instances (added the first time), or -1 when none of its faces has area.
   std::int32_t shared_mesh(const shape::Part& part, std::size_t index);
   // Writes what `assembler` holds as a new mesh; -1 when it holds no triangle.
-  std::int32_t add_mesh(gltf::MeshAssembler& assembler, std::string name, bool with_features,
-                        bool quantize);
+  std::int32_t add_mesh(gltf::MeshAssembler& assembler, std::string name);
+  gltf::MeshOptions mesh_options(bool with_features, bool quantize) const;
   InstanceGroup add_instance_group(const std::vector<gltf::Trs>& placed,
                                    const std::vector<float>& features);
   void add_instance_groups(const shape::Building& building, std::size_t first_row,
@@ -270,25 +270,31 @@ void Builder::add_images() {
   }
 }
 
-std::int32_t Builder::add_mesh(gltf::MeshAssembler& assembler, std::string name, bool with_features,
-                               bool quantize) {
+std::int32_t Builder::add_mesh(gltf::MeshAssembler& assembler, std::string name) {
   if (assembler.empty()) {
     assembler.clear();
     return -1;
   }
-  gltf::MeshOptions options = mesh_options_;
-  options.quantize = quantize;
-  gltf::MeshRecord record = assembler.emit(buffers_, views_, options, with_features);
-  quantized_ = quantized_ || options.quantize;
+  gltf::MeshRecord record = assembler.emit(buffers_, views_);
+  quantized_ = quantized_ || assembler.options().quantize;  // byte normals at least
   meshes_.push_back({std::move(name), std::move(record)});
   return static_cast<std::int32_t>(meshes_.size() - 1);
+}
+
+// The options of a mesh with (or without) feature ids, quantized (or not).
+gltf::MeshOptions Builder::mesh_options(bool with_features, bool quantize) const {
+  gltf::MeshOptions options = mesh_options_;
+  options.with_features = with_features;
+  options.quantize = quantize;
+  return options;
 }
 
 // Shared meshes keep float positions: their instances' placements stay plain node transforms.
 std::int32_t Builder::shared_mesh(const shape::Part& part, std::size_t index) {
   if (auto it = shared_.find(part.instance_of.get()); it != shared_.end()) return it->second;
-  shared_assembler_->add(*part.instance_of, part, 0, false, true);
-  const std::int32_t mesh = add_mesh(*shared_assembler_, part_name(part, index), false, false);
+  shared_assembler_->start(mesh_options(false, false));
+  shared_assembler_->add(*part.instance_of, part, 0, true);
+  const std::int32_t mesh = add_mesh(*shared_assembler_, part_name(part, index));
   shared_[part.instance_of.get()] = mesh;
   return mesh;
 }
@@ -303,6 +309,7 @@ BuildingNode Builder::by_building(const shape::Building& building, std::size_t i
                                   std::size_t first_row) {
   BuildingNode node;
   std::vector<std::pair<std::size_t, std::int32_t>> instances;  // part, mesh
+  assembler_->start(mesh_options(table_.has_value(), options_.quantize));
   reserve_assembler(building);
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
     const shape::Part& part = building.parts[p];
@@ -312,13 +319,12 @@ BuildingNode Builder::by_building(const shape::Building& building, std::size_t i
         instances.emplace_back(p, mesh);
     } else if (part.instance_of) {
       assembler_->add(kernel::transformed(*part.instance_of, part.instance_transform), part, row,
-                      options_.quantize, false);
+                      false);
     } else {
-      assembler_->add(part.mesh, part, row, options_.quantize, false);
+      assembler_->add(part.mesh, part, row, false);
     }
   }
-  node.mesh =
-      add_mesh(*assembler_, building_name(building, index), table_.has_value(), options_.quantize);
+  node.mesh = add_mesh(*assembler_, building_name(building, index));
   Affine inside;  // the frame the building node's children live in
   if (node.mesh >= 0 && meshes_[node.mesh].record.quantized) {
     node.placement = node_placement(meshes_[node.mesh].record);
@@ -431,9 +437,9 @@ BuildingNode Builder::by_element(const shape::Building& building) {
       child.placement = gltf::y_up(part.instance_transform);
     } else {
       const bool instance = part.instance_of != nullptr;
-      assembler_->add(instance ? *part.instance_of : part.mesh, part, 0, options_.quantize,
-                      instance);
-      child.mesh = add_mesh(*assembler_, child.name, false, options_.quantize);
+      assembler_->start(mesh_options(false, options_.quantize));
+      assembler_->add(instance ? *part.instance_of : part.mesh, part, 0, instance);
+      child.mesh = add_mesh(*assembler_, child.name);
       std::optional<Affine> dequantize;
       if (child.mesh >= 0 && meshes_[child.mesh].record.quantized) {
         dequantize = node_placement(meshes_[child.mesh].record);
