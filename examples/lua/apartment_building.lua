@@ -125,13 +125,16 @@ for _, stair in ipairs(stairs) do
   end
 end
 
--- Furniture (§4.5), shared meshes placed on floor regions clear of the doors.
+-- Furniture (§4.5), shared meshes placed on floor regions clear of the doors. A list, not a table
+-- keyed by room kind: pairs() visits keys in an order Lua varies from run to run, and the parts
+-- would then come out in another order each time.
 local furniture = {
-  living = { { "sofa", 1.2 }, { "table", 1.0 }, { "chair", 0.6 }, { "chair", 0.6 }, { "shelf", 0.6 } },
-  bedroom = { { "bed", 1.3 }, { "wardrobe", 0.8 }, { "desk", 0.9 }, { "chair", 0.5 } },
-  bath = { { "plant", 0.4 } },
+  { "living", { { "sofa", 1.2 }, { "table", 1.0 }, { "chair", 0.6 }, { "chair", 0.6 }, { "shelf", 0.6 } } },
+  { "bedroom", { { "bed", 1.3 }, { "wardrobe", 0.8 }, { "desk", 0.9 }, { "chair", 0.5 } } },
+  { "bath", { { "plant", 0.4 } } },
 }
-for kind, items in pairs(furniture) do
+for _, entry in ipairs(furniture) do
+  local kind, items = entry[1], entry[2]
   for room in query("space and parent(" .. kind .. ")") do
     local sx, sz = room.size[1], room.size[3]
     local avoid = {}
