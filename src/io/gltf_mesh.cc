@@ -62,11 +62,12 @@ void MeshAssembler::clear() {
   positions_.clear();
   face_normals_.clear();
   vertices_.clear();
-  for (auto& [material, list] : indices_by_material_) {
-    list.clear();
+  for (MaterialList& list : lists_) {
+    list.indices.clear();
+    list.runs.clear();
     spare_lists_.push_back(std::move(list));
   }
-  indices_by_material_.clear();
+  lists_.clear();
   has_uv_ = false;
   bounds_ = Bounds{};
   scope_feature_set_ = false;
@@ -110,61 +111,66 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
     faces_by_material_.emplace_back(materials_.index(mesh.tag(f)), f);
   }
   std::sort(faces_by_material_.begin(), faces_by_material_.end());  // (material, face): stable
-  std::vector<std::uint32_t>* indices = nullptr;
-  std::uint32_t current = std::numeric_limits<std::uint32_t>::max();
+  MaterialList* list = nullptr;
   for (const auto& [material, face] : faces_by_material_) {
-    if (material != current) {
-      current = material;
-      auto it = std::find_if(indices_by_material_.begin(), indices_by_material_.end(),
-                             [&current](const auto& entry) { return entry.first == current; });
-      if (it == indices_by_material_.end()) {
-        indices_by_material_.emplace_back(material, spare_list());
-        it = indices_by_material_.end() - 1;
-      }
-      indices = &it->second;
+    if (list == nullptr || list->material != material) {
+      list = &list_of(material);
       fit_uv_ = material_textured_[material];
     }
-    add_face(mesh, face, *indices);
+    add_face(mesh, face, *list);
   }
   // A material all of whose faces were degenerate gets no primitive.
-  std::erase_if(indices_by_material_, [this](auto& entry) {
-    if (!entry.second.empty()) return false;
-    spare_lists_.push_back(std::move(entry.second));
+  std::erase_if(lists_, [this](MaterialList& entry) {
+    if (!entry.indices.empty()) return false;
+    spare_lists_.push_back(std::move(entry));
     return true;
   });
 }
 
-// An empty index list, one that served an earlier mesh when there is one: growing a list anew
-// for every material of every building cost more than filling it.
-std::vector<std::uint32_t> MeshAssembler::spare_list() {
-  if (spare_lists_.empty()) return {};
-  std::vector<std::uint32_t> list = std::move(spare_lists_.back());
-  spare_lists_.pop_back();
-  return list;
+// The list of `material`'s triangles, made (from one that served an earlier mesh when there is
+// one: growing a list anew for every material of every building cost more than filling it) when
+// the mesh has none yet.
+MeshAssembler::MaterialList& MeshAssembler::list_of(std::uint32_t material) {
+  for (MaterialList& list : lists_) {
+    if (list.material == material) return list;
+  }
+  if (spare_lists_.empty()) {
+    lists_.emplace_back();
+  } else {
+    lists_.push_back(std::move(spare_lists_.back()));
+    spare_lists_.pop_back();
+  }
+  lists_.back().material = material;
+  return lists_.back();
 }
 
 // Flat shading: the face's corners become vertices of their own, all carrying the face normal.
 // Where the weld merges vertices (float32_weld.h) the face's triangles and corners come from it.
-void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face,
-                             std::vector<std::uint32_t>& indices) {
+void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face, MaterialList& list) {
   const kernel::Vec3 newell = kernel::face_normal(mesh, face);
   triangles_.clear();
   if (!weld_.active()) {
     if (!triangulator_.triangulate(mesh, face, newell, triangles_)) return;
-    add_corners(mesh, mesh.face(face), newell, indices);
-    return;
-  }
-  corners_.clear();
-  for (const auto& triangle : weld_.triangles(face)) {
-    CornerTriangle t{};
-    for (std::size_t k = 0; k < 3; ++k) {
-      const auto it = std::find(corners_.begin(), corners_.end(), triangle[k]);
-      t[k] = static_cast<std::uint32_t>(it - corners_.begin());
-      if (it == corners_.end()) corners_.push_back(triangle[k]);
+    add_corners(mesh, mesh.face(face), newell, list.indices);
+  } else {
+    corners_.clear();
+    for (const auto& triangle : weld_.triangles(face)) {
+      CornerTriangle t{};
+      for (std::size_t k = 0; k < 3; ++k) {
+        const auto it = std::find(corners_.begin(), corners_.end(), triangle[k]);
+        t[k] = static_cast<std::uint32_t>(it - corners_.begin());
+        if (it == corners_.end()) corners_.push_back(triangle[k]);
+      }
+      triangles_.push_back(t);
     }
-    triangles_.push_back(t);
+    add_corners(mesh, corners_, newell, list.indices);
   }
-  add_corners(mesh, corners_, newell, indices);
+  // The face's triangles belong to the part's feature.
+  if (list.runs.empty() || list.runs.back().feature != feature_) {
+    list.runs.push_back({feature_, list.indices.size()});
+  } else {
+    list.runs.back().end = list.indices.size();
+  }
 }
 
 void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
@@ -199,13 +205,17 @@ void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::u
     }
     has_uv_ = true;
   }
-  corner_vertices_.resize(loop.size());
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const std::uint32_t position = position_of(mesh, weld_.representative(loop[i]));
-    corner_vertices_[i] = vertex_at(position, face, corner_uvs_[i]);
-  }
+  // Vertices made in the order the triangles first use them: the order they are written in.
+  corner_vertices_.assign(loop.size(), kNone);
   for (const CornerTriangle& triangle : triangles_) {
-    for (std::uint32_t corner : triangle) indices.push_back(corner_vertices_[corner]);
+    for (std::uint32_t corner : triangle) {
+      std::uint32_t& vertex = corner_vertices_[corner];
+      if (vertex == kNone) {
+        const std::uint32_t position = position_of(mesh, weld_.representative(loop[corner]));
+        vertex = vertex_at(position, face, corner_uvs_[corner]);
+      }
+      indices.push_back(vertex);
+    }
   }
 }
 
@@ -346,15 +356,19 @@ void MeshAssembler::fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint3
 // The materials' triangles one after the other (materials in table order): ends_ marks each
 // run's end in indices_.
 void MeshAssembler::gather_indices() {
-  std::sort(indices_by_material_.begin(), indices_by_material_.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(lists_.begin(), lists_.end(),
+            [](const MaterialList& a, const MaterialList& b) { return a.material < b.material; });
   ends_.clear();
   std::size_t end = 0;
-  for (const auto& [material, list] : indices_by_material_) {
-    end += list.size();
+  for (const MaterialList& list : lists_) {
+    end += list.indices.size();
     ends_.push_back(end);
   }
-  indices_.resize(end);  // filled by merge_and_order, numbered as they are copied
+  indices_.resize(end);
+  unsigned int* out = indices_.data();
+  for (const MaterialList& list : lists_) {
+    out = std::copy(list.indices.begin(), list.indices.end(), out);
+  }
 }
 
 void MeshAssembler::Bounds::add(const Position& position) {
@@ -431,86 +445,85 @@ bool MeshAssembler::optimize_run(std::span<unsigned int> run) {
   return true;
 }
 
-// Sorts the triangles of `indices` by the feature of their first corner (stably; they usually
-// come sorted, part after part), then optimises each feature's run for the vertex cache. Returns
-// whether it changed the order of any triangle or index.
-bool MeshAssembler::order_by_feature(std::span<unsigned int> indices) {
-  const std::vector<std::uint32_t>& features = vertex_features_;
-  const std::size_t triangles = indices.size() / 3;
-  const auto feature = [&](std::size_t t) { return features[indices[3 * t]]; };
+// Sorts the triangles of `indices` (one material's) by feature, keeping the order within a
+// feature (they usually come sorted, part after part), merging `runs` to one a feature; then
+// optimises each feature's run for the vertex cache. Returns whether it changed the order of any
+// triangle or index.
+bool MeshAssembler::order_by_feature(std::span<unsigned int> indices,
+                                     std::vector<FeatureRun>& runs) {
   bool sorted = true;
-  for (std::size_t t = 1; t < triangles && sorted; ++t) sorted = feature(t - 1) <= feature(t);
-  if (!sorted) {
-    sorted_triangles_.resize(triangles);
-    std::memcpy(sorted_triangles_.data(), indices.data(), indices.size() * sizeof(unsigned int));
-    std::stable_sort(
-        sorted_triangles_.begin(), sorted_triangles_.end(),
-        [&features](const auto& a, const auto& b) { return features[a[0]] < features[b[0]]; });
-    std::memcpy(indices.data(), sorted_triangles_.data(), indices.size() * sizeof(unsigned int));
-  }
+  for (std::size_t r = 1; r < runs.size() && sorted; ++r)
+    sorted = runs[r - 1].feature < runs[r].feature;
+  if (!sorted) sort_runs(indices, runs);
   bool reordered = !sorted;
-  for (std::size_t begin = 0; begin < triangles;) {
-    std::size_t end = begin + 1;
-    while (end < triangles && feature(end) == feature(begin)) ++end;
-    reordered = optimize_run(indices.subspan(3 * begin, 3 * (end - begin))) || reordered;
-    begin = end;
+  std::size_t begin = 0;
+  for (const FeatureRun& run : runs) {
+    reordered = optimize_run(indices.subspan(begin, run.end - begin)) || reordered;
+    begin = run.end;
   }
   return reordered;
 }
 
-// Vertices numbered in order of first use by the indices (as meshopt_generateVertexRemap does);
-// triangles part by part (a part's faces lie together, and the feature ids then come in runs,
-// which EXT_meshopt_compression stores in almost nothing), each part's in the order that suits the
-// vertex cache; then vertices in the order of first use, for fetch, which is already theirs unless
-// a run was reordered. Leaves indices_ and vertex_features_ over the written vertices, and
-// vertex_of_ naming the Vertex each writes; returns their count.
-std::size_t MeshAssembler::number_and_order() {
-  number_of_.assign(vertices_.size(), kNone);
-  vertex_of_.clear();
-  vertex_features_.clear();
-  unsigned int* out = indices_.data();
-  for (const auto& [material, list] : indices_by_material_) {
-    for (const std::uint32_t index : list) {
-      unsigned int& number = number_of_[index];
-      if (number == kNone) {
-        number = static_cast<unsigned int>(vertex_of_.size());
-        vertex_of_.push_back(index);
-        vertex_features_.push_back(vertices_[index].feature);
-      }
-      *out++ = number;
+// The runs of `indices` stably sorted by feature, runs of one feature merged.
+void MeshAssembler::sort_runs(std::span<unsigned int> indices, std::vector<FeatureRun>& runs) {
+  run_order_.resize(runs.size());
+  for (std::size_t r = 0; r < runs.size(); ++r) run_order_[r] = r;
+  std::stable_sort(run_order_.begin(), run_order_.end(), [&runs](std::size_t a, std::size_t b) {
+    return runs[a].feature < runs[b].feature;
+  });
+  sorted_indices_.resize(indices.size());
+  sorted_runs_.clear();
+  std::size_t end = 0;
+  for (std::size_t r : run_order_) {
+    const std::size_t begin = r == 0 ? 0 : runs[r - 1].end;
+    std::copy(indices.begin() + static_cast<std::ptrdiff_t>(begin),
+              indices.begin() + static_cast<std::ptrdiff_t>(runs[r].end),
+              sorted_indices_.begin() + static_cast<std::ptrdiff_t>(end));
+    end += runs[r].end - begin;
+    if (!sorted_runs_.empty() && sorted_runs_.back().feature == runs[r].feature) {
+      sorted_runs_.back().end = end;
+    } else {
+      sorted_runs_.push_back({runs[r].feature, end});
     }
   }
-  const std::size_t count = vertex_of_.size();
-  local_of_.clear();  // sized by optimize_run when a run needs it
-  loaded_at_.assign(count, kNone);
-  bool reordered = false;
-  std::size_t begin = 0;
-  for (std::size_t end : ends_) {
-    reordered = order_by_feature(std::span(indices_).subspan(begin, end - begin)) || reordered;
-    begin = end;
-  }
-  if (reordered) number_for_fetch();
-  return count;
+  std::copy(sorted_indices_.begin(), sorted_indices_.end(), indices.begin());
+  runs.swap(sorted_runs_);
 }
 
-// Renumbers the vertices in order of first use by the reordered indices. Every merged vertex is
-// used (meshopt numbers only those the indices name).
+// Vertices are numbered as they were made: part by part, a face's in the order its triangles
+// first use them, so a part's vertices lie together and are written in one pass. Triangles stay
+// part by part (the feature ids then come in runs, which EXT_meshopt_compression stores in almost
+// nothing), each part's in the order that suits the vertex cache. Where that moved a triangle, or
+// where the options ask for it, vertices are numbered again in the order of first use (as
+// meshopt_optimizeVertexFetch does). Returns the number of vertices written.
+std::size_t MeshAssembler::order_for_cache() {
+  renumbered_ = false;
+  local_of_.clear();  // sized by optimize_run when a run needs it
+  loaded_at_.assign(vertices_.size(), kNone);
+  bool reordered = false;
+  std::size_t begin = 0;
+  for (std::size_t m = 0; m < lists_.size(); ++m) {
+    const std::span run = std::span(indices_).subspan(begin, ends_[m] - begin);
+    reordered = order_by_feature(run, lists_[m].runs) || reordered;
+    begin = ends_[m];
+  }
+  if (reordered || (options_.first_use_order && lists_.size() > 1)) number_for_fetch();
+  return vertices_.size();
+}
+
+// Renumbers the vertices in order of first use by the reordered indices; vertex_of_ then names
+// the vertex each number writes. Every vertex is used (each was made for a triangle's corner).
 void MeshAssembler::number_for_fetch() {
-  const std::size_t count = vertex_of_.size();
+  const std::size_t count = vertices_.size();
   fetch_.assign(count, kNone);
   unsigned int next = 0;
   for (unsigned int& index : indices_) {
     if (fetch_[index] == kNone) fetch_[index] = next++;
     index = fetch_[index];
   }
-  moved_vertices_.resize(count);
-  moved_features_.resize(count);
-  for (std::size_t w = 0; w < count; ++w) {
-    moved_vertices_[fetch_[w]] = vertex_of_[w];
-    moved_features_[fetch_[w]] = vertex_features_[w];
-  }
-  std::swap(vertex_of_, moved_vertices_);
-  std::swap(vertex_features_, moved_features_);
+  vertex_of_.resize(count);
+  for (std::size_t v = 0; v < count; ++v) vertex_of_[fetch_[v]] = static_cast<std::uint32_t>(v);
+  renumbered_ = true;
 }
 
 // The written vertices' attributes, each appended to its view in one pass over the vertices:
@@ -547,7 +560,7 @@ void MeshAssembler::write_attributes(Buffers& buffers, const MeshViews& views, s
                       record.feature.emplace());
   }
   for (std::size_t w = 0; w < count; ++w) {
-    const Vertex& vertex = vertices_[vertex_of_[w]];
+    const Vertex& vertex = written(w);
     const Position& position = positions_[vertex.position];
     if (quantized) {
       for (std::size_t k = 0; k < 3; ++k) {
@@ -594,17 +607,12 @@ void MeshAssembler::write_primitives(Buffers& buffers, const MeshViews& views, s
         put_value(at, static_cast<std::uint32_t>(indices_[i]));
       }
     }
-    // A triangle's corners come from one face, so share its feature, and the triangles are
-    // sorted by it (order_by_feature): the distinct features are the runs.
-    std::uint32_t distinct = 0;
-    for (std::size_t i = begin; i < ends_[m]; i += 3) {
-      if (i == begin || vertex_features_[indices_[i]] != vertex_features_[indices_[i - 3]])
-        ++distinct;
-    }
+    // The triangles are sorted by feature, one run a feature (order_by_feature).
+    const auto distinct = static_cast<std::uint32_t>(lists_[m].runs.size());
     const std::uint32_t accessor = buffers.add_accessor(
         Accessor{view, offset, short_indices ? Component::kUnsignedShort : Component::kUnsignedInt,
                  ends_[m] - begin, "SCALAR", false, std::nullopt, std::nullopt});
-    record.primitives.push_back({indices_by_material_[m].first, accessor, distinct});
+    record.primitives.push_back({lists_[m].material, accessor, distinct});
     begin = ends_[m];
   }
 }
@@ -613,7 +621,7 @@ MeshRecord MeshAssembler::emit(Buffers& buffers, const MeshViews& views) {
   MeshRecord record;
   gather_indices();
   quantize(record);
-  const std::size_t count = number_and_order();
+  const std::size_t count = order_for_cache();
   write_attributes(buffers, views, count, record);
   write_primitives(buffers, views, count, record);
   clear();

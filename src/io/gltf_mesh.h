@@ -52,6 +52,10 @@ struct MeshOptions {
   bool quantize = true;
   // A _FEATURE_ID_0 attribute: vertices of different features are then never one.
   bool with_features = false;
+  // Vertices numbered in the order the primitives first use them, material after material (the
+  // order EXT_meshopt_compression's index codec stores in the fewest bytes), rather than in the
+  // order they were made, part after part (one pass less over a tile's vertices).
+  bool first_use_order = false;
   // The feature id attribute's type: UNSIGNED_SHORT while every id fits, else FLOAT (exact to
   // 2^24; EXT_mesh_features' note on 32-bit ids).
   Component feature_component = Component::kUnsignedShort;
@@ -98,7 +102,7 @@ class MeshAssembler {
   // (before its placement; the part's uv map is then evaluated at placed positions).
   void add(const kernel::Mesh& mesh, const shape::Part& part, std::uint32_t feature,
            bool instance_frame);
-  bool empty() const { return indices_by_material_.empty(); }
+  bool empty() const { return lists_.empty(); }
 
   // Writes the mesh's vertices and indices to the views. Leaves the assembler empty, with the
   // options of start().
@@ -138,8 +142,20 @@ class MeshAssembler {
     std::uint32_t next;  // the next vertex at the same position, ~0 for none
   };
 
-  std::vector<std::uint32_t> spare_list();
-  void add_face(const kernel::Mesh& mesh, std::size_t face, std::vector<std::uint32_t>& indices);
+  // A material's triangles (vertex numbers, three a triangle) and the runs of one feature in them
+  // (a run ends at `end` in indices).
+  struct FeatureRun {
+    std::uint32_t feature;
+    std::size_t end;
+  };
+  struct MaterialList {
+    std::uint32_t material = 0;
+    std::vector<std::uint32_t> indices;
+    std::vector<FeatureRun> runs;
+  };
+
+  MaterialList& list_of(std::uint32_t material);
+  void add_face(const kernel::Mesh& mesh, std::size_t face, MaterialList& list);
   void add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
                    kernel::Vec3 newell, std::vector<std::uint32_t>& indices);
   void fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop, kernel::Vec3 newell);
@@ -153,9 +169,12 @@ class MeshAssembler {
   // The steps of emit().
   void gather_indices();
   void quantize(MeshRecord& record);
-  std::size_t number_and_order();
+  std::size_t order_for_cache();
+  // The vertex written as number `w`.
+  const Vertex& written(std::size_t w) const { return vertices_[renumbered_ ? vertex_of_[w] : w]; }
   void number_for_fetch();
-  bool order_by_feature(std::span<unsigned int> indices);
+  bool order_by_feature(std::span<unsigned int> indices, std::vector<FeatureRun>& runs);
+  void sort_runs(std::span<unsigned int> indices, std::vector<FeatureRun>& runs);
   bool loads_each_once(std::span<const unsigned int> run);
   bool optimize_run(std::span<unsigned int> run);
   void write_attributes(Buffers& buffers, const MeshViews& views, std::size_t count,
@@ -169,9 +188,9 @@ class MeshAssembler {
   std::vector<Position> positions_;
   std::vector<FaceNormal> face_normals_;
   std::vector<Vertex> vertices_;
-  // Triangles by table material, in the order materials are first met (sorted at emit).
-  std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> indices_by_material_;
-  std::vector<std::vector<std::uint32_t>> spare_lists_;  // emptied lists, kept for their room
+  // By table material, in the order materials are first met (sorted at emit).
+  std::vector<MaterialList> lists_;
+  std::vector<MaterialList> spare_lists_;  // emptied lists, kept for their room
   bool has_uv_ = false;
   Bounds bounds_;
 
@@ -207,15 +226,14 @@ class MeshAssembler {
   std::vector<std::array<float, 2>> corner_uvs_;
   // Scratch of emit(), kept from mesh to mesh.
   std::vector<unsigned int> indices_;
-  std::vector<std::size_t> ends_;               // end of each material's run in indices_
-  std::array<std::int64_t, 3> grid_low_{};      // the quantized mesh's grid origin
-  std::vector<unsigned int> number_of_;         // vertex -> written number (~0 when not yet)
-  std::vector<unsigned int> fetch_;             // number -> written vertex
-  std::vector<std::uint32_t> vertex_of_;        // numbered, then written vertex -> its Vertex
-  std::vector<std::uint32_t> vertex_features_;  // by numbered, then written vertex
-  std::vector<std::uint32_t> moved_features_;
-  std::vector<std::uint32_t> moved_vertices_;
-  std::vector<std::array<unsigned int, 3>> sorted_triangles_;
+  std::vector<std::size_t> ends_;           // end of each material's run in indices_
+  std::array<std::int64_t, 3> grid_low_{};  // the quantized mesh's grid origin
+  std::vector<unsigned int> fetch_;         // number_for_fetch(): vertex -> written number
+  bool renumbered_ = false;                 // vertices are written in another order than made
+  std::vector<std::uint32_t> vertex_of_;    // when renumbered_: written number -> its vertex
+  std::vector<unsigned int> sorted_indices_;
+  std::vector<FeatureRun> sorted_runs_;
+  std::vector<std::size_t> run_order_;
   std::vector<unsigned int> local_of_;  // order_by_feature: numbered vertex -> run's own numbering
   std::vector<unsigned int> global_of_;
   std::vector<unsigned int> loaded_at_;  // numbered vertex -> its load in the run checked

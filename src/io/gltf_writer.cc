@@ -195,6 +195,7 @@ Builder::Builder(const shape::Scene& scene, const GltfOptions& options)
   assembler_.emplace(materials_, textured);
   shared_assembler_.emplace(materials_, std::move(textured));
   mesh_options_.quantize = options_.quantize;
+  mesh_options_.first_use_order = options_.compress;
   if (options_.nodes == GltfOptions::Nodes::kBuilding) {
     table_.emplace(scene_);
     if (table_->rows() == 0) table_.reset();
