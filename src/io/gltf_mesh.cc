@@ -70,6 +70,7 @@ void MeshAssembler::clear() {
   lists_.clear();
   has_uv_ = false;
   bounds_ = Bounds{};
+  reserved_indices_ = 0;
   scope_feature_set_ = false;
   begin_scope();
 }
@@ -78,6 +79,9 @@ void MeshAssembler::reserve(std::size_t vertices, std::size_t corners, std::size
   positions_.reserve(positions_.size() + vertices);
   vertices_.reserve(vertices_.size() + corners);
   face_normals_.reserve(face_normals_.size() + faces);
+  // A face of n corners has n - 2 triangles. Every material's list gets room for all of them:
+  // room never written costs address space only, and a tile's lists grew by copying otherwise.
+  reserved_indices_ = 3 * (corners > 2 * faces ? corners - 2 * faces : 0);
 }
 
 // A new scope for positions: no position entered before is found again.
@@ -141,6 +145,7 @@ MeshAssembler::MaterialList& MeshAssembler::list_of(std::uint32_t material) {
     spare_lists_.pop_back();
   }
   lists_.back().material = material;
+  lists_.back().indices.reserve(reserved_indices_);
   return lists_.back();
 }
 
@@ -353,22 +358,10 @@ void MeshAssembler::fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint3
   }
 }
 
-// The materials' triangles one after the other (materials in table order): ends_ marks each
-// run's end in indices_.
-void MeshAssembler::gather_indices() {
+// The materials in table order: their primitives' order.
+void MeshAssembler::sort_lists() {
   std::sort(lists_.begin(), lists_.end(),
             [](const MaterialList& a, const MaterialList& b) { return a.material < b.material; });
-  ends_.clear();
-  std::size_t end = 0;
-  for (const MaterialList& list : lists_) {
-    end += list.indices.size();
-    ends_.push_back(end);
-  }
-  indices_.resize(end);
-  unsigned int* out = indices_.data();
-  for (const MaterialList& list : lists_) {
-    out = std::copy(list.indices.begin(), list.indices.end(), out);
-  }
 }
 
 void MeshAssembler::Bounds::add(const Position& position) {
@@ -449,7 +442,7 @@ bool MeshAssembler::optimize_run(std::span<unsigned int> run) {
 // feature (they usually come sorted, part after part), merging `runs` to one a feature; then
 // optimises each feature's run for the vertex cache. Returns whether it changed the order of any
 // triangle or index.
-bool MeshAssembler::order_by_feature(std::span<unsigned int> indices,
+bool MeshAssembler::order_by_feature(std::span<std::uint32_t> indices,
                                      std::vector<FeatureRun>& runs) {
   bool sorted = true;
   for (std::size_t r = 1; r < runs.size() && sorted; ++r)
@@ -465,7 +458,7 @@ bool MeshAssembler::order_by_feature(std::span<unsigned int> indices,
 }
 
 // The runs of `indices` stably sorted by feature, runs of one feature merged.
-void MeshAssembler::sort_runs(std::span<unsigned int> indices, std::vector<FeatureRun>& runs) {
+void MeshAssembler::sort_runs(std::span<std::uint32_t> indices, std::vector<FeatureRun>& runs) {
   run_order_.resize(runs.size());
   for (std::size_t r = 0; r < runs.size(); ++r) run_order_[r] = r;
   std::stable_sort(run_order_.begin(), run_order_.end(), [&runs](std::size_t a, std::size_t b) {
@@ -501,11 +494,8 @@ std::size_t MeshAssembler::order_for_cache() {
   local_of_.clear();  // sized by optimize_run when a run needs it
   loaded_at_.assign(vertices_.size(), kNone);
   bool reordered = false;
-  std::size_t begin = 0;
-  for (std::size_t m = 0; m < lists_.size(); ++m) {
-    const std::span run = std::span(indices_).subspan(begin, ends_[m] - begin);
-    reordered = order_by_feature(run, lists_[m].runs) || reordered;
-    begin = ends_[m];
+  for (MaterialList& list : lists_) {
+    reordered = order_by_feature(list.indices, list.runs) || reordered;
   }
   if (reordered || (options_.first_use_order && lists_.size() > 1)) number_for_fetch();
   return vertices_.size();
@@ -517,9 +507,11 @@ void MeshAssembler::number_for_fetch() {
   const std::size_t count = vertices_.size();
   fetch_.assign(count, kNone);
   unsigned int next = 0;
-  for (unsigned int& index : indices_) {
-    if (fetch_[index] == kNone) fetch_[index] = next++;
-    index = fetch_[index];
+  for (MaterialList& list : lists_) {
+    for (unsigned int& index : list.indices) {
+      if (fetch_[index] == kNone) fetch_[index] = next++;
+      index = fetch_[index];
+    }
   }
   vertex_of_.resize(count);
   for (std::size_t v = 0; v < count; ++v) vertex_of_[fetch_[v]] = static_cast<std::uint32_t>(v);
@@ -594,32 +586,32 @@ void MeshAssembler::write_primitives(Buffers& buffers, const MeshViews& views, s
   const bool short_indices = count <= 65535;  // 65535 itself is not a valid index (glTF 3.7.2.1)
   const std::uint32_t view = short_indices ? views.short_indices : views.int_indices;
   std::string& data = buffers.data(view);
+  std::size_t total = 0;
+  for (const MaterialList& list : lists_) total += list.indices.size();
   const std::size_t first = data.size();
-  data.resize(first + indices_.size() * (short_indices ? 2 : 4));
+  data.resize(first + total * (short_indices ? 2 : 4));
   char* at = data.data() + first;
-  std::size_t begin = 0;
-  for (std::size_t m = 0; m < ends_.size(); ++m) {
+  for (const MaterialList& list : lists_) {
     const std::size_t offset = static_cast<std::size_t>(at - data.data());
-    for (std::size_t i = begin; i < ends_[m]; ++i) {
+    for (const std::uint32_t index : list.indices) {
       if (short_indices) {
-        put_value(at, static_cast<std::uint16_t>(indices_[i]));
+        put_value(at, static_cast<std::uint16_t>(index));
       } else {
-        put_value(at, static_cast<std::uint32_t>(indices_[i]));
+        put_value(at, index);
       }
     }
     // The triangles are sorted by feature, one run a feature (order_by_feature).
-    const auto distinct = static_cast<std::uint32_t>(lists_[m].runs.size());
+    const auto distinct = static_cast<std::uint32_t>(list.runs.size());
     const std::uint32_t accessor = buffers.add_accessor(
         Accessor{view, offset, short_indices ? Component::kUnsignedShort : Component::kUnsignedInt,
-                 ends_[m] - begin, "SCALAR", false, std::nullopt, std::nullopt});
-    record.primitives.push_back({lists_[m].material, accessor, distinct});
-    begin = ends_[m];
+                 list.indices.size(), "SCALAR", false, std::nullopt, std::nullopt});
+    record.primitives.push_back({list.material, accessor, distinct});
   }
 }
 
 MeshRecord MeshAssembler::emit(Buffers& buffers, const MeshViews& views) {
   MeshRecord record;
-  gather_indices();
+  sort_lists();
   quantize(record);
   const std::size_t count = order_for_cache();
   write_attributes(buffers, views, count, record);

@@ -167,14 +167,14 @@ class MeshAssembler {
   void begin_scope();
 
   // The steps of emit().
-  void gather_indices();
+  void sort_lists();
   void quantize(MeshRecord& record);
   std::size_t order_for_cache();
   // The vertex written as number `w`.
   const Vertex& written(std::size_t w) const { return vertices_[renumbered_ ? vertex_of_[w] : w]; }
   void number_for_fetch();
-  bool order_by_feature(std::span<unsigned int> indices, std::vector<FeatureRun>& runs);
-  void sort_runs(std::span<unsigned int> indices, std::vector<FeatureRun>& runs);
+  bool order_by_feature(std::span<std::uint32_t> indices, std::vector<FeatureRun>& runs);
+  void sort_runs(std::span<std::uint32_t> indices, std::vector<FeatureRun>& runs);
   bool loads_each_once(std::span<const unsigned int> run);
   bool optimize_run(std::span<unsigned int> run);
   void write_attributes(Buffers& buffers, const MeshViews& views, std::size_t count,
@@ -191,6 +191,7 @@ class MeshAssembler {
   // By table material, in the order materials are first met (sorted at emit).
   std::vector<MaterialList> lists_;
   std::vector<MaterialList> spare_lists_;  // emptied lists, kept for their room
+  std::size_t reserved_indices_ = 0;       // room for each list, as reserve() was told
   bool has_uv_ = false;
   Bounds bounds_;
 
@@ -225,8 +226,6 @@ class MeshAssembler {
   std::vector<kernel::Vec2> face_uvs_;
   std::vector<std::array<float, 2>> corner_uvs_;
   // Scratch of emit(), kept from mesh to mesh.
-  std::vector<unsigned int> indices_;
-  std::vector<std::size_t> ends_;           // end of each material's run in indices_
   std::array<std::int64_t, 3> grid_low_{};  // the quantized mesh's grid origin
   std::vector<unsigned int> fetch_;         // number_for_fetch(): vertex -> written number
   bool renumbered_ = false;                 // vertices are written in another order than made
