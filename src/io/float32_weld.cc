@@ -26,6 +26,13 @@ std::size_t hash_slot(const std::array<Coordinate, 3>& position, std::size_t cap
   return (hash >> 32U) & (capacity - 1);
 }
 
+// Slots for an open-addressing table of `n` entries: a power of two, at least twice `n`.
+std::size_t table_capacity(std::size_t n) {
+  std::size_t capacity = 16;
+  while (capacity < 2 * n) capacity *= 2;
+  return capacity;
+}
+
 // Whether no two of a face's keys are equal (a face has a handful of corners; a long loop is
 // left to contract_loop).
 bool distinct(std::span<const std::uint32_t> keys) {
@@ -67,20 +74,16 @@ bool Float32Weld::run(const kernel::Mesh& mesh, double grid) {
   return true;
 }
 
-// Every vertex united with the first (lowest) vertex at its rounded position, and same_[v] the
-// first vertex at exactly its position: two hash tables filled in vertex order (a sort of the
-// vertices by position gave the same and cost more than the rest of the weld).
+// Every vertex united with the first (lowest) vertex at its rounded position: a hash table filled
+// in vertex order (a sort of the vertices by position gave the same and cost more than the rest of
+// the weld).
 void Float32Weld::group(const kernel::Mesh& mesh, double grid) {
   const std::size_t n = mesh.vertex_count();
-  std::size_t capacity = 16;
-  while (capacity < 2 * n) capacity *= 2;
+  const std::size_t capacity = table_capacity(n);
   slots_.assign(capacity, kFree);
-  exact_slots_.assign(capacity, kFree);
-  same_.resize(n);
   for (std::uint32_t v = 0; v < n; ++v) {
-    const kernel::Vec3 p = mesh.position(v);
     Float3& r = rounded_[v];
-    r = rounded(p, grid);
+    r = rounded(mesh.position(v), grid);
     for (float& c : r) c += 0.0F;  // -0 as +0: they compare equal
     std::size_t slot = hash_slot(r, capacity);
     for (; slots_[slot] != kFree && rounded_[slots_[slot]] != r;
@@ -88,7 +91,18 @@ void Float32Weld::group(const kernel::Mesh& mesh, double grid) {
     }
     if (slots_[slot] == kFree) slots_[slot] = v;
     unite(v, slots_[slot]);
-    slot = hash_slot(std::array<double, 3>{p.x + 0.0, p.y + 0.0, p.z + 0.0}, capacity);
+  }
+}
+
+// same_[v]: the first vertex at exactly v's position.
+void Float32Weld::find_same(const kernel::Mesh& mesh) {
+  const std::size_t n = mesh.vertex_count();
+  const std::size_t capacity = table_capacity(n);
+  exact_slots_.assign(capacity, kFree);
+  same_.resize(n);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    const kernel::Vec3 p = mesh.position(v);
+    std::size_t slot = hash_slot(std::array<double, 3>{p.x + 0.0, p.y + 0.0, p.z + 0.0}, capacity);
     for (; exact_slots_[slot] != kFree && !(mesh.position(exact_slots_[slot]) == p);
          slot = (slot + 1) & (capacity - 1)) {
     }
@@ -101,8 +115,7 @@ void Float32Weld::group(const kernel::Mesh& mesh, double grid) {
 // hash table of the rounded positions rather than by sorting the vertices.
 bool Float32Weld::collapses(const kernel::Mesh& mesh, double grid) {
   const std::size_t n = mesh.vertex_count();
-  std::size_t capacity = 16;
-  while (capacity < 2 * n) capacity *= 2;
+  const std::size_t capacity = table_capacity(n);
   slots_.assign(capacity, kFree);
   rounded_.resize(n);
   for (std::uint32_t v = 0; v < n; ++v) {
@@ -138,10 +151,14 @@ void Float32Weld::flatten() {
 }
 
 // Every directed edge (vertices at one position taken as one) used once, and its reverse once
-// (kernel::EdgeUses::unpaired() empty). The edges as sorted keys rather than a hash table: most
-// meshes asked here are open (a building's alike terminals as one part), and the first edge
-// without its reverse answers.
+// (kernel::EdgeUses::unpaired() empty). Most meshes asked here are open (a building's alike
+// terminals as one part): a sum over the directed edges of f(a, b) - f(b, a), with f mixing the
+// bits of the end points' positions, is 0 when every edge has its reverse, and almost never
+// otherwise, so one pass answers them. Only a mesh that passes is checked exactly, its edges as
+// sorted keys.
 bool Float32Weld::closed_and_oriented(const kernel::Mesh& mesh) {
+  if (mesh.face_count() == 0 || edge_sum(mesh) != 0) return false;
+  find_same(mesh);
   edges_.clear();
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const auto loop = mesh.face(f);
@@ -157,7 +174,40 @@ bool Float32Weld::closed_and_oriented(const kernel::Mesh& mesh) {
     const std::uint64_t reverse = edges_[i] << 32U | edges_[i] >> 32U;
     if (!std::binary_search(edges_.begin(), edges_.end(), reverse)) return false;
   }
-  return mesh.face_count() > 0;
+  return true;
+}
+
+namespace {
+
+// Two mixes of a position's bits (-0 as +0): equal positions give equal values.
+std::array<std::uint64_t, 2> position_mixes(kernel::Vec3 p) {
+  std::uint64_t h = 0;
+  for (const double c : {p.x + 0.0, p.y + 0.0, p.z + 0.0}) {
+    h = (h ^ std::bit_cast<std::uint64_t>(c)) * 0x9E3779B97F4A7C15ULL;
+    h ^= h >> 31U;
+  }
+  return {h * 0xC2B2AE3D27D4EB4FULL, (h ^ (h >> 29U)) * 0x165667B19E3779F9ULL};
+}
+
+}  // namespace
+
+// The sum over every directed edge (a, b) of f(a) g(b) - f(b) g(a), wrapping: each edge met with
+// its reverse cancels, and an edge between two vertices at one position adds 0.
+std::uint64_t Float32Weld::edge_sum(const kernel::Mesh& mesh) {
+  mixes_.resize(mesh.vertex_count());
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
+    mixes_[v] = position_mixes(mesh.position(v));
+  }
+  std::uint64_t sum = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const auto loop = mesh.face(f);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const auto& a = mixes_[loop[i]];
+      const auto& b = mixes_[loop[i + 1 == loop.size() ? 0 : i + 1]];
+      sum += a[0] * b[1] - b[0] * a[1];
+    }
+  }
+  return sum;
 }
 
 void Float32Weld::triangulate_all(const kernel::Mesh& mesh) {
@@ -185,13 +235,9 @@ void Float32Weld::triangulate_all(const kernel::Mesh& mesh) {
 void Float32Weld::triangulate_piece(const kernel::Mesh& mesh, std::size_t face,
                                     std::span<const std::uint32_t> corners) {
   piece_.clear();
-  ids_.clear();
-  for (std::uint32_t corner : corners) {
-    ids_.push_back(piece_.add_vertex(mesh.position(keys_[corner])));
-  }
-  piece_.add_face(ids_, mesh.tag(face));
+  for (std::uint32_t corner : corners) piece_.push_back(mesh.position(keys_[corner]));
   corner_triangles_.clear();
-  if (!triangulator_.triangulate(piece_, 0, kernel::face_normal(mesh, face), corner_triangles_)) {
+  if (!triangulator_.triangulate(piece_, kernel::face_normal(mesh, face), corner_triangles_)) {
     for (std::uint32_t i = 1; i + 1 < corners.size(); ++i)
       corner_triangles_.push_back({0, i, i + 1});
   }

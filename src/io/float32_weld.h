@@ -53,7 +53,9 @@ class Float32Weld {
   std::uint32_t find(std::uint32_t v);
   bool unite(std::uint32_t a, std::uint32_t b);
   void flatten();
+  void find_same(const kernel::Mesh& mesh);
   bool closed_and_oriented(const kernel::Mesh& mesh);
+  std::uint64_t edge_sum(const kernel::Mesh& mesh);
   void triangulate_all(const kernel::Mesh& mesh);
   void triangulate_piece(const kernel::Mesh& mesh, std::size_t face,
                          std::span<const std::uint32_t> corners);
@@ -71,11 +73,11 @@ class Float32Weld {
   std::vector<std::uint32_t> exact_slots_;  // group(): vertices by exact position
   std::vector<Float3> rounded_;
   std::vector<std::uint32_t> keys_;
-  std::vector<std::uint32_t> ids_;
   std::vector<std::uint32_t> corners_;  // 0 .. n-1: a face that contracts nowhere
   std::vector<std::uint64_t> edges_;    // closed_and_oriented(): directed edges as (a << 32 | b)
+  std::vector<std::array<std::uint64_t, 2>> mixes_;  // edge_sum(): per vertex
   std::vector<CornerTriangle> corner_triangles_;
-  kernel::Mesh piece_;
+  std::vector<kernel::Vec3> piece_;  // a piece's corners' positions
   FaceTriangulator triangulator_;
 };
 

@@ -89,14 +89,33 @@ bool map_back(const kernel::Ring& ring, const kernel::Triangulation& result,
 bool FaceTriangulator::triangulate(const kernel::Mesh& mesh, std::size_t face, Vec3 normal,
                                    std::vector<CornerTriangle>& triangles) {
   const auto loop = mesh.face(face);
-  if (loop.size() < 3 || kernel::length(normal) == 0) return false;
-  if (loop.size() == 3) {
+  return triangulate_corners(
+      loop.size(), [&](std::size_t i) { return mesh.position(loop[i]); }, normal, triangles);
+}
+
+bool FaceTriangulator::triangulate(std::span<const Vec3> corners, Vec3 normal,
+                                   std::vector<CornerTriangle>& triangles) {
+  return triangulate_corners(
+      corners.size(), [&](std::size_t i) { return corners[i]; }, normal, triangles);
+}
+
+// The face of `n` corners, corner i at position(i).
+template <typename Position>
+bool FaceTriangulator::triangulate_corners(std::size_t n, Position position, Vec3 normal,
+                                           std::vector<CornerTriangle>& triangles) {
+  if (n < 3 || kernel::length(normal) == 0) return false;
+  if (n == 3) {
     triangles.push_back({0, 1, 2});
     return true;
   }
   kernel::Ring& ring = polygon_.outer;
   ring.clear();
-  for (std::uint32_t vertex : loop) ring.push_back(project(mesh.position(vertex), normal));
+  for (std::size_t i = 0; i < n; ++i) ring.push_back(project(position(i), normal));
+  return triangulate_ring(triangles);
+}
+
+bool FaceTriangulator::triangulate_ring(std::vector<CornerTriangle>& triangles) {
+  const kernel::Ring& ring = polygon_.outer;
   const auto n = static_cast<std::uint32_t>(ring.size());
   if (is_strictly_convex(ring)) {
     if (n == 4) {

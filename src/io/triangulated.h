@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -31,8 +32,16 @@ class FaceTriangulator {
   // normal, or non-convex and rejected by the triangulator).
   bool triangulate(const kernel::Mesh& mesh, std::size_t face, kernel::Vec3 normal,
                    std::vector<CornerTriangle>& triangles);
+  // The same for a face given as its corners' positions.
+  bool triangulate(std::span<const kernel::Vec3> corners, kernel::Vec3 normal,
+                   std::vector<CornerTriangle>& triangles);
 
  private:
+  template <typename Position>
+  bool triangulate_corners(std::size_t n, Position position, kernel::Vec3 normal,
+                           std::vector<CornerTriangle>& triangles);
+  bool triangulate_ring(std::vector<CornerTriangle>& triangles);
+
   kernel::Polygon polygon_;
   std::vector<std::uint32_t> next_;
   std::vector<std::uint32_t> prev_;
