@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <map>
+#include <new>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -42,17 +43,17 @@ void TerminalStore::push(const Terminal& t) {
   if (size_ == capacity_) {
     const std::size_t k = blocks_.size();
     const std::size_t n = k < 7 ? kFirstBlock << k : kLastBlock;
-    blocks_.push_back(std::unique_ptr<Terminal[]>(new Terminal[n]));
+    blocks_.emplace_back(static_cast<Terminal*>(::operator new(n * sizeof(Terminal))));
     capacity_ += n;
   }
   const auto [block, offset] = locate_record(size_);
-  blocks_[block][offset] = t;
+  new (blocks_[block].get() + offset) Terminal(t);
   ++size_;
 }
 
 const Terminal& TerminalStore::operator[](std::size_t i) const {
   const auto [block, offset] = locate_record(i);
-  return blocks_[block][offset];
+  return blocks_[block].get()[offset];
 }
 
 std::shared_ptr<const Mesh> BuiltinAssets::find(std::string_view name, std::string& error) const {
@@ -310,6 +311,7 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
   std::map<std::pair<std::string, std::string>, kernel::MaterialId> materials;
   const std::string uv0 = shape::uv_set_attribute(0);
   kernel::SharedMeshes across_lots;  // lots derive apart: alike meshes of different lots become one
+  kernel::Mesh world;                // a terminal's mesh in world coordinates (its storage reused)
   for (std::size_t i = 0; i < results.size() && i < lots.size(); ++i) {
     const LotResult& r = results[i];
     const std::map<const Mesh*, int> uses = instances ? mesh_uses(r) : std::map<const Mesh*, int>{};
@@ -365,7 +367,8 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
       if (rectangle) {
         add_world_rectangle(part->mesh, term.scope, geometry.tag);
       } else {
-        part->mesh.append(shape::mesh_to_world(*m.mesh, term.scope));
+        shape::mesh_to_world(*m.mesh, term.scope, world);
+        part->mesh.append(world);
       }
       for (std::size_t f = first_face; material && f < part->mesh.face_count(); ++f) {
         part->mesh.tag(f).material = *material;
