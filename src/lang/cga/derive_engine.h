@@ -343,6 +343,9 @@ class Engine final : public EvalContext {
   void set_scope_translation(const CItem& c, State& st);
 
   void color(const CItem& c, State& st);
+  // color()'s value as set_attr takes it ("#rrggbb", lower case); nullopt when CityEngine's
+  // dialect keeps the colour (warned).
+  std::optional<std::string> color_hex(const CItem& c, State& st);
 
   void print(const CItem& c, State& st);
 
@@ -500,6 +503,8 @@ class Engine final : public EvalContext {
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> attr_nodes_made_;
   // color("#...") literals as set_attr takes them ("#rrggbb", lower case), by expression.
   std::unordered_map<std::uint32_t, std::string> literal_colors_;
+  // The node a literal colour took, by (attribute chain, expression).
+  std::unordered_map<std::uint64_t, std::uint32_t> literal_nodes_;
   BuiltinAssets assets_;
   shape::Context context_;
   std::uint64_t lot_seed_;
