@@ -6,6 +6,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -38,6 +40,32 @@ std::array<kernel::FaceTag, 6> split_box_tags(const std::array<kernel::FaceTag, 
 // The rectangle [0, w] x [0, h] as an outline (counter-clockwise from the origin): the outline of a
 // split piece of a rectangular flat shape.
 kernel::Polygon rectangle_outline(double w, double h);
+
+// ---- offset of an axis-aligned rectangle (shape::offset's inset without Clipper; the CGA engine
+// calls these too, so windows inset either way are the same to the bit)
+
+// An axis-aligned rectangle without holes (as split() leaves façade tiles and windows): its box.
+std::optional<kernel::Bounds2> as_rectangle(const kernel::Polygon& outline);
+
+// Whether offset(distance) of the rectangle `box` is an inset these cores cut: distance < 0 and
+// less than half the shorter side.
+bool is_rectangle_inset(const kernel::Bounds2& box, double distance);
+
+// Piece `piece` of insetting the rectangle `box` by `depth` (> 0), in the shape's outline
+// coordinates: 0 the smaller rectangle, 1 the frame around it (the rectangle with a hole), as the
+// Clipper offset and subtraction would give them.
+kernel::Polygon rectangle_inset_piece(const kernel::Bounds2& box, double depth,
+                                      std::uint32_t piece);
+
+// A flat region of a shape as a shape of its own: its scope is the parent's moved by `offset`
+// (parent scope coordinates) with extent `size`, fitted to the region's bounds, and `outline` is
+// the region in that scope.
+struct FlatRegion {
+  kernel::Vec3 offset;
+  kernel::Vec3 size;
+  kernel::Polygon outline;
+};
+FlatRegion flat_region(kernel::Polygon region);
 
 // Number of pieces of a repeat of about `size` meters over `total`: max(1, floor(total / size)).
 // Returns 0 with `error` set when size is not > 0 and finite, or the count exceeds 1,000,000.

@@ -7,6 +7,7 @@
 
 #include "kernel/boolean2d.h"
 #include "shape/ops.h"
+#include "shape/ops_fast.h"
 
 namespace insula::shape {
 
@@ -16,13 +17,9 @@ using kernel::Vec2;
 void add_flat_region(ShapeTree& tree, ShapeId id, const Polygon& region, std::uint32_t piece,
                      OpResult& result) {
   const Shape& s = tree[id];
-  const kernel::Bounds2 b = kernel::bounds(region);
-  auto outline = std::make_shared<Polygon>(region);
-  for (Vec2& p : outline->outer) p -= b.min;
-  for (auto& hole : outline->holes) {
-    for (Vec2& p : hole) p -= b.min;
-  }
-  const Scope scope = s.scope.sub({b.min.x, b.min.y, 0}, {b.max.x - b.min.x, b.max.y - b.min.y, 0});
+  FlatRegion fitted = flat_region(region);
+  auto outline = std::make_shared<Polygon>(std::move(fitted.outline));
+  const Scope scope = s.scope.sub(fitted.offset, fitted.size);
   const kernel::FaceTag tag = s.mesh && !s.mesh->empty() ? s.mesh->tag(0) : kernel::FaceTag{};
   auto mesh = flat_mesh(*outline, tag);
   result.add(tree.add_child(id, scope, std::move(mesh), std::move(outline)), piece);
@@ -94,36 +91,16 @@ OpResult cut_strips(ShapeTree& tree, ShapeId id, const std::vector<Polygon>& str
   return finish(tree, id, std::move(result));
 }
 
-// An axis-aligned rectangle without holes, as split() leaves façade tiles and windows: its box.
-std::optional<kernel::Bounds2> as_rectangle(const Polygon& outline) {
-  if (!outline.holes.empty() || outline.outer.size() != 4) return std::nullopt;
-  const kernel::Ring& r = outline.outer;
-  const bool x_first = r[0].y == r[1].y && r[1].x == r[2].x && r[2].y == r[3].y && r[3].x == r[0].x;
-  const bool y_first = r[0].x == r[1].x && r[1].y == r[2].y && r[2].x == r[3].x && r[3].y == r[0].y;
-  if (!x_first && !y_first) return std::nullopt;
-  const kernel::Bounds2 box = kernel::bounds(outline);
-  if (!(box.max.x > box.min.x && box.max.y > box.min.y)) return std::nullopt;
-  return box;
-}
-
-kernel::Ring rectangle_ring(Vec2 min, Vec2 max) {
-  return {min, {max.x, min.y}, max, {min.x, max.y}};
-}
-
 // A rectangle inset by `depth` (> 0, less than half its shorter side): the smaller rectangle and
-// the frame around it, as the Clipper offset and subtraction would give them, without either:
-// windows and façade tiles are most of a district's offsets (issue 17, CGA to 3D Tiles).
+// the frame around it (ops_fast.h), as the Clipper offset and subtraction would give them, without
+// either: windows and façade tiles are most of a district's offsets (issue 17, CGA to 3D Tiles).
 void inset_rectangle(ShapeTree& tree, ShapeId id, const kernel::Bounds2& box, double depth,
                      OffsetPart part, OpResult& result) {
-  const Vec2 inner_min = box.min + Vec2{depth, depth};
-  const Vec2 inner_max = box.max - Vec2{depth, depth};
   if (part != OffsetPart::kBorder) {
-    add_flat_region(tree, id, {rectangle_ring(inner_min, inner_max), {}}, 0, result);
+    add_flat_region(tree, id, rectangle_inset_piece(box, depth, 0), 0, result);
   }
   if (part != OffsetPart::kInside) {
-    kernel::Ring hole = rectangle_ring(inner_min, inner_max);
-    std::reverse(hole.begin(), hole.end());  // holes run clockwise
-    add_flat_region(tree, id, {rectangle_ring(box.min, box.max), {std::move(hole)}}, 1, result);
+    add_flat_region(tree, id, rectangle_inset_piece(box, depth, 1), 1, result);
   }
 }
 
@@ -141,8 +118,7 @@ OpResult offset(ShapeTree& tree, ShapeId id, double distance, OffsetPart part) {
   if (!s.is_flat()) return OpResult::failure("needs a flat shape (a footprint or a face)");
   if (!std::isfinite(distance)) return OpResult::failure("distance must be finite");
   if (const std::optional<kernel::Bounds2> box = as_rectangle(*s.outline);
-      box && distance < 0 &&
-      -2 * distance < std::min(box->max.x - box->min.x, box->max.y - box->min.y)) {
+      box && is_rectangle_inset(*box, distance)) {
     OpResult result;
     inset_rectangle(tree, id, *box, -distance, part, result);
     return finish(tree, id, std::move(result));

@@ -89,7 +89,14 @@ kernel::Transform scope_transform(const Scope& scope) {
 }
 
 Mesh mesh_to_world(const Mesh& mesh, const Scope& scope) {
-  return kernel::transformed(mesh, scope_transform(scope));
+  Mesh out;
+  mesh_to_world(mesh, scope, out);
+  return out;
+}
+
+void mesh_to_world(const Mesh& mesh, const Scope& scope, Mesh& out) {
+  out = mesh;
+  kernel::transform_mesh(out, scope_transform(scope));
 }
 
 Mesh mesh_to_local(const Mesh& mesh, const Scope& scope) {

@@ -60,6 +60,8 @@ struct Scope {
 kernel::Transform scope_transform(const Scope& scope);
 // Transforms every vertex of `mesh` from scope space to world space (or back).
 kernel::Mesh mesh_to_world(const kernel::Mesh& mesh, const Scope& scope);
+// The same into `out`, whose storage is reused (a scratch mesh per terminal of an export).
+void mesh_to_world(const kernel::Mesh& mesh, const Scope& scope, kernel::Mesh& out);
 kernel::Mesh mesh_to_local(const kernel::Mesh& mesh, const Scope& scope);
 
 // Right-handed orthonormal frame from a preferred x direction and a z direction (z wins when they

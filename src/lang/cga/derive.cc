@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <map>
+#include <new>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -42,17 +43,17 @@ void TerminalStore::push(const Terminal& t) {
   if (size_ == capacity_) {
     const std::size_t k = blocks_.size();
     const std::size_t n = k < 7 ? kFirstBlock << k : kLastBlock;
-    blocks_.push_back(std::unique_ptr<Terminal[]>(new Terminal[n]));
+    blocks_.emplace_back(static_cast<Terminal*>(::operator new(n * sizeof(Terminal))));
     capacity_ += n;
   }
   const auto [block, offset] = locate_record(size_);
-  blocks_[block][offset] = t;
+  new (blocks_[block].get() + offset) Terminal(t);
   ++size_;
 }
 
 const Terminal& TerminalStore::operator[](std::size_t i) const {
   const auto [block, offset] = locate_record(i);
-  return blocks_[block][offset];
+  return blocks_[block].get()[offset];
 }
 
 std::shared_ptr<const Mesh> BuiltinAssets::find(std::string_view name, std::string& error) const {
@@ -310,6 +311,7 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
   std::map<std::pair<std::string, std::string>, kernel::MaterialId> materials;
   const std::string uv0 = shape::uv_set_attribute(0);
   kernel::SharedMeshes across_lots;  // lots derive apart: alike meshes of different lots become one
+  kernel::Mesh world;                // a terminal's mesh in world coordinates (its storage reused)
   for (std::size_t i = 0; i < results.size() && i < lots.size(); ++i) {
     const LotResult& r = results[i];
     const std::map<const Mesh*, int> uses = instances ? mesh_uses(r) : std::map<const Mesh*, int>{};
@@ -323,32 +325,35 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
     for (std::size_t t = 0; t < r.terminals_store.size(); ++t) {
       const Terminal& term = r.terminals_store[t];
       const Geometry& geometry = r.geometry[term.geometry];
-      // Rectangles go straight into their part; other geometry is made in the scope first.
+      // Rectangles go straight into their part; a mesh is read where it is (no reference counted
+      // copies per terminal), boxes are made in the scope first.
       const bool rectangle = geometry.kind == Geometry::Kind::kRect;
-      detail::Materialized m;
-      if (!rectangle) {
-        m = detail::Engine::materialize(geometry, term.scope.size);
-        if (!m.mesh || m.mesh->empty()) continue;
+      detail::Materialized made;
+      const Mesh* mesh = geometry.mesh.get();
+      if (geometry.kind != Geometry::Kind::kMesh && !rectangle) {
+        made = detail::Engine::materialize(geometry, term.scope.size);
+        mesh = made.mesh.get();
       }
+      if (!rectangle && (mesh == nullptr || mesh->empty())) continue;
       auto [known, added] = looks.try_emplace(term.attrs);
       if (added) known->second = chain_look(program, r, term.attrs, uv0);
       ChainLook& look = known->second;
       const std::optional<kernel::MaterialId> material = material_of(look, materials, scene);
       const std::string_view name = program.symbol_name(term.symbol);
-      const auto use = m.mesh ? uses.find(m.mesh.get()) : uses.end();
+      const auto use = rectangle ? uses.end() : uses.find(mesh);
       if (use != uses.end() && use->second > 1 && !look.uv) {
-        std::shared_ptr<const Mesh>& mesh = shared[{m.mesh.get(), material.value_or(0)}];
-        if (!mesh) {
-          auto coloured = std::make_shared<Mesh>(*m.mesh);
+        std::shared_ptr<const Mesh>& instanced = shared[{mesh, material.value_or(0)}];
+        if (!instanced) {
+          auto coloured = std::make_shared<Mesh>(*mesh);
           for (std::size_t f = 0; material.value_or(0) != 0 && f < coloured->face_count(); ++f) {
             coloured->tag(f).material = *material;
           }
-          mesh = across_lots.share(std::move(coloured));
+          instanced = across_lots.share(std::move(coloured));
         }
         shape::Part& part = building.parts.emplace_back();
         part.name = std::string(name);
         part.attributes = look.attributes;
-        part.instance_of = mesh;
+        part.instance_of = instanced;
         part.instance_transform = shape::scope_transform(term.scope);
         continue;
       }
@@ -365,7 +370,8 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
       if (rectangle) {
         add_world_rectangle(part->mesh, term.scope, geometry.tag);
       } else {
-        part->mesh.append(shape::mesh_to_world(*m.mesh, term.scope));
+        shape::mesh_to_world(*mesh, term.scope, world);
+        part->mesh.append(world);
       }
       for (std::size_t f = first_face; material && f < part->mesh.face_count(); ++f) {
         part->mesh.tag(f).material = *material;

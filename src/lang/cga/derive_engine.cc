@@ -1055,36 +1055,51 @@ void Engine::set_attr(State& st, std::uint32_t attr, Value value) {
 }
 
 void Engine::color(const CItem& c, State& st) {
-  // A colour written as a literal (most are) is checked and normalised once per lot.
   const bool literal = c.args.size() == 1 && program_.nodes[c.args[0]].code == ECode::kConst;
-  if (literal) {
-    if (const auto it = literal_colors_.find(c.args[0]); it != literal_colors_.end()) {
-      set_attr(st, program_.color_attr, Value(it->second));
-      return;
+  if (!literal) {
+    if (std::optional<std::string> hex = color_hex(c, st)) {
+      set_attr(st, program_.color_attr, std::move(*hex));
     }
+    return;
   }
-  std::string hex;
-  if (c.args.size() == 1) {
-    const Value v = eval(c.args[0], st);
-    hex = long_hex(as_text(v));
-    if (!valid_hex_color(hex)) {
-      const std::string message =
-          "color() expects \"#rrggbb\", \"#rrggbbaa\" or \"#rgb\", got \"" + as_text(v) + "\"";
-      // CityEngine warns and keeps the colour (Esri's greenspace rules pass "").
-      if (program_.cityengine)
-        return warning(program_.nodes[c.args[0]].range, message + ": unchanged");
-      throw EvalError{program_.nodes[c.args[0]].range, message};
-    }
-    std::transform(hex.begin(), hex.end(), hex.begin(), [](char ch) {
-      return static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    });
-  } else {
+  // A colour written as a literal (most are) is checked and normalised once per lot, and on a
+  // chain it met before takes the node it took then: one lookup for each of a façade's walls.
+  const std::uint64_t key = (std::uint64_t{st.attrs} << 32) | std::uint64_t{c.args[0]};
+  if (const auto it = literal_nodes_.find(key); it != literal_nodes_.end()) {
+    st.attrs = it->second;
+    touch(st);
+    return;
+  }
+  auto known = literal_colors_.find(c.args[0]);
+  if (known == literal_colors_.end()) {
+    std::optional<std::string> hex = color_hex(c, st);
+    if (!hex) return;
+    known = literal_colors_.emplace(c.args[0], std::move(*hex)).first;
+  }
+  set_attr(st, program_.color_attr, Value(known->second));
+  literal_nodes_.emplace(key, st.attrs);
+}
+
+std::optional<std::string> Engine::color_hex(const CItem& c, State& st) {
+  if (c.args.size() != 1) {
     const double a = c.args.size() == 4 ? number(c.args[3], st) : 1.0;
-    hex = hex_color(number(c.args[0], st), number(c.args[1], st), number(c.args[2], st), a,
-                    c.args.size() == 4);
+    return hex_color(number(c.args[0], st), number(c.args[1], st), number(c.args[2], st), a,
+                     c.args.size() == 4);
   }
-  if (literal) literal_colors_.emplace(c.args[0], hex);
-  set_attr(st, program_.color_attr, std::move(hex));
+  const Value v = eval(c.args[0], st);
+  std::string hex = long_hex(as_text(v));
+  if (!valid_hex_color(hex)) {
+    const std::string message =
+        "color() expects \"#rrggbb\", \"#rrggbbaa\" or \"#rgb\", got \"" + as_text(v) + "\"";
+    // CityEngine warns and keeps the colour (Esri's greenspace rules pass "").
+    if (!program_.cityengine) throw EvalError{program_.nodes[c.args[0]].range, message};
+    warning(program_.nodes[c.args[0]].range, message + ": unchanged");
+    return std::nullopt;
+  }
+  std::transform(hex.begin(), hex.end(), hex.begin(), [](char ch) {
+    return static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  });
+  return hex;
 }
 
 void Engine::print(const CItem& c, State& st) {

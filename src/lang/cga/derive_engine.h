@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -342,6 +343,9 @@ class Engine final : public EvalContext {
   void set_scope_translation(const CItem& c, State& st);
 
   void color(const CItem& c, State& st);
+  // color()'s value as set_attr takes it ("#rrggbb", lower case); nullopt when CityEngine's
+  // dialect keeps the colour (warned).
+  std::optional<std::string> color_hex(const CItem& c, State& st);
 
   void print(const CItem& c, State& st);
 
@@ -350,6 +354,20 @@ class Engine final : public EvalContext {
   // ---- operations through the shape layer (shape::registry() on a one-shape tree)
   OpOutcome run_op(const State& st, std::string_view name, const std::vector<shape::ArgInput>& args,
                    const Scope* parent = nullptr);
+  // offset(d < 0) of a rectangle (every window and frame of a façade grammar): the shape layer's
+  // inset cores (shape/ops_fast.h) on the scope alone, each piece's geometry interned, instead
+  // of a one-shape tree and two new meshes per window. nullopt: not such an offset.
+  std::optional<OpOutcome> inset_rectangle(const State& st,
+                                           const std::vector<shape::ArgInput>& args);
+  struct InsetPiece {
+    std::uint32_t geometry = 0;
+    Vec3 offset;  // the piece's scope in the inset shape's (shape::FlatRegion)
+    Vec3 size;
+  };
+  // Piece `piece` of offset(distance) of the rectangle `box` with face tag `tag`, made once per
+  // lot (the rectangle's own position is its scope's: the piece is the same for every window).
+  const InsetPiece& inset_piece(const kernel::Bounds2& box, double distance, const FaceTag& tag,
+                                std::uint32_t piece);
   // The values of Program::state_attrs the shape sees (null where none is set).
   std::vector<Value> state_values(const State& st) const;
   // The shape's uv set `set` (setupProjection + projectUV), if it has one.
@@ -485,6 +503,8 @@ class Engine final : public EvalContext {
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> attr_nodes_made_;
   // color("#...") literals as set_attr takes them ("#rrggbb", lower case), by expression.
   std::unordered_map<std::uint32_t, std::string> literal_colors_;
+  // The node a literal colour took, by (attribute chain, expression).
+  std::unordered_map<std::uint64_t, std::uint32_t> literal_nodes_;
   BuiltinAssets assets_;
   shape::Context context_;
   std::uint64_t lot_seed_;
@@ -525,6 +545,8 @@ class Engine final : public EvalContext {
   std::vector<std::size_t> frame_begin_{0, 0};
   std::map<std::array<std::uint64_t, 6>, std::uint32_t> boxes_;
   std::map<std::uint64_t, std::uint32_t> rects_;
+  // Pieces of rectangle insets by (box, distance, tag, piece): a façade's windows are alike.
+  std::map<std::array<std::uint64_t, 7>, InsetPiece> insets_;
   // i() results by content (DeriveOptions::share_inserts).
   kernel::SharedMeshes inserted_;
   std::map<std::pair<std::uint32_t, std::string>, std::size_t> warnings_;

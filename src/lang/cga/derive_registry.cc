@@ -3,6 +3,7 @@
 // Their arguments are bound by the registry's declarations (operations.h), so nothing here
 // knows an operation's parameters.
 #include <algorithm>
+#include <bit>
 #include <cctype>
 
 #include "lang/cga/derive_engine.h"
@@ -12,6 +13,9 @@ namespace insula::lang::cga::detail {
 
 OpOutcome Engine::run_op(const State& st, std::string_view name,
                          const std::vector<shape::ArgInput>& args, const Scope* parent) {
+  if (name == "offset") {
+    if (std::optional<OpOutcome> inset = inset_rectangle(st, args)) return std::move(*inset);
+  }
   OpOutcome out;
   const Materialized m = materialize(out_.geometry[st.geometry], st.scope.size);
   out.parent_mesh = m.mesh;
@@ -61,6 +65,87 @@ OpOutcome Engine::run_op(const State& st, std::string_view name,
     out.pieces.push_back(r.pieces[k]);
   }
   return out;
+}
+
+namespace {
+
+// The pieces offset(distance, part) keeps (0 inside, 1 border): [first, end). False when an
+// argument is anything else, which the registry then binds and reports.
+bool offset_pieces(const std::vector<shape::ArgInput>& args, double& distance, std::uint32_t& first,
+                   std::uint32_t& end) {
+  first = 0;
+  end = 2;
+  bool given = false;
+  for (const shape::ArgInput& a : args) {
+    const double* number = std::get_if<double>(&a.value);
+    const std::string* part = std::get_if<std::string>(&a.value);
+    if (a.name == "distance" && number != nullptr) {
+      distance = *number;
+      given = true;
+    } else if (a.name != "part" || part == nullptr) {
+      return false;
+    } else if (*part == "inside" || *part == "border") {
+      first = *part == "inside" ? 0 : 1;
+      end = first + 1;
+    } else if (*part != "all") {
+      return false;
+    }
+  }
+  return given;
+}
+
+// The box of a flat shape's outline when it is an axis-aligned rectangle.
+std::optional<kernel::Bounds2> rectangle_box(const Geometry& g, Vec3 size) {
+  if (g.kind == Geometry::Kind::kRect) {  // rectangle_outline(size.x, size.y)
+    if (!(size.x > 0 && size.y > 0)) return std::nullopt;
+    return kernel::Bounds2{{0, 0}, {size.x, size.y}};
+  }
+  if (g.kind == Geometry::Kind::kMesh && g.outline) return shape::as_rectangle(*g.outline);
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<OpOutcome> Engine::inset_rectangle(const State& st,
+                                                 const std::vector<shape::ArgInput>& args) {
+  double distance = 0;
+  std::uint32_t first = 0;
+  std::uint32_t end = 0;
+  if (!offset_pieces(args, distance, first, end)) return std::nullopt;
+  const Geometry& g = out_.geometry[st.geometry];
+  const std::optional<kernel::Bounds2> box = rectangle_box(g, st.scope.size);
+  if (!box || !shape::is_rectangle_inset(*box, distance)) return std::nullopt;
+  const FaceTag tag = g.tag;  // the first face's, as the registry's offset takes it
+  OpOutcome out;
+  for (std::uint32_t piece = first; piece < end; ++piece) {
+    const InsetPiece& made = inset_piece(*box, distance, tag, piece);
+    State c = st;
+    c.scope = st.scope.sub(made.offset, made.size);
+    c.geometry = made.geometry;
+    out.children.push_back(c);
+    out.pieces.push_back(piece);
+  }
+  return out;
+}
+
+const Engine::InsetPiece& Engine::inset_piece(const kernel::Bounds2& box, double distance,
+                                              const FaceTag& tag, std::uint32_t piece) {
+  const std::array<std::uint64_t, 7> key{std::bit_cast<std::uint64_t>(box.min.x),
+                                         std::bit_cast<std::uint64_t>(box.min.y),
+                                         std::bit_cast<std::uint64_t>(box.max.x),
+                                         std::bit_cast<std::uint64_t>(box.max.y),
+                                         std::bit_cast<std::uint64_t>(distance),
+                                         tag_key(tag),
+                                         piece};
+  auto [it, added] = insets_.try_emplace(key);
+  if (added) {
+    shape::FlatRegion region =
+        shape::flat_region(shape::rectangle_inset_piece(box, -distance, piece));
+    auto outline = std::make_shared<const kernel::Polygon>(std::move(region.outline));
+    it->second = {add_mesh(shape::flat_mesh(*outline, tag), outline, region.size), region.offset,
+                  region.size};
+  }
+  return it->second;
 }
 
 std::vector<Value> Engine::state_values(const State& st) const {

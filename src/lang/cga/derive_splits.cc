@@ -47,13 +47,13 @@ std::string Engine::for_each_piece(State& st, Axis axis, std::span<const SizeSpe
   }
   shape::resolve_sizes_into(total, sizes, pieces);
   const Geometry::Kind kind = g.kind;  // copies: interning below may grow out_.geometry
-  const FaceTag tag = g.tag;
   const std::array<FaceTag, 6> tags = g.tags;
   const auto n = static_cast<std::uint32_t>(pieces.size());
+  const std::uint32_t rect = flat && n > 0 ? intern_rect(g.tag) : 0;  // every piece's when flat
   for (std::uint32_t k = 0; k < n; ++k) {
     std::uint32_t geometry = 0;
     if (flat) {
-      geometry = intern_rect(tag);
+      geometry = rect;
     } else if (kind != Geometry::Kind::kNone) {
       geometry = intern_box(shape::split_box_tags(tags, axis, pieces[k], total));
     }
