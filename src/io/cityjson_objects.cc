@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 
+#include "io/decimal_text.h"
 #include "io/triangulated.h"
 #include "kernel/semantic.h"
 #include "shape/part_mesh.h"
@@ -46,15 +47,6 @@ void prefetch_lines(const void* data, std::size_t bytes) {
   for (std::size_t offset = 0; offset < std::min<std::size_t>(bytes, 1024); offset += kLine) {
     __builtin_prefetch(at + offset);
   }
-}
-
-// std::to_chars of a coordinate through its 32-bit form when it has one (almost always: that is
-// +-2,147 km in mm), which formats a quarter faster than the 64-bit one.
-char* write_coordinate(char* at, std::int64_t q) {
-  if (q == static_cast<std::int32_t>(q)) {
-    return std::to_chars(at, at + 11, static_cast<std::int32_t>(q)).ptr;
-  }
-  return std::to_chars(at, at + 20, q).ptr;
 }
 
 // The part's mesh; for a shared-mesh instance its placed copy, made in `placed`.
@@ -401,7 +393,7 @@ std::string_view CityObjects::boundaries_text(std::size_t first, std::size_t end
     const std::span<const std::uint32_t> ring = rings_.ring(r);
     for (std::size_t i = 0; i < ring.size(); ++i) {
       if (i > 0) *at++ = ',';
-      at = std::to_chars(at, at + 10, ring[i]).ptr;
+      at = decimal::write(at, ring[i]);
     }
     *at++ = ']';
     *at++ = ']';
@@ -683,7 +675,7 @@ void CityObjects::write_vertices(JsonStream& json) {
       *at++ = '[';
       for (std::size_t k = 0; k < 3; ++k) {
         if (k > 0) *at++ = ',';
-        at = write_coordinate(at, vertices[v][k]);
+        at = decimal::write(at, vertices[v][k]);
       }
       *at++ = ']';
     }
