@@ -84,48 +84,74 @@ std::size_t QuantisedHash::operator()(const Quantised& q) const {
   return static_cast<std::size_t>(h);
 }
 
-// A slot holds a point's number and the high half of its hash: probing compares those, and reads
-// a point (a cache miss, as the points lie in first-use order) only when they match.
+void VertexPool::begin_part(std::size_t vertices) {
+  std::size_t slots = 16;
+  while (slots < 2 * vertices) slots *= 2;
+  part_slots_.assign(slots, kFreeNumber);
+}
+
+// The part's points lie at the end of the list, in cache: a slot holds just a number, and probing
+// compares the points.
 std::uint32_t VertexPool::add(const Quantised& q, std::uint64_t hash) {
-  if (4 * (vertices_.size() + 1) > 3 * slots_.size()) {
-    rehash(std::max<std::size_t>(16, 2 * slots_.size()));
-  }
-  const std::uint64_t tag = hash & ~std::uint64_t{UINT32_MAX};
-  const std::size_t mask = slots_.size() - 1;
+  const std::size_t mask = part_slots_.size() - 1;
   for (std::size_t slot = hash & mask;; slot = (slot + 1) & mask) {
-    const std::uint64_t entry = slots_[slot];
-    if (entry == kFree) {
-      const auto index = static_cast<std::uint32_t>(vertices_.size());
-      slots_[slot] = tag | index;
+    std::uint32_t& entry = part_slots_[slot];
+    if (entry == kFreeNumber) {
+      entry = static_cast<std::uint32_t>(vertices_.size());
       vertices_.push_back(q);
       for (std::size_t k = 0; k < 3; ++k) {
         low_[k] = std::min(low_[k], q[k]);
         high_[k] = std::max(high_[k], q[k]);
       }
-      return index;
+      return entry;
+    }
+    if (vertices_[entry] == q) return entry;
+  }
+}
+
+// The number of `q` in merge()'s table, or `next` when it is not there (then it is added with it).
+// A slot holds the high half of the point's hash too: probing reads a point (far back in the list,
+// a cache miss) only when they match.
+inline std::uint32_t VertexPool::number(const Quantised& q, std::uint64_t hash,
+                                        std::uint32_t next) {
+  const std::uint64_t tag = hash & ~std::uint64_t{UINT32_MAX};
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t slot = hash & mask;; slot = (slot + 1) & mask) {
+    const std::uint64_t entry = slots_[slot];
+    if (entry == kFree) {
+      slots_[slot] = tag | next;
+      return next;
     }
     const auto index = static_cast<std::uint32_t>(entry);
-    const Quantised& p = vertices_[index];
-    if ((entry & ~std::uint64_t{UINT32_MAX}) == tag && p[0] == q[0] && p[1] == q[1] &&
-        p[2] == q[2]) {
-      return index;
-    }
+    if ((entry & ~std::uint64_t{UINT32_MAX}) == tag && vertices_[index] == q) return index;
   }
 }
 
-void VertexPool::prefetch(std::uint64_t hash) const {
-  if (!slots_.empty()) __builtin_prefetch(&slots_[hash & (slots_.size() - 1)]);
-}
-
-void VertexPool::rehash(std::size_t slots) {
+// Points are numbered again in list order, each found in the table (kAhead points ahead its slot
+// is prefetched); a point seen before takes its first number, a new one the next, and moves down
+// to it. Every number stays the same as long as no point comes twice.
+const std::vector<std::uint32_t>& VertexPool::merge() {
+  constexpr std::size_t kAhead = 16;
+  const std::size_t n = vertices_.size();
+  std::size_t slots = 16;
+  while (3 * slots < 4 * n) slots *= 2;
   slots_.assign(slots, kFree);
   const std::size_t mask = slots - 1;
-  for (std::uint32_t index = 0; index < vertices_.size(); ++index) {
-    const std::uint64_t hash = QuantisedHash{}(vertices_[index]);
-    std::size_t slot = hash & mask;
-    while (slots_[slot] != kFree) slot = (slot + 1) & mask;
-    slots_[slot] = (hash & ~std::uint64_t{UINT32_MAX}) | index;
+  renumber_.clear();
+  std::uint32_t next = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i + kAhead < n) __builtin_prefetch(&slots_[QuantisedHash{}(vertices_[i + kAhead]) & mask]);
+    const Quantised q = vertices_[i];
+    const std::uint32_t number = this->number(q, QuantisedHash{}(q), next);
+    if (number == next) vertices_[next++] = q;
+    if (number != i && renumber_.empty()) {  // the first point seen before: numbers change
+      renumber_.reserve(n);
+      for (std::uint32_t j = 0; j < i; ++j) renumber_.push_back(j);
+    }
+    if (!renumber_.empty()) renumber_.push_back(number);
   }
+  vertices_.resize(next);
+  return renumber_;
 }
 
 const std::string* IdSet::insert(std::string_view id) {
@@ -167,14 +193,10 @@ void IdSet::place(std::uint64_t hash, std::uint32_t index) {
 }
 
 void VertexPool::reserve(std::size_t n) {
-  std::size_t slots = 16;
-  while (3 * slots < 4 * n) slots *= 2;
-  if (slots > slots_.size()) rehash(slots);
   vertices_.reserve(n);
 }
 
 void VertexPool::clear() {
-  std::fill(slots_.begin(), slots_.end(), kFree);
   vertices_.clear();
   low_ = kNoLow;
   high_ = kNoHigh;
@@ -192,10 +214,11 @@ inline Quantised CityObjects::quantise(kernel::Vec3 local) const {
   return {round_half_away(d.x), round_half_away(d.y), round_half_away(d.z)};
 }
 
-// Quantises every vertex of the mesh and prefetches its pool slot; pool_index_ marks the vertices
-// that cannot be written. The pool numbers the points later, in the order the faces use them.
+// Quantises every vertex of the mesh and hashes it; pool_index_ marks the vertices that cannot be
+// written. The pool numbers the points later, in the order the faces use them.
 void CityObjects::pool_vertices(const kernel::Mesh& mesh) {
   const std::size_t n = mesh.vertex_count();
+  pool_.begin_part(n);
   pool_index_.assign(n, kUnset);
   points_.resize(n);
   hashes_.resize(n);
@@ -207,7 +230,6 @@ void CityObjects::pool_vertices(const kernel::Mesh& mesh) {
     }
     points_[v] = quantise(p);
     hashes_[v] = QuantisedHash{}(points_[v]);
-    pool_.prefetch(hashes_[v]);
   }
 }
 
@@ -513,13 +535,6 @@ void CityObjects::prefetch_meshes(const shape::Building& building, bool position
   }
 }
 
-void CityObjects::test_solid() {
-  if (untested_ == kNone) return;
-  Object& part = objects_[untested_];
-  part.solid = is_solid(part.first, part.first + part.count);
-  untested_ = kNone;
-}
-
 // About 8 bytes a corner ("123456," and a ring's brackets), 4 a face's semantic value, 200 an
 // object and 32 an attribute: an estimate to reserve room with, as more than is used costs nothing
 // (the pages are never touched).
@@ -545,10 +560,9 @@ void CityObjects::part_id_base(std::string& base, std::string_view id, const sha
 }
 
 // Pools the parts' vertices and keeps their rings now, in the buildings' order (which numbers the
-// vertices); the text comes in write_objects(). A part's solid test waits until the next part's
-// points are quantised and their table slots prefetched: it gives those time to arrive. The ids are
-// given after the geometry, in the same order as ever (the building's, then its parts'), so that
-// their table slots, prefetched before it, are in cache by then (a city's ids do not stay there).
+// vertices); the text comes in write_objects(). The ids are given after the geometry, in the same
+// order as ever (the building's, then its parts'), so that their table slots, prefetched before it,
+// are in cache by then (a city's ids do not stay there).
 std::string CityObjects::add_building(const shape::Building& building, std::size_t index) {
   const std::string id_base =
       building.id.empty() ? "building" + std::to_string(index) : building.id;
@@ -564,10 +578,9 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
     std::optional<kernel::Mesh> placed;  // (an empty Mesh would allocate)
     const kernel::Mesh& mesh = part_mesh(part, placed);
     pool_vertices(mesh);
-    test_solid();  // the previous part's, while the pool's slots come in
     collect_surfaces(mesh);
     object.count = rings_.size() - object.first;
-    untested_ = objects_.size();
+    object.solid = is_solid(object.first, rings_.size());
     objects_.push_back(object);
   }
   const std::string_view id = unique_id(id_base);
@@ -611,6 +624,14 @@ void CityObjects::write_object(JsonStream& json, const Object& object) {
   json.key("type").string(object.type).end_object();
 }
 
+// The pool's numbers of points that several parts use merged, in the rings too (the solid tests,
+// which need no more than a part's own numbers, are done).
+void CityObjects::number_vertices() {
+  const std::vector<std::uint32_t>& renumber = pool_.merge();
+  if (renumber.empty()) return;
+  for (std::uint32_t& index : rings_.indices) index = renumber[index];
+}
+
 // Starts loading what write_object() reads (in id order, objects far apart in memory).
 void CityObjects::prefetch_object(const Object& object) const {
   __builtin_prefetch(object.id.data());
@@ -627,7 +648,7 @@ void CityObjects::prefetch_object(const Object& object) const {
 // prefix, read as a big-endian number (a shorter id's missing bytes as 0, which orders it first
 // as the full comparison would; equal prefixes go to the full comparison).
 void CityObjects::write_objects(JsonStream& json) {
-  test_solid();
+  number_vertices();
   struct Key {
     std::uint64_t prefix;
     std::uint32_t object;
@@ -685,7 +706,6 @@ void CityObjects::write_vertices(JsonStream& json) {
 }
 
 void CityObjects::clear() {
-  untested_ = kNone;
   pool_.clear();
   rings_.clear();
   objects_.clear();
