@@ -501,6 +501,20 @@ std::string_view CityObjects::values_text(bool solid) {
   return {text, static_cast<std::size_t>(at - text)};
 }
 
+// The "surfaces" of collect_types(): [{"type": ...}, ...]. Kept from part to part, as most parts
+// of a city have the same few types in the same order.
+std::string_view CityObjects::surfaces_text() {
+  if (types_ != surfaces_types_) {
+    surfaces_types_ = types_;
+    surfaces_text_.clear();
+    JsonStream json(surfaces_text_);
+    json.begin_array();
+    for (std::string_view type : types_) json.begin_object().key("type").string(type).end_object();
+    json.end_array();
+  }
+  return surfaces_text_;
+}
+
 // {"boundaries", "lod", "semantics" (when some face has a type), "type"}.
 void CityObjects::write_geometry(JsonStream& json, const Object& part) {
   const std::size_t end = part.first + part.count;
@@ -508,9 +522,8 @@ void CityObjects::write_geometry(JsonStream& json, const Object& part) {
   json.key("lod").string("2");
   collect_types(part.first, end);
   if (!types_.empty()) {
-    json.key("semantics").begin_object().key("surfaces").begin_array();
-    for (std::string_view type : types_) json.begin_object().key("type").string(type).end_object();
-    json.end_array().key("values").raw(values_text(part.solid)).end_object();
+    json.key("semantics").begin_object().key("surfaces").raw(surfaces_text());
+    json.key("values").raw(values_text(part.solid)).end_object();
   }
   json.key("type").string(part.solid ? "Solid" : "MultiSurface").end_object();
 }

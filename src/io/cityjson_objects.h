@@ -188,6 +188,7 @@ class CityObjects {
   std::string_view boundaries_text(std::size_t first, std::size_t end, bool solid);
   void collect_types(std::size_t first, std::size_t end);
   std::string_view values_text(bool solid);
+  std::string_view surfaces_text();
   void write_geometry(JsonStream& json, const Object& part);
 
   void estimate_text(const Object& object);
@@ -213,6 +214,8 @@ class CityObjects {
   std::size_t scratch_size_ = 0;           // of the vertices
   std::vector<std::string_view> types_;    // a geometry's surface types
   std::vector<int> values_;                // its rings' positions in types_ (-1: none)
+  std::vector<std::string_view> surfaces_types_;  // the types whose "surfaces" text is kept
+  std::string surfaces_text_;
   // The solid test's numbering of a part's vertices: pool vertex -> the test that numbered it (high
   // half) and its number (low half); corner -> its vertex's number.
   mutable std::vector<std::uint64_t> local_number_;
