@@ -6,7 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
+#include "io/decimal_text.h"
 #include "io/triangulated.h"
 #include "kernel/semantic.h"
 #include "shape/part_mesh.h"
@@ -34,27 +36,49 @@ bool quantisable(kernel::Vec3 offset) {
   return std::abs(offset.x) < kLimit && std::abs(offset.y) < kLimit && std::abs(offset.z) < kLimit;
 }
 
+// a == b, inline (std::array's == calls memcmp).
+bool same(const Quantised& a, const Quantised& b) {
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
 const shape::AttributeMap* attributes_of(const shape::AttributeMap& attributes) {
   return attributes.empty() ? nullptr : &attributes;
 }
 
-// Starts loading `bytes` from `data` on, up to 1 kB (a larger part's rings have time to come in
-// while its first are written).
+// Starts loading every cache line of `bytes` from `data` on, up to 1 kB (a larger part's rings
+// have time to come in while its first are written). The lines are counted from the one `data` is
+// in: counted from `data`, the last line of an array that does not start a line was left out.
 void prefetch_lines(const void* data, std::size_t bytes) {
-  constexpr std::size_t kLine = 64;
-  const auto* at = static_cast<const char*>(data);
-  for (std::size_t offset = 0; offset < std::min<std::size_t>(bytes, 1024); offset += kLine) {
-    __builtin_prefetch(at + offset);
+  constexpr std::uintptr_t kLine = 64;
+  const auto begin = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t end = begin + std::min<std::size_t>(bytes, 1024);
+  for (std::uintptr_t line = begin & ~(kLine - 1); line < end; line += kLine) {
+    __builtin_prefetch(reinterpret_cast<const void*>(line));
   }
 }
 
-// std::to_chars of a coordinate through its 32-bit form when it has one (almost always: that is
-// +-2,147 km in mm), which formats a quarter faster than the 64-bit one.
-char* write_coordinate(char* at, std::int64_t q) {
-  if (q == static_cast<std::int32_t>(q)) {
-    return std::to_chars(at, at + 11, static_cast<std::int32_t>(q)).ptr;
+// An object's place in id order: the first 8 bytes of its id (see CityObjects::write_objects()).
+struct IdKey {
+  std::uint64_t prefix;
+  std::uint32_t object;
+};
+
+// Sorts `keys` by prefix, least significant byte first (a radix sort: a comparison sort of a city's
+// ids cost as much as all the rest of ordering them); a byte the same in every key is skipped.
+void sort_by_prefix(std::vector<IdKey>& keys) {
+  constexpr std::size_t kBytes = 8;
+  std::array<std::array<std::uint32_t, 256>, kBytes> counts{};
+  for (const IdKey& key : keys) {
+    for (std::size_t b = 0; b < kBytes; ++b) ++counts[b][(key.prefix >> (8 * b)) & 0xFFU];
   }
-  return std::to_chars(at, at + 20, q).ptr;
+  std::vector<IdKey> sorted(keys.size());
+  for (std::size_t b = 0; b < kBytes; ++b) {
+    if (keys.empty() || counts[b][(keys[0].prefix >> (8 * b)) & 0xFFU] == keys.size()) continue;
+    std::uint32_t offset = 0;
+    for (std::uint32_t& count : counts[b]) offset += std::exchange(count, offset);
+    for (const IdKey& key : keys) sorted[counts[b][(key.prefix >> (8 * b)) & 0xFFU]++] = key;
+    keys.swap(sorted);
+  }
 }
 
 // The part's mesh; for a shared-mesh instance its placed copy, made in `placed`.
@@ -92,48 +116,76 @@ std::size_t QuantisedHash::operator()(const Quantised& q) const {
   return static_cast<std::size_t>(h);
 }
 
-// A slot holds a point's number and the high half of its hash: probing compares those, and reads
-// a point (a cache miss, as the points lie in first-use order) only when they match.
+void VertexPool::begin_part(std::size_t vertices) {
+  std::size_t slots = 16;
+  while (slots < 2 * vertices) slots *= 2;
+  part_slots_.assign(slots, kFreeNumber);
+}
+
+// The part's points lie at the end of the list, in cache: a slot holds just a number, and probing
+// compares the points.
 std::uint32_t VertexPool::add(const Quantised& q, std::uint64_t hash) {
-  if (4 * (vertices_.size() + 1) > 3 * slots_.size()) {
-    rehash(std::max<std::size_t>(16, 2 * slots_.size()));
-  }
-  const std::uint64_t tag = hash & ~std::uint64_t{UINT32_MAX};
-  const std::size_t mask = slots_.size() - 1;
+  const std::size_t mask = part_slots_.size() - 1;
   for (std::size_t slot = hash & mask;; slot = (slot + 1) & mask) {
-    const std::uint64_t entry = slots_[slot];
-    if (entry == kFree) {
-      const auto index = static_cast<std::uint32_t>(vertices_.size());
-      slots_[slot] = tag | index;
+    std::uint32_t& entry = part_slots_[slot];
+    if (entry == kFreeNumber) {
+      entry = static_cast<std::uint32_t>(vertices_.size());
       vertices_.push_back(q);
       for (std::size_t k = 0; k < 3; ++k) {
         low_[k] = std::min(low_[k], q[k]);
         high_[k] = std::max(high_[k], q[k]);
       }
-      return index;
+      return entry;
+    }
+    if (same(vertices_[entry], q)) return entry;
+  }
+}
+
+// The number of `q` in merge()'s table, or `next` when it is not there (then it is added with it).
+// A slot holds the high half of the point's hash too: probing reads a point (far back in the list,
+// a cache miss) only when they match.
+inline std::uint32_t VertexPool::number(const Quantised& q, std::uint64_t hash,
+                                        std::uint32_t next) {
+  const std::uint64_t tag = hash & ~std::uint64_t{UINT32_MAX};
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t slot = hash & mask;; slot = (slot + 1) & mask) {
+    const std::uint64_t entry = slots_[slot];
+    if (entry == kFree) {
+      slots_[slot] = tag | next;
+      return next;
     }
     const auto index = static_cast<std::uint32_t>(entry);
-    const Quantised& p = vertices_[index];
-    if ((entry & ~std::uint64_t{UINT32_MAX}) == tag && p[0] == q[0] && p[1] == q[1] &&
-        p[2] == q[2]) {
-      return index;
-    }
+    if ((entry & ~std::uint64_t{UINT32_MAX}) == tag && same(vertices_[index], q)) return index;
   }
 }
 
-void VertexPool::prefetch(std::uint64_t hash) const {
-  if (!slots_.empty()) __builtin_prefetch(&slots_[hash & (slots_.size() - 1)]);
-}
-
-void VertexPool::rehash(std::size_t slots) {
+// Points are numbered again in list order, each found in the table (kAhead points ahead its slot
+// is prefetched, 2 kAhead ahead the point itself); a point seen before takes its first number, a
+// new one the next, and moves down to it. Every number stays the same as long as no point comes
+// twice.
+const std::vector<std::uint32_t>& VertexPool::merge() {
+  constexpr std::size_t kAhead = 16;
+  const std::size_t n = vertices_.size();
+  std::size_t slots = 16;
+  while (3 * slots < 4 * n) slots *= 2;
   slots_.assign(slots, kFree);
   const std::size_t mask = slots - 1;
-  for (std::uint32_t index = 0; index < vertices_.size(); ++index) {
-    const std::uint64_t hash = QuantisedHash{}(vertices_[index]);
-    std::size_t slot = hash & mask;
-    while (slots_[slot] != kFree) slot = (slot + 1) & mask;
-    slots_[slot] = (hash & ~std::uint64_t{UINT32_MAX}) | index;
+  renumber_.clear();
+  std::uint32_t next = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i + kAhead < n) __builtin_prefetch(&slots_[QuantisedHash{}(vertices_[i + kAhead]) & mask]);
+    if (i + 2 * kAhead < n) __builtin_prefetch(&vertices_[i + 2 * kAhead]);
+    const Quantised q = vertices_[i];
+    const std::uint32_t number = this->number(q, QuantisedHash{}(q), next);
+    if (number == next) vertices_[next++] = q;
+    if (number != i && renumber_.empty()) {  // the first point seen before: numbers change
+      renumber_.reserve(n);
+      for (std::uint32_t j = 0; j < i; ++j) renumber_.push_back(j);
+    }
+    if (!renumber_.empty()) renumber_.push_back(number);
   }
+  vertices_.resize(next);
+  return renumber_;
 }
 
 const std::string* IdSet::insert(std::string_view id) {
@@ -175,14 +227,10 @@ void IdSet::place(std::uint64_t hash, std::uint32_t index) {
 }
 
 void VertexPool::reserve(std::size_t n) {
-  std::size_t slots = 16;
-  while (3 * slots < 4 * n) slots *= 2;
-  if (slots > slots_.size()) rehash(slots);
   vertices_.reserve(n);
 }
 
 void VertexPool::clear() {
-  std::fill(slots_.begin(), slots_.end(), kFree);
   vertices_.clear();
   low_ = kNoLow;
   high_ = kNoHigh;
@@ -200,10 +248,11 @@ inline Quantised CityObjects::quantise(kernel::Vec3 local) const {
   return {round_half_away(d.x), round_half_away(d.y), round_half_away(d.z)};
 }
 
-// Quantises every vertex of the mesh and prefetches its pool slot; pool_index_ marks the vertices
-// that cannot be written. The pool numbers the points later, in the order the faces use them.
+// Quantises every vertex of the mesh and hashes it; pool_index_ marks the vertices that cannot be
+// written. The pool numbers the points later, in the order the faces use them.
 void CityObjects::pool_vertices(const kernel::Mesh& mesh) {
   const std::size_t n = mesh.vertex_count();
+  pool_.begin_part(n);
   pool_index_.assign(n, kUnset);
   points_.resize(n);
   hashes_.resize(n);
@@ -215,7 +264,6 @@ void CityObjects::pool_vertices(const kernel::Mesh& mesh) {
     }
     points_[v] = quantise(p);
     hashes_[v] = QuantisedHash{}(points_[v]);
-    pool_.prefetch(hashes_[v]);
   }
 }
 
@@ -401,7 +449,7 @@ std::string_view CityObjects::boundaries_text(std::size_t first, std::size_t end
     const std::span<const std::uint32_t> ring = rings_.ring(r);
     for (std::size_t i = 0; i < ring.size(); ++i) {
       if (i > 0) *at++ = ',';
-      at = std::to_chars(at, at + 10, ring[i]).ptr;
+      at = decimal::write(at, ring[i]);
     }
     *at++ = ']';
     *at++ = ']';
@@ -453,6 +501,20 @@ std::string_view CityObjects::values_text(bool solid) {
   return {text, static_cast<std::size_t>(at - text)};
 }
 
+// The "surfaces" of collect_types(): [{"type": ...}, ...]. Kept from part to part, as most parts
+// of a city have the same few types in the same order.
+std::string_view CityObjects::surfaces_text() {
+  if (types_ != surfaces_types_) {
+    surfaces_types_ = types_;
+    surfaces_text_.clear();
+    JsonStream json(surfaces_text_);
+    json.begin_array();
+    for (std::string_view type : types_) json.begin_object().key("type").string(type).end_object();
+    json.end_array();
+  }
+  return surfaces_text_;
+}
+
 // {"boundaries", "lod", "semantics" (when some face has a type), "type"}.
 void CityObjects::write_geometry(JsonStream& json, const Object& part) {
   const std::size_t end = part.first + part.count;
@@ -460,9 +522,8 @@ void CityObjects::write_geometry(JsonStream& json, const Object& part) {
   json.key("lod").string("2");
   collect_types(part.first, end);
   if (!types_.empty()) {
-    json.key("semantics").begin_object().key("surfaces").begin_array();
-    for (std::string_view type : types_) json.begin_object().key("type").string(type).end_object();
-    json.end_array().key("values").raw(values_text(part.solid)).end_object();
+    json.key("semantics").begin_object().key("surfaces").raw(surfaces_text());
+    json.key("values").raw(values_text(part.solid)).end_object();
   }
   json.key("type").string(part.solid ? "Solid" : "MultiSurface").end_object();
 }
@@ -521,13 +582,6 @@ void CityObjects::prefetch_meshes(const shape::Building& building, bool position
   }
 }
 
-void CityObjects::test_solid() {
-  if (untested_ == kNone) return;
-  Object& part = objects_[untested_];
-  part.solid = is_solid(part.first, part.first + part.count);
-  untested_ = kNone;
-}
-
 // About 8 bytes a corner ("123456," and a ring's brackets), 4 a face's semantic value, 200 an
 // object and 32 an attribute: an estimate to reserve room with, as more than is used costs nothing
 // (the pages are never touched).
@@ -553,10 +607,9 @@ void CityObjects::part_id_base(std::string& base, std::string_view id, const sha
 }
 
 // Pools the parts' vertices and keeps their rings now, in the buildings' order (which numbers the
-// vertices); the text comes in write_objects(). A part's solid test waits until the next part's
-// points are quantised and their table slots prefetched: it gives those time to arrive. The ids are
-// given after the geometry, in the same order as ever (the building's, then its parts'), so that
-// their table slots, prefetched before it, are in cache by then (a city's ids do not stay there).
+// vertices); the text comes in write_objects(). The ids are given after the geometry, in the same
+// order as ever (the building's, then its parts'), so that their table slots, prefetched before it,
+// are in cache by then (a city's ids do not stay there).
 std::string CityObjects::add_building(const shape::Building& building, std::size_t index) {
   const std::string id_base =
       building.id.empty() ? "building" + std::to_string(index) : building.id;
@@ -572,10 +625,9 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
     std::optional<kernel::Mesh> placed;  // (an empty Mesh would allocate)
     const kernel::Mesh& mesh = part_mesh(part, placed);
     pool_vertices(mesh);
-    test_solid();  // the previous part's, while the pool's slots come in
     collect_surfaces(mesh);
     object.count = rings_.size() - object.first;
-    untested_ = objects_.size();
+    object.solid = is_solid(object.first, rings_.size());
     objects_.push_back(object);
   }
   const std::string_view id = unique_id(id_base);
@@ -619,6 +671,14 @@ void CityObjects::write_object(JsonStream& json, const Object& object) {
   json.key("type").string(object.type).end_object();
 }
 
+// The pool's numbers of points that several parts use merged, in the rings too (the solid tests,
+// which need no more than a part's own numbers, are done).
+void CityObjects::number_vertices() {
+  const std::vector<std::uint32_t>& renumber = pool_.merge();
+  if (renumber.empty()) return;
+  for (std::uint32_t& index : rings_.indices) index = renumber[index];
+}
+
 // Starts loading what write_object() reads (in id order, objects far apart in memory).
 void CityObjects::prefetch_object(const Object& object) const {
   __builtin_prefetch(object.id.data());
@@ -631,16 +691,12 @@ void CityObjects::prefetch_object(const Object& object) const {
                  (corners_end - corners_begin) * sizeof(std::uint32_t));
 }
 
-// Sorted by id through a list of (first 8 bytes, position): most comparisons are settled by the
-// prefix, read as a big-endian number (a shorter id's missing bytes as 0, which orders it first
-// as the full comparison would; equal prefixes go to the full comparison).
+// Sorted by id through a list of (first 8 bytes, position): most ids differ in the prefix, read
+// as a big-endian number (a shorter id's missing bytes as 0, which orders it first as the full
+// comparison would) and radix-sorted; ids of equal prefixes are then sorted by the full comparison.
 void CityObjects::write_objects(JsonStream& json) {
-  test_solid();
-  struct Key {
-    std::uint64_t prefix;
-    std::uint32_t object;
-  };
-  std::vector<Key> order;
+  number_vertices();
+  std::vector<IdKey> order;
   order.reserve(objects_.size());
   for (std::uint32_t o = 0; o < objects_.size(); ++o) {
     std::uint64_t prefix = 0;
@@ -650,10 +706,17 @@ void CityObjects::write_objects(JsonStream& json) {
     }
     order.push_back({prefix, o});
   }
-  std::sort(order.begin(), order.end(), [this](const Key& a, const Key& b) {
-    if (a.prefix != b.prefix) return a.prefix < b.prefix;
-    return objects_[a.object].id < objects_[b.object].id;
-  });
+  sort_by_prefix(order);
+  for (auto run = order.begin(); run != order.end();) {
+    const auto run_end = std::find_if(run + 1, order.end(),
+                                      [&](const IdKey& key) { return key.prefix != run->prefix; });
+    if (run_end - run > 1) {
+      std::sort(run, run_end, [this](const IdKey& a, const IdKey& b) {
+        return objects_[a.object].id < objects_[b.object].id;
+      });
+    }
+    run = run_end;
+  }
   // Objects are prefetched kAhead ahead, their rings and ids half that (once the object is in).
   constexpr std::size_t kAhead = 8;
   json.begin_object();
@@ -668,9 +731,11 @@ void CityObjects::write_objects(JsonStream& json) {
 }
 
 // Formatted here a chunk of points at a time, as the boundaries are (a city has hundreds of
-// thousands of points).
+// thousands of points). The points are prefetched kAhead ahead: though read in order, they were
+// waited for (the hardware's prefetching did not keep up on the 2-core test machine).
 void CityObjects::write_vertices(JsonStream& json) {
   constexpr std::size_t kChunk = 256;
+  constexpr std::size_t kAhead = 32;
   // At most 20 characters a coordinate, 4 brackets and commas a point.
   char* const text = scratch(64 * kChunk);
   const std::vector<Quantised>& vertices = pool_.vertices();
@@ -679,11 +744,12 @@ void CityObjects::write_vertices(JsonStream& json) {
     char* at = text;
     const std::size_t chunk_end = std::min(chunk + kChunk, vertices.size());
     for (std::size_t v = chunk; v < chunk_end; ++v) {
+      if (v + kAhead < vertices.size()) __builtin_prefetch(&vertices[v + kAhead]);
       if (v > chunk) *at++ = ',';
       *at++ = '[';
       for (std::size_t k = 0; k < 3; ++k) {
         if (k > 0) *at++ = ',';
-        at = write_coordinate(at, vertices[v][k]);
+        at = decimal::write(at, vertices[v][k]);
       }
       *at++ = ']';
     }
@@ -693,7 +759,6 @@ void CityObjects::write_vertices(JsonStream& json) {
 }
 
 void CityObjects::clear() {
-  untested_ = kNone;
   pool_.clear();
   rings_.clear();
   objects_.clear();

@@ -32,17 +32,21 @@ struct QuantisedHash {
   std::size_t operator()(const Quantised& q) const;
 };
 
-// A vertex list: every distinct quantised point once, numbered in first-use order. The points are
-// found by open addressing in a flat table of their numbers (a node-based map cost a cache miss
-// or two per corner, the most of writing a city).
+// A vertex list: every distinct quantised point once, numbered in first-use order. Points come
+// part by part and are numbered as they come, each once within its part (found in a small table
+// of the part's own points); merge() then merges the numbers of a point that several parts use into
+// its first. Looking each point up in a table of the whole city as it came cost a cache miss or
+// two a point, the most of writing a city: merge() looks them up in one loop over the list, where
+// the misses are prefetched far enough ahead to overlap.
 class VertexPool {
  public:
-  std::uint32_t add(const Quantised& q) { return add(q, QuantisedHash{}(q)); }
-  // add() with the point's QuantisedHash computed beforehand (see prefetch()).
+  // Starts a part of at most `vertices` distinct points.
+  void begin_part(std::size_t vertices);
+  // The point's number, the same for the same point within the part. `hash`: its QuantisedHash.
   std::uint32_t add(const Quantised& q, std::uint64_t hash);
-  // Starts loading the table slot where add(q, hash) looks first. A table of a city's points does
-  // not stay in cache: prefetching a part's points before adding them overlaps their misses.
-  void prefetch(std::uint64_t hash) const;
+  // Merges the numbers of every point into its first (the list keeps the first of each point).
+  // Returns the new number of each old one, or an empty list when no point had two.
+  const std::vector<std::uint32_t>& merge();
   void reserve(std::size_t n);
   void clear();
   const std::vector<Quantised>& vertices() const { return vertices_; }
@@ -51,14 +55,18 @@ class VertexPool {
   const Quantised& high() const { return high_; }
 
  private:
+  static constexpr std::uint32_t kFreeNumber = UINT32_MAX;
   static constexpr std::uint64_t kFree = UINT64_MAX;
   static constexpr Quantised kNoLow{INT64_MAX, INT64_MAX, INT64_MAX};
   static constexpr Quantised kNoHigh{INT64_MIN, INT64_MIN, INT64_MIN};
-  void rehash(std::size_t slots);
+  std::uint32_t number(const Quantised& q, std::uint64_t hash, std::uint32_t next);
 
-  // A power of two, at most three quarters of them used: the high half of a point's hash and its
-  // number.
+  // The part's points by hash (a power of two, at most half of them used): their numbers.
+  std::vector<std::uint32_t> part_slots_;
+  // merge()'s table of the whole list by hash (a power of two, at most three quarters used): the
+  // high half of a point's hash and its number.
   std::vector<std::uint64_t> slots_;
+  std::vector<std::uint32_t> renumber_;
   std::vector<Quantised> vertices_;
   Quantised low_ = kNoLow;
   Quantised high_ = kNoHigh;
@@ -170,7 +178,7 @@ class CityObjects {
   bool numbered_as_last(std::size_t first, std::size_t end, std::size_t corners_begin) const;
   bool closed_shell(std::size_t first, std::size_t end, std::size_t corners_begin,
                     std::uint32_t locals) const;
-  void test_solid();
+  void number_vertices();
   double volume(std::size_t first, std::size_t end, std::uint32_t locals) const;
   static void prefetch_parts(const shape::Building& building);
   static void prefetch_meshes(const shape::Building& building, bool positions_only);
@@ -180,6 +188,7 @@ class CityObjects {
   std::string_view boundaries_text(std::size_t first, std::size_t end, bool solid);
   void collect_types(std::size_t first, std::size_t end);
   std::string_view values_text(bool solid);
+  std::string_view surfaces_text();
   void write_geometry(JsonStream& json, const Object& part);
 
   void estimate_text(const Object& object);
@@ -195,8 +204,6 @@ class CityObjects {
   Rings rings_;
   std::vector<Object> objects_;
   std::size_t text_size_ = 2;  // text_size_estimate()
-  static constexpr std::size_t kNone = SIZE_MAX;
-  std::size_t untested_ = kNone;  // the part in objects_ whose solid test is still to come
 
   // Scratch reused from part to part.
   std::vector<std::string> part_ids_;      // a building's parts' ids before made unique
@@ -207,6 +214,8 @@ class CityObjects {
   std::size_t scratch_size_ = 0;           // of the vertices
   std::vector<std::string_view> types_;    // a geometry's surface types
   std::vector<int> values_;                // its rings' positions in types_ (-1: none)
+  std::vector<std::string_view> surfaces_types_;  // the types whose "surfaces" text is kept
+  std::string surfaces_text_;
   // The solid test's numbering of a part's vertices: pool vertex -> the test that numbered it (high
   // half) and its number (low half); corner -> its vertex's number.
   mutable std::vector<std::uint64_t> local_number_;
