@@ -223,6 +223,16 @@ enum class OffsetPart : std::uint8_t { kInside, kBorder, kAll };
 // Offsets a flat shape's outline by `distance` meters (negative shrinks: CGA offset). Children:
 // the inside part (piece 0) and/or the border between outline and inside (piece 1).
 OpResult offset(ShapeTree& tree, ShapeId id, double distance, OffsetPart part);
+// The part named by offset's "part" argument ("inside", "border", else all).
+OffsetPart offset_part(std::string_view name);
+// offset's distance and part read from unbound arguments, for a caller that cuts rectangles
+// itself (the CGA engine's window insets, ops_fast.h): nullopt when the distance is missing or an
+// argument is anything the registry would have to bind or report.
+struct OffsetRequest {
+  double distance;
+  OffsetPart part;
+};
+std::optional<OffsetRequest> offset_request(const std::vector<ArgInput>& args);
 enum class EdgeSelector : std::uint8_t { kFront, kBack, kLeft, kRight, kSide, kAll };
 // Cuts a strip `distance` meters (> 0) deep along the selected edges of a flat shape (edges whose
 // outward normal in the scope's xy plane is closest to -y front, +y back, -x left, +x right).

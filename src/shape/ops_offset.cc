@@ -179,6 +179,31 @@ OpResult setback(ShapeTree& tree, ShapeId id, std::span<const double> edge_depth
   return cut_strips(tree, id, strips, part);
 }
 
+OffsetPart offset_part(std::string_view name) {
+  if (name == "inside") return OffsetPart::kInside;
+  if (name == "border") return OffsetPart::kBorder;
+  return OffsetPart::kAll;
+}
+
+std::optional<OffsetRequest> offset_request(const std::vector<ArgInput>& args) {
+  std::optional<double> distance;
+  OffsetPart part = OffsetPart::kAll;
+  for (const ArgInput& a : args) {
+    const double* number = std::get_if<double>(&a.value);
+    const std::string* name = std::get_if<std::string>(&a.value);
+    if (a.name == "distance" && number != nullptr) {
+      distance = *number;
+    } else if (a.name == "part" && name != nullptr &&
+               (*name == "inside" || *name == "border" || *name == "all")) {
+      part = offset_part(*name);
+    } else {
+      return std::nullopt;
+    }
+  }
+  if (!distance) return std::nullopt;
+  return OffsetRequest{*distance, part};
+}
+
 ParamDecl part_param() {
   return {"part",
           ParamType::kEnum,
@@ -210,11 +235,7 @@ std::vector<Operation> offset_operations() {
          {},
          {}}},
        [](ShapeTree& t, ShapeId id, const Arguments& a, const Context&) {
-         const std::string& p = a.string("part");
-         const OffsetPart part = p == "inside"   ? OffsetPart::kInside
-                                 : p == "border" ? OffsetPart::kBorder
-                                                 : OffsetPart::kAll;
-         return offset(t, id, a.number("distance"), part);
+         return offset(t, id, a.number("distance"), offset_part(a.string("part")));
        }});
   ops.push_back(
       {"setback",

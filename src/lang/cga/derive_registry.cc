@@ -7,6 +7,7 @@
 #include <cctype>
 
 #include "lang/cga/derive_engine.h"
+#include "shape/ops.h"
 #include "shape/shape_tree.h"
 
 namespace insula::lang::cga::detail {
@@ -69,31 +70,6 @@ OpOutcome Engine::run_op(const State& st, std::string_view name,
 
 namespace {
 
-// The pieces offset(distance, part) keeps (0 inside, 1 border): [first, end). False when an
-// argument is anything else, which the registry then binds and reports.
-bool offset_pieces(const std::vector<shape::ArgInput>& args, double& distance, std::uint32_t& first,
-                   std::uint32_t& end) {
-  first = 0;
-  end = 2;
-  bool given = false;
-  for (const shape::ArgInput& a : args) {
-    const double* number = std::get_if<double>(&a.value);
-    const std::string* part = std::get_if<std::string>(&a.value);
-    if (a.name == "distance" && number != nullptr) {
-      distance = *number;
-      given = true;
-    } else if (a.name != "part" || part == nullptr) {
-      return false;
-    } else if (*part == "inside" || *part == "border") {
-      first = *part == "inside" ? 0 : 1;
-      end = first + 1;
-    } else if (*part != "all") {
-      return false;
-    }
-  }
-  return given;
-}
-
 // The box of a flat shape's outline when it is an axis-aligned rectangle.
 std::optional<kernel::Bounds2> rectangle_box(const Geometry& g, Vec3 size) {
   if (g.kind == Geometry::Kind::kRect) {  // rectangle_outline(size.x, size.y)
@@ -108,10 +84,12 @@ std::optional<kernel::Bounds2> rectangle_box(const Geometry& g, Vec3 size) {
 
 std::optional<OpOutcome> Engine::inset_rectangle(const State& st,
                                                  const std::vector<shape::ArgInput>& args) {
-  double distance = 0;
-  std::uint32_t first = 0;
-  std::uint32_t end = 0;
-  if (!offset_pieces(args, distance, first, end)) return std::nullopt;
+  const std::optional<shape::OffsetRequest> request = shape::offset_request(args);
+  if (!request) return std::nullopt;
+  const double distance = request->distance;
+  // The pieces kept (0 inside, 1 border): [first, end).
+  const std::uint32_t first = request->part == shape::OffsetPart::kBorder ? 1 : 0;
+  const std::uint32_t end = request->part == shape::OffsetPart::kInside ? 1 : 2;
   const Geometry& g = out_.geometry[st.geometry];
   const std::optional<kernel::Bounds2> box = rectangle_box(g, st.scope.size);
   if (!box || !shape::is_rectangle_inset(*box, distance)) return std::nullopt;
