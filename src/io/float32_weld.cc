@@ -33,18 +33,6 @@ std::size_t table_capacity(std::size_t n) {
   return capacity;
 }
 
-// Whether no two of a face's keys are equal (a face has a handful of corners; a long loop is
-// left to contract_loop).
-bool distinct(std::span<const std::uint32_t> keys) {
-  if (keys.size() < 3 || keys.size() > 16) return false;
-  for (std::size_t i = 1; i < keys.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j) {
-      if (keys[i] == keys[j]) return false;
-    }
-  }
-  return true;
-}
-
 // The position `p` is written at, to compare: float32 or a multiple of `grid` (glTF's Y-up frame).
 Float3 rounded(kernel::Vec3 p, double grid) {
   if (grid <= 0) return to_y_up(p);
@@ -55,18 +43,15 @@ Float3 rounded(kernel::Vec3 p, double grid) {
 }  // namespace
 
 bool Float32Weld::run(const kernel::Mesh& mesh, double grid) {
+  active_ = false;
+  if (!closed_and_oriented(mesh)) return false;
   const auto n = static_cast<std::uint32_t>(mesh.vertex_count());
   parent_.resize(n);
   std::iota(parent_.begin(), parent_.end(), 0U);
-  active_ = false;
-  if (!collapses(mesh, grid)) return false;
   group(mesh, grid);
   active_ = true;
   flatten();
   triangulate_all(mesh);
-  // Only a shell that was closed and oriented can be kept so; an open or non-manifold mesh (a
-  // triangle soup, an open surface) is contracted face by face and left as it is otherwise.
-  if (!closed_and_oriented(mesh)) return true;
   for (int pass = 0; pass < kMaxPasses && unite_bad_edges(); ++pass) {
     flatten();
     triangulate_all(mesh);
@@ -81,6 +66,7 @@ void Float32Weld::group(const kernel::Mesh& mesh, double grid) {
   const std::size_t n = mesh.vertex_count();
   const std::size_t capacity = table_capacity(n);
   slots_.assign(capacity, kFree);
+  rounded_.resize(n);
   for (std::uint32_t v = 0; v < n; ++v) {
     Float3& r = rounded_[v];
     r = rounded(mesh.position(v), grid);
@@ -109,27 +95,6 @@ void Float32Weld::find_same(const kernel::Mesh& mesh) {
     if (exact_slots_[slot] == kFree) exact_slots_[slot] = v;
     same_[v] = exact_slots_[slot];
   }
-}
-
-// Whether two vertices at different positions round to one: the usual answer, no, found with a
-// hash table of the rounded positions rather than by sorting the vertices.
-bool Float32Weld::collapses(const kernel::Mesh& mesh, double grid) {
-  const std::size_t n = mesh.vertex_count();
-  const std::size_t capacity = table_capacity(n);
-  slots_.assign(capacity, kFree);
-  rounded_.resize(n);
-  for (std::uint32_t v = 0; v < n; ++v) {
-    Float3& r = rounded_[v];
-    r = rounded(mesh.position(v), grid);
-    for (float& c : r) c += 0.0F;  // -0 as +0: they compare equal
-    std::size_t slot = hash_slot(r, capacity);
-    for (; slots_[slot] != kFree; slot = (slot + 1) & (capacity - 1)) {
-      const std::uint32_t u = slots_[slot];
-      if (rounded_[u] == r && !(mesh.position(u) == mesh.position(v))) return true;
-    }
-    slots_[slot] = v;
-  }
-  return false;
 }
 
 std::uint32_t Float32Weld::find(std::uint32_t v) {
@@ -210,39 +175,24 @@ std::uint64_t Float32Weld::edge_sum(const kernel::Mesh& mesh) {
   return sum;
 }
 
+// Each face contracted over the groups and triangulated at its representatives' positions.
 void Float32Weld::triangulate_all(const kernel::Mesh& mesh) {
   triangles_.clear();
   offsets_.assign(1, 0);
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     keys_.clear();
-    for (std::uint32_t v : mesh.face(f)) keys_.push_back(parent_[v]);
-    if (distinct(keys_)) {
-      // Nothing contracts: the face is its one piece (what contract_loop gives), in order.
-      corners_.resize(keys_.size());
-      std::iota(corners_.begin(), corners_.end(), 0U);
-      triangulate_piece(mesh, f, corners_);
-    } else {
-      for (const std::vector<std::uint32_t>& piece : kernel::contract_loop(keys_)) {
-        triangulate_piece(mesh, f, piece);
-      }
+    positions_.clear();
+    for (std::uint32_t v : mesh.face(f)) {
+      keys_.push_back(parent_[v]);
+      positions_.push_back(mesh.position(parent_[v]));
+    }
+    corner_triangles_.clear();
+    triangulator_.triangulate_contracted(keys_, positions_, kernel::face_normal(mesh, f),
+                                         corner_triangles_);
+    for (const CornerTriangle& t : corner_triangles_) {
+      triangles_.push_back({keys_[t[0]], keys_[t[1]], keys_[t[2]]});
     }
     offsets_.push_back(triangles_.size());
-  }
-}
-
-// A piece the triangulator rejects (it may overlap itself after rounding) still closes the shell
-// as a fan: every fan triangle follows the loop's orientation.
-void Float32Weld::triangulate_piece(const kernel::Mesh& mesh, std::size_t face,
-                                    std::span<const std::uint32_t> corners) {
-  piece_.clear();
-  for (std::uint32_t corner : corners) piece_.push_back(mesh.position(keys_[corner]));
-  corner_triangles_.clear();
-  if (!triangulator_.triangulate(piece_, kernel::face_normal(mesh, face), corner_triangles_)) {
-    for (std::uint32_t i = 1; i + 1 < corners.size(); ++i)
-      corner_triangles_.push_back({0, i, i + 1});
-  }
-  for (const CornerTriangle& t : corner_triangles_) {
-    triangles_.push_back({keys_[corners[t[0]]], keys_[corners[t[1]]], keys_[corners[t[2]]]});
   }
 }
 

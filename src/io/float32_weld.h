@@ -24,21 +24,26 @@ Float3 to_y_up(kernel::Vec3 p);
 
 class Float32Weld {
  public:
-  // Groups the vertices of `mesh` written as one. Returns false, with every vertex its own
-  // representative, when no two vertices at different positions round to one float32 position
-  // (the usual case: the caller triangulates as it always does). Otherwise vertices at one
-  // float32 position form a group, every face is contracted over the groups
-  // (kernel::contract_loop) and its pieces triangulated; if the mesh is closed and consistently
-  // oriented (vertices at identical positions taken as one), the two end points of every
-  // triangle edge used more than once in a direction or without its reverse are then grouped too,
-  // and the faces triangulated again, until no such edge is left (at most kMaxPasses passes).
-  // With `grid` > 0 (meters), positions are rounded to multiples of `grid` instead: the grid of
-  // quantized glTF positions (KHR_mesh_quantization), where the same holds at a coarser step.
+  // For a mesh two of whose vertices at different positions round to one float32 position (the
+  // caller finds them as it looks its positions up). Only a shell that was closed and consistently
+  // oriented can be kept so: for one, vertices at one float32 position form a group, every face is
+  // contracted over the groups (FaceTriangulator::triangulate_contracted) and its pieces
+  // triangulated; then the two end points of every triangle edge used more than once in a
+  // direction or without its reverse are grouped too, and the faces triangulated again, until no
+  // such edge is left (at most kMaxPasses passes). Returns whether it did so (active()). An open
+  // or non-manifold mesh (a triangle soup, an open surface: most meshes asked) is left to the
+  // caller, which contracts each face over its own rounded corners. With `grid` > 0 (meters),
+  // positions are rounded to multiples of `grid` instead: the grid of quantized glTF positions
+  // (KHR_mesh_quantization), where the same holds at a coarser step.
   bool run(const kernel::Mesh& mesh, double grid = 0);
+  // Forgets the last mesh: no vertex is grouped.
+  void clear() { active_ = false; }
 
   bool active() const { return active_; }
   // The vertex whose float32 position `vertex` is written at (itself unless grouped).
-  std::uint32_t representative(std::uint32_t vertex) const { return parent_[vertex]; }
+  std::uint32_t representative(std::uint32_t vertex) const {
+    return active_ ? parent_[vertex] : vertex;
+  }
   // When active: the triangles of face `face`, as representative vertex ids, each wound like the
   // face; empty when the whole face contracted away.
   std::span<const std::array<std::uint32_t, 3>> triangles(std::size_t face) const {
@@ -48,7 +53,6 @@ class Float32Weld {
  private:
   static constexpr int kMaxPasses = 8;
 
-  bool collapses(const kernel::Mesh& mesh, double grid);
   void group(const kernel::Mesh& mesh, double grid);
   std::uint32_t find(std::uint32_t v);
   bool unite(std::uint32_t a, std::uint32_t b);
@@ -57,8 +61,6 @@ class Float32Weld {
   bool closed_and_oriented(const kernel::Mesh& mesh);
   std::uint64_t edge_sum(const kernel::Mesh& mesh);
   void triangulate_all(const kernel::Mesh& mesh);
-  void triangulate_piece(const kernel::Mesh& mesh, std::size_t face,
-                         std::span<const std::uint32_t> corners);
   // Groups the end points of every triangle edge used wrongly; false when there is none.
   bool unite_bad_edges();
 
@@ -69,15 +71,14 @@ class Float32Weld {
   bool active_ = false;
   // Scratch reused from mesh to mesh and face to face.
   static constexpr std::uint32_t kFree = UINT32_MAX;
-  std::vector<std::uint32_t> slots_;        // vertices by rounded position
-  std::vector<std::uint32_t> exact_slots_;  // group(): vertices by exact position
+  std::vector<std::uint32_t> slots_;        // group(): vertices by rounded position
+  std::vector<std::uint32_t> exact_slots_;  // find_same(): vertices by exact position
   std::vector<Float3> rounded_;
   std::vector<std::uint32_t> keys_;
-  std::vector<std::uint32_t> corners_;  // 0 .. n-1: a face that contracts nowhere
-  std::vector<std::uint64_t> edges_;    // closed_and_oriented(): directed edges as (a << 32 | b)
+  std::vector<std::uint64_t> edges_;  // closed_and_oriented(): directed edges as (a << 32 | b)
   std::vector<std::array<std::uint64_t, 2>> mixes_;  // edge_sum(): per vertex
+  std::vector<kernel::Vec3> positions_;              // a face's corners' positions
   std::vector<CornerTriangle> corner_triangles_;
-  std::vector<kernel::Vec3> piece_;  // a piece's corners' positions
   FaceTriangulator triangulator_;
 };
 

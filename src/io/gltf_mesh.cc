@@ -33,6 +33,9 @@ std::int8_t normal_byte(float c) {
 
 constexpr std::uint32_t kNone = ~0U;
 
+// The vertex cache triangles are ordered for: meshopt's FIFO model of a GPU's, 16 vertices.
+constexpr unsigned int kCacheSize = 16;
+
 }  // namespace
 
 MeshViews MeshViews::create(Buffers& buffers) {
@@ -107,8 +110,9 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
     scope_feature_ = feature;
   }
   feature_ = feature;
-  weld_.run(mesh, options_.quantize ? kQuantizationStep : 0);
-  position_of_.assign(mesh.vertex_count(), kNone);
+  collapsed_ = enter_positions(mesh);
+  // A closed shell is welded as a whole; an open mesh's faces are contracted one by one.
+  if (!collapsed_ || !weld_.run(mesh, options_.quantize ? kQuantizationStep : 0)) weld_.clear();
   // Faces grouped by material, in mesh order within each.
   faces_by_material_.clear();
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
@@ -154,27 +158,61 @@ MeshAssembler::MaterialList& MeshAssembler::list_of(std::uint32_t material) {
 void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face, MaterialList& list) {
   const kernel::Vec3 newell = kernel::face_normal(mesh, face);
   triangles_.clear();
-  if (!weld_.active()) {
+  if (weld_.active()) {
+    add_triangles(mesh, weld_.triangles(face), newell, list.indices);
+  } else if (collapsed_) {
+    contract_face(mesh, face, newell);
+    add_triangles(mesh, contracted_, newell, list.indices);
+  } else {
     if (!triangulator_.triangulate(mesh, face, newell, triangles_)) return;
     add_corners(mesh, mesh.face(face), newell, list.indices);
-  } else {
-    corners_.clear();
-    for (const auto& triangle : weld_.triangles(face)) {
-      CornerTriangle t{};
-      for (std::size_t k = 0; k < 3; ++k) {
-        const auto it = std::find(corners_.begin(), corners_.end(), triangle[k]);
-        t[k] = static_cast<std::uint32_t>(it - corners_.begin());
-        if (it == corners_.end()) corners_.push_back(triangle[k]);
-      }
-      triangles_.push_back(t);
-    }
-    add_corners(mesh, corners_, newell, list.indices);
   }
   // The face's triangles belong to the part's feature.
   if (list.runs.empty() || list.runs.back().feature != feature_) {
     list.runs.push_back({feature_, list.indices.size()});
   } else {
     list.runs.back().end = list.indices.size();
+  }
+}
+
+// A face given as triangles of vertices: its corners are the vertices in the order the triangles
+// first use them.
+void MeshAssembler::add_triangles(const kernel::Mesh& mesh,
+                                  std::span<const std::array<std::uint32_t, 3>> triangles,
+                                  kernel::Vec3 newell, std::vector<std::uint32_t>& indices) {
+  corners_.clear();
+  for (const auto& triangle : triangles) {
+    CornerTriangle t{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto it = std::find(corners_.begin(), corners_.end(), triangle[k]);
+      t[k] = static_cast<std::uint32_t>(it - corners_.begin());
+      if (it == corners_.end()) corners_.push_back(triangle[k]);
+    }
+    triangles_.push_back(t);
+  }
+  add_corners(mesh, corners_, newell, indices);
+}
+
+// In a part where vertices at different places round to one written position (and no weld took
+// the part as a whole: it is open), each face is contracted over its corners' positions, as
+// Float32Weld does for a closed shell, into contracted_: triangles of the first vertex of the part
+// at each position, triangulated at those vertices' places.
+void MeshAssembler::contract_face(const kernel::Mesh& mesh, std::size_t face, kernel::Vec3 newell) {
+  corner_positions_.clear();
+  corners_.clear();
+  corner_places_.clear();
+  for (std::uint32_t vertex : mesh.face(face)) {
+    const std::uint32_t entry = position_of_[vertex];
+    const std::uint32_t first = positions_[entry].part_vertex;
+    corner_positions_.push_back(entry);
+    corners_.push_back(first);
+    corner_places_.push_back(mesh.position(first));
+  }
+  face_triangles_.clear();
+  triangulator_.triangulate_contracted(corner_positions_, corner_places_, newell, face_triangles_);
+  contracted_.clear();
+  for (const CornerTriangle& t : face_triangles_) {
+    contracted_.push_back({corners_[t[0]], corners_[t[1]], corners_[t[2]]});
   }
 }
 
@@ -216,7 +254,7 @@ void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::u
     for (std::uint32_t corner : triangle) {
       std::uint32_t& vertex = corner_vertices_[corner];
       if (vertex == kNone) {
-        const std::uint32_t position = position_of(mesh, weld_.representative(loop[corner]));
+        const std::uint32_t position = position_of_[weld_.representative(loop[corner])];
         vertex = vertex_at(position, face, corner_uvs_[corner]);
       }
       indices.push_back(vertex);
@@ -224,11 +262,32 @@ void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::u
   }
 }
 
-// The entry in positions_ of the part's vertex `vertex` (a weld representative), looked up in
-// the scope on its first use by a corner.
-std::uint32_t MeshAssembler::position_of(const kernel::Mesh& mesh, std::uint32_t vertex) {
-  std::uint32_t& entry = position_of_[vertex];
-  if (entry != kNone) return entry;
+// Looks every vertex of the part up in the scope (position_of_). Returns whether two of them at
+// different places round to one written position: the float32 weld's question, answered by the
+// lookups the corners need anyway.
+bool MeshAssembler::enter_positions(const kernel::Mesh& mesh) {
+  ++part_serial_;
+  bool collapsed = false;
+  position_of_.resize(mesh.vertex_count());
+  for (std::uint32_t vertex = 0; vertex < mesh.vertex_count(); ++vertex) {
+    const std::uint32_t entry = find_position(rounded_position(mesh, vertex));
+    position_of_[vertex] = entry;
+    Position& at = positions_[entry];
+    if (at.part != part_serial_) {
+      at.part = part_serial_;
+      at.part_vertex = vertex;
+    } else if (at.part_vertex != vertex &&
+               !(mesh.position(at.part_vertex) == mesh.position(vertex))) {
+      collapsed = true;
+    }
+  }
+  return collapsed;
+}
+
+// The position the part's vertex `vertex` is written at: Y-up, float32, and the nearest grid
+// point when positions may be quantized.
+MeshAssembler::Position MeshAssembler::rounded_position(const kernel::Mesh& mesh,
+                                                        std::uint32_t vertex) const {
   constexpr double kStepsPerMeter = 1 / kQuantizationStep;  // a power of two
   // Past 2^62 steps (or not finite) a position has no grid point: its mesh stays float.
   constexpr double kGridLimit = 4.6e18;
@@ -242,8 +301,9 @@ std::uint32_t MeshAssembler::position_of(const kernel::Mesh& mesh, std::uint32_t
     if (position.on_grid) position.grid[k] = round_half_away(steps);
   }
   position.first_vertex = kNone;
-  entry = find_position(position);
-  return entry;
+  position.part = part_serial_;
+  position.part_vertex = vertex;
+  return position;
 }
 
 namespace {
@@ -255,8 +315,14 @@ bool same_position(const std::array<std::int64_t, 3>& grid, const Float3& coordi
                    const std::array<std::int64_t, 3>& other_grid, const Float3& other_coordinates,
                    bool other_on_grid) {
   if (on_grid != other_on_grid) return false;
-  if (on_grid) return grid == other_grid;
-  return std::memcmp(coordinates.data(), other_coordinates.data(), sizeof coordinates) == 0;
+  // Compared word by word: std::array's == called memcmp, a tenth of the lookups' time.
+  if (on_grid) {
+    return grid[0] == other_grid[0] && grid[1] == other_grid[1] && grid[2] == other_grid[2];
+  }
+  const auto bits = [](float c) { return std::bit_cast<std::uint32_t>(c); };
+  return bits(coordinates[0]) == bits(other_coordinates[0]) &&
+         bits(coordinates[1]) == bits(other_coordinates[1]) &&
+         bits(coordinates[2]) == bits(other_coordinates[2]);
 }
 
 std::uint64_t position_hash(const std::array<std::int64_t, 3>& grid, const Float3& coordinates,
@@ -276,7 +342,7 @@ std::uint64_t position_hash(const std::array<std::int64_t, 3>& grid, const Float
 
 }  // namespace
 
-// The scope's entry alike `position`, entered (with its bounds) when there is none.
+// The scope's entry alike `position`, entered when there is none.
 std::uint32_t MeshAssembler::find_position(const Position& position) {
   if (2 * (positions_.size() - scope_begin_ + 1) > slots_.size()) grow_position_table();
   const std::size_t mask = slots_.size() - 1;
@@ -286,7 +352,6 @@ std::uint32_t MeshAssembler::find_position(const Position& position) {
     if (entry.scope != scope_) {
       entry = {static_cast<std::uint32_t>(positions_.size()), scope_};
       positions_.push_back(position);
-      bounds_.add(position);
       return entry.position;
     }
     const Position& other = positions_[entry.position];
@@ -330,6 +395,8 @@ std::uint32_t MeshAssembler::vertex_at(std::uint32_t position, std::uint32_t fac
       return v;
     }
   }
+  // The bounds are those of the positions written (a part's vertex no face uses has an entry).
+  if (at.first_vertex == kNone) bounds_.add(at);
   const auto v = static_cast<std::uint32_t>(vertices_.size());
   vertices_.push_back(Vertex{position, face, uv, feature_, at.first_vertex});
   at.first_vertex = v;
@@ -403,7 +470,6 @@ void MeshAssembler::quantize(MeshRecord& record) {
 // only its corners. No order can do better, so the run is left as it is (and meshopt's optimiser,
 // which costs more than the rest of a small mesh, is not run).
 bool MeshAssembler::loads_each_once(std::span<const unsigned int> run) {
-  constexpr unsigned int kCacheSize = 16;
   unsigned int loads = 0;
   bool once = true;
   for (unsigned int v : run) {
@@ -432,7 +498,8 @@ bool MeshAssembler::optimize_run(std::span<unsigned int> run) {
     }
     v = local_of_[v];
   }
-  meshopt_optimizeVertexCache(run.data(), run.data(), run.size(), global_of_.size());
+  meshopt_optimizeVertexCacheFifo(run.data(), run.data(), run.size(), global_of_.size(),
+                                  kCacheSize);
   for (unsigned int& v : run) v = global_of_[v];
   for (unsigned int v : global_of_) local_of_[v] = ~0U;
   return true;

@@ -117,6 +117,10 @@ class MeshAssembler {
     Float3 coordinates;
     bool on_grid;
     std::uint32_t first_vertex;
+    // The last part that looked the position up (its serial) and the first of its vertices here:
+    // another of its vertices at a different place rounded to the same position (float32_weld.h).
+    std::uint32_t part;
+    std::uint32_t part_vertex;
   };
   // The grid and float32 bounds of the positions used, kept as they are added (a pass over a
   // tile's vertices at the end missed the cache on most of them).
@@ -156,10 +160,15 @@ class MeshAssembler {
 
   MaterialList& list_of(std::uint32_t material);
   void add_face(const kernel::Mesh& mesh, std::size_t face, MaterialList& list);
+  void add_triangles(const kernel::Mesh& mesh,
+                     std::span<const std::array<std::uint32_t, 3>> triangles, kernel::Vec3 newell,
+                     std::vector<std::uint32_t>& indices);
+  void contract_face(const kernel::Mesh& mesh, std::size_t face, kernel::Vec3 newell);
+  bool enter_positions(const kernel::Mesh& mesh);
   void add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
                    kernel::Vec3 newell, std::vector<std::uint32_t>& indices);
   void fit_uvs(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop, kernel::Vec3 newell);
-  std::uint32_t position_of(const kernel::Mesh& mesh, std::uint32_t vertex);
+  Position rounded_position(const kernel::Mesh& mesh, std::uint32_t vertex) const;
   std::uint32_t find_position(const Position& position);
   void grow_position_table();
   std::uint32_t vertex_at(std::uint32_t position, std::uint32_t face, std::array<float, 2> uv);
@@ -211,9 +220,11 @@ class MeshAssembler {
   // The part being added.
   const shape::Part* part_ = nullptr;
   bool instance_frame_ = false;
-  std::vector<std::uint32_t> position_of_;  // by the part's vertex: its entry in positions_, or ~0
-  double uv_scale_ = 0;                     // solid_geometry's texture size, 0: none
-  bool fit_uv_ = false;                     // the face shows an image: UVs fit each face
+  std::vector<std::uint32_t> position_of_;  // by the part's vertex: its entry in positions_
+  std::uint32_t part_serial_ = 0;           // counts the parts added (Position::part)
+  bool collapsed_ = false;  // two of the part's vertices at different places share a position
+  double uv_scale_ = 0;     // solid_geometry's texture size, 0: none
+  bool fit_uv_ = false;     // the face shows an image: UVs fit each face
   std::uint32_t feature_ = 0;
 
   // Scratch reused from face to face.
@@ -222,6 +233,10 @@ class MeshAssembler {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> faces_by_material_;
   Float32Weld weld_;
   std::vector<std::uint32_t> corners_;
+  std::vector<std::uint32_t> corner_positions_;  // a face's corners' entries in positions_
+  std::vector<kernel::Vec3> corner_places_;      // and their places
+  std::vector<CornerTriangle> face_triangles_;
+  std::vector<std::array<std::uint32_t, 3>> contracted_;  // contract_face(): triangles of vertices
   std::vector<std::uint32_t> corner_vertices_;
   std::vector<kernel::Vec2> face_uvs_;
   std::vector<std::array<float, 2>> corner_uvs_;

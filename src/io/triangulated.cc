@@ -1,9 +1,11 @@
 #include "io/triangulated.h"
 
 #include <cmath>
+#include <numeric>
 #include <set>
 #include <utility>
 
+#include "kernel/contract_loop.h"
 #include "kernel/planar.h"
 #include "kernel/polygon.h"
 #include "kernel/triangulate.h"
@@ -97,6 +99,52 @@ bool FaceTriangulator::triangulate(std::span<const Vec3> corners, Vec3 normal,
                                    std::vector<CornerTriangle>& triangles) {
   return triangulate_corners(
       corners.size(), [&](std::size_t i) { return corners[i]; }, normal, triangles);
+}
+
+namespace {
+
+// Whether no two of a loop's keys are equal (a face has a handful of corners; a long loop is
+// left to contract_loop).
+bool distinct(std::span<const std::uint32_t> keys) {
+  if (keys.size() < 3 || keys.size() > 16) return false;
+  for (std::size_t i = 1; i < keys.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (keys[i] == keys[j]) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+void FaceTriangulator::triangulate_contracted(std::span<const std::uint32_t> keys,
+                                              std::span<const Vec3> positions, Vec3 normal,
+                                              std::vector<CornerTriangle>& triangles) {
+  if (distinct(keys)) {
+    whole_.resize(keys.size());
+    std::iota(whole_.begin(), whole_.end(), 0U);
+    triangulate_piece(whole_, positions, normal, triangles);
+    return;
+  }
+  for (const std::vector<std::uint32_t>& piece : kernel::contract_loop(keys)) {
+    triangulate_piece(piece, positions, normal, triangles);
+  }
+}
+
+// The triangles of one piece (`corners`: its corners' positions in the loop), as loop corners.
+void FaceTriangulator::triangulate_piece(std::span<const std::uint32_t> corners,
+                                         std::span<const Vec3> positions, Vec3 normal,
+                                         std::vector<CornerTriangle>& triangles) {
+  piece_.clear();
+  for (std::uint32_t corner : corners) piece_.push_back(positions[corner]);
+  piece_triangles_.clear();
+  if (!triangulate(piece_, normal, piece_triangles_)) {
+    for (std::uint32_t i = 1; i + 1 < corners.size(); ++i)
+      piece_triangles_.push_back({0, i, i + 1});
+  }
+  for (const CornerTriangle& t : piece_triangles_) {
+    triangles.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
+  }
 }
 
 // The face of `n` corners, corner i at position(i).

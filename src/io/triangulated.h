@@ -35,6 +35,14 @@ class FaceTriangulator {
   // The same for a face given as its corners' positions.
   bool triangulate(std::span<const kernel::Vec3> corners, kernel::Vec3 normal,
                    std::vector<CornerTriangle>& triangles);
+  // The triangles of a face loop whose corners with equal `keys` are written as one point (the
+  // corners rounded to one float32 or grid position), as corner positions in the loop: the loop
+  // contracted (kernel::contract_loop) and each piece triangulated at the corners' `positions`.
+  // A piece the triangulator rejects (rounding may make it overlap itself) is fanned instead:
+  // every fan triangle follows the loop's orientation, so a closed shell stays closed.
+  void triangulate_contracted(std::span<const std::uint32_t> keys,
+                              std::span<const kernel::Vec3> positions, kernel::Vec3 normal,
+                              std::vector<CornerTriangle>& triangles);
 
  private:
   template <typename Position>
@@ -42,9 +50,16 @@ class FaceTriangulator {
                            std::vector<CornerTriangle>& triangles);
   bool triangulate_ring(std::vector<CornerTriangle>& triangles);
 
+  void triangulate_piece(std::span<const std::uint32_t> corners,
+                         std::span<const kernel::Vec3> positions, kernel::Vec3 normal,
+                         std::vector<CornerTriangle>& triangles);
+
   kernel::Polygon polygon_;
   std::vector<std::uint32_t> next_;
   std::vector<std::uint32_t> prev_;
+  std::vector<std::uint32_t> whole_;  // 0 .. n-1: a loop that contracts nowhere
+  std::vector<kernel::Vec3> piece_;   // a piece's corners' positions
+  std::vector<CornerTriangle> piece_triangles_;
 };
 
 // std::llround (halves away from zero) without its library call, which cost more than the rest

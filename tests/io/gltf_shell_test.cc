@@ -302,5 +302,32 @@ TEST(GltfShell, SurveyedRectanglesAndTurnedLTUAreClosedInGlbAndObjForEveryRoof) 
   }
 }
 
+// An open surface (no shell to keep closed) whose corners round to one written position, in both
+// encodings (1e-5 m apart at 3 km: one float32 and one grid point): each face is contracted over
+// its corners on its own. A sliver quad vanishes, a pentagon with two such corners becomes a quad,
+// and no triangle is left with two corners at one position.
+TEST(GltfShell, OpenSurfaceFacesAreContractedWhereCornersRoundToOne) {
+  kernel::Mesh mesh;
+  const auto at = [&mesh](double x, double y) { return mesh.add_vertex({3000 + x, y, 0}); };
+  const kernel::FaceTag tag{};
+  mesh.add_face({at(0, 0), at(1, 0), at(1, 1), at(0, 1)}, tag);  // a unit square: 2 triangles
+  mesh.add_face({at(1, 0), at(1.00001, 0), at(1.00001, 1), at(1, 1)}, tag);      // a sliver: none
+  mesh.add_face({at(2, 0), at(3, 0), at(3, 1), at(2.99999, 1), at(2, 1)}, tag);  // a square: 2
+  ASSERT_FALSE(kernel::check(mesh).closed);
+  shape::Scene scene;
+  shape::Building building;
+  building.id = "open";
+  building.parts.push_back({"surface", shape::PartKind::kBuildingPart, {}, std::move(mesh)});
+  scene.buildings.push_back(std::move(building));
+  for (const bool quantize : {true, false}) {
+    GltfOptions options;
+    options.quantize = quantize;
+    const tinygltf::Model model = load_glb(glb_bytes(scene, options));
+    const ShellDefects d = defects(model, model.scenes[0].nodes[0]);
+    EXPECT_EQ(d.triangles, 4U) << (quantize ? "quantized" : "float");
+    EXPECT_EQ(d.degenerate, 0U) << (quantize ? "quantized" : "float");
+  }
+}
+
 }  // namespace
 }  // namespace insula::io
