@@ -329,5 +329,45 @@ TEST(GltfShell, OpenSurfaceFacesAreContractedWhereCornersRoundToOne) {
   }
 }
 
+// Random open surfaces (quads and pentagons on a coarse lattice, each corner jittered by up to
+// 0.3 mm at 3 km, so many corners round to one position and some loops visit a position twice):
+// whatever contracts, no written triangle has two corners at one position, in both encodings.
+TEST(GltfShell, RandomOpenSurfacesWithCollapsingCornersHaveNoDegenerateTriangles) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> jitter(-0.0003, 0.0003);
+  std::uniform_int_distribution<int> cell(0, 3);
+  for (int trial = 0; trial < 40; ++trial) {
+    kernel::Mesh mesh;
+    const auto at = [&](double x, double y) {
+      return mesh.add_vertex({3000 + 0.0005 * x + jitter(rng), 0.0005 * y + jitter(rng), 0});
+    };
+    for (int f = 0; f < 30; ++f) {
+      const double x = cell(rng);
+      const double y = cell(rng);
+      if (f % 3 == 0) {
+        mesh.add_face({at(x, y), at(x + 2, y), at(x + 2, y + 1), at(x + 1, y + 2), at(x, y + 1)},
+                      kernel::FaceTag{});
+      } else {
+        mesh.add_face({at(x, y), at(x + 1, y), at(x + 1, y + 1), at(x, y + 1)}, kernel::FaceTag{});
+      }
+    }
+    shape::Scene scene;
+    shape::Building building;
+    building.id = "soup";
+    building.parts.push_back({"surface", shape::PartKind::kBuildingPart, {}, std::move(mesh)});
+    scene.buildings.push_back(std::move(building));
+    for (const bool quantize : {true, false}) {
+      GltfOptions options;
+      options.quantize = quantize;
+      const tinygltf::Model model = load_glb(glb_bytes(scene, options));
+      ASSERT_EQ(model.scenes.size(), 1U);
+      if (model.scenes[0].nodes.empty()) continue;  // everything contracted away
+      const ShellDefects d = defects(model, model.scenes[0].nodes[0]);
+      EXPECT_EQ(d.degenerate, 0U) << "trial " << trial << (quantize ? " quantized" : " float");
+      EXPECT_LE(d.triangles, 70U) << "trial " << trial;  // 20 quads x 2 + 10 pentagons x 3
+    }
+  }
+}
+
 }  // namespace
 }  // namespace insula::io
