@@ -302,6 +302,22 @@ TEST(GltfShell, SurveyedRectanglesAndTurnedLTUAreClosedInGlbAndObjForEveryRoof) 
   }
 }
 
+// A scene of one building with `mesh` as its one part.
+shape::Scene one_part_scene(kernel::Mesh mesh) {
+  shape::Scene scene;
+  shape::Building building;
+  building.id = "surface";
+  building.parts.push_back({"surface", shape::PartKind::kBuildingPart, {}, std::move(mesh)});
+  scene.buildings.push_back(std::move(building));
+  return scene;
+}
+
+GltfOptions encoding(bool quantize) {
+  GltfOptions options;
+  options.quantize = quantize;
+  return options;
+}
+
 // An open surface (no shell to keep closed) whose corners round to one written position, in both
 // encodings (1e-5 m apart at 3 km: one float32 and one grid point): each face is contracted over
 // its corners on its own. A sliver quad vanishes, a pentagon with two such corners becomes a quad,
@@ -314,15 +330,9 @@ TEST(GltfShell, OpenSurfaceFacesAreContractedWhereCornersRoundToOne) {
   mesh.add_face({at(1, 0), at(1.00001, 0), at(1.00001, 1), at(1, 1)}, tag);      // a sliver: none
   mesh.add_face({at(2, 0), at(3, 0), at(3, 1), at(2.99999, 1), at(2, 1)}, tag);  // a square: 2
   ASSERT_FALSE(kernel::check(mesh).closed);
-  shape::Scene scene;
-  shape::Building building;
-  building.id = "open";
-  building.parts.push_back({"surface", shape::PartKind::kBuildingPart, {}, std::move(mesh)});
-  scene.buildings.push_back(std::move(building));
+  const shape::Scene scene = one_part_scene(std::move(mesh));
   for (const bool quantize : {true, false}) {
-    GltfOptions options;
-    options.quantize = quantize;
-    const tinygltf::Model model = load_glb(glb_bytes(scene, options));
+    const tinygltf::Model model = load_glb(glb_bytes(scene, encoding(quantize)));
     const ShellDefects d = defects(model, model.scenes[0].nodes[0]);
     EXPECT_EQ(d.triangles, 4U) << (quantize ? "quantized" : "float");
     EXPECT_EQ(d.degenerate, 0U) << (quantize ? "quantized" : "float");
@@ -351,15 +361,9 @@ TEST(GltfShell, RandomOpenSurfacesWithCollapsingCornersHaveNoDegenerateTriangles
         mesh.add_face({at(x, y), at(x + 1, y), at(x + 1, y + 1), at(x, y + 1)}, kernel::FaceTag{});
       }
     }
-    shape::Scene scene;
-    shape::Building building;
-    building.id = "soup";
-    building.parts.push_back({"surface", shape::PartKind::kBuildingPart, {}, std::move(mesh)});
-    scene.buildings.push_back(std::move(building));
+    const shape::Scene scene = one_part_scene(std::move(mesh));
     for (const bool quantize : {true, false}) {
-      GltfOptions options;
-      options.quantize = quantize;
-      const tinygltf::Model model = load_glb(glb_bytes(scene, options));
+      const tinygltf::Model model = load_glb(glb_bytes(scene, encoding(quantize)));
       ASSERT_EQ(model.scenes.size(), 1U);
       if (model.scenes[0].nodes.empty()) continue;  // everything contracted away
       const ShellDefects d = defects(model, model.scenes[0].nodes[0]);
