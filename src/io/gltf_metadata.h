@@ -38,6 +38,9 @@ std::shared_ptr<const shape::AttributeMap> building_feature_attributes(
 // `part` as such a feature (an own `building` attribute gives way to the building's id).
 void make_feature(shape::Part& part, std::shared_ptr<const shape::AttributeMap> building);
 inline constexpr std::string_view kFeaturesExtension = "EXT_mesh_features";
+// Feature ids of GPU instances (EXT_mesh_gpu_instancing's _FEATURE_ID_n attributes) are named on
+// the node by this extension; EXT_mesh_features names those of a primitive's vertices only.
+inline constexpr std::string_view kInstanceFeaturesExtension = "EXT_instance_features";
 
 // "BuildingPart", "Storey", "Room", "Installation", "Other".
 std::string_view kind_name(shape::PartKind kind);

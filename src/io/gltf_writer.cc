@@ -463,8 +463,9 @@ void write_numbers(JsonStream& json, std::string_view key, std::span<const doubl
   json.end_array();
 }
 
-void write_feature_ids(JsonStream& json, std::uint32_t feature_count) {
-  json.key(gltf::kFeaturesExtension).begin_object().key("featureIds").begin_array();
+// `extension`: EXT_mesh_features on a primitive, EXT_instance_features on an instancing node.
+void write_feature_ids(JsonStream& json, std::string_view extension, std::uint32_t feature_count) {
+  json.key(extension).begin_object().key("featureIds").begin_array();
   json.begin_object().key("attribute").integer(0).key("featureCount").integer(feature_count);
   json.key("propertyTable").integer(0).end_object().end_array().end_object();
 }
@@ -483,7 +484,7 @@ void Builder::write_meshes(JsonStream& json) const {
       json.end_object();
       if (record.feature) {
         json.key("extensions").begin_object();
-        write_feature_ids(json, primitive.feature_count);
+        write_feature_ids(json, gltf::kFeaturesExtension, primitive.feature_count);
         json.end_object();
       }
       json.key("indices").integer(primitive.indices);
@@ -499,7 +500,9 @@ void Builder::write_child(JsonStream& json, const ChildNode& child) const {
   if (child.instances) {
     const InstanceGroup& group = *child.instances;
     json.key("extensions").begin_object();
-    if (group.feature) write_feature_ids(json, group.feature_count);
+    if (group.feature) {
+      write_feature_ids(json, gltf::kInstanceFeaturesExtension, group.feature_count);
+    }
     json.key(kInstancingExtension).begin_object().key("attributes").begin_object();
     json.key("ROTATION").integer(group.rotation).key("SCALE").integer(group.scale);
     json.key("TRANSLATION").integer(group.translation);
@@ -689,6 +692,7 @@ std::vector<std::string_view> Builder::extensions_used() const {
   if (table_) {
     used.push_back(gltf::kFeaturesExtension);
     used.push_back(gltf::kMetadataExtension);
+    if (gpu_instances_) used.push_back(gltf::kInstanceFeaturesExtension);
   }
   if (!scene_.lights.empty()) used.push_back(kLightsExtension);
   std::sort(used.begin(), used.end());

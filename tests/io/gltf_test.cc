@@ -584,11 +584,21 @@ TEST(GltfWriter, GpuInstancingPlacesEveryTrsInstanceFromOneNode) {
   ASSERT_EQ(building.children.size(), 2U);
   const tinygltf::Node& group = model.nodes[static_cast<std::size_t>(building.children[0])];
   ASSERT_TRUE(group.extensions.contains("EXT_mesh_gpu_instancing"));
-  ASSERT_TRUE(group.extensions.contains("EXT_mesh_features"));
+  // The instances' feature ids are named by EXT_instance_features (CesiumJS reads only that on a
+  // node; EXT_mesh_features is for a primitive's vertices).
+  ASSERT_TRUE(group.extensions.contains("EXT_instance_features"));
+  EXPECT_FALSE(group.extensions.contains("EXT_mesh_features"));
   EXPECT_EQ(model.nodes[static_cast<std::size_t>(building.children[1])].name, "sheared");
   const nlohmann::json json = json_of(glb);
   EXPECT_EQ(json["extensionsRequired"],
             (nlohmann::json{"EXT_mesh_gpu_instancing", "KHR_mesh_quantization"}));
+  EXPECT_EQ(json["extensionsUsed"],
+            (nlohmann::json{"EXT_instance_features", "EXT_mesh_features", "EXT_mesh_gpu_instancing",
+                            "EXT_structural_metadata", "KHR_mesh_quantization"}));
+  const nlohmann::json& ids =
+      json["nodes"][building.children[0]]["extensions"]["EXT_instance_features"]["featureIds"][0];
+  EXPECT_EQ(ids["attribute"], 0);
+  EXPECT_EQ(ids["propertyTable"], 0);
   expect_instances_placed(model, "gpu");
 }
 
