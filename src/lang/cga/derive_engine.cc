@@ -770,10 +770,7 @@ void Engine::process(const Work& w) {
   for (std::uint32_t r : program_.rules_at[w.symbol][w.level]) {
     const CRule& rule = program_.rules[r];
     rule_ = &rule;
-    if (rule.condition != kNoExpr &&
-        !as_bool(evaluate(program_, rule.condition, *this), program_.nodes[rule.condition].range)) {
-      continue;
-    }
+    if (rule.condition != kNoExpr && !condition_holds(r, rule)) continue;
     apply(rule, st);
     return;
   }
@@ -788,6 +785,17 @@ void Engine::process(const Work& w) {
     }
   }
   terminal(st, w.symbol);
+}
+
+bool Engine::condition_holds(std::uint32_t r, const CRule& rule) {
+  const auto holds = [&] {
+    return as_bool(evaluate(program_, rule.condition, *this), program_.nodes[rule.condition].range);
+  };
+  if (!rule.condition_per_lot) return holds();
+  // Asked on every shape of the symbol (a facade's walls ask for its style): the lot's answer.
+  std::int8_t& known = lot_conditions_[r];
+  if (known < 0) known = holds() ? 1 : 0;
+  return known == 1;
 }
 
 double Engine::probability(const CRule& rule, std::uint32_t p) {

@@ -120,6 +120,7 @@ class Engine final : public EvalContext {
     out_.symbol_counts.assign(program.symbols.size(), 0);
     pending_.resize(std::max<std::size_t>(1, program.priorities.size()));
     values_.resize(program.attrs.size());
+    lot_conditions_.assign(program.rules.size(), -1);
     status_.resize(program.attrs.size(), 0);
   }
 
@@ -263,6 +264,10 @@ class Engine final : public EvalContext {
 
   void process(const Work& w);
 
+  // Whether the condition of rule `r` holds on the current shape; a condition with one value
+  // per lot (CRule::condition_per_lot) is evaluated once.
+  bool condition_holds(std::uint32_t r, const CRule& rule);
+
   // The value of probability expression `p` of `rule`. Seed 004 §IV.B constraint 1 asks for a
   // probability in (0, 1]; the checker enforces it on constants (CGA301). A computed one (an
   // attribute, a function) that is negative, NaN or above 1 is an error here (CGA605) rather
@@ -368,6 +373,16 @@ class Engine final : public EvalContext {
   // lot (the rectangle's own position is its scope's: the piece is the same for every window).
   const InsetPiece& inset_piece(const kernel::Bounds2& box, double distance, const FaceTag& tag,
                                 std::uint32_t piece);
+  // The geometry of such a piece, shared by the lots one thread derives.
+  struct InsetShape {
+    std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const kernel::Polygon> outline;
+    Vec3 offset;
+    Vec3 size;
+  };
+  static const InsetShape& inset_shape(const std::array<std::uint64_t, 7>& key,
+                                       const kernel::Bounds2& box, double distance,
+                                       const FaceTag& tag, std::uint32_t piece);
   // The values of Program::state_attrs the shape sees (null where none is set).
   std::vector<Value> state_values(const State& st) const;
   // The shape's uv set `set` (setupProjection + projectUV), if it has one.
@@ -540,7 +555,8 @@ class Engine final : public EvalContext {
   std::uint32_t depth_ = 0;
 
   std::vector<Value> values_;
-  std::vector<std::uint8_t> status_;  // 0 not evaluated, 1 in progress, 2 done
+  std::vector<std::uint8_t> status_;         // 0 not evaluated, 1 in progress, 2 done
+  std::vector<std::int8_t> lot_conditions_;  // by rule: -1 not asked yet, else the answer
   std::vector<Value> frame_values_;
   std::vector<std::size_t> frame_begin_{0, 0};
   std::map<std::array<std::uint64_t, 6>, std::uint32_t> boxes_;
