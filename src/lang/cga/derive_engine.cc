@@ -23,6 +23,12 @@ void Engine::run() {
     start();
     loop();
     out_.ok = true;
+    if (!keep_) {
+      // Only terminal records read these: a count-only run (every lot's result kept until the
+      // end) need not hold each lot's meshes meanwhile.
+      out_.geometry = {};
+      out_.attr_nodes = {};
+    }
   } catch (const DeriveError& e) {
     out_.diagnostics.push_back(e.diagnostic);
   } catch (const EvalError& e) {
