@@ -1077,9 +1077,18 @@ void Engine::color(const CItem& c, State& st) {
     return;
   }
   // A colour written as a literal (most are) is checked and normalised once per lot, and on a
-  // chain it met before takes the node it took then: one lookup for each of a façade's walls.
+  // chain it met before takes the node it took then: one lookup for each of a façade's walls,
+  // and none while the literal meets the chain it met last (a façade's walls share theirs).
+  if (last_literal_.size() <= c.args[0]) last_literal_.resize(c.args[0] + 1);
+  LastLiteral& last = last_literal_[c.args[0]];
+  if (last.node != 0 && last.chain == st.attrs) {
+    st.attrs = last.node;
+    touch(st);
+    return;
+  }
   const std::uint64_t key = (std::uint64_t{st.attrs} << 32) | std::uint64_t{c.args[0]};
   if (const auto it = literal_nodes_.find(key); it != literal_nodes_.end()) {
+    last = {st.attrs, it->second};
     st.attrs = it->second;
     touch(st);
     return;
@@ -1090,8 +1099,10 @@ void Engine::color(const CItem& c, State& st) {
     if (!hex) return;
     known = literal_colors_.emplace(c.args[0], std::move(*hex)).first;
   }
+  const std::uint32_t chain = st.attrs;
   set_attr(st, program_.color_attr, Value(known->second));
   literal_nodes_.emplace(key, st.attrs);
+  last = {chain, st.attrs};
 }
 
 std::optional<std::string> Engine::color_hex(const CItem& c, State& st) {

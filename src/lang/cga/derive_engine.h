@@ -520,6 +520,12 @@ class Engine final : public EvalContext {
   std::unordered_map<std::uint32_t, std::string> literal_colors_;
   // The node a literal colour took, by (attribute chain, expression).
   std::unordered_map<std::uint64_t, std::uint32_t> literal_nodes_;
+  // The last of those by expression (node 0: none yet; set_attr never gives node 0).
+  struct LastLiteral {
+    std::uint32_t chain = 0;
+    std::uint32_t node = 0;
+  };
+  std::vector<LastLiteral> last_literal_;
   BuiltinAssets assets_;
   shape::Context context_;
   std::uint64_t lot_seed_;
