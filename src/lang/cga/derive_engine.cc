@@ -151,7 +151,9 @@ std::string Engine::occlusion(const std::string& /*what*/, Range /*range*/) {
   for (std::size_t i = 0; i < out_.terminals_store.size(); ++i)
     consider(out_.terminals_store[i].scope);
   for (const auto& bucket : pending_) {
-    for (const Work& w : bucket) consider(w.scope);
+    for (const Work& w : bucket) {
+      if (&w != current_) consider(w.scope);  // the asking shape's own record
+    }
   }
   for (const Work& w : batch_) consider(w.scope);
   const double f = shape::occlusion(tree, id, others);
@@ -728,10 +730,15 @@ void Engine::loop() {
       }
     }
     if (level == pending_.size()) return;
-    const Work w = pending_[level].back();
-    pending_[level].pop_back();
+    // Processed where it lies (a copy was read back in pieces other than those it was written
+    // in: a store-forwarding stall on every shape), removed after; until then occlusion() passes
+    // it over as it would a removed one. Nothing adds to pending_ before flush_batch().
+    const Work& w = pending_[level].back();
     --pending_count_;
+    current_ = &w;
     process(w);
+    current_ = nullptr;
+    pending_[level].pop_back();
     flush_batch();
   }
 }
@@ -883,11 +890,10 @@ void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State&
       case OpCode::kSymbol:
         count_shape(c.symbol);
         {
-          State child = st;
-          child.seed = shape::child_seed(st.seed, st.next_child++);
-          if (track_lineage_) child.lineage = add_lineage(st.lineage, child.seed);
-          child.next_child = 0;
-          child.frame = c.args.empty() ? 0 : new_frame(c.args, st);
+          const std::uint64_t seed = shape::child_seed(st.seed, st.next_child++);
+          const std::uint32_t lineage = track_lineage_ ? add_lineage(st.lineage, seed) : st.lineage;
+          const std::uint32_t arguments = c.args.empty() ? 0 : new_frame(c.args, st);
+          const State child = State::successor(st, seed, lineage, arguments);
           if (c.terminal) {
             terminal(child, c.symbol);
           } else {

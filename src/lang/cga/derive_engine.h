@@ -76,6 +76,26 @@ struct State {
   // (Insula: z for both). True while a flat shape descends from the lot (or from
   // alignScopeToGeometry(yUp)) and not from comp: Engine::lot_axes() maps CityEngine's y and z.
   bool lot_axes = false;
+
+  // A new shape from `parent` (a symbol of its successor) with its own seed, lineage and rule
+  // arguments, not yet consumed or modified. Member by member, never reading the parent's
+  // flags: a copy of the whole state read them in 16-byte pieces just after touch() wrote them
+  // a byte each, and waited for the stores.
+  static State successor(const State& parent, std::uint64_t seed, std::uint32_t lineage,
+                         std::uint32_t frame) {
+    State s;
+    s.scope = parent.scope;
+    s.seed = seed;
+    s.geometry = parent.geometry;
+    s.attrs = parent.attrs;
+    s.index = parent.index;
+    s.total = parent.total;
+    s.frame = frame;
+    s.selector = parent.selector;
+    s.lineage = lineage;
+    s.lot_axes = parent.lot_axes;
+    return s;
+  }
 };
 
 // Every member from its source: push_or_terminal constructs works in place, and a default
@@ -567,7 +587,8 @@ class Engine final : public EvalContext {
 
   std::vector<std::vector<Work>> pending_;  // one stack per priority level
   std::size_t pending_count_ = 0;
-  std::vector<Work> batch_;  // shapes created by the current rule application
+  std::vector<Work> batch_;        // shapes created by the current rule application
+  const Work* current_ = nullptr;  // the record being processed, still in pending_
   std::vector<State> starts_;
   State start_state_;
   State* cur_ = nullptr;
