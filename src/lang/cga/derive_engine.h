@@ -408,6 +408,15 @@ class Engine final : public EvalContext {
   // lot (the rectangle's own position is its scope's: the piece is the same for every window).
   const InsetPiece& inset_piece(const kernel::Bounds2& box, double distance, const FaceTag& tag,
                                 std::uint32_t piece);
+  // Such a piece's key: the box's corners and the distance bit for bit, the tag and the piece.
+  using InsetKey = std::array<std::uint64_t, 7>;
+  struct InsetKeyHash {
+    std::size_t operator()(const InsetKey& key) const {
+      std::uint64_t h = 0;
+      for (const std::uint64_t word : key) h = shape::mix64(h ^ word);
+      return static_cast<std::size_t>(h);
+    }
+  };
   // The geometry of such a piece, shared by the lots one thread derives.
   struct InsetShape {
     std::shared_ptr<const Mesh> mesh;
@@ -415,9 +424,8 @@ class Engine final : public EvalContext {
     Vec3 offset;
     Vec3 size;
   };
-  static const InsetShape& inset_shape(const std::array<std::uint64_t, 7>& key,
-                                       const kernel::Bounds2& box, double distance,
-                                       const FaceTag& tag, std::uint32_t piece);
+  static const InsetShape& inset_shape(const InsetKey& key, const kernel::Bounds2& box,
+                                       double distance, const FaceTag& tag, std::uint32_t piece);
   // The values of Program::state_attrs the shape sees (null where none is set).
   std::vector<Value> state_values(const State& st) const;
   // The shape's uv set `set` (setupProjection + projectUV), if it has one.
@@ -604,7 +612,7 @@ class Engine final : public EvalContext {
   std::map<std::array<std::uint64_t, 6>, std::uint32_t> boxes_;
   std::map<std::uint64_t, std::uint32_t> rects_;
   // Pieces of rectangle insets by (box, distance, tag, piece): a façade's windows are alike.
-  std::map<std::array<std::uint64_t, 7>, InsetPiece> insets_;
+  std::map<InsetKey, InsetPiece> insets_;  // a handful a lot: a tree is cheaper than hashing
   // i() results by content (DeriveOptions::share_inserts).
   kernel::SharedMeshes inserted_;
   std::map<std::pair<std::uint32_t, std::string>, std::size_t> warnings_;
