@@ -199,6 +199,11 @@ class Compiler {
       const std::uint32_t level = level_of(set.priority);
       for (const Rule& rule : set.rules) compile_rule(rule, level);
     }
+    mark_on_chains(program_->color_attr);
+    for (const std::uint32_t a : program_->state_attrs) mark_on_chains(a);
+    for (CRule& r : program_->rules) {
+      r.condition_per_lot = r.condition != kNoExpr && per_lot(r.condition);
+    }
     index_rules();
     choose_start(options);
     if (base::has_errors(diagnostics_)) {
@@ -211,6 +216,31 @@ class Compiler {
   void error(std::string code, std::string message, Range range) {
     diagnostics_.push_back(
         base::Diagnostic::error(std::move(code), std::move(message), program_->span(range)));
+  }
+
+  void mark_on_chains(std::uint32_t attr) {
+    if (program_->on_chains.size() <= attr) program_->on_chains.resize(attr + 1, false);
+    program_->on_chains[attr] = true;
+  }
+
+  // Whether expression `e` has one value per lot: constants and attributes no shape's chain can
+  // hold (their value is the lot's, fixed before any rule runs) under operators. Shape
+  // attributes, parameters, functions (rand() draws from the shape's generator) and the rest
+  // can differ from shape to shape.
+  bool per_lot(std::uint32_t e) const {
+    const ENode& n = program_->nodes[e];
+    switch (n.code) {
+      case ECode::kConst:
+        return true;
+      case ECode::kAttr:
+        return n.a >= program_->on_chains.size() || !program_->on_chains[n.a];
+      case ECode::kUnary:
+      case ECode::kBinary:
+        return std::all_of(n.kids.begin(), n.kids.end(),
+                           [this](std::uint32_t k) { return per_lot(k); });
+      default:
+        return false;
+    }
   }
 
   // ---- attributes: every `attr` plus every name a set() assigns
@@ -936,6 +966,7 @@ class Compiler {
         return;
       }
       c.attr = attr;
+      mark_on_chains(attr);
       c.args.push_back(expr(*item.args[1]));
       return;
     }

@@ -280,6 +280,8 @@ struct CRule {
   SymbolId predecessor = kNoSymbol;
   std::uint32_t level = 0;  // index into Program::priorities
   std::uint32_t condition = kNoExpr;
+  // The condition has one value per lot (Compiler::per_lot): the engine evaluates it once a lot.
+  bool condition_per_lot = false;
   std::uint32_t params = 0;  // CityEngine's parametric rules: arguments in the frame
   std::vector<CAlternative> alternatives;
 };
@@ -314,6 +316,9 @@ struct Program {
   // Attributes registry operations keep as state (shape::Operation::state: uv sets, projections,
   // the colour map), handed to and taken back from the operations that declare them.
   std::vector<std::uint32_t> state_attrs;
+  // By attribute: whether a shape's attribute chain can hold it (a set(), color(), or an
+  // operation's state); an attribute that none can is the lot's value on every shape.
+  std::vector<bool> on_chains;
   std::vector<ENode> nodes;
   std::vector<Value> consts;
   // CityEngine's comp functions (ECode::kCompFunc): code kComp, branches keyed by selector, each

@@ -200,7 +200,11 @@ struct ChainLook {
   std::optional<shape::UvMap> uv;
   std::string color;
   std::string texture;
-  std::optional<kernel::MaterialId> material{};  // once the scene's material is found
+  // The scene's material, found at first use (find_material). Plain fields, not an optional:
+  // to_scene reads them for every terminal, and a one-byte flag read back with its value stalls.
+  bool material_known = false;
+  bool recolours = false;  // a colour or colour map: the faces take `material`
+  kernel::MaterialId material = 0;
 };
 
 // Adds a rectangle terminal (most of a facade: walls, panes, frames) to `mesh` straight in world
@@ -224,11 +228,12 @@ void add_world_rectangle(Mesh& mesh, const shape::Scope& scope, kernel::FaceTag 
 
 // The scene's material for a chain's colour and colour map, added at first use; none when the
 // chain has neither (its faces keep the geometry's own material).
-std::optional<kernel::MaterialId> material_of(
-    ChainLook& look, std::map<std::pair<std::string, std::string>, kernel::MaterialId>& materials,
-    shape::Scene& scene) {
-  if (look.color.empty() && look.texture.empty()) return std::nullopt;
-  if (look.material) return look.material;
+void find_material(ChainLook& look,
+                   std::map<std::pair<std::string, std::string>, kernel::MaterialId>& materials,
+                   shape::Scene& scene) {
+  if (look.material_known) return;
+  look.material_known = true;
+  if (look.color.empty() && look.texture.empty()) return;
   const std::string& color = look.color;
   const std::string& texture = look.texture;
   auto [it, inserted] = materials.emplace(std::pair{color, texture}, 0);
@@ -240,8 +245,8 @@ std::optional<kernel::MaterialId> material_of(
     material.texture = texture;
     scene.materials.push_back(std::move(material));
   }
+  look.recolours = true;
   look.material = it->second;
-  return look.material;
 }
 
 // The part of a lot's scene that takes a terminal of symbol `name` with `look`'s attributes when
@@ -312,6 +317,7 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
   const std::string uv0 = shape::uv_set_attribute(0);
   kernel::SharedMeshes across_lots;  // lots derive apart: alike meshes of different lots become one
   kernel::Mesh world;                // a terminal's mesh in world coordinates (its storage reused)
+  constexpr std::size_t kRecordsAhead = 8;
   for (std::size_t i = 0; i < results.size() && i < lots.size(); ++i) {
     const LotResult& r = results[i];
     const std::map<const Mesh*, int> uses = instances ? mesh_uses(r) : std::map<const Mesh*, int>{};
@@ -324,6 +330,15 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
     AlikeParts alike(building.parts);
     for (std::size_t t = 0; t < r.terminals_store.size(); ++t) {
       const Terminal& term = r.terminals_store[t];
+      // The records were written while the tile's other lots derived and have left the cache:
+      // ask for a later one's lines while this one is converted (perf: the record's load was
+      // a tenth of to_scene).
+      if (t + kRecordsAhead < r.terminals_store.size()) {
+        const auto* ahead = reinterpret_cast<const char*>(&r.terminals_store[t + kRecordsAhead]);
+        for (std::size_t line = 0; line < sizeof(Terminal); line += 64) {
+          __builtin_prefetch(ahead + line);
+        }
+      }
       const Geometry& geometry = r.geometry[term.geometry];
       // Rectangles go straight into their part; a mesh is read where it is (no reference counted
       // copies per terminal), boxes are made in the scope first.
@@ -338,15 +353,17 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
       auto [known, added] = looks.try_emplace(term.attrs);
       if (added) known->second = chain_look(program, r, term.attrs, uv0);
       ChainLook& look = known->second;
-      const std::optional<kernel::MaterialId> material = material_of(look, materials, scene);
+      find_material(look, materials, scene);
+      const bool recolours = look.recolours;
+      const kernel::MaterialId material = look.material;  // 0 when it does not recolour
       const std::string_view name = program.symbol_name(term.symbol);
       const auto use = rectangle ? uses.end() : uses.find(mesh);
       if (use != uses.end() && use->second > 1 && !look.uv) {
-        std::shared_ptr<const Mesh>& instanced = shared[{mesh, material.value_or(0)}];
+        std::shared_ptr<const Mesh>& instanced = shared[{mesh, material}];
         if (!instanced) {
           auto coloured = std::make_shared<Mesh>(*mesh);
-          for (std::size_t f = 0; material.value_or(0) != 0 && f < coloured->face_count(); ++f) {
-            coloured->tag(f).material = *material;
+          for (std::size_t f = 0; material != 0 && f < coloured->face_count(); ++f) {
+            coloured->tag(f).material = material;
           }
           instanced = across_lots.share(std::move(coloured));
         }
@@ -373,8 +390,8 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
         shape::mesh_to_world(*mesh, term.scope, world);
         part->mesh.append(world);
       }
-      for (std::size_t f = first_face; material && f < part->mesh.face_count(); ++f) {
-        part->mesh.tag(f).material = *material;
+      for (std::size_t f = first_face; recolours && f < part->mesh.face_count(); ++f) {
+        part->mesh.tag(f).material = material;
       }
     }
     if (!building.parts.empty()) scene.buildings.push_back(std::move(building));

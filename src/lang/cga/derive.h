@@ -162,9 +162,10 @@ struct LotResult {
   std::vector<std::uint64_t> symbol_counts;    // by SymbolId: shapes created with that symbol
   std::vector<std::string> prints;             // print() lines, in derivation order
   std::map<std::string, ReportEntry> reports;  // report() sums
-  shape::AttributeMap attributes;    // the lot's resolved attr values + properties (arrays as text)
-  std::size_t peak_pending = 0;      // largest number of pending shapes at once
-  TerminalStore terminals_store;     // when keep_terminals
+  shape::AttributeMap attributes;  // the lot's resolved attr values + properties (arrays as text)
+  std::size_t peak_pending = 0;    // largest number of pending shapes at once
+  TerminalStore terminals_store;   // when keep_terminals
+  // What terminal records refer to; empty when none are kept (DeriveOptions::keep_terminals).
   std::vector<Geometry> geometry;    // handle 0: no geometry
   std::vector<AttrNode> attr_nodes;  // node 0: the empty chain
 };

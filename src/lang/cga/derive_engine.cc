@@ -23,6 +23,12 @@ void Engine::run() {
     start();
     loop();
     out_.ok = true;
+    if (!keep_) {
+      // Only terminal records read these: a count-only run (every lot's result kept until the
+      // end) need not hold each lot's meshes meanwhile.
+      out_.geometry = {};
+      out_.attr_nodes = {};
+    }
   } catch (const DeriveError& e) {
     out_.diagnostics.push_back(e.diagnostic);
   } catch (const EvalError& e) {
@@ -145,7 +151,9 @@ std::string Engine::occlusion(const std::string& /*what*/, Range /*range*/) {
   for (std::size_t i = 0; i < out_.terminals_store.size(); ++i)
     consider(out_.terminals_store[i].scope);
   for (const auto& bucket : pending_) {
-    for (const Work& w : bucket) consider(w.scope);
+    for (const Work& w : bucket) {
+      if (&w != current_) consider(w.scope);  // the asking shape's own record
+    }
   }
   for (const Work& w : batch_) consider(w.scope);
   const double f = shape::occlusion(tree, id, others);
@@ -722,10 +730,15 @@ void Engine::loop() {
       }
     }
     if (level == pending_.size()) return;
-    const Work w = pending_[level].back();
-    pending_[level].pop_back();
+    // Processed where it lies (a copy was read back in pieces other than those it was written
+    // in: a store-forwarding stall on every shape), removed after; until then occlusion() passes
+    // it over as it would a removed one. Nothing adds to pending_ before flush_batch().
+    const Work& w = pending_[level].back();
     --pending_count_;
+    current_ = &w;
     process(w);
+    current_ = nullptr;
+    pending_[level].pop_back();
     flush_batch();
   }
 }
@@ -770,10 +783,7 @@ void Engine::process(const Work& w) {
   for (std::uint32_t r : program_.rules_at[w.symbol][w.level]) {
     const CRule& rule = program_.rules[r];
     rule_ = &rule;
-    if (rule.condition != kNoExpr &&
-        !as_bool(evaluate(program_, rule.condition, *this), program_.nodes[rule.condition].range)) {
-      continue;
-    }
+    if (rule.condition != kNoExpr && !condition_holds(r, rule)) continue;
     apply(rule, st);
     return;
   }
@@ -788,6 +798,17 @@ void Engine::process(const Work& w) {
     }
   }
   terminal(st, w.symbol);
+}
+
+bool Engine::condition_holds(std::uint32_t r, const CRule& rule) {
+  const auto holds = [&] {
+    return as_bool(evaluate(program_, rule.condition, *this), program_.nodes[rule.condition].range);
+  };
+  if (!rule.condition_per_lot) return holds();
+  // Asked on every shape of the symbol (a facade's walls ask for its style): the lot's answer.
+  std::int8_t& known = lot_conditions_[r];
+  if (known < 0) known = holds() ? 1 : 0;
+  return known == 1;
 }
 
 double Engine::probability(const CRule& rule, std::uint32_t p) {
@@ -869,11 +890,10 @@ void Engine::run_items(const std::vector<CItem>& items, std::size_t from, State&
       case OpCode::kSymbol:
         count_shape(c.symbol);
         {
-          State child = st;
-          child.seed = shape::child_seed(st.seed, st.next_child++);
-          if (track_lineage_) child.lineage = add_lineage(st.lineage, child.seed);
-          child.next_child = 0;
-          child.frame = c.args.empty() ? 0 : new_frame(c.args, st);
+          const std::uint64_t seed = shape::child_seed(st.seed, st.next_child++);
+          const std::uint32_t lineage = track_lineage_ ? add_lineage(st.lineage, seed) : st.lineage;
+          const std::uint32_t arguments = c.args.empty() ? 0 : new_frame(c.args, st);
+          const State child = State::successor(st, seed, lineage, arguments);
           if (c.terminal) {
             terminal(child, c.symbol);
           } else {
@@ -1063,9 +1083,18 @@ void Engine::color(const CItem& c, State& st) {
     return;
   }
   // A colour written as a literal (most are) is checked and normalised once per lot, and on a
-  // chain it met before takes the node it took then: one lookup for each of a façade's walls.
+  // chain it met before takes the node it took then: one lookup for each of a façade's walls,
+  // and none while the literal meets the chain it met last (a façade's walls share theirs).
+  if (last_literal_.size() <= c.args[0]) last_literal_.resize(c.args[0] + 1);
+  LastLiteral& last = last_literal_[c.args[0]];
+  if (last.node != 0 && last.chain == st.attrs) {
+    st.attrs = last.node;
+    touch(st);
+    return;
+  }
   const std::uint64_t key = (std::uint64_t{st.attrs} << 32) | std::uint64_t{c.args[0]};
   if (const auto it = literal_nodes_.find(key); it != literal_nodes_.end()) {
+    last = {st.attrs, it->second};
     st.attrs = it->second;
     touch(st);
     return;
@@ -1076,8 +1105,10 @@ void Engine::color(const CItem& c, State& st) {
     if (!hex) return;
     known = literal_colors_.emplace(c.args[0], std::move(*hex)).first;
   }
+  const std::uint32_t chain = st.attrs;
   set_attr(st, program_.color_attr, Value(known->second));
   literal_nodes_.emplace(key, st.attrs);
+  last = {chain, st.attrs};
 }
 
 std::optional<std::string> Engine::color_hex(const CItem& c, State& st) {

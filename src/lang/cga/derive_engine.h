@@ -33,8 +33,16 @@ using shape::Scope;
 using shape::SizeMode;
 using shape::SizeSpec;
 
+struct State;
+
 // A pending shape (derive.h: "compact state").
 struct Work {
+  Work() = default;
+  // Shape `shape_symbol` with `st`'s state, pending at `shape_depth` and priority level
+  // `shape_level`.
+  Work(const State& st, SymbolId shape_symbol, std::uint16_t shape_depth,
+       std::uint16_t shape_level);
+
   Scope scope;
   std::uint64_t seed = 0;
   SymbolId symbol = kNoSymbol;
@@ -68,7 +76,45 @@ struct State {
   // (Insula: z for both). True while a flat shape descends from the lot (or from
   // alignScopeToGeometry(yUp)) and not from comp: Engine::lot_axes() maps CityEngine's y and z.
   bool lot_axes = false;
+
+  // A new shape from `parent` (a symbol of its successor) with its own seed, lineage and rule
+  // arguments, not yet consumed or modified. Member by member, never reading the parent's
+  // flags: a copy of the whole state read them in 16-byte pieces just after touch() wrote them
+  // a byte each, and waited for the stores.
+  static State successor(const State& parent, std::uint64_t seed, std::uint32_t lineage,
+                         std::uint32_t frame) {
+    State s;
+    s.scope = parent.scope;
+    s.seed = seed;
+    s.geometry = parent.geometry;
+    s.attrs = parent.attrs;
+    s.index = parent.index;
+    s.total = parent.total;
+    s.frame = frame;
+    s.selector = parent.selector;
+    s.lineage = lineage;
+    s.lot_axes = parent.lot_axes;
+    return s;
+  }
 };
+
+// Every member from its source: push_or_terminal constructs works in place, and a default
+// construction first would clear the record only to overwrite it.
+inline Work::Work(const State& st, SymbolId shape_symbol, std::uint16_t shape_depth,
+                  std::uint16_t shape_level)
+    : scope(st.scope),
+      seed(st.seed),
+      symbol(shape_symbol),
+      geometry(st.geometry),
+      attrs(st.attrs),
+      index(st.index),
+      total(st.total),
+      frame(st.frame),
+      selector(st.selector),
+      depth(shape_depth),
+      level(shape_level),
+      lineage(st.lineage),
+      lot_axes(st.lot_axes) {}
 
 // A shape CityEngine's occlusion queries ask about: a label()led shape, or a closed leaf
 // (label ""). `lineage` holds the seeds from the initial shape down to it, so that a query
@@ -120,6 +166,7 @@ class Engine final : public EvalContext {
     out_.symbol_counts.assign(program.symbols.size(), 0);
     pending_.resize(std::max<std::size_t>(1, program.priorities.size()));
     values_.resize(program.attrs.size());
+    lot_conditions_.assign(program.rules.size(), -1);
     status_.resize(program.attrs.size(), 0);
   }
 
@@ -244,24 +291,17 @@ class Engine final : public EvalContext {
       limit_error("CGA601", "derivation depth limit of " +
                                 std::to_string(options_.limits.max_depth) + " reached");
     }
-    Work w;
-    w.scope = st.scope;
-    w.seed = st.seed;
-    w.symbol = symbol;
-    w.geometry = st.geometry;
-    w.attrs = st.attrs;
-    w.index = st.index;
-    w.total = st.total;
-    w.frame = st.frame;
-    w.selector = st.selector;
-    w.lineage = st.lineage;
-    w.lot_axes = st.lot_axes;
-    w.depth = static_cast<std::uint16_t>(depth);
-    w.level = static_cast<std::uint16_t>(program_.levels_of[symbol].front());
-    batch_.push_back(w);
+    // Constructed in place: a Work built aside and copied in was read back in 16-byte pieces
+    // over fields just written in 2 to 8 (perf: the store-forwarding stall was a third of this).
+    batch_.emplace_back(st, symbol, static_cast<std::uint16_t>(depth),
+                        static_cast<std::uint16_t>(program_.levels_of[symbol].front()));
   }
 
   void process(const Work& w);
+
+  // Whether the condition of rule `r` holds on the current shape; a condition with one value
+  // per lot (CRule::condition_per_lot) is evaluated once.
+  bool condition_holds(std::uint32_t r, const CRule& rule);
 
   // The value of probability expression `p` of `rule`. Seed 004 §IV.B constraint 1 asks for a
   // probability in (0, 1]; the checker enforces it on constants (CGA301). A computed one (an
@@ -368,6 +408,24 @@ class Engine final : public EvalContext {
   // lot (the rectangle's own position is its scope's: the piece is the same for every window).
   const InsetPiece& inset_piece(const kernel::Bounds2& box, double distance, const FaceTag& tag,
                                 std::uint32_t piece);
+  // Such a piece's key: the box's corners and the distance bit for bit, the tag and the piece.
+  using InsetKey = std::array<std::uint64_t, 7>;
+  struct InsetKeyHash {
+    std::size_t operator()(const InsetKey& key) const {
+      std::uint64_t h = 0;
+      for (const std::uint64_t word : key) h = shape::mix64(h ^ word);
+      return static_cast<std::size_t>(h);
+    }
+  };
+  // The geometry of such a piece, shared by the lots one thread derives.
+  struct InsetShape {
+    std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const kernel::Polygon> outline;
+    Vec3 offset;
+    Vec3 size;
+  };
+  static const InsetShape& inset_shape(const InsetKey& key, const kernel::Bounds2& box,
+                                       double distance, const FaceTag& tag, std::uint32_t piece);
   // The values of Program::state_attrs the shape sees (null where none is set).
   std::vector<Value> state_values(const State& st) const;
   // The shape's uv set `set` (setupProjection + projectUV), if it has one.
@@ -505,6 +563,12 @@ class Engine final : public EvalContext {
   std::unordered_map<std::uint32_t, std::string> literal_colors_;
   // The node a literal colour took, by (attribute chain, expression).
   std::unordered_map<std::uint64_t, std::uint32_t> literal_nodes_;
+  // The last of those by expression (node 0: none yet; set_attr never gives node 0).
+  struct LastLiteral {
+    std::uint32_t chain = 0;
+    std::uint32_t node = 0;
+  };
+  std::vector<LastLiteral> last_literal_;
   BuiltinAssets assets_;
   shape::Context context_;
   std::uint64_t lot_seed_;
@@ -531,7 +595,8 @@ class Engine final : public EvalContext {
 
   std::vector<std::vector<Work>> pending_;  // one stack per priority level
   std::size_t pending_count_ = 0;
-  std::vector<Work> batch_;  // shapes created by the current rule application
+  std::vector<Work> batch_;        // shapes created by the current rule application
+  const Work* current_ = nullptr;  // the record being processed, still in pending_
   std::vector<State> starts_;
   State start_state_;
   State* cur_ = nullptr;
@@ -540,13 +605,14 @@ class Engine final : public EvalContext {
   std::uint32_t depth_ = 0;
 
   std::vector<Value> values_;
-  std::vector<std::uint8_t> status_;  // 0 not evaluated, 1 in progress, 2 done
+  std::vector<std::uint8_t> status_;         // 0 not evaluated, 1 in progress, 2 done
+  std::vector<std::int8_t> lot_conditions_;  // by rule: -1 not asked yet, else the answer
   std::vector<Value> frame_values_;
   std::vector<std::size_t> frame_begin_{0, 0};
   std::map<std::array<std::uint64_t, 6>, std::uint32_t> boxes_;
   std::map<std::uint64_t, std::uint32_t> rects_;
   // Pieces of rectangle insets by (box, distance, tag, piece): a façade's windows are alike.
-  std::map<std::array<std::uint64_t, 7>, InsetPiece> insets_;
+  std::map<InsetKey, InsetPiece> insets_;  // a handful a lot: a tree is cheaper than hashing
   // i() results by content (DeriveOptions::share_inserts).
   kernel::SharedMeshes inserted_;
   std::map<std::pair<std::uint32_t, std::string>, std::size_t> warnings_;

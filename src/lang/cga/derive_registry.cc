@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cctype>
+#include <unordered_map>
 
 #include "lang/cga/derive_engine.h"
 #include "shape/ops.h"
@@ -108,22 +109,39 @@ std::optional<OpOutcome> Engine::inset_rectangle(const State& st,
 
 const Engine::InsetPiece& Engine::inset_piece(const kernel::Bounds2& box, double distance,
                                               const FaceTag& tag, std::uint32_t piece) {
-  const std::array<std::uint64_t, 7> key{std::bit_cast<std::uint64_t>(box.min.x),
-                                         std::bit_cast<std::uint64_t>(box.min.y),
-                                         std::bit_cast<std::uint64_t>(box.max.x),
-                                         std::bit_cast<std::uint64_t>(box.max.y),
-                                         std::bit_cast<std::uint64_t>(distance),
-                                         tag_key(tag),
-                                         piece};
+  const InsetKey key{std::bit_cast<std::uint64_t>(box.min.x),
+                     std::bit_cast<std::uint64_t>(box.min.y),
+                     std::bit_cast<std::uint64_t>(box.max.x),
+                     std::bit_cast<std::uint64_t>(box.max.y),
+                     std::bit_cast<std::uint64_t>(distance),
+                     tag_key(tag),
+                     piece};
   auto [it, added] = insets_.try_emplace(key);
   if (added) {
-    shape::FlatRegion region =
-        shape::flat_region(shape::rectangle_inset_piece(box, -distance, piece));
-    auto outline = std::make_shared<const kernel::Polygon>(std::move(region.outline));
-    it->second = {add_mesh(shape::flat_mesh(*outline, tag), outline, region.size), region.offset,
-                  region.size};
+    const InsetShape& made = inset_shape(key, box, distance, tag, piece);
+    it->second = {add_mesh(made.mesh, made.outline, made.size), made.offset, made.size};
   }
   return it->second;
+}
+
+const Engine::InsetShape& Engine::inset_shape(const InsetKey& key, const kernel::Bounds2& box,
+                                              double distance, const FaceTag& tag,
+                                              std::uint32_t piece) {
+  // The piece is a function of the key alone, and most lots' windows have one of a few sizes:
+  // made once per thread rather than once per lot (the frame's triangulation is most of a
+  // window's inset). Lots share the meshes only to read them. Bounded: a city of windows of
+  // ever new sizes starts over now and then.
+  constexpr std::size_t kMostShapes = 4096;
+  thread_local std::unordered_map<InsetKey, InsetShape, InsetKeyHash> made;
+  if (const auto it = made.find(key); it != made.end()) return it->second;
+  if (made.size() >= kMostShapes) made.clear();
+  shape::FlatRegion region =
+      shape::flat_region(shape::rectangle_inset_piece(box, -distance, piece));
+  auto outline = std::make_shared<const kernel::Polygon>(std::move(region.outline));
+  std::shared_ptr<const Mesh> mesh = shape::flat_mesh(*outline, tag);
+  return made
+      .try_emplace(key, InsetShape{std::move(mesh), std::move(outline), region.offset, region.size})
+      .first->second;
 }
 
 std::vector<Value> Engine::state_values(const State& st) const {
