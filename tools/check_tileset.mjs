@@ -14,7 +14,8 @@
 //     content.featuresLength), the root bounding sphere's centre as lon/lat/height, the feature
 //     picked nearest the canvas centre with its properties; tile failures, page or console
 //     errors, HTTP 404s under the tileset, and a content whose bounding sphere (Cesium's) has its
-//     centre outside its tile's region or is larger than the region's sphere fail the check.
+//     centre outside its tile's region or is larger than the region's sphere fail the check, and
+//     so does a tileset with contents of which loaders.gl or Cesium loaded none.
 //     Warnings (stderr, not failures): loaders.gl reading empty strings or all-zero feature ids
 //     (its EXT_structural_metadata / EXT_mesh_features decoding runs before meshopt's).
 // Every file comes from a local HTTP server on 127.0.0.1 (tools/browser_common.mjs); any other
@@ -681,6 +682,13 @@ async function main() {
       }
     }
   }
+  // A tileset with contents that neither viewer loads looked fine to every other check once: a
+  // roof 2,000 km long widened its tile's region until the zoomed-out camera refined nothing.
+  const contents = summary.structure?.contents ?? 0;
+  if (contents > 0 && summary.loadersgl && summary.loadersgl.tiles === 0) {
+    fail(`loaders.gl loaded none of the ${contents} tile contents`);
+  }
+  if (contents > 0 && summary.tiles === 0) fail(`Cesium loaded none of the ${contents} tile contents`);
   if (options.expectFeatures !== null && summary.features !== options.expectFeatures) {
     fail(`Cesium loaded ${summary.features} features, expected ${options.expectFeatures}`);
   }

@@ -77,9 +77,16 @@ double tan_deg(double degrees) {
   return std::tan(degrees * kPi / 180);
 }
 
+// An eave corner may reach at most this many overhangs from its footprint corner (a corner of
+// about 14 degrees; 2 / sin(angle / 2) grows without bound as the corner sharpens): a sliver's
+// near-zero corner put the eave of a real OpenStreetMap lot 400 m away (docs/kernel-roofs.md,
+// "Overhang").
+constexpr double kEaveMiterLimit = 8;
+
 // Offsets every edge e outward (to its right) by distances[e] >= 0 with mitred corners, so vertex
 // k of the result corresponds to vertex k of `c`. Returns false when a corner is undefined
-// (parallel neighbours with different distances) or an edge flips.
+// (parallel neighbours with different distances), reaches beyond kEaveMiterLimit, or an edge
+// flips.
 bool offset_contour(const Contour& c, const std::vector<double>& distances, Contour& out) {
   out.ring_starts = c.ring_starts;
   out.points.resize(c.points.size());
@@ -97,6 +104,7 @@ bool offset_contour(const Contour& c, const std::vector<double>& distances, Cont
     const Vec2 q =
         Vec2{distances[p] * nk.y - distances[k] * np.y, distances[k] * np.x - distances[p] * nk.x} /
         det;
+    if (length(q) > kEaveMiterLimit * std::max(distances[p], distances[k])) return false;
     out.points[k] = c.points[k] + q;
   }
   for (std::uint32_t k = 0; k < c.points.size(); ++k) {
@@ -598,8 +606,10 @@ bool plan_roof(const Polygon& footprint, const RoofSpec& spec, RoofPlan& plan) {
   plan.footprint = Contour::from(footprint);
   double overhang = spec.overhang;
   if (overhang > 0 && !plan_eave(plan, overhang, {})) {
-    plan.message = "overhang of " + std::to_string(overhang) +
-                   " m makes the eave polygon self-intersect; built without overhang";
+    plan.message =
+        "overhang of " + std::to_string(overhang) +
+        " m makes the eave polygon self-intersect or reach too far out at a sharp corner; built "
+        "without overhang";
     overhang = 0;
   }
   std::vector<RoofType> tried;

@@ -152,6 +152,36 @@ TEST(Roof, OverhangAddsSoffitsAndLowersEaves) {
   EXPECT_NEAR(r.mesh.bounds().min.x, -0.5, 1e-12);
 }
 
+// The mitred eave corner of an angle a reaches overhang / sin(a / 2) out. A 5 mm sliver (the
+// 0.14-degree corner an inset left of a real OpenStreetMap lot) put it 400 m away; beyond 8
+// overhangs the roof is built without overhang, and says so.
+TEST(Roof, OverhangIsDroppedAtAVerySharpCorner) {
+  RoofSpec spec;
+  spec.overhang = 0.5;
+  spec.pitch_deg = 28;
+  const Polygon sliver{{{0, 0}, {2.146, 0.7081}, {2.1444, 0.7131}}, {}};
+  const RoofResult r = build_roof(sliver, spec, 12);
+  ASSERT_EQ(r.status, RoofStatus::kFallback) << r.message;
+  EXPECT_NE(r.message.find("built without overhang"), std::string::npos) << r.message;
+  EXPECT_EQ(counts(r.mesh).count(SemanticClass::kOuterCeilingSurface), 0U);
+  const Bounds3 box = r.mesh.bounds();
+  EXPECT_GE(box.min.x, -1e-9);
+  EXPECT_LE(box.max.x, 2.146 + 1e-9);
+}
+
+// A 30-degree corner reaches 0.5 / sin(15 deg) = 1.93 m out: within the bound, so it keeps it.
+TEST(Roof, OverhangStaysAtAnOrdinarySharpCorner) {
+  RoofSpec spec;
+  spec.overhang = 0.5;
+  const double t = std::tan(30 * kPi / 180);
+  const Polygon wedge{{{0, 0}, {10, 0}, {10, 10 * t}}, {}};
+  const RoofResult r = build_roof(wedge, spec, 3);
+  ASSERT_EQ(r.status, RoofStatus::kOk) << r.message;
+  EXPECT_EQ(counts(r.mesh).at(SemanticClass::kOuterCeilingSurface), 3);
+  EXPECT_NEAR(r.mesh.bounds().min.x, -0.5 / std::sin(15 * kPi / 180) * std::cos(15 * kPi / 180),
+              1e-9);
+}
+
 TEST(Roof, PyramidRisesAboveTheCentroid) {
   RoofSpec spec;
   spec.type = RoofType::kPyramid;
