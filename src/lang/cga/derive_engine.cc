@@ -878,6 +878,7 @@ void Engine::flush_warnings() {
         "CGA604",
         key.second + (count > 1 ? " (" + std::to_string(count) + " times)" : std::string()),
         program_.span(Range{key.first, key.first + 1}));
+    d.notes.push_back("in lot '" + lot_.id + "'");  // among thousands of lots, which one
     out_.diagnostics.push_back(std::move(d));
   }
 }

@@ -242,7 +242,7 @@ TEST(Derive, FailedOperationsWarnAndKeepTheShape) {
   EXPECT_DOUBLE_EQ(r[0].terminals_store[0].scope.size.y, 3);
   EXPECT_EQ(diagnostics_text(r[0]),
             "test.cga:1:20: warning[CGA604]: extrude: needs a flat shape (a footprint or a "
-            "face)\n");
+            "face)\nnote: in lot 'lot'\n");
 }
 
 TEST(Derive, OcclusionSeesTheOtherShapesOfTheLot) {
