@@ -178,8 +178,14 @@ std::vector<Polygon> from_tree(const PolyTree& tree, Vec2 origin) {
 bool execute(ClipperLib::ClipType type, const Paths& a, const Paths& b, PolyTree& tree) {
   ClipperLib::Clipper clipper;
   clipper.StrictlySimple(true);
-  clipper.AddPaths(a, ClipperLib::ptSubject, true);
-  clipper.AddPaths(b, ClipperLib::ptClip, true);
+  // AddPaths says whether any ring had an area. Clipper reports a run without one as a failure;
+  // here it is an empty result (a window a split left one grid unit wide rounds to a line).
+  const bool subject = clipper.AddPaths(a, ClipperLib::ptSubject, true);
+  const bool clip = clipper.AddPaths(b, ClipperLib::ptClip, true);
+  if (!subject && !clip) {
+    tree.Clear();
+    return true;
+  }
   return clipper.Execute(type, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
 }
 
