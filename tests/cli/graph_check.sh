@@ -95,6 +95,11 @@ node -e 'const r = require(process.argv[1]);
   fail "--report-entities 3: $(head -c 300 "$tmp/few.json")"
 expect_exit 2 "--probe of a node the graph lacks" "$insula" build "$fig4" --probe nowhere -o "$tmp/p.glb"
 grep -qF "insula: --probe: the graph has no node 'nowhere'" "$tmp/err.txt" || fail "unknown probe message: $(cat "$tmp/err.txt")"
+expect_exit 2 "--lot for a graph without create.lots" "$insula" build \
+  "$root/examples/graph/footprint_tiles.graph.json" --lot "$root/examples/cga/district.geojson" \
+  -o "$tmp/lots.glb"
+grep -q "has no create.lots node that reads the --lot file" "$tmp/err.txt" ||
+  fail "--lot for a graph without create.lots: $(cat "$tmp/err.txt")"
 expect_exit 2 "--probe of a CGA file" "$insula" build "$root/examples/cga/district.cga" --probe x -o "$tmp/p.glb"
 grep -qF "insula: --probe: only a graph (.graph.json) has nodes to probe" "$tmp/err.txt" || fail "CGA probe message: $(cat "$tmp/err.txt")"
 [ -e "$tmp/p.glb" ] && fail "a refused probe wrote its output"

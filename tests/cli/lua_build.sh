@@ -98,6 +98,13 @@ grep -q "loop.lua:1:1: error\[LUA101\]: instruction limit of 100000 reached" "$t
   fail "limit text: $(cat "$tmp/err.txt")"
 expect_exit 2 "bad limit" "$insula" build "$tmp/loop.lua" --set limit_depth=x
 
+# A program does not read lots: --lot is refused rather than ignored (it would build the one house).
+expect_exit 2 "--lot for a Lua program" "$insula" build "$root/examples/lua/row_house.lua" \
+  --lot "$root/examples/cga/district.geojson" -o "$tmp/lots.glb"
+grep -q "^insula: --lot: .*row_house.lua does not read lots" "$tmp/err.txt" ||
+  fail "--lot for Lua: $(cat "$tmp/err.txt")"
+[ ! -e "$tmp/lots.glb" ] || fail "--lot for Lua wrote an output"
+
 # Instancing (seed 001 §4.5): the hotel's furniture shares meshes, so the GLB holds one mesh per
 # distinct piece and a node per placement; OBJ and CityJSON expand every placement.
 out=$tmp/hotel

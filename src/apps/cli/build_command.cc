@@ -91,6 +91,15 @@ int run_build(const BuildOptions& given) {
     std::fprintf(stderr, "insula: --probe: only a graph (.graph.json) has nodes to probe\n");
     return kExitUsage;
   }
+  // A program that never reads --lot would build the same thing once, wherever the lots lie.
+  if (!options.lot.empty() &&
+      (has_suffix(options.input, ".lua") || has_suffix(options.input, ".psm"))) {
+    std::fprintf(stderr,
+                 "insula: --lot: %s does not read lots (a .cga or .bldg grammar or a graph does; a "
+                 "graph's rule.lua node runs a Lua program on each lot)\n",
+                 options.input.c_str());
+    return kExitUsage;
+  }
   if (has_suffix(options.input, ".cga")) return build_cga(options);
   if (has_suffix(options.input, ".bldg")) return build_bldg(options);
   if (has_suffix(options.input, ".lua")) return build_lua(options);

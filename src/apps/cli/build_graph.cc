@@ -121,6 +121,13 @@ int build_graph(const BuildOptions& options) {
   const base::Source source(options.input, *text);
   const std::optional<LoadedGraph> loaded = load_graph(source, options.quiet);
   if (!loaded) return kExitInput;
+  if (!options.lot.empty() && !lang::graph::reads_lot_file(loaded->checked)) {
+    std::fprintf(stderr,
+                 "insula: --lot: %s has no create.lots node that reads the --lot file (its lots "
+                 "come from its own nodes)\n",
+                 options.input.c_str());
+    return kExitUsage;
+  }
   seconds["check"] = clock.seconds();
 
   const std::filesystem::path own = std::filesystem::path(options.input).parent_path();

@@ -39,6 +39,21 @@ std::string lots_obstacle(const CheckedNode& node) {
 
 }  // namespace
 
+bool reads_lot_file(const CheckResult& checked) {
+  for (const CheckedGraph& graph : checked.graphs) {
+    for (const CheckedNode& node : graph.nodes) {
+      if (node.type == nullptr || node.type->name != "create.lots") continue;
+      const auto file = std::find_if(node.node->params.begin(), node.node->params.end(),
+                                     [](const ParamValue& p) { return p.name == "file"; });
+      if (file == node.node->params.end() || file->expression || file->value == nullptr ||
+          file->value->kind != JsonValue::Kind::kString || file->value->text.empty()) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 std::string per_lot_obstacle(const CheckResult& checked) {
   if (!checked.ok || checked.graphs.empty()) return "the graph has errors";
   const CheckedGraph& graph = checked.graphs.front();

@@ -17,4 +17,8 @@ namespace insula::lang::graph {
 // query, path, terrain or creation families; no light node either (tiles carry no lights).
 std::string per_lot_obstacle(const CheckResult& checked);
 
+// Whether some create.lots node of the checked graphs (subgraphs too) may read the --lot file:
+// its `file` is absent, empty or computed.
+bool reads_lot_file(const CheckResult& checked);
+
 }  // namespace insula::lang::graph
