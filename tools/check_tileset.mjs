@@ -133,7 +133,6 @@ function checkBoundingVolume(volume, where) {
     if (Math.abs(south) > pi / 2 || Math.abs(north) > pi / 2) fail(`${where}: region south/north outside [-pi/2, pi/2]`);
     if (south > north) fail(`${where}: region south ${south} > north ${north}`);
     if (minH > maxH) fail(`${where}: region minimum height ${minH} > maximum ${maxH}`);
-    if (west > east) warn(`${where}: region crosses the antimeridian (west > east); containment not checked`);
   }
   if (volume.box !== undefined && !finite(volume.box, 12)) fail(`${where}: boundingVolume.box is not 12 numbers`);
   if (volume.sphere !== undefined && (!finite(volume.sphere, 4) || volume.sphere[3] < 0)) {
@@ -142,11 +141,19 @@ function checkBoundingVolume(volume, where) {
   return volume.region !== undefined && finite(volume.region, 6) ? volume.region : null;
 }
 
+// A longitude's and a region's eastward distance from west, in [0, 2 pi): a region across the
+// antimeridian (west > east) is as wide as any other.
+function eastOf(longitude, west) {
+  const turn = 2 * Math.PI;
+  return ((longitude - west) % turn + turn) % turn;
+}
+
 function regionInside(child, parent) {
   const eps = 1e-9;  // radians, about 6 mm
   const epsH = 1e-3;  // metres
-  if (child[0] > child[2] || parent[0] > parent[2]) return true;  // antimeridian: not checked
-  return child[0] >= parent[0] - eps && child[2] <= parent[2] + eps &&
+  const parentWidth = eastOf(parent[2], parent[0]);
+  const start = eastOf(child[0], parent[0] - eps) - eps;
+  return start + eastOf(child[2], child[0]) <= parentWidth + eps &&
          child[1] >= parent[1] - eps && child[3] <= parent[3] + eps &&
          child[4] >= parent[4] - epsH && child[5] <= parent[5] + epsH;
 }
@@ -512,8 +519,10 @@ const cesiumPage = (tilesetUrl, width, height) => `<!doctype html><html><head><m
         const slack = 1 / 6378137;
         const r = region;
         const bv = tile.boundingVolume;
-        const inside = c.longitude >= r.west - slack / Math.cos(c.latitude) &&
-          c.longitude <= r.east + slack / Math.cos(c.latitude) &&
+        const turn = 2 * Math.PI;  // longitudes east of r.west (a region may cross the antimeridian)
+        const lonSlack = slack / Math.cos(c.latitude);
+        const east = (lon) => ((lon - (r.west - lonSlack)) % turn + turn) % turn;
+        const inside = east(c.longitude) <= east(r.east) + lonSlack &&
           c.latitude >= r.south - slack && c.latitude <= r.north + slack &&
           c.height >= bv.minimumHeight - 1 && c.height <= bv.maximumHeight + 1;
         const limit = tile.boundingSphere.radius + 1;

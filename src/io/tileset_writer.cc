@@ -84,6 +84,13 @@ double diagonal(const TileNode& node) {
   return std::hypot(size.x, size.y);
 }
 
+// An unwrapped longitude (regions_of) in [-pi, pi], as 3D Tiles regions hold them.
+double written_longitude(double radians) {
+  if (radians > std::numbers::pi) return radians - 2 * std::numbers::pi;
+  if (radians < -std::numbers::pi) return radians + 2 * std::numbers::pi;
+  return radians;
+}
+
 // Each box's region: its corners and edge midpoints taken to longitude and latitude (a projected
 // box's edges are nearly straight there), widened by about a centimetre.
 std::vector<Region> regions_of(const std::string& crs, kernel::Vec3 origin,
@@ -101,6 +108,10 @@ std::vector<Region> regions_of(const std::string& crs, kernel::Vec3 origin,
   if (!error.empty()) return {};
   constexpr double kRadians = std::numbers::pi / 180;
   constexpr double kMargin = 2e-9;  // radians, about 1.3 cm
+  // Longitudes are unwrapped around the first point's, so a city on the antimeridian (Fiji,
+  // Chukotka) gets a narrow region and not one around the globe; written_longitude() wraps them
+  // back, and such a region then has west > east, as 3D Tiles regions may.
+  const double reference = points.empty() ? 0.0 : points.front().x;
   std::vector<Region> regions;
   for (std::size_t b = 0; b < boxes.size(); ++b) {
     Region region;
@@ -111,8 +122,9 @@ std::vector<Region> regions_of(const std::string& crs, kernel::Vec3 origin,
                 crs + " on the globe";
         return {};
       }
-      region.add({p.x * kRadians - kMargin, p.y * kRadians - kMargin, p.x * kRadians + kMargin,
-                  p.y * kRadians + kMargin, 0, 0});
+      const double lon = (reference + std::remainder(p.x - reference, 360.0)) * kRadians;
+      region.add(
+          {lon - kMargin, p.y * kRadians - kMargin, lon + kMargin, p.y * kRadians + kMargin, 0, 0});
     }
     region.low = origin.z + boxes[b].min.z;
     region.high = origin.z + boxes[b].max.z;
@@ -185,7 +197,10 @@ struct TilesetJson {
     const Region& r = *regions[n];
     json.begin_object();
     json.key("boundingVolume").begin_object().key("region").begin_array();
-    for (const double value : {r.west, r.south, r.east, r.north, r.low, r.high}) json.number(value);
+    for (const double value :
+         {written_longitude(r.west), r.south, written_longitude(r.east), r.north, r.low, r.high}) {
+      json.number(value);
+    }
     json.end_array().end_object();
     if (!node.leaf()) {
       json.key("children").begin_array();

@@ -39,6 +39,21 @@ check_tileset "OSM town opens in CesiumJS and loaders.gl" "$tmp/osm/tileset.json
   --expect-features 17 --lonlat 11.3945,47.2655 --tolerance-m 50
 grep -q '"building":"relation/3001"' "$tmp/c.txt" || fail "OSM town: picked feature's building"
 
+# A town on the antimeridian (Fiji, lon/lat on both sides of 180 degrees): regions are narrow and
+# cross it (west > east), not bands around the globe that no viewer refines (both loaded none).
+node "$root/examples/city/make_city.mjs" 600 "$tmp/fiji.geojson" --crs EPSG:32760 \
+  --origin 820287.93,8173373.04 >/dev/null
+expect_exit 0 "Fiji, on the antimeridian" "$insula" mass "$tmp/fiji.geojson" --tile-faces 3000 \
+  -o "$tmp/fiji/tileset.json" --quiet
+node -e '
+  const t = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  const r = t.root.boundingVolume.region;
+  const width = ((r[2] - r[0]) % (2 * Math.PI) + 2 * Math.PI) % (2 * Math.PI);
+  if (!(r[0] > r[2]) || width > 1e-3) { console.log(JSON.stringify(r)); process.exit(1); }
+' "$tmp/fiji/tileset.json" || fail "Fiji: the root region does not cross the antimeridian narrowly"
+check_tileset "Fiji opens in CesiumJS and loaders.gl" "$tmp/fiji/tileset.json" \
+  --expect-features 600 --lonlat 180,-16.5 --tolerance-m 1000
+
 # Many tiles: 2,500 generated footprints split into tiles of at most 8,000 faces.
 node "$root/bench/make_footprints.mjs" 2500 "$tmp/grid.geojson" >/dev/null
 for threads in 1 2; do
