@@ -296,7 +296,8 @@ void FootprintBuilder::resolve_crs(const Location& crs_at) {
       box = kernel::Bounds2{};
       box.add(centre[0]);
     }
-    target = utm_crs(0.5 * (box.min.x + box.max.x), 0.5 * (box.min.y + box.max.y));
+    target = utm_crs(info->geographic ? centre_longitude(box) : box.min.x,
+                     0.5 * (box.min.y + box.max.y));
   }
   const std::optional<CrsInfo> to = describe_crs(target, error);
   if (to && to->name == info->name) {
@@ -387,6 +388,29 @@ kernel::Bounds2 FootprintBuilder::valid_bounds() const {
     }
   }
   return box;
+}
+
+// The longitude in the middle of the data (degrees): the box's centre, unless the data straddles
+// the antimeridian (a box wider than half the globe), whose centre lies on the far side of the
+// Earth: a town in Fiji got UTM zone 31, 177 degrees from its central meridian. Then the middle
+// of the gap-free span from the least eastern longitude to the greatest western one.
+double FootprintBuilder::centre_longitude(const kernel::Bounds2& box) const {
+  if (box.max.x - box.min.x <= 180) return 0.5 * (box.min.x + box.max.x);
+  double east_start = 180;  // the least longitude >= 0
+  double west_end = -180;   // the greatest longitude < 0
+  for (const RawFootprint& feature : features_) {
+    if (feature.failed) continue;
+    for (const kernel::Polygon& polygon : feature.polygons) {
+      for (const kernel::Vec2& p : polygon.outer) {
+        if (p.x >= 0) {
+          east_start = std::min(east_start, p.x);
+        } else {
+          west_end = std::max(west_end, p.x);
+        }
+      }
+    }
+  }
+  return 0.5 * (east_start + west_end + 360);
 }
 
 // The bounding-box centre rounded down to whole meters: local coordinates stay within half the

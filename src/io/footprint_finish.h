@@ -185,6 +185,7 @@ class FootprintBuilder {
   };
   bool looks_like_degrees() const;
   kernel::Bounds2 valid_bounds() const;
+  double centre_longitude(const kernel::Bounds2& box) const;
   void resolve_crs(const Location& crs_at);
   void to_geographic_range();
   void reproject_all(const std::string& from, const std::string& to, const Location& crs_at);

@@ -331,6 +331,12 @@ TEST(GeoJsonReader, LonLatWithoutCrsMemberIsReprojectedToItsUtmZone) {
   EXPECT_NEAR(berlin.first.y, 5820073.346, 1e-3);
   // Southern hemisphere and west of Greenwich: zone 23S (Rio de Janeiro).
   EXPECT_EQ(outcome(read(polygon(square(-43.2, -22.9, 0.0002, 0.0002)))).crs, "EPSG:32723");
+  // Fiji, on both sides of the antimeridian: the box's centre (0 degrees) is on the far side of
+  // the Earth; the zone is the one of the data's own middle, 60S (it was 31S).
+  const std::string fiji =
+      collection({feature("", "{}", polygon(square(179.9996, -16.5, 0.0001, 0.0001))),
+                  feature("", "{}", polygon(square(-179.9999, -16.5, 0.0001, 0.0001)))});
+  EXPECT_EQ(outcome(read(fiji)).crs, "EPSG:32760");
   // --crs names another projected CRS to build in: ETRS89 / UTM 33N.
   GeoJsonOptions options;
   options.crs = "EPSG:25833";
