@@ -213,6 +213,7 @@ class Engine final : public EvalContext {
 
   // ---- attributes of the lot: --set > lot property > default (evaluated once per lot)
   Value lot_value(std::uint32_t attr, Range range);
+  const shape::Value* lot_property(const std::string& name) const;
 
   // ---- geometry handles
   std::uint32_t add_geometry(Geometry g) {

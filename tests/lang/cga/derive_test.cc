@@ -158,6 +158,31 @@ Mass --> Plain
   EXPECT_DOUBLE_EQ(r[0].terminals_store[0].scope.size.y, 9);
 }
 
+// OpenStreetMap tags are not identifiers: attr building_levels reads `building:levels` (as Esri's
+// OSM layers name it); a property of the attr's own name wins, and a null value counts as absent.
+TEST(Derive, LotPropertiesMatchAttrsWrittenAsIdentifiers) {
+  auto p = compile_text(R"(
+attr building_levels = 1
+attr roof_shape = "flat"
+Lot --> extrude(building_levels * 3) Mass
+gabled: Mass : roof_shape == "gabled" ~> Gabled
+Mass --> Flat
+)");
+  Lot lot = rectangle_lot(4, 4);
+  lot.properties["building:levels"] = 4.0;
+  lot.properties["roof:shape"] = std::string("gabled");
+  auto r = derive_all(*p, {lot});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_DOUBLE_EQ(r[0].terminals_store[0].scope.size.y, 12);
+  EXPECT_EQ(symbol_count(*p, r[0], "Gabled"), 1U);
+  lot.properties["building_levels"] = 2.0;  // the exact name wins
+  r = derive_all(*p, {lot});
+  EXPECT_DOUBLE_EQ(r[0].terminals_store[0].scope.size.y, 6);
+  lot.properties["building_levels"] = shape::Value{};  // null: absent, and no other spelling
+  r = derive_all(*p, {lot});
+  EXPECT_DOUBLE_EQ(r[0].terminals_store[0].scope.size.y, 3);
+}
+
 TEST(Derive, PushPopAndInsertionBuildThePaperMassModel) {
   // §II Figure 2: three primitives placed with scope rules and a push/pop pair.
   auto p = compile_text(R"(
