@@ -11,6 +11,7 @@
 #include <limits>
 #include <memory>
 
+#include "base/css_colours.h"
 #include "lang/cga/colors.h"
 #include "shape/query.h"
 #include "shape/shape_tree.h"
@@ -1147,9 +1148,16 @@ std::optional<std::string> Engine::color_hex(const CItem& c, State& st) {
   }
   const Value v = eval(c.args[0], st);
   std::string hex = long_hex(as_text(v));
+  // A CSS colour name too: OpenStreetMap's building:colour is "white" as often as "#ffffff".
+  if (const std::optional<std::uint32_t> named = base::css_colour(as_text(v))) {
+    hex = hex_color(((*named >> 16) & 0xFF) / 255.0, ((*named >> 8) & 0xFF) / 255.0,
+                    (*named & 0xFF) / 255.0, 1, false);
+  }
   if (!valid_hex_color(hex)) {
     const std::string message =
-        "color() expects \"#rrggbb\", \"#rrggbbaa\" or \"#rgb\", got \"" + as_text(v) + "\"";
+        "color() expects \"#rrggbb\", \"#rrggbbaa\", \"#rgb\" or a CSS "
+        "colour name, got \"" +
+        as_text(v) + "\"";
     // CityEngine warns and keeps the colour (Esri's greenspace rules pass "").
     if (!program_.cityengine) throw EvalError{program_.nodes[c.args[0]].range, message};
     warning(program_.nodes[c.args[0]].range, message + ": unchanged");

@@ -227,6 +227,30 @@ B --> report("area", Shape.area) color(0, 0, 1) Y
   EXPECT_EQ(std::get<std::string>(y.attributes.at("color")), "#0000ff");
 }
 
+// OpenStreetMap's building:colour is a CSS name as often as a hex code: color() takes both; other
+// text is still an error.
+TEST(Derive, ColorTakesCssNames) {
+  auto p = compile_text(R"(
+attr building_colour = "#ffffff"
+Lot --> split("x"){ 2: A | 3: B }
+A --> color(building_colour) X
+B --> color("Dark Slate Grey") Y
+)");
+  Lot lot = rectangle_lot(5, 4);
+  lot.properties["building:colour"] = std::string("light grey");
+  const auto r = derive_all(*p, {lot});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  const shape::Scene scene = to_scene(*p, {lot}, r);
+  ASSERT_EQ(scene.buildings[0].parts.size(), 2U);
+  EXPECT_EQ(std::get<std::string>(scene.buildings[0].parts[0].attributes.at("color")), "#d3d3d3");
+  EXPECT_EQ(std::get<std::string>(scene.buildings[0].parts[1].attributes.at("color")), "#2f4f4f");
+  lot.properties["building:colour"] = std::string("brick");
+  const auto bad = derive_all(*p, {lot});
+  EXPECT_FALSE(bad[0].ok);
+  EXPECT_NE(diagnostics_text(bad[0]).find("or a CSS colour name, got \"brick\""), std::string::npos)
+      << diagnostics_text(bad[0]);
+}
+
 TEST(Derive, DepthLimitNamesTheRule) {
   auto p = compile_text("Lot --> A\nA --> T(0, 0, 0) A\n");
   DeriveOptions options;
