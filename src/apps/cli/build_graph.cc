@@ -22,6 +22,7 @@
 #include "apps/cli/interrupt.h"
 #include "apps/cli/plasm_assets.h"
 #include "apps/cli/ranks.h"
+#include "apps/cli/s3db_parts.h"
 #include "io/asset_search.h"
 #include "io/geojson_reader.h"
 #include "io/osm_reader.h"
@@ -74,6 +75,8 @@ struct LotFiles {
       error = path + ": its coordinates are in another frame than the first lots file's";
       return false;
     }
+    const std::string note = outlines_note(drop_outlines_with_parts(set.value()));
+    if (!options.quiet && !note.empty()) std::fprintf(stderr, "%s\n", note.c_str());
     read_any = true;
     origin = set->origin;
     crs = set->crs;

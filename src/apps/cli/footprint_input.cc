@@ -1,9 +1,11 @@
 #include "apps/cli/footprint_input.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "apps/cli/front_ends.h"
 #include "apps/cli/input_file.h"
+#include "apps/cli/s3db_parts.h"
 #include "io/osm_reader.h"
 
 namespace insula::cli {
@@ -37,6 +39,22 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
   print_diagnostics(set.diagnostics(), source, quiet);
   if (!set.ok()) return std::nullopt;
   return std::move(set.value());
+}
+
+std::string outlines_note(std::size_t dropped) {
+  if (dropped == 0) return {};
+  return "note: " + std::to_string(dropped) + " building outline" + (dropped == 1 ? "" : "s") +
+         " left out: the building:parts inside " + (dropped == 1 ? "it" : "them") +
+         " are built instead (Simple 3D Buildings)";
+}
+
+std::optional<io::FootprintSet> read_lot_footprints(const std::string& path,
+                                                    const io::GeoJsonOptions& options, bool quiet) {
+  std::optional<io::FootprintSet> set = read_footprints(path, options, quiet);
+  if (!set) return set;
+  const std::string note = outlines_note(drop_outlines_with_parts(*set));
+  if (!quiet && !note.empty()) std::fprintf(stderr, "%s\n", note.c_str());
+  return set;
 }
 
 }  // namespace insula::cli

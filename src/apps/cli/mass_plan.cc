@@ -5,6 +5,7 @@
 #include <map>
 
 #include "apps/cli/mass_command.h"
+#include "apps/cli/s3db_parts.h"
 #include "kernel/polygon_overlaps.h"
 #include "kernel/roof_rise.h"
 
@@ -56,26 +57,18 @@ kernel::MassSpec mass_spec(const MassOptions& options, const io::BuildingForm& f
   return spec;
 }
 
-// S3DB: building:part features inside a building outline are built instead of it. A part
-// belongs to the outline that holds most of its area, when that is at least half of it.
+// S3DB: building:part features inside a building outline are built instead of it
+// (s3db_parts.h); only footprints with S3DB tags (FormSummary::osm) take part.
 void assign_parts(const io::FootprintSet& set, MassPlan& plan,
                   const std::vector<kernel::Overlap>& overlaps) {
-  std::vector<double> best(set.footprints.size(), 0);
-  for (const kernel::Overlap& overlap : overlaps) {
-    for (const auto& [part, outline] :
-         {std::pair{overlap.first, overlap.second}, std::pair{overlap.second, overlap.first}}) {
-      const FormSummary& p = plan.footprints[part].form;
-      const FormSummary& o = plan.footprints[outline].form;
-      if (!p.is_part || !o.osm || o.is_part) continue;
-      double part_area = 0;
-      for (const kernel::Polygon& polygon : set.footprints[part].polygons) {
-        part_area += kernel::area(polygon);
-      }
-      if (overlap.area < 0.5 * part_area || overlap.area <= best[part]) continue;
-      best[part] = overlap.area;
-      plan.footprints[part].outline = outline;
-    }
+  std::vector<bool> is_part, is_outline;
+  for (const FootprintPlan& footprint : plan.footprints) {
+    is_part.push_back(footprint.form.is_part);
+    is_outline.push_back(footprint.form.osm && !footprint.form.is_part);
   }
+  const std::vector<std::optional<std::size_t>> outlines =
+      part_outlines(set, overlaps, is_part, is_outline);
+  for (std::size_t i = 0; i < outlines.size(); ++i) plan.footprints[i].outline = outlines[i];
   for (FootprintPlan& footprint : plan.footprints) {
     if (footprint.outline) plan.footprints[*footprint.outline].replaced = true;
   }
