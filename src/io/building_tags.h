@@ -5,6 +5,8 @@
 // The rules, defaults and warning codes are in docs/osm-buildings.md.
 #pragma once
 
+#include "base/tag_numbers.h"
+
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -78,10 +80,9 @@ using RoofRise = std::function<double(const std::string& roof, double pitch_deg)
 BuildingForm read_building_form(const PropertyRow& properties, const BuildingTagOptions& options,
                                 const RoofRise& roof_rise, std::vector<TagWarning>& warnings);
 
-// A length as OSM and registers write it: "12", "12.5 m", "40 ft", "12'6\"", "3,5"; meters.
-std::optional<double> parse_length(std::string_view text);
-// A count of levels: "3", "2.5"; nullopt for anything else.
-std::optional<double> parse_levels(std::string_view text);
+// Lengths and level counts as OSM and registers write them (base/tag_numbers.h).
+using base::parse_length;
+using base::parse_levels;
 // A compass direction: degrees ("135") or a point of the compass ("N", "SSW"); in [0, 360).
 std::optional<double> parse_direction(std::string_view text);
 // A colour: "#rgb", "#rrggbb" or a CSS colour name, as linear RGB.

@@ -401,7 +401,8 @@ TEST(OneEngine, WallOpeningErrors) {
   const auto r =
       lang::cga::testing::derive_all(*program, {lang::cga::testing::rectangle_lot(10, 8)});
   EXPECT_EQ(lang::cga::testing::diagnostics_text(r[0]),
-            "test.cga:3:16: warning[CGA604]: wall: opening 1 overlaps opening 0 (left out)\n");
+            "test.cga:3:16: warning[CGA604]: wall: opening 1 overlaps opening 0 (left out)\n"
+            "note: in lot 'lot'\n");
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "base/css_colours.h"
+#include "base/tag_numbers.h"
 #include "lang/cga/colors.h"
 #include "shape/query.h"
 #include "shape/shape_tree.h"
@@ -643,10 +644,21 @@ Value Engine::lot_value(std::uint32_t attr, Range range) {
     if (!found) {
       v = fallback;
     } else if (std::holds_alternative<double>(fallback)) {
-      // OpenStreetMap tags and many registers give numbers as text ("12"): an attr declared
-      // with a number takes such a text as that number (CityEngine converts object attributes
-      // to the rule attribute's type too); other text stays text and fails where it is used.
-      v = number_from_text(std::get<std::string>(v)).value_or(v);
+      // OpenStreetMap tags and many registers give numbers as text ("12", "12 m", "40'"): an
+      // attr declared with a number takes such a text as that number, a length in metres
+      // (CityEngine converts object attributes to the rule attribute's type too). Other text
+      // ("approx. 10") keeps the default with a warning: one odd tag must not stop a city.
+      const std::string& text = std::get<std::string>(v);
+      if (std::optional<Value> number = number_from_text(text)) {
+        v = *number;
+      } else if (const std::optional<double> length = base::parse_length(text)) {
+        v = *length;
+      } else {
+        warning(program_.nodes[a.value].range, "lot property '" + a.name + "' = \"" + text +
+                                                   "\" is not a number; the default " +
+                                                   as_text(fallback) + " is used");
+        v = fallback;
+      }
     }
   }
   values_[attr] = v;

@@ -183,6 +183,28 @@ Mass --> Flat
   EXPECT_DOUBLE_EQ(r[0].terminals_store[0].scope.size.y, 3);
 }
 
+// OpenStreetMap heights come with units ("66'", "12 m") or none that parse ("approx. 10"): a
+// length is metres; other text keeps the number attr's default with a warning, and the lot is
+// still built (one odd tag must not stop a city).
+TEST(Derive, NumberAttrsReadLengthsAndWarnOnOtherText) {
+  auto p = compile_text("attr height = 5\nLot --> extrude(height) Mass\n");
+  Lot lot = rectangle_lot(4, 4);
+  lot.properties["height"] = std::string("66'");
+  auto r = derive_all(*p, {lot});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_NEAR(r[0].terminals_store[0].scope.size.y, 66 * 0.3048, 1e-12);
+  lot.properties["height"] = std::string("12,5 m");
+  r = derive_all(*p, {lot});
+  EXPECT_NEAR(r[0].terminals_store[0].scope.size.y, 12.5, 1e-12);
+  lot.properties["height"] = std::string("approx. 10");
+  r = derive_all(*p, {lot});
+  ASSERT_TRUE(r[0].ok) << diagnostics_text(r[0]);
+  EXPECT_DOUBLE_EQ(r[0].terminals_store[0].scope.size.y, 5);
+  EXPECT_EQ(diagnostics_text(r[0]),
+            "test.cga:1:15: warning[CGA604]: lot property 'height' = \"approx. 10\" is not a "
+            "number; the default 5 is used\nnote: in lot 'lot'\n");
+}
+
 TEST(Derive, PushPopAndInsertionBuildThePaperMassModel) {
   // §II Figure 2: three primitives placed with scope rules and a push/pop pair.
   auto p = compile_text(R"(
