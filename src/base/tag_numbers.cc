@@ -32,6 +32,14 @@ std::string lower_ascii(std::string_view text) {
   return out;
 }
 
+std::string identifier_spelling(std::string_view name) {
+  std::string out(name);
+  for (char& c : out) {
+    if (std::isalnum(static_cast<unsigned char>(c)) == 0 && c != '_') c = '_';
+  }
+  return out;
+}
+
 std::string_view trim_space(std::string_view text) {
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) {
     text.remove_prefix(1);

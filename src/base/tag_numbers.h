@@ -11,6 +11,9 @@ namespace insula::base {
 
 // `text` in ASCII lower case (tag values compare case-insensitively: "Hipped", "M").
 std::string lower_ascii(std::string_view text);
+// `name` as an identifier: every character other than a letter, digit or '_' written as '_'
+// (OpenStreetMap's `building:levels` is `building_levels`, as Esri's OSM layers name it).
+std::string identifier_spelling(std::string_view name);
 // `text` without leading and trailing white space.
 std::string_view trim_space(std::string_view text);
 // Reads a non-negative decimal number at the start of `text` ("12", "12.5", "3,5": a decimal

@@ -70,6 +70,23 @@ JSON
 expect_exit 0 "graph build --lot osm" "$insula" build "$tmp/lots.graph.json" --lot "$tmp/b.osm.pbf" \
   --report "$tmp/graph.json" -o "$tmp/graph.obj" -q
 grep -c "^o " "$tmp/graph.obj" | grep -qx 3 || fail "graph build --lot osm: 3 lots extruded"
+# OSM tags as a graph's attributes: building:levels is attribute building_levels, and its text
+# "4" a number (as for CGA attrs and mass models); one storey of 3 m by default.
+cat >"$tmp/levels.graph.json" <<'JSON'
+{ "format": "insula-graph", "version": 1,
+  "attributes": { "building_levels": { "type": "number", "default": 1 } },
+  "nodes": [ { "id": "lots", "type": "create.lots" },
+             { "id": "mass", "type": "shape.extrude", "params": { "height": "= @building_levels * 3" } } ],
+  "edges": [ "lots.out -> mass.in" ] }
+JSON
+printf '%s' '{"type": "FeatureCollection", "features": [{"type": "Feature",
+  "properties": {"building:levels": "4"}, "geometry": {"type": "Polygon",
+  "coordinates": [[[0, 0], [10, 0], [10, 8], [0, 8], [0, 0]]]}}]}' >"$tmp/levels.geojson"
+expect_exit 0 "graph: OSM tags as attributes" "$insula" build "$tmp/levels.graph.json" \
+  --lot "$tmp/levels.geojson" --crs EPSG:32633 -o "$tmp/levels.obj"
+awk '/^v /{ if ($3 > top) top = $3 } END { exit !(top > 11.999 && top < 12.001) }' "$tmp/levels.obj" ||
+  fail "graph: building:levels=4 extrudes 12 m"
+grep -q "W030" "$tmp/err.txt" && fail "graph: OSM tags as attributes: $(cat "$tmp/err.txt")"
 expect_exit 0 "bldg build --lot osm" "$insula" build "$root/examples/bldg/two_storey.bldg" \
   --lot "$osm/buildings.osm" -o "$tmp/bldg.obj" -q
 

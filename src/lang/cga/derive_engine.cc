@@ -586,22 +586,6 @@ std::optional<Value> number_from_text(const std::string& text) {
 
 }  // namespace
 
-namespace {
-
-// `property` spelled as an identifier: OpenStreetMap's `building:levels` is `building_levels`, as
-// Esri's OSM layers and CityEngine's imports name it.
-bool names_identifier(std::string_view property, std::string_view identifier) {
-  if (property.size() != identifier.size()) return false;
-  for (std::size_t i = 0; i < property.size(); ++i) {
-    const char c = property[i];
-    const bool word = std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
-    if ((word ? c : '_') != identifier[i]) return false;
-  }
-  return true;
-}
-
-}  // namespace
-
 // The lot's property for attr `name`: the one of that name, else (when none) the first whose name
 // written as an identifier is `name`; null values count as absent.
 const shape::Value* Engine::lot_property(const std::string& name) const {
@@ -609,7 +593,7 @@ const shape::Value* Engine::lot_property(const std::string& name) const {
     return shape::is_null(it->second) ? nullptr : &it->second;
   }
   for (const auto& [property, value] : lot_.properties) {
-    if (!shape::is_null(value) && names_identifier(property, name)) return &value;
+    if (!shape::is_null(value) && base::identifier_spelling(property) == name) return &value;
   }
   return nullptr;
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/tag_numbers.h"
 #include "lang/graph/executor.h"
 #include "lang/graph/nodes.h"
 #include "lang/graph/shape_entities.h"
@@ -143,7 +144,15 @@ void lots(NodeContext& c) {
         ++index;
         continue;
       }
-      for (const auto& [name, value] : lot.properties) {
+      for (const auto& [property, value] : lot.properties) {
+        // OpenStreetMap's `building:levels` is attribute building_levels when that is declared
+        // and no property of that very name is given (docs/graph-nodes.md, create.lots).
+        std::string name = property;
+        if (!c.declared_type(name)) {
+          std::string spelled = base::identifier_spelling(property);
+          if (c.declared_type(spelled) && !lot.properties.contains(spelled))
+            name = std::move(spelled);
+        }
         const std::optional<ValueType> type = c.declared_type(name);
         if (!type) {
           c.warning("W030", "GeoJSON property '" + name + "' is not a declared attribute; ignored");
@@ -154,6 +163,14 @@ void lots(NodeContext& c) {
         if (const auto* b = std::get_if<bool>(&value)) given = Value(*b);
         if (const auto* s = std::get_if<std::string>(&value)) given = Value(*s);
         if (!given) continue;
+        // OpenStreetMap tags are text: a number or integer attribute takes "12", "12 m" or "66'"
+        // as that length in metres (base/tag_numbers.h), as mass models and CGA attrs do.
+        if (given->type() == ValueType::kString &&
+            (*type == ValueType::kNumber || *type == ValueType::kInteger)) {
+          if (const std::optional<double> length = base::parse_length(given->text())) {
+            given = Value(*length);
+          }
+        }
         // Real data does not follow the graph's types (OpenStreetMap's `building=kindergarten`
         // for an integer `building`): a value that does not fit is left out, not a failed run.
         if (!convert(*given, *type)) {
