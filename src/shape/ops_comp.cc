@@ -2,8 +2,12 @@
 // of lower dimension per face, edge or vertex of the parent's geometry.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
+#include <set>
+
+#include "base/union_find.h"
 
 #include "shape/ops.h"
 
@@ -72,6 +76,143 @@ bool face_child(const Scope& parent, const Mesh& mesh, std::size_t f, Refit& out
   return true;
 }
 
+bool same_tag(const kernel::FaceTag& a, const kernel::FaceTag& b) {
+  return a.semantic == b.semantic && a.material == b.material && a.face_id == b.face_id;
+}
+
+// The pieces of one logical face, by their first face: faces that share an edge, a plane and a
+// tag. A region with holes is stored as several faces (extrude triangulates a courtyard lot's
+// cap, or frames its hole with quads), and comp must give it as one face: each triangle of a
+// courtyard's top got a roof of its own.
+std::vector<std::vector<std::size_t>> face_groups(const Mesh& mesh) {
+  const std::size_t n = mesh.face_count();
+  std::vector<Vec3> normals(n);
+  std::vector<double> offsets(n);
+  for (std::size_t f = 0; f < n; ++f) {
+    normals[f] = normalized(kernel::face_normal(mesh, f));
+    offsets[f] = dot(normals[f], mesh.position(mesh.face(f)[0]));
+  }
+  const double tolerance = 1e-7 * std::max(1.0, length(mesh.bounds().size()));
+  const Mesh welded = kernel::weld(mesh);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> first_face_of_edge;
+  base::UnionFind groups(n);
+  for (std::size_t f = 0; f < n; ++f) {
+    const auto loop = welded.face(f);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const std::uint32_t a = loop[i];
+      const std::uint32_t b = loop[(i + 1) % loop.size()];
+      const auto [it, added] = first_face_of_edge.try_emplace({std::min(a, b), std::max(a, b)}, f);
+      const std::size_t g = it->second;
+      if (added || g == f) continue;
+      if (same_tag(mesh.tag(f), mesh.tag(g)) && dot(normals[f], normals[g]) > 1 - 1e-9 &&
+          std::fabs(offsets[f] - offsets[g]) <= tolerance) {
+        groups.unite(static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(g));
+      }
+    }
+  }
+  std::vector<std::vector<std::size_t>> out;
+  std::map<std::uint32_t, std::size_t> index_of_root;
+  for (std::size_t f = 0; f < n; ++f) {
+    const auto [it, added] =
+        index_of_root.try_emplace(groups.find(static_cast<std::uint32_t>(f)), out.size());
+    if (added) out.emplace_back();
+    out[it->second].push_back(f);
+  }
+  return out;
+}
+
+// The region the faces of a flat `mesh` (in its xy plane, counter-clockwise) cover together:
+// their boundary edges (those no other face runs back along) chained into rings, one
+// counter-clockwise outer ring and clockwise holes. Nullopt when the boundary pinches (a vertex
+// with two ways on) or makes more than one outer ring. Corners are the same vertex where their
+// positions are equal: the faces come from one mesh.
+std::optional<kernel::Polygon> faces_outline(const Mesh& mesh) {
+  std::map<std::pair<double, double>, std::uint32_t> vertex_of;
+  std::vector<kernel::Vec2> points;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    std::vector<std::uint32_t> loop;
+    for (std::uint32_t v : mesh.face(f)) {
+      const Vec3 p = mesh.position(v);
+      const auto [it, added] = vertex_of.try_emplace({p.x, p.y}, points.size());
+      if (added) points.push_back({p.x, p.y});
+      loop.push_back(it->second);
+    }
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      edges.insert({loop[i], loop[(i + 1) % loop.size()]});
+  }
+  std::map<std::uint32_t, std::uint32_t> next;
+  for (const auto& [a, b] : edges) {
+    if (edges.contains({b, a})) continue;  // inside: two faces share it
+    if (!next.try_emplace(a, b).second) return std::nullopt;
+  }
+  kernel::Polygon region;
+  bool outer = false;
+  while (!next.empty()) {
+    kernel::Ring ring;
+    std::uint32_t v = next.begin()->first;
+    for (auto it = next.find(v); it != next.end(); it = next.find(v)) {
+      ring.push_back(points[v]);
+      v = it->second;
+      next.erase(it);
+    }
+    if (ring.size() < 3) return std::nullopt;
+    if (kernel::signed_area(ring) > 0) {
+      if (outer) return std::nullopt;
+      outer = true;
+      region.outer = std::move(ring);
+    } else {
+      region.holes.push_back(std::move(ring));
+    }
+  }
+  if (!outer) return std::nullopt;
+  return region;
+}
+
+// The faces `group` of the shape's mesh as one flat child, its outline their union (with the
+// holes between them); nullopt when they do not unite into one polygon.
+std::optional<ShapeId> add_group_child(ShapeTree& tree, ShapeId id,
+                                       const std::vector<std::size_t>& group) {
+  const Shape& s = tree[id];
+  Scope local;
+  if (!face_scope(*s.mesh, group.front(), {0, 1, 0}, {1, 0, 0}, local)) return std::nullopt;
+  Mesh faces;
+  for (const std::size_t f : group) {
+    std::vector<Vec3> loop;
+    for (std::uint32_t v : s.mesh->face(f)) loop.push_back(s.mesh->position(v));
+    faces.add_polygon(loop, s.mesh->tag(f));
+  }
+  Refit child = refit(s.scope, faces, local.x, local.y, local.z);
+  child.scope.size.z = 0;
+  for (Vec3& p : child.mesh.positions()) p.z = 0;  // planar by construction; drop rounding
+  std::optional<kernel::Polygon> region = faces_outline(child.mesh);
+  if (!region) return std::nullopt;
+  auto outline = std::make_shared<kernel::Polygon>(std::move(*region));
+  auto child_mesh = std::make_shared<Mesh>(std::move(child.mesh));
+  return tree.add_child(id, child.scope, std::move(child_mesh), std::move(outline));
+}
+
+// Adds the children of the faces `selected` says, a logical face of several pieces as one.
+OpResult add_face_children(ShapeTree& tree, ShapeId id,
+                           const std::function<bool(std::size_t)>& selected) {
+  const std::shared_ptr<const Mesh> mesh = tree[id].mesh;
+  OpResult result;
+  for (const std::vector<std::size_t>& group : face_groups(*mesh)) {
+    if (!selected(group.front())) continue;
+    if (group.size() > 1) {
+      if (const std::optional<ShapeId> child = add_group_child(tree, id, group)) {
+        result.add(*child, static_cast<std::uint32_t>(group.front()));
+        continue;
+      }
+    }
+    for (const std::size_t f : group) {
+      const std::optional<ShapeId> child = add_face_child(tree, id, f);
+      if (child) result.add(*child, static_cast<std::uint32_t>(f));  // else a degenerate face
+    }
+  }
+  return finish(tree, id, std::move(result));
+}
+
 }  // namespace
 
 std::optional<ShapeId> add_face_child(ShapeTree& tree, ShapeId id, std::size_t face) {
@@ -111,13 +252,16 @@ OpResult comp_faces(ShapeTree& tree, ShapeId id, FaceSelector selector) {
   if (!s.mesh) return OpResult::failure("the shape has no faces");
   const std::shared_ptr<const Mesh> mesh = s.mesh;
   const bool by_border = selector == FaceSelector::kBorder || selector == FaceSelector::kInside;
-  const std::vector<bool> border = by_border ? border_faces(*mesh) : std::vector<bool>();
+  if (!by_border) {
+    return add_face_children(tree, id, [&](std::size_t f) {
+      return face_matches(selector, kernel::face_normal(*mesh, f));
+    });
+  }
+  // Border and inside faces are told apart piece by piece: no grouping.
+  const std::vector<bool> border = border_faces(*mesh);
   OpResult result;
   for (std::size_t f = 0; f < mesh->face_count(); ++f) {
-    if (by_border ? border[f] != (selector == FaceSelector::kBorder)
-                  : !face_matches(selector, kernel::face_normal(*mesh, f))) {
-      continue;
-    }
+    if (border[f] != (selector == FaceSelector::kBorder)) continue;
     const std::optional<ShapeId> child = add_face_child(tree, id, f);
     if (child) result.add(*child, static_cast<std::uint32_t>(f));  // else a degenerate face
   }
@@ -130,14 +274,10 @@ OpResult comp_faces_in_frame(ShapeTree& tree, ShapeId id, const FrameSelector& s
   if (!s.mesh) return OpResult::failure("the shape has no faces");
   const std::shared_ptr<const Mesh> mesh = s.mesh;
   const Scope scope = s.scope;
-  OpResult result;
-  for (std::size_t f = 0; f < mesh->face_count(); ++f) {
-    const Vec3 n = scope.direction_to_world(kernel::face_normal(*mesh, f));
-    if (!face_matches_in_frame(selector, n, object)) continue;
-    const std::optional<ShapeId> child = add_face_child(tree, id, f);
-    if (child) result.add(*child, static_cast<std::uint32_t>(f));
-  }
-  return finish(tree, id, std::move(result));
+  return add_face_children(tree, id, [&](std::size_t f) {
+    return face_matches_in_frame(selector, scope.direction_to_world(kernel::face_normal(*mesh, f)),
+                                 object);
+  });
 }
 
 OpResult comp_edges(ShapeTree& tree, ShapeId id, FaceSelector selector) {

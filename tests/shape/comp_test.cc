@@ -95,5 +95,31 @@ TEST(Comp, EdgesAndVertices) {
             12U);
 }
 
+// A lot with a courtyard extrudes to a top stored as several faces (triangles, or quads framing
+// the hole). comp gives it as one face with the hole, so a roof covers the whole building: each
+// triangle of a real OpenStreetMap courtyard got a hip roof of its own.
+TEST(Comp, ALogicalFaceOfSeveralPiecesIsOneComponent) {
+  for (const bool rectangular_hole : {true, false}) {
+    kernel::Polygon lot{{{0, 0}, {30, 0}, {30, 20}, {0, 20}}, {}};
+    lot.holes.push_back(rectangular_hole ? kernel::Ring{{10, 5}, {10, 15}, {20, 15}, {20, 5}}
+                                         : kernel::Ring{{10, 5}, {12, 15}, {22, 14}, {20, 5}});
+    ShapeTree tree;
+    const RootResult root = tree.create_root(lot);
+    ASSERT_TRUE(root.ok()) << root.error;
+    const OpResult mass = extrude(tree, root.id, 9);
+    ASSERT_EQ(mass.children.size(), 1U) << mass.error;
+    ASSERT_GT(tree[mass.children[0]].mesh->face_count(), 10U);  // the caps are several faces
+    const OpResult top = comp_faces(tree, mass.children[0], FaceSelector::kTop);
+    ASSERT_EQ(top.children.size(), 1U);
+    const Shape& face = tree[top.children[0]];
+    ASSERT_TRUE(face.is_flat());
+    EXPECT_EQ(face.outline->outer.size(), 4U);
+    ASSERT_EQ(face.outline->holes.size(), 1U);
+    EXPECT_NEAR(kernel::area(*face.outline), kernel::area(lot), 1e-9);
+    // Sides stay one component per wall: 4 outside, 4 around the court.
+    EXPECT_EQ(comp_faces(tree, mass.children[0], FaceSelector::kSide).children.size(), 8U);
+  }
+}
+
 }  // namespace
 }  // namespace insula::shape
