@@ -407,6 +407,12 @@ void plan_shed(RoofPlan& plan, const RoofSpec& spec) {
                                 : longest_outer_edge(c);
     plan.shed_origin = c.points[e];
     plan.shed_normal = perp(normalized(c.points[c.next(e)] - c.points[e]));
+    // On a footprint that is not convex, corners can lie behind the edge's line: the low side
+    // moves back to the one farthest behind, so no part of the roof dips below the eave (a real
+    // OpenStreetMap outline reaching 60 m behind its longest edge put the roof 35 m under it).
+    for (std::uint32_t k = 0; k < c.ring_starts[1]; ++k) {
+      if (dot(plan.shed_normal, c.points[k] - plan.shed_origin) < 0) plan.shed_origin = c.points[k];
+    }
   }
   if (spec.height) {
     double far = 0;

@@ -9,7 +9,7 @@
 namespace insula::kernel {
 namespace {
 
-// The footprint's extent perpendicular to its longest outer edge: how far a shed rising from
+// The footprint's extent perpendicular to its longest outer edge: how far a shed rising across
 // that edge climbs (the kernel's default shed edge, roof.h).
 double extent_across_longest_edge(const Ring& ring) {
   std::size_t longest = 0;
@@ -25,9 +25,15 @@ double extent_across_longest_edge(const Ring& ring) {
   const Vec2 a = ring[longest];
   const Vec2 direction = (ring[(longest + 1) % ring.size()] - a) / longest_length;
   const Vec2 inward = perp(direction);  // outer rings are counter-clockwise
-  double extent = 0;
-  for (const Vec2& p : ring) extent = std::max(extent, dot(p - a, inward));
-  return extent;
+  // From the corner farthest behind the edge's line (a footprint that is not convex may reach
+  // behind it; roof.cc's plan_shed starts the slope there) to the farthest in front.
+  double low = 0;
+  double high = 0;
+  for (const Vec2& p : ring) {
+    low = std::min(low, dot(p - a, inward));
+    high = std::max(high, dot(p - a, inward));
+  }
+  return high - low;
 }
 
 }  // namespace

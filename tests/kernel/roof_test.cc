@@ -1,4 +1,5 @@
 #include "kernel/roof.h"
+#include "kernel/roof_rise.h"
 
 #include <gtest/gtest.h>
 
@@ -203,6 +204,22 @@ TEST(Roof, ShedRisesFromTheChosenEdge) {
   const RoofResult r = build_roof(rectangle(6, 10), spec, 2);
   ASSERT_EQ(r.status, RoofStatus::kOk);
   for (const Vec3& p : r.mesh.positions()) EXPECT_NEAR(p.z, 2 + (10 - p.x), 1e-9);
+}
+
+// A footprint that reaches behind its shed edge's line: the low side moves back to the corner
+// farthest behind, so no part of the roof dips below the eave (a real OpenStreetMap outline put
+// one 35 m under it), and roof_rise counts the whole extent.
+TEST(Roof, ShedNeverDipsBelowTheEave) {
+  RoofSpec spec;
+  spec.type = RoofType::kShed;
+  spec.pitch_deg = 45;
+  spec.shed_edge = 0;  // y = 0 from x = 0 to 20; the wing at x 20..26 reaches to y = -8
+  const Polygon wing{{{0, 0}, {20, 0}, {20, -8}, {26, -8}, {26, 10}, {0, 10}}, {}};
+  const RoofResult r = build_roof(wing, spec, 3);
+  ASSERT_EQ(r.status, RoofStatus::kOk) << r.message;
+  EXPECT_NEAR(r.mesh.bounds().min.z, 3, 1e-9);
+  EXPECT_NEAR(r.mesh.bounds().max.z, 3 + 18, 1e-9);  // from y = -8 to y = 10 at 45 degrees
+  EXPECT_NEAR(roof_rise(wing, RoofType::kShed, 45), 18, 1e-9);
 }
 
 TEST(Roof, HoledMansardLeavesAnOpening) {
