@@ -222,6 +222,20 @@ TEST(Roof, ShedNeverDipsBelowTheEave) {
   EXPECT_NEAR(roof_rise(wing, RoofType::kShed, 45), 18, 1e-9);
 }
 
+// An 8 cm jog in a real outline makes the overhanging eave's skeleton end its ridge elsewhere:
+// the gable is then built without the overhang, not turned into a hip.
+TEST(Roof, GableKeepsItsTypeWhenOnlyTheOverhangFails) {
+  RoofSpec spec;
+  spec.type = RoofType::kGable;
+  spec.overhang = 0.5;
+  const Polygon jog{{{0, 0}, {7.7, 0}, {7.7, 3.0}, {7.78, 3.0}, {7.78, 6.5}, {0, 6.5}}, {}};
+  const RoofResult r = build_roof(jog, spec, 3);
+  ASSERT_EQ(r.status, RoofStatus::kFallback) << r.message;
+  EXPECT_EQ(r.message.rfind("gable roof built without overhang", 0), 0U) << r.message;
+  EXPECT_EQ(counts(r.mesh).count(SemanticClass::kOuterCeilingSurface), 0U);
+  EXPECT_GE(counts(r.mesh).at(SemanticClass::kWallSurface), 2);  // the gable ends
+}
+
 TEST(Roof, HoledMansardLeavesAnOpening) {
   RoofSpec spec;
   spec.type = RoofType::kHoledMansard;
