@@ -33,7 +33,8 @@ diff <(grep -v '^mtllib' "$tmp/buildings.osm.obj") <(grep -v '^mtllib' "$tmp/b.o
   fail ".osm and .osm.pbf give different OBJ"
 
 # Lots from a .osm.pbf (tags are strings: this grammar reads none). way/101's building:part
-# way/121 stands in it, so, as for mass models (S3DB), the part is a lot and the outline is not.
+# way/121 starts 5 m above the ground (min_height): a lot is built from the ground, so the part
+# is left out, and the outline, which no part on the ground replaces, is a lot.
 printf 'Lot --> extrude(6) Mass\n' >"$tmp/lots.cga"
 expect_exit 0 "build --lot pbf" "$insula" build "$tmp/lots.cga" --lot "$tmp/b.osm.pbf" \
   --report "$tmp/lots.json" -o "$tmp/lots.obj" -q
@@ -42,9 +43,9 @@ node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
   fail "build --lot pbf: 3 lots"
 expect_exit 0 "build --lot pbf, the note" "$insula" build "$tmp/lots.cga" --lot "$tmp/b.osm.pbf" \
   -o "$tmp/lots2.obj"
-grep -qx "note: 1 building outline left out: the building:parts inside it are built instead (Simple 3D Buildings)" \
-  "$tmp/err.txt" || fail "build --lot pbf: the note on the outline left out: $(cat "$tmp/err.txt")"
-grep -q "^o way/101" "$tmp/lots2.obj" && fail "build --lot pbf: the outline way/101 was built"
+grep -qx "note: 1 building or part above the ground (min_height, building:min_level) left out: lots are built from the ground" \
+  "$tmp/err.txt" || fail "build --lot pbf: the note on the part left out: $(cat "$tmp/err.txt")"
+grep -q "^o way/121" "$tmp/lots2.obj" && fail "build --lot pbf: the raised part way/121 was built"
 # OSM tags are text; an attr declared with a number takes a tag such as height=12 as 12.
 printf 'attr height = 7\nLot --> extrude(height) Mass\n' >"$tmp/heights.cga"
 expect_exit 0 "build --lot osm, numeric tags" "$insula" build "$tmp/heights.cga" --lot "$osm/buildings.osm" \
@@ -57,9 +58,9 @@ node -e '
     for (const child of c.CityObjects[id].children) for (const g of c.CityObjects[child].geometry) walk(g.boundaries);
     return max;
   };
-  if (Math.abs(top("way/121") - 10) > 1e-3 || Math.abs(top("relation/202") - 7) > 1e-3) {
-    console.log(top("way/121"), top("relation/202")); process.exit(1);
-  }' "$tmp/heights.city.json" || fail "build --lot osm: height=10 extrudes 10 m, no height 7 m"
+  if (Math.abs(top("way/101") - 12) > 1e-3 || Math.abs(top("relation/202") - 7) > 1e-3) {
+    console.log(top("way/101"), top("relation/202")); process.exit(1);
+  }' "$tmp/heights.city.json" || fail "build --lot osm: height=12 extrudes 12 m, no height 7 m"
 # A graph's create.lots reads the same OpenStreetMap file.
 cat >"$tmp/lots.graph.json" <<'JSON'
 { "format": "insula-graph", "version": 1,
@@ -92,11 +93,14 @@ expect_exit 0 "bldg build --lot osm" "$insula" build "$root/examples/bldg/two_st
 
 # The footprints example on the town: each OSM building is built on its own outline, its tags
 # read by their identifier spelling (height=66' is 20.1168 m, plus a 0.6 m parapet on its flat
-# roof), the church's outline replaced by its parts; no warnings.
+# roof), the church's outline replaced by its parts, the bridge (min_height=6) left out; no
+# warnings.
 expect_exit 0 "footprints.cga on the OSM town" "$insula" build "$root/examples/cga/footprints.cga" \
   --lot "$root/examples/osm/town.osm" -o "$tmp/fp.glb" -o "$tmp/fp.city.json" --report "$tmp/fp.json"
 grep -qx "note: 1 building outline left out: the building:parts inside it are built instead (Simple 3D Buildings)" \
   "$tmp/err.txt" || fail "footprints.cga: the note on the church outline"
+grep -q "^note: 1 building or part above the ground" "$tmp/err.txt" ||
+  fail "footprints.cga: the note on the bridge"
 grep -q "warning" "$tmp/err.txt" && fail "footprints.cga: warnings: $(cat "$tmp/err.txt")"
 node -e '
   const fs = require("fs");
@@ -108,8 +112,9 @@ node -e '
     for (const child of c.CityObjects[id].children) for (const g of c.CityObjects[child].geometry) walk(g.boundaries);
     return max;
   };
-  // 18 footprints, less the church outline; 3 flat roofs (a deck each), every other roof pitched.
-  if (r.lots !== 17 || r.symbols.RoofDeck !== 3 || Math.abs(top("way/2015") - (66 * 0.3048 + 0.6)) > 2e-3) {
+  // 18 footprints, less the church outline and the bridge; 2 flat roofs (a deck each), every
+  // other roof pitched.
+  if (r.lots !== 16 || r.symbols.RoofDeck !== 2 || Math.abs(top("way/2015") - (66 * 0.3048 + 0.6)) > 2e-3) {
     console.log(r.lots, JSON.stringify(r.symbols), top("way/2015")); process.exit(1);
   }' "$tmp/fp.json" "$tmp/fp.city.json" || fail "footprints.cga: lots, flat roofs, the 66-foot office"
 validate_gltf "footprints.cga GLB" "$tmp/fp.glb"

@@ -75,8 +75,7 @@ struct LotFiles {
       error = path + ": its coordinates are in another frame than the first lots file's";
       return false;
     }
-    const std::string note = outlines_note(drop_outlines_with_parts(set.value()));
-    if (!options.quiet && !note.empty()) std::fprintf(stderr, "%s\n", note.c_str());
+    leave_out_for_lots(set.value(), options.quiet);
     read_any = true;
     origin = set->origin;
     crs = set->crs;

@@ -41,19 +41,27 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
   return std::move(set.value());
 }
 
-std::string outlines_note(std::size_t dropped) {
-  if (dropped == 0) return {};
-  return "note: " + std::to_string(dropped) + " building outline" + (dropped == 1 ? "" : "s") +
-         " left out: the building:parts inside " + (dropped == 1 ? "it" : "them") +
-         " are built instead (Simple 3D Buildings)";
+void leave_out_for_lots(io::FootprintSet& set, bool quiet) {
+  const LotsLeftOut left = cli::leave_out_for_lots(set);
+  if (quiet) return;
+  if (left.outlines > 0) {
+    std::fprintf(stderr,
+                 "note: %zu building outline%s left out: the building:parts inside %s are built "
+                 "instead (Simple 3D Buildings)\n",
+                 left.outlines, left.outlines == 1 ? "" : "s", left.outlines == 1 ? "it" : "them");
+  }
+  if (left.elevated > 0) {
+    std::fprintf(stderr,
+                 "note: %zu building%s or part%s above the ground (min_height, "
+                 "building:min_level) left out: lots are built from the ground\n",
+                 left.elevated, left.elevated == 1 ? "" : "s", left.elevated == 1 ? "" : "s");
+  }
 }
 
 std::optional<io::FootprintSet> read_lot_footprints(const std::string& path,
                                                     const io::GeoJsonOptions& options, bool quiet) {
   std::optional<io::FootprintSet> set = read_footprints(path, options, quiet);
-  if (!set) return set;
-  const std::string note = outlines_note(drop_outlines_with_parts(*set));
-  if (!quiet && !note.empty()) std::fprintf(stderr, "%s\n", note.c_str());
+  if (set) leave_out_for_lots(*set, quiet);
   return set;
 }
 

@@ -16,11 +16,12 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
                                                 const io::GeoJsonOptions& options, bool quiet);
 
 // The lots of --lot: read_footprints(), then without the building outlines whose building:parts
-// are built instead (S3DB, s3db_parts.h), with a note saying how many unless `quiet`.
+// are built instead and the buildings and parts above the ground (S3DB, s3db_parts.h), with a
+// note saying how many unless `quiet`.
 std::optional<io::FootprintSet> read_lot_footprints(const std::string& path,
                                                     const io::GeoJsonOptions& options, bool quiet);
-// The note of such outlines, or empty when there are none.
-std::string outlines_note(std::size_t dropped);
+// Leaves those footprints out of `set`; prints the notes unless `quiet`.
+void leave_out_for_lots(io::FootprintSet& set, bool quiet);
 
 // The footprints of an OpenStreetMap file read with `options`; its diagnostics are left to the
 // caller.

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "base/tag_numbers.h"
+
 namespace insula::cli {
 namespace {
 
@@ -36,33 +38,61 @@ std::vector<std::optional<std::size_t>> part_outlines(const io::FootprintSet& se
   return outline;
 }
 
-std::size_t drop_outlines_with_parts(io::FootprintSet& set) {
+namespace {
+
+// Whether an S3DB building or part starts above the ground.
+bool elevated(const io::Footprint& footprint) {
+  const auto positive = [&](std::string_view key, auto parse) {
+    const std::optional<shape::Value> value = footprint.properties.find(key);
+    if (!value || shape::is_null(*value)) return false;
+    if (const double* number = std::get_if<double>(&*value)) return *number > 0;
+    const std::optional<double> parsed = parse(shape::to_string(*value));
+    return parsed && *parsed > 0;
+  };
+  return positive("min_height", base::parse_length) ||
+         positive("building:min_level", base::parse_levels);
+}
+
+}  // namespace
+
+LotsLeftOut leave_out_for_lots(io::FootprintSet& set) {
   const std::size_t n = set.footprints.size();
-  std::vector<bool> is_part(n), is_outline(n);
+  std::vector<bool> is_part(n), is_outline(n), leave(n, false);
   bool any_part = false;
+  LotsLeftOut out;
   for (std::size_t i = 0; i < n; ++i) {
-    is_part[i] = tagged(set.footprints[i], "building:part");
-    is_outline[i] = !is_part[i] && tagged(set.footprints[i], "building");
+    const io::Footprint& footprint = set.footprints[i];
+    is_part[i] = tagged(footprint, "building:part");
+    is_outline[i] = !is_part[i] && tagged(footprint, "building");
     any_part = any_part || is_part[i];
+    if ((is_part[i] || is_outline[i]) && elevated(footprint)) {
+      leave[i] = true;
+      ++out.elevated;
+      is_part[i] = false;  // it does not stand in its outline: one of only such parts stays
+      is_outline[i] = false;
+    }
   }
-  if (!any_part) return 0;  // no S3DB parts: nothing to compare (most inputs)
-  std::vector<std::vector<kernel::Polygon>> regions;
-  regions.reserve(n);
-  for (const io::Footprint& footprint : set.footprints) regions.push_back(footprint.polygons);
-  const std::vector<std::optional<std::size_t>> outline =
-      part_outlines(set, kernel::find_overlaps(regions), is_part, is_outline);
-  std::vector<bool> replaced(n, false);
-  for (const std::optional<std::size_t>& o : outline) {
-    if (o) replaced[*o] = true;
+  if (any_part) {  // no S3DB parts (most inputs): no outline to compare
+    std::vector<std::vector<kernel::Polygon>> regions;
+    regions.reserve(n);
+    for (const io::Footprint& footprint : set.footprints) regions.push_back(footprint.polygons);
+    const std::vector<std::optional<std::size_t>> outline =
+        part_outlines(set, kernel::find_overlaps(regions), is_part, is_outline);
+    for (const std::optional<std::size_t>& o : outline) {
+      if (o && !leave[*o]) {
+        leave[*o] = true;
+        ++out.outlines;
+      }
+    }
   }
   std::size_t kept = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (replaced[i]) continue;
+    if (leave[i]) continue;
     if (kept != i) set.footprints[kept] = std::move(set.footprints[i]);
     ++kept;
   }
   set.footprints.resize(kept);
-  return n - kept;
+  return out;
 }
 
 }  // namespace insula::cli

@@ -21,8 +21,17 @@ std::vector<std::optional<std::size_t>> part_outlines(const io::FootprintSet& se
                                                       const std::vector<bool>& is_part,
                                                       const std::vector<bool>& is_outline);
 
-// Leaves out of `set` the outlines whose parts stand in them (by their S3DB tags: `building`,
-// `building:part`); returns how many. Footprints without those tags are never touched.
-std::size_t drop_outlines_with_parts(io::FootprintSet& set);
+// What leave_out_for_lots() left out.
+struct LotsLeftOut {
+  std::size_t outlines = 0;  // outlines whose building:parts stand in them
+  std::size_t elevated = 0;  // buildings and parts that start above the ground
+};
+
+// Leaves out of `set`, by their S3DB tags, what a grammar building each lot from the ground
+// cannot build: outlines whose parts stand in them (the parts are built instead), and buildings
+// or parts above the ground (`min_height` or `building:min_level` > 0: a tower's upper stage,
+// a bridge, a roof on posts), which would stand on the ground through what is below them.
+// Footprints without those tags are never touched.
+LotsLeftOut leave_out_for_lots(io::FootprintSet& set);
 
 }  // namespace insula::cli
