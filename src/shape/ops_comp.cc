@@ -1,6 +1,7 @@
 // Component split (seed 004, "Component Split Rule": faces, edges, vertices, side faces): a shape
 // of lower dimension per face, edge or vertex of the parent's geometry.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -76,10 +77,6 @@ bool face_child(const Scope& parent, const Mesh& mesh, std::size_t f, Refit& out
   return true;
 }
 
-bool same_tag(const kernel::FaceTag& a, const kernel::FaceTag& b) {
-  return a.semantic == b.semantic && a.material == b.material && a.face_id == b.face_id;
-}
-
 // The pieces of one logical face, by their first face: faces that share an edge, a plane and a
 // tag. A region with holes is stored as several faces (extrude triangulates a courtyard lot's
 // cap, or frames its hole with quads), and comp must give it as one face: each triangle of a
@@ -91,6 +88,25 @@ std::vector<std::vector<std::size_t>> face_groups(const Mesh& mesh) {
   for (std::size_t f = 0; f < n; ++f) {
     normals[f] = normalized(kernel::face_normal(mesh, f));
     offsets[f] = dot(normals[f], mesh.position(mesh.face(f)[0]));
+  }
+  // A face's tag and normal (to 1e-6). Most meshes (a lot's mass, a roof) have no two faces with
+  // the same: nothing to weld.
+  std::vector<std::array<std::int64_t, 6>> keys(n);
+  for (std::size_t f = 0; f < n; ++f) {
+    const kernel::FaceTag& t = mesh.tag(f);
+    keys[f] = {static_cast<std::int64_t>(t.semantic),
+               t.material,
+               t.face_id,
+               std::llround(normals[f].x * 1e6),
+               std::llround(normals[f].y * 1e6),
+               std::llround(normals[f].z * 1e6)};
+  }
+  std::vector<std::array<std::int64_t, 6>> sorted = keys;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) {
+    std::vector<std::vector<std::size_t>> singles(n);
+    for (std::size_t f = 0; f < n; ++f) singles[f] = {f};
+    return singles;
   }
   const double tolerance = 1e-7 * std::max(1.0, length(mesh.bounds().size()));
   const Mesh welded = kernel::weld(mesh);
@@ -104,8 +120,7 @@ std::vector<std::vector<std::size_t>> face_groups(const Mesh& mesh) {
       const auto [it, added] = first_face_of_edge.try_emplace({std::min(a, b), std::max(a, b)}, f);
       const std::size_t g = it->second;
       if (added || g == f) continue;
-      if (same_tag(mesh.tag(f), mesh.tag(g)) && dot(normals[f], normals[g]) > 1 - 1e-9 &&
-          std::fabs(offsets[f] - offsets[g]) <= tolerance) {
+      if (keys[f] == keys[g] && std::fabs(offsets[f] - offsets[g]) <= tolerance) {
         groups.unite(static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(g));
       }
     }
