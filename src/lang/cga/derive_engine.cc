@@ -1145,9 +1145,11 @@ std::optional<std::string> Engine::color_hex(const CItem& c, State& st) {
   const Value v = eval(c.args[0], st);
   std::string hex = long_hex(as_text(v));
   // A CSS colour name too: OpenStreetMap's building:colour is "white" as often as "#ffffff".
-  if (const std::optional<std::uint32_t> named = base::css_colour(as_text(v))) {
-    hex = hex_color(((*named >> 16) & 0xFF) / 255.0, ((*named >> 8) & 0xFF) / 255.0,
-                    (*named & 0xFF) / 255.0, 1, false);
+  if (!valid_hex_color(hex)) {
+    if (const std::optional<std::uint32_t> named = base::css_colour(as_text(v))) {
+      hex = hex_color(((*named >> 16) & 0xFF) / 255.0, ((*named >> 8) & 0xFF) / 255.0,
+                      (*named & 0xFF) / 255.0, 1, false);
+    }
   }
   if (!valid_hex_color(hex)) {
     const std::string message =
