@@ -146,7 +146,7 @@ void lots(NodeContext& c) {
       }
       for (const auto& [property, value] : lot.properties) {
         // OpenStreetMap's `building:levels` is attribute building_levels when that is declared
-        // and no property of that very name is given (docs/graph-nodes.md, create.lots).
+        // and no property of that very name is given (docs/graph-executor.md, create.lots).
         std::string name = property;
         if (!c.declared_type(name)) {
           std::string spelled = base::identifier_spelling(property);
