@@ -27,12 +27,12 @@ std::string property_id(std::string_view name, std::set<std::string>& taken) {
 std::shared_ptr<const shape::AttributeMap> building_feature_attributes(
     const shape::Building& building) {
   auto attributes = std::make_shared<shape::AttributeMap>(building.attributes);
-  (*attributes)["building"] = building.id;
+  (*attributes)[std::string(kBuildingIdProperty)] = building.id;
   return attributes;
 }
 
 void make_feature(shape::Part& part, std::shared_ptr<const shape::AttributeMap> building) {
-  part.attributes.erase("building");
+  part.attributes.erase(std::string(kBuildingIdProperty));
   part.inherited = std::move(building);
 }
 

@@ -29,13 +29,16 @@
 namespace insula::io::gltf {
 
 inline constexpr std::string_view kMetadataExtension = "EXT_structural_metadata";
+// The property that names a feature's building in the property table.
+inline constexpr std::string_view kBuildingIdProperty = "building_id";
 
 // Buildings merged into one mesh (a 3D Tiles tile, `--gltf-nodes scene`) keep their identity as
 // features: every part points at what it takes from its building (its attributes and, over them,
-// its id as `building`), shared by the building's parts rather than copied.
+// its id as `building_id`), shared by the building's parts rather than copied. The id has a name
+// of its own: OpenStreetMap's `building` tag (`hospital`) is one of the attributes it sits beside.
 std::shared_ptr<const shape::AttributeMap> building_feature_attributes(
     const shape::Building& building);
-// `part` as such a feature (an own `building` attribute gives way to the building's id).
+// `part` as such a feature (an own `building_id` attribute gives way to the building's id).
 void make_feature(shape::Part& part, std::shared_ptr<const shape::AttributeMap> building);
 inline constexpr std::string_view kFeaturesExtension = "EXT_mesh_features";
 // Feature ids of GPU instances (EXT_mesh_gpu_instancing's _FEATURE_ID_n attributes) are named on

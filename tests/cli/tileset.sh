@@ -37,7 +37,9 @@ grep -q '"buildings": 15,' "$tmp/osm1.json" || fail "OSM town: 15 buildings in t
 diff -r "$tmp/osm/tiles" "$tmp/osm1/tiles" >/dev/null || fail "OSM town: tiles differ between runs"
 check_tileset "OSM town opens in CesiumJS and loaders.gl" "$tmp/osm/tileset.json" \
   --expect-features 17 --lonlat 11.3945,47.2655 --tolerance-m 50
-grep -q '"building":"relation/3001"' "$tmp/c.txt" || fail "OSM town: picked feature's building"
+grep -q '"building_id":"relation/3001"' "$tmp/c.txt" || fail "OSM town: picked feature's building"
+# The building's id does not take the place of OpenStreetMap's own building tag.
+grep -q '"building":"apartments"' "$tmp/c.txt" || fail "OSM town: picked feature's building tag"
 
 # A town on the antimeridian (Fiji, lon/lat on both sides of 180 degrees): regions are narrow and
 # cross it (west > east), not bands around the globe that no viewer refines (both loaded none).

@@ -296,7 +296,8 @@ TEST(GltfWriter, InheritedAttributesFillWhatAPartLacks) {
 TEST(GltfWriter, SceneLayoutKeepsBuildingsAsFeatures) {
   GltfOptions options;
   options.nodes = GltfOptions::Nodes::kScene;
-  const shape::Scene scene = test_scene();
+  shape::Scene scene = test_scene();
+  scene.buildings[0].attributes["building"] = std::string("hospital");  // OpenStreetMap's tag
   const std::string glb = glb_bytes(scene, options);
   const tinygltf::Model model = load_glb(glb);
   const nlohmann::json json = json_of(glb);
@@ -304,7 +305,9 @@ TEST(GltfWriter, SceneLayoutKeepsBuildingsAsFeatures) {
   EXPECT_EQ(model.meshes.size(), 1U);
   EXPECT_EQ(model.nodes[0].name, "scene");
   EXPECT_EQ(triangle_count(model), triangle_count(load_glb(glb_bytes(scene))));
-  EXPECT_EQ(table_column(model, json, "building"), (std::vector<std::string>{"b1", "L-2", "L-2"}));
+  EXPECT_EQ(table_column(model, json, "building_id"),
+            (std::vector<std::string>{"b1", "L-2", "L-2"}));
+  EXPECT_EQ(table_column(model, json, "building"), (std::vector<std::string>{"hospital", "", ""}));
   EXPECT_EQ(table_column(model, json, "name"),
             (std::vector<std::string>{"main", "wing", "storey 0"}));
   EXPECT_EQ(table_column(model, json, "levels"), (std::vector<std::string>{"1", "", ""}));

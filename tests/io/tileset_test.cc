@@ -232,7 +232,7 @@ TEST(TilesetWriter, TilesPlaceEveryBuildingOnTheGlobe) {
     // One node and one mesh draw the tile; every vertex's feature names its building.
     EXPECT_EQ(model.meshes.size(), 1U);
     const nlohmann::json json = testing::json_of(bytes);
-    const std::vector<std::string> building_of = testing::table_column(model, json, "building");
+    const std::vector<std::string> building_of = testing::table_column(model, json, "building_id");
     // The buildings' attributes are columns too.
     EXPECT_EQ(testing::table_column(model, json, "roof"),
               std::vector<std::string>(building_of.size(), "flat"));
