@@ -44,8 +44,8 @@ shape::Scene district_tile(int count) {
   shape::Building tile;
   tile.id = "tile";
   for (shape::Building& building : scene.buildings) {
-    const auto attributes =
-        std::make_shared<const shape::AttributeMap>(shape::AttributeMap{{"building_id", building.id}});
+    const auto attributes = std::make_shared<const shape::AttributeMap>(
+        shape::AttributeMap{{"building_id", building.id}});
     for (shape::Part& part : building.parts) {
       part.inherited = attributes;
       tile.parts.push_back(std::move(part));

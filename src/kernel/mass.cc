@@ -24,6 +24,7 @@ RoofSpec roof_spec(const MassSpec& spec) {
   r.height = spec.height;
   r.direction_deg = spec.direction_deg;
   r.orientation = spec.orientation;
+  r.party_walls = spec.party_walls;
   return r;
 }
 

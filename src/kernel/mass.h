@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "kernel/mesh.h"
 #include "kernel/polygon.h"
@@ -29,6 +30,7 @@ struct MassSpec {
   std::optional<double> height = std::nullopt;             // see RoofSpec::height
   std::optional<double> direction_deg = std::nullopt;      // see RoofSpec::direction_deg
   RidgeOrientation orientation = RidgeOrientation::kAuto;  // see RoofSpec::orientation
+  std::vector<PartyWall> party_walls;                      // see RoofSpec::party_walls
   // false: S3DB building=roof, a roof on posts without walls: the roof as a closed solid (its
   // surface, gable ends and a flat underside at the eave; flat and shed roofs a slab 0.25 m thick
   // under their surface) and a 0.25 m square post from the ground up to it under each outer-ring

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "kernel/contract_loop.h"
+#include "kernel/party_walls.h"
 #include "kernel/roof_detail.h"
 
 namespace insula::kernel {
@@ -254,10 +255,52 @@ double eave_slope(const RoofSpec& spec, RoofType type) {
   }
 }
 
-// The eave polygon for `overhang` with per-edge distances (0 on gable ends).
+// The edges of `c` that run along one of `walls` (RoofSpec::party_walls), and the edges that
+// continue them around a bend of less than kPartyWallBendDeg or are shorter than twice the
+// overhang: where an overhanging edge meets a flush one nearly in line, the mitred eave corner runs
+// off toward infinity, and a short step between a flush and an overhanging edge flips
+// (offset_contour); both are part of the party wall's line in mapped outlines.
+constexpr double kPartyWallBendDeg = 20;
+
+std::vector<std::uint32_t> party_edges(const Contour& c, std::span<const PartyWall> walls,
+                                       double overhang) {
+  std::vector<std::uint32_t> edges;
+  if (walls.empty() || !(overhang > 0)) return edges;
+  std::vector<bool> flush(c.points.size(), false);
+  for (std::uint32_t e = 0; e < c.points.size(); ++e) {
+    flush[e] = on_party_wall(c.points[e], c.points[c.next(e)], walls);
+  }
+  const double straight = std::cos(kPartyWallBendDeg * kPi / 180);
+  const auto direction = [&](std::uint32_t e) {
+    return normalized(c.points[c.next(e)] - c.points[e]);
+  };
+  const auto joins = [&](std::uint32_t e, std::uint32_t f) {  // f follows e
+    return dot(direction(e), direction(f)) > straight;
+  };
+  const auto is_short = [&](std::uint32_t e) {
+    return length(c.points[c.next(e)] - c.points[e]) < 2 * overhang;
+  };
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (std::uint32_t e = 0; e < c.points.size(); ++e) {
+      if (!flush[e]) continue;
+      const std::uint32_t after = c.next(e);
+      const std::uint32_t before = c.prev(e);
+      if (!flush[after] && (joins(e, after) || is_short(after))) flush[after] = grew = true;
+      if (!flush[before] && (joins(before, e) || is_short(before))) flush[before] = grew = true;
+    }
+  }
+  for (std::uint32_t e = 0; e < c.points.size(); ++e) {
+    if (flush[e]) edges.push_back(e);
+  }
+  return edges;
+}
+
+// The eave polygon for `overhang` with per-edge distances (0 on gable ends and party walls).
 bool plan_eave(RoofPlan& plan, double overhang, const std::vector<std::uint32_t>& flush_edges) {
   plan.offsets.assign(plan.footprint.points.size(), overhang);
   for (std::uint32_t e : flush_edges) plan.offsets[e] = 0;
+  for (std::uint32_t e : plan.party_edges) plan.offsets[e] = 0;
   plan.overhang = overhang;
   if (overhang <= 0) {
     plan.eave = plan.footprint;
@@ -610,7 +653,13 @@ bool plan_roof(const Polygon& footprint, const RoofSpec& spec, RoofPlan& plan) {
     return false;
   }
   plan.footprint = Contour::from(footprint);
+  plan.party_edges = party_edges(plan.footprint, spec.party_walls, spec.overhang);
   double overhang = spec.overhang;
+  // Party walls make the eave polygon's offsets uneven; where that polygon cannot be made, the
+  // roof overhangs all round as it would alone rather than nowhere.
+  if (overhang > 0 && !plan.party_edges.empty() && !plan_eave(plan, overhang, {})) {
+    plan.party_edges.clear();
+  }
   if (overhang > 0 && !plan_eave(plan, overhang, {})) {
     plan.message =
         "overhang of " + std::to_string(overhang) +

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "kernel/mesh.h"
+#include "kernel/party_walls.h"
 #include "kernel/polygon.h"
 
 namespace insula::kernel {
@@ -87,6 +88,9 @@ struct RoofSpec {
   std::optional<double> direction_deg = std::nullopt;
   // S3DB roof:orientation on quadrilaterals (ignored when direction_deg is set).
   RidgeOrientation orientation = RidgeOrientation::kAuto;
+  // Stretches of the footprint's edges that a neighbour's wall runs along (party_walls.h): an edge
+  // on one has no overhang, so the eave does not reach into the neighbour.
+  std::vector<PartyWall> party_walls;
 };
 
 enum class RoofStatus : std::uint8_t {

@@ -56,13 +56,14 @@ struct RoofPlan {
   Contour footprint;
   Contour eave;                 // footprint offset by `offsets` (== footprint without overhang)
   std::vector<double> offsets;  // per edge, meters
-  double overhang = 0;          // the overhang actually used
-  double slope = 0;             // tan(pitch): hip, gable, shed, pyramid
-  double eave_slope = 0;        // slope of the faces at the eave (mansard: the lower slope)
-  double upper_slope = 0;       // mansard top
-  double break_time = 0;        // mansard break, as skeleton time of the eave polygon
-  double fascia = 0;            // flat and shed with overhang
-  Vec2 shed_origin;             // the shed rises at `slope` along shed_normal from this point
+  std::vector<std::uint32_t> party_edges;  // footprint edges on party walls: never overhang
+  double overhang = 0;                     // the overhang actually used
+  double slope = 0;                        // tan(pitch): hip, gable, shed, pyramid
+  double eave_slope = 0;   // slope of the faces at the eave (mansard: the lower slope)
+  double upper_slope = 0;  // mansard top
+  double break_time = 0;   // mansard break, as skeleton time of the eave polygon
+  double fascia = 0;       // flat and shed with overhang
+  Vec2 shed_origin;        // the shed rises at `slope` along shed_normal from this point
   Vec2 shed_normal;
   Vec2 apex;  // pyramid
   double apex_time = 0;
@@ -88,10 +89,23 @@ double shed_distance(const RoofPlan& plan, Vec2 p);
 // Writes the planned roof into `mesh` (never fails once planned).
 void emit_roof(const RoofPlan& plan, double eave_z, Mesh& mesh, RoofBuild& build);
 
+// An edge without overhang between overhanging ones (a party wall, kernel-roofs.md) has its wall
+// top (the footprint edge) inside its eave edge, which reaches over the neighbouring soffits' ends:
+// the face over the eave edge takes the wall-top vertices into its bottom edge, so the wall, the
+// soffits and the roof meet edge to edge.
+struct WallTopJog {
+  std::uint32_t eave_from = 0, eave_to = 0;  // the eave edge, as the face over it runs
+  std::uint32_t wall_from = 0, wall_to = 0;  // the wall top's ends in that order
+};
+
+// Inserts each jog's wall-top vertices into `loop` where it runs along the jog's eave edge.
+void insert_wall_tops(std::span<const WallTopJog> jogs, std::vector<std::uint32_t>& loop);
+
 // Mansard split of the skeleton faces at plan.break_time (roof_mansard.cc). `eave_ids` are the
 // mesh ids of the eave polygon's vertices at height z_eave.
 void emit_mansard(const RoofPlan& plan, double z_eave, double floor_z,
-                  std::span<const std::uint32_t> eave_ids, Mesh& mesh, std::uint32_t& face_id);
+                  std::span<const std::uint32_t> eave_ids, std::span<const WallTopJog> jogs,
+                  Mesh& mesh, std::uint32_t& face_id);
 
 // Adds the region bounded by `contour` over existing vertex ids `ids` (contour order) as faces:
 // one face without holes, triangles (k2d's triangulate) with holes; `downward` reverses them.

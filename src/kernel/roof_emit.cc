@@ -21,6 +21,7 @@ class RoofEmitter {
     mesh_.reserve(mesh_.vertex_count() + 4 * n + 8, mesh_.face_count() + 4 * n + 8,
                   mesh_.face_count() * 4 + 24 * n);
     make_rings();
+    find_jogs();
     build_.cap_offsets.assign(n + 1, 0);
     emit_soffits_and_fascias();
     emit_body();
@@ -67,7 +68,24 @@ class RoofEmitter {
   }
 
   void face(std::initializer_list<std::uint32_t> loop, SemanticClass semantic) {
-    mesh_.add_face(loop, {semantic, 0, face_id_++});
+    loop_.assign(loop);
+    insert_wall_tops(jogs_, loop_);
+    mesh_.add_face(loop_, {semantic, 0, face_id_++});
+  }
+
+  // The edges without overhang whose eave edge reaches past their wall top (WallTopJog). Gable
+  // ends are left out: their wall continues up into the gable (add_cap).
+  void find_jogs() {
+    if (!(plan_.overhang > 0)) return;
+    const Contour& f = plan_.footprint;
+    std::vector<std::uint8_t> gable(f.size(), 0);
+    for (const GableEnd& g : plan_.gables) gable[g.edge] = 1;
+    const auto& w = build_.wall_top;
+    for (std::uint32_t e = 0; e < f.size(); ++e) {
+      const std::uint32_t j = f.next(e);
+      if (plan_.offsets[e] > 0 || gable[e] || (soffit_[e] == w[e] && soffit_[j] == w[j])) continue;
+      jogs_.push_back({soffit_[e], soffit_[j], w[e], w[j]});
+    }
   }
 
   void emit_soffits_and_fascias() {
@@ -99,7 +117,7 @@ class RoofEmitter {
         return;
       case RoofType::kMansard:
       case RoofType::kHoledMansard:
-        emit_mansard(plan_, low_z_, low_z_, eave_, mesh_, face_id_);
+        emit_mansard(plan_, low_z_, low_z_, eave_, jogs_, mesh_, face_id_);
         return;
       case RoofType::kGambrel:
       case RoofType::kHalfHipped:
@@ -167,6 +185,7 @@ class RoofEmitter {
         }
         loop.push_back(ids[v]);
       }
+      insert_wall_tops(jogs_, loop);
       mesh_.add_face(loop, {SemanticClass::kRoofSurface, 0, face_id_++});
     }
   }
@@ -190,9 +209,26 @@ class RoofEmitter {
   std::uint32_t face_id_;
   std::vector<std::uint32_t> soffit_;  // eave polygon vertices at soffit height
   std::vector<std::uint32_t> eave_;    // eave polygon vertices at roof height
+  std::vector<WallTopJog> jogs_;
+  std::vector<std::uint32_t> loop_;
 };
 
 }  // namespace
+
+void insert_wall_tops(std::span<const WallTopJog> jogs, std::vector<std::uint32_t>& loop) {
+  for (const WallTopJog& jog : jogs) {
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      if (loop[i] != jog.eave_from || loop[(i + 1) % loop.size()] != jog.eave_to) continue;
+      std::array<std::uint32_t, 2> inner{};
+      std::size_t count = 0;
+      if (jog.wall_from != jog.eave_from) inner[count++] = jog.wall_from;
+      if (jog.wall_to != jog.eave_to) inner[count++] = jog.wall_to;
+      loop.insert(loop.begin() + static_cast<std::ptrdiff_t>(i + 1), inner.begin(),
+                  inner.begin() + static_cast<std::ptrdiff_t>(count));
+      break;
+    }
+  }
+}
 
 bool add_region(const Contour& contour, std::span<const std::uint32_t> ids, FaceTag tag,
                 bool downward, Mesh& mesh) {

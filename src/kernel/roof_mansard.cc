@@ -33,13 +33,15 @@ struct Run {
 class MansardEmitter {
  public:
   MansardEmitter(const RoofPlan& plan, double z_eave, double floor_z,
-                 std::span<const std::uint32_t> eave_ids, Mesh& mesh, std::uint32_t& face_id)
+                 std::span<const std::uint32_t> eave_ids, std::span<const WallTopJog> jogs,
+                 Mesh& mesh, std::uint32_t& face_id)
       : plan_(plan),
         s_(*plan.skeleton),
         holed_(plan.type == RoofType::kHoledMansard),
         z_eave_(z_eave),
         z_break_(z_eave + plan.break_time * plan.eave_slope),
         floor_z_(floor_z),
+        jogs_(jogs),
         mesh_(mesh),
         face_id_(face_id) {
     low_.assign(s_.vertices.size(), kNone);
@@ -135,6 +137,7 @@ class MansardEmitter {
         if (holed_ && entry != nullptr) add_opening_wall(*entry, c);
       }
     }
+    insert_wall_tops(jogs_, lower_);
     add_face(lower_, SemanticClass::kRoofSurface);
     emit_upper_pieces();
   }
@@ -181,6 +184,7 @@ class MansardEmitter {
   double z_eave_;
   double z_break_;
   double floor_z_;
+  std::span<const WallTopJog> jogs_;
   Mesh& mesh_;
   std::uint32_t& face_id_;
   std::vector<std::uint32_t> low_;   // skeleton vertex -> mesh id below or on the break
@@ -194,8 +198,9 @@ class MansardEmitter {
 }  // namespace
 
 void emit_mansard(const RoofPlan& plan, double z_eave, double floor_z,
-                  std::span<const std::uint32_t> eave_ids, Mesh& mesh, std::uint32_t& face_id) {
-  MansardEmitter(plan, z_eave, floor_z, eave_ids, mesh, face_id).run();
+                  std::span<const std::uint32_t> eave_ids, std::span<const WallTopJog> jogs,
+                  Mesh& mesh, std::uint32_t& face_id) {
+  MansardEmitter(plan, z_eave, floor_z, eave_ids, jogs, mesh, face_id).run();
 }
 
 }  // namespace insula::kernel::roof_detail

@@ -246,4 +246,28 @@ for bad in "$root"/tests/data/bad/*.geojson; do
   esac
 done
 
+# Party walls (docs/kernel-roofs.md): two terraced houses a and b share the wall x = 8 and a lower
+# garage c leans on b. No eave reaches across a shared wall into a neighbour as tall; b's eave
+# passes over the garage's roof; every other edge overhangs.
+expect_exit 0 "terrace with overhang" "$insula" mass "$root/tests/data/geo/terrace.geojson" \
+  --overhang 0.5 -o "$tmp/terrace.city.json" --quiet
+validate_cityjson "terrace CityJSON" "$tmp/terrace.city.json"
+node -e '
+  const cj = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  const [sx, sy] = cj.transform.scale, [tx, ty] = cj.transform.translate;
+  const xs = {};
+  for (const [id, o] of Object.entries(cj.CityObjects)) {
+    if (!o.geometry) continue;
+    const v = new Set(JSON.stringify(o.geometry[0].boundaries).match(/\d+/g).map(Number));
+    const x = [...v].map((i) => cj.vertices[i][0] * sx + tx - 500000);
+    xs[id.split("-")[0]] = [Math.min(...x), Math.max(...x)];
+  }
+  const near = (a, b) => Math.abs(a - b) < 1e-3;
+  const want = { a: [-0.5, 8], b: [8, 16.5], c: [16, 20.5] };
+  for (const [id, [lo, hi]] of Object.entries(want)) {
+    if (!xs[id] || !near(xs[id][0], lo) || !near(xs[id][1], hi)) {
+      console.log(JSON.stringify(xs)); process.exit(1);
+    }
+  }' "$tmp/terrace.city.json" || fail "terrace: eaves stop at the party walls"
+
 finish mass

@@ -217,6 +217,25 @@ TEST(Mass, GableOverhangKeepsGableWallsFlush) {
   EXPECT_NEAR(r.mesh.bounds().min.y, -o, 1e-12);
 }
 
+// Terraced houses (kernel-roofs.md, "Party walls"): the edge x = 8 is shared with a neighbour, so
+// no roof reaches past it, while the other edges overhang and the shell stays closed.
+TEST(Mass, PartyWallEdgesDoNotOverhang) {
+  const double o = 0.5;
+  const Polygon house = rectangle(10, 8);  // x 0..8, y 0..10
+  for (RoofType roof : kAllRoofs) {
+    MassSpec s = spec(roof, o);
+    s.party_walls.push_back({0, 1, {8, 10}, {8, 0}});
+    const MassResult r = build_mass(house, s);
+    const std::string name(roof_type_name(roof));
+    expect_shell(r, 2, name);
+    EXPECT_EQ(r.status, MassStatus::kOk) << name << ": " << r.message;
+    EXPECT_NEAR(r.mesh.bounds().max.x, 8, 1e-9) << name;
+    EXPECT_NEAR(r.mesh.bounds().min.x, -o, 1e-9) << name;
+    // The gable's ends (y = 0 and 10) stay flush with their walls.
+    EXPECT_NEAR(r.mesh.bounds().min.y, roof == RoofType::kGable ? 0 : -o, 1e-9) << name;
+  }
+}
+
 TEST(Mass, FlatAndShedVolumes) {
   const double w = 8, l = 14, H = 6;
   MassResult flat = build_mass(rectangle(w, l), spec(RoofType::kFlat));

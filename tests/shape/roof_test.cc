@@ -56,7 +56,10 @@ TEST(Roof, HipOnTheTopFaceOfAMass) {
   const RootResult root = tree.create_root({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}});
   const ShapeId mass = extrude(tree, root.id, 6).children[0];
   const ShapeId top = comp_faces(tree, mass, FaceSelector::kTop).children[0];
-  const OpResult r = roof(tree, top, kernel::RoofSpec{kernel::RoofType::kPyramid, 45});
+  kernel::RoofSpec pyramid;
+  pyramid.type = kernel::RoofType::kPyramid;
+  pyramid.pitch_deg = 45;
+  const OpResult r = roof(tree, top, pyramid);
   ASSERT_TRUE(r.ok()) << r.error;
   const Shape& roof = tree[r.children[0]];
   const kernel::Bounds3 b = mesh_to_world(*roof.mesh, roof.scope).bounds();

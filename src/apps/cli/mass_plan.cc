@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <map>
+#include <numbers>
 
 #include "apps/cli/mass_command.h"
 #include "apps/cli/s3db_parts.h"
+#include "kernel/party_walls.h"
 #include "kernel/polygon_overlaps.h"
 #include "kernel/roof_rise.h"
 
@@ -120,6 +123,42 @@ FormSummary summary_of(const io::BuildingForm& form) {
   return {form.base, form.eave, form.height_source, form.roof_source, form.osm, form.is_part};
 }
 
+// Height of the soffit under `footprint`'s eave, and the highest its walls or roof rise within
+// `overhang` of its edges: where a neighbour's rise is above this building's soffit, the eave would
+// run into it.
+double soffit_height(const FootprintPlan& footprint, double overhang) {
+  if (footprint.spec.roof == kernel::RoofType::kFlat)
+    return footprint.form.eave - footprint.spec.fascia;
+  return footprint.form.eave -
+         overhang * std::tan(footprint.spec.pitch_deg * std::numbers::pi / 180);
+}
+
+double rise_near_edge(const FootprintPlan& footprint, double overhang) {
+  if (footprint.spec.roof == kernel::RoofType::kFlat) return footprint.form.eave;
+  return footprint.form.eave +
+         overhang * std::tan(footprint.spec.pitch_deg * std::numbers::pi / 180);
+}
+
+// With an overhang, each footprint's party walls (kernel/party_walls.h) against built neighbours
+// whose walls or roof reach above its soffit there (kernel-roofs.md, "Party walls"): those edges
+// get no overhang. A lower neighbour (a garage against a house) lets the eave pass over it.
+void assign_party_walls(const MassOptions& options,
+                        std::vector<std::vector<kernel::Polygon>> regions, MassPlan& plan) {
+  if (!(options.overhang > 0)) return;
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    if (plan.footprints[i].replaced) regions[i].clear();  // its parts stand there instead
+  }
+  for (const kernel::PartyWall& wall : kernel::find_party_walls(regions)) {
+    FootprintPlan& self = plan.footprints[wall.footprint];
+    const FootprintPlan& neighbour = plan.footprints[wall.neighbour];
+    if (neighbour.form.base >= self.form.eave) continue;  // a part above this building's eave
+    if (rise_near_edge(neighbour, options.overhang) <= soffit_height(self, options.overhang)) {
+      continue;
+    }
+    self.spec.party_walls.push_back(wall);
+  }
+}
+
 OverlapSummary summarize_overlaps(const MassPlan& plan) {
   OverlapSummary summary;
   for (const kernel::Overlap& overlap : plan.overlaps) {
@@ -168,6 +207,7 @@ MassPlan plan_mass(const MassOptions& options, const io::FootprintSet& set,
   for (const io::Footprint& footprint : set.footprints) regions.push_back(footprint.polygons);
   plan.overlaps = kernel::find_overlaps(regions);
   assign_parts(set, plan, plan.overlaps);
+  assign_party_walls(options, std::move(regions), plan);
   plan.overlap_summary = summarize_overlaps(plan);
   return plan;
 }
