@@ -3,8 +3,10 @@
 #include "io/building_tags.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
+#include <utility>
 
 #include "kernel/roof.h"
 
@@ -47,6 +49,32 @@ std::string quoted(const shape::Value& value) {
   return text;
 }
 
+// Overture Maps' building schema spells the S3DB tags with underscores and means the same by
+// them (`height` the top of the roof; docs/osm-buildings.md, "Overture Maps").
+constexpr std::array<std::pair<std::string_view, std::string_view>, 10> kOvertureNames{{
+    {"roof:shape", "roof_shape"},
+    {"building:levels", "num_floors"},
+    {"building:min_level", "min_floor"},
+    {"roof:height", "roof_height"},
+    {"roof:direction", "roof_direction"},
+    {"roof:orientation", "roof_orientation"},
+    {"building:colour", "facade_color"},
+    {"roof:colour", "roof_color"},
+    {"building:material", "facade_material"},
+    {"roof:material", "roof_material"},
+}};
+
+// An Overture feature: its `names` object or `sources` array (nested values are JSON text,
+// docs/geojson.md), or a property only Overture's schema names so.
+bool is_overture(const PropertyRow& properties) {
+  const auto starts = [&](std::string_view key, char c) {
+    const std::optional<std::string> text = text_of(properties, key);
+    return text && !text->empty() && text->front() == c;
+  };
+  return starts("names", '{') || starts("sources", '[') || text_of(properties, "roof_shape") ||
+         text_of(properties, "num_floors") || text_of(properties, "facade_color");
+}
+
 class FormReader {
  public:
   FormReader(const PropertyRow& properties, const BuildingTagOptions& options,
@@ -74,26 +102,42 @@ class FormReader {
     warnings_.push_back({code, std::move(text)});
   }
 
+  // The property that carries S3DB tag `key` in this feature's schema.
+  std::string_view key_of(std::string_view key) const {
+    if (!overture_) return key;
+    for (const auto& [s3db, overture] : kOvertureNames) {
+      if (s3db == key) return overture;
+    }
+    return key;
+  }
+  std::optional<shape::Value> tag(std::string_view key) const {
+    return properties_.find(key_of(key));
+  }
+  std::optional<std::string> tag_text(std::string_view key) const {
+    return text_of(properties_, key_of(key));
+  }
+
   // A length tag: its value in meters, or nullopt (with a warning when present but unreadable
   // or outside (minimum, 1000) m).
   std::optional<double> length_tag(std::string_view key, double minimum, const char* code) {
-    const std::optional<shape::Value> value = properties_.find(key);
+    const std::optional<shape::Value> value = tag(key);
     if (!value || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
     const std::optional<double> meters = length_of(*value);
     if (meters && *meters > minimum && *meters < 1000) return meters;
-    warn(code, {key, "=", quoted(*value), " is not a length in ", minimum < 0 ? "[0" : "(",
+    warn(code, {key_of(key), "=", quoted(*value), " is not a length in ", minimum < 0 ? "[0" : "(",
                 minimum < 0 ? "" : shape::to_string(minimum), ", 1000) m; ignored"});
     return std::nullopt;
   }
 
   // A level count: nullopt (with a warning) when present but unreadable or not above `minimum`.
   std::optional<double> levels_tag(std::string_view key, double minimum, const char* code) {
-    const std::optional<shape::Value> value = properties_.find(key);
+    const std::optional<shape::Value> value = tag(key);
     if (!value || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
     const std::optional<double> levels = levels_of(*value);
     if (levels && *levels > minimum && *levels < 300) return levels;
-    warn(code, {key, "=", quoted(*value), " is not a level count", minimum < 0 ? "" : " above ",
-                minimum < 0 ? "" : shape::to_string(minimum), "; ignored"});
+    warn(code,
+         {key_of(key), "=", quoted(*value), " is not a level count", minimum < 0 ? "" : " above ",
+          minimum < 0 ? "" : shape::to_string(minimum), "; ignored"});
     return std::nullopt;
   }
 
@@ -102,6 +146,11 @@ class FormReader {
     const std::optional<std::string> part = text_of(properties_, "building:part");
     form_.osm = (building && *building != "no") || (part && *part != "no");
     form_.is_part = part && *part != "no";
+    if (!form_.osm && is_overture(properties_)) {
+      // Overture's building_part features name the building they belong to.
+      overture_ = form_.osm = true;
+      form_.is_part = text_of(properties_, "building_id").has_value();
+    }
     form_.walls = !((building && *building == "roof") || (part && *part == "roof"));
   }
 
@@ -119,13 +168,14 @@ class FormReader {
     if (options_.roof) {
       form_.roof = *options_.roof;
       form_.roof_source = ValueSource::kOption;
-    } else if (const std::optional<shape::Value> shape = properties_.find("roof:shape")) {
+    } else if (const std::optional<shape::Value> shape = tag("roof:shape")) {
       if (std::optional<std::string> name = s3db_roof_name(shape::to_string(*shape))) {
         form_.roof = *name;
         form_.roof_source = ValueSource::kTag;
       } else {
         form_.roof = form_.osm ? "flat" : options_.default_roof;
-        warn("MAS003", {"unknown roof:shape=", quoted(*shape), "; using ", form_.roof});
+        warn("MAS003",
+             {"unknown ", key_of("roof:shape"), "=", quoted(*shape), "; using ", form_.roof});
       }
     } else if (const std::optional<shape::Value> roof = properties_.find("roof");
                roof && !form_.osm) {
@@ -171,19 +221,21 @@ class FormReader {
   }
 
   void read_direction() {
-    if (const std::optional<shape::Value> value = properties_.find("roof:direction")) {
+    if (const std::optional<shape::Value> value = tag("roof:direction")) {
       form_.direction_deg = parse_direction(shape::to_string(*value));
       if (!form_.direction_deg) {
-        warn("MAS006", {"roof:direction=", quoted(*value), " is not a compass direction; ignored"});
+        warn("MAS006", {key_of("roof:direction"), "=", quoted(*value),
+                        " is not a compass direction; ignored"});
       }
     }
-    if (const std::optional<std::string> value = text_of(properties_, "roof:orientation")) {
+    if (const std::optional<std::string> value = tag_text("roof:orientation")) {
       if (*value == "along") {
         form_.orientation = RoofOrientation::kAlong;
       } else if (*value == "across") {
         form_.orientation = RoofOrientation::kAcross;
       } else {
-        warn("MAS006", {"roof:orientation='", *value, "' is neither along nor across; ignored"});
+        warn("MAS006",
+             {key_of("roof:orientation"), "='", *value, "' is neither along nor across; ignored"});
       }
     }
   }
@@ -223,7 +275,7 @@ class FormReader {
       return;
     }
     if (form_.osm) {
-      warn("MAS001", {"no height or building:levels tag; ", fallback});
+      warn("MAS001", {"no height or ", key_of("building:levels"), " tag; ", fallback});
     } else {
       warn("MAS001", {"no '", options_.height_attr, "' property; ", fallback});
     }
@@ -278,15 +330,15 @@ class FormReader {
 
   void read_colour(const char* colour_key, const char* material_key,
                    std::optional<std::array<float, 3>>& colour, std::string& name) {
-    if (const std::optional<std::string> value = text_of(properties_, colour_key)) {
+    if (const std::optional<std::string> value = tag_text(colour_key)) {
       colour = parse_colour(*value);
       if (colour) {
         name = *value;
         return;
       }
-      warn("MAS006", {colour_key, "='", *value, "' is not a colour; ignored"});
+      warn("MAS006", {key_of(colour_key), "='", *value, "' is not a colour; ignored"});
     }
-    if (const std::optional<std::string> value = text_of(properties_, material_key)) {
+    if (const std::optional<std::string> value = tag_text(material_key)) {
       colour = material_colour(*value);
       if (colour) name = *value;
     }
@@ -297,6 +349,7 @@ class FormReader {
   std::vector<TagWarning>& warnings_;
   BuildingForm form_;
   std::optional<double> total_height_;
+  bool overture_ = false;  // Overture's names for the S3DB tags (kOvertureNames)
   bool roof_height_given_ = false;
   std::optional<std::size_t> height_warning_;  // the last MAS002/MAS007 of this feature
 };

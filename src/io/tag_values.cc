@@ -35,8 +35,9 @@ std::optional<std::string> s3db_roof_name(std::string_view shape) {
     std::string_view s3db;
     std::string_view kernel;
   };
-  // S3DB's documented shapes, then values common in the data that have a close kernel shape.
-  static constexpr std::array<Name, 22> kNames = {{
+  // S3DB's documented shapes, then values common in the data that have a close kernel shape, then
+  // Overture's `spherical`.
+  static constexpr std::array<Name, 23> kNames = {{
       {"flat", "flat"},
       {"skillion", "shed"},
       {"gabled", "gable"},
@@ -59,6 +60,7 @@ std::optional<std::string> s3db_roof_name(std::string_view shape) {
       {"hip", "hip"},
       {"pyramid", "pyramid"},
       {"pitched", "gable"},
+      {"spherical", "dome"},
   }};
   const std::string word = lower_ascii(base::trim_space(shape));
   for (const Name& name : kNames) {

@@ -215,3 +215,50 @@ TEST(BuildingForm, RoofTallerThanTheBuildingIsCapped) {
 
 }  // namespace
 }  // namespace insula::io
+
+namespace insula::io {
+namespace {
+
+// Overture Maps buildings (docs/osm-buildings.md, "Overture Maps"): recognised by their `names`
+// object or `sources` array (nested values arrive as JSON text) or a property only Overture names
+// so; their underscore names read as the S3DB tags, `height` the top of the roof.
+TEST(BuildingForm, OvertureNamesReadAsS3db) {
+  const BuildingForm gable = form_of({{"names", std::string("{\"primary\":\"Dom\"}")},
+                                      {"height", 12.0},
+                                      {"roof_shape", std::string("gabled")},
+                                      {"roof_height", 3.0},
+                                      {"facade_color", std::string("#ff0000")},
+                                      {"roof_material", std::string("slate")}});
+  EXPECT_TRUE(gable.osm);
+  EXPECT_EQ(gable.roof, "gable");
+  EXPECT_EQ(gable.roof_source, ValueSource::kTag);
+  EXPECT_DOUBLE_EQ(gable.eave, 9.0);
+  ASSERT_TRUE(gable.wall_colour.has_value());
+  EXPECT_FLOAT_EQ((*gable.wall_colour)[0], 1.0F);
+  EXPECT_TRUE(gable.roof_colour.has_value());
+  // Only a height, as most Overture buildings: the top of a flat roof, not walls under a hip.
+  const BuildingForm plain = form_of({{"names", std::string("{}")}, {"height", 8.6}});
+  EXPECT_EQ(plain.roof, "flat");
+  EXPECT_DOUBLE_EQ(plain.eave, 8.6);
+  // Floors from num_floors, the base from min_floor; a building_part names its building.
+  const BuildingForm part = form_of({{"sources", std::string("[{\"dataset\":\"OpenStreetMap\"}]")},
+                                     {"num_floors", 4.0},
+                                     {"min_floor", 1.0},
+                                     {"building_id", std::string("08b1")}});
+  EXPECT_TRUE(part.is_part);
+  EXPECT_DOUBLE_EQ(part.base, 3.0);
+  EXPECT_DOUBLE_EQ(part.eave, 12.0);
+  EXPECT_EQ(part.height_source, ValueSource::kLevels);
+  // A warning names the property the data has.
+  std::vector<TagWarning> warnings;
+  form_of({{"roof_shape", std::string("zigzag")}}, warnings);
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_NE(warnings[0].text.find("roof_shape='zigzag'"), std::string::npos) << warnings[0].text;
+  // A register's plain `height` stays the wall height.
+  EXPECT_DOUBLE_EQ(form_of({{"height", 8.6}}).eave, 8.6);
+  EXPECT_EQ(form_of({{"height", 8.6}}).roof, "hip");
+  EXPECT_EQ(*s3db_roof_name("spherical"), "dome");
+}
+
+}  // namespace
+}  // namespace insula::io
