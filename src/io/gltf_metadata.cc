@@ -137,8 +137,10 @@ void PartTable::find_columns(const shape::Scene& scene) {
           [&](std::size_t i, const shape::Value& value) { note(*entries[first + i], value); });
     }
   }
-  std::set<std::string> taken{"kind", "name"};
-  columns_.push_back({"name", "", Type::kString});
+  // The part's own name is `part_name`: a building's `name` (an OpenStreetMap tag, a register's
+  // street name) keeps its own, and CesiumJS shows properties by id.
+  std::set<std::string> taken{"kind", "part_name"};
+  columns_.push_back({"part_name", "", Type::kString});
   columns_.push_back({"kind", "", Type::kString});
   for (const auto& [key, s] : seen) {
     Type type = Type::kString;

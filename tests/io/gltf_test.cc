@@ -152,11 +152,11 @@ TEST(GltfWriter, PartsAreFeaturesWithAPropertyTable) {
   ASSERT_EQ(table["count"], 3);
   // Three rows: strings cost less than enums here.
   const nlohmann::json& properties = metadata["schema"]["classes"]["part"]["properties"];
-  EXPECT_EQ(properties["name"]["type"], "STRING");
+  EXPECT_EQ(properties["part_name"]["type"], "STRING");
   // Only "main" has levels: a text column with "" for the others.
   EXPECT_EQ(properties["levels"]["type"], "STRING");
   EXPECT_EQ(properties["levels"]["noData"], "");
-  EXPECT_EQ(table_column(model, json, "name"),
+  EXPECT_EQ(table_column(model, json, "part_name"),
             (std::vector<std::string>{"main", "wing", "storey 0"}));
   EXPECT_EQ(table_column(model, json, "kind"),
             (std::vector<std::string>{"BuildingPart", "BuildingPart", "Storey"}));
@@ -208,13 +208,13 @@ TEST(GltfWriter, RepeatedTextsAreDictionaryCoded) {
   const nlohmann::json json = json_of(glb);
   const nlohmann::json& metadata = json["extensions"]["EXT_structural_metadata"];
   const nlohmann::json& properties = metadata["schema"]["classes"]["part"]["properties"];
-  EXPECT_EQ(properties["name"]["type"], "ENUM");
-  EXPECT_EQ(metadata["schema"]["enums"]["name"]["valueType"], "UINT8");
+  EXPECT_EQ(properties["part_name"]["type"], "ENUM");
+  EXPECT_EQ(metadata["schema"]["enums"]["part_name"]["valueType"], "UINT8");
   EXPECT_EQ(properties["colour"]["type"], "ENUM");
   EXPECT_EQ(properties["colour"]["noData"], "(none)");
   EXPECT_EQ(properties["height"]["type"], "SCALAR");
   EXPECT_EQ(properties["height"]["componentType"], "FLOAT64");
-  const std::vector<std::string> names = table_column(model, json, "name");
+  const std::vector<std::string> names = table_column(model, json, "part_name");
   const std::vector<std::string> colours = table_column(model, json, "colour");
   ASSERT_EQ(names.size(), 200U);
   ASSERT_EQ(colours.size(), 200U);
@@ -223,7 +223,7 @@ TEST(GltfWriter, RepeatedTextsAreDictionaryCoded) {
     EXPECT_EQ(colours[i], i % 3 != 0 ? "(none)" : i % 2 == 0 ? "#ffffff" : "#336699");
   }
   const tinygltf::BufferView& codes =
-      model.bufferViews[metadata["propertyTables"][0]["properties"]["name"]["values"]
+      model.bufferViews[metadata["propertyTables"][0]["properties"]["part_name"]["values"]
                             .get<std::size_t>()];
   EXPECT_EQ(codes.byteLength, 200U);
 }
@@ -308,11 +308,12 @@ TEST(GltfWriter, SceneLayoutKeepsBuildingsAsFeatures) {
   EXPECT_EQ(table_column(model, json, "building_id"),
             (std::vector<std::string>{"b1", "L-2", "L-2"}));
   EXPECT_EQ(table_column(model, json, "building"), (std::vector<std::string>{"hospital", "", ""}));
-  EXPECT_EQ(table_column(model, json, "name"),
+  EXPECT_EQ(table_column(model, json, "part_name"),
             (std::vector<std::string>{"main", "wing", "storey 0"}));
   EXPECT_EQ(table_column(model, json, "levels"), (std::vector<std::string>{"1", "", ""}));
-  // Box & Co's name is the first building's attribute; the second building has none.
-  EXPECT_EQ(table_column(model, json, "name_2"),
+  // Box & Co's name is the first building's attribute, under its own name; the second building has
+  // none.
+  EXPECT_EQ(table_column(model, json, "name"),
             (std::vector<std::string>{"Box & <Co> \"1\"", "", ""}));
 }
 

@@ -228,7 +228,7 @@ export class Viewport {
     const ids = hit.object.geometry.attributes._feature_id_0;
     if (ids && this.table && hit.face) {
       const row = featureRow(this.table, Math.round(ids.getX(hit.face.a)));
-      const lines = [`${row.building_id || row.name || 'part'}`];
+      const lines = [`${row.building_id || row.part_name || 'part'}`];
       for (const [key, value] of Object.entries(row)) lines.push(`${key}: ${JSON.stringify(value)}`);
       return lines.join('\n');
     }
