@@ -155,10 +155,11 @@ class LotNames {
     if (lot_ids != nullptr) taken_.insert(lot_ids->begin(), lot_ids->end());
   }
 
+  // Whether `entity` descends from a lot of create.lots.
+  bool from_lot(EntityId entity) const { return lot_of(entity) != by_lineage_.end(); }
+
   std::string next(EntityId entity) {
-    EntityId root = entity;
-    while (run_.entities[root].parent != kNoEntity) root = run_.entities[root].parent;
-    const auto lot = by_lineage_.find(run_.entities[root].lineage);
+    const auto lot = lot_of(entity);
     if (lot == by_lineage_.end()) return "entity_" + std::to_string(entity);
     std::size_t& count = made_[lot->second];
     if (++count == 1) return lot->second;
@@ -168,6 +169,12 @@ class LotNames {
   }
 
  private:
+  std::map<std::uint32_t, std::string>::const_iterator lot_of(EntityId entity) const {
+    EntityId root = entity;
+    while (run_.entities[root].parent != kNoEntity) root = run_.entities[root].parent;
+    return by_lineage_.find(run_.entities[root].lineage);
+  }
+
   const RunResult& run_;
   std::map<std::uint32_t, std::string> by_lineage_;
   std::map<std::string, std::size_t> made_;
@@ -226,7 +233,10 @@ shape::Scene to_scene(const RunResult& run, const std::set<std::string>* lot_ids
     }
     if (index == scene.buildings.size()) {
       shape::Building b;
-      b.id = key != nullptr ? "building_" + to_string(*key) : lot_names.next(r.entity);
+      // A building on a lot is named after the lot (its input id) even when its shapes are
+      // grouped by `building`: the lot is what a user finds it by.
+      b.id = key != nullptr && !lot_names.from_lot(r.entity) ? "building_" + to_string(*key)
+                                                             : lot_names.next(r.entity);
       for (const auto& [name, value] : top_attributes(run, r.entity)) {
         b.attributes[name] = export_value(*value);
       }
