@@ -94,6 +94,13 @@ double perimeter(const Polygon& polygon) {
   return total;
 }
 
+void translate(Polygon& polygon, Vec2 offset) {
+  for (Vec2& v : polygon.outer) v += offset;
+  for (Ring& hole : polygon.holes) {
+    for (Vec2& v : hole) v += offset;
+  }
+}
+
 Vec2 centroid(const Polygon& polygon) {
   if (polygon.outer.empty()) return {};
   const Vec2 origin = polygon.outer.front();

@@ -26,6 +26,8 @@ double perimeter(const Polygon& polygon);
 Vec2 centroid(const Polygon& polygon);
 // Outer counter-clockwise, holes clockwise; drops a closing vertex equal to the first.
 void normalize(Polygon& polygon);
+// Moves every vertex by `offset`.
+void translate(Polygon& polygon, Vec2 offset);
 
 // Distance from p to the closed segment ab (to a when the segment has zero length).
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);

@@ -50,4 +50,8 @@ struct StoreyPlan {
   std::vector<PlanStair> stairs;
 };
 
+// Moves the plan by `offset` (meters): every outline and point by its x and y, `elevation` by its
+// z; directions (a door's swing) stay. Exact up to one rounding per coordinate.
+void translate(StoreyPlan& plan, kernel::Vec3 offset);
+
 }  // namespace insula::shape

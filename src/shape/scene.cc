@@ -10,6 +10,18 @@ Scene::Scene() {
   materials.push_back(Material{"default", {0.8F, 0.8F, 0.8F, 1.0F}});
 }
 
+void translate(Building& building, kernel::Vec3 offset) {
+  for (Part& part : building.parts) {
+    if (part.instance_of) {
+      part.instance_transform.t += offset;
+    } else {
+      for (kernel::Vec3& p : part.mesh.positions()) p += offset;
+    }
+    if (part.uv) part.uv = part.uv->moved(kernel::translation(offset));
+  }
+  for (StoreyPlan& plan : building.plans) translate(plan, offset);
+}
+
 Material Scene::material_for(const kernel::FaceTag& tag) const {
   if (tag.material != 0 && tag.material < materials.size()) return materials[tag.material];
   return default_material(tag.semantic);

@@ -91,6 +91,12 @@ struct Building {
   std::vector<StoreyPlan> plans{};  // floor plans (traversable buildings); empty for masses
 };
 
+// Moves the building by `offset` (meters, the local frame): every part's mesh, or its placement
+// when it is an instance (the shared mesh stays shared), its uv map (texture coordinates stay on
+// the surface they were made for) and the floor plans. Attributes are left as they are. A front-end
+// that builds at a frame of its own (a lot at its own origin) moves the result back with it.
+void translate(Building& building, kernel::Vec3 offset);
+
 struct Scene {
   kernel::Vec3 origin;              // world = local + origin
   std::string crs;                  // e.g. "EPSG:32633"; empty when unknown

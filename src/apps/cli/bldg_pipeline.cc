@@ -1,5 +1,6 @@
 #include "apps/cli/bldg_pipeline.h"
 
+#include <cmath>
 #include <cstdio>
 #include <variant>
 
@@ -188,11 +189,23 @@ bool lot_error(const base::Diagnostic& d) {
   return d.code == "PLAN004" || d.code == "PLAN007";
 }
 
-}  // namespace
+// The frame a lot is planned and built in: its outline's first vertex rounded down to whole
+// metres. The floor plan and the builder round (the boolean grid, the building's frame) and decide
+// (does a stair fit?) on coordinates, so a lot planned in its file's frame came out differently,
+// even built or skipped, with its distance from the file's origin, which moves with the file's
+// other lots. In its own frame a lot has the same coordinates, bit for bit, whatever else the file
+// holds: the file's origin is whole metres too, subtracting whole metres from a coordinate is
+// exact, and floor(x - n) = floor(x) - n. The plan makes no random choice: it depends on the
+// grammar, the rules and the outline in this frame only.
+kernel::Vec2 lot_origin(const kernel::Polygon& outline) {
+  if (outline.outer.empty()) return {};
+  return {std::floor(outline.outer.front().x), std::floor(outline.outer.front().y)};
+}
 
-std::optional<Built> plan_and_build(const base::Source& source, const Building& building,
-                                    const lang::bldg::Restrictions& rules, const std::string& lot,
-                                    Messages& messages, std::optional<base::Diagnostic>* skipped) {
+std::optional<Built> plan_and_build_here(const base::Source& source, const Building& building,
+                                         const lang::bldg::Restrictions& rules,
+                                         const std::string& lot, Messages& messages,
+                                         std::optional<base::Diagnostic>* skipped) {
   Stopwatch stage;
   lang::bldg::FloorPlanOptions plan_options;
   plan_options.file = source.name();
@@ -228,6 +241,21 @@ std::optional<Built> plan_and_build(const base::Source& source, const Building& 
     messages.warning("BLD601", source.name() + ": warning[BLD601]: " + on + w);
   }
   built.plan = std::move(plan.value());
+  return built;
+}
+
+}  // namespace
+
+std::optional<Built> plan_and_build(const base::Source& source, Building building,
+                                    const lang::bldg::Restrictions& rules, const std::string& lot,
+                                    Messages& messages, std::optional<base::Diagnostic>* skipped) {
+  const kernel::Vec2 origin = lot.empty() ? kernel::Vec2{} : lot_origin(building.outline);
+  kernel::translate(building.outline, -origin);
+  std::optional<Built> built = plan_and_build_here(source, building, rules, lot, messages, skipped);
+  if (built && origin != kernel::Vec2{}) {
+    lang::bldg::translate(built->plan, origin);
+    shape::translate(built->result.building, {origin.x, origin.y, 0});
+  }
   return built;
 }
 

@@ -58,8 +58,10 @@ struct Built {
 
 // `lot` names the lot the building stands on in its warnings (empty: an inline outline). With
 // `skipped` given (a lot under --keep-going), a lot error is not told but returned there.
-std::optional<Built> plan_and_build(const base::Source& source,
-                                    const lang::bldg::Building& building,
+// A lot is planned and built at its own origin and the plan and building moved back (lot_origin
+// in bldg_pipeline.cc), so the result does not depend on the lot file's origin; an inline outline
+// is planned where it is.
+std::optional<Built> plan_and_build(const base::Source& source, lang::bldg::Building building,
                                     const lang::bldg::Restrictions& rules, const std::string& lot,
                                     Messages& messages,
                                     std::optional<base::Diagnostic>* skipped = nullptr);

@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -98,8 +99,8 @@ LotBuild build_lot(const Village& village, const io::Footprint& lot) {
   building.symbol = lot.id;
   std::optional<base::Diagnostic> skipped;
   std::optional<Built> built =
-      plan_and_build(*grammar.source, building, village.rules, lot_name(lot), out.note.messages,
-                     options.keep_going ? &skipped : nullptr);
+      plan_and_build(*grammar.source, std::move(building), village.rules, lot_name(lot),
+                     out.note.messages, options.keep_going ? &skipped : nullptr);
   if (skipped) {
     out.note.skipped = {grammar.source->name(), skipped->span.line, skipped->span.column,
                         skipped->message};

@@ -138,7 +138,7 @@ int build_bldg(const BuildOptions& options) {
   if (!load_outline(options, *input->source, input->building, scene, lot)) return kExitInput;
   Messages messages;
   std::optional<Built> built =
-      plan_and_build(*input->source, input->building, rules, lot, messages);
+      plan_and_build(*input->source, std::move(input->building), rules, lot, messages);
   messages.print(options.quiet);
   if (!built) return kExitInput;
   report.update(plan_report(built->plan, built->result));

@@ -227,6 +227,10 @@ base::Result<FloorPlan> make_floor_plan(const Building& building, const Restrict
 // two parts takes the narrower of the two.
 double default_door_width(double layout_perimeter, const Restrictions& restrictions);
 
+// Moves every position of the plan (outlines, cells, wall ends, doors, windows, stairs) by
+// `offset`, meters: a plan made at a lot's own origin, taken back to the lot file's frame.
+void translate(FloorPlan& plan, kernel::Vec2 offset);
+
 // Room index (storey-local) by symbol on a storey; -1 when absent.
 int find_room(const PlanStorey& storey, const std::string& symbol);
 

@@ -1,7 +1,7 @@
 // The building's own frame (seed 000 §3.2: the treemap is "a simplified axis-aligned version of the
 // oriented bounding boxes' subdivision"): a lot turned 11 degrees, as most register footprints
 // are, is planned in the frame of its walls, so rooms are cut along the walls and not across them
-// in diamonds. docs/bldg-floorplan.md, "The building's frame".
+// in diamonds. docs/bldg-floorplan.md, "The building's frame". Also a plan's translation.
 #include <cmath>
 #include <numbers>
 
@@ -38,6 +38,44 @@ Vec2 turn(Vec2 p, Vec2 pivot, double c, double s) {
 // rotation left a few 1e-15 m off the axes lie on them again.
 double snap(double v) {
   return std::round(v * 1e6) / 1e6;
+}
+
+// Calls `point` on every position of the plan (not on directions or lengths).
+template <typename F>
+void each_point(FloorPlan& plan, F point) {
+  auto polygon = [&](Polygon& p) {
+    for (Vec2& v : p.outer) point(v);
+    for (kernel::Ring& h : p.holes)
+      for (Vec2& v : h) point(v);
+  };
+  auto door = [&](PlanDoor& d) {
+    point(d.a);
+    point(d.b);
+    point(d.center);
+  };
+  polygon(plan.outline);
+  for (Polygon& p : plan.footprint) polygon(p);
+  for (PlanPart& part : plan.parts) polygon(part.outline);
+  for (PlanStorey& storey : plan.storeys) {
+    for (PlanRoom& r : storey.rooms) polygon(r.cell);
+    for (PlanWall& w : storey.walls) {
+      point(w.a);
+      point(w.b);
+    }
+    for (PlanDoor& d : storey.doors) door(d);
+    for (PlanDoor& d : storey.entrances) door(d);
+    for (PlanWindow& w : storey.windows) {
+      point(w.a);
+      point(w.b);
+      point(w.center);
+    }
+    for (PlanStair& st : storey.stairs) {
+      polygon(st.footprint);
+      point(st.foot);
+      point(st.head);
+    }
+    for (PlanDeadZone& z : storey.dead_zones) polygon(z.cell);
+  }
 }
 
 }  // namespace
@@ -94,40 +132,15 @@ void out_of_frame(FloorPlan& plan, const PlanFrame& frame) {
   if (!frame.rotated()) return;
   const double c = std::cos(frame.angle);
   const double s = std::sin(frame.angle);
-  auto point = [&](Vec2& v) { v = turn(v, frame.pivot, c, s); };
-  auto polygon = [&](Polygon& p) {
-    for (Vec2& v : p.outer) point(v);
-    for (kernel::Ring& h : p.holes)
-      for (Vec2& v : h) point(v);
-  };
-  auto door = [&](PlanDoor& d) {
-    point(d.a);
-    point(d.b);
-    point(d.center);
-  };
-  polygon(plan.outline);
-  for (Polygon& p : plan.footprint) polygon(p);
-  for (PlanPart& part : plan.parts) polygon(part.outline);
-  for (PlanStorey& storey : plan.storeys) {
-    for (PlanRoom& r : storey.rooms) polygon(r.cell);
-    for (PlanWall& w : storey.walls) {
-      point(w.a);
-      point(w.b);
-    }
-    for (PlanDoor& d : storey.doors) door(d);
-    for (PlanDoor& d : storey.entrances) door(d);
-    for (PlanWindow& w : storey.windows) {
-      point(w.a);
-      point(w.b);
-      point(w.center);
-    }
-    for (PlanStair& st : storey.stairs) {
-      polygon(st.footprint);
-      point(st.foot);
-      point(st.head);
-    }
-    for (PlanDeadZone& z : storey.dead_zones) polygon(z.cell);
-  }
+  each_point(plan, [&](Vec2& v) { v = turn(v, frame.pivot, c, s); });
 }
 
 }  // namespace insula::lang::bldg::plan
+
+namespace insula::lang::bldg {
+
+void translate(FloorPlan& plan, kernel::Vec2 offset) {
+  plan::each_point(plan, [offset](kernel::Vec2& v) { v += offset; });
+}
+
+}  // namespace insula::lang::bldg

@@ -493,5 +493,54 @@ TEST(AnyLot, TurnedLotIsPlannedAlongItsWalls) {
   }
 }
 
+// translate() moves every position of a plan (a lot planned at its own origin is moved back to
+// its file's frame by `insula build --lot`), and nothing else.
+TEST(AnyLot, TranslatedPlanMovesEveryPosition) {
+  const std::filesystem::path path =
+      std::filesystem::path(INSULA_SOURCE_DIR) / "examples" / "bldg" / "two_storey.bldg";
+  Building b = testing::parse_ok(testing::read_file(path), "two_storey.bldg");
+  b.outline = place(box(12, 10), 11 * std::numbers::pi / 180, {250, -40});
+  const base::Result<FloorPlan> plan = make_floor_plan(b, Restrictions{});
+  ASSERT_TRUE(plan.ok()) << plan.diagnostics()[0].message;
+  const Vec2 by{-600000, 250000};
+  FloorPlan moved = plan.value();
+  translate(moved, by);
+  const auto same_moved = [&](const Polygon& m, const Polygon& p) {
+    ASSERT_EQ(m.outer.size(), p.outer.size());
+    for (std::size_t i = 0; i < p.outer.size(); ++i) EXPECT_EQ(m.outer[i], p.outer[i] + by);
+    ASSERT_EQ(m.holes.size(), p.holes.size());
+  };
+  same_moved(moved.outline, plan->outline);
+  for (std::size_t i = 0; i < plan->parts.size(); ++i)
+    same_moved(moved.parts[i].outline, plan->parts[i].outline);
+  ASSERT_EQ(moved.storeys.size(), 2U);
+  ASSERT_EQ(moved.storeys[0].stairs.size(), 1U);
+  for (std::size_t level = 0; level < plan->storeys.size(); ++level) {
+    const PlanStorey& m = moved.storeys[level];
+    const PlanStorey& p = plan->storeys[level];
+    EXPECT_EQ(m.elevation, p.elevation);
+    for (std::size_t i = 0; i < p.rooms.size(); ++i) {
+      same_moved(m.rooms[i].cell, p.rooms[i].cell);
+      EXPECT_EQ(m.rooms[i].area, p.rooms[i].area);
+    }
+    for (std::size_t i = 0; i < p.walls.size(); ++i) {
+      EXPECT_EQ(m.walls[i].a, p.walls[i].a + by);
+      EXPECT_EQ(m.walls[i].b, p.walls[i].b + by);
+    }
+    for (std::size_t i = 0; i < p.doors.size(); ++i) {
+      EXPECT_EQ(m.doors[i].center, p.doors[i].center + by);
+      EXPECT_EQ(m.doors[i].width, p.doors[i].width);
+    }
+    for (std::size_t i = 0; i < p.windows.size(); ++i)
+      EXPECT_EQ(m.windows[i].center, p.windows[i].center + by);
+    for (std::size_t i = 0; i < p.stairs.size(); ++i) {
+      same_moved(m.stairs[i].footprint, p.stairs[i].footprint);
+      EXPECT_EQ(m.stairs[i].foot, p.stairs[i].foot + by);
+      EXPECT_EQ(m.stairs[i].head, p.stairs[i].head + by);
+      EXPECT_EQ(m.stairs[i].run, p.stairs[i].run);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace insula::lang::bldg
