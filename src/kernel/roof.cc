@@ -671,24 +671,30 @@ RoofBuild add_roof(const Polygon& footprint, const RoofSpec& spec, double eave_z
   const std::size_t first_vertex = mesh.vertex_count();
   roof_detail::emit_roof(plan, eave_z, mesh, build);
   if (spec.height && plan.type != RoofType::kFlat && plan.type != RoofType::kShed) {
-    // z scaled about the eave keeps every face planar: the same roof at the pitch giving the
-    // height (a shed's slope is set from it in planning, keeping its fascia's thickness).
-    double top = eave_z;
-    for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
-      top = std::max(top, mesh.position(static_cast<std::uint32_t>(v)).z);
-    }
-    if (top - eave_z > 1e-9) {
-      const double k = *spec.height / (top - eave_z);
-      for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
-        Vec3& p = mesh.positions()[v];
-        p.z = eave_z + (p.z - eave_z) * k;
-      }
-    }
+    // A shed's slope is set from the height in planning, keeping its fascia's thickness.
+    scale_roof_height(mesh, eave_z, *spec.height, first_vertex);
   }
   build.status = plan.status;
   build.built = plan.type;
   build.message = plan.message;
   return build;
+}
+
+void scale_roof_height(Mesh& mesh, double eave_z, double height, std::size_t first_vertex) {
+  // Scaling about eave_z would scale the overhang's drop below it too: a 1 m² part with a 3.5 m
+  // roof got its soffit 4.2 m below its walls' top, under the ground.
+  double low = eave_z, top = eave_z;
+  for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
+    const double z = mesh.positions()[v].z;
+    low = std::min(low, z);
+    top = std::max(top, z);
+  }
+  if (!(height > 0) || !(top - low > 1e-9)) return;
+  const double k = height / (top - low);
+  for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
+    Vec3& p = mesh.positions()[v];
+    p.z = eave_z + (p.z - low) * k;
+  }
 }
 
 RoofResult build_roof(const Polygon& footprint, const RoofSpec& spec, double eave_z) {

@@ -11,6 +11,7 @@
 
 #include "footprints.h"
 #include "kernel/mass.h"
+#include "kernel/roof_solid.h"
 
 namespace insula::kernel {
 namespace {
@@ -311,6 +312,45 @@ TEST(RoofShapes, RoofOnPostsHasNoWalls) {
   const MassResult gable = build(rectangle(10, 6), RoofType::kGable, spec);
   const double roof_volume = 10 * 6 * 3 * std::tan(30 * kPi / 180) / 2;
   EXPECT_NEAR(volume(gable.mesh), roof_volume + 4 * 0.25 * 0.25 * kEave, 1e-9);
+}
+
+// Lowest z of the faces of one semantic class.
+double lowest(const Mesh& m, SemanticClass semantic) {
+  double z = 1e300;
+  for (std::size_t f = 0; f < m.face_count(); ++f) {
+    if (m.tag(f).semantic != semantic) continue;
+    for (std::uint32_t v : m.face(f)) z = std::min(z, m.position(v).z);
+  }
+  return z;
+}
+
+// A roof height scales the rise above the eave, not the overhang's drop below it: a 2 x 1.5 m
+// hip with a 0.5 m overhang and 4.5 m of roof had its soffit (and wall tops) 3.4 m below the
+// eave, as a 1 m² .bldg part with a 3.5 m roof had its soffit under the ground.
+TEST(RoofShapes, HeightKeepsTheSoffitOnTheWallTop) {
+  MassSpec spec;
+  spec.overhang = 0.5;
+  spec.height = 4.5;
+  for (RoofType t : {RoofType::kHip, RoofType::kGable, RoofType::kPyramid, RoofType::kMansard}) {
+    SCOPED_TRACE(std::string(roof_type_name(t)));
+    const MassResult r = build(rectangle(2, 1.5), t, spec);
+    expect_closed(r);
+    EXPECT_EQ(r.status, MassStatus::kOk) << r.message;
+    EXPECT_NEAR(lowest(r.mesh, SemanticClass::kOuterCeilingSurface), kEave, 1e-9);
+    EXPECT_NEAR(top(r.mesh), kEave + 4.5, 1e-9);
+    for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+      if (r.mesh.tag(f).semantic != SemanticClass::kRoofSurface) continue;
+      for (std::uint32_t v : r.mesh.face(f)) EXPECT_GE(r.mesh.position(v).z, kEave - 1e-9);
+    }
+  }
+  // The closed roof solid of the .bldg builder stands on the eave the same way.
+  RoofSolidSpec solid;
+  solid.roof.overhang = 0.5;
+  solid.height = 3.5;
+  const RoofSolid roof = build_roof_solid(rectangle(1, 1), solid, 3.3);
+  ASSERT_EQ(roof.status, RoofStatus::kOk) << roof.message;
+  EXPECT_NEAR(roof.mesh.bounds().min.z, 3.3, 1e-9);
+  EXPECT_NEAR(roof.mesh.bounds().max.z, 3.3 + 3.5, 1e-9);
 }
 
 }  // namespace
