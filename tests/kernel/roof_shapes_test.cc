@@ -353,5 +353,22 @@ TEST(RoofShapes, HeightKeepsTheSoffitOnTheWallTop) {
   EXPECT_NEAR(roof.mesh.bounds().max.z, 3.3 + 3.5, 1e-9);
 }
 
+// building=roof whose overhang brings the underside to the ground: built without the overhang,
+// like a walled building, and reported the same way (it was dropped).
+TEST(RoofShapes, RoofOnPostsDropsAnOverhangThatReachesTheGround) {
+  MassSpec spec;
+  spec.walls = false;
+  spec.overhang = 2.5;  // a 70-degree mansard drops 6.9 m below the 6 m eave
+  const MassResult r = build(rectangle(10, 6), RoofType::kMansard, spec);
+  ASSERT_EQ(r.status, MassStatus::kFallback) << r.message;
+  EXPECT_EQ(r.roof, RoofType::kMansard);
+  EXPECT_EQ(r.message,
+            "posts: the roof's underside is not above the ground; built without overhang");
+  const MeshCheck c = check(r.mesh);
+  EXPECT_TRUE(c.closed);
+  EXPECT_EQ(c.components, 5U);
+  EXPECT_NEAR(r.mesh.bounds().min.x, 0, 1e-12);  // no eave beyond the footprint
+}
+
 }  // namespace
 }  // namespace insula::kernel
