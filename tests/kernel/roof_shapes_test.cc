@@ -353,6 +353,21 @@ TEST(RoofShapes, HeightKeepsTheSoffitOnTheWallTop) {
   EXPECT_NEAR(roof.mesh.bounds().max.z, 3.3 + 3.5, 1e-9);
 }
 
+// A 4.47 x 2.23 m near-parallelogram (an OpenStreetMap outline, as OBJ wrote its corners): both
+// ends as wide within micrometres, and the crest between them a sliver that OBJ wrote as a
+// degenerate triangle. Within 1 % of the half width the strips meet at the ridge, without crest.
+TEST(RoofShapes, RoundHasNoSliverCrest) {
+  const Polygon p{
+      {{-0.989625, -0.837672}, {0.694063, 3.331284}, {2.768222, 2.492093}, {1.084535, -1.676864}},
+      {}};
+  const MassResult r = build(p, RoofType::kRound);
+  expect_closed(r);
+  EXPECT_EQ(count(r.mesh, SemanticClass::kRoofSurface), 12);
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    EXPECT_GT(face_area(r.mesh, f), 1e-3) << "face " << f;
+  }
+}
+
 // building=roof whose overhang brings the underside to the ground: built without the overhang,
 // like a walled building, and reported the same way (it was dropped).
 TEST(RoofShapes, RoofOnPostsDropsAnOverhangThatReachesTheGround) {
