@@ -368,6 +368,38 @@ TEST(RoofShapes, RoundHasNoSliverCrest) {
   }
 }
 
+// A rectangle with one more vertex 4 cm from a corner where the outline turns by 1 degree, as
+// OpenStreetMap outlines have them: on a long side (a slope of the quadrilateral shapes) or a short
+// one (an end).
+Polygon near_rectangle(bool long_side) {
+  const double off = 0.04 * std::tan(kPi / 180);
+  if (long_side) return {{{0, 0}, {12, 0}, {12, 8}, {0.04, 8}, {0, 8 + off}}, {}};
+  return {{{0, 0}, {12, 0}, {12, 8}, {0, 8}, {-off, 7.96}}, {}};
+}
+
+// Pyramid and the quadrilateral-only shapes see its four corners and build over all five vertices
+// (they fell back to hip and gable).
+TEST(RoofShapes, NearlyStraightVerticesDoNotHideAQuadrilateral) {
+  for (bool long_side : {true, false}) {
+    for (RoofType t : {RoofType::kPyramid, RoofType::kGambrel, RoofType::kHalfHipped,
+                       RoofType::kSaltbox, RoofType::kRound}) {
+      SCOPED_TRACE(std::string(roof_type_name(t)) + (long_side ? " long side" : " short side"));
+      const MassResult r = build(near_rectangle(long_side), t);
+      expect_closed(r);
+      EXPECT_EQ(r.status, MassStatus::kOk) << r.message;
+      EXPECT_EQ(r.roof, t);
+      // Five walls, each from the ground; the roof within a millimetre of the rectangle's.
+      EXPECT_EQ(count(r.mesh, SemanticClass::kWallSurface), 5);
+      const MassResult plain = build(rectangle(12, 8), t);
+      EXPECT_NEAR(top(r.mesh), top(plain.mesh), 1e-3);
+      EXPECT_EQ(count(r.mesh, SemanticClass::kRoofSurface),
+                count(plain.mesh, SemanticClass::kRoofSurface) + (t == RoofType::kPyramid));
+    }
+  }
+  // A real corner is still one: an L is no quadrilateral.
+  EXPECT_EQ(build(l_shape(), RoofType::kGambrel).roof, RoofType::kMansard);
+}
+
 // building=roof whose overhang brings the underside to the ground: built without the overhang,
 // like a walled building, and reported the same way (it was dropped).
 TEST(RoofShapes, RoofOnPostsDropsAnOverhangThatReachesTheGround) {
