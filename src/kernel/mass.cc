@@ -202,13 +202,16 @@ MassResult build_mass(const Polygon& footprint, const MassSpec& spec) {
   Polygon clean;
   if (!prepare(footprint, clean, failed.message)) return failed;
   const RoofSpec roof = roof_spec(spec);
-  if (!spec.walls) return roof_on_posts(clean, spec, roof);
-  MassResult result = try_build(clean, spec, roof);
+  const auto attempt = [&](const RoofSpec& r) {
+    return spec.walls ? try_build(clean, spec, r) : roof_on_posts(clean, spec, r);
+  };
+  MassResult result = attempt(roof);
   if (result.status != MassStatus::kFailed || roof.overhang <= 0) return result;
-  // A large overhang on a steep roof can bring the soffit down to the ground: drop the overhang.
+  // A large overhang on a steep roof can bring the soffit (or a roof on posts' underside) down to
+  // the ground: drop the overhang.
   RoofSpec flush = roof;
   flush.overhang = 0;
-  MassResult retry = try_build(clean, spec, flush);
+  MassResult retry = attempt(flush);
   if (retry.status == MassStatus::kFailed) return result;
   retry.status = MassStatus::kFallback;
   retry.message = result.message + "; built without overhang" +

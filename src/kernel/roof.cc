@@ -8,6 +8,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <set>
 #include <span>
 #include <utility>
 #include <vector>
@@ -73,6 +74,14 @@ constexpr double kNodeMerge = 1e-6;
 // A pyramid accepts a footprint whose outer ring turns clockwise by at most this much in total
 // (digitizing noise on nearly straight edges), docs/kernel-roofs.md, "Pyramid on concave input".
 constexpr double kPyramidReflexDeg = 1;
+
+// A vertex where the outer ring turns by less than this (either way) is not a corner when a roof
+// type asks for a quadrilateral or a convex footprint (docs/kernel-roofs.md, "Nearly straight
+// vertices"). OpenStreetMap outlines keep vertices a few centimetres from a corner or along a
+// straight wall that turn by a degree or two (a near-rectangle with a 4 cm edge at 181 degrees was
+// refused a pyramid and every quadrilateral shape); a designed corner turns by far more (a regular
+// 60-gon, the finest circle footprints commonly get, turns by 6 degrees per vertex).
+constexpr double kCornerMinTurnDeg = 3;
 
 double tan_deg(double degrees) {
   return std::tan(degrees * kPi / 180);
@@ -328,12 +337,20 @@ double reflex_turning_deg(const Contour& c) {
 // the faces of the other wings fold into nearly flat tents.
 bool plan_pyramid(RoofPlan& plan) {
   if (plan.eave.ring_starts.size() != 2 || plan.footprint.ring_starts.size() != 2) return false;
-  if (reflex_turning_deg(plan.footprint) > kPyramidReflexDeg) return false;
+  if (reflex_turning_deg(roof_detail::outline_core(plan.footprint)) > kPyramidReflexDeg) {
+    return false;
+  }
   const Polygon polygon = plan.eave.polygon();
   const Vec2 c = centroid(polygon);
-  double nearest = 1e300;
   for (std::uint32_t e = 0; e < plan.eave.points.size(); ++e) {
-    nearest = std::min(nearest, edge_distance(plan.eave, e, c));
+    if (!(edge_distance(plan.eave, e, c) > 1e-6)) return false;
+  }
+  // The height from the corners' edges: the line of a 4 cm edge turned by 1 degree passes 0.1 m
+  // nearer the centre of a 12 m rectangle, and would lower the whole roof for its sliver of a face.
+  const Contour core = roof_detail::outline_core(plan.eave);
+  double nearest = 1e300;
+  for (std::uint32_t e = 0; e < core.points.size(); ++e) {
+    nearest = std::min(nearest, edge_distance(core, e, c));
   }
   if (!(nearest > 1e-6)) return false;
   plan.apex = c;
@@ -468,6 +485,7 @@ void plan_shed(RoofPlan& plan, const RoofSpec& spec) {
 
 bool plan_type(RoofPlan& plan, const RoofSpec& spec, RoofType type, double overhang) {
   plan.type = type;
+  plan.custom = roof_detail::CustomRoof();
   plan.skeleton.reset();
   plan.gables.clear();
   plan.reason.clear();
@@ -642,6 +660,49 @@ std::uint32_t Contour::prev(std::uint32_t k) const {
   return k == ring_starts[r - 1] ? ring_starts[r] - 1 : k - 1;
 }
 
+Contour outline_core(const Contour& c) {
+  const std::uint32_t n = c.ring_starts[1];
+  std::vector<std::uint32_t> prev(n), next(n);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    prev[k] = (k + n - 1) % n;
+    next[k] = (k + 1) % n;
+  }
+  const auto turn = [&](std::uint32_t k) {
+    const Vec2 in = c.points[k] - c.points[prev[k]];
+    const Vec2 out = c.points[next[k]] - c.points[k];
+    return std::abs(std::atan2(cross(in, out), dot(in, out))) * 180 / kPi;
+  };
+  // The straightest vertex first, its neighbours' turns updated after each drop.
+  std::vector<double> turns(n);
+  std::set<std::pair<double, std::uint32_t>> straight;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    turns[k] = turn(k);
+    if (turns[k] < kCornerMinTurnDeg) straight.insert({turns[k], k});
+  }
+  std::vector<std::uint8_t> dropped(n, 0);
+  std::uint32_t left = n;
+  while (!straight.empty() && left > 3) {
+    const std::uint32_t k = straight.begin()->second;
+    straight.erase(straight.begin());
+    next[prev[k]] = next[k];
+    prev[next[k]] = prev[k];
+    dropped[k] = 1;
+    --left;
+    for (const std::uint32_t j : {prev[k], next[k]}) {
+      straight.erase({turns[j], j});
+      turns[j] = turn(j);
+      if (turns[j] < kCornerMinTurnDeg) straight.insert({turns[j], j});
+    }
+  }
+  if (left == n) return c;
+  Polygon core = c.polygon();
+  core.outer.clear();
+  for (std::uint32_t k = 0; k < n; ++k) {
+    if (!dropped[k]) core.outer.push_back(c.points[k]);
+  }
+  return Contour::from(core);
+}
+
 double shed_distance(const RoofPlan& plan, Vec2 p) {
   return dot(plan.shed_normal, p - plan.shed_origin);
 }
@@ -720,24 +781,30 @@ RoofBuild add_roof(const Polygon& footprint, const RoofSpec& spec, double eave_z
   const std::size_t first_vertex = mesh.vertex_count();
   roof_detail::emit_roof(plan, eave_z, mesh, build);
   if (spec.height && plan.type != RoofType::kFlat && plan.type != RoofType::kShed) {
-    // z scaled about the eave keeps every face planar: the same roof at the pitch giving the
-    // height (a shed's slope is set from it in planning, keeping its fascia's thickness).
-    double top = eave_z;
-    for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
-      top = std::max(top, mesh.position(static_cast<std::uint32_t>(v)).z);
-    }
-    if (top - eave_z > 1e-9) {
-      const double k = *spec.height / (top - eave_z);
-      for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
-        Vec3& p = mesh.positions()[v];
-        p.z = eave_z + (p.z - eave_z) * k;
-      }
-    }
+    // A shed's slope is set from the height in planning, keeping its fascia's thickness.
+    scale_roof_height(mesh, eave_z, *spec.height, first_vertex);
   }
   build.status = plan.status;
   build.built = plan.type;
   build.message = plan.message;
   return build;
+}
+
+void scale_roof_height(Mesh& mesh, double eave_z, double height, std::size_t first_vertex) {
+  // Scaling about eave_z would scale the overhang's drop below it too: a 1 m² part with a 3.5 m
+  // roof got its soffit 4.2 m below its walls' top, under the ground.
+  double low = eave_z, top = eave_z;
+  for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
+    const double z = mesh.positions()[v].z;
+    low = std::min(low, z);
+    top = std::max(top, z);
+  }
+  if (!(height > 0) || !(top - low > 1e-9)) return;
+  const double k = height / (top - low);
+  for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
+    Vec3& p = mesh.positions()[v];
+    p.z = eave_z + (p.z - low) * k;
+  }
 }
 
 RoofResult build_roof(const Polygon& footprint, const RoofSpec& spec, double eave_z) {

@@ -78,9 +78,9 @@ struct RoofSpec {
   // soffit runs that far below the roof surface, closed by a vertical fascia.
   double fascia = 0.25;
   // Roof height (meters) above the eave; when set it overrides pitch_deg: every pitched type is
-  // built as asked and its heights above eave_z scaled so its top is this high (for hip and gable
-  // that is the pitch giving this ridge height); a shed's high edge; a dome's or onion's top.
-  // Ignored by flat roofs.
+  // built as asked and scaled in z (scale_roof_height) so its top is this high (for hip and gable
+  // without overhang that is the pitch giving this ridge height); with overhang the soffit stays at
+  // eave_z, the walls' top. A shed's high edge; a dome's or onion's top. Ignored by flat roofs.
   std::optional<double> height = std::nullopt;
   // S3DB roof:direction: compass azimuth (degrees clockwise from north, +y) the main roof face
   // looks toward (downhill). Shed: the roof falls toward it on any footprint. Gable, gambrel,
@@ -125,6 +125,12 @@ struct RoofBuild {
 // drops the overhang when the offset polygon would not be simple; both reported in the result.
 RoofBuild add_roof(const Polygon& footprint, const RoofSpec& spec, double eave_z, Mesh& mesh,
                    std::uint32_t first_face_id = 0);
+
+// Scales the z of `mesh`'s vertices from `first_vertex` on so the lowest of them (the soffit of an
+// overhang, else the eave) lies at `eave_z` and the highest `height` (> 0, meters) above it: the
+// rise scales, the eave stays on the wall top (docs/kernel-roofs.md, "Roof height"). An affine map
+// of z keeps every face planar. Nothing changes for height <= 0 or a mesh without rise.
+void scale_roof_height(Mesh& mesh, double eave_z, double height, std::size_t first_vertex = 0);
 
 struct RoofResult {
   Mesh mesh;  // roof faces, soffits and gable walls; open at the bottom (no walls below eave_z)

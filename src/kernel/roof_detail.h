@@ -46,6 +46,9 @@ struct CustomRoof {
   // Per footprint edge, the point ids closing the wall above it, from the edge's end back to its
   // start (RoofBuild::cap_indices).
   std::vector<std::vector<std::uint32_t>> caps;
+  // Per footprint vertex, the roof's height (m) above the eave there; empty: all 0. Not 0 at a
+  // vertex dropped by outline_core: the roof planned over the core passes above or below it.
+  std::vector<double> eave_rise;
 };
 
 struct RoofPlan {
@@ -71,6 +74,11 @@ struct RoofPlan {
   std::vector<GableEnd> gables;
   CustomRoof custom;  // gambrel, half-hipped, saltbox, round, dome, onion
 };
+
+// The footprint with the outer ring's nearly straight vertices (turning by less than
+// kCornerMinTurnDeg, roof.cc) dropped, holes unchanged: what decides whether a footprint is a
+// quadrilateral (plan_custom) or convex (the pyramid). The roof is still built over every vertex.
+Contour outline_core(const Contour& c);
 
 // Which pair of opposite edges of a quadrilateral carries the slopes: edges r and r + 2 for the
 // returned r in {0, 1}, so the ridge runs along them (roof_shapes.cc): from direction_deg, else

@@ -48,8 +48,13 @@ class RoofEmitter {
     const Contour& e = plan_.eave;
     const std::uint32_t n = f.size();
     build_.wall_top.resize(n);
+    // The S3DB shapes pass above (or below) a footprint vertex that is not a corner of their
+    // quadrilateral (CustomRoof::eave_rise); they have no overhang, so it is also their eave.
+    const std::vector<double>& rise = plan_.custom.eave_rise;
+    const bool custom = plan_.type >= RoofType::kGambrel && rise.size() == n;
     for (std::uint32_t k = 0; k < n; ++k) {
-      build_.wall_top[k] = mesh_.add_vertex(lift(f.points[k], soffit_z(f.points[k])));
+      const double z = soffit_z(f.points[k]) + (custom ? rise[k] : 0.0);
+      build_.wall_top[k] = mesh_.add_vertex(lift(f.points[k], z));
     }
     soffit_ = build_.wall_top;
     if (plan_.overhang > 0) {

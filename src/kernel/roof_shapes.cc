@@ -3,6 +3,7 @@
 // (gambrel, saltbox, round) and the half-hipped gable; over a footprint star-shaped about its
 // centroid, a dome or an onion of scaled copies of the outline.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 
@@ -47,20 +48,28 @@ std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Linear& f, double to
 }
 
 // A roof's points, merged within a tolerance so faces clipped separately share their vertices.
+// The footprint's vertices come first; the height the roof has over each is kept as its eave rise.
 class PointSet {
  public:
-  PointSet(const Contour& c, double tolerance) : tolerance_(tolerance), count_(c.size()) {
+  PointSet(const Contour& c, double tolerance)
+      : tolerance_(tolerance), count_(c.size()), rise_(c.size(), 0) {
     for (const Vec2& p : c.points) points_.push_back(lift(p, 0));
   }
   std::uint32_t id(Vec3 p) {
     for (std::uint32_t k = 0; k < points_.size(); ++k) {
-      if (length(drop(points_[k]) - drop(p)) <= tolerance_) return k;
+      if (length(drop(points_[k]) - drop(p)) > tolerance_) continue;
+      // A corner of the core is at the eave up to rounding; a dropped vertex is not.
+      if (k < count_ && std::abs(p.z) > 1e-9) rise_[k] = p.z;
+      return k;
     }
     points_.push_back(p);
     return static_cast<std::uint32_t>(points_.size() - 1);
   }
   void move_to(CustomRoof& roof) const {
     roof.points.assign(points_.begin() + count_, points_.end());
+    if (std::any_of(rise_.begin(), rise_.end(), [](double z) { return z != 0; })) {
+      roof.eave_rise = rise_;
+    }
   }
   std::span<const Vec3> all() const { return points_; }
 
@@ -68,6 +77,7 @@ class PointSet {
   double tolerance_;
   std::uint32_t count_;
   std::vector<Vec3> points_;
+  std::vector<double> rise_;
 };
 
 double extent(const Contour& c) {
@@ -87,7 +97,7 @@ void add_face(CustomRoof& roof, std::vector<std::uint32_t> loop) {
   roof.face_offsets.push_back(static_cast<std::uint32_t>(roof.face_indices.size()));
 }
 
-// The wall above end edge e is closed by every roof point on it, from its end back to its start.
+// The wall above edge e is closed by every roof point on it, from its end back to its start.
 std::vector<std::uint32_t> cap_on_edge(const Contour& c, std::uint32_t e,
                                        std::span<const Vec3> points, double tolerance) {
   const Vec2 a = c.points[e];
@@ -114,6 +124,7 @@ struct Piece {
 struct QuadFrame {
   std::uint32_t side_a = 0, side_b = 2;  // slope edges
   double half_width = 0;                 // plan distance from a slope edge to the ridge
+  double widest = 0;                     // the same at the wider end
 };
 
 bool quad_frame(const Contour& c, const RoofSpec& spec, QuadFrame& frame) {
@@ -125,24 +136,39 @@ bool quad_frame(const Contour& c, const RoofSpec& spec, QuadFrame& frame) {
   const std::optional<GableEnd> end3 = gable_apex(c, (r + 3) % kQuad);
   if (!end1 || !end3) return false;
   frame.half_width = std::min(end1->time, end3->time);
+  frame.widest = std::max(end1->time, end3->time);
   return frame.half_width > 0;
 }
 
-// Faces of a two-sided profile roof: side A where ka * d_a <= kb * d_b, side B the rest.
-void profile_faces(const Contour& c, const QuadFrame& frame, const std::vector<Piece>& a,
-                   const std::vector<Piece>& b, double ka, double kb, CustomRoof& roof) {
+// The wall caps of every footprint edge: the roof points on it.
+void add_caps(const Contour& c, const PointSet& points, double tolerance, CustomRoof& roof) {
+  roof.caps.assign(c.size(), {});
+  for (std::uint32_t e = 0; e < c.size(); ++e) {
+    roof.caps[e] = cap_on_edge(c, e, points.all(), tolerance);
+  }
+}
+
+// Faces of a two-sided profile roof over footprint `c`, its slope edges those of `frame` on the
+// quadrilateral `core` (outline_core of `c`): side A where ka * d_a <= kb * d_b, side B the rest.
+// The faces are cut from `c` itself, so a vertex the core dropped keeps its place in the roof,
+// at the height the profile has there.
+void profile_faces(const Contour& c, const Contour& core, const QuadFrame& frame,
+                   const std::vector<Piece>& a, const std::vector<Piece>& b, double ka, double kb,
+                   CustomRoof& roof) {
   const double tolerance = 1e-7 * extent(c);
   PointSet points(c, tolerance);
-  const Linear da = distance_function(c, frame.side_a);
-  const Linear db = distance_function(c, frame.side_b);
-  const std::vector<Vec2> quad(c.points.begin(), c.points.end());
+  const Linear da = distance_function(core, frame.side_a);
+  const Linear db = distance_function(core, frame.side_b);
+  const std::vector<Vec2> outline(c.points.begin(), c.points.end());
   const auto side = [&](const Linear& mine, const Linear& other, double km, double ko,
                         const std::vector<Piece>& profile) {
     const Linear split{other.g * ko - mine.g * km, other.h * ko - mine.h * km};
-    const std::vector<Vec2> region = clip(quad, split, tolerance);
+    const std::vector<Vec2> region = clip(outline, split, tolerance);
     for (std::size_t k = 0; k < profile.size(); ++k) {
       const Piece& piece = profile[k];
-      std::vector<Vec2> poly = clip(region, {mine.g, mine.h - piece.t}, tolerance);
+      // The first piece reaches out to footprint vertices just outside the core's slope edge.
+      std::vector<Vec2> poly =
+          k == 0 ? region : clip(region, {mine.g, mine.h - piece.t}, tolerance);
       if (k + 1 < profile.size()) {
         poly = clip(poly, {-mine.g, profile[k + 1].t - mine.h}, tolerance);
       }
@@ -155,36 +181,33 @@ void profile_faces(const Contour& c, const QuadFrame& frame, const std::vector<P
   };
   side(da, db, ka, kb, a);
   side(db, da, kb, ka, b);
-  roof.caps.assign(kQuad, {});
-  for (std::uint32_t e : {frame.side_a + 1, (frame.side_a + 3) % kQuad}) {
-    roof.caps[e] = cap_on_edge(c, e, points.all(), tolerance);
-  }
+  add_caps(c, points, tolerance, roof);
   points.move_to(roof);
 }
 
 // Gambrel: the mansard's two slopes with gable ends. The break lies where the lower slope has
 // risen mansard_break_height, but at most 60 % of the way to the ridge.
-bool plan_gambrel(RoofPlan& plan, const RoofSpec& spec) {
+bool plan_gambrel(RoofPlan& plan, const RoofSpec& spec, const Contour& core) {
   QuadFrame frame;
-  if (!quad_frame(plan.footprint, spec, frame)) return false;
+  if (!quad_frame(core, spec, frame)) return false;
   const double lower = std::tan(spec.mansard_pitch_deg * kPi / 180);
   const double upper = plan.slope;
   const double t = std::min(spec.mansard_break_height / lower, 0.6 * frame.half_width);
   const std::vector<Piece> profile = {{0, 0, lower}, {t, t * lower, upper}};
-  profile_faces(plan.footprint, frame, profile, profile, 1, 1, plan.custom);
+  profile_faces(plan.footprint, core, frame, profile, profile, 1, 1, plan.custom);
   return true;
 }
 
 // Saltbox: the ridge a third of the way across, the short side twice as steep as the long one
 // (which has the pitch); both eaves at the same height. The long side faces direction_deg when
 // given, else it rises from the second slope edge.
-bool plan_saltbox(RoofPlan& plan, const RoofSpec& spec) {
+bool plan_saltbox(RoofPlan& plan, const RoofSpec& spec, const Contour& core) {
   QuadFrame frame;
-  if (!quad_frame(plan.footprint, spec, frame)) return false;
+  if (!quad_frame(core, spec, frame)) return false;
   if (spec.direction_deg) {
     const double a = *spec.direction_deg * kPi / 180;
     const Vec2 downhill{std::sin(a), std::cos(a)};
-    const Contour& c = plan.footprint;
+    const Contour& c = core;
     const auto outward = [&](std::uint32_t e) {
       return -perp(normalized(c.points[c.next(e)] - c.points[e]));
     };
@@ -193,16 +216,16 @@ bool plan_saltbox(RoofPlan& plan, const RoofSpec& spec) {
     }
   }
   const double s = plan.slope;
-  profile_faces(plan.footprint, frame, {{0, 0, 2 * s}}, {{0, 0, s}}, 2, 1, plan.custom);
+  profile_faces(plan.footprint, core, frame, {{0, 0, 2 * s}}, {{0, 0, s}}, 2, 1, plan.custom);
   return true;
 }
 
 // Round: a barrel vault whose cross-section is a quarter circle on each side (a half circle over
 // the width; height = half the width before RoofSpec::height scales it), in 6 planar strips per
 // side.
-bool plan_round(RoofPlan& plan, const RoofSpec& spec) {
+bool plan_round(RoofPlan& plan, const RoofSpec& spec, const Contour& core) {
   QuadFrame frame;
-  if (!quad_frame(plan.footprint, spec, frame)) return false;
+  if (!quad_frame(core, spec, frame)) return false;
   constexpr int kStrips = 6;
   const double w = frame.half_width;
   std::vector<Piece> profile;
@@ -211,53 +234,54 @@ bool plan_round(RoofPlan& plan, const RoofSpec& spec) {
     const double t0 = w * (1 - std::cos(a0)), t1 = w * (1 - std::cos(a1));
     profile.push_back({t0, w * std::sin(a0), w * (std::sin(a1) - std::sin(a0)) / (t1 - t0)});
   }
-  profile.push_back({w, w, 0});  // a crest where the ridge runs wider than the narrower end
-  profile_faces(plan.footprint, frame, profile, profile, 1, 1, plan.custom);
+  // A crest where the ridge runs wider than the narrower end; not when it would be a sliver (a
+  // parallelogram skewed by 0.15 degrees had a crest 1.4 micrometres wide, a degenerate face in
+  // OBJ's six decimals): under 1 % of the half width the last strip runs on to the ridge, at most
+  // 0.13 % of the half width higher than the circle.
+  if (frame.widest - w > 0.01 * w) profile.push_back({w, w, 0});
+  profile_faces(plan.footprint, core, frame, profile, profile, 1, 1, plan.custom);
   return true;
 }
 
 // Half-hipped: the gable's end walls stop halfway up, where a small hip at the roof's pitch
-// takes over and meets the ridge set back from the end.
-bool plan_half_hipped(RoofPlan& plan, const RoofSpec& spec) {
+// takes over and meets the ridge set back from the end. The roof is the lower envelope of four
+// planes at the pitch: the two slopes, rising from the slope edges, and the two hips, rising from
+// the lines half a gable's height up each end wall (distance T/2 + d_end, T the gable apex's
+// distance from the slope edges); each plane's face is the part of the footprint where it is
+// lowest.
+bool plan_half_hipped(RoofPlan& plan, const RoofSpec& spec, const Contour& core) {
   const Contour& c = plan.footprint;
-  if (c.ring_starts.size() != 2 || c.size() != kQuad) return false;
-  const std::uint32_t r = quad_slope_pair(c, spec);
+  if (core.ring_starts.size() != 2 || core.size() != kQuad) return false;
+  const std::uint32_t r = quad_slope_pair(core, spec);
   const std::uint32_t e1 = r + 1, e3 = (r + 3) % kQuad;
-  const std::optional<GableEnd> g1 = gable_apex(c, e1);
-  const std::optional<GableEnd> g3 = gable_apex(c, e3);
+  const std::optional<GableEnd> g1 = gable_apex(core, e1);
+  const std::optional<GableEnd> g3 = gable_apex(core, e3);
   if (!g1 || !g3) return false;
-  const Vec2 along = g3->apex - g1->apex;
-  const double ridge = length(along);
+  const double ridge = length(g3->apex - g1->apex);
   if (!(g1->time / 2 + g3->time / 2 < 0.9 * ridge)) return false;
-  const Linear da = distance_function(c, r);
-  const Linear db = distance_function(c, r + 2);
+  const Linear hip1 = distance_function(core, e1);
+  const Linear hip3 = distance_function(core, e3);
+  const std::array<Linear, 4> planes = {distance_function(core, r),
+                                        distance_function(core, r + 2),
+                                        {hip1.g, hip1.h + g1->time / 2},
+                                        {hip3.g, hip3.h + g3->time / 2}};
   const double s = plan.slope;
-  PointSet points(c, 1e-7 * extent(c));
-  // The point of end edge e where the distance from slope edge f is tau.
-  const auto clip_point = [&](std::uint32_t e, const Linear& f, double tau) {
-    const Vec2 a = c.points[e];
-    const Vec2 b = c.points[c.next(e)];
-    const double fa = f.at(a), fb = f.at(b);
-    return points.id(lift(a + (b - a) * ((tau - fa) / (fb - fa)), tau * s));
-  };
-  const auto ridge_end = [&](const GableEnd& g, Vec2 inward) {
-    const Vec2 p = g.apex + inward * (g.time / 2 / ridge);
-    return points.id(lift(p, da.at(p) * s));
-  };
-  const std::uint32_t c1a = clip_point(e1, da, g1->time / 2);
-  const std::uint32_t c1b = clip_point(e1, db, g1->time / 2);
-  const std::uint32_t c3b = clip_point(e3, db, g3->time / 2);
-  const std::uint32_t c3a = clip_point(e3, da, g3->time / 2);
-  const std::uint32_t r1 = ridge_end(*g1, along);
-  const std::uint32_t r3 = ridge_end(*g3, -along);
+  const double tolerance = 1e-7 * extent(c);
+  PointSet points(c, tolerance);
+  const std::vector<Vec2> outline(c.points.begin(), c.points.end());
   CustomRoof& roof = plan.custom;
-  add_face(roof, {r, r + 1, c1a, r1, r3, c3a});
-  add_face(roof, {r + 2, (r + 3) % kQuad, c3b, r3, r1, c1b});
-  add_face(roof, {c1a, c1b, r1});
-  add_face(roof, {c3b, c3a, r3});
-  roof.caps.assign(kQuad, {});
-  roof.caps[e1] = {c1b, c1a};
-  roof.caps[e3] = {c3a, c3b};
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    std::vector<Vec2> poly = outline;
+    for (std::size_t j = 0; j < planes.size() && !poly.empty(); ++j) {
+      if (j != i) {
+        poly = clip(poly, {planes[j].g - planes[i].g, planes[j].h - planes[i].h}, tolerance);
+      }
+    }
+    std::vector<std::uint32_t> loop;
+    for (const Vec2& p : poly) loop.push_back(points.id(lift(p, planes[i].at(p) * s)));
+    add_face(roof, std::move(loop));
+  }
+  add_caps(c, points, tolerance, roof);
   points.move_to(roof);
   return true;
 }
@@ -343,15 +367,18 @@ std::uint32_t quad_slope_pair(const Contour& c, const RoofSpec& spec) {
 
 bool plan_custom(RoofPlan& plan, const RoofSpec& spec) {
   plan.custom = CustomRoof();
+  // The quadrilateral shapes are planned over the corners; their faces still cover every vertex.
+  const Contour core =
+      plan.footprint.ring_starts[1] > kQuad ? outline_core(plan.footprint) : plan.footprint;
   switch (plan.type) {
     case RoofType::kGambrel:
-      return plan_gambrel(plan, spec);
+      return plan_gambrel(plan, spec, core);
     case RoofType::kSaltbox:
-      return plan_saltbox(plan, spec);
+      return plan_saltbox(plan, spec, core);
     case RoofType::kRound:
-      return plan_round(plan, spec);
+      return plan_round(plan, spec, core);
     case RoofType::kHalfHipped:
-      return plan_half_hipped(plan, spec);
+      return plan_half_hipped(plan, spec, core);
     case RoofType::kDome:
       return plan_dome(plan, false);
     case RoofType::kOnion:

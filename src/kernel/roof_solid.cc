@@ -119,15 +119,6 @@ void close_gables(const RoofBuild& build, const std::vector<std::uint32_t>& next
 
 }  // namespace
 
-void scale_roof_height(Mesh& mesh, double eave_z, double height) {
-  double top = eave_z;
-  for (const Vec3& p : mesh.positions()) top = std::max(top, p.z);
-  if (top - eave_z > 1e-6 && height > 0) {
-    const double scale = height / (top - eave_z);
-    for (Vec3& p : mesh.positions()) p.z = eave_z + (p.z - eave_z) * scale;
-  }
-}
-
 RoofSolid build_roof_solid(const Polygon& footprint, const RoofSolidSpec& spec, double eave_z) {
   if (spec.roof.type == RoofType::kFlat) return flat_slab(footprint, spec, eave_z);
   RoofSolid out;

@@ -18,9 +18,8 @@ namespace insula::kernel {
 
 struct RoofSolidSpec {
   RoofSpec roof;  // type, pitch, overhang, mansard slopes
-  // > 0: the heights above the eaves are scaled so the roof's top lies `height` (meters) above
-  // them; an affine scaling of z keeps every face planar, so this is the same roof at the pitch
-  // that gives that height. 0: the height the pitch gives.
+  // > 0: the roof is scaled in z so its soffit lies at the eaves and its top `height` (meters)
+  // above them (scale_roof_height in roof.h). 0: the height the pitch gives.
   double height = 0;
   // Flat roofs: a slab this thick (meters, > 0) over the outline grown by the overhang (the
   // kernel's flat roof is a single face, which without overhang would enclose no volume).
@@ -38,10 +37,6 @@ struct RoofSolid {
   // so the rooms below can leave their ceilings open under it.
   std::vector<Polygon> openings;
 };
-
-// Scales the heights above `eave_z` of every vertex of `mesh` so its top lies `height` (> 0) above
-// `eave_z` (RoofSolidSpec::height); nothing changes for height 0 or a mesh without height.
-void scale_roof_height(Mesh& mesh, double eave_z, double height);
 
 // The closed roof solid over `footprint` (valid, normalized) with its eaves at `eave_z`. Tags: roof
 // faces RoofSurface, gable ends and fascias WallSurface, the bottom ClosureSurface (a flat slab:

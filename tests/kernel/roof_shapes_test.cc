@@ -11,6 +11,7 @@
 
 #include "footprints.h"
 #include "kernel/mass.h"
+#include "kernel/roof_solid.h"
 
 namespace insula::kernel {
 namespace {
@@ -311,6 +312,109 @@ TEST(RoofShapes, RoofOnPostsHasNoWalls) {
   const MassResult gable = build(rectangle(10, 6), RoofType::kGable, spec);
   const double roof_volume = 10 * 6 * 3 * std::tan(30 * kPi / 180) / 2;
   EXPECT_NEAR(volume(gable.mesh), roof_volume + 4 * 0.25 * 0.25 * kEave, 1e-9);
+}
+
+// Lowest z of the faces of one semantic class.
+double lowest(const Mesh& m, SemanticClass semantic) {
+  double z = 1e300;
+  for (std::size_t f = 0; f < m.face_count(); ++f) {
+    if (m.tag(f).semantic != semantic) continue;
+    for (std::uint32_t v : m.face(f)) z = std::min(z, m.position(v).z);
+  }
+  return z;
+}
+
+// A roof height scales the rise above the eave, not the overhang's drop below it: a 2 x 1.5 m
+// hip with a 0.5 m overhang and 4.5 m of roof had its soffit (and wall tops) 3.4 m below the
+// eave, as a 1 m² .bldg part with a 3.5 m roof had its soffit under the ground.
+TEST(RoofShapes, HeightKeepsTheSoffitOnTheWallTop) {
+  MassSpec spec;
+  spec.overhang = 0.5;
+  spec.height = 4.5;
+  for (RoofType t : {RoofType::kHip, RoofType::kGable, RoofType::kPyramid, RoofType::kMansard}) {
+    SCOPED_TRACE(std::string(roof_type_name(t)));
+    const MassResult r = build(rectangle(2, 1.5), t, spec);
+    expect_closed(r);
+    EXPECT_EQ(r.status, MassStatus::kOk) << r.message;
+    EXPECT_NEAR(lowest(r.mesh, SemanticClass::kOuterCeilingSurface), kEave, 1e-9);
+    EXPECT_NEAR(top(r.mesh), kEave + 4.5, 1e-9);
+    for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+      if (r.mesh.tag(f).semantic != SemanticClass::kRoofSurface) continue;
+      for (std::uint32_t v : r.mesh.face(f)) EXPECT_GE(r.mesh.position(v).z, kEave - 1e-9);
+    }
+  }
+  // The closed roof solid of the .bldg builder stands on the eave the same way.
+  RoofSolidSpec solid;
+  solid.roof.overhang = 0.5;
+  solid.height = 3.5;
+  const RoofSolid roof = build_roof_solid(rectangle(1, 1), solid, 3.3);
+  ASSERT_EQ(roof.status, RoofStatus::kOk) << roof.message;
+  EXPECT_NEAR(roof.mesh.bounds().min.z, 3.3, 1e-9);
+  EXPECT_NEAR(roof.mesh.bounds().max.z, 3.3 + 3.5, 1e-9);
+}
+
+// A 4.47 x 2.23 m near-parallelogram (an OpenStreetMap outline, as OBJ wrote its corners): both
+// ends as wide within micrometres, and the crest between them a sliver that OBJ wrote as a
+// degenerate triangle. Within 1 % of the half width the strips meet at the ridge, without crest.
+TEST(RoofShapes, RoundHasNoSliverCrest) {
+  const Polygon p{
+      {{-0.989625, -0.837672}, {0.694063, 3.331284}, {2.768222, 2.492093}, {1.084535, -1.676864}},
+      {}};
+  const MassResult r = build(p, RoofType::kRound);
+  expect_closed(r);
+  EXPECT_EQ(count(r.mesh, SemanticClass::kRoofSurface), 12);
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    EXPECT_GT(face_area(r.mesh, f), 1e-3) << "face " << f;
+  }
+}
+
+// A rectangle with one more vertex 4 cm from a corner where the outline turns by 1 degree, as
+// OpenStreetMap outlines have them: on a long side (a slope of the quadrilateral shapes) or a short
+// one (an end).
+Polygon near_rectangle(bool long_side) {
+  const double off = 0.04 * std::tan(kPi / 180);
+  if (long_side) return {{{0, 0}, {12, 0}, {12, 8}, {0.04, 8}, {0, 8 + off}}, {}};
+  return {{{0, 0}, {12, 0}, {12, 8}, {0, 8}, {-off, 7.96}}, {}};
+}
+
+// Pyramid and the quadrilateral-only shapes see its four corners and build over all five vertices
+// (they fell back to hip and gable).
+TEST(RoofShapes, NearlyStraightVerticesDoNotHideAQuadrilateral) {
+  for (bool long_side : {true, false}) {
+    for (RoofType t : {RoofType::kPyramid, RoofType::kGambrel, RoofType::kHalfHipped,
+                       RoofType::kSaltbox, RoofType::kRound}) {
+      SCOPED_TRACE(std::string(roof_type_name(t)) + (long_side ? " long side" : " short side"));
+      const MassResult r = build(near_rectangle(long_side), t);
+      expect_closed(r);
+      EXPECT_EQ(r.status, MassStatus::kOk) << r.message;
+      EXPECT_EQ(r.roof, t);
+      // Five walls, each from the ground; the roof within a millimetre of the rectangle's.
+      EXPECT_EQ(count(r.mesh, SemanticClass::kWallSurface), 5);
+      const MassResult plain = build(rectangle(12, 8), t);
+      EXPECT_NEAR(top(r.mesh), top(plain.mesh), 1e-3);
+      EXPECT_EQ(count(r.mesh, SemanticClass::kRoofSurface),
+                count(plain.mesh, SemanticClass::kRoofSurface) + (t == RoofType::kPyramid));
+    }
+  }
+  // A real corner is still one: an L is no quadrilateral.
+  EXPECT_EQ(build(l_shape(), RoofType::kGambrel).roof, RoofType::kMansard);
+}
+
+// building=roof whose overhang brings the underside to the ground: built without the overhang,
+// like a walled building, and reported the same way (it was dropped).
+TEST(RoofShapes, RoofOnPostsDropsAnOverhangThatReachesTheGround) {
+  MassSpec spec;
+  spec.walls = false;
+  spec.overhang = 2.5;  // a 70-degree mansard drops 6.9 m below the 6 m eave
+  const MassResult r = build(rectangle(10, 6), RoofType::kMansard, spec);
+  ASSERT_EQ(r.status, MassStatus::kFallback) << r.message;
+  EXPECT_EQ(r.roof, RoofType::kMansard);
+  EXPECT_EQ(r.message,
+            "posts: the roof's underside is not above the ground; built without overhang");
+  const MeshCheck c = check(r.mesh);
+  EXPECT_TRUE(c.closed);
+  EXPECT_EQ(c.components, 5U);
+  EXPECT_NEAR(r.mesh.bounds().min.x, 0, 1e-12);  // no eave beyond the footprint
 }
 
 }  // namespace

@@ -51,6 +51,12 @@ struct Context {
   void warn(std::string message) const { result.warnings.push_back(std::move(message)); }
 };
 
+// `polygon` as simple polygons a roof or plinth can be built on (kernel/skeleton.h
+// is_simple_polygon): repaired, else cut where a ring touches itself, else rebuilt by the kernel's
+// polygon union (strictly simple output), which may split it into pieces. Empty when none of that
+// gives simple polygons (builder_roofs.cc).
+std::vector<kernel::Polygon> simple_pieces(const kernel::Polygon& polygon);
+
 // A wall piece of a storey placed in the plan: the segment it stands on (extended to close
 // corners), its side of the segment, and its footprint.
 struct WallGeometry {

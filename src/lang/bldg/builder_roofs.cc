@@ -11,6 +11,7 @@
 // group's highest eaves; a lower part of the group is raised to those eaves by a filler block.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -18,6 +19,7 @@
 #include "kernel/boolean2d.h"
 #include "kernel/planar.h"
 #include "kernel/roof_solid.h"
+#include "kernel/skeleton.h"
 #include "lang/bldg/builder_detail.h"
 
 namespace insula::lang::bldg::detail {
@@ -72,10 +74,22 @@ kernel::Mesh roof_solid(const kernel::Polygon& footprint, RoofKind kind, double 
 }
 
 // The footprint a roof stands on: normalised, without collinear vertices (a union of parts keeps
-// the vertices where their outlines met).
-kernel::Polygon clean(const kernel::Polygon& polygon) {
+// the vertices where their outlines met); nothing when that is not a simple polygon.
+std::optional<kernel::Polygon> clean(const kernel::Polygon& polygon) {
   kernel::RepairResult repaired = kernel::repair(polygon, 1e-6);
-  return repaired.ok ? repaired.polygon : polygon;
+  if (!repaired.ok || !kernel::is_simple_polygon(repaired.polygon)) return std::nullopt;
+  return std::move(repaired.polygon);
+}
+
+// Each polygon cleaned; nothing unless all are simple.
+std::vector<kernel::Polygon> all_clean(const std::vector<kernel::Polygon>& polygons) {
+  std::vector<kernel::Polygon> out;
+  for (const kernel::Polygon& p : polygons) {
+    std::optional<kernel::Polygon> c = clean(p);
+    if (!c) return {};
+    out.push_back(std::move(*c));
+  }
+  return out;
 }
 
 // Parts "in spatial contact [...] at the ground level" (§4.6): they share at least kContact of
@@ -141,30 +155,67 @@ bool touches_other_part(const Context& c, const kernel::Polygon& footprint,
   return false;
 }
 
-void add_roof_part(const Context& c, const std::string& name, const kernel::Polygon& footprint,
+// One roof per simple piece of `footprint` (simple_pieces), named `name`, `name`#2, ...; false,
+// with a warning, when a piece gets none. `extra` (fillers) goes with the first roof built.
+bool add_roof_part(const Context& c, const std::string& name, const kernel::Polygon& footprint,
                    const std::vector<const PlanPart*>& own, RoofKind kind, double height,
-                   double eave_z, std::vector<shape::Part>& parts, kernel::Mesh extra = {}) {
-  std::string message;
-  const double overhang = touches_other_part(c, footprint, own) ? 0 : c.options.roof_overhang;
-  std::vector<kernel::Polygon> openings;
-  kernel::Mesh mesh =
-      roof_solid(clean(footprint), kind, height, eave_z, overhang, message, &openings);
-  if (!openings.empty()) {
-    for (const PlanPart* p : own) (*c.compluvia)[p->symbol] = openings;
+                   double eave_z, std::vector<shape::Part>& parts, kernel::Mesh* extra = nullptr) {
+  const std::vector<kernel::Polygon> pieces = simple_pieces(footprint);
+  if (pieces.empty()) {
+    c.warn(name + ": no roof: its outline is not a simple polygon and could not be made one");
+    return false;
   }
-  if (!message.empty()) c.warn(name + ": " + message);
-  if (mesh.empty()) return;
-  mesh.append(extra);
-  shape::Part part;
-  part.name = name;
-  part.kind = shape::PartKind::kBuildingPart;
-  part.attributes["roof_height"] = height;
-  part.mesh = std::move(mesh);
-  parts.push_back(std::move(part));
-  ++c.result.stats.roofs;
+  const double overhang = touches_other_part(c, footprint, own) ? 0 : c.options.roof_overhang;
+  bool all = true;
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const std::string piece = k == 0 ? name : name + "#" + std::to_string(k + 1);
+    std::string message;
+    std::vector<kernel::Polygon> openings;
+    kernel::Mesh mesh = roof_solid(pieces[k], kind, height, eave_z, overhang, message, &openings);
+    for (const PlanPart* p : own) {
+      if (openings.empty()) break;
+      auto& held = (*c.compluvia)[p->symbol];
+      held.insert(held.end(), openings.begin(), openings.end());
+    }
+    if (mesh.empty()) {
+      c.warn(piece + ": no roof: " + (message.empty() ? "the roof could not be built" : message));
+      all = false;
+      continue;
+    }
+    if (!message.empty()) c.warn(piece + ": " + message);
+    if (extra != nullptr) {
+      mesh.append(*extra);
+      *extra = {};
+    }
+    shape::Part part;
+    part.name = piece;
+    part.kind = shape::PartKind::kBuildingPart;
+    part.attributes["roof_height"] = height;
+    part.mesh = std::move(mesh);
+    parts.push_back(std::move(part));
+    ++c.result.stats.roofs;
+  }
+  return all;
 }
 
 }  // namespace
+
+std::vector<kernel::Polygon> simple_pieces(const kernel::Polygon& polygon) {
+  if (std::optional<kernel::Polygon> p = clean(polygon)) return {std::move(*p)};
+  const kernel::TouchSplit split = kernel::split_touching_rings(polygon);
+  if (!split.points.empty()) {
+    std::vector<kernel::Polygon> pieces = all_clean(split.polygons);
+    if (!pieces.empty()) return pieces;
+  }
+  // Crossings and near-touches: the union's output is strictly simple on its micrometre grid.
+  std::vector<kernel::Polygon> pieces = all_clean(kernel::union_all({polygon}));
+  if (!pieces.empty()) return pieces;
+  // Rings within a micrometre of each other: closed over (or opened) by a millimetre.
+  const kernel::BooleanResult grown = kernel::offset({polygon}, 1e-3);
+  if (!grown.ok()) return {};
+  const kernel::BooleanResult back = kernel::offset(grown.polygons, -1e-3);
+  return back.ok() ? all_clean(back.polygons) : std::vector<kernel::Polygon>{};
+}
 
 void build_roofs(const Context& c, std::vector<shape::Part>& parts) {
   const std::vector<PlanPart>& plan_parts = c.plan.parts;
@@ -222,11 +273,20 @@ void build_roofs(const Context& c, std::vector<shape::Part>& parts) {
       }
     }
     const std::vector<kernel::Polygon> merged = merge(outlines);
+    bool roofed = !merged.empty();
     for (std::size_t k = 0; k < merged.size(); ++k) {
       std::string piece = name;
       if (k > 0) piece.append("#").append(std::to_string(k + 1));
-      add_roof_part(c, piece, merged[k], group, RoofKind::kHip, height, eaves, parts,
-                    k == 0 ? std::move(fillers) : kernel::Mesh{});
+      roofed = add_roof_part(c, piece, merged[k], group, RoofKind::kHip, height, eaves, parts,
+                             &fillers) &&
+               roofed;
+    }
+    if (roofed || group.size() < 2) continue;
+    // No glued roof over the whole group: each part gets its own at the common eaves.
+    c.warn(name + ": the parts' merged outline takes no single roof; one roof per part instead");
+    for (const PlanPart* p : group) {
+      add_roof_part(c, std::string("roof ").append(p->symbol), p->outline, {p}, RoofKind::kHip,
+                    height, eaves, parts, &fillers);
     }
   }
 }

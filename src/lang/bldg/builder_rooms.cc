@@ -437,11 +437,23 @@ void build_stairs(const Context& c, int s, kernel::Mesh& mesh, shape::StoreyPlan
 void build_base(const Context& c, const std::vector<StoreyWalls>& walls, kernel::Mesh& mesh) {
   const double base = c.rules.base_height;
   if (base > 0) {
+    const kernel::PrismTags tags{{SemanticClass::kGroundSurface, kPlinthMaterial, 0},
+                                 {SemanticClass::kClosureSurface, kPlinthMaterial, 1},
+                                 {SemanticClass::kWallSurface, kPlinthMaterial, 2}};
     for (const kernel::Polygon& footprint : c.plan.footprint) {
-      kernel::add_prism(mesh, footprint, 0, base,
-                        {{SemanticClass::kGroundSurface, kPlinthMaterial, 0},
-                         {SemanticClass::kClosureSurface, kPlinthMaterial, 1},
-                         {SemanticClass::kWallSurface, kPlinthMaterial, 2}});
+      if (kernel::add_prism(mesh, footprint, 0, base, tags)) continue;
+      // A lot whose courtyard touches its outline (a real OpenStreetMap multipolygon) lost its
+      // plinth without a word.
+      std::size_t built = 0, pieces = 0;
+      for (const kernel::Polygon& piece : simple_pieces(footprint)) {
+        ++pieces;
+        built += kernel::add_prism(mesh, piece, 0, base, tags) ? 1 : 0;
+      }
+      if (pieces == 0 || built < pieces) {
+        c.warn("base: the plinth could not be built on " +
+               std::string(built == 0 ? "the" : "part of the") +
+               " footprint (not a simple polygon)");
+      }
     }
   }
   if (c.plan.storeys.empty() || walls.empty()) return;

@@ -347,6 +347,27 @@ TEST(Builder, HipGluedPartsInContactShareOneRoof) {
   expect_closed(r);
 }
 
+// An outline whose ring touches itself (its vertex (5, 0) lies on its own bottom edge), as parts
+// and lots cut from real OpenStreetMap outlines have them: it is not a simple polygon, and the roof
+// was dropped with a warning, the plinth without one. Both are built on its simple pieces.
+TEST(Builder, RoofAndPlinthStandOnAnOutlineThatTouchesItself) {
+  const kernel::Polygon pinched{{{0, 0}, {10, 0}, {10, 8}, {6, 8}, {5, 0}, {4, 8}, {0, 8}}, {}};
+  const BuildResult r = build_building(
+      building(), parts_only({part("p", pinched, RoofKind::kHip, 2)}), Restrictions{});
+  for (const std::string& w : r.warnings) EXPECT_EQ(w.find("no roof"), std::string::npos) << w;
+  for (const std::string& w : r.warnings) EXPECT_EQ(w.find("plinth"), std::string::npos) << w;
+  EXPECT_GE(r.stats.roofs, 1U);
+  double closure = 0;
+  for (const shape::Part& p : r.building.parts) {
+    if (p.name.rfind("roof p", 0) == 0) closure += area_of(p.mesh, SemanticClass::kClosureSurface);
+  }
+  EXPECT_NEAR(closure, kernel::area(pinched), 0.05);  // the 1 mm the pinch may be opened by
+  const shape::Part* base = find_part(r, "base");
+  ASSERT_NE(base, nullptr);
+  EXPECT_NEAR(area_of(base->mesh, SemanticClass::kGroundSurface), kernel::area(pinched), 0.05);
+  expect_closed(r);
+}
+
 TEST(Builder, OtherRoofsOfTouchingPartsStaySeparate) {
   const FloorPlan plan = parts_only({part("w", rect(0, 0, 5, 8), RoofKind::kHip, 2),
                                      part("e", rect(5, 0, 12, 8), RoofKind::kHip, 2)});
