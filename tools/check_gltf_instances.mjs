@@ -103,7 +103,7 @@ const page_html = `<!doctype html><html><head><meta charset="utf-8">
       for (let y = 10; y < 600; y += 20) {
         const picked = scene.pick(new Cesium.Cartesian2(x, y));
         if (!(picked instanceof Cesium.Cesium3DTileFeature)) continue;
-        const name = String(picked.getProperty('name'));
+        const name = String(picked.getProperty('part_name'));
         r.picked[name] = (r.picked[name] || 0) + 1;
       }
     }
