@@ -123,20 +123,22 @@ FormSummary summary_of(const io::BuildingForm& form) {
   return {form.base, form.eave, form.height_source, form.roof_source, form.osm, form.is_part};
 }
 
+// How far a pitched roof's surface falls or rises over `overhang` metres (0 for a flat roof).
+double pitch_drop(const FootprintPlan& footprint, double overhang) {
+  if (footprint.spec.roof == kernel::RoofType::kFlat) return 0;
+  return overhang * std::tan(footprint.spec.pitch_deg * std::numbers::pi / 180);
+}
+
 // Height of the soffit under `footprint`'s eave, and the highest its walls or roof rise within
 // `overhang` of its edges: where a neighbour's rise is above this building's soffit, the eave would
 // run into it.
 double soffit_height(const FootprintPlan& footprint, double overhang) {
-  if (footprint.spec.roof == kernel::RoofType::kFlat)
-    return footprint.form.eave - footprint.spec.fascia;
-  return footprint.form.eave -
-         overhang * std::tan(footprint.spec.pitch_deg * std::numbers::pi / 180);
+  const double fascia = footprint.spec.roof == kernel::RoofType::kFlat ? footprint.spec.fascia : 0;
+  return footprint.form.eave - pitch_drop(footprint, overhang) - fascia;
 }
 
 double rise_near_edge(const FootprintPlan& footprint, double overhang) {
-  if (footprint.spec.roof == kernel::RoofType::kFlat) return footprint.form.eave;
-  return footprint.form.eave +
-         overhang * std::tan(footprint.spec.pitch_deg * std::numbers::pi / 180);
+  return footprint.form.eave + pitch_drop(footprint, overhang);
 }
 
 // With an overhang, each footprint's party walls (kernel/party_walls.h) against built neighbours
