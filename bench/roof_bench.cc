@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <iterator>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "kernel/mass.h"
 #include "kernel/roof.h"
@@ -182,6 +184,50 @@ BENCHMARK_CAPTURE(BM_SkeletonCgal, l_shape_8, l_shape8())->Unit(benchmark::kMicr
 BENCHMARK_CAPTURE(BM_SkeletonCgal, h_shape_12, h_shape12())->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_SkeletonCgal, comb_66, comb(16))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_SkeletonCgal, comb_254, comb(63))->Unit(benchmark::kMicrosecond);
+
+// Footprints as surveys give them (L, T, U and Z outlines turned to any angle, each corner moved by
+// up to 1 cm): neither convex nor rectilinear, they take the general wavefront
+// (skeleton_wavefront.h) or CGAL. Per footprint: time / 200.
+std::vector<Polygon> surveyed_footprints() {
+  const std::vector<Ring> shapes = {
+      {{0, 0}, {16, 0}, {16, 6}, {6, 6}, {6, 14}, {0, 14}},
+      {{0, 0}, {6, 0}, {6, 8}, {12, 8}, {12, 12}, {-6, 12}, {-6, 8}, {0, 8}},
+      {{0, 0}, {14, 0}, {14, 10}, {10, 10}, {10, 4}, {4, 4}, {4, 10}, {0, 10}},
+      {{0, 0}, {10, 0}, {10, 5}, {15, 5}, {15, 10}, {5, 10}, {5, 5}, {0, 5}}};
+  std::mt19937 random(42);
+  std::uniform_real_distribution<double> angle(0, kPi);
+  std::uniform_real_distribution<double> noise(-0.01, 0.01);
+  std::vector<Polygon> out;
+  for (int k = 0; k < 200; ++k) {
+    const double a = angle(random);
+    Polygon p;
+    for (Vec2 v : shapes[static_cast<std::size_t>(k) % shapes.size()]) {
+      p.outer.push_back({v.x * std::cos(a) - v.y * std::sin(a) + noise(random),
+                         v.x * std::sin(a) + v.y * std::cos(a) + noise(random)});
+    }
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+template <typename Skeletonize>
+void skeletons_of_surveyed_footprints(benchmark::State& state, Skeletonize skeletonize) {
+  const std::vector<Polygon> footprints = surveyed_footprints();
+  for (auto _ : state) {
+    for (const Polygon& p : footprints) {
+      auto s = skeletonize(p);
+      benchmark::DoNotOptimize(s.has_value());
+    }
+  }
+}
+void BM_SkeletonSurveyed(benchmark::State& state) {
+  skeletons_of_surveyed_footprints(state, interior_straight_skeleton);
+}
+void BM_SkeletonSurveyedCgal(benchmark::State& state) {
+  skeletons_of_surveyed_footprints(state, general_straight_skeleton);
+}
+BENCHMARK(BM_SkeletonSurveyed)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SkeletonSurveyedCgal)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace insula::kernel

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "kernel/skeleton_rectilinear.h"
+#include "kernel/skeleton_wavefront.h"
 
 namespace insula::kernel {
 namespace {
@@ -593,6 +594,7 @@ std::optional<Skeleton> interior_straight_skeleton(const Polygon& polygon) {
       if (ConvexSkeleton(out).run() && times_valid(out)) return out;
     }
     if (auto rectilinear = rectilinear_straight_skeleton(polygon)) return rectilinear;
+    if (auto wavefront = wavefront_straight_skeleton(polygon)) return wavefront;
     return cgal_skeleton(polygon);
   } catch (...) {
     return std::nullopt;

@@ -23,6 +23,8 @@
 #include <tuple>
 #include <vector>
 
+#include "kernel/skeleton_faces.h"
+
 namespace insula::kernel {
 namespace {
 
@@ -58,12 +60,6 @@ struct WaveVertex {
   std::uint32_t start = 0;  // the skeleton node where its trace began
 };
 using Cycle = std::vector<WaveVertex>;
-
-// A skeleton arc from node `from` to node `to`; the faces of contour edges `left` and `right`
-// lie on its two sides.
-struct Arc {
-  std::uint32_t from, to, left, right;
-};
 
 // Sorted distinct coordinates of one axis; values closer than the tolerance are one grid line.
 class Axis {
@@ -156,7 +152,7 @@ class Builder {
       if (!split_regions(std::move(cycles), t, pending)) return false;
       since.resize(pending.size(), t);
     }
-    return assemble_faces() && faces_valid();
+    return assemble_skeleton_faces(arcs_, out_) && faces_valid();
   }
 
  private:
@@ -222,13 +218,12 @@ class Builder {
   // appended to `regions`; false if a clockwise cycle lies in none.
   bool split_regions(std::vector<Cycle> cycles, double time,
                      std::vector<std::vector<Cycle>>& regions) const;
-  bool assemble_faces();
   bool faces_valid() const;
 
   Skeleton& out_;
   std::vector<Line> lines_;  // per contour edge
   std::vector<Cycle> cycles_;
-  std::vector<Arc> arcs_;
+  std::vector<SkeletonArc> arcs_;
   double tolerance_ = 0;
   double area_ = 0;
 };
@@ -525,37 +520,6 @@ bool Builder::split_regions(std::vector<Cycle> cycles, double time,
   regions.resize(first + outers.size());
   for (std::size_t c = 0; c < cycles.size(); ++c) {
     regions[first + region_of[c]].push_back(std::move(cycles[c]));
-  }
-  return true;
-}
-
-// Each face: its contour edge, then the arcs with the face on their left, chained from the edge's
-// end back to its start.
-bool Builder::assemble_faces() {
-  const std::uint32_t n = out_.contour_count;
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> sides(n);
-  for (const Arc& a : arcs_) {
-    if (a.from == a.to) continue;
-    sides[a.left].push_back({a.from, a.to});
-    sides[a.right].push_back({a.to, a.from});
-  }
-  out_.face_offsets.assign(1, 0);
-  for (std::uint32_t e = 0; e < n; ++e) {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>>& arcs = sides[e];
-    out_.face_indices.push_back(e);
-    std::uint32_t at = out_.next_contour(e);
-    std::size_t used = 0;
-    while (at != e) {
-      out_.face_indices.push_back(at);
-      auto it = std::find_if(arcs.begin(), arcs.end(), [at](auto a) { return a.first == at; });
-      if (it == arcs.end() || ++used > arcs.size()) return false;
-      if (std::find_if(it + 1, arcs.end(), [at](auto a) { return a.first == at; }) != arcs.end())
-        return false;  // two ways on: not a simple face
-      at = it->second;
-      it->first = kNone;
-    }
-    if (used != arcs.size()) return false;
-    out_.face_offsets.push_back(static_cast<std::uint32_t>(out_.face_indices.size()));
   }
   return true;
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "kernel/polygon.h"
@@ -46,6 +47,37 @@ inline void expect_valid(const Polygon& polygon, const Skeleton& s, const std::s
     total += face_area;
   }
   EXPECT_NEAR(total, polygon_area, 1e-9 * polygon_area) << what;
+}
+
+// `ours` is `reference` (CGAL's general builder) face by face: the same roof height and every
+// face's area alike, within the rounding both builders carry.
+inline void expect_matches(const Polygon& polygon, const Skeleton& ours, const Skeleton& reference,
+                           const std::string& what) {
+  const double polygon_area = area(polygon);
+  // Far from the origin the input coordinates themselves carry an ulp of the largest coordinate
+  // (2e-9 at 1e7), and both builders round their nodes to it: times may differ by a few such
+  // ulps and face areas by a few ulps times the face's perimeter, beyond the relative tolerances.
+  double far = 0;
+  for (Vec2 v : polygon.outer) far = std::max({far, std::abs(v.x), std::abs(v.y)});
+  const double ulp = 4 * std::numeric_limits<double>::epsilon() * far;
+  EXPECT_NEAR(ours.max_time(), reference.max_time(), 1e-9 * reference.max_time() + ulp) << what;
+  ASSERT_EQ(ours.contour_count, reference.contour_count) << what;
+  int wrong_faces = 0;
+  for (std::uint32_t e = 0; e < ours.contour_count; ++e) {
+    const double a = signed_area(face_ring(ours, e));
+    const double b = signed_area(face_ring(reference, e));
+    const Ring ring = face_ring(reference, e);
+    double face_perimeter = 0;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      face_perimeter += length(ring[(k + 1) % ring.size()] - ring[k]);
+    }
+    if (!(std::abs(a - b) <= 1e-7 * polygon_area + ulp * face_perimeter)) {
+      if (++wrong_faces <= 3) {
+        ADD_FAILURE() << what << " face " << e << ": area " << a << ", CGAL " << b;
+      }
+    }
+  }
+  EXPECT_EQ(wrong_faces, 0) << what;
 }
 
 }  // namespace insula::kernel::testing_skeleton
