@@ -157,6 +157,9 @@ MeshAssembler::MaterialList& MeshAssembler::list_of(std::uint32_t material) {
 // Where the weld merges vertices (float32_weld.h) the face's triangles and corners come from it.
 void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face, MaterialList& list) {
   const kernel::Vec3 newell = kernel::face_normal(mesh, face);
+  // A face whose corners all lie on one line has no area and no normal to shade it with (glTF
+  // requires unit normals): it is not written.
+  if (kernel::normalized(newell) == kernel::Vec3{}) return;
   triangles_.clear();
   if (weld_.active()) {
     add_triangles(mesh, weld_.triangles(face), newell, list.indices);

@@ -491,6 +491,41 @@ TEST(GltfWriter, NormalsAreFlatAndUnit) {
   }
 }
 
+// A face whose corners lie on one line (a zero-width strip a setback cut from a round outline)
+// has no normal: it is not written, and every written normal is a unit vector (the Khronos
+// validator's ACCESSOR_VECTOR3_NON_UNIT).
+TEST(GltfWriter, FacesWithoutAreaAreNotWritten) {
+  kernel::Mesh mesh;
+  const std::uint32_t a = mesh.add_vertex({0, 0, 0});
+  const std::uint32_t b = mesh.add_vertex({4, 0, 0});
+  const std::uint32_t c = mesh.add_vertex({4, 3, 0});
+  const std::uint32_t d = mesh.add_vertex({0, 3, 0});
+  const std::uint32_t e = mesh.add_vertex({8, 0, 0});
+  const std::uint32_t f = mesh.add_vertex({12, 0, 0});
+  // 0.1 mm from c: both round to one written position, so the part's faces are contracted one
+  // by one (the path a collinear face took from a real round outline).
+  const std::uint32_t g = mesh.add_vertex({4.0001, 3, 0});
+  mesh.add_face({a, b, c, d}, {});
+  mesh.add_face({b, e, f}, {});  // three corners on the x axis
+  mesh.add_face({b, g, c}, {});  // a sliver that the rounding collapses
+  shape::Scene scene;
+  shape::Building building;
+  building.id = "strip";
+  building.parts.push_back({"paving", shape::PartKind::kBuildingPart, {}, std::move(mesh)});
+  scene.buildings.push_back(std::move(building));
+  for (const GltfOptions& options : {GltfOptions{}, kElements}) {
+    const tinygltf::Model model = load_glb(glb_bytes(scene, options));
+    std::size_t triangles = 0;
+    for (const testing::PlacedPrimitive& p : testing::placed_primitives(model)) {
+      triangles += p.indices.size() / 3;
+      for (const auto& n : p.normals) EXPECT_NEAR(std::hypot(n[0], n[1], n[2]), 1.0, 1e-6);
+      // Only the collinear face reaches past x = 4.5.
+      for (const auto& q : p.positions) EXPECT_LT(q[0], 4.5);
+    }
+    EXPECT_GE(triangles, 2U);  // the quad's (and, where float32 tells g from c, the sliver's)
+  }
+}
+
 // A building whose parts are: its walls, a 1 m cube placed twice (turned, scaled, mirrored),
 // a further wall, and the cube sheared (no TRS can hold it).
 shape::Scene instanced_scene() {
