@@ -87,6 +87,7 @@ class FormReader {
     read_roof();
     read_heights();
     if (total_height_) split_total_height(roof_rise);
+    limit_default_roof();
     read_colours();
     return form_;
   }
@@ -205,6 +206,7 @@ class FormReader {
     const std::optional<double> degrees = levels_of(*value);
     if (degrees && *degrees > 0 && *degrees < 89) {
       form_.pitch_deg = *degrees;
+      pitch_from_data_ = true;
     } else {
       warn("MAS006", {key, "=", quoted(*value), " is not an angle in (0, 89) degrees; ignored"});
     }
@@ -296,6 +298,12 @@ class FormReader {
     return true;
   }
 
+  void limit_default_roof() {
+    if (form_.roof == "flat" || form_.roof_height || options_.pitch_given || pitch_from_data_)
+      return;
+    form_.roof_height_limit = form_.eave - form_.base;
+  }
+
   void set_eave(double eave, ValueSource source) {
     form_.eave = eave;
     form_.height_source = source;
@@ -351,6 +359,7 @@ class FormReader {
   std::optional<double> total_height_;
   bool overture_ = false;  // Overture's names for the S3DB tags (kOvertureNames)
   bool roof_height_given_ = false;
+  bool pitch_from_data_ = false;
   std::optional<std::size_t> height_warning_;  // the last MAS002/MAS007 of this feature
 };
 

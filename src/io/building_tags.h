@@ -55,6 +55,11 @@ struct BuildingForm {
   // The roof's rise above the eave when the data gives it (roof:height, roof:levels) or a total
   // height fixed it; unset: the roof follows from pitch_deg.
   std::optional<double> roof_height;
+  // Unset roof_height and a pitch nobody gave (neither the data nor --pitch): the most the roof
+  // may rise, the walls' height. S3DB's total height gives such a roof at most half the building
+  // (the split); a register's height is the walls', and a default pitch over a large footprint
+  // would dwarf them.
+  std::optional<double> roof_height_limit;
   std::string roof = "flat";  // kernel roof name (kernel::roof_type_from_name)
   double pitch_deg = 30;
   std::optional<double> direction_deg;  // compass azimuth the main roof face looks toward

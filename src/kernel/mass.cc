@@ -22,6 +22,7 @@ RoofSpec roof_spec(const MassSpec& spec) {
   r.shed_edge = spec.shed_edge;
   r.fascia = spec.fascia;
   r.height = spec.height;
+  r.height_limit = spec.height_limit;
   r.direction_deg = spec.direction_deg;
   r.orientation = spec.orientation;
   r.party_walls = spec.party_walls;

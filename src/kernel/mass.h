@@ -28,6 +28,7 @@ struct MassSpec {
   int shed_edge = -1;
   double fascia = 0.25;
   std::optional<double> height = std::nullopt;             // see RoofSpec::height
+  std::optional<double> height_limit = std::nullopt;       // see RoofSpec::height_limit
   std::optional<double> direction_deg = std::nullopt;      // see RoofSpec::direction_deg
   RidgeOrientation orientation = RidgeOrientation::kAuto;  // see RoofSpec::orientation
   std::vector<PartyWall> party_walls;                      // see RoofSpec::party_walls

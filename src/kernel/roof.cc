@@ -8,6 +8,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <span>
 #include <utility>
@@ -474,12 +475,16 @@ void plan_shed(RoofPlan& plan, const RoofSpec& spec) {
       if (dot(plan.shed_normal, c.points[k] - plan.shed_origin) < 0) plan.shed_origin = c.points[k];
     }
   }
-  if (spec.height) {
+  if (spec.height || spec.height_limit) {
     double far = 0;
     for (std::uint32_t k = 0; k < c.ring_starts[1]; ++k) {
       far = std::max(far, roof_detail::shed_distance(plan, c.points[k]));
     }
-    if (far > 0) plan.slope = *spec.height / far;
+    if (far > 0 && spec.height) {
+      plan.slope = *spec.height / far;
+    } else if (far > 0 && plan.slope * far > *spec.height_limit) {
+      plan.slope = *spec.height_limit / far;
+    }
   }
 }
 
@@ -540,6 +545,8 @@ bool spec_valid(const RoofSpec& spec, std::string& why) {
     why = "fascia must be > 0 m";
   } else if (spec.height && !(*spec.height > 0 && *spec.height < 1e4)) {
     why = "roof height must be in (0, 10000) m";
+  } else if (spec.height_limit && !(*spec.height_limit > 0 && *spec.height_limit < 1e4)) {
+    why = "roof height limit must be in (0, 10000) m";
   } else if (spec.direction_deg && !std::isfinite(*spec.direction_deg)) {
     why = "roof direction must be a finite angle";
   } else {
@@ -765,6 +772,17 @@ bool plan_roof(const Polygon& footprint, const RoofSpec& spec, RoofPlan& plan) {
 
 }  // namespace roof_detail
 
+namespace {
+// The highest point of the roof emitted from `first_vertex` on.
+double roof_top(const Mesh& mesh, std::size_t first_vertex) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
+    top = std::max(top, mesh.positions()[v].z);
+  }
+  return top;
+}
+}  // namespace
+
 RoofBuild add_roof(const Polygon& footprint, const RoofSpec& spec, double eave_z, Mesh& mesh,
                    std::uint32_t first_face_id) {
   RoofBuild build;
@@ -780,9 +798,13 @@ RoofBuild add_roof(const Polygon& footprint, const RoofSpec& spec, double eave_z
   }
   const std::size_t first_vertex = mesh.vertex_count();
   roof_detail::emit_roof(plan, eave_z, mesh, build);
-  if (spec.height && plan.type != RoofType::kFlat && plan.type != RoofType::kShed) {
+  if (plan.type != RoofType::kFlat && plan.type != RoofType::kShed) {
     // A shed's slope is set from the height in planning, keeping its fascia's thickness.
-    scale_roof_height(mesh, eave_z, *spec.height, first_vertex);
+    if (spec.height) {
+      scale_roof_height(mesh, eave_z, *spec.height, first_vertex);
+    } else if (spec.height_limit && roof_top(mesh, first_vertex) - eave_z > *spec.height_limit) {
+      scale_roof_height(mesh, eave_z, *spec.height_limit, first_vertex);
+    }
   }
   build.status = plan.status;
   build.built = plan.type;

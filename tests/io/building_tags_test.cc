@@ -202,6 +202,32 @@ TEST(BuildingForm, RegisterAttributes) {
   EXPECT_EQ(warnings[0].text, "Floors='0' is not a level count above 0; using 10 m");
 }
 
+// A register's roof at a pitch nobody gave rises at most as high as its walls (docs/cli.md); a
+// pitch from the data or the command line, a roof height or a flat roof is left as it is.
+TEST(BuildingForm, DefaultPitchRoofRisesAtMostTheWallHeight) {
+  BuildingTagOptions options;
+  options.height_attr = "hoehe";
+  const BuildingForm walls = form_of({{"hoehe", 8.5}}, options);
+  ASSERT_TRUE(walls.roof_height_limit);
+  EXPECT_DOUBLE_EQ(*walls.roof_height_limit, 8.5);
+  EXPECT_FALSE(form_of({{"hoehe", 8.5}, {"pitch", 40.0}}, options).roof_height_limit);
+  BuildingTagOptions pitched = options;
+  pitched.pitch_deg = 45;
+  pitched.pitch_given = true;
+  EXPECT_FALSE(form_of({{"hoehe", 8.5}}, pitched).roof_height_limit);
+  BuildingTagOptions flat = options;
+  flat.default_roof = "flat";
+  EXPECT_FALSE(form_of({{"hoehe", 8.5}}, flat).roof_height_limit);
+  // S3DB: a total height already split the building; a roof height given is kept.
+  EXPECT_FALSE(
+      form_of({{"building", "yes"}, {"height", "12"}, {"roof:shape", "hipped"}}).roof_height_limit);
+  EXPECT_FALSE(form_of({{"building", "yes"},
+                        {"building:levels", "2"},
+                        {"roof:shape", "hipped"},
+                        {"roof:height", "3"}})
+                   .roof_height_limit);
+}
+
 TEST(BuildingForm, RoofTallerThanTheBuildingIsCapped) {
   std::vector<TagWarning> warnings;
   const BuildingForm form = form_of(

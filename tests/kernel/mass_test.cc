@@ -236,6 +236,29 @@ TEST(Mass, PartyWallEdgesDoNotOverhang) {
   }
 }
 
+// A default pitch over a 120 x 100 m footprint would raise a hip 29 m (35 degrees) above 6 m of
+// walls; with the walls' height as the limit every roof type tops out at 12 m over the walls and
+// the shell stays closed. A small house's roof, below the limit, is untouched.
+TEST(Mass, RoofHeightLimitLowersOnlyRoofsAboveIt) {
+  const double H = 6;
+  for (RoofType roof : kAllRoofs) {
+    if (roof == RoofType::kFlat) continue;
+    for (const double o : {0.0, 0.5}) {
+      MassSpec s = spec(roof, o);
+      s.height_limit = H;
+      const MassResult r = build_mass(rectangle(100, 120), s);
+      const std::string name = std::string(roof_type_name(roof)) + (o > 0 ? " overhang" : "");
+      expect_shell(r, 2, name);
+      // A shed's high edge is at the limit over its wall; its overhang climbs on a little.
+      EXPECT_LE(r.mesh.bounds().max.z, 2 * H + (roof == RoofType::kShed ? o : 0) + 1e-9) << name;
+      EXPECT_GT(r.mesh.bounds().max.z, H + 1) << name;
+      const MassResult small = build_mass(rectangle(8, 10), s);
+      const MassResult free = build_mass(rectangle(8, 10), spec(roof, o));
+      EXPECT_DOUBLE_EQ(small.mesh.bounds().max.z, free.mesh.bounds().max.z) << name;
+    }
+  }
+}
+
 TEST(Mass, FlatAndShedVolumes) {
   const double w = 8, l = 14, H = 6;
   MassResult flat = build_mass(rectangle(w, l), spec(RoofType::kFlat));

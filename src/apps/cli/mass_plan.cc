@@ -51,6 +51,7 @@ kernel::MassSpec mass_spec(const MassOptions& options, const io::BuildingForm& f
   // read_building_form names only kernel roofs (unknown names are its MAS003 warnings).
   spec.roof = kernel::roof_type_from_name(form.roof).value_or(kernel::RoofType::kHip);
   spec.height = form.roof_height;
+  spec.height_limit = form.roof_height_limit;
   spec.direction_deg = form.direction_deg;
   spec.orientation =
       form.orientation == io::RoofOrientation::kAlong    ? kernel::RidgeOrientation::kAlong
