@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <variant>
@@ -20,6 +22,16 @@ std::string property_id(std::string_view name, std::set<std::string>& taken) {
   for (int n = 2; taken.contains(unique); ++n) unique = id + "_" + std::to_string(n);
   taken.insert(unique);
   return unique;
+}
+
+// A number none of `values` is, for noData: the lowest double, or the next one up past the
+// (unlikely) values that take it.
+double unused_number(const std::vector<double>& values) {
+  double candidate = std::numeric_limits<double>::lowest();
+  while (std::find(values.begin(), values.end(), candidate) != values.end()) {
+    candidate = std::nextafter(candidate, 0.0);
+  }
+  return candidate;
 }
 
 }  // namespace
@@ -142,9 +154,13 @@ void PartTable::find_columns(const shape::Scene& scene) {
   std::set<std::string> taken{"kind", "part_name"};
   columns_.push_back({"part_name", "", Type::kString});
   columns_.push_back({"kind", "", Type::kString});
+  // A column of numbers stays numeric where some parts lack it (a register's height column with
+  // empty records): those rows get the column's noData. It was text, so a tile with one gap had
+  // STRING heights and its neighbours SCALAR ones, and styling by number broke. Booleans have no
+  // noData in 3D Metadata: one missing makes the column text.
   for (const auto& [key, s] : seen) {
     Type type = Type::kString;
-    if (s.count == rows_ && s.numbers) type = Type::kNumber;
+    if (s.count > 0 && s.numbers) type = Type::kNumber;
     if (s.count == rows_ && s.booleans) type = Type::kBoolean;
     columns_.push_back({property_id(key, taken), key, type, s.count < rows_});
   }
@@ -231,7 +247,8 @@ void PartTable::add_row(const shape::Part& part, std::size_t index) {
     }
     switch (column.type) {
       case Type::kNumber:
-        column.numbers.push_back(std::get<double>(*value));
+        column.numbers.push_back(value != nullptr ? std::get<double>(*value)
+                                                  : std::numeric_limits<double>::quiet_NaN());
         break;
       case Type::kBoolean:
         column.booleans.push_back(std::get<bool>(*value));
@@ -286,7 +303,9 @@ void PartTable::write_data(Buffers& buffers) {
     std::string& values = buffers.data(column.values_view);
     switch (column.type) {
       case Type::kNumber:
-        for (double v : column.numbers) append_value(values, v);
+        if (column.optional) column.no_data_number = unused_number(column.numbers);
+        for (double v : column.numbers)
+          append_value(values, std::isnan(v) ? column.no_data_number : v);
         break;
       case Type::kBoolean: {
         // A bitstream, least significant bit first (3D Metadata, "Booleans").
@@ -338,6 +357,8 @@ void PartTable::write_class_property(JsonStream& json, const Column& column) con
   if (!column.name.empty()) json.key("name").string(column.name);
   if (text && column.optional) {
     json.key("noData").string(coded ? std::string_view(column.no_data) : std::string_view());
+  } else if (column.type == Type::kNumber && column.optional) {
+    json.key("noData").number(column.no_data_number);
   } else {
     json.key("required").boolean(true);
   }

@@ -65,14 +65,15 @@ class PartTable {
     std::string id;    // the property id
     std::string name;  // the attribute's own name (empty for name and kind)
     Type type = Type::kString;
-    bool optional = false;  // some part lacks it (text columns only)
+    bool optional = false;  // some part lacks it (text and number columns)
     // kString: each row's value as an index into `values` (its distinct texts in order of first
     // use) or kAbsent; a city repeats few texts over many rows.
     std::vector<std::uint32_t> codes{};
     std::vector<std::string> values{};
     // While filling: the codes of `values`, open addressing by text hash (kAbsent: free).
     std::vector<std::uint32_t> index_of{};
-    std::vector<double> numbers{};  // kNumber
+    std::vector<double> numbers{};  // kNumber; NaN where the part lacks it
+    double no_data_number = 0;      // kNumber, optional: the value written where a part lacks it
     std::vector<bool> booleans{};   // kBoolean
     // Dictionary coding of a text column (empty: written as STRING): the enum names in order,
     // and each value's enum code.

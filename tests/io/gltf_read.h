@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -305,6 +306,18 @@ inline std::vector<std::string> table_column(const tinygltf::Model& model,
       std::memcpy(&from, offsets + 4 * row, 4);
       std::memcpy(&to, offsets + 4 * row + 4, 4);
       texts.emplace_back(reinterpret_cast<const char*>(values) + from, to - from);
+    }
+    return texts;
+  }
+  if (property["type"] == "SCALAR") {  // FLOAT64, as %g writes it; "" where it is noData
+    const unsigned char* values = bytes("values");
+    for (std::size_t row = 0; row < rows; ++row) {
+      double value = 0;
+      std::memcpy(&value, values + 8 * row, 8);
+      char text[32];
+      std::snprintf(text, sizeof text, "%g", value);
+      texts.emplace_back(
+          property.contains("noData") && value == property["noData"].get<double>() ? "" : text);
     }
     return texts;
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -153,9 +154,12 @@ TEST(GltfWriter, PartsAreFeaturesWithAPropertyTable) {
   // Three rows: strings cost less than enums here.
   const nlohmann::json& properties = metadata["schema"]["classes"]["part"]["properties"];
   EXPECT_EQ(properties["part_name"]["type"], "STRING");
-  // Only "main" has levels: a text column with "" for the others.
-  EXPECT_EQ(properties["levels"]["type"], "STRING");
-  EXPECT_EQ(properties["levels"]["noData"], "");
+  // Only "main" has levels: a number column with noData for the others (not text: a tile with
+  // one gap in a register's heights had STRING heights where its neighbours had SCALAR ones).
+  EXPECT_EQ(properties["levels"]["type"], "SCALAR");
+  EXPECT_EQ(properties["levels"]["componentType"], "FLOAT64");
+  EXPECT_EQ(properties["levels"]["noData"], std::numeric_limits<double>::lowest());
+  EXPECT_FALSE(properties["levels"].contains("required"));
   EXPECT_EQ(table_column(model, json, "part_name"),
             (std::vector<std::string>{"main", "wing", "storey 0"}));
   EXPECT_EQ(table_column(model, json, "kind"),
@@ -264,17 +268,21 @@ TEST(GltfWriter, InheritedAttributesFillWhatAPartLacks) {
   EXPECT_EQ(table_column(model, json, "roof"),
             (std::vector<std::string>{"hip", "flat", "hip", "hip", ""}));
   EXPECT_EQ(table_column(model, json, "height"),
-            (std::vector<std::string>{"12.5", "12.5", "12.5", "12.5", "(none)"}));
+            (std::vector<std::string>{"12.5", "12.5", "12.5", "12.5", ""}));
   EXPECT_EQ(table_column(model, json, "colour"),
             (std::vector<std::string>{"", "", "", "#fff", ""}));
-  EXPECT_EQ(properties["height"]["type"], "ENUM");  // text: "loose" lacks it
+  // A number column still: "loose" lacks it and gets the noData value.
+  EXPECT_EQ(properties["height"]["type"], "SCALAR");
+  EXPECT_TRUE(properties["height"].contains("noData"));
   EXPECT_FALSE(properties.contains("note"));
-  // Without the loose part every row has a height: a number column.
+  // Without the loose part every row has a height: a required number column.
   scene.buildings[0].parts.pop_back();
   const std::string whole = glb_bytes(scene);
-  EXPECT_EQ(json_of(whole)["extensions"]["EXT_structural_metadata"]["schema"]["classes"]["part"]
-                          ["properties"]["height"]["type"],
-            "SCALAR");
+  const nlohmann::json whole_json = json_of(whole);
+  const nlohmann::json& height = whole_json["extensions"]["EXT_structural_metadata"]["schema"]
+                                           ["classes"]["part"]["properties"]["height"];
+  EXPECT_EQ(height["type"], "SCALAR");
+  EXPECT_EQ(height["required"], true);
   // The same as parts carrying copies of what they inherit.
   shape::Scene copied = scene;
   for (shape::Part& part : copied.buildings[0].parts) {
