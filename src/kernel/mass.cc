@@ -206,18 +206,37 @@ MassResult build_mass(const Polygon& footprint, const MassSpec& spec) {
   const auto attempt = [&](const RoofSpec& r) {
     return spec.walls ? try_build(clean, spec, r) : roof_on_posts(clean, spec, r);
   };
-  MassResult result = attempt(roof);
-  if (result.status != MassStatus::kFailed || roof.overhang <= 0) return result;
   // A large overhang on a steep roof can bring the soffit (or a roof on posts' underside) down to
   // the ground: drop the overhang.
-  RoofSpec flush = roof;
-  flush.overhang = 0;
-  MassResult retry = attempt(flush);
-  if (retry.status == MassStatus::kFailed) return result;
-  retry.status = MassStatus::kFallback;
-  retry.message = result.message + "; built without overhang" +
-                  (retry.message.empty() ? "" : "; " + retry.message);
-  return retry;
+  const auto attempt_flush_if_needed = [&](const RoofSpec& r) {
+    MassResult result = attempt(r);
+    if (result.status != MassStatus::kFailed || r.overhang <= 0) return result;
+    RoofSpec flush = r;
+    flush.overhang = 0;
+    MassResult retry = attempt(flush);
+    if (retry.status == MassStatus::kFailed) return result;
+    retry.status = MassStatus::kFallback;
+    retry.message = result.message + "; built without overhang" +
+                    (retry.message.empty() ? "" : "; " + retry.message);
+    return retry;
+  };
+  MassResult result = attempt_flush_if_needed(roof);
+  if (result.status != MassStatus::kFailed) return result;
+  // A shape that cannot close over this outline (a round roof over a near-rectangle with a nearly
+  // collinear extra corner, from Philadelphia's and IGN's registers) gives the building a hip
+  // roof, then a flat one, rather than no building at all.
+  for (const RoofType other : {RoofType::kHip, RoofType::kFlat}) {
+    if (other == roof.type) continue;
+    RoofSpec plain = roof;
+    plain.type = other;
+    MassResult retry = attempt_flush_if_needed(plain);
+    if (retry.status == MassStatus::kFailed) continue;
+    retry.status = MassStatus::kFallback;
+    retry.message = result.message + "; built with a " + std::string(roof_type_name(other)) +
+                    " roof" + (retry.message.empty() ? "" : "; " + retry.message);
+    return retry;
+  }
+  return result;
 }
 
 }  // namespace insula::kernel

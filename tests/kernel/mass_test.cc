@@ -259,6 +259,18 @@ TEST(Mass, RoofHeightLimitLowersOnlyRoofsAboveIt) {
   }
 }
 
+// A round roof over a 54 x 10.5 m outline whose long wall bends 0.2 m inward at x = 23 (as
+// surveyed walls do) left the barrel's first band short of that corner, and the building open.
+// Such a shape gives a hip roof (then a flat one) rather than no building.
+TEST(Mass, RoofThatCannotCloseFallsBackToHip) {
+  const Polygon dented{{{0, 0}, {23, 0.2}, {54, 0}, {54, 10.5}, {0, 10.5}}, {}};
+  const MassResult r = build_mass(dented, spec(RoofType::kRound));
+  expect_shell(r, 2, "dented round");
+  EXPECT_EQ(r.status, MassStatus::kFallback);
+  EXPECT_EQ(r.roof, RoofType::kHip);
+  EXPECT_NE(r.message.find("built with a hip roof"), std::string::npos) << r.message;
+}
+
 TEST(Mass, FlatAndShedVolumes) {
   const double w = 8, l = 14, H = 6;
   MassResult flat = build_mass(rectangle(w, l), spec(RoofType::kFlat));
