@@ -228,6 +228,18 @@ bool plan_round(RoofPlan& plan, const RoofSpec& spec, const Contour& core) {
   if (!quad_frame(core, spec, frame)) return false;
   constexpr int kStrips = 6;
   const double w = frame.half_width;
+  // The first strip is steep and narrow (3.4 % of the half width): a corner the core dropped that
+  // lies further inside than half of it is not reached by the strip's lower edge, and the roof
+  // would leave it open (a 54 x 10.5 m outline dented 0.2 m). Such an outline is no quadrilateral
+  // for a barrel.
+  const double first_strip = w * (1 - std::cos(kPi / 2 / kStrips));
+  for (const Vec2& p : plan.footprint.points) {
+    double inside = 1e300;
+    for (std::uint32_t e = 0; e < core.size(); ++e) {
+      inside = std::min(inside, distance_function(core, e).at(p));
+    }
+    if (inside > first_strip / 2) return false;
+  }
   std::vector<Piece> profile;
   for (int k = 0; k < kStrips; ++k) {
     const double a0 = kPi / 2 * k / kStrips, a1 = kPi / 2 * (k + 1) / kStrips;
