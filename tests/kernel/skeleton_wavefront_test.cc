@@ -150,9 +150,10 @@ TEST(WavefrontSkeleton, FootprintShapesAtAnyAngleMatchCgal) {
       check(polygon, name + " #" + std::to_string(k), tally);
     }
     tally.print(name.c_str());
-    // Declines are CGAL's work. The exact shapes' symmetric arms (plus, comb) have nearly
-    // simultaneous events the wavefront leaves to CGAL: 30 of 40 answered when this was written.
-    EXPECT_GE(tally.compared, 28) << name;
+    // Declines are CGAL's work. The exact shapes (no noise: 8 of the 40) have split events at the
+    // time of other events, which the wavefront leaves to CGAL; 26 to 40 answered when this was
+    // written.
+    EXPECT_GE(tally.compared, 24) << name;
   }
 }
 
@@ -253,6 +254,34 @@ TEST(WavefrontSkeleton, CourtyardsMatchCgal) {
   }
   tally.print("courtyards");
   EXPECT_GE(tally.compared, 45);  // 53 of 80 when this was written
+}
+
+// A union of grid cells turned to an angle: many events at one time, split events among them.
+// Taken in the order rounding gave, they left a skeleton that passed every check of the builder
+// and yet was not CGAL's: the faces of two parallel edges traded 5 m2 of a 257 m2 outline. Such
+// ties go to CGAL.
+TEST(WavefrontSkeleton, SimultaneousSplitEventsMatchCgalOrDecline) {
+  const Polygon polygon{{{-11.584045299, -11.102025137},
+                         {-18.245260381, -4.151597958},
+                         {-20.562069441, -6.372002985},
+                         {-22.782474469, -4.055193925},
+                         {-15.832047289, 2.606021157},
+                         {-22.493262371, 9.556448337},
+                         {-34.077307671, -1.545576800},
+                         {-27.416092588, -8.496003980},
+                         {-25.099283529, -6.275598953},
+                         {-22.878878501, -8.592408012},
+                         {-25.195687561, -10.812813040},
+                         {-18.534472479, -17.763240219}},
+                        {}};
+  const auto reference = general_straight_skeleton(polygon);
+  ASSERT_TRUE(reference);
+  if (const auto ours = wavefront_straight_skeleton(polygon)) {
+    expect_matches(polygon, *ours, *reference, "turned grid union");
+  }
+  const auto chosen = interior_straight_skeleton(polygon);
+  ASSERT_TRUE(chosen);
+  expect_matches(polygon, *chosen, *reference, "turned grid union, any builder");
 }
 
 // interior_straight_skeleton answers concave outlines at any angle (through the wavefront, or
