@@ -44,13 +44,17 @@ class VertexPool {
   void begin_part(std::size_t vertices);
   // The point's number, the same for the same point within the part. `hash`: its QuantisedHash.
   std::uint32_t add(const Quantised& q, std::uint64_t hash);
+  // Forgets the points numbered `size` and later: the last the part added, which no face kept
+  // (they collapsed on the grid). The part's table is then as it was when the list had `size`.
+  void truncate(std::size_t size);
   // Merges the numbers of every point into its first (the list keeps the first of each point).
   // Returns the new number of each old one, or an empty list when no point had two.
   const std::vector<std::uint32_t>& merge();
   void reserve(std::size_t n);
   void clear();
   const std::vector<Quantised>& vertices() const { return vertices_; }
-  // The least and the greatest of the points' coordinates, axis by axis (when there are points).
+  // The least and the greatest of the points' coordinates, axis by axis (when there are points),
+  // found by merge().
   const Quantised& low() const { return low_; }
   const Quantised& high() const { return high_; }
 
@@ -173,6 +177,7 @@ class CityObjects {
   Quantised quantise(kernel::Vec3 local) const;
   void collect_surfaces(const kernel::Mesh& mesh);
   void pool_vertices(const kernel::Mesh& mesh);
+  void unpool_since(std::span<const std::uint32_t> loop, std::size_t pooled);
   std::uint32_t number_locally(std::span<const std::uint32_t> corners) const;
   bool is_solid(std::size_t first, std::size_t end) const;
   bool numbered_as_last(std::size_t first, std::size_t end, std::size_t corners_begin) const;
