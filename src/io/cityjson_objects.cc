@@ -649,20 +649,25 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
     ids_.prefetch(part_ids_[p]);
   }
   const std::size_t first_child = objects_.size();
-  for (const shape::Part& part : building.parts) {
+  written_parts_.clear();
+  for (std::size_t p = 0; p < building.parts.size(); ++p) {
+    const shape::Part& part = building.parts[p];
     Object object{{}, {}, object_type(part.kind), attributes_of(part.attributes), rings_.size()};
     std::optional<kernel::Mesh> placed;  // (an empty Mesh would allocate)
     const kernel::Mesh& mesh = part_mesh(part, placed);
     pool_vertices(mesh);
     collect_surfaces(mesh);
     object.count = rings_.size() - object.first;
+    if (object.count == 0) continue;
     object.solid = is_solid(object.first, rings_.size());
     objects_.push_back(object);
+    written_parts_.push_back(p);
   }
   const std::string_view id = unique_id(id_base);
   const bool renamed = id.size() != id_base.size();  // "-2" or a later suffix added
-  for (std::size_t p = 0; p < building.parts.size(); ++p) {
-    Object& object = objects_[first_child + p];
+  for (std::size_t c = 0; c < written_parts_.size(); ++c) {
+    const std::size_t p = written_parts_[c];
+    Object& object = objects_[first_child + c];
     if (renamed) part_id_base(part_ids_[p], id, building.parts[p], p);
     object.id = unique_part_id(part_ids_[p]);
     object.parent = id;

@@ -169,6 +169,29 @@ TEST(CityJsonWriter, ListsOnlyVerticesABoundaryUses) {
             city["transform"]["translate"][0].get<double>() + 1);
 }
 
+// A part all of whose faces collapse on the grid is no city object: not a child of its building,
+// no id taken (a later part of the same name keeps its plain id). A building left with no part
+// stays, with its attributes, as a building with no parts does.
+TEST(CityJsonWriter, PartsWhoseFacesAllCollapseAreNoObjects) {
+  kernel::Mesh sliver;
+  sliver.add_polygon(std::vector<kernel::Vec3>{{5, 5, 0}, {6, 5, 0}, {6, 5.0002, 0}}, {});
+  const kernel::Mesh square = testing::prism({{0, 0}, {4, 0}, {4, 3}, {0, 3}}, 0, 3);
+  shape::Scene scene;
+  scene.buildings.push_back({"b",
+                             {},
+                             {{"lawn", shape::PartKind::kBuildingPart, {}, sliver},
+                              {"lawn", shape::PartKind::kBuildingPart, {}, square}}});
+  scene.buildings.push_back({"c",
+                             {{"name", std::string("nothing left")}},
+                             {{"lawn", shape::PartKind::kRoom, {}, sliver}}});
+  const json objects = written(scene)["CityObjects"];
+  ASSERT_EQ(objects.size(), 3U);
+  EXPECT_EQ(objects["b"]["children"], json::array({"b-lawn"}));
+  EXPECT_EQ(objects["b-lawn"]["geometry"][0]["type"], "Solid");
+  EXPECT_EQ(objects["c"]["attributes"]["name"], "nothing left");
+  EXPECT_FALSE(objects["c"].contains("children"));
+}
+
 TEST(CityJsonWriter, NonFiniteFacesAreSkipped) {
   kernel::Mesh mesh;
   mesh.add_polygon(std::vector<kernel::Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {});
