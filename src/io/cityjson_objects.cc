@@ -131,13 +131,22 @@ std::uint32_t VertexPool::add(const Quantised& q, std::uint64_t hash) {
     if (entry == kFreeNumber) {
       entry = static_cast<std::uint32_t>(vertices_.size());
       vertices_.push_back(q);
-      for (std::size_t k = 0; k < 3; ++k) {
-        low_[k] = std::min(low_[k], q[k]);
-        high_[k] = std::max(high_[k], q[k]);
-      }
       return entry;
     }
     if (same(vertices_[entry], q)) return entry;
+  }
+}
+
+// Linear probing: a slot freed in the reverse order the points were added leaves the table as it
+// was before they came (no later point probed past them).
+void VertexPool::truncate(std::size_t size) {
+  const std::size_t mask = part_slots_.size() - 1;
+  while (vertices_.size() > size) {
+    const auto last = static_cast<std::uint32_t>(vertices_.size() - 1);
+    std::size_t slot = QuantisedHash{}(vertices_.back()) & mask;
+    while (part_slots_[slot] != last) slot = (slot + 1) & mask;
+    part_slots_[slot] = kFreeNumber;
+    vertices_.pop_back();
   }
 }
 
@@ -177,7 +186,13 @@ const std::vector<std::uint32_t>& VertexPool::merge() {
     if (i + 2 * kAhead < n) __builtin_prefetch(&vertices_[i + 2 * kAhead]);
     const Quantised q = vertices_[i];
     const std::uint32_t number = this->number(q, QuantisedHash{}(q), next);
-    if (number == next) vertices_[next++] = q;
+    if (number == next) {
+      vertices_[next++] = q;
+      for (std::size_t k = 0; k < 3; ++k) {
+        low_[k] = std::min(low_[k], q[k]);
+        high_[k] = std::max(high_[k], q[k]);
+      }
+    }
     if (number != i && renumber_.empty()) {  // the first point seen before: numbers change
       renumber_.reserve(n);
       for (std::uint32_t j = 0; j < i; ++j) renumber_.push_back(j);
@@ -268,11 +283,13 @@ void CityObjects::pool_vertices(const kernel::Mesh& mesh) {
 }
 
 // After pool_vertices(mesh): appends the mesh's faces to rings_, each mesh vertex pooled once (at
-// its first use), however many faces use it.
+// its first use), however many faces use it. A face that collapses on the grid (fewer than three
+// distinct points) is dropped with the points it alone brought, so every point listed is used.
 void CityObjects::collect_surfaces(const kernel::Mesh& mesh) {
   std::vector<std::uint32_t>& indices = rings_.indices;
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const std::size_t begin = indices.size();
+    const std::size_t pooled = pool_.vertices().size();
     bool ok = true;
     for (std::uint32_t vertex : mesh.face(f)) {
       std::uint32_t& index = pool_index_[vertex];
@@ -286,11 +303,23 @@ void CityObjects::collect_surfaces(const kernel::Mesh& mesh) {
     while (indices.size() > begin + 1 && indices.back() == indices[begin]) indices.pop_back();
     if (!ok || indices.size() < begin + 3) {
       indices.resize(begin);
+      unpool_since(mesh.face(f), pooled);
       continue;
     }
     rings_.ends.push_back(indices.size());
     rings_.classes.push_back(mesh.tag(f).semantic);
   }
+}
+
+// Takes back from the pool the points numbered `pooled` and later, which the face `loop` brought:
+// its vertices go back to unpooled (a later face may bring them again).
+void CityObjects::unpool_since(std::span<const std::uint32_t> loop, std::size_t pooled) {
+  if (pool_.vertices().size() == pooled) return;
+  for (std::uint32_t vertex : loop) {
+    std::uint32_t& index = pool_index_[vertex];
+    if (index != kUnwritable && index != kUnset && index >= pooled) index = kUnset;
+  }
+  pool_.truncate(pooled);
 }
 
 // Numbers the distinct vertices of `corners` 0, 1, ... in first-use order into local_ (one
@@ -620,20 +649,25 @@ std::string CityObjects::add_building(const shape::Building& building, std::size
     ids_.prefetch(part_ids_[p]);
   }
   const std::size_t first_child = objects_.size();
-  for (const shape::Part& part : building.parts) {
+  written_parts_.clear();
+  for (std::size_t p = 0; p < building.parts.size(); ++p) {
+    const shape::Part& part = building.parts[p];
     Object object{{}, {}, object_type(part.kind), attributes_of(part.attributes), rings_.size()};
     std::optional<kernel::Mesh> placed;  // (an empty Mesh would allocate)
     const kernel::Mesh& mesh = part_mesh(part, placed);
     pool_vertices(mesh);
     collect_surfaces(mesh);
     object.count = rings_.size() - object.first;
+    if (object.count == 0) continue;
     object.solid = is_solid(object.first, rings_.size());
     objects_.push_back(object);
+    written_parts_.push_back(p);
   }
   const std::string_view id = unique_id(id_base);
   const bool renamed = id.size() != id_base.size();  // "-2" or a later suffix added
-  for (std::size_t p = 0; p < building.parts.size(); ++p) {
-    Object& object = objects_[first_child + p];
+  for (std::size_t c = 0; c < written_parts_.size(); ++c) {
+    const std::size_t p = written_parts_[c];
+    Object& object = objects_[first_child + c];
     if (renamed) part_id_base(part_ids_[p], id, building.parts[p], p);
     object.id = unique_part_id(part_ids_[p]);
     object.parent = id;

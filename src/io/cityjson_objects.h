@@ -44,13 +44,17 @@ class VertexPool {
   void begin_part(std::size_t vertices);
   // The point's number, the same for the same point within the part. `hash`: its QuantisedHash.
   std::uint32_t add(const Quantised& q, std::uint64_t hash);
+  // Forgets the points numbered `size` and later: the last the part added, which no face kept
+  // (they collapsed on the grid). The part's table is then as it was when the list had `size`.
+  void truncate(std::size_t size);
   // Merges the numbers of every point into its first (the list keeps the first of each point).
   // Returns the new number of each old one, or an empty list when no point had two.
   const std::vector<std::uint32_t>& merge();
   void reserve(std::size_t n);
   void clear();
   const std::vector<Quantised>& vertices() const { return vertices_; }
-  // The least and the greatest of the points' coordinates, axis by axis (when there are points).
+  // The least and the greatest of the points' coordinates, axis by axis (when there are points),
+  // found by merge().
   const Quantised& low() const { return low_; }
   const Quantised& high() const { return high_; }
 
@@ -121,7 +125,10 @@ class CityObjects {
   explicit CityObjects(kernel::Vec3 base) : base_(base) {}
 
   // Adds the building (`index`: its position, naming an unnamed building "building<index>") and
-  // its parts; returns the building's object id, unique among every id this object has given.
+  // its parts; returns the building's object id, unique among every id this object has given. A
+  // part none of whose faces is left on the grid is no object (no id, not among the children); a
+  // building all of whose parts are so stays, with its attributes and no children, like one
+  // with no parts.
   // Parts that are shared-mesh instances are expanded. The building's and its parts' attributes
   // are read again by write_objects(): they must outlive that call.
   std::string add_building(const shape::Building& building, std::size_t index);
@@ -173,6 +180,7 @@ class CityObjects {
   Quantised quantise(kernel::Vec3 local) const;
   void collect_surfaces(const kernel::Mesh& mesh);
   void pool_vertices(const kernel::Mesh& mesh);
+  void unpool_since(std::span<const std::uint32_t> loop, std::size_t pooled);
   std::uint32_t number_locally(std::span<const std::uint32_t> corners) const;
   bool is_solid(std::size_t first, std::size_t end) const;
   bool numbered_as_last(std::size_t first, std::size_t end, std::size_t corners_begin) const;
@@ -206,14 +214,15 @@ class CityObjects {
   std::size_t text_size_ = 2;  // text_size_estimate()
 
   // Scratch reused from part to part.
-  std::vector<std::string> part_ids_;      // a building's parts' ids before made unique
-  std::vector<std::uint32_t> pool_index_;  // mesh vertex -> pool vertex (kUnset, kUnwritable)
-  std::vector<std::uint64_t> hashes_;      // mesh vertex -> its quantised point's hash
-  std::vector<Quantised> points_;          // mesh vertex -> its quantised point
-  std::unique_ptr<char[]> scratch_;        // the text of a geometry's "boundaries" or "values", or
-  std::size_t scratch_size_ = 0;           // of the vertices
-  std::vector<std::string_view> types_;    // a geometry's surface types
-  std::vector<int> values_;                // its rings' positions in types_ (-1: none)
+  std::vector<std::string> part_ids_;       // a building's parts' ids before made unique
+  std::vector<std::size_t> written_parts_;  // a building's parts with a face left, by position
+  std::vector<std::uint32_t> pool_index_;   // mesh vertex -> pool vertex (kUnset, kUnwritable)
+  std::vector<std::uint64_t> hashes_;       // mesh vertex -> its quantised point's hash
+  std::vector<Quantised> points_;           // mesh vertex -> its quantised point
+  std::unique_ptr<char[]> scratch_;         // the text of a geometry's "boundaries" or "values", or
+  std::size_t scratch_size_ = 0;            // of the vertices
+  std::vector<std::string_view> types_;     // a geometry's surface types
+  std::vector<int> values_;                 // its rings' positions in types_ (-1: none)
   std::vector<std::string_view> surfaces_types_;  // the types whose "surfaces" text is kept
   std::string surfaces_text_;
   // The solid test's numbering of a part's vertices: pool vertex -> the test that numbered it (high

@@ -97,9 +97,10 @@ void MeshAssembler::begin_scope() {
   scope_begin_ = static_cast<std::uint32_t>(positions_.size());
 }
 
-void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::uint32_t feature,
+bool MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::uint32_t feature,
                         bool instance_frame) {
   part_ = &part;
+  part_triangles_ = false;
   instance_frame_ = instance_frame;
   uv_scale_ = uv_scale(part);
   // Vertices of different features are never one when features are written: each run of one
@@ -133,6 +134,7 @@ void MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
     spare_lists_.push_back(std::move(entry));
     return true;
   });
+  return part_triangles_;
 }
 
 // The list of `material`'s triangles, made (from one that served an earlier mesh when there is
@@ -160,6 +162,7 @@ void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face, Materia
   // A face whose corners all lie on one line has no area and no normal to shade it with (glTF
   // requires unit normals): it is not written.
   if (kernel::normalized(newell) == kernel::Vec3{}) return;
+  const std::size_t indices_before = list.indices.size();
   triangles_.clear();
   if (weld_.active()) {
     add_triangles(mesh, weld_.triangles(face), newell, list.indices);
@@ -170,6 +173,9 @@ void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face, Materia
     if (!triangulator_.triangulate(mesh, face, newell, triangles_)) return;
     add_corners(mesh, mesh.face(face), newell, list.indices);
   }
+  // A face that contracted away starts no run: a run counts a feature the primitive shows.
+  if (list.indices.size() == indices_before) return;
+  part_triangles_ = true;
   // The face's triangles belong to the part's feature.
   if (list.runs.empty() || list.runs.back().feature != feature_) {
     list.runs.push_back({feature_, list.indices.size()});

@@ -99,8 +99,11 @@ class MeshAssembler {
   void reserve(std::size_t vertices, std::size_t corners, std::size_t faces);
   // Adds the faces of `mesh`, each vertex carrying `feature` (when features are written). `mesh`
   // is `part`'s geometry where it stands, or with `instance_frame` the mesh `part` instances
-  // (before its placement; the part's uv map is then evaluated at placed positions).
-  void add(const kernel::Mesh& mesh, const shape::Part& part, std::uint32_t feature,
+  // (before its placement; the part's uv map is then evaluated at placed positions). Returns
+  // whether any triangle came of it: a part whose faces all collapse where they are written (on
+  // the quantization grid, or in float32) adds nothing, and its `feature` may be given to the
+  // next part.
+  bool add(const kernel::Mesh& mesh, const shape::Part& part, std::uint32_t feature,
            bool instance_frame);
   bool empty() const { return lists_.empty(); }
 
@@ -222,9 +225,10 @@ class MeshAssembler {
   bool instance_frame_ = false;
   std::vector<std::uint32_t> position_of_;  // by the part's vertex: its entry in positions_
   std::uint32_t part_serial_ = 0;           // counts the parts added (Position::part)
-  bool collapsed_ = false;  // two of the part's vertices at different places share a position
-  double uv_scale_ = 0;     // solid_geometry's texture size, 0: none
-  bool fit_uv_ = false;     // the face shows an image: UVs fit each face
+  bool collapsed_ = false;       // two of the part's vertices at different places share a position
+  bool part_triangles_ = false;  // some face of the part gave a triangle
+  double uv_scale_ = 0;          // solid_geometry's texture size, 0: none
+  bool fit_uv_ = false;          // the face shows an image: UVs fit each face
   std::uint32_t feature_ = 0;
 
   // Scratch reused from face to face.

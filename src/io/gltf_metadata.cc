@@ -96,10 +96,13 @@ void for_each_attribute(const shape::Part& part, Own&& own, Inherited&& inherite
 
 }  // namespace
 
-PartTable::PartTable(const shape::Scene& scene) {
-  find_columns(scene);
+PartTable::PartTable(const shape::Scene& scene, const std::vector<bool>& has_row) {
+  find_columns(scene, has_row);
+  std::size_t k = 0;  // the part's position in scene order
   for (const shape::Building& building : scene.buildings) {
-    for (std::size_t p = 0; p < building.parts.size(); ++p) add_row(building.parts[p], p);
+    for (std::size_t p = 0; p < building.parts.size(); ++p, ++k) {
+      if (has_row.empty() || has_row[k]) add_row(building.parts[p], p);
+    }
   }
   for (Column& column : columns_) {
     column.index_of = {};
@@ -108,7 +111,7 @@ PartTable::PartTable(const shape::Scene& scene) {
 }
 
 // The attribute columns and the type each can have.
-void PartTable::find_columns(const shape::Scene& scene) {
+void PartTable::find_columns(const shape::Scene& scene, const std::vector<bool>& has_row) {
   struct Seen {
     std::size_t count = 0;
     bool numbers = true;
@@ -126,8 +129,12 @@ void PartTable::find_columns(const shape::Scene& scene) {
   std::vector<Seen*> entries;
   const shape::AttributeMap* last = nullptr;
   std::size_t first = 0;
+  std::size_t k = 0;  // the part's position in scene order
   for (const shape::Building& building : scene.buildings) {
     for (const shape::Part& part : building.parts) {
+      const bool row = has_row.empty() || has_row[k];
+      ++k;
+      if (!row) continue;
       ++rows_;
       if (part.inherited && part.inherited.get() != last) {
         last = part.inherited.get();

@@ -50,7 +50,9 @@ std::string_view kind_name(shape::PartKind kind);
 
 class PartTable {
  public:
-  explicit PartTable(const shape::Scene& scene);
+  // `has_row`: for each part in scene order, whether it has a row (empty: every part has one). A
+  // writer leaves out the parts it writes no triangle of, so no row is one no vertex points at.
+  explicit PartTable(const shape::Scene& scene, const std::vector<bool>& has_row = {});
 
   std::size_t rows() const { return rows_; }
   // Appends the columns to views of their own.
@@ -83,7 +85,7 @@ class PartTable {
     std::uint32_t values_view = 0;
     std::uint32_t offsets_view = 0;  // STRING
   };
-  void find_columns(const shape::Scene& scene);
+  void find_columns(const shape::Scene& scene, const std::vector<bool>& has_row);
   void add_row(const shape::Part& part, std::size_t index);
   std::size_t inherited_row(const shape::AttributeMap& map);
   static std::uint32_t intern(Column& column, std::string_view text);

@@ -97,6 +97,13 @@ struct ChildNode {
   std::optional<InstanceGroup> instances;
 };
 
+// A part that instances a shared mesh, and its row in the parts' table.
+struct PlacedInstance {
+  std::size_t part = 0;
+  std::int32_t mesh = -1;
+  std::uint32_t row = 0;
+};
+
 struct BuildingNode {
   std::int32_t mesh = -1;
   std::optional<Affine> placement;  // the dequantization of its mesh
@@ -126,8 +133,7 @@ class Builder {
  private:
   void reserve_views();
   void add_images();
-  BuildingNode by_building(const shape::Building& building, std::size_t index,
-                           std::size_t first_row);
+  BuildingNode by_building(const shape::Building& building, std::size_t index);
   BuildingNode by_element(const shape::Building& building);
   void reserve_assembler(const shape::Building& building);
   // The mesh a part instances (added the first time), or -1 when none of its faces has area.
@@ -137,9 +143,9 @@ class Builder {
   gltf::MeshOptions mesh_options(bool with_features, bool quantize) const;
   InstanceGroup add_instance_group(const std::vector<gltf::Trs>& placed,
                                    const std::vector<float>& features);
-  void add_instance_groups(const shape::Building& building, std::size_t first_row,
-                           const std::vector<std::pair<std::size_t, std::int32_t>>& instances,
-                           const Affine& inside, BuildingNode& node);
+  void add_instance_groups(const shape::Building& building,
+                           const std::vector<PlacedInstance>& instances, const Affine& inside,
+                           BuildingNode& node);
 
   void write_extensions(JsonStream& json) const;
   void write_meshes(JsonStream& json) const;
@@ -162,6 +168,12 @@ class Builder {
   MaterialTable materials_;
   Buffers buffers_;
   gltf::MeshViews views_;
+  // With a property table (building nodes): each part that shows a triangle gets the next row, in
+  // scene order; has_row_ says which did (a part whose faces all collapse where they are written
+  // has no row, as it has no vertex to point at one).
+  bool with_table_ = false;
+  std::uint32_t next_row_ = 0;
+  std::vector<bool> has_row_;
   std::optional<gltf::PartTable> table_;
   gltf::MeshOptions mesh_options_;
   // Textures: one per distinct image of a material in the table, PNG-encoded (or a file's bytes),
@@ -197,22 +209,22 @@ Builder::Builder(const shape::Scene& scene, const GltfOptions& options)
   mesh_options_.quantize = options_.quantize;
   mesh_options_.first_use_order = options_.compress;
   if (options_.nodes == GltfOptions::Nodes::kBuilding) {
-    table_.emplace(scene_);
-    if (table_->rows() == 0) table_.reset();
-    if (table_ && table_->rows() > 65535) mesh_options_.feature_component = Component::kFloat;
+    std::size_t parts = 0;
+    for (const shape::Building& building : scene_.buildings) parts += building.parts.size();
+    with_table_ = parts > 0;
+    // Decided before any row is given: at most one a part.
+    if (parts > 65535) mesh_options_.feature_component = Component::kFloat;
   }
   // A mesh per building, usually: room for its node, its record and about six accessors.
   buildings_.reserve(scene_.buildings.size());
   meshes_.reserve(scene_.buildings.size());
   buffers_.reserve_accessors(6 * scene_.buildings.size());
-  std::size_t row = 0;
   for (std::size_t b = 0; b < scene_.buildings.size(); ++b) {
     const shape::Building& building = scene_.buildings[b];
-    buildings_.push_back(options_.nodes == GltfOptions::Nodes::kBuilding
-                             ? by_building(building, b, row)
-                             : by_element(building));
-    row += building.parts.size();
+    buildings_.push_back(options_.nodes == GltfOptions::Nodes::kBuilding ? by_building(building, b)
+                                                                         : by_element(building));
   }
+  if (with_table_ && next_row_ > 0) table_.emplace(scene_, has_row_);
   if (meshes_.empty()) {
     // No primitive: no buffer, so no images and no table either.
     images_.clear();
@@ -306,24 +318,26 @@ Affine node_placement(const gltf::MeshRecord& record) {
 
 // One mesh for all the building's own faces, each vertex carrying its part's row in the table;
 // instances (without a uv map of their own) point at their shared mesh.
-BuildingNode Builder::by_building(const shape::Building& building, std::size_t index,
-                                  std::size_t first_row) {
+BuildingNode Builder::by_building(const shape::Building& building, std::size_t index) {
   BuildingNode node;
-  std::vector<std::pair<std::size_t, std::int32_t>> instances;  // part, mesh
-  assembler_->start(mesh_options(table_.has_value(), options_.quantize));
+  std::vector<PlacedInstance> instances;
+  assembler_->start(mesh_options(with_table_, options_.quantize));
   reserve_assembler(building);
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
     const shape::Part& part = building.parts[p];
-    const auto row = static_cast<std::uint32_t>(first_row + p);
+    bool shown = false;
     if (part.instance_of && !part.uv) {
-      if (const std::int32_t mesh = shared_mesh(part, p); mesh >= 0)
-        instances.emplace_back(p, mesh);
+      const std::int32_t mesh = shared_mesh(part, p);
+      shown = mesh >= 0;
+      if (shown) instances.push_back({p, mesh, next_row_});
     } else if (part.instance_of) {
-      assembler_->add(kernel::transformed(*part.instance_of, part.instance_transform), part, row,
-                      false);
+      shown = assembler_->add(kernel::transformed(*part.instance_of, part.instance_transform), part,
+                              next_row_, false);
     } else {
-      assembler_->add(part.mesh, part, row, false);
+      shown = assembler_->add(part.mesh, part, next_row_, false);
     }
+    if (with_table_) has_row_.push_back(shown);
+    if (shown) ++next_row_;
   }
   node.mesh = add_mesh(*assembler_, building_name(building, index));
   Affine inside;  // the frame the building node's children live in
@@ -331,7 +345,7 @@ BuildingNode Builder::by_building(const shape::Building& building, std::size_t i
     node.placement = node_placement(meshes_[node.mesh].record);
     inside = *node.placement;
   }
-  add_instance_groups(building, first_row, instances, inside, node);
+  add_instance_groups(building, instances, inside, node);
   return node;
 }
 
@@ -355,27 +369,28 @@ void Builder::reserve_assembler(const shape::Building& building) {
 
 // Each instance as a node of its own, or with GPU instancing one node per mesh placing them all
 // (an instance whose placement has a shear keeps a node of its own: TRS cannot hold it).
-void Builder::add_instance_groups(
-    const shape::Building& building, std::size_t first_row,
-    const std::vector<std::pair<std::size_t, std::int32_t>>& instances, const Affine& inside,
-    BuildingNode& node) {
+void Builder::add_instance_groups(const shape::Building& building,
+                                  const std::vector<PlacedInstance>& instances,
+                                  const Affine& inside, BuildingNode& node) {
   const auto placement = [&](const shape::Part& part) {
     return gltf::relative_to(gltf::y_up(part.instance_transform), inside.translation,
                              inside.columns[0][0]);
   };
   std::vector<std::int32_t> meshes;
-  for (const auto& [p, mesh] : instances) {
-    if (std::find(meshes.begin(), meshes.end(), mesh) == meshes.end()) meshes.push_back(mesh);
+  for (const PlacedInstance& instance : instances) {
+    if (std::find(meshes.begin(), meshes.end(), instance.mesh) == meshes.end()) {
+      meshes.push_back(instance.mesh);
+    }
   }
   if (options_.instancing == GltfOptions::Instancing::kNodes) meshes.clear();
   for (std::int32_t mesh : meshes) {
     std::vector<gltf::Trs> placed;
     std::vector<float> features;
-    for (const auto& [p, m] : instances) {
-      if (m != mesh) continue;
-      if (auto trs = gltf::decompose(placement(building.parts[p]))) {
+    for (const PlacedInstance& instance : instances) {
+      if (instance.mesh != mesh) continue;
+      if (auto trs = gltf::decompose(placement(building.parts[instance.part]))) {
         placed.push_back(*trs);
-        features.push_back(static_cast<float>(first_row + p));
+        features.push_back(static_cast<float>(instance.row));
       }
     }
     if (placed.empty()) continue;
@@ -383,11 +398,14 @@ void Builder::add_instance_groups(
     node.children.push_back({meshes_[mesh].name, nullptr, mesh, std::nullopt, group});
     gpu_instances_ = true;
   }
-  for (const auto& [p, mesh] : instances) {
-    const shape::Part& part = building.parts[p];
-    const bool grouped = std::find(meshes.begin(), meshes.end(), mesh) != meshes.end() &&
+  for (const PlacedInstance& instance : instances) {
+    const shape::Part& part = building.parts[instance.part];
+    const bool grouped = std::find(meshes.begin(), meshes.end(), instance.mesh) != meshes.end() &&
                          gltf::decompose(placement(part)).has_value();
-    if (!grouped) node.children.push_back({part_name(part, p), &part, mesh, placement(part), {}});
+    if (!grouped) {
+      node.children.push_back(
+          {part_name(part, instance.part), &part, instance.mesh, placement(part), {}});
+    }
   }
 }
 
@@ -420,14 +438,15 @@ InstanceGroup Builder::add_instance_group(const std::vector<gltf::Trs>& placed,
   group.translation = add(0, "VEC3", t);
   group.rotation = add(1, "VEC4", r);
   group.scale = add(2, "VEC3", s);
-  if (table_) {
+  if (with_table_) {
     group.feature = add(3, "SCALAR", features);
     group.feature_count = static_cast<std::uint32_t>(features.size());
   }
   return group;
 }
 
-// One node and mesh per part under the building's node.
+// One node and mesh per part under the building's node; a part none of whose faces shows a
+// triangle has none.
 BuildingNode Builder::by_element(const shape::Building& building) {
   BuildingNode node;
   for (std::size_t p = 0; p < building.parts.size(); ++p) {
@@ -452,7 +471,7 @@ BuildingNode Builder::by_element(const shape::Building& building) {
         child.placement = dequantize;
       }
     }
-    node.children.push_back(std::move(child));
+    if (child.mesh >= 0) node.children.push_back(std::move(child));
   }
   return node;
 }

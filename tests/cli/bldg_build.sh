@@ -107,6 +107,20 @@ node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
              !r.entrances.every((d) => d.width === 1)) process.exit(1);' "$tmp/l_lot.json" ||
   fail "L lot: report names the lot, all rooms reachable, doors 0.9 m, entrances 1.0 m"
 
+# A lot's properties (an OpenStreetMap hospital's tags) are the building's attributes, as with CGA
+# and mass; the feature's name replaces the grammar's building name ("Village house").
+printf '{"type": "FeatureCollection", "features": [%s]}' \
+  '{"type": "Feature", "id": "way/1", "properties": {"building": "hospital", "amenity": "hospital", "name": "Saint Anne", "beds": 40}, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [14, 0], [14, 10], [0, 10], [0, 0]]]}}' \
+  >"$tmp/tagged_lot.geojson"
+expect_exit 0 "tagged lot" "$insula" build "$examples/village/village.bldg" \
+  --lot "$tmp/tagged_lot.geojson" -o "$tmp/tagged.city.json" -o "$tmp/tagged.glb" --quiet
+node -e 'const c = JSON.parse(require("fs").readFileSync(process.argv[1]));
+         const a = c.CityObjects["way/1"].attributes;
+         if (a.building !== "hospital" || a.amenity !== "hospital" || a.name !== "Saint Anne" ||
+             a.beds !== 40) { console.log(JSON.stringify(a)); process.exit(1); }' \
+  "$tmp/tagged.city.json" || fail "tagged lot: the feature's properties are the building's attributes"
+grep -aq '"amenity"' "$tmp/tagged.glb" || fail "tagged lot: no amenity column in the GLB's property table"
+
 # A lot that cannot hold the grammar (a strip 0.9 m wide holds no room of the minimum width):
 # an error naming the lot without --keep-going; with it, skipped with its reason and counted, the
 # other lot built (docs/bldg-floorplan.md, "Rooms that fit").

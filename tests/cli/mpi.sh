@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Many processes (docs/cluster.md): `mpirun -n N insula mass|build ... -o DIR/tileset.json` shares the
 # tiles among the ranks through a work queue and writes the same bytes as one process, for 1, 2 and
-# 3 ranks and any thread count; the leader alone prints; an error stops every rank with exit 1 and
-# leaves the user's earlier tileset as it was. Runs on this 2-core machine with --oversubscribe.
+# 3 ranks and any thread count; the leader alone prints, its progress counting every rank's
+# buildings; an error stops every rank with exit 1 and leaves the user's earlier tileset as it was.
+# Runs on this 2-core machine with --oversubscribe.
 source "$(dirname "$0")/lib/common.sh"
 
 command -v mpirun >/dev/null || { fail "mpirun missing (scripts/setup.sh installs openmpi-bin)"; finish mpi; }
@@ -23,13 +24,16 @@ leaves=$(ls "$tmp/one/tiles" | wc -l)
 [ "$leaves" -ge 6 ] || fail "expected several tiles, got $leaves"
 for ranks in 1 2 3; do
   for threads in 1 2; do
-    expect_exit 0 "$ranks ranks, $threads threads" mpi "$ranks" "$insula" mass "$tmp/grid.geojson" \
-      --crs EPSG:32633 --tile-faces 6000 --threads "$threads" -o "$tmp/r$ranks-$threads/tileset.json" \
-      --report "$tmp/r$ranks-$threads.json"
+    expect_exit 0 "$ranks ranks, $threads threads" mpi "$ranks" -x INSULA_PROGRESS_SECONDS=0 \
+      "$insula" mass "$tmp/grid.geojson" --crs EPSG:32633 --tile-faces 6000 --threads "$threads" \
+      -o "$tmp/r$ranks-$threads/tileset.json" --report "$tmp/r$ranks-$threads.json"
     diff -r "$tmp/one" "$tmp/r$ranks-$threads" >/dev/null ||
       fail "$ranks ranks, $threads threads: the tileset differs from one process's"
     # One line per output on stdout, from the leader only.
     [ "$(grep -c tileset.json "$tmp/out.txt")" -eq 1 ] || { fail "$ranks ranks: stdout"; cat "$tmp/out.txt"; }
+    # The leader's progress counts every rank's buildings, to the last.
+    grep "of 3000 buildings" "$tmp/err.txt" | tail -n 1 | grep -q "^insula: 3000 of 3000 buildings (100%)" ||
+      { fail "$ranks ranks, $threads threads: progress"; tail -n 3 "$tmp/err.txt"; }
   done
 done
 grep -q '"buildings": 3000,' "$tmp/r3-2.json" || fail "3 ranks: the report counts every building"

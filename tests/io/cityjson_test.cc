@@ -1,7 +1,9 @@
 // CityJSON writer: golden file, structure (transform, metadata, parents and children, Solid vs
-// MultiSurface, semantics), quantisation and deduplication of vertices, degenerate rings.
+// MultiSurface, semantics), quantisation and deduplication of vertices, degenerate rings and the
+// vertices and parts they leave unused.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <set>
 #include <string>
 
@@ -135,6 +137,61 @@ TEST(CityJsonWriter, DropsRingsThatCollapseAfterQuantisation) {
   EXPECT_FALSE(geometry.contains("semantics"));  // the surviving face has no class
 }
 
+// Every vertex listed is one some boundary uses: the points of a face that collapsed on the grid
+// are not listed (cjval warns about unused vertices).
+std::set<std::int64_t> used_vertices(const json& boundaries) {
+  std::set<std::int64_t> used;
+  std::function<void(const json&)> walk = [&](const json& j) {
+    if (j.is_number_integer()) {
+      used.insert(j.get<std::int64_t>());
+    } else {
+      for (const json& element : j) walk(element);
+    }
+  };
+  walk(boundaries);
+  return used;
+}
+
+TEST(CityJsonWriter, ListsOnlyVerticesABoundaryUses) {
+  kernel::Mesh mesh;
+  // A sliver 0.2 mm wide (its own two points, a segment on the grid) beside a plain square.
+  mesh.add_polygon(std::vector<kernel::Vec3>{{5, 5, 0}, {6, 5, 0}, {6, 5.0002, 0}}, {});
+  mesh.add_polygon(std::vector<kernel::Vec3>{{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}, {});
+  shape::Scene scene;
+  scene.buildings.push_back({"b", {}, {{"p", shape::PartKind::kBuildingPart, {}, mesh}}});
+  const json city = written(scene);
+  const std::set<std::int64_t> used =
+      used_vertices(city["CityObjects"]["b-p"]["geometry"][0]["boundaries"]);
+  EXPECT_EQ(used, (std::set<std::int64_t>{0, 1, 2, 3}));
+  EXPECT_EQ(city["vertices"].size(), 4U);
+  // The extent is the square's: the sliver's points are no vertex.
+  EXPECT_EQ(city["metadata"]["geographicalExtent"][3].get<double>(),
+            city["transform"]["translate"][0].get<double>() + 1);
+}
+
+// A part all of whose faces collapse on the grid is no city object: not a child of its building,
+// no id taken (a later part of the same name keeps its plain id). A building left with no part
+// stays, with its attributes, as a building with no parts does.
+TEST(CityJsonWriter, PartsWhoseFacesAllCollapseAreNoObjects) {
+  kernel::Mesh sliver;
+  sliver.add_polygon(std::vector<kernel::Vec3>{{5, 5, 0}, {6, 5, 0}, {6, 5.0002, 0}}, {});
+  const kernel::Mesh square = testing::prism({{0, 0}, {4, 0}, {4, 3}, {0, 3}}, 0, 3);
+  shape::Scene scene;
+  scene.buildings.push_back({"b",
+                             {},
+                             {{"lawn", shape::PartKind::kBuildingPart, {}, sliver},
+                              {"lawn", shape::PartKind::kBuildingPart, {}, square}}});
+  scene.buildings.push_back({"c",
+                             {{"name", std::string("nothing left")}},
+                             {{"lawn", shape::PartKind::kRoom, {}, sliver}}});
+  const json objects = written(scene)["CityObjects"];
+  ASSERT_EQ(objects.size(), 3U);
+  EXPECT_EQ(objects["b"]["children"], json::array({"b-lawn"}));
+  EXPECT_EQ(objects["b-lawn"]["geometry"][0]["type"], "Solid");
+  EXPECT_EQ(objects["c"]["attributes"]["name"], "nothing left");
+  EXPECT_FALSE(objects["c"].contains("children"));
+}
+
 TEST(CityJsonWriter, NonFiniteFacesAreSkipped) {
   kernel::Mesh mesh;
   mesh.add_polygon(std::vector<kernel::Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {});
@@ -197,11 +254,13 @@ TEST(CityJsonWriter, SolidsNeedOneClosedOrientedShell) {
 }
 
 TEST(CityJsonWriter, IdsStayUnique) {
+  kernel::Mesh face;  // a part without a face would be no object
+  face.add_polygon(std::vector<kernel::Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {});
   shape::Scene scene;
   scene.buildings.push_back({"a",
                              {},
-                             {{"x", shape::PartKind::kBuildingPart, {}, {}},
-                              {"x", shape::PartKind::kBuildingPart, {}, {}}}});
+                             {{"x", shape::PartKind::kBuildingPart, {}, face},
+                              {"x", shape::PartKind::kBuildingPart, {}, face}}});
   scene.buildings.push_back({"a", {}, {}});
   const json objects = written(scene)["CityObjects"];
   EXPECT_EQ(objects.size(), 4U);

@@ -132,6 +132,28 @@ TEST(CityJsonSeqWriter, VerticesAreLocalToTheLine) {
   }
 }
 
+// A line lists only the vertices its boundaries use and only the parts with a face left on the
+// grid: a lot's border that an inward offset left a sliver 0.2 mm wide is no BuildingPart.
+TEST(CityJsonSeqWriter, CollapsedFacesLeaveNoVertexAndCollapsedPartsNoObject) {
+  kernel::Mesh sliver;
+  sliver.add_polygon(std::vector<kernel::Vec3>{{5, 5, 0}, {6, 5, 0}, {6, 5.0002, 0}}, {});
+  kernel::Mesh paving = sliver;
+  paving.add_polygon(std::vector<kernel::Vec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {});
+  shape::Scene scene;
+  scene.buildings.push_back({"lot",
+                             {},
+                             {{"Lawn", shape::PartKind::kBuildingPart, {}, sliver},
+                              {"Paving", shape::PartKind::kBuildingPart, {}, paving}}});
+  const json feature = parsed_lines(cityjsonseq_text(scene)).at(1);
+  const json& objects = feature["CityObjects"];
+  EXPECT_EQ(objects.size(), 2U);
+  EXPECT_EQ(objects["lot"]["children"], json::array({"lot-Paving"}));
+  std::vector<std::int64_t> indices;
+  collect_indices(objects["lot-Paving"]["geometry"][0]["boundaries"], indices);
+  EXPECT_EQ(std::set<std::int64_t>(indices.begin(), indices.end()).size(), 4U);
+  EXPECT_EQ(feature["vertices"].size(), 4U);
+}
+
 TEST(CityJsonSeqWriter, BuildingWithItsPartsInOneLine) {
   const json feature = parsed_lines(cityjsonseq_text(test_scene())).at(2);
   const json& objects = feature["CityObjects"];

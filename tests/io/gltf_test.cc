@@ -7,6 +7,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -190,6 +191,60 @@ TEST(GltfWriter, PartsAreFeaturesWithAPropertyTable) {
       EXPECT_EQ(ids["featureCount"], 1);  // one part shows each material here
     }
   }
+}
+
+// A part whose faces all collapse where they are written (a sliver 0.1 um wide: one grid point,
+// one float32) shows no triangle, so it has no row, no feature id and no node: rows are the parts
+// a vertex points at, numbered without gaps, and an attribute only it has makes no column.
+kernel::Mesh sliver() {
+  kernel::Mesh mesh;
+  mesh.add_polygon(std::vector<kernel::Vec3>{{5, 5, 0}, {6, 5, 0}, {6, 5.0000001, 0}}, {});
+  return mesh;
+}
+
+shape::Scene lot_with_a_collapsed_part() {
+  shape::Scene scene;
+  scene.buildings.push_back({"lot",
+                             {},
+                             {{"Lawn", shape::PartKind::kBuildingPart, {{"grass", true}}, sliver()},
+                              {"Paving",
+                               shape::PartKind::kBuildingPart,
+                               {},
+                               testing::prism({{0, 0}, {1, 0}, {1, 1}}, 0, 1)},
+                              {"Lawn", shape::PartKind::kBuildingPart, {{"grass", true}}, sliver()},
+                              {"Bed",
+                               shape::PartKind::kBuildingPart,
+                               {},
+                               testing::prism({{2, 0}, {3, 0}, {3, 1}}, 0, 1)}}});
+  return scene;
+}
+
+TEST(GltfWriter, PartsWithoutATriangleHaveNoRow) {
+  const std::string glb = glb_bytes(lot_with_a_collapsed_part());
+  const tinygltf::Model model = load_glb(glb);
+  const nlohmann::json json = json_of(glb);
+  const nlohmann::json& metadata = json["extensions"]["EXT_structural_metadata"];
+  EXPECT_EQ(metadata["propertyTables"][0]["count"], 2);
+  EXPECT_EQ(table_column(model, json, "part_name"), (std::vector<std::string>{"Paving", "Bed"}));
+  EXPECT_FALSE(metadata["schema"]["classes"]["part"]["properties"].contains("grass"));
+  std::set<double> features;
+  for (const testing::PlacedPrimitive& p : testing::placed_primitives(model)) {
+    features.insert(p.features.begin(), p.features.end());
+  }
+  EXPECT_EQ(features, (std::set<double>{0, 1}));
+  for (const nlohmann::json& mesh : json["meshes"]) {
+    for (const nlohmann::json& primitive : mesh["primitives"]) {
+      EXPECT_EQ(primitive["extensions"]["EXT_mesh_features"]["featureIds"][0]["featureCount"], 2);
+    }
+  }
+}
+
+TEST(GltfWriter, PartsWithoutATriangleHaveNoElementNode) {
+  const tinygltf::Model model = load_glb(glb_bytes(lot_with_a_collapsed_part(), kElements));
+  const tinygltf::Node& lot = node_named(model, "lot");
+  ASSERT_EQ(lot.children.size(), 2U);
+  EXPECT_EQ(model.nodes[static_cast<std::size_t>(lot.children[0])].name, "Paving");
+  EXPECT_EQ(model.nodes[static_cast<std::size_t>(lot.children[1])].name, "Bed");
 }
 
 // Many parts with few distinct texts (a façade's symbols and colours): enum-coded, the rows'

@@ -78,6 +78,15 @@ struct LotBuild {
   std::optional<lang::bldg::BuildResult> result;
 };
 
+// The feature's properties become the building's attributes, as on the CGA and mass paths (an
+// OpenStreetMap lot keeps its tags in every output). A property wins over what the grammar gave
+// the building (its `name`), as a CGA lot property wins over an attr's default.
+void add_lot_properties(const io::Footprint& lot, shape::AttributeMap& attributes) {
+  shape::AttributeMap merged = lot.properties.map();
+  merged.merge(attributes);  // moves only the names the feature lacks
+  attributes = std::move(merged);
+}
+
 LotBuild build_lot(const Village& village, const io::Footprint& lot) {
   const BuildOptions& options = village.options;
   LotBuild out;
@@ -115,6 +124,7 @@ LotBuild build_lot(const Village& village, const io::Footprint& lot) {
   out.note.entry["grammar"] = grammar.source->name();
   out.note.seconds = stage_seconds(*built);
   out.result = std::move(built->result);
+  add_lot_properties(lot, out.result->building.attributes);
   return out;
 }
 

@@ -36,7 +36,18 @@ Progress::~Progress() {
 }
 
 void Progress::advance(std::size_t n) {
-  const std::size_t done = done_ += n;
+  show(done_ += n);
+}
+
+void Progress::reach(std::size_t done) {
+  std::size_t known = done_.load();
+  // Raised to `done` unless another thread raised it as far meanwhile.
+  while (known < done && !done_.compare_exchange_weak(known, done)) {
+  }
+  if (known < done) show(done);
+}
+
+void Progress::show(std::size_t done) {
   if (!enabled_) return;
   const double seconds = clock_.seconds();
   double next = next_draw_.load();

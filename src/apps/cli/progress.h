@@ -23,10 +23,15 @@ class Progress {
 
   // `n` more done; any thread.
   void advance(std::size_t n = 1);
+  // `done` done in all, as counted elsewhere (every rank's work under mpirun); any thread. A
+  // count below one already shown changes nothing.
+  void reach(std::size_t done);
   // Ends a terminal bar with a line break (when one was drawn).
   void finish();
 
  private:
+  // Draws `done` when the interval has passed.
+  void show(std::size_t done);
   void draw(std::size_t done, double seconds);
 
   std::string noun_;

@@ -1,5 +1,6 @@
 #include "apps/cli/ranks.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <mutex>
 
@@ -66,15 +67,25 @@ int Ranks::size() {
   return 1;
 }
 
+#if defined(INSULA_WITH_MPI)
+namespace {
+// The queue's counters at the leader, by displacement in its window.
+constexpr MPI_Aint kNextItem = 0;
+constexpr MPI_Aint kFinished = 1;
+constexpr int kCounters = 2;
+}  // namespace
+#endif
+
 // The queue is one counter at the leader that every rank increments atomically (one-sided
-// MPI_Fetch_and_op): no rank waits for another to hand out work.
+// MPI_Fetch_and_op): no rank waits for another to hand out work. A second counter sums the work
+// the ranks finished, told with the same flush as they take the next item.
 Ranks::Queue::Queue(std::size_t count) : count_(count) {
 #if defined(INSULA_WITH_MPI)
   if (!started) return;
   MPI_Win window = MPI_WIN_NULL;
-  const MPI_Aint bytes = leader() ? static_cast<MPI_Aint>(sizeof(long)) : 0;
-  MPI_Win_allocate(bytes, sizeof(long), MPI_INFO_NULL, MPI_COMM_WORLD, &counter_, &window);
-  if (leader()) *counter_ = 0;
+  const MPI_Aint bytes = leader() ? static_cast<MPI_Aint>(kCounters * sizeof(long)) : 0;
+  MPI_Win_allocate(bytes, sizeof(long), MPI_INFO_NULL, MPI_COMM_WORLD, &counters_, &window);
+  if (leader()) std::fill_n(counters_, kCounters, 0L);
   MPI_Barrier(MPI_COMM_WORLD);
   MPI_Win_lock_all(0, window);
   window_ = new MPI_Win(window);
@@ -91,20 +102,38 @@ Ranks::Queue::~Queue() {
 #endif
 }
 
-std::size_t Ranks::Queue::next() {
+std::size_t Ranks::Queue::next(std::size_t finished) {
   const std::lock_guard<std::mutex> lock(mutex_);
 #if defined(INSULA_WITH_MPI)
   if (window_ != nullptr) {
     auto* window = static_cast<MPI_Win*>(window_);
     const long one = 1;
+    const auto done = static_cast<long>(finished);
     long taken = 0;
-    MPI_Fetch_and_op(&one, &taken, MPI_LONG, 0, 0, MPI_SUM, *window);
+    if (done > 0) MPI_Accumulate(&done, 1, MPI_LONG, 0, kFinished, 1, MPI_LONG, MPI_SUM, *window);
+    MPI_Fetch_and_op(&one, &taken, MPI_LONG, 0, kNextItem, MPI_SUM, *window);
     MPI_Win_flush(0, *window);
     return taken < 0 || static_cast<std::size_t>(taken) >= count_ ? count_
                                                                   : static_cast<std::size_t>(taken);
   }
 #endif
+  local_finished_ += finished;
   return local_ < count_ ? local_++ : count_;
+}
+
+std::size_t Ranks::Queue::finished() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+#if defined(INSULA_WITH_MPI)
+  if (window_ != nullptr) {
+    auto* window = static_cast<MPI_Win*>(window_);
+    long sum = 0;
+    // An atomic read: the other ranks' sums may land at any time.
+    MPI_Fetch_and_op(nullptr, &sum, MPI_LONG, 0, kFinished, MPI_NO_OP, *window);
+    MPI_Win_flush(0, *window);
+    return sum < 0 ? 0 : static_cast<std::size_t>(sum);
+  }
+#endif
+  return local_finished_;
 }
 
 std::vector<std::string> Ranks::gather(const std::string& mine) {

@@ -31,15 +31,20 @@ class Ranks {
     ~Queue();
     Queue(const Queue&) = delete;
     Queue& operator=(const Queue&) = delete;
-    // Thread-safe.
-    std::size_t next();
+    // Thread-safe. `finished`: how much work (in any unit, e.g. lots) the caller finished since it
+    // last asked, added to a sum at the leader with the same message, so the leader's progress
+    // counts every rank's work.
+    std::size_t next(std::size_t finished = 0);
+    // The sum of every rank's `finished` so far. Thread-safe.
+    std::size_t finished();
 
    private:
     std::size_t count_;
     std::mutex mutex_;       // MPI is started for one caller at a time (MPI_THREAD_SERIALIZED)
     std::size_t local_ = 0;  // without MPI
+    std::size_t local_finished_ = 0;
     void* window_ = nullptr;
-    long* counter_ = nullptr;
+    long* counters_ = nullptr;  // at the leader: the next item, the finished sum
   };
 
   // Every rank's bytes, in rank order, at the leader (empty elsewhere). Collective.

@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 #include <thread>
+#include <utility>
 
 #include "apps/cli/interrupt.h"
 #include "apps/cli/progress.h"
@@ -234,7 +235,9 @@ std::string TileJob::join_lines(const std::string& out) const {
 
 // Each of this rank's threads takes the next tile from the shared queue until none is left (a
 // tile's buildings are built in parallel too, so a thread that finds no tile helps the others).
-TileJob::RankShare TileJob::build_share(const BuildTile& build) {
+// Asking for the next tile tells the leader how many items the last one held, so the leader's
+// progress counts every rank's.
+TileJob::RankShare TileJob::build_share(const BuildTile& build, Progress& progress) {
   const std::size_t tiles = tile_count();
   Ranks::Queue queue(tiles);
   const std::size_t takers =
@@ -243,11 +246,9 @@ TileJob::RankShare TileJob::build_share(const BuildTile& build) {
   std::vector<std::optional<Json>> done(tiles);
   std::vector<std::vector<std::pair<std::size_t, Json>>> notes(tiles);
   std::atomic<bool> failed = false;
-  std::size_t items = 0;
-  for (const std::size_t node : leaves_) items += tree_.nodes[node].items.size();
-  Progress progress(options_.counted, items, options_.quiet);
   tbb::parallel_for(std::size_t{0}, takers, [&](std::size_t) {
-    for (std::size_t t = queue.next(); t < tiles; t = queue.next()) {
+    std::size_t finished = 0;  // items of the tile this thread last built
+    for (std::size_t t = queue.next(); t < tiles; t = queue.next(std::exchange(finished, 0))) {
       if (interrupted() || failed) continue;  // the rest go to other ranks, which stop too
       const std::vector<std::size_t>& members = tree_.nodes[leaves_[t]].items;
       TileContent content;
@@ -282,7 +283,9 @@ TileJob::RankShare TileJob::build_share(const BuildTile& build) {
       done[t] = Json::array({t, box_json(box), error, std::move(content.tally), std::move(blocks)});
       notes[t] = std::move(content.notes);
       if (content.failed || !error.empty()) failed = true;
-      progress.advance(members.size());
+      finished = members.size();
+      // Only the leader shows progress; the others ask nothing more of it.
+      if (Ranks::leader()) progress.reach(queue.finished() + finished);
     }
   });
   RankShare share;
@@ -327,7 +330,10 @@ void TileJob::merge(const std::string& bytes, TileJobResult& result,
 }
 
 TileJobResult TileJob::run(const BuildTile& build, const std::function<Json()>& summary) {
-  const RankShare share = build_share(build);
+  std::size_t items = 0;
+  for (const std::size_t node : leaves_) items += tree_.nodes[node].items.size();
+  Progress progress(options_.counted, items, options_.quiet);
+  const RankShare share = build_share(build, progress);
   const Json mine = {{"failure", share.failure},
                      {"failed", share.failed},
                      {"tiles", share.tiles},
@@ -343,6 +349,11 @@ TileJobResult TileJob::run(const BuildTile& build, const std::function<Json()>& 
   for (const std::string& bytes : gathered) merge(bytes, result, tallies);
   std::sort(tallies.begin(), tallies.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
+  // Every rank's tiles are in: the last line counts all they built (the ranks' last tiles may
+  // end after the leader's).
+  std::size_t built = 0;
+  for (const auto& [tile, tally] : tallies) built += tree_.nodes[leaves_[tile]].items.size();
+  progress.reach(built);
   for (auto& [tile, tally] : tallies) result.tallies.push_back(std::move(tally));
   std::sort(result.notes.begin(), result.notes.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });

@@ -28,6 +28,8 @@
 
 namespace insula::cli {
 
+class Progress;
+
 struct TileJobOptions {
   std::vector<std::string> outputs;        // tileset.json and .city.jsonl files (streamable())
   std::string crs;                         // of the buildings' world coordinates
@@ -92,7 +94,7 @@ class TileJob {
 
  private:
   struct RankShare;
-  RankShare build_share(const BuildTile& build);
+  RankShare build_share(const BuildTile& build, Progress& progress);
   void merge(const std::string& bytes, TileJobResult& result,
              std::vector<std::pair<std::size_t, nlohmann::json>>& tallies);
   std::string write_lines(std::size_t tile, const std::vector<shape::Building>& buildings) const;
