@@ -25,12 +25,18 @@ std::optional<std::string> text_of(const PropertyRow& properties, std::string_vi
   return shape::to_string(*value);
 }
 
-// A length property: a JSON number is meters, a string goes through parse_length.
-std::optional<double> length_of(const shape::Value& value) {
+// A length property in meters: a JSON number, or a text that is only a number, counts `unit`
+// meters per unit; any other text goes through parse_length ("40 ft", "12'6\"").
+std::optional<double> length_of(const shape::Value& value, double unit) {
   if (const double* d = std::get_if<double>(&value)) {
-    return std::isfinite(*d) ? std::optional<double>(*d) : std::nullopt;
+    return std::isfinite(*d) ? std::optional<double>(*d * unit) : std::nullopt;
   }
-  if (const std::string* s = std::get_if<std::string>(&value)) return parse_length(*s);
+  if (const std::string* s = std::get_if<std::string>(&value)) {
+    std::string_view rest = *s;
+    const std::optional<double> number = base::take_number(rest);
+    if (number && rest.empty() && std::isfinite(*number)) return *number * unit;
+    return parse_length(*s);
+  }
   return std::nullopt;
 }
 
@@ -123,7 +129,8 @@ class FormReader {
   std::optional<double> length_tag(std::string_view key, double minimum, const char* code) {
     const std::optional<shape::Value> value = tag(key);
     if (!value || std::holds_alternative<std::monostate>(*value)) return std::nullopt;
-    const std::optional<double> meters = length_of(*value);
+    // S3DB's bare numbers are meters; a register's are in --height-unit.
+    const std::optional<double> meters = length_of(*value, form_.osm ? 1.0 : options_.length_unit);
     if (meters && *meters > minimum && *meters < 1000) return meters;
     warn(code, {key_of(key), "=", quoted(*value), " is not a length in ", minimum < 0 ? "[0" : "(",
                 minimum < 0 ? "" : shape::to_string(minimum), ", 1000) m; ignored"});

@@ -34,10 +34,14 @@ struct BuildingTagOptions {
   std::optional<double> height;        // --height: wall height for every building
   std::string height_attr = "height";  // --height-attr
   std::string levels_attr;             // --levels-attr (registers' storey counts)
-  double storey_height = 3;            // --storey-height
-  double default_height = 10;          // --default-height: wall height when nothing says
-  std::optional<std::string> roof;     // --roof: a kernel roof name, for every building
-  double pitch_deg = 30;               // --pitch
+  // --height-unit: meters per unit of a bare number in a height property of a feature that is not
+  // an OpenStreetMap or Overture building (registers in feet: NYC's heightroof, Philadelphia's
+  // approx_hgt). Texts with a unit ("40 ft") keep theirs; S3DB data is meters by definition.
+  double length_unit = 1;
+  double storey_height = 3;         // --storey-height
+  double default_height = 10;       // --default-height: wall height when nothing says
+  std::optional<std::string> roof;  // --roof: a kernel roof name, for every building
+  double pitch_deg = 30;            // --pitch
   bool pitch_given = false;
   std::string default_roof = "hip";  // the roof of non-OSM features without a 'roof' property
 };

@@ -270,4 +270,13 @@ node -e '
     }
   }' "$tmp/terrace.city.json" || fail "terrace: eaves stop at the party walls"
 
+# --height-unit: the terrace's heights read as feet (house a: 9 ft = 2.7432 m of wall).
+expect_exit 0 "heights in feet" "$insula" mass "$root/tests/data/geo/terrace.geojson" \
+  --height-unit ft -o "$tmp/feet.obj" --report "$tmp/feet.json" --report-buildings --quiet
+node -e '
+  const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  const a = r.buildings_made.find((b) => b.id === "a");
+  process.exit(a && Math.abs(a.eave_height - 2.7432) < 1e-9 ? 0 : 1);
+  ' "$tmp/feet.json" || fail "--height-unit ft: 9 ft of wall"
+
 finish mass

@@ -228,6 +228,20 @@ TEST(BuildingForm, DefaultPitchRoofRisesAtMostTheWallHeight) {
                    .roof_height_limit);
 }
 
+// --height-unit: a register's bare numbers in feet (NYC's heightroof of a 458.5 ft tower);
+// texts with a unit and OpenStreetMap's meters keep theirs.
+TEST(BuildingForm, HeightUnitScalesARegistersBareNumbers) {
+  BuildingTagOptions feet;
+  feet.height_attr = "heightroof";
+  feet.length_unit = 0.3048;
+  EXPECT_NEAR(form_of({{"heightroof", 458.5}}, feet).eave, 139.7508, 1e-9);
+  EXPECT_NEAR(form_of({{"heightroof", "458.5"}}, feet).eave, 139.7508, 1e-9);
+  EXPECT_NEAR(form_of({{"heightroof", "12 m"}}, feet).eave, 12, 1e-12);
+  BuildingTagOptions osm_feet;
+  osm_feet.length_unit = 0.3048;
+  EXPECT_NEAR(form_of({{"building", "yes"}, {"height", "12"}}, osm_feet).eave, 12, 1e-12);
+}
+
 TEST(BuildingForm, RoofTallerThanTheBuildingIsCapped) {
   std::vector<TagWarning> warnings;
   const BuildingForm form = form_of(

@@ -91,6 +91,10 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
                    "property holding the wall height of features that are not OpenStreetMap "
                    "buildings (default 'height'; OSM features follow Simple 3D Buildings)")
       ->excludes(height);
+  mass->add_option("--height-unit", options.height_unit,
+                   "unit of bare numbers in the height properties of features that are not "
+                   "OpenStreetMap buildings: m (default), ft or us-ft")
+      ->check(CLI::IsMember({"m", "ft", "us-ft"}));
   mass->add_option("--levels-attr", options.levels_attr,
                    "property holding the number of storeys, times --storey-height, when no "
                    "height is given")

@@ -22,8 +22,9 @@ struct MassOptions {
   double overhang = 0;
   std::optional<double> height;
   std::string height_attr = "height";
-  std::string levels_attr;   // --levels-attr: a register's storey count
-  double storey_height = 3;  // --storey-height: meters per level (S3DB levels, --levels-attr)
+  std::string height_unit = "m";  // --height-unit: m, ft or us-ft (registers' bare numbers)
+  std::string levels_attr;        // --levels-attr: a register's storey count
+  double storey_height = 3;       // --storey-height: meters per level (S3DB levels, --levels-attr)
   double default_height = 10;
   std::string report;
   bool report_buildings = false;  // --report-buildings: one report entry per building
