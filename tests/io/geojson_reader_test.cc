@@ -617,6 +617,38 @@ TEST(GeoJsonReader, CrossingsSliversAndUnsplittableTouchesAreSkippedWithTheirRea
   }
 }
 
+// A sliver among a MultiPolygon's polygons (a 0.7 m2 scrap beside a register's building) is left
+// out with a warning; the feature keeps its other polygons. Only slivers: the feature fails.
+TEST(GeoJsonReader, ASliverPartOfAMultiPolygonIsLeftOut) {
+  const auto multi = [](const std::string& polygons) {
+    return R"({"type": "MultiPolygon", "coordinates": [)" + polygons + "]}";
+  };
+  const std::string text = collection({
+      feature(R"("id": "house", )", "{}",
+              multi("[" + square(0, 0, 6, 5) + "], [" + square(10, 0, 10, 0.1) + "]")),
+      feature(R"("id": "scraps", )", "{}",
+              multi("[" + square(30, 0, 10, 0.1) + "], [" + square(50, 0, 0.2, 0.2) + "]")),
+  });
+  const auto strict = read(text);
+  EXPECT_FALSE(strict.ok());  // "scraps" has nothing but slivers
+  GeoJsonOptions options;
+  options.skip_invalid = true;
+  options.skip_invalid_flag = "--keep-going";
+  const auto kept = read(text, options);
+  ASSERT_TRUE(kept.ok());
+  ASSERT_EQ(kept->footprints.size(), 1u);
+  EXPECT_EQ(kept->footprints[0].id, "house");
+  ASSERT_EQ(kept->footprints[0].polygons.size(), 1u);
+  EXPECT_NEAR(kernel::area(kept->footprints[0].polygons[0]), 30, 1e-9);
+  const std::vector<std::string> lines = headlines(kept.diagnostics());
+  ASSERT_GE(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("warning[GEO028]: feature 0 (id \"house\"): polygon 1: a sliver"),
+            std::string::npos)
+      << lines[0];
+  EXPECT_NE(lines[0].find("left out, the feature keeps its other polygons"), std::string::npos);
+  EXPECT_EQ(kept->skipped_by_code.at("GEO028"), 1u);  // "scraps"
+}
+
 TEST(GeoJsonReader, ALongRingIsRead) {
   // 1,232 vertices on a circle of radius 20 m.
   std::ostringstream ring;
