@@ -371,6 +371,11 @@ std::optional<std::string> id_text(Element value) {
   if (value.type() == element_type::STRING && !string_of(value).empty()) {
     return std::string(string_of(value));
   }
+  // Integers as written: through a double, 12345678901234567890 became ...7168 and then clashed.
+  if (value.type() == element_type::INT64) return std::to_string(value.get_int64().value_unsafe());
+  if (value.type() == element_type::UINT64) {
+    return std::to_string(value.get_uint64().value_unsafe());
+  }
   if (is_number(value)) return number_text(number(value));
   return std::nullopt;
 }
@@ -881,9 +886,12 @@ void Reader::read_feature(Element value, std::size_t offset) {
       raw.id = *text;
       feature.id_path = {{"id", 0}};
     } else {
-      feature_issue(feature, false, "GEO018",
-                    "\"id\" is " + type_name(*id) + "; expected a string or a number; ignored",
-                    {{"id", 0}});
+      const bool empty = id->type() == element_type::STRING;  // id_text takes any other string
+      feature_issue(
+          feature, false, "GEO018",
+          empty ? std::string("\"id\" is an empty string; ignored")
+                : "\"id\" is " + type_name(*id) + "; expected a string or a number; ignored",
+          {{"id", 0}});
     }
   }
   for (const char* key : {"id", "name"}) {

@@ -165,6 +165,28 @@ TEST(GeoJsonReader, IdsComeFromIdMemberThenPropertiesThenIndex) {
   EXPECT_EQ(result->footprints[3].feature_index, 3u);
 }
 
+// Integer ids keep every digit (through a double, 12345678901234567890 became ...7168 and its
+// neighbour clashed with it); an empty id is said to be empty.
+TEST(GeoJsonReader, IntegerIdsAreExactAndAnEmptyIdIsNamed) {
+  const std::string text = collection({
+      feature(R"("id": 12345678901234567890, )", "{}", polygon(square(0, 0, 1, 1))),
+      feature(R"("id": 12345678901234567891, )", "{}", polygon(square(2, 0, 1, 1))),
+      feature(R"("id": -9007199254740993, )", "{}", polygon(square(4, 0, 1, 1))),
+      feature(R"("id": "", )", "{}", polygon(square(6, 0, 1, 1))),
+  });
+  const auto result = read(text);
+  ASSERT_TRUE(result.ok());
+  std::vector<std::string> ids;
+  for (const Footprint& f : result->footprints) ids.push_back(f.id);
+  EXPECT_EQ(ids, (std::vector<std::string>{"12345678901234567890", "12345678901234567891",
+                                           "-9007199254740993", "feature-3"}));
+  const std::vector<std::string> lines = headlines(result.diagnostics());
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("warning[GEO018]: feature 3: \"id\" is an empty string; ignored"),
+            std::string::npos)
+      << lines[0];
+}
+
 TEST(GeoJsonReader, DuplicateIdsAreRenamedInFileOrderAvoidingLaterIds) {
   const std::string text = collection({
       feature(R"("id": "b7", )", "{}", polygon(square(0, 0, 1, 1))),
