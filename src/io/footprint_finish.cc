@@ -606,7 +606,13 @@ bool FootprintBuilder::ids_distinct() const {
 void FootprintBuilder::assign_ids() {
   for (Footprint& footprint : result_.footprints) {
     const std::size_t index = footprint.feature_index;
-    const std::string& id = features_[index].id;
+    std::string& id = features_[index].id;
+    if (!options_.id_property.empty()) {
+      const std::optional<shape::Value> named = footprint.properties.find(options_.id_property);
+      if (named && !shape::is_null(*named) && !shape::to_string(*named).empty()) {
+        id = shape::to_string(*named);
+      }
+    }
     footprint.id = id.empty() ? fallback_id(index) : id;
   }
   if (!ids_distinct()) assign_ids_renaming();

@@ -96,6 +96,10 @@ struct FootprintOptions {
   std::string crs;
   // The CRS to build in ("--out-crs", "EPSG:N", projected, in ground meters).
   std::string out_crs;
+  // The property that names each building ("--id-attr": a register's identificatiebagpnd,
+  // cleabs, bin, OBJECTID), used wherever a feature has it (a number or non-empty text); empty:
+  // the GeoJSON id member, properties.id or name, the OSM element.
+  std::string id_property;
   // Stop after this many errors; further warnings past max_warnings are counted, not listed.
   std::size_t max_errors = 50;
   std::size_t max_warnings = 100;

@@ -187,6 +187,25 @@ TEST(GeoJsonReader, IntegerIdsAreExactAndAnEmptyIdIsNamed) {
       << lines[0];
 }
 
+// --id-attr: a register's id column names the building wherever the feature has it.
+TEST(GeoJsonReader, IdPropertyNamesTheBuildingsThatHaveIt) {
+  const std::string text = collection({
+      feature(R"("id": "m", )", R"({"identificatiebagpnd": "0503100000017303"})",
+              polygon(square(0, 0, 1, 1))),
+      feature("", R"({"identificatiebagpnd": 503100000018603})", polygon(square(2, 0, 1, 1))),
+      feature("", R"({"identificatiebagpnd": null, "name": "Tower"})", polygon(square(4, 0, 1, 1))),
+      feature("", R"({"identificatiebagpnd": ""})", polygon(square(6, 0, 1, 1))),
+  });
+  GeoJsonOptions options;
+  options.id_property = "identificatiebagpnd";
+  const auto result = read(text, options);
+  ASSERT_TRUE(result.ok());
+  std::vector<std::string> ids;
+  for (const Footprint& f : result->footprints) ids.push_back(f.id);
+  EXPECT_EQ(
+      ids, (std::vector<std::string>{"0503100000017303", "503100000018603", "Tower", "feature-3"}));
+}
+
 TEST(GeoJsonReader, DuplicateIdsAreRenamedInFileOrderAvoidingLaterIds) {
   const std::string text = collection({
       feature(R"("id": "b7", )", "{}", polygon(square(0, 0, 1, 1))),

@@ -31,6 +31,9 @@ inline void add_crs_option(CLI::App& command, CrsFlags& flags) {
                   "input's when it is one, else the UTM zone of the data)")
       ->check(CLI::Validator([](const std::string& text) { return io::buildable_crs(text); },
                              "EPSG:N"));
+  command.add_option("--id-attr", flags.id_attr,
+                     "property that names each building (a register's id column; default: the "
+                     "feature's id, else its 'id' or 'name' property, else its OSM element)");
 }
 
 // `keep_going`: invalid features are skipped with a warning; otherwise the first feature error
@@ -40,6 +43,7 @@ inline io::GeoJsonOptions geojson_options(const CrsFlags& flags, bool keep_going
   io::GeoJsonOptions options;
   options.crs = flags.crs;
   options.out_crs = flags.out_crs;
+  options.id_property = flags.id_attr;
   options.skip_invalid = keep_going;
   if (has_keep_going) options.skip_invalid_flag = "--keep-going";
   return options;
