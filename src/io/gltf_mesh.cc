@@ -33,6 +33,9 @@ std::int8_t normal_byte(float c) {
 
 constexpr std::uint32_t kNone = ~0U;
 
+// Faces of up to this many corners (nearly all) keep their corners' vertices on the stack.
+constexpr std::size_t kSmallFace = 16;
+
 // The vertex cache triangles are ordered for: meshopt's FIFO model of a GPU's, 16 vertices.
 constexpr unsigned int kCacheSize = 16;
 
@@ -160,8 +163,8 @@ MeshAssembler::MaterialList& MeshAssembler::list_of(std::uint32_t material) {
 void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face, MaterialList& list) {
   const kernel::Vec3 newell = kernel::face_normal(mesh, face);
   // A face whose corners all lie on one line has no area and no normal to shade it with (glTF
-  // requires unit normals): it is not written.
-  if (kernel::normalized(newell) == kernel::Vec3{}) return;
+  // requires unit normals): it is not written. (face_normal is unit or zero; NaN fails too.)
+  if (!(kernel::dot(newell, newell) > 0)) return;
   const std::size_t indices_before = list.indices.size();
   triangles_.clear();
   if (weld_.active()) {
@@ -227,7 +230,7 @@ void MeshAssembler::contract_face(const kernel::Mesh& mesh, std::size_t face, ke
 
 void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::uint32_t> loop,
                                 kernel::Vec3 newell, std::vector<std::uint32_t>& indices) {
-  const std::array<double, 3> n = y_up(kernel::normalized(newell));
+  const std::array<double, 3> n = y_up(newell);  // add_face's unit normal
   const auto face = static_cast<std::uint32_t>(face_normals_.size());
   // Written in place (zeroed, so the padding byte is 0): built apart, its bytes written one by
   // one and copied in as a whole stalled the copy.
@@ -236,7 +239,9 @@ void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::u
     normal.normal[k] = static_cast<float>(n[k]);
     normal.bytes[k] = normal_byte(normal.normal[k]);
   }
-  corner_uvs_.assign(loop.size(), {0.0F, 0.0F});
+  // Most faces have no uv: their corners share one zero uv rather than a list filled with it.
+  const bool with_uv = part_->uv || fit_uv_ || uv_scale_ > 0;
+  if (with_uv) corner_uvs_.resize(loop.size());
   if (part_->uv) {
     // The part's map is over world positions; an instance's mesh is placed first. glTF's v runs
     // down the image, CityEngine's up.
@@ -258,13 +263,21 @@ void MeshAssembler::add_corners(const kernel::Mesh& mesh, std::span<const std::u
     has_uv_ = true;
   }
   // Vertices made in the order the triangles first use them: the order they are written in.
-  corner_vertices_.assign(loop.size(), kNone);
+  // A face of up to kSmallFace corners keeps them on the stack (memset's wide stores into the
+  // list stalled the first read of each entry).
+  std::array<std::uint32_t, kSmallFace> small{};
+  if (loop.size() > kSmallFace) corner_vertices_.resize(loop.size());
+  const std::span<std::uint32_t> corner_vertex =
+      loop.size() <= kSmallFace ? std::span<std::uint32_t>(small).first(loop.size())
+                                : std::span<std::uint32_t>(corner_vertices_);
+  std::fill(corner_vertex.begin(), corner_vertex.end(), kNone);
   for (const CornerTriangle& triangle : triangles_) {
     for (std::uint32_t corner : triangle) {
-      std::uint32_t& vertex = corner_vertices_[corner];
+      std::uint32_t& vertex = corner_vertex[corner];
       if (vertex == kNone) {
         const std::uint32_t position = position_of_[weld_.representative(loop[corner])];
-        vertex = vertex_at(position, face, corner_uvs_[corner]);
+        vertex = vertex_at(position, face,
+                           with_uv ? corner_uvs_[corner] : std::array<float, 2>{0.0F, 0.0F});
       }
       indices.push_back(vertex);
     }
