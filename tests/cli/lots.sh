@@ -32,6 +32,26 @@ node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
          if (r.lots !== 1 || r.invalid_lots !== 1) { console.log(JSON.stringify(r)); process.exit(1); }' \
   "$tmp/k.json" || fail "CGA: --keep-going report"
 
+# A lot's seed is its feature's place in the file: mending the bow-tie that --keep-going skipped
+# leaves the good building's random height as it was (it used to be seeded by its place among
+# the valid lots, so it changed), in one scene and in 3D Tiles.
+printf 'Lot --> extrude(rand(3, 30)) Mass\n' >"$tmp/rand.cga"
+node -e 'const fs = require("fs"); const c = JSON.parse(fs.readFileSync(process.argv[1]));
+         c.features.reverse(); fs.writeFileSync(process.argv[2], JSON.stringify(c));
+         c.features[0].geometry.coordinates = [[[20, 0], [30, 0], [30, 10], [20, 10], [20, 0]]];
+         fs.writeFileSync(process.argv[3], JSON.stringify(c));' \
+  "$tmp/bad_lots.geojson" "$tmp/bad_first.geojson" "$tmp/mended.geojson"
+expect_exit 0 "CGA seeds: bad lot first" "$insula" build "$tmp/rand.cga" --lot "$tmp/bad_first.geojson" \
+  --keep-going -q -o "$tmp/bad_first.obj" --crs EPSG:32633 -o "$tmp/bad_first/tileset.json"
+expect_exit 0 "CGA seeds: mended" "$insula" build "$tmp/rand.cga" --lot "$tmp/mended.geojson" -q \
+  -o "$tmp/mended.obj" --crs EPSG:32633 -o "$tmp/mended/tileset.json"
+good_top() { awk '/^o /{f = ($2 == "good")} f && /^v / && $3 > top {top = $3} END {print top}' "$1"; }
+[ -n "$(good_top "$tmp/mended.obj")" ] && [ "$(good_top "$tmp/bad_first.obj")" = "$(good_top "$tmp/mended.obj")" ] ||
+  fail "CGA seeds: the good lot's height moved: $(good_top "$tmp/bad_first.obj") vs $(good_top "$tmp/mended.obj")"
+node -e 'const fs = require("fs"); const top = (f) => JSON.parse(fs.readFileSync(f)).root.boundingVolume.region[5];
+         if (top(process.argv[1]) !== top(process.argv[2])) process.exit(1);' \
+  "$tmp/bad_first/tileset.json" "$tmp/mended/tileset.json" || fail "CGA seeds: tiles' heights differ"
+
 village=$root/examples/bldg/village/village.bldg
 expect_exit 1 ".bldg village: invalid lot" "$insula" build "$village" --lot "$tmp/bad_lots.geojson" -q -o "$tmp/v.glb"
 grep -qF "$bowtie" "$tmp/err.txt" || { fail ".bldg: invalid lot message"; cat "$tmp/err.txt"; }

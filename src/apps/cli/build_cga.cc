@@ -1,7 +1,7 @@
 // `insula build FILE.cga [--lot LOTS.geojson] [--seed N] [--threads N] [--set a=b] [--start S]
-// [-o OUT]... [--report R.json]`: parse, check, compile, derive every lot in parallel (results by
-// lot index, so the output does not depend on --threads), then write the outputs and the report
-// (docs/cga-derivation.md).
+// [-o OUT]... [--report R.json]`: parse, check, compile, derive every lot in parallel (each seeded
+// by its feature's place in the file, so the output does not depend on --threads), then write the
+// outputs and the report (docs/cga-derivation.md).
 #include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/parallel_for.h>
 
@@ -68,8 +68,8 @@ std::optional<Lots> read_lots(const BuildOptions& options) {
   for (io::Footprint& f : set->footprints) {
     // The file's first edge, so a lot's x axis follows it even where the reader reversed a
     // clockwise ring.
-    out.lots.push_back(
-        {std::move(f.id), std::move(f.polygons), f.properties.map(), std::move(f.first_edges)});
+    out.lots.push_back({std::move(f.id), std::move(f.polygons), f.properties.map(),
+                        std::move(f.first_edges), f.feature_index});
   }
   return out;
 }
@@ -224,7 +224,7 @@ int build_cga(const BuildOptions& options) {
     Progress progress("lots", results.size(), options.quiet);
     tbb::parallel_for(std::size_t{0}, results.size(), [&](std::size_t i) {
       if (interrupted()) return;
-      results[i] = cga::derive_lot(p, lots->lots[i], i, derive);
+      results[i] = cga::derive_lot(p, lots->lots[i], lots->lots[i].number, derive);
       progress.advance();
     });
   }

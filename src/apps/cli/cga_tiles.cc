@@ -45,7 +45,8 @@ double faces_per_square_metre(const CgaCity& city) {
   const std::vector<std::size_t> picked = sampled_lots(city.lots.size());
   std::vector<cga::LotResult> results(picked.size());
   tbb::parallel_for(std::size_t{0}, picked.size(), [&](std::size_t k) {
-    results[k] = cga::derive_lot(city.program, city.lots[picked[k]], picked[k], city.derive);
+    results[k] = cga::derive_lot(city.program, city.lots[picked[k]], city.lots[picked[k]].number,
+                                 city.derive);
   });
   std::vector<cga::Lot> lots;
   double area = 0;
@@ -108,12 +109,13 @@ Json lot_note(const cga::LotResult& r, const base::Source& source) {
   return {{"ok", r.ok}, {"prints", r.prints}, {"diagnostics", std::move(diagnostics)}};
 }
 
-// One tile's lots derived (in parallel, each seeded by its index in the input, as the whole-scene
-// build seeds it) and turned into buildings with the tile's own material table.
+// One tile's lots derived (in parallel, each seeded by its feature's place in the input, as the
+// whole-scene build seeds it) and turned into buildings with the tile's own material table.
 TileContent derive_tile(const CgaCity& city, const std::vector<std::size_t>& members) {
   std::vector<cga::LotResult> results(members.size());
   tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t k) {
-    results[k] = cga::derive_lot(city.program, city.lots[members[k]], members[k], city.derive);
+    results[k] = cga::derive_lot(city.program, city.lots[members[k]], city.lots[members[k]].number,
+                                 city.derive);
   });
   TileContent content;
   for (std::size_t k = 0; k < members.size(); ++k) {

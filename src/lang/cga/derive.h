@@ -96,6 +96,10 @@ struct Lot {
   // the outer ring is rotated so the edge with these end points (either direction) comes first,
   // and the start shape's x axis runs along it. Empty: the ring's own first edge.
   std::vector<std::array<kernel::Vec2, 2>> first_edges;
+  // Its feature's position in the input file, the number its seed mixes in (derive_lot's
+  // lot_index): a feature skipped before it (invalid, under --keep-going) does not change it, so
+  // mending that feature leaves the other buildings as they were.
+  std::size_t number = 0;
 };
 
 // Geometry of a pending or terminal shape, by handle into LotResult::geometry.
