@@ -52,6 +52,15 @@ node -e 'const fs = require("fs"); const top = (f) => JSON.parse(fs.readFileSync
          if (top(process.argv[1]) !== top(process.argv[2])) process.exit(1);' \
   "$tmp/bad_first/tileset.json" "$tmp/mended/tileset.json" || fail "CGA seeds: tiles' heights differ"
 
+# The same for a graph's create.lots (a skipped feature counts as one lot): the lots graph draws
+# each lot's storeys at random.
+for f in bad_first mended; do
+  expect_exit 0 "graph seeds: $f" "$insula" build "$root/examples/graph/city/lots.graph.json" \
+    --lot "$tmp/$f.geojson" --keep-going -q -o "$tmp/g_$f.obj"
+done
+[ -n "$(good_top "$tmp/g_mended.obj")" ] && [ "$(good_top "$tmp/g_bad_first.obj")" = "$(good_top "$tmp/g_mended.obj")" ] ||
+  fail "graph seeds: the good lot's height moved: $(good_top "$tmp/g_bad_first.obj") vs $(good_top "$tmp/g_mended.obj")"
+
 village=$root/examples/bldg/village/village.bldg
 expect_exit 1 ".bldg village: invalid lot" "$insula" build "$village" --lot "$tmp/bad_lots.geojson" -q -o "$tmp/v.glb"
 grep -qF "$bowtie" "$tmp/err.txt" || { fail ".bldg: invalid lot message"; cat "$tmp/err.txt"; }

@@ -79,10 +79,17 @@ struct LotFiles {
     read_any = true;
     origin = set->origin;
     crs = set->crs;
+    // Lots are numbered in file order, a feature skipped (invalid, under --keep-going) counting as
+    // one lot: mending a bad footprint then leaves the other lots' numbers, and so their seeds, as
+    // they were (docs/graph-executor.md, create.lots).
+    std::uint32_t number = 0;
+    std::size_t next_feature = 0;
     for (io::Footprint& f : set->footprints) {
+      number += static_cast<std::uint32_t>(f.feature_index - next_feature);
+      next_feature = f.feature_index + 1;
       for (std::size_t k = 0; k < f.polygons.size(); ++k) {
         const std::string id = f.polygons.size() == 1 ? f.id : f.id + "#" + std::to_string(k);
-        lots.push_back({std::move(f.polygons[k]), f.properties.map(), id});
+        lots.push_back({std::move(f.polygons[k]), f.properties.map(), id, number++});
       }
     }
     return true;
@@ -180,7 +187,6 @@ int build_graph(const BuildOptions& options) {
         std::fprintf(stderr, "%s\n", error.c_str());
         return kExitInput;
       }
-      for (std::size_t i = 0; i < lots.size(); ++i) lots[i].number = static_cast<std::uint32_t>(i);
       seconds["lots"] = clock.seconds();
       nlohmann::json report;
       report["input"] = options.input;
