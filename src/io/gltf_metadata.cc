@@ -123,9 +123,9 @@ void PartTable::find_columns(const shape::Scene& scene, const std::vector<bool>&
     s.numbers = s.numbers && std::holds_alternative<double>(value);
     s.booleans = s.booleans && std::holds_alternative<bool>(value);
   };
-  // Each inherited map's entries as Seen records, looked up once for all parts sharing it (flat:
-  // a map's first entry by map), the last map first (a building's parts come together).
-  std::unordered_map<const shape::AttributeMap*, std::size_t> inherited_seen;
+  // Each inherited map's entries as Seen records, looked up once for the run of parts sharing it
+  // (a building's parts come together; a map met again later is looked up again, which costs
+  // less than a table of every map seen, one entry a building).
   std::vector<Seen*> entries;
   const shape::AttributeMap* last = nullptr;
   std::size_t first = 0;
@@ -138,14 +138,10 @@ void PartTable::find_columns(const shape::Scene& scene, const std::vector<bool>&
       ++rows_;
       if (part.inherited && part.inherited.get() != last) {
         last = part.inherited.get();
-        const auto [it, added] = inherited_seen.try_emplace(last, entries.size());
-        first = it->second;
-        if (added) {
-          // A null makes no column (as a copied null did not): no entry for it.
-          for (const auto& [key, value] : *last) {
-            entries.push_back(shape::is_null(value) ? nullptr
-                                                    : &seen.try_emplace(key).first->second);
-          }
+        first = entries.size();
+        // A null makes no column (as a copied null did not): no entry for it.
+        for (const auto& [key, value] : *last) {
+          entries.push_back(shape::is_null(value) ? nullptr : &seen.try_emplace(key).first->second);
         }
       }
       for_each_attribute(
@@ -205,15 +201,13 @@ void PartTable::grow_index(Column& column) {
 }
 
 // The first of `map`'s entries in inherited_values_ and inherited_codes_ (one per attribute
-// column), found once for all the parts sharing the map: a tile's building's parts come together,
-// so the last map is tried first.
+// column), found once for the run of parts sharing the map (a tile's building's parts come
+// together).
 std::size_t PartTable::inherited_row(const shape::AttributeMap& map) {
   if (&map == last_inherited_) return last_inherited_row_;
   const std::size_t first = inherited_values_.size();
-  const auto [it, added] = inherited_rows_.try_emplace(&map, first);
   last_inherited_ = &map;
-  last_inherited_row_ = it->second;
-  if (!added) return it->second;
+  last_inherited_row_ = first;
   for (std::size_t c = 2; c < columns_.size(); ++c) {
     Column& column = columns_[c];
     const auto found = map.find(column.name);

@@ -19,7 +19,6 @@
 #include <memory>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "io/gltf_buffers.h"
@@ -97,9 +96,8 @@ class PartTable {
   std::vector<Column> columns_;
   std::vector<std::uint32_t> kind_codes_;  // by shape::PartKind: its code in "kind" (or kAbsent)
   // An inherited attribute map's value for each attribute column (nullptr: it has none), and the
-  // text code of each, found once for all the parts that share the map; flat, a map's entries
-  // from the index inherited_rows_ gives it.
-  std::unordered_map<const shape::AttributeMap*, std::size_t> inherited_rows_;
+  // text code of each, found once for the run of parts that share the map; flat, the last map's
+  // entries from last_inherited_row_.
   std::vector<const shape::Value*> inherited_values_;
   std::vector<std::uint32_t> inherited_codes_;
   const shape::AttributeMap* last_inherited_ = nullptr;
