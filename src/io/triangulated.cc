@@ -16,15 +16,35 @@ namespace {
 using kernel::Vec2;
 using kernel::Vec3;
 
-// Projects onto the coordinate plane most perpendicular to `normal`, choosing the axis order that
-// keeps the loop counter-clockwise when seen against the normal (x = y × z, y = z × x, z = x × y).
-Vec2 project(Vec3 p, Vec3 normal) {
+// The coordinate plane most perpendicular to a normal, with the axis order that keeps the loop
+// counter-clockwise when seen against the normal (x = y × z, y = z × x, z = x × y).
+enum class Plane { kXY, kYX, kYZ, kZY, kZX, kXZ };
+
+Plane plane_of(Vec3 normal) {
   const double ax = std::abs(normal.x);
   const double ay = std::abs(normal.y);
   const double az = std::abs(normal.z);
-  if (az >= ax && az >= ay) return normal.z > 0 ? Vec2{p.x, p.y} : Vec2{p.y, p.x};
-  if (ax >= ay) return normal.x > 0 ? Vec2{p.y, p.z} : Vec2{p.z, p.y};
-  return normal.y > 0 ? Vec2{p.z, p.x} : Vec2{p.x, p.z};
+  if (az >= ax && az >= ay) return normal.z > 0 ? Plane::kXY : Plane::kYX;
+  if (ax >= ay) return normal.x > 0 ? Plane::kYZ : Plane::kZY;
+  return normal.y > 0 ? Plane::kZX : Plane::kXZ;
+}
+
+Vec2 project(Vec3 p, Plane plane) {
+  switch (plane) {
+    case Plane::kXY:
+      return {p.x, p.y};
+    case Plane::kYX:
+      return {p.y, p.x};
+    case Plane::kYZ:
+      return {p.y, p.z};
+    case Plane::kZY:
+      return {p.z, p.y};
+    case Plane::kZX:
+      return {p.z, p.x};
+    case Plane::kXZ:
+      break;
+  }
+  return {p.x, p.z};
 }
 
 // Sine of the smallest turn a strictly convex corner must make. Corners closer to straight (a
@@ -38,12 +58,15 @@ constexpr double kMinTurn = 1e-9;
 // the triangulator takes them relative to a corner of the bounds, to keep the tests well scaled.
 bool is_strictly_convex(const kernel::Ring& ring) {
   const std::size_t n = ring.size();
+  if (n < 3) return false;
   int sign_changes = 0;
   int last_sign = 0;
-  for (std::size_t i = 0; i < n; ++i) {
+  // Corners i, j = i + 1 and k = i + 2 around the ring, stepped without a modulo (two integer
+  // divisions a corner cost more than the turn test).
+  for (std::size_t i = 0, j = 1 % n, k = 2 % n; i < n; ++i, j = k, k = k + 1 == n ? 0 : k + 1) {
     const Vec2 a = ring[i] - ring[0];
-    const Vec2 b = ring[(i + 1) % n] - ring[0];
-    const Vec2 c = ring[(i + 2) % n] - ring[0];
+    const Vec2 b = ring[j] - ring[0];
+    const Vec2 c = ring[k] - ring[0];
     const Vec2 u = b - a;
     const Vec2 v = c - b;
     // cross(u, v) > kMinTurn |u| |v|, squared: no square roots (hypot), the costliest part here.
@@ -158,7 +181,8 @@ bool FaceTriangulator::triangulate_corners(std::size_t n, Position position, Vec
   }
   kernel::Ring& ring = polygon_.outer;
   ring.clear();
-  for (std::size_t i = 0; i < n; ++i) ring.push_back(project(position(i), normal));
+  const Plane plane = plane_of(normal);  // once a face, not once a corner
+  for (std::size_t i = 0; i < n; ++i) ring.push_back(project(position(i), plane));
   return triangulate_ring(triangles);
 }
 
