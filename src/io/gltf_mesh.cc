@@ -118,6 +118,11 @@ bool MeshAssembler::add(const kernel::Mesh& mesh, const shape::Part& part, std::
   // A closed shell is welded as a whole; an open mesh's faces are contracted one by one.
   if (!collapsed_ || !weld_.run(mesh, options_.quantize ? kQuantizationStep : 0)) weld_.clear();
   // Faces grouped by material, in mesh order within each.
+  // Every face's unit normal first, in a loop of its own: each normal is a chain of dependent
+  // sums, a square root and divisions, and faces computed side by side overlap those waits.
+  face_units_.resize(mesh.face_count());
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f)
+    face_units_[f] = kernel::face_normal(mesh, f);
   faces_by_material_.clear();
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
     faces_by_material_.emplace_back(materials_.index(mesh.tag(f)), f);
@@ -161,7 +166,7 @@ MeshAssembler::MaterialList& MeshAssembler::list_of(std::uint32_t material) {
 // Flat shading: the face's corners become vertices of their own, all carrying the face normal.
 // Where the weld merges vertices (float32_weld.h) the face's triangles and corners come from it.
 void MeshAssembler::add_face(const kernel::Mesh& mesh, std::size_t face, MaterialList& list) {
-  const kernel::Vec3 newell = kernel::face_normal(mesh, face);
+  const kernel::Vec3 newell = face_units_[face];
   // A face whose corners all lie on one line has no area and no normal to shade it with (glTF
   // requires unit normals): it is not written. (face_normal is unit or zero; NaN fails too.)
   if (!(kernel::dot(newell, newell) > 0)) return;

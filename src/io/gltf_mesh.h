@@ -235,6 +235,7 @@ class MeshAssembler {
   FaceTriangulator triangulator_;
   std::vector<CornerTriangle> triangles_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> faces_by_material_;
+  std::vector<kernel::Vec3> face_units_;  // the part's faces' unit normals (kernel::face_normal)
   Float32Weld weld_;
   std::vector<std::uint32_t> corners_;
   std::vector<std::uint32_t> corner_positions_;  // a face's corners' entries in positions_
