@@ -211,8 +211,7 @@ bool FaceTriangulator::triangulate_ring(std::vector<CornerTriangle>& triangles) 
     }
     return true;
   }
-  kernel::Triangulation result;
-  if (kernel::triangulate(polygon_, result) && map_back(ring, result, triangles)) return true;
+  if (kernel::triangulate(polygon_, result_) && map_back(ring, result_, triangles)) return true;
   if (!kernel::is_convex(ring)) return false;
   append_fan(n, triangles);
   return true;

@@ -13,6 +13,7 @@
 
 #include "kernel/mesh.h"
 #include "kernel/polygon.h"
+#include "kernel/triangulate.h"
 #include "shape/scene.h"
 
 namespace insula::io {
@@ -55,6 +56,7 @@ class FaceTriangulator {
                          std::vector<CornerTriangle>& triangles);
 
   kernel::Polygon polygon_;
+  kernel::Triangulation result_;  // a concave face's, its lists kept from face to face
   std::vector<std::uint32_t> next_;
   std::vector<std::uint32_t> prev_;
   std::vector<std::uint32_t> whole_;  // 0 .. n-1: a loop that contracts nowhere
