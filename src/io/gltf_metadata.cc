@@ -188,6 +188,12 @@ std::uint32_t PartTable::intern(Column& column, std::string_view text) {
   }
 }
 
+// The code of a value's text: a text value looked up as it is, without a copy.
+std::uint32_t PartTable::intern_value(Column& column, const shape::Value& value) {
+  if (const auto* text = std::get_if<std::string>(&value)) return intern(column, *text);
+  return intern(column, shape::to_string(value));
+}
+
 // Doubles the column's table of codes (16 slots at first) and enters every text again.
 void PartTable::grow_index(Column& column) {
   std::vector<std::uint32_t>& slots = column.index_of;
@@ -213,9 +219,8 @@ std::size_t PartTable::inherited_row(const shape::AttributeMap& map) {
     const auto found = map.find(column.name);
     const bool present = found != map.end() && !shape::is_null(found->second);
     inherited_values_.push_back(present ? &found->second : nullptr);
-    inherited_codes_.push_back(present && column.type == Type::kString
-                                   ? intern(column, shape::to_string(found->second))
-                                   : kAbsent);
+    inherited_codes_.push_back(
+        present && column.type == Type::kString ? intern_value(column, found->second) : kAbsent);
   }
   return first;
 }
@@ -241,7 +246,7 @@ void PartTable::add_row(const shape::Part& part, std::size_t index) {
     std::uint32_t code = kAbsent;
     if (own != part.attributes.end() && own->first == column.name && !shape::is_null(own->second)) {
       value = &own->second;
-      if (column.type == Type::kString) code = intern(column, shape::to_string(*value));
+      if (column.type == Type::kString) code = intern_value(column, *value);
     } else if (inherited != kNone) {
       value = inherited_values_[inherited + c - 2];
       code = inherited_codes_[inherited + c - 2];

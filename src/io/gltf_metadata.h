@@ -88,6 +88,7 @@ class PartTable {
   void add_row(const shape::Part& part, std::size_t index);
   std::size_t inherited_row(const shape::AttributeMap& map);
   static std::uint32_t intern(Column& column, std::string_view text);
+  static std::uint32_t intern_value(Column& column, const shape::Value& value);
   static void grow_index(Column& column);
   static void make_dictionary(Column& column);
   void write_class_property(JsonStream& json, const Column& column) const;
