@@ -1,7 +1,7 @@
 // GeoJSON footprint reader (RFC 7946 structure, GeoJSON-2008 "crs" member). Stages: byte
 // pre-scan (empty input, nesting depth, where the features start) -> simdjson DOM parses, piece by
-// piece (the top level without its features, then the features a chunk at a time), which together
-// validate the whole text ->
+// piece (the top level without its features, then the features a chunk at a time; a GeoJSON text
+// sequence has one Feature per line and no top level), which together validate the whole text ->
 // structure walk collecting world-coordinate rings per feature -> the finishing steps shared with
 // the OSM reader (io/footprint_finish.h: CRS and reprojection, origin shift, repair, id
 // de-duplication). Only when simdjson rejects the text does nlohmann::json look at it: its SAX pass
@@ -31,6 +31,8 @@ using nlohmann::json;
 using Element = simdjson::dom::element;
 using simdjson::dom::element_type;
 constexpr std::size_t kNone = kNoIndex;
+constexpr std::array<std::string_view, 4> kSequenceSuffixes = {".geojsonl", ".geojsons",
+                                                               ".geojsonseq", ".ndjson"};
 
 // ---------------------------------------------------------------------------------------------
 // Byte-level scanning. Works on any bytes (the depth scan runs before parsing); never reads past
@@ -493,7 +495,8 @@ class Reader : public FootprintBuilder {
       : FootprintBuilder(name, options, "GeoJsonOptions"),
         text_(text),
         geo_options_(options),
-        locator_(text) {}
+        locator_(text),
+        sequence_(options.sequence || is_geojson_sequence_path(name)) {}
 
   base::Result<FootprintSet> run();
 
@@ -531,11 +534,13 @@ class Reader : public FootprintBuilder {
 
   // Stages ---------------------------------------------------------------------------------
   bool prescan();
+  bool prescan_lines();
   bool parse();
   std::size_t group_count() const;
   bool parse_group(std::size_t group, std::vector<ParsedPiece>& pieces);
   bool valid_group(std::size_t group, std::vector<ParsedPiece>& pieces);
   bool nlohmann_accepts();
+  bool nlohmann_accepts_lines();
   void syntax_failure();
   void read_top_level(Element doc);
   void read_crs(Element doc);
@@ -551,6 +556,9 @@ class Reader : public FootprintBuilder {
   std::string_view text_;
   const GeoJsonOptions& geo_options_;
   TextLocator locator_;
+  // A GeoJSON text sequence: feature_offsets_ are the lines' values, feature_ends_ their ends.
+  bool sequence_ = false;
+  std::vector<std::size_t> feature_ends_;
   // Where each line starts, built on the first positioned diagnostic: line and column as
   // base::Source counts them (bytes, from 1), without a copy of a city-sized text.
   std::vector<std::size_t> line_starts_;
@@ -623,6 +631,7 @@ std::vector<PathStep> Reader::geometry_path(const FeatureState& feature, const W
 
 // Stage 1: bytes. Empty input and hostile nesting are rejected before nlohmann's parser runs.
 bool Reader::prescan() {
+  if (sequence_) return prescan_lines();
   root_offset_ = locator_.skip_space(0);
   if (root_offset_ >= text_.size()) {
     emit(base::Severity::kError, "GEO002", "file is empty; expected a GeoJSON object", kNone);
@@ -642,6 +651,37 @@ bool Reader::prescan() {
   return true;
 }
 
+// Stage 1 of a GeoJSON text sequence (RFC 8142): each line that holds more than blanks (and a
+// leading record separator, 0x1E) is a feature, checked for depth on its own.
+bool Reader::prescan_lines() {
+  const auto blank = [](char c) { return is_space(c) || c == '\x1E'; };
+  for (std::size_t begin = text_.starts_with("\xEF\xBB\xBF") ? 3 : 0; begin < text_.size();) {
+    std::size_t end = std::min(text_.find('\n', begin), text_.size());
+    const std::size_t next = end + 1;
+    while (begin < end && blank(text_[begin])) ++begin;
+    while (end > begin && blank(text_[end - 1])) --end;
+    if (begin < end) {
+      const std::string_view line = text_.substr(begin, end - begin);
+      if (const auto deep = scan_layout(line, line.size(), geo_options_.max_depth).too_deep) {
+        emit(base::Severity::kError, "GEO003",
+             "arrays and objects nest deeper than " + std::to_string(geo_options_.max_depth) +
+                 " levels (GeoJsonOptions::max_depth)",
+             begin + *deep);
+        return false;
+      }
+      feature_offsets_.push_back(begin);
+      feature_ends_.push_back(end);
+    }
+    begin = next;
+  }
+  if (feature_offsets_.empty()) {
+    emit(base::Severity::kError, "GEO002",
+         "file is empty; expected a GeoJSON Feature on each line (a GeoJSON sequence)", kNone);
+    return false;
+  }
+  return true;
+}
+
 // Stage 2: JSON. simdjson parses the text in pieces that together cover all of it (the glue
 // between them is whitespace and commas, checked here): the top level with a FeatureCollection's
 // "features" array cut out (parsed as "[]"), then that array's elements kChunk at a time, kGroup
@@ -650,11 +690,13 @@ bool Reader::prescan() {
 // error is the only diagnostic of a text: a diagnostic of the walk waits for ensure_valid(), and a
 // syntax error found by the walk before any drops what was read (run()).
 bool Reader::parse() {
-  const bool ok = features_at_ == kNone
-                      ? top_.parse({text_.substr(root_offset_)}, redump_, geo_options_.max_depth)
-                      : top_.parse({text_.substr(root_offset_, features_at_ - root_offset_), "[]",
-                                    text_.substr(features_end_)},
-                                   redump_, geo_options_.max_depth);
+  // A sequence has no top level: its lines are parsed as a collection's features are.
+  const bool ok =
+      sequence_ || (features_at_ == kNone
+                        ? top_.parse({text_.substr(root_offset_)}, redump_, geo_options_.max_depth)
+                        : top_.parse({text_.substr(root_offset_, features_at_ - root_offset_), "[]",
+                                      text_.substr(features_end_)},
+                                     redump_, geo_options_.max_depth));
   if (!ok) {
     if (redump_ || !nlohmann_accepts()) {
       syntax_failure();
@@ -699,10 +741,18 @@ bool Reader::parse_group(std::size_t group, std::vector<ParsedPiece>& pieces) {
       while (!piece.empty() && is_space(piece.back())) piece.remove_suffix(1);
     };
     trim();
-    if (end < count) {
+    if (end < count && !sequence_) {
       if (piece.empty() || piece.back() != ',') return;
       piece.remove_suffix(1);
       trim();
+    }
+    std::string lines;  // a sequence's lines, joined by commas
+    if (sequence_) {
+      for (std::size_t i = begin; i < end; ++i) {
+        if (i > begin) lines += ',';
+        lines += text_.substr(feature_offsets_[i], feature_ends_[i] - feature_offsets_[i]);
+      }
+      piece = lines;
     }
     ok[k] = pieces[k].parse({"[", piece, "]"}, redump_, geo_options_.max_depth) &&
             array_size(pieces[k].root) == end - begin;
@@ -733,10 +783,27 @@ void Reader::ensure_valid() {
 
 // Whether nlohmann accepts the text: its validating SAX pass runs once, catcher_ keeps the error.
 bool Reader::nlohmann_accepts() {
+  if (sequence_) return nlohmann_accepts_lines();
   if (!catcher_) {
     catcher_.emplace();
     const char* begin = text_.data();
     json::sax_parse(begin, begin + text_.size(), &*catcher_);
+  }
+  return catcher_->message.empty();
+}
+
+// The same for a sequence, line by line: the first line it rejects holds the error.
+bool Reader::nlohmann_accepts_lines() {
+  if (!catcher_) {
+    for (std::size_t i = 0; i < feature_offsets_.size(); ++i) {
+      catcher_.emplace();
+      const char* begin = text_.data() + feature_offsets_[i];
+      json::sax_parse(begin, text_.data() + feature_ends_[i], &*catcher_);
+      if (!catcher_->message.empty()) {
+        catcher_->offset += feature_offsets_[i];
+        break;
+      }
+    }
   }
   return catcher_->message.empty();
 }
@@ -763,6 +830,9 @@ void Reader::syntax_failure() {
     message = std::string("trailing comma before '") + at[0] + "' is not allowed in JSON";
   } else if (catcher.offset >= text_.size()) {
     notes.push_back("the file ends in the middle of a value: is it truncated?");
+  } else if (sequence_ && (catcher.offset + 1 >= text_.size() || text_[catcher.offset] == '\n' ||
+                           text_[catcher.offset + 1] == '\n')) {
+    notes.push_back("a GeoJSON sequence holds one whole Feature on each line");
   }
   emit(base::Severity::kError, "GEO001", message, catcher.offset, std::move(notes));
 }
@@ -875,8 +945,15 @@ void Reader::read_features() {
 void Reader::read_feature(Element value, std::size_t offset) {
   FeatureState& feature = add_feature(offset);
   RawFootprint& raw = features_[feature.index];
+  // In a sequence each line is a Feature: say which line is not.
+  const std::string line =
+      sequence_ ? "line " + std::to_string(at(offset).span.line) + " of the GeoJSON sequence"
+                : std::string();
   if (value.type() != element_type::OBJECT) {
-    feature_issue(feature, true, "GEO015", "is " + type_name(value) + "; expected an object", {});
+    feature_issue(feature, true, "GEO015",
+                  sequence_ ? line + " is " + type_name(value) + "; expected a Feature object"
+                            : "is " + type_name(value) + "; expected an object",
+                  {});
     return;
   }
   const auto [id, type, props, geometry] =
@@ -904,8 +981,9 @@ void Reader::read_feature(Element value, std::size_t offset) {
   }
   if (!type || type->type() != element_type::STRING || string_of(*type) != "Feature") {
     feature_issue(feature, true, "GEO015",
-                  !type ? std::string("has no \"type\"; expected \"Feature\"")
-                        : "\"type\" is " + compact(*type) + "; expected \"Feature\"",
+                  (sequence_ ? line + ": " : line) +
+                      (!type ? std::string("has no \"type\"; expected \"Feature\"")
+                             : "\"type\" is " + compact(*type) + "; expected \"Feature\""),
                   {{"type", 0}});
     return;
   }
@@ -1141,7 +1219,11 @@ std::optional<kernel::Vec2> Reader::read_position(FeatureState& feature, Element
 base::Result<FootprintSet> Reader::run() {
   if (prescan() && parse()) {
     try {
-      read_top_level(top_.root);
+      if (sequence_) {
+        read_features();
+      } else {
+        read_top_level(top_.root);
+      }
     } catch (const SyntaxAbort&) {
       // No diagnostic but GEO001 has been emitted (ensure_valid()): forget what was read.
       features_.clear();
@@ -1157,11 +1239,22 @@ base::Result<FootprintSet> Reader::run() {
   chunks_.shrink_to_fit();
   feature_offsets_.clear();
   feature_offsets_.shrink_to_fit();
+  feature_ends_.clear();
+  feature_ends_.shrink_to_fit();
   finish_features(at(crs_offset_));
   return result();
 }
 
 }  // namespace
+
+bool is_geojson_sequence_path(std::string_view path) {
+  std::string lower(path.substr(path.size() - std::min<std::size_t>(path.size(), 12)));
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c + 32) : c; });
+  const std::string_view name(lower);
+  return std::any_of(kSequenceSuffixes.begin(), kSequenceSuffixes.end(),
+                     [&](std::string_view suffix) { return name.ends_with(suffix); });
+}
 
 base::Result<FootprintSet> read_geojson(std::string_view text, const std::string& source_name,
                                         const GeoJsonOptions& options) {

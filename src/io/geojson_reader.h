@@ -23,11 +23,21 @@ struct GeoJsonOptions : FootprintOptions {
   std::size_t max_depth = 64;
   // Largest accepted |coordinate| in meters; 1e8 m is well beyond any projected CRS.
   double max_abs_coordinate = 1e8;
+  // A GeoJSON text sequence instead of one document: one Feature per line, a line optionally
+  // starting with the record separator 0x1E (RFC 8142 GeoJSONSeq; newline-delimited GeoJSON as
+  // Microsoft's building footprints ship it). Blank lines are skipped. read_geojson also reads a
+  // text whose `source_name` is_geojson_sequence_path() so.
+  bool sequence = false;
 };
 
-// Reads GeoJSON `text` (a FeatureCollection, a single Feature, or a bare Polygon / MultiPolygon
-// geometry) in projected meters or in longitude/latitude, which is reprojected. `source_name` names
-// the file in diagnostics. Never throws and never prints: on failure the result holds the errors
+// Whether a file of this name holds a GeoJSON text sequence: it ends in .geojsonl, .geojsons,
+// .geojsonseq or .ndjson (any letter case).
+bool is_geojson_sequence_path(std::string_view path);
+
+// Reads GeoJSON `text` (a FeatureCollection, a single Feature, a bare Polygon / MultiPolygon
+// geometry, or a sequence of Features one per line: GeoJsonOptions::sequence) in projected meters
+// or in longitude/latitude, which is reprojected. `source_name` names the file in diagnostics.
+// Never throws and never prints: on failure the result holds the errors
 // (`file:line:col: error[GEOnnn]: feature 3 (id "b12"): ...`); on success it may hold warnings.
 base::Result<FootprintSet> read_geojson(std::string_view text, const std::string& source_name,
                                         const GeoJsonOptions& options = {});

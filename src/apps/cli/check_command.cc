@@ -45,10 +45,11 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
   CLI::App* check =
       app.add_subcommand("check", "parse and check an input without building anything");
   check
-      ->add_option("INPUT", options.input,
-                   "a .geojson, .osm or .osm.pbf footprint file, a .cga or .bldg grammar, a .lua "
-                   "program, a .psm "
-                   "PLaSM program or a .graph.json procedural content graph")
+      ->add_option(
+          "INPUT", options.input,
+          "a .geojson, .geojsonl, .osm or .osm.pbf footprint file, a .cga or .bldg grammar, "
+          "a .lua program, a .psm PLaSM program or a .graph.json procedural content "
+          "graph")
       ->required();
   check->add_flag("-q,--quiet", options.quiet, "print errors only");
   check->add_option("--start", options.start,
@@ -73,7 +74,8 @@ int run_check(const CheckOptions& options) {
     footprints = true;
   } else if (has_suffix(options.input, ".graph.json")) {
     checker = check_graph;
-  } else if (has_suffix(options.input, ".geojson") || has_suffix(options.input, ".json")) {
+  } else if (has_suffix(options.input, ".geojson") || has_suffix(options.input, ".json") ||
+             io::is_geojson_sequence_path(options.input)) {
     footprints = true;
   } else if (has_suffix(options.input, ".cga")) {
     cga = true;
@@ -86,8 +88,8 @@ int run_check(const CheckOptions& options) {
   } else {
     std::fprintf(
         stderr,
-        "insula: %s: unknown input type (use .geojson, .osm, .osm.pbf, .cga, .bldg, .lua, .psm "
-        "or .graph.json)\n",
+        "insula: %s: unknown input type (use .geojson, .geojsonl, .osm, .osm.pbf, .cga, .bldg, "
+        ".lua, .psm or .graph.json)\n",
         options.input.c_str());
     return kExitUsage;
   }
