@@ -81,6 +81,13 @@ bool is_overture(const PropertyRow& properties) {
          text_of(properties, "num_floors") || text_of(properties, "facade_color");
 }
 
+// Tagged building or building:part (any value but no).
+bool is_osm_building(const PropertyRow& properties) {
+  const std::optional<std::string> building = text_of(properties, "building");
+  const std::optional<std::string> part = text_of(properties, "building:part");
+  return (building && *building != "no") || (part && *part != "no");
+}
+
 class FormReader {
  public:
   FormReader(const PropertyRow& properties, const BuildingTagOptions& options,
@@ -152,7 +159,7 @@ class FormReader {
   void classify() {
     const std::optional<std::string> building = text_of(properties_, "building");
     const std::optional<std::string> part = text_of(properties_, "building:part");
-    form_.osm = (building && *building != "no") || (part && *part != "no");
+    form_.osm = is_osm_building(properties_);
     form_.is_part = part && *part != "no";
     if (!form_.osm && is_overture(properties_)) {
       // Overture's building_part features name the building they belong to.
@@ -386,6 +393,10 @@ std::string_view source_name(ValueSource source) {
       return "default";
   }
   return "default";
+}
+
+bool follows_s3db(const PropertyRow& properties) {
+  return is_osm_building(properties) || is_overture(properties);
 }
 
 BuildingForm read_building_form(const PropertyRow& properties, const BuildingTagOptions& options,

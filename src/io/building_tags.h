@@ -89,6 +89,10 @@ using RoofRise = std::function<double(const std::string& roof, double pitch_deg)
 BuildingForm read_building_form(const PropertyRow& properties, const BuildingTagOptions& options,
                                 const RoofRise& roof_rise, std::vector<TagWarning>& warnings);
 
+// Whether the feature follows Simple 3D Buildings: an OpenStreetMap building or part, or an
+// Overture building, whose lengths are meters by definition; other features are registers'.
+bool follows_s3db(const PropertyRow& properties);
+
 // Lengths and level counts as OSM and registers write them (base/tag_numbers.h).
 using base::parse_length;
 using base::parse_levels;

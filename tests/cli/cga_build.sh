@@ -130,5 +130,26 @@ grep -qF "p.cga:2:17: error[CGA605]: the probability of rule 'r1' (line 2) evalu
 [ "$(json "$tmp/bs.json" "d['symbols']['balcony'], d['symbols']['floor'], d['symbols']['door']")" = \
   "3 3 3" ] || fail "paper BS XY counts: $(cat "$tmp/bs.json")"
 
+# --height-unit ft: a register lot's bare height (a number, or a text that is only a number) is
+# feet for the grammar; a text with a unit and an OpenStreetMap lot's height keep theirs.
+cat >"$tmp/feet.geojson" <<'G'
+{"type": "FeatureCollection", "features": [
+ {"type": "Feature", "id": "n", "properties": {"height": 10},
+  "geometry": {"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,8],[0,8],[0,0]]]}},
+ {"type": "Feature", "id": "t", "properties": {"height": "20"},
+  "geometry": {"type": "Polygon", "coordinates": [[[20,0],[30,0],[30,8],[20,8],[20,0]]]}},
+ {"type": "Feature", "id": "u", "properties": {"height": "4 m"},
+  "geometry": {"type": "Polygon", "coordinates": [[[40,0],[50,0],[50,8],[40,8],[40,0]]]}},
+ {"type": "Feature", "id": "o", "properties": {"building": "yes", "height": "6"},
+  "geometry": {"type": "Polygon", "coordinates": [[[60,0],[70,0],[70,8],[60,8],[60,0]]]}}]}
+G
+"$insula" build "$tmp/h.cga" --lot "$tmp/feet.geojson" --height-unit ft --report "$tmp/ft.json" -q \
+  >/dev/null || fail "--height-unit ft"
+# 10 ft + 20 ft = 9.144 m, and 4 m and 6 m as they are.
+[ "$(json "$tmp/ft.json" "round(d['reports']['height']['sum'], 6)")" = "19.144" ] ||
+  fail "--height-unit ft: lots' heights in feet: $(json "$tmp/ft.json" "d['reports']")"
+"$insula" build "$tmp/h.cga" --lot "$tmp/feet.geojson" --report "$tmp/m.json" -q >/dev/null
+[ "$(json "$tmp/m.json" "round(d['reports']['height']['sum'], 6)")" = "40.0" ] || fail "meters by default"
+
 [ $failures -eq 0 ] && echo "cga_build: ok"
 exit $((failures > 0))

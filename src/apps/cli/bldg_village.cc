@@ -286,8 +286,9 @@ int build_village(const BuildOptions& options, const Parsed& input,
                   static_cast<std::size_t>(options.threads));
   }
   Village village{options, input, rules, {}, {}};
-  std::optional<io::FootprintSet> lots = read_lot_footprints(
-      options.lot, geojson_options(options.crs, options.keep_going), options.quiet);
+  std::optional<io::FootprintSet> lots =
+      read_lot_footprints(options.lot, geojson_options(options.crs, options.keep_going),
+                          options.quiet, options.height_unit);
   if (!lots) return kExitInput;
   village.lots = std::move(*lots);
   if (!parse_grammars(village)) return kExitInput;

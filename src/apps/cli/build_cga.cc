@@ -58,8 +58,9 @@ struct Lots {
 std::optional<Lots> read_lots(const BuildOptions& options) {
   Lots out;
   if (options.lot.empty()) return out;
-  std::optional<io::FootprintSet> set = read_lot_footprints(
-      options.lot, geojson_options(options.crs, options.keep_going), options.quiet);
+  std::optional<io::FootprintSet> set =
+      read_lot_footprints(options.lot, geojson_options(options.crs, options.keep_going),
+                          options.quiet, options.height_unit);
   if (!set) return std::nullopt;
   out.origin = set->origin;
   out.crs = set->crs;

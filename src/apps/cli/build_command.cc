@@ -9,6 +9,7 @@
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/geojson_options.h"
+#include "apps/cli/height_unit.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/ranks.h"
 #include "apps/cli/tile_job.h"
@@ -68,6 +69,9 @@ void add_build_command(CLI::App& app, BuildOptions& options) {
                   "leave out invalid --lot features and lots that cannot hold a .bldg grammar "
                   "(each with a warning) instead of failing");
   add_crs_option(*build, options.crs);
+  add_height_unit_option(*build, options.height_unit,
+                         "unit of bare numbers in the --lot features' 'height' property (not "
+                         "OpenStreetMap buildings'), converted to meters for the grammar");
   build->add_flag("-q,--quiet", options.quiet, "no progress or warnings on stderr");
   add_view_options(*build, options.output);
 }

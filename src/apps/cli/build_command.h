@@ -45,8 +45,9 @@ struct BuildOptions {
   std::string report;     // --report R.json
   std::string probe;      // --probe NODE (graphs): that node's output entities, not the results
   std::size_t report_entities = std::numeric_limits<std::size_t>::max();  // --report-entities N
-  CrsFlags crs;             // --crs, --out-crs (geojson_options.h)
-  bool keep_going = false;  // --keep-going: skip invalid lot features with a warning
+  CrsFlags crs;                   // --crs, --out-crs (geojson_options.h)
+  std::string height_unit = "m";  // --height-unit: the lots' bare height numbers (height_unit.h)
+  bool keep_going = false;        // --keep-going: skip invalid lot features with a warning
   bool quiet = false;
   io::OutputOptions output;  // PNG view and SVG options
   // Set by a batch (`insula random`): the outputs and the report go into its transaction, which

@@ -76,6 +76,7 @@ struct LotFiles {
       return false;
     }
     leave_out_for_lots(set.value(), options.quiet);
+    lot_heights_in_meters(set.value(), options.height_unit);
     read_any = true;
     origin = set->origin;
     crs = set->crs;

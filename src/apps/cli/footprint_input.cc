@@ -1,11 +1,16 @@
 #include "apps/cli/footprint_input.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <string_view>
 
 #include "apps/cli/front_ends.h"
+#include "apps/cli/height_unit.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/s3db_parts.h"
+#include "base/tag_numbers.h"
+#include "io/building_tags.h"
 #include "io/osm_reader.h"
 
 namespace insula::cli {
@@ -59,10 +64,37 @@ void leave_out_for_lots(io::FootprintSet& set, bool quiet) {
 }
 
 std::optional<io::FootprintSet> read_lot_footprints(const std::string& path,
-                                                    const io::GeoJsonOptions& options, bool quiet) {
+                                                    const io::GeoJsonOptions& options, bool quiet,
+                                                    const std::string& height_unit) {
   std::optional<io::FootprintSet> set = read_footprints(path, options, quiet);
-  if (set) leave_out_for_lots(*set, quiet);
+  if (!set) return set;
+  leave_out_for_lots(*set, quiet);
+  lot_heights_in_meters(*set, height_unit);
   return set;
+}
+
+std::size_t lot_heights_in_meters(io::FootprintSet& set, const std::string& height_unit) {
+  const double unit = meters_per_height_unit(height_unit);
+  if (unit == 1) return 0;
+  std::size_t changed = 0;
+  for (io::Footprint& lot : set.footprints) {
+    const std::optional<shape::Value> height = lot.properties.find("height");
+    if (!height || io::follows_s3db(lot.properties)) continue;
+    std::optional<double> number;
+    if (const double* d = std::get_if<double>(&*height)) number = *d;
+    if (const std::string* text = std::get_if<std::string>(&*height)) {
+      std::string_view rest = *text;
+      number = base::take_number(rest);
+      if (!rest.empty()) number.reset();
+    }
+    if (!number || !std::isfinite(*number)) continue;
+    // The lot's own row: the others keep sharing the set's table.
+    shape::AttributeMap properties = lot.properties.map();
+    properties["height"] = *number * unit;
+    lot.properties = io::PropertyRow::of(properties);
+    ++changed;
+  }
+  return changed;
 }
 
 }  // namespace insula::cli

@@ -3,6 +3,7 @@
 // through io::read_geojson, with the same options (docs/osm.md, docs/geojson.md).
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -17,9 +18,16 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
 
 // The lots of --lot: read_footprints(), then without the building outlines whose building:parts
 // are built instead and the buildings and parts above the ground (S3DB, s3db_parts.h), with a
-// note saying how many unless `quiet`.
+// note saying how many unless `quiet`, and their heights in meters (lot_heights_in_meters) when
+// `height_unit` (--height-unit) is not "m".
 std::optional<io::FootprintSet> read_lot_footprints(const std::string& path,
-                                                    const io::GeoJsonOptions& options, bool quiet);
+                                                    const io::GeoJsonOptions& options, bool quiet,
+                                                    const std::string& height_unit);
+// --height-unit of `build --lot`: the `height` property of each lot that does not follow S3DB
+// (io::follows_s3db), when it is a number or a text that is only a number, becomes that many
+// `height_unit`s in meters, as `mass` reads a register's height; a text with a unit ("40 ft")
+// keeps it. Returns how many lots changed.
+std::size_t lot_heights_in_meters(io::FootprintSet& set, const std::string& height_unit);
 // Leaves those footprints out of `set`; prints the notes unless `quiet`.
 void leave_out_for_lots(io::FootprintSet& set, bool quiet);
 

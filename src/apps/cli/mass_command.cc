@@ -16,6 +16,7 @@
 #include "apps/cli/footprint_input.h"
 #include "apps/cli/front_ends.h"
 #include "apps/cli/geojson_options.h"
+#include "apps/cli/height_unit.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/mass_build.h"
@@ -91,10 +92,9 @@ void add_mass_command(CLI::App& app, MassOptions& options) {
                    "property holding the wall height of features that are not OpenStreetMap "
                    "buildings (default 'height'; OSM features follow Simple 3D Buildings)")
       ->excludes(height);
-  mass->add_option("--height-unit", options.height_unit,
-                   "unit of bare numbers in the height properties of features that are not "
-                   "OpenStreetMap buildings: m (default), ft or us-ft")
-      ->check(CLI::IsMember({"m", "ft", "us-ft"}));
+  add_height_unit_option(*mass, options.height_unit,
+                         "unit of bare numbers in the height properties of features that are not "
+                         "OpenStreetMap buildings");
   mass->add_option("--levels-attr", options.levels_attr,
                    "property holding the number of storeys, times --storey-height, when no "
                    "height is given")

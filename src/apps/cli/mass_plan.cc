@@ -6,6 +6,7 @@
 #include <map>
 #include <numbers>
 
+#include "apps/cli/height_unit.h"
 #include "apps/cli/mass_command.h"
 #include "apps/cli/s3db_parts.h"
 #include "kernel/party_walls.h"
@@ -19,10 +20,7 @@ io::BuildingTagOptions tag_options(const MassOptions& options) {
   io::BuildingTagOptions tags;
   tags.height = options.height;
   tags.height_attr = options.height_attr;
-  // International foot; the US survey foot of EPSG:2263 and other state plane CRSs.
-  tags.length_unit = options.height_unit == "ft"      ? 0.3048
-                     : options.height_unit == "us-ft" ? 1200.0 / 3937.0
-                                                      : 1.0;
+  tags.length_unit = meters_per_height_unit(options.height_unit);
   tags.levels_attr = options.levels_attr;
   tags.storey_height = options.storey_height;
   tags.default_height = options.default_height;
