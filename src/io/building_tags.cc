@@ -40,6 +40,21 @@ std::optional<double> length_of(const shape::Value& value, double unit) {
   return std::nullopt;
 }
 
+// Microsoft's building footprints write "height": -1 (and "confidence": -1) where the height is
+// unknown: exactly -1, as a number or a text that is only that number, means no height given.
+bool is_unknown_height(const shape::Value& value) {
+  if (const double* d = std::get_if<double>(&value)) return *d == -1;
+  if (const std::string* s = std::get_if<std::string>(&value)) {
+    std::string_view rest = *s;
+    while (rest.starts_with(' ')) rest.remove_prefix(1);
+    if (!rest.starts_with('-')) return false;
+    rest.remove_prefix(1);
+    const std::optional<double> number = base::take_number(rest);
+    return number && rest.empty() && *number == 1;
+  }
+  return false;
+}
+
 std::optional<double> levels_of(const shape::Value& value) {
   if (const double* d = std::get_if<double>(&value)) {
     return std::isfinite(*d) ? std::optional<double>(*d) : std::nullopt;
@@ -256,13 +271,24 @@ class FormReader {
     }
   }
 
+  // The height tag or attribute `key`, in meters; -1 (unknown) is no height, remembered for
+  // MAS001.
+  std::optional<double> height_tag(std::string_view key) {
+    const std::optional<shape::Value> value = tag(key);
+    if (value && is_unknown_height(*value)) {
+      unknown_height_ = key_of(key);
+      return std::nullopt;
+    }
+    return length_tag(key, 0, "MAS002");
+  }
+
   void read_heights() {
     if (options_.height) {
       set_eave(form_.base + *options_.height, ValueSource::kOption);
       return;
     }
     if (form_.osm) {
-      total_height_ = length_tag("height", 0, "MAS002");
+      total_height_ = height_tag("height");
       if (total_height_ && *total_height_ <= form_.base) {
         warn("MAS002", {"height ", shape::to_string(*total_height_), " m is not above min_height ",
                         shape::to_string(form_.base), " m; ignored"});
@@ -274,7 +300,7 @@ class FormReader {
       }
       if (levels_height("building:levels")) return;
     } else {
-      if (std::optional<double> height = length_tag(options_.height_attr, 0, "MAS002")) {
+      if (std::optional<double> height = height_tag(options_.height_attr)) {
         set_eave(form_.base + *height, ValueSource::kAttribute);
         return;
       }
@@ -290,7 +316,11 @@ class FormReader {
       text.replace(text.rfind("ignored"), std::string::npos, fallback);
       return;
     }
-    if (form_.osm) {
+    if (!unknown_height_.empty()) {
+      warn("MAS001",
+           {"'", unknown_height_, "' is -1 (unknown)", form_.osm ? " and no " : "",
+            form_.osm ? key_of("building:levels") : "", form_.osm ? " tag" : "", "; ", fallback});
+    } else if (form_.osm) {
       warn("MAS001", {"no height or ", key_of("building:levels"), " tag; ", fallback});
     } else {
       warn("MAS001", {"no '", options_.height_attr, "' property; ", fallback});
@@ -375,6 +405,7 @@ class FormReader {
   bool roof_height_given_ = false;
   bool pitch_from_data_ = false;
   std::optional<std::size_t> height_warning_;  // the last MAS002/MAS007 of this feature
+  std::string unknown_height_;                 // the height property that is -1 (unknown)
 };
 
 }  // namespace

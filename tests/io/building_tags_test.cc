@@ -242,6 +242,30 @@ TEST(BuildingForm, HeightUnitScalesARegistersBareNumbers) {
   EXPECT_NEAR(form_of({{"building", "yes"}, {"height", "12"}}, osm_feet).eave, 12, 1e-12);
 }
 
+// Microsoft's building footprints write "height": -1 where the height is unknown: no height given
+// (MAS001 says it was -1), where any other negative height stays a height that cannot be read.
+TEST(BuildingForm, HeightMinusOneIsNoHeight) {
+  std::vector<TagWarning> warnings;
+  const BuildingForm msft = form_of({{"height", -1.0}, {"confidence", -1.0}}, warnings);
+  EXPECT_DOUBLE_EQ(msft.eave, 10.0);
+  EXPECT_EQ(msft.height_source, ValueSource::kDefault);
+  ASSERT_EQ(warnings.size(), 1U);
+  EXPECT_EQ(warnings[0].code, "MAS001");
+  EXPECT_EQ(warnings[0].text, "'height' is -1 (unknown); using 10 m");
+  BuildingTagOptions floors;
+  floors.levels_attr = "floors";
+  EXPECT_DOUBLE_EQ(form_of({{"height", "-1"}, {"floors", 2.0}}, floors).eave, 6.0);
+  warnings.clear();
+  form_of({{"height", -2.0}}, warnings);
+  ASSERT_EQ(warnings.size(), 1U);
+  EXPECT_EQ(warnings[0].code, "MAS002");
+  EXPECT_EQ(warnings[0].text, "height='-2' is not a length in (0, 1000) m; using 10 m");
+  warnings.clear();
+  form_of({{"building", "yes"}, {"height", "-1"}}, warnings);
+  ASSERT_EQ(warnings.size(), 1U);
+  EXPECT_EQ(warnings[0].text, "'height' is -1 (unknown) and no building:levels tag; using 10 m");
+}
+
 TEST(BuildingForm, RoofTallerThanTheBuildingIsCapped) {
   std::vector<TagWarning> warnings;
   const BuildingForm form = form_of(
