@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <initializer_list>
+#include <string>
 #include <utility>
 
 #include "kernel/roof.h"
@@ -94,6 +95,32 @@ bool is_overture(const PropertyRow& properties) {
   };
   return starts("names", '{') || starts("sources", '[') || text_of(properties, "roof_shape") ||
          text_of(properties, "num_floors") || text_of(properties, "facade_color");
+}
+
+// Names registers give their height column: any name holding one of kHeightWords, or one of
+// kHeightNames (ASCII letters compared in lower case).
+constexpr std::array<std::string_view, 6> kHeightWords{"height",      "hauteur", "hoehe",
+                                                       "h\xC3\xB6he", "hoogte",  "hgt"};
+constexpr std::array<std::string_view, 10> kHeightNames{
+    "h", "h_dak", "h_max", "h_mean", "h_median", "ht", "bldg_ht", "altura", "altezza", "korkeus"};
+
+// The properties of a feature without a height that may be its height column (MAS001 names
+// them): not null, not the program's own insula:* attributes, at most 3.
+std::vector<std::string> height_candidates(const PropertyRow& properties) {
+  std::vector<std::string> out;
+  for (const auto& [key, value] : properties.map()) {
+    if (out.size() == 3) break;
+    if (shape::is_null(value) || key.starts_with("insula:")) continue;
+    std::string lower = key;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c + 32) : c; });
+    const auto holds = [&](std::string_view word) { return lower.find(word) != std::string::npos; };
+    if (std::any_of(kHeightWords.begin(), kHeightWords.end(), holds) ||
+        std::find(kHeightNames.begin(), kHeightNames.end(), lower) != kHeightNames.end()) {
+      out.push_back(key);
+    }
+  }
+  return out;
 }
 
 // Tagged building or building:part (any value but no).
@@ -323,8 +350,23 @@ class FormReader {
     } else if (form_.osm) {
       warn("MAS001", {"no height or ", key_of("building:levels"), " tag; ", fallback});
     } else {
-      warn("MAS001", {"no '", options_.height_attr, "' property; ", fallback});
+      warn("MAS001", {"no '", options_.height_attr, "' property; ", candidates_hint(), fallback});
     }
+  }
+
+  // "this feature has 'hauteur' (use --height-attr hauteur); ", or nothing.
+  std::string candidates_hint() const {
+    const std::vector<std::string> names = height_candidates(properties_);
+    if (names.empty()) return {};
+    std::string text = "this feature has ";
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      text += i == 0 ? "'" : i + 1 == names.size() ? " and '" : ", '";
+      text += names[i];
+      text += "'";
+    }
+    text += names.size() == 1 ? " (use --height-attr " + names[0] + "); "
+                              : " (name one with --height-attr); ";
+    return text;
   }
 
   // Levels x storey height from the ground (S3DB counts building:levels from the ground;

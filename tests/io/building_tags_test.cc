@@ -266,6 +266,26 @@ TEST(BuildingForm, HeightMinusOneIsNoHeight) {
   EXPECT_EQ(warnings[0].text, "'height' is -1 (unknown) and no building:levels tag; using 10 m");
 }
 
+// MAS001 names the properties that look like the register's height column.
+TEST(BuildingForm, NoHeightNamesCandidateColumns) {
+  const auto mas001 = [](const AttributeMap& properties) {
+    std::vector<TagWarning> warnings;
+    form_of(properties, warnings);
+    return warnings.size() == 1 && warnings[0].code == "MAS001" ? warnings[0].text : "";
+  };
+  EXPECT_EQ(mas001({{"hauteur", 12.0}, {"nom", "mairie"}}),
+            "no 'height' property; this feature has 'hauteur' (use --height-attr hauteur); "
+            "using 10 m");
+  EXPECT_EQ(mas001({{"HEIGHT", 9.0}, {"h_dak", 11.0}, {"approx_hgt", 3.0}, {"insula:height", 4.0}}),
+            "no 'height' property; this feature has 'HEIGHT', 'approx_hgt' and 'h_dak' (name one "
+            "with --height-attr); using 10 m");
+  EXPECT_EQ(mas001({{"Measured_Height_m", 7.0}, {"H\xC3\xB6he", std::monostate{}}}),
+            "no 'height' property; this feature has 'Measured_Height_m' (use --height-attr "
+            "Measured_Height_m); using 10 m");
+  EXPECT_EQ(mas001({{"name", "barn"}, {"heights", std::monostate{}}}),
+            "no 'height' property; using 10 m");
+}
+
 TEST(BuildingForm, RoofTallerThanTheBuildingIsCapped) {
   std::vector<TagWarning> warnings;
   const BuildingForm form = form_of(
