@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <utility>
 
@@ -548,6 +549,9 @@ class Reader : public FootprintBuilder {
   void read_features();
   void read_feature(Element value, std::size_t offset);
   void read_geometry(FeatureState& feature, Element geometry);
+  void read_collection(FeatureState& feature, Element geometry, const std::vector<PathStep>& here);
+  void read_collection_member(FeatureState& feature, Element geometry,
+                              const std::vector<PathStep>& here);
   void read_properties(FeatureState& feature, Element value);
   std::optional<kernel::Polygon> read_polygon(FeatureState& feature, Element rings, Where where);
   std::optional<kernel::Ring> read_ring(FeatureState& feature, Element ring, const Where& where);
@@ -566,6 +570,8 @@ class Reader : public FootprintBuilder {
   std::size_t crs_offset_ = kNone;
   std::size_t root_offset_ = 0;
   std::vector<FeatureState> states_;  // parallel to features_
+  // Where each polygon of a GeometryCollection feature is (its rings array), by feature index.
+  std::map<std::size_t, std::vector<std::vector<PathStep>>> collection_paths_;
 
   // A FeatureCollection's "features" array is cut out of the top-level piece (parsed as "[]") and
   // its elements are parsed kChunk at a time, "[" + their text + "]", kGroup chunks in parallel.
@@ -621,9 +627,15 @@ void Reader::feature_issue(FeatureState& feature, bool is_error, const char* cod
 
 std::vector<PathStep> Reader::geometry_path(const FeatureState& feature, const Where& where) const {
   std::vector<PathStep> path;
-  if (!feature.bare_geometry) path.push_back({"geometry", 0});
-  path.push_back({"coordinates", 0});
-  for (std::size_t index : {where.polygon, where.ring, where.position, where.coordinate}) {
+  const auto collection = collection_paths_.find(feature.index);
+  if (collection != collection_paths_.end() && where.polygon < collection->second.size()) {
+    path = collection->second[where.polygon];
+  } else {
+    if (!feature.bare_geometry) path.push_back({"geometry", 0});
+    path.push_back({"coordinates", 0});
+    if (where.polygon != kNone) path.push_back({{}, where.polygon});
+  }
+  for (std::size_t index : {where.ring, where.position, where.coordinate}) {
     if (index != kNone) path.push_back({{}, index});
   }
   return path;
@@ -1052,6 +1064,10 @@ void Reader::read_geometry(FeatureState& feature, Element geometry) {
                   type_path);
     return;
   }
+  if (name == "GeometryCollection") {
+    read_collection(feature, geometry, here);
+    return;
+  }
   if (name != "Polygon" && name != "MultiPolygon") {
     feature_issue(feature, false, "GEO017", "geometry type " + name + " is not a polygon; skipped",
                   type_path);
@@ -1087,6 +1103,78 @@ void Reader::read_geometry(FeatureState& feature, Element geometry) {
     if (auto polygon = read_polygon(feature, rings, where)) {
       features_[feature.index].polygons.push_back(std::move(*polygon));
     }
+  }
+}
+
+// A GeometryCollection's Polygons and MultiPolygons are the polygons of one MultiPolygon, numbered
+// across its members in order; other members are left out with a warning.
+void Reader::read_collection(FeatureState& feature, Element geometry,
+                             const std::vector<PathStep>& here) {
+  std::vector<PathStep> path = here;
+  path.push_back({"geometries", 0});
+  const std::optional<Element> members = member(geometry, "geometries");
+  if (!members || members->type() != element_type::ARRAY) {
+    feature_issue(feature, true, "GEO014",
+                  !members ? std::string("GeometryCollection has no \"geometries\"")
+                           : "GeometryCollection \"geometries\" is " + type_name(*members) +
+                                 "; expected an array",
+                  !members ? here : path);
+    return;
+  }
+  features_[feature.index].multi = true;
+  collection_paths_[feature.index];
+  std::size_t m = 0;
+  for (const Element item : array_of(*members)) {
+    if (stopped_) break;
+    std::vector<PathStep> at = path;
+    at.push_back({{}, m++});
+    read_collection_member(feature, item, at);
+  }
+  if (collection_paths_[feature.index].empty()) {
+    feature_issue(feature, false, "GEO017", "GeometryCollection holds no polygon; skipped", path);
+  }
+}
+
+void Reader::read_collection_member(FeatureState& feature, Element geometry,
+                                    const std::vector<PathStep>& here) {
+  const std::string label = "GeometryCollection member " + std::to_string(here.back().index);
+  const auto [type, coordinates] = members<2>(geometry, {"type", "coordinates"});
+  const std::string_view name =
+      type && type->type() == element_type::STRING ? string_of(*type) : std::string_view();
+  std::vector<PathStep> coordinates_path = here;
+  coordinates_path.push_back({"coordinates", 0});
+  const bool polygons = name == "Polygon" || name == "MultiPolygon";
+  if (!polygons || !coordinates || coordinates->type() != element_type::ARRAY ||
+      array_size(*coordinates) == 0) {
+    std::vector<PathStep> type_path = here;
+    type_path.push_back({"type", 0});
+    feature_issue(feature, false, "GEO017",
+                  label + " is " +
+                      (polygons       ? "an empty " + std::string(name)
+                       : name.empty() ? type_name(geometry) + " without a geometry type"
+                                      : "a " + std::string(name)) +
+                      "; left out",
+                  polygons ? coordinates_path : type_path);
+    return;
+  }
+  std::vector<std::vector<PathStep>>& paths = collection_paths_[feature.index];
+  const auto read_one = [&](Element rings, std::vector<PathStep> rings_path) {
+    Where where;
+    where.polygon = paths.size();
+    paths.push_back(std::move(rings_path));
+    if (auto polygon = read_polygon(feature, rings, where)) {
+      features_[feature.index].polygons.push_back(std::move(*polygon));
+    }
+  };
+  if (name == "Polygon") {
+    read_one(*coordinates, coordinates_path);
+    return;
+  }
+  std::size_t j = 0;
+  for (const Element rings : array_of(*coordinates)) {
+    std::vector<PathStep> rings_path = coordinates_path;
+    rings_path.push_back({{}, j++});
+    read_one(rings, std::move(rings_path));
   }
 }
 

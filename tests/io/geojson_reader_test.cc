@@ -244,6 +244,41 @@ TEST(GeoJsonReader, NonPolygonFeaturesAreSkippedWithWarningsAndIndicesKept) {
                 "test.geojson:4:51: warning[GEO017]: feature 2: geometry is null; skipped"}));
 }
 
+// A GeometryCollection's Polygons and MultiPolygons are one MultiPolygon's polygons, numbered
+// across its members; other members are left out with a warning.
+TEST(GeoJsonReader, GeometryCollectionPolygonsAreReadAsAMultiPolygon) {
+  const std::string members = R"({"type": "GeometryCollection", "geometries": [)" +
+                              polygon(square(0, 0, 8, 6)) +
+                              R"(, {"type": "Point", "coordinates": [1, 1]},
+{"type": "MultiPolygon", "coordinates": [[)" +
+                              square(20, 0, 5, 5) + "], [" + square(30, 0, 5, 5) + "]]}]}";
+  const auto result = read(collection({feature(R"("id": "gc", )", "{}", members)}));
+  ASSERT_TRUE(result.ok()) << headline(result.diagnostics().front());
+  ASSERT_EQ(result->footprints.size(), 1u);
+  ASSERT_EQ(result->footprints[0].polygons.size(), 3u);
+  EXPECT_DOUBLE_EQ(kernel::area(result->footprints[0].polygons[2]), 25.0);
+  EXPECT_EQ(headlines(result.diagnostics()),
+            (std::vector<std::string>{"test.geojson:2:198: warning[GEO017]: feature 0 (id \"gc\"): "
+                                      "GeometryCollection member 1 is a Point; left out"}));
+  // A bad ring in a member is reported where it is, as "polygon K" across the members.
+  const std::string bad =
+      R"({"type": "GeometryCollection", "geometries": [)" + polygon(square(0, 0, 8, 6)) + R"(,
+{"type": "Polygon", "coordinates": [[[20, 0], [30, 10], [30, 0], [20, 10], [20, 0]]]}]})";
+  const auto bow_tie = read(collection({feature("", "{}", bad)}));
+  ASSERT_FALSE(bow_tie.ok());
+  EXPECT_EQ(headline(bow_tie.diagnostics().front()).substr(0, 69),
+            "test.geojson:3:38: error[GEO022]: feature 0: polygon 1: outer ring: e");
+  // Only points: the feature is skipped, as a Point feature is.
+  const auto points =
+      read(collection({feature("", "{}",
+                               R"({"type": "GeometryCollection", "geometries": [{"type": "Point",)"
+                               R"( "coordinates": [1, 1]}]})"),
+                       feature("", "{}", polygon(square(0, 0, 8, 6)))}));
+  ASSERT_TRUE(points.ok());
+  EXPECT_EQ(points->footprints.size(), 1u);
+  EXPECT_EQ(count_code(points.diagnostics(), "GEO017"), 2u);
+}
+
 TEST(GeoJsonReader, LocatesProblemsInMinifiedText) {
   // Everything on one line: the column alone must find the offending coordinate.
   const std::string text =
