@@ -7,6 +7,8 @@
 #include <cmath>
 #include <polyclipping/clipper.hpp>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 namespace insula::kernel {
 namespace {
@@ -174,6 +176,40 @@ std::vector<Polygon> from_tree(const PolyTree& tree, Vec2 origin) {
   return out;
 }
 
+// Does a ring of `node` (its contour or a hole's) run along an edge of another of its rings, here
+// or in an island further in? A region's boundary never does: the two would bound a strip of no
+// width.
+bool shares_an_edge(const PolyNode& node) {
+  if (node.Childs.empty()) return false;
+  using Edge = std::pair<IntPoint, IntPoint>;
+  std::vector<Edge> edges;
+  const auto add = [&edges](const Path& ring) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      IntPoint p = ring[i], q = ring[(i + 1) % ring.size()];
+      if (std::tie(q.X, q.Y) < std::tie(p.X, p.Y)) std::swap(p, q);
+      edges.emplace_back(p, q);
+    }
+  };
+  add(node.Contour);
+  for (const PolyNode* hole : node.Childs) add(hole->Contour);
+  const auto key = [](const Edge& e) {
+    return std::tie(e.first.X, e.first.Y, e.second.X, e.second.Y);
+  };
+  std::sort(edges.begin(), edges.end(),
+            [&](const Edge& l, const Edge& r) { return key(l) < key(r); });
+  if (std::adjacent_find(edges.begin(), edges.end(), [&](const Edge& l, const Edge& r) {
+        return key(l) == key(r);
+      }) != edges.end()) {
+    return true;
+  }
+  for (const PolyNode* hole : node.Childs) {
+    for (const PolyNode* island : hole->Childs) {
+      if (shares_an_edge(*island)) return true;
+    }
+  }
+  return false;
+}
+
 // Runs one Clipper boolean; the PolyTree keeps holes with their outer ring.
 bool execute(ClipperLib::ClipType type, const Paths& a, const Paths& b, PolyTree& tree) {
   ClipperLib::Clipper clipper;
@@ -186,7 +222,29 @@ bool execute(ClipperLib::ClipType type, const Paths& a, const Paths& b, PolyTree
     tree.Clear();
     return true;
   }
-  return clipper.Execute(type, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  if (!clipper.Execute(type, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero)) return false;
+  if (std::none_of(tree.Childs.begin(), tree.Childs.end(),
+                   [](const PolyNode* outer) { return shares_an_edge(*outer); })) {
+    return true;
+  }
+  // Clipper 1's strictly simple pass can give a region with a hole along its own outline: a
+  // setback's remainder came back as the whole lot with each strip along a bend of the outline a
+  // hole sharing its edge (the area is right, the region invalid: on a curved OpenStreetMap
+  // footprint no triangulation took it, so district.cga's parcel and yard had no mesh). The plain
+  // pass gets such regions right; a strictly simple union of its rings then splits the rings that
+  // touch themselves.
+  ClipperLib::Clipper plain;
+  plain.AddPaths(a, ClipperLib::ptSubject, true);
+  plain.AddPaths(b, ClipperLib::ptClip, true);
+  Paths rings;
+  if (!plain.Execute(type, rings, ClipperLib::pftNonZero, ClipperLib::pftNonZero)) return false;
+  ClipperLib::Clipper simple;
+  simple.StrictlySimple(true);
+  if (!simple.AddPaths(rings, ClipperLib::ptSubject, true)) {
+    tree.Clear();
+    return true;
+  }
+  return simple.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
 }
 
 BooleanResult run(ClipperLib::ClipType type, const std::vector<Polygon>& a,

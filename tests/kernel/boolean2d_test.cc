@@ -173,5 +173,27 @@ TEST(Boolean2d, OffsetOfAGridUnitWideRectangle) {
   ASSERT_TRUE(united.ok()) << to_string(united.status);
 }
 
+// Strips along both edges of a bend that turns away from the region meet at a point of its
+// outline. Clipper's strictly simple pass gave the difference as the whole chevron with each strip
+// a hole running along the outline (right area, invalid region); it is one ring.
+TEST(Boolean2d, DifferenceOfStripsMeetingAtABendIsOneRing) {
+  const Polygon chevron{{{35, 0}, {25, 25}, {0, 35}, {0, 20}, {14, 14}, {20, 0}}, {}};
+  std::vector<Polygon> strips;
+  for (std::size_t i : {3U, 4U}) {
+    const Vec2 a = chevron.outer[i];
+    const Vec2 b = chevron.outer[i + 1];
+    const Vec2 inward = perp(normalized(b - a));
+    strips.push_back({{a, b, b + inward * 4.0, a + inward * 4.0}, {}});
+  }
+  const BooleanResult rest = subtract({chevron}, strips);
+  const BooleanResult band = intersect({chevron}, strips);
+  ASSERT_TRUE(rest.ok() && band.ok());
+  ASSERT_EQ(rest.polygons.size(), 1U);
+  EXPECT_TRUE(rest.polygons[0].holes.empty());
+  EXPECT_TRUE(validate(rest.polygons[0]).empty());
+  EXPECT_NEAR(total_area(rest.polygons) + total_area(band.polygons), area(chevron), 1e-4);
+  expect_normalized(rest.polygons);
+}
+
 }  // namespace
 }  // namespace insula::kernel

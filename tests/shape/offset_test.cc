@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "shape/ops.h"
 
 namespace insula::shape {
@@ -110,6 +112,36 @@ TEST(Setback, EdgesTakeADepthEach) {
       registry().run(tree, root.id, "setbackEdges",
                      {{"depths", std::vector<SizeSpec>{{0.5, SizeMode::kRelative}}}});
   EXPECT_EQ(relative.error, "setbackEdges: depths must be meters, not relative or floating sizes");
+}
+
+// Strips along both edges of a bend that turns away from the lot (a curved building's inner side,
+// as OpenStreetMap draws it) meet at a single point of the outline. Clipper's strictly simple pass
+// gave the remainder as the whole lot with each strip a hole along its outline: the area was right,
+// but the region was no valid polygon, and on a real curved footprint no triangulation took it,
+// so the remainder had no mesh (district.cga lost that lot's parcel and yard).
+TEST(Setback, RemainderOfStripsMeetingAtABendHasAMesh) {
+  ShapeTree tree;
+  // A chevron, counter-clockwise; edges 3 and 4 bend about (14, 14).
+  const RootResult root =
+      tree.create_root({{{35, 0}, {25, 25}, {0, 35}, {0, 20}, {14, 14}, {20, 0}}, {}});
+  const std::vector<double> depths = {0, 0, 0, 4, 4, 0};
+  const OpResult r = setback(tree, root.id, depths, SetbackPart::kAll);
+  ASSERT_TRUE(r.ok()) << r.error;
+  const double whole = kernel::area(*tree[root.id].outline);
+  EXPECT_NEAR(total_area(tree, r, 0) + total_area(tree, r, 1), whole, 1e-4);
+  for (std::size_t i = 0; i < r.children.size(); ++i) {
+    const Shape& piece = tree[r.children[i]];
+    EXPECT_TRUE(piece.outline->holes.empty()) << "piece " << i;
+    ASSERT_GT(piece.mesh->face_count(), 0U) << "piece " << i;
+    EXPECT_NEAR(kernel::surface_area(*piece.mesh), kernel::area(*piece.outline), 1e-4);
+  }
+  const auto remainder = std::find(r.pieces.begin(), r.pieces.end(), 1U);
+  ASSERT_NE(remainder, r.pieces.end());
+  const OpResult yard =
+      offset(tree, r.children[remainder - r.pieces.begin()], -1.5, OffsetPart::kBorder);
+  ASSERT_TRUE(yard.ok()) << yard.error;
+  ASSERT_FALSE(yard.children.empty());
+  EXPECT_GT(tree[yard.children[0]].mesh->face_count(), 0U);
 }
 
 }  // namespace
