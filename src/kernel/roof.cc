@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/format.h"
 #include "kernel/contract_loop.h"
 #include "kernel/party_walls.h"
 #include "kernel/roof_detail.h"
@@ -730,7 +731,7 @@ bool plan_roof(const Polygon& footprint, const RoofSpec& spec, RoofPlan& plan) {
   }
   if (overhang > 0 && !plan_eave(plan, overhang, {})) {
     plan.message =
-        "overhang of " + std::to_string(overhang) +
+        "overhang of " + base::shortest_number(overhang) +
         " m makes the eave polygon self-intersect or reach too far out at a sharp corner; built "
         "without overhang";
     overhang = 0;

@@ -164,6 +164,8 @@ TEST(Roof, OverhangIsDroppedAtAVerySharpCorner) {
   const RoofResult r = build_roof(sliver, spec, 12);
   ASSERT_EQ(r.status, RoofStatus::kFallback) << r.message;
   EXPECT_NE(r.message.find("built without overhang"), std::string::npos) << r.message;
+  // The overhang as written (CGA604 on a real lot said "overhang of 0.500000 m").
+  EXPECT_EQ(r.message.rfind("overhang of 0.5 m makes the eave polygon", 0), 0U) << r.message;
   EXPECT_EQ(counts(r.mesh).count(SemanticClass::kOuterCeilingSurface), 0U);
   const Bounds3 box = r.mesh.bounds();
   EXPECT_GE(box.min.x, -1e-9);
