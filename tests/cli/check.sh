@@ -32,9 +32,11 @@ node -e 'const fc = JSON.parse(require("fs").readFileSync(process.argv[1]));
   "$root/examples/town.geojson" >"$tmp/town.geojsonl"
 out=$("$insula" check "$tmp/town.geojsonl" --crs EPSG:32633 2>&1)
 [ $? -eq 0 ] && [ "$out" = "$tmp/town.geojsonl: ok: 6 footprints, in EPSG:32633" ] || fail "check town.geojsonl: $out"
-expect_exit 0 "mass town.geojsonl" "$insula" mass "$tmp/town.geojsonl" --crs EPSG:32633 -o "$tmp/seq.obj" -q
-expect_exit 0 "mass town.geojson" "$insula" mass "$root/examples/town.geojson" -o "$tmp/fc.obj" -q
-cmp -s "$tmp/seq.obj" "$tmp/fc.obj" || fail "mass: a sequence builds what its FeatureCollection builds"
+# Both OBJs under one name, in folders of their own: the file names the .mtl it uses.
+mkdir -p "$tmp/seq" "$tmp/fc"
+expect_exit 0 "mass town.geojsonl" "$insula" mass "$tmp/town.geojsonl" --crs EPSG:32633 -o "$tmp/seq/town.obj" -q
+expect_exit 0 "mass town.geojson" "$insula" mass "$root/examples/town.geojson" -o "$tmp/fc/town.obj" -q
+cmp -s "$tmp/seq/town.obj" "$tmp/fc/town.obj" || fail "mass: a sequence builds what its FeatureCollection builds"
 expect_exit 0 "build --lot town.geojsonl" "$insula" build "$root/bench/lots.cga" --lot "$tmp/town.geojsonl" \
   --crs EPSG:32633 --report "$tmp/lots.json" -q
 grep -q '"lots": 6' "$tmp/lots.json" || fail "build --lot town.geojsonl: 6 lots"
