@@ -117,4 +117,19 @@ const ok = r.buildings === 15 && r.watertight === 15 && r.failed === 0 && church
            want.every((w) => roofs.has(w)) && Object.keys(r.warning_counts).length === 0;
 if (!ok) { console.log(JSON.stringify(r)); process.exit(1); }' "$tmp/town.json" || fail "OSM example report"
 
+# An input property the program writes itself (insula:height...) is replaced with a warning
+# naming the feature and the property, not silently.
+cat >"$tmp/own.geojson" <<'G'
+{"type": "Feature", "id": "again", "properties": {"height": 6, "insula:height": 99, "insula:roof": "x"},
+ "geometry": {"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,8],[0,8],[0,0]]]}}
+G
+expect_exit 0 "mass: insula:* input properties" "$insula" mass "$tmp/own.geojson" --roof flat \
+  -o "$tmp/own.city.json" --report "$tmp/own.json"
+grep -qF "warning[MAS009]: feature 0 (id \"again\"): property 'insula:height' ('99') is replaced by the value insula writes under that name" \
+  "$tmp/err.txt" || { fail "insula:height in the input: MAS009"; cat "$tmp/err.txt"; }
+[ "$(grep -c 'warning\[MAS009\]' "$tmp/err.txt")" = 2 ] || fail "insula:* in the input: one MAS009 per property"
+node -e 'const c = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  process.exit(c.CityObjects.again.attributes["insula:height"] === 6 ? 0 : 1);' "$tmp/own.city.json" ||
+  fail "insula:height is the built height"
+
 finish s3db_tags

@@ -183,6 +183,17 @@ OverlapSummary summarize_overlaps(const MassPlan& plan) {
   return summary;
 }
 
+// MAS009: a property the program writes itself (kFormAttributes) is replaced, not silently.
+void warn_replaced_properties(const io::Footprint& footprint, std::vector<Warning>& warnings) {
+  for (const char* key : kFormAttributes) {
+    const std::optional<shape::Value> value = footprint.properties.find(key);
+    if (!value) continue;
+    warnings.push_back({"MAS009", feature_name(footprint) + ": property '" + key + "' ('" +
+                                      shape::to_string(*value) +
+                                      "') is replaced by the value insula writes under that name"});
+  }
+}
+
 }  // namespace
 
 std::string feature_name(const io::Footprint& footprint) {
@@ -202,6 +213,7 @@ MassPlan plan_mass(const MassOptions& options, const io::FootprintSet& set,
     for (io::TagWarning& w : tag_warnings) {
       warnings.push_back({w.code, feature_name(footprint) + ": " + w.text});
     }
+    warn_replaced_properties(footprint, warnings);
     FootprintPlan& entry = plan.footprints.emplace_back();
     entry.spec = mass_spec(options, form);
     materials.assign(form, entry);

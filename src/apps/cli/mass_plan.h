@@ -4,6 +4,7 @@
 // colours (docs/osm-buildings.md).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -68,8 +69,12 @@ MassPlan plan_mass(const MassOptions& options, const io::FootprintSet& set,
                    std::vector<Warning>& warnings);
 
 // The attributes that say where a building's height and roof came from (docs/osm-buildings.md,
-// "Where each value came from"): insula:height, insula:eave_height, insula:min_height,
-// insula:height_source, insula:roof, insula:roof_source. `top` is the built height.
+// "Where each value came from"). An input property of one of these names is replaced, with
+// warning MAS009 (plan_mass).
+inline constexpr std::array<const char*, 6> kFormAttributes{
+    "insula:height",        "insula:eave_height", "insula:min_height",
+    "insula:height_source", "insula:roof",        "insula:roof_source"};
+// Sets kFormAttributes; `top` is the built height.
 void add_form_attributes(const FormSummary& form, kernel::RoofType built_roof, double top,
                          shape::AttributeMap& attributes);
 

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/cli/mass_plan.h"
+
 namespace insula::cli {
 
 void MassReport::count_building(const shape::Building& building, bool is_watertight) {
@@ -25,8 +27,7 @@ std::string building_entry(const shape::Building& building) {
     return nlohmann::ordered_json(shape::to_string(it->second));
   };
   const auto describe = [&](const shape::AttributeMap& attributes, nlohmann::ordered_json& out) {
-    for (const char* key : {"insula:height", "insula:eave_height", "insula:min_height",
-                            "insula:height_source", "insula:roof", "insula:roof_source"}) {
+    for (const char* key : kFormAttributes) {
       nlohmann::ordered_json value = attribute(attributes, key);
       if (!value.is_null()) out[std::string(key).substr(7)] = value;
     }
