@@ -151,5 +151,19 @@ G
 "$insula" build "$tmp/h.cga" --lot "$tmp/feet.geojson" --report "$tmp/m.json" -q >/dev/null
 [ "$(json "$tmp/m.json" "round(d['reports']['height']['sum'], 6)")" = "40.0" ] || fail "meters by default"
 
+# A --lot file whose every feature is left out (an S3DB part above the ground) builds nothing: no
+# invented default lot at the origin, an empty OBJ and a report of 0 lots.
+cat >"$tmp/up.geojson" <<'G'
+{"type": "FeatureCollection", "features": [{"type": "Feature", "id": "upper",
+  "properties": {"building:part": "yes", "building:min_level": "2", "building:levels": "3"},
+  "geometry": {"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,8],[0,8],[0,0]]]}}]}
+G
+"$insula" build "$ex/footprints.cga" --lot "$tmp/up.geojson" -o "$tmp/up.obj" \
+  --report "$tmp/up.json" >/dev/null 2>"$tmp/up.err" || fail "all lots left out: exit 0"
+[ "$(json "$tmp/up.json" "d['lots'], d['terminals']")" = "0 0" ] ||
+  fail "all lots left out: nothing built: $(cat "$tmp/up.json")"
+grep -q '^[of] ' "$tmp/up.obj" && fail "all lots left out: the OBJ holds geometry"
+grep -q 'above the ground' "$tmp/up.err" || fail "all lots left out: the note says why"
+
 [ $failures -eq 0 ] && echo "cga_build: ok"
 exit $((failures > 0))

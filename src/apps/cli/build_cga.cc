@@ -199,7 +199,9 @@ int build_cga(const BuildOptions& options) {
   derive.files = &files;
   const LotsGeoReference geo(lots->origin, lots->crs);
   derive.geo = &geo;
-  if (lots->lots.empty()) lots->lots.push_back(cga::default_lot(p, derive));
+  // Without --lot the grammar's start rule gets the default lot; a --lot file whose every feature
+  // was left out (parts above the ground) builds nothing, like the other front-ends.
+  if (options.lot.empty()) lots->lots.push_back(cga::default_lot(p, derive));
   const int threads = options.threads > 0
                           ? options.threads
                           : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
