@@ -161,12 +161,16 @@ class BuildingCollector
     const std::vector<const osmium::Way*> ways{&way};
     if (way.nodes().size() < 4) {
       feature.code = "OSM002";
-      feature.problem = "has " + std::to_string(way.nodes().size()) +
-                        " nodes; a closed outline needs at least 4 (3 corners and the first again)";
+      const std::size_t n = way.nodes().size();
+      feature.problem = "has " + std::to_string(n) + (n == 1 ? " node" : " nodes") +
+                        "; a closed outline needs at least 4 (3 corners and the first again)";
     } else if (!missing_location(feature, ways)) {
       problem_.clear();
       osmium::area::Assembler assembler{config_};
       assemble(feature, assembler(way, scratch_));
+      if (feature.polygons.size() == 1 && feature.polygons[0].holes.empty()) {
+        follow_way(way, feature.polygons[0].outer);
+      }
     }
     finish_one();
   }
@@ -253,6 +257,22 @@ class BuildingCollector
     feature.problem = problem_.message().empty()
                           ? std::string("no polygon could be assembled")
                           : "no polygon could be assembled: " + problem_.message();
+  }
+
+  // The assembler starts a ring at a node of its own choosing; a closed way's ring starts at the
+  // way's first node and runs its way instead, as GeoJSON exports of the way write it, so a CGA
+  // lot's first edge (its scope x axis, docs/cga-derivation.md) is the same from either file.
+  static void follow_way(const osmium::Way& way, kernel::Ring& ring) {
+    const auto at = [](const osmium::NodeRef& node) {
+      return kernel::Vec2{node.location().lon(), node.location().lat()};
+    };
+    const auto first = std::find(ring.begin(), ring.end(), at(way.nodes()[0]));
+    if (first == ring.end()) return;  // the assembler dropped that node (a spike)
+    std::rotate(ring.begin(), first, ring.end());
+    const std::size_t n = ring.size();
+    if (n > 2 && ring[n - 1] == at(way.nodes()[1]) && ring[1] != at(way.nodes()[1])) {
+      std::reverse(ring.begin() + 1, ring.end());
+    }
   }
 
   template <typename TRing>

@@ -163,6 +163,14 @@ TEST(OsmReader, StreamDeliversLonLatBatches) {
                                    std::abs(v.y - 52.518995312) < 1e-7;
                           }),
             1);
+  // The ring starts at the way's first node and runs its way (nodes 1, 2, 3, 4), not where
+  // libosmium's assembler starts it, so a CGA lot's first edge is the way's first edge.
+  const double lon[] = {13.378811770, 13.379106403, 13.379103095, 13.378808461};
+  const double lat[] = {52.518995312, 52.518999349, 52.519089214, 52.519085178};
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    EXPECT_NEAR(ring[i].x, lon[i], 1e-7) << "corner " << i;
+    EXPECT_NEAR(ring[i].y, lat[i], 1e-7) << "corner " << i;
+  }
 }
 
 TEST(OsmReader, BrokenElementsAreNamedAndSkippedWithKeepGoing) {
