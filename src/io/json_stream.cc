@@ -227,9 +227,19 @@ JsonStream& JsonStream::null() {
   return end_value();
 }
 
+// An attribute's whole number is written as an integer (`1810`, not `1810.0`), as JavaScript's
+// JSON.stringify writes it: the values keep one number type (shape::Value), and a year, a level
+// count or an OSM id read back as integers in Python, CityJSON tools and databases.
 JsonStream& JsonStream::value(const shape::Value& value) {
   if (const auto* b = std::get_if<bool>(&value)) return boolean(*b);
-  if (const auto* d = std::get_if<double>(&value)) return number(*d);
+  if (const auto* d = std::get_if<double>(&value)) {
+    constexpr double kExactIntegers = 9007199254740992.0;  // 2^53
+    if (std::abs(*d) >= kExactIntegers || std::trunc(*d) != *d) return number(*d);
+    separate();
+    char* at = room(24);
+    commit(std::to_chars(at, at + 24, static_cast<std::int64_t>(*d)).ptr);
+    return end_value();
+  }
   if (const auto* s = std::get_if<std::string>(&value)) return string(*s);
   return null();
 }

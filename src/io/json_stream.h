@@ -91,7 +91,8 @@ class JsonStream {
   }
   JsonStream& boolean(bool value);
   JsonStream& null();
-  // A shape::Value: bool, number (null when not finite), string, or null when unset.
+  // A shape::Value: bool, number (a whole one as an integer; null when not finite), string, or
+  // null when unset.
   JsonStream& value(const shape::Value& value);
   // Text that is already one complete JSON value, written in this stream's layout (compact).
   JsonStream& raw(std::string_view json);

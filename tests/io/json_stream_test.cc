@@ -106,7 +106,19 @@ TEST(JsonStream, AttributesInsertTheExtraMemberInSortedPlace) {
       .attributes(attributes, "kind", "Room")
       .attributes({{"kind", true}}, "kind", "X");
   out.attributes({}, "kind", "Room").end_array();
-  EXPECT_EQ(text, R"([{"a":1.0,"kind":"Room","n":null,"z":"x"},{"kind":true},{"kind":"Room"}])");
+  EXPECT_EQ(text, R"([{"a":1,"kind":"Room","n":null,"z":"x"},{"kind":true},{"kind":"Room"}])");
+}
+
+TEST(JsonStream, AnAttributesWholeNumberIsAnInteger) {
+  std::string text;
+  JsonStream out(text);
+  out.begin_array();
+  for (double v : {1810.0, -3.0, 0.0, 2.5, 9007199254740991.0, 9007199254740992.0, 1e300,
+                   std::nan("")}) {
+    out.value(v);
+  }
+  out.number(1810.0).end_array();  // geometry numbers keep nlohmann's layout
+  EXPECT_EQ(text, "[1810,-3,0,2.5,9007199254740991,9.007199254740992e+15,1e+300,null,1810.0]");
 }
 
 }  // namespace
