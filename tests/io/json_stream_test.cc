@@ -113,8 +113,8 @@ TEST(JsonStream, AnAttributesWholeNumberIsAnInteger) {
   std::string text;
   JsonStream out(text);
   out.begin_array();
-  for (double v : {1810.0, -3.0, 0.0, 2.5, 9007199254740991.0, 9007199254740992.0, 1e300,
-                   std::nan("")}) {
+  for (double v :
+       {1810.0, -3.0, 0.0, 2.5, 9007199254740991.0, 9007199254740992.0, 1e300, std::nan("")}) {
     out.value(v);
   }
   out.number(1810.0).end_array();  // geometry numbers keep nlohmann's layout
