@@ -205,20 +205,23 @@ std::string FootprintBuilder::polygon_label(std::size_t index, std::size_t p) co
 // Longitude/latitude without a named CRS gives itself away by fitting in +-180 x +-90 while every
 // footprint spans less than 0.05 units (5 cm if it were meters, a few kilometres in degrees): no
 // real building is 5 cm wide, and a hand-made file in meters near (0, 0) stays in meters.
+// Degrees when every polygon lies within +-180 x +-90 and most span less than 0.05 units: no
+// building is 5 cm wide, but a map export's landuse, forest or boundary polygons beside its
+// buildings span more than 0.05 degrees, and one of them must not turn the city into meters.
 bool FootprintBuilder::looks_like_degrees() const {
-  bool any = false;
+  std::size_t polygons = 0, small = 0;
   for (const RawFootprint& feature : features_) {
     if (feature.failed) continue;
     for (const kernel::Polygon& polygon : feature.polygons) {
       const kernel::Bounds2 box = kernel::bounds(polygon);
-      const bool degrees = std::abs(box.min.x) <= 180 && std::abs(box.max.x) <= 180 &&
-                           std::abs(box.min.y) <= 90 && std::abs(box.max.y) <= 90 &&
-                           box.max.x - box.min.x < 0.05 && box.max.y - box.min.y < 0.05;
-      if (!degrees) return false;
-      any = true;
+      const bool in_range = std::abs(box.min.x) <= 180 && std::abs(box.max.x) <= 180 &&
+                            std::abs(box.min.y) <= 90 && std::abs(box.max.y) <= 90;
+      if (!in_range) return false;
+      ++polygons;
+      small += box.max.x - box.min.x < 0.05 && box.max.y - box.min.y < 0.05;
     }
   }
-  return any;
+  return polygons > 0 && 2 * small > polygons;
 }
 
 // The CRS step (docs/geojson.md, "Coordinates, units and CRS"). The input CRS is the one the

@@ -413,6 +413,25 @@ TEST(GeoJsonReader, LonLatWithoutCrsMemberIsReprojectedToItsUtmZone) {
       collection({feature("", "{}", polygon(square(179.9996, -16.5, 0.0001, 0.0001))),
                   feature("", "{}", polygon(square(-179.9999, -16.5, 0.0001, 0.0001)))});
   EXPECT_EQ(outcome(read(fiji)).crs, "EPSG:32760");
+  // A map export's forest beside its buildings spans kilometres (0.2 degrees here): the buildings
+  // still make it longitude/latitude (one such polygon made the whole file meters, every
+  // building a sliver of 0 m2).
+  const std::string with_forest =
+      collection({feature("", "{}", polygon(square(9.52, 47.16, 0.0003, 0.0002))),
+                  feature("", "{}", polygon(square(9.4, 47.0, 0.2, 0.2))),
+                  feature("", "{}", polygon(square(9.53, 47.17, 0.0002, 0.0002)))});
+  EXPECT_EQ(outcome(read(with_forest)).crs, "EPSG:32632");
+  // Mostly large: meters near (0, 0), as hand-made files are; the one small square is a 4 cm
+  // sliver, not 4 km of degrees.
+  const std::string local_meters =
+      collection({feature("", "{}", polygon(square(0, 0, 10, 8))),
+                  feature("", "{}", polygon(square(20, 0, 0.04, 0.04))),
+                  feature("", "{}", polygon(square(40, 0, 12, 9)))});
+  const std::string sliver = outcome(read(local_meters)).crs;
+  EXPECT_NE(sliver.find("a sliver (area 0.002 m2"), std::string::npos) << sliver;
+  const std::string meters = collection({feature("", "{}", polygon(square(0, 0, 10, 8))),
+                                         feature("", "{}", polygon(square(40, 0, 12, 9)))});
+  EXPECT_EQ(outcome(read(meters)).crs, "");
   // --crs names another projected CRS to build in: ETRS89 / UTM 33N.
   GeoJsonOptions options;
   options.crs = "EPSG:25833";
