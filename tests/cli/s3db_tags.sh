@@ -132,4 +132,33 @@ node -e 'const c = JSON.parse(require("fs").readFileSync(process.argv[1]));
   process.exit(c.CityObjects.again.attributes["insula:height"] === 6 ? 0 : 1);' "$tmp/own.city.json" ||
   fail "insula:height is the built height"
 
+# A map export's areas that are not buildings (landuse, amenity=parking: no building tag) are
+# left out of mass and of --lot, with a note naming their tags; an untagged footprint of a
+# register (a numeric `area` column) stays a building.
+cat >"$tmp/areas.geojson" <<'G'
+{"type": "FeatureCollection", "features": [
+ {"type": "Feature", "id": "house", "properties": {"building": "house", "height": 6},
+  "geometry": {"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,8],[0,8],[0,0]]]}},
+ {"type": "Feature", "id": "forest", "properties": {"landuse": "forest"},
+  "geometry": {"type": "Polygon", "coordinates": [[[-50,-50],[150,-50],[150,150],[-50,150],[-50,-50]]]}},
+ {"type": "Feature", "id": "parking", "properties": {"amenity": "parking"},
+  "geometry": {"type": "Polygon", "coordinates": [[[20,0],[40,0],[40,15],[20,15],[20,0]]]}},
+ {"type": "Feature", "id": "register", "properties": {"area": 80, "height": 5},
+  "geometry": {"type": "Polygon", "coordinates": [[[50,0],[60,0],[60,8],[50,8],[50,0]]]}}]}
+G
+expect_exit 0 "mass: map areas" "$insula" mass "$tmp/areas.geojson" --roof flat \
+  -o "$tmp/areas.city.json" --report "$tmp/areas.json"
+grep -qF "note: 2 map areas that are not a building left out (landuse=forest, amenity=parking; no building or building:part tag)" \
+  "$tmp/err.txt" || { fail "map areas: the note"; cat "$tmp/err.txt"; }
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  const c = JSON.parse(require("fs").readFileSync(process.argv[2]));
+  const ids = Object.keys(c.CityObjects).filter((k) => c.CityObjects[k].type === "Building").sort();
+  process.exit(r.buildings === 2 && r.not_buildings === 2 && ids.join() === "house,register" ? 0 : 1);' \
+  "$tmp/areas.json" "$tmp/areas.city.json" || fail "map areas: mass builds the house and the register footprint only"
+expect_exit 0 "build --lot: map areas" "$insula" build "$root/examples/cga/footprints.cga" \
+  --lot "$tmp/areas.geojson" --report "$tmp/areas_lots.json"
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  process.exit(r.lots === 2 ? 0 : 1);' "$tmp/areas_lots.json" || fail "map areas: 2 lots"
+grep -qF "note: 2 map areas" "$tmp/err.txt" || fail "map areas: the lots' note"
+
 finish s3db_tags

@@ -46,7 +46,25 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
   return std::move(set.value());
 }
 
+std::size_t leave_out_non_buildings(io::FootprintSet& set, bool quiet) {
+  const NonBuildingsLeftOut left = cli::leave_out_non_buildings(set);
+  if (quiet || left.count == 0) return left.count;
+  std::string tags;
+  constexpr std::size_t kNamed = 4;
+  for (std::size_t i = 0; i < std::min(left.tags.size(), kNamed); ++i) {
+    tags += (i > 0 ? ", " : "") + left.tags[i];
+  }
+  if (left.tags.size() > kNamed) tags += ", ...";
+  std::fprintf(stderr,
+               "note: %zu map area%s that %s not a building left out (%s; no building or "
+               "building:part tag)\n",
+               left.count, left.count == 1 ? "" : "s", left.count == 1 ? "is" : "are",
+               tags.c_str());
+  return left.count;
+}
+
 void leave_out_for_lots(io::FootprintSet& set, bool quiet) {
+  leave_out_non_buildings(set, quiet);
   const LotsLeftOut left = cli::leave_out_for_lots(set);
   if (quiet) return;
   if (left.outlines > 0) {

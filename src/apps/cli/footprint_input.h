@@ -28,8 +28,14 @@ std::optional<io::FootprintSet> read_lot_footprints(const std::string& path,
 // `height_unit`s in meters, as `mass` reads a register's height; a text with a unit ("40 ft")
 // keeps it. Returns how many lots changed.
 std::size_t lot_heights_in_meters(io::FootprintSet& set, const std::string& height_unit);
-// Leaves those footprints out of `set`; prints the notes unless `quiet`.
+// Leaves those footprints out of `set`, and the map areas that are not buildings
+// (leave_out_non_buildings); prints the notes unless `quiet`.
 void leave_out_for_lots(io::FootprintSet& set, bool quiet);
+// Leaves out of `set` the OpenStreetMap areas that are not buildings (landuse=forest,
+// natural=water, ...: s3db_parts.h, non_building_area), with a note naming their tags unless
+// `quiet`; returns how many. `mass` and every --lot front-end call it; `check` does not (it
+// checks the whole file).
+std::size_t leave_out_non_buildings(io::FootprintSet& set, bool quiet);
 
 // The footprints of an OpenStreetMap file read with `options`; its diagnostics are left to the
 // caller.

@@ -162,6 +162,7 @@ int run_mass(const MassOptions& given) {
   if (!set) return kExitInput;
   report.stage("read", read_clock.seconds());
   release_free_memory();
+  report.not_buildings = leave_out_non_buildings(set.value(), options.quiet);
   report.invalid = set->skipped_invalid;
   report.invalid_by_code = set->skipped_by_code;
   report.repairs = set->repairs;

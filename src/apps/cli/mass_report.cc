@@ -78,6 +78,7 @@ std::string MassReport::json() const {
   out["warning_counts"] = warning_counts;
   out["failed"] = failed;
   out["invalid"] = invalid;
+  out["not_buildings"] = not_buildings;
   out["invalid_by_code"] = invalid_by_code;
   out["repairs"] = repairs;
   out["overlaps"] = overlaps;

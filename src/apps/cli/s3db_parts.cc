@@ -1,5 +1,7 @@
 #include "apps/cli/s3db_parts.h"
 
+#include <algorithm>
+#include <array>
 #include <string>
 
 #include "base/tag_numbers.h"
@@ -92,6 +94,41 @@ LotsLeftOut leave_out_for_lots(io::FootprintSet& set) {
     ++kept;
   }
   set.footprints.resize(kept);
+  return out;
+}
+
+std::optional<std::string> non_building_area(const io::Footprint& footprint) {
+  if (tagged(footprint, "building") || tagged(footprint, "building:part")) return std::nullopt;
+  // OSM's keys for areas that are land, water, ways, grounds or pitches rather than structures;
+  // man_made, historic and tourism are left out, since towers, castles and huts are mapped with
+  // them alone. Only text values count: a register's numeric column of one of these names
+  // (an `area` in m2) says nothing of the kind, and `area` counts only as OSM's `area=yes`.
+  static constexpr std::array<std::string_view, 16> kAreaKeys{
+      "landuse",  "natural", "leisure",    "amenity",  "highway", "area:highway",
+      "waterway", "water",   "railway",    "boundary", "aeroway", "military",
+      "golf",     "sport",   "piste:type", "barrier"};
+  for (std::string_view key : kAreaKeys) {
+    const std::optional<shape::Value> value = footprint.properties.find(key);
+    const std::string* text = value ? std::get_if<std::string>(&*value) : nullptr;
+    if (text != nullptr && !text->empty() && *text != "no") return std::string(key) + "=" + *text;
+  }
+  const std::optional<shape::Value> area = footprint.properties.find("area");
+  const std::string* area_text = area ? std::get_if<std::string>(&*area) : nullptr;
+  if (area_text != nullptr && *area_text == "yes") return "area=yes";
+  return std::nullopt;
+}
+
+NonBuildingsLeftOut leave_out_non_buildings(io::FootprintSet& set) {
+  NonBuildingsLeftOut out;
+  std::erase_if(set.footprints, [&](const io::Footprint& footprint) {
+    const std::optional<std::string> tag = non_building_area(footprint);
+    if (!tag) return false;
+    ++out.count;
+    if (std::find(out.tags.begin(), out.tags.end(), *tag) == out.tags.end()) {
+      out.tags.push_back(*tag);
+    }
+    return true;
+  });
   return out;
 }
 
