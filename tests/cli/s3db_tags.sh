@@ -161,4 +161,13 @@ node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
   process.exit(r.lots === 2 ? 0 : 1);' "$tmp/areas_lots.json" || fail "map areas: 2 lots"
 grep -qF "note: 2 map areas" "$tmp/err.txt" || fail "map areas: the lots' note"
 
+# A footprint larger than any building (1.44 km2 here) is built, with warning MAS010 saying so.
+cat >"$tmp/vast.geojson" <<'G'
+{"type": "Feature", "id": "what", "properties": {"FIXME": "what is this?"},
+ "geometry": {"type": "Polygon", "coordinates": [[[0,0],[1200,0],[1200,1200],[0,1200],[0,0]]]}}
+G
+expect_exit 0 "mass: a vast footprint" "$insula" mass "$tmp/vast.geojson" --roof flat -o "$tmp/vast.obj"
+grep -qF 'warning[MAS010]: feature 0 (id "what"): a footprint of 1.44 km2, larger than any building' \
+  "$tmp/err.txt" || { fail "vast footprint: MAS010"; cat "$tmp/err.txt"; }
+
 finish s3db_tags

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
 
@@ -194,6 +195,21 @@ void warn_replaced_properties(const io::Footprint& footprint, std::vector<Warnin
   }
 }
 
+// MAS010: a footprint larger than any building (the largest halls cover about 0.5 km2) is mostly
+// an area a map export holds without a tag saying what it is; it is built as given, but the user
+// should know why a slab covers the town.
+void warn_vast_footprint(const io::Footprint& footprint, std::vector<Warning>& warnings) {
+  constexpr double kLargestBuilding = 1e6;  // m2
+  double area = 0;
+  for (const kernel::Polygon& polygon : footprint.polygons) area += kernel::area(polygon);
+  if (area <= kLargestBuilding) return;
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", area / 1e6);
+  warnings.push_back({"MAS010", feature_name(footprint) + ": a footprint of " + text +
+                                    " km2, larger than any building (an area mapped without a "
+                                    "tag saying what it is?); built as given"});
+}
+
 }  // namespace
 
 std::string feature_name(const io::Footprint& footprint) {
@@ -214,6 +230,7 @@ MassPlan plan_mass(const MassOptions& options, const io::FootprintSet& set,
       warnings.push_back({w.code, feature_name(footprint) + ": " + w.text});
     }
     warn_replaced_properties(footprint, warnings);
+    warn_vast_footprint(footprint, warnings);
     FootprintPlan& entry = plan.footprints.emplace_back();
     entry.spec = mass_spec(options, form);
     materials.assign(form, entry);
