@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${FUZZ_SECONDS:-30}
-# A fixed seed by default: CI's one-minute runs take the same path each time (so a red run is a
+# A fixed seed by default: CI's short runs take the same path each time (so a red run is a
 # change of ours, reproducible here); FUZZ_SEED=0 lets libFuzzer pick one, for longer hunts.
 seed=${FUZZ_SEED:-1}
 all=(geojson cga bldg lua obj xml plasm graph)

@@ -202,12 +202,10 @@ std::string FootprintBuilder::polygon_label(std::size_t index, std::size_t p) co
   return features_[index].multi ? "polygon " + std::to_string(p) : std::string("polygon");
 }
 
-// Longitude/latitude without a named CRS gives itself away by fitting in +-180 x +-90 while every
-// footprint spans less than 0.05 units (5 cm if it were meters, a few kilometres in degrees): no
-// real building is 5 cm wide, and a hand-made file in meters near (0, 0) stays in meters.
-// Degrees when every polygon lies within +-180 x +-90 and most span less than 0.05 units: no
-// building is 5 cm wide, but a map export's landuse, forest or boundary polygons beside its
-// buildings span more than 0.05 degrees, and one of them must not turn the city into meters.
+// Longitude/latitude without a named CRS gives itself away: degrees when every polygon lies within
+// +-180 x +-90 and most span less than 0.05 units: no building is 5 cm wide, but a map export's
+// landuse, forest or boundary polygons beside its buildings span more than 0.05 degrees, and one of
+// them must not turn the city into meters. A hand-made file in meters near (0, 0) stays in meters.
 bool FootprintBuilder::looks_like_degrees() const {
   std::size_t polygons = 0, small = 0;
   for (const RawFootprint& feature : features_) {

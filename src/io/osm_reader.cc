@@ -269,8 +269,12 @@ class BuildingCollector
     const auto first = std::find(ring.begin(), ring.end(), at(way.nodes()[0]));
     if (first == ring.end()) return;  // the assembler dropped that node (a spike)
     std::rotate(ring.begin(), first, ring.end());
-    const std::size_t n = ring.size();
-    if (n > 2 && ring[n - 1] == at(way.nodes()[1]) && ring[1] != at(way.nodes()[1])) {
+    // The way's direction by its signed area: its second node may repeat the first or be a
+    // spike's tip the assembler dropped.
+    kernel::Ring nodes;
+    nodes.reserve(way.nodes().size());
+    for (const osmium::NodeRef& node : way.nodes()) nodes.push_back(at(node));
+    if ((kernel::signed_area(nodes) < 0) != (kernel::signed_area(ring) < 0)) {
       std::reverse(ring.begin() + 1, ring.end());
     }
   }

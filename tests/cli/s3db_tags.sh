@@ -144,7 +144,9 @@ cat >"$tmp/areas.geojson" <<'G'
  {"type": "Feature", "id": "parking", "properties": {"amenity": "parking"},
   "geometry": {"type": "Polygon", "coordinates": [[[20,0],[40,0],[40,15],[20,15],[20,0]]]}},
  {"type": "Feature", "id": "register", "properties": {"area": 80, "height": 5},
-  "geometry": {"type": "Polygon", "coordinates": [[[50,0],[60,0],[60,8],[50,8],[50,0]]]}}]}
+  "geometry": {"type": "Polygon", "coordinates": [[[50,0],[60,0],[60,8],[50,8],[50,0]]]}},
+ {"type": "Feature", "id": "garage", "properties": {"amenity": "parking", "height": 12},
+  "geometry": {"type": "Polygon", "coordinates": [[[70,0],[90,0],[90,15],[70,15],[70,0]]]}}]}
 G
 expect_exit 0 "mass: map areas" "$insula" mass "$tmp/areas.geojson" --roof flat \
   -o "$tmp/areas.city.json" --report "$tmp/areas.json"
@@ -153,13 +155,42 @@ grep -qF "note: 2 map areas that are not a building left out (landuse=forest, am
 node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
   const c = JSON.parse(require("fs").readFileSync(process.argv[2]));
   const ids = Object.keys(c.CityObjects).filter((k) => c.CityObjects[k].type === "Building").sort();
-  process.exit(r.buildings === 2 && r.not_buildings === 2 && ids.join() === "house,register" ? 0 : 1);' \
-  "$tmp/areas.json" "$tmp/areas.city.json" || fail "map areas: mass builds the house and the register footprint only"
+  process.exit(r.buildings === 3 && r.not_buildings === 2 && ids.join() === "garage,house,register" ? 0 : 1);' \
+  "$tmp/areas.json" "$tmp/areas.city.json" ||
+  fail "map areas: mass builds the house, the register footprint and the car park with a height only"
 expect_exit 0 "build --lot: map areas" "$insula" build "$root/examples/cga/footprints.cga" \
   --lot "$tmp/areas.geojson" --report "$tmp/areas_lots.json"
 node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
-  process.exit(r.lots === 2 ? 0 : 1);' "$tmp/areas_lots.json" || fail "map areas: 2 lots"
+  process.exit(r.lots === 3 ? 0 : 1);' "$tmp/areas_lots.json" || fail "map areas: 3 lots"
 grep -qF "note: 2 map areas" "$tmp/err.txt" || fail "map areas: the lots' note"
+
+# A register (no building tags) whose text column is called like an OSM key keeps every footprint.
+cat >"$tmp/register.geojson" <<'G'
+{"type": "FeatureCollection", "features": [
+ {"type": "Feature", "id": "r1", "properties": {"landuse": "R1", "height": 7},
+  "geometry": {"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,8],[0,8],[0,0]]]}}]}
+G
+expect_exit 0 "mass: a register's landuse column" "$insula" mass "$tmp/register.geojson" \
+  -o "$tmp/register.obj" --report "$tmp/register.json"
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  process.exit(r.buildings === 1 && r.not_buildings === 0 ? 0 : 1);' "$tmp/register.json" ||
+  fail "a register's landuse column: the footprint is built"
+
+# An outline replaced by its parts keeps none of its input insula:* properties (MAS009 says they
+# are replaced): its height is the parts' top.
+cat >"$tmp/joined.geojson" <<'G'
+{"type": "FeatureCollection", "features": [
+ {"type": "Feature", "id": "church", "properties": {"building": "church", "insula:roof": "x", "insula:height": 99},
+  "geometry": {"type": "Polygon", "coordinates": [[[0,0],[20,0],[20,10],[0,10],[0,0]]]}},
+ {"type": "Feature", "id": "nave", "properties": {"building:part": "yes", "height": 12},
+  "geometry": {"type": "Polygon", "coordinates": [[[0,0],[20,0],[20,10],[0,10],[0,0]]]}}]}
+G
+expect_exit 0 "mass: an outline's insula:* properties" "$insula" mass "$tmp/joined.geojson" \
+  --roof flat -o "$tmp/joined.city.json"
+node -e 'const c = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  const a = c.CityObjects.church.attributes;
+  process.exit(a["insula:height"] === 12 && !("insula:roof" in a) ? 0 : 1);' "$tmp/joined.city.json" ||
+  fail "an outline replaced by its parts: insula:* replaced"
 
 # A footprint larger than any building (1.44 km2 here) is built, with warning MAS010 saying so.
 cat >"$tmp/vast.geojson" <<'G'

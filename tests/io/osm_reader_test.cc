@@ -173,6 +173,41 @@ TEST(OsmReader, StreamDeliversLonLatBatches) {
   }
 }
 
+TEST(OsmReader, AClockwiseWayStartsAtItsFirstNodeAndRunsItsWay) {
+  // Nodes 1, 4, 3, 2 of buildings.osm (clockwise), the second one mapped twice at one place.
+  TempDir dir;
+  const std::filesystem::path file = dir.path / "clockwise.osm";
+  std::ofstream(file) << R"(<?xml version="1.0" encoding="UTF-8"?>
+<osm version="0.6">
+  <node id="1" version="1" lat="52.518995312" lon="13.378811770"/>
+  <node id="2" version="1" lat="52.518999349" lon="13.379106403"/>
+  <node id="3" version="1" lat="52.519089214" lon="13.379103095"/>
+  <node id="4" version="1" lat="52.519085178" lon="13.378808461"/>
+  <node id="9" version="1" lat="52.518995312" lon="13.378811770"/>
+  <way id="1" version="1">
+    <nd ref="1"/><nd ref="9"/><nd ref="4"/><nd ref="3"/><nd ref="2"/><nd ref="1"/>
+    <tag k="building" v="yes"/>
+  </way>
+</osm>
+)";
+  OsmStreamOptions options;
+  std::vector<OsmFeature> all;
+  const auto stats = stream_osm(file.string(), options, [&](std::vector<OsmFeature>& batch) {
+    for (OsmFeature& f : batch) all.push_back(std::move(f));
+  });
+  ASSERT_TRUE(stats.ok());
+  ASSERT_EQ(all.size(), 1u);
+  ASSERT_EQ(all[0].polygons.size(), 1u) << all[0].problem;
+  const kernel::Ring& ring = all[0].polygons[0].outer;
+  const double lon[] = {13.378811770, 13.378808461, 13.379103095, 13.379106403};
+  const double lat[] = {52.518995312, 52.519085178, 52.519089214, 52.518999349};
+  ASSERT_EQ(ring.size(), 4u);
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    EXPECT_NEAR(ring[i].x, lon[i], 1e-7) << "corner " << i;
+    EXPECT_NEAR(ring[i].y, lat[i], 1e-7) << "corner " << i;
+  }
+}
+
 TEST(OsmReader, BrokenElementsAreNamedAndSkippedWithKeepGoing) {
   struct Case {
     const char* file;

@@ -80,6 +80,9 @@ BuiltBuilding build_unit(const io::FootprintSet& set, const MassPlan& plan, cons
   joined.feature = first;
   joined.building.id = set.footprints[first].id;
   joined.building.attributes = set.footprints[first].properties.map();
+  // The parts carry their own forms; of the outline's input `insula:*` properties (MAS009) none
+  // describes the joined building, whose height is set below.
+  for (const char* key : kFormAttributes) joined.building.attributes.erase(key);
   for (std::size_t k = 1; k < unit.size(); ++k) {
     BuiltBuilding part = build_one(set.footprints[unit[k]], plan.footprints[unit[k]]);
     joined.watertight = joined.watertight && part.watertight;

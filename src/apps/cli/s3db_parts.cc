@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <set>
 #include <string>
 
 #include "base/tag_numbers.h"
@@ -99,6 +100,27 @@ LotsLeftOut leave_out_for_lots(io::FootprintSet& set) {
 
 std::optional<std::string> non_building_area(const io::Footprint& footprint) {
   if (tagged(footprint, "building") || tagged(footprint, "building:part")) return std::nullopt;
+  // A structure mapped without a building tag (a multi-storey car park, a hangar, a shelter)
+  // still says so by its height, levels or roof tags, or by its value.
+  const shape::AttributeMap properties = footprint.properties.map();
+  const bool structure =
+      std::any_of(properties.begin(), properties.end(), [](const auto& property) {
+        const std::string_view key = property.first;
+        return key == "height" || key == "min_height" || key.starts_with("building:") ||
+               key.starts_with("roof:");
+      });
+  if (structure) return std::nullopt;
+  const auto text_of = [&](std::string_view key) -> const std::string* {
+    const std::optional<shape::Value> value = footprint.properties.find(key);
+    return value ? std::get_if<std::string>(&*value) : nullptr;
+  };
+  for (const auto& [key, value] :
+       {std::pair{"parking", "multi-storey"}, std::pair{"aeroway", "hangar"},
+        std::pair{"aeroway", "terminal"}, std::pair{"amenity", "shelter"}}) {
+    if (const std::string* text = text_of(key); text != nullptr && *text == value) {
+      return std::nullopt;
+    }
+  }
   // OSM's keys for areas that are land, water, ways, grounds or pitches rather than structures;
   // man_made, historic and tourism are left out, since towers, castles and huts are mapped with
   // them alone. Only text values count: a register's numeric column of one of these names
@@ -108,25 +130,28 @@ std::optional<std::string> non_building_area(const io::Footprint& footprint) {
       "waterway", "water",   "railway",    "boundary", "aeroway", "military",
       "golf",     "sport",   "piste:type", "barrier"};
   for (std::string_view key : kAreaKeys) {
-    const std::optional<shape::Value> value = footprint.properties.find(key);
-    const std::string* text = value ? std::get_if<std::string>(&*value) : nullptr;
+    const std::string* text = text_of(key);
     if (text != nullptr && !text->empty() && *text != "no") return std::string(key) + "=" + *text;
   }
-  const std::optional<shape::Value> area = footprint.properties.find("area");
-  const std::string* area_text = area ? std::get_if<std::string>(&*area) : nullptr;
-  if (area_text != nullptr && *area_text == "yes") return "area=yes";
+  const std::string* area = text_of("area");
+  if (area != nullptr && *area == "yes") return "area=yes";
   return std::nullopt;
 }
 
 NonBuildingsLeftOut leave_out_non_buildings(io::FootprintSet& set) {
   NonBuildingsLeftOut out;
+  // Only a map export, where buildings carry their tag: a register whose text column happens to
+  // be called `landuse` or `amenity` keeps every footprint.
+  const bool tagged_export = std::any_of(
+      set.footprints.begin(), set.footprints.end(),
+      [](const io::Footprint& f) { return tagged(f, "building") || tagged(f, "building:part"); });
+  if (!tagged_export) return out;
+  std::set<std::string> seen;
   std::erase_if(set.footprints, [&](const io::Footprint& footprint) {
-    const std::optional<std::string> tag = non_building_area(footprint);
+    std::optional<std::string> tag = non_building_area(footprint);
     if (!tag) return false;
     ++out.count;
-    if (std::find(out.tags.begin(), out.tags.end(), *tag) == out.tags.end()) {
-      out.tags.push_back(*tag);
-    }
+    if (seen.insert(*tag).second) out.tags.push_back(std::move(*tag));
     return true;
   });
   return out;
