@@ -110,9 +110,10 @@ std::optional<std::string> non_building_area(const io::Footprint& footprint) {
                key.starts_with("roof:");
       });
   if (structure) return std::nullopt;
+  // Into `properties`, which outlives every use.
   const auto text_of = [&](std::string_view key) -> const std::string* {
-    const std::optional<shape::Value> value = footprint.properties.find(key);
-    return value ? std::get_if<std::string>(&*value) : nullptr;
+    const auto found = properties.find(std::string(key));
+    return found == properties.end() ? nullptr : std::get_if<std::string>(&found->second);
   };
   for (const auto& [key, value] :
        {std::pair{"parking", "multi-storey"}, std::pair{"aeroway", "hangar"},
