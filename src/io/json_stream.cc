@@ -235,10 +235,7 @@ JsonStream& JsonStream::value(const shape::Value& value) {
   if (const auto* d = std::get_if<double>(&value)) {
     constexpr double kExactIntegers = 9007199254740992.0;  // 2^53
     if (std::abs(*d) >= kExactIntegers || std::trunc(*d) != *d) return number(*d);
-    separate();
-    char* at = room(24);
-    commit(std::to_chars(at, at + 24, static_cast<std::int64_t>(*d)).ptr);
-    return end_value();
+    return integer(static_cast<std::int64_t>(*d));
   }
   if (const auto* s = std::get_if<std::string>(&value)) return string(*s);
   return null();
