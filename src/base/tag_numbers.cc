@@ -24,6 +24,11 @@ std::optional<double> unit_size(std::string_view unit) {
   return std::nullopt;
 }
 
+// A character of a name as identifier_spelling writes it.
+char identifier_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) == 0 && c != '_' ? '_' : c;
+}
+
 }  // namespace
 
 std::string lower_ascii(std::string_view text) {
@@ -34,10 +39,16 @@ std::string lower_ascii(std::string_view text) {
 
 std::string identifier_spelling(std::string_view name) {
   std::string out(name);
-  for (char& c : out) {
-    if (std::isalnum(static_cast<unsigned char>(c)) == 0 && c != '_') c = '_';
-  }
+  for (char& c : out) c = identifier_char(c);
   return out;
+}
+
+bool spells_identifier(std::string_view name, std::string_view identifier) {
+  if (name.size() != identifier.size()) return false;
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    if (identifier_char(name[i]) != identifier[i]) return false;
+  }
+  return true;
 }
 
 std::string_view trim_space(std::string_view text) {

@@ -14,6 +14,9 @@ std::string lower_ascii(std::string_view text);
 // `name` as an identifier: every character other than a letter, digit or '_' written as '_'
 // (OpenStreetMap's `building:levels` is `building_levels`, as Esri's OSM layers name it).
 std::string identifier_spelling(std::string_view name);
+// Whether identifier_spelling(name) == identifier, without making the spelling (asked for every
+// lot property by each attr the lot does not name exactly).
+bool spells_identifier(std::string_view name, std::string_view identifier);
 // `text` without leading and trailing white space.
 std::string_view trim_space(std::string_view text);
 // Reads a non-negative decimal number at the start of `text` ("12", "12.5", "3,5": a decimal

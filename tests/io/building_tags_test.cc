@@ -40,6 +40,16 @@ TEST(ParseLength, MetersFeetAndInches) {
   }
 }
 
+TEST(IdentifierSpelling, TagNamesAsAttrNames) {
+  EXPECT_EQ(base::identifier_spelling("building:levels"), "building_levels");
+  EXPECT_TRUE(base::spells_identifier("building:levels", "building_levels"));
+  EXPECT_TRUE(base::spells_identifier("roof:colour", "roof_colour"));
+  EXPECT_TRUE(base::spells_identifier("height", "height"));
+  EXPECT_FALSE(base::spells_identifier("building:levels", "building_level"));
+  EXPECT_FALSE(base::spells_identifier("building_levels", "building:levels"));
+  EXPECT_FALSE(base::spells_identifier("roof-shape", "roof_shapes"));
+}
+
 TEST(ParseDirection, DegreesAndCompassPoints) {
   EXPECT_DOUBLE_EQ(*parse_direction("135"), 135.0);
   EXPECT_DOUBLE_EQ(*parse_direction("N"), 0.0);

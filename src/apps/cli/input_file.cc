@@ -4,11 +4,13 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 #include <system_error>
 
 namespace insula::cli {
@@ -18,7 +20,16 @@ std::optional<std::string> read_input_file(const std::string& path) {
   if (std::filesystem::is_directory(path, error)) return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
-  std::ostringstream buffer;
+  // A regular file is read at its size in one call: streaming it through a string stream grew
+  // and copied the buffer over and over (a tenth of reading a 13 MB lot file, issue 17).
+  if (const auto size = std::filesystem::file_size(path, error);
+      !error && std::filesystem::is_regular_file(path, error)) {
+    std::string text(size, '\0');
+    in.read(text.data(), static_cast<std::streamsize>(size));
+    if (in.bad() || static_cast<std::uintmax_t>(in.gcount()) != size) return std::nullopt;
+    return text;
+  }
+  std::ostringstream buffer;  // a pipe or device: its size is unknown
   buffer << in.rdbuf();
   if (in.bad()) return std::nullopt;
   return buffer.str();

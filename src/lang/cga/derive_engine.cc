@@ -593,7 +593,7 @@ const shape::Value* Engine::lot_property(const std::string& name) const {
     return shape::is_null(it->second) ? nullptr : &it->second;
   }
   for (const auto& [property, value] : lot_.properties) {
-    if (!shape::is_null(value) && base::identifier_spelling(property) == name) return &value;
+    if (!shape::is_null(value) && base::spells_identifier(property, name)) return &value;
   }
   return nullptr;
 }
