@@ -13,6 +13,7 @@
 #include "apps/cli/exit_codes.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/mass_command.h"
+#include "apps/cli/memory.h"
 #include "apps/cli/random_command.h"
 #include "apps/cli/ranks.h"
 #include "apps/cli/studio_command.h"
@@ -118,6 +119,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  insula::cli::use_huge_pages();
   insula::cli::Ranks::start(argc, argv);
   // MPI ends after the verb, whatever it returned (a verb's collective calls are all made).
   struct StopRanks {
