@@ -23,7 +23,7 @@ namespace {
 
 // tcmalloc's memory from the system in 2 MB-aligned blocks the kernel may back with huge pages
 // (MADV_HUGEPAGE: Debian's default THP mode is "madvise"). A first touch of a 4 kB page costs
-// 11 to 12 us on the machines CI runs on (a virtual machine), and a district's tiles touch 50,000
+// 11 to 12 us on the project's machine (a virtual machine), and a district's tiles touch 50,000
 // of them (issue 17, docs/PERFORMANCE.md). Where the kernel says no, the block stays as it was.
 class HugePageAllocator : public SysAllocator {
  public:
@@ -31,12 +31,11 @@ class HugePageAllocator : public SysAllocator {
 
   void* Alloc(std::size_t size, std::size_t* actual_size, std::size_t alignment) override {
     const std::size_t align = std::max(alignment, kHugePage);
+    if (size > kLargest || align > kLargest) return fallback(size, actual_size, alignment);
     const std::size_t rounded = (size + kHugePage - 1) / kHugePage * kHugePage;
     void* mapped = ::mmap(nullptr, rounded + align, PROT_READ | PROT_WRITE,
                           MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (mapped == MAP_FAILED) {
-      return fallback_ != nullptr ? fallback_->Alloc(size, actual_size, alignment) : nullptr;
-    }
+    if (mapped == MAP_FAILED) return fallback(size, actual_size, alignment);
     // The aligned block, the rest of the mapping before and after it given back.
     const auto start = reinterpret_cast<std::uintptr_t>(mapped);
     const std::uintptr_t aligned = (start + align - 1) / align * align;
@@ -51,6 +50,12 @@ class HugePageAllocator : public SysAllocator {
 
  private:
   static constexpr std::size_t kHugePage = std::size_t{2} << 20U;
+  // Past this the rounding below could overflow: such a request goes to tcmalloc's own.
+  static constexpr std::size_t kLargest = std::size_t{1} << 46U;
+
+  void* fallback(std::size_t size, std::size_t* actual_size, std::size_t alignment) {
+    return fallback_ != nullptr ? fallback_->Alloc(size, actual_size, alignment) : nullptr;
+  }
   SysAllocator* fallback_;
 };
 
