@@ -4,6 +4,7 @@
 #include "io/footprint_finish.h"
 
 #include "io/crs.h"
+#include "io/map_areas.h"
 #include "kernel/skeleton.h"
 
 #include <algorithm>
@@ -206,10 +207,19 @@ std::string FootprintBuilder::polygon_label(std::size_t index, std::size_t p) co
 // +-180 x +-90 and most span less than 0.05 units: no building is 5 cm wide, but a map export's
 // landuse, forest or boundary polygons beside its buildings span more than 0.05 degrees, and one of
 // them must not turn the city into meters. A hand-made file in meters near (0, 0) stays in meters.
+// Map areas (map_areas_) vote only when no other polygon does: `check` reads them too, and must
+// decide as `mass` does.
 bool FootprintBuilder::looks_like_degrees() const {
+  const std::optional<bool> buildings = degrees_vote(false);
+  return buildings ? *buildings : degrees_vote(true).value_or(false);
+}
+
+// The vote of looks_like_degrees(), with or without the map areas; nullopt when no polygon votes.
+std::optional<bool> FootprintBuilder::degrees_vote(bool map_areas) const {
   std::size_t polygons = 0, small = 0;
-  for (const RawFootprint& feature : features_) {
-    if (feature.failed) continue;
+  for (std::size_t f = 0; f < features_.size(); ++f) {
+    const RawFootprint& feature = features_[f];
+    if (feature.failed || (!map_areas && !map_areas_.empty() && map_areas_[f])) continue;
     for (const kernel::Polygon& polygon : feature.polygons) {
       const kernel::Bounds2 box = kernel::bounds(polygon);
       const bool in_range = std::abs(box.min.x) <= 180 && std::abs(box.max.x) <= 180 &&
@@ -219,7 +229,8 @@ bool FootprintBuilder::looks_like_degrees() const {
       small += box.max.x - box.min.x < 0.05 && box.max.y - box.min.y < 0.05;
     }
   }
-  return polygons > 0 && 2 * small > polygons;
+  if (polygons == 0) return std::nullopt;
+  return 2 * small > polygons;
 }
 
 // The CRS step (docs/geojson.md, "Coordinates, units and CRS"). The input CRS is the one the
@@ -655,8 +666,53 @@ RawFootprint& FootprintBuilder::add_raw() {
   return features_.emplace_back();
 }
 
+// Which features are map areas (map_areas_), before the CRS step; under
+// leave_out_non_buildings they lose their polygons, so they widen no bounding box and are never
+// repaired or checked.
+void FootprintBuilder::find_map_areas(const std::shared_ptr<const PropertyTable>& properties) {
+  const std::size_t n = features_.size();
+  bool tagged_export = false;
+  for (std::size_t i = 0; i < n && !tagged_export; ++i) {
+    tagged_export = tagged_building(PropertyRow(properties, i));
+  }
+  // Only a map export, where buildings carry their tag: a register whose text column happens to
+  // be called `landuse` or `amenity` keeps every footprint.
+  if (!tagged_export) return;
+  map_areas_.assign(n, false);
+  std::set<std::string, std::less<>> seen;
+  for (std::size_t i = 0; i < n; ++i) {
+    RawFootprint& feature = features_[i];
+    if (feature.failed || feature.polygons.empty()) continue;
+    std::optional<std::string> tag = non_building_area(PropertyRow(properties, i));
+    if (!tag) continue;
+    map_areas_[i] = true;
+    if (!options_.leave_out_non_buildings) continue;
+    std::vector<kernel::Polygon>().swap(feature.polygons);
+    ++result_.non_buildings;
+    if (seen.insert(*tag).second) result_.non_building_tags.push_back(std::move(*tag));
+  }
+}
+
+// GEO006's note: why no footprint is left. Map areas are left out without a warning each, so
+// the note names them.
+std::string FootprintBuilder::nothing_left_note() const {
+  if (features_.empty() && !empty_note_.empty()) return empty_note_;
+  std::string note = std::to_string(features_.size()) + " feature" +
+                     (features_.size() == 1 ? "" : "s") +
+                     " read; the warnings above say why each was skipped";
+  if (result_.non_buildings > 0) {
+    note += "; " + std::to_string(result_.non_buildings) + " map area" +
+            (result_.non_buildings == 1 ? "" : "s") + " that " +
+            (result_.non_buildings == 1 ? "is" : "are") + " not a building left out (" +
+            result_.non_building_tags[0] + (result_.non_building_tags.size() > 1 ? ", ..." : "") +
+            ")";
+  }
+  return note;
+}
+
 void FootprintBuilder::finish_features(const Location& crs_at) {
   const auto properties = std::make_shared<const PropertyTable>(std::move(properties_));
+  if (errors_ == 0) find_map_areas(properties);
   if (errors_ == 0) resolve_crs(crs_at);
   if (errors_ == 0) {
     choose_origin();
@@ -675,12 +731,8 @@ void FootprintBuilder::finish_features(const Location& crs_at) {
     }
   }
   if (errors_ == 0 && result_.footprints.empty()) {
-    report(
-        base::Severity::kError, "GEO006", "no polygon features", whole_input(),
-        {features_.empty() && !empty_note_.empty()
-             ? empty_note_
-             : std::to_string(features_.size()) + " feature" + (features_.size() == 1 ? "" : "s") +
-                   " read; the warnings above say why each was skipped"});
+    report(base::Severity::kError, "GEO006", "no polygon features", whole_input(),
+           {nothing_left_note()});
   }
   if (errors_ == 0) assign_ids();
   result_.skipped_invalid = static_cast<std::size_t>(std::count_if(
