@@ -179,6 +179,7 @@ void FootprintBuilder::report(base::Severity severity, const char* code, std::st
 void FootprintBuilder::feature_issue(std::size_t index, bool is_error, const char* code,
                                      const std::string& message, const Location& where,
                                      std::vector<std::string> notes) {
+  if (is_error && hold_issue(index, code, message, where, notes)) return;
   RawFootprint& feature = features_[index];
   const std::string flag = options_.skip_invalid_flag.empty() ? options_name_ + "::skip_invalid"
                                                               : options_.skip_invalid_flag;
@@ -666,31 +667,75 @@ RawFootprint& FootprintBuilder::add_raw() {
   return features_.emplace_back();
 }
 
-// Which features are map areas (map_areas_), before the CRS step; under
+// While reading, a feature error of what may be a map area (its properties are read before its
+// geometry) waits for the whole file: a map export's landuse polygon with a ring of 3 positions
+// fails nothing. The feature takes no polygons meanwhile, as a failed one.
+bool FootprintBuilder::hold_issue(std::size_t index, const char* code, const std::string& message,
+                                  const Location& where, std::vector<std::string>& notes) {
+  if (!holding_ || !options_.leave_out_non_buildings) return false;
+  // A non-owning pointer to the table being filled: the row lives only for this call.
+  const std::shared_ptr<const PropertyTable> table(std::shared_ptr<const PropertyTable>(),
+                                                   &properties_);
+  if (!non_building_area(PropertyRow(table, index))) return false;
+  held_.push_back({index, code, message, where, std::move(notes)});
+  features_[index].failed = true;
+  return true;
+}
+
+// Only a map export, where buildings carry their tag, has map areas: a register whose text column
+// happens to be called `landuse` or `amenity` keeps every footprint.
+bool FootprintBuilder::map_export(const std::shared_ptr<const PropertyTable>& properties) const {
+  for (std::size_t i = 0; i < features_.size(); ++i) {
+    if (tagged_building(PropertyRow(properties, i))) return true;
+  }
+  return false;
+}
+
+// The held errors: a map export's map area is left out with them (find_map_areas(), which
+// map_areas_ tells); anywhere else they are reported as if never held. A feature's held errors
+// are consecutive (it is read whole).
+void FootprintBuilder::release_held(const std::shared_ptr<const PropertyTable>& properties,
+                                    bool map_export) {
+  holding_ = false;
+  if (map_export) map_areas_.assign(features_.size(), false);
+  std::vector<HeldIssue> held;
+  held.swap(held_);
+  bool area = false;
+  for (std::size_t k = 0; k < held.size(); ++k) {
+    HeldIssue& issue = held[k];
+    // A reader that forgets what it read (GeoJSON's syntax error) forgets these errors too.
+    if (issue.index >= features_.size()) continue;
+    if (k == 0 || held[k - 1].index != issue.index) {
+      features_[issue.index].failed = false;
+      // Its properties were whole when it was held (a reader reads them before the geometry).
+      area = map_export && non_building_area(PropertyRow(properties, issue.index));
+      if (area) map_areas_[issue.index] = true;
+    }
+    if (area) continue;
+    feature_issue(issue.index, true, issue.code.c_str(), issue.message, issue.where,
+                  std::move(issue.notes));
+  }
+}
+
+// Which features of a map export are map areas (map_areas_), before the CRS step; under
 // leave_out_non_buildings they lose their polygons, so they widen no bounding box and are never
 // repaired or checked.
 void FootprintBuilder::find_map_areas(const std::shared_ptr<const PropertyTable>& properties) {
-  const std::size_t n = features_.size();
-  bool tagged_export = false;
-  for (std::size_t i = 0; i < n && !tagged_export; ++i) {
-    tagged_export = tagged_building(PropertyRow(properties, i));
-  }
-  // Only a map export, where buildings carry their tag: a register whose text column happens to
-  // be called `landuse` or `amenity` keeps every footprint.
-  if (!tagged_export) return;
-  map_areas_.assign(n, false);
-  std::set<std::string, std::less<>> seen;
-  for (std::size_t i = 0; i < n; ++i) {
-    RawFootprint& feature = features_[i];
-    if (feature.failed || feature.polygons.empty()) continue;
+  for (std::size_t i = 0; i < features_.size(); ++i) {
+    const RawFootprint& feature = features_[i];
+    const bool held = map_areas_[i];
+    if (!held && (feature.failed || feature.polygons.empty())) continue;
     std::optional<std::string> tag = non_building_area(PropertyRow(properties, i));
     if (!tag) continue;
     map_areas_[i] = true;
-    if (!options_.leave_out_non_buildings) continue;
-    std::vector<kernel::Polygon>().swap(feature.polygons);
-    ++result_.non_buildings;
-    if (seen.insert(*tag).second) result_.non_building_tags.push_back(std::move(*tag));
+    if (options_.leave_out_non_buildings) leave_out_map_area(i, std::move(*tag));
   }
+}
+
+void FootprintBuilder::leave_out_map_area(std::size_t index, std::string tag) {
+  std::vector<kernel::Polygon>().swap(features_[index].polygons);
+  ++result_.non_buildings;
+  if (area_tags_.insert(tag).second) result_.non_building_tags.push_back(std::move(tag));
 }
 
 // GEO006's note: why no footprint is left. Map areas are left out without a warning each, so
@@ -712,7 +757,9 @@ std::string FootprintBuilder::nothing_left_note() const {
 
 void FootprintBuilder::finish_features(const Location& crs_at) {
   const auto properties = std::make_shared<const PropertyTable>(std::move(properties_));
-  if (errors_ == 0) find_map_areas(properties);
+  const bool tagged_export = map_export(properties);
+  release_held(properties, tagged_export);
+  if (errors_ == 0 && tagged_export) find_map_areas(properties);
   if (errors_ == 0) resolve_crs(crs_at);
   if (errors_ == 0) {
     choose_origin();

@@ -176,9 +176,10 @@ node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
   process.exit(r.buildings === 1 && r.not_buildings === 0 ? 0 : 1);' "$tmp/register.json" ||
   fail "a register's landuse column: the footprint is built"
 
-# Map areas are left out before their geometry is checked: a self-crossing meadow and a tree row
-# thinner than any footprint (GEO022, GEO028 if they were buildings) fail nothing, count as
-# not_buildings rather than invalid, and `check` still checks them. The --lot reports count what
+# Map areas are left out before their geometry is checked: a self-crossing meadow, a tree row
+# thinner than any footprint and a verge whose ring has 3 positions (GEO022, GEO028, GEO010 if
+# they were buildings) fail nothing, count as not_buildings rather than invalid, and `check`
+# still checks them. The --lot reports count what
 # was left out: map areas, an outline its parts replace, a part above the ground.
 cat >"$tmp/bad_areas.geojson" <<'G'
 {"type": "FeatureCollection", "features": [
@@ -193,21 +194,30 @@ cat >"$tmp/bad_areas.geojson" <<'G'
  {"type": "Feature", "id": "meadow", "properties": {"landuse": "meadow"},
   "geometry": {"type": "Polygon", "coordinates": [[[-50,-50],[150,150],[150,-50],[-50,150],[-50,-50]]]}},
  {"type": "Feature", "id": "trees", "properties": {"natural": "tree_row"},
-  "geometry": {"type": "Polygon", "coordinates": [[[70,0],[73,0],[73,0.2],[70,0.2],[70,0]]]}}]}
+  "geometry": {"type": "Polygon", "coordinates": [[[70,0],[73,0],[73,0.2],[70,0.2],[70,0]]]}},
+ {"type": "Feature", "id": "verge", "properties": {"landuse": "grass"},
+  "geometry": {"type": "Polygon", "coordinates": [[[80,0],[90,0],[80,0]]]}}]}
 G
 expect_exit 0 "mass: invalid map areas" "$insula" mass "$tmp/bad_areas.geojson" --roof flat \
   -o "$tmp/bad_areas.city.json" --report "$tmp/bad_areas.json"
-grep -qF "note: 2 map areas that are not a building left out (landuse=meadow, natural=tree_row;" \
+grep -qF "note: 3 map areas that are not a building left out (landuse=meadow, natural=tree_row, landuse=grass;" \
   "$tmp/err.txt" || { fail "invalid map areas: the note"; cat "$tmp/err.txt"; }
-grep -q "GEO02" "$tmp/err.txt" && fail "invalid map areas: their geometry is not checked"
+grep -q "GEO0[12]" "$tmp/err.txt" && fail "invalid map areas: their geometry is not checked"
 node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
-  process.exit(r.buildings === 3 && r.not_buildings === 2 && r.invalid === 0 ? 0 : 1);' \
+  process.exit(r.buildings === 3 && r.not_buildings === 3 && r.invalid === 0 ? 0 : 1);' \
   "$tmp/bad_areas.json" || { fail "invalid map areas: mass report"; cat "$tmp/bad_areas.json"; }
+# `check`: the verge's error while reading; without the verge, the others' geometry errors.
 expect_exit 1 "check: invalid map areas" "$insula" check "$tmp/bad_areas.geojson"
+grep -q "error\[GEO010\]: feature 6 (id \"verge\")" "$tmp/err.txt" ||
+  { fail "check: the verge is read"; cat "$tmp/err.txt"; }
+node -e 'const fs = require("fs"); const c = JSON.parse(fs.readFileSync(process.argv[1]));
+  c.features.pop(); fs.writeFileSync(process.argv[2], JSON.stringify(c));' \
+  "$tmp/bad_areas.geojson" "$tmp/bad_areas_read.geojson"
+expect_exit 1 "check: invalid map areas' geometry" "$insula" check "$tmp/bad_areas_read.geojson"
 grep -q "error\[GEO022\]: feature 4 (id \"meadow\")" "$tmp/err.txt" &&
   grep -q "error\[GEO028\]: feature 5 (id \"trees\")" "$tmp/err.txt" ||
   { fail "check: every feature is checked"; cat "$tmp/err.txt"; }
-lots_left='r.not_buildings === 2 && r.replaced_outlines === 1 && r.elevated_lots === 1 && r.invalid_lots === 0'
+lots_left='r.not_buildings === 3 && r.replaced_outlines === 1 && r.elevated_lots === 1 && r.invalid_lots === 0'
 expect_exit 0 "build --lot: invalid map areas" "$insula" build "$root/examples/cga/district.cga" \
   --lot "$tmp/bad_areas.geojson" --report "$tmp/bad_lots.json" -o "$tmp/bad_lots.obj"
 node -e "const r = JSON.parse(require('fs').readFileSync(process.argv[1]));

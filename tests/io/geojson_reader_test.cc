@@ -765,6 +765,8 @@ TEST(GeoJsonReader, MapAreasAreLeftOutBeforeTheirGeometryIsChecked) {
       feature(R"("id": "trees", )", R"({"natural": "tree_row"})", polygon(square(70, 0, 3, 0.2))),
       feature(R"("id": "garage", )", R"({"amenity": "parking", "height": 9})",
               polygon(square(20, 0, 10, 10))),
+      feature(R"("id": "verge", )", R"({"landuse": "grass"})",
+              polygon("[[80, 0], [90, 0], [80, 0]]")),
   });
   EXPECT_FALSE(read(text).ok());
   GeoJsonOptions options;
@@ -774,9 +776,9 @@ TEST(GeoJsonReader, MapAreasAreLeftOutBeforeTheirGeometryIsChecked) {
   ASSERT_EQ(left->footprints.size(), 2u);
   EXPECT_EQ(left->footprints[0].id, "house");
   EXPECT_EQ(left->footprints[1].id, "garage");  // a height says structure
-  EXPECT_EQ(left->non_buildings, 2u);
+  EXPECT_EQ(left->non_buildings, 3u);
   EXPECT_EQ(left->non_building_tags,
-            (std::vector<std::string>{"landuse=meadow", "natural=tree_row"}));
+            (std::vector<std::string>{"landuse=meadow", "natural=tree_row", "landuse=grass"}));
   EXPECT_EQ(left->skipped_invalid, 0u);
   EXPECT_TRUE(left.diagnostics().empty()) << headlines(left.diagnostics()).front();
   // No building tag anywhere (a register's `landuse` column): nothing is a map area.
@@ -786,6 +788,21 @@ TEST(GeoJsonReader, MapAreasAreLeftOutBeforeTheirGeometryIsChecked) {
   ASSERT_TRUE(kept.ok());
   EXPECT_EQ(kept->footprints.size(), 1u);
   EXPECT_EQ(kept->non_buildings, 0u);
+  // There, an error found while reading (a ring of 3 positions) is held until the file is read,
+  // then reported as without the option.
+  const std::string short_register =
+      collection({feature("", R"({"landuse": "R1"})", polygon(square(0, 0, 12, 9))),
+                  feature(R"("id": "short", )", R"({"landuse": "R2"})",
+                          polygon("[[20, 0], [30, 0], [20, 0]]"))});
+  const auto plain = read(short_register);
+  const auto held = read(short_register, options);
+  EXPECT_FALSE(held.ok());
+  EXPECT_EQ(headlines(held.diagnostics()), headlines(plain.diagnostics()));
+  options.skip_invalid = true;
+  const auto skipped = read(short_register, options);
+  ASSERT_TRUE(skipped.ok());
+  EXPECT_EQ(skipped->skipped_invalid, 1u);
+  EXPECT_EQ(skipped->skipped_by_code.at("GEO010"), 1u);
 }
 
 TEST(GeoJsonReader, ALongRingIsRead) {
