@@ -4,6 +4,7 @@
 #include "io/footprint_finish.h"
 
 #include "io/crs.h"
+#include "io/map_areas.h"
 #include "kernel/skeleton.h"
 
 #include <algorithm>
@@ -178,6 +179,7 @@ void FootprintBuilder::report(base::Severity severity, const char* code, std::st
 void FootprintBuilder::feature_issue(std::size_t index, bool is_error, const char* code,
                                      const std::string& message, const Location& where,
                                      std::vector<std::string> notes) {
+  if (is_error && hold_issue(index, code, message, where, notes)) return;
   RawFootprint& feature = features_[index];
   const std::string flag = options_.skip_invalid_flag.empty() ? options_name_ + "::skip_invalid"
                                                               : options_.skip_invalid_flag;
@@ -206,10 +208,19 @@ std::string FootprintBuilder::polygon_label(std::size_t index, std::size_t p) co
 // +-180 x +-90 and most span less than 0.05 units: no building is 5 cm wide, but a map export's
 // landuse, forest or boundary polygons beside its buildings span more than 0.05 degrees, and one of
 // them must not turn the city into meters. A hand-made file in meters near (0, 0) stays in meters.
+// Map areas (map_areas_) vote only when no other polygon does: `check` reads them too, and must
+// decide as `mass` does.
 bool FootprintBuilder::looks_like_degrees() const {
+  const std::optional<bool> buildings = degrees_vote(false);
+  return buildings ? *buildings : degrees_vote(true).value_or(false);
+}
+
+// The vote of looks_like_degrees(), with or without the map areas; nullopt when no polygon votes.
+std::optional<bool> FootprintBuilder::degrees_vote(bool map_areas) const {
   std::size_t polygons = 0, small = 0;
-  for (const RawFootprint& feature : features_) {
-    if (feature.failed) continue;
+  for (std::size_t f = 0; f < features_.size(); ++f) {
+    const RawFootprint& feature = features_[f];
+    if (feature.failed || (!map_areas && !map_areas_.empty() && map_areas_[f])) continue;
     for (const kernel::Polygon& polygon : feature.polygons) {
       const kernel::Bounds2 box = kernel::bounds(polygon);
       const bool in_range = std::abs(box.min.x) <= 180 && std::abs(box.max.x) <= 180 &&
@@ -219,7 +230,8 @@ bool FootprintBuilder::looks_like_degrees() const {
       small += box.max.x - box.min.x < 0.05 && box.max.y - box.min.y < 0.05;
     }
   }
-  return polygons > 0 && 2 * small > polygons;
+  if (polygons == 0) return std::nullopt;
+  return 2 * small > polygons;
 }
 
 // The CRS step (docs/geojson.md, "Coordinates, units and CRS"). The input CRS is the one the
@@ -655,8 +667,99 @@ RawFootprint& FootprintBuilder::add_raw() {
   return features_.emplace_back();
 }
 
+// While reading, a feature error of what may be a map area (its properties are read before its
+// geometry) waits for the whole file: a map export's landuse polygon with a ring of 3 positions
+// fails nothing. The feature takes no polygons meanwhile, as a failed one.
+bool FootprintBuilder::hold_issue(std::size_t index, const char* code, const std::string& message,
+                                  const Location& where, std::vector<std::string>& notes) {
+  if (!holding_ || !options_.leave_out_non_buildings) return false;
+  // A non-owning pointer to the table being filled: the row lives only for this call.
+  const std::shared_ptr<const PropertyTable> table(std::shared_ptr<const PropertyTable>(),
+                                                   &properties_);
+  if (!non_building_area(PropertyRow(table, index))) return false;
+  held_.push_back({index, code, message, where, std::move(notes)});
+  features_[index].failed = true;
+  return true;
+}
+
+// Only a map export, where buildings carry their tag, has map areas: a register whose text column
+// happens to be called `landuse` or `amenity` keeps every footprint.
+bool FootprintBuilder::map_export(const std::shared_ptr<const PropertyTable>& properties) const {
+  for (std::size_t i = 0; i < features_.size(); ++i) {
+    if (tagged_building(PropertyRow(properties, i))) return true;
+  }
+  return false;
+}
+
+// The held errors: a map export's map area is left out with them (find_map_areas(), which
+// map_areas_ tells); anywhere else they are reported as if never held. A feature's held errors
+// are consecutive (it is read whole).
+void FootprintBuilder::release_held(const std::shared_ptr<const PropertyTable>& properties,
+                                    bool map_export) {
+  holding_ = false;
+  if (map_export) map_areas_.assign(features_.size(), false);
+  std::vector<HeldIssue> held;
+  held.swap(held_);
+  bool area = false;
+  for (std::size_t k = 0; k < held.size(); ++k) {
+    HeldIssue& issue = held[k];
+    // A reader that forgets what it read (GeoJSON's syntax error) forgets these errors too.
+    if (issue.index >= features_.size()) continue;
+    if (k == 0 || held[k - 1].index != issue.index) {
+      features_[issue.index].failed = false;
+      // Its properties were whole when it was held (a reader reads them before the geometry).
+      area = map_export && non_building_area(PropertyRow(properties, issue.index));
+      if (area) map_areas_[issue.index] = true;
+    }
+    if (area) continue;
+    feature_issue(issue.index, true, issue.code.c_str(), issue.message, issue.where,
+                  std::move(issue.notes));
+  }
+}
+
+// Which features of a map export are map areas (map_areas_), before the CRS step; under
+// leave_out_non_buildings they lose their polygons, so they widen no bounding box and are never
+// repaired or checked.
+void FootprintBuilder::find_map_areas(const std::shared_ptr<const PropertyTable>& properties) {
+  for (std::size_t i = 0; i < features_.size(); ++i) {
+    const RawFootprint& feature = features_[i];
+    const bool held = map_areas_[i];
+    if (!held && (feature.failed || feature.polygons.empty())) continue;
+    std::optional<std::string> tag = non_building_area(PropertyRow(properties, i));
+    if (!tag) continue;
+    map_areas_[i] = true;
+    if (options_.leave_out_non_buildings) leave_out_map_area(i, std::move(*tag));
+  }
+}
+
+void FootprintBuilder::leave_out_map_area(std::size_t index, std::string tag) {
+  std::vector<kernel::Polygon>().swap(features_[index].polygons);
+  ++result_.non_buildings;
+  if (area_tags_.insert(tag).second) result_.non_building_tags.push_back(std::move(tag));
+}
+
+// GEO006's note: why no footprint is left. Map areas are left out without a warning each, so
+// the note names them.
+std::string FootprintBuilder::nothing_left_note() const {
+  if (features_.empty() && !empty_note_.empty()) return empty_note_;
+  std::string note = std::to_string(features_.size()) + " feature" +
+                     (features_.size() == 1 ? "" : "s") +
+                     " read; the warnings above say why each was skipped";
+  if (result_.non_buildings > 0) {
+    note += "; " + std::to_string(result_.non_buildings) + " map area" +
+            (result_.non_buildings == 1 ? "" : "s") + " that " +
+            (result_.non_buildings == 1 ? "is" : "are") + " not a building left out (" +
+            result_.non_building_tags[0] + (result_.non_building_tags.size() > 1 ? ", ..." : "") +
+            ")";
+  }
+  return note;
+}
+
 void FootprintBuilder::finish_features(const Location& crs_at) {
   const auto properties = std::make_shared<const PropertyTable>(std::move(properties_));
+  const bool tagged_export = map_export(properties);
+  release_held(properties, tagged_export);
+  if (errors_ == 0 && tagged_export) find_map_areas(properties);
   if (errors_ == 0) resolve_crs(crs_at);
   if (errors_ == 0) {
     choose_origin();
@@ -675,12 +778,8 @@ void FootprintBuilder::finish_features(const Location& crs_at) {
     }
   }
   if (errors_ == 0 && result_.footprints.empty()) {
-    report(
-        base::Severity::kError, "GEO006", "no polygon features", whole_input(),
-        {features_.empty() && !empty_note_.empty()
-             ? empty_note_
-             : std::to_string(features_.size()) + " feature" + (features_.size() == 1 ? "" : "s") +
-                   " read; the warnings above say why each was skipped"});
+    report(base::Severity::kError, "GEO006", "no polygon features", whole_input(),
+           {nothing_left_note()});
   }
   if (errors_ == 0) assign_ids();
   result_.skipped_invalid = static_cast<std::size_t>(std::count_if(

@@ -9,7 +9,9 @@
 #include <cstddef>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -66,6 +68,10 @@ struct FootprintSet {
   // "split_touching_ring", "separated_touching_rings" (docs/geojson.md, "Repair policy"). Each
   // kind is warned about once per read; the counts are complete.
   std::map<std::string, std::size_t> repairs;
+  // Map areas left out (FootprintOptions::leave_out_non_buildings), and the tags that said so
+  // ("landuse=forest"; each once, in order of first use).
+  std::size_t non_buildings = 0;
+  std::vector<std::string> non_building_tags;
 };
 
 // What every footprint reader accepts (GeoJsonOptions and OsmOptions extend it).
@@ -90,6 +96,12 @@ struct FootprintOptions {
   // How a user asks for skip_invalid ("--keep-going"): named in the note of skipped features
   // and, when skip_invalid is off, suggested under the first feature error.
   std::string skip_invalid_flag;
+  // Leave out a map export's areas that are not buildings (io/map_areas.h: landuse=forest,
+  // natural=water, ...) before their geometry is checked, in a file where some feature is tagged
+  // building or building:part: a forest's self-crossing ring, or one of 3 positions, then fails
+  // nothing and decides nothing (degrees or meters, origin). Builders ask for it; `check` reads
+  // every feature.
+  bool leave_out_non_buildings = false;
   // The input's CRS when it names none ("--crs"), or, for input that names its own CRS or is
   // longitude/latitude, the CRS to build in when it is a projected CRS in ground meters (the
   // older meaning, kept). docs/geojson.md gives the whole rule.
@@ -187,7 +199,23 @@ class FootprintBuilder {
     std::size_t order;
     base::Diagnostic diagnostic;
   };
+  // A feature error held while reading (FootprintOptions::leave_out_non_buildings) because the
+  // feature may be a map area: whether it is depends on the whole file (map_export()).
+  struct HeldIssue {
+    std::size_t index;
+    std::string code;
+    std::string message;
+    Location where;
+    std::vector<std::string> notes;
+  };
+  bool hold_issue(std::size_t index, const char* code, const std::string& message,
+                  const Location& where, std::vector<std::string>& notes);
+  bool map_export(const std::shared_ptr<const PropertyTable>& properties) const;
+  void release_held(const std::shared_ptr<const PropertyTable>& properties, bool map_export);
+  void find_map_areas(const std::shared_ptr<const PropertyTable>& properties);
+  void leave_out_map_area(std::size_t index, std::string tag);
   bool looks_like_degrees() const;
+  std::optional<bool> degrees_vote(bool map_areas) const;
   kernel::Bounds2 valid_bounds() const;
   double centre_longitude(const kernel::Bounds2& box) const;
   void resolve_crs(const Location& crs_at);
@@ -204,8 +232,15 @@ class FootprintBuilder {
   void assign_ids();
   std::string polygon_label(std::size_t index, std::size_t p) const;
   std::vector<std::string> local_note() const;
+  std::string nothing_left_note() const;
 
   std::vector<Pending> pending_;
+  // Per feature, whether it is a map area that is not a building (io/map_areas.h); empty when
+  // no feature is tagged building or building:part.
+  std::vector<bool> map_areas_;
+  std::vector<HeldIssue> held_;
+  bool holding_ = true;                           // until finish_features()
+  std::set<std::string, std::less<>> area_tags_;  // FootprintSet::non_building_tags, as a set
   std::size_t warnings_ = 0;
   std::size_t suppressed_warnings_ = 0;
   bool hinted_skip_ = false;

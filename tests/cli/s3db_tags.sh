@@ -176,6 +176,87 @@ node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
   process.exit(r.buildings === 1 && r.not_buildings === 0 ? 0 : 1);' "$tmp/register.json" ||
   fail "a register's landuse column: the footprint is built"
 
+# Map areas are left out before their geometry is checked: a self-crossing meadow, a tree row
+# thinner than any footprint and a verge whose ring has 3 positions (GEO022, GEO028, GEO010 if
+# they were buildings) fail nothing, count as not_buildings rather than invalid, and `check`
+# still checks them. The --lot reports count what
+# was left out: map areas, an outline its parts replace, a part above the ground.
+cat >"$tmp/bad_areas.geojson" <<'G'
+{"type": "FeatureCollection", "features": [
+ {"type": "Feature", "id": "house", "properties": {"building": "house", "height": 6},
+  "geometry": {"type": "Polygon", "coordinates": [[[0,0],[12,0],[12,9],[0,9],[0,0]]]}},
+ {"type": "Feature", "id": "church", "properties": {"building": "church"},
+  "geometry": {"type": "Polygon", "coordinates": [[[20,0],[40,0],[40,10],[20,10],[20,0]]]}},
+ {"type": "Feature", "id": "nave", "properties": {"building:part": "yes", "height": 12},
+  "geometry": {"type": "Polygon", "coordinates": [[[20,0],[40,0],[40,10],[20,10],[20,0]]]}},
+ {"type": "Feature", "id": "bridge", "properties": {"building:part": "yes", "min_height": 5, "height": 8},
+  "geometry": {"type": "Polygon", "coordinates": [[[50,0],[62,0],[62,9],[50,9],[50,0]]]}},
+ {"type": "Feature", "id": "meadow", "properties": {"landuse": "meadow"},
+  "geometry": {"type": "Polygon", "coordinates": [[[-50,-50],[150,150],[150,-50],[-50,150],[-50,-50]]]}},
+ {"type": "Feature", "id": "trees", "properties": {"natural": "tree_row"},
+  "geometry": {"type": "Polygon", "coordinates": [[[70,0],[73,0],[73,0.2],[70,0.2],[70,0]]]}},
+ {"type": "Feature", "id": "verge", "properties": {"landuse": "grass"},
+  "geometry": {"type": "Polygon", "coordinates": [[[80,0],[90,0],[80,0]]]}}]}
+G
+expect_exit 0 "mass: invalid map areas" "$insula" mass "$tmp/bad_areas.geojson" --roof flat \
+  -o "$tmp/bad_areas.city.json" --report "$tmp/bad_areas.json"
+grep -qF "note: 3 map areas that are not a building left out (landuse=meadow, natural=tree_row, landuse=grass;" \
+  "$tmp/err.txt" || { fail "invalid map areas: the note"; cat "$tmp/err.txt"; }
+grep -q "GEO0[12]" "$tmp/err.txt" && fail "invalid map areas: their geometry is not checked"
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  process.exit(r.buildings === 3 && r.not_buildings === 3 && r.invalid === 0 ? 0 : 1);' \
+  "$tmp/bad_areas.json" || { fail "invalid map areas: mass report"; cat "$tmp/bad_areas.json"; }
+# `check`: the verge's error while reading; without the verge, the others' geometry errors.
+expect_exit 1 "check: invalid map areas" "$insula" check "$tmp/bad_areas.geojson"
+grep -q "error\[GEO010\]: feature 6 (id \"verge\")" "$tmp/err.txt" ||
+  { fail "check: the verge is read"; cat "$tmp/err.txt"; }
+node -e 'const fs = require("fs"); const c = JSON.parse(fs.readFileSync(process.argv[1]));
+  c.features.pop(); fs.writeFileSync(process.argv[2], JSON.stringify(c));' \
+  "$tmp/bad_areas.geojson" "$tmp/bad_areas_read.geojson"
+expect_exit 1 "check: invalid map areas' geometry" "$insula" check "$tmp/bad_areas_read.geojson"
+grep -q "error\[GEO022\]: feature 4 (id \"meadow\")" "$tmp/err.txt" &&
+  grep -q "error\[GEO028\]: feature 5 (id \"trees\")" "$tmp/err.txt" ||
+  { fail "check: every feature is checked"; cat "$tmp/err.txt"; }
+lots_left='r.not_buildings === 3 && r.replaced_outlines === 1 && r.elevated_lots === 1 && r.invalid_lots === 0'
+expect_exit 0 "build --lot: invalid map areas" "$insula" build "$root/examples/cga/district.cga" \
+  --lot "$tmp/bad_areas.geojson" --report "$tmp/bad_lots.json" -o "$tmp/bad_lots.obj"
+node -e "const r = JSON.parse(require('fs').readFileSync(process.argv[1]));
+  process.exit(r.lots === 2 && $lots_left ? 0 : 1);" "$tmp/bad_lots.json" ||
+  { fail "build --lot: the report counts the lots left out"; cat "$tmp/bad_lots.json"; }
+expect_exit 0 ".bldg village: map areas" "$insula" build "$root/examples/bldg/village/village.bldg" \
+  --lot "$tmp/bad_areas.geojson" --report "$tmp/bad_village.json" -o "$tmp/bad_village.glb"
+node -e "const r = JSON.parse(require('fs').readFileSync(process.argv[1]));
+  process.exit(r.buildings.length === 2 && $lots_left ? 0 : 1);" "$tmp/bad_village.json" ||
+  fail ".bldg village: the report counts the lots left out"
+expect_exit 0 "graph: map areas" "$insula" build "$root/examples/graph/city/lots.graph.json" \
+  --lot "$tmp/bad_areas.geojson" --report "$tmp/bad_graph.json" -o "$tmp/bad_graph.obj" -q
+node -e "const r = JSON.parse(require('fs').readFileSync(process.argv[1]));
+  process.exit(r.buildings > 0 && $lots_left ? 0 : 1);" "$tmp/bad_graph.json" ||
+  fail "graph: the report counts the lots left out"
+
+# Longitude/latitude: a forest of three polygons, each wider than 0.05 degrees, outvoted the two
+# buildings, and the file was read as meters (every building a sliver). Map areas do not vote.
+cat >"$tmp/lonlat_areas.geojson" <<'G'
+{"type": "FeatureCollection", "features": [
+ {"type": "Feature", "id": "house", "properties": {"building": "house", "height": 6},
+  "geometry": {"type": "Polygon", "coordinates": [[[9.52,47.14],[9.5202,47.14],[9.5202,47.1401],[9.52,47.1401],[9.52,47.14]]]}},
+ {"type": "Feature", "id": "barn", "properties": {"building": "barn"},
+  "geometry": {"type": "Polygon", "coordinates": [[[9.521,47.14],[9.5212,47.14],[9.5212,47.1401],[9.521,47.1401],[9.521,47.14]]]}},
+ {"type": "Feature", "id": "forest", "properties": {"landuse": "forest"},
+  "geometry": {"type": "MultiPolygon", "coordinates": [
+   [[[9.40,47.00],[9.50,47.00],[9.50,47.10],[9.40,47.10],[9.40,47.00]]],
+   [[[9.55,47.00],[9.65,47.00],[9.65,47.10],[9.55,47.10],[9.55,47.00]]],
+   [[[9.40,47.20],[9.50,47.20],[9.50,47.30],[9.40,47.30],[9.40,47.20]]]]}}]}
+G
+expect_exit 0 "mass: lon/lat beside big map areas" "$insula" mass "$tmp/lonlat_areas.geojson" \
+  -o "$tmp/lonlat_areas.obj" --report "$tmp/lonlat_areas.json"
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  process.exit(r.buildings === 2 && r.not_buildings === 1 && r.crs === "EPSG:32632" &&
+               r.reprojected_from === "OGC:CRS84" ? 0 : 1);' "$tmp/lonlat_areas.json" ||
+  { fail "lon/lat beside big map areas: reprojected from degrees"; cat "$tmp/lonlat_areas.json"; }
+expect_exit 0 "check: lon/lat beside big map areas" "$insula" check "$tmp/lonlat_areas.geojson"
+grep -qF "(reprojected from OGC:CRS84)" "$tmp/out.txt" || fail "check: decides degrees as mass does"
+
 # An outline replaced by its parts keeps none of its input insula:* properties (MAS009 says they
 # are replaced): its height is the parts' top.
 cat >"$tmp/joined.geojson" <<'G'

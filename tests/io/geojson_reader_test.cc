@@ -421,6 +421,16 @@ TEST(GeoJsonReader, LonLatWithoutCrsMemberIsReprojectedToItsUtmZone) {
                   feature("", "{}", polygon(square(9.4, 47.0, 0.2, 0.2))),
                   feature("", "{}", polygon(square(9.53, 47.17, 0.0002, 0.0002)))});
   EXPECT_EQ(outcome(read(with_forest)).crs, "EPSG:32632");
+  // Map areas do not vote (with or without leave_out_non_buildings): three large polygons of a
+  // forest outnumbered two buildings, and the file was read as meters.
+  const std::string forest = R"({"type": "MultiPolygon", "coordinates": [[)" +
+                             square(9.4, 47.0, 0.1, 0.1) + "], [" + square(9.6, 47.0, 0.1, 0.1) +
+                             "], [" + square(9.4, 47.2, 0.1, 0.1) + "]]}";
+  const std::string outvoted = collection(
+      {feature("", R"({"building": "yes"})", polygon(square(9.52, 47.14, 2e-4, 1e-4))),
+       feature("", R"({"landuse": "forest"})", forest),
+       feature("", R"({"building": "yes"})", polygon(square(9.521, 47.14, 2e-4, 1e-4)))});
+  EXPECT_EQ(outcome(read(outvoted)).crs, "EPSG:32632");
   // Mostly large: meters near (0, 0), as hand-made files are; the one small square is a 4 cm
   // sliver, not 4 km of degrees.
   const std::string local_meters =
@@ -742,6 +752,57 @@ TEST(GeoJsonReader, ASliverPartOfAMultiPolygonIsLeftOut) {
       << lines[0];
   EXPECT_NE(lines[0].find("left out, the feature keeps its other polygons"), std::string::npos);
   EXPECT_EQ(kept->skipped_by_code.at("GEO028"), 1u);  // "scraps"
+}
+
+// FootprintOptions::leave_out_non_buildings: a map export's areas that are not buildings are left
+// out before their geometry is checked (a self-crossing meadow, a tree row thinner than a
+// footprint), counted with their tags; without the option (`check`) every feature is checked.
+TEST(GeoJsonReader, MapAreasAreLeftOutBeforeTheirGeometryIsChecked) {
+  const std::string bow_tie = "[[-50, -50], [150, 150], [150, -50], [-50, 150], [-50, -50]]";
+  const std::string text = collection({
+      feature(R"("id": "house", )", R"({"building": "house"})", polygon(square(0, 0, 12, 9))),
+      feature(R"("id": "meadow", )", R"({"landuse": "meadow"})", polygon(bow_tie)),
+      feature(R"("id": "trees", )", R"({"natural": "tree_row"})", polygon(square(70, 0, 3, 0.2))),
+      feature(R"("id": "garage", )", R"({"amenity": "parking", "height": 9})",
+              polygon(square(20, 0, 10, 10))),
+      feature(R"("id": "verge", )", R"({"landuse": "grass"})",
+              polygon("[[80, 0], [90, 0], [80, 0]]")),
+  });
+  EXPECT_FALSE(read(text).ok());
+  GeoJsonOptions options;
+  options.leave_out_non_buildings = true;
+  const auto left = read(text, options);
+  ASSERT_TRUE(left.ok()) << headlines(left.diagnostics()).front();
+  ASSERT_EQ(left->footprints.size(), 2u);
+  EXPECT_EQ(left->footprints[0].id, "house");
+  EXPECT_EQ(left->footprints[1].id, "garage");  // a height says structure
+  EXPECT_EQ(left->non_buildings, 3u);
+  EXPECT_EQ(left->non_building_tags,
+            (std::vector<std::string>{"landuse=meadow", "natural=tree_row", "landuse=grass"}));
+  EXPECT_EQ(left->skipped_invalid, 0u);
+  EXPECT_TRUE(left.diagnostics().empty()) << headlines(left.diagnostics()).front();
+  // No building tag anywhere (a register's `landuse` column): nothing is a map area.
+  const std::string text_register =
+      collection({feature("", R"({"landuse": "R1"})", polygon(square(0, 0, 12, 9)))});
+  const auto kept = read(text_register, options);
+  ASSERT_TRUE(kept.ok());
+  EXPECT_EQ(kept->footprints.size(), 1u);
+  EXPECT_EQ(kept->non_buildings, 0u);
+  // There, an error found while reading (a ring of 3 positions) is held until the file is read,
+  // then reported as without the option.
+  const std::string short_register =
+      collection({feature("", R"({"landuse": "R1"})", polygon(square(0, 0, 12, 9))),
+                  feature(R"("id": "short", )", R"({"landuse": "R2"})",
+                          polygon("[[20, 0], [30, 0], [20, 0]]"))});
+  const auto plain = read(short_register);
+  const auto held = read(short_register, options);
+  EXPECT_FALSE(held.ok());
+  EXPECT_EQ(headlines(held.diagnostics()), headlines(plain.diagnostics()));
+  options.skip_invalid = true;
+  const auto skipped = read(short_register, options);
+  ASSERT_TRUE(skipped.ok());
+  EXPECT_EQ(skipped->skipped_invalid, 1u);
+  EXPECT_EQ(skipped->skipped_by_code.at("GEO010"), 1u);
 }
 
 TEST(GeoJsonReader, ALongRingIsRead) {

@@ -286,13 +286,15 @@ int build_village(const BuildOptions& options, const Parsed& input,
                   static_cast<std::size_t>(options.threads));
   }
   Village village{options, input, rules, {}, {}};
+  LeftOutLots left;
   std::optional<io::FootprintSet> lots =
       read_lot_footprints(options.lot, geojson_options(options.crs, options.keep_going),
-                          options.quiet, options.height_unit);
+                          options.quiet, options.height_unit, left);
   if (!lots) return kExitInput;
   village.lots = std::move(*lots);
   if (!parse_grammars(village)) return kExitInput;
   report["invalid_lots"] = village.lots.skipped_invalid;
+  add_left_out_lots(report, left);
   // Lots that cannot hold their grammar, left out under --keep-going, each with its reason.
   report["skipped_lots"] = Json::array();
   report["adaptations"] = adaptations_report({});

@@ -51,6 +51,7 @@ struct Lots {
   std::string crs;
   std::string source_crs;
   std::size_t invalid = 0;  // features skipped with --keep-going
+  LeftOutLots left;
 };
 
 // --lot: one lot per GeoJSON feature (a MultiPolygon gives one lot of several start shapes).
@@ -60,7 +61,7 @@ std::optional<Lots> read_lots(const BuildOptions& options) {
   if (options.lot.empty()) return out;
   std::optional<io::FootprintSet> set =
       read_lot_footprints(options.lot, geojson_options(options.crs, options.keep_going),
-                          options.quiet, options.height_unit);
+                          options.quiet, options.height_unit, out.left);
   if (!set) return std::nullopt;
   out.origin = set->origin;
   out.crs = set->crs;
@@ -210,6 +211,7 @@ int build_cga(const BuildOptions& options) {
   report["seed"] = options.seed;
   if (!options.lot.empty()) {
     report["invalid_lots"] = lots->invalid;
+    add_left_out_lots(report, lots->left);
     report["crs"] = lots->crs.empty() ? nlohmann::json() : nlohmann::json(lots->crs);
     if (!lots->source_crs.empty()) report["reprojected_from"] = lots->source_crs;
   }

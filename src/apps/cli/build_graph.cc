@@ -40,6 +40,16 @@ struct LotFiles {
   bool read_any = false;
   kernel::Vec3 origin;
   std::string crs;
+  // Over every file read: features skipped as invalid (--keep-going) and lots left out.
+  std::size_t invalid = 0;
+  LeftOutLots left;
+
+  // The report's counts of the lots not built; nothing when no lots file was read.
+  void add_counts(nlohmann::json& report) const {
+    if (!read_any) return;
+    report["invalid_lots"] = invalid;
+    add_left_out_lots(report, left);
+  }
 
   bool read(const std::string& file, std::vector<lang::graph::LotInput>& lots, std::string& error) {
     std::string path = options.lot;
@@ -55,7 +65,8 @@ struct LotFiles {
       error = "create.lots reads the --lot file, and none was given";
       return false;
     }
-    const io::GeoJsonOptions reading = geojson_options(options.crs, options.keep_going);
+    const io::GeoJsonOptions reading =
+        building_options(geojson_options(options.crs, options.keep_going));
     std::optional<base::Result<io::FootprintSet>> read;
     if (io::is_osm_path(path)) {
       read = read_osm_footprints(path, reading);
@@ -75,7 +86,8 @@ struct LotFiles {
       error = path + ": its coordinates are in another frame than the first lots file's";
       return false;
     }
-    leave_out_for_lots(set.value(), options.quiet);
+    left += leave_out_for_lots(set.value(), options.quiet);
+    invalid += set->skipped_invalid;
     lot_heights_in_meters(set.value(), options.height_unit);
     read_any = true;
     origin = set->origin;
@@ -151,7 +163,7 @@ int build_graph(const BuildOptions& options) {
     attributes.push_back(d.name);
   }
   const FrontEndRules rules(folder, attributes, &assets);
-  LotFiles lot_files{options, folder, false, {}, {}};
+  LotFiles lot_files{options, folder, false, {}, {}, 0, {}};
 
   lang::graph::RunOptions run;
   if (!options.probe.empty()) {
@@ -194,6 +206,7 @@ int build_graph(const BuildOptions& options) {
       report["seed"] = run.seed.value_or(static_cast<std::uint64_t>(loaded->document->root->seed));
       report["threads"] = run.threads;
       report["crs"] = lot_files.crs.empty() ? nlohmann::json() : nlohmann::json(lot_files.crs);
+      lot_files.add_counts(report);
       report["seconds"] = seconds;
       std::set<std::string> lot_ids;
       for (std::size_t i = 0; i < lots.size(); ++i) {
@@ -243,6 +256,7 @@ int build_graph(const BuildOptions& options) {
   report["graph"] =
       nlohmann::json::parse(lang::graph::graph_report(*result, options.report_entities).dump());
   if (!whole_because.empty()) report["whole_scene_because"] = whole_because;
+  lot_files.add_counts(report);
   report_missing_textures(textures, options.input, options.quiet, report);
   report["seconds"] = seconds;
   return finish_build(options, scene, report, total);

@@ -46,32 +46,51 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
   return std::move(set.value());
 }
 
-std::size_t leave_out_non_buildings(io::FootprintSet& set, bool quiet) {
-  const NonBuildingsLeftOut left = cli::leave_out_non_buildings(set);
-  if (quiet || left.count == 0) return left.count;
+LeftOutLots& LeftOutLots::operator+=(const LeftOutLots& other) {
+  not_buildings += other.not_buildings;
+  replaced_outlines += other.replaced_outlines;
+  elevated += other.elevated;
+  return *this;
+}
+
+void add_left_out_lots(nlohmann::json& report, const LeftOutLots& left) {
+  report["not_buildings"] = left.not_buildings;
+  report["replaced_outlines"] = left.replaced_outlines;
+  report["elevated_lots"] = left.elevated;
+}
+
+io::GeoJsonOptions building_options(io::GeoJsonOptions options) {
+  options.leave_out_non_buildings = true;
+  return options;
+}
+
+std::size_t note_non_buildings(const io::FootprintSet& set, bool quiet) {
+  const std::size_t count = set.non_buildings;
+  if (quiet || count == 0) return count;
   std::string tags;
   constexpr std::size_t kNamed = 4;
-  for (std::size_t i = 0; i < std::min(left.tags.size(), kNamed); ++i) {
-    tags += (i > 0 ? ", " : "") + left.tags[i];
+  for (std::size_t i = 0; i < std::min(set.non_building_tags.size(), kNamed); ++i) {
+    tags += (i > 0 ? ", " : "") + set.non_building_tags[i];
   }
-  if (left.tags.size() > kNamed) tags += ", ...";
+  if (set.non_building_tags.size() > kNamed) tags += ", ...";
   std::fprintf(stderr,
                "note: %zu map area%s that %s not a building left out (%s; no building or "
                "building:part tag)\n",
-               left.count, left.count == 1 ? "" : "s", left.count == 1 ? "is" : "are",
-               tags.c_str());
-  return left.count;
+               count, count == 1 ? "" : "s", count == 1 ? "is" : "are", tags.c_str());
+  return count;
 }
 
-void leave_out_for_lots(io::FootprintSet& set, bool quiet) {
-  leave_out_non_buildings(set, quiet);
-  const LotsLeftOut left = cli::leave_out_for_lots(set);
-  if (quiet) return;
-  if (left.outlines > 0) {
+LeftOutLots leave_out_for_lots(io::FootprintSet& set, bool quiet) {
+  const std::size_t not_buildings = note_non_buildings(set, quiet);
+  const LotsLeftOut s3db = cli::leave_out_for_lots(set);
+  const LeftOutLots left{not_buildings, s3db.outlines, s3db.elevated};
+  if (quiet) return left;
+  if (left.replaced_outlines > 0) {
     std::fprintf(stderr,
                  "note: %zu building outline%s left out: the building:parts inside %s are built "
                  "instead (Simple 3D Buildings)\n",
-                 left.outlines, left.outlines == 1 ? "" : "s", left.outlines == 1 ? "it" : "them");
+                 left.replaced_outlines, left.replaced_outlines == 1 ? "" : "s",
+                 left.replaced_outlines == 1 ? "it" : "them");
   }
   if (left.elevated > 0) {
     std::fprintf(stderr,
@@ -79,14 +98,16 @@ void leave_out_for_lots(io::FootprintSet& set, bool quiet) {
                  "building:min_level) left out: lots are built from the ground\n",
                  left.elevated, left.elevated == 1 ? "" : "s", left.elevated == 1 ? "" : "s");
   }
+  return left;
 }
 
 std::optional<io::FootprintSet> read_lot_footprints(const std::string& path,
                                                     const io::GeoJsonOptions& options, bool quiet,
-                                                    const std::string& height_unit) {
-  std::optional<io::FootprintSet> set = read_footprints(path, options, quiet);
+                                                    const std::string& height_unit,
+                                                    LeftOutLots& left) {
+  std::optional<io::FootprintSet> set = read_footprints(path, building_options(options), quiet);
   if (!set) return set;
-  leave_out_for_lots(*set, quiet);
+  left = leave_out_for_lots(*set, quiet);
   lot_heights_in_meters(*set, height_unit);
   return set;
 }

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "io/geojson_reader.h"
 
 namespace insula::cli {
@@ -16,26 +18,40 @@ namespace insula::cli {
 std::optional<io::FootprintSet> read_footprints(const std::string& path,
                                                 const io::GeoJsonOptions& options, bool quiet);
 
-// The lots of --lot: read_footprints(), then without the building outlines whose building:parts
-// are built instead and the buildings and parts above the ground (S3DB, s3db_parts.h), with a
-// note saying how many unless `quiet`, and their heights in meters (lot_heights_in_meters) when
-// `height_unit` (--height-unit) is not "m".
+// What was left out of a --lot file, for the build reports (add_left_out_lots).
+struct LeftOutLots {
+  std::size_t not_buildings = 0;      // map areas (io/map_areas.h: landuse=forest, ...)
+  std::size_t replaced_outlines = 0;  // outlines whose building:parts are built instead
+  std::size_t elevated = 0;           // buildings and parts that start above the ground
+  LeftOutLots& operator+=(const LeftOutLots& other);
+};
+// The report keys of `left`: not_buildings, replaced_outlines, elevated_lots (docs/cli.md).
+void add_left_out_lots(nlohmann::json& report, const LeftOutLots& left);
+
+// Reading options for building footprints (`mass`, `--lot`): `options` that leave out the map
+// areas that are not buildings (io::FootprintOptions::leave_out_non_buildings).
+io::GeoJsonOptions building_options(io::GeoJsonOptions options);
+
+// The lots of --lot: read_footprints() with building_options(), then without the building
+// outlines whose building:parts are built instead and the buildings and parts above the ground
+// (S3DB, s3db_parts.h), with a note saying how many unless `quiet`, and their heights in meters
+// (lot_heights_in_meters) when `height_unit` (--height-unit) is not "m". `left` gets the counts.
 std::optional<io::FootprintSet> read_lot_footprints(const std::string& path,
                                                     const io::GeoJsonOptions& options, bool quiet,
-                                                    const std::string& height_unit);
+                                                    const std::string& height_unit,
+                                                    LeftOutLots& left);
 // --height-unit of `build --lot`: the `height` property of each lot that does not follow S3DB
 // (io::follows_s3db), when it is a number or a text that is only a number, becomes that many
 // `height_unit`s in meters, as `mass` reads a register's height; a text with a unit ("40 ft")
 // keeps it. Returns how many lots changed.
 std::size_t lot_heights_in_meters(io::FootprintSet& set, const std::string& height_unit);
-// Leaves those footprints out of `set`, and the map areas that are not buildings
-// (leave_out_non_buildings); prints the notes unless `quiet`.
-void leave_out_for_lots(io::FootprintSet& set, bool quiet);
-// Leaves out of `set` the OpenStreetMap areas that are not buildings (landuse=forest,
-// natural=water, ...: s3db_parts.h, non_building_area), with a note naming their tags unless
-// `quiet`; returns how many. `mass` and every --lot front-end call it; `check` does not (it
-// checks the whole file).
-std::size_t leave_out_non_buildings(io::FootprintSet& set, bool quiet);
+// Leaves those footprints out of `set` (of a file read with building_options()); prints the
+// notes, and the one of the map areas the reader left out, unless `quiet`.
+LeftOutLots leave_out_for_lots(io::FootprintSet& set, bool quiet);
+// The note naming the tags of the map areas the reader left out of `set` (building_options()),
+// unless `quiet`; returns how many. `mass` and every --lot front-end print it; `check` reads
+// every feature.
+std::size_t note_non_buildings(const io::FootprintSet& set, bool quiet);
 
 // The footprints of an OpenStreetMap file read with `options`; its diagnostics are left to the
 // caller.

@@ -158,11 +158,12 @@ int run_mass(const MassOptions& given) {
 
   Stopwatch read_clock;
   std::optional<io::FootprintSet> set = read_footprints(
-      options.input, geojson_options(options.crs, options.keep_going), options.quiet);
+      options.input, building_options(geojson_options(options.crs, options.keep_going)),
+      options.quiet);
   if (!set) return kExitInput;
   report.stage("read", read_clock.seconds());
   release_free_memory();
-  report.not_buildings = leave_out_non_buildings(set.value(), options.quiet);
+  report.not_buildings = note_non_buildings(set.value(), options.quiet);
   report.invalid = set->skipped_invalid;
   report.invalid_by_code = set->skipped_by_code;
   report.repairs = set->repairs;

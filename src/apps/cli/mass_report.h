@@ -25,7 +25,7 @@ struct MassReport {
   std::map<std::string, std::size_t> warning_counts;  // by code: the full count, printed or not
   std::size_t failed = 0;         // footprints left out with --keep-going: no closed building
   std::size_t invalid = 0;        // features left out with --keep-going: invalid geometry
-  std::size_t not_buildings = 0;  // map areas left out (leave_out_non_buildings: landuse=...)
+  std::size_t not_buildings = 0;  // map areas left out (io/map_areas.h: landuse=...)
   std::map<std::string, std::size_t> invalid_by_code;  // why, by the reader's error code
   std::map<std::string, std::size_t> repairs;          // rings repaired, by kind (docs/geojson.md)
   std::size_t overlaps = 0;  // pairs of footprints drawn over each other (mass_plan.h)

@@ -6,7 +6,6 @@
 
 #include <cstddef>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "io/geojson_reader.h"
@@ -34,20 +33,5 @@ struct LotsLeftOut {
 // a bridge, a roof on posts), which would stand on the ground through what is below them.
 // Footprints without those tags are never touched.
 LotsLeftOut leave_out_for_lots(io::FootprintSet& set);
-
-// An OpenStreetMap area that is not a building: a footprint tagged neither building nor
-// building:part whose tags say what it is instead (landuse, natural, leisure, amenity, highway,
-// waterway, boundary, ...: a map export's forests, parks, school grounds and rivers beside its
-// buildings). Returns that tag as "key=value"; nothing for any other footprint, so a register's
-// or a hand-made file's untagged footprints stay buildings.
-std::optional<std::string> non_building_area(const io::Footprint& footprint);
-
-// What leave_out_non_buildings() left out: how many, and the tags that said so (each once, in
-// order of first use).
-struct NonBuildingsLeftOut {
-  std::size_t count = 0;
-  std::vector<std::string> tags;
-};
-NonBuildingsLeftOut leave_out_non_buildings(io::FootprintSet& set);
 
 }  // namespace insula::cli
