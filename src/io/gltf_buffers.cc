@@ -18,7 +18,7 @@ std::size_t aligned(std::size_t offset) {
 }
 
 // The view's indices (2 or 4 bytes each) widened to what meshopt's index codec takes.
-std::vector<unsigned int> read_indices(const std::string& bytes, std::uint32_t stride) {
+std::vector<unsigned int> read_indices(std::string_view bytes, std::uint32_t stride) {
   std::vector<unsigned int> indices(bytes.size() / stride);
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
   for (std::size_t i = 0; i < indices.size(); ++i) {
@@ -31,7 +31,7 @@ std::vector<unsigned int> read_indices(const std::string& bytes, std::uint32_t s
 
 // EXT_meshopt_compression: vertex data with the attribute codec, triangle lists with the index
 // codec (its version 1, which every decoder of the extension reads).
-std::string encode(const std::string& bytes, ViewKind kind, std::uint32_t stride) {
+std::string encode(std::string_view bytes, ViewKind kind, std::uint32_t stride) {
   std::string out;
   if (kind == ViewKind::kIndices) {
     const std::vector<unsigned int> indices = read_indices(bytes, stride);
@@ -53,10 +53,6 @@ std::string encode(const std::string& bytes, ViewKind kind, std::uint32_t stride
 }
 
 }  // namespace
-
-void pad(std::string& out, std::size_t alignment) {
-  out.append((alignment - out.size() % alignment) % alignment, '\0');
-}
 
 std::uint32_t Buffers::add_view(ViewKind kind, std::uint32_t stride) {
   views_.push_back(View{kind, stride, {}});
@@ -102,7 +98,7 @@ void Buffers::finish(bool compress) {
     view.index = index++;
     if (is_compressed(view)) {
       any_compressed = true;
-      view.encoded = encode(view.bytes, view.kind, view.stride);
+      view.encoded = encode(view.bytes.view(), view.kind, view.stride);
       view.encoded_offset = aligned(first);
       first = view.encoded_offset + view.encoded.size();
       view.offset = aligned(fallback);
@@ -186,7 +182,7 @@ void Buffers::append_binary(std::string& out) const {
     const bool compressed = is_compressed(view);
     const std::size_t offset = compressed ? view.encoded_offset : view.offset;
     out.append(start + offset - out.size(), '\0');
-    out += compressed ? view.encoded : view.bytes;
+    out += compressed ? std::string_view(view.encoded) : view.bytes.view();
   }
 }
 

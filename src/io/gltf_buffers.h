@@ -8,11 +8,13 @@
 // alignment EXT_structural_metadata asks of its tables, more than glTF's 4).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
 #include <cstring>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -42,6 +44,52 @@ enum class ViewKind {
   kBytes,      // anything else, images: stored as they are
 };
 
+// A view's bytes: grows as std::string does, and also without writing the bytes it adds
+// (extend()), for data the writer fills in place right after: a tile's vertex attributes, which a
+// std::string zeroed first at about the cost of writing them.
+class Bytes {
+ public:
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  char* data() { return data_.get(); }
+  const char* data() const { return data_.get(); }
+  std::string_view view() const { return {data_.get(), size_}; }
+  char& operator[](std::size_t i) { return data_[i]; }
+  void reserve(std::size_t capacity) {
+    if (capacity > capacity_) reallocate(capacity);
+  }
+  // `count` more bytes at the end, not written: the caller writes every one of them.
+  char* extend(std::size_t count) {
+    if (count > capacity_ - size_) reallocate(std::max(size_ + count, 2 * capacity_));
+    char* at = data_.get() + size_;
+    size_ += count;
+    return at;
+  }
+  void append(const char* bytes, std::size_t count) {
+    if (count > 0) std::memcpy(extend(count), bytes, count);
+  }
+  void append(std::size_t count, char c) {
+    if (count > 0) std::memset(extend(count), c, count);
+  }
+  void push_back(char c) { *extend(1) = c; }
+  Bytes& operator+=(std::string_view bytes) {
+    append(bytes.data(), bytes.size());
+    return *this;
+  }
+
+ private:
+  void reallocate(std::size_t capacity) {
+    auto data = std::make_unique_for_overwrite<char[]>(capacity);
+    if (size_ > 0) std::memcpy(data.get(), data_.get(), size_);
+    data_ = std::move(data);
+    capacity_ = capacity;
+  }
+
+  std::unique_ptr<char[]> data_;
+  std::size_t size_ = 0;
+  std::size_t capacity_ = 0;
+};
+
 struct Accessor {
   std::uint32_t view = 0;
   std::size_t offset = 0;  // bytes into the view
@@ -61,7 +109,7 @@ class Buffers {
   std::uint32_t add_view(ViewKind kind, std::uint32_t stride);
   // The bytes of `view` so far, to append to (little-endian values). The reference stays valid
   // when more views are added.
-  std::string& data(std::uint32_t view) { return views_[view].bytes; }
+  Bytes& data(std::uint32_t view) { return views_[view].bytes; }
   std::uint32_t add_accessor(const Accessor& accessor);
   void reserve_accessors(std::size_t count) { accessors_.reserve(count); }
   void set_bounds(std::uint32_t accessor,
@@ -90,7 +138,7 @@ class Buffers {
   struct View {
     ViewKind kind;
     std::uint32_t stride;
-    std::string bytes;
+    Bytes bytes;
     std::uint32_t index = 0;         // glTF index once finished
     std::size_t offset = 0;          // into the buffer the view's bufferView names
     std::string encoded{};           // meshopt-encoded bytes (compressed views only)
@@ -105,9 +153,10 @@ class Buffers {
   std::size_t fallback_size_ = 0;  // the uncompressed fallback buffer (compressed output only)
 };
 
-// Appends `value`'s bytes little-endian, whatever the host (glTF 2.0 §3.6.2.1).
-template <typename T>
-void append_value(std::string& out, T value) {
+// Appends `value`'s bytes little-endian, whatever the host (glTF 2.0 §3.6.2.1), to a std::string
+// or Bytes.
+template <typename Out, typename T>
+void append_value(Out& out, T value) {
   static_assert(std::is_arithmetic_v<T>);
   using Bits = std::conditional_t<
       sizeof(T) == 1, std::uint8_t,
@@ -134,7 +183,10 @@ void put_value(char*& at, T value) {
   at += sizeof(T);
 }
 
-// Pads `out` with zero bytes to a multiple of `alignment`.
-void pad(std::string& out, std::size_t alignment);
+// Pads `out` (a std::string or Bytes) with zero bytes to a multiple of `alignment`.
+template <typename Out>
+void pad(Out& out, std::size_t alignment) {
+  out.append((alignment - out.size() % alignment) % alignment, '\0');
+}
 
 }  // namespace insula::io::gltf

@@ -621,15 +621,16 @@ void MeshAssembler::write_attributes(Buffers& buffers, const MeshViews& views, s
   const bool byte_normals = options_.quantize;
   const bool with_features = options_.with_features;
   const bool float_features = options_.feature_component == Component::kFloat;
-  // Room for `count` values of `size` bytes at the end of `view`; the accessor over them.
+  // Room for `count` values of `size` bytes at the end of `view`, not zeroed (every byte is
+  // written below, padding included); the accessor over them.
   const auto column = [&](std::uint32_t view, std::size_t size, Component component,
                           std::string_view type, bool normalized, std::uint32_t& accessor) {
-    std::string& data = buffers.data(view);
+    Bytes& data = buffers.data(view);
     const std::size_t offset = data.size();
-    data.resize(offset + count * size);
+    char* at = data.extend(count * size);
     accessor = buffers.add_accessor(
         Accessor{view, offset, component, count, type, normalized, std::nullopt, std::nullopt});
-    return data.data() + offset;
+    return at;
   };
   char* positions = column(
       quantized ? views.quantized_positions : views.float_positions, quantized ? 8 : 12,
@@ -679,12 +680,10 @@ void MeshAssembler::write_primitives(Buffers& buffers, const MeshViews& views, s
                                      MeshRecord& record) {
   const bool short_indices = count <= 65535;  // 65535 itself is not a valid index (glTF 3.7.2.1)
   const std::uint32_t view = short_indices ? views.short_indices : views.int_indices;
-  std::string& data = buffers.data(view);
+  Bytes& data = buffers.data(view);
   std::size_t total = 0;
   for (const MaterialList& list : lists_) total += list.indices.size();
-  const std::size_t first = data.size();
-  data.resize(first + total * (short_indices ? 2 : 4));
-  char* at = data.data() + first;
+  char* at = data.extend(total * (short_indices ? 2 : 4));  // every byte written below
   for (const MaterialList& list : lists_) {
     const std::size_t offset = static_cast<std::size_t>(at - data.data());
     for (const std::uint32_t index : list.indices) {

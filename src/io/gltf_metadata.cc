@@ -306,7 +306,7 @@ void PartTable::make_dictionary(Column& column) {
 void PartTable::write_data(Buffers& buffers) {
   for (Column& column : columns_) {
     column.values_view = buffers.add_view(ViewKind::kColumn, 0);
-    std::string& values = buffers.data(column.values_view);
+    Bytes& values = buffers.data(column.values_view);
     switch (column.type) {
       case Type::kNumber:
         if (column.optional) column.no_data_number = unused_number(column.numbers);
@@ -315,7 +315,7 @@ void PartTable::write_data(Buffers& buffers) {
         break;
       case Type::kBoolean: {
         // A bitstream, least significant bit first (3D Metadata, "Booleans").
-        values.assign((column.booleans.size() + 7) / 8, '\0');
+        values.append((column.booleans.size() + 7) / 8, '\0');  // a new view: empty
         for (std::size_t i = 0; i < column.booleans.size(); ++i) {
           if (column.booleans[i]) values[i / 8] = static_cast<char>(values[i / 8] | (1 << (i % 8)));
         }
@@ -336,7 +336,7 @@ void PartTable::write_data(Buffers& buffers) {
           break;
         }
         column.offsets_view = buffers.add_view(ViewKind::kColumn, 0);
-        std::string& offsets = buffers.data(column.offsets_view);
+        Bytes& offsets = buffers.data(column.offsets_view);
         std::uint32_t offset = 0;
         for (const std::uint32_t code : column.codes) {
           append_value(offsets, offset);

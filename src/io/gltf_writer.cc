@@ -232,7 +232,7 @@ Builder::Builder(const shape::Scene& scene, const GltfOptions& options)
   }
   for (const std::string& image : images_) {
     image_views_.push_back(buffers_.add_view(ViewKind::kBytes, 0));
-    buffers_.data(image_views_.back()) = image;
+    buffers_.data(image_views_.back()) += image;
   }
   if (table_) table_->write_data(buffers_);
   buffers_.finish(options_.compress);
@@ -420,7 +420,7 @@ InstanceGroup Builder::add_instance_group(const std::vector<gltf::Trs>& placed,
     }
   }
   const auto add = [&](std::size_t k, std::string_view type, const std::vector<float>& values) {
-    std::string& data = buffers_.data(*instance_views_[k]);
+    gltf::Bytes& data = buffers_.data(*instance_views_[k]);
     const std::size_t offset = data.size();
     for (float v : values) gltf::append_value(data, v);
     return buffers_.add_accessor(Accessor{*instance_views_[k], offset, Component::kFloat,
