@@ -11,12 +11,19 @@
 namespace insula::io {
 
 std::string write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  return write_file_atomically(path, std::span<const std::string_view>(&content, 1));
+}
+
+std::string write_file_atomically(const std::filesystem::path& path,
+                                  std::span<const std::string_view> pieces) {
   std::filesystem::path temporary = path;
   temporary += ".tmp-" + std::to_string(::getpid());
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) return path.string() + ": cannot write: " + std::strerror(errno);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    for (const std::string_view piece : pieces) {
+      out.write(piece.data(), static_cast<std::streamsize>(piece.size()));
+    }
     out.flush();
     if (!out) {
       std::error_code ignored;

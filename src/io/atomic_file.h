@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -12,5 +13,8 @@ namespace insula::io {
 // Writes `content` to `path` atomically. Returns an empty string on success, else a message
 // naming the path and the reason.
 std::string write_file_atomically(const std::filesystem::path& path, std::string_view content);
+// The same for content given as pieces, written one after the other.
+std::string write_file_atomically(const std::filesystem::path& path,
+                                  std::span<const std::string_view> pieces);
 
 }  // namespace insula::io

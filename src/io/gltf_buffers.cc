@@ -176,13 +176,22 @@ void Buffers::write_views(JsonStream& json, std::string_view uri) const {
 }
 
 void Buffers::append_binary(std::string& out) const {
-  const std::size_t start = out.size();
+  std::vector<std::string_view> pieces;
+  binary_pieces(pieces);
+  for (const std::string_view piece : pieces) out += piece;
+}
+
+void Buffers::binary_pieces(std::vector<std::string_view>& pieces) const {
+  static constexpr char kZeros[kViewAlignment] = {};
+  std::size_t at = 0;
   for (const View& view : views_) {
     if (view.bytes.empty()) continue;
     const bool compressed = is_compressed(view);
     const std::size_t offset = compressed ? view.encoded_offset : view.offset;
-    out.append(start + offset - out.size(), '\0');
-    out += compressed ? std::string_view(view.encoded) : view.bytes.view();
+    if (offset > at) pieces.emplace_back(kZeros, offset - at);  // under kViewAlignment
+    const std::string_view bytes = compressed ? std::string_view(view.encoded) : view.bytes.view();
+    pieces.push_back(bytes);
+    at = offset + bytes.size();
   }
 }
 

@@ -132,6 +132,10 @@ class Buffers {
   void write_views(JsonStream& json, std::string_view uri) const;
   // The bytes of the first buffer (the GLB's BIN chunk), unpadded, and their count.
   void append_binary(std::string& out) const;
+  // The same bytes as the pieces they are laid out from, appended to `pieces`: each view's bytes
+  // and the zeros before it (the one layout append_binary() copies, for writing the pieces to a
+  // file in turn). They point into the views: valid while these Buffers are.
+  void binary_pieces(std::vector<std::string_view>& pieces) const;
   std::size_t binary_size() const { return binary_size_; }
 
  private:

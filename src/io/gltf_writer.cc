@@ -120,6 +120,9 @@ class Builder {
   // The glTF JSON; `buffer_uri` (when not empty) becomes the buffer's "uri".
   void write_json(JsonStream& json, std::string_view buffer_uri) const;
   void append_binary(std::string& out) const { buffers_.append_binary(out); }
+  void binary_pieces(std::vector<std::string_view>& pieces) const {
+    buffers_.binary_pieces(pieces);
+  }
   std::size_t binary_size() const { return buffers_.binary_size(); }
   // Room for the JSON text, so it does not move as it grows: about 400 bytes per primitive
   // (its accessors and the EXT_mesh_features block) and per node (name and extras).
@@ -799,12 +802,6 @@ bool has_gltf_extension(const std::filesystem::path& path) {
   return extension == ".gltf";
 }
 
-}  // namespace
-
-// The JSON is written in place after room for the two headers, which are filled in once its size
-// is known (the JSON is most of the bytes of a GLB: copying it cost more than writing it).
-namespace {
-
 // The scene as one building whose parts are its buildings' parts as features (Nodes::kScene).
 shape::Scene merged(const shape::Scene& scene) {
   shape::Scene out;
@@ -837,32 +834,49 @@ struct LaidOut {
   Builder builder;
 };
 
-}  // namespace
-
-std::string glb_bytes(const shape::Scene& scene, const GltfOptions& options) {
-  const LaidOut laid_out(scene, options);
-  const Builder& builder = laid_out.builder;
+// The GLB of `builder` (12-byte header, JSON chunk, BIN chunk when non-empty): everything up to
+// the BIN chunk's data is appended to `head` (empty, with room reserved by the caller); the
+// chunk's data follow as `binary`'s pieces, which point into the builder's views. The JSON is
+// written in place after room for the two headers, which are filled in once its size is known
+// (the JSON is most of the bytes of a GLB of buildings: copying it cost more than writing it).
+void lay_out_glb(const Builder& builder, std::string& head, std::vector<std::string_view>& binary) {
   constexpr std::size_t kHeaders = 12 + 8;
-  const std::size_t binary = builder.binary_size();
-  std::string out;
-  out.reserve(kHeaders + builder.json_size_estimate() + 8 + padded(binary));
-  out.resize(kHeaders);
-  JsonStream json(out);
+  const std::size_t size = builder.binary_size();
+  head.resize(kHeaders);
+  JsonStream json(head);
   builder.write_json(json, {});
-  const std::size_t text = out.size() - kHeaders;
-  out.append(padded(text) - text, ' ');
-  const std::size_t total = out.size() + (binary == 0 ? 0 : 8 + padded(binary));
+  const std::size_t text = head.size() - kHeaders;
+  head.append(padded(text) - text, ' ');
+  const std::size_t total = head.size() + (size == 0 ? 0 : 8 + padded(size));
   std::string headers;
   gltf::append_value(headers, kGlbMagic);
   gltf::append_value(headers, std::uint32_t{2});
   gltf::append_value(headers, static_cast<std::uint32_t>(total));
   append_chunk_header(headers, text, kChunkJson);
-  out.replace(0, kHeaders, headers);
-  if (binary > 0) {
-    append_chunk_header(out, binary, kChunkBin);
-    builder.append_binary(out);
-    out.append(padded(binary) - binary, '\0');
+  head.replace(0, kHeaders, headers);
+  if (size > 0) {
+    append_chunk_header(head, size, kChunkBin);
+    builder.binary_pieces(binary);
+    static constexpr char kZeros[4] = {};
+    if (padded(size) > size) binary.emplace_back(kZeros, padded(size) - size);
   }
+}
+
+// Room for the GLB's head: headers, JSON and the BIN chunk's header.
+std::size_t head_estimate(const Builder& builder) {
+  return 12 + 8 + builder.json_size_estimate() + 8;
+}
+
+}  // namespace
+
+std::string glb_bytes(const shape::Scene& scene, const GltfOptions& options) {
+  const LaidOut laid_out(scene, options);
+  const Builder& builder = laid_out.builder;
+  std::string out;
+  out.reserve(head_estimate(builder) + padded(builder.binary_size()));
+  std::vector<std::string_view> binary;
+  lay_out_glb(builder, out, binary);
+  for (const std::string_view piece : binary) out += piece;
   return out;
 }
 
@@ -883,10 +897,18 @@ std::string gltf_text(const shape::Scene& scene, const GltfOptions& options) {
   return text;
 }
 
+// A .glb is written from its pieces in turn, without joining them into one string first (a copy of
+// every byte of a tile).
 std::string write_gltf(const shape::Scene& scene, const std::filesystem::path& path,
                        const GltfOptions& options) {
-  return write_file_atomically(
-      path, has_gltf_extension(path) ? gltf_text(scene, options) : glb_bytes(scene, options));
+  if (has_gltf_extension(path)) return write_file_atomically(path, gltf_text(scene, options));
+  const LaidOut laid_out(scene, options);
+  std::string head;
+  head.reserve(head_estimate(laid_out.builder));
+  std::vector<std::string_view> pieces(1);
+  lay_out_glb(laid_out.builder, head, pieces);
+  pieces.front() = head;
+  return write_file_atomically(path, pieces);
 }
 
 }  // namespace insula::io
