@@ -1,5 +1,6 @@
 #include "io/triangulated.h"
 
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <set>
@@ -52,6 +53,15 @@ Vec2 project(Vec3 p, Plane plane) {
 // in another order, so both paths agree whatever the rounding of the turn test.
 constexpr double kMinTurn = 1e-9;
 
+// Whether the corner at b (from a, on to c) turns left by more than kMinTurn: cross(u, v) >
+// kMinTurn |u| |v|, squared (no square roots, hypot being the costliest part here).
+bool turns_left(Vec2 a, Vec2 b, Vec2 c) {
+  const Vec2 u = b - a;
+  const Vec2 v = c - b;
+  const double turn = kernel::cross(u, v);
+  return turn > 0 && turn * turn > kMinTurn * kMinTurn * kernel::dot(u, u) * kernel::dot(v, v);
+}
+
 // Every corner turns left by more than kMinTurn and the boundary winds once: the x component of
 // the edge direction changes sign at most twice (a ring with only left turns that winds k times
 // changes it 2k times, e.g. a pentagram). Coordinates are taken relative to the first corner, as
@@ -62,18 +72,12 @@ bool is_strictly_convex(const kernel::Ring& ring) {
   int sign_changes = 0;
   int last_sign = 0;
   // Corners i, j = i + 1 and k = i + 2 around the ring, stepped without a modulo (two integer
-  // divisions a corner cost more than the turn test).
-  for (std::size_t i = 0, j = 1 % n, k = 2 % n; i < n; ++i, j = k, k = k + 1 == n ? 0 : k + 1) {
+  // divisions a corner cost more than the turn test; n >= 3, so j and k start at 1 and 2).
+  for (std::size_t i = 0, j = 1, k = 2; i < n; ++i, j = k, k = k + 1 == n ? 0 : k + 1) {
     const Vec2 a = ring[i] - ring[0];
     const Vec2 b = ring[j] - ring[0];
     const Vec2 c = ring[k] - ring[0];
-    const Vec2 u = b - a;
-    const Vec2 v = c - b;
-    // cross(u, v) > kMinTurn |u| |v|, squared: no square roots (hypot), the costliest part here.
-    const double turn = kernel::cross(u, v);
-    if (!(turn > 0 && turn * turn > kMinTurn * kMinTurn * kernel::dot(u, u) * kernel::dot(v, v))) {
-      return false;
-    }
+    if (!turns_left(a, b, c)) return false;
     const double dx = b.x - a.x;
     const int sign = dx > 0 ? 1 : (dx < 0 ? -1 : 0);
     if (sign != 0) {
@@ -82,6 +86,18 @@ bool is_strictly_convex(const kernel::Ring& ring) {
     }
   }
   return sign_changes <= 2;
+}
+
+// is_strictly_convex for a quad, the commonest face, on the stack: four left turns are enough (a
+// ring's turns add up to whole turns, and four turns of less than a half-turn each to one).
+bool is_strictly_convex_quad(const std::array<Vec2, 4>& quad) {
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (!turns_left(quad[i] - quad[0], quad[(i + 1) & 3U] - quad[0],
+                    quad[(i + 2) & 3U] - quad[0])) {
+      return false;
+    }
+  }
+  return true;
 }
 
 void append_fan(std::size_t n, std::vector<CornerTriangle>& triangles) {
@@ -174,14 +190,26 @@ void FaceTriangulator::triangulate_piece(std::span<const std::uint32_t> corners,
 template <typename Position>
 bool FaceTriangulator::triangulate_corners(std::size_t n, Position position, Vec3 normal,
                                            std::vector<CornerTriangle>& triangles) {
-  if (n < 3 || kernel::length(normal) == 0) return false;
+  // A zero normal: its squared length is 0 exactly when its length is (no square root).
+  if (n < 3 || kernel::dot(normal, normal) == 0) return false;
   if (n == 3) {
     triangles.push_back({0, 1, 2});
     return true;
   }
   kernel::Ring& ring = polygon_.outer;
-  ring.clear();
   const Plane plane = plane_of(normal);  // once a face, not once a corner
+  if (n == 4) {
+    std::array<Vec2, 4> quad;
+    for (std::size_t i = 0; i < 4; ++i) quad[i] = project(position(i), plane);
+    if (is_strictly_convex_quad(quad)) {
+      triangles.push_back({3, 0, 1});  // triangulate_ring's walk for a convex quad
+      triangles.push_back({1, 2, 3});
+      return true;
+    }
+    ring.assign(quad.begin(), quad.end());
+    return triangulate_ring(triangles);
+  }
+  ring.clear();
   for (std::size_t i = 0; i < n; ++i) ring.push_back(project(position(i), plane));
   return triangulate_ring(triangles);
 }
