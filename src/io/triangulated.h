@@ -65,13 +65,13 @@ class FaceTriangulator {
 };
 
 // std::llround (halves away from zero) without its library call, which cost more than the rest
-// of quantizing a vertex; `value` must be finite and below 2^62 in magnitude.
+// of quantizing a vertex; `value` must be finite and below 2^62 in magnitude. The correction is
+// added without a branch: which way a coordinate's fraction falls is a coin toss the branch
+// predictor lost about half the time.
 inline std::int64_t round_half_away(double value) {
   const auto whole = static_cast<std::int64_t>(value);     // toward zero
   const double rest = value - static_cast<double>(whole);  // exact
-  if (rest >= 0.5) return whole + 1;
-  if (rest <= -0.5) return whole - 1;
-  return whole;
+  return whole + static_cast<std::int64_t>(rest >= 0.5) - static_cast<std::int64_t>(rest <= -0.5);
 }
 
 // `name` with every whitespace or control character replaced by '_' (OBJ splits names at blanks);
