@@ -2,12 +2,12 @@
 # The fuzz lane (docs/testing.md): builds the libFuzzer targets in the sanitizer lane's build
 # (build-asan/: clang, ASan, UBSan, coverage; scripts/test_asan.sh configures it the same way) and
 # runs each from its corpus (fuzz/corpus/<name> plus the examples and test catalogs) for
-# FUZZ_SECONDS seconds (30 by default). New inputs go to build-asan/fuzz-corpus/<name>, never into
+# FUZZ_SECONDS seconds (15 by default). New inputs go to build-asan/fuzz-corpus/<name>, never into
 # the repository; a crash, a leak, a timeout or a contract violation leaves its input in
 # build-asan/crashes/ and fails the run. `scripts/fuzz.sh lua obj` runs only those targets.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${FUZZ_SECONDS:-30}
+seconds=${FUZZ_SECONDS:-15}
 # A fixed seed by default: CI's short runs take the same path each time (so a red run is a
 # change of ours, reproducible here); FUZZ_SEED=0 lets libFuzzer pick one, for longer hunts.
 seed=${FUZZ_SEED:-1}
