@@ -42,6 +42,20 @@ std::vector<Polygon> door_zones(const PlanStorey& storey, double approach) {
   return out;
 }
 
+// How far a placement's rectangle is shrunk on every side before it is tested against rooms and
+// obstacles. The rooms of a lot rounded to millimetres are not quite rectangles, so a landing set
+// against a wall of one room can lie a hundredth of a millimetre outside the same wall as seen
+// from the room above; tested at its full size, whether the stair fitted turned on such noise
+// (a 9.8 m house got its stair at some rotations and not at others). A millimetre is far below
+// the clearance already kept from walls (half a wall and 2 cm).
+constexpr double kFitSlack = 0.001;
+
+// The rectangle oriented_rectangle() makes, kFitSlack smaller on every side.
+Polygon tested_rectangle(Vec2 from, Vec2 along, Vec2 inward, double length, double depth) {
+  return oriented_rectangle(from + along * kFitSlack + inward * kFitSlack, along, inward,
+                            length - 2 * kFitSlack, depth - 2 * kFitSlack);
+}
+
 // Obstacles are rectangles (door approaches, flights and stairwells).
 bool clear(const std::vector<Polygon>& obstacles, const Polygon& p) {
   return std::none_of(obstacles.begin(), obstacles.end(),
@@ -70,23 +84,23 @@ std::optional<PlanStair> fit_flight(const std::vector<Polygon>& region, const Po
       for (double s = 0; s + run <= len + 1e-9; s += 0.25) {
         for (int dir = 0; dir < 2; ++dir) {
           const Vec2 start = p + u * s;
-          const Polygon foot_print = oriented_rectangle(start, u, inward, run, width);
+          const Polygon foot_print = tested_rectangle(start, u, inward, run, width);
           if (!convex_inside(piece, foot_print.outer) || !clear(obstacles, foot_print)) continue;
           // Ascent along +u (dir 0) or -u (dir 1).
           const Vec2 foot =
               dir == 0 ? start + inward * (width / 2) : start + u * run + inward * (width / 2);
           const Vec2 head = dir == 0 ? foot + u * run : foot - u * run;
           const Vec2 up = kernel::normalized(head - foot);
-          const Polygon foot_landing = oriented_rectangle(
-              foot - up * landing - inward * (width / 2), up, inward, landing, width);
+          const Polygon foot_landing = tested_rectangle(foot - up * landing - inward * (width / 2),
+                                                        up, inward, landing, width);
           const Polygon head_landing =
-              oriented_rectangle(head - inward * (width / 2), up, inward, landing, width);
+              tested_rectangle(head - inward * (width / 2), up, inward, landing, width);
           if (!convex_inside(lower, foot_landing.outer) ||
               !convex_inside(upper, head_landing.outer))
             continue;
           if (!clear(obstacles, foot_landing) || !clear(obstacles, head_landing)) continue;
           PlanStair stair;
-          stair.footprint = foot_print;
+          stair.footprint = oriented_rectangle(start, u, inward, run, width);
           stair.foot = foot;
           stair.head = head;
           stair.width = width;
