@@ -92,9 +92,16 @@ char* write_decimal(char* at, double value, int decimals) {
   return at;
 }
 
+// Where a vertex line lies in the text: two vertices are one point in the file when their lines
+// are the same text.
+struct VertexLine {
+  std::size_t offset;
+  std::size_t size;
+};
+
 // Lines are formed in a buffer and appended whole: appending piece by piece cost more than the
 // formatting.
-void append_vertex(std::string& out, kernel::Vec3 p) {
+VertexLine append_vertex(std::string& out, kernel::Vec3 p) {
   std::array<char, 3 * kDecimalRoom + 8> line;
   char* at = line.data();
   *at++ = 'v';
@@ -103,7 +110,40 @@ void append_vertex(std::string& out, kernel::Vec3 p) {
     at = write_decimal(at, c, kCoordinateDecimals);
   }
   *at++ = '\n';
+  const VertexLine written_line{out.size(), static_cast<std::size_t>(at - line.data())};
   out.append(line.data(), at);
+  return written_line;
+}
+
+// The corners of a face as the file shows them: a corner written at the same place as the corner
+// before it (two vertices closer than the 1 um the text keeps, as a PLaSM column's capital has
+// where its surface pinches) is left out, as the GLB writer contracts them. Fewer than three left:
+// the face has no area in the file and is not written. Returns whether `kept` is the loop itself.
+bool corners_as_written(const std::string& out, const kernel::Mesh& mesh,
+                        std::span<const VertexLine> lines, std::span<const std::uint32_t> loop,
+                        std::vector<std::uint32_t>& kept) {
+  const auto same_place = [&](std::uint32_t a, std::uint32_t b) {
+    // Points a few micrometres apart or more are written apart: the text is compared only for
+    // the rare corners closer than that.
+    constexpr double kApart = 4e-6;
+    const kernel::Vec3 d = mesh.position(a) - mesh.position(b);
+    if (std::abs(d.x) > kApart || std::abs(d.y) > kApart || std::abs(d.z) > kApart) return false;
+    const VertexLine& x = lines[a];
+    const VertexLine& y = lines[b];
+    return a == b ||
+           (x.size == y.size && out.compare(x.offset, x.size, out, y.offset, y.size) == 0);
+  };
+  bool all = true;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    if (same_place(loop[i], loop[(i + 1) % loop.size()])) all = false;
+  }
+  if (all) return true;
+  kept.clear();
+  for (std::uint32_t vertex : loop) {
+    if (kept.empty() || !same_place(kept.back(), vertex)) kept.push_back(vertex);
+  }
+  while (kept.size() > 1 && same_place(kept.back(), kept.front())) kept.pop_back();
+  return false;
 }
 
 // "f v v v ..." or "f v/vt v/vt ...", one buffer at a time however long the face.
@@ -150,15 +190,22 @@ void group_faces(const kernel::Mesh& mesh, const MaterialTable& materials,
   });
 }
 
+// Scratch of append_part(), kept from part to part.
+struct PartScratch {
+  std::vector<GroupedFace> faces;
+  std::vector<VertexLine> lines;
+  std::vector<std::uint32_t> corners;
+};
+
 // Writes a part's vertices (and texture coordinates, one per vertex, when it has a uv map) then its
 // faces; `first_vertex` / `first_uv` are the 1-based OBJ indices of its vertex 0 / its first vt.
-// `faces` is scratch.
 void append_part(std::string& out, const shape::Scene& scene, const ObjOptions& options,
                  const std::string& building_name, const shape::Part& part, std::size_t part_index,
                  const MaterialTable& materials, std::size_t first_vertex, std::size_t first_uv,
-                 std::vector<GroupedFace>& faces) {
+                 PartScratch& scratch) {
+  scratch.lines.clear();
   for (const kernel::Vec3& p : part.mesh.positions()) {
-    append_vertex(out, written(p, scene, options));
+    scratch.lines.push_back(append_vertex(out, written(p, scene, options)));
   }
   if (part.uv) {
     for (const kernel::Vec3& p : part.mesh.positions()) {
@@ -171,17 +218,21 @@ void append_part(std::string& out, const shape::Scene& scene, const ObjOptions& 
     }
   }
   const std::string part_name = safe_name(part.name, "part" + std::to_string(part_index));
-  group_faces(part.mesh, materials, faces);
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    const GroupedFace& face = faces[i];
-    if (i == 0 || face.semantic != faces[i - 1].semantic ||
-        face.material != faces[i - 1].material) {
+  group_faces(part.mesh, materials, scratch.faces);
+  const GroupedFace* group = nullptr;  // the group of the last face written
+  for (const GroupedFace& face : scratch.faces) {
+    std::span<const std::uint32_t> loop = part.mesh.face(face.face);
+    if (!corners_as_written(out, part.mesh, scratch.lines, loop, scratch.corners)) {
+      if (scratch.corners.size() < 3) continue;
+      loop = scratch.corners;
+    }
+    if (group == nullptr || face.semantic != group->semantic || face.material != group->material) {
       out += "g " + building_name + "." + part_name + "." +
              std::string(kernel::semantic_name(face.semantic)) + "\n";
       out += "usemtl " + materials.materials()[face.material].name + "\n";
     }
-    append_face(out, part.mesh.face(face.face), first_vertex,
-                part.uv ? std::optional(first_uv) : std::nullopt);
+    group = &face;
+    append_face(out, loop, first_vertex, part.uv ? std::optional(first_uv) : std::nullopt);
   }
 }
 
@@ -305,7 +356,7 @@ ObjText obj_text(const shape::Scene& input, std::string_view mtl_file_name,
   text.origin_json = origin_json(scene, options);
   std::size_t next_vertex = 1;
   std::size_t next_uv = 1;
-  std::vector<GroupedFace> faces;
+  PartScratch scratch;
   for (std::size_t b = 0; b < scene.buildings.size(); ++b) {
     const shape::Building& building = scene.buildings[b];
     const std::string building_name = safe_name(building.id, "building" + std::to_string(b));
@@ -313,7 +364,7 @@ ObjText obj_text(const shape::Scene& input, std::string_view mtl_file_name,
     for (std::size_t p = 0; p < building.parts.size(); ++p) {
       const shape::Part& part = building.parts[p];
       append_part(text.obj, scene, options, building_name, part, p, materials, next_vertex, next_uv,
-                  faces);
+                  scratch);
       next_vertex += part.mesh.vertex_count();
       if (part.uv) next_uv += part.mesh.vertex_count();
     }

@@ -13,6 +13,7 @@ namespace insula::io {
 namespace {
 
 using kernel::SemanticClass;
+using kernel::Vec3;
 using testing::test_scene;
 
 std::size_t count_lines_starting(const std::string& text, const std::string& prefix) {
@@ -79,6 +80,34 @@ TEST(ObjWriter, KeepsConcaveFacesAsNgons) {
   const ObjText text = obj_text(test_scene(), "scene.mtl");
   // The L's roof: its 6 top vertices are OBJ vertices 15..20 (after the box's 8 and L's bottom 6).
   EXPECT_NE(text.obj.find("\nf 15 16 17 18 19 20\n"), std::string::npos);
+}
+
+// Two vertices closer than the 1 um the text keeps are one point in the file (a PLaSM column's
+// capital has them where its surface pinches): a quad with two of its corners there is written as
+// the triangle it looks like, and a sliver triangle, which would have no area in the file, is not
+// written; a face lost so does not take its group's header with it.
+TEST(ObjWriter, FacesAreWrittenAsTheTextShowsThem) {
+  shape::Scene scene;
+  scene.origin = {500000.25, 5400000.5, 100};
+  kernel::Mesh mesh;
+  for (Vec3 p : {Vec3{0, 0, 0}, Vec3{4, 0, 0}, Vec3{4, 0, 3}, Vec3{4, 2e-7, 3}, Vec3{0, 0, 3},
+                 Vec3{4, 1e-7, 0}}) {
+    mesh.add_vertex(p);
+  }
+  mesh.add_face({1, 5, 2}, {SemanticClass::kWallSurface, 0, 0});        // 1 and 5: one point
+  mesh.add_face({0, 1, 2, 3, 4}, {SemanticClass::kWallSurface, 0, 1});  // 2 and 3: one point
+  mesh.add_face({4, 3, 2}, {SemanticClass::kRoofSurface, 0, 2});        // 3 and 2: one point
+  shape::Building building;
+  building.id = "b";
+  building.parts.push_back({"wall", shape::PartKind::kBuildingPart, {}, std::move(mesh)});
+  scene.buildings.push_back(std::move(building));
+  const std::string obj = obj_text(scene, "scene.mtl", {.up = 'z'}).obj;
+  EXPECT_EQ(count_lines_starting(obj, "v "), 6U);
+  EXPECT_EQ(count_lines_starting(obj, "f "), 1U) << obj;
+  EXPECT_NE(obj.find("\nv 4 0 3\nv 4 0 3\n"), std::string::npos);
+  EXPECT_NE(obj.find("\ng b.wall.WallSurface\nusemtl WallSurface\nf 1 2 3 5\n"), std::string::npos)
+      << obj;
+  EXPECT_EQ(obj.find("RoofSurface"), std::string::npos);
 }
 
 TEST(ObjWriter, MaterialsHaveDiffuseColour) {
