@@ -8,9 +8,9 @@
 // finds the error and words GEO001 (or, for the few texts nlohmann accepts and simdjson does not,
 // such as integers beyond 64 bits, re-dumps the piece for simdjson). Values are read as nlohmann
 // would read them: the last of duplicate keys wins, nested property values are nlohmann's compact
-// dump. The DOM keeps no positions, so diagnostics find theirs again with a small scanner over the
-// (by then known valid) text: feature starts are listed once, deeper paths are scanned from the
-// feature start only when a diagnostic needs them.
+// dump. The DOM keeps no positions, so diagnostics find theirs again with a small scanner
+// (io/json_text.h) over the (by then known valid) text: feature starts are listed once, deeper
+// paths are scanned from the feature start only when a diagnostic needs them.
 #include "io/geojson_reader.h"
 
 #include <oneapi/tbb/parallel_for.h>
@@ -24,242 +24,23 @@
 #include <nlohmann/json.hpp>
 #include <utility>
 
+#include "io/json_text.h"
+
 namespace insula::io {
 namespace {
 
 using base::Diagnostic;
 using nlohmann::json;
 using Element = simdjson::dom::element;
+using json_text::is_space;
+using json_text::PathStep;
+using json_text::SyntaxError;
+using json_text::TextLocator;
 using simdjson::dom::element_type;
 constexpr std::size_t kNone = kNoIndex;
+static_assert(kNone == json_text::kNoOffset);
 constexpr std::array<std::string_view, 4> kSequenceSuffixes = {".geojsonl", ".geojsons",
                                                                ".geojsonseq", ".ndjson"};
-
-// ---------------------------------------------------------------------------------------------
-// Byte-level scanning. Works on any bytes (the depth scan runs before parsing); never reads past
-// the end.
-
-// Offset just past the string whose opening quote is at `pos`; text.size() when unterminated.
-std::size_t skip_string(std::string_view text, std::size_t pos) {
-  for (++pos; pos < text.size(); ++pos) {
-    if (text[pos] == '\\') {
-      ++pos;
-    } else if (text[pos] == '"') {
-      return pos + 1;
-    }
-  }
-  return text.size();
-}
-
-bool is_space(char c) {
-  return c == ' ' || c == '\t' || c == '\n' || c == '\r';
-}
-
-// What one pass over the bytes finds: the first bracket that nests deeper than the limit (outside
-// strings), and, when the root is an object, its last "features" member's array (the byte range
-// from '[' to just past ']') and the offsets where that array's elements start. Exact on valid
-// JSON; on anything else the pieces parsed from it do not parse, or their glue does not check.
-struct Layout {
-  std::optional<std::size_t> too_deep;
-  std::size_t features_at = kNone;
-  std::size_t features_end = kNone;
-  std::vector<std::size_t> elements;
-};
-
-Layout scan_layout(std::string_view text, std::size_t root, std::size_t max_depth) {
-  Layout out;
-  const bool object_root = root < text.size() && text[root] == '{';
-  std::size_t depth = 0;
-  std::string_view last_key;    // the last string at depth 1
-  bool features_value = false;  // the next value is the root's "features" member
-  bool in_features = false;     // inside that array
-  const auto element_at = [&](std::size_t pos) {
-    while (pos < text.size() && is_space(text[pos])) ++pos;
-    if (pos < text.size() && text[pos] != ']') out.elements.push_back(pos);
-  };
-  // Bytes that matter here; the rest (digits, letters, whitespace) are skipped a run at a time.
-  static constexpr auto kStructural = [] {
-    std::array<bool, 256> table{};
-    for (const char c : std::string_view("\"[]{}:,")) table[static_cast<unsigned char>(c)] = true;
-    return table;
-  }();
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (!kStructural[static_cast<unsigned char>(text[i])]) {
-      if (!features_value) {
-        while (i + 1 < text.size() && !kStructural[static_cast<unsigned char>(text[i + 1])]) ++i;
-        continue;
-      }
-      if (is_space(text[i])) continue;
-    }
-    const char c = text[i];
-    const bool value_start = features_value && c != ':';
-    if (value_start) features_value = false;
-    if (c == '"') {
-      const std::size_t end = skip_string(text, i);
-      if (depth == 1) last_key = text.substr(i + 1, end - i - 2);
-      i = end - 1;
-    } else if (c == ':') {
-      if (depth == 1 && object_root && last_key == "features") {
-        features_value = true;  // the last "features" member counts, as in nlohmann
-        out.features_at = out.features_end = kNone;
-        out.elements.clear();
-      }
-    } else if (c == '[' || c == '{') {
-      if (++depth > max_depth) {
-        out.too_deep = i;
-        return out;
-      }
-      if (value_start && c == '[' && depth == 2) {
-        in_features = true;
-        out.features_at = i;
-        element_at(i + 1);
-      }
-    } else if (c == ']' || c == '}') {
-      if (depth == 2 && in_features) {
-        in_features = false;
-        if (c == ']') out.features_end = i + 1;  // '}' would leave the array unparsed
-      }
-      if (depth > 0) --depth;
-    } else if (c == ',' && depth == 2 && in_features) {
-      element_at(i + 1);
-    }
-  }
-  if (out.features_end == kNone) out.features_at = kNone;
-  return out;
-}
-
-// One step of a path into a JSON value: an object member (key) or an array element (index).
-struct PathStep {
-  std::string_view key;
-  std::size_t index = 0;
-};
-
-// Finds values again in text that nlohmann::json accepted. Offsets are byte offsets of the
-// first character of a value; kNone propagates.
-class TextLocator {
- public:
-  explicit TextLocator(std::string_view text) : text_(text) {}
-
-  std::size_t skip_space(std::size_t pos) const {
-    if (pos == 0 && text_.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;
-    while (pos < text_.size() && is_space(text_[pos])) ++pos;
-    return pos;
-  }
-
-  // Offset just past the value starting at `pos`.
-  std::size_t skip_value(std::size_t pos) const {
-    if (pos >= text_.size()) return text_.size();
-    if (text_[pos] == '"') return skip_string(text_, pos);
-    if (text_[pos] != '[' && text_[pos] != '{') {
-      while (pos < text_.size() && !is_space(text_[pos]) && text_[pos] != ',' &&
-             text_[pos] != ']' && text_[pos] != '}') {
-        ++pos;
-      }
-      return pos;
-    }
-    std::size_t depth = 0;
-    for (; pos < text_.size(); ++pos) {
-      const char c = text_[pos];
-      if (c == '"') {
-        pos = skip_string(text_, pos) - 1;
-      } else if (c == '[' || c == '{') {
-        ++depth;
-      } else if ((c == ']' || c == '}') && --depth == 0) {
-        return pos + 1;
-      }
-    }
-    return text_.size();
-  }
-
-  // Offset of the value of member `key` (the last one, as nlohmann keeps the last duplicate).
-  std::size_t member(std::size_t pos, std::string_view key) const {
-    if (pos >= text_.size() || text_[pos] != '{') return kNone;
-    std::size_t found = kNone;
-    pos = skip_space(pos + 1);
-    while (pos < text_.size() && text_[pos] == '"') {
-      const std::size_t key_end = skip_string(text_, pos);
-      const std::string_view name = text_.substr(pos + 1, key_end - pos - 2);
-      pos = skip_space(key_end);
-      if (pos >= text_.size() || text_[pos] != ':') break;
-      pos = skip_space(pos + 1);
-      if (name == key) found = pos;
-      pos = skip_space(skip_value(pos));
-      if (pos >= text_.size() || text_[pos] != ',') break;
-      pos = skip_space(pos + 1);
-    }
-    return found;
-  }
-
-  std::size_t element(std::size_t pos, std::size_t index) const {
-    if (pos >= text_.size() || text_[pos] != '[') return kNone;
-    pos = skip_space(pos + 1);
-    for (std::size_t i = 0; pos < text_.size() && text_[pos] != ']'; ++i) {
-      if (i == index) return pos;
-      pos = skip_space(skip_value(pos));
-      if (pos >= text_.size() || text_[pos] != ',') break;
-      pos = skip_space(pos + 1);
-    }
-    return kNone;
-  }
-
-  // The deepest offset reachable along `path` from `pos` (best effort: stops where a step fails).
-  std::size_t follow(std::size_t pos, const std::vector<PathStep>& path) const {
-    for (const PathStep& step : path) {
-      const std::size_t next = step.key.empty() ? element(pos, step.index) : member(pos, step.key);
-      if (next == kNone) break;
-      pos = next;
-    }
-    return pos;
-  }
-
- private:
-  std::string_view text_;
-};
-
-// ---------------------------------------------------------------------------------------------
-// JSON parse errors.
-
-// Offset and message of the first syntax error, found by a validating SAX pass (no exceptions).
-class ErrorCatcher : public nlohmann::json_sax<json> {
- public:
-  bool null() override { return true; }
-  bool boolean(bool) override { return true; }
-  bool number_integer(number_integer_t) override { return true; }
-  bool number_unsigned(number_unsigned_t) override { return true; }
-  bool number_float(number_float_t, const string_t&) override { return true; }
-  bool string(string_t&) override { return true; }
-  bool binary(binary_t&) override { return true; }
-  bool start_object(std::size_t) override { return true; }
-  bool key(string_t&) override { return true; }
-  bool end_object() override { return true; }
-  bool start_array(std::size_t) override { return true; }
-  bool end_array() override { return true; }
-  bool parse_error(std::size_t position, const std::string& last_token,
-                   const nlohmann::detail::exception& e) override {
-    // `position` counts the bytes read: the last one read is where the error shows. A number
-    // overflow is reported after the whole token, so point at its start instead.
-    offset = position > 0 ? position - 1 : 0;
-    if (e.id == 406 && position >= last_token.size()) offset = position - last_token.size();
-    // Escape bytes outside printable ASCII: the message may quote the invalid UTF-8 it rejects.
-    for (const char c : std::string_view(e.what())) {
-      const auto byte = static_cast<unsigned char>(c);
-      if (byte >= 0x20 && byte < 0x7F) {
-        message += c;
-      } else {
-        constexpr char kHex[] = "0123456789abcdef";
-        message += "\\x";
-        message += kHex[byte >> 4];
-        message += kHex[byte & 15];
-      }
-    }
-    if (message.rfind("[json.exception.", 0) == 0) message.erase(0, message.find("] ") + 2);
-    if (message.rfind("parse error at line", 0) == 0) message.erase(0, message.find(": ") + 2);
-    return false;
-  }
-
-  std::size_t offset = 0;
-  std::string message;
-};
 
 // ---------------------------------------------------------------------------------------------
 // Small helpers.
@@ -582,10 +363,10 @@ class Reader : public FootprintBuilder {
   std::size_t features_end_ = kNone;
   std::vector<std::size_t> feature_offsets_;
   std::vector<ParsedPiece> chunks_ = std::vector<ParsedPiece>(kGroup);
-  std::size_t parsed_group_ = kNone;  // the group chunks_ holds
-  bool validated_ = false;            // every group has been parsed once
-  std::optional<ErrorCatcher> catcher_;
-  bool redump_ = false;  // nlohmann accepted a text simdjson rejected
+  std::size_t parsed_group_ = kNone;         // the group chunks_ holds
+  bool validated_ = false;                   // every group has been parsed once
+  std::optional<SyntaxError> syntax_error_;  // nlohmann's verdict, once asked
+  bool redump_ = false;                      // nlohmann accepted a text simdjson rejected
 };
 
 // Thrown when a piece parsed after the walk began is not valid JSON; run() drops what was read.
@@ -649,7 +430,7 @@ bool Reader::prescan() {
     emit(base::Severity::kError, "GEO002", "file is empty; expected a GeoJSON object", kNone);
     return false;
   }
-  Layout layout = scan_layout(text_, root_offset_, geo_options_.max_depth);
+  json_text::Layout layout = json_text::scan_layout(text_, root_offset_, geo_options_.max_depth);
   if (const auto deep = layout.too_deep) {
     emit(base::Severity::kError, "GEO003",
          "arrays and objects nest deeper than " + std::to_string(geo_options_.max_depth) +
@@ -674,7 +455,8 @@ bool Reader::prescan_lines() {
     while (end > begin && blank(text_[end - 1])) --end;
     if (begin < end) {
       const std::string_view line = text_.substr(begin, end - begin);
-      if (const auto deep = scan_layout(line, line.size(), geo_options_.max_depth).too_deep) {
+      if (const auto deep =
+              json_text::scan_layout(line, line.size(), geo_options_.max_depth).too_deep) {
         emit(base::Severity::kError, "GEO003",
              "arrays and objects nest deeper than " + std::to_string(geo_options_.max_depth) +
                  " levels (GeoJsonOptions::max_depth)",
@@ -793,31 +575,29 @@ void Reader::ensure_valid() {
   }
 }
 
-// Whether nlohmann accepts the text: its validating SAX pass runs once, catcher_ keeps the error.
+// Whether nlohmann accepts the text: its validating SAX pass runs once, syntax_error_ keeps the
+// error.
 bool Reader::nlohmann_accepts() {
   if (sequence_) return nlohmann_accepts_lines();
-  if (!catcher_) {
-    catcher_.emplace();
-    const char* begin = text_.data();
-    json::sax_parse(begin, begin + text_.size(), &*catcher_);
-  }
-  return catcher_->message.empty();
+  if (!syntax_error_) syntax_error_ = json_text::first_syntax_error(text_);
+  return syntax_error_->message.empty();
 }
 
 // The same for a sequence, line by line: the first line it rejects holds the error.
 bool Reader::nlohmann_accepts_lines() {
-  if (!catcher_) {
+  if (!syntax_error_) {
+    syntax_error_.emplace();
     for (std::size_t i = 0; i < feature_offsets_.size(); ++i) {
-      catcher_.emplace();
-      const char* begin = text_.data() + feature_offsets_[i];
-      json::sax_parse(begin, text_.data() + feature_ends_[i], &*catcher_);
-      if (!catcher_->message.empty()) {
-        catcher_->offset += feature_offsets_[i];
+      SyntaxError line = json_text::first_syntax_error(
+          text_.substr(feature_offsets_[i], feature_ends_[i] - feature_offsets_[i]));
+      if (!line.message.empty()) {
+        line.offset += feature_offsets_[i];
+        syntax_error_ = std::move(line);
         break;
       }
     }
   }
-  return catcher_->message.empty();
+  return syntax_error_->message.empty();
 }
 
 // GEO001 from nlohmann's message for the error its SAX pass finds.
@@ -826,27 +606,26 @@ void Reader::syntax_failure() {
     emit(base::Severity::kError, "GEO001", "the JSON parser rejected this text", root_offset_);
     return;
   }
-  const ErrorCatcher& catcher = *catcher_;
-  std::string message = catcher.message;
+  const SyntaxError& error = *syntax_error_;
+  std::string message = error.message;
   std::vector<std::string> notes;
-  const std::string_view at = text_.substr(std::min(catcher.offset, text_.size()));
-  const std::size_t before =
-      text_.find_last_not_of(" \t\r\n", catcher.offset - (catcher.offset > 0));
+  const std::string_view at = text_.substr(std::min(error.offset, text_.size()));
+  const std::size_t before = text_.find_last_not_of(" \t\r\n", error.offset - (error.offset > 0));
   if (at.rfind("NaN", 0) == 0 || at.rfind("Infinity", 0) == 0 || at.rfind("nan", 0) == 0 ||
       at.rfind("inf", 0) == 0) {
     notes.push_back(message);
     message = "NaN and Infinity are not valid JSON numbers";
-  } else if (!at.empty() && (at[0] == ']' || at[0] == '}') && catcher.offset > 0 &&
+  } else if (!at.empty() && (at[0] == ']' || at[0] == '}') && error.offset > 0 &&
              before != std::string_view::npos && text_[before] == ',') {
     notes.push_back(message);
     message = std::string("trailing comma before '") + at[0] + "' is not allowed in JSON";
-  } else if (catcher.offset >= text_.size()) {
+  } else if (error.offset >= text_.size()) {
     notes.push_back("the file ends in the middle of a value: is it truncated?");
-  } else if (sequence_ && (catcher.offset + 1 >= text_.size() || text_[catcher.offset] == '\n' ||
-                           text_[catcher.offset + 1] == '\n')) {
+  } else if (sequence_ && (error.offset + 1 >= text_.size() || text_[error.offset] == '\n' ||
+                           text_[error.offset + 1] == '\n')) {
     notes.push_back("a GeoJSON sequence holds one whole Feature on each line");
   }
-  emit(base::Severity::kError, "GEO001", message, catcher.offset, std::move(notes));
+  emit(base::Severity::kError, "GEO001", message, error.offset, std::move(notes));
 }
 
 // Stage 3: structure.
