@@ -396,13 +396,23 @@ class OsmBuilder : public FootprintBuilder {
     properties_.set_text(index, "osm_type", feature.relation ? "relation" : "way");
     properties_.set_text(index, "osm_id", std::to_string(feature.id));
     if (!feature.problem.empty()) {
+      std::vector<std::string> notes;
+      if (feature.code == "OSM003" && !explained_cut_) {
+        // Most often the building crosses the border of an extract cut with a simple strategy.
+        notes.push_back(
+            "an extract cut at a border with osmium extract's 'simple' strategy (or a bounding-box "
+            "download) leaves out the nodes outside it; its default, 'complete_ways', keeps every "
+            "way whole");
+        explained_cut_ = true;
+      }
       feature_issue(index, true, feature.code.c_str(), feature.problem,
-                    {index, base::Span::whole(name_)});
+                    {index, base::Span::whole(name_)}, std::move(notes));
     }
   }
 
   std::string path_;
   const OsmOptions& osm_options_;
+  bool explained_cut_ = false;  // the first OSM003 says what usually causes it
 };
 
 }  // namespace
