@@ -1,5 +1,6 @@
 // Entity creation (graph-format.md §11 "Entity creation"): one round as a source, or one round
 // per impulse entity (what is made then descends from the impulse and inherits its attributes).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -133,6 +134,13 @@ void lots(NodeContext& c) {
     std::string error;
     if (!c.options().lots) c.error("no lots: give --lot LOTS.geojson or the parameter 'file'");
     if (!c.options().lots(file, lots, error)) c.error(error);
+    // The attributes the node's `index` writes: a lot property of that name is overwritten by the
+    // lot's number anyway, so it is left to it without a warning (lots.graph.json numbers its
+    // buildings in `building`, which every OpenStreetMap lot also has as a tag: `building=yes`).
+    std::vector<std::string_view> numbered;
+    for (const AttributeMapping& m : c.checked().node->attributes) {
+      if (m.node_attribute == "index") numbered.push_back(m.to);
+    }
     std::uint32_t index = 0;
     for (const LotInput& lot : lots) {
       const std::uint32_t number = lot.number.value_or(index);
@@ -153,6 +161,7 @@ void lots(NodeContext& c) {
           if (c.declared_type(spelled) && !lot.properties.contains(spelled))
             name = std::move(spelled);
         }
+        if (std::find(numbered.begin(), numbered.end(), name) != numbered.end()) continue;
         const std::optional<ValueType> type = c.declared_type(name);
         if (!type) {
           c.warning("W030", "GeoJSON property '" + name + "' is not a declared attribute; ignored");

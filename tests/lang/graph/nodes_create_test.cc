@@ -231,6 +231,39 @@ TEST(CreateNodes, LotPropertiesThatDoNotFitAreLeftOut) {
       << t.errors;
 }
 
+// A graph that numbers its lots in an attribute (lots.graph.json: `"index": "building"`) gets
+// each lot's number there; an OpenStreetMap lot's tag of that name (`building=yes`) would be
+// overwritten by it, so it is left out without a word. Other properties are read as ever.
+TEST(CreateNodes, ThePropertyTheIndexWritesIsLeftToIt) {
+  RunOptions options;
+  options.lots = [](const std::string&, std::vector<LotInput>& lots, std::string&) {
+    LotInput a;
+    a.footprint.outer = {{0, 0}, {10, 0}, {10, 20}, {0, 20}};
+    a.properties = {
+        {"building", std::string("yes")}, {"levels", 2.0}, {"roof", std::string("hip")}};
+    LotInput b = a;
+    b.footprint.outer = {{20, 0}, {30, 0}, {30, 20}, {20, 20}};
+    lots = {a, b};
+    return true;
+  };
+  const TestRun t = run_text(graph_text(R"(
+    "attributes": { "building": { "type": "integer", "default": -1 },
+                    "levels": { "type": "integer", "default": 1 } },
+    "nodes": [ { "id": "lots", "type": "create.lots", "attributes": { "index": "building" } } ])"),
+                             options);
+  ASSERT_TRUE(t.ok()) << t.errors;
+  const std::vector<EntityId> lots = t.at("lots.out");
+  ASSERT_EQ(lots.size(), 2U);
+  EXPECT_EQ(t.attribute(lots[0], "building")->integer(), 0);
+  EXPECT_EQ(t.attribute(lots[1], "building")->integer(), 1);
+  EXPECT_EQ(t.attribute(lots[1], "levels")->integer(), 2);
+  EXPECT_EQ(t.errors.find("'building'"), std::string::npos) << t.errors;
+  EXPECT_TRUE(
+      t.says("warning[W030]: GeoJSON property 'roof' is not a declared attribute; ignored "
+             "(node 'lots')"))
+      << t.errors;
+}
+
 TEST(CreateNodes, LotsWithoutAReader) {
   const TestRun t = run_text(graph_text(R"("nodes": [ { "id": "lots", "type": "create.lots" } ])"));
   ASSERT_FALSE(t.ok());
