@@ -161,6 +161,7 @@ void FootprintBuilder::report(base::Severity severity, const char* code, std::st
   if (stopped_) return;
   if (severity == base::Severity::kWarning && warnings_ >= options_.max_warnings) {
     ++suppressed_warnings_;
+    ++result_.unlisted_warnings[code != nullptr ? code : ""];
     return;
   }
   base::Diagnostic d = severity == base::Severity::kError

@@ -72,6 +72,9 @@ struct FootprintSet {
   // ("landuse=forest"; each once, in order of first use).
   std::size_t non_buildings = 0;
   std::vector<std::string> non_building_tags;
+  // Warnings past FootprintOptions::max_warnings, by code: not listed (the last diagnostic, an
+  // uncoded warning, says how many), counted here so a report can count every warning.
+  std::map<std::string, std::size_t> unlisted_warnings;
 };
 
 // What every footprint reader accepts (GeoJsonOptions and OsmOptions extend it).

@@ -40,6 +40,26 @@ expect_exit 0 "mass with unknown roofs" "$insula" mass "$tmp/domes.geojson" -o "
 [ "$(grep -c "warning\[MAS003\]" "$tmp/err.txt")" -eq 10 ] || fail "roofs: not 10 warning lines"
 grep -qx "insula: and 15 more like it (code MAS003)" "$tmp/err.txt" || fail "roofs: no summary line"
 
+# The reader's own warnings past the 100 it lists (here 150 points among the footprints, GEO017)
+# are counted by code all the same: 10 printed, one summary line, the report counts 150, and no
+# uncoded "more warnings not listed" line.
+awk 'BEGIN {
+  printf "{\"type\": \"FeatureCollection\", \"features\": ["
+  for (i = 0; i < 150; i++)
+    printf "{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"Point\", \"coordinates\": [%d, 0]}},", i
+  print "{\"type\": \"Feature\", \"properties\": {\"height\": 6}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[[0,0],[10,0],[10,8],[0,8],[0,0]]]}}]}"
+}' >"$tmp/points.geojson"
+expect_exit 0 "mass with 150 points" "$insula" mass "$tmp/points.geojson" --crs EPSG:32633 \
+  -o "$tmp/p.glb" --report "$tmp/p.json"
+[ "$(grep -c "warning\[GEO017\]" "$tmp/err.txt")" -eq 10 ] || fail "points: not 10 warning lines"
+grep -qx "insula: and 140 more like it (code GEO017)" "$tmp/err.txt" ||
+  { fail "points: no summary line"; cat "$tmp/err.txt"; }
+grep -q "not listed" "$tmp/err.txt" && fail "points: the reader's uncoded line was printed"
+node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+         if (r.warning_counts.GEO017 !== 150 || "none" in r.warning_counts) {
+           console.log(JSON.stringify(r.warning_counts)); process.exit(1); }' "$tmp/p.json" ||
+  fail "points report: 150 GEO017"
+
 # Progress, not a terminal: plain lines with counts and a rate (every update with interval 0).
 export INSULA_PROGRESS_SECONDS=0
 progress_lines() {  # noun total: how many plain progress lines err.txt holds

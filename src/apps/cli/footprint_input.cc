@@ -9,6 +9,7 @@
 #include "apps/cli/height_unit.h"
 #include "apps/cli/input_file.h"
 #include "apps/cli/s3db_parts.h"
+#include "apps/cli/warnings.h"
 #include "base/tag_numbers.h"
 #include "io/building_tags.h"
 #include "io/osm_reader.h"
@@ -22,6 +23,22 @@ base::Result<io::FootprintSet> read_osm_footprints(const std::string& path,
   return io::read_osm(path, osm);
 }
 
+namespace {
+
+// The reader's diagnostics, printed. Warnings it did not list (past its max_warnings) are counted
+// by code for the run's "and N more like it" lines and the report, in place of its closing
+// uncoded "N more warnings not listed" line, which names a library option.
+void print_read(const base::Result<io::FootprintSet>& set, const base::Source& source, bool quiet) {
+  std::vector<base::Diagnostic> diagnostics = set.diagnostics();
+  if (set.ok() && !set->unlisted_warnings.empty() && !diagnostics.empty()) {
+    diagnostics.pop_back();
+    for (const auto& [code, count] : set->unlisted_warnings) count_unlisted_warnings(code, count);
+  }
+  print_diagnostics(diagnostics, source, quiet);
+}
+
+}  // namespace
+
 std::optional<io::FootprintSet> read_footprints(const std::string& path,
                                                 const io::GeoJsonOptions& options, bool quiet) {
   if (io::is_osm_path(path)) {
@@ -32,7 +49,7 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
                                         [](const base::Diagnostic& d) { return d.span.line > 0; });
     const std::optional<std::string> text =
         positioned ? read_input_file(path) : std::optional<std::string>();
-    print_diagnostics(set.diagnostics(), base::Source(path, text.value_or("")), quiet);
+    print_read(set, base::Source(path, text.value_or("")), quiet);
     if (!set.ok()) return std::nullopt;
     return std::move(set.value());
   }
@@ -41,7 +58,7 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
   // Moved, not copied: a city's GeoJSON is hundreds of megabytes.
   const base::Source source(path, std::move(*text));
   base::Result<io::FootprintSet> set = io::read_geojson(source.text(), path, options);
-  print_diagnostics(set.diagnostics(), source, quiet);
+  print_read(set, source, quiet);
   if (!set.ok()) return std::nullopt;
   return std::move(set.value());
 }

@@ -15,6 +15,9 @@ inline constexpr std::size_t kWarningsPerCode = 10;
 
 // Counts a warning of `code` and prints `line` to stderr unless `quiet` or over the cap.
 void emit_warning(const std::string& code, const std::string& line, bool quiet);
+// Counts `count` warnings of `code` that a reader did not list (io::FootprintSet::
+// unlisted_warnings): they show in the "and N more like it" line and the counts.
+void count_unlisted_warnings(const std::string& code, std::size_t count);
 // Prints the "and N more like it" lines (unless `quiet`), in code order; only the first call does
 // (a command calls it before its closing line, main() after every command).
 void finish_warnings(bool quiet);
