@@ -108,4 +108,15 @@ expect_exit 1 "bad lots" "$insula" build "$graph" --lot "$tmp/bad.geojson" --crs
   -o "$tmp/b/tileset.json"
 grep -q "bad.geojson" "$tmp/err.txt" || { fail "bad lots: the file is not named"; cat "$tmp/err.txt"; }
 [ -e "$tmp/b" ] && fail "bad lots: an output folder was left"
+# The lots reader's warnings show, once per file (a repeated vertex, removed: GEO025), in the
+# whole-graph run and tile by tile alike.
+printf '%s' '{"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
+  "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 0], [10, 0], [10, 8], [0, 8],
+  [0, 0]]]}}]}' >"$tmp/repeated.geojson"
+for out in repeated.glb repeated/tileset.json; do
+  expect_exit 0 "lots with a repeated vertex, $out" "$insula" build "$graph" \
+    --lot "$tmp/repeated.geojson" --crs EPSG:32633 -o "$tmp/$out"
+  [ "$(grep -c "warning\[GEO025\]: feature 0: polygon: outer ring: vertex 2 repeats vertex 1" \
+    "$tmp/err.txt")" -eq 1 ] || { fail "repeated vertex, $out: not warned once"; cat "$tmp/err.txt"; }
+done
 finish graph_tiles

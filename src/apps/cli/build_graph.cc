@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <set>
+#include <string>
 #include <thread>
 
 #include "apps/cli/asset_folders.h"
@@ -43,6 +45,7 @@ struct LotFiles {
   // Over every file read: features skipped as invalid (--keep-going) and lots left out.
   std::size_t invalid = 0;
   LeftOutLots left;
+  std::set<std::string> reported;  // files whose reader warnings were printed
 
   // The report's counts of the lots not built; nothing when no lots file was read.
   void add_counts(nlohmann::json& report) const {
@@ -68,9 +71,10 @@ struct LotFiles {
     const io::GeoJsonOptions reading =
         building_options(geojson_options(options.crs, options.keep_going));
     std::optional<base::Result<io::FootprintSet>> read;
+    std::optional<std::string> text;
     if (io::is_osm_path(path)) {
       read = read_osm_footprints(path, reading);
-    } else if (const std::optional<std::string> text = read_input_file(path)) {
+    } else if ((text = read_input_file(path))) {
       read = io::read_geojson(*text, path, reading);
     } else {
       error = path + ": " + read_failure(path);
@@ -81,6 +85,11 @@ struct LotFiles {
       error = set.diagnostics().empty() ? path + ": unreadable"
                                         : base::render(set.diagnostics().front());
       return false;
+    }
+    // The reader's warnings (repairs, geometries skipped), once per file however often a graph's
+    // create.lots reads it.
+    if (reported.insert(path).second) {
+      print_footprint_read(set, base::Source(path, std::move(text).value_or("")), options.quiet);
     }
     if (read_any && (set->origin.x != origin.x || set->origin.y != origin.y || set->crs != crs)) {
       error = path + ": its coordinates are in another frame than the first lots file's";
@@ -163,7 +172,7 @@ int build_graph(const BuildOptions& options) {
     attributes.push_back(d.name);
   }
   const FrontEndRules rules(folder, attributes, &assets);
-  LotFiles lot_files{options, folder, false, {}, {}, 0, {}};
+  LotFiles lot_files{options, folder, false, {}, {}, 0, {}, {}};
 
   lang::graph::RunOptions run;
   if (!options.probe.empty()) {

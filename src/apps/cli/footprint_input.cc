@@ -23,21 +23,15 @@ base::Result<io::FootprintSet> read_osm_footprints(const std::string& path,
   return io::read_osm(path, osm);
 }
 
-namespace {
-
-// The reader's diagnostics, printed. Warnings it did not list (past its max_warnings) are counted
-// by code for the run's "and N more like it" lines and the report, in place of its closing
-// uncoded "N more warnings not listed" line, which names a library option.
-void print_read(const base::Result<io::FootprintSet>& set, const base::Source& source, bool quiet) {
+void print_footprint_read(const base::Result<io::FootprintSet>& set, const base::Source& source,
+                          bool quiet) {
   std::vector<base::Diagnostic> diagnostics = set.diagnostics();
   if (set.ok() && !set->unlisted_warnings.empty() && !diagnostics.empty()) {
-    diagnostics.pop_back();
+    diagnostics.pop_back();  // the reader's count, given per code below
     for (const auto& [code, count] : set->unlisted_warnings) count_unlisted_warnings(code, count);
   }
   print_diagnostics(diagnostics, source, quiet);
 }
-
-}  // namespace
 
 std::optional<io::FootprintSet> read_footprints(const std::string& path,
                                                 const io::GeoJsonOptions& options, bool quiet) {
@@ -49,7 +43,7 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
                                         [](const base::Diagnostic& d) { return d.span.line > 0; });
     const std::optional<std::string> text =
         positioned ? read_input_file(path) : std::optional<std::string>();
-    print_read(set, base::Source(path, text.value_or("")), quiet);
+    print_footprint_read(set, base::Source(path, text.value_or("")), quiet);
     if (!set.ok()) return std::nullopt;
     return std::move(set.value());
   }
@@ -58,7 +52,7 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
   // Moved, not copied: a city's GeoJSON is hundreds of megabytes.
   const base::Source source(path, std::move(*text));
   base::Result<io::FootprintSet> set = io::read_geojson(source.text(), path, options);
-  print_read(set, source, quiet);
+  print_footprint_read(set, source, quiet);
   if (!set.ok()) return std::nullopt;
   return std::move(set.value());
 }

@@ -58,4 +58,10 @@ std::size_t note_non_buildings(const io::FootprintSet& set, bool quiet);
 base::Result<io::FootprintSet> read_osm_footprints(const std::string& path,
                                                    const io::GeoJsonOptions& options);
 
+// Prints a footprint reader's diagnostics (warnings unless `quiet`). Warnings it did not list
+// (past its max_warnings) are counted by code for the run's "and N more like it" lines and the
+// report, in place of its closing uncoded "N more warnings not listed" line.
+void print_footprint_read(const base::Result<io::FootprintSet>& set, const base::Source& source,
+                          bool quiet);
+
 }  // namespace insula::cli
