@@ -160,7 +160,6 @@ void FootprintBuilder::report(base::Severity severity, const char* code, std::st
                               const Location& where, std::vector<std::string> notes) {
   if (stopped_) return;
   if (severity == base::Severity::kWarning && warnings_ >= options_.max_warnings) {
-    ++suppressed_warnings_;
     ++result_.unlisted_warnings[code != nullptr ? code : ""];
     return;
   }
@@ -787,20 +786,23 @@ void FootprintBuilder::finish_features(const Location& crs_at) {
       features_.begin(), features_.end(), [](const RawFootprint& f) { return f.failed; }));
 }
 
-// Diagnostics in input order (those without a position last), then the count of unlisted
-// warnings.
+// Diagnostics in input order (those without a position last), then a note per code of the
+// warnings past max_warnings that were counted and not listed (FootprintSet::unlisted_warnings
+// holds the same counts when the read succeeds).
 base::Result<FootprintSet> FootprintBuilder::result() {
   std::stable_sort(pending_.begin(), pending_.end(),
                    [](const Pending& a, const Pending& b) { return a.order < b.order; });
   std::vector<base::Diagnostic> diagnostics;
-  diagnostics.reserve(pending_.size() + 1);
+  diagnostics.reserve(pending_.size() + result_.unlisted_warnings.size());
   for (Pending& p : pending_) diagnostics.push_back(std::move(p.diagnostic));
-  if (suppressed_warnings_ > 0) {
-    diagnostics.push_back(base::Diagnostic::warning(
-        "",
-        std::to_string(suppressed_warnings_) + " more warnings not listed (" + options_name_ +
-            "::max_warnings = " + std::to_string(options_.max_warnings) + ")",
-        base::Span::whole(name_)));
+  for (const auto& [code, count] : result_.unlisted_warnings) {
+    base::Diagnostic note = base::Diagnostic::warning(
+        code,
+        std::to_string(count) + " more warning" + (count == 1 ? "" : "s") +
+            (code.empty() ? "" : " of this code") + " not listed",
+        base::Span::whole(name_));
+    note.severity = base::Severity::kNote;
+    diagnostics.push_back(std::move(note));
   }
   if (errors_ > 0) return base::Result<FootprintSet>::failure(std::move(diagnostics));
   return base::Result<FootprintSet>(std::move(result_), std::move(diagnostics));

@@ -72,8 +72,9 @@ struct FootprintSet {
   // ("landuse=forest"; each once, in order of first use).
   std::size_t non_buildings = 0;
   std::vector<std::string> non_building_tags;
-  // Warnings past FootprintOptions::max_warnings, by code: not listed (the last diagnostic, an
-  // uncoded warning, says how many), counted here so a report can count every warning.
+  // Warnings past FootprintOptions::max_warnings, by code: not listed, counted here so a report
+  // can count every warning. The diagnostics end with a note per code that gives the same count
+  // (so a failed read, which has no FootprintSet, still says how many).
   std::map<std::string, std::size_t> unlisted_warnings;
 };
 
@@ -245,7 +246,6 @@ class FootprintBuilder {
   bool holding_ = true;                           // until finish_features()
   std::set<std::string, std::less<>> area_tags_;  // FootprintSet::non_building_tags, as a set
   std::size_t warnings_ = 0;
-  std::size_t suppressed_warnings_ = 0;
   bool hinted_skip_ = false;
   std::map<std::string, bool, std::less<>> warned_repair_;
 };

@@ -59,6 +59,24 @@ node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
          if (r.warning_counts.GEO017 !== 150 || "none" in r.warning_counts) {
            console.log(JSON.stringify(r.warning_counts)); process.exit(1); }' "$tmp/p.json" ||
   fail "points report: 150 GEO017"
+# The same file with a sliver (an error): the read fails, the error is quoted, and the warnings
+# the reader did not list are counted in a note of their code. A graph's create.lots points at
+# the error above, not at the first warning (it quoted the first GEO017 as its error before).
+sed 's/\]}$/,{"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0,20],[10,20],[10,20.01],[0,20.01],[0,20]]]}}]}/' \
+  "$tmp/points.geojson" >"$tmp/sliver.geojson"
+for input in "$root/examples/cga/district.cga" "$root/examples/graph/city/lots.graph.json"; do
+  what="sliver with $(basename "$input")"
+  expect_exit 1 "$what" "$insula" build "$input" --lot "$tmp/sliver.geojson" --crs EPSG:32633 \
+    -o "$tmp/s.glb"
+  grep -q "sliver.geojson:1:[0-9]*: error\[GEO028\]: feature 151: polygon: a sliver" "$tmp/err.txt" ||
+    { fail "$what: the error is not quoted"; cat "$tmp/err.txt"; }
+  grep -qx "$tmp/sliver.geojson: note\[GEO017\]: 50 more warnings of this code not listed" \
+    "$tmp/err.txt" || { fail "$what: no note of the unlisted warnings"; cat "$tmp/err.txt"; }
+  grep -q "not listed (" "$tmp/err.txt" && fail "$what: the reader's option is named"
+done
+grep -q "error\[G052\]: $tmp/sliver.geojson: the lots could not be read (1 error above) (node 'lots')" \
+  "$tmp/err.txt" || { fail "graph sliver: the node's error"; cat "$tmp/err.txt"; }
+grep -q "error\[G052\].*warning\[" "$tmp/err.txt" && fail "graph sliver: a warning as the node's error"
 
 # Progress, not a terminal: plain lines with counts and a rate (every update with interval 0).
 export INSULA_PROGRESS_SECONDS=0

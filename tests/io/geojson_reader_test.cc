@@ -882,9 +882,16 @@ TEST(GeoJsonReader, ErrorsAreCappedAndWarningsCounted) {
   ASSERT_TRUE(warned.ok());
   EXPECT_EQ(warned->footprints.size(), 30u);
   ASSERT_EQ(warned.diagnostics().size(), 11u);
+  // The warnings past the 10 listed are counted by code, in the set and in a closing note that a
+  // failed read (no set) keeps.
   EXPECT_EQ(headline(warned.diagnostics().back()),
-            "test.geojson: warning: 20 more warnings not listed (GeoJsonOptions::max_warnings = "
-            "10)");
+            "test.geojson: note[GEO011]: 20 more warnings of this code not listed");
+  EXPECT_EQ(warned->unlisted_warnings, (std::map<std::string, std::size_t>{{"GEO011", 20}}));
+  open.push_back(feature("", "{}", polygon("[[0, 0], [1, 0]]")));
+  const auto warned_and_failed = read(collection(open), options);
+  ASSERT_FALSE(warned_and_failed.ok());
+  EXPECT_EQ(headline(warned_and_failed.diagnostics().back()),
+            "test.geojson: note[GEO011]: 20 more warnings of this code not listed");
 }
 
 TEST(GeoJsonReader, DepthLimitIsAnOption) {

@@ -82,8 +82,14 @@ struct LotFiles {
     }
     base::Result<io::FootprintSet>& set = *read;
     if (!set.ok()) {
-      error = set.diagnostics().empty() ? path + ": unreadable"
-                                        : base::render(set.diagnostics().front());
+      // Every finding of the reader, quoted where it is, then the node's error that points at
+      // them (before 2026-11-29 the node quoted the first diagnostic, often a warning).
+      print_footprint_read(set, base::Source(path, std::move(text).value_or("")), options.quiet);
+      const auto errors = std::count_if(
+          set.diagnostics().begin(), set.diagnostics().end(),
+          [](const base::Diagnostic& d) { return d.severity == base::Severity::kError; });
+      error = path + ": the lots could not be read (" + std::to_string(errors) + " error" +
+              (errors == 1 ? "" : "s") + " above)";
       return false;
     }
     // The reader's warnings (repairs, geometries skipped), once per file however often a graph's

@@ -111,10 +111,10 @@ int run_check(const CheckOptions& options) {
 void print_diagnostics(const std::vector<base::Diagnostic>& diagnostics, const base::Source& source,
                        bool quiet) {
   for (const base::Diagnostic& d : diagnostics) {
-    if (d.severity == base::Severity::kError) {
+    if (d.severity == base::Severity::kError || (d.severity == base::Severity::kNote && !quiet)) {
       clear_progress_line();
       std::fprintf(stderr, "%s\n", base::render(d, &source).c_str());
-    } else {
+    } else if (d.severity == base::Severity::kWarning) {
       emit_warning(d.code, base::render(d, &source), quiet);
     }
   }

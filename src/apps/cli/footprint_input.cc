@@ -26,8 +26,10 @@ base::Result<io::FootprintSet> read_osm_footprints(const std::string& path,
 void print_footprint_read(const base::Result<io::FootprintSet>& set, const base::Source& source,
                           bool quiet) {
   std::vector<base::Diagnostic> diagnostics = set.diagnostics();
-  if (set.ok() && !set->unlisted_warnings.empty() && !diagnostics.empty()) {
-    diagnostics.pop_back();  // the reader's count, given per code below
+  if (set.ok()) {
+    // The reader's closing notes, one per code, are given to the run's tally instead.
+    std::erase_if(diagnostics,
+                  [](const base::Diagnostic& d) { return d.severity == base::Severity::kNote; });
     for (const auto& [code, count] : set->unlisted_warnings) count_unlisted_warnings(code, count);
   }
   print_diagnostics(diagnostics, source, quiet);

@@ -60,7 +60,8 @@ base::Result<io::FootprintSet> read_osm_footprints(const std::string& path,
 
 // Prints a footprint reader's diagnostics (warnings unless `quiet`). Warnings it did not list
 // (past its max_warnings) are counted by code for the run's "and N more like it" lines and the
-// report, in place of its closing uncoded "N more warnings not listed" line.
+// report, in place of its closing notes that count them; a failed read, which has no counts to
+// give, prints those notes.
 void print_footprint_read(const base::Result<io::FootprintSet>& set, const base::Source& source,
                           bool quiet);
 
