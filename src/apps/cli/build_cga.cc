@@ -245,10 +245,11 @@ int build_cga(const BuildOptions& options) {
   }
   if (failed) return kExitInput;
 
+  report.update(cga_report(p, cga::totals(p, results), lots->lots.size()));
   clock = Stopwatch();
   shape::Scene scene;
   if (!options.outputs.empty()) {
-    scene = cga::to_scene(p, lots->lots, results, derive.share_inserts);
+    scene = cga::to_scene(p, lots->lots, std::move(results), derive.share_inserts);
     scene.origin = lots->origin;
     scene.crs = lots->crs;
   }
@@ -256,7 +257,6 @@ int build_cga(const BuildOptions& options) {
   const std::vector<io::TextureFailure> textures = io::load_textures(scene, search);
   seconds["scene"] = clock.seconds();
 
-  report.update(cga_report(p, cga::totals(p, results), lots->lots.size()));
   report_missing_assets(library.failures(), options.input, options.quiet, report);
   report_missing_textures(textures, options.input, options.quiet, report);
   report["seconds"].update(seconds);

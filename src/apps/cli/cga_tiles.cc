@@ -54,7 +54,8 @@ double faces_per_square_metre(const CgaCity& city) {
     lots.push_back(city.lots[i]);
     area += area_of(city.lots[i].polygons);
   }
-  const shape::Scene scene = cga::to_scene(city.program, lots, results, city.derive.share_inserts);
+  const shape::Scene scene =
+      cga::to_scene(city.program, lots, std::move(results), city.derive.share_inserts);
   std::size_t faces = 0;
   for (const shape::Building& building : scene.buildings) faces += io::building_faces(building);
   return area > 0 ? static_cast<double>(faces) / area : 0;
@@ -133,8 +134,10 @@ TileContent derive_tile(const CgaCity& city, const std::vector<std::size_t>& mem
   std::vector<cga::Lot> lots;
   lots.reserve(members.size());
   for (const std::size_t i : members) lots.push_back(city.lots[i]);
-  shape::Scene scene = cga::to_scene(city.program, lots, results, city.derive.share_inserts, true);
-  results.clear();  // the terminal records, before the meshes are written
+  // The terminal records are freed lot by lot as the buildings are made, before the meshes are
+  // written.
+  shape::Scene scene =
+      cga::to_scene(city.program, lots, std::move(results), city.derive.share_inserts, true);
   tally["textures"] = Json::object();
   for (const io::TextureFailure& f : io::load_textures(scene, city.search)) {
     tally["textures"][f.name] = f.error;

@@ -246,7 +246,7 @@ std::shared_ptr<const lang::graph::Model> FrontEndRules::run(
   // One part per symbol and attribute set: a facade's hundreds of terminals become a dozen
   // meshes, so a city of 10,000 lots keeps its parts countable (docs/graph-executor.md).
   // Parts with texture coordinates join only parts with the same map.
-  shape::Scene scene = cga::to_scene(*program->cga, lots, results, false, true);
+  shape::Scene scene = cga::to_scene(*program->cga, lots, std::move(results), false, true);
   auto model = std::make_shared<lang::graph::Model>();
   model->materials = std::move(scene.materials);
   for (shape::Building& b : scene.buildings) {

@@ -307,10 +307,10 @@ ChainLook chain_look(const Program& program, const LotResult& r, std::uint32_t c
   return look;
 }
 
-}  // namespace
-
-shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
-                      const std::vector<LotResult>& results, bool instances, bool merge_alike) {
+// to_scene's work; with `consumed`, each lot's records are freed once its building is made.
+shape::Scene make_scene(const Program& program, const std::vector<Lot>& lots,
+                        const std::vector<LotResult>& results, bool instances, bool merge_alike,
+                        std::vector<LotResult>* consumed) {
   shape::Scene scene;
   // By (colour, colour map): a textured material without a colour is white (CityEngine's).
   std::map<std::pair<std::string, std::string>, kernel::MaterialId> materials;
@@ -395,7 +395,22 @@ shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
       }
     }
     if (!building.parts.empty()) scene.buildings.push_back(std::move(building));
+    if (consumed != nullptr) (*consumed)[i] = LotResult();
   }
+  return scene;
+}
+
+}  // namespace
+
+shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
+                      const std::vector<LotResult>& results, bool instances, bool merge_alike) {
+  return make_scene(program, lots, results, instances, merge_alike, nullptr);
+}
+
+shape::Scene to_scene(const Program& program, const std::vector<Lot>& lots,
+                      std::vector<LotResult>&& results, bool instances, bool merge_alike) {
+  shape::Scene scene = make_scene(program, lots, results, instances, merge_alike, &results);
+  results.clear();
   return scene;
 }
 

@@ -228,6 +228,32 @@ TEST(Derive, PushPopAndInsertionBuildThePaperMassModel) {
   EXPECT_EQ(scene.buildings[0].parts[0].mesh.face_count(), 6U);
 }
 
+TEST(Derive, AConsumingSceneIsTheSameSceneAndFreesTheRecords) {
+  auto p = compile_text(R"(
+attr height = 9
+Lot --> extrude(height) comp(f) { front: Facade | side: Wall | top: Roof }
+Facade --> split(x) { ~3: Window | ~3: Window | ~3: Window }
+)");
+  const std::vector<Lot> lots{rectangle_lot(20, 12), rectangle_lot(9, 7)};
+  std::vector<LotResult> r = derive_all(*p, lots);
+  ASSERT_TRUE(r[0].ok && r[1].ok);
+  const shape::Scene kept = to_scene(*p, lots, r);
+  const shape::Scene consumed = to_scene(*p, lots, std::move(r));
+  EXPECT_TRUE(r.empty());  // NOLINT(bugprone-use-after-move): the overload leaves it empty
+  ASSERT_EQ(consumed.buildings.size(), kept.buildings.size());
+  for (std::size_t b = 0; b < kept.buildings.size(); ++b) {
+    const auto& a = kept.buildings[b].parts;
+    const auto& c = consumed.buildings[b].parts;
+    ASSERT_EQ(c.size(), a.size());
+    EXPECT_GT(a.size(), 3U);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(c[i].name, a[i].name);
+      EXPECT_EQ(c[i].attributes, a[i].attributes);
+      EXPECT_EQ(c[i].mesh.positions(), a[i].mesh.positions());
+    }
+  }
+}
+
 TEST(Derive, PrintReportAndColor) {
   auto p = compile_text(R"(
 Lot --> print("lot", Scope.sx) split("x"){ 2: A | 3: B }
