@@ -77,6 +77,14 @@ done
 grep -q "error\[G052\]: $tmp/sliver.geojson: the lots could not be read (1 error above) (node 'lots')" \
   "$tmp/err.txt" || { fail "graph sliver: the node's error"; cat "$tmp/err.txt"; }
 grep -q "error\[G052\].*warning\[" "$tmp/err.txt" && fail "graph sliver: a warning as the node's error"
+# An OpenStreetMap file that is not XML: its line is quoted under the error, for a graph's lots
+# as for CGA's (the graph printed no source line before).
+printf '<?xml version="1.0"?>\n<osm version="0.6">\n<node id="1" lat="47.1" lon="9.5"/>\n<way id="2"><nd ref="1"/>\n</osm>\n' >"$tmp/broken.osm"
+for input in "$root/examples/cga/district.cga" "$root/examples/graph/city/lots.graph.json"; do
+  expect_exit 1 "broken XML with $(basename "$input")" "$insula" build "$input" --lot "$tmp/broken.osm" -o "$tmp/s.glb"
+  grep -A1 "broken.osm:5:3: error\[OSM001\]: not valid OSM XML" "$tmp/err.txt" | grep -qx "</osm>" ||
+    { fail "broken XML with $(basename "$input"): the line is not quoted"; cat "$tmp/err.txt"; }
+done
 
 # Progress, not a terminal: plain lines with counts and a rate (every update with interval 0).
 export INSULA_PROGRESS_SECONDS=0

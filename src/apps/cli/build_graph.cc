@@ -81,10 +81,13 @@ struct LotFiles {
       return false;
     }
     base::Result<io::FootprintSet>& set = *read;
+    const auto source = [&] {
+      return text ? base::Source(path, std::move(*text)) : osm_source(path, set);
+    };
     if (!set.ok()) {
       // Every finding of the reader, quoted where it is, then the node's error that points at
       // them (before 2026-11-29 the node quoted the first diagnostic, often a warning).
-      print_footprint_read(set, base::Source(path, std::move(text).value_or("")), options.quiet);
+      print_footprint_read(set, source(), options.quiet);
       const auto errors = std::count_if(
           set.diagnostics().begin(), set.diagnostics().end(),
           [](const base::Diagnostic& d) { return d.severity == base::Severity::kError; });
@@ -94,9 +97,7 @@ struct LotFiles {
     }
     // The reader's warnings (repairs, geometries skipped), once per file however often a graph's
     // create.lots reads it.
-    if (reported.insert(path).second) {
-      print_footprint_read(set, base::Source(path, std::move(text).value_or("")), options.quiet);
-    }
+    if (reported.insert(path).second) print_footprint_read(set, source(), options.quiet);
     if (read_any && (set->origin.x != origin.x || set->origin.y != origin.y || set->crs != crs)) {
       error = path + ": its coordinates are in another frame than the first lots file's";
       return false;

@@ -23,6 +23,16 @@ base::Result<io::FootprintSet> read_osm_footprints(const std::string& path,
   return io::read_osm(path, osm);
 }
 
+base::Source osm_source(const std::string& path, const base::Result<io::FootprintSet>& set) {
+  // OSM messages name the element; only an XML syntax error has a line to quote, and only then
+  // is the text read.
+  const bool positioned = std::any_of(set.diagnostics().begin(), set.diagnostics().end(),
+                                      [](const base::Diagnostic& d) { return d.span.line > 0; });
+  const std::optional<std::string> text =
+      positioned ? read_input_file(path) : std::optional<std::string>();
+  return base::Source(path, text.value_or(""));
+}
+
 void print_footprint_read(const base::Result<io::FootprintSet>& set, const base::Source& source,
                           bool quiet) {
   std::vector<base::Diagnostic> diagnostics = set.diagnostics();
@@ -39,13 +49,7 @@ std::optional<io::FootprintSet> read_footprints(const std::string& path,
                                                 const io::GeoJsonOptions& options, bool quiet) {
   if (io::is_osm_path(path)) {
     base::Result<io::FootprintSet> set = read_osm_footprints(path, options);
-    // OSM messages name the element; only an XML syntax error has a line to quote, and only
-    // then is the text read.
-    const bool positioned = std::any_of(set.diagnostics().begin(), set.diagnostics().end(),
-                                        [](const base::Diagnostic& d) { return d.span.line > 0; });
-    const std::optional<std::string> text =
-        positioned ? read_input_file(path) : std::optional<std::string>();
-    print_footprint_read(set, base::Source(path, text.value_or("")), quiet);
+    print_footprint_read(set, osm_source(path, set), quiet);
     if (!set.ok()) return std::nullopt;
     return std::move(set.value());
   }

@@ -58,6 +58,10 @@ std::size_t note_non_buildings(const io::FootprintSet& set, bool quiet);
 base::Result<io::FootprintSet> read_osm_footprints(const std::string& path,
                                                    const io::GeoJsonOptions& options);
 
+// The source an OpenStreetMap file's diagnostics are quoted from: its text only when one of
+// them has a line (an XML syntax error), since a .osm.pbf or a city's XML is large.
+base::Source osm_source(const std::string& path, const base::Result<io::FootprintSet>& set);
+
 // Prints a footprint reader's diagnostics (warnings unless `quiet`). Warnings it did not list
 // (past its max_warnings) are counted by code for the run's "and N more like it" lines and the
 // report, in place of its closing notes that count them; a failed read, which has no counts to
