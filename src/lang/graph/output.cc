@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -155,8 +156,12 @@ class LotNames {
     if (lot_ids != nullptr) taken_.insert(lot_ids->begin(), lot_ids->end());
   }
 
-  // Whether `entity` descends from a lot of create.lots.
-  bool from_lot(EntityId entity) const { return lot_of(entity) != by_lineage_.end(); }
+  // The lineage of the lot of create.lots `entity` descends from, if any.
+  std::optional<std::uint32_t> lot(EntityId entity) const {
+    const auto found = lot_of(entity);
+    if (found == by_lineage_.end()) return std::nullopt;
+    return found->first;
+  }
 
   std::string next(EntityId entity) {
     const auto lot = lot_of(entity);
@@ -181,6 +186,17 @@ class LotNames {
   std::set<std::string> taken_;
 };
 
+// What makes result shapes one building: the lot they descend from, and within it (or where
+// there is none) their value of the top-level attribute `building`. So a lot's shapes are one
+// building unless the graph numbers them apart, and a `building` the lot brings (OpenStreetMap's
+// `building=yes`) cannot join two lots.
+struct BuildingGroup {
+  std::optional<std::uint32_t> lot;  // lineage of the lot
+  std::string value;                 // of `building`, "" when it has none
+
+  auto operator<=>(const BuildingGroup&) const = default;
+};
+
 }  // namespace
 
 shape::Scene to_scene(const RunResult& run, const std::set<std::string>* lot_ids) {
@@ -198,7 +214,7 @@ shape::Scene to_scene(const RunResult& run, const std::set<std::string>* lot_ids
   for (const auto& [key, name] : run.attribute_names) {
     if (name == "building") building_key = key;
   }
-  std::map<std::string, std::size_t> by_value;
+  std::map<BuildingGroup, std::size_t> by_group;
   LotNames lot_names(run, lot_ids);
   std::map<MaterialKey, kernel::MaterialId> known;  // rule nodes' materials, each once
   std::vector<PartIndex> part_index;                // per building
@@ -224,19 +240,18 @@ shape::Scene to_scene(const RunResult& run, const std::set<std::string>* lot_ids
       continue;
     }
     if (e.type != EntityType::kShape) continue;
-    const Value* key = building_key ? run.entities.attribute(r.entity, *building_key) : nullptr;
+    const Value* group = building_key ? run.entities.attribute(r.entity, *building_key) : nullptr;
+    const std::optional<std::uint32_t> lot = lot_names.lot(r.entity);
     std::size_t index = scene.buildings.size();
-    if (key != nullptr) {
-      const auto [it, added] = by_value.emplace(to_string(*key), index);
-      index = it->second;
-      if (!added) key = nullptr;
+    if (lot || group != nullptr) {
+      index =
+          by_group.emplace(BuildingGroup{lot, group ? to_string(*group) : ""}, index).first->second;
     }
     if (index == scene.buildings.size()) {
       shape::Building b;
       // A building on a lot is named after the lot (its input id) even when its shapes are
       // grouped by `building`: the lot is what a user finds it by.
-      b.id = key != nullptr && !lot_names.from_lot(r.entity) ? "building_" + to_string(*key)
-                                                             : lot_names.next(r.entity);
+      b.id = group != nullptr && !lot ? "building_" + to_string(*group) : lot_names.next(r.entity);
       for (const auto& [name, value] : top_attributes(run, r.entity)) {
         b.attributes[name] = export_value(*value);
       }

@@ -195,14 +195,76 @@ TEST(CreateNodes, NumberedLotsGiveWhatTheWholeRunGives) {
   }
   EXPECT_NE(whole.attribute(whole_tops[0], "h")->number(),
             whole.attribute(whole_tops[1], "h")->number());
-  // Buildings are named after their lots: the first `<lot>`, then `<lot>/2`, ...; a lot without an
-  // id is `lot_<number>`.
+  // A lot's shapes (its top and four walls) are one building, named after the lot; a lot without
+  // an id is `lot_<number>`.
   const shape::Scene scene = to_scene(*some.run);
   std::vector<std::string> ids;
   for (const shape::Building& b : scene.buildings) ids.push_back(b.id);
-  EXPECT_EQ(
-      ids, (std::vector<std::string>{"lot_3", "way/101", "lot_3/2", "lot_3/3", "lot_3/4", "lot_3/5",
-                                     "way/101/2", "way/101/3", "way/101/4", "way/101/5"}));
+  EXPECT_EQ(ids, (std::vector<std::string>{"lot_3", "way/101"}));
+  EXPECT_EQ(scene.buildings[0].parts.size(), 2U);  // faces.top and faces.walls
+}
+
+// Two lots read as <lot>, and a lot's shapes that the graph numbers apart in `building` (a lot
+// split into two houses) are two buildings: the lot's id, then `<lot>/2`.
+TEST(CreateNodes, ALotsShapesNumberedApartAreBuildingsOfTheLot) {
+  RunOptions options;
+  options.lots = [](const std::string&, std::vector<LotInput>& lots, std::string&) {
+    lots.resize(2);
+    lots[0].footprint.outer = {{0, 0}, {20, 0}, {20, 10}, {0, 10}};
+    lots[0].id = "way/1";
+    lots[1].footprint.outer = {{30, 0}, {50, 0}, {50, 10}, {30, 10}};
+    lots[1].id = "way/2";
+    return true;
+  };
+  const TestRun t = run_text(graph_text(R"json(
+    "attributes": { "building": { "type": "integer", "default": -1 } },
+    "nodes": [ { "id": "lots", "type": "create.lots" },
+               { "id": "houses", "type": "shape.split", "params": { "axis": "x" },
+                 "augment": [ { "size": "~1", "out": "out" }, { "size": "~1", "out": "out" } ],
+                 "attributes": { "index": "building" } },
+               { "id": "mass", "type": "shape.extrude", "params": { "height": 6 } } ],
+    "edges": [ "lots.out -> houses.in", "houses.out -> mass.in" ])json"),
+                             options);
+  ASSERT_TRUE(t.ok()) << t.errors;
+  const shape::Scene scene = to_scene(*t.run);
+  std::vector<std::string> ids;
+  for (const shape::Building& b : scene.buildings) ids.push_back(b.id);
+  EXPECT_EQ(ids, (std::vector<std::string>{"way/1", "way/1/2", "way/2", "way/2/2"}));
+}
+
+// An OpenStreetMap lot brings its `building` tag (yes, house); a graph that declares `building`
+// keeps it, and two lots of equal tags stay two buildings, each with its tag (they were one
+// building, `building=yes` grouping every lot's shapes together).
+TEST(CreateNodes, LotsOfOneBuildingTagStayApartAndKeepTheirTag) {
+  RunOptions options;
+  options.lots = [](const std::string&, std::vector<LotInput>& lots, std::string&) {
+    lots.resize(3);
+    for (std::size_t i = 0; i < lots.size(); ++i) {
+      const double x = 20.0 * static_cast<double>(i);
+      lots[i].footprint.outer = {{x, 0}, {x + 10, 0}, {x + 10, 10}, {x, 10}};
+      lots[i].id = "way/" + std::to_string(i + 1);
+      lots[i].properties = {{"building", std::string(i == 2 ? "house" : "yes")}};
+    }
+    return true;
+  };
+  const TestRun t = run_text(graph_text(R"json(
+    "attributes": { "building": { "type": "string", "default": "" } },
+    "nodes": [ { "id": "lots", "type": "create.lots" },
+               { "id": "mass", "type": "shape.extrude", "params": { "height": 6 } },
+               { "id": "faces", "type": "shape.comp",
+                 "augment": [ { "faces": "top", "out": "top" }, { "faces": "side", "out": "walls" } ] } ],
+    "edges": [ "lots.out -> mass.in", "mass.out -> faces.in" ])json"),
+                             options);
+  ASSERT_TRUE(t.ok()) << t.errors;
+  const shape::Scene scene = to_scene(*t.run);
+  ASSERT_EQ(scene.buildings.size(), 3U);
+  const std::vector<std::string> tags{"yes", "yes", "house"};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const shape::Building& b = scene.buildings[i];
+    EXPECT_EQ(b.id, "way/" + std::to_string(i + 1));
+    EXPECT_EQ(b.parts.size(), 2U) << b.id;
+    EXPECT_EQ(std::get<std::string>(b.attributes.at("building")), tags[i]) << b.id;
+  }
 }
 
 // Real data does not follow the graph's types (OpenStreetMap's building=church for an integer
