@@ -260,6 +260,7 @@ double eave_slope(const RoofSpec& spec, RoofType type) {
       return 0;
     case RoofType::kMansard:
     case RoofType::kHoledMansard:
+    case RoofType::kGambrel:
       return tan_deg(spec.mansard_pitch_deg);
     default:
       return tan_deg(spec.pitch_deg);
@@ -450,6 +451,12 @@ bool is_custom(RoofType type) {
   return type >= RoofType::kGambrel;
 }
 
+// The S3DB shapes built without overhang whatever is asked: round, dome and onion spring from the
+// wall (gambrel, half-hipped and saltbox overhang their slope sides, roof_shapes.cc).
+bool springs_from_wall(RoofType type) {
+  return type == RoofType::kRound || type == RoofType::kDome || type == RoofType::kOnion;
+}
+
 // The shed plane: rising from the edge asked or the longest outer edge, or, with roof:direction,
 // falling toward that azimuth from the footprint's highest point (docs/kernel-roofs.md, "Shed
 // direction").
@@ -509,7 +516,7 @@ bool plan_type(RoofPlan& plan, const RoofSpec& spec, RoofType type, double overh
     if (type == RoofType::kDome || type == RoofType::kOnion) {
       plan.reason = "roof faces: the footprint is not star-shaped about its centroid";
     }
-    return roof_detail::plan_custom(plan, spec);
+    return roof_detail::plan_custom(plan, spec, springs_from_wall(type) ? 0 : overhang);
   }
   plan.reason = "roof faces: the eave polygon of the overhang is not simple";
   if (!plan_eave(plan, overhang, {})) return false;
@@ -748,7 +755,7 @@ bool plan_roof(const Polygon& footprint, const RoofSpec& spec, RoofPlan& plan) {
                         std::string(roof_type_name(type)) + " roof instead";
         if (!why.empty()) plan.message += " (" + why + ")";
       }
-      if (is_custom(type) && overhang > 0) {
+      if (springs_from_wall(type) && overhang > 0) {
         if (!plan.message.empty()) plan.message += "; ";
         plan.message += std::string(roof_type_name(type)) + " roofs are built without overhang";
       }

@@ -46,6 +46,10 @@ struct CustomRoof {
   // Per footprint edge, the point ids closing the wall above it, from the edge's end back to its
   // start (RoofBuild::cap_indices).
   std::vector<std::vector<std::uint32_t>> caps;
+  // Per footprint edge, 1 on an end of an overhanging quadrilateral shape: its wall rises into the
+  // roof, so its cap takes in the eave corners as a gable's does, even with no roof point inside
+  // the edge (a 4 cm edge at a corner). Empty: no overhang.
+  std::vector<std::uint8_t> ends;
   // Per footprint vertex, the roof's height (m) above the eave there; empty: all 0. Not 0 at a
   // vertex dropped by outline_core: the roof planned over the core passes above or below it.
   std::vector<double> eave_rise;
@@ -85,7 +89,9 @@ Contour outline_core(const Contour& c);
 // orientation, else (kAuto) the square rule or the longer pair.
 std::uint32_t quad_slope_pair(const Contour& c, const RoofSpec& spec);
 // The S3DB shapes; false when the footprint does not define them (the caller falls back).
-bool plan_custom(RoofPlan& plan, const RoofSpec& spec);
+// Gambrel, half-hipped and saltbox overhang their slope sides by `overhang` (docs/kernel-roofs.md,
+// "Overhang"); the other shapes ignore it.
+bool plan_custom(RoofPlan& plan, const RoofSpec& spec, double overhang);
 // Signed distance of `p` from the supporting line of contour edge e, positive inside.
 double edge_distance(const Contour& c, std::uint32_t e, Vec2 p);
 // The ridge point of a gable on edge e, see roof.cc.

@@ -49,7 +49,8 @@ class RoofEmitter {
     const std::uint32_t n = f.size();
     build_.wall_top.resize(n);
     // The S3DB shapes pass above (or below) a footprint vertex that is not a corner of their
-    // quadrilateral (CustomRoof::eave_rise); they have no overhang, so it is also their eave.
+    // quadrilateral (CustomRoof::eave_rise); planning keeps such a vertex off overhanging edges
+    // (roof_shapes.cc, meets_soffits), so its wall top is also its eave.
     const std::vector<double>& rise = plan_.custom.eave_rise;
     const bool custom = plan_.type >= RoofType::kGambrel && rise.size() == n;
     for (std::uint32_t k = 0; k < n; ++k) {
@@ -79,12 +80,15 @@ class RoofEmitter {
   }
 
   // The edges without overhang whose eave edge reaches past their wall top (WallTopJog). Gable
-  // ends are left out: their wall continues up into the gable (add_cap).
+  // ends are left out: their wall continues up into the gable (add_cap), as does the end wall of
+  // an S3DB shape (its cap: emit_custom).
   void find_jogs() {
     if (!(plan_.overhang > 0)) return;
     const Contour& f = plan_.footprint;
     std::vector<std::uint8_t> gable(f.size(), 0);
     for (const GableEnd& g : plan_.gables) gable[g.edge] = 1;
+    const auto& ends = plan_.custom.ends;
+    for (std::uint32_t e = 0; e < f.size() && e < ends.size(); ++e) gable[e] |= ends[e];
     const auto& w = build_.wall_top;
     for (std::uint32_t e = 0; e < f.size(); ++e) {
       const std::uint32_t j = f.next(e);
@@ -135,10 +139,15 @@ class RoofEmitter {
     }
   }
 
-  // The S3DB shapes, planned as faces over the eave vertices (never overhanging).
+  // The S3DB shapes, planned as faces over the eave vertices. With overhang (gambrel, half-hipped,
+  // saltbox) those are the eave polygon's; an end wall's cap then runs, as a gable's, from its
+  // end's wall top over the eave corner through the roof points on the end and back over the
+  // other eave corner.
   void emit_custom() {
     const CustomRoof& roof = plan_.custom;
-    const std::uint32_t n = plan_.footprint.size();
+    const Contour& c = plan_.footprint;
+    const std::uint32_t n = c.size();
+    const auto& w = build_.wall_top;
     std::vector<std::uint32_t> ids(eave_.begin(), eave_.end());
     for (const Vec3& p : roof.points) ids.push_back(mesh_.add_vertex({p.x, p.y, low_z_ + p.z}));
     std::vector<std::uint32_t> loop;
@@ -147,11 +156,18 @@ class RoofEmitter {
       for (std::uint32_t k = roof.face_offsets[f]; k < roof.face_offsets[f + 1]; ++k) {
         loop.push_back(ids[roof.face_indices[k]]);
       }
+      insert_wall_tops(jogs_, loop);
       mesh_.add_face(loop, {SemanticClass::kRoofSurface, 0, face_id_++});
     }
     for (std::uint32_t e = 0; e < n && e < roof.caps.size(); ++e) {
+      const bool end = e < roof.ends.size() && roof.ends[e];
+      if (roof.caps[e].empty() && !end) continue;
+      const std::uint32_t j = c.next(e);
+      const std::size_t before = build_.cap_indices.size();
+      if (soffit_[j] != w[j]) build_.cap_indices.push_back(soffit_[j]);
       for (std::uint32_t k : roof.caps[e]) build_.cap_indices.push_back(ids[k]);
-      build_.cap_offsets[e + 1] = static_cast<std::uint32_t>(roof.caps[e].size());
+      if (soffit_[e] != w[e]) build_.cap_indices.push_back(soffit_[e]);
+      build_.cap_offsets[e + 1] = static_cast<std::uint32_t>(build_.cap_indices.size() - before);
     }
   }
 

@@ -140,6 +140,138 @@ bool quad_frame(const Contour& c, const RoofSpec& spec, QuadFrame& frame) {
   return frame.half_width > 0;
 }
 
+// How far the eave lines of the two slope sides lie outside the core's slope edges: distances from
+// an eave line are the core's plus these. Both 0 without overhang.
+struct EaveShift {
+  double a = 0, b = 0;
+};
+
+// Per footprint edge, the side of the quadrilateral `core` (outline_core of `c`, or `c` itself)
+// it runs along: outline_core copies the corners, so the footprint vertex equal to core vertex i
+// starts side i, and the edges after it up to the next corner belong to that side.
+std::vector<std::uint32_t> core_sides(const Contour& c, const Contour& core) {
+  const std::uint32_t n = c.size();
+  std::vector<int> corner(n, -1);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    for (std::uint32_t i = 0; i < core.size(); ++i) {
+      if (c.points[k] == core.points[i]) corner[k] = static_cast<int>(i);
+    }
+  }
+  std::uint32_t start = 0;
+  while (start < n && corner[start] < 0) ++start;
+  std::vector<std::uint32_t> side(n, 0);
+  if (start == n) return side;
+  std::uint32_t current = static_cast<std::uint32_t>(corner[start]);
+  for (std::uint32_t m = 0; m < n; ++m) {
+    const std::uint32_t k = (start + m) % n;
+    if (corner[k] >= 0) current = static_cast<std::uint32_t>(corner[k]);
+    side[k] = current;
+  }
+  return side;
+}
+
+// An eave corner may reach at most this many overhangs from its footprint corner, as in roof.cc
+// (kEaveMiterLimit, docs/kernel-roofs.md, "Overhang").
+constexpr double kEaveReach = 8;
+
+// The eave polygon of a quadrilateral shape with overhang (docs/kernel-roofs.md, "Overhang"): the
+// edges along slope side A move out by `out_a`, those along side B by `out_b`, the ends stay flush
+// (offset 0, as a gable's), and so do party walls. `overhang` sets the drop: the roof starts at
+// eave_z - overhang * eave_slope. Every eave vertex of an overhanging side lies on that side's
+// eave line, the core's slope edge moved out, so the roof, planned from those lines, meets every
+// soffit at the eave (the soffits are horizontal whatever their shape). An eave corner is where
+// the eave line meets the flush edge next to it; a vertex outline_core dropped on the side is not
+// mitred from its own edges but divides the eave edge between the side's two eave corners as it
+// divides the side (a perpendicular projection would flip a 5 cm edge at a skewed end). False,
+// with the reason, when the eave polygon cannot be made or a party wall keeps only part of a side
+// flush (its eave line would bend).
+bool overhang_eave(RoofPlan& plan, const Contour& core, std::uint32_t side_a, std::uint32_t side_b,
+                   double overhang, double out_a, double out_b, EaveShift& shift) {
+  shift = {};
+  if (!(overhang > 0)) return true;
+  const Contour& c = plan.footprint;
+  const std::uint32_t n = c.size();
+  const std::vector<std::uint32_t> sides = core_sides(c, core);
+  plan.overhang = overhang;
+  plan.offsets.assign(n, 0);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    plan.offsets[k] = sides[k] == side_a ? out_a : sides[k] == side_b ? out_b : 0;
+  }
+  for (std::uint32_t e : plan.party_edges) plan.offsets[e] = 0;
+  plan.custom.ends.assign(n, 0);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    plan.custom.ends[k] = sides[k] != side_a && sides[k] != side_b;
+  }
+  std::array<double, kQuad> side_offset{-1, -1, -1, -1};
+  for (std::uint32_t k = 0; k < n; ++k) {
+    double& o = side_offset[sides[k]];
+    if (o < 0) {
+      o = plan.offsets[k];
+    } else if (o != plan.offsets[k]) {
+      plan.reason = "roof faces: a party wall keeps only part of a slope side flush";
+      return false;
+    }
+  }
+  // Each edge's eave line: its side's core edge moved out, or the edge itself when flush.
+  std::vector<Vec2> from(n), along(n);
+  for (std::uint32_t e = 0; e < n; ++e) {
+    if (plan.offsets[e] > 0) {
+      const std::uint32_t side = sides[e];
+      along[e] = normalized(core.points[(side + 1) % kQuad] - core.points[side]);
+      from[e] = core.points[side] - perp(along[e]) * plan.offsets[e];
+    } else {
+      along[e] = normalized(c.points[c.next(e)] - c.points[e]);
+      from[e] = c.points[e];
+    }
+  }
+  plan.reason = "roof faces: the eave polygon of the overhang is not simple";
+  Contour& eave = plan.eave;
+  eave.ring_starts = c.ring_starts;
+  eave.points.resize(n);
+  const auto inside_side = [&](std::uint32_t k) {
+    const std::uint32_t p = c.prev(k);
+    return plan.offsets[p] > 0 && plan.offsets[k] > 0 && sides[p] == sides[k];
+  };
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const std::uint32_t p = c.prev(k);
+    if (inside_side(k)) continue;
+    if (plan.offsets[p] == 0 && plan.offsets[k] == 0) {
+      eave.points[k] = c.points[k];
+      continue;
+    }
+    const double det = cross(along[p], along[k]);
+    if (std::abs(det) < 1e-9) return false;
+    eave.points[k] = from[p] + along[p] * (cross(from[k] - from[p], along[k]) / det);
+  }
+  for (std::uint32_t k = 0; k < n; ++k) {
+    if (!inside_side(k)) continue;
+    std::uint32_t first = k, last = k;
+    double before = 0, after = 0;
+    for (std::uint32_t steps = 0; inside_side(first) && steps < n; ++steps) {
+      before += length(c.points[first] - c.points[c.prev(first)]);
+      first = c.prev(first);
+    }
+    for (std::uint32_t steps = 0; inside_side(last) && steps < n; ++steps) {
+      after += length(c.points[c.next(last)] - c.points[last]);
+      last = c.next(last);
+    }
+    if (inside_side(first) || inside_side(last)) return false;
+    eave.points[k] =
+        eave.points[first] + (eave.points[last] - eave.points[first]) * (before / (before + after));
+  }
+  for (std::uint32_t k = 0; k < n; ++k) {
+    if (length(eave.points[k] - c.points[k]) > kEaveReach * std::max(out_a, out_b)) return false;
+  }
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const Vec2 before = c.points[c.next(k)] - c.points[k];
+    const Vec2 after = eave.points[eave.next(k)] - eave.points[k];
+    if (dot(before, after) <= 0) return false;
+  }
+  if (!is_simple_polygon(eave.polygon())) return false;
+  shift = {side_offset[side_a], side_offset[side_b]};
+  return true;
+}
+
 // The wall caps of every footprint edge: the roof points on it.
 void add_caps(const Contour& c, const PointSet& points, double tolerance, CustomRoof& roof) {
   roof.caps.assign(c.size(), {});
@@ -152,13 +284,17 @@ void add_caps(const Contour& c, const PointSet& points, double tolerance, Custom
 // quadrilateral `core` (outline_core of `c`): side A where ka * d_a <= kb * d_b, side B the rest.
 // The faces are cut from `c` itself, so a vertex the core dropped keeps its place in the roof,
 // at the height the profile has there.
-void profile_faces(const Contour& c, const Contour& core, const QuadFrame& frame,
+// With overhang, `c` is the eave polygon and the distances are measured from the eave lines,
+// `shift` outside the core's slope edges.
+void profile_faces(const Contour& c, const Contour& core, const QuadFrame& frame, EaveShift shift,
                    const std::vector<Piece>& a, const std::vector<Piece>& b, double ka, double kb,
                    CustomRoof& roof) {
   const double tolerance = 1e-7 * extent(c);
   PointSet points(c, tolerance);
-  const Linear da = distance_function(core, frame.side_a);
-  const Linear db = distance_function(core, frame.side_b);
+  Linear da = distance_function(core, frame.side_a);
+  Linear db = distance_function(core, frame.side_b);
+  da.h += shift.a;
+  db.h += shift.b;
   const std::vector<Vec2> outline(c.points.begin(), c.points.end());
   const auto side = [&](const Linear& mine, const Linear& other, double km, double ko,
                         const std::vector<Piece>& profile) {
@@ -186,22 +322,29 @@ void profile_faces(const Contour& c, const Contour& core, const QuadFrame& frame
 }
 
 // Gambrel: the mansard's two slopes with gable ends. The break lies where the lower slope has
-// risen mansard_break_height, but at most 60 % of the way to the ridge.
-bool plan_gambrel(RoofPlan& plan, const RoofSpec& spec, const Contour& core) {
+// risen mansard_break_height, but at most 60 % of the way to the ridge. With overhang the slope
+// sides' eaves move out and the lower slope starts overhang * tan(lower pitch) below the eave, so
+// the break, `overhang + t` from the eave lines, is where and as high as it is without.
+bool plan_gambrel(RoofPlan& plan, const RoofSpec& spec, const Contour& core, double overhang) {
   QuadFrame frame;
   if (!quad_frame(core, spec, frame)) return false;
   const double lower = std::tan(spec.mansard_pitch_deg * kPi / 180);
   const double upper = plan.slope;
   const double t = std::min(spec.mansard_break_height / lower, 0.6 * frame.half_width);
-  const std::vector<Piece> profile = {{0, 0, lower}, {t, t * lower, upper}};
-  profile_faces(plan.footprint, core, frame, profile, profile, 1, 1, plan.custom);
+  EaveShift shift;
+  if (!overhang_eave(plan, core, frame.side_a, frame.side_b, overhang, overhang, overhang, shift)) {
+    return false;
+  }
+  const double t_break = plan.overhang + t;
+  const std::vector<Piece> profile = {{0, 0, lower}, {t_break, t_break * lower, upper}};
+  profile_faces(plan.eave, core, frame, shift, profile, profile, 1, 1, plan.custom);
   return true;
 }
 
 // Saltbox: the ridge a third of the way across, the short side twice as steep as the long one
 // (which has the pitch); both eaves at the same height. The long side faces direction_deg when
 // given, else it rises from the second slope edge.
-bool plan_saltbox(RoofPlan& plan, const RoofSpec& spec, const Contour& core) {
+bool plan_saltbox(RoofPlan& plan, const RoofSpec& spec, const Contour& core, double overhang) {
   QuadFrame frame;
   if (!quad_frame(core, spec, frame)) return false;
   if (spec.direction_deg) {
@@ -216,7 +359,17 @@ bool plan_saltbox(RoofPlan& plan, const RoofSpec& spec, const Contour& core) {
     }
   }
   const double s = plan.slope;
-  profile_faces(plan.footprint, core, frame, {{0, 0, 2 * s}}, {{0, 0, s}}, 2, 1, plan.custom);
+  const double steep = 2 * s;
+  // Both soffits at one height: the long side's eave drops overhang * s (plan.eave_slope), so the
+  // steep side overhangs overhang * s / steep, which drops as much (half the overhang here, the
+  // steep side having twice the slope; with pitch angles, tan(2 * pitch) != 2 * tan(pitch), so
+  // the offset is computed from the slopes, not halved).
+  EaveShift shift;
+  if (!overhang_eave(plan, core, frame.side_a, frame.side_b, overhang, overhang * s / steep,
+                     overhang, shift)) {
+    return false;
+  }
+  profile_faces(plan.eave, core, frame, shift, {{0, 0, steep}}, {{0, 0, s}}, 2, 1, plan.custom);
   return true;
 }
 
@@ -251,7 +404,7 @@ bool plan_round(RoofPlan& plan, const RoofSpec& spec, const Contour& core) {
   // OBJ's six decimals): under 1 % of the half width the last strip runs on to the ridge, at most
   // 0.13 % of the half width higher than the circle.
   if (frame.widest - w > 0.01 * w) profile.push_back({w, w, 0});
-  profile_faces(plan.footprint, core, frame, profile, profile, 1, 1, plan.custom);
+  profile_faces(plan.footprint, core, frame, {}, profile, profile, 1, 1, plan.custom);
   return true;
 }
 
@@ -260,9 +413,10 @@ bool plan_round(RoofPlan& plan, const RoofSpec& spec, const Contour& core) {
 // planes at the pitch: the two slopes, rising from the slope edges, and the two hips, rising from
 // the lines half a gable's height up each end wall (distance T/2 + d_end, T the gable apex's
 // distance from the slope edges); each plane's face is the part of the footprint where it is
-// lowest.
-bool plan_half_hipped(RoofPlan& plan, const RoofSpec& spec, const Contour& core) {
-  const Contour& c = plan.footprint;
+// lowest. With overhang, the slope planes rise from the eave lines of the slope sides, and the
+// hips, overhang * tan(pitch) higher above the lowered eave, are where they are without: the
+// faces are cut from the eave polygon (ends flush), the roof over the walls is unchanged.
+bool plan_half_hipped(RoofPlan& plan, const RoofSpec& spec, const Contour& core, double overhang) {
   if (core.ring_starts.size() != 2 || core.size() != kQuad) return false;
   const std::uint32_t r = quad_slope_pair(core, spec);
   const std::uint32_t e1 = r + 1, e3 = (r + 3) % kQuad;
@@ -271,12 +425,17 @@ bool plan_half_hipped(RoofPlan& plan, const RoofSpec& spec, const Contour& core)
   if (!g1 || !g3) return false;
   const double ridge = length(g3->apex - g1->apex);
   if (!(g1->time / 2 + g3->time / 2 < 0.9 * ridge)) return false;
+  EaveShift shift;
+  if (!overhang_eave(plan, core, r, r + 2, overhang, overhang, overhang, shift)) return false;
+  const Contour& c = plan.eave;
+  const Linear side_a = distance_function(core, r);
+  const Linear side_b = distance_function(core, r + 2);
   const Linear hip1 = distance_function(core, e1);
   const Linear hip3 = distance_function(core, e3);
-  const std::array<Linear, 4> planes = {distance_function(core, r),
-                                        distance_function(core, r + 2),
-                                        {hip1.g, hip1.h + g1->time / 2},
-                                        {hip3.g, hip3.h + g3->time / 2}};
+  const std::array<Linear, 4> planes = {Linear{side_a.g, side_a.h + shift.a},
+                                        Linear{side_b.g, side_b.h + shift.b},
+                                        Linear{hip1.g, hip1.h + g1->time / 2 + plan.overhang},
+                                        Linear{hip3.g, hip3.h + g3->time / 2 + plan.overhang}};
   const double s = plan.slope;
   const double tolerance = 1e-7 * extent(c);
   PointSet points(c, tolerance);
@@ -377,20 +536,18 @@ std::uint32_t quad_slope_pair(const Contour& c, const RoofSpec& spec) {
   return std::abs(pair0 - pair1) <= 0.05 * std::max(pair0, pair1) ? 0 : along;
 }
 
-bool plan_custom(RoofPlan& plan, const RoofSpec& spec) {
-  plan.custom = CustomRoof();
-  // The quadrilateral shapes are planned over the corners; their faces still cover every vertex.
-  const Contour core =
-      plan.footprint.ring_starts[1] > kQuad ? outline_core(plan.footprint) : plan.footprint;
+namespace {
+
+bool plan_shape(RoofPlan& plan, const RoofSpec& spec, const Contour& core, double overhang) {
   switch (plan.type) {
     case RoofType::kGambrel:
-      return plan_gambrel(plan, spec, core);
+      return plan_gambrel(plan, spec, core, overhang);
     case RoofType::kSaltbox:
-      return plan_saltbox(plan, spec, core);
+      return plan_saltbox(plan, spec, core, overhang);
     case RoofType::kRound:
       return plan_round(plan, spec, core);
     case RoofType::kHalfHipped:
-      return plan_half_hipped(plan, spec, core);
+      return plan_half_hipped(plan, spec, core, overhang);
     case RoofType::kDome:
       return plan_dome(plan, false);
     case RoofType::kOnion:
@@ -398,6 +555,38 @@ bool plan_custom(RoofPlan& plan, const RoofSpec& spec) {
     default:
       return false;
   }
+}
+
+// The overhanging shape meets its soffits edge to edge: the roof passes through every eave vertex
+// of an overhanging edge (a vertex outline_core dropped would put the roof above or below the
+// soffit's outer corner there) and has no point inside an overhanging eave edge (its wall is
+// closed by the soffit, not a cap).
+bool meets_soffits(RoofPlan& plan) {
+  const Contour& c = plan.footprint;
+  const CustomRoof& roof = plan.custom;
+  for (std::uint32_t k = 0; k < c.size(); ++k) {
+    const bool overhangs = plan.offsets[k] > 0 || plan.offsets[c.prev(k)] > 0;
+    if (overhangs && !roof.eave_rise.empty() && roof.eave_rise[k] != 0) {
+      plan.reason = "roof faces: a vertex between the corners of a slope side is off its eave line";
+      return false;
+    }
+    if (plan.offsets[k] > 0 && k < roof.caps.size() && !roof.caps[k].empty()) {
+      plan.reason = "roof faces: the roof has a point inside an overhanging eave";
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool plan_custom(RoofPlan& plan, const RoofSpec& spec, double overhang) {
+  plan.custom = CustomRoof();
+  // The quadrilateral shapes are planned over the corners; their faces still cover every vertex.
+  const Contour core =
+      plan.footprint.ring_starts[1] > kQuad ? outline_core(plan.footprint) : plan.footprint;
+  if (!plan_shape(plan, spec, core, overhang)) return false;
+  return !(plan.overhang > 0) || meets_soffits(plan);
 }
 
 }  // namespace insula::kernel::roof_detail

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 #include <string>
@@ -415,6 +416,194 @@ TEST(RoofShapes, RoofOnPostsDropsAnOverhangThatReachesTheGround) {
   EXPECT_TRUE(c.closed);
   EXPECT_EQ(c.components, 5U);
   EXPECT_NEAR(r.mesh.bounds().min.x, 0, 1e-12);  // no eave beyond the footprint
+}
+
+// Overhang on the quadrilateral shapes (docs/kernel-roofs.md, "Overhang"): gambrel, half-hipped and
+// saltbox get eaves on their two slope sides and flush end walls, the roof over the wall line as
+// without overhang. They were built without overhang ("gambrel roofs are built without overhang").
+
+// A skewed quadrilateral as surveyed (no two edges parallel, ends not square to the sides), at
+// local coordinates away from the origin.
+Polygon skewed_quad() {
+  const Vec2 o{431.7, -212.4};
+  return {{o + Vec2{0, 0}, o + Vec2{12.4, 1.1}, o + Vec2{12.0, 9.3}, o + Vec2{-0.6, 8.0}}, {}};
+}
+
+// Signed distance of p from the line of edge e of `ring` (counter-clockwise), positive inside.
+double inside_distance(const Ring& ring, std::size_t e, Vec2 p) {
+  const Vec2 a = ring[e];
+  const Vec2 d = normalized(ring[(e + 1) % ring.size()] - a);
+  return cross(d, p - a);
+}
+
+// The lowest tangent of the roof's eaves: the lower slope of a gambrel, else the pitch.
+double eave_tan(RoofType t) {
+  return std::tan((t == RoofType::kGambrel ? 70 : 30) * kPi / 180);
+}
+
+TEST(RoofShapes, QuadrilateralShapesOverhangTheirSlopeSides) {
+  constexpr double kOverhang = 0.5;
+  for (const Polygon& p : {rectangle(12, 8), skewed_quad()}) {
+    for (RoofType t : {RoofType::kGambrel, RoofType::kHalfHipped, RoofType::kSaltbox}) {
+      SCOPED_TRACE(std::string(roof_type_name(t)) + (p.outer[0].x == 0 ? " rectangle" : " skewed"));
+      MassSpec spec;
+      spec.overhang = kOverhang;
+      const MassResult r = build(p, t, spec);
+      const MassResult plain = build(p, t);
+      expect_closed(r);
+      const MeshCheck c = check(r.mesh);
+      EXPECT_EQ(c.boundary_edges, 0U);
+      EXPECT_EQ(c.non_manifold_edges, 0U);
+      EXPECT_EQ(c.components, 1U);
+      EXPECT_EQ(r.status, MassStatus::kOk) << r.message;
+      EXPECT_EQ(r.roof, t);
+      EXPECT_EQ(r.message.find("without overhang"), std::string::npos) << r.message;
+
+      // Edges 0 and 2 are the slopes (the longer pair), 1 and 3 the ends. The saltbox's steep
+      // side (edge 0, twice the slope) overhangs half as far, so both eaves drop alike.
+      const double steep = t == RoofType::kSaltbox ? kOverhang / 2 : kOverhang;
+      const std::array<double, 4> out = {steep, 0, kOverhang, 0};
+      for (std::size_t e = 0; e < 4; ++e) {
+        double reach = 1e300;
+        for (const Vec3& v : r.mesh.positions()) {
+          reach = std::min(reach, inside_distance(p.outer, e, drop(v)));
+        }
+        EXPECT_NEAR(-reach, out[e], 1e-9) << "edge " << e;
+      }
+
+      // Soffits: horizontal, facing down, all at one height (saltbox too), joining the wall tops
+      // to the eaves of the two slope sides.
+      const double soffit_z = kEave - kOverhang * eave_tan(t);
+      double soffit_area = 0;
+      int soffits = 0;
+      for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+        if (r.mesh.tag(f).semantic != SemanticClass::kOuterCeilingSurface) continue;
+        ++soffits;
+        soffit_area += face_area(r.mesh, f);
+        EXPECT_NEAR(face_normal(r.mesh, f).z, -1, 1e-12);
+        for (std::uint32_t v : r.mesh.face(f)) EXPECT_NEAR(r.mesh.position(v).z, soffit_z, 1e-9);
+      }
+      EXPECT_EQ(soffits, 2);
+      const double sides =
+          length(p.outer[1] - p.outer[0]) * steep + length(p.outer[3] - p.outer[2]) * kOverhang;
+      EXPECT_NEAR(soffit_area, sides, 0.02 * sides);
+      EXPECT_NEAR(lowest(r.mesh, SemanticClass::kRoofSurface), soffit_z, 1e-9);
+
+      // Over the wall line the roof is the one without overhang: same ridge, same break and hip
+      // points, every roof vertex above the eave still there.
+      EXPECT_NEAR(top(r.mesh), top(plain.mesh), 1e-9);
+      for (const Vec3& q : roof_points(plain.mesh)) {
+        if (q.z < kEave + 1e-6) continue;
+        double nearest = 1e300;
+        for (const Vec3& v : roof_points(r.mesh)) nearest = std::min(nearest, length(v - q));
+        EXPECT_LT(nearest, 1e-9) << q.x << " " << q.y << " " << q.z;
+      }
+      EXPECT_GT(volume(r.mesh), volume(plain.mesh) + 0.5 * sides * kOverhang * eave_tan(t) * 0.5);
+    }
+  }
+}
+
+// The gambrel's break stays at its height, 2.5 m above the wall top, and place, its lower slope
+// reaching down to the eave under the overhang; the end walls take in the eave corners.
+TEST(RoofShapes, GambrelOverhangKeepsTheBreak) {
+  MassSpec spec;
+  spec.overhang = 0.5;
+  const MassResult r = build(rectangle(12, 8), RoofType::kGambrel, spec);
+  expect_closed(r);
+  const double drop = 0.5 * std::tan(70 * kPi / 180);
+  const double t = 2.5 / std::tan(70 * kPi / 180);
+  const double ridge = 2.5 + (4 - t) * std::tan(30 * kPi / 180);
+  std::set<long> levels;
+  for (const Vec3& p : roof_points(r.mesh)) {
+    levels.insert(std::lround((p.z - kEave) * 1000));
+    if (std::abs(p.z - kEave - 2.5) < 1e-9) {
+      EXPECT_TRUE(std::abs(p.y - t) < 1e-9 || std::abs(p.y - (8 - t)) < 1e-9) << p.y;
+    }
+  }
+  EXPECT_EQ(levels, (std::set<long>{std::lround(-drop * 1000), 2500, std::lround(ridge * 1000)}));
+  // Each end wall: its ground edge, the two wall tops, the two eave corners, the two break
+  // points and the ridge point.
+  int ends = 0;
+  for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+    if (r.mesh.tag(f).semantic != SemanticClass::kWallSurface) continue;
+    const Vec3 n = face_normal(r.mesh, f);
+    if (std::abs(n.x) < 0.5) continue;
+    ++ends;
+    EXPECT_EQ(r.mesh.face(f).size(), 9U);
+    double y_min = 1e300, y_max = -1e300;
+    for (std::uint32_t v : r.mesh.face(f)) {
+      y_min = std::min(y_min, r.mesh.position(v).y);
+      y_max = std::max(y_max, r.mesh.position(v).y);
+    }
+    EXPECT_NEAR(y_min, -0.5, 1e-9);
+    EXPECT_NEAR(y_max, 8.5, 1e-9);
+  }
+  EXPECT_EQ(ends, 2);
+}
+
+// A party wall on a slope side keeps that side flush (offset 0), as for gables; the other side
+// overhangs.
+TEST(RoofShapes, QuadrilateralShapesKeepPartyWallsFlush) {
+  for (RoofType t : {RoofType::kGambrel, RoofType::kHalfHipped, RoofType::kSaltbox}) {
+    SCOPED_TRACE(std::string(roof_type_name(t)));
+    MassSpec spec;
+    spec.overhang = 0.5;
+    PartyWall wall;  // along the north slope edge (edge 2)
+    wall.a = {0, 8};
+    wall.b = {12, 8};
+    spec.party_walls = {wall};
+    const MassResult r = build(rectangle(12, 8), t, spec);
+    expect_closed(r);
+    EXPECT_EQ(r.roof, t);
+    EXPECT_EQ(r.message.find("without overhang"), std::string::npos) << r.message;
+    EXPECT_NEAR(r.mesh.bounds().max.y, 8, 1e-9);
+    EXPECT_LT(r.mesh.bounds().min.y, -0.2);
+    EXPECT_EQ(count(r.mesh, SemanticClass::kOuterCeilingSurface), 1);
+  }
+}
+
+// A vertex 4 cm from a corner where the outline turns by 1 degree, on a slope side or an end: the
+// roof keeps its overhang, its eave straight along the side (the vertex's eave point lies on the
+// side's eave line) and every face planar (expect_closed).
+TEST(RoofShapes, NearlyStraightVerticesKeepTheOverhang) {
+  for (bool long_side : {true, false}) {
+    for (RoofType t : {RoofType::kGambrel, RoofType::kHalfHipped, RoofType::kSaltbox}) {
+      SCOPED_TRACE(std::string(roof_type_name(t)) + (long_side ? " long side" : " short side"));
+      MassSpec spec;
+      spec.overhang = 0.5;
+      const MassResult r = build(near_rectangle(long_side), t, spec);
+      expect_closed(r);
+      EXPECT_EQ(r.status, MassStatus::kOk) << r.message;
+      EXPECT_EQ(r.roof, t);
+      EXPECT_EQ(count(r.mesh, SemanticClass::kOuterCeilingSurface), long_side ? 3 : 2);
+      const double soffit_z = kEave - 0.5 * eave_tan(t);
+      EXPECT_NEAR(lowest(r.mesh, SemanticClass::kRoofSurface), soffit_z, 1e-9);
+      EXPECT_NEAR(r.mesh.bounds().max.y, 8 + 0.5, 1e-3);
+      const MassResult plain = build(near_rectangle(long_side), t);
+      EXPECT_NEAR(top(r.mesh), top(plain.mesh), 1e-9);
+    }
+  }
+}
+
+// Round, dome and onion spring from the wall: still built without overhang, and said so; the
+// other shapes no longer are.
+TEST(RoofShapes, OnlyVaultsAndDomesAreBuiltWithoutOverhang) {
+  MassSpec spec;
+  spec.overhang = 0.5;
+  for (RoofType t : {RoofType::kRound, RoofType::kDome, RoofType::kOnion}) {
+    const MassResult r = build(rectangle(12, 8), t, spec);
+    expect_closed(r);
+    EXPECT_EQ(r.roof, t);
+    EXPECT_EQ(r.status, MassStatus::kFallback);
+    EXPECT_EQ(r.message, std::string(roof_type_name(t)) + " roofs are built without overhang");
+    EXPECT_EQ(count(r.mesh, SemanticClass::kOuterCeilingSurface), 0);
+  }
+  for (RoofType t : {RoofType::kGambrel, RoofType::kHalfHipped, RoofType::kSaltbox}) {
+    const MassResult r = build(rectangle(12, 8), t, spec);
+    EXPECT_EQ(r.status, MassStatus::kOk) << r.message;
+    EXPECT_EQ(r.message, "");
+    EXPECT_EQ(count(r.mesh, SemanticClass::kOuterCeilingSurface), 2);
+  }
 }
 
 }  // namespace

@@ -218,5 +218,63 @@ TEST(RoofSweep, EveryRoofOnRotatedLTUAndStarShapes) {
   EXPECT_EQ(failed, 0);
 }
 
+// Gambrel, half-hipped and saltbox with a 0.5 m overhang (docs/kernel-roofs.md, "Overhang") over
+// rotated rectangles, near-rectangles and skewed quadrilaterals rounded to millimetres, a quarter
+// with one more nearly straight vertex on a slope side or an end (OpenStreetMap outlines have
+// them): closed, the asked type with its overhang.
+TEST(RoofSweep, QuadrilateralShapesWithOverhang) {
+  Sampler s;
+  int failed = 0;
+  int flush = 0;
+  const int n = kRectangles / 10;
+  for (int i = 0; i < n; ++i) {
+    const double w = s.uniform(4, 12);
+    const double l = s.uniform(w, 30);
+    Ring outline{{0, 0}, {l, 0}, {l, w}, {0, w}};
+    const double jitter = i % 3 == 0 ? 0.0 : i % 3 == 1 ? 0.03 : 0.08 * w;  // last: skewed
+    for (Vec2& q : outline) q += Vec2{s.uniform(-jitter, jitter), s.uniform(-jitter, jitter)};
+    const bool extra = i % 4 == 3;
+    if (extra) {  // a vertex 5 cm from a corner, the outline turning there by under 2 degrees
+      const std::size_t e = i % 8 == 3 ? 0 : 1;  // on a long side (a slope) or an end
+      const Vec2 a = outline[e], b = outline[e + 1];
+      const Vec2 d = normalized(b - a);
+      outline.insert(outline.begin() + static_cast<std::ptrdiff_t>(e) + 1,
+                     a + d * 0.05 + perp(d) * s.uniform(-1.5e-3, 1.5e-3));
+    }
+    const Polygon p = place(outline, s.uniform(0, 2 * kPi), s.position());
+    for (RoofType asked : {RoofType::kGambrel, RoofType::kHalfHipped, RoofType::kSaltbox}) {
+      MassSpec spec;
+      spec.roof = asked;
+      spec.wall_height = 6;
+      spec.overhang = 0.5;
+      const MassResult r = build_mass(p, spec);
+      const MeshCheck c = check(r.mesh);
+      int soffits = 0;
+      double off_plane = 0;  // every face planar
+      for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+        soffits += r.mesh.tag(f).semantic == SemanticClass::kOuterCeilingSurface;
+        const Vec3 normal = face_normal(r.mesh, f);
+        const Vec3 p0 = r.mesh.position(r.mesh.face(f)[0]);
+        for (std::uint32_t v : r.mesh.face(f)) {
+          off_plane = std::max(off_plane, std::abs(dot(r.mesh.position(v) - p0, normal)));
+        }
+      }
+      flush += r.message.find("built without overhang") != std::string::npos;
+      const bool good = r.status == MassStatus::kOk && c.closed && c.oriented &&
+                        c.components == 1 && volume(r.mesh) > 0 && r.roof == asked &&
+                        soffits >= 2 && off_plane < 1e-6;
+      if (!good && ++failed <= 3) {
+        ADD_FAILURE() << roof_type_name(asked) << " built " << roof_type_name(r.roof) << " closed "
+                      << c.closed << " oriented " << c.oriented << " boundary " << c.boundary_edges
+                      << " soffits " << soffits << " off plane " << off_plane << " message '"
+                      << r.message << "' footprint" << describe(p);
+      }
+    }
+    if (failed > 5) break;
+  }
+  EXPECT_EQ(failed, 0);
+  EXPECT_EQ(flush, 0);
+}
+
 }  // namespace
 }  // namespace insula::kernel
