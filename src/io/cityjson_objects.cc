@@ -559,24 +559,23 @@ void CityObjects::write_geometry(JsonStream& json, const Object& part) {
 
 // `base`, or `base-2`, `base-3`, ... when taken; records the result.
 std::string_view CityObjects::unique_id(const std::string& base) {
-  const std::string* id = ids_.insert(base);
-  for (int suffix = 2; id == nullptr; ++suffix) {
-    id = ids_.insert(base + "-" + std::to_string(suffix));
-  }
+  const std::string* id = nullptr;
+  building_names_.next(base, [&](const std::string& name) {
+    id = ids_.insert(name);
+    return id != nullptr;
+  });
   return *id;
 }
 
 // A part's id: unique among the ids given and none of the avoided buildings' ids.
 std::string_view CityObjects::unique_part_id(const std::string& base) {
-  if (!avoided_ || !avoided_->contains(base)) {
-    if (const std::string* taken = ids_.insert(base)) return *taken;
-  }
-  for (int suffix = 2;; ++suffix) {
-    const std::string id = base + "-" + std::to_string(suffix);
-    if (!avoided_ || !avoided_->contains(id)) {
-      if (const std::string* taken = ids_.insert(id)) return *taken;
-    }
-  }
+  const std::string* id = nullptr;
+  part_names_.next(base, [&](const std::string& name) {
+    if (avoided_ && avoided_->contains(name)) return false;
+    id = ids_.insert(name);
+    return id != nullptr;
+  });
+  return *id;
 }
 
 void CityObjects::prefetch_ahead(const std::vector<shape::Building>& buildings, std::size_t b,

@@ -17,6 +17,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "base/numbered_names.h"
 #include "io/json_stream.h"
 #include "kernel/mesh.h"
 #include "shape/scene.h"
@@ -208,6 +209,10 @@ class CityObjects {
   kernel::Vec3 base_;
   VertexPool pool_;
   IdSet ids_;
+  // Where the search for a free `base-N` resumes, per base: buildings and parts apart, since a
+  // part also refuses the avoided ids.
+  base::NumberedNames building_names_{"-"};
+  base::NumberedNames part_names_{"-"};
   std::shared_ptr<const std::unordered_set<std::string>> avoided_;
   Rings rings_;
   std::vector<Object> objects_;

@@ -3,6 +3,7 @@
 // codes; docs/osm.md how OpenStreetMap input uses them.
 #include "io/footprint_finish.h"
 
+#include "base/numbered_names.h"
 #include "io/crs.h"
 #include "io/map_areas.h"
 #include "kernel/skeleton.h"
@@ -639,15 +640,15 @@ void FootprintBuilder::assign_ids_renaming() {
   }
   std::set<std::string, std::less<>> taken;
   std::map<std::string, std::size_t, std::less<>> first_user;
+  base::NumberedNames numbered("-");
   for (Footprint& footprint : result_.footprints) {
     const std::size_t index = footprint.feature_index;
     std::string id = std::move(footprint.id);
     if (taken.count(id) != 0) {
-      std::string renamed;
-      for (std::size_t n = 2;
-           renamed.empty() || taken.count(renamed) != 0 || used.count(renamed) != 0; ++n) {
-        renamed = id + "-" + std::to_string(n);
-      }
+      // `id` itself is taken, so the first free name is numbered; an input id is never free.
+      const std::string renamed = numbered.next(id, [&](const std::string& name) {
+        return taken.count(name) == 0 && used.count(name) == 0;
+      });
       FootprintPlace place;
       place.id = true;
       feature_issue(index, false, "GEO019",
