@@ -19,14 +19,16 @@ class NumberedNames {
 
   // The first of `base`, `base-2`, `base-3`, ... that `take` accepts. `take(name)` says whether
   // `name` is free and may claim it; it must keep refusing a name it refused or accepted once.
+  // A base is remembered only once it has been refused: ids that never repeat (a city's
+  // buildings) cost no entry.
   template <typename Take>
   std::string next(const std::string& base, Take&& take) {
-    std::size_t& suffix = next_suffix_.try_emplace(base, 1).first->second;
-    if (suffix == 1) {
-      suffix = 2;  // `base` is taken after this, by this call or before it
-      if (take(base)) return base;
+    auto known = next_suffix_.find(base);
+    if (known == next_suffix_.end()) {
+      if (take(base)) return base;  // taken from now on, so a later search starts at 2
+      known = next_suffix_.emplace(base, 2).first;
     }
-    for (;; ++suffix) {
+    for (std::size_t& suffix = known->second;; ++suffix) {
       std::string name = base + separator_ + std::to_string(suffix);
       if (take(name)) {
         ++suffix;
@@ -37,7 +39,7 @@ class NumberedNames {
 
  private:
   std::string separator_;
-  std::unordered_map<std::string, std::size_t> next_suffix_;  // 1: `base` itself not yet tried
+  std::unordered_map<std::string, std::size_t> next_suffix_;  // the suffix to try next
 };
 
 }  // namespace insula::base

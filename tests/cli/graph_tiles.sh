@@ -63,15 +63,19 @@ node "$root/tools/check_tileset.mjs" "$tmp/t2/tileset.json" --lonlat 14.3884,49.
   --tolerance-m 100 >"$tmp/c.txt" 2>&1 ||
   { fail "the graph's tileset does not open in CesiumJS and loaders.gl"; cat "$tmp/c.txt"; }
 
-# Two buildings a lot (`C`, then `C/2`) beside a lot whose own id is `C/2`, in another tile: the
-# ids stay unique across the tiles' lines, as in the whole run (found by review).
+# Two buildings a lot (the graph numbers the border apart in `building`: `C`, then `C/3`) beside a
+# lot whose own id is `C/2`, in another tile: the ids stay unique across the tiles' lines, as in
+# the whole run (found by review).
 cat >"$tmp/two.graph.json" <<'JSON'
 { "format": "insula-graph", "version": 1,
+  "attributes": { "building": { "type": "integer", "default": 0 } },
   "nodes": [ { "id": "lots", "type": "create.lots" },
              { "id": "off", "type": "shape.offset", "params": { "distance": -1 } },
+             { "id": "apart", "type": "attr.set", "params": { "values": { "building": "= 1" } } },
              { "id": "high", "type": "shape.extrude", "params": { "height": 10 } },
              { "id": "low", "type": "shape.extrude", "params": { "height": 3 } } ],
-  "edges": [ "lots.out -> off.in", "off.inside -> high.in", "off.border -> low.in" ] }
+  "edges": [ "lots.out -> off.in", "off.inside -> high.in", "off.border -> apart.in",
+             "apart.out -> low.in" ] }
 JSON
 node -e 'const fs = require("fs"); const g = JSON.parse(fs.readFileSync(process.argv[1]));
   g.features[1].id = "C/2"; g.features[g.features.length - 1].id = "C";
@@ -88,7 +92,9 @@ node -e 'const fs = require("fs");
   }
   if (new Set(seen).size !== seen.length || JSON.stringify(seen.sort()) !== JSON.stringify(whole)) {
     console.log(seen.length, new Set(seen).size, whole.length); process.exit(1);
-  }' "$tmp/ids.city.json" "$tmp/ids.city.jsonl" || fail "building ids across tiles differ from the whole run's"
+  }
+  for (const id of ["C", "C/2", "C/3", "C/2/2"]) if (!whole.includes(id)) process.exit(2);
+  ' "$tmp/ids.city.json" "$tmp/ids.city.jsonl" || fail "building ids across tiles differ from the whole run's"
 
 # A graph that relates lots (a count over all of them) runs whole; the report says why.
 mkdir -p "$tmp/related"

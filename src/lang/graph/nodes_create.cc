@@ -135,8 +135,8 @@ void lots(NodeContext& c) {
     if (!c.options().lots) c.error("no lots: give --lot LOTS.geojson or the parameter 'file'");
     if (!c.options().lots(file, lots, error)) c.error(error);
     // The attributes the node's `index` writes: a lot property of that name is overwritten by the
-    // lot's number anyway, so it is left to it without a warning (lots.graph.json numbers its
-    // buildings in `building`, which every OpenStreetMap lot also has as a tag: `building=yes`).
+    // lot's number anyway, so it is left to it without a warning (a graph numbering its lots in
+    // `building` would otherwise warn on every OpenStreetMap lot, whose tag `building=yes` it is).
     std::vector<std::string_view> numbered;
     for (const AttributeMapping& m : c.checked().node->attributes) {
       if (m.node_attribute == "index") numbered.push_back(m.to);
