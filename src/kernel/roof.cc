@@ -23,6 +23,7 @@ namespace insula::kernel {
 
 using roof_detail::Contour;
 using roof_detail::GableEnd;
+using roof_detail::kEaveMiterLimit;
 using roof_detail::RoofPlan;
 
 namespace {
@@ -88,12 +89,6 @@ constexpr double kCornerMinTurnDeg = 3;
 double tan_deg(double degrees) {
   return std::tan(degrees * kPi / 180);
 }
-
-// An eave corner may reach at most this many overhangs from its footprint corner (a corner of
-// about 14 degrees; 2 / sin(angle / 2) grows without bound as the corner sharpens): a sliver's
-// near-zero corner put the eave of a real OpenStreetMap lot 400 m away (docs/kernel-roofs.md,
-// "Overhang").
-constexpr double kEaveMiterLimit = 8;
 
 // Offsets every edge e outward (to its right) by distances[e] >= 0 with mitred corners, so vertex
 // k of the result corresponds to vertex k of `c`. Returns false when a corner is undefined

@@ -15,6 +15,12 @@
 
 namespace insula::kernel::roof_detail {
 
+// An eave corner may reach at most this many overhangs from its footprint corner (a corner of
+// about 14 degrees; 2 / sin(angle / 2) grows without bound as the corner sharpens): a sliver's
+// near-zero corner put the eave of a real OpenStreetMap lot 400 m away (docs/kernel-roofs.md,
+// "Overhang"). Used by every eave polygon (roof.cc, roof_shapes.cc).
+inline constexpr double kEaveMiterLimit = 8;
+
 // A polygon's rings flattened in ring order (outer, then holes), so vertex k of the footprint, of
 // its eave polygon and of its skeleton's contour are the same k.
 struct Contour {

@@ -170,10 +170,6 @@ std::vector<std::uint32_t> core_sides(const Contour& c, const Contour& core) {
   return side;
 }
 
-// An eave corner may reach at most this many overhangs from its footprint corner, as in roof.cc
-// (kEaveMiterLimit, docs/kernel-roofs.md, "Overhang").
-constexpr double kEaveReach = 8;
-
 // The eave polygon of a quadrilateral shape with overhang (docs/kernel-roofs.md, "Overhang"): the
 // edges along slope side A move out by `out_a`, those along side B by `out_b`, the ends stay flush
 // (offset 0, as a gable's), and so do party walls. `overhang` sets the drop: the roof starts at
@@ -260,7 +256,8 @@ bool overhang_eave(RoofPlan& plan, const Contour& core, std::uint32_t side_a, st
         eave.points[first] + (eave.points[last] - eave.points[first]) * (before / (before + after));
   }
   for (std::uint32_t k = 0; k < n; ++k) {
-    if (length(eave.points[k] - c.points[k]) > kEaveReach * std::max(out_a, out_b)) return false;
+    if (length(eave.points[k] - c.points[k]) > kEaveMiterLimit * std::max(out_a, out_b))
+      return false;
   }
   for (std::uint32_t k = 0; k < n; ++k) {
     const Vec2 before = c.points[c.next(k)] - c.points[k];
