@@ -4,11 +4,13 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <deque>
 #include <vector>
 
 #include "io/atomic_file.h"
 #include "io/cityjson_objects.h"
 #include "io/json_stream.h"
+#include "shape/alike_parts.h"
 
 namespace insula::io {
 namespace {
@@ -21,19 +23,24 @@ using cityjson::Quantised;
 // file, quantised from the scene's local minimum corner.
 class Writer {
  public:
-  Writer(const shape::Scene& scene, const cityjson::SceneSize& size);
+  Writer(const shape::Scene& scene, const cityjson::SceneSize& size,
+         const CityJsonOptions& options);
   void write(std::string& out);
 
  private:
   void write_metadata(JsonStream& json) const;
 
   const shape::Scene& scene_;
+  CityJsonOptions options_;
   kernel::Vec3 min_{};  // local minimum corner of every finite vertex
   cityjson::CityObjects objects_;
+  // Buildings with their alike parts merged (options_), kept for the attributes objects_ points at.
+  std::deque<shape::Building> merged_;
 };
 
-Writer::Writer(const shape::Scene& scene, const cityjson::SceneSize& size)
-    : scene_(scene), min_(size.minimum), objects_(min_) {
+Writer::Writer(const shape::Scene& scene, const cityjson::SceneSize& size,
+               const CityJsonOptions& options)
+    : scene_(scene), options_(options), min_(size.minimum), objects_(min_) {
   objects_.pool().reserve(size.vertices);
   // About 4 corners a face (quads, triangles and a few larger faces); more only cost a copy.
   objects_.reserve_rings(size.faces, 4 * size.faces);
@@ -63,7 +70,15 @@ void Writer::write(std::string& out) {
   const std::vector<shape::Building>& buildings = scene_.buildings;
   for (std::size_t b = 0; b < buildings.size(); ++b) {
     cityjson::CityObjects::prefetch_ahead(buildings, b);
-    objects_.add_building(buildings[b], b);
+    if (options_.merge_alike_parts && shape::has_alike_parts(buildings[b])) {
+      shape::Building& merged = merged_.emplace_back(shape::merge_alike_parts(buildings[b]));
+      objects_.add_building(merged, b);
+      // The objects keep pointers to the attributes alone: the geometry is theirs now.
+      for (shape::Part& part : merged.parts) part.mesh = kernel::Mesh();
+      merged.plans.clear();
+    } else {
+      objects_.add_building(buildings[b], b);
+    }
   }
   // The objects, then about 20 bytes per vertex ("[123456,234567,3456],").
   out.reserve(out.size() + objects_.text_size_estimate() + 24 * objects_.pool().vertices().size() +
@@ -102,16 +117,17 @@ std::string cityjson_reference_system(const std::string& crs) {
 
 // Shared-mesh instances are placed part by part as they are measured and added, with no copy of
 // the scene (shape::expand_instances()) nor a pass to look for them.
-std::string cityjson_text(const shape::Scene& scene) {
-  Writer writer(scene, cityjson::measure(scene));
+std::string cityjson_text(const shape::Scene& scene, const CityJsonOptions& options) {
+  Writer writer(scene, cityjson::measure(scene), options);
   std::string out;
   writer.write(out);
   out += '\n';
   return out;
 }
 
-std::string write_cityjson(const shape::Scene& scene, const std::filesystem::path& path) {
-  return write_file_atomically(path, cityjson_text(scene));
+std::string write_cityjson(const shape::Scene& scene, const std::filesystem::path& path,
+                           const CityJsonOptions& options) {
+  return write_file_atomically(path, cityjson_text(scene, options));
 }
 
 }  // namespace insula::io

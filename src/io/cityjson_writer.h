@@ -16,11 +16,19 @@
 
 namespace insula::io {
 
+struct CityJsonOptions {
+  // A building's parts alike in name, kind, attributes and texture mapping become one
+  // "BuildingPart" (shape::merge_alike_parts): a CGA scene made with a part per terminal for the
+  // GLB's picking is written as the tiles write it (docs/formats.md, "CityJSON").
+  bool merge_alike_parts = false;
+};
+
 // The CityJSON text of `scene` (compact JSON, one trailing newline).
-std::string cityjson_text(const shape::Scene& scene);
+std::string cityjson_text(const shape::Scene& scene, const CityJsonOptions& options = {});
 
 // Writes `path` atomically. Returns an empty string on success, else a message naming the file.
-std::string write_cityjson(const shape::Scene& scene, const std::filesystem::path& path);
+std::string write_cityjson(const shape::Scene& scene, const std::filesystem::path& path,
+                           const CityJsonOptions& options = {});
 
 // "EPSG:32633" (any case, also "EPSG::32633") -> "https://www.opengis.net/def/crs/EPSG/0/32633"; an
 // opengis.net CRS URL is kept; empty for anything else.

@@ -6,6 +6,7 @@
 #include "io/cityjson_objects.h"
 #include "io/cityjson_writer.h"
 #include "io/json_stream.h"
+#include "shape/alike_parts.h"
 #include "shape/part_mesh.h"
 
 namespace insula::io {
@@ -53,17 +54,22 @@ void CityJsonSeqWriter::avoid(std::shared_ptr<const std::unordered_set<std::stri
   objects_->avoid(std::move(building_ids));
 }
 
-std::string cityjsonseq_text(const shape::Scene& input) {
+std::string cityjsonseq_text(const shape::Scene& input, const CityJsonOptions& options) {
   shape::Scene expanded;  // instances expanded once, so local_minimum() sees them too
   const shape::Scene& scene = shape::expand_instances(input, expanded);
   CityJsonSeqWriter writer(scene.origin, scene.crs, scene.origin + cityjson::local_minimum(scene));
   std::string out = writer.header_line();
-  for (const shape::Building& building : scene.buildings) out += writer.feature_line(building);
+  for (const shape::Building& building : scene.buildings) {
+    out += writer.feature_line(options.merge_alike_parts && shape::has_alike_parts(building)
+                                   ? shape::merge_alike_parts(building)
+                                   : building);
+  }
   return out;
 }
 
-std::string write_cityjsonseq(const shape::Scene& scene, const std::filesystem::path& path) {
-  return write_file_atomically(path, cityjsonseq_text(scene));
+std::string write_cityjsonseq(const shape::Scene& scene, const std::filesystem::path& path,
+                              const CityJsonOptions& options) {
+  return write_file_atomically(path, cityjsonseq_text(scene, options));
 }
 
 }  // namespace insula::io

@@ -14,6 +14,7 @@
 #include <string>
 #include <unordered_set>
 
+#include "io/cityjson_writer.h"
 #include "kernel/vec.h"
 #include "shape/scene.h"
 
@@ -55,9 +56,10 @@ class CityJsonSeqWriter {
 // The whole scene as CityJSONSeq text: the header, then one line per building in scene order. The
 // translate is the scene's origin plus its local minimum corner, as in cityjson_text(), so both
 // files hold the same vertex coordinates.
-std::string cityjsonseq_text(const shape::Scene& scene);
+std::string cityjsonseq_text(const shape::Scene& scene, const CityJsonOptions& options = {});
 
 // Writes `path` atomically. Returns an empty string on success, else a message naming the file.
-std::string write_cityjsonseq(const shape::Scene& scene, const std::filesystem::path& path);
+std::string write_cityjsonseq(const shape::Scene& scene, const std::filesystem::path& path,
+                              const CityJsonOptions& options = {});
 
 }  // namespace insula::io

@@ -46,8 +46,8 @@ std::string write_scene(const shape::Scene& scene, const std::string& path,
   const std::string format = output_format_name(path);
   if (format == "obj") return write_obj(scene, path, options.obj);
   if (format == "glb" || format == "gltf") return write_gltf(scene, path, options.gltf);
-  if (format == "cityjson") return write_cityjson(scene, path);
-  if (format == "cityjsonseq") return write_cityjsonseq(scene, path);
+  if (format == "cityjson") return write_cityjson(scene, path, options.cityjson);
+  if (format == "cityjsonseq") return write_cityjsonseq(scene, path, options.cityjson);
   if (format == "3dtiles") return write_tileset(scene, path, options.gltf, options.tiles);
   if (format == "svg") return write_svg(scene, path, options.svg);
   if (format == "png") return write_png(scene, path, options.render);

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/cityjson_writer.h"
 #include "io/gltf_writer.h"
 #include "io/obj_writer.h"
 #include "io/png_renderer.h"
@@ -31,6 +32,7 @@ struct OutputOptions {
   ObjOptions obj;
   GltfOptions gltf;
   TilesetOptions tiles;
+  CityJsonOptions cityjson;
 };
 
 // Writes the scene in the path's format, atomically. Empty string on success, else the reason.

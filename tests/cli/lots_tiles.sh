@@ -49,7 +49,8 @@ expect_exit 0 "district, tiles and CityJSONSeq" "$insula" build "$district" \
   -o "$tmp/district.city.jsonl" --quiet
 diff -r "$tmp/t1" "$tmp/s" >/dev/null || fail "with CityJSONSeq: other tiles"
 expect_exit 0 "district, CityJSONSeq of the whole scene" "$insula" build "$district" \
-  --lot "$tmp/lots.geojson" -o "$tmp/whole.city.jsonl" -o "$tmp/whole2.obj" --quiet
+  --lot "$tmp/lots.geojson" -o "$tmp/whole.city.jsonl" -o "$tmp/whole2.obj" \
+  -o "$tmp/whole.city.json" --quiet
 # The header and the first ten lines through the schema (ajv takes about 0.7 s per building here).
 head -n 11 "$tmp/district.city.jsonl" >"$tmp/first.city.jsonl"
 node "$root/tools/validate_cityjsonseq.mjs" "$tmp/first.city.jsonl" >"$tmp/v.txt" 2>&1 ||
@@ -59,6 +60,27 @@ ids() { node -e '
   console.log(lines.map((l) => JSON.parse(l).id).sort().join(" "));' "$1"; }
 [ "$(ids "$tmp/district.city.jsonl")" = "$(ids "$tmp/whole.city.jsonl")" ] ||
   fail "streamed CityJSONSeq: other buildings than the whole scene's"
+# Streamed or from the whole scene (whose OBJ keeps a group per terminal), CityJSON has one part
+# per set of alike terminals: the same city objects with the same surface counts (formats.md).
+objects() { node -e '
+  const text = require("fs").readFileSync(process.argv[1], "utf8").trim();
+  const docs = process.argv[1].endsWith("l") ? text.split("\n").slice(1).map(JSON.parse)
+                                             : [JSON.parse(text)];
+  const rows = [];
+  for (const d of docs) for (const [id, o] of Object.entries(d.CityObjects)) {
+    const g = (o.geometry || [])[0];
+    const n = !g ? 0 : g.type === "Solid" ? g.boundaries[0].length : g.boundaries.length;
+    rows.push(`${id}:${o.type}:${g ? g.type : "-"}:${n}`);
+  }
+  console.log(rows.sort().join("\n"));' "$1"; }
+objects "$tmp/district.city.jsonl" >"$tmp/o1.txt"
+objects "$tmp/whole.city.jsonl" >"$tmp/o2.txt"
+objects "$tmp/whole.city.json" >"$tmp/o3.txt"
+parts_per_building=$(awk -F: '$2 == "BuildingPart"' "$tmp/o1.txt" | wc -l)
+[ "$parts_per_building" -lt $((20 * $(ids "$tmp/district.city.jsonl" | wc -w))) ] ||
+  fail "streamed CityJSONSeq: $parts_per_building parts, not merged"
+cmp -s "$tmp/o1.txt" "$tmp/o2.txt" || fail "CityJSONSeq: other objects from the whole scene"
+cmp -s "$tmp/o1.txt" "$tmp/o3.txt" || fail "CityJSON of the whole scene: other objects"
 ls "$tmp" | grep -q "city.jsonl.insula" && fail "streamed CityJSONSeq: a staging file is left"
 
 # Missing assets are counted per request, as the whole scene counts them (the lots sampled to plan

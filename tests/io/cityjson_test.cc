@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/cityjson_writer.h"
+#include "io/cityjsonseq_writer.h"
 #include "writer_fixtures.h"
 
 namespace insula::io {
@@ -266,6 +267,35 @@ TEST(CityJsonWriter, IdsStayUnique) {
   EXPECT_EQ(objects.size(), 4U);
   EXPECT_EQ(objects["a"]["children"], json::array({"a-x", "a-x-2"}));
   EXPECT_EQ(objects["a-2"]["type"], "Building");
+}
+
+// With merge_alike_parts a building's parts alike in name, kind, attributes and uv map are one
+// BuildingPart (a CGA scene made with a part per terminal); without, each is its own.
+TEST(CityJsonWriter, MergesAlikePartsWhenAsked) {
+  const auto face = [](double x) {
+    kernel::Mesh mesh;
+    mesh.add_polygon(std::vector<kernel::Vec3>{{x, 0, 0}, {x + 1, 0, 0}, {x, 1, 0}}, {});
+    return mesh;
+  };
+  shape::Scene scene;
+  const shape::AttributeMap plaster{{"color", std::string("#dccfb6")}};
+  scene.buildings.push_back({"a",
+                             {},
+                             {{"Plaster", shape::PartKind::kBuildingPart, plaster, face(0)},
+                              {"Pane", shape::PartKind::kBuildingPart, {}, face(2)},
+                              {"Plaster", shape::PartKind::kBuildingPart, plaster, face(4)}}});
+  const json apart = written(scene)["CityObjects"];
+  EXPECT_EQ(apart["a"]["children"], json::array({"a-Plaster", "a-Pane", "a-Plaster-2"}));
+
+  for (const std::string& text : {cityjson_text(scene, {.merge_alike_parts = true}),
+                                  cityjsonseq_text(scene, {.merge_alike_parts = true})
+                                      .substr(cityjsonseq_text(scene).find('\n') + 1)}) {
+    const json objects = json::parse(text)["CityObjects"];
+    EXPECT_EQ(objects["a"]["children"], json::array({"a-Plaster", "a-Pane"}));
+    EXPECT_EQ(objects["a-Plaster"]["geometry"][0]["boundaries"].size(), 2U);
+    EXPECT_EQ(objects["a-Plaster"]["attributes"]["color"], "#dccfb6");
+    EXPECT_EQ(objects["a-Pane"]["geometry"][0]["boundaries"].size(), 1U);
+  }
 }
 
 TEST(CityJsonWriter, ReferenceSystems) {

@@ -33,6 +33,7 @@
 #include "io/crs.h"
 #include "io/geojson_reader.h"
 #include "io/obj_reader.h"
+#include "io/output.h"
 #include "lang/cga/annotations.h"
 #include "lang/cga/checker.h"
 #include "lang/cga/compile.h"
@@ -248,8 +249,17 @@ int build_cga(const BuildOptions& options) {
   report.update(cga_report(p, cga::totals(p, results), lots->lots.size()));
   clock = Stopwatch();
   shape::Scene scene;
+  // CityJSON has a part per set of alike terminals, as the tiles' outputs have (formats.md); the
+  // scene keeps a part per terminal only for a GLB's or OBJ's picking.
+  BuildOptions written = options;
+  written.output.cityjson.merge_alike_parts = true;
+  const bool per_terminal =
+      std::any_of(options.outputs.begin(), options.outputs.end(), [](const std::string& out) {
+        const std::string format = io::output_format_name(out);
+        return format == "obj" || format == "glb" || format == "gltf" || format == "3dtiles";
+      });
   if (!options.outputs.empty()) {
-    scene = cga::to_scene(p, lots->lots, std::move(results), derive.share_inserts);
+    scene = cga::to_scene(p, lots->lots, std::move(results), derive.share_inserts, !per_terminal);
     scene.origin = lots->origin;
     scene.crs = lots->crs;
   }
@@ -260,7 +270,7 @@ int build_cga(const BuildOptions& options) {
   report_missing_assets(library.failures(), options.input, options.quiet, report);
   report_missing_textures(textures, options.input, options.quiet, report);
   report["seconds"].update(seconds);
-  return finish_build(options, scene, report, total);
+  return finish_build(written, scene, report, total);
 }
 
 }  // namespace insula::cli

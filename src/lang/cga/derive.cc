@@ -15,6 +15,7 @@
 
 #include "kernel/shared_meshes.h"
 #include "lang/cga/derive_engine.h"
+#include "shape/alike_parts.h"
 #include "shape/ops.h"
 
 namespace insula::lang::cga {
@@ -250,26 +251,18 @@ void find_material(ChainLook& look,
 }
 
 // The part of a lot's scene that takes a terminal of symbol `name` with `look`'s attributes when
-// alike terminals merge (by value: two chains can give equal attributes), added when new.
-class AlikeParts {
+// alike terminals merge: by attribute chain first, then by value (two chains can give equal
+// attributes), shape::AlikeParts deciding.
+class ChainParts {
  public:
-  explicit AlikeParts(std::vector<shape::Part>& parts) : parts_(parts) {}
+  explicit ChainParts(std::vector<shape::Part>& parts) : parts_(parts) {}
   shape::Part& part(std::uint32_t symbol, std::uint32_t chain, std::string_view name,
                     const ChainLook& look) {
     const auto [known, added] =
         by_chain_.try_emplace((std::uint64_t{symbol} << 32) | std::uint64_t{chain}, 0);
     if (added) {
-      const auto [same, first] = by_value_.try_emplace(
-          {std::string(name), look.attributes, look.uv ? shape::encode(*look.uv) : std::string()},
-          parts_.size());
-      if (first) {
-        shape::Part part;
-        part.name = std::string(name);
-        part.attributes = look.attributes;
-        part.uv = look.uv;
-        parts_.push_back(std::move(part));
-      }
-      known->second = same->second;
+      known->second =
+          alike_.index(parts_, name, shape::PartKind::kBuildingPart, look.attributes, look.uv);
     }
     return parts_[known->second];
   }
@@ -277,7 +270,7 @@ class AlikeParts {
  private:
   std::vector<shape::Part>& parts_;
   std::unordered_map<std::uint64_t, std::size_t> by_chain_;  // (symbol, chain) -> part
-  std::map<std::tuple<std::string, shape::AttributeMap, std::string>, std::size_t> by_value_;
+  shape::AlikeParts alike_;
 };
 
 ChainLook chain_look(const Program& program, const LotResult& r, std::uint32_t chain,
@@ -327,7 +320,7 @@ shape::Scene make_scene(const Program& program, const std::vector<Lot>& lots,
     building.id = lots[i].id;
     building.attributes = r.attributes;
     std::unordered_map<std::uint32_t, ChainLook> looks;  // by attribute chain
-    AlikeParts alike(building.parts);
+    ChainParts alike(building.parts);
     for (std::size_t t = 0; t < r.terminals_store.size(); ++t) {
       const Terminal& term = r.terminals_store[t];
       // The records were written while the tile's other lots derived and have left the cache:

@@ -9,8 +9,8 @@
 
 #include "kernel/heightfield.h"
 #include "lang/graph/properties.h"
+#include "shape/alike_parts.h"
 #include "shape/scope.h"
-#include "shape/uv_map.h"
 
 namespace insula::lang::graph {
 namespace {
@@ -82,26 +82,6 @@ kernel::Mesh part_mesh(const RunResult& run, const Entity& e) {
 }
 
 nlohmann::ordered_json entity_record(const RunResult& run, EntityId id, const std::string& port);
-
-// A building's parts by name and attributes: parts that agree in both become one mesh (a
-// building of four CGA facades has a dozen parts, not hundreds), so large cities stay light in
-// every format.
-// Parts with texture coordinates (a CGA rule's projectUV) join only parts with the same map.
-using PartIndex = std::map<std::tuple<std::string, shape::AttributeMap, std::string>, std::size_t>;
-
-void add_part(shape::Building& building, PartIndex& index, shape::Part part) {
-  if (part.instance_of != nullptr) {
-    building.parts.push_back(std::move(part));
-    return;
-  }
-  const auto [it, added] = index.try_emplace(
-      {part.name, part.attributes, part.uv ? shape::encode(*part.uv) : ""}, building.parts.size());
-  if (added) {
-    building.parts.push_back(std::move(part));
-  } else {
-    building.parts[it->second].mesh.append(part.mesh);
-  }
-}
 
 using MaterialKey = std::tuple<std::string, std::array<float, 4>, const shape::Image*>;
 
@@ -217,7 +197,7 @@ shape::Scene to_scene(const RunResult& run, const std::set<std::string>* lot_ids
   std::map<BuildingGroup, std::size_t> by_group;
   LotNames lot_names(run, lot_ids);
   std::map<MaterialKey, kernel::MaterialId> known;  // rule nodes' materials, each once
-  std::vector<PartIndex> part_index;                // per building
+  std::vector<shape::AlikeParts> part_index;        // per building
   for (const ResultEntity& r : run.results) {
     const Entity& e = run.entities[r.entity];
     if (e.type == EntityType::kLight || e.type == EntityType::kPoint) {
@@ -275,7 +255,7 @@ shape::Scene to_scene(const RunResult& run, const std::set<std::string>* lot_ids
           mesh.add_face(part.mesh.face(f), tag);
         }
         copy.mesh = std::move(mesh);
-        add_part(building, part_index[index], std::move(copy));
+        part_index[index].add(building.parts, std::move(copy));
       }
       continue;
     }
@@ -285,7 +265,7 @@ shape::Scene to_scene(const RunResult& run, const std::set<std::string>* lot_ids
       part.attributes[name] = export_value(*value);
     }
     part.mesh = part_mesh(run, e);
-    if (!part.mesh.empty()) add_part(building, part_index[index], std::move(part));
+    if (!part.mesh.empty()) part_index[index].add(building.parts, std::move(part));
   }
   std::erase_if(scene.buildings, [](const shape::Building& b) { return b.parts.empty(); });
   return scene;
