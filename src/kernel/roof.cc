@@ -264,9 +264,10 @@ double eave_slope(const RoofSpec& spec, RoofType type) {
 
 // The edges of `c` that run along one of `walls` (RoofSpec::party_walls), and the edges that
 // continue them around a bend of less than kPartyWallBendDeg or are shorter than twice the
-// overhang: where an overhanging edge meets a flush one nearly in line, the mitred eave corner runs
-// off toward infinity, and a short step between a flush and an overhanging edge flips
-// (offset_contour); both are part of the party wall's line in mapped outlines.
+// overhang (unless nearly in line with their other neighbour): where an overhanging edge meets a
+// flush one nearly in line, the mitred eave corner runs off toward infinity, and a short step
+// between a flush and an overhanging edge flips (offset_contour); both are part of the party wall's
+// line in mapped outlines.
 constexpr double kPartyWallBendDeg = 20;
 
 std::vector<std::uint32_t> party_edges(const Contour& c, std::span<const PartyWall> walls,
@@ -293,8 +294,15 @@ std::vector<std::uint32_t> party_edges(const Contour& c, std::span<const PartyWa
       if (!flush[e]) continue;
       const std::uint32_t after = c.next(e);
       const std::uint32_t before = c.prev(e);
-      if (!flush[after] && (joins(e, after) || is_short(after))) flush[after] = grew = true;
-      if (!flush[before] && (joins(before, e) || is_short(before))) flush[before] = grew = true;
+      // A short edge nearly in line with its other neighbour belongs to that neighbour's line
+      // (a survey's 4 cm corner edge on a slope side): flushing it would flush the whole side.
+      if (!flush[after] && (joins(e, after) || (is_short(after) && !joins(after, c.next(after))))) {
+        flush[after] = grew = true;
+      }
+      if (!flush[before] &&
+          (joins(before, e) || (is_short(before) && !joins(c.prev(before), before)))) {
+        flush[before] = grew = true;
+      }
     }
   }
   for (std::uint32_t e = 0; e < c.points.size(); ++e) {
@@ -731,37 +739,50 @@ bool plan_roof(const Polygon& footprint, const RoofSpec& spec, RoofPlan& plan) {
   if (overhang > 0 && !plan.party_edges.empty() && !plan_eave(plan, overhang, {})) {
     plan.party_edges.clear();
   }
-  if (overhang > 0 && !plan_eave(plan, overhang, {})) {
-    plan.message =
-        "overhang of " + base::shortest_number(overhang) +
-        " m makes the eave polygon self-intersect or reach too far out at a sharp corner; built "
-        "without overhang";
-    overhang = 0;
-  }
+  // Where the eave cannot go all round (a sharply skewed parallelogram's mitred corners), the
+  // types that need it are built without overhang; a gable and the quadrilateral shapes keep
+  // theirs, their ends being flush.
+  const bool all_round = !(overhang > 0) || plan_eave(plan, overhang, {});
+  const auto overhang_for = [&](RoofType type) {
+    return all_round || type == RoofType::kGable || is_custom(type) ? overhang : 0.0;
+  };
   std::vector<RoofType> tried;
   std::string why;  // the stage and finding that stopped the asked type
   for (RoofType type : fallback_chain(spec.type)) {
     if (std::find(tried.begin(), tried.end(), type) != tried.end()) continue;
     tried.push_back(type);
-    if (plan_type(plan, spec, type, overhang)) {
+    double used = overhang_for(type);
+    bool planned = plan_type(plan, spec, type, used);
+    if (!planned && why.empty()) why = plan.reason;
+    // Another type than the one asked, where the eave cannot go all round: without overhang, as
+    // the types that need that eave are built.
+    if (!planned && !all_round && used > 0 && type != spec.type) {
+      used = 0;
+      planned = plan_type(plan, spec, type, 0);
+    }
+    if (planned) {
+      if (used < overhang) {
+        plan.message = "overhang of " + base::shortest_number(overhang) +
+                       " m makes the eave polygon self-intersect or reach too far out at a sharp "
+                       "corner; built without overhang";
+      }
       if (type != spec.type) {
         if (!plan.message.empty()) plan.message += "; ";
         plan.message += std::string(roof_type_name(spec.type)) + " roof could not be built; " +
                         std::string(roof_type_name(type)) + " roof instead";
         if (!why.empty()) plan.message += " (" + why + ")";
       }
-      if (springs_from_wall(type) && overhang > 0) {
+      if (springs_from_wall(type) && used > 0) {
         if (!plan.message.empty()) plan.message += "; ";
         plan.message += std::string(roof_type_name(type)) + " roofs are built without overhang";
       }
       plan.status = plan.message.empty() ? RoofStatus::kOk : RoofStatus::kFallback;
       return true;
     }
-    if (why.empty()) why = plan.reason;
     // The asked type without its overhang is nearer what was asked than another type with it:
     // an 8 cm jog in a real outline made the overhanging eave's skeleton end a ridge elsewhere,
     // and one gable in nine became a hip.
-    if (type == spec.type && overhang > 0 && plan_type(plan, spec, type, 0)) {
+    if (type == spec.type && overhang_for(type) > 0 && plan_type(plan, spec, type, 0)) {
       if (!plan.message.empty()) plan.message += "; ";
       plan.message +=
           std::string(roof_type_name(type)) + " roof built without overhang (" + why + ")";

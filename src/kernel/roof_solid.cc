@@ -1,6 +1,7 @@
 #include "kernel/roof_solid.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -105,15 +106,37 @@ RoofSolid flat_slab(const Polygon& footprint, const RoofSolidSpec& spec, double 
   return out;
 }
 
-// Gable ends: each cap add_roof returned becomes a wall face over its footprint edge.
-void close_gables(const RoofBuild& build, const std::vector<std::uint32_t>& next, Mesh& mesh) {
+// The roof's bottom corners: a footprint vertex's wall top where it lies at the lowest wall top
+// (the eave, or the soffit where the custom shapes' overhang brings it down), else a new vertex
+// under it at that height. A vertex inside a gable or half-hip end (a survey's near-collinear
+// corner) has its wall top up the end's slope: a bottom through it would fold (0.6 m on a 6 m
+// half-hip end) and leave the post under it short.
+std::vector<std::uint32_t> bottom_corners(const RoofBuild& build, Mesh& mesh) {
+  constexpr double kLevel = 1e-6;  // m
+  double low = std::numeric_limits<double>::infinity();
+  for (const std::uint32_t v : build.wall_top) low = std::min(low, mesh.position(v).z);
+  std::vector<std::uint32_t> bottom = build.wall_top;
+  for (std::uint32_t& v : bottom) {
+    const Vec3 top = mesh.position(v);
+    if (top.z > low + kLevel) v = mesh.add_vertex({top.x, top.y, low});
+  }
+  return bottom;
+}
+
+// The end walls between the bottom and the roof: under edge e, {bottom(e), bottom(next),
+// wall_top(next), cap..., wall_top(e)} with the wall tops that are bottom corners left out (a
+// gable's cap alone where both ends lie at the eave, nothing where there is no cap either).
+void close_ends(const RoofBuild& build, const std::vector<std::uint32_t>& next,
+                const std::vector<std::uint32_t>& bottom, Mesh& mesh) {
   std::vector<std::uint32_t> loop;
   for (std::uint32_t e = 0; e < next.size(); ++e) {
-    if (build.cap_offsets[e] == build.cap_offsets[e + 1]) continue;
-    loop.assign({build.wall_top[e], build.wall_top[next[e]]});
+    const std::uint32_t n = next[e];
+    loop.assign({bottom[e], bottom[n]});
+    if (build.wall_top[n] != bottom[n]) loop.push_back(build.wall_top[n]);
     loop.insert(loop.end(), build.cap_indices.begin() + build.cap_offsets[e],
                 build.cap_indices.begin() + build.cap_offsets[e + 1]);
-    mesh.add_face(loop, {SemanticClass::kWallSurface, 0, build.next_face_id});
+    if (build.wall_top[e] != bottom[e]) loop.push_back(build.wall_top[e]);
+    if (loop.size() >= 3) mesh.add_face(loop, {SemanticClass::kWallSurface, 0, build.next_face_id});
   }
 }
 
@@ -132,12 +155,13 @@ RoofSolid build_roof_solid(const Polygon& footprint, const RoofSolidSpec& spec, 
   out.message = build.message;
   const std::vector<std::uint32_t> next = ring_successors(footprint);
   if (build.wall_top.size() == next.size() && build.cap_offsets.size() == next.size() + 1) {
-    close_gables(build, next, out.mesh);
+    const std::vector<std::uint32_t> corners = bottom_corners(build, out.mesh);
+    close_ends(build, next, corners, out.mesh);
     const FaceTag bottom{SemanticClass::kClosureSurface, 0, build.next_face_id + 1};
     if (build.built == RoofType::kHoledMansard && spec.open_compluvium) {
-      out.openings = open_compluvium(out.mesh, footprint, build.wall_top, bottom);
+      out.openings = open_compluvium(out.mesh, footprint, corners, bottom);
     }
-    if (out.openings.empty()) add_region_faces(out.mesh, footprint, build.wall_top, true, bottom);
+    if (out.openings.empty()) add_region_faces(out.mesh, footprint, corners, true, bottom);
   }
   scale_roof_height(out.mesh, eave_z, spec.height);
   return out;

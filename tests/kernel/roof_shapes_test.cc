@@ -401,6 +401,35 @@ TEST(RoofShapes, NearlyStraightVerticesDoNotHideAQuadrilateral) {
   EXPECT_EQ(build(l_shape(), RoofType::kGambrel).roof, RoofType::kMansard);
 }
 
+// The same outlines as roofs on posts, with and without overhang: a vertex inside an end has its
+// wall top up the end's slope (0.59 m on a half-hip), and the underside passed through it, folded
+// (1.37 m on a gambrel with overhang, whose corners' wall tops are at the soffit) and open. Now it
+// is flat at the lowest wall top, closed by a wall face up to that vertex.
+TEST(RoofShapes, RoofOnPostsHasAFlatUndersideOverEndVertices) {
+  for (bool long_side : {true, false}) {
+    for (RoofType t : {RoofType::kGable, RoofType::kGambrel, RoofType::kHalfHipped,
+                       RoofType::kSaltbox, RoofType::kHip}) {
+      for (double overhang : {0.0, 0.5}) {
+        SCOPED_TRACE(std::string(roof_type_name(t)) + (long_side ? " long side" : " short side") +
+                     " overhang " + std::to_string(overhang));
+        MassSpec spec;
+        spec.walls = false;
+        spec.overhang = overhang;
+        const MassResult r = build(near_rectangle(long_side), t, spec);
+        expect_closed(r);
+        EXPECT_EQ(check(r.mesh).components, 6U);  // the roof and 5 posts
+        // Every face seen from below lies at the eave or below it (a soffit), none above.
+        for (std::size_t f = 0; f < r.mesh.face_count(); ++f) {
+          if (r.mesh.tag(f).semantic != SemanticClass::kOuterCeilingSurface) continue;
+          for (std::uint32_t v : r.mesh.face(f)) {
+            EXPECT_LE(r.mesh.position(v).z, kEave + 1e-9) << "face " << f;
+          }
+        }
+      }
+    }
+  }
+}
+
 // building=roof whose overhang brings the underside to the ground: built without the overhang,
 // like a walled building, and reported the same way (it was dropped).
 TEST(RoofShapes, RoofOnPostsDropsAnOverhangThatReachesTheGround) {
@@ -503,6 +532,36 @@ TEST(RoofShapes, QuadrilateralShapesOverhangTheirSlopeSides) {
   }
 }
 
+// A parallelogram whose ends meet its sides at 12 degrees: an eave all round would mitre its two
+// acute corners out beyond the limit, so a hip is built without overhang; a gable and the
+// quadrilateral shapes, whose ends are flush, keep theirs on the slope sides (they lost it to the
+// all-round test that ran before any type was planned).
+TEST(RoofShapes, SharplySkewedQuadrilateralsOverhangTheirSlopeSides) {
+  const double a = 12 * kPi / 180;
+  const Vec2 end{9 * std::cos(a), 9 * std::sin(a)};  // 9 m ends, 1.87 m apart across the sides
+  const Polygon p{{{0, 0}, {30, 0}, Vec2{30, 0} + end, end}, {}};
+  MassSpec spec;
+  spec.overhang = 0.5;
+  for (RoofType t :
+       {RoofType::kGable, RoofType::kGambrel, RoofType::kHalfHipped, RoofType::kSaltbox}) {
+    SCOPED_TRACE(std::string(roof_type_name(t)));
+    const MassResult r = build(p, t, spec);
+    expect_closed(r);
+    EXPECT_EQ(r.roof, t);
+    EXPECT_EQ(r.message.find("overhang"), std::string::npos) << r.message;
+    // The slope sides (edges 0 and 2) overhang, the eave beyond the footprint's y range.
+    EXPECT_LT(r.mesh.bounds().min.y, -0.2);
+    EXPECT_GT(r.mesh.bounds().max.y, end.y + 0.2);
+  }
+  const MassResult hip = build(p, RoofType::kHip, spec);
+  expect_closed(hip);
+  EXPECT_EQ(hip.roof, RoofType::kHip);
+  EXPECT_NE(hip.message.find("makes the eave polygon self-intersect or reach too far out"),
+            std::string::npos)
+      << hip.message;
+  EXPECT_NEAR(hip.mesh.bounds().min.y, 0, 1e-9);
+}
+
 // The gambrel's break stays at its height, 2.5 m above the wall top, and place, its lower slope
 // reaching down to the eave under the overhang; the end walls take in the eave corners.
 TEST(RoofShapes, GambrelOverhangKeepsTheBreak) {
@@ -559,6 +618,30 @@ TEST(RoofShapes, QuadrilateralShapesKeepPartyWallsFlush) {
     EXPECT_NEAR(r.mesh.bounds().max.y, 8, 1e-9);
     EXPECT_LT(r.mesh.bounds().min.y, -0.2);
     EXPECT_EQ(count(r.mesh, SemanticClass::kOuterCeilingSurface), 1);
+  }
+}
+
+// A party wall on an end whose corner has a 4 cm edge nearly in line with the slope side (edge 3
+// of near_rectangle(true), turning 1 degree from edge 2 and 89 from the end): the end stays
+// flush, the slope side overhangs. The short edge was made flush beside the party wall and took
+// the whole side with it.
+TEST(RoofShapes, PartyWallOnAnEndKeepsTheSlopeSidesOverhang) {
+  for (RoofType t :
+       {RoofType::kGable, RoofType::kGambrel, RoofType::kHalfHipped, RoofType::kSaltbox}) {
+    SCOPED_TRACE(std::string(roof_type_name(t)));
+    MassSpec spec;
+    spec.overhang = 0.5;
+    PartyWall wall;  // along the west end (edge 4)
+    wall.a = {0, 0};
+    wall.b = {0, 8.1};
+    spec.party_walls = {wall};
+    const MassResult r = build(near_rectangle(true), t, spec);
+    expect_closed(r);
+    EXPECT_EQ(r.roof, t);
+    EXPECT_EQ(r.message.find("without overhang"), std::string::npos) << r.message;
+    EXPECT_NEAR(r.mesh.bounds().min.x, 0, 1e-9);  // the party wall's end flush
+    EXPECT_GT(r.mesh.bounds().max.y, 8.3);        // the north slope side overhangs
+    EXPECT_LT(r.mesh.bounds().min.y, -0.2);       // and the south one (half as far on a saltbox)
   }
 }
 
