@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <numbers>
 #include <optional>
 #include <system_error>
@@ -15,6 +16,7 @@
 #include "io/json_stream.h"
 #include "io/tile_tree.h"
 #include "kernel/transform.h"
+#include "shape/alike_parts.h"
 #include "shape/ops.h"
 
 namespace insula::io {
@@ -458,7 +460,14 @@ std::string write_tileset(const shape::Scene& scene, const std::filesystem::path
   std::vector<std::string> errors(writer.leaf_count());
   tbb::parallel_for(std::size_t{0}, writer.leaf_count(), [&](std::size_t l) {
     std::vector<const shape::Building*> buildings;
-    for (const std::size_t item : writer.leaf_items(l)) buildings.push_back(building_of[item]);
+    std::deque<shape::Building> merged;  // the tile's buildings whose alike parts were merged
+    for (const std::size_t item : writer.leaf_items(l)) {
+      const shape::Building* building = building_of[item];
+      if (options.merge_alike_parts && shape::has_alike_parts(*building)) {
+        building = &merged.emplace_back(shape::merge_alike_parts(*building));
+      }
+      buildings.push_back(building);
+    }
     errors[l] = writer.write_tile(l, buildings);
   });
   for (const std::string& e : errors) {

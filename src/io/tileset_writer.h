@@ -28,6 +28,9 @@ struct TilesetOptions {
   // Coarse parent tiles: an inner tile over at most this many buildings shows each as a block (its
   // bounding box), for views from afar; 0: inner tiles stay empty.
   std::size_t block_buildings = 0;
+  // write_tileset(): a building's parts alike in name, kind, attributes and uv map are one feature
+  // (shape::merge_alike_parts), as a CGA scene's tiles have them when written tile by tile.
+  bool merge_alike_parts = false;
 };
 
 // The folder of the tiles of `tileset_json`: its sibling "tiles".

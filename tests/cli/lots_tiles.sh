@@ -38,6 +38,20 @@ parts=$(awk '/^o /{b=$2} /^g /{n=substr($2, length(b) + 2); sub(/\.[^.]*$/, "", 
 terminals=$(node -e 'console.log(require(process.argv[1]).terminals)' "$tmp/t2.json")
 [ "$parts" -gt 150 ] && [ "$parts" -lt "$terminals" ] ||
   fail "alike terminals: $parts parts of $terminals terminals on 150 lots"
+# The whole scene's tiles (written beside its OBJ, which keeps a group per terminal) merge them the
+# same way: as many features (property table rows) as the streamed tiles.
+features() { node -e '
+  const fs = require("fs");
+  let rows = 0;
+  for (const f of fs.readdirSync(process.argv[1])) {
+    const glb = fs.readFileSync(process.argv[1] + "/" + f);
+    const json = JSON.parse(glb.subarray(20, 20 + glb.readUInt32LE(12)).toString());
+    rows += json.extensions.EXT_structural_metadata.propertyTables[0].count;
+  }
+  console.log(rows);' "$1"; }
+[ "$(features "$tmp/t2/tiles")" = "$parts" ] || fail "streamed tiles: not $parts features"
+[ "$(features "$tmp/whole/tiles")" = "$parts" ] ||
+  fail "whole-scene tiles: $(features "$tmp/whole/tiles") features, not $parts"
 node "$root/tools/check_tileset.mjs" "$tmp/t2/tileset.json" --lonlat 14.3840,49.0033 \
   --tolerance-m 50 --expect-features "$parts" >"$tmp/c.txt" 2>&1 ||
   { fail "the CGA tileset does not open in CesiumJS and loaders.gl"; cat "$tmp/c.txt"; }

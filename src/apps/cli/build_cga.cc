@@ -249,10 +249,11 @@ int build_cga(const BuildOptions& options) {
   report.update(cga_report(p, cga::totals(p, results), lots->lots.size()));
   clock = Stopwatch();
   shape::Scene scene;
-  // CityJSON has a part per set of alike terminals, as the tiles' outputs have (formats.md); the
-  // scene keeps a part per terminal only for a GLB's or OBJ's picking.
+  // CityJSON and 3D Tiles have a part per set of alike terminals, as when written tile by tile
+  // (formats.md); the scene keeps a part per terminal only for a GLB's or OBJ's picking.
   BuildOptions written = options;
   written.output.cityjson.merge_alike_parts = true;
+  written.output.tiles.merge_alike_parts = true;
   const bool per_terminal =
       std::any_of(options.outputs.begin(), options.outputs.end(), [](const std::string& out) {
         const std::string format = io::output_format_name(out);
