@@ -71,6 +71,12 @@ JSON
 expect_exit 0 "graph build --lot osm" "$insula" build "$tmp/lots.graph.json" --lot "$tmp/b.osm.pbf" \
   --report "$tmp/graph.json" -o "$tmp/graph.obj" -q
 grep -c "^o " "$tmp/graph.obj" | grep -qx 3 || fail "graph build --lot osm: 3 lots extruded"
+# Every --lot front-end's report says the lots were reprojected from lon/lat, as mass's does.
+for report in "$tmp/lots.json" "$tmp/graph.json"; do
+  node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1]));
+           if (r.reprojected_from !== "OGC:CRS84") process.exit(1);' "$report" ||
+    fail "$report: no reprojected_from OGC:CRS84"
+done
 # OSM tags as a graph's attributes: building:levels is attribute building_levels, and its text
 # "4" a number (as for CGA attrs and mass models); one storey of 3 m by default.
 cat >"$tmp/levels.graph.json" <<'JSON'

@@ -42,6 +42,7 @@ struct LotFiles {
   bool read_any = false;
   kernel::Vec3 origin;
   std::string crs;
+  std::string source_crs;  // the lots' own CRS when they were reprojected
   // Over every file read: features skipped as invalid (--keep-going) and lots left out.
   std::size_t invalid = 0;
   LeftOutLots left;
@@ -50,6 +51,7 @@ struct LotFiles {
   // The report's counts of the lots not built; nothing when no lots file was read.
   void add_counts(nlohmann::json& report) const {
     if (!read_any) return;
+    if (!source_crs.empty()) report["reprojected_from"] = source_crs;
     report["invalid_lots"] = invalid;
     add_left_out_lots(report, left);
   }
@@ -108,6 +110,7 @@ struct LotFiles {
     read_any = true;
     origin = set->origin;
     crs = set->crs;
+    source_crs = set->source_crs;
     // Lots are numbered in file order, a feature skipped (invalid, under --keep-going) counting as
     // one lot: mending a bad footprint then leaves the other lots' numbers, and so their seeds, as
     // they were (docs/graph-executor.md, create.lots).
@@ -179,7 +182,7 @@ int build_graph(const BuildOptions& options) {
     attributes.push_back(d.name);
   }
   const FrontEndRules rules(folder, attributes, &assets);
-  LotFiles lot_files{options, folder, false, {}, {}, 0, {}, {}};
+  LotFiles lot_files{options, folder, false, {}, {}, {}, 0, {}, {}};
 
   lang::graph::RunOptions run;
   if (!options.probe.empty()) {
