@@ -257,7 +257,7 @@ int build_cga(const BuildOptions& options) {
   const bool per_terminal =
       std::any_of(options.outputs.begin(), options.outputs.end(), [](const std::string& out) {
         const std::string format = io::output_format_name(out);
-        return format == "obj" || format == "glb" || format == "gltf" || format == "3dtiles";
+        return format == "obj" || format == "glb" || format == "gltf";
       });
   if (!options.outputs.empty()) {
     scene = cga::to_scene(p, lots->lots, std::move(results), derive.share_inserts, !per_terminal);
